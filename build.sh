@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# rs4sim: set up a Debian 12 machine, build, and run.
+#
+#   ./build.sh demo    install what is missing, build, run `rs4sim demo`
+#   ./build.sh test    install what is missing, build and run every test:
+#                        1. unit + integration tests (ctest, RelWithDebInfo)
+#                        2. the same under AddressSanitizer + UndefinedBehaviorSanitizer
+#                        3. every libFuzzer target, briefly, from its seed corpus (clang)
+#   ./build.sh build   install + build only
+#
+# Environment: JOBS (parallel build jobs, default: nproc), FUZZ_SECONDS (per fuzz target
+# in `test`, default 20).
+set -euo pipefail
+cd "$(dirname "$0")"
+
+mode=${1:-}
+case "$mode" in demo|test|build) ;; *)
+  echo "usage: $0 demo|test|build" >&2; exit 2;;
+esac
+
+JOBS=${JOBS:-$(nproc)}
+FUZZ_SECONDS=${FUZZ_SECONDS:-20}
+
+packages=(build-essential cmake ninja-build pkg-config libboost-dev libsqlite3-dev
+          libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev)
+[ "$mode" = test ] && packages+=(clang libclang-rt-14-dev)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "==> installing: ${missing[*]}"
+  sudo=""; [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+configure_and_build() {  # dir, extra cmake args...
+  local dir=$1; shift
+  cmake -S . -B "$dir" -G Ninja "$@" >/dev/null
+  cmake --build "$dir" -j "$JOBS"
+}
+
+case "$mode" in
+  build)
+    configure_and_build build
+    ;;
+  demo)
+    configure_and_build build -DRS4SIM_TESTS=OFF -DRS4SIM_BENCH=OFF
+    exec build/app/rs4sim demo
+    ;;
+  test)
+    echo "==> [1/3] build + ctest"
+    configure_and_build build
+    (cd build && ctest --output-on-failure -j "$JOBS")
+    echo "==> [2/3] ASan + UBSan build + ctest"
+    configure_and_build build-asan -DCMAKE_BUILD_TYPE=Debug -DRS4SIM_SANITIZE=ON -DRS4SIM_BENCH=OFF
+    (cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+       UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j "$JOBS")
+    echo "==> [3/3] libFuzzer targets, ${FUZZ_SECONDS}s each"
+    configure_and_build build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRS4SIM_FUZZ=ON
+    fuzz/run_all.sh build-fuzz/fuzz "$FUZZ_SECONDS"
+    echo "==> all tests passed"
+    ;;
+esac

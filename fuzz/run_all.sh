@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Runs every libFuzzer executable in <dir> for <seconds>, starting from its seed corpus
+# fuzz/corpus/<target>/ (copied to a scratch directory so the checked-in corpus stays
+# small). Fails on the first crash, leak, timeout or sanitizer report.
+#   fuzz/run_all.sh build-fuzz/fuzz 20        (-runs=N instead: RUNS=1000000)
+set -euo pipefail
+dir=$1; seconds=${2:-20}
+here=$(cd "$(dirname "$0")" && pwd)
+found=0
+for exe in $(find "$dir" -maxdepth 2 -type f -executable -name 'fuzz_*' | sort); do
+  name=$(basename "$exe")
+  found=$((found + 1))
+  work=$(mktemp -d)
+  [ -d "$here/corpus/$name" ] && cp -r "$here/corpus/$name/." "$work/"
+  if [ -n "${RUNS:-}" ]; then limit="-runs=$RUNS"; else limit="-max_total_time=$seconds"; fi
+  echo "--- $name ($limit)"
+  log=$(mktemp)
+  set +e
+  "$exe" "$limit" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 "$work" >"$log" 2>&1
+  rc=$?
+  set -e
+  grep -E 'stat::number_of_executed_units|Done [0-9]+ runs' "$log" || true
+  [ "$rc" -ne 0 ] && tail -n 60 "$log" >&2
+  rm -f "$log"
+  rm -rf "$work"
+  if [ "$rc" -ne 0 ]; then echo "fuzz target $name failed (exit $rc)" >&2; exit 1; fi
+done
+echo "ran $found fuzz targets"
