@@ -1,0 +1,38 @@
+#pragma once
+// The sans-I/O contract between a PROFIBUS station core (slave or master) and a link.
+//
+// A link (memory bus, serial/pty, UDP) owns the bytes and the real time; a station core
+// owns the protocol. The link:
+//   1. decodes received bytes into telegrams (fdl::Decoder) and calls on_telegram();
+//   2. calls on_time() when the station's next_deadline() has passed;
+//   3. after either call, drains take_transmit() and puts the telegrams on the wire.
+// Cores never block, sleep or read a clock; one event loop thread calls them.
+
+#include "dp/fdl/telegram.h"
+#include "dp/time/clock.h"
+
+#include <optional>
+
+namespace rs4sim::dp {
+
+class Station {
+ public:
+  virtual ~Station() = default;
+
+  // This station's FDL address (0..126).
+  [[nodiscard]] virtual std::uint8_t address() const = 0;
+
+  // A well-formed telegram arrived on the bus (any destination: the core filters).
+  virtual void on_telegram(const fdl::Telegram& t, TimePoint now) = 0;
+
+  // Time has reached (or passed) next_deadline(); called at least once after start.
+  virtual void on_time(TimePoint now) = 0;
+
+  // When on_time() must be called next; nullopt = only when a telegram arrives.
+  [[nodiscard]] virtual std::optional<TimePoint> next_deadline() const = 0;
+
+  // The next telegram to send, if any. The link calls this until it returns nullopt.
+  virtual std::optional<fdl::Telegram> take_transmit() = 0;
+};
+
+}  // namespace rs4sim::dp
