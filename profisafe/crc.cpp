@@ -1,0 +1,44 @@
+// CRC machinery (profisafe-v1.md §2, §4). See crc.h.
+#include "profisafe/crc.h"
+
+namespace rs4sim::profisafe {
+
+std::uint32_t Crc::update(std::uint32_t reg, std::span<const std::uint8_t> data) const noexcept {
+  const unsigned shift = width_ - 8u;
+  for (const std::uint8_t b : data) {
+    const auto index = static_cast<std::uint8_t>((reg >> shift) ^ b);
+    reg = ((reg << 8) ^ table_[index]) & mask_;
+  }
+  return reg;
+}
+
+std::uint32_t Crc::update_reversed(std::uint32_t reg, std::span<const std::uint8_t> data) const noexcept {
+  const unsigned shift = width_ - 8u;
+  for (auto it = data.rbegin(); it != data.rend(); ++it) {
+    const auto index = static_cast<std::uint8_t>((reg >> shift) ^ *it);
+    reg = ((reg << 8) ^ table_[index]) & mask_;
+  }
+  return reg;
+}
+
+namespace {
+constexpr Crc kCrc16{16, kCrc16Poly};
+constexpr Crc kCrc24{24, kCrc24Poly};
+}  // namespace
+
+const Crc& crc16() noexcept { return kCrc16; }
+const Crc& crc24() noexcept { return kCrc24; }
+
+std::uint16_t crc1(std::span<const std::uint8_t, 8> block8, std::optional<std::uint32_t> ipar_crc) noexcept {
+  std::uint32_t reg = 0;
+  if (ipar_crc) {
+    // §2: the F_iPar_CRC's big-endian bytes come first (VERIFIED vector 3).
+    const std::array<std::uint8_t, 4> ipar{
+        static_cast<std::uint8_t>(*ipar_crc >> 24), static_cast<std::uint8_t>(*ipar_crc >> 16),
+        static_cast<std::uint8_t>(*ipar_crc >> 8), static_cast<std::uint8_t>(*ipar_crc)};
+    reg = kCrc16.update(reg, ipar);
+  }
+  return static_cast<std::uint16_t>(kCrc16.update(reg, block8));
+}
+
+}  // namespace rs4sim::profisafe

@@ -1,0 +1,37 @@
+#pragma once
+// Typed errors of the PROFIsafe layer (STYLE.md habit 6): wire-level decode failures and
+// per-PDU check failures, carried as std::error_code with the "rs4sim.profisafe" category.
+// The RS4's F-parameter diagnosis codes (65..72) have their own enum in f_parameters.h.
+
+#include <cstdint>
+#include <system_error>
+#include <type_traits>
+
+namespace rs4sim::profisafe {
+
+enum class Errc : std::uint8_t {
+  kOk = 0,
+  // F-parameter block (profisafe-v1.md §1)
+  kFParamsWrongSize = 1,        // the block is not exactly 10 bytes
+  kFParamsReservedBits = 2,     // F_Prm_Flag1 b6-7 or F_Prm_Flag2 b0-2 are not 0
+  kFParamsIParCrcNeedsV2 = 3,   // an F_iPar_CRC only exists in V2 blocks
+  // safety PDU (profisafe-v1.md §3, §4)
+  kPduWrongSize = 10,           // the PDU length does not match data length + overhead
+  kPduCrc2Mismatch = 11,        // CRC2 check failed (CE_CRC)
+  kPduConsecutiveNumber = 12,   // consecutive number not the expected one
+  kPduUnsupportedCrcLength = 13,  // the configuration asks for a CRC2 size not implemented
+  kPduDataTooLong = 14,         // more F-data than the CRC length allows
+  // F-device / F-host state
+  kNotParameterised = 20,       // no valid F-parameters yet
+};
+
+const std::error_category& profisafe_category() noexcept;
+
+inline std::error_code make_error_code(Errc e) noexcept {
+  return {static_cast<int>(e), profisafe_category()};
+}
+
+}  // namespace rs4sim::profisafe
+
+template <>
+struct std::is_error_code_enum<rs4sim::profisafe::Errc> : std::true_type {};

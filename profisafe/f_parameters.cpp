@@ -1,0 +1,143 @@
+// F-parameter block: codec, validation, RS4 diagnosis (profisafe-v1.md §1-2,
+// rs4-profisafe.md §8). See f_parameters.h.
+#include "profisafe/f_parameters.h"
+
+#include "profisafe/crc.h"
+
+namespace rs4sim::profisafe {
+namespace {
+
+constexpr std::uint8_t kFlag1Reserved = 0xC0;  // F_Prm_Flag1 b6-7
+constexpr std::uint8_t kFlag2Reserved = 0x07;  // F_Prm_Flag2 b0-2
+
+constexpr std::uint16_t be16(std::span<const std::uint8_t> b, std::size_t at) noexcept {
+  return static_cast<std::uint16_t>((b[at] << 8) | b[at + 1]);
+}
+constexpr void put_be16(std::span<std::uint8_t> b, std::size_t at, std::uint16_t v) noexcept {
+  b[at] = static_cast<std::uint8_t>(v >> 8);
+  b[at + 1] = static_cast<std::uint8_t>(v);
+}
+constexpr bool valid_address(std::uint16_t a) noexcept { return a != 0 && a != 0xFFFF; }
+
+}  // namespace
+
+std::array<std::uint8_t, 8> encode_f_parameters_without_crc(const FParameters& p) noexcept {
+  std::array<std::uint8_t, 8> b{};
+  b[0] = static_cast<std::uint8_t>((p.check_seqnr ? 0x01 : 0x00) | (p.check_ipar ? 0x02 : 0x00) |
+                                   ((static_cast<unsigned>(p.sil) & 0x3u) << 2) |
+                                   ((static_cast<unsigned>(p.crc_length) & 0x3u) << 4));
+  b[1] = static_cast<std::uint8_t>(((p.block_id & 0x7u) << 3) | ((p.par_version & 0x3u) << 6));
+  put_be16(b, 2, p.source_add);
+  put_be16(b, 4, p.dest_add);
+  put_be16(b, 6, p.wd_time_ms);
+  return b;
+}
+
+std::uint16_t crc1(const FParameters& p) noexcept {
+  const auto b = encode_f_parameters_without_crc(p);
+  return crc1(std::span<const std::uint8_t, 8>(b), p.ipar_crc);
+}
+
+std::array<std::uint8_t, kFParametersSize> encode_f_parameters_raw(const FParameters& p) noexcept {
+  std::array<std::uint8_t, kFParametersSize> out{};
+  const auto b = encode_f_parameters_without_crc(p);
+  std::copy(b.begin(), b.end(), out.begin());
+  put_be16(out, 8, p.par_crc);
+  return out;
+}
+
+std::array<std::uint8_t, kFParametersSize> encode_f_parameters(const FParameters& p) noexcept {
+  FParameters q = p;
+  q.par_crc = crc1(p);
+  return encode_f_parameters_raw(q);
+}
+
+Result<FParameters> parse_f_parameters(std::span<const std::uint8_t> block,
+                                       std::optional<std::uint32_t> ipar_crc) {
+  if (block.size() != kFParametersSize) return make_error_code(Errc::kFParamsWrongSize);
+  if ((block[0] & kFlag1Reserved) != 0 || (block[1] & kFlag2Reserved) != 0) {
+    return make_error_code(Errc::kFParamsReservedBits);
+  }
+  FParameters p;
+  p.check_seqnr = (block[0] & 0x01) != 0;
+  p.check_ipar = (block[0] & 0x02) != 0;
+  p.sil = static_cast<Sil>((block[0] >> 2) & 0x3);
+  p.crc_length = static_cast<CrcLength>((block[0] >> 4) & 0x3);
+  p.block_id = static_cast<std::uint8_t>((block[1] >> 3) & 0x7);
+  p.par_version = static_cast<std::uint8_t>((block[1] >> 6) & 0x3);
+  if (ipar_crc && p.par_version != 1) return make_error_code(Errc::kFParamsIParCrcNeedsV2);
+  p.source_add = be16(block, 2);
+  p.dest_add = be16(block, 4);
+  p.wd_time_ms = be16(block, 6);
+  p.par_crc = be16(block, 8);
+  p.ipar_crc = ipar_crc;
+  return p;
+}
+
+DeviceProfile DeviceProfile::rs4(unsigned dp_address) noexcept {
+  DeviceProfile d;
+  // §4.5: F_Dest_Add = 16-bit sum of 500 and the PROFIBUS address (0..126 valid).
+  d.dest_add = dp_address <= 126 ? static_cast<std::uint16_t>(500u + dp_address) : std::uint16_t{0};
+  return d;
+}
+
+Validation validate(const FParameters& p, const DeviceProfile& d) noexcept {
+  Validation v;
+  v.received_crc1 = p.par_crc;
+  v.computed_crc1 = crc1(p);
+  auto fail = [&v](FDiagnosis diag) {
+    v.diagnosis = diag;
+    return v;
+  };
+  // Ascending code order of the manual's table 6.3-1 (DECISION: the first failing check).
+  if (!valid_address(d.dest_add)) return fail(FDiagnosis::kInternalDestAdd);
+  if (p.dest_add != d.dest_add) return fail(FDiagnosis::kWrongDestAdd);
+  if (!valid_address(p.source_add) || p.source_add < d.min_source_add || p.source_add > d.max_source_add) {
+    return fail(FDiagnosis::kWrongSourceAdd);
+  }
+  if (p.wd_time_ms < d.min_wd_time_ms || p.wd_time_ms > d.max_wd_time_ms) return fail(FDiagnosis::kWrongWdTime);
+  if (p.sil != d.sil) return fail(FDiagnosis::kWrongSil);
+  if (p.crc_length != d.crc_length) return fail(FDiagnosis::kWrongCrcLength);
+  if (p.block_id != d.block_id || p.par_version != d.par_version || p.check_ipar != d.check_ipar) {
+    return fail(FDiagnosis::kWrongBlockIdOrParVersion);
+  }
+  if (v.received_crc1 != v.computed_crc1) return fail(FDiagnosis::kWrongCrc1);
+  return v;
+}
+
+Validation validate(std::span<const std::uint8_t> block, const DeviceProfile& d) noexcept {
+  auto parsed = parse_f_parameters(block);
+  if (!parsed) {
+    Validation v;
+    v.diagnosis = FDiagnosis::kWrongBlockIdOrParVersion;
+    if (block.size() == kFParametersSize) {
+      v.received_crc1 = be16(block, 8);
+      v.computed_crc1 = crc1(block.first<8>());
+    }
+    return v;
+  }
+  return validate(parsed.value(), d);
+}
+
+std::array<std::uint8_t, 5> status_pdu(FDiagnosis d) noexcept {
+  // Manual §6.3 table 6.3-1: length 5 incl. header, 0x81 status message, no slot,
+  // no status differentiation, error number.
+  return {0x05, 0x81, 0x00, 0x00, static_cast<std::uint8_t>(d)};
+}
+
+const char* to_string(FDiagnosis d) noexcept {
+  switch (d) {
+    case FDiagnosis::kNone: return "no error";
+    case FDiagnosis::kInternalDestAdd: return "internal F_Dest_Add error";
+    case FDiagnosis::kWrongDestAdd: return "wrong F_Dest_Add";
+    case FDiagnosis::kWrongSourceAdd: return "wrong F_Source_Add";
+    case FDiagnosis::kWrongWdTime: return "wrong F_WD_Time";
+    case FDiagnosis::kWrongSil: return "wrong SIL";
+    case FDiagnosis::kWrongCrcLength: return "wrong CRC length";
+    case FDiagnosis::kWrongBlockIdOrParVersion: return "wrong F_Block_ID or F_Par_Version";
+    case FDiagnosis::kWrongCrc1: return "wrong CRC1 over the F-parameters";
+  }
+  return "unknown F-parameter diagnosis";
+}
+
+}  // namespace rs4sim::profisafe

@@ -1,0 +1,136 @@
+#pragma once
+// The PROFIsafe F-parameter block (profisafe-v1.md §1, §2; device rules rs4-profisafe.md §8).
+//
+//   offset 0  F_Prm_Flag1   b0 F_Check_SeqNr, b1 F_Check_iPar, b2-3 F_SIL, b4-5 F_CRC_Length
+//   offset 1  F_Prm_Flag2   b3-5 F_Block_ID, b6-7 F_Par_Version
+//   offset 2  F_Source_Add  big-endian
+//   offset 4  F_Dest_Add    big-endian
+//   offset 6  F_WD_Time     big-endian, ms
+//   offset 8  F_Par_CRC     big-endian, CRC1 (crc.h)
+//
+// Syntax (parse_f_parameters) is apart from meaning (validate): parsing only rejects a
+// block that is not 10 bytes or has reserved bits set; validate() compares the fields
+// with a DeviceProfile and yields the RS4's diagnosis number (manual table 6.3-1).
+
+#include "profisafe/errors.h"
+
+#include <boost/outcome/std_result.hpp>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+
+namespace rs4sim::profisafe {
+
+template <class T>
+using Result = boost::outcome_v2::std_result<T>;
+
+inline constexpr std::size_t kFParametersSize = 10;
+
+// F_SIL codes (F_Prm_Flag1 b2-3).
+enum class Sil : std::uint8_t { kSil1 = 0, kSil2 = 1, kSil3 = 2, kNoSil = 3 };
+// F_CRC_Length codes (F_Prm_Flag1 b4-5): 1 = 2-byte CRC2 (V1); V2: 0 = 3-byte, 2 = 4-byte.
+enum class CrcLength : std::uint8_t { k3Byte = 0, k2Byte = 1, k4Byte = 2, kReserved = 3 };
+
+struct FParameters {
+  bool check_seqnr = false;          // F_Check_SeqNr: consecutive number inside CRC2
+  bool check_ipar = false;           // F_Check_iPar
+  Sil sil = Sil::kSil2;              // F_SIL
+  CrcLength crc_length = CrcLength::k2Byte;  // F_CRC_Length
+  std::uint8_t block_id = 0;         // F_Block_ID, 0..7
+  std::uint8_t par_version = 0;      // F_Par_Version, 0 = V1, 1 = V2 (2 bits on the wire)
+  std::uint16_t source_add = 1;      // F_Source_Add
+  std::uint16_t dest_add = 504;      // F_Dest_Add (RS4: 500 + DP address)
+  std::uint16_t wd_time_ms = 10;     // F_WD_Time
+  std::uint16_t par_crc = 0;         // F_Par_CRC (CRC1) as carried in the block
+  std::optional<std::uint32_t> ipar_crc;  // F_iPar_CRC (V2 only; not in the 10 bytes)
+
+  friend bool operator==(const FParameters&, const FParameters&) = default;
+};
+
+// The 8 bytes CRC1 runs over (F_Prm_Flag1 .. F_WD_Time). block_id is masked to 3 bits,
+// par_version to 2 bits (out-of-range values cannot be expressed on the wire).
+[[nodiscard]] std::array<std::uint8_t, 8> encode_f_parameters_without_crc(const FParameters& p) noexcept;
+
+// CRC1 of these parameters (over encode_f_parameters_without_crc, plus ipar_crc if set).
+[[nodiscard]] std::uint16_t crc1(const FParameters& p) noexcept;
+
+// The 10-byte block with F_Par_CRC computed in (p.par_crc is ignored).
+[[nodiscard]] std::array<std::uint8_t, kFParametersSize> encode_f_parameters(const FParameters& p) noexcept;
+
+// The 10-byte block carrying p.par_crc as given (for fault injection: wrong CRC1).
+[[nodiscard]] std::array<std::uint8_t, kFParametersSize> encode_f_parameters_raw(const FParameters& p) noexcept;
+
+// Parse the 10-byte block. Errors: Errc::kFParamsWrongSize, Errc::kFParamsReservedBits.
+// The F_iPar_CRC is not part of the block; pass it if the configuration has one.
+[[nodiscard]] Result<FParameters> parse_f_parameters(std::span<const std::uint8_t> block,
+                                                     std::optional<std::uint32_t> ipar_crc = std::nullopt);
+
+// ---------------------------------------------------------------------------------
+// Device-side validation (rs4-profisafe.md §8; manual §6.3 table 6.3-1).
+
+// The RS4's F-parameter diagnosis numbers, byte 11 of the status PDU `05 81 00 00 nn`.
+// Wire values from the manual. (The generic PROFIsafe code 64 "F_Dest_Add mismatch" is not
+// in the RS4's table: the RS4 reports a wrong F_Dest_Add as 66.)
+enum class FDiagnosis : std::uint8_t {
+  kNone = 0,                        // 0  = Kein Fehler
+  kInternalDestAdd = 65,            // 65 = Interner Fehler bei F_Dest_Add
+  kWrongDestAdd = 66,               // 66 = Falsche F_Dest_Add
+  kWrongSourceAdd = 67,             // 67 = Falsche F_Source_Add
+  kWrongWdTime = 68,                // 68 = Falsche F_WD_Time Einstellung
+  kWrongSil = 69,                   // 69 = Falsche SIL Einstellung
+  kWrongCrcLength = 70,             // 70 = Falsche CRC Laenge
+  kWrongBlockIdOrParVersion = 71,   // 71 = Falsche F_Block_ID oder F_Par_Version
+  kWrongCrc1 = 72,                  // 72 = Falsche CRC1 ueber die F-Parameter
+};
+
+const std::error_category& fdiagnosis_category() noexcept;
+inline std::error_code make_error_code(FDiagnosis d) noexcept {
+  return {static_cast<int>(d), fdiagnosis_category()};
+}
+[[nodiscard]] const char* to_string(FDiagnosis d) noexcept;
+
+// What a device accepts: fixed values and ranges plus its own F_Dest_Add.
+struct DeviceProfile {
+  bool check_ipar = false;
+  Sil sil = Sil::kSil2;
+  CrcLength crc_length = CrcLength::k2Byte;
+  std::uint8_t block_id = 0;
+  std::uint8_t par_version = 0;
+  std::uint16_t min_source_add = 1;
+  std::uint16_t max_source_add = 65534;
+  std::uint16_t min_wd_time_ms = 10;
+  std::uint16_t max_wd_time_ms = 1000;
+  // The device's own F_Dest_Add; 0 or 65535 = the device has no valid one (→ 65).
+  std::uint16_t dest_add = 504;
+
+  // The RS4/PROFIsafe at a DP address: SIL2, 2-byte CRC, block 0, V1, WD 10..1000 ms,
+  // F_Dest_Add = 500 + address (§4.5, §6.2). Addresses above 126 are not valid DP
+  // station addresses; the profile then has no F_Dest_Add (dest_add = 0 → 65).
+  [[nodiscard]] static DeviceProfile rs4(unsigned dp_address) noexcept;
+};
+
+struct Validation {
+  FDiagnosis diagnosis = FDiagnosis::kNone;
+  std::uint16_t received_crc1 = 0;   // F_Par_CRC as received
+  std::uint16_t computed_crc1 = 0;   // CRC1 the device computed (for logging on 72)
+  [[nodiscard]] bool ok() const noexcept { return diagnosis == FDiagnosis::kNone; }
+};
+
+// Check the parameters against the profile. The first failing check in ascending code
+// order (65, 66, ..., 72) is reported. F_Check_iPar != profile is reported as 71.
+[[nodiscard]] Validation validate(const FParameters& p, const DeviceProfile& profile) noexcept;
+
+// Parse + validate raw bytes as the device receives them: a block that does not parse
+// (wrong size, reserved bits) is reported as 71 (not a block layout the device knows).
+[[nodiscard]] Validation validate(std::span<const std::uint8_t> block, const DeviceProfile& profile) noexcept;
+
+// The 5 bytes after the 6 standard diagnosis bytes (manual §6.3, bytes 7..11):
+// length 5, type 0x81 status message, slot 0, no differentiation, error number.
+[[nodiscard]] std::array<std::uint8_t, 5> status_pdu(FDiagnosis d) noexcept;
+
+}  // namespace rs4sim::profisafe
+
+template <>
+struct std::is_error_code_enum<rs4sim::profisafe::FDiagnosis> : std::true_type {};
