@@ -15,19 +15,20 @@
 
 namespace rs4sim::dp::fdl {
 
-// Start delimiters and the end delimiter (§1.2).
+inline constexpr std::uint8_t kBroadcastAddress = 127;
+inline constexpr std::size_t kMaxDataUnit = 246;  // DU incl. DSAP/SSAP bytes (LE 249 - 3)
+inline constexpr std::size_t kMaxTelegramSize = 255;  // SD2 with LE 249
+
+enum class FrameType : std::uint8_t { kSd1, kSd2, kSd3, kToken, kShortAck };
+
+// Start delimiters and the end delimiter (§1.2). Declared after FrameType so that
+// its scoped enumerators of the same names do not trigger -Wshadow.
 inline constexpr std::uint8_t kSd1 = 0x10;  // fixed length, no data unit
 inline constexpr std::uint8_t kSd2 = 0x68;  // variable length, LE 4..249
 inline constexpr std::uint8_t kSd3 = 0xA2;  // fixed length, 8 DU bytes
 inline constexpr std::uint8_t kSd4 = 0xDC;  // token
 inline constexpr std::uint8_t kSc = 0xE5;   // short acknowledgement
 inline constexpr std::uint8_t kEd = 0x16;
-
-inline constexpr std::uint8_t kBroadcastAddress = 127;
-inline constexpr std::size_t kMaxDataUnit = 246;  // DU incl. DSAP/SSAP bytes (LE 249 - 3)
-inline constexpr std::size_t kMaxTelegramSize = 255;  // SD2 with LE 249
-
-enum class FrameType : std::uint8_t { kSd1, kSd2, kSd3, kToken, kShortAck };
 
 // Request function codes, FC bits 3..0 when bit 6 = 1 (§1.5).
 enum class RequestFunction : std::uint8_t {
@@ -115,7 +116,8 @@ struct Telegram {
 };
 
 // Builders for the common shapes. `make_data_telegram` picks SD1 when the DU (including
-// SAP bytes) is empty and SD2 otherwise (SD2 is always legal, §1.2).
+// SAP bytes) is empty and SD2 otherwise (SD2 is always legal, §1.2). It throws
+// std::invalid_argument if `data` is longer than kMaxDataUnit.
 Telegram make_short_ack();
 Telegram make_token(std::uint8_t da, std::uint8_t sa);
 Telegram make_data_telegram(std::uint8_t da, std::uint8_t sa, FrameControl fc,
@@ -129,6 +131,10 @@ std::uint8_t frame_check_sequence(std::span<const std::uint8_t> da_to_du);
 // Precondition (checked, throws std::invalid_argument): DU fits (≤ 246 incl. SAP bytes),
 // addresses ≤ 127, SD3 has exactly 8 DU bytes incl. SAP bytes, SD1 has none.
 std::size_t encode(const Telegram& t, std::vector<std::uint8_t>& out);
+
+// Allocation-free form for the hot path: writes into `out` (needs ≥ encoded_size(t) bytes,
+// kMaxTelegramSize always suffices); returns the number of bytes written. Same checks.
+std::size_t encode(const Telegram& t, std::span<std::uint8_t> out);
 
 // Size on the wire of `t` (same rules as encode), for wire-time computations.
 std::size_t encoded_size(const Telegram& t);

@@ -1,0 +1,134 @@
+#pragma once
+// DPV1 MSAC_C1 PDUs (slave DSAP 51, Alarm_Ack also DSAP 50), spec/profibus-dp.md §3.3–§3.5:
+// Read, Write, Alarm_Ack requests and responses, and the negative response.
+//
+//   Read.req    5E Slot Index Length              Read.res+   5E Slot Index Length Data
+//   Write.req   5F Slot Index Length Data         Write.res+  5F Slot Index Length
+//   Alarm_Ack   5C Slot Alarm_Type Specifier      (response = echo of the request)
+//   Neg.res     (Fn|0x80) Error_Decode Error_Code_1 Error_Code_2
+
+#include "dp/fdl/telegram.h"
+#include "dp/pdu/errors.h"
+
+#include <boost/container/static_vector.hpp>
+
+#include <cstdint>
+#include <span>
+#include <variant>
+
+namespace rs4sim::dp::pdu {
+
+inline constexpr std::size_t kDpv1MaxData = 240;  // 4-byte header + 240 = 244 (§3.3)
+
+// DPV1 function numbers (§3.3). Negative response = function | 0x80.
+enum class Dpv1Function : std::uint8_t {
+  kIdle = 0x48,             // C2
+  kDataTransport = 0x51,    // C2
+  kResourceManager = 0x56,  // C2
+  kInitiate = 0x57,         // C2
+  kAbort = 0x58,            // C2
+  kAlarmAck = 0x5C,         // C1
+  kRead = 0x5E,             // C1/C2
+  kWrite = 0x5F,            // C1/C2
+};
+inline constexpr std::uint8_t kDpv1ErrorBit = 0x80;
+
+// Error_Decode (§3.3).
+namespace error_decode {
+inline constexpr std::uint8_t kDpv1 = 0x80;
+inline constexpr std::uint8_t kFms = 0xFE;
+inline constexpr std::uint8_t kHart = 0xFF;
+}  // namespace error_decode
+
+// Error_Code_1 = class (high nibble) | code (low nibble) (§3.3).
+namespace error_code_1 {
+inline constexpr std::uint8_t kReadError = 0xA0;
+inline constexpr std::uint8_t kWriteError = 0xA1;
+inline constexpr std::uint8_t kModuleFailure = 0xA2;
+inline constexpr std::uint8_t kVersionConflict = 0xA8;
+inline constexpr std::uint8_t kFeatureNotSupported = 0xA9;
+inline constexpr std::uint8_t kInvalidIndex = 0xB0;
+inline constexpr std::uint8_t kWriteLengthError = 0xB1;
+inline constexpr std::uint8_t kInvalidSlot = 0xB2;
+inline constexpr std::uint8_t kTypeConflict = 0xB3;
+inline constexpr std::uint8_t kInvalidArea = 0xB4;
+inline constexpr std::uint8_t kStateConflict = 0xB5;
+inline constexpr std::uint8_t kAccessDenied = 0xB6;
+inline constexpr std::uint8_t kInvalidRange = 0xB7;
+inline constexpr std::uint8_t kInvalidParameter = 0xB8;
+inline constexpr std::uint8_t kInvalidType = 0xB9;
+inline constexpr std::uint8_t kReadConstraintConflict = 0xC0;
+inline constexpr std::uint8_t kWriteConstraintConflict = 0xC1;
+inline constexpr std::uint8_t kResourceBusy = 0xC2;
+inline constexpr std::uint8_t kResourceUnavailable = 0xC3;
+}  // namespace error_code_1
+
+using Dpv1Data = boost::container::static_vector<std::uint8_t, kDpv1MaxData>;
+
+struct ReadRequest {
+  std::uint8_t slot = 0;
+  std::uint8_t index = 0;
+  std::uint8_t length = 1;  // max bytes wanted, 1…240
+  friend bool operator==(const ReadRequest&, const ReadRequest&) = default;
+};
+struct ReadResponse {
+  std::uint8_t slot = 0;
+  std::uint8_t index = 0;
+  Dpv1Data data;  // Length field = data.size()
+  friend bool operator==(const ReadResponse&, const ReadResponse&) = default;
+};
+struct WriteRequest {
+  std::uint8_t slot = 0;
+  std::uint8_t index = 0;
+  Dpv1Data data;  // 1…240 bytes
+  friend bool operator==(const WriteRequest&, const WriteRequest&) = default;
+};
+struct WriteResponse {
+  std::uint8_t slot = 0;
+  std::uint8_t index = 0;
+  std::uint8_t length = 0;  // bytes written
+  friend bool operator==(const WriteResponse&, const WriteResponse&) = default;
+};
+// Alarm_Ack request and positive response have the same 4 bytes (§3.5).
+struct AlarmAck {
+  std::uint8_t slot = 0;
+  std::uint8_t alarm_type = 0;
+  std::uint8_t specifier = 0;  // Alarm_Specifier byte: Seq_Nr<<3 | Add_Ack<<2 | specifier
+  [[nodiscard]] std::uint8_t seq_nr() const { return static_cast<std::uint8_t>(specifier >> 3); }
+  friend bool operator==(const AlarmAck&, const AlarmAck&) = default;
+};
+// Negative response of any DPV1 service (C1 and C2).
+struct Dpv1Error {
+  Dpv1Function function = Dpv1Function::kRead;  // the failed service (wire: | 0x80)
+  std::uint8_t error_decode = error_decode::kDpv1;
+  std::uint8_t error_code_1 = 0;
+  std::uint8_t error_code_2 = 0;
+  friend bool operator==(const Dpv1Error&, const Dpv1Error&) = default;
+};
+
+using C1Request = std::variant<ReadRequest, WriteRequest, AlarmAck>;
+using C1Response = std::variant<ReadResponse, WriteResponse, AlarmAck, Dpv1Error>;
+
+// Slave side. Errors: kTooShort, kBadFunctionCode (anything but 5E/5F/5C — the slave
+// leaves data exchange, §3.3), kLengthMismatch (Read.req not exactly 4 bytes, Write data
+// count ≠ Length), kValueOutOfRange (Read Length 0 or > 240, Write Length 0). The slave
+// answers the last two with Dpv1Error{…, 0x80, 0xB3 (type conflict), 0} (§3.3).
+Result<C1Request> decode_c1_request(std::span<const std::uint8_t> du);
+// Master side. Errors: kTooShort, kBadFunctionCode, kLengthMismatch (Read.res data count ≠
+// Length, Write.res/Alarm_Ack/Neg.res not exactly 4 bytes), kValueOutOfRange (Length > 240).
+Result<C1Response> decode_c1_response(std::span<const std::uint8_t> du);
+
+// Encoders (Errors: kValueOutOfRange for Length 0/ > 240 where the PDU forbids it).
+Result<void> encode(const ReadRequest& r, fdl::DataUnit& out);
+Result<void> encode(const ReadResponse& r, fdl::DataUnit& out);
+Result<void> encode(const WriteRequest& r, fdl::DataUnit& out);
+Result<void> encode(const WriteResponse& r, fdl::DataUnit& out);
+Result<void> encode(const AlarmAck& a, fdl::DataUnit& out);
+Result<void> encode(const Dpv1Error& e, fdl::DataUnit& out);
+
+// The negative response the slave sends for a malformed Read/Write (§3.3 [VPC3-C1]).
+constexpr Dpv1Error type_conflict(Dpv1Function f) {
+  return Dpv1Error{f, error_decode::kDpv1, error_code_1::kTypeConflict, 0};
+}
+
+}  // namespace rs4sim::dp::pdu

@@ -1,0 +1,204 @@
+// DPV1 MSAC_C2 PDUs, spec/profibus-dp.md §3.7.
+#include "dp/pdu/dpv1_c2.h"
+
+#include "dp/pdu/dpv1_internal.h"
+#include "dp/pdu/sap.h"
+#include "dp/pdu/wire.h"
+
+namespace rs4sim::dp::pdu {
+namespace {
+
+using namespace internal;
+
+// S_Addr / D_Addr after a head of `head` bytes whose S_Len/D_Len sit at head−3 / head−1.
+Result<void> decode_addresses(std::span<const std::uint8_t> du, std::size_t head, C2Address& s,
+                              C2Address& d) {
+  const std::size_t s_len = du[head - 3];
+  const std::size_t d_len = du[head - 1];
+  if (du.size() != head + s_len + d_len) return PduError::kLengthMismatch;
+  const auto* p = du.data() + head;
+  s.assign(p, p + s_len);
+  d.assign(p + s_len, p + s_len + d_len);
+  return boost::outcome_v2::success();
+}
+
+Result<InitiateRequest> decode_initiate_request(std::span<const std::uint8_t> du) {
+  if (du.size() < kInitiateReqHead) return PduError::kTooShort;
+  InitiateRequest r;
+  r.send_timeout = wire::be16(du[4], du[5]);
+  r.features_supported = {du[6], du[7]};
+  r.profile_features_supported = {du[8], du[9]};
+  r.profile_ident_number = wire::be16(du[10], du[11]);
+  r.s_type = du[12];
+  r.d_type = du[14];
+  BOOST_OUTCOME_TRY(decode_addresses(du, kInitiateReqHead, r.s_addr, r.d_addr));
+  return r;
+}
+
+Result<InitiateResponse> decode_initiate_response(std::span<const std::uint8_t> du) {
+  if (du.size() < kInitiateResHead) return PduError::kTooShort;
+  InitiateResponse r;
+  r.max_len_data_unit = du[1];
+  r.features_supported = {du[2], du[3]};
+  r.profile_features_supported = {du[4], du[5]};
+  r.profile_ident_number = wire::be16(du[6], du[7]);
+  r.s_type = du[8];
+  r.d_type = du[10];
+  BOOST_OUTCOME_TRY(decode_addresses(du, kInitiateResHead, r.s_addr, r.d_addr));
+  return r;
+}
+
+Result<Abort> decode_abort(std::span<const std::uint8_t> du) {
+  BOOST_OUTCOME_TRY(exact_size(du, 4));
+  const unsigned instance = (du[2] >> 4) & 0x03U;
+  if (du[1] > 2 || instance > 2 || (du[2] & 0xC0U) != 0) return PduError::kValueOutOfRange;
+  return Abort{static_cast<AbortSubnet>(du[1]), static_cast<AbortInstance>(instance),
+               static_cast<std::uint8_t>(du[2] & 0x0FU), du[3]};
+}
+
+Result<DataTransport> decode_transport(std::span<const std::uint8_t> du) {
+  BOOST_OUTCOME_TRY(data, data_with_length(du));
+  return DataTransport{du[1], du[2], std::move(data)};
+}
+
+Result<Idle> decode_idle(std::span<const std::uint8_t> du) {
+  if (du.size() > 2) return PduError::kTooLong;
+  Idle i;
+  if (du.size() == 2) i.second_byte = du[1];
+  return i;
+}
+
+Result<void> encode_addresses(std::uint8_t s_type, const C2Address& s, std::uint8_t d_type,
+                              const C2Address& d, std::size_t head, fdl::DataUnit& out) {
+  if (s.size() > 0xFF || d.size() > 0xFF) return PduError::kValueOutOfRange;
+  if (out.size() + head + s.size() + d.size() > wire::kMaxDpDu) return PduError::kTooLong;
+  (void)wire::append(out, {s_type, static_cast<std::uint8_t>(s.size()), d_type,
+                           static_cast<std::uint8_t>(d.size())});
+  (void)wire::append(out, s);
+  return wire::append(out, d);
+}
+
+}  // namespace
+
+Result<ResourceManagerResponse> decode_rm_response(std::span<const std::uint8_t> du) {
+  BOOST_OUTCOME_TRY(exact_size(du, 4));
+  if (du[0] != static_cast<std::uint8_t>(Dpv1Function::kResourceManager)) return PduError::kBadFunctionCode;
+  if (du[1] > sap::kMsacC2Max) return PduError::kValueOutOfRange;
+  return ResourceManagerResponse{du[1], wire::be16(du[2], du[3])};
+}
+
+Result<C2Request> decode_c2_request(std::span<const std::uint8_t> du) {
+  if (du.empty()) return PduError::kTooShort;
+  switch (du[0]) {
+    case fn(Dpv1Function::kInitiate): {
+      BOOST_OUTCOME_TRY(r, decode_initiate_request(du));
+      return C2Request{std::move(r)};
+    }
+    case fn(Dpv1Function::kAbort): {
+      BOOST_OUTCOME_TRY(a, decode_abort(du));
+      return C2Request{a};
+    }
+    case fn(Dpv1Function::kRead): {
+      BOOST_OUTCOME_TRY(r, decode_read_request(du));
+      return C2Request{r};
+    }
+    case fn(Dpv1Function::kWrite): {
+      BOOST_OUTCOME_TRY(w, decode_write_request(du));
+      return C2Request{std::move(w)};
+    }
+    case fn(Dpv1Function::kDataTransport): {
+      BOOST_OUTCOME_TRY(t, decode_transport(du));
+      return C2Request{std::move(t)};
+    }
+    case fn(Dpv1Function::kIdle): {
+      BOOST_OUTCOME_TRY(i, decode_idle(du));
+      return C2Request{i};
+    }
+    default: return PduError::kBadFunctionCode;
+  }
+}
+
+Result<C2Response> decode_c2_response(std::span<const std::uint8_t> du) {
+  if (du.empty()) return PduError::kTooShort;
+  if ((du[0] & kDpv1ErrorBit) != 0) {
+    BOOST_OUTCOME_TRY(e, decode_negative(du));
+    return C2Response{e};
+  }
+  switch (du[0]) {
+    case fn(Dpv1Function::kInitiate): {
+      BOOST_OUTCOME_TRY(r, decode_initiate_response(du));
+      return C2Response{std::move(r)};
+    }
+    case fn(Dpv1Function::kAbort): {
+      BOOST_OUTCOME_TRY(a, decode_abort(du));
+      return C2Response{a};
+    }
+    case fn(Dpv1Function::kRead): {
+      BOOST_OUTCOME_TRY(r, decode_read_response(du));
+      return C2Response{std::move(r)};
+    }
+    case fn(Dpv1Function::kWrite): {
+      BOOST_OUTCOME_TRY(w, decode_write_response(du));
+      return C2Response{w};
+    }
+    case fn(Dpv1Function::kDataTransport): {
+      BOOST_OUTCOME_TRY(t, decode_transport(du));
+      return C2Response{std::move(t)};
+    }
+    case fn(Dpv1Function::kIdle): {
+      BOOST_OUTCOME_TRY(i, decode_idle(du));
+      return C2Response{i};
+    }
+    default: return PduError::kBadFunctionCode;
+  }
+}
+
+Result<void> encode(const ResourceManagerResponse& r, fdl::DataUnit& out) {
+  if (r.sap > sap::kMsacC2Max) return PduError::kValueOutOfRange;
+  return wire::append(out, {static_cast<std::uint8_t>(Dpv1Function::kResourceManager), r.sap,
+                            wire::hi(r.send_timeout), wire::lo(r.send_timeout)});
+}
+
+Result<void> encode(const InitiateRequest& r, fdl::DataUnit& out) {
+  if (out.size() + kInitiateReqHead + r.s_addr.size() + r.d_addr.size() > wire::kMaxDpDu) {
+    return PduError::kTooLong;
+  }
+  (void)wire::append(out, {static_cast<std::uint8_t>(Dpv1Function::kInitiate), 0, 0, 0,
+                           wire::hi(r.send_timeout), wire::lo(r.send_timeout), r.features_supported[0],
+                           r.features_supported[1], r.profile_features_supported[0],
+                           r.profile_features_supported[1], wire::hi(r.profile_ident_number),
+                           wire::lo(r.profile_ident_number)});
+  return encode_addresses(r.s_type, r.s_addr, r.d_type, r.d_addr, 4, out);
+}
+
+Result<void> encode(const InitiateResponse& r, fdl::DataUnit& out) {
+  if (out.size() + kInitiateResHead + r.s_addr.size() + r.d_addr.size() > wire::kMaxDpDu) {
+    return PduError::kTooLong;
+  }
+  (void)wire::append(out, {static_cast<std::uint8_t>(Dpv1Function::kInitiate), r.max_len_data_unit,
+                           r.features_supported[0], r.features_supported[1],
+                           r.profile_features_supported[0], r.profile_features_supported[1],
+                           wire::hi(r.profile_ident_number), wire::lo(r.profile_ident_number)});
+  return encode_addresses(r.s_type, r.s_addr, r.d_type, r.d_addr, 4, out);
+}
+
+Result<void> encode(const Abort& a, fdl::DataUnit& out) {
+  if (static_cast<unsigned>(a.subnet) > 2 || static_cast<unsigned>(a.instance) > 2 || a.reason > 15) {
+    return PduError::kValueOutOfRange;
+  }
+  return wire::append(out, {static_cast<std::uint8_t>(Dpv1Function::kAbort), static_cast<std::uint8_t>(a.subnet),
+                            static_cast<std::uint8_t>((static_cast<unsigned>(a.instance) << 4) | a.reason),
+                            a.reserved});
+}
+
+Result<void> encode(const DataTransport& d, fdl::DataUnit& out) {
+  return encode_data_pdu(Dpv1Function::kDataTransport, d.slot, d.index, as_span(d.data), out);
+}
+
+Result<void> encode(const Idle& i, fdl::DataUnit& out) {
+  BOOST_OUTCOME_TRY(wire::append(out, {static_cast<std::uint8_t>(Dpv1Function::kIdle)}));
+  if (i.second_byte) return wire::append(out, {*i.second_byte});
+  return boost::outcome_v2::success();
+}
+
+}  // namespace rs4sim::dp::pdu

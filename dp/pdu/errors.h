@@ -1,0 +1,35 @@
+#pragma once
+// Typed decode/encode errors of the DP and DPV1 service PDUs (spec/profibus-dp.md §2, §3).
+// Carried as std::error_code with the category pdu::pdu_category(); decoders return
+// pdu::Result<T> = boost::outcome_v2::std_result<T>.
+
+#include <boost/outcome/std_result.hpp>
+#include <boost/outcome/try.hpp>
+
+#include <cstdint>
+#include <system_error>
+
+namespace rs4sim::dp::pdu {
+
+enum class PduError : std::uint8_t {
+  kTooShort = 1,          // DU shorter than the service's fixed part
+  kTooLong,               // DU longer than the service allows (e.g. Set_Prm > 244)
+  kNotEmpty,              // request that must be empty carries data (Slave_Diag, Get_Cfg…)
+  kLengthMismatch,        // a length field disagrees with the bytes present
+  kBadFunctionCode,       // DPV1 function number unknown or not valid here (§3.3)
+  kValueOutOfRange,       // a field outside its defined range (address, slot, length…)
+  kBadIdentifier,         // Chk_Cfg/Get_Cfg identifier malformed (§2.4)
+  kBadDiagBlock,          // extended diagnosis block header/length malformed (§2.5)
+  kBadAlarm,              // alarm/status PDU malformed (§3.5/§3.6)
+};
+
+const std::error_category& pdu_category() noexcept;
+std::error_code make_error_code(PduError e) noexcept;
+
+template <class T>
+using Result = boost::outcome_v2::std_result<T>;
+
+}  // namespace rs4sim::dp::pdu
+
+template <>
+struct std::is_error_code_enum<rs4sim::dp::pdu::PduError> : std::true_type {};

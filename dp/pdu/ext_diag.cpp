@@ -1,0 +1,147 @@
+// Extended diagnosis blocks, spec/profibus-dp.md §2.5; alarm and status PDUs §3.5/§3.6.
+#include "dp/pdu/ext_diag.h"
+
+#include "dp/pdu/wire.h"
+
+namespace rs4sim::dp::pdu {
+namespace {
+
+constexpr std::uint8_t kMaxBlockLength = 63;  // 6-bit length incl. header
+constexpr std::size_t kDpv1BlockHead = 4;      // header, type, slot, specifier
+constexpr std::uint8_t kStatusBit = 0x80;
+
+// §3.5: 1…6 and 32…126 are defined; 0, 7…31 and 127 are reserved.
+bool valid_alarm_type(std::uint8_t t) {
+  return (t >= alarm_type::kDiagnostic && t <= alarm_type::kUpdate) ||
+         (t >= alarm_type::kManufacturerMin && t <= alarm_type::kManufacturerMax);
+}
+
+// §3.6: 1, 2, 3, 30, 31 and 32…126 are defined.
+bool valid_status_type(std::uint8_t t) {
+  return (t >= 1 && t <= 3) || (t >= status_type::kPrmCmdAck && t <= 126);
+}
+
+Result<ExtDiagBlock> decode_dpv1_block(std::span<const std::uint8_t> block) {
+  if (block.size() < kDpv1BlockHead) return PduError::kBadAlarm;
+  const std::uint8_t type = block[1] & 0x7FU;
+  const std::uint8_t spec = block[3];
+  if ((block[1] & kStatusBit) != 0) {
+    if (!valid_status_type(type)) return PduError::kBadAlarm;
+    StatusPdu s;
+    s.status_type = type;
+    s.slot = block[2];
+    s.specifier = static_cast<StatusSpecifier>(spec & 0x03U);
+    s.specifier_reserved = static_cast<std::uint8_t>(spec & 0xFCU);
+    s.data = block.subspan(kDpv1BlockHead);
+    return ExtDiagBlock{s};
+  }
+  if (!valid_alarm_type(type)) return PduError::kBadAlarm;
+  AlarmPdu a;
+  a.alarm_type = type;
+  a.slot = block[2];
+  a.seq_nr = static_cast<std::uint8_t>(spec >> 3);
+  a.add_ack = wire::bit(spec, 2);
+  a.specifier = static_cast<AlarmSpecifier>(spec & 0x03U);
+  a.data = block.subspan(kDpv1BlockHead);
+  return ExtDiagBlock{a};
+}
+
+Result<void> append_block(std::uint8_t kind_bits, std::span<const std::uint8_t> head,
+                          std::span<const std::uint8_t> data, fdl::DataUnit& out) {
+  const std::size_t len = 1 + head.size() + data.size();
+  if (len < 2 || len > kMaxBlockLength) return PduError::kValueOutOfRange;
+  if (out.size() + len > wire::kMaxDpDu) return PduError::kTooLong;
+  (void)wire::append(out, {static_cast<std::uint8_t>(kind_bits | len)});
+  (void)wire::append(out, head);
+  return wire::append(out, data);
+}
+
+}  // namespace
+
+bool IdentifierDiag::has_diag(std::size_t identifier) const {
+  const std::size_t byte = identifier / 8;
+  return byte < bits.size() && ((bits[byte] >> (identifier % 8)) & 1U) != 0;
+}
+
+std::uint8_t AlarmPdu::specifier_byte() const {
+  return static_cast<std::uint8_t>((seq_nr << 3) | wire::flag(add_ack, 2) |
+                                   (static_cast<std::uint8_t>(specifier) & 0x03U));
+}
+
+Result<std::optional<ExtDiagBlock>> ExtDiagReader::next() {
+  if (rest_.empty()) return std::optional<ExtDiagBlock>{};
+  const std::uint8_t h = rest_[0];
+  const unsigned kind = h >> 6;
+  std::size_t len = 0;
+  Result<ExtDiagBlock> block{PduError::kBadDiagBlock};
+  if (kind == 2) {  // channel-related: fixed 3 bytes
+    len = 3;
+    if (rest_.size() >= len) {
+      block = ExtDiagBlock{ChannelDiag{static_cast<std::uint8_t>(h & 0x3FU),
+                                       static_cast<ChannelDirection>(rest_[1] >> 6),
+                                       static_cast<std::uint8_t>(rest_[1] & 0x3FU),
+                                       static_cast<std::uint8_t>(rest_[2] >> 5),
+                                       static_cast<std::uint8_t>(rest_[2] & 0x1FU)}};
+    }
+  } else if (kind == 3) {  // revision / reserved: one byte
+    len = 1;
+    block = ExtDiagBlock{RevisionBlock{h}};
+  } else {
+    len = h & 0x3FU;
+    if (len >= 2 && len <= rest_.size()) {
+      const auto body = rest_.first(len);
+      if (kind == 1) {
+        block = ExtDiagBlock{IdentifierDiag{body.subspan(1)}};
+      } else if (dpv1_) {
+        block = decode_dpv1_block(body);
+      } else {
+        block = ExtDiagBlock{DeviceDiag{body.subspan(1)}};
+      }
+    }
+  }
+  if (!block) {
+    rest_ = {};
+    return block.error();
+  }
+  rest_ = rest_.subspan(len);
+  return std::optional<ExtDiagBlock>{block.value()};
+}
+
+Result<void> encode_device_diag(std::span<const std::uint8_t> data, fdl::DataUnit& out) {
+  return append_block(0x00, {}, data, out);
+}
+
+Result<void> encode_identifier_diag(std::span<const std::uint8_t> bits, fdl::DataUnit& out) {
+  return append_block(0x40, {}, bits, out);
+}
+
+Result<void> encode_channel_diag(const ChannelDiag& c, fdl::DataUnit& out) {
+  if (c.identifier > 63 || c.channel > 63 || c.channel_type > 7 || c.error_type > 31 ||
+      c.direction == ChannelDirection::kReserved || static_cast<unsigned>(c.direction) > 3) {
+    return PduError::kValueOutOfRange;
+  }
+  return wire::append(out, {static_cast<std::uint8_t>(0x80U | c.identifier),
+                            static_cast<std::uint8_t>((static_cast<unsigned>(c.direction) << 6) | c.channel),
+                            static_cast<std::uint8_t>((c.channel_type << 5) | c.error_type)});
+}
+
+Result<void> encode_alarm(const AlarmPdu& a, fdl::DataUnit& out) {
+  if (!valid_alarm_type(a.alarm_type) || a.seq_nr > 31 || static_cast<unsigned>(a.specifier) > 3) {
+    return PduError::kValueOutOfRange;
+  }
+  const std::uint8_t head[3] = {a.alarm_type, a.slot, a.specifier_byte()};
+  return append_block(0x00, head, a.data, out);
+}
+
+Result<void> encode_status(const StatusPdu& s, fdl::DataUnit& out) {
+  if (!valid_status_type(s.status_type) || (s.specifier_reserved & 0x03U) != 0 ||
+      static_cast<unsigned>(s.specifier) > 3) {
+    return PduError::kValueOutOfRange;
+  }
+  const std::uint8_t head[3] = {static_cast<std::uint8_t>(kStatusBit | s.status_type), s.slot,
+                                static_cast<std::uint8_t>(s.specifier_reserved |
+                                                          static_cast<std::uint8_t>(s.specifier))};
+  return append_block(0x00, head, s.data, out);
+}
+
+}  // namespace rs4sim::dp::pdu
