@@ -1,0 +1,66 @@
+#pragma once
+// PROFIBUS baud rates and wire timing, spec/profibus-dp.md §1.1 and §1.7.
+//
+// One UART character is 11 bits (start, 8 data LSB first, even parity, stop; §1.1).
+// All FDL times are counted in bit times Tbit = 1/baud. Before every request the line
+// is idle for TSYN = 33 Tbit; a responder waits at least min TSDR (default 11 Tbit)
+// after the end of the request (§1.7).
+
+#include "dp/time/clock.h"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace rs4sim::dp::link {
+
+// The standard PROFIBUS-DP (RS-485) rates in bit/s, §1.1 (31.25k is MBP/PA only).
+enum class BaudRate : std::uint32_t {
+  k9k6 = 9'600,
+  k19k2 = 19'200,
+  k45k45 = 45'450,
+  k93k75 = 93'750,
+  k187k5 = 187'500,
+  k500k = 500'000,
+  k1M5 = 1'500'000,
+  k3M = 3'000'000,
+  k6M = 6'000'000,
+  k12M = 12'000'000,
+};
+
+inline constexpr std::array<BaudRate, 10> kStandardBaudRates = {
+    BaudRate::k9k6,  BaudRate::k19k2, BaudRate::k45k45, BaudRate::k93k75, BaudRate::k187k5,
+    BaudRate::k500k, BaudRate::k1M5,  BaudRate::k3M,    BaudRate::k6M,    BaudRate::k12M};
+
+inline constexpr std::uint32_t kBitsPerCharacter = 11;  // §1.1
+inline constexpr std::uint32_t kTsynBits = 33;          // §1.7 TSYN
+inline constexpr std::uint32_t kMinTsdrBits = 11;       // §1.7 default min TSDR
+
+[[nodiscard]] constexpr std::uint32_t bits_per_second(BaudRate b) {
+  return static_cast<std::uint32_t>(b);
+}
+
+// The standard rate with exactly this many bit/s, if any.
+[[nodiscard]] std::optional<BaudRate> baud_rate_from_bps(std::uint64_t bps);
+
+// Parses "9600", "1500000", "187.5k", "1.5M", "12M", "45.45k" (case-insensitive suffix).
+// nullopt when the text is not a number or not a standard rate.
+[[nodiscard]] std::optional<BaudRate> parse_baud_rate(std::string_view text);
+
+// "9.6k, 19.2k, … 12M": for error messages.
+[[nodiscard]] std::string standard_baud_rate_list();
+
+// Human form of a rate ("1.5M", "187.5k").
+[[nodiscard]] std::string to_string(BaudRate b);
+
+// Time `bits` bit times take at `b`, rounded up to the clock's tick (nanoseconds).
+[[nodiscard]] Duration bit_time(BaudRate b, std::uint64_t bits);
+
+// Bits one telegram of `bytes` characters occupies on the line (§1.1: 11 bit/char).
+[[nodiscard]] constexpr std::uint64_t telegram_bits(std::size_t bytes) {
+  return static_cast<std::uint64_t>(bytes) * kBitsPerCharacter;
+}
+
+}  // namespace rs4sim::dp::link

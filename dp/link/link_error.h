@@ -1,0 +1,36 @@
+#pragma once
+// Typed errors of the real-time links (serial/pty, UDP), category "dp.link".
+// These are configuration/OS errors at the edge; bad wire input is never an error here
+// (it is dropped and counted, see counters.h).
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+
+namespace rs4sim::dp::link {
+
+enum class LinkError : std::uint8_t {
+  kUnsupportedBaudRate = 1,  // not a PROFIBUS rate (§1.1)
+  kAdapterRefusedBaudRate,   // the serial driver did not take the rate
+  kAdapterRefusedFormat,     // the serial driver did not take 8E1
+  kNotATerminal,             // the device is no tty (tcgetattr failed)
+  kOpenFailed,               // open() of the device failed
+  kPtyFailed,                // posix_openpt/grantpt/unlockpt/ptsname failed
+  kBadEndpoint,              // "HOST:PORT" malformed or not resolvable
+  kBindFailed,               // UDP bind failed (port in use, …)
+};
+
+const std::error_category& link_category() noexcept;
+std::error_code make_error_code(LinkError e) noexcept;
+
+// Thrown by link constructors: the code plus the context (device path, rate, errno text).
+class LinkException : public std::system_error {
+ public:
+  LinkException(LinkError e, const std::string& what) : std::system_error(make_error_code(e), what) {}
+};
+
+}  // namespace rs4sim::dp::link
+
+template <>
+struct std::is_error_code_enum<rs4sim::dp::link::LinkError> : std::true_type {};

@@ -1,0 +1,278 @@
+#include "dp/link/memory_bus.h"
+
+#include <algorithm>
+#include <boost/container/static_vector.hpp>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace rs4sim::dp::link {
+
+namespace {
+// A core that keeps reporting a deadline at or before `now` after on_time() would stall
+// simulated time; after this many calls at one instant the bus reports the faulty station.
+constexpr std::uint32_t kMaxCallsPerInstant = 10'000;
+
+bool is_request(const fdl::Telegram& t) {
+  return t.type == fdl::FrameType::kToken ||
+         (t.type != fdl::FrameType::kShortAck && t.fc.is_request());
+}
+}  // namespace
+
+const char* to_string(Fate f) {
+  switch (f) {
+    case Fate::kDelivered: return "delivered";
+    case Fate::kDropped: return "dropped";
+    case Fate::kCorrupted: return "corrupted";
+    case Fate::kDelayed: return "delayed";
+    case Fate::kSilenced: return "silenced";
+    case Fate::kUnroutable: return "unroutable";
+  }
+  return "?";
+}
+
+struct MemoryBus::Port final : fdl::DecoderSink {
+  Station* station = nullptr;
+  fdl::Decoder decoder;
+  StationCounters counters;
+  std::optional<TimePoint> deadline;
+  std::optional<std::uint8_t> last_requester;  // SA of the last request it received
+  bool silenced = false;
+  TimePoint now{};  // valid during a delivery
+  TimePoint last_fire{};
+  std::uint32_t fires_at_instant = 0;
+
+  void on_telegram(const fdl::Telegram& t) override {
+    ++counters.received;
+    if (is_request(t) && t.da != fdl::kBroadcastAddress) last_requester = t.sa;
+    station->on_telegram(t, now);
+  }
+  void on_decode_error(std::error_code) override { ++counters.malformed; }
+};
+
+struct MemoryBus::Pending {
+  TimePoint arrival;
+  std::uint64_t sequence = 0;
+  std::uint8_t to = 0;
+  boost::container::static_vector<std::uint8_t, fdl::kMaxTelegramSize> bytes;
+
+  // Min-heap on (arrival, sequence): FIFO among simultaneous arrivals.
+  friend bool operator<(const Pending& a, const Pending& b) {
+    return a.arrival != b.arrival ? a.arrival > b.arrival : a.sequence > b.sequence;
+  }
+};
+
+MemoryBus::MemoryBus(ManualClock& clock, MemoryBusConfig config)
+    : clock_(clock), config_(config), line_free_(clock.now()) {
+  encode_buf_.reserve(fdl::kMaxTelegramSize);
+}
+
+MemoryBus::~MemoryBus() = default;
+
+void MemoryBus::attach(Station& station) {
+  const std::uint8_t a = station.address();
+  if (a >= kMaxStations) {
+    throw std::invalid_argument("memory bus: station address " + std::to_string(a) +
+                                " is outside 0..126");
+  }
+  if (ports_[a]) {
+    throw std::invalid_argument("memory bus: address " + std::to_string(a) + " is already attached");
+  }
+  ports_[a] = std::make_unique<Port>();
+  ports_[a]->station = &station;
+  order_.push_back(ports_[a].get());
+  refresh_deadline(*ports_[a]);
+}
+
+MemoryBus::Port& MemoryBus::port(std::uint8_t address) {
+  return const_cast<Port&>(std::as_const(*this).port(address));
+}
+
+const MemoryBus::Port& MemoryBus::port(std::uint8_t address) const {
+  if (address >= kMaxStations || !ports_[address]) {
+    throw std::out_of_range("memory bus: no station at address " + std::to_string(address));
+  }
+  return *ports_[address];
+}
+
+const StationCounters& MemoryBus::counters(std::uint8_t address) const {
+  return port(address).counters;
+}
+
+const fdl::DecoderStats& MemoryBus::decoder_stats(std::uint8_t address) const {
+  return port(address).decoder.stats();
+}
+
+void MemoryBus::start() {
+  for (Port* p : order_) {
+    p->station->on_time(clock_.now());
+    refresh_deadline(*p);
+    drain(*p);
+  }
+}
+
+void MemoryBus::notify(std::uint8_t address) { drain(port(address)); }
+
+void MemoryBus::refresh_deadline(Port& p) { p.deadline = p.station->next_deadline(); }
+
+void MemoryBus::drain(Port& p) {
+  while (auto t = p.station->take_transmit()) transmit(p, *t);
+  refresh_deadline(p);
+}
+
+std::optional<std::uint8_t> MemoryBus::route(Port& from, const fdl::Telegram& t) {
+  if (is_request(t)) return t.da;
+  // A reply (short ack or FC bit 6 = 0) answers the request the sender received last.
+  const auto to = from.last_requester;
+  from.last_requester.reset();
+  return to;
+}
+
+TimePoint MemoryBus::arrival_time(const fdl::Telegram& t, std::size_t bytes) {
+  if (!config_.wire_model) return clock_.now();
+  const BaudRate baud = *config_.wire_model;
+  const std::uint32_t gap = is_request(t) ? kTsynBits : config_.min_tsdr_bits;  // §1.7
+  // Rounded up to the clock tick once per telegram (idle gap + characters).
+  line_free_ = std::max(clock_.now(), line_free_) + bit_time(baud, gap + telegram_bits(bytes));
+  return line_free_;
+}
+
+void MemoryBus::transmit(Port& from, const fdl::Telegram& t) {
+  ++from.counters.sent;
+  encode_buf_.clear();
+  fdl::encode(t, encode_buf_);
+  BusEvent ev{clock_.now(), clock_.now(), from.station->address(), std::nullopt, &t,
+              encode_buf_, Fate::kDelivered};
+  if (from.silenced) {
+    ++from.counters.silenced;
+    ev.fate = Fate::kSilenced;
+  } else if (const auto to = route(from, t); !to) {
+    ++from.counters.unroutable;
+    ev.fate = Fate::kUnroutable;
+  } else {
+    ev.to = to;
+    ev.arrival = arrival_time(t, encode_buf_.size());
+    if (*to == fdl::kBroadcastAddress) {
+      for (Port* p : order_) {
+        if (p != &from) schedule(from, p->station->address(), ev.arrival, encode_buf_);
+      }
+    } else {
+      ev.fate = schedule(from, *to, ev.arrival, encode_buf_);
+    }
+  }
+  if (observer_) observer_(ev);
+}
+
+Fate MemoryBus::schedule(Port& from, std::uint8_t to, TimePoint arrival,
+                         std::span<const std::uint8_t> wire) {
+  const std::uint8_t sa = from.station->address();
+  if (to >= kMaxStations || !ports_[to]) return Fate::kDelivered;  // nobody listens there
+  if (match_fault(FaultKind::kDrop, sa, to)) {
+    ++from.counters.dropped;
+    return Fate::kDropped;
+  }
+  Fate fate = Fate::kDelivered;
+  Pending p{arrival, sequence_++, to, {wire.begin(), wire.end()}};
+  if (const auto f = match_fault(FaultKind::kCorrupt, sa, to)) {
+    const std::uint32_t bit = f->bit % static_cast<std::uint32_t>(p.bytes.size() * 8);
+    p.bytes[bit / 8] = static_cast<std::uint8_t>(p.bytes[bit / 8] ^ (1U << (bit % 8)));
+    ++from.counters.corrupted;
+    fate = Fate::kCorrupted;
+  }
+  if (const auto f = match_fault(FaultKind::kDelay, sa, to)) {
+    p.arrival += f->delay;
+    ++from.counters.delayed;
+    if (fate == Fate::kDelivered) fate = Fate::kDelayed;
+  }
+  queue_.push_back(std::move(p));
+  std::push_heap(queue_.begin(), queue_.end());
+  return fate;
+}
+
+std::optional<Fault> MemoryBus::match_fault(FaultKind kind, std::uint8_t from, std::uint8_t to) {
+  for (auto it = faults_.begin(); it != faults_.end(); ++it) {
+    const Fault f = it->fault;
+    if (f.kind != kind || (f.from && *f.from != from) || (f.to && *f.to != to)) continue;
+    if (f.count != 0 && ++it->used >= f.count) faults_.erase(it);  // exhausted
+    return f;
+  }
+  return std::nullopt;
+}
+
+FaultId MemoryBus::inject(const Fault& fault) {
+  faults_.push_back({next_fault_id_, fault, 0});
+  return next_fault_id_++;
+}
+
+void MemoryBus::clear_fault(FaultId id) {
+  std::erase_if(faults_, [id](const ActiveFault& f) { return f.id == id; });
+}
+
+void MemoryBus::clear_faults() { faults_.clear(); }
+
+void MemoryBus::set_silenced(std::uint8_t address, bool silenced) { port(address).silenced = silenced; }
+
+void MemoryBus::deliver(Pending& pending) {
+  Port& to = *ports_[pending.to];
+  if (to.silenced) {
+    ++to.counters.silenced;
+    return;
+  }
+  to.now = clock_.now();
+  to.decoder.feed(std::span<const std::uint8_t>(pending.bytes.data(), pending.bytes.size()), to);
+  to.decoder.idle(to);  // TSYN of idle line follows every frame on this bus (§1.7)
+  drain(to);
+}
+
+std::optional<std::pair<TimePoint, MemoryBus::Port*>> MemoryBus::earliest_deadline() const {
+  std::optional<std::pair<TimePoint, Port*>> best;
+  for (Port* p : order_) {
+    if (p->deadline && (!best || *p->deadline < best->first)) best.emplace(*p->deadline, p);
+  }
+  return best;
+}
+
+std::optional<TimePoint> MemoryBus::next_event_time() const {
+  std::optional<TimePoint> t;
+  if (!queue_.empty()) t = queue_.front().arrival;
+  if (const auto d = earliest_deadline(); d && (!t || d->first < *t)) t = d->first;
+  return t;
+}
+
+void MemoryBus::fire_deadline(Port& p) {
+  const TimePoint now = clock_.now();
+  if (p.last_fire == now) {
+    if (++p.fires_at_instant > kMaxCallsPerInstant) {
+      throw std::logic_error("memory bus: station " + std::to_string(p.station->address()) +
+                             " keeps reporting a deadline that has already passed");
+    }
+  } else {
+    p.last_fire = now;
+    p.fires_at_instant = 0;
+  }
+  p.station->on_time(now);
+  drain(p);
+}
+
+bool MemoryBus::step() {
+  const auto deadline = earliest_deadline();
+  if (!queue_.empty() && (!deadline || queue_.front().arrival <= deadline->first)) {
+    std::pop_heap(queue_.begin(), queue_.end());
+    Pending p = std::move(queue_.back());
+    queue_.pop_back();
+    if (p.arrival > clock_.now()) clock_.set(p.arrival);
+    deliver(p);
+    return true;
+  }
+  if (!deadline) return false;
+  if (deadline->first > clock_.now()) clock_.set(deadline->first);
+  fire_deadline(*deadline->second);
+  return true;
+}
+
+void MemoryBus::run_until(TimePoint until) {
+  for (auto t = next_event_time(); t && *t <= until; t = next_event_time()) step();
+  if (until > clock_.now()) clock_.set(until);
+}
+
+}  // namespace rs4sim::dp::link

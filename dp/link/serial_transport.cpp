@@ -1,0 +1,96 @@
+#include "dp/link/serial_transport.h"
+
+#include <boost/asio/error.hpp>
+#include <boost/asio/write.hpp>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
+namespace rs4sim::dp::link {
+
+namespace asio = boost::asio;
+
+namespace {
+int open_device(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) throw LinkException(LinkError::kOpenFailed, path + ": " + std::strerror(errno));
+  return fd;
+}
+}  // namespace
+
+SerialTransport::SerialTransport(asio::io_context& io, const std::string& path, BaudRate baud,
+                                 const LogFn& log)
+    : SerialTransport(io, open_device(path), baud, path, log) {}
+
+SerialTransport::SerialTransport(asio::io_context& io, int fd, BaudRate baud,
+                                 const std::string& name, const LogFn& log)
+    : port_(io), retry_timer_(io) {
+  try {
+    setup_ = configure_serial(fd, baud, name, log);
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
+  port_.assign(fd);
+}
+
+SerialTransport::~SerialTransport() { close(); }
+
+void SerialTransport::start(BytesFn on_bytes, ErrorFn on_error) {
+  on_bytes_ = std::move(on_bytes);
+  on_error_ = std::move(on_error);
+  read_next();
+}
+
+void SerialTransport::read_next() {
+  port_.async_read_some(asio::buffer(rx_), [this](const boost::system::error_code& ec, std::size_t n) {
+    if (ec == asio::error::operation_aborted || !port_.is_open()) return;
+    if (ec) {
+      // e.g. EIO while the other side of a pty is closed: report, retry shortly.
+      if (on_error_) on_error_(ec);
+      retry_timer_.expires_after(std::chrono::milliseconds(100));
+      retry_timer_.async_wait([this](const boost::system::error_code& e) {
+        if (!e && port_.is_open()) read_next();
+      });
+      return;
+    }
+    if (on_bytes_) on_bytes_(std::span<const std::uint8_t>(rx_.data(), n));
+    read_next();
+  });
+}
+
+void SerialTransport::send(std::span<const std::uint8_t> frame) {
+  if (!port_.is_open()) return;
+  tx_.emplace_back(frame.begin(), frame.end());
+  if (!writing_) write_next();
+}
+
+void SerialTransport::write_next() {
+  if (tx_.empty()) {
+    writing_ = false;
+    return;
+  }
+  writing_ = true;
+  asio::async_write(port_, asio::buffer(tx_.front()),
+                    [this](const boost::system::error_code& ec, std::size_t) {
+                      if (ec == asio::error::operation_aborted || tx_.empty()) return;
+                      if (ec && on_error_) on_error_(ec);
+                      tx_.pop_front();
+                      write_next();
+                    });
+}
+
+void SerialTransport::close() {
+  retry_timer_.cancel();
+  if (port_.is_open()) {
+    boost::system::error_code ignored;
+    port_.close(ignored);
+  }
+  tx_.clear();
+  writing_ = false;
+}
+
+}  // namespace rs4sim::dp::link

@@ -1,0 +1,123 @@
+#include "dp/link/station_runner.h"
+
+#include <boost/asio/error.hpp>
+
+namespace rs4sim::dp::link {
+
+StationRunner::StationRunner(boost::asio::io_context& io, const Clock& clock, Transport& transport,
+                             RunnerOptions options)
+    : io_(io), clock_(clock), transport_(transport), options_(options), timer_(io),
+      idle_timer_(io) {
+  encode_buf_.reserve(fdl::kMaxTelegramSize);
+}
+
+void StationRunner::add(Station& station) { stations_.push_back(&station); }
+
+void StationRunner::start() {
+  running_ = true;
+  transport_.start([this](std::span<const std::uint8_t> b) { on_bytes(b); },
+                   [this](std::error_code e) { on_transport_error(e); });
+  now_ = clock_.now();
+  for (Station* s : stations_) s->on_time(now_);
+  drain_all();
+  arm_timer();
+}
+
+void StationRunner::stop() {
+  running_ = false;
+  timer_.cancel();
+  idle_timer_.cancel();
+  transport_.close();
+}
+
+void StationRunner::notify() {
+  if (!running_) return;
+  drain_all();
+  arm_timer();
+}
+
+void StationRunner::on_bytes(std::span<const std::uint8_t> bytes) {
+  if (!running_) return;
+  now_ = clock_.now();
+  decoder_.feed(bytes, *this);
+  if (transport_.datagram()) {
+    decoder_.idle(*this);  // one datagram = one telegram: a leftover is a truncated frame
+  } else if (decoder_.pending_bytes() > 0) {
+    arm_idle_timer();
+  }
+  drain_all();
+  arm_timer();
+}
+
+void StationRunner::on_telegram(const fdl::Telegram& t) {
+  ++counters_.received;
+  if (observer_) {
+    encode_buf_.clear();
+    fdl::encode(t, encode_buf_);
+    observer_(Direction::kReceived, t, encode_buf_, now_);
+  }
+  for (Station* s : stations_) s->on_telegram(t, now_);
+}
+
+void StationRunner::on_decode_error(std::error_code) { ++counters_.malformed; }
+
+void StationRunner::on_transport_error(std::error_code e) {
+  last_error_ = e;
+  ++counters_.send_errors;
+}
+
+void StationRunner::drain_all() {
+  for (Station* s : stations_) {
+    while (auto t = s->take_transmit()) {
+      ++counters_.sent;
+      encode_buf_.clear();
+      fdl::encode(*t, encode_buf_);
+      if (observer_) observer_(Direction::kSent, *t, encode_buf_, now_);
+      transport_.send(encode_buf_);
+    }
+  }
+}
+
+void StationRunner::arm_timer() {
+  std::optional<TimePoint> earliest;
+  for (const Station* s : stations_) {
+    const auto d = s->next_deadline();
+    if (d && (!earliest || *d < *earliest)) earliest = d;
+  }
+  if (earliest == armed_for_) return;
+  armed_for_ = earliest;
+  if (!earliest) {
+    timer_.cancel();
+    return;
+  }
+  const Duration delay = std::max(Duration::zero(), *earliest - clock_.now());
+  timer_.expires_after(delay);
+  timer_.async_wait([this](const boost::system::error_code& ec) {
+    if (ec == boost::asio::error::operation_aborted || !running_) return;
+    armed_for_.reset();
+    on_timer();
+  });
+}
+
+void StationRunner::on_timer() {
+  now_ = clock_.now();
+  for (Station* s : stations_) {
+    const auto d = s->next_deadline();
+    if (d && *d <= now_) s->on_time(now_);
+  }
+  drain_all();
+  arm_timer();
+}
+
+void StationRunner::arm_idle_timer() {
+  const std::uint64_t generation = ++idle_generation_;
+  idle_timer_.expires_after(options_.idle_gap);
+  idle_timer_.async_wait([this, generation](const boost::system::error_code& ec) {
+    if (ec || !running_ || generation != idle_generation_) return;
+    if (decoder_.pending_bytes() == 0) return;
+    now_ = clock_.now();
+    decoder_.idle(*this);  // §1.7: a frame never spans an idle line
+  });
+}
+
+}  // namespace rs4sim::dp::link

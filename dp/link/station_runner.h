@@ -1,0 +1,88 @@
+#pragma once
+// Drives dp::Station cores over a real-time Transport from one asio::io_context thread
+// (DESIGN.md §1.3, the Station contract in dp/station.h):
+//   received bytes → fdl::Decoder → on_telegram() of every station (the cores filter by
+//   address) → take_transmit() drained → fdl::encode → Transport::send();
+//   one steady_timer armed for the earliest next_deadline() → on_time().
+// `now` always comes from the injected Clock (RealClock in production).
+//
+// Framing on a byte stream (serial, pty): the decoder cuts frames by SD/LE/FCS/ED and
+// rescans after a bad frame (dp/fdl/decoder.h). Line idle ≥ TSYN marks a frame boundary on
+// a real line (§1.7); user-space only sees bytes in OS-sized chunks, so the runner treats a
+// pause of `idle_gap` (default: the larger of TSYN and 30 ms) inside a partial frame as that
+// idle and drops the partial frame (counted malformed, fdl kTruncated). On UDP each
+// datagram must be exactly one telegram; anything left over is malformed.
+
+#include "dp/fdl/decoder.h"
+#include "dp/link/counters.h"
+#include "dp/link/transport.h"
+#include "dp/station.h"
+
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/steady_timer.hpp>
+
+#include <functional>
+#include <vector>
+
+namespace rs4sim::dp::link {
+
+struct RunnerOptions {
+  Duration idle_gap = std::chrono::milliseconds(30);
+};
+
+enum class Direction : std::uint8_t { kReceived, kSent };
+// Called for every telegram crossing the link (capture, narration); bytes = wire bytes.
+using LinkObserver =
+    std::function<void(Direction, const fdl::Telegram&, std::span<const std::uint8_t>, TimePoint)>;
+
+class StationRunner final : private fdl::DecoderSink {
+ public:
+  StationRunner(boost::asio::io_context& io, const Clock& clock, Transport& transport,
+                RunnerOptions options = {});
+  StationRunner(const StationRunner&) = delete;
+  StationRunner& operator=(const StationRunner&) = delete;
+
+  // Adds a station (before start()). The station must outlive the runner.
+  void add(Station& station);
+  // Starts receiving and calls on_time() once on every station.
+  void start();
+  // Stops the timers and closes the transport.
+  void stop();
+  // A station changed outside a runner call (an application request on the loop thread):
+  // drain its transmit queue and re-arm the timer.
+  void notify();
+
+  [[nodiscard]] const StationCounters& counters() const { return counters_; }
+  [[nodiscard]] const fdl::DecoderStats& decoder_stats() const { return decoder_.stats(); }
+  [[nodiscard]] std::error_code last_error() const { return last_error_; }
+  void set_observer(LinkObserver observer) { observer_ = std::move(observer); }
+
+ private:
+  void on_telegram(const fdl::Telegram& t) override;
+  void on_decode_error(std::error_code e) override;
+  void on_bytes(std::span<const std::uint8_t> bytes);
+  void on_transport_error(std::error_code e);
+  void on_timer();
+  void drain_all();
+  void arm_timer();
+  void arm_idle_timer();
+
+  boost::asio::io_context& io_;
+  const Clock& clock_;
+  Transport& transport_;
+  RunnerOptions options_;
+  std::vector<Station*> stations_;
+  fdl::Decoder decoder_;
+  boost::asio::steady_timer timer_;
+  boost::asio::steady_timer idle_timer_;
+  std::optional<TimePoint> armed_for_;
+  StationCounters counters_;
+  std::error_code last_error_;
+  std::vector<std::uint8_t> encode_buf_;
+  TimePoint now_{};
+  LinkObserver observer_;
+  std::uint64_t idle_generation_ = 0;
+  bool running_ = false;
+};
+
+}  // namespace rs4sim::dp::link

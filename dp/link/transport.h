@@ -1,0 +1,27 @@
+#pragma once
+// The byte side of a real-time link: a serial/pty stream or UDP datagrams, on an
+// asio::io_context. StationRunner (station_runner.h) sits on top and drives the cores.
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <system_error>
+
+namespace rs4sim::dp::link {
+
+class Transport {
+ public:
+  using BytesFn = std::function<void(std::span<const std::uint8_t>)>;
+  using ErrorFn = std::function<void(std::error_code)>;
+
+  virtual ~Transport() = default;
+  // true: every receive is exactly one telegram (UDP); false: a byte stream (serial/pty).
+  [[nodiscard]] virtual bool datagram() const = 0;
+  // Starts the receive loop; handlers run on the io_context thread.
+  virtual void start(BytesFn on_bytes, ErrorFn on_error) = 0;
+  // Queues one encoded telegram; frames go out whole and in order.
+  virtual void send(std::span<const std::uint8_t> frame) = 0;
+  virtual void close() = 0;
+};
+
+}  // namespace rs4sim::dp::link
