@@ -1,0 +1,284 @@
+// dp::Slave: address filter, FCB rule, SAP dispatch, transitions, timers, replies.
+// Services are in slave_dpv0.cpp (§2), slave_dpv1.cpp (§3.3–3.6), slave_c2.cpp (§3.7).
+#include "dp/slave/slave.h"
+
+#include "dp/pdu/sap.h"
+#include "dp/slave/slave_error.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <system_error>
+
+namespace rs4sim::dp {
+
+using fdl::FrameType;
+using fdl::RequestFunction;
+using fdl::ResponseStatus;
+
+const char* state_name(SlaveState s) {
+  switch (s) {
+    case SlaveState::kWaitPrm: return "Wait_Prm";
+    case SlaveState::kWaitCfg: return "Wait_Cfg";
+    case SlaveState::kDataExch: return "Data_Exch";
+  }
+  return "?";
+}
+
+const char* reason_name(TransitionReason r) {
+  switch (r) {
+    case TransitionReason::kPrmAccepted: return "Set_Prm accepted";
+    case TransitionReason::kPrmFault: return "Prm_Fault";
+    case TransitionReason::kNotSupported: return "Not_Supported";
+    case TransitionReason::kCfgAccepted: return "Chk_Cfg accepted";
+    case TransitionReason::kCfgFault: return "Cfg_Fault";
+    case TransitionReason::kUnlock: return "Unlock_Req";
+    case TransitionReason::kWatchdog: return "watchdog expired";
+    case TransitionReason::kProtocolViolation: return "DPV1 protocol violation";
+    case TransitionReason::kAddressChanged: return "Set_Slave_Add";
+  }
+  return "?";
+}
+
+AcyclicResult AcyclicResult::ok(std::span<const std::uint8_t> bytes) {
+  if (bytes.size() > kMaxAcyclicData) {
+    throw std::system_error(make_error_code(SlaveError::kResponseTooLong));
+  }
+  AcyclicResult r;
+  r.kind = Kind::kData;
+  r.data.assign(bytes.begin(), bytes.end());
+  return r;
+}
+
+namespace {
+const SlaveConfig& checked(const SlaveConfig& c) {
+  if (const auto ec = c.validate()) throw std::system_error(ec, "dp::SlaveConfig");
+  return c;
+}
+bool is_sdn(RequestFunction f) { return f == RequestFunction::kSdnLow || f == RequestFunction::kSdnHigh; }
+bool is_srd(RequestFunction f) { return f == RequestFunction::kSrdLow || f == RequestFunction::kSrdHigh; }
+bool is_sda(RequestFunction f) { return f == RequestFunction::kSdaLow || f == RequestFunction::kSdaHigh; }
+}  // namespace
+
+Slave::Slave(const SlaveConfig& config, SlaveApplication& app)
+    : config_(checked(config)),
+      app_(app),
+      address_(config.address),
+      address_locked_(config.address_change_locked),
+      min_tsdr_(config.min_tsdr_default),
+      alarms_(config.alarm_capacity, config.alarm_sequence_numbers, config.alarm_queue_capacity) {
+  app_.on_attach(*this);
+}
+
+// ---- Station ---------------------------------------------------------------------------
+
+void Slave::on_telegram(const fdl::Telegram& t, TimePoint now) {
+  ++counters_.telegrams_seen;
+  check_timers(now);
+  if (t.type == FrameType::kToken || t.type == FrameType::kShortAck || !t.fc.is_request()) {
+    ++counters_.ignored;  // slaves ignore tokens and other stations' replies (§1.9)
+    return;
+  }
+  if (t.da == fdl::kBroadcastAddress) {
+    // §1.10: never answer DA 127; only SDN Global_Control is meaningful (§2.6).
+    if (is_sdn(t.fc.function()) && t.dsap == pdu::sap::kGlobalControl && t.ssap) {
+      ++counters_.broadcasts;
+      ++counters_.per_sap[pdu::sap::kGlobalControl];
+      if (is_owner(t.sa)) retrigger_watchdog(t.sa, now);
+      on_global_control(t, now);
+    } else {
+      ++counters_.ignored;
+    }
+    tx_.reset();
+    return;
+  }
+  if (t.da != address_) {
+    ++counters_.for_other_stations;
+    return;
+  }
+  handle_request(t, now);
+}
+
+void Slave::handle_request(const fdl::Telegram& t, TimePoint now) {
+  const RequestFunction f = t.fc.function();
+  retrigger_watchdog(t.sa, now);
+  tx_.reset();
+  if (f == RequestFunction::kFdlStatus) {  // §2.10: reply SD1 FC 00 (slave, OK)
+    reply_status(t, ResponseStatus::kOk);
+    return;
+  }
+  if (f == RequestFunction::kIdent || f == RequestFunction::kLsapStatus) {
+    reply_rs(t);  // DECISION: FDL services a DP slave does not offer → RS
+    return;
+  }
+  if (!is_sdn(f) && !is_srd(f) && !is_sda(f)) {
+    ++counters_.ignored;  // TE/CV/MSRD: not for a DP slave
+    return;
+  }
+  fdl::FcbVerdict verdict = fdl::FcbVerdict::kNotEvaluated;
+  if (!is_sdn(f)) {
+    verdict = fcb_.on_request(t.sa, t.fc);
+    if (verdict == fdl::FcbVerdict::kRepeat && fcb_.stored_reply() != nullptr) {
+      ++counters_.repeats_answered;  // §1.8: resend, do not execute again
+      tx_ = *fcb_.stored_reply();
+      return;
+    }
+  }
+  dispatch(t, now);
+  if (is_sdn(f)) {
+    tx_.reset();  // §1.10: never reply to SDN
+    return;
+  }
+  if (!tx_) return;
+  if (tx_->type == FrameType::kSd2 && !tx_->dsap && tx_->data.empty()) tx_->type = FrameType::kSd1;
+  if (is_sda(f) && tx_->type != FrameType::kShortAck &&
+      tx_->fc.status() != ResponseStatus::kSapNotEnabled) {
+    reply_short_ack();  // SDA is only acknowledged (§1.6)
+  }
+  if (verdict != fdl::FcbVerdict::kNotEvaluated) fcb_.store_reply(*tx_);
+}
+
+void Slave::dispatch(const fdl::Telegram& t, TimePoint now) {
+  if (!t.dsap) {
+    ++counters_.default_sap;
+    on_data_exchange(t, now);
+    return;
+  }
+  const std::uint8_t dsap = *t.dsap & 0x3F;
+  ++counters_.per_sap[dsap];
+  if (!t.ssap) {
+    reply_rs(t);
+    return;
+  }
+  if (dsap >= pdu::sap::kSetSlaveAdd && dsap <= pdu::sap::kChkCfg) {
+    dispatch_dp_sap(t, now);
+  } else if (dsap == pdu::sap::kMsacC1 || dsap == pdu::sap::kAlarm) {
+    on_msac_c1(t, now);
+  } else if (dsap == pdu::sap::kMsacC2Rm) {
+    on_c2_rm(t, now);
+  } else if (config_.c2_supported && dsap == config_.c2_sap) {
+    on_c2_sap(t, now);
+  } else {
+    reply_rs(t);  // Ext_User_Prm (53) and unused SAPs are not activated
+  }
+}
+
+void Slave::dispatch_dp_sap(const fdl::Telegram& t, TimePoint now) {
+  if (*t.ssap != pdu::sap::kMasterMs0) {  // DP services come from master SAP 62 (§2.1)
+    reply_rs(t);
+    return;
+  }
+  switch (*t.dsap) {
+    case pdu::sap::kSetSlaveAdd: on_set_slave_add(t, now); break;
+    case pdu::sap::kRdInp: on_read_io(t, true); break;
+    case pdu::sap::kRdOutp: on_read_io(t, false); break;
+    case pdu::sap::kGlobalControl:
+      on_global_control(t, now);
+      reply_short_ack();
+      break;
+    case pdu::sap::kGetCfg: on_get_cfg(t); break;
+    case pdu::sap::kSlaveDiag: on_slave_diag(t); break;
+    case pdu::sap::kSetPrm: on_set_prm(t, now); break;
+    default: on_chk_cfg(t, now); break;
+  }
+}
+
+void Slave::on_time(TimePoint now) {
+  check_timers(now);
+  const auto app_deadline = app_.next_deadline();
+  if (app_deadline && now >= *app_deadline) app_.on_time(now);
+}
+
+std::optional<TimePoint> Slave::next_deadline() const {
+  std::optional<TimePoint> d = wd_deadline_;
+  const auto fold = [&d](std::optional<TimePoint> t) {
+    if (t && (!d || *t < *d)) d = t;
+  };
+  if (c2_.bound) fold(c2_.deadline);
+  fold(app_.next_deadline());
+  return d;
+}
+
+std::optional<fdl::Telegram> Slave::take_transmit() {
+  std::optional<fdl::Telegram> out;
+  out.swap(tx_);
+  return out;
+}
+
+// ---- timers and transitions ------------------------------------------------------------
+
+void Slave::check_timers(TimePoint now) {
+  if (wd_deadline_ && now >= *wd_deadline_) {  // §2.8: expiry at exactly T_WD
+    ++counters_.watchdog_expiries;
+    reset_parameters(false);
+    enter(SlaveState::kWaitPrm, TransitionReason::kWatchdog, now);
+  }
+  if (c2_.bound && now >= c2_.deadline) c2_close(C2Event::kTimedOut, now);  // §3.7 step 5
+}
+
+void Slave::retrigger_watchdog(std::uint8_t sa, TimePoint now) {
+  if (wd_deadline_ && wd_time_ && sa == master_) wd_deadline_ = now + *wd_time_;
+}
+
+void Slave::reset_parameters(bool keep_master) {
+  if (!keep_master) master_ = pdu::sap::kNoMasterAddress;
+  wd_on_ = false;
+  wd_time_.reset();
+  wd_deadline_.reset();
+  group_ident_ = 0;
+  sync_req_ = false;
+  freeze_req_ = false;
+  dpv1_.reset();
+  input_length_ = 0;
+  output_length_ = 0;
+}
+
+void Slave::enter(SlaveState to, TransitionReason why, TimePoint now) {
+  const SlaveState from = state_;
+  if (from == SlaveState::kDataExch && to != SlaveState::kDataExch) {
+    // §2.2: leaving Data_Exch puts the outputs into the safe state; §3.3 closes C1/alarms.
+    sync_mode_ = false;
+    freeze_mode_ = false;
+    held_outputs_valid_ = false;
+    std::fill(outputs_.begin(), outputs_.end(), std::uint8_t{0});
+    app_.on_outputs_cleared(OutputClear::kLeftDataExchange, now);
+  }
+  if (to != SlaveState::kDataExch) close_dpv1();
+  state_ = to;
+  if (to == SlaveState::kDataExch && from != SlaveState::kDataExch && dpv1_ &&
+      dpv1_->any_alarm_enabled()) {
+    alarms_.open(*dpv1_);  // §3.3: alarm machine opens on entering Data_Exch
+  }
+  const SlaveTransition tr{from, to, why, now};
+  if (trace_) trace_(tr);
+  app_.on_state_change(from, to, why, now);
+}
+
+// ---- replies -----------------------------------------------------------------------------
+
+void Slave::reply_short_ack() {
+  tx_.emplace();
+  tx_->type = FrameType::kShortAck;
+}
+
+void Slave::reply_status(const fdl::Telegram& req, ResponseStatus st) {
+  tx_.emplace();
+  tx_->type = FrameType::kSd1;
+  tx_->da = req.sa;
+  tx_->sa = address_;
+  tx_->fc = fdl::FrameControl::response(st);
+}
+
+void Slave::reply_rs(const fdl::Telegram& req) {
+  ++counters_.rs_replies;
+  reply_status(req, ResponseStatus::kSapNotEnabled);
+}
+
+fdl::DataUnit& Slave::reply_data(const fdl::Telegram& req, ResponseStatus st) {
+  reply_status(req, st);
+  tx_->type = FrameType::kSd2;
+  tx_->dsap = req.ssap;  // reply frames swap the SAPs (§2.1)
+  tx_->ssap = req.dsap;
+  return tx_->data;
+}
+
+}  // namespace rs4sim::dp
