@@ -1,0 +1,105 @@
+#include "rs4/protocol/adapter_answer.h"
+
+#include "rs4/protocol/adapter_command.h"
+
+namespace rs4sim::rs4::protocol {
+namespace {
+
+void put16(std::vector<std::uint8_t>& out, std::uint16_t v) {
+  out.push_back(static_cast<std::uint8_t>(v >> 8));
+  out.push_back(static_cast<std::uint8_t>(v & 0xFFU));
+}
+
+std::uint16_t get16(std::span<const std::uint8_t> in, std::size_t at) noexcept {
+  return static_cast<std::uint16_t>((in[at] << 8) | in[at + 1]);
+}
+
+// Checks code byte and exact length, the two ways an answer can be malformed in frame.
+std::error_code check_frame(std::span<const std::uint8_t> answer, AdapterCommandCode code,
+                            std::size_t size) noexcept {
+  if (answer.empty() || answer[0] != static_cast<std::uint8_t>(code)) {
+    return ProtocolError::kBadAnswerCode;
+  }
+  if (answer.size() != size) return ProtocolError::kBadAnswerLength;
+  return {};
+}
+
+void put_ring(std::vector<std::uint8_t>& out, const ErrorRingBuffer& ring) {
+  out.push_back(ring.write_index);
+  out.push_back(ring.age_flag);
+  for (const auto entry : ring.entries) put16(out, entry);
+}
+
+Result<ErrorRingBuffer> get_ring(std::span<const std::uint8_t> in) noexcept {
+  ErrorRingBuffer ring;
+  ring.write_index = in[0];
+  ring.age_flag = in[1];
+  if (ring.write_index >= ErrorRingBuffer::kEntries || ring.age_flag > 1) {
+    return ProtocolError::kBadAnswerValue;
+  }
+  for (std::size_t i = 0; i < ErrorRingBuffer::kEntries; ++i) ring.entries[i] = get16(in, 2 + 2 * i);
+  return ring;
+}
+
+constexpr std::size_t kRingSize = 2 + 2 * ErrorRingBuffer::kEntries;  // 42 bytes
+
+}  // namespace
+
+std::vector<std::uint8_t> encode_version_answer(const VersionAnswer& a) {
+  return {static_cast<std::uint8_t>(AdapterCommandCode::kGetVersion),
+          a.profisafe_version_hi, a.profisafe_version_lo, a.dp_version_hi, a.dp_version_lo,
+          a.dpv1sl_components_hi, a.dpv1sl_components_lo, a.main_interface, a.function,
+          a.bugfix};
+}
+
+Result<VersionAnswer> decode_version_answer(std::span<const std::uint8_t> answer) {
+  if (auto ec = check_frame(answer, AdapterCommandCode::kGetVersion, kVersionAnswerSize)) {
+    return ec;
+  }
+  return VersionAnswer{answer[1], answer[2], answer[3], answer[4], answer[5],
+                       answer[6], answer[7], answer[8], answer[9]};
+}
+
+std::vector<std::uint8_t> encode_last_error_answer(const LastErrorAnswer& a) {
+  std::vector<std::uint8_t> out{static_cast<std::uint8_t>(AdapterCommandCode::kError)};
+  out.reserve(kLastErrorAnswerSize);
+  put16(out, a.uc2_error);
+  put16(out, a.uc2_count);
+  put16(out, a.uc1_error);
+  put16(out, a.uc1_count);  // DECISION §5.3: high byte first
+  return out;
+}
+
+Result<LastErrorAnswer> decode_last_error_answer(std::span<const std::uint8_t> answer) {
+  if (auto ec = check_frame(answer, AdapterCommandCode::kError, kLastErrorAnswerSize)) {
+    return ec;
+  }
+  return LastErrorAnswer{get16(answer, 1), get16(answer, 3), get16(answer, 5), get16(answer, 7)};
+}
+
+void ErrorRingBuffer::push(std::uint16_t error) noexcept {
+  write_index = static_cast<std::uint8_t>((write_index + 1U) % kEntries);
+  entries[write_index] = error;
+  age_flag = 0;
+}
+
+std::vector<std::uint8_t> encode_error_memory_answer(const ErrorMemoryAnswer& a) {
+  std::vector<std::uint8_t> out{static_cast<std::uint8_t>(AdapterCommandCode::kGetError)};
+  out.reserve(kErrorMemoryAnswerSize);
+  put_ring(out, a.uc2);
+  put_ring(out, a.uc1);
+  return out;
+}
+
+Result<ErrorMemoryAnswer> decode_error_memory_answer(std::span<const std::uint8_t> answer) {
+  if (auto ec = check_frame(answer, AdapterCommandCode::kGetError, kErrorMemoryAnswerSize)) {
+    return ec;
+  }
+  auto uc2 = get_ring(answer.subspan(1, kRingSize));
+  if (!uc2) return uc2.error();
+  auto uc1 = get_ring(answer.subspan(1 + kRingSize, kRingSize));
+  if (!uc1) return uc1.error();
+  return ErrorMemoryAnswer{uc2.value(), uc1.value()};
+}
+
+}  // namespace rs4sim::rs4::protocol

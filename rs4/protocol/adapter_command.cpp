@@ -1,0 +1,81 @@
+#include "rs4/protocol/adapter_command.h"
+
+namespace rs4sim::rs4::protocol {
+namespace {
+
+constexpr std::uint8_t code(AdapterCommandCode c) noexcept {
+  return static_cast<std::uint8_t>(c);
+}
+
+RejectedCommand wrong_length(std::uint8_t command) noexcept {
+  return {CommandErrorKind::kWrongLength, command};
+}
+
+WriteCommand parse_get_rs4_data(std::span<const std::uint8_t> payload) {
+  // Table 5.2-5: 92 mask mode, exactly three bytes.
+  if (payload.size() != 3) return wrong_length(payload[0]);
+  const std::uint8_t mask = payload[1];
+  const std::uint8_t mode = payload[2];
+  // Bits 4..7 of the mask select nothing the manual defines; mode > 1 is "nicht zulässig".
+  if ((mask & ~kForwardMaskDefined) != 0 || mode > static_cast<std::uint8_t>(ForwardMode::kPermanent)) {
+    return RejectedCommand{CommandErrorKind::kWrongParameter, payload[0]};
+  }
+  return GetRs4DataCommand{mask, static_cast<ForwardMode>(mode)};
+}
+
+template <typename Command>
+WriteCommand single_byte(std::span<const std::uint8_t> payload) {
+  if (payload.size() != 1) return wrong_length(payload[0]);
+  return Command{};
+}
+
+}  // namespace
+
+Result<WriteCommand> parse_write_command(std::span<const std::uint8_t> payload) {
+  if (payload.empty()) return ProtocolError::kEmptyCommand;
+  switch (static_cast<AdapterCommandCode>(payload[0])) {
+    case AdapterCommandCode::kReset: return single_byte<ResetCommand>(payload);
+    case AdapterCommandCode::kGetRs4Data: return parse_get_rs4_data(payload);
+    case AdapterCommandCode::kGetVersion: return single_byte<GetVersionCommand>(payload);
+    case AdapterCommandCode::kError: return single_byte<GetLastErrorCommand>(payload);
+    case AdapterCommandCode::kGetError: return single_byte<GetErrorMemoryCommand>(payload);
+    case AdapterCommandCode::kErrorInTelegram:  // an answer code, not a command
+    default:
+      return WriteCommand{Rs4Command{payload}};
+  }
+}
+
+std::vector<std::uint8_t> encode_command(const ResetCommand&) {
+  return {code(AdapterCommandCode::kReset)};
+}
+std::vector<std::uint8_t> encode_command(const GetRs4DataCommand& command) {
+  return {code(AdapterCommandCode::kGetRs4Data), command.mask,
+          static_cast<std::uint8_t>(command.mode)};
+}
+std::vector<std::uint8_t> encode_command(const GetVersionCommand&) {
+  return {code(AdapterCommandCode::kGetVersion)};
+}
+std::vector<std::uint8_t> encode_command(const GetLastErrorCommand&) {
+  return {code(AdapterCommandCode::kError)};
+}
+std::vector<std::uint8_t> encode_command(const GetErrorMemoryCommand&) {
+  return {code(AdapterCommandCode::kGetError)};
+}
+
+std::vector<std::uint8_t> encode_rejection(const RejectedCommand& rejected) {
+  return {code(AdapterCommandCode::kErrorInTelegram), static_cast<std::uint8_t>(rejected.kind),
+          rejected.command};
+}
+
+Result<RejectedCommand> decode_rejection(std::span<const std::uint8_t> answer) {
+  if (answer.empty() || answer[0] != code(AdapterCommandCode::kErrorInTelegram)) {
+    return ProtocolError::kBadAnswerCode;
+  }
+  if (answer.size() != 3) return ProtocolError::kBadAnswerLength;
+  if (answer[1] > static_cast<std::uint8_t>(CommandErrorKind::kWrongParameter)) {
+    return ProtocolError::kBadAnswerValue;
+  }
+  return RejectedCommand{static_cast<CommandErrorKind>(answer[1]), answer[2]};
+}
+
+}  // namespace rs4sim::rs4::protocol

@@ -1,0 +1,120 @@
+#include "rs4/protocol/adapter_error.h"
+
+#include <string>
+
+namespace rs4sim::rs4::protocol {
+namespace {
+
+constexpr std::uint16_t kFamilyMask = 0xFFF0;
+constexpr std::string_view kProxyRemedy =
+    "process acyclic READ and WRITE only after the Proxy-FB completed the parameter "
+    "sync; watch FB_BUSY (§6.4)";
+
+struct Text {
+  std::string_view cause;
+  std::string_view remedy;
+};
+
+Text text(AdapterError e) noexcept {
+  const auto value = to_wire(e);
+  if ((value & kFamilyMask) == to_wire(AdapterError::kEchoCrcWrong)) {
+    return {"echo data CRC no. x wrong", kProxyRemedy};
+  }
+  if ((value & kFamilyMask) == to_wire(AdapterError::kCrcDiffersOnReread)) {
+    return {"CRC no. x differs on read repetition", kProxyRemedy};
+  }
+  switch (e) {
+    case AdapterError::kSafetyDriverCannotCheckOutputs:
+      return {"the PROFIsafe driver cannot check the cyclic output data",
+              "invalid operating state; can occur on PROFIBUS disturbances"};
+    case AdapterError::kOutputsInconsistent:
+      return {"processing the output data gives no consistent result",
+              "invalid operating state; can occur on PROFIBUS disturbances"};
+    case AdapterError::kWrongFieldPair:
+      return {"wrong protective field pair number", "select only field pairs 1 to 4"};
+    case AdapterError::kTelegramNotProcessed:
+      return {"PROFIBUS telegram could not be processed",
+              "evaluate the flow-control byte (§5.2) before acyclic WRITEs"};
+    case AdapterError::kReadBuffersFull:
+      return {"all read buffers for PROFIBUS telegrams are occupied",
+              "fetch the result the adapter provides after every WRITE"};
+    case AdapterError::kTelegramTooLong:
+      return {"PROFIBUS telegram too long (>= 1100 bytes)", "send only valid acyclic WRITEs"};
+    case AdapterError::kUnexpectedBlockNumber:
+      return {"unexpected block number in PROFIBUS telegram",
+              "number the blocks of a telegram sequentially"};
+    case AdapterError::kProxyStateUnknown:
+      return {"unknown state of the Proxy-FB", kProxyRemedy};
+    case AdapterError::kCrcComparison:
+      return {"error in CRC comparison", kProxyRemedy};
+    default:
+      return {"unknown adapter error", "see manual table 5.3-3"};
+  }
+}
+
+class AdapterCategory final : public std::error_category {
+ public:
+  const char* name() const noexcept override { return "rs4.adapter"; }
+  std::string message(int value) const override {
+    const auto e = static_cast<AdapterError>(value);
+    const Text t = text(e);
+    std::string out = "0x";
+    constexpr char kHex[] = "0123456789ABCDEF";
+    for (int shift = 12; shift >= 0; shift -= 4) {
+      out += kHex[(static_cast<unsigned>(value) >> shift) & 0xFU];
+    }
+    out += ": ";
+    out += t.cause;
+    out += " (remedy: ";
+    out += t.remedy;
+    out += ")";
+    return out;
+  }
+};
+
+}  // namespace
+
+AdapterError echo_crc_wrong(std::uint8_t crc_number) noexcept {
+  return static_cast<AdapterError>(to_wire(AdapterError::kEchoCrcWrong) | (crc_number & 0x0FU));
+}
+
+AdapterError crc_differs_on_reread(std::uint8_t crc_number) noexcept {
+  return static_cast<AdapterError>(to_wire(AdapterError::kCrcDiffersOnReread) |
+                                   (crc_number & 0x0FU));
+}
+
+std::optional<std::uint8_t> crc_number(AdapterError e) noexcept {
+  const auto family = to_wire(e) & kFamilyMask;
+  if (family == to_wire(AdapterError::kEchoCrcWrong) ||
+      family == to_wire(AdapterError::kCrcDiffersOnReread)) {
+    return static_cast<std::uint8_t>(to_wire(e) & 0x0FU);
+  }
+  return std::nullopt;
+}
+
+std::optional<AdapterError> adapter_error_from_wire(std::uint16_t value) noexcept {
+  switch (value) {
+    case 0x2418: case 0x2419: case 0x2600: case 0x2A04: case 0x2A05: case 0x2A06:
+    case 0x2A0B: case 0x2B01: case 0x2B09:
+      return static_cast<AdapterError>(value);
+    default:
+      break;
+  }
+  const auto family = static_cast<std::uint16_t>(value & kFamilyMask);
+  if (family == 0x2B10 || family == 0x2B20) return static_cast<AdapterError>(value);
+  return std::nullopt;
+}
+
+std::string_view adapter_error_cause(AdapterError e) noexcept { return text(e).cause; }
+std::string_view adapter_error_remedy(AdapterError e) noexcept { return text(e).remedy; }
+
+const std::error_category& adapter_category() noexcept {
+  static const AdapterCategory category;
+  return category;
+}
+
+std::error_code make_error_code(AdapterError e) noexcept {
+  return {static_cast<int>(e), adapter_category()};
+}
+
+}  // namespace rs4sim::rs4::protocol
