@@ -1,0 +1,71 @@
+#pragma once
+// Typed errors of the scanner model, each an enum class carried as std::error_code with
+// its own category (CONTRIBUTING-HELPERS.md, "Errors").
+
+#include <cstdint>
+#include <system_error>
+
+namespace rs4sim::rs4::scanner {
+
+// Semantic check of a ParameterSet (docs/rs4-scanner.md "Validation").
+enum class ParameterError : std::uint8_t {
+  kProtectiveTooFar = 1,     // protective contour > 4000 mm (§1)
+  kWarningTooFar,            // warning contour > 15000 mm (§10, project limit)
+  kResponseTimeSteps,        // n in 80 ms + n·40 ms above kMaxResponseSteps
+  kRestartMode,              // unknown start/restart interlock mode
+  kStartPair,                // start pair not in 1..4
+  kTransitionDiagonal,       // a pair must permit staying on itself
+  kWarningOutput,            // unknown bit in the warning output assignment
+  kMeasurementResolution,    // resolution 0
+  kMeasurementRange,         // start > stop or stop > 528
+  kPassword,                 // byte not printable ASCII / 0xFF padding not at the end
+  kEmptyStartField,          // the start pair has no protective field at all
+};
+
+// Syntax errors of the binary parameter-set encoding (parameter_codec.h).
+enum class CodecError : std::uint8_t {
+  kTooShort = 1,             // fewer bytes than the fixed layout
+  kTooLong,                  // bytes after the fixed layout
+  kBadMagic,                 // not "RS4P"
+  kUnsupportedVersion,       // format version other than 1
+  kReservedNotZero,          // a reserved byte is not 0
+};
+
+// Scene edits (scene.h).
+enum class SceneError : std::uint8_t {
+  kNotFinite = 1,            // NaN or infinite coordinate
+  kBadRadius,                // circle radius <= 0
+  kTooFewVertices,           // polygon with < 3 vertices
+  kDegenerateWall,           // wall of zero length
+  kRawContourSize,           // raw contour not exactly 529 values
+  kUnknownObstacle,          // id not in the scene
+  kNotMovable,               // a raw contour has no position
+  kTooManyObstacles,         // more than Scene::kMaxObstacles
+};
+
+// Control API of the Scanner (scanner.h).
+enum class ScannerError : std::uint8_t {
+  kNotInConfiguration = 1,   // parameter set may change only in configuration state or off
+  kInvalidParameterSet,      // validation failed (see validate())
+  kNotMeasuring,             // configuration entered only from measuring/error
+};
+
+const std::error_category& parameter_category() noexcept;
+const std::error_category& codec_category() noexcept;
+const std::error_category& scene_category() noexcept;
+const std::error_category& scanner_category() noexcept;
+std::error_code make_error_code(ParameterError e) noexcept;
+std::error_code make_error_code(CodecError e) noexcept;
+std::error_code make_error_code(SceneError e) noexcept;
+std::error_code make_error_code(ScannerError e) noexcept;
+
+}  // namespace rs4sim::rs4::scanner
+
+template <>
+struct std::is_error_code_enum<rs4sim::rs4::scanner::ParameterError> : std::true_type {};
+template <>
+struct std::is_error_code_enum<rs4sim::rs4::scanner::CodecError> : std::true_type {};
+template <>
+struct std::is_error_code_enum<rs4sim::rs4::scanner::SceneError> : std::true_type {};
+template <>
+struct std::is_error_code_enum<rs4sim::rs4::scanner::ScannerError> : std::true_type {};

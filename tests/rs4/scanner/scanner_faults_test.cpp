@@ -1,0 +1,216 @@
+// Field pairs, faults, contamination, events, configuration (docs/rs4-scanner.md).
+#include <gtest/gtest.h>
+
+#include "scanner_test_support.h"
+
+namespace rs4sim::rs4::scanner {
+namespace {
+
+using namespace testing;
+
+void pulse(Scanner& s, ManualTime& t) {
+  s.set_restart_input(true, t.now);
+  s.set_restart_input(false, t.advance(milliseconds(200)));
+}
+
+ParameterSet restricted() {
+  ParameterSet p = params(RestartMode::kAutomatic);
+  p.permitted = {0x03, 0x03, 0x0C, 0x0C};   // 1↔2 and 3↔4 only
+  return p;
+}
+
+TEST(ScannerFieldPairs, PermittedSwitchUsesTheNewFieldAndOverlapsOneScan) {
+  ManualTime t;
+  Scanner s = booted(restricted(), t);
+  // An object at 1200 mm violates pair 2 (1500 mm) but not pair 1 (1000 mm).
+  ASSERT_TRUE(s.edit_scene(t.now).add(intruder(1200)));
+  s.advance(t.advance(milliseconds(200)));
+  EXPECT_TRUE(s.ossd());
+  EXPECT_FALSE(s.status().protective_violated);
+  EXPECT_TRUE(s.status().warning_violated);                     // pair 1 warning = 2000 mm
+  s.select_field_pair(2, t.advance(milliseconds(1)));
+  EXPECT_EQ(s.status().first_pair, 2);
+  EXPECT_EQ(s.status().second_pair, 1);                         // switch-over: two selected
+  s.advance(t.advance(milliseconds(39)));                       // the overlapping scan
+  EXPECT_TRUE(s.status().protective_violated);
+  EXPECT_FALSE(s.status().second_protective_violated);          // pair 1 is free
+  EXPECT_EQ(s.status().second_pair, 1);
+  s.advance(t.advance(milliseconds(40)));                       // k = 2 scans on pair 2
+  EXPECT_EQ(s.status().second_pair, 0);
+  EXPECT_FALSE(s.ossd());
+  EXPECT_EQ(s.counters().field_pair_switches, 1U);
+  EXPECT_EQ(s.status().state, OperatingState::kMeasuring);
+}
+
+TEST(ScannerFieldPairs, ForbiddenTransitionIsAFaultAcknowledgedByPulse) {
+  ManualTime t;
+  Scanner s = booted(restricted(), t);
+  ASSERT_TRUE(s.ossd());
+  s.select_field_pair(3, t.advance(milliseconds(5)));
+  EXPECT_FALSE(s.ossd());
+  EXPECT_EQ(s.status().state, OperatingState::kError);
+  EXPECT_TRUE(s.faults()[static_cast<std::size_t>(Fault::kFieldPairSequence)].latched);
+  const auto e = s.pop_event();
+  ASSERT_TRUE(e.has_value());
+  EXPECT_EQ(e->kind, Rs4Event::Kind::kError);
+  EXPECT_EQ(e->number, 0x0401);
+  EXPECT_EQ(e->parameter, 0x0103);                              // from pair 1 to pair 3
+  EXPECT_EQ(e->function, 0x0004);
+  // Acknowledge with pair 3 still requested: a start goes via the start pair 1 → 3 again.
+  pulse(s, t);
+  EXPECT_EQ(s.status().state, OperatingState::kError);
+  EXPECT_EQ(s.counters().faults, 2U);
+  s.select_field_pair(2, t.now);                                // 1 → 2 is permitted
+  pulse(s, t);
+  EXPECT_EQ(s.status().state, OperatingState::kMeasuring);
+  EXPECT_EQ(s.status().first_pair, 2);
+  s.advance(t.advance(milliseconds(40)));
+  EXPECT_TRUE(s.ossd());
+}
+
+TEST(ScannerFieldPairs, InvalidNumberIsAFault) {
+  ManualTime t;
+  Scanner s = booted(params(RestartMode::kAutomatic), t);
+  s.select_field_pair(0, t.now);
+  EXPECT_FALSE(s.ossd());
+  EXPECT_TRUE(s.faults()[static_cast<std::size_t>(Fault::kFieldPairInvalid)].latched);
+  EXPECT_EQ(s.pop_event()->number, 0x0402);
+}
+
+// §5.1.2 Info: the start uses the start pair; the requested pair must be reachable from it.
+TEST(ScannerFieldPairs, StartGoesThroughTheStartPair) {
+  ManualTime t;
+  Scanner s;
+  ASSERT_TRUE(s.set_parameters(restricted(), t.now));
+  s.select_field_pair(4, t.now);                                // not permitted from 1
+  s.power_on(t.now);
+  s.advance(t.advance(seconds(30)));
+  EXPECT_EQ(s.status().state, OperatingState::kError);
+  EXPECT_FALSE(s.ossd());
+}
+
+TEST(ScannerFaults, InjectedFaultNeedsClearAndAcknowledge) {
+  ManualTime t;
+  Scanner s = booted(params(RestartMode::kStartInterlock), t);
+  pulse(s, t);
+  ASSERT_TRUE(s.ossd());
+  s.inject_fault(Fault::kMotorSpeed, t.now);
+  EXPECT_FALSE(s.ossd());
+  EXPECT_EQ(s.status().state, OperatingState::kError);
+  EXPECT_TRUE(s.status().fault);
+  EXPECT_EQ(s.pop_event()->number, 0x0201);
+  pulse(s, t);                                                  // cause still present
+  EXPECT_EQ(s.status().state, OperatingState::kError);
+  s.clear_fault(Fault::kMotorSpeed, t.now);
+  EXPECT_EQ(s.status().state, OperatingState::kError);          // latched until acknowledged
+  pulse(s, t);                                                  // acknowledge → new start
+  EXPECT_EQ(s.status().state, OperatingState::kMeasuring);
+  EXPECT_FALSE(s.ossd());                                       // start interlock
+  pulse(s, t);
+  EXPECT_TRUE(s.ossd());
+  EXPECT_EQ(s.faults()[static_cast<std::size_t>(Fault::kMotorSpeed)].occurrences, 1U);
+}
+
+TEST(ScannerFaults, FaultDuringBootShowsAtBootEnd) {
+  ManualTime t;
+  Scanner s;
+  s.inject_fault(Fault::kInternalHardware, t.now);
+  s.power_on(t.now);
+  s.advance(t.advance(seconds(30)));
+  EXPECT_EQ(s.status().state, OperatingState::kError);
+  EXPECT_FALSE(s.ossd());
+}
+
+TEST(ScannerFaults, ContaminationWarningThenFault) {
+  ManualTime t;
+  Scanner s = booted(params(RestartMode::kAutomatic), t);
+  s.set_contamination(49, t.now);
+  EXPECT_FALSE(s.status().warning_output);
+  EXPECT_EQ(s.pending_events(), 0U);
+  s.set_contamination(50, t.now);
+  EXPECT_TRUE(s.status().warning_output);                       // factory: contamination
+  EXPECT_TRUE(s.status().contamination_warning);
+  EXPECT_TRUE(s.ossd());
+  const auto w = s.pop_event();
+  ASSERT_TRUE(w.has_value());
+  EXPECT_EQ(w->kind, Rs4Event::Kind::kWarning);
+  EXPECT_EQ(w->number, 0x0301);
+  EXPECT_EQ(w->parameter, 50);
+  s.set_contamination(60, t.now);
+  EXPECT_EQ(s.pending_events(), 0U);                            // one event per rising edge
+  s.set_contamination(80, t.now);
+  EXPECT_FALSE(s.ossd());
+  EXPECT_EQ(s.pop_event()->number, 0x0302);
+  s.set_contamination(10, t.now);
+  EXPECT_FALSE(s.status().warning_output);
+  pulse(s, t);
+  s.advance(t.advance(milliseconds(40)));
+  EXPECT_TRUE(s.ossd());
+}
+
+TEST(ScannerFaults, WarningOutputFollowsWarningFieldWhenAssigned) {
+  ManualTime t;
+  ParameterSet p = params(RestartMode::kAutomatic);
+  p.warning_output = kWarnOnWarningField;
+  Scanner s = booted(p, t);
+  ASSERT_TRUE(s.edit_scene(t.now).add(intruder(1500)));         // warning field only
+  s.advance(t.advance(milliseconds(40)));
+  EXPECT_TRUE(s.status().warning_output);
+  EXPECT_TRUE(s.ossd());
+  s.set_contamination(60, t.now);                               // not assigned
+  s.edit_scene(t.now).clear();
+  s.advance(t.advance(milliseconds(40)));
+  EXPECT_FALSE(s.status().warning_output);
+}
+
+TEST(ScannerFaults, EventQueueKeepsNewestSixteen) {
+  ManualTime t;
+  Scanner s = booted(params(RestartMode::kAutomatic), t);
+  for (int i = 0; i < 20; ++i) {
+    s.set_contamination(60, t.now);
+    s.set_contamination(0, t.now);
+  }
+  EXPECT_EQ(s.pending_events(), Scanner::kEventCapacity);
+  EXPECT_EQ(s.counters().events_dropped, 4U);
+}
+
+TEST(ScannerConfiguration, ParametersChangeOnlyInConfiguration) {
+  ManualTime t;
+  Scanner s = booted(params(RestartMode::kAutomatic), t);
+  ParameterSet p = params(RestartMode::kAutomatic, 2);
+  p.identity.serial_number = 4242;
+  EXPECT_EQ(s.set_parameters(p, t.now).error(), ScannerError::kNotInConfiguration);
+  ASSERT_TRUE(s.enter_configuration(t.now));
+  EXPECT_EQ(s.status().state, OperatingState::kConfiguration);
+  EXPECT_FALSE(s.ossd());
+  ParameterSet bad = p;
+  bad.start_pair = 7;
+  EXPECT_EQ(s.set_parameters(bad, t.now).error(), ScannerError::kInvalidParameterSet);
+  ASSERT_TRUE(s.set_parameters(p, t.now));
+  EXPECT_EQ(s.parameters().response_steps, 2);
+  EXPECT_EQ(s.parameters().identity.serial_number, ScannerConfig{}.identity.serial_number);
+  ASSERT_TRUE(s.leave_configuration(t.now));
+  EXPECT_EQ(s.status().state, OperatingState::kMeasuring);
+  EXPECT_TRUE(s.ossd());
+  EXPECT_EQ(s.leave_configuration(t.now).error(), ScannerError::kNotInConfiguration);
+}
+
+TEST(ScannerLifecycle, PowerCycleRebootsAndResetsCounter) {
+  ManualTime t;
+  Scanner s = booted(params(RestartMode::kAutomatic), t);
+  s.advance(t.advance(seconds(1)));
+  EXPECT_GT(s.status().scan_counter, 1U);
+  s.power_cycle(t.now);
+  EXPECT_EQ(s.status().state, OperatingState::kInitialisation);
+  EXPECT_FALSE(s.ossd());
+  EXPECT_EQ(s.status().scan_counter, 0U);
+  s.advance(t.advance(seconds(30)));
+  EXPECT_TRUE(s.ossd());
+  EXPECT_EQ(s.counters().boots, 2U);
+  s.power_off(t.now);
+  EXPECT_EQ(s.status().state, OperatingState::kOff);
+  EXPECT_EQ(s.next_deadline(), TimePoint::max());
+}
+
+}  // namespace
+}  // namespace rs4sim::rs4::scanner
