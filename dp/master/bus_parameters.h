@@ -1,0 +1,63 @@
+#pragma once
+// Bus parameters of the class 1 master (spec/profibus-dp.md §1.1, §1.7).
+//
+// All FDL times are counted in bit times (Tbit = 1/baud). The defaults per baud rate are
+// the table of §1.7; `validate` checks the constraints of §1.7 ([ELPRO p91]).
+
+#include "dp/time/clock.h"
+
+#include <cstdint>
+#include <system_error>
+
+namespace rs4sim::dp::master {
+
+// Baud rates of §1.1 in bit/s (31.25 kbit/s is MBP/PA only and not offered).
+enum class Baud : std::uint32_t {
+  k9k6 = 9'600,
+  k19k2 = 19'200,
+  k45k45 = 45'450,
+  k93k75 = 93'750,
+  k187k5 = 187'500,
+  k500k = 500'000,
+  k1M5 = 1'500'000,
+  k3M = 3'000'000,
+  k6M = 6'000'000,
+  k12M = 12'000'000,
+};
+
+inline constexpr std::uint32_t kTsynBits = 33;       // idle before every request (§1.7)
+inline constexpr std::uint32_t kBitsPerCharacter = 11;  // start, 8 data, parity, stop (§1.1)
+
+struct BusParameters {
+  Baud baud = Baud::k1M5;
+  std::uint32_t tsl = 300;       // slot time: wait for the first reply character
+  std::uint32_t min_tsdr = 11;   // responder's minimum delay
+  std::uint32_t max_tsdr = 150;  // responder's maximum delay
+  std::uint32_t tset = 1;
+  std::uint32_t tqui = 0;
+  std::uint32_t tid1 = 37;   // idle after a reply before the next request ([COMPB])
+  std::uint32_t tid2 = 150;  // idle after a request without reply (SDN), ≥ max TSDR
+  std::uint8_t max_retry_limit = 1;  // retries after a missing reply (§4.4, profirust 1)
+  std::uint8_t hsa = 126;            // highest station address
+
+  // The §1.7 default table for `baud` (TSL, TSDR, TSET, TQUI) with TID1 = 37 and
+  // TID2 = max TSDR.
+  static BusParameters defaults_for(Baud baud);
+
+  // Duration of `bits` bit times at this baud rate, rounded up to the next nanosecond.
+  [[nodiscard]] Duration bits(std::uint64_t n) const;
+  // Wire time of `characters` UART characters (11 bits each, §1.1).
+  [[nodiscard]] Duration characters(std::uint64_t n) const {
+    return bits(n * kBitsPerCharacter);
+  }
+  // Token-lost timeout TTO = TSL · (6 + 2·TS) (§1.7) for own address `ts`.
+  [[nodiscard]] Duration token_lost_timeout(std::uint8_t ts) const;
+};
+
+// §1.7 constraints: maxTSDR + 15 ≤ TSL ≤ 16383; 35 + 2·TSET + TQUI ≤ maxTSDR ≤ 1023;
+// 11 ≤ minTSDR ≤ maxTSDR − 1; TID1, TID2 ≥ TSYN; baud one of §1.1.
+// Returns a MasterErrc::kBadBusParameters error naming nothing more; the message of the
+// category says which rule.
+std::error_code validate(const BusParameters& p);
+
+}  // namespace rs4sim::dp::master

@@ -1,0 +1,228 @@
+#include "dp/master/master.h"
+
+#include "dp/master/master_error.h"
+#include "dp/pdu/sap.h"
+
+#include <algorithm>
+#include <system_error>
+
+namespace rs4sim::dp::master {
+namespace {
+
+MasterConfig checked(MasterConfig c) {
+  if (auto ec = validate(c)) throw std::system_error(ec, "dp::master::Master configuration");
+  return c;
+}
+
+}  // namespace
+
+Master::Master(MasterConfig config)
+    : config_(checked(std::move(config))),
+      phase_(config_.claim_token ? MasterPhase::kListening : MasterPhase::kRunning) {
+  index_.fill(-1);
+  slaves_.reserve(config_.slaves.size());
+  for (const SlaveConfig& s : config_.slaves) {
+    index_[s.address] = static_cast<std::int16_t>(slaves_.size());
+    slaves_.emplace_back(s, config_.fdl_status_first);
+  }
+}
+
+SlaveHandler* Master::find(std::uint8_t address) {
+  if (address >= index_.size() || index_[address] < 0) return nullptr;
+  return &slaves_[static_cast<std::size_t>(index_[address])];
+}
+
+const SlaveHandler* Master::find(std::uint8_t address) const {
+  if (address >= index_.size() || index_[address] < 0) return nullptr;
+  return &slaves_[static_cast<std::size_t>(index_[address])];
+}
+
+SlaveContext Master::context() {
+  return SlaveContext{config_.address, fcb_, events_, mode_ == OperatingMode::kClear,
+                      config_.auto_alarm_ack, config_.ready_timeout};
+}
+
+void Master::transmit(fdl::Telegram t) {
+  ++counters_.telegrams_sent;
+  tx_.push_back(std::move(t));
+}
+
+std::optional<fdl::Telegram> Master::take_transmit() {
+  if (tx_.empty()) return std::nullopt;
+  fdl::Telegram t = std::move(tx_.front());
+  tx_.pop_front();
+  return t;
+}
+
+std::optional<TimePoint> Master::next_deadline() const {
+  if (!started_) return TimePoint{};  // run on_time() at once
+  if (phase_ == MasterPhase::kListening) return listen_until_;
+  if (outstanding_) return outstanding_->deadline;
+  return next_send_;
+}
+
+void Master::on_time(TimePoint now) {
+  if (!started_) {
+    started_ = true;
+    listen_until_ = now + config_.bus.token_lost_timeout(config_.address);
+    next_send_ = now;
+    next_gc_ = now;
+  }
+  if (phase_ == MasterPhase::kListening) {
+    if (now < listen_until_) return;
+    phase_ = MasterPhase::kClaimingToken;  // §1.9: TTO of silence
+    next_send_ = now;
+  }
+  if (phase_ == MasterPhase::kClaimingToken) {
+    if (now >= next_send_) claim_token_step(now);
+    return;
+  }
+  run_bus(now);
+}
+
+void Master::claim_token_step(TimePoint now) {
+  // §1.9: a lone master sends the token to itself twice, TSYN apart.
+  const fdl::Telegram token = fdl::make_token(config_.address, config_.address);
+  transmit(token);
+  next_send_ = now + config_.bus.characters(fdl::encoded_size(token)) +
+               config_.bus.bits(kTsynBits);
+  if (++tokens_sent_ == 2) phase_ = MasterPhase::kRunning;
+}
+
+void Master::on_telegram(const fdl::Telegram& t, TimePoint now) {
+  if (phase_ == MasterPhase::kListening) {
+    if (started_) listen_until_ = now + config_.bus.token_lost_timeout(config_.address);
+    return;  // another active station: keep listening (§4.1)
+  }
+  if (!outstanding_ || t.type == fdl::FrameType::kToken) {
+    ++counters_.ignored_telegrams;
+    return;
+  }
+  SlaveHandler& slave = slaves_[outstanding_->slave];
+  if (t.type != fdl::FrameType::kShortAck &&
+      (t.fc.is_request() || t.da != config_.address || t.sa != slave.address())) {
+    ++counters_.ignored_telegrams;
+    return;
+  }
+  outstanding_.reset();
+  ++counters_.replies;
+  SlaveContext ctx = context();
+  slave.on_reply(ctx, Reply::from(t), now);
+  next_send_ = now + config_.bus.bits(config_.bus.tid1);
+}
+
+void Master::send_request(std::size_t slave, Request r, TimePoint now) {
+  cycle_sent_ = true;
+  const BusParameters& b = config_.bus;
+  const TimePoint deadline = now + b.characters(fdl::encoded_size(r.telegram)) + b.bits(b.tsl) +
+                             b.characters(r.max_reply_bytes);
+  transmit(r.telegram);
+  outstanding_ = Outstanding{slave, std::move(r), deadline, 0};
+}
+
+void Master::on_slot_expired(TimePoint now) {
+  ++counters_.slot_timeouts;
+  Outstanding& o = *outstanding_;
+  SlaveHandler& slave = slaves_[o.slave];
+  const fdl::FrameControl fc = o.request.telegram.fc;
+  const bool first_frame = fc.fcb() && !fc.fcv();  // not retried (§1.8)
+  if (!first_frame && o.retries < config_.bus.max_retry_limit) {
+    // §1.8: re-send with the same FCB.
+    ++o.retries;
+    slave.count_retry();
+    const BusParameters& b = config_.bus;
+    o.deadline = now + b.characters(fdl::encoded_size(o.request.telegram)) + b.bits(b.tsl) +
+                 b.characters(o.request.max_reply_bytes);
+    transmit(o.request.telegram);
+    return;
+  }
+  outstanding_.reset();
+  SlaveContext ctx = context();
+  slave.on_no_answer(ctx);
+  next_send_ = now;  // the line has been idle for TSL ≥ TSYN
+}
+
+void Master::run_bus(TimePoint now) {
+  if (outstanding_) {
+    if (now < outstanding_->deadline) return;
+    on_slot_expired(now);
+    if (outstanding_) return;
+  }
+  if (now < next_send_) return;
+  for (;;) {
+    if (!in_cycle_) {
+      if (now < next_send_) return;
+      start_cycle(now);
+    }
+    if (cursor_ == 0 && !turn_open_ && !gc_queue_.empty()) {
+      const pdu::GlobalControl gc = gc_queue_.front();
+      gc_queue_.pop_front();
+      send_global_control(gc, now);
+      return;
+    }
+    if (cursor_ >= slaves_.size()) {
+      end_cycle(now);
+      continue;
+    }
+    SlaveHandler& slave = slaves_[cursor_];
+    if (!turn_open_) {
+      slave.begin_turn();
+      turn_open_ = true;
+    }
+    SlaveContext ctx = context();
+    if (auto r = slave.next_request(ctx, now)) {
+      send_request(cursor_, std::move(*r), now);
+      return;
+    }
+    ++cursor_;
+    turn_open_ = false;
+  }
+}
+
+void Master::start_cycle(TimePoint now) {
+  in_cycle_ = true;
+  cycle_start_ = now;
+  cursor_ = 0;
+  turn_open_ = false;
+  cycle_sent_ = false;
+  SlaveContext ctx = context();
+  for (SlaveHandler& s : slaves_) s.on_cycle_start(ctx, now);
+  if (config_.global_control_interval > Duration::zero() && now >= next_gc_) {
+    // §4.3: the master repeats its operating state (Operate `00 00`, Clear `02 00`).
+    pdu::GlobalControl gc;
+    gc.clear_data = mode_ == OperatingMode::kClear;
+    if (gc_queue_.empty()) gc_queue_.push_back(gc);
+    next_gc_ = now + config_.global_control_interval;
+  }
+}
+
+void Master::end_cycle(TimePoint now) {
+  in_cycle_ = false;
+  ++counters_.cycles;
+  counters_.last_cycle = now - cycle_start_;
+  counters_.max_cycle = std::max(counters_.max_cycle, counters_.last_cycle);
+  const auto in_dx = std::count_if(slaves_.begin(), slaves_.end(),
+                                   [](const SlaveHandler& s) { return s.in_data_exchange(); });
+  events_.push(CycleCompleted{counters_.cycles, static_cast<std::uint32_t>(in_dx)});
+  TimePoint next = cycle_start_ + config_.cycle_target;
+  if (!cycle_sent_) next = std::max(next, cycle_start_ + std::chrono::milliseconds(1));
+  next_send_ = std::max(next, now);
+  if (!cycle_sent_ && next_send_ <= now) next_send_ = now + std::chrono::milliseconds(1);
+}
+
+void Master::send_global_control(const pdu::GlobalControl& gc, TimePoint now) {
+  // §2.6: SDN broadcast to DA 127, DSAP 58 from SSAP 62, e.g. `68 07 07 68 FF 82 46 3A 3E
+  // 02 00 41 16`; no reply, so the next request waits TID2.
+  fdl::DataUnit du;
+  (void)pdu::encode_global_control(gc, du);
+  const fdl::Telegram t = fdl::make_data_telegram(
+      fdl::kBroadcastAddress, config_.address,
+      fdl::FcbInitiator::unsequenced(fdl::RequestFunction::kSdnHigh), pdu::sap::kGlobalControl,
+      pdu::sap::kMasterMs0, bytes(du));
+  cycle_sent_ = true;
+  ++counters_.global_controls;
+  next_send_ = now + config_.bus.characters(fdl::encoded_size(t)) + config_.bus.bits(config_.bus.tid2);
+  transmit(t);
+}
+
+}  // namespace rs4sim::dp::master

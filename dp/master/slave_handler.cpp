@@ -1,0 +1,185 @@
+#include "dp/master/slave_handler.h"
+
+#include "dp/master/master_error.h"
+#include "dp/pdu/sap.h"
+
+#include <algorithm>
+
+namespace rs4sim::dp::master {
+
+const char* to_string(SlaveState s) {
+  switch (s) {
+    case SlaveState::kStatusRequest: return "StatusRequest";
+    case SlaveState::kReadDiag: return "ReadDiag";
+    case SlaveState::kSetPrm: return "SetPrm";
+    case SlaveState::kChkCfg: return "ChkCfg";
+    case SlaveState::kWaitReady: return "WaitReady";
+    case SlaveState::kDataExchange: return "DataExchange";
+  }
+  return "?";
+}
+
+SlaveHandler::SlaveHandler(const SlaveConfig& config, bool fdl_status_first)
+    : config_(config),
+      fdl_status_first_(fdl_status_first),
+      state_(fdl_status_first ? SlaveState::kStatusRequest : SlaveState::kReadDiag),
+      dpv1_(config.address, config.c1_response_timeout),
+      alarms_(config.address, config.prm.dpv1 ? config.prm.dpv1->alarm_mode : 0) {
+  (void)pdu::encode_set_prm(config_.prm, prm_du_);  // validated by validate(SlaveConfig)
+  outputs_.resize(config_.output_length, 0);
+}
+
+SlaveState SlaveHandler::initial_state() const {
+  return fdl_status_first_ ? SlaveState::kStatusRequest : SlaveState::kReadDiag;
+}
+
+std::uint8_t SlaveHandler::alarm_dsap() const {
+  return config_.extra_alarm_sap ? pdu::sap::kAlarm : pdu::sap::kMsacC1;
+}
+
+Request SlaveHandler::make(SlaveContext& ctx, RequestKind kind, fdl::FrameControl fc,
+                           std::optional<std::uint8_t> dsap, std::span<const std::uint8_t> data,
+                           std::size_t max_reply) const {
+  // DP services: master SSAP 62 (MS0), DPV1 C1: 51 (§2.1); DSAP and SSAP go together.
+  std::optional<std::uint8_t> ssap;
+  if (dsap) {
+    const bool c1 = kind == RequestKind::kDpv1 || kind == RequestKind::kAlarmAck;
+    ssap = c1 ? pdu::sap::kMasterMsac1 : pdu::sap::kMasterMs0;
+  }
+  return Request{fdl::make_data_telegram(config_.address, ctx.master_address, fc, dsap, ssap, data),
+                 kind, max_reply};
+}
+
+std::optional<Request> SlaveHandler::next_request(SlaveContext& ctx, TimePoint now) {
+  if (turn_.count >= kMaxRequestsPerTurn) return std::nullopt;
+  std::optional<Request> r;
+  if (state_ != SlaveState::kDataExchange) {
+    if (turn_.count > 0 && !continue_) return std::nullopt;
+    continue_ = false;
+    if (state_ == SlaveState::kWaitReady && now - wait_ready_since_ >= ctx.ready_timeout) {
+      restart(ctx, make_error_code(MasterErrc::kStartupTimeout), SlaveState::kReadDiag);
+    }
+    r = startup_request(ctx);
+  } else {
+    r = cyclic_request(ctx, now);
+  }
+  if (r) {
+    ++turn_.count;
+    ++counters_.requests;
+    last_kind_ = r->kind;
+  }
+  return r;
+}
+
+std::optional<Request> SlaveHandler::startup_request(SlaveContext& ctx) {
+  namespace sap = pdu::sap;
+  const std::uint8_t addr = config_.address;
+  using F = fdl::RequestFunction;
+  switch (state_) {
+    case SlaveState::kStatusRequest:  // `10 DA SA 49 FCS 16`, no FCB (§1.8, §4.2 step 0)
+      return make(ctx, RequestKind::kFdlStatus, fdl::FcbInitiator::unsequenced(F::kFdlStatus),
+                  std::nullopt, {}, 6);
+    case SlaveState::kReadDiag:
+    case SlaveState::kWaitReady:
+      return make(ctx, RequestKind::kDiag, ctx.fcb.next(addr, F::kSrdHigh), sap::kSlaveDiag, {},
+                  fdl::kMaxTelegramSize);
+    case SlaveState::kSetPrm:
+      return make(ctx, RequestKind::kSetPrm, ctx.fcb.next(addr, F::kSrdHigh), sap::kSetPrm,
+                  bytes(prm_du_), 6);
+    case SlaveState::kChkCfg:
+      return make(ctx, RequestKind::kChkCfg, ctx.fcb.next(addr, F::kSrdHigh), sap::kChkCfg,
+                  bytes(config_.cfg), 6);
+    case SlaveState::kDataExchange:
+      break;
+  }
+  return std::nullopt;
+}
+
+Request SlaveHandler::data_exchange_request(SlaveContext& ctx) const {
+  // §2.9: SRD_HI on the default SAP with the whole output image; in CLEAR zeros, or an
+  // empty telegram for slaves parameterised with Fail_Safe.
+  fdl::DataUnit out;
+  if (!ctx.clear_mode) {
+    out = outputs_;
+  } else if (!config_.fail_safe()) {
+    out.resize(outputs_.size(), 0);
+  }
+  const std::size_t reply = std::max<std::size_t>(6, 9 + config_.input_length);
+  return make(ctx, RequestKind::kDataExchange,
+              ctx.fcb.next(config_.address, fdl::RequestFunction::kSrdHigh), std::nullopt, bytes(out),
+              reply);
+}
+
+std::optional<Request> SlaveHandler::cyclic_request(SlaveContext& ctx, TimePoint now) {
+  using F = fdl::RequestFunction;
+  if (!turn_.dx) {
+    turn_.dx = true;
+    return data_exchange_request(ctx);
+  }
+  if (diag_needed_ && !turn_.diag) {  // DH → Slave_Diag in the next slot (§4.3)
+    turn_.diag = true;
+    return make(ctx, RequestKind::kDiag, ctx.fcb.next(config_.address, F::kSrdHigh),
+                pdu::sap::kSlaveDiag, {}, fdl::kMaxTelegramSize);
+  }
+  if (!turn_.alarm && (config_.extra_alarm_sap || !dpv1_.busy())) {
+    turn_.alarm = true;
+    if (auto ack = alarms_.next_ack()) {
+      fdl::DataUnit du;
+      (void)pdu::encode(*ack, du);
+      return make(ctx, RequestKind::kAlarmAck, ctx.fcb.next(config_.address, F::kSrdLow),
+                  alarm_dsap(), bytes(du), fdl::kMaxTelegramSize);
+    }
+  }
+  if (!turn_.dpv1) {
+    turn_.dpv1 = true;
+    dpv1_.check_timeout(now, ctx.events);
+    if (auto du = dpv1_.next_pdu(now)) {
+      return make(ctx, RequestKind::kDpv1, ctx.fcb.next(config_.address, F::kSrdLow),
+                  pdu::sap::kMsacC1, bytes(*du), fdl::kMaxTelegramSize);
+    }
+  }
+  return std::nullopt;
+}
+
+void SlaveHandler::on_cycle_start(SlaveContext& ctx, TimePoint now) {
+  dpv1_.check_timeout(now, ctx.events);
+}
+
+std::error_code SlaveHandler::set_outputs(std::span<const std::uint8_t> outputs) {
+  if (outputs.size() != config_.output_length) {
+    return make_error_code(MasterErrc::kOutputLengthMismatch);
+  }
+  std::copy(outputs.begin(), outputs.end(), outputs_.begin());
+  return {};
+}
+
+std::span<const std::uint8_t> SlaveHandler::inputs() const {
+  if (state_ != SlaveState::kDataExchange) return {};
+  return {inputs_.data(), inputs_.size()};
+}
+
+std::error_code SlaveHandler::submit(Dpv1Job job) {
+  if (state_ != SlaveState::kDataExchange) return make_error_code(MasterErrc::kNotInDataExchange);
+  if (!config_.dpv1_enabled()) return make_error_code(MasterErrc::kDpv1NotEnabled);
+  return dpv1_.submit(std::move(job));
+}
+
+std::error_code SlaveHandler::acknowledge_alarm(std::uint8_t slot, std::uint8_t type,
+                                                std::uint8_t seq_nr) {
+  return alarms_.acknowledge(slot, type, seq_nr);
+}
+
+SlaveStatus SlaveHandler::status() const {
+  SlaveStatus s;
+  s.address = config_.address;
+  s.state = state_;
+  s.state_name = to_string(state_);
+  s.counters = counters_;
+  s.last_diag = last_diag_;
+  s.last_error = last_error_;
+  s.alarms_outstanding = alarms_.outstanding();
+  s.dpv1_queued = dpv1_.queued();
+  return s;
+}
+
+}  // namespace rs4sim::dp::master
