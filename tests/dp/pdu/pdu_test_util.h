@@ -1,0 +1,33 @@
+#pragma once
+// Test helpers for the PDU codecs.
+
+#include "dp/fdl/telegram.h"
+#include "dp/pdu/errors.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace rs4sim::dp::pdu::testing {
+
+using Bytes = std::vector<std::uint8_t>;
+
+inline Bytes to_bytes(const fdl::DataUnit& du) { return Bytes(du.begin(), du.end()); }
+
+// Encodes with `f(value, out)` and returns the bytes; fails the test on an error.
+template <class F, class T>
+Bytes encoded(F f, const T& value) {
+  fdl::DataUnit out;
+  const auto r = f(value, out);
+  EXPECT_TRUE(r) << r.error().message();
+  return to_bytes(out);
+}
+
+// The error of a failed result (fails the test if it succeeded).
+template <class R>
+std::error_code error_of(const R& r) {
+  EXPECT_FALSE(r.has_value());
+  return r.has_value() ? std::error_code{} : r.error();
+}
+
+}  // namespace rs4sim::dp::pdu::testing
