@@ -1,0 +1,213 @@
+// Slave configuration from a GSD: Set_Prm user data and Chk_Cfg (profibus-dp.md §5.3).
+#include "gsd/config.h"
+
+#include "gsd/syntax.h"
+#include "profisafe/crc.h"
+
+#include <algorithm>
+#include <set>
+
+namespace rs4sim::gsd {
+namespace {
+
+Error config_error(ErrorCode code, std::string message) {
+  return Error{code, "", 0, "", std::move(message)};
+}
+
+// Writes `value` at `at` as the parameter type says: bits in place, integers big-endian.
+void write_value(std::vector<std::uint8_t>& data, std::size_t at, const ExtParam& p,
+                 std::int64_t value) {
+  if (p.type == ParamType::kBit || p.type == ParamType::kBitArea) {
+    const unsigned width = static_cast<unsigned>(p.bit_high - p.bit_low + 1);
+    const unsigned mask = ((1U << width) - 1U) << p.bit_low;
+    const unsigned bits = (static_cast<unsigned>(value) << p.bit_low) & mask;
+    data[at] = static_cast<std::uint8_t>((data[at] & ~mask) | bits);
+    return;
+  }
+  const std::size_t n = byte_size(p.type);
+  const auto raw = static_cast<std::uint32_t>(value);  // two's complement for Signed*
+  for (std::size_t i = 0; i < n; ++i) {
+    data[at + i] = static_cast<std::uint8_t>(raw >> (8 * (n - 1 - i)));
+  }
+}
+
+class Configurator {
+ public:
+  Configurator(const Device& device, const ConfigRequest& request)
+      : device_(device), request_(request) {}
+  Result<SlaveConfig> run();
+
+ private:
+  Result<std::vector<const Module*>> choose_modules() const;
+  Result<std::int64_t> value_for(const ExtParam& p);
+  Result<void> place(const PrmTemplate& t, std::size_t module, bool f_part);
+  Result<void> seal_f_block(const Module& m, std::size_t module, std::size_t base);
+  Result<void> check_overrides_used() const;
+
+  const Device& device_;
+  const ConfigRequest& request_;
+  SlaveConfig out_;
+  std::set<std::size_t> used_;  // indices into request_.overrides
+};
+
+Result<std::vector<const Module*>> Configurator::choose_modules() const {
+  std::vector<const Module*> chosen;
+  if (request_.modules.empty() && !device_.modular_station && device_.modules.size() == 1) {
+    chosen.push_back(&device_.modules.front());
+  }
+  for (const auto& name : request_.modules) {
+    const Module* m = device_.find_module(name);
+    if (!m) {
+      std::string known;
+      for (const auto& each : device_.modules) known += (known.empty() ? "\"" : ", \"") + each.name + "\"";
+      return config_error(ErrorCode::kUnknownModule, "no module \"" + name + "\" in the GSD (modules: " + known + ")");
+    }
+    chosen.push_back(m);
+  }
+  if (!device_.modular_station && chosen.size() != 1) {
+    return config_error(ErrorCode::kModuleCount, "a compact station (Modular_Station = 0) takes exactly one module, got " +
+                                                     std::to_string(chosen.size()));
+  }
+  if (device_.modular_station && (chosen.empty() || chosen.size() > device_.max_module)) {
+    return config_error(ErrorCode::kModuleCount, "a modular station takes 1.." + std::to_string(device_.max_module) +
+                                                     " modules (Max_Module), got " + std::to_string(chosen.size()));
+  }
+  return chosen;
+}
+
+Result<std::int64_t> Configurator::value_for(const ExtParam& p) {
+  std::optional<std::int64_t> value;
+  for (std::size_t i = 0; i < request_.overrides.size(); ++i) {
+    if (!syntax::iequals(request_.overrides[i].name, p.name)) continue;
+    used_.insert(i);
+    value = request_.overrides[i].value;
+  }
+  if (!value) return p.default_value;
+  if (syntax::iequals(p.name, "F_Par_CRC")) {
+    return config_error(ErrorCode::kNotChangeable, "F_Par_CRC is computed (CRC1 over the F-parameters) and cannot be set");
+  }
+  if (!p.changeable && *value != p.default_value) {
+    return config_error(ErrorCode::kNotChangeable, p.name + " is fixed at " + std::to_string(p.default_value) +
+                                                       " (Changeable = 0), cannot set " + std::to_string(*value));
+  }
+  if (!p.accepts(*value)) {
+    return config_error(ErrorCode::kOutOfRange, p.name + " = " + std::to_string(*value) +
+                                                    " is out of range " + p.range_text());
+  }
+  return *value;
+}
+
+Result<void> Configurator::place(const PrmTemplate& t, std::size_t module, bool f_part) {
+  const std::size_t base = out_.user_prm_data.size();
+  out_.user_prm_data.insert(out_.user_prm_data.end(), t.defaults.begin(), t.defaults.end());
+  for (const auto& ref : t.refs) {
+    const ExtParam& p = device_.params.at(ref.param);  // resolved by the interpreter
+    RS4SIM_GSD_TRY(const auto value, value_for(p));
+    write_value(out_.user_prm_data, base + ref.offset, p, value);
+    out_.fields.push_back({base + ref.offset, p.name, p.type, p.bit_low, p.bit_high, value, module, f_part});
+  }
+  return boost::outcome_v2::success();
+}
+
+// The 10-byte F-parameter block ends with F_Par_CRC (profisafe-v1.md §1): its 8 bytes
+// before F_Par_CRC go through CRC1, the result replaces the GSD's default.
+Result<void> Configurator::seal_f_block(const Module& m, std::size_t module, std::size_t base) {
+  const auto crc_ref = std::find_if(m.f_prm->refs.begin(), m.f_prm->refs.end(), [&](const PrmRef& r) {
+    return syntax::iequals(device_.params.at(r.param).name, "F_Par_CRC");
+  });
+  if (crc_ref == m.f_prm->refs.end() || crc_ref->offset < 8 ||
+      byte_size(device_.params.at(crc_ref->param).type) != 2) {
+    return config_error(ErrorCode::kFParameterLayout, "module \"" + m.name +
+        "\": the F-parameters need a 2-byte F_Par_CRC reference at offset 8 or later");
+  }
+  const std::size_t start = base + crc_ref->offset - 8;
+  const std::span<const std::uint8_t> block(out_.user_prm_data.data() + start, profisafe::kFParametersSize);
+  auto parsed = profisafe::parse_f_parameters(block);
+  if (!parsed) {
+    return config_error(ErrorCode::kFParameterLayout, "module \"" + m.name + "\": F-parameter block: " +
+                                                          parsed.error().message());
+  }
+  profisafe::FParameters params = parsed.value();
+  const auto encoded = profisafe::encode_f_parameters(params);
+  std::copy(encoded.begin() + 8, encoded.end(), out_.user_prm_data.begin() + static_cast<std::ptrdiff_t>(start + 8));
+  params.par_crc = static_cast<std::uint16_t>((encoded[8] << 8) | encoded[9]);
+  for (auto& f : out_.fields) {
+    if (f.offset == start + 8 && f.f_parameter && f.module == module) f.value = params.par_crc;
+  }
+  out_.f_parameters.push_back({module, start, params});
+  return boost::outcome_v2::success();
+}
+
+Result<void> Configurator::check_overrides_used() const {
+  for (std::size_t i = 0; i < request_.overrides.size(); ++i) {
+    if (used_.count(i)) continue;
+    std::set<std::string> names;
+    for (const auto& f : out_.fields) names.insert(f.name);
+    std::string known;
+    for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+    return config_error(ErrorCode::kUnknownParameter, "no parameter \"" + request_.overrides[i].name +
+                                                          "\" in this configuration (parameters: " + known + ")");
+  }
+  return boost::outcome_v2::success();
+}
+
+Result<SlaveConfig> Configurator::run() {
+  RS4SIM_GSD_TRY(const auto modules, choose_modules());
+  out_.ident_number = device_.ident_number;
+  out_.dpv1 = device_.dpv1.slave;
+  RS4SIM_GSD_TRYV(place(device_.user_prm, kGlobal, false));
+  for (std::size_t i = 0; i < modules.size(); ++i) {
+    const Module& m = *modules[i];
+    out_.modules.push_back(m.name);
+    out_.cfg.insert(out_.cfg.end(), m.cfg.begin(), m.cfg.end());
+    out_.input_len += m.input_len;
+    out_.output_len += m.output_len;
+    RS4SIM_GSD_TRYV(place(m.prm, i, false));
+    if (m.f_prm) {
+      const std::size_t base = out_.user_prm_data.size();
+      RS4SIM_GSD_TRYV(place(*m.f_prm, i, true));
+      RS4SIM_GSD_TRYV(seal_f_block(m, i, base));
+    }
+  }
+  RS4SIM_GSD_TRYV(check_overrides_used());
+  // Set_Prm DU ≤ 244 bytes = 7 standard bytes + user data (§2.3).
+  const std::size_t limit = std::min<std::size_t>(237, device_.max_user_prm_data_len.value_or(237));
+  if (out_.user_prm_data.size() > limit) {
+    return config_error(ErrorCode::kPrmTooLong, "User_Prm_Data is " + std::to_string(out_.user_prm_data.size()) +
+                                                    " bytes, more than " + std::to_string(limit));
+  }
+  if (out_.dpv1) std::copy_n(out_.user_prm_data.begin(), 3, out_.dpv1_status.begin());
+  return std::move(out_);
+}
+
+void put_be32(std::vector<std::uint8_t>& out, std::int64_t v) {
+  const auto raw = static_cast<std::uint32_t>(v);
+  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<std::uint8_t>(raw >> shift));
+}
+
+}  // namespace
+
+Result<SlaveConfig> configure(const Device& device, const ConfigRequest& request) {
+  return Configurator(device, request).run();
+}
+
+std::uint16_t f_param_desc_crc(const Device& device, const Module& module) {
+  if (!module.f_prm) return 0;
+  std::vector<std::uint8_t> canon(module.f_prm->defaults);
+  for (const auto& ref : module.f_prm->refs) {
+    const ExtParam& p = device.params.at(ref.param);
+    canon.push_back(static_cast<std::uint8_t>(ref.offset));
+    canon.insert(canon.end(), p.name.begin(), p.name.end());
+    canon.push_back(0);
+    canon.push_back(static_cast<std::uint8_t>(p.type));
+    canon.push_back(static_cast<std::uint8_t>(p.bit_low));
+    canon.push_back(static_cast<std::uint8_t>(p.bit_high));
+    put_be32(canon, p.default_value);
+    put_be32(canon, p.min);
+    put_be32(canon, p.max);
+    canon.push_back(p.changeable ? 1 : 0);
+  }
+  return static_cast<std::uint16_t>(profisafe::crc16().update(0, canon));
+}
+
+}  // namespace rs4sim::gsd

@@ -1,0 +1,82 @@
+#pragma once
+// Configuration of one slave from its GSD (profibus-dp.md §5.3, §5.4, §2.3, §3.1):
+// GSD + chosen modules + named parameter overrides → the exact Set_Prm user data and
+// Chk_Cfg bytes a class 1 master sends. The F-parameter block of a PROFIsafe module gets
+// its F_Par_CRC (CRC1, profisafe-v1.md §2) computed by profisafe/.
+//
+// gsd/ knows nothing of dp/: the app layer copies a SlaveConfig into the master's
+// per-slave configuration (station address, watchdog and Station_Status are the
+// master's business, not the GSD's).
+
+#include "gsd/error.h"
+#include "gsd/model.h"
+#include "profisafe/f_parameters.h"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rs4sim::gsd {
+
+struct ParamOverride {
+  std::string name;      // ExtUserPrmData name, case-insensitive, e.g. "F_WD_Time"
+  std::int64_t value = 0;
+};
+
+struct ConfigRequest {
+  // Module names in slot order. Empty: the only module of a compact station.
+  std::vector<std::string> modules;
+  // Applied to every placement of the named parameter (global and all modules).
+  std::vector<ParamOverride> overrides;
+};
+
+inline constexpr std::size_t kGlobal = static_cast<std::size_t>(-1);
+
+// One parameter as placed in user_prm_data (for listings and for tests).
+struct PrmField {
+  std::size_t offset = 0;       // in user_prm_data
+  std::string name;
+  ParamType type = ParamType::kUnsigned8;
+  int bit_low = 0;
+  int bit_high = 0;
+  std::int64_t value = 0;
+  std::size_t module = kGlobal;  // index into SlaveConfig::modules, or kGlobal
+  bool f_parameter = false;      // placed by F_Ext_User_Prm_Data_Ref
+};
+
+struct FParameterBlock {
+  std::size_t module = 0;        // index into SlaveConfig::modules
+  std::size_t offset = 0;        // of F_Prm_Flag1 in user_prm_data (10 bytes follow)
+  profisafe::FParameters parameters;  // par_crc = the CRC1 written into the block
+};
+
+struct SlaveConfig {
+  std::uint16_t ident_number = 0;       // Set_Prm bytes 4..5
+  bool dpv1 = false;                    // DPV1_Slave = 1
+  std::array<std::uint8_t, 3> dpv1_status{};  // = user_prm_data[0..2] when dpv1
+  // Set_Prm DU from byte 7 on: global part (DPV1_Status_1..3 first on a DPV1 slave),
+  // then per module in slot order its Ext_Module part and its F-part.
+  std::vector<std::uint8_t> user_prm_data;
+  std::vector<std::uint8_t> cfg;        // Chk_Cfg DU: the modules' Cfg bytes in slot order
+  std::size_t input_len = 0;            // Data_Exchange input bytes (slave → master)
+  std::size_t output_len = 0;           // Data_Exchange output bytes (master → slave)
+  std::vector<std::string> modules;
+  std::vector<PrmField> fields;
+  std::vector<FParameterBlock> f_parameters;
+};
+
+// Errors: kUnknownModule, kModuleCount (compact station needs exactly one module;
+// modular: at most Max_Module), kUnknownParameter (lists the known names), kOutOfRange
+// ("F_WD_Time = 5 is out of range 10..1000"), kNotChangeable (Changeable = 0, or
+// F_Par_CRC which is always computed), kPrmTooLong, kFParameterLayout.
+Result<SlaveConfig> configure(const Device& device, const ConfigRequest& request);
+
+// F_ParamDescCRC as the rs4sim project defines it (docs/gsd.md; the PI algorithm for
+// text GSDs is not public): CRC-16 poly 0x4EAB, preset 0 (the CRC1 polynomial) over
+// the module's F constant bytes and, per F_Ext_User_Prm_Data_Ref in file order, the
+// offset, the parameter name + NUL, type, bits, default, min, max and Changeable.
+std::uint16_t f_param_desc_crc(const Device& device, const Module& module);
+
+}  // namespace rs4sim::gsd

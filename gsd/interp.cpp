@@ -1,0 +1,265 @@
+// GSD interpreter: top-level keywords (profibus-dp.md §5.2, §5.5), then blocks.
+#include "gsd/interp.h"
+
+#include "gsd/interp_detail.h"
+
+#include <array>
+#include <cctype>
+#include <functional>
+#include <set>
+
+namespace rs4sim::gsd {
+namespace {
+
+using detail::error;
+
+struct NumberKey {
+  std::string_view keyword;
+  std::int64_t lo;
+  std::int64_t hi;
+  void (*set)(Device&, std::int64_t);
+};
+
+template <class T>
+T narrow(std::int64_t v) { return static_cast<T>(v); }
+
+// Every numeric keyword the interpreter uses, with the range the GSD allows.
+const std::array<NumberKey, 40> kNumberKeys{{
+    {"GSD_Revision", 0, 255, [](Device& d, std::int64_t v) { d.gsd_revision = narrow<int>(v); }},
+    {"Ident_Number", 0, 0xFFFF, [](Device& d, std::int64_t v) { d.ident_number = narrow<std::uint16_t>(v); }},
+    {"Modular_Station", 0, 1, [](Device& d, std::int64_t v) { d.modular_station = v == 1; }},
+    {"Max_Module", 1, 244, [](Device& d, std::int64_t v) { d.max_module = narrow<std::uint8_t>(v); }},
+    {"Max_Input_Len", 0, 244, [](Device& d, std::int64_t v) { d.max_input_len = narrow<std::uint8_t>(v); }},
+    {"Max_Output_Len", 0, 244, [](Device& d, std::int64_t v) { d.max_output_len = narrow<std::uint8_t>(v); }},
+    {"Max_Data_Len", 0, 488, [](Device& d, std::int64_t v) { d.max_data_len = narrow<std::uint16_t>(v); }},
+    {"Max_Diag_Data_Len", 6, 244, [](Device& d, std::int64_t v) { d.max_diag_data_len = narrow<std::uint8_t>(v); }},
+    {"Min_Slave_Intervall", 1, 0xFFFF, [](Device& d, std::int64_t v) { d.min_slave_interval = narrow<std::uint16_t>(v); }},
+    {"Fail_Safe", 0, 1, [](Device& d, std::int64_t v) { d.fail_safe = v == 1; }},
+    {"Freeze_Mode_supp", 0, 1, [](Device& d, std::int64_t v) { d.freeze_mode = v == 1; }},
+    {"Sync_Mode_supp", 0, 1, [](Device& d, std::int64_t v) { d.sync_mode = v == 1; }},
+    {"Auto_Baud_supp", 0, 1, [](Device& d, std::int64_t v) { d.auto_baud = v == 1; }},
+    {"Set_Slave_Add_supp", 0, 1, [](Device& d, std::int64_t v) { d.set_slave_add = v == 1; }},
+    {"Max_User_Prm_Data_Len", 0, 237, [](Device& d, std::int64_t v) { d.max_user_prm_data_len = narrow<std::uint8_t>(v); }},
+    {"DPV1_Slave", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.slave = v == 1; }},
+    {"C1_Read_Write_supp", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.c1_read_write = v == 1; }},
+    {"C2_Read_Write_supp", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.c2_read_write = v == 1; }},
+    {"C1_Max_Data_Len", 0, 240, [](Device& d, std::int64_t v) { d.dpv1.c1_max_data_len = narrow<std::uint8_t>(v); }},
+    {"C2_Max_Data_Len", 0, 240, [](Device& d, std::int64_t v) { d.dpv1.c2_max_data_len = narrow<std::uint8_t>(v); }},
+    {"C1_Response_Timeout", 1, 0xFFFF, [](Device& d, std::int64_t v) { d.dpv1.c1_response_timeout = narrow<std::uint16_t>(v); }},
+    {"C2_Response_Timeout", 1, 0xFFFF, [](Device& d, std::int64_t v) { d.dpv1.c2_response_timeout = narrow<std::uint16_t>(v); }},
+    {"C2_Max_Count_Channels", 0, 32, [](Device& d, std::int64_t v) { d.dpv1.c2_max_count_channels = narrow<std::uint8_t>(v); }},
+    {"Diagnostic_Alarm_supp", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.diagnostic_alarm = v == 1; }},
+    {"Process_Alarm_supp", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.process_alarm = v == 1; }},
+    {"Pull_Plug_Alarm_supp", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.pull_plug_alarm = v == 1; }},
+    {"Status_Alarm_supp", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.status_alarm = v == 1; }},
+    {"Update_Alarm_supp", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.update_alarm = v == 1; }},
+    {"Manufacturer_Specific_Alarm_supp", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.manufacturer_specific_alarm = v == 1; }},
+    // DPV1_Status_3 Alarm_Mode can express 1 (per type), 2, 4, 8, 12, 16, 24, 32 (§3.1)
+    {"Alarm_Sequence_Mode_Count", 0, 32, [](Device& d, std::int64_t v) { d.dpv1.alarm_sequence_mode_count = narrow<std::uint8_t>(v); }},
+    {"Alarm_Type_Mode_supp", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.alarm_type_mode = v == 1; }},
+    {"WD_Base_1ms_supp", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.wd_base_1ms = v == 1; }},
+    {"Check_Cfg_Mode", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.check_cfg_mode = v == 1; }},
+    {"Prm_Block_Structure_supp", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.prm_block_structure = v == 1; }},
+    {"Protocol_Ident", 0, 0, [](Device&, std::int64_t) {}},  // 0 = PROFIBUS-DP
+    {"Station_Type", 0, 0, [](Device&, std::int64_t) {}},    // 0 = DP slave
+    {"FMS_supp", 0, 1, [](Device&, std::int64_t) {}},
+    {"Revision_Number", 0, 63, [](Device&, std::int64_t) {}},
+    {"Redundancy", 0, 1, [](Device&, std::int64_t) {}},
+    {"Repeater_Ctrl_Sig", 0, 2, [](Device&, std::int64_t) {}},
+}};
+
+struct StringKey {
+  std::string_view keyword;
+  std::string Device::*field;
+};
+const std::array<StringKey, 5> kStringKeys{{
+    {"Vendor_Name", &Device::vendor_name},
+    {"Model_Name", &Device::model_name},
+    {"Revision", &Device::revision},
+    {"OrderNumber", &Device::order_number},
+    {"Info_Text", &Device::info_text},
+}};
+
+struct BaudName {
+  std::string_view name;
+  std::uint32_t bps;
+};
+constexpr std::array<BaudName, 10> kBauds{{{"9.6", 9600}, {"19.2", 19200}, {"45.45", 45450},
+    {"93.75", 93750}, {"187.5", 187500}, {"500", 500000}, {"1.5M", 1500000},
+    {"3M", 3000000}, {"6M", 6000000}, {"12M", 12000000}}};
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (auto& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+class Interpreter {
+ public:
+  explicit Interpreter(const syntax::File& file) : file_(file) { device_.file = file.name; }
+  Result<Device> run();
+
+ private:
+  Result<void> definitions();           // pass 1: PrmText, ExtUserPrmData
+  Result<void> statement(const syntax::Statement& st);
+  Result<bool> baud_keyword(const syntax::Statement& st);
+  Result<void> legacy_user_prm(const syntax::Statement& st);
+  Result<void> finish();
+  Result<void> once(const syntax::Statement& st);
+
+  const syntax::File& file_;
+  Device device_;
+  detail::TemplateBuilder global_{"global User_Prm_Data", {}, {}, {}, std::nullopt, nullptr};
+  std::map<std::string, int> seen_;     // lower-case keyword(+arg) → line
+  std::set<std::string> given_;         // keywords present (lower case)
+};
+
+Result<void> Interpreter::once(const syntax::Statement& st) {
+  std::string key = lower(st.keyword);
+  const auto [it, fresh] = seen_.emplace(key, st.line);
+  if (!fresh) {
+    return error(file_.name, st, ErrorCode::kDuplicate,
+                 st.keyword + " already given at line " + std::to_string(it->second));
+  }
+  given_.insert(std::move(key));
+  return boost::outcome_v2::success();
+}
+
+Result<void> Interpreter::definitions() {
+  for (const auto& e : file_.entries) {
+    if (!e.body) continue;
+    if (e.statement.is("ExtUserPrmData")) {
+      RS4SIM_GSD_TRY(auto p, detail::interpret_ext_param(file_.name, e));
+      const int n = p.number;
+      if (!device_.params.emplace(n, std::move(p)).second) {
+        return error(file_.name, e.statement, ErrorCode::kDuplicate,
+                     "ExtUserPrmData " + std::to_string(n) + " already defined at line " +
+                         std::to_string(device_.params.at(n).line));
+      }
+    } else if (e.statement.is("PrmText")) {
+      RS4SIM_GSD_TRY(auto t, detail::interpret_prm_text(file_.name, e));
+      const int n = t.number;
+      if (!device_.prm_texts.emplace(n, std::move(t)).second) {
+        return error(file_.name, e.statement, ErrorCode::kDuplicate, "PrmText " + std::to_string(n) + " defined twice");
+      }
+    }
+  }
+  for (const auto& [n, p] : device_.params) {
+    if (p.prm_text_ref && !device_.prm_texts.count(*p.prm_text_ref)) {
+      return Error{ErrorCode::kUnknownReference, file_.name, p.line, p.name,
+                   "Prm_Text_Ref = " + std::to_string(*p.prm_text_ref) + " names no PrmText"};
+    }
+  }
+  return boost::outcome_v2::success();
+}
+
+Result<bool> Interpreter::baud_keyword(const syntax::Statement& st) {
+  for (std::size_t i = 0; i < kBauds.size(); ++i) {
+    const std::string name(kBauds[i].name);
+    if (st.is(name + "_supp")) {
+      RS4SIM_GSD_TRYV(once(st));
+      RS4SIM_GSD_TRY(const auto v, detail::number(file_.name, st, 0, 1));
+      device_.baud_rates[i].supported = v == 1;
+      return true;
+    }
+    if (st.is("MaxTsdr_" + name)) {
+      RS4SIM_GSD_TRYV(once(st));
+      RS4SIM_GSD_TRY(const auto v, detail::number(file_.name, st, 0, 0xFFFF));
+      device_.baud_rates[i].max_tsdr = static_cast<std::uint16_t>(v);
+      return true;
+    }
+  }
+  return false;
+}
+
+Result<void> Interpreter::legacy_user_prm(const syntax::Statement& st) {
+  RS4SIM_GSD_TRYV(once(st));
+  if (!st.has_equals || st.fields.size() != 1) {
+    return error(file_.name, st, ErrorCode::kBadValue, "User_Prm_Data expects bytes b0,b1,…");
+  }
+  RS4SIM_GSD_TRY(auto bytes, detail::byte_list(file_.name, st, st.fields[0]));
+  global_.consts.push_back({0, std::move(bytes), &st});
+  return boost::outcome_v2::success();
+}
+
+Result<void> Interpreter::statement(const syntax::Statement& st) {
+  for (const auto& key : kNumberKeys) {
+    if (st.is(key.keyword)) {
+      RS4SIM_GSD_TRYV(once(st));
+      RS4SIM_GSD_TRY(const auto v, detail::number(file_.name, st, key.lo, key.hi));
+      key.set(device_, v);
+      return boost::outcome_v2::success();
+    }
+  }
+  for (const auto& key : kStringKeys) {
+    if (st.is(key.keyword)) {
+      RS4SIM_GSD_TRYV(once(st));
+      RS4SIM_GSD_TRY(device_.*key.field, detail::string_value(file_.name, st));
+      return boost::outcome_v2::success();
+    }
+  }
+  RS4SIM_GSD_TRY(const bool baud, baud_keyword(st));
+  if (baud) return boost::outcome_v2::success();
+  if (st.is("Ext_User_Prm_Data_Const")) return global_.add_const(file_.name, st);
+  if (st.is("Ext_User_Prm_Data_Ref")) return global_.add_ref(file_.name, st);
+  if (st.is("User_Prm_Data")) return legacy_user_prm(st);
+  if (st.is("User_Prm_Data_Len")) {
+    RS4SIM_GSD_TRYV(once(st));
+    RS4SIM_GSD_TRY(const auto len, detail::number(file_.name, st, 0, 237));
+    global_.length = static_cast<std::size_t>(len);
+    global_.length_st = &st;
+  }
+  return boost::outcome_v2::success();  // a keyword a master does not need
+}
+
+Result<void> Interpreter::finish() {
+  if (!given_.count("ident_number")) {
+    return Error{ErrorCode::kMissingKeyword, file_.name, 0, "", "Ident_Number is missing"};
+  }
+  bool any = false;
+  for (const auto& b : device_.baud_rates) {
+    if (b.supported && !b.max_tsdr) {
+      return Error{ErrorCode::kMissingKeyword, file_.name, seen_.at(lower(std::string(b.name) + "_supp")),
+                   std::string(b.name) + "_supp = 1", "MaxTsdr_" + std::string(b.name) + " is missing"};
+    }
+    any = any || b.supported;
+  }
+  if (!any) return Error{ErrorCode::kMissingKeyword, file_.name, 0, "", "no baud rate is supported (<rate>_supp = 1)"};
+  std::optional<std::size_t> max;
+  if (device_.max_user_prm_data_len) max = *device_.max_user_prm_data_len;
+  RS4SIM_GSD_TRY(device_.user_prm, global_.finish(file_.name, device_.params, max));
+  if (device_.dpv1.slave && device_.user_prm.length < 3) {
+    return Error{ErrorCode::kMissingKeyword, file_.name, 0, "",
+                 "DPV1_Slave = 1 but User_Prm_Data does not hold the 3 DPV1_Status bytes"};
+  }
+  return boost::outcome_v2::success();
+}
+
+Result<Device> Interpreter::run() {
+  for (const auto& b : kBauds) device_.baud_rates.push_back({b.name, b.bps, false, std::nullopt});
+  RS4SIM_GSD_TRYV(definitions());
+  for (const auto& e : file_.entries) {
+    if (!e.body) {
+      RS4SIM_GSD_TRYV(statement(e.statement));
+    } else if (e.statement.is("Module")) {
+      RS4SIM_GSD_TRY(auto m, detail::interpret_module(file_.name, e, device_.params));
+      if (device_.find_module(m.name)) {
+        return error(file_.name, e.statement, ErrorCode::kDuplicate, "module \"" + m.name + "\" defined twice");
+      }
+      device_.modules.push_back(std::move(m));
+    }
+  }
+  RS4SIM_GSD_TRYV(finish());
+  return std::move(device_);
+}
+
+}  // namespace
+
+Result<Device> interpret(const syntax::File& file) { return Interpreter(file).run(); }
+
+Result<Device> parse(std::string_view text, std::string file_name) {
+  RS4SIM_GSD_TRY(auto file, syntax::parse_syntax(text, std::move(file_name)));
+  return interpret(file);
+}
+
+}  // namespace rs4sim::gsd

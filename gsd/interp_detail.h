@@ -1,0 +1,57 @@
+#pragma once
+// Internal helpers shared by the interpreter's files (not part of the public API).
+
+#include "gsd/error.h"
+#include "gsd/model.h"
+#include "gsd/syntax.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rs4sim::gsd::detail {
+
+Error error(const std::string& file, const syntax::Statement& st, ErrorCode code,
+            std::string message);
+
+// `keyword = n` with lo <= n <= hi.
+Result<std::int64_t> number(const std::string& file, const syntax::Statement& st,
+                            std::int64_t lo, std::int64_t hi);
+// `keyword = "a" "b"` → "ab" (adjacent strings concatenate, as after a `\` continuation).
+Result<std::string> string_value(const std::string& file, const syntax::Statement& st);
+// `keyword(off) = b0,b1,…` → the bytes; every value 0..255.
+Result<std::vector<std::uint8_t>> byte_list(const std::string& file, const syntax::Statement& st,
+                                            const syntax::Field& field);
+// The single numeric `(arg)` of a statement, lo..hi.
+Result<std::int64_t> number_arg(const std::string& file, const syntax::Statement& st,
+                                std::int64_t lo, std::int64_t hi);
+
+// Collects Ext_User_Prm_Data_Const/_Ref lines of one template; finish() checks them
+// against the declared length and the parameter definitions.
+struct TemplateBuilder {
+  std::string what;                         // "global User_Prm_Data", "module \"x\""
+  struct Const {
+    std::size_t offset;
+    std::vector<std::uint8_t> bytes;
+    const syntax::Statement* st;
+  };
+  std::vector<Const> consts;
+  std::vector<PrmRef> refs;
+  std::vector<const syntax::Statement*> ref_statements;
+  std::optional<std::size_t> length;        // declared length, if any
+  const syntax::Statement* length_st = nullptr;
+
+  bool empty() const { return consts.empty() && refs.empty(); }
+  Result<void> add_const(const std::string& file, const syntax::Statement& st);
+  Result<void> add_ref(const std::string& file, const syntax::Statement& st);
+  Result<PrmTemplate> finish(const std::string& file, const std::map<int, ExtParam>& params,
+                             std::optional<std::size_t> max_length) const;
+};
+
+Result<ExtParam> interpret_ext_param(const std::string& file, const syntax::Entry& entry);
+Result<PrmText> interpret_prm_text(const std::string& file, const syntax::Entry& entry);
+Result<Module> interpret_module(const std::string& file, const syntax::Entry& entry,
+                                const std::map<int, ExtParam>& params);
+
+}  // namespace rs4sim::gsd::detail

@@ -1,0 +1,94 @@
+// The malformed-GSD suite, syntax stage: each error names file:line and the offending
+// text, with one specific message per class of mistake.
+#include "gsd/interp.h"
+#include "gsd/syntax.h"
+
+#include <gtest/gtest.h>
+
+namespace rs4sim::gsd {
+namespace {
+
+struct Case {
+  const char* title;
+  const char* text;
+  ErrorCode code;
+  const char* what;  // the full Error::what()
+};
+
+const Case kCases[] = {
+    {"empty file", "", ErrorCode::kMissingHeader,
+     "bad.gsd:1: no keyword line: the file must start with #Profibus_DP"},
+    {"only comments", "; nothing\n\n", ErrorCode::kMissingHeader,
+     "bad.gsd:1: no keyword line: the file must start with #Profibus_DP"},
+    {"header missing", "; x\nIdent_Number = 1\n", ErrorCode::kMissingHeader,
+     "bad.gsd:2: the first keyword line must be #Profibus_DP: `Ident_Number = 1`"},
+    {"wrong header", "#Profibus_PA\n", ErrorCode::kMissingHeader,
+     "bad.gsd:1: the first keyword line must be #Profibus_DP: `#Profibus_PA`"},
+    {"second header", "#Profibus_DP\n#Profibus_DP\n", ErrorCode::kBlockStructure,
+     "bad.gsd:2: second #Profibus_DP header: `#Profibus_DP`"},
+    {"unterminated string", "#Profibus_DP\nVendor_Name = \"abc\n", ErrorCode::kSyntax,
+     "bad.gsd:2: unterminated string: `\"abc`"},
+    {"stray character", "#Profibus_DP\nIdent_Number = 0x12!4\n", ErrorCode::kSyntax,
+     "bad.gsd:2: unexpected character '!': `Ident_Number = 0x12!4`"},
+    {"control byte", "#Profibus_DP\nA = \x01\n", ErrorCode::kSyntax,
+     "bad.gsd:2: unexpected byte 0x01: `A = \x01`"},
+    {"bad hex", "#Profibus_DP\nIdent_Number = 0x12G4\n", ErrorCode::kSyntax,
+     "bad.gsd:2: malformed hex number: `0x12G4`"},
+    {"bare 0x", "#Profibus_DP\nIdent_Number = 0x\n", ErrorCode::kSyntax,
+     "bad.gsd:2: malformed hex number: `0x`"},
+    {"number too large", "#Profibus_DP\nA = 4294967296\n", ErrorCode::kSyntax,
+     "bad.gsd:2: number too large: `4294967296`"},
+    {"nothing after =", "#Profibus_DP\nIdent_Number =\n", ErrorCode::kSyntax,
+     "bad.gsd:2: value expected after '=' near 'end of line': `Ident_Number =`"},
+    {"dangling comma", "#Profibus_DP\nA = 1,\n", ErrorCode::kSyntax,
+     "bad.gsd:2: value expected near 'end of line': `A = 1,`"},
+    {"unclosed args", "#Profibus_DP\nBit(0 1 0-1\n", ErrorCode::kSyntax,
+     "bad.gsd:2: ')' expected near '1': `Bit(0 1 0-1`"},
+    {"line starts with =", "#Profibus_DP\n= 5\n", ErrorCode::kSyntax,
+     "bad.gsd:2: keyword expected near '=': `= 5`"},
+    {"range without high end", "#Profibus_DP\nA = 1-\n", ErrorCode::kSyntax,
+     "bad.gsd:2: number expected near 'end of line': `A = 1-`"},
+    {"continuation at end of file", "#Profibus_DP\nA = 1, \\", ErrorCode::kSyntax,
+     "bad.gsd:2: '\\' continues past the end of the file: `A = 1, `"},
+    {"End without block", "#Profibus_DP\nEndModule\n", ErrorCode::kBlockStructure,
+     "bad.gsd:2: EndModule without Module: `EndModule`"},
+    {"wrong End", "#Profibus_DP\nPrmText = 1\nText(0) = \"a\"\nEndModule\n",
+     ErrorCode::kBlockStructure, "bad.gsd:4: EndModule without Module: `EndModule`"},
+    {"nested block", "#Profibus_DP\nModule = \"a\" 0x10\nPrmText = 1\n",
+     ErrorCode::kBlockStructure,
+     "bad.gsd:3: PrmText inside Module started at line 2: `PrmText = 1`"},
+    {"block not closed", "#Profibus_DP\nA = 1\nModule = \"a\" 0x10\n1\n",
+     ErrorCode::kBlockStructure,
+     "bad.gsd:3: Module is not closed (EndModule missing): `Module = \"a\" 0x10`"},
+    {"End with value", "#Profibus_DP\nModule = \"a\" 0x10\nEndModule = 1\n",
+     ErrorCode::kBlockStructure, "bad.gsd:3: EndModule takes no value: `EndModule = 1`"},
+};
+
+TEST(GsdSyntaxErrors, EachMalformedClassHasItsMessage) {
+  for (const auto& c : kCases) {
+    auto result = parse(c.text, "bad.gsd");
+    ASSERT_FALSE(result) << c.title;
+    EXPECT_EQ(result.error().code, c.code) << c.title;
+    EXPECT_EQ(result.error().what(), c.what) << c.title;
+    EXPECT_EQ(result.error().error_code().category().name(), std::string("rs4sim.gsd"));
+  }
+}
+
+TEST(GsdSyntaxErrors, LineNumberIsThePhysicalLineOfTheStatement) {
+  auto result = parse("; 1\n; 2\n#Profibus_DP\n\nA = 1, \\\n  2\nB = \"x\n", "f.gsd");
+  ASSERT_FALSE(result);
+  EXPECT_EQ(result.error().line, 7);
+  EXPECT_EQ(result.error().file, "f.gsd");
+}
+
+TEST(GsdSyntaxErrors, VeryLongLineIsRefused) {
+  std::string text = "#Profibus_DP\nA = 1";
+  for (int i = 0; i < 70000; ++i) text += ",1";
+  auto result = parse(text, "long.gsd");
+  ASSERT_FALSE(result);
+  EXPECT_EQ(result.error().message, "line too long");
+  EXPECT_EQ(result.error().line, 2);
+}
+
+}  // namespace
+}  // namespace rs4sim::gsd
