@@ -86,7 +86,7 @@ Result<BlockAssembler::Progress> BlockAssembler::push(std::span<const std::uint8
     return fail(AdapterError::kUnexpectedBlockNumber);
   }
   const auto payload = block.value().payload;
-  if (command_.size() + payload.size() > kMaxCommandSize) {
+  if (command_.size() + payload.size() > max_command_) {
     return fail(AdapterError::kTelegramTooLong);  // whole command >= 1100 bytes (0x2A06)
   }
   command_.insert(command_.end(), payload.begin(), payload.end());

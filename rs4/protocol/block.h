@@ -24,6 +24,8 @@ inline constexpr std::size_t kMinWriteRecordSize = 5;  // §5 "min 5"
 inline constexpr std::size_t kMaxBlockPayload = kMaxRecordSize - kBlockHeaderSize;
 inline constexpr std::size_t kMaxCommandSize = 1099;   // §5.1: >= 1100 bytes → 0x2A06
 inline constexpr std::uint16_t kLastBlockNumber = 0xFFFF;
+// READ answers: block numbers 0..0xFFFE plus the last one, 236 payload bytes each.
+inline constexpr std::size_t kMaxReadAnswerSize = std::size_t{0x10000} * kMaxBlockPayload;
 
 // Flow-control byte bits 6..4, table 5.2-2.
 enum class FlowState : std::uint8_t {
@@ -72,14 +74,19 @@ Result<BlockView> decode_block(std::span<const std::uint8_t> record, Direction d
 void encode_block(std::uint8_t flow_control, std::uint16_t number,
                   std::span<const std::uint8_t> payload, std::vector<std::uint8_t>& out);
 
-// Reassembles a command from consecutive records (§5.1). WRITE side: errors are
-// AdapterError::kTelegramTooLong (0x2A06, whole command >= 1100 bytes),
+// Reassembles a command from consecutive records (§5.1). Errors:
+// AdapterError::kTelegramTooLong (0x2A06: WRITE side, whole command >= 1100 bytes;
+// READ side, more than max_command bytes — answers have no limit in the manual),
 // AdapterError::kUnexpectedBlockNumber (0x2A0B) or a ProtocolError from
 // decode_block. After an error the partial command is dropped and the next command
 // must start with block 0 (or a single block 0xFFFF).
 class BlockAssembler {
  public:
-  explicit BlockAssembler(Direction direction = Direction::kWrite) : direction_(direction) {}
+  explicit BlockAssembler(Direction direction = Direction::kWrite)
+      : BlockAssembler(direction, direction == Direction::kWrite ? kMaxCommandSize
+                                                                  : kMaxReadAnswerSize) {}
+  BlockAssembler(Direction direction, std::size_t max_command)
+      : direction_(direction), max_command_(max_command) {}
 
   struct Progress {
     bool complete = false;             // true: command() holds the whole command
@@ -96,6 +103,7 @@ class BlockAssembler {
   Result<Progress> fail(std::error_code error) noexcept;
 
   Direction direction_;
+  std::size_t max_command_;
   std::uint16_t next_number_ = 0;
   bool complete_ = false;
   std::vector<std::uint8_t> command_;

@@ -145,5 +145,21 @@ TEST(Rs4BlockAssembler, ReadDirectionReassemblesSplitterOutput) {
   EXPECT_TRUE(empty.command().empty());
 }
 
+TEST(Rs4BlockAssembler, ReadDirectionHasNo1100Limit) {
+  const Bytes answer(2000, 0x5A);  // e.g. a long RS4 answer; the limit is for commands
+  BlockAssembler a(Direction::kRead);
+  for (const auto& block : split_into_blocks(answer, {true, false, FlowState::kNormal})) {
+    ASSERT_TRUE(a.push(block));
+  }
+  EXPECT_EQ(a.command().size(), 2000U);
+  BlockAssembler bounded(Direction::kRead, 1000);
+  std::error_code first;
+  for (const auto& block : split_into_blocks(answer, {true, false, FlowState::kNormal})) {
+    auto p = bounded.push(block);
+    if (!p && !first) first = p.error();  // later blocks are then out of sequence
+  }
+  EXPECT_EQ(first, AdapterError::kTelegramTooLong);
+}
+
 }  // namespace
 }  // namespace rs4sim::rs4::protocol
