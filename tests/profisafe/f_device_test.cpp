@@ -17,9 +17,9 @@ using Bytes = std::vector<std::uint8_t>;
 
 const TimePoint kT0{std::chrono::hours(1)};
 
-class FDeviceTest : public ::testing::Test {
+class ProfisafeFDeviceTest : public ::testing::Test {
  protected:
-  FDeviceTest() : dev_(FDeviceConfig{DeviceProfile::rs4(4), 1, {}}) {}
+  ProfisafeFDeviceTest() : dev_(FDeviceConfig{DeviceProfile::rs4(4), 1, {}}) {}
 
   void parameterise(std::uint16_t wd_ms = 10) {
     FParameters p;
@@ -51,7 +51,7 @@ class FDeviceTest : public ::testing::Test {
   PduConfig host_{};
 };
 
-TEST_F(FDeviceTest, BeforeParametersAllZeroPduAndIgnored) {
+TEST_F(ProfisafeFDeviceTest, BeforeParametersAllZeroPduAndIgnored) {
   EXPECT_EQ(response(), Bytes(5, 0));
   EXPECT_EQ(dev_.state(), FDeviceState::kNoParameters);
   EXPECT_EQ(dev_.on_pdu(Bytes{1, 2, 3, 4, 5}, kT0), FDeviceEvent::kIgnored);
@@ -59,7 +59,7 @@ TEST_F(FDeviceTest, BeforeParametersAllZeroPduAndIgnored) {
   EXPECT_EQ(dev_.next_deadline(), std::nullopt);
 }
 
-TEST_F(FDeviceTest, WrongParametersKeepDiagnosis) {
+TEST_F(ProfisafeFDeviceTest, WrongParametersKeepDiagnosis) {
   FParameters p;
   p.dest_add = 505;
   const auto v = dev_.set_parameters(encode_f_parameters(p));
@@ -69,7 +69,7 @@ TEST_F(FDeviceTest, WrongParametersKeepDiagnosis) {
   EXPECT_EQ(dev_.counters().parameter_errors, 1u);
 }
 
-TEST_F(FDeviceTest, StartupSendsFailSafeUntilFirstValidPdu) {
+TEST_F(ProfisafeFDeviceTest, StartupSendsFailSafeUntilFirstValidPdu) {
   parameterise();
   dev_.set_input(Bytes{0x80});
   EXPECT_EQ(dev_.state(), FDeviceState::kStartup);
@@ -84,7 +84,7 @@ TEST_F(FDeviceTest, StartupSendsFailSafeUntilFirstValidPdu) {
   EXPECT_EQ(response(), (Bytes{0x80, 0x00, 0x01, 0x73, 0x0B}));
 }
 
-TEST_F(FDeviceTest, WatchdogExpiresAtFWdTimeNotBefore) {
+TEST_F(ProfisafeFDeviceTest, WatchdogExpiresAtFWdTimeNotBefore) {
   parameterise(50);
   ASSERT_EQ(dev_.on_pdu(host_pdu(0, 0, 1), kT0), FDeviceEvent::kNew);
   EXPECT_EQ(dev_.next_deadline(), kT0 + 50ms);
@@ -101,7 +101,7 @@ TEST_F(FDeviceTest, WatchdogExpiresAtFWdTimeNotBefore) {
   EXPECT_EQ(dev_.output()[0], 0);
 }
 
-TEST_F(FDeviceTest, NewPduRestartsWatchdog) {
+TEST_F(ProfisafeFDeviceTest, NewPduRestartsWatchdog) {
   parameterise(50);
   ASSERT_EQ(dev_.on_pdu(host_pdu(0, 0, 1), kT0), FDeviceEvent::kNew);
   ASSERT_EQ(dev_.on_pdu(host_pdu(0, 0, 2), kT0 + 49ms), FDeviceEvent::kNew);
@@ -114,7 +114,7 @@ TEST_F(FDeviceTest, NewPduRestartsWatchdog) {
   EXPECT_EQ(dev_.state(), FDeviceState::kFault);
 }
 
-TEST_F(FDeviceTest, CrcErrorFailSafeAndRecovery) {
+TEST_F(ProfisafeFDeviceTest, CrcErrorFailSafeAndRecovery) {
   parameterise();
   dev_.set_input(Bytes{0x80});
   ASSERT_EQ(dev_.on_pdu(host_pdu(0x01, 0, 1), kT0), FDeviceEvent::kNew);
@@ -134,13 +134,13 @@ TEST_F(FDeviceTest, CrcErrorFailSafeAndRecovery) {
   EXPECT_EQ(dev_.output()[0], 0x03);
 }
 
-TEST_F(FDeviceTest, WrongSizeIsCrcError) {
+TEST_F(ProfisafeFDeviceTest, WrongSizeIsCrcError) {
   parameterise();
   EXPECT_EQ(dev_.on_pdu(Bytes{0, 0, 1, 0}, kT0), FDeviceEvent::kCrcError);
   EXPECT_EQ(dev_.last_check().error, Errc::kPduWrongSize);
 }
 
-TEST_F(FDeviceTest, ConsecutiveNumberErrorIsCommunicationFault) {
+TEST_F(ProfisafeFDeviceTest, ConsecutiveNumberErrorIsCommunicationFault) {
   parameterise();
   ASSERT_EQ(dev_.on_pdu(host_pdu(0, 0, 1), kT0), FDeviceEvent::kNew);
   EXPECT_EQ(dev_.on_pdu(host_pdu(0, 0, 3), kT0 + 1ms), FDeviceEvent::kNumberError);
@@ -149,14 +149,14 @@ TEST_F(FDeviceTest, ConsecutiveNumberErrorIsCommunicationFault) {
   EXPECT_EQ(dev_.status_byte(), status_bit::kCeCrc | status_bit::kFvActivated);
 }
 
-TEST_F(FDeviceTest, NumbersWrap255To1) {
+TEST_F(ProfisafeFDeviceTest, NumbersWrap255To1) {
   parameterise();
   ASSERT_EQ(dev_.on_pdu(host_pdu(0, 0, 255), kT0), FDeviceEvent::kNew);
   EXPECT_EQ(dev_.on_pdu(host_pdu(0, 0, 1), kT0 + 1ms), FDeviceEvent::kNew);
   EXPECT_EQ(dev_.on_pdu(host_pdu(0, 0, 0), kT0 + 2ms), FDeviceEvent::kNumberError);
 }
 
-TEST_F(FDeviceTest, ActivateFvHonouredAndReported) {
+TEST_F(ProfisafeFDeviceTest, ActivateFvHonouredAndReported) {
   parameterise();
   dev_.set_input(Bytes{0x80});
   ASSERT_EQ(dev_.on_pdu(host_pdu(0x07, control_bit::kActivateFv, 1), kT0), FDeviceEvent::kNew);
@@ -169,7 +169,7 @@ TEST_F(FDeviceTest, ActivateFvHonouredAndReported) {
   expect_response(0x80, 0x00, 2);
 }
 
-TEST_F(FDeviceTest, ThePredicateAloneDecidesTheInputByte) {
+TEST_F(ProfisafeFDeviceTest, ThePredicateAloneDecidesTheInputByte) {
   parameterise();
   dev_.set_input(Bytes{0xFF});
   const Bytes steps[] = {host_pdu(0, 0, 1), host_pdu(0, control_bit::kActivateFv, 2), host_pdu(0, 0, 3),
@@ -186,7 +186,7 @@ TEST_F(FDeviceTest, ThePredicateAloneDecidesTheInputByte) {
   }
 }
 
-TEST_F(FDeviceTest, InjectedFaultsOnResponses) {
+TEST_F(ProfisafeFDeviceTest, InjectedFaultsOnResponses) {
   parameterise();
   dev_.set_input(Bytes{0x80});
   ASSERT_EQ(dev_.on_pdu(host_pdu(0, 0, 1), kT0), FDeviceEvent::kNew);

@@ -17,9 +17,9 @@ using Bytes = std::vector<std::uint8_t>;
 
 const TimePoint kT0{std::chrono::hours(1)};
 
-class FHostTest : public ::testing::Test {
+class ProfisafeFHostTest : public ::testing::Test {
  protected:
-  FHostTest() : host_(config()) {}
+  ProfisafeFHostTest() : host_(config()) {}
   static FHostConfig config() {
     FHostConfig c;
     c.params.wd_time_ms = 100;
@@ -52,7 +52,7 @@ class FHostTest : public ::testing::Test {
   Bytes sent_;
 };
 
-TEST_F(FHostTest, StartupPassivatedThenAutomaticReintegration) {
+TEST_F(ProfisafeFHostTest, StartupPassivatedThenAutomaticReintegration) {
   host_.set_output(Bytes{0x42});
   EXPECT_TRUE(host_.passivated());
   const auto first = request(kT0);
@@ -72,13 +72,13 @@ TEST_F(FHostTest, StartupPassivatedThenAutomaticReintegration) {
   EXPECT_EQ(host_.input()[0], 0x80);
 }
 
-TEST_F(FHostTest, SameNumberUntilAnswered) {
+TEST_F(ProfisafeFHostTest, SameNumberUntilAnswered) {
   EXPECT_EQ(request(kT0).consecutive_number, 1);
   EXPECT_EQ(request(kT0 + 1ms).consecutive_number, 1);
   EXPECT_EQ(host_.counters().requests, 2u);
 }
 
-TEST_F(FHostTest, WatchdogExpiresAtFWdTimeNotBefore) {
+TEST_F(ProfisafeFHostTest, WatchdogExpiresAtFWdTimeNotBefore) {
   start(kT0);
   (void)request(kT0 + 10ms);  // number 2 sent: watchdog runs from here
   EXPECT_EQ(host_.next_deadline(), kT0 + 110ms);
@@ -91,7 +91,7 @@ TEST_F(FHostTest, WatchdogExpiresAtFWdTimeNotBefore) {
   EXPECT_EQ(host_.input()[0], 0);
 }
 
-TEST_F(FHostTest, CrcErrorPassivatesAckReqAckRei) {
+TEST_F(ProfisafeFHostTest, CrcErrorPassivatesAckReqAckRei) {
   start(kT0);
   (void)request(kT0 + 1ms);
   Bytes bad = device_pdu(0x80, 0, 2);
@@ -114,7 +114,7 @@ TEST_F(FHostTest, CrcErrorPassivatesAckReqAckRei) {
   EXPECT_EQ(host_.input()[0], 0x81);
 }
 
-TEST_F(FHostTest, NumberErrorAndStaleAnswer) {
+TEST_F(ProfisafeFHostTest, NumberErrorAndStaleAnswer) {
   start(kT0);
   (void)request(kT0 + 1ms);  // number 2
   EXPECT_EQ(host_.on_pdu(device_pdu(0x80, 0, 1), kT0 + 2ms), FHostEvent::kStale);
@@ -124,7 +124,7 @@ TEST_F(FHostTest, NumberErrorAndStaleAnswer) {
   EXPECT_TRUE(host_.passivated());
 }
 
-TEST_F(FHostTest, DeviceReportedFaultsPassivate) {
+TEST_F(ProfisafeFHostTest, DeviceReportedFaultsPassivate) {
   start(kT0);
   (void)request(kT0 + 1ms);
   EXPECT_EQ(host_.on_pdu(device_pdu(0, status_bit::kWdTimeout | status_bit::kFvActivated, 2), kT0 + 2ms),
@@ -138,7 +138,7 @@ TEST_F(FHostTest, DeviceReportedFaultsPassivate) {
   EXPECT_FALSE(host_.ack_req());
 }
 
-TEST_F(FHostTest, InjectedPduFaults) {
+TEST_F(ProfisafeFHostTest, InjectedPduFaults) {
   start(kT0);
   host_.faults().corrupt_crc2 = 1;
   EXPECT_EQ(request(kT0 + 1ms).error, Errc::kPduCrc2Mismatch);
@@ -157,7 +157,7 @@ TEST_F(FHostTest, InjectedPduFaults) {
   EXPECT_EQ(request(kT0 + 9ms).error, Errc::kPduCrc2Mismatch);
 }
 
-TEST_F(FHostTest, InjectedParameterFaultsGiveTheDeviceDiagnosis) {
+TEST_F(ProfisafeFHostTest, InjectedParameterFaultsGiveTheDeviceDiagnosis) {
   const auto profile = DeviceProfile::rs4(4);
   EXPECT_TRUE(validate(host_.parameter_block(), profile).ok());
   host_.parameter_faults().dest_add = 505;
@@ -172,7 +172,7 @@ TEST_F(FHostTest, InjectedParameterFaultsGiveTheDeviceDiagnosis) {
   EXPECT_EQ(v.received_crc1, 0x5430);
 }
 
-TEST(FHostConfigTest, RejectsNonV1Parameters) {
+TEST(ProfisafeFHostConfig, RejectsNonV1Parameters) {
   FHostConfig c;
   c.params.par_version = 1;
   EXPECT_THROW(FHost{c}, std::invalid_argument);
