@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
+#include <iterator>
 #include <vector>
 
 #include "rs4/scanner/crc32.h"
@@ -152,6 +154,21 @@ TEST(ScannerParameterCodec, SemanticErrorAfterSyntax) {
   b[43] = 0x0F;                                         // pair 1 protective seg 0 = 0x0FA1
   b[44] = 0xA1;                                         // = 4001 mm
   EXPECT_EQ(decode_and_validate(b).error(), ParameterError::kProtectiveTooFar);
+}
+
+std::vector<std::uint8_t> read_seed(const char* name) {
+  std::ifstream in(std::string(RS4SIM_SCANNER_CORPUS) + "/" + name, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The factory-default seed was generated from the documented layout by a separate script.
+TEST(ScannerParameterCodec, FactoryDefaultMatchesDocumentedBytes) {
+  const auto seed = read_seed("factory_default");
+  ASSERT_EQ(seed.size(), kParameterSetSize);
+  EXPECT_EQ(encode(factory_default()), seed);
+  const auto bad = read_seed("bad_start_pair");
+  EXPECT_EQ(decode_and_validate(bad).error(), ParameterError::kStartPair);
+  EXPECT_EQ(decode(read_seed("header_only")).error(), CodecError::kTooShort);
 }
 
 }  // namespace
