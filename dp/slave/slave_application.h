@@ -115,6 +115,7 @@ enum class C2Event : std::uint8_t {
   kAbortedByMaster,  // Abort.req from the master
   kTimedOut,         // no request within Send_Timeout (§3.7)
   kRefused,          // Initiate.req invalid: Abort sent instead of Initiate.res
+  kAbortedBySlave,   // invalid request PDU on the connection: Abort sent, SAP freed
 };
 
 // ---- application → slave ---------------------------------------------------------------

@@ -94,7 +94,11 @@ void Slave::on_c2_sap(const fdl::Telegram& t, TimePoint now) {
     // A refused Initiate or a slave Abort: whatever the master sends next gets the Abort,
     // then the SAP is free again.
     reply_data(t, fdl::ResponseStatus::kDataLow) = c2_.job.response;
-    c2_ = C2Connection{};
+    if (c2_.established) {
+      c2_close(C2Event::kAbortedBySlave, now);
+    } else {
+      c2_ = C2Connection{};  // kRefused was reported with the Initiate
+    }
     return;
   }
   if (poll_job(c2_.job, t)) return;

@@ -4,7 +4,9 @@
 
 #include "dp/slave/slave_application.h"
 
+#include <algorithm>
 #include <cstdint>
+#include <iterator>
 #include <optional>
 #include <vector>
 
@@ -15,12 +17,16 @@ using Bytes = std::vector<std::uint8_t>;
 class FakeApplication : public SlaveApplication {
  public:
   // --- configurable answers ---
-  Bytes config{0x10, 0x20};  // 1 byte in, 1 byte out (spec §2.10)
-  Bytes inputs{0x3C};
+  // (built from arrays: gcc 12 warns falsely on initializer-list members at -O2)
+  static constexpr std::uint8_t kConfig[] = {0x10, 0x20};  // 1 byte in, 1 byte out (§2.10)
+  static constexpr std::uint8_t kInputs[] = {0x3C};
+  static constexpr std::uint8_t kReadData[] = {0xAB, 0xCD};
+  Bytes config{std::begin(kConfig), std::end(kConfig)};
+  Bytes inputs{std::begin(kInputs), std::end(kInputs)};
   PrmVerdict prm_verdict = PrmVerdict::kAccept;
   std::optional<CfgVerdict> cfg_verdict;  // default: accept iff Chk_Cfg == config
   enum class AcyclicMode { kData, kError, kPending } acyclic_mode = AcyclicMode::kData;
-  Bytes read_data{0xAB, 0xCD};
+  Bytes read_data{std::begin(kReadData), std::end(kReadData)};
   AcyclicError acyclic_error{0x80, 0xB0, 0x00};
   std::optional<TimePoint> deadline;
 
