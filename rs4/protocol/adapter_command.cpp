@@ -31,6 +31,16 @@ WriteCommand single_byte(std::span<const std::uint8_t> payload) {
 
 }  // namespace
 
+std::uint8_t forward_mask_bit(std::uint8_t telegram_code) noexcept {
+  switch (telegram_code) {
+    case 0x23: return kForwardMeasurement;  // COM_CMD_MESS_16_RT
+    case 0x14: return kForwardAlive;        // COM_CMD_ALIVE
+    case 0x54: return kForwardWarning;      // COM_CMD_WARNING_OCCURE
+    case 0x53: return kForwardError;        // COM_CMD_ERROR_OCCURE
+    default: return 0;
+  }
+}
+
 Result<WriteCommand> parse_write_command(std::span<const std::uint8_t> payload) {
   if (payload.empty()) return ProtocolError::kEmptyCommand;
   switch (static_cast<AdapterCommandCode>(payload[0])) {

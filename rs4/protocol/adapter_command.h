@@ -30,6 +30,10 @@ inline constexpr std::uint8_t kForwardWarning = 0x04;      // 0x54 COM_CMD_WARNI
 inline constexpr std::uint8_t kForwardError = 0x08;        // 0x53 COM_CMD_ERROR_OCCURE
 inline constexpr std::uint8_t kForwardMaskDefined = 0x0F;
 
+// The mask bit that selects an RS4 telegram code for forwarding (0x23 → bit 0,
+// 0x14 → bit 1, 0x54 → bit 2, 0x53 → bit 3); 0 for any other code.
+std::uint8_t forward_mask_bit(std::uint8_t telegram_code) noexcept;
+
 // PROFI_CMD_GET_RS4_DATA byte 7: > 1 is invalid.
 enum class ForwardMode : std::uint8_t { kOnce = 0, kPermanent = 1 };
 

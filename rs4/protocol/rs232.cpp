@@ -48,12 +48,12 @@ void Rs232Deframer::feed(std::span<const std::uint8_t> bytes, std::vector<Event>
     if (in_frame_) {
       frame_byte(byte, events);
     } else {
-      idle_byte(byte, events);
+      idle_byte(byte);
     }
   }
 }
 
-void Rs232Deframer::idle_byte(std::uint8_t byte, std::vector<Event>& /*events*/) {
+void Rs232Deframer::idle_byte(std::uint8_t byte) {
   if (byte == 0x00) {
     if (zeros_ < kEndZeros) ++zeros_;
     return;

@@ -49,7 +49,7 @@ class Rs232Deframer {
   bool in_frame() const noexcept { return in_frame_; }
 
  private:
-  void idle_byte(std::uint8_t byte, std::vector<Event>& events);
+  void idle_byte(std::uint8_t byte);
   void frame_byte(std::uint8_t byte, std::vector<Event>& events);
   void start_frame(std::uint8_t cmd);
   void finish_frame(std::vector<Event>& events);

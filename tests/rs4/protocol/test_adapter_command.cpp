@@ -43,6 +43,15 @@ TEST(Rs4AdapterCommand, GetRs4DataMaskAndMode) {
   EXPECT_EQ(encode_command(g), payload);
 }
 
+TEST(Rs4AdapterCommand, ForwardMaskBitPerTelegram) {
+  // Table 5.2-5 byte 6: bit 0 measurement, bit 1 alive, bit 2 warning, bit 3 error.
+  EXPECT_EQ(forward_mask_bit(0x23), 0x01);  // COM_CMD_MESS_16_RT
+  EXPECT_EQ(forward_mask_bit(0x14), 0x02);  // COM_CMD_ALIVE
+  EXPECT_EQ(forward_mask_bit(0x54), 0x04);  // COM_CMD_WARNING_OCCURE
+  EXPECT_EQ(forward_mask_bit(0x53), 0x08);  // COM_CMD_ERROR_OCCURE
+  EXPECT_EQ(forward_mask_bit(0x16), 0x00);  // positive acknowledge: not selectable
+}
+
 TEST(Rs4AdapterCommand, GetRs4DataMaskZeroStopsForwarding) {
   auto c = parse({0x92, 0x00, 0x00});  // mask 0 = stop all, mode 0
   ASSERT_TRUE(std::holds_alternative<GetRs4DataCommand>(c));

@@ -98,6 +98,53 @@ TEST(Rs4Rs232, DeframerTakesOneByteAtATimeAndBackToBackFrames) {
   }
 }
 
+TEST(Rs4Rs232, EverySplitPointGivesTheSameFrames) {
+  Bytes stream;
+  for (const auto& ex : examples()) stream.insert(stream.end(), ex.wire.begin(), ex.wire.end());
+  for (std::size_t cut = 0; cut <= stream.size(); ++cut) {
+    Rs232Deframer d;
+    std::vector<Rs232Deframer::Event> events;
+    d.feed(std::span(stream).first(cut), events);
+    d.feed(std::span(stream).subspan(cut), events);
+    ASSERT_EQ(events.size(), examples().size()) << "cut at " << cut;
+    for (std::size_t i = 0; i < events.size(); ++i) {
+      ASSERT_TRUE(events[i]) << "cut at " << cut;
+      EXPECT_EQ(events[i].value(), examples()[i].body) << "cut at " << cut;
+    }
+  }
+}
+
+TEST(Rs4Rs232, BodyEndingInOneZero) {
+  // body 23 01 00: no stuffing, CHK = 23 ^ 01 ^ 00 = 22, then the end mark
+  const Bytes wire{0x00, 0x00, 0x23, 0x01, 0x00, 0x22, 0x00, 0x00, 0x00};
+  auto framed = frame_rs232(Bytes{0x23, 0x01, 0x00});
+  ASSERT_TRUE(framed);
+  EXPECT_EQ(framed.value(), wire);
+  Rs232Deframer d;
+  auto events = d.feed(wire);
+  ASSERT_EQ(events.size(), 1U);
+  ASSERT_TRUE(events[0]);
+  EXPECT_EQ(events[0].value(), (Bytes{0x23, 0x01, 0x00}));
+}
+
+TEST(Rs4Rs232, StuffedZerosFollowedByARealFF) {
+  // body 31 01 00 00 FF: 00 00 → stuff FF, then the body's own FF
+  const Bytes wire{0x00, 0x00,
+                   0x31, 0x01, 0x00, 0x00,
+                   0xFF,        // stuffed
+                   0xFF,        // data byte 0xFF
+                   0x30,        // CHK = 31 ^ 01 ^ FF ^ FF
+                   0x00, 0x00, 0x00};
+  auto framed = frame_rs232(Bytes{0x31, 0x01, 0x00, 0x00, 0xFF});
+  ASSERT_TRUE(framed);
+  EXPECT_EQ(framed.value(), wire);
+  Rs232Deframer d;
+  auto events = d.feed(wire);
+  ASSERT_EQ(events.size(), 1U);
+  ASSERT_TRUE(events[0]);
+  EXPECT_EQ(events[0].value(), (Bytes{0x31, 0x01, 0x00, 0x00, 0xFF}));
+}
+
 TEST(Rs4Rs232, CheckZeroIsSentAsFF) {
   // 0x12 ^ 0x12 = 0x00 → CHK 0xFF
   auto framed = frame_rs232(Bytes{0x12, 0x12});
