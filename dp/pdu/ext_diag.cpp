@@ -64,7 +64,7 @@ bool IdentifierDiag::has_diag(std::size_t identifier) const {
 }
 
 std::uint8_t AlarmPdu::specifier_byte() const {
-  return static_cast<std::uint8_t>((seq_nr << 3) | wire::flag(add_ack, 2) |
+  return static_cast<std::uint8_t>((static_cast<unsigned>(seq_nr) << 3) | wire::flag(add_ack, 2) |
                                    (static_cast<std::uint8_t>(specifier) & 0x03U));
 }
 
