@@ -99,7 +99,7 @@ void Scanner::raise_fault(Fault fault, std::uint16_t parameter, TimePoint at) {
   ++f.occurrences;
   ++counters_.faults;
   if (state_ == OperatingState::kMeasuring) state_ = OperatingState::kError;
-  if (scanning()) {
+  if (state_ != OperatingState::kOff) {
     const FaultInfo& info = fault_info(fault);
     push_event(Rs4Event{Rs4Event::Kind::kError, info.error_number, parameter, info.function, at});
   }

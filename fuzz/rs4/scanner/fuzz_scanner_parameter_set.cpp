@@ -1,9 +1,10 @@
 // libFuzzer target: the parameter-set decoder (rs4/scanner/parameter_codec.h).
-// Invariants: never crash; whatever decodes re-encodes to the same bytes; validation
-// of a decoded set never crashes and a valid set survives a round trip unchanged.
+// Invariants: never crash; whatever decodes re-encodes to the same bytes (the encoding
+// is deterministic and decode is its exact inverse); validation of any decoded set
+// returns an issue or nothing, never crashes.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <algorithm>
 #include <cstdlib>
 #include <span>
 
@@ -12,14 +13,12 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace rs4sim::rs4::scanner;
   const std::span<const std::uint8_t> in(data, size);
-  auto decoded = decode(in);
+  const auto decoded = decode(in);
   if (!decoded) return 0;
   const auto again = encode(decoded.value());
   if (again.size() != size || !std::equal(again.begin(), again.end(), in.begin())) std::abort();
-  if (!validate(decoded.value())) {
-    auto checked = decode_and_validate(again);
-    if (!checked || !(checked.value() == decoded.value())) std::abort();
+  if (const auto issue = validate(decoded.value())) {
+    if (issue->message().empty()) std::abort();
   }
-  (void)checksum(decoded.value());
   return 0;
 }
