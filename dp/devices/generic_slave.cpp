@@ -1,0 +1,16 @@
+#include "dp/devices/generic_slave.h"
+
+namespace rs4sim::dp::devices {
+
+SlaveConfig GenericSlave::slave_config(const GenericSlaveConfig& c) {
+  SlaveConfig s;
+  s.address = c.address;
+  s.ident_number = c.ident_number;
+  s.dpv1 = c.dpv1;
+  return s;
+}
+
+GenericSlave::GenericSlave(const GenericSlaveConfig& config)
+    : device_(GenericDeviceConfig{config.cfg}), slave_(slave_config(config), device_) {}
+
+}  // namespace rs4sim::dp::devices

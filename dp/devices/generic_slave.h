@@ -1,0 +1,44 @@
+#pragma once
+// One generic virtual slave as a single dp::Station: the dp::Slave protocol core with a
+// GenericDevice behind it (see generic_device.h for the device's behaviour).
+
+#include "dp/devices/generic_device.h"
+#include "dp/slave/slave.h"
+
+namespace rs4sim::dp::devices {
+
+struct GenericSlaveConfig {
+  std::uint8_t address = 126;
+  std::uint16_t ident_number = 0;
+  std::vector<std::uint8_t> cfg;  // real configuration identifiers
+  bool dpv1 = true;
+};
+
+class GenericSlave final : public Station {
+ public:
+  // Throws std::system_error on a bad configuration (address, identifiers).
+  explicit GenericSlave(const GenericSlaveConfig& config);
+  GenericSlave(const GenericSlave&) = delete;
+  GenericSlave& operator=(const GenericSlave&) = delete;
+
+  [[nodiscard]] std::uint8_t address() const override { return slave_.address(); }
+  void on_telegram(const fdl::Telegram& t, TimePoint now) override { slave_.on_telegram(t, now); }
+  void on_time(TimePoint now) override { slave_.on_time(now); }
+  [[nodiscard]] std::optional<TimePoint> next_deadline() const override {
+    return slave_.next_deadline();
+  }
+  std::optional<fdl::Telegram> take_transmit() override { return slave_.take_transmit(); }
+
+  [[nodiscard]] GenericDevice& device() { return device_; }
+  [[nodiscard]] const GenericDevice& device() const { return device_; }
+  [[nodiscard]] Slave& slave() { return slave_; }
+  [[nodiscard]] const Slave& slave() const { return slave_; }
+
+ private:
+  static SlaveConfig slave_config(const GenericSlaveConfig& c);
+
+  GenericDevice device_;  // before slave_: the Slave constructor calls device_.on_attach()
+  Slave slave_;
+};
+
+}  // namespace rs4sim::dp::devices
