@@ -22,6 +22,7 @@ Validation FDevice::set_parameters(std::span<const std::uint8_t> block) {
   fault_reported_ = false;
   activate_fv_ = false;
   last_number_ = 0;
+  synced_ = false;
   watchdog_deadline_.reset();
   output_.fill(0);
   if (!validation_.ok()) {
@@ -61,6 +62,7 @@ void FDevice::enter_fault(std::uint8_t bit) {
 
 void FDevice::accept_new(const PduCheck& check, TimePoint now) {
   ++counters_.new_pdus;
+  synced_ = true;
   last_number_ = check.consecutive_number;
   watchdog_deadline_ = now + std::chrono::milliseconds(wd_time_ms_);
   activate_fv_ = (check.status_or_control & control_bit::kActivateFv) != 0;
@@ -93,15 +95,16 @@ FDeviceEvent FDevice::on_pdu(std::span<const std::uint8_t> pdu, TimePoint now) {
     ++counters_.crc_errors;
     enter_fault(status_bit::kCeCrc);
     event = FDeviceEvent::kCrcError;
-  } else if (state_ != FDeviceState::kStartup && last_check_.consecutive_number == last_number_) {
+  } else if (synced_ && last_check_.consecutive_number == last_number_) {
     ++counters_.repeats;
     if (state_ == FDeviceState::kFault) fault_reported_ = true;
     event = FDeviceEvent::kRepeat;
-  } else if (state_ != FDeviceState::kStartup &&
-             last_check_.consecutive_number != next_consecutive_number(last_number_)) {
+  } else if (synced_ && last_check_.consecutive_number != next_consecutive_number(last_number_)) {
     // §5 UNCERTAIN detail: a wrong number is a communication fault reported as CE_CRC.
+    // The device then re-synchronises to the host's next valid number (docs/profisafe.md).
     ++counters_.number_errors;
     enter_fault(status_bit::kCeCrc);
+    synced_ = false;
     event = FDeviceEvent::kNumberError;
   } else {
     accept_new(last_check_, now);
@@ -152,7 +155,7 @@ void FDevice::apply_faults() {
   if ((skip || faults_.crc1_override) && state_ != FDeviceState::kNoParameters) {
     PduConfig c = pdu_config_;
     if (faults_.crc1_override) c.crc1 = *faults_.crc1_override;
-    const std::uint8_t n = skip ? next_consecutive_number(wire_[number_at]) : wire_[number_at];
+    const std::uint8_t n = skip ? next_consecutive_number(response_[number_at]) : response_[number_at];
     const auto written = build_pdu(c, std::span<const std::uint8_t>(response_).first(config_.data_size),
                                    response_[config_.data_size], n, wire_);
     (void)written;  // cannot fail: the configuration was checked when it was set

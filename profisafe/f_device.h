@@ -107,6 +107,7 @@ class FDevice {
   std::size_t response_size_ = 0;
   std::uint16_t wd_time_ms_ = 0;
   bool has_sent_ = false;
+  bool synced_ = false;  // a first valid PDU was accepted since the F-parameters were set
   PduCheck last_check_{};
   FDeviceCounters counters_{};
   PduFaults faults_{};

@@ -58,9 +58,7 @@ void FHost::build_new_pdu(TimePoint now) {
   if (!fail_safe) data = output_;
   const auto control =
       static_cast<std::uint8_t>(fail_safe || user_activate_fv_ ? control_bit::kActivateFv : 0);
-  PduConfig c = pdu_config_;
-  if (faults_.crc1_override) c.crc1 = *faults_.crc1_override;
-  const auto written = build_pdu(c, std::span<const std::uint8_t>(data).first(config_.data_size), control,
+  const auto written = build_pdu(pdu_config_, std::span<const std::uint8_t>(data).first(config_.data_size), control,
                                  number_, pdu_);
   (void)written;  // cannot fail: the configuration was checked in the constructor
   outstanding_ = true;
@@ -78,6 +76,14 @@ std::span<const std::uint8_t> FHost::request(TimePoint now) {
     wire_ = previous_pdu_;
   }
   const std::size_t size = pdu_size(pdu_config_);
+  if (faults_.crc1_override) {  // applied on the way out, so that removing it heals at once
+    PduConfig c = pdu_config_;
+    c.crc1 = *faults_.crc1_override;
+    const std::size_t ds = config_.data_size;
+    const auto fields = wire_;  // build_pdu must not read and write the same buffer
+    const auto written = build_pdu(c, std::span<const std::uint8_t>(fields).first(ds), fields[ds], fields[ds + 1], wire_);
+    (void)written;
+  }
   if (faults_.corrupt_crc2 > 0) {
     --faults_.corrupt_crc2;
     wire_[size - 1] ^= 0x01;
