@@ -114,11 +114,45 @@ TEST(ScannerFaults, InjectedFaultNeedsClearAndAcknowledge) {
 TEST(ScannerFaults, FaultDuringBootShowsAtBootEnd) {
   ManualTime t;
   Scanner s;
-  s.inject_fault(Fault::kInternalHardware, t.now);
   s.power_on(t.now);
-  s.advance(t.advance(seconds(30)));
+  s.inject_fault(Fault::kInternalHardware, t.advance(seconds(10)));
+  EXPECT_EQ(s.status().state, OperatingState::kInitialisation);
+  EXPECT_EQ(s.pop_event()->number, 0x0102);
+  s.advance(t.advance(seconds(20)));
   EXPECT_EQ(s.status().state, OperatingState::kError);
   EXPECT_FALSE(s.ossd());
+}
+
+// The error numbers are the project's (EXTENSION); this pins the documented table.
+TEST(ScannerFaults, ErrorNumbersAsDocumented) {
+  struct Row {
+    Fault fault;
+    std::uint16_t number;
+    std::uint16_t function;
+  };
+  const Row rows[] = {{Fault::kOssdCrossCircuit, 0x0101, 1}, {Fault::kInternalHardware, 0x0102, 1},
+                      {Fault::kMotorSpeed, 0x0201, 2},       {Fault::kDazzled, 0x0202, 2},
+                      {Fault::kWindowContaminated, 0x0302, 3}, {Fault::kFieldPairSequence, 0x0401, 4},
+                      {Fault::kFieldPairInvalid, 0x0402, 4}};
+  for (const Row& r : rows) {
+    EXPECT_EQ(fault_info(r.fault).error_number, r.number);
+    EXPECT_EQ(fault_info(r.fault).function, r.function);
+  }
+}
+
+// Every injectable fault switches the OSSDs off at once and raises its own event.
+TEST(ScannerFaults, EachInjectedFaultSwitchesOffImmediately) {
+  for (const Fault f : {Fault::kOssdCrossCircuit, Fault::kInternalHardware, Fault::kMotorSpeed, Fault::kDazzled}) {
+    ManualTime t;
+    Scanner s = booted(params(RestartMode::kAutomatic), t);
+    ASSERT_TRUE(s.ossd());
+    s.inject_fault(f, t.advance(milliseconds(3)));
+    EXPECT_FALSE(s.ossd());
+    EXPECT_EQ(s.pop_event()->number, fault_info(f).error_number);
+    EXPECT_EQ(s.faults()[static_cast<std::size_t>(f)].occurrences, 1U);
+    s.inject_fault(f, t.now);                                   // persisting: no new event
+    EXPECT_EQ(s.pending_events(), 0U);
+  }
 }
 
 TEST(ScannerFaults, ContaminationWarningThenFault) {
@@ -161,6 +195,21 @@ TEST(ScannerFaults, WarningOutputFollowsWarningFieldWhenAssigned) {
   s.edit_scene(t.now).clear();
   s.advance(t.advance(milliseconds(40)));
   EXPECT_FALSE(s.status().warning_output);
+}
+
+TEST(ScannerFaults, WarningOutputOnFaultAndInterlockWhenAssigned) {
+  ManualTime t;
+  ParameterSet p = params(RestartMode::kStartInterlock);
+  p.warning_output = kWarnOnFault | kWarnOnRestartInterlock;
+  Scanner s = booted(p, t);
+  EXPECT_TRUE(s.status().warning_output);                       // interlock waits
+  pulse(s, t);
+  EXPECT_FALSE(s.status().warning_output);
+  s.inject_fault(Fault::kDazzled, t.now);
+  EXPECT_TRUE(s.status().warning_output);                       // error state
+  s.set_contamination(90, t.now);                               // contamination not assigned
+  s.clear_fault(Fault::kDazzled, t.now);
+  EXPECT_TRUE(s.status().warning_output);
 }
 
 TEST(ScannerFaults, EventQueueKeepsNewestSixteen) {

@@ -39,6 +39,23 @@ TEST(ScannerTiming, ConfigurableBootDuration) {
   EXPECT_EQ(s.status().state, OperatingState::kMeasuring);
 }
 
+// The OSSDs never switch on while the field is occupied, also not at the first scan.
+TEST(ScannerTiming, NoStartOnAnOccupiedField) {
+  ManualTime t;
+  Scanner s;
+  ASSERT_TRUE(s.set_parameters(params(RestartMode::kAutomatic, 3), t.now));
+  const auto id = s.edit_scene(t.now).add(intruder());
+  s.power_on(t.now);
+  s.advance(t.advance(seconds(30)));
+  EXPECT_FALSE(s.ossd());
+  EXPECT_TRUE(s.status().protective_violated);
+  s.advance(t.advance(milliseconds(120)));                      // still below k = 5 scans
+  EXPECT_FALSE(s.ossd());
+  ASSERT_TRUE(s.edit_scene(t.now).remove(id.value()));
+  s.advance(t.advance(milliseconds(40)));
+  EXPECT_TRUE(s.ossd());
+}
+
 // Start interlock: after boot the OSSDs wait for a restart pulse.
 TEST(ScannerTiming, StartInterlockWaitsForPulse) {
   ManualTime t;
