@@ -4,6 +4,17 @@
 
 namespace rs4sim::rs4::scanner {
 
+const char* to_string(OperatingState s) noexcept {
+  switch (s) {
+    case OperatingState::kOff: return "off";
+    case OperatingState::kInitialisation: return "initialisation";
+    case OperatingState::kMeasuring: return "measuring";
+    case OperatingState::kConfiguration: return "configuration";
+    case OperatingState::kError: return "error";
+  }
+  return "unknown";
+}
+
 Scanner::Scanner(ScannerConfig config) : config_(config), params_(factory_default()) {
   params_.identity = config_.identity;
   last_.contour.fill(kNoEchoMm);

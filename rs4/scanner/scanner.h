@@ -44,6 +44,7 @@ enum class OperatingState : std::uint8_t {
   kConfiguration = 3,
   kError = 4,
 };
+const char* to_string(OperatingState s) noexcept;
 
 struct Rs4Event {                               // content of 0x53 / 0x54 (§5.2.3.2/3)
   enum class Kind : std::uint8_t { kError, kWarning };
@@ -121,6 +122,13 @@ class Scanner {
   boost::outcome_v2::std_result<void> enter_configuration(TimePoint now);
   boost::outcome_v2::std_result<void> set_parameters(const ParameterSet& set, TimePoint now);
   boost::outcome_v2::std_result<void> leave_configuration(TimePoint now);
+  // §4: when a proxy upload/download fails the device falls back to factory settings.
+  // Keeps identity and user passwords; a running scanner makes a new start.
+  void reset_to_factory_default(TimePoint now);
+  // True while the set equals the factory default apart from identity and passwords
+  // (what the proxy reports as CONFIG_SET_TO_DEFAULT, §4 scenario 1).
+  [[nodiscard]] bool factory_settings() const;
+  [[nodiscard]] std::uint32_t parameter_checksum() const;   // CRC-32 of encode(parameters())
 
   // Observation.
   [[nodiscard]] bool ossd() const noexcept { return ossd_; }

@@ -2,6 +2,7 @@
 // window contamination, configuration (docs/rs4-scanner.md).
 #include <algorithm>
 
+#include "rs4/scanner/parameter_codec.h"
 #include "rs4/scanner/scanner.h"
 
 namespace rs4sim::rs4::scanner {
@@ -166,6 +167,22 @@ boost::outcome_v2::std_result<void> Scanner::leave_configuration(TimePoint now) 
   start_measuring(now);
   return boost::outcome_v2::success();
 }
+
+void Scanner::reset_to_factory_default(TimePoint now) {
+  advance(now);
+  steady_ = false;
+  ParameterSet fresh = merge_download(params_, factory_default());
+  const bool running = scanning();
+  params_ = fresh;
+  if (running) start_measuring(now);
+  apply_ossd();
+}
+
+bool Scanner::factory_settings() const {
+  return params_ == merge_download(params_, factory_default());
+}
+
+std::uint32_t Scanner::parameter_checksum() const { return checksum(params_); }
 
 Scene& Scanner::edit_scene(TimePoint now) {
   advance(now);

@@ -244,6 +244,24 @@ TEST(ScannerConfiguration, ParametersChangeOnlyInConfiguration) {
   EXPECT_EQ(s.leave_configuration(t.now).error(), ScannerError::kNotInConfiguration);
 }
 
+TEST(ScannerConfiguration, FactoryResetKeepsIdentityAndPasswords) {
+  ManualTime t;
+  ParameterSet p = params(RestartMode::kAutomatic, 5);
+  p.passwords[0] = {'S', 'E', 'C', 'R', 'E', 'T', 0xFF, 0xFF};
+  Scanner s = booted(p, t);
+  EXPECT_FALSE(s.factory_settings());
+  const std::uint32_t before = s.parameter_checksum();
+  s.reset_to_factory_default(t.now);
+  EXPECT_TRUE(s.factory_settings());
+  EXPECT_NE(s.parameter_checksum(), before);
+  EXPECT_EQ(s.parameters().response_steps, 0);
+  EXPECT_EQ(s.parameters().passwords[0], p.passwords[0]);
+  EXPECT_EQ(s.parameters().identity, ScannerConfig{}.identity);
+  EXPECT_EQ(s.status().state, OperatingState::kMeasuring);
+  EXPECT_FALSE(s.ossd());                                       // factory: start interlock
+  EXPECT_STREQ(to_string(s.status().state), "measuring");
+}
+
 TEST(ScannerLifecycle, PowerCycleRebootsAndResetsCounter) {
   ManualTime t;
   Scanner s = booted(params(RestartMode::kAutomatic), t);
