@@ -122,6 +122,40 @@ PduCheck check_pdu(const PduConfig& c, std::span<const std::uint8_t> pdu, std::u
   return r;
 }
 
+std::vector<Crc2Variant> all_crc2_variants() {
+  std::vector<Crc2Variant> out;
+  for (auto order : {Crc2Variant::Order::kReversed, Crc2Variant::Order::kForward}) {
+    for (auto preset : {Crc2Variant::Preset::kCrc1, Crc2Variant::Preset::kZero}) {
+      for (auto cov : {Crc2Variant::SeqCoverage::kPerCheckSeqNr, Crc2Variant::SeqCoverage::kAlways,
+                       Crc2Variant::SeqCoverage::kNever}) {
+        for (auto pos : {Crc2Variant::SeqPosition::kFirst, Crc2Variant::SeqPosition::kLast}) {
+          out.push_back(Crc2Variant{order, preset, cov, pos});
+        }
+      }
+    }
+  }
+  return out;
+}
+
+std::vector<Crc2Variant> matching_crc2_variants(const PduConfig& base,
+                                                std::span<const std::span<const std::uint8_t>> pdus) {
+  std::vector<Crc2Variant> out;
+  for (const Crc2Variant& v : all_crc2_variants()) {
+    PduConfig c = base;
+    c.version = ProtocolVersion::kV1;
+    c.variant = v;
+    bool all = true;
+    for (const auto& pdu : pdus) {
+      if (!check_pdu(c, pdu).ok()) {
+        all = false;
+        break;
+      }
+    }
+    if (all) out.push_back(v);
+  }
+  return out;
+}
+
 const char* to_string(Crc2Variant::Order v) noexcept {
   return v == Crc2Variant::Order::kReversed ? "reversed" : "forward";
 }

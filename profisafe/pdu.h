@@ -19,6 +19,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace rs4sim::profisafe {
 
@@ -123,6 +124,16 @@ struct PduCheck {
 // number. Never throws; any byte string is a valid input.
 [[nodiscard]] PduCheck check_pdu(const PduConfig& c, std::span<const std::uint8_t> pdu,
                                  std::uint32_t virtual_consecutive_number = 0) noexcept;
+
+// Every combination of the Crc2Variant choices (2 orders x 2 presets x 3 coverages x 2
+// positions = 24).
+[[nodiscard]] std::vector<Crc2Variant> all_crc2_variants();
+
+// Settle the UNCERTAIN V1 rule from a capture: the variants under which every PDU of
+// `pdus` (V1, shaped as `base` says: data size, CRC1, F_Check_SeqNr) checks. An empty
+// `pdus` matches everything; a capture with many distinct PDUs leaves one (or none).
+[[nodiscard]] std::vector<Crc2Variant> matching_crc2_variants(const PduConfig& base,
+                                                              std::span<const std::span<const std::uint8_t>> pdus);
 
 // V1 consecutive numbers run 1..255 and wrap to 1 (0 = none sent yet; DECISION, §3).
 [[nodiscard]] constexpr std::uint8_t next_consecutive_number(std::uint8_t n) noexcept {

@@ -165,3 +165,40 @@ TEST(ProfisafePdu, ConsecutiveNumberRanges) {
 
 }  // namespace
 }  // namespace rs4sim::profisafe
+
+namespace rs4sim::profisafe {
+namespace {
+
+TEST(ProfisafeCrc2Variants, TwentyFourDistinctVariants) {
+  const auto all = all_crc2_variants();
+  EXPECT_EQ(all.size(), 24u);
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    for (std::size_t j = i + 1; j < all.size(); ++j) EXPECT_NE(all[i], all[j]);
+  }
+}
+
+TEST(ProfisafeCrc2Variants, ACaptureSettlesTheVariant) {
+  // A pretend capture made with "forward, preset CRC1, number always covered, last".
+  PduConfig c;
+  c.crc1 = 0x83A9;
+  c.variant = Crc2Variant{Crc2Variant::Order::kForward, Crc2Variant::Preset::kCrc1,
+                          Crc2Variant::SeqCoverage::kAlways, Crc2Variant::SeqPosition::kLast};
+  std::vector<std::array<std::uint8_t, kMaxPduSize>> pdus(20);
+  std::vector<std::span<const std::uint8_t>> views;
+  std::uint8_t n = 1;
+  for (std::size_t i = 0; i < pdus.size(); ++i, n = next_consecutive_number(n)) {
+    const std::array<std::uint8_t, 1> data{static_cast<std::uint8_t>(i * 13)};
+    ASSERT_TRUE(build_pdu(c, data, static_cast<std::uint8_t>(i % 2 ? 0x10 : 0), n, pdus[i]));
+    views.emplace_back(pdus[i].data(), 5);
+  }
+  PduConfig base;
+  base.crc1 = 0x83A9;
+  const auto found = matching_crc2_variants(base, views);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0], c.variant);
+  base.crc1 = 0x83A8;  // a wrong CRC1 matches nothing
+  EXPECT_TRUE(matching_crc2_variants(base, views).empty());
+}
+
+}  // namespace
+}  // namespace rs4sim::profisafe
