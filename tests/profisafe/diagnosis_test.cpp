@@ -26,8 +26,9 @@ Bytes status_bytes(std::uint8_t nn) {
 
 Bytes to_bytes(const std::array<std::uint8_t, 5>& a) { return {a.begin(), a.end()}; }
 
-// A block with fields changed from the RS4 defaults at address 4; CRC1 is correct unless
-// the test says otherwise, so only the named field is wrong.
+// A block with fields changed from the RS4 defaults at address 4, CRC1 computed in, so only
+// the named field is wrong. The fixed blocks below carry CRC1 values computed by an
+// independent bitwise implementation of the VERIFIED rule (profisafe-v1.md §2).
 Bytes block(void (*change)(FParameters&)) {
   FParameters p;
   change(p);
@@ -50,26 +51,42 @@ TEST(ProfisafeDiagnosis, Code0NoError) {
 
 TEST(ProfisafeDiagnosis, Code65InternalDestAdd) {
   // The device's own F_Dest_Add is not valid: DP address 127 is not a station address.
-  const Bytes b = block([](FParameters& p) { p.dest_add = 627; });
+  const Bytes b{0x14, 0x00,  // 0 F_Prm_Flag1 SIL2 2-byte CRC, 1 F_Prm_Flag2 V1 block 0
+                0x00, 0x01,  // 2 F_Source_Add 1
+                0x02, 0x73,  // 4 F_Dest_Add 627 = 500 + 127
+                0x00, 0x0A,  // 6 F_WD_Time 10
+                0x13, 0x28};  // 8 F_Par_CRC (correct)
   const auto v = validate(b, DeviceProfile::rs4(127));
   EXPECT_EQ(static_cast<int>(v.diagnosis), 65);
   EXPECT_EQ(to_bytes(status_pdu(v.diagnosis)), status_bytes(65));
 }
 
 TEST(ProfisafeDiagnosis, Code66WrongDestAdd) {
-  // offset 4: F_Dest_Add = 505 but the device is at address 4 (expects 504)
-  expect_code(block([](FParameters& p) { p.dest_add = 505; }), FDiagnosis::kWrongDestAdd, 66);
+  const Bytes b{0x14, 0x00, 0x00, 0x01,
+                0x01, 0xF9,  // 4 F_Dest_Add = 505 but the device is at address 4 (expects 504)
+                0x00, 0x0A,
+                0x63, 0x81};  // 8 F_Par_CRC (correct)
+  expect_code(b, FDiagnosis::kWrongDestAdd, 66);
   // 500 + address: at address 5 the same block is accepted
   EXPECT_TRUE(validate(block([](FParameters& p) { p.dest_add = 505; }), DeviceProfile::rs4(5)).ok());
 }
 
 TEST(ProfisafeDiagnosis, Code67WrongSourceAdd) {
+  const Bytes b{0x14, 0x00,
+                0x00, 0x00,  // 2 F_Source_Add = 0: not a valid address
+                0x01, 0xF8, 0x00, 0x0A,
+                0x4C, 0x79};  // 8 F_Par_CRC (correct)
+  expect_code(b, FDiagnosis::kWrongSourceAdd, 67);
   expect_code(block([](FParameters& p) { p.source_add = 0; }), FDiagnosis::kWrongSourceAdd, 67);
   expect_code(block([](FParameters& p) { p.source_add = 65535; }), FDiagnosis::kWrongSourceAdd, 67);
   EXPECT_TRUE(validate(block([](FParameters& p) { p.source_add = 65534; }), DeviceProfile::rs4(4)).ok());
 }
 
 TEST(ProfisafeDiagnosis, Code68WrongWdTime) {
+  const Bytes b{0x14, 0x00, 0x00, 0x01, 0x01, 0xF8,
+                0x00, 0x09,   // 6 F_WD_Time = 9 ms < 10 ms
+                0x50, 0x54};  // 8 F_Par_CRC (correct)
+  expect_code(b, FDiagnosis::kWrongWdTime, 68);
   expect_code(block([](FParameters& p) { p.wd_time_ms = 9; }), FDiagnosis::kWrongWdTime, 68);
   expect_code(block([](FParameters& p) { p.wd_time_ms = 1001; }), FDiagnosis::kWrongWdTime, 68);
   expect_code(block([](FParameters& p) { p.wd_time_ms = 0; }), FDiagnosis::kWrongWdTime, 68);
@@ -77,24 +94,29 @@ TEST(ProfisafeDiagnosis, Code68WrongWdTime) {
 }
 
 TEST(ProfisafeDiagnosis, Code69WrongSil) {
-  // offset 0 = 0x18: F_SIL = 2 (SIL3) with the 2-byte CRC
-  const Bytes b = block([](FParameters& p) { p.sil = Sil::kSil3; });
-  EXPECT_EQ(b[0], 0x18);
+  const Bytes b{0x18,  // 0 F_Prm_Flag1: F_SIL = 2 (SIL3), F_CRC_Length 1
+                0x00, 0x00, 0x01, 0x01, 0xF8, 0x00, 0x0A,
+                0xEE, 0xD3};  // 8 F_Par_CRC (correct)
+  EXPECT_EQ(block([](FParameters& p) { p.sil = Sil::kSil3; }), b);
   expect_code(b, FDiagnosis::kWrongSil, 69);
   expect_code(block([](FParameters& p) { p.sil = Sil::kSil1; }), FDiagnosis::kWrongSil, 69);
 }
 
 TEST(ProfisafeDiagnosis, Code70WrongCrcLength) {
-  // offset 0 = 0x04: F_CRC_Length = 0 (3-byte CRC, a V2 setting)
-  const Bytes b = block([](FParameters& p) { p.crc_length = CrcLength::k3Byte; });
-  EXPECT_EQ(b[0], 0x04);
+  const Bytes b{0x04,  // 0 F_Prm_Flag1: SIL2, F_CRC_Length = 0 (3-byte CRC, a V2 setting)
+                0x00, 0x00, 0x01, 0x01, 0xF8, 0x00, 0x0A,
+                0xD5, 0x68};  // 8 F_Par_CRC (correct)
+  EXPECT_EQ(block([](FParameters& p) { p.crc_length = CrcLength::k3Byte; }), b);
   expect_code(b, FDiagnosis::kWrongCrcLength, 70);
   expect_code(block([](FParameters& p) { p.crc_length = CrcLength::kReserved; }), FDiagnosis::kWrongCrcLength, 70);
 }
 
 TEST(ProfisafeDiagnosis, Code71WrongBlockIdOrParVersion) {
-  const Bytes v2 = block([](FParameters& p) { p.par_version = 1; });
-  EXPECT_EQ(v2[1], 0x40);  // offset 1: F_Par_Version = 1
+  const Bytes v2{0x14,
+                 0x40,  // 1 F_Prm_Flag2: F_Par_Version = 1 (V2)
+                 0x00, 0x01, 0x01, 0xF8, 0x00, 0x0A,
+                 0x6D, 0xA8};  // 8 F_Par_CRC (correct)
+  EXPECT_EQ(block([](FParameters& p) { p.par_version = 1; }), v2);
   expect_code(v2, FDiagnosis::kWrongBlockIdOrParVersion, 71);
   const Bytes id = block([](FParameters& p) { p.block_id = 1; });
   EXPECT_EQ(id[1], 0x08);  // offset 1: F_Block_ID = 1
