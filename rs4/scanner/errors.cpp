@@ -52,6 +52,7 @@ std::string scanner_message(int v) {
     case ScannerError::kNotInConfiguration: return "scanner not in configuration state";
     case ScannerError::kInvalidParameterSet: return "parameter set failed validation";
     case ScannerError::kNotMeasuring: return "scanner not measuring";
+    case ScannerError::kUnknownFault: return "unknown fault";
   }
   return "unknown scanner error";
 }

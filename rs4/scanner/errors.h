@@ -48,6 +48,7 @@ enum class ScannerError : std::uint8_t {
   kNotInConfiguration = 1,   // parameter set may change only in configuration state or off
   kInvalidParameterSet,      // validation failed (see validate())
   kNotMeasuring,             // configuration entered only from measuring/error
+  kUnknownFault,             // a Fault value outside the enumeration
 };
 
 const std::error_category& parameter_category() noexcept;

@@ -15,6 +15,10 @@ constexpr std::array<FaultInfo, kFaultCount> kInfo{{
 
 }  // namespace
 
-const FaultInfo& fault_info(Fault f) noexcept { return kInfo[static_cast<std::size_t>(f)]; }
+const FaultInfo& fault_info(Fault f) noexcept {
+  static constexpr FaultInfo kUnknown{0, 0, "unknown"};
+  const auto i = static_cast<std::size_t>(f);
+  return i < kInfo.size() ? kInfo[i] : kUnknown;
+}
 
 }  // namespace rs4sim::rs4::scanner

@@ -28,6 +28,7 @@ struct FaultInfo {
   std::string_view name;
 };
 
+// Number/function/name of a fault; {0, 0, "unknown"} for a value outside the enum.
 const FaultInfo& fault_info(Fault f) noexcept;
 
 // Warning numbers for 0x54 (EXTENSION).

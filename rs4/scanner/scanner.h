@@ -112,9 +112,9 @@ class Scanner {
   // Inputs from the adapter / the harness.
   void set_restart_input(bool high, TimePoint now);
   void select_field_pair(std::uint8_t pair, TimePoint now);
-  void set_contamination(std::uint8_t percent, TimePoint now);
-  void inject_fault(Fault fault, TimePoint now);
-  void clear_fault(Fault fault, TimePoint now);
+  void set_contamination(std::uint8_t percent, TimePoint now);   // clamped to 100 %
+  boost::outcome_v2::std_result<void> inject_fault(Fault fault, TimePoint now);
+  boost::outcome_v2::std_result<void> clear_fault(Fault fault, TimePoint now);
   Scene& edit_scene(TimePoint now);             // edits take effect at the next scan
 
   // Parametrisation (§7.2: OSSD off while the set changes). The identity stays the

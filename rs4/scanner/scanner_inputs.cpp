@@ -75,17 +75,21 @@ void Scanner::request_pair(std::uint8_t pair, TimePoint at) {
 
 // ----- faults ------------------------------------------------------------------------
 
-void Scanner::inject_fault(Fault fault, TimePoint now) {
+boost::outcome_v2::std_result<void> Scanner::inject_fault(Fault fault, TimePoint now) {
+  if (static_cast<std::size_t>(fault) >= kFaultCount) return ScannerError::kUnknownFault;
   advance(now);
   steady_ = false;
   raise_fault(fault, 0, now);
   apply_ossd();
+  return boost::outcome_v2::success();
 }
 
-void Scanner::clear_fault(Fault fault, TimePoint now) {
+boost::outcome_v2::std_result<void> Scanner::clear_fault(Fault fault, TimePoint now) {
+  if (static_cast<std::size_t>(fault) >= kFaultCount) return ScannerError::kUnknownFault;
   advance(now);
   steady_ = false;
   faults_[static_cast<std::size_t>(fault)].present = false;
+  return boost::outcome_v2::success();
 }
 
 // A fault is present while its cause lasts; it stays latched (OSSD off, error state)

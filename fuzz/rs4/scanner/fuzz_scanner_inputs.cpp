@@ -43,8 +43,8 @@ void step(Scanner& s, TimePoint& now, std::uint8_t op, std::uint8_t arg) {
     case 1: s.set_restart_input((arg & 1) != 0, now); break;
     case 2: s.select_field_pair(arg & 7, now); break;
     case 3: s.set_contamination(static_cast<std::uint8_t>(arg % 101), now); break;
-    case 4: s.inject_fault(static_cast<Fault>(arg % kFaultCount), now); break;
-    case 5: s.clear_fault(static_cast<Fault>(arg % kFaultCount), now); break;
+    case 4: (void)s.inject_fault(static_cast<Fault>(arg % (kFaultCount + 1)), now); break;
+    case 5: (void)s.clear_fault(static_cast<Fault>(arg % (kFaultCount + 1)), now); break;
     case 6:
       (void)s.edit_scene(now).add(Circle{{static_cast<double>(static_cast<std::int8_t>(arg)) * 40.0,
                                           static_cast<double>(arg) * 15.0},

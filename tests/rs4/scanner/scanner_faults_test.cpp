@@ -94,14 +94,14 @@ TEST(ScannerFaults, InjectedFaultNeedsClearAndAcknowledge) {
   Scanner s = booted(params(RestartMode::kStartInterlock), t);
   pulse(s, t);
   ASSERT_TRUE(s.ossd());
-  s.inject_fault(Fault::kMotorSpeed, t.now);
+  ASSERT_TRUE(s.inject_fault(Fault::kMotorSpeed, t.now));
   EXPECT_FALSE(s.ossd());
   EXPECT_EQ(s.status().state, OperatingState::kError);
   EXPECT_TRUE(s.status().fault);
   EXPECT_EQ(s.pop_event()->number, 0x0201);
   pulse(s, t);                                                  // cause still present
   EXPECT_EQ(s.status().state, OperatingState::kError);
-  s.clear_fault(Fault::kMotorSpeed, t.now);
+  ASSERT_TRUE(s.clear_fault(Fault::kMotorSpeed, t.now));
   EXPECT_EQ(s.status().state, OperatingState::kError);          // latched until acknowledged
   pulse(s, t);                                                  // acknowledge → new start
   EXPECT_EQ(s.status().state, OperatingState::kMeasuring);
@@ -115,7 +115,7 @@ TEST(ScannerFaults, FaultDuringBootShowsAtBootEnd) {
   ManualTime t;
   Scanner s;
   s.power_on(t.now);
-  s.inject_fault(Fault::kInternalHardware, t.advance(seconds(10)));
+  ASSERT_TRUE(s.inject_fault(Fault::kInternalHardware, t.advance(seconds(10))));
   EXPECT_EQ(s.status().state, OperatingState::kInitialisation);
   EXPECT_EQ(s.pop_event()->number, 0x0102);
   s.advance(t.advance(seconds(20)));
@@ -146,11 +146,11 @@ TEST(ScannerFaults, EachInjectedFaultSwitchesOffImmediately) {
     ManualTime t;
     Scanner s = booted(params(RestartMode::kAutomatic), t);
     ASSERT_TRUE(s.ossd());
-    s.inject_fault(f, t.advance(milliseconds(3)));
+    ASSERT_TRUE(s.inject_fault(f, t.advance(milliseconds(3))));
     EXPECT_FALSE(s.ossd());
     EXPECT_EQ(s.pop_event()->number, fault_info(f).error_number);
     EXPECT_EQ(s.faults()[static_cast<std::size_t>(f)].occurrences, 1U);
-    s.inject_fault(f, t.now);                                   // persisting: no new event
+    ASSERT_TRUE(s.inject_fault(f, t.now));                                   // persisting: no new event
     EXPECT_EQ(s.pending_events(), 0U);
   }
 }
@@ -205,11 +205,21 @@ TEST(ScannerFaults, WarningOutputOnFaultAndInterlockWhenAssigned) {
   EXPECT_TRUE(s.status().warning_output);                       // interlock waits
   pulse(s, t);
   EXPECT_FALSE(s.status().warning_output);
-  s.inject_fault(Fault::kDazzled, t.now);
+  ASSERT_TRUE(s.inject_fault(Fault::kDazzled, t.now));
   EXPECT_TRUE(s.status().warning_output);                       // error state
   s.set_contamination(90, t.now);                               // contamination not assigned
-  s.clear_fault(Fault::kDazzled, t.now);
+  ASSERT_TRUE(s.clear_fault(Fault::kDazzled, t.now));
   EXPECT_TRUE(s.status().warning_output);
+}
+
+TEST(ScannerFaults, UnknownFaultValueIsATypedError) {
+  ManualTime t;
+  Scanner s = booted(params(RestartMode::kAutomatic), t);
+  EXPECT_EQ(s.inject_fault(static_cast<Fault>(7), t.now).error(), ScannerError::kUnknownFault);
+  EXPECT_EQ(s.clear_fault(static_cast<Fault>(255), t.now).error(), ScannerError::kUnknownFault);
+  EXPECT_TRUE(s.ossd());
+  EXPECT_EQ(fault_info(static_cast<Fault>(200)).error_number, 0);
+  EXPECT_EQ(fault_info(static_cast<Fault>(200)).name, "unknown");
 }
 
 TEST(ScannerFaults, EventQueueKeepsNewestSixteen) {
