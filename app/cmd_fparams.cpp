@@ -2,14 +2,18 @@
 // Defaults are the RS4/PROFIsafe's fixed values (rs4-profisafe.md §8): SIL2, 2-byte CRC,
 // F_Block_ID 0, F_Par_Version 0, F_Source_Add 1, F_Dest_Add 504, F_WD_Time 10 ms.
 // Impossible combinations are refused with a message and exit code 2.
+// `--decode HEX [--address N]` shows what the RS4 makes of a received block (exit 1 unless
+// diagnosis 0).
 #include "app/command.h"
 #include "profisafe/f_parameters.h"
 
+#include <cctype>
 #include <cstdint>
 #include <cstdio>
 #include <iostream>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace rs4sim::app {
 namespace {
@@ -28,6 +32,8 @@ struct FparamsOptions {
   bool check_seqnr = false;
   std::optional<long long> ipar_crc;
   bool json = false;
+  std::string decode;          // --decode HEX: parse and validate a received block instead
+  unsigned address = 4;        // --address: the RS4's DP address for --decode
 };
 
 std::uint16_t address(long long v, const char* name) {
@@ -83,7 +89,55 @@ std::string hex(const std::array<std::uint8_t, profisafe::kFParametersSize>& b, 
   return s;
 }
 
+std::vector<std::uint8_t> parse_hex(const std::string& text) {
+  std::vector<std::uint8_t> out;
+  std::string digits;
+  for (char ch : text) {
+    if (ch == ' ' || ch == ':' || ch == '-') continue;
+    if (!std::isxdigit(static_cast<unsigned char>(ch))) {
+      throw UsageError(std::string("--decode: '") + ch + "' is not a hex digit");
+    }
+    digits += ch;
+  }
+  if (digits.size() % 2 != 0) throw UsageError("--decode: odd number of hex digits");
+  for (std::size_t i = 0; i < digits.size(); i += 2) {
+    out.push_back(static_cast<std::uint8_t>(std::stoul(digits.substr(i, 2), nullptr, 16)));
+  }
+  return out;
+}
+
+// --decode: what the RS4 at --address makes of a received block (manual §6.3).
+int run_decode(const FparamsOptions& o) {
+  if (o.address > 126) throw UsageError("--address must be a DP station address 0..126");
+  const auto bytes = parse_hex(o.decode);
+  const auto parsed = profisafe::parse_f_parameters(bytes);
+  const auto v = profisafe::validate(bytes, profisafe::DeviceProfile::rs4(o.address));
+  const auto pdu = profisafe::status_pdu(v.diagnosis);
+  char line[160];
+  if (parsed) {
+    const FParameters& p = parsed.value();
+    std::snprintf(line, sizeof line,
+                  "F_Check_SeqNr %d, F_Check_iPar %d, F_SIL code %u, F_CRC_Length code %u, F_Block_ID %u, "
+                  "F_Par_Version %u\n",
+                  p.check_seqnr ? 1 : 0, p.check_ipar ? 1 : 0, static_cast<unsigned>(p.sil),
+                  static_cast<unsigned>(p.crc_length), p.block_id, p.par_version);
+    std::cout << line << "F_Source_Add " << p.source_add << ", F_Dest_Add " << p.dest_add << ", F_WD_Time "
+              << p.wd_time_ms << " ms\n";
+    std::snprintf(line, sizeof line, "F_Par_CRC received 0x%04X, computed 0x%04X\n", v.received_crc1,
+                  v.computed_crc1);
+    std::cout << line;
+  } else {
+    std::cout << "not a parameter block: " << parsed.error().message() << "\n";
+  }
+  std::snprintf(line, sizeof line, "RS4 diagnosis %u (%s), status PDU %02X %02X %02X %02X %02X\n",
+                static_cast<unsigned>(v.diagnosis), profisafe::to_string(v.diagnosis), pdu[0], pdu[1], pdu[2],
+                pdu[3], pdu[4]);
+  std::cout << line;
+  return v.ok() ? 0 : 1;
+}
+
 int run(const FparamsOptions& o) {
+  if (!o.decode.empty()) return run_decode(o);
   const FParameters p = to_parameters(o);
   const auto block = profisafe::encode_f_parameters(p);
   char crc_hex[8];
@@ -120,6 +174,10 @@ const CommandRegistration kRegistration{
       cmd.add_flag("--check-seqnr", o->check_seqnr, "F_Check_SeqNr = 1 (consecutive number in CRC2)");
       cmd.add_option("--ipar-crc", o->ipar_crc, "F_iPar_CRC (V2 only), fed into CRC1 first");
       cmd.add_flag("--json", o->json, "print JSON");
+      cmd.add_option("--decode", o->decode,
+                     "parse a received block (hex) and print the RS4's diagnosis; exit 1 if not accepted");
+      cmd.add_option("--address", o->address, "DP address of the RS4 for --decode (F_Dest_Add = 500 + it)")
+          ->capture_default_str();
       return [o] { return run(*o); };
     }};
 
