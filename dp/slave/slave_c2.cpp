@@ -1,10 +1,12 @@
 // dp::Slave MSAC_C2 (§3.7): resource manager on SAP 49, one connection at a time on the
 // dynamic SAP config.c2_sap, Initiate/Abort/Idle/Read/Write/Data_Transport, idle timeout.
+#include "dp/pdu/dpv1_c2.h"
 #include "dp/pdu/sap.h"
 #include "dp/slave/slave.h"
 
 #include <algorithm>
 #include <chrono>
+#include <variant>
 
 namespace rs4sim::dp {
 
@@ -16,7 +18,6 @@ constexpr std::uint8_t kFnInitiate = 0x57;
 constexpr std::uint8_t kFnAbort = 0x58;
 constexpr std::uint8_t kFnRead = 0x5E;
 constexpr std::uint8_t kFnWrite = 0x5F;
-constexpr std::size_t kInitiateFixed = 16;  // 12-byte head + S_Type S_Len D_Type D_Len
 
 // Abort PDU `58 Subnet Instance|Reason 00`, instance MSAC_C2 (bits 5..4 = 01) (§3.7).
 enum class AbortReason : std::uint8_t {
@@ -29,9 +30,6 @@ fdl::DataUnit abort_pdu(AbortReason r) {
   return {kFnAbort, 0x00, static_cast<std::uint8_t>(0x10 | static_cast<std::uint8_t>(r)), 0x00};
 }
 
-std::uint16_t be16(const fdl::DataUnit& d, std::size_t at) {
-  return static_cast<std::uint16_t>((d[at] << 8) | d[at + 1]);
-}
 }  // namespace
 
 void Slave::c2_close(C2Event why, TimePoint now) {
@@ -46,34 +44,40 @@ void Slave::on_c2_rm(const fdl::Telegram& t, TimePoint now) {
     reply_rs(t);
     return;
   }
-  const auto& req = t.data;
   c2_.bound = true;
   c2_.master = t.sa;
   c2_.master_sap = *t.ssap;
-  c2_.job.request = req;
+  c2_.job.request = t.data;
   c2_.job.function = kFnInitiate;
   c2_.job.phase = AcyclicJob::Phase::kReady;
   c2_.send_timeout = std::chrono::milliseconds(10) * config_.c2_rm_send_timeout;
+  const auto decoded = pdu::decode_c2_request(bytes_of(t.data));
+  const auto* init = decoded ? std::get_if<pdu::InitiateRequest>(&decoded.value()) : nullptr;
   C2Event event = C2Event::kRefused;
-  if (req.size() < kInitiateFixed) {
-    c2_.job.response = abort_pdu(AbortReason::kInvalidRequestPdu);
-  } else if (kInitiateFixed + req[13] + req[15] != req.size()) {
-    c2_.job.response = abort_pdu(AbortReason::kInvalidAddressInfo);
-  } else if (be16(req, 4) == 0) {
+  if (init == nullptr) {
+    const bool addr = !decoded && decoded.error() == pdu::PduError::kLengthMismatch;
+    c2_.job.response = abort_pdu(addr ? AbortReason::kInvalidAddressInfo : AbortReason::kInvalidRequestPdu);
+  } else if (init->send_timeout == 0) {
     c2_.job.response = abort_pdu(AbortReason::kSendTimeoutTooSmall);
   } else {
-    // Initiate.res (UNCERTAIN §7.9): 57 Max_Len_Data_Unit Features(01 00) Profile_Features
-    // Profile_Ident (echoed) and the address blocks with source and destination swapped.
-    const std::size_t s_len = req[13];
-    auto& res = c2_.job.response;
-    res = {kFnInitiate, static_cast<std::uint8_t>(config_.c2_max_data_length + 4), 0x01, 0x00,
-           req[8], req[9], req[10], req[11], req[14], req[15], req[12], req[13]};
-    res.insert(res.end(), req.begin() + static_cast<std::ptrdiff_t>(kInitiateFixed + s_len), req.end());
-    res.insert(res.end(), req.begin() + static_cast<std::ptrdiff_t>(kInitiateFixed),
-               req.begin() + static_cast<std::ptrdiff_t>(kInitiateFixed + s_len));
-    c2_.established = true;
-    c2_.send_timeout = std::chrono::milliseconds(10) * be16(req, 4);
-    event = C2Event::kConnected;
+    // Initiate.res (UNCERTAIN §7.9): our Max_Len_Data_Unit and features (01 00), the
+    // profile fields echoed, the address blocks with source and destination swapped.
+    pdu::InitiateResponse res;
+    res.max_len_data_unit = static_cast<std::uint8_t>(config_.c2_max_data_length + 4);
+    res.profile_features_supported = init->profile_features_supported;
+    res.profile_ident_number = init->profile_ident_number;
+    res.s_type = init->d_type;
+    res.d_type = init->s_type;
+    res.s_addr = init->d_addr;
+    res.d_addr = init->s_addr;
+    c2_.job.response.clear();
+    if (pdu::encode(res, c2_.job.response)) {
+      c2_.established = true;
+      c2_.send_timeout = std::chrono::milliseconds(10) * init->send_timeout;
+      event = C2Event::kConnected;
+    } else {
+      c2_.job.response = abort_pdu(AbortReason::kInvalidAddressInfo);
+    }
   }
   c2_.job.close_after_send = !c2_.established;
   c2_.deadline = now + c2_.send_timeout;

@@ -1,6 +1,8 @@
 // dp::Slave DP-V0 services: Set_Prm (§2.3, §3.1), Chk_Cfg/Get_Cfg (§2.4), Global_Control
 // (§2.6), Data_Exchange (§2.9), Rd_Inp/Rd_Outp and Set_Slave_Add (§2.7).
 #include "dp/pdu/cfg.h"
+#include "dp/pdu/global_control.h"
+#include "dp/pdu/set_slave_add.h"
 #include "dp/pdu/sap.h"
 #include "dp/slave/slave.h"
 
@@ -135,37 +137,30 @@ void Slave::on_get_cfg(const fdl::Telegram& t) {
 
 void Slave::on_global_control(const fdl::Telegram& t, TimePoint now) {
   // Executed only in Data_Exch, from the owning master, for a selected group (§2.6).
-  if (state_ != SlaveState::kDataExch || !is_owner(t.sa) || t.data.size() != 2) return;
-  const std::uint8_t cmd = t.data[0];
-  const std::uint8_t group = t.data[1];
-  if (group != 0 && (group & group_ident_) == 0) return;
-  if ((cmd & 0x02) != 0) {  // Clear_Data
+  if (state_ != SlaveState::kDataExch || !is_owner(t.sa)) return;
+  const auto decoded = pdu::decode_global_control(bytes_of(t.data));
+  if (!decoded || !decoded.value().addresses(group_ident_)) return;
+  const pdu::GlobalControl& gc = decoded.value();
+  if (gc.clear_data) {
     std::fill(outputs_.begin(), outputs_.end(), std::uint8_t{0});
     app_.on_outputs_cleared(OutputClear::kGlobalControlClear, now);
   }
-  const bool sync = (cmd & 0x20) != 0;
-  const bool unsync = (cmd & 0x10) != 0;
-  const bool freeze = (cmd & 0x08) != 0;
-  const bool unfreeze = (cmd & 0x04) != 0;
-  if (((sync || unsync) && !sync_req_) || ((freeze || unfreeze) && !freeze_req_)) {
+  if (((gc.sync || gc.unsync) && !sync_req_) || ((gc.freeze || gc.unfreeze) && !freeze_req_)) {
     not_supported_ = true;  // not requested in Set_Prm (§2.6)
     diag_flag_ = true;
     return;
   }
-  if (unsync) {  // DECISION: Unsync wins over Sync in the same command
-    sync_mode_ = false;
-    if (held_outputs_valid_) app_.on_outputs(bytes_of(outputs_), now);
-    held_outputs_valid_ = false;
-  } else if (sync) {
-    sync_mode_ = true;  // apply the last outputs now, hold later ones until the next Sync
+  if (gc.unsync || gc.sync) {  // DECISION: Unsync wins over Sync in the same command
+    // Sync applies the last outputs now and holds later ones until the next Sync.
+    sync_mode_ = !gc.unsync;
     if (held_outputs_valid_) app_.on_outputs(bytes_of(outputs_), now);
     held_outputs_valid_ = false;
   }
-  if (unfreeze) {
+  if (gc.unfreeze) {
     freeze_mode_ = false;
-  } else if (freeze) {
+  } else if (gc.freeze) {
     freeze_mode_ = false;
-    fill_inputs(frozen_inputs_);
+    fill_inputs(frozen_inputs_);  // latch the live inputs
     freeze_mode_ = true;
   }
 }
@@ -233,17 +228,18 @@ void Slave::on_set_slave_add(const fdl::Telegram& t, TimePoint now) {
     return;
   }
   reply_short_ack();  // sent from the old address: built before the change
-  const auto& du = t.data;
-  if (du.size() < 4) return;
-  const std::uint8_t new_address = du[0];
-  const std::uint16_t ident = static_cast<std::uint16_t>((du[1] << 8) | du[2]);
-  if (new_address > pdu::sap::kMaxSlaveAddress || ident != config_.ident_number) return;
-  const bool no_add_chg = du[3] != 0;
-  address_ = new_address;
-  address_locked_ = no_add_chg;
+  const auto decoded = pdu::decode_set_slave_add(bytes_of(t.data));
+  if (!decoded) return;
+  const pdu::SetSlaveAdd& ssa = decoded.value();
+  if (ssa.new_address > pdu::sap::kMaxSlaveAddress || ssa.ident_number != config_.ident_number) {
+    return;
+  }
+  address_ = ssa.new_address;
+  address_locked_ = ssa.no_add_chg;
   fcb_.reset();
-  app_.on_address_changed(new_address, no_add_chg,
-                          std::span<const std::uint8_t>(du.data() + 4, du.size() - 4));
+  app_.on_address_changed(ssa.new_address, ssa.no_add_chg,
+                          std::span<const std::uint8_t>(ssa.rem_slave_data.data(),
+                                                        ssa.rem_slave_data.size()));
   enter(SlaveState::kWaitPrm, TransitionReason::kAddressChanged, now);
 }
 
