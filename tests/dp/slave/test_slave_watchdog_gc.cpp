@@ -142,3 +142,27 @@ TEST(SlaveDataExchange, LengthMismatchKeepsOutputsFailSafeEmptyClears) {
 
 }  // namespace
 }  // namespace rs4sim::dp::testing
+
+namespace rs4sim::dp::testing {
+namespace {
+
+TEST(SlaveGlobalControl, ClearZeroesTheOutputImageSeenByRdOutp) {
+  SlaveHarness h;
+  h.to_data_exchange();
+  h.send(h.dx({0x5A}));
+  h.send(sd2({0xFF, 0x82, 0x46, 0x3A, 0x3E, 0x02, 0x00}));
+  EXPECT_EQ(h.send(h.dp(0x39, {})), SlaveHarness::reply(0x08, 0x3E, 0x39, {0x00}));
+}
+
+TEST(SlaveGlobalControl, SdnToOwnAddressIsNeverAnswered) {
+  SlaveHarness h;
+  h.to_data_exchange();
+  // SDN low (FC 0x44) Global_Control addressed to station 5: executed, silent.
+  EXPECT_TRUE(h.send(sd2({0x85, 0x82, 0x44, 0x3A, 0x3E, 0x02, 0x00})).empty());
+  EXPECT_EQ(h.app.clears.size(), 1U);
+  // SDN Slave_Diag to station 5: silent as well.
+  EXPECT_TRUE(h.send(sd2({0x85, 0x82, 0x44, 0x3C, 0x3E})).empty());
+}
+
+}  // namespace
+}  // namespace rs4sim::dp::testing
