@@ -11,6 +11,9 @@ constexpr std::uint8_t kExtensionBit = 0x80;
 constexpr std::uint8_t kMinLe = 3;    // DA SA FC (§1.10: reject LE < 3)
 constexpr std::uint8_t kMaxLe = 249;  // §1.2
 
+static_assert(static_cast<std::size_t>(DecodeError::kTruncated) == kDecodeErrorKinds,
+              "DecoderStats::errors is indexed by DecodeError");
+
 bool is_start_delimiter(std::uint8_t b) {
   return b == kSd1 || b == kSd2 || b == kSd3 || b == kSd4 || b == kSc;
 }

@@ -19,6 +19,7 @@ class PduCategory final : public std::error_category {
       case PduError::kBadIdentifier: return "malformed configuration identifier";
       case PduError::kBadDiagBlock: return "malformed extended diagnosis block";
       case PduError::kBadAlarm: return "malformed alarm or status PDU";
+      case PduError::kBadPrmBlock: return "malformed structured parameter block";
     }
     return "unknown PDU error " + std::to_string(ev);
   }

@@ -21,6 +21,7 @@ enum class PduError : std::uint8_t {
   kBadIdentifier,         // Chk_Cfg/Get_Cfg identifier malformed (§2.4)
   kBadDiagBlock,          // extended diagnosis block header/length malformed (§2.5)
   kBadAlarm,              // alarm/status PDU malformed (§3.5/§3.6)
+  kBadPrmBlock,           // structured parameter block length malformed (§3.2)
 };
 
 const std::error_category& pdu_category() noexcept;

@@ -1,5 +1,7 @@
 // libFuzzer target: Set_Prm decoder (spec/profibus-dp.md §2.3, §3.1). Reserved bits are
-// preserved, so a decoded Set_Prm must re-encode to exactly the input bytes.
+// preserved, so a decoded Set_Prm must re-encode to exactly the input bytes. The user
+// data is also read as structured blocks (§3.2); each block re-encodes to its bytes.
+#include "dp/pdu/prm_blocks.h"
 #include "dp/pdu/set_prm.h"
 
 #include "fuzz_check.h"
@@ -16,6 +18,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     fuzz::check(fuzz::same(out, du));
     (void)r.value().watchdog_time();
     if (r.value().dpv1) fuzz::check(r.value().dpv1->max_outstanding_alarms() <= 32);
+    const auto& user = r.value().user_data;
+    PrmBlockReader reader(std::span<const std::uint8_t>(user.data(), user.size()));
+    for (std::size_t i = 0; i <= user.size(); ++i) {
+      const auto b = reader.next();
+      if (!b || !b.value()) break;
+      const PrmBlock& blk = *b.value();
+      rs4sim::dp::fdl::DataUnit one;
+      fuzz::check(encode_prm_block(blk.type, blk.slot, blk.index, blk.data, one).has_value());
+      fuzz::check(fuzz::same(one, blk.raw));
+    }
   }
   return 0;
 }
