@@ -1,0 +1,48 @@
+// libFuzzer: any text → gsd::parse → (if it means something) gsd::configure.
+// Must never crash, hang or leak; a successful configuration must be self-consistent.
+#include "gsd/cfg.h"
+#include "gsd/config.h"
+#include "gsd/interp.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+namespace {
+
+void check(const rs4sim::gsd::SlaveConfig& c) {
+  // Set_Prm DU ≤ 244 bytes = 7 standard bytes + user data (profibus-dp.md §2.3).
+  if (c.user_prm_data.size() > 237) __builtin_trap();
+  if (c.cfg.empty()) return;
+  auto layout = rs4sim::gsd::decode_cfg(c.cfg);
+  if (!layout || layout.value().input_bytes != c.input_len ||
+      layout.value().output_bytes != c.output_len) {
+    __builtin_trap();
+  }
+  for (const auto& f : c.f_parameters) {
+    if (f.offset + 10 > c.user_prm_data.size()) __builtin_trap();
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  auto device = rs4sim::gsd::parse(text, "fuzz.gsd");
+  if (!device) {
+    if (device.error().what().empty()) __builtin_trap();
+    return 0;
+  }
+  const auto& d = device.value();
+  if (auto c = rs4sim::gsd::configure(d, {})) check(c.value());
+  rs4sim::gsd::ConfigRequest all;
+  for (const auto& m : d.modules) {
+    if (all.modules.size() < 4) all.modules.push_back(m.name);
+  }
+  for (const auto& [number, p] : d.params) {
+    if (all.overrides.size() < 4) all.overrides.push_back({p.name, p.max});
+  }
+  if (auto c = rs4sim::gsd::configure(d, all)) check(c.value());
+  for (const auto& m : d.modules) (void)rs4sim::gsd::f_param_desc_crc(d, m);
+  return 0;
+}
