@@ -228,7 +228,10 @@ TEST(FdlTelegram, MaximumSd2AndEmptySd2) {
   empty.da = 1;
   empty.sa = 2;
   empty.fc = FrameControl::response(ResponseStatus::kOk);
-  EXPECT_EQ(encode_bytes(empty), (Bytes{0x68, 0x03, 0x03, 0x68, 0x01, 0x02, 0x00, 0x03, 0x16}));
+  const Bytes empty_wire = {0x68, 0x03, 0x03, 0x68,  // SD2, LE = LEr = 3: DA SA FC only
+                            0x01, 0x02, 0x00, 0x03, 0x16};
+  EXPECT_EQ(encode_bytes(empty), empty_wire);
+  EXPECT_EQ(decode_ok(empty_wire), empty);  // accepted like pyprofibus (LE ≥ 3, §1.10)
 }
 
 TEST(FdlTelegram, EncodeRejectsBrokenPreconditions) {
