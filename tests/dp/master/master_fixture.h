@@ -119,6 +119,29 @@ class MasterFixture {
     return out;
   }
 
+  // Runs the §2.10 start-up of the example slave 5 to its first Data_Exchange (FCB
+  // sequence 6D 5D 7D 5D 7D); the next frame to slave 5 has FC x5 with FCB=0.
+  void bring_to_dx() {
+    step();
+    reply({0x10, 0x02, 0x05, 0x00, 0x07, 0x16});  // FDL_Status: slave, OK
+    step();
+    reply({0x68, 0x0B, 0x0B, 0x68, 0x82, 0x85, 0x08, 0x3E, 0x3C, 0x02, 0x05, 0x00, 0xFF,
+           0x12, 0x34, 0xD5, 0x16});  // diag: Not_Ready, Prm_Req, Master_Add FF
+    step();
+    reply({0xE5});  // Set_Prm
+    step();
+    reply({0xE5});  // Chk_Cfg
+    step();
+    reply({0x68, 0x0B, 0x0B, 0x68, 0x82, 0x85, 0x08, 0x3E, 0x3C, 0x00, 0x0C, 0x00, 0x02,
+           0x12, 0x34, 0xDD, 0x16});  // diag: ready, master 2
+    step();                           // DX 7D
+    reply({0x68, 0x04, 0x04, 0x68, 0x02, 0x05, 0x08, 0x3C, 0x4B, 0x16});  // DL, in 3C
+    ASSERT_TRUE(step(1).empty());  // the turn ends; the next cycle is not yet due
+    ASSERT_TRUE(master.slave_status(5)->state == SlaveState::kDataExchange);
+    log.clear();
+    master.take_events();
+  }
+
   ManualClock clock;
   Master master;
   std::vector<MasterEvent> log;

@@ -1,0 +1,205 @@
+// Start-up faults and supervision in data exchange (spec/profibus-dp.md §2.5, §2.9, §4.2,
+// §4.4): DH → Slave_Diag, Prm_Req → re-parameterisation, RS → restart, fault reasons.
+
+#include "master_fixture.h"
+
+#include <gtest/gtest.h>
+
+namespace rs4sim::dp::master::testing {
+namespace {
+
+// Slave_Diag reply of slave 5 to master 2 with the six standard bytes.
+Bytes diag(std::uint8_t s1, std::uint8_t s2, std::uint8_t master_add,
+           std::uint16_t ident = 0x1234) {
+  const auto hi = static_cast<std::uint8_t>(ident >> 8);
+  const auto lo = static_cast<std::uint8_t>(ident & 0xFF);
+  return {0x68, 0x0B, 0x0B, 0x68,
+          0x82, 0x85,  // DA 2, SA 5 (extension bits)
+          0x08,        // FC DL
+          0x3E, 0x3C,  // DSAP 62, SSAP 60
+          s1, s2, 0x00, master_add, hi, lo,
+          fcs({0x82, 0x85, 0x08, 0x3E, 0x3C, s1, s2, 0x00, master_add, hi, lo}), 0x16};
+}
+Bytes diag_request(std::uint8_t fc) {
+  return {0x68, 0x05, 0x05, 0x68, 0x85, 0x82, fc, 0x3C, 0x3E,
+          fcs({0x85, 0x82, fc, 0x3C, 0x3E}), 0x16};
+}
+const Bytes kDxDh = {0x68, 0x04, 0x04, 0x68, 0x02, 0x05,
+                     0x0A,  // FC DH: diagnosis pending (§2.9)
+                     0x3C, 0x4D, 0x16};
+const Bytes kDxDl = {0x68, 0x04, 0x04, 0x68, 0x02, 0x05, 0x08, 0x3C, 0x4B, 0x16};
+const Bytes kRs = {0x10, 0x02, 0x05,
+                   0x03,  // FC RS: SAP not enabled (slave left DATA_EXCH, §2.2 [TRACE #19])
+                   0x0A, 0x16};
+
+std::error_code err(MasterErrc e) { return make_error_code(e); }
+
+// Runs the start-up up to the diag after Chk_Cfg and answers it with `reply`.
+void to_wait_ready(MasterFixture& f, const Bytes& reply) {
+  f.step();
+  f.reply({0x10, 0x02, 0x05, 0x00, 0x07, 0x16});
+  f.step();
+  f.reply(diag(0x02, 0x05, 0xFF));
+  f.step();
+  f.reply({0xE5});
+  f.step();
+  f.reply({0xE5});
+  EXPECT_EQ(hex(f.step()), hex(diag_request(0x5D)));
+  f.reply(reply);
+}
+
+TEST(MasterSupervision, DataHighFetchesDiagInTheNextSlot) {
+  MasterFixture f;
+  f.bring_to_dx();
+  EXPECT_EQ(f.step()[6], 0x5D);
+  f.reply(kDxDh);
+  EXPECT_EQ(hex(f.step()), hex(diag_request(0x7D)));  // same turn, right after the DX
+  f.reply(diag(0x08, 0x0C, 0x02));                   // Ext_Diag only: stays in DX
+  const auto diags = f.events<DiagReceived>();
+  ASSERT_EQ(diags.size(), 1U);
+  EXPECT_EQ(hex(Bytes(diags[0].diag.begin(), diags[0].diag.end())),
+            "08 0C 00 02 12 34");
+  EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kDataExchange);
+  EXPECT_EQ(f.master.slave_status(5)->counters.diag_reads, 3U);
+  // Next cycle: only the Data_Exchange (FCB=0 again), no diag.
+  EXPECT_EQ(f.step()[6], 0x5D);
+  f.reply(kDxDl);
+  f.step();
+  EXPECT_EQ(f.master.slave_status(5)->counters.diag_reads, 3U);
+}
+
+TEST(MasterSupervision, PrmReqInDataExchangeReparameterises) {
+  MasterFixture f;
+  f.bring_to_dx();
+  f.step();
+  f.reply(kDxDh);
+  f.step();
+  f.reply(diag(0x02, 0x05, 0xFF));  // watchdog fired: Not_Ready, Prm_Req, no master
+  const auto left = f.events<SlaveLeftDataExchange>();
+  ASSERT_EQ(left.size(), 1U);
+  EXPECT_EQ(left[0].reason, err(MasterErrc::kLeftDataExchange));
+  // Next cycle starts again at Set_Prm (§4.2 "Prm_Req → restart at 2"), FCB toggled.
+  const Bytes prm = f.step();
+  ASSERT_GT(prm.size(), 9U);
+  EXPECT_EQ(prm[6], 0x5D);
+  EXPECT_EQ(prm[7], 0x3D) << "DSAP 61 Set_Prm";
+  EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kSetPrm);
+}
+
+TEST(MasterSupervision, RsToDataExchangeRestartsAtSlaveDiag) {
+  MasterFixture f;
+  f.bring_to_dx();
+  f.step();
+  f.reply(kRs);
+  const auto left = f.events<SlaveLeftDataExchange>();
+  ASSERT_EQ(left.size(), 1U);
+  EXPECT_EQ(left[0].reason, err(MasterErrc::kSapNotEnabled));
+  EXPECT_EQ(hex(f.step()), hex(diag_request(0x7D)));
+}
+
+TEST(MasterSupervision, InputLengthMismatchLeavesDataExchange) {
+  MasterFixture f;
+  f.bring_to_dx();
+  f.step();
+  f.reply({0x68, 0x05, 0x05, 0x68, 0x02, 0x05, 0x08, 0x3C, 0x3D,
+           fcs({0x02, 0x05, 0x08, 0x3C, 0x3D}), 0x16});  // two input bytes, one configured
+  const auto left = f.events<SlaveLeftDataExchange>();
+  ASSERT_EQ(left.size(), 1U);
+  EXPECT_EQ(left[0].reason, err(MasterErrc::kInputLengthMismatch));
+  EXPECT_EQ(f.master.slave_status(5)->counters.invalid_responses, 1U);
+}
+
+TEST(MasterSupervision, StatDiagKeepsFetchingEveryCycle) {
+  MasterFixture f;
+  f.bring_to_dx();
+  f.step();
+  f.reply(kDxDh);
+  f.step();
+  f.reply(diag(0x00, 0x0E, 0x02));  // Stat_Diag (bit 1) set
+  f.step();                          // next cycle DX
+  f.reply(kDxDl);                    // DL: no new diag flag …
+  EXPECT_EQ(f.step()[7], 0x3C) << "… but Stat_Diag still requires a Slave_Diag";
+}
+
+TEST(MasterSupervision, StartupFaultReasons) {
+  struct Case {
+    Bytes reply;
+    MasterErrc reason;
+  };
+  const Case cases[] = {
+      {diag(0x40, 0x0C, 0x02), MasterErrc::kPrmFault},       // Station_Status_1 bit 6
+      {diag(0x04, 0x0C, 0x02), MasterErrc::kCfgFault},       // bit 2
+      {diag(0x10, 0x0C, 0x02), MasterErrc::kNotSupported},   // bit 4
+      {diag(0x00, 0x0C, 0x07), MasterErrc::kMasterLock},     // Master_Add 7
+      {diag(0x00, 0x0C, 0x02, 0x4711), MasterErrc::kIdentMismatch},
+  };
+  for (const Case& c : cases) {
+    MasterFixture f;
+    to_wait_ready(f, c.reply);
+    const auto faults = f.events<SlaveFault>();
+    ASSERT_EQ(faults.size(), 1U) << hex(c.reply);
+    EXPECT_EQ(faults[0].reason, err(c.reason)) << hex(c.reply);
+    EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kReadDiag) << hex(c.reply);
+    EXPECT_TRUE(f.events<SlaveEnteredDataExchange>().empty());
+  }
+}
+
+TEST(MasterSupervision, PrmReqAfterChkCfgRepeatsSetPrm) {
+  MasterFixture f;
+  to_wait_ready(f, diag(0x02, 0x05, 0xFF));
+  EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kSetPrm);
+  EXPECT_EQ(f.step()[7], 0x3D);
+}
+
+TEST(MasterSupervision, FirstDiagChecksIdentAndMasterLock) {
+  MasterFixture f;
+  f.step();
+  f.reply({0x10, 0x02, 0x05, 0x00, 0x07, 0x16});
+  f.step();
+  f.reply(diag(0x82, 0x04, 0x09));  // parameterised by master 9
+  EXPECT_EQ(f.events<SlaveFault>().at(0).reason, err(MasterErrc::kMasterLock));
+  EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kReadDiag);
+  f.step();
+  f.reply(diag(0x02, 0x05, 0xFF, 0x9999));
+  EXPECT_EQ(f.events<SlaveFault>().at(0).reason, err(MasterErrc::kIdentMismatch));
+}
+
+TEST(MasterSupervision, FdlStatusFromAMasterIsNotASlave) {
+  MasterFixture f;
+  f.step();
+  f.reply({0x10, 0x02, 0x05,
+           0x20,  // FC: station type "master ready, no token", status OK
+           fcs({0x02, 0x05, 0x20}), 0x16});
+  EXPECT_EQ(f.events<SlaveFault>().at(0).reason, err(MasterErrc::kNotASlave));
+  EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kStatusRequest);
+}
+
+TEST(MasterSupervision, SetPrmRejectedWithRsRestarts) {
+  MasterFixture f;
+  f.step();
+  f.reply({0x10, 0x02, 0x05, 0x00, 0x07, 0x16});
+  f.step();
+  f.reply(diag(0x02, 0x05, 0xFF));
+  f.step();
+  f.reply(kRs);
+  EXPECT_EQ(f.events<SlaveFault>().at(0).reason, err(MasterErrc::kSapNotEnabled));
+  EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kReadDiag);
+}
+
+TEST(MasterSupervision, ReadyTimeoutRestartsAtSlaveDiag) {
+  MasterConfig cfg = example_master();
+  cfg.ready_timeout = std::chrono::milliseconds(25);
+  MasterFixture f(cfg);
+  to_wait_ready(f, diag(0x02, 0x0C, 0x02));  // not ready
+  for (int cycle = 0; cycle < 2; ++cycle) {
+    f.step();
+    f.reply(diag(0x02, 0x0C, 0x02));
+  }
+  EXPECT_TRUE(f.events<SlaveFault>().empty());
+  f.step();  // third cycle ≥ 25 ms after Chk_Cfg
+  EXPECT_EQ(f.events<SlaveFault>().at(0).reason, err(MasterErrc::kStartupTimeout));
+  EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kReadDiag);
+}
+
+}  // namespace
+}  // namespace rs4sim::dp::master::testing
