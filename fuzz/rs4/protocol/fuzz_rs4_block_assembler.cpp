@@ -39,6 +39,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::size_t n = std::min<std::size_t>(input[at], input.size() - at - 1);
     const auto record = input.subspan(at + 1, n);
     at += 1 + n;
+    if (auto read = decode_block(record, Direction::kRead)) {
+      const BlockHeader& h = read.value().header;
+      check(read.value().payload.size() + kBlockHeaderSize == h.length);
+      if (auto flow = decode_flow_control(h.flow_control)) {
+        check(encode_flow_control(flow.value()) == h.flow_control);
+      }
+    }
     auto progress = writer.push(record);
     if (!progress) continue;
     check(writer.command().size() <= kMaxCommandSize);

@@ -68,6 +68,24 @@ TEST(Rs4FlowControl, RejectsReservedBitsAndUndefinedStates) {
   }
 }
 
+TEST(Rs4FlowControl, AllByteValuesExhaustively) {
+  int valid = 0;
+  for (unsigned b = 0; b < 256; ++b) {
+    const auto byte = static_cast<std::uint8_t>(b);
+    const unsigned state = (b >> 4) & 0x07U;
+    const bool expect_ok = (b & 0x8CU) == 0 && state >= 1 && state <= 5;  // table 5.2-2
+    auto d = decode_flow_control(byte);
+    ASSERT_EQ(static_cast<bool>(d), expect_ok) << b;
+    if (d) {
+      ++valid;
+      EXPECT_EQ(encode_flow_control(d.value()), byte) << b;
+      EXPECT_EQ(d.value().ready, (b & 0x01U) != 0);
+      EXPECT_EQ(d.value().payload, (b & 0x02U) != 0);
+    }
+  }
+  EXPECT_EQ(valid, 5 * 4);  // 5 states × ready × payload
+}
+
 // --- block header ---------------------------------------------------------------------
 
 TEST(Rs4BlockHeader, DecodesSingleLastWriteBlock) {
