@@ -33,7 +33,8 @@ struct Pcap {
 };
 
 std::uint32_t read32(const Bytes& b, std::size_t at, bool swapped) {
-  const std::uint32_t le = b[at] | (b[at + 1] << 8) | (b[at + 2] << 16) | (static_cast<std::uint32_t>(b[at + 3]) << 24);
+  std::uint32_t le = 0;
+  for (std::size_t i = 4; i > 0; --i) le = (le << 8) | b[at + i - 1];
   return swapped ? __builtin_bswap32(le) : le;
 }
 
