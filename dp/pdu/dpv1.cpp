@@ -119,6 +119,13 @@ Result<C1Response> decode_c1_response(std::span<const std::uint8_t> du) {
   }
 }
 
+std::optional<Dpv1Error> c1_reject_response(std::span<const std::uint8_t> du) {
+  if (du.empty()) return std::nullopt;
+  if (du[0] == fn(Dpv1Function::kRead)) return type_conflict(Dpv1Function::kRead);
+  if (du[0] == fn(Dpv1Function::kWrite)) return type_conflict(Dpv1Function::kWrite);
+  return std::nullopt;
+}
+
 Result<void> encode(const ReadRequest& r, fdl::DataUnit& out) {
   if (r.length == 0 || r.length > kDpv1MaxData) return PduError::kValueOutOfRange;
   return wire::append(out, {static_cast<std::uint8_t>(Dpv1Function::kRead), r.slot, r.index, r.length});

@@ -13,6 +13,7 @@
 #include <boost/container/static_vector.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <variant>
 
@@ -111,8 +112,8 @@ using C1Response = std::variant<ReadResponse, WriteResponse, AlarmAck, Dpv1Error
 
 // Slave side. Errors: kTooShort, kBadFunctionCode (anything but 5E/5F/5C — the slave
 // leaves data exchange, §3.3), kLengthMismatch (Read.req not exactly 4 bytes, Write data
-// count ≠ Length), kValueOutOfRange (Read Length 0 or > 240, Write Length 0). The slave
-// answers the last two with Dpv1Error{…, 0x80, 0xB3 (type conflict), 0} (§3.3).
+// count ≠ Length), kValueOutOfRange (Read Length 0 or > 240, Write Length 0).
+// A malformed Read/Write is answered with a negative response (see c1_reject_response).
 Result<C1Request> decode_c1_request(std::span<const std::uint8_t> du);
 // Master side. Errors: kTooShort, kBadFunctionCode, kLengthMismatch (Read.res data count ≠
 // Length, Write.res/Alarm_Ack/Neg.res not exactly 4 bytes), kValueOutOfRange (Length > 240).
@@ -130,5 +131,11 @@ Result<void> encode(const Dpv1Error& e, fdl::DataUnit& out);
 constexpr Dpv1Error type_conflict(Dpv1Function f) {
   return Dpv1Error{f, error_decode::kDpv1, error_code_1::kTypeConflict, 0};
 }
+
+// What a slave answers to a C1 request that decode_c1_request() rejected (§3.3): a Read or
+// Write PDU gets type_conflict(Read/Write) (e.g. DE 80 B3 00); for anything else (unknown
+// function, malformed Alarm_Ack, empty DU) nullopt = no PDU reply, the slave leaves data
+// exchange.
+std::optional<Dpv1Error> c1_reject_response(std::span<const std::uint8_t> du);
 
 }  // namespace rs4sim::dp::pdu

@@ -102,6 +102,22 @@ TEST(PduDpv1, MalformedRequests) {
   EXPECT_EQ(err({0xDE, 0x80, 0xB0, 0x00}), PduError::kBadFunctionCode);  // a response as request
 }
 
+TEST(PduDpv1, RejectResponseForMalformedRequests) {
+  // §3.3 [VPC3-C1]: Read with Length 0 → DE 80 B3 00; Write with Length 0 → DF 80 B3 00.
+  const auto neg = [](const Bytes& du) {
+    EXPECT_FALSE(decode_c1_request(du));
+    const auto r = c1_reject_response(du);
+    return r ? enc(*r) : Bytes{};
+  };
+  EXPECT_EQ(neg({0x5E, 0x00, 0x01, 0x00}), (Bytes{0xDE, 0x80, 0xB3, 0x00}));
+  EXPECT_EQ(neg({0x5E, 0x00}), (Bytes{0xDE, 0x80, 0xB3, 0x00}));
+  EXPECT_EQ(neg({0x5F, 0x00, 0x01, 0x00}), (Bytes{0xDF, 0x80, 0xB3, 0x00}));
+  // Unknown function or malformed Alarm_Ack: no PDU reply, the slave leaves DX.
+  EXPECT_FALSE(c1_reject_response(Bytes{0x57, 0, 0, 0}));
+  EXPECT_FALSE(c1_reject_response(Bytes{0x5C, 0, 1}));
+  EXPECT_FALSE(c1_reject_response(Bytes{}));
+}
+
 TEST(PduDpv1, MalformedResponses) {
   const auto err = [](const Bytes& du) { return error_of(decode_c1_response(du)); };
   EXPECT_EQ(err({}), PduError::kTooShort);
