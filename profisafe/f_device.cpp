@@ -10,6 +10,9 @@ FDevice::FDevice(FDeviceConfig config) : config_(config) {
   if (config_.data_size == 0 || config_.data_size > kMaxDataSize) {
     throw std::invalid_argument("FDevice: data_size must be 1..12");
   }
+  if (config_.profile.par_version != 0 || config_.profile.crc_length != CrcLength::k2Byte) {
+    throw std::invalid_argument("FDevice: only PROFIsafe V1 (F_Par_Version 0, 2-byte CRC) is driven");
+  }
   pdu_config_.data_size = config_.data_size;
   pdu_config_.variant = config_.crc2_variant;
   build_response();

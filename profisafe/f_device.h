@@ -52,6 +52,8 @@ struct FDeviceCounters {
 
 class FDevice {
  public:
+  // Throws std::invalid_argument unless the profile is V1 (2-byte CRC2) and data_size is
+  // 1..kMaxDataSize.
   explicit FDevice(FDeviceConfig config);
 
   // Set_Prm: the F-parameter block (10 bytes). Valid → kStartup; otherwise the diagnosis

@@ -210,3 +210,23 @@ TEST_F(ProfisafeFDeviceTest, InjectedFaultsOnResponses) {
 
 }  // namespace
 }  // namespace rs4sim::profisafe
+
+namespace rs4sim::profisafe {
+namespace {
+
+TEST(ProfisafeFDeviceConfig, RejectsNonV1Profiles) {
+  FDeviceConfig c{DeviceProfile::rs4(4), 1, {}};
+  c.profile.par_version = 1;
+  EXPECT_THROW(FDevice{c}, std::invalid_argument);
+  c.profile = DeviceProfile::rs4(4);
+  c.profile.crc_length = CrcLength::k3Byte;
+  EXPECT_THROW(FDevice{c}, std::invalid_argument);
+  c.profile = DeviceProfile::rs4(4);
+  c.data_size = 0;
+  EXPECT_THROW(FDevice{c}, std::invalid_argument);
+  c.data_size = 12;
+  EXPECT_NO_THROW(FDevice{c});
+}
+
+}  // namespace
+}  // namespace rs4sim::profisafe
