@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdint>
@@ -144,6 +145,34 @@ TEST_F(ProfisafeLoop, WrongCrc1OnOneSideNeverGetsThrough) {
   EXPECT_TRUE(dev_.sends_process_values() || dev_.state() == FDeviceState::kFault);
   cycles(2);
   EXPECT_TRUE(dev_.sends_process_values());
+}
+
+}  // namespace
+}  // namespace rs4sim::profisafe
+
+namespace rs4sim::profisafe {
+namespace {
+
+TEST(ProfisafeLoopWide, FourDataBytesEachWay) {
+  FHostConfig hc;
+  hc.data_size = 4;
+  hc.params.check_seqnr = true;
+  FHost host(hc);
+  FDevice dev(FDeviceConfig{DeviceProfile::rs4(4), 4, {}});
+  ASSERT_TRUE(dev.set_parameters(host.parameter_block()).ok());
+  const std::array<std::uint8_t, 4> in{0xDE, 0xAD, 0xBE, 0xEF}, out{1, 2, 3, 4};
+  dev.set_input(in);
+  host.set_output(out);
+  TimePoint now{std::chrono::hours(1)};
+  for (int i = 0; i < 3; ++i) {
+    now += std::chrono::milliseconds(5);
+    const auto req = host.request(now);
+    EXPECT_EQ(req.size(), 8u);  // 4 data + control + number + 2 CRC2
+    (void)dev.on_pdu(req, now);
+    EXPECT_NE(host.on_pdu(dev.response(), now), FHostEvent::kCrcError);
+  }
+  EXPECT_TRUE(std::equal(in.begin(), in.end(), host.input().begin()));
+  EXPECT_TRUE(std::equal(out.begin(), out.end(), dev.output().begin()));
 }
 
 }  // namespace
