@@ -5,10 +5,11 @@
 // Chunks may split or merge frames arbitrarily. On a malformed frame the decoder reports
 // one DecodeError and rescans from the byte after the rejected start delimiter, so a good
 // telegram that follows (or hides inside the rejected bytes) is not lost. Exception: a
-// frame whose header, length and ED are right but whose FCS is wrong is dropped as a whole
-// (its framing is confirmed by the ED), so data bytes such as 0xE5 inside it are not
-// misread as short acknowledgements. No heap allocation per telegram: the frame buffer
-// and the output telegram are members.
+// frame whose header, length and ED are right but whose FCS, FC or SAP bytes are wrong is
+// dropped as a whole (its framing is confirmed by the ED), so data bytes such as 0xE5
+// inside it are not misread as short acknowledgements. No heap allocation per telegram:
+// complete frames are decoded in place from the caller's bytes, only an incomplete tail is
+// copied into the member buffer, and the output telegram is a member.
 
 #include "dp/fdl/errors.h"
 #include "dp/fdl/telegram.h"
