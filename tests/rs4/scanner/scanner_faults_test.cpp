@@ -42,6 +42,26 @@ TEST(ScannerFieldPairs, PermittedSwitchUsesTheNewFieldAndOverlapsOneScan) {
   EXPECT_EQ(s.status().state, OperatingState::kMeasuring);
 }
 
+// The pair being left is still monitored in the overlapping scan (option 2 bit 5).
+TEST(ScannerFieldPairs, PairBeingLeftIsMonitoredInTheOverlap) {
+  ManualTime t;
+  Scanner s = booted(restricted(), t);
+  s.select_field_pair(2, t.now);
+  ASSERT_TRUE(s.edit_scene(t.now).add(intruder(1200)));        // inside pair 2 (1500 mm) only
+  s.advance(t.advance(milliseconds(120)));
+  ASSERT_FALSE(s.ossd());
+  s.select_field_pair(1, t.advance(milliseconds(1)));
+  s.advance(t.advance(milliseconds(39)));                       // overlapping scan
+  EXPECT_FALSE(s.status().protective_violated);                 // pair 1 free
+  EXPECT_TRUE(s.status().second_protective_violated);           // pair 2 still occupied
+  EXPECT_EQ(s.last_scan().second_pair, 2);
+  EXPECT_TRUE(s.last_scan().second.protective.test(264));
+  EXPECT_FALSE(s.ossd());                                       // the overlap counts as violated
+  s.advance(t.advance(milliseconds(40)));                       // pair 1 alone: free
+  EXPECT_FALSE(s.status().second_protective_violated);
+  EXPECT_TRUE(s.ossd());                                        // automatic restart
+}
+
 TEST(ScannerFieldPairs, ForbiddenTransitionIsAFaultAcknowledgedByPulse) {
   ManualTime t;
   Scanner s = booted(restricted(), t);
