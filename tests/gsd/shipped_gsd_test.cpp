@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace rs4sim::gsd {
 namespace {
 
@@ -119,6 +121,18 @@ TEST(GsdShipped, DefaultFParCrcInTheFileIsTheCrc1OfTheDefaults) {
       EXPECT_EQ(p.default_value, c.value().f_parameters[0].parameters.par_crc);
     }
   }
+}
+
+TEST(GsdShipped, LayoutConstantsMatchTheConfiguration) {
+  auto c = configure(rs4sim_device().value(), {});
+  ASSERT_TRUE(c);
+  const auto& prm = c.value().user_prm_data;
+  ASSERT_EQ(prm.size(), kRs4simUserPrmDataLen);
+  EXPECT_TRUE(std::equal(kRs4simDpv1Status.begin(), kRs4simDpv1Status.end(), prm.begin()));
+  EXPECT_TRUE(std::equal(kRs4simFBlockHeader.begin(), kRs4simFBlockHeader.end(),
+                         prm.begin() + kRs4simFBlockHeaderOffset));
+  EXPECT_EQ(c.value().f_parameters[0].offset, kRs4simFParametersOffset);
+  EXPECT_TRUE(std::equal(kRs4simCfg.begin(), kRs4simCfg.end(), c.value().cfg.begin(), c.value().cfg.end()));
 }
 
 TEST(GsdShipped, FParamDescCrcMatchesTheProjectsDefinition) {
