@@ -39,18 +39,19 @@ void configure(Scanner& s, std::uint8_t arg, TimePoint now) {
 
 void step(Scanner& s, TimePoint& now, std::uint8_t op, std::uint8_t arg) {
   switch (op % 10) {
-    case 0: now += milliseconds(4 * arg); s.advance(now); break;
+    case 0: now += milliseconds(arg); s.advance(now); break;   // 0..255 ms
     case 1: s.set_restart_input((arg & 1) != 0, now); break;
     case 2: s.select_field_pair(arg & 7, now); break;
     case 3: s.set_contamination(static_cast<std::uint8_t>(arg % 101), now); break;
     case 4: (void)s.inject_fault(static_cast<Fault>(arg % (kFaultCount + 1)), now); break;
     case 5: (void)s.clear_fault(static_cast<Fault>(arg % (kFaultCount + 1)), now); break;
-    case 6:
+    case 6:                                                    // at most 8 obstacles
+      if (s.scene().obstacles().size() >= 8) break;
       (void)s.edit_scene(now).add(Circle{{static_cast<double>(static_cast<std::int8_t>(arg)) * 40.0,
                                           static_cast<double>(arg) * 15.0},
                                          static_cast<double>(arg % 64) + 1.0});
       break;
-    case 7: (void)s.edit_scene(now).remove(arg % 8); break;
+    case 7: (void)s.edit_scene(now).remove(arg % 16); break;
     case 8:
       if ((arg & 1) != 0) s.power_cycle(now); else s.power_off(now);
       if ((arg & 2) != 0) s.power_on(now);
@@ -67,7 +68,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   Scanner s(cfg);
   TimePoint now{std::chrono::hours(1)};
   s.power_on(now);
-  for (std::size_t i = 0; i + 1 < size && i < 2048; i += 2) {
+  for (std::size_t i = 0; i + 1 < size && i < 512; i += 2) {   // ≤ 256 steps
     step(s, now, data[i], data[i + 1]);
     check(s, now);
   }
