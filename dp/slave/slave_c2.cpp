@@ -140,17 +140,19 @@ void Slave::start_c2_request(const fdl::Telegram& t, TimePoint now) {
   req.length = pdu[3];
   if (pdu[0] == kFnRead) {
     if (pdu.size() != 4 || pdu[3] == 0 || pdu[3] > config_.c2_max_data_length) {
-      fail_job(job, 0xB3);
+      fail_job(job, pdu::error_code_1::kTypeConflict);
       return;
     }
     req.service = AcyclicService::kRead;
   } else {
-    if (pdu[3] == 0 && pdu[0] == kFnWrite) {
-      fail_job(job, 0xB3);
+    // Same rules as C1 (dp/pdu c1_reject_response): Length 0 or ≠ data → B3; more than
+    // C2_Max_Data_Len → B1 (write length error).
+    if ((pdu[3] == 0 && pdu[0] == kFnWrite) || pdu.size() != 4U + pdu[3]) {
+      fail_job(job, pdu::error_code_1::kTypeConflict);
       return;
     }
-    if (pdu.size() != 4U + pdu[3] || pdu[3] > config_.c2_max_data_length) {
-      fail_job(job, 0xB1);
+    if (pdu[3] > config_.c2_max_data_length) {
+      fail_job(job, pdu::error_code_1::kWriteLengthError);
       return;
     }
     req.service = pdu[0] == kFnWrite ? AcyclicService::kWrite : AcyclicService::kDataTransport;

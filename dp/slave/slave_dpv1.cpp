@@ -1,9 +1,11 @@
 // dp::Slave MSAC_C1 (§3.3), the poll pattern (§3.4) and Alarm_Ack (§3.5).
+#include "dp/pdu/dpv1.h"
 #include "dp/pdu/sap.h"
 #include "dp/slave/slave.h"
 #include "dp/slave/slave_error.h"
 
 #include <algorithm>
+#include <variant>
 
 namespace rs4sim::dp {
 
@@ -11,9 +13,6 @@ namespace {
 constexpr std::uint8_t kFnRead = 0x5E;
 constexpr std::uint8_t kFnWrite = 0x5F;
 constexpr std::uint8_t kFnAlarmAck = 0x5C;
-constexpr std::uint8_t kTypeConflict = 0xB3;     // access: type conflict [VPC3-C1]
-constexpr std::uint8_t kWriteLengthError = 0xB1;  // access: write length error
-constexpr std::uint8_t kReadError = 0xA0;         // application: read error
 }  // namespace
 
 void Slave::close_dpv1() {
@@ -80,40 +79,46 @@ void Slave::fail_job(AcyclicJob& job, std::uint8_t code_1) {
 
 void Slave::start_c1_request(const fdl::Telegram& t, TimePoint now) {
   reply_short_ack();  // §3.4 step 2: the response comes on a later poll
-  const auto& pdu = t.data;
-  c1_.request = pdu;
-  c1_.function = pdu[0];
+  c1_.request = t.data;
+  c1_.function = t.data[0];
   c1_.close_after_send = false;
-  if (pdu[0] != kFnRead && pdu[0] != kFnWrite) {
-    protocol_violation(now);
+  const auto decoded = pdu::decode_c1_request(bytes_of(t.data));
+  if (!decoded) {
+    // §3.3 [VPC3-C1]: a malformed Read/Write gets DE/DF 80 B3 00; anything else (unknown
+    // function) makes the slave leave data exchange.
+    if (const auto neg = pdu::c1_reject_response(bytes_of(t.data))) {
+      fail_job(c1_, neg->error_code_1);
+    } else {
+      protocol_violation(now);
+    }
     return;
   }
   AcyclicRequest req;
   req.channel = AcyclicChannel::kC1;
   req.master_address = t.sa;
-  if (pdu[0] == kFnRead) {
-    // Read.req is exactly 4 bytes, Length 1…C1_Max_Data_Len, else DE 80 B3 00 [VPC3-C1].
-    if (pdu.size() != 4 || pdu[3] == 0 || pdu[3] > config_.c1_max_data_length) {
-      fail_job(c1_, kTypeConflict);
+  if (const auto* r = std::get_if<pdu::ReadRequest>(&decoded.value())) {
+    if (r->length > config_.c1_max_data_length) {  // beyond C1_Max_Data_Len
+      fail_job(c1_, pdu::error_code_1::kTypeConflict);
       return;
     }
     req.service = AcyclicService::kRead;
-  } else {
-    // Write.req: Length > 0, else DF 80 B3 00 [VPC3-C1]; DECISION: Length ≠ data → B1.
-    if (pdu.size() < 4 || pdu[3] == 0) {
-      fail_job(c1_, kTypeConflict);
-      return;
-    }
-    if (pdu.size() != 4U + pdu[3] || pdu[3] > config_.c1_max_data_length) {
-      fail_job(c1_, kWriteLengthError);
+    req.slot = r->slot;
+    req.index = r->index;
+    req.length = r->length;
+  } else if (const auto* w = std::get_if<pdu::WriteRequest>(&decoded.value())) {
+    if (w->data.size() > config_.c1_max_data_length) {
+      fail_job(c1_, pdu::error_code_1::kWriteLengthError);
       return;
     }
     req.service = AcyclicService::kWrite;
-    req.data = std::span<const std::uint8_t>(pdu.data() + 4, pdu[3]);
+    req.slot = w->slot;
+    req.index = w->index;
+    req.length = static_cast<std::uint8_t>(w->data.size());
+    req.data = std::span<const std::uint8_t>(t.data.data() + 4, w->data.size());
+  } else {
+    protocol_violation(now);  // Alarm_Ack is routed before; nothing else is valid here
+    return;
   }
-  req.slot = pdu[1];
-  req.index = pdu[2];
-  req.length = pdu[3];
   run_acyclic(c1_, req, now);
 }
 
@@ -122,7 +127,7 @@ void Slave::run_acyclic(AcyclicJob& job, const AcyclicRequest& req, TimePoint no
   const AcyclicResult r = app_.on_acyclic(req, now);
   // The application may also have called complete_acyclic() from inside on_acyclic().
   if (r.kind != AcyclicResult::Kind::kPending && job.phase == AcyclicJob::Phase::kWaitingForApp) {
-    if (finish_job(job, r)) fail_job(job, kReadError);
+    if (finish_job(job, r)) fail_job(job, pdu::error_code_1::kReadError);
   }
 }
 
