@@ -53,14 +53,15 @@ Result<BlockView> decode_block(std::span<const std::uint8_t> record, Direction d
   return BlockView{header, record.subspan(kBlockHeaderSize, header.length - kBlockHeaderSize)};
 }
 
-void encode_block(std::uint8_t flow_control, std::uint16_t number,
-                  std::span<const std::uint8_t> payload, std::vector<std::uint8_t>& out) {
-  const std::size_t size = std::min(payload.size(), kMaxBlockPayload);
+std::error_code encode_block(std::uint8_t flow_control, std::uint16_t number,
+                             std::span<const std::uint8_t> payload, std::vector<std::uint8_t>& out) {
+  if (payload.size() > kMaxBlockPayload) return ProtocolError::kBlockLengthOutOfRange;
   out.push_back(flow_control);
-  out.push_back(static_cast<std::uint8_t>(kBlockHeaderSize + size));
+  out.push_back(static_cast<std::uint8_t>(kBlockHeaderSize + payload.size()));
   out.push_back(hi(number));
   out.push_back(lo(number));
-  out.insert(out.end(), payload.begin(), payload.begin() + static_cast<std::ptrdiff_t>(size));
+  out.insert(out.end(), payload.begin(), payload.end());
+  return {};
 }
 
 // --- BlockAssembler -----------------------------------------------------------------
@@ -121,8 +122,9 @@ std::vector<std::uint8_t> BlockSplitter::next(FlowControl flow) {
   const bool last = offset_ + size == answer_.size();
   flow.payload = size != 0;
   block.reserve(kBlockHeaderSize + size);
-  encode_block(encode_flow_control(flow), last ? kLastBlockNumber : number_,
-               std::span(answer_).subspan(offset_, size), block);
+  // size <= max_payload_ <= 236, so encode_block cannot fail here.
+  (void)encode_block(encode_flow_control(flow), last ? kLastBlockNumber : number_,
+                     std::span(answer_).subspan(offset_, size), block);
   offset_ += size;
   ++number_;
   done_ = last;

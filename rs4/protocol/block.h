@@ -70,8 +70,9 @@ enum class Direction : std::uint8_t {
 // bytes described by the header are evaluated"). The flow byte is not interpreted.
 Result<BlockView> decode_block(std::span<const std::uint8_t> record, Direction direction);
 
-// Appends header + payload (payload.size() <= 236) to out.
-void encode_block(std::uint8_t flow_control, std::uint16_t number,
+// Appends header + payload to out; kBlockLengthOutOfRange (nothing appended) when the
+// payload exceeds 236 bytes.
+[[nodiscard]] std::error_code encode_block(std::uint8_t flow_control, std::uint16_t number,
                   std::span<const std::uint8_t> payload, std::vector<std::uint8_t>& out);
 
 // Reassembles a command from consecutive records (§5.1). Errors:
@@ -112,7 +113,8 @@ class BlockAssembler {
 // Serves a READ answer of any size as blocks of at most 240 bytes (§5.1): numbers
 // 0, 1, … with the last 0xFFFF; an empty answer is one header-only block. The
 // flow-control byte is taken at the time each block is produced, with bit 1
-// (payload) set from the block's content.
+// (payload) set from the block's content. max_block_size is clamped to 5..240; the
+// answer must not exceed kMaxReadAnswerSize (0x10000 blocks of 236 bytes).
 class BlockSplitter {
  public:
   BlockSplitter() = default;

@@ -158,7 +158,7 @@ TEST(Rs4BlockHeader, TypedErrorsForMalformedRecords) {
 TEST(Rs4BlockHeader, EncodeBlockWritesHeaderHighByteFirst) {
   Bytes out;
   const Bytes payload{0x14, 0x01};
-  encode_block(0x43, 0x0102, payload, out);
+  ASSERT_FALSE(encode_block(0x43, 0x0102, payload, out));
   const Bytes expected{
       0x43,        // 0 flow: normal, payload, ready
       0x06,        // 1 length 6
@@ -166,6 +166,16 @@ TEST(Rs4BlockHeader, EncodeBlockWritesHeaderHighByteFirst) {
       0x14, 0x01,  // 4..5 payload
   };
   EXPECT_EQ(out, expected);
+}
+
+TEST(Rs4BlockHeader, EncodeBlockRejectsPayloadAbove236) {
+  Bytes out;
+  EXPECT_FALSE(encode_block(0x43, 0, Bytes(236, 0x01), out));  // 240-byte block: the maximum
+  EXPECT_EQ(out.size(), 240U);
+  EXPECT_EQ(out[1], 240);
+  Bytes none;
+  EXPECT_EQ(encode_block(0x43, 0, Bytes(237, 0x01), none), ProtocolError::kBlockLengthOutOfRange);
+  EXPECT_TRUE(none.empty());
 }
 
 // --- splitter -------------------------------------------------------------------------
