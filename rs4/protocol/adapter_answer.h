@@ -59,7 +59,7 @@ struct ErrorRingBuffer {
   void push(std::uint16_t error) noexcept;
   // The adapter's cycle passed without a new error: age flag 1.
   void mark_aged() noexcept { age_flag = 1; }
-  std::uint16_t newest() const noexcept { return entries[write_index]; }
+  std::uint16_t newest() const noexcept { return entries[write_index % kEntries]; }
   friend bool operator==(const ErrorRingBuffer&, const ErrorRingBuffer&) = default;
 };
 
