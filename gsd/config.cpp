@@ -64,6 +64,12 @@ Result<std::vector<const Module*>> Configurator::choose_modules() const {
     }
     chosen.push_back(m);
   }
+  if (chosen.empty() && device_.modules.size() != 1) {
+    std::string known;
+    for (const auto& each : device_.modules) known += (known.empty() ? "\"" : ", \"") + each.name + "\"";
+    return config_error(ErrorCode::kModuleCount, "choose the module(s) to configure (modules: " +
+                                                     (known.empty() ? std::string("none") : known) + ")");
+  }
   if (!device_.modular_station && chosen.size() != 1) {
     return config_error(ErrorCode::kModuleCount, "a compact station (Modular_Station = 0) takes exactly one module, got " +
                                                      std::to_string(chosen.size()));

@@ -175,7 +175,12 @@ TEST(GsdConfig, ModularStationWithBitsWordsAndSignedValues) {
   EXPECT_EQ(bad.error().message, "Mode = 2 is out of range 0, 1, 3, 5");
   auto none = configure(d.value(), {});
   ASSERT_FALSE(none);
-  EXPECT_EQ(none.error().message, "a modular station takes 1..4 modules (Max_Module), got 0");
+  EXPECT_EQ(none.error().message,
+            "choose the module(s) to configure (modules: \"DI 8\", \"AI 2\", \"DO 16 consistent\")");
+  std::vector<std::string> five(5, "DI 8");
+  auto many = configure(d.value(), {five, {}});
+  ASSERT_FALSE(many);
+  EXPECT_EQ(many.error().message, "a modular station takes 1..4 modules (Max_Module), got 5");
 }
 
 TEST(GsdConfig, TotalUserPrmDataRespectsMaxUserPrmDataLen) {
