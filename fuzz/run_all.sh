@@ -7,7 +7,7 @@ set -euo pipefail
 dir=$1; seconds=${2:-20}
 here=$(cd "$(dirname "$0")" && pwd)
 found=0
-for exe in $(find "$dir" -maxdepth 2 -type f -executable -name 'fuzz_*' | sort); do
+for exe in $(find "$dir" -type f -executable -name 'fuzz_*' | sort); do
   name=$(basename "$exe")
   found=$((found + 1))
   work=$(mktemp -d)
@@ -25,4 +25,5 @@ for exe in $(find "$dir" -maxdepth 2 -type f -executable -name 'fuzz_*' | sort);
   rm -rf "$work"
   if [ "$rc" -ne 0 ]; then echo "fuzz target $name failed (exit $rc)" >&2; exit 1; fi
 done
+if [ "$found" -eq 0 ]; then echo "no fuzz targets found in $dir" >&2; exit 1; fi
 echo "ran $found fuzz targets"
