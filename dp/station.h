@@ -5,13 +5,16 @@
 // owns the protocol. The link:
 //   1. decodes received bytes into telegrams (fdl::Decoder) and calls on_telegram();
 //   2. calls on_time() when the station's next_deadline() has passed;
-//   3. after either call, drains take_transmit() and puts the telegrams on the wire.
+//   3. after either call, drains take_transmit() and puts the telegrams on the wire;
+//   4. reports frames its decoder rejected through on_malformed_frame().
 // Cores never block, sleep or read a clock; one event loop thread calls them.
 
 #include "dp/fdl/telegram.h"
 #include "dp/time/clock.h"
 
+#include <cstdint>
 #include <optional>
+#include <system_error>
 
 namespace rs4sim::dp {
 
@@ -33,6 +36,14 @@ class Station {
 
   // The next telegram to send, if any. The link calls this until it returns nullopt.
   virtual std::optional<fdl::Telegram> take_transmit() = 0;
+
+  // The link's decoder rejected a frame under the receiver checks (§1.10): the station
+  // counts it (a slave shows it in its counters). Default: ignored.
+  virtual void on_malformed_frame(std::error_code why) { (void)why; }
+
+  // How long (Tbit) a responder waits after a request before replying (min TSDR, §1.7);
+  // a slave reports what the master set with Set_Prm byte 3. Default: 11 Tbit.
+  [[nodiscard]] virtual std::uint16_t min_tsdr_bits() const { return 11; }
 };
 
 }  // namespace rs4sim::dp
