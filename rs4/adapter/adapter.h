@@ -1,0 +1,278 @@
+#pragma once
+// The PROFIsafe adapter of the RS4/PROFIsafe (spec/rs4-profisafe.md §2 … §8; manual
+// §4.4, §4.5, §5, §7): what makes rs4sim behave like the real device on the bus.
+//
+// rs4::adapter::Adapter implements dp::SlaveApplication. The owner (rs4/device) builds a
+// dp::Slave at station_address() around it, forwards the slave's calls, honours
+// wants_link_down_until() (PROFI_CMD_RESET, §5.3) and drives on_time()/next_deadline().
+// Sans-I/O: time comes in, no clock reads, no threads (DESIGN.md §1).
+//
+//   cyclic  5-byte F-output PDU → profisafe::FDevice → output byte → Scanner (restart,
+//           field pair) ; Scanner state → input byte (compose_input_byte, the only place
+//           where the OSSD bit can become 1) → FDevice (status, CRC2) → 5-byte F-input PDU
+//   acyclic slot 0, index 2/3, block protocol (rs4/protocol/block.h) → adapter command
+//           or RS4 command → answer queue → READ blocks with the flow-control byte
+//   alarms  update alarm (§7.1) and diagnosis alarms coming/going (§7.2) via SlaveControl
+//
+// Decisions the manual leaves open are listed in docs/rs4-adapter.md.
+
+#include "dp/slave/slave_application.h"
+#include "profisafe/f_device.h"
+#include "rs4/adapter/cyclic_bytes.h"
+#include "rs4/adapter/error_memory.h"
+#include "rs4/protocol/adapter_answer.h"
+#include "rs4/protocol/adapter_error.h"
+#include "rs4/protocol/alarm.h"
+#include "rs4/protocol/block.h"
+#include "rs4/scanner/scanner.h"
+
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <optional>
+#include <span>
+#include <system_error>
+#include <vector>
+
+namespace rs4sim::rs4::adapter {
+
+using TimePoint = dp::TimePoint;
+using std::chrono::milliseconds;
+
+// ---- configuration constants matching the project's GSD (docs/gsd.md) -----------------
+// The adapter does not depend on gsd/ (layers look down); tests/rs4/adapter proves that
+// what gsd::configure produces for the shipped GSD is accepted.
+inline constexpr std::uint16_t kIdentNumber = 0x5234;                       // GSD Ident_Number
+inline constexpr std::array<std::uint8_t, 3> kRealConfig{0xC0, 0x84, 0x84};  // 5 bytes out/in
+inline constexpr std::array<std::uint8_t, 4> kFBlockHeader{0x0E, 0x05, 0x01, 0x00};
+inline constexpr std::size_t kPduSize = 5;  // PROFIsafe V1: data, status, number, CRC2 hi/lo
+
+struct AdapterConfig {
+  scanner::ScannerConfig scanner{};
+  AddressSwitches switches{};                    // factory setting 4 (§2)
+  milliseconds init_duration{2500};              // LED steady 2–3 s (§1, manual §4.4)
+  milliseconds reset_link_down{2000};            // PROFI_CMD_RESET: link down ≈2 s (§5.3)
+  milliseconds field_pair_release{500};          // valid pair again → OSSD after ≈500 ms (§3.2)
+  milliseconds going_alarm_delay{500};           // ≥500 ms without error → going alarm (§7.2)
+  std::size_t read_buffers = 4;                  // answers awaiting a READ per channel (0x2A05)
+  std::size_t event_buffer = 8;                  // second buffer: 0x53/0x54 for 0x92 (§5.3)
+  protocol::VersionAnswer version{};             // PROFI_CMD_GET_VERSION bytes
+};
+
+// Status LED of the adapter (§1; manual §4.4).
+enum class LedState : std::uint8_t {
+  kDark,          // powered off
+  kSteadyInit,    // steady 2–3 s after power-on / adapter reset
+  kFastBlink,     // ≈5 Hz: ready for the PROFIBUS connection
+  kOffConnected,  // off: in data exchange with the class 1 master
+  kSteadyFault,   // fault: steady for more than 3 s (invalid address switches)
+  kSlowBlink,     // fault: blinking slower than 5 Hz (F-parameters refused)
+};
+[[nodiscard]] const char* to_string(LedState s) noexcept;
+
+// Where the Proxy-Enable / Proxy-Request / OSSD-release logic of §4 stands.
+enum class ProxyPhase : std::uint8_t {
+  kWaitRs4,        // RS4 not yet operational since power-on: OSSD bit 0
+  kRequested,      // Proxy-Request set, no check running
+  kSyncRunning,    // the proxy reported "sync started": Proxy-Request 0
+  kDone,           // check passed (or not needed): release allowed
+};
+[[nodiscard]] const char* to_string(ProxyPhase p) noexcept;
+
+struct AdapterCounters {
+  std::uint64_t cyclic_exchanges = 0;
+  std::uint64_t prm_accepted = 0, prm_refused = 0, cfg_refused = 0;
+  std::uint64_t writes = 0, reads = 0, writes_ignored = 0, dpv1_rejected = 0;
+  std::uint64_t adapter_commands = 0, rs4_commands = 0, rejected_commands = 0;
+  std::uint64_t alarms_submitted = 0, alarms_refused = 0;
+  std::uint64_t field_pair_errors = 0, resets = 0;
+};
+
+// Errors of the control API (not wire errors).
+enum class AdapterApiError : std::uint8_t {
+  kPoweredOff = 1,      // the device has no power
+  kNoSyncRequested,     // sync started while Proxy-Request is 0
+  kNoSyncRunning,       // sync succeeded/failed without sync started
+};
+const std::error_category& adapter_api_category() noexcept;
+std::error_code make_error_code(AdapterApiError e) noexcept;
+
+// Everything an observer (gRPC service, CLI, tests) sees in one snapshot.
+struct AdapterView {
+  bool powered = false;
+  std::optional<std::uint8_t> station_address;
+  std::uint16_t f_dest_add = 0;
+  LedState led = LedState::kDark;
+  ProxyPhase proxy = ProxyPhase::kWaitRs4;
+  bool proxy_enable = false;
+  bool pc_adapter_attached = false;
+  bool connected = false;                       // class 1 data exchange
+  std::uint8_t input_byte = 0;                  // the process byte before FDevice
+  InputBits input;
+  std::uint8_t output_byte = 0;                 // the process byte FDevice delivered
+  OutputBits output;
+  std::array<std::uint8_t, kPduSize> input_pdu{};
+  std::array<std::uint8_t, kPduSize> output_pdu{};
+  profisafe::FDeviceState fdevice = profisafe::FDeviceState::kNoParameters;
+  scanner::OperatingState rs4 = scanner::OperatingState::kOff;
+  bool field_pair_error = false;
+  bool error_active = false;                    // diagnosis alarm "coming" outstanding
+};
+
+class Adapter final : public dp::SlaveApplication {
+ public:
+  explicit Adapter(AdapterConfig config = {});  // powered off
+
+  // ---- power and switches (§2, §4) -----------------------------------------------------
+  void power_on(TimePoint now);                 // reads the address switches
+  void power_off(TimePoint now);                // error memory lost
+  void power_cycle(TimePoint now);
+  // Takes effect at the next power-on / adapter reset, as on the device.
+  void set_address_switches(AddressSwitches s) noexcept { config_.switches = s; }
+  [[nodiscard]] AddressSwitches address_switches() const noexcept { return config_.switches; }
+  // The station address read at power-on; nullopt while off or when the switches are invalid.
+  [[nodiscard]] std::optional<std::uint8_t> station_address() const noexcept { return address_; }
+  // While set, the owner keeps the DP link down (PROFI_CMD_RESET, §5.3).
+  [[nodiscard]] std::optional<TimePoint> wants_link_down_until() const noexcept;
+
+  // ---- scene and user actions -----------------------------------------------------------
+  scanner::Scanner& scanner() noexcept { return scanner_; }  // scene, faults, contamination
+  [[nodiscard]] const scanner::Scanner& scanner() const noexcept { return scanner_; }
+  void set_restart_button(bool pressed, TimePoint now);     // button on X1 (§1)
+  void attach_pc_adapter(TimePoint now);                    // reed contact of X5 (§4)
+  void detach_pc_adapter(TimePoint now);
+
+  // ---- proxy hooks (EXTENSION, §4/§10) --------------------------------------------------
+  // The adapter side of the Proxy-FB sync. The wire commands that drive these entry points
+  // come with the proxy issue; until then the harness and tests call them directly.
+  std::error_code proxy_sync_started(TimePoint now);    // Proxy-Request → 0
+  std::error_code proxy_sync_succeeded(TimePoint now);  // check done → OSSD release
+  std::error_code proxy_sync_failed(TimePoint now);     // Proxy-Request → 1 again
+
+  // ---- observation ------------------------------------------------------------------------
+  [[nodiscard]] AdapterView view() const;
+  [[nodiscard]] bool ossd_bit() const noexcept { return (input_byte_ & kInputOssd) != 0; }
+  [[nodiscard]] std::uint8_t input_byte() const noexcept { return input_byte_; }
+  [[nodiscard]] std::uint8_t output_byte() const noexcept { return output_byte_; }
+  [[nodiscard]] LedState led() const noexcept;
+  [[nodiscard]] ProxyPhase proxy_phase() const noexcept { return proxy_; }
+  [[nodiscard]] protocol::FlowState flow_state(dp::AcyclicChannel ch) const noexcept;
+  [[nodiscard]] std::uint8_t flow_byte(dp::AcyclicChannel ch, bool payload) const noexcept;
+  [[nodiscard]] const ErrorMemory& error_memory() const noexcept { return errors_; }
+  [[nodiscard]] const AdapterCounters& counters() const noexcept { return counters_; }
+  [[nodiscard]] const profisafe::FDevice& fdevice() const noexcept { return fdevice_; }
+  profisafe::PduFaults& safety_faults() noexcept { return fdevice_.faults(); }
+  [[nodiscard]] std::size_t pending_answers(dp::AcyclicChannel ch) const noexcept;
+  [[nodiscard]] std::size_t buffered_events() const noexcept { return event_buffer_.size(); }
+
+  // ---- dp::SlaveApplication ----------------------------------------------------------
+  void on_attach(dp::SlaveControl& control) override { control_ = &control; }
+  dp::PrmVerdict check_parameters(const dp::pdu::SetPrm& prm) override;
+  dp::CfgVerdict check_config(std::span<const std::uint8_t> cfg, bool user_check) override;
+  [[nodiscard]] std::span<const std::uint8_t> real_config() const override { return kRealConfig; }
+  void on_outputs(std::span<const std::uint8_t> outputs, TimePoint now) override;
+  void on_outputs_cleared(dp::OutputClear why, TimePoint now) override;
+  void read_inputs(std::span<std::uint8_t> inputs) override;
+  void on_state_change(dp::SlaveState from, dp::SlaveState to, dp::TransitionReason why,
+                       TimePoint now) override;
+  dp::AcyclicResult on_acyclic(const dp::AcyclicRequest& req, TimePoint now) override;
+  void on_c2_event(dp::C2Event ev, std::uint8_t master, TimePoint now) override;
+  [[nodiscard]] std::optional<TimePoint> next_deadline() const override;
+  void on_time(TimePoint now) override;
+
+ private:
+  struct Channel {                               // one per acyclic channel (C1, C2)
+    protocol::BlockAssembler assembler{protocol::Direction::kWrite};
+    std::deque<std::vector<std::uint8_t>> answers;  // results awaiting READ
+    protocol::BlockSplitter reading;             // the answer being read out
+    void clear();
+  };
+  struct Forwarding {                            // PROFI_CMD_GET_RS4_DATA state (§5.3)
+    std::uint8_t mask = 0;
+    bool permanent = false;
+    std::optional<std::vector<std::uint8_t>> telegram;  // first buffer: 0x23 / 0x14
+    std::uint32_t last_scan = 0;
+  };
+
+  // adapter.cpp: power, start-up, parameters
+  void start_adapter(TimePoint now, bool keep_errors);
+  void enter_data_exchange(TimePoint now);
+  // adapter_cyclic.cpp: the process bytes and the §4 logic
+  void apply_output_byte(std::uint8_t out, TimePoint now);
+  void apply_field_pair(std::uint8_t pair, TimePoint now);
+  void update_rs4_phase(TimePoint now);
+  void refresh_input(TimePoint now);
+  [[nodiscard]] bool ossd_release_allowed(TimePoint now) const noexcept;
+  [[nodiscard]] std::uint8_t compose_input_byte(TimePoint now) const noexcept;
+  void drive_restart_input(TimePoint now);
+  // adapter_acyclic.cpp
+  dp::AcyclicResult on_write(const dp::AcyclicRequest& req, Channel& ch, TimePoint now);
+  dp::AcyclicResult on_read(const dp::AcyclicRequest& req, Channel& ch, TimePoint now);
+  void execute(std::span<const std::uint8_t> command, dp::AcyclicChannel which, Channel& ch,
+               TimePoint now);
+  void execute_adapter_command(std::span<const std::uint8_t> command, Channel& ch, TimePoint now);
+  [[nodiscard]] std::vector<std::uint8_t> execute_rs4_command(std::span<const std::uint8_t> command) const;
+  [[nodiscard]] bool ready_for_write(dp::AcyclicChannel which) const noexcept;
+  [[nodiscard]] Channel& channel(dp::AcyclicChannel which) noexcept;
+  [[nodiscard]] const Channel& channel(dp::AcyclicChannel which) const noexcept;
+  // adapter_events.cpp: RS4 events, forwarding, error memory, alarms
+  void collect_rs4(TimePoint now);
+  void capture_forwarding();
+  std::optional<std::vector<std::uint8_t>> take_forwarded();
+  void adapter_error(protocol::AdapterError e, TimePoint now);
+  void report_error(std::uint16_t uc2_error, std::uint16_t uc1_error, TimePoint now);
+  void submit_diagnosis_alarm(protocol::AlarmDifferentiation d);
+  void check_going_alarm(TimePoint now);
+
+  AdapterConfig config_;
+  dp::SlaveControl* control_ = nullptr;
+  scanner::Scanner scanner_;
+  profisafe::FDevice fdevice_;
+  ErrorMemory errors_;
+
+  bool powered_ = false;
+  std::optional<std::uint8_t> address_;
+  TimePoint now_{};
+  TimePoint init_end_{};
+  std::optional<TimePoint> link_down_until_;
+  bool connected_ = false;                        // class 1 in Data_Exch
+  bool prm_refused_ = false;                      // F-parameters refused (LED slow blink)
+
+  // §4 proxy logic
+  ProxyPhase proxy_ = ProxyPhase::kWaitRs4;
+  bool proxy_request_ = false;
+  bool proxy_enable_ = false;
+  bool proxy_enable_known_ = false;               // evaluated since DP start-up / PC removal
+  bool pc_attached_ = false;                      // reed contact
+  bool rs232_through_ = false;                    // bit 3: switched through (not during a sync)
+
+  // §3 cyclic
+  std::uint8_t input_byte_ = 0;
+  std::uint8_t output_byte_ = 0;
+  std::array<std::uint8_t, kPduSize> output_pdu_{};
+  bool restart_bus_ = false;
+  bool restart_button_ = false;
+  bool restart_driven_ = false;
+  bool field_pair_error_ = false;
+  std::optional<TimePoint> field_pair_release_at_;
+  std::uint8_t field_pair_ = 1;
+
+  // §5 acyclic
+  Channel c1_, c2_;
+  Forwarding forwarding_;
+  std::deque<std::vector<std::uint8_t>> event_buffer_;  // second buffer: 0x53 / 0x54
+
+  // §7 alarms
+  bool error_active_ = false;
+  TimePoint last_error_at_{};
+  std::uint16_t last_uc2_error_ = 0, last_uc1_error_ = 0;
+  std::vector<std::uint16_t> reported_;           // errors reported coming since going/connect
+
+  AdapterCounters counters_;
+};
+
+}  // namespace rs4sim::rs4::adapter
+
+template <>
+struct std::is_error_code_enum<rs4sim::rs4::adapter::AdapterApiError> : std::true_type {};
