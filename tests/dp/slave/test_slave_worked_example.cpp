@@ -2,6 +2,9 @@
 // byte: every request and every expected reply below is copied from the spec.
 #include "tests/dp/slave/slave_harness.h"
 
+#include <chrono>
+#include <string>
+
 namespace rs4sim::dp::testing {
 namespace {
 
@@ -127,6 +130,25 @@ TEST(SlaveWorkedExample, TransitionsAreReportedByStateName) {
   EXPECT_EQ(log, (std::vector<std::string>{"Wait_Prm->Wait_Cfg", "Wait_Cfg->Data_Exch"}));
   ASSERT_EQ(h.app.transitions.size(), 2U);
   EXPECT_EQ(h.app.transitions[1].why, TransitionReason::kCfgAccepted);
+}
+
+TEST(SlaveWorkedExample, Et200sTraceSetPrmShape) {
+  // [TRACE #26] (§2.10): DPV0 Set_Prm `B8 1E 01 00 80 6A 01`, diag after it `02 0C 00 02`.
+  SlaveConfig cfg = example_config();
+  cfg.dpv1 = false;
+  cfg.ident_number = 0x806A;
+  SlaveHarness h(cfg);
+  EXPECT_EQ(h.diag(), (Bytes{0x02, 0x05, 0x00, 0xFF, 0x80, 0x6A}));  // power-up, as traced
+  const Bytes prm{0xB8,        // Lock_Req + Sync_Req + Freeze_Req + WD_On
+                  0x1E, 0x01,  // WD_Fact 30 · 1 → 300 ms
+                  0x00,        // min TSDR 0 = unchanged
+                  0x80, 0x6A,  // Ident_Number
+                  0x01};       // Group_Ident: group 1
+  EXPECT_EQ(h.send(h.dp(0x3D, prm)), kSc);
+  EXPECT_EQ(h.slave.state(), SlaveState::kWaitCfg);
+  EXPECT_EQ(h.slave.watchdog_time(), Duration(std::chrono::milliseconds(300)));
+  EXPECT_EQ(h.slave.min_tsdr(), 11);
+  EXPECT_EQ(h.diag(), (Bytes{0x02, 0x0C, 0x00, 0x02, 0x80, 0x6A}));
 }
 
 }  // namespace
