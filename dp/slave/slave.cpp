@@ -198,6 +198,11 @@ std::optional<TimePoint> Slave::next_deadline() const {
   return d;
 }
 
+void Slave::on_malformed_frame(std::error_code why) {
+  (void)why;  // the link's decoder keeps the per-kind statistics
+  ++counters_.malformed_dropped;
+}
+
 std::optional<fdl::Telegram> Slave::take_transmit() {
   std::optional<fdl::Telegram> out;
   out.swap(tx_);

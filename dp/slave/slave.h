@@ -47,7 +47,7 @@ struct SlaveCounters {
   std::uint64_t for_other_stations = 0;    // DA not ours (and not a broadcast we take)
   std::uint64_t broadcasts = 0;            // SDN to 127 evaluated
   std::uint64_t ignored = 0;               // responses, tokens, unsupported broadcasts
-  std::uint64_t malformed_dropped = 0;     // reported by the link (note_malformed)
+  std::uint64_t malformed_dropped = 0;     // reported by the link (on_malformed_frame)
   std::uint64_t repeats_answered = 0;      // FCB repeats answered from the stored reply
   std::uint64_t rs_replies = 0;            // SAP not activated / wrong state / not owner
   std::uint64_t watchdog_expiries = 0;
@@ -74,6 +74,10 @@ class Slave final : public Station, public SlaveControl {
   void on_time(TimePoint now) override;
   [[nodiscard]] std::optional<TimePoint> next_deadline() const override;
   std::optional<fdl::Telegram> take_transmit() override;
+  // The link dropped a frame that failed the §1.10 checks: counted (malformed_dropped).
+  void on_malformed_frame(std::error_code why) override;
+  // min TSDR in Tbit: config default until Set_Prm byte 3 changes it (§1.7).
+  [[nodiscard]] std::uint16_t min_tsdr_bits() const override { return min_tsdr_; }
 
   // ---- SlaveControl (see slave_application.h) ----
   std::error_code complete_acyclic(AcyclicChannel channel, const AcyclicResult& r) override;
@@ -93,8 +97,6 @@ class Slave final : public Station, public SlaveControl {
   // The Slave_Diag DU the slave would send now (without fetching it).
   [[nodiscard]] fdl::DataUnit diagnosis() const;
   [[nodiscard]] const SlaveCounters& counters() const { return counters_; }
-  // The link dropped a frame that failed §1.10 checks.
-  void note_malformed() { ++counters_.malformed_dropped; }
   // Transition trace (state names via state_name()); no printing in the core.
   void set_trace(std::function<void(const SlaveTransition&)> hook) { trace_ = std::move(hook); }
 

@@ -91,9 +91,13 @@ TEST(SlaveAddressFilter, SdaIsOnlyAcknowledged) {
 
 TEST(SlaveAddressFilter, MalformedFramesAreCountedWhenTheLinkReportsThem) {
   SlaveHarness h;
-  h.slave.note_malformed();
-  h.slave.note_malformed();
+  Station& station = h.slave;  // links only see dp::Station
+  station.on_malformed_frame(fdl::DecodeError::kBadFcs);
+  station.on_malformed_frame(fdl::DecodeError::kLengthMismatch);
   EXPECT_EQ(h.slave.counters().malformed_dropped, 2U);
+  EXPECT_EQ(station.min_tsdr_bits(), 11);
+  h.send(h.dp(0x3D, {0x88, 0x0A, 0x01, 0x1E, 0x12, 0x34, 0x00, 0x80, 0x20, 0x00}));  // min TSDR 30
+  EXPECT_EQ(station.min_tsdr_bits(), 30);
 }
 
 }  // namespace
