@@ -79,6 +79,26 @@ TEST(SlaveC2, InitiateReadWriteAbort) {
   EXPECT_EQ(h.send(m.frame(0x30, {})), kRsToMaster1);
 }
 
+TEST(SlaveC2, DataTransportRoundTrip) {
+  SlaveHarness h;
+  C2Master m;
+  connect(h, m);
+  const Bytes transport{0x51,        // Data_Transport
+                        0x00,        // slot 0
+                        0x05,        // index 5
+                        0x02,        // 2 data bytes
+                        0xAA, 0xBB};
+  EXPECT_EQ(h.send(m.frame(0x30, transport)), kSc);
+  ASSERT_EQ(h.app.acyclic.size(), 1U);
+  EXPECT_EQ(h.app.acyclic[0].req.service, AcyclicService::kDataTransport);
+  EXPECT_EQ(h.app.acyclic[0].data, (Bytes{0xAA, 0xBB}));
+  EXPECT_FALSE(h.app.acyclic[0].req.first_write_after_initiate);
+  EXPECT_EQ(h.send(m.frame(0x30, {})), C2Master::reply(0x30, {0x51, 0x00, 0x05, 0x02, 0xAB, 0xCD}));
+  // Length ≠ data: D1 80 B3 00.
+  h.send(m.frame(0x30, {0x51, 0x00, 0x05, 0x03, 0xAA}));
+  EXPECT_EQ(h.send(m.frame(0x30, {})), C2Master::reply(0x30, {0xD1, 0x80, 0xB3, 0x00}));
+}
+
 TEST(SlaveC2, SecondInitiateIsRefusedWithRs) {
   SlaveHarness h;
   C2Master m;
