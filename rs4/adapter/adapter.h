@@ -156,7 +156,9 @@ class Adapter final : public dp::SlaveApplication {
   [[nodiscard]] std::uint8_t input_byte() const noexcept { return input_byte_; }
   [[nodiscard]] std::uint8_t output_byte() const noexcept { return output_byte_; }
   [[nodiscard]] LedState led() const noexcept;
-  [[nodiscard]] ProxyPhase proxy_phase() const noexcept { return proxy_; }
+  [[nodiscard]] ProxyPhase proxy_phase() const noexcept;
+  // The parameter-check gate of §4: true once the OSSD bit may follow the RS4.
+  [[nodiscard]] bool released() const noexcept { return released_; }
   [[nodiscard]] protocol::FlowState flow_state(dp::AcyclicChannel ch) const noexcept;
   [[nodiscard]] std::uint8_t flow_byte(dp::AcyclicChannel ch, bool payload) const noexcept;
   [[nodiscard]] const ErrorMemory& error_memory() const noexcept { return errors_; }
@@ -192,7 +194,7 @@ class Adapter final : public dp::SlaveApplication {
     std::uint8_t mask = 0;
     bool permanent = false;
     std::optional<std::vector<std::uint8_t>> telegram;  // first buffer: 0x23 / 0x14
-    std::uint32_t last_scan = 0;
+    std::optional<std::uint32_t> last_scan;     // scan captured last (nullopt: take the next)
   };
 
   // adapter.cpp: power, start-up, parameters
@@ -240,7 +242,9 @@ class Adapter final : public dp::SlaveApplication {
   bool prm_refused_ = false;                      // F-parameters refused (LED slow blink)
 
   // §4 proxy logic
-  ProxyPhase proxy_ = ProxyPhase::kWaitRs4;
+  bool rs4_up_ = false;                           // RS4 reached operation since power-on
+  bool sync_running_ = false;
+  bool released_ = false;                         // parameter check passed or not needed
   bool proxy_request_ = false;
   bool proxy_enable_ = false;
   bool proxy_enable_known_ = false;               // evaluated since DP start-up / PC removal
@@ -251,6 +255,7 @@ class Adapter final : public dp::SlaveApplication {
   std::uint8_t input_byte_ = 0;
   std::uint8_t output_byte_ = 0;
   std::array<std::uint8_t, kPduSize> output_pdu_{};
+  std::array<std::uint8_t, kPduSize> input_pdu_{};   // the F-input PDU sent last
   bool restart_bus_ = false;
   bool restart_button_ = false;
   bool restart_driven_ = false;

@@ -1,0 +1,293 @@
+// Adapter: power, start-up, Set_Prm/Chk_Cfg, DP state, LED, observation.
+// spec/rs4-profisafe.md §1, §2, §4, §8; manual §4.4, §4.5, §6.3.
+#include "rs4/adapter/adapter.h"
+
+#include <algorithm>
+#include <string>
+
+namespace rs4sim::rs4::adapter {
+
+namespace {
+
+profisafe::FDeviceConfig fdevice_config(std::optional<std::uint8_t> address) {
+  profisafe::FDeviceConfig c;
+  // §2: F_Dest_Add = 500 + address. Without a valid address the profile has no
+  // F_Dest_Add and every block is refused with 65 (internal F_Dest_Add error).
+  c.profile = profisafe::DeviceProfile::rs4(address ? *address : 127U);
+  c.data_size = 1;
+  return c;
+}
+
+class ApiCategory final : public std::error_category {
+ public:
+  const char* name() const noexcept override { return "rs4.adapter"; }
+  std::string message(int c) const override {
+    switch (static_cast<AdapterApiError>(c)) {
+      case AdapterApiError::kPoweredOff: return "the RS4/PROFIsafe has no power";
+      case AdapterApiError::kNoSyncRequested:
+        return "proxy sync started although the device does not request one (Proxy-Request 0)";
+      case AdapterApiError::kNoSyncRunning: return "no proxy sync is running";
+    }
+    return "unknown adapter API error";
+  }
+};
+
+}  // namespace
+
+const std::error_category& adapter_api_category() noexcept {
+  static const ApiCategory c;
+  return c;
+}
+std::error_code make_error_code(AdapterApiError e) noexcept {
+  return {static_cast<int>(e), adapter_api_category()};
+}
+
+const char* to_string(LedState s) noexcept {
+  switch (s) {
+    case LedState::kDark: return "dark";
+    case LedState::kSteadyInit: return "steady (init)";
+    case LedState::kFastBlink: return "fast blink (ready for PROFIBUS)";
+    case LedState::kOffConnected: return "off (connected)";
+    case LedState::kSteadyFault: return "steady (fault)";
+    case LedState::kSlowBlink: return "slow blink (fault)";
+  }
+  return "unknown";
+}
+
+const char* to_string(ProxyPhase p) noexcept {
+  switch (p) {
+    case ProxyPhase::kWaitRs4: return "wait for RS4";
+    case ProxyPhase::kRequested: return "Proxy-Request";
+    case ProxyPhase::kSyncRunning: return "sync running";
+    case ProxyPhase::kDone: return "done";
+  }
+  return "unknown";
+}
+
+void Adapter::Channel::clear() {
+  assembler.reset();
+  answers.clear();
+  reading = protocol::BlockSplitter{};
+}
+
+Adapter::Adapter(AdapterConfig config)
+    : config_(config), scanner_(config.scanner), fdevice_(fdevice_config(std::nullopt)) {}
+
+void Adapter::power_on(TimePoint now) {
+  if (powered_) return;
+  now_ = now;
+  powered_ = true;
+  rs4_up_ = false;
+  released_ = false;
+  proxy_request_ = false;
+  scanner_.power_on(now);
+  start_adapter(now, /*keep_errors=*/false);
+}
+
+void Adapter::power_off(TimePoint now) {
+  now_ = now;
+  powered_ = false;
+  scanner_.power_off(now);
+  errors_.clear();  // §5.3: the error memory does not survive power-off
+  address_.reset();
+  fdevice_ = profisafe::FDevice(fdevice_config(std::nullopt));
+  link_down_until_.reset();
+  connected_ = false;
+  sync_running_ = false;
+  rs4_up_ = false;
+  released_ = false;
+  proxy_request_ = false;
+  error_active_ = false;
+  input_byte_ = output_byte_ = 0;
+  c1_.clear();
+  c2_.clear();
+  event_buffer_.clear();
+}
+
+void Adapter::power_cycle(TimePoint now) {
+  power_off(now);
+  power_on(now);
+}
+
+// The adapter part of power-on, also run by PROFI_CMD_RESET (RS4 not affected, error
+// memory kept). §1: the adapter initialises for a few seconds (LED steady 2–3 s).
+void Adapter::start_adapter(TimePoint now, bool keep_errors) {
+  const auto addr = adapter::station_address(config_.switches);
+  address_ = addr ? std::optional<std::uint8_t>(addr.value()) : std::nullopt;
+  fdevice_ = profisafe::FDevice(fdevice_config(address_));
+  if (!keep_errors) errors_.clear();
+  init_end_ = now + config_.init_duration;
+  connected_ = false;
+  prm_refused_ = false;
+  sync_running_ = false;
+  proxy_enable_ = false;
+  proxy_enable_known_ = false;
+  rs232_through_ = pc_attached_;
+  if (rs4_up_ && !pc_attached_) proxy_request_ = true;  // a restarted adapter checks again
+  released_ = rs4_up_ && pc_attached_;
+  restart_bus_ = false;
+  drive_restart_input(now);
+  field_pair_error_ = false;
+  field_pair_release_at_.reset();
+  field_pair_ = 1;  // §3.2: field pair 1 during PROFIBUS start-up
+  scanner_.select_field_pair(1, now);
+  output_byte_ = 0;
+  output_pdu_.fill(0);
+  input_pdu_.fill(0);
+  c1_.clear();
+  c2_.clear();
+  forwarding_ = Forwarding{};
+  event_buffer_.clear();
+  reported_.clear();
+  update_rs4_phase(now);
+  refresh_input(now);
+}
+
+std::optional<TimePoint> Adapter::wants_link_down_until() const noexcept {
+  return link_down_until_;
+}
+
+// ---- Set_Prm / Chk_Cfg (§8, docs/gsd.md) -------------------------------------------------
+dp::PrmVerdict Adapter::check_parameters(const dp::pdu::SetPrm& prm) {
+  // Not ready (no power, invalid address switches, adapter still initialising): refused
+  // without a PROFIsafe diagnosis; the master repeats the start-up.
+  if (!powered_ || !address_ || now_ < init_end_ || link_down_until_) {
+    ++counters_.prm_refused;
+    return dp::PrmVerdict::kPrmFault;
+  }
+  const std::span<const std::uint8_t> user(prm.user_data.data(), prm.user_data.size());
+  const bool shaped = user.size() == kFBlockHeader.size() + profisafe::kFParametersSize &&
+                      std::equal(kFBlockHeader.begin(), kFBlockHeader.end(), user.begin());
+  if (!shaped) {  // not the F-parameter block of docs/gsd.md: Prm_Fault, no status PDU
+    ++counters_.prm_refused;
+    if (control_) control_->set_device_diagnosis({}, false, false);
+    return dp::PrmVerdict::kPrmFault;
+  }
+  const auto v = fdevice_.set_parameters(user.subspan(kFBlockHeader.size()));
+  // §8: the status PDU 05 81 00 00 nn follows the 6 standard diagnosis bytes; a refused
+  // block sets Ext_Diag, the slave reports Prm_Fault and stays out of data exchange.
+  const auto pdu = fdevice_.diagnosis_status_pdu();
+  if (control_) control_->set_device_diagnosis(pdu, !v.ok(), false);
+  prm_refused_ = !v.ok();
+  if (!v.ok()) {
+    ++counters_.prm_refused;
+    return dp::PrmVerdict::kPrmFault;
+  }
+  ++counters_.prm_accepted;
+  return dp::PrmVerdict::kAccept;
+}
+
+dp::CfgVerdict Adapter::check_config(std::span<const std::uint8_t> cfg, bool user_check) {
+  (void)user_check;  // the RS4 has one module: the Cfg must be exactly C0 84 84
+  if (std::equal(cfg.begin(), cfg.end(), kRealConfig.begin(), kRealConfig.end())) {
+    return dp::CfgVerdict::kAccept;
+  }
+  ++counters_.cfg_refused;
+  return dp::CfgVerdict::kCfgFault;
+}
+
+void Adapter::on_state_change(dp::SlaveState from, dp::SlaveState to, dp::TransitionReason why,
+                              TimePoint now) {
+  (void)why;
+  now_ = now;
+  if (!powered_) return;
+  if (to == dp::SlaveState::kDataExch && from != dp::SlaveState::kDataExch) {
+    enter_data_exchange(now);
+  } else if (from == dp::SlaveState::kDataExch && to != dp::SlaveState::kDataExch) {
+    connected_ = false;
+    restart_bus_ = false;
+    drive_restart_input(now);
+    c1_.clear();
+    refresh_input(now);
+  }
+}
+
+// PROFIBUS start-up (§3.2, §4, §7.2): field pair 1, Proxy-Enable evaluated from the first
+// process output, the last error re-reported when still present.
+void Adapter::enter_data_exchange(TimePoint now) {
+  connected_ = true;
+  proxy_enable_known_ = false;
+  field_pair_ = 1;
+  field_pair_error_ = false;
+  field_pair_release_at_.reset();
+  scanner_.select_field_pair(1, now);
+  reported_.clear();
+  if (error_active_) {
+    reported_.push_back(last_uc2_error_ != 0 ? last_uc2_error_ : last_uc1_error_);
+    submit_diagnosis_alarm(protocol::AlarmDifferentiation::kAppears);
+  }
+  refresh_input(now);
+}
+
+void Adapter::on_c2_event(dp::C2Event ev, std::uint8_t master, TimePoint now) {
+  (void)master, (void)now;
+  if (ev != dp::C2Event::kConnected || c2_.answers.empty()) c2_.clear();
+  if (ev == dp::C2Event::kConnected) c2_.clear();
+}
+
+// ---- time ----------------------------------------------------------------------------------
+std::optional<TimePoint> Adapter::next_deadline() const {
+  if (!powered_) return std::nullopt;
+  std::optional<TimePoint> next = scanner_.next_deadline();
+  const auto fold = [&next](std::optional<TimePoint> t) {
+    if (t && (!next || *t < *next)) next = t;
+  };
+  fold(fdevice_.next_deadline());
+  if (init_end_ > now_) fold(init_end_);
+  fold(link_down_until_);
+  fold(field_pair_release_at_);
+  if (error_active_) fold(last_error_at_ + config_.going_alarm_delay);
+  return next;
+}
+
+void Adapter::on_time(TimePoint now) {
+  now_ = now;
+  if (!powered_) return;
+  if (link_down_until_ && now >= *link_down_until_) link_down_until_.reset();
+  fdevice_.on_time(now);
+  collect_rs4(now);
+  if (field_pair_release_at_ && now >= *field_pair_release_at_) field_pair_release_at_.reset();
+  check_going_alarm(now);
+  refresh_input(now);
+}
+
+// ---- observation ---------------------------------------------------------------------------
+LedState Adapter::led() const noexcept {
+  if (!powered_) return LedState::kDark;
+  if (!address_) return LedState::kSteadyFault;  // steady > 3 s: not addressable
+  if (now_ < init_end_ || link_down_until_) return LedState::kSteadyInit;
+  if (prm_refused_) return LedState::kSlowBlink;
+  return connected_ ? LedState::kOffConnected : LedState::kFastBlink;
+}
+
+ProxyPhase Adapter::proxy_phase() const noexcept {
+  if (!rs4_up_) return ProxyPhase::kWaitRs4;
+  if (sync_running_) return ProxyPhase::kSyncRunning;
+  if (proxy_request_) return ProxyPhase::kRequested;
+  return ProxyPhase::kDone;
+}
+
+AdapterView Adapter::view() const {
+  AdapterView v;
+  v.powered = powered_;
+  v.station_address = address_;
+  v.f_dest_add = address_ ? f_dest_add(*address_) : 0;
+  v.led = led();
+  v.proxy = proxy_phase();
+  v.proxy_enable = proxy_enable_;
+  v.pc_adapter_attached = pc_attached_;
+  v.connected = connected_;
+  v.input_byte = input_byte_;
+  v.input = decode_input_byte(input_byte_);
+  v.output_byte = output_byte_;
+  v.output = decode_output_byte(output_byte_);
+  v.input_pdu = input_pdu_;
+  v.output_pdu = output_pdu_;
+  v.fdevice = fdevice_.state();
+  v.rs4 = scanner_.status().state;
+  v.field_pair_error = field_pair_error_;
+  v.error_active = error_active_;
+  return v;
+}
+
+}  // namespace rs4sim::rs4::adapter

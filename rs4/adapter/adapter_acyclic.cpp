@@ -1,0 +1,210 @@
+// Adapter: acyclic data exchange (spec/rs4-profisafe.md §5; manual §5.2): slot 0,
+// index 2/3, block protocol with the flow-control byte, adapter commands and RS4 commands.
+#include "rs4/adapter/adapter.h"
+#include "rs4/adapter/rs4_commands.h"
+#include "rs4/protocol/adapter_command.h"
+
+#include <algorithm>
+#include <variant>
+
+namespace rs4sim::rs4::adapter {
+
+namespace {
+using dp::AcyclicChannel;
+using dp::AcyclicError;
+using dp::AcyclicResult;
+// DPV1 Error_Code_1 (profibus-dp.md §3.3): class 0xB access, codes 0 invalid index,
+// 1 write length error, 2 invalid slot, 8 invalid parameter; 0xA9 feature not supported.
+constexpr AcyclicError kInvalidIndex{0x80, 0xB0, 0x00};
+constexpr AcyclicError kWriteLengthError{0x80, 0xB1, 0x00};
+constexpr AcyclicError kInvalidSlot{0x80, 0xB2, 0x00};
+constexpr AcyclicError kInvalidParameter{0x80, 0xB8, 0x00};
+constexpr AcyclicError kNotSupported{0x80, 0xA9, 0x00};
+}  // namespace
+
+Adapter::Channel& Adapter::channel(AcyclicChannel which) noexcept {
+  return which == AcyclicChannel::kC1 ? c1_ : c2_;
+}
+const Adapter::Channel& Adapter::channel(AcyclicChannel which) const noexcept {
+  return which == AcyclicChannel::kC1 ? c1_ : c2_;
+}
+std::size_t Adapter::pending_answers(AcyclicChannel which) const noexcept {
+  const auto& ch = channel(which);
+  return ch.answers.size() + (ch.reading.done() ? 0 : 1);
+}
+
+// Table 5.2-2 bits 6..4. DECISION: 011 is shown to every master while a proxy sync runs
+// (the proxy's own requests on C1 are processed normally).
+protocol::FlowState Adapter::flow_state(AcyclicChannel which) const noexcept {
+  if (!powered_ || now_ < init_end_ || link_down_until_) return protocol::FlowState::kNoCommunicationPath;
+  if (rs232_through_) return protocol::FlowState::kPcAdapterAttached;
+  if (sync_running_) return protocol::FlowState::kProxyBusy;
+  if (which == AcyclicChannel::kC2 && !connected_) return protocol::FlowState::kNoConnection;
+  return protocol::FlowState::kNormal;
+}
+
+// Bit 0: the adapter takes the first/next WRITE block: it is running and a read buffer
+// is free for the result.
+bool Adapter::ready_for_write(AcyclicChannel which) const noexcept {
+  const auto state = flow_state(which);
+  if (state == protocol::FlowState::kNoCommunicationPath ||
+      state == protocol::FlowState::kPcAdapterAttached) {
+    return false;
+  }
+  return pending_answers(which) < config_.read_buffers;
+}
+
+std::uint8_t Adapter::flow_byte(AcyclicChannel which, bool payload) const noexcept {
+  return protocol::encode_flow_control({ready_for_write(which), payload, flow_state(which)});
+}
+
+dp::AcyclicResult Adapter::on_acyclic(const dp::AcyclicRequest& req, TimePoint now) {
+  now_ = now;
+  if (!powered_) return AcyclicResult::fail(kNotSupported);
+  collect_rs4(now);
+  if (req.service == dp::AcyclicService::kDataTransport) {
+    ++counters_.dpv1_rejected;
+    return AcyclicResult::fail(kNotSupported);
+  }
+  // §5: slot 0 only, index 2 or 3 (treated identically).
+  if (req.slot != 0 || (req.index != 2 && req.index != 3)) {
+    ++counters_.dpv1_rejected;
+    return AcyclicResult::fail(req.slot != 0 ? kInvalidSlot : kInvalidIndex);
+  }
+  auto& ch = channel(req.channel);
+  return req.service == dp::AcyclicService::kWrite ? on_write(req, ch, now)
+                                                    : on_read(req, ch, now);
+}
+
+dp::AcyclicResult Adapter::on_write(const dp::AcyclicRequest& req, Channel& ch, TimePoint now) {
+  ++counters_.writes;
+  if (req.channel == AcyclicChannel::kC2 && req.first_write_after_initiate && control_) {
+    // §7.1: update alarm to the class 1 master, 04 06 00 spec (ack required).
+    const dp::AlarmRequest alarm{protocol::kAlarmTypeUpdate, 0, 0, true, {}};
+    if (control_->submit_alarm(alarm)) ++counters_.alarms_refused; else ++counters_.alarms_submitted;
+  }
+  // §5: records of 5..240 bytes.
+  if (req.data.size() < protocol::kMinWriteRecordSize || req.data.size() > protocol::kMaxRecordSize) {
+    ++counters_.dpv1_rejected;
+    return AcyclicResult::fail(kWriteLengthError);
+  }
+  if (flow_state(req.channel) == protocol::FlowState::kPcAdapterAttached) {
+    ++counters_.writes_ignored;  // §5.2 state 010: WRITEs are ignored without error
+    return AcyclicResult::ok();
+  }
+  if (!ready_for_write(req.channel)) {
+    // Bit 0 = 0: not processed; error buffer + diagnosis alarm (table 5.2-2).
+    const bool full = pending_answers(req.channel) >= config_.read_buffers &&
+                      flow_state(req.channel) != protocol::FlowState::kNoCommunicationPath;
+    adapter_error(full ? protocol::AdapterError::kReadBuffersFull
+                       : protocol::AdapterError::kTelegramNotProcessed, now);
+    return AcyclicResult::ok();
+  }
+  const auto progress = ch.assembler.push(req.data);
+  if (!progress) {
+    const auto ec = progress.error();
+    if (ec == protocol::AdapterError::kTelegramTooLong) {
+      adapter_error(protocol::AdapterError::kTelegramTooLong, now);
+    } else if (ec == protocol::AdapterError::kUnexpectedBlockNumber) {
+      adapter_error(protocol::AdapterError::kUnexpectedBlockNumber, now);
+    } else {  // a block whose header does not describe it: cannot be processed
+      adapter_error(protocol::AdapterError::kTelegramNotProcessed, now);
+    }
+    return AcyclicResult::ok();
+  }
+  if (progress.value().complete) {
+    const std::vector<std::uint8_t> command(ch.assembler.command().begin(),
+                                            ch.assembler.command().end());
+    execute(command, req.channel, ch, now);
+  }
+  return AcyclicResult::ok();
+}
+
+dp::AcyclicResult Adapter::on_read(const dp::AcyclicRequest& req, Channel& ch, TimePoint now) {
+  (void)now;
+  ++counters_.reads;
+  if (req.length < protocol::kMinWriteRecordSize) {
+    ++counters_.dpv1_rejected;
+    return AcyclicResult::fail(kInvalidParameter);  // no room for a block
+  }
+  const std::size_t block_size = std::min<std::size_t>(req.length, protocol::kMaxRecordSize);
+  if (flow_state(req.channel) != protocol::FlowState::kPcAdapterAttached && ch.reading.done()) {
+    if (!ch.answers.empty()) {
+      ch.reading = protocol::BlockSplitter(std::move(ch.answers.front()), block_size);
+      ch.answers.pop_front();
+    } else if (req.channel == AcyclicChannel::kC1) {
+      if (auto t = take_forwarded()) ch.reading = protocol::BlockSplitter(std::move(*t), block_size);
+    }
+  }
+  std::vector<std::uint8_t> block;
+  if (flow_state(req.channel) != protocol::FlowState::kPcAdapterAttached && !ch.reading.done()) {
+    const bool last = ch.reading.remaining_blocks() == 1;
+    // The ready bit as it will be once this block is fetched (the buffer frees up).
+    const bool ready = ready_for_write(req.channel) ||
+                       (last && pending_answers(req.channel) <= config_.read_buffers &&
+                        flow_state(req.channel) != protocol::FlowState::kNoCommunicationPath);
+    block = ch.reading.next({ready, false, flow_state(req.channel)});
+  } else {  // nothing to read: the header alone (table 5.2-1)
+    (void)protocol::encode_block(flow_byte(req.channel, false), protocol::kLastBlockNumber, {}, block);
+  }
+  return AcyclicResult::ok(block);
+}
+
+// A complete command. DECISION (§5: class 2 may not use adapter commands): on C2 every
+// command goes to the RS4 unchecked, so an adapter code from class 2 is answered by the
+// RS4 as an unknown command (error telegram 0x53), as for any other unknown first byte.
+void Adapter::execute(std::span<const std::uint8_t> command, AcyclicChannel which, Channel& ch,
+                      TimePoint now) {
+  if (which == AcyclicChannel::kC2) {
+    ++counters_.rs4_commands;
+    ch.answers.push_back(execute_rs4_command(command));
+    return;
+  }
+  execute_adapter_command(command, ch, now);
+}
+
+void Adapter::execute_adapter_command(std::span<const std::uint8_t> command, Channel& ch,
+                                      TimePoint now) {
+  const auto parsed = protocol::parse_write_command(command);
+  if (!parsed) {
+    adapter_error(protocol::AdapterError::kTelegramNotProcessed, now);
+    return;
+  }
+  const auto& cmd = parsed.value();
+  if (const auto* rs4 = std::get_if<protocol::Rs4Command>(&cmd)) {
+    ++counters_.rs4_commands;
+    ch.answers.push_back(execute_rs4_command(rs4->bytes));
+    return;
+  }
+  ++counters_.adapter_commands;
+  if (std::holds_alternative<protocol::ResetCommand>(cmd)) {
+    // PROFI_CMD_RESET: the adapter restarts like power-on, the PROFIBUS link is down for
+    // ≈2 s (the owner drops it), the RS4 is not affected, the error memory is kept.
+    ++counters_.resets;
+    start_adapter(now, /*keep_errors=*/true);
+    link_down_until_ = now + config_.reset_link_down;
+    return;  // `ch` was cleared: no answer
+  }
+  if (const auto* fwd = std::get_if<protocol::GetRs4DataCommand>(&cmd)) {
+    forwarding_ = Forwarding{};
+    forwarding_.mask = fwd->mask;
+    forwarding_.permanent = fwd->mode == protocol::ForwardMode::kPermanent;
+    if (fwd->mask == 0) event_buffer_.clear();  // mask 0: stop all forwarding
+    capture_forwarding();
+  } else if (std::holds_alternative<protocol::GetVersionCommand>(cmd)) {
+    ch.answers.push_back(protocol::encode_version_answer(config_.version));
+  } else if (std::holds_alternative<protocol::GetLastErrorCommand>(cmd)) {
+    ch.answers.push_back(protocol::encode_last_error_answer(errors_.last_error()));
+  } else if (std::holds_alternative<protocol::GetErrorMemoryCommand>(cmd)) {
+    ch.answers.push_back(protocol::encode_error_memory_answer(errors_.memory()));
+  } else if (const auto* bad = std::get_if<protocol::RejectedCommand>(&cmd)) {
+    ++counters_.rejected_commands;
+    ch.answers.push_back(protocol::encode_rejection(*bad));  // 93 kind command
+  }
+}
+
+std::vector<std::uint8_t> Adapter::execute_rs4_command(std::span<const std::uint8_t> command) const {
+  return answer_rs4_command(scanner_, command);
+}
+
+}  // namespace rs4sim::rs4::adapter

@@ -1,0 +1,219 @@
+// Adapter: the cyclic process bytes (spec/rs4-profisafe.md §3) and the Proxy-Enable /
+// Proxy-Request / OSSD-release logic of §4 (manual §5.1, §7.1, §7.2).
+#include "rs4/adapter/adapter.h"
+
+#include <algorithm>
+
+namespace rs4sim::rs4::adapter {
+
+namespace {
+bool rs4_operational(scanner::OperatingState s) noexcept {
+  return s == scanner::OperatingState::kMeasuring || s == scanner::OperatingState::kError;
+}
+}  // namespace
+
+// ---- Data_Exchange -------------------------------------------------------------------
+void Adapter::on_outputs(std::span<const std::uint8_t> outputs, TimePoint now) {
+  now_ = now;
+  if (!powered_) return;
+  collect_rs4(now);
+  std::fill(output_pdu_.begin(), output_pdu_.end(), std::uint8_t{0});
+  std::copy_n(outputs.begin(), std::min(outputs.size(), kPduSize), output_pdu_.begin());
+  refresh_input(now);  // the response to this PDU carries the current input byte
+  const auto event = fdevice_.on_pdu(outputs, now);
+  if (event == profisafe::FDeviceEvent::kCrcError ||
+      event == profisafe::FDeviceEvent::kNumberError) {
+    // Table 5.3-3 0x2418: the PROFIsafe driver cannot check the cyclic output data.
+    adapter_error(protocol::AdapterError::kSafetyDriverCannotCheckOutputs, now);
+  }
+  if (fdevice_.sends_process_values()) {
+    if (event == profisafe::FDeviceEvent::kNew) apply_output_byte(fdevice_.output()[0], now);
+  } else {
+    // Fail-safe output values: restart low; the selected field pair is kept (a 0 from
+    // the safety layer is not a field pair the PLC chose, so no 0x2600).
+    output_byte_ = 0;
+    restart_bus_ = false;
+    drive_restart_input(now);
+  }
+  ++counters_.cyclic_exchanges;
+  errors_.end_cycle();
+  refresh_input(now);
+}
+
+void Adapter::on_outputs_cleared(dp::OutputClear why, TimePoint now) {
+  (void)why;
+  now_ = now;
+  if (!powered_) return;
+  output_byte_ = 0;
+  restart_bus_ = false;
+  drive_restart_input(now);
+  refresh_input(now);
+}
+
+void Adapter::read_inputs(std::span<std::uint8_t> inputs) {
+  std::fill(inputs.begin(), inputs.end(), std::uint8_t{0});
+  if (!powered_) return;
+  refresh_input(now_);
+  const auto pdu = fdevice_.response();  // empty while muted by fault injection
+  std::fill(input_pdu_.begin(), input_pdu_.end(), std::uint8_t{0});
+  std::copy_n(pdu.begin(), std::min(pdu.size(), kPduSize), input_pdu_.begin());
+  std::copy_n(pdu.begin(), std::min(pdu.size(), inputs.size()), inputs.begin());
+}
+
+// §3.2: restart bit → RS4 restart input; Proxy-Enable only at DP start-up and after the
+// PC adapter was removed; field pair 1..4 → RS4.
+void Adapter::apply_output_byte(std::uint8_t out, TimePoint now) {
+  output_byte_ = out;
+  const auto bits = decode_output_byte(out);
+  if (!proxy_enable_known_) {
+    proxy_enable_known_ = true;
+    proxy_enable_ = bits.proxy_enable;
+    // Proxy-Enable 0: the OSSD bit is released without the proxy (§3.2, §4).
+    if (!proxy_enable_ && rs4_up_ && !sync_running_) released_ = true;
+  }
+  restart_bus_ = bits.restart;
+  drive_restart_input(now);
+  apply_field_pair(bits.field_pair, now);
+}
+
+// §3.2: an invalid number is not forwarded, gives 0x2600 and OSSD bit 0; the bit is
+// released ≈500 ms after a valid number is present again.
+void Adapter::apply_field_pair(std::uint8_t pair, TimePoint now) {
+  if (pair >= 1 && pair <= 4) {
+    if (field_pair_error_) {
+      field_pair_error_ = false;
+      field_pair_release_at_ = now + config_.field_pair_release;
+    }
+    if (pair != field_pair_) {
+      field_pair_ = pair;
+      scanner_.select_field_pair(pair, now);
+    }
+    return;
+  }
+  if (field_pair_error_) {
+    last_error_at_ = now;  // the error persists: no going alarm yet
+    return;
+  }
+  field_pair_error_ = true;
+  field_pair_release_at_.reset();
+  ++counters_.field_pair_errors;
+  adapter_error(protocol::AdapterError::kWrongFieldPair, now);
+}
+
+void Adapter::drive_restart_input(TimePoint now) {
+  const bool want = restart_bus_ || restart_button_;
+  if (want == restart_driven_) return;
+  restart_driven_ = want;
+  scanner_.set_restart_input(want, now);
+}
+
+void Adapter::set_restart_button(bool pressed, TimePoint now) {
+  now_ = now;
+  restart_button_ = pressed;
+  if (!powered_) return;
+  drive_restart_input(now);
+  refresh_input(now);
+}
+
+// ---- §4: RS4 start-up, PC adapter, proxy ----------------------------------------------
+void Adapter::update_rs4_phase(TimePoint now) {
+  (void)now;
+  if (rs4_up_ || !rs4_operational(scanner_.status().state)) return;
+  rs4_up_ = true;  // §7.1.1: the RS4 is operational (≈30 s after power-on)
+  if (pc_attached_) {
+    released_ = true;  // PC adapter at start-up: no Proxy-Request, OSSD follows the RS4
+    return;
+  }
+  proxy_request_ = true;
+  if (proxy_enable_known_ && !proxy_enable_) released_ = true;
+}
+
+void Adapter::attach_pc_adapter(TimePoint now) {
+  now_ = now;
+  pc_attached_ = true;
+  // §3.1 bit 3: during a sync the RS232 is switched through only after the sync ends.
+  if (!sync_running_) rs232_through_ = true;
+  if (powered_) refresh_input(now);
+}
+
+void Adapter::detach_pc_adapter(TimePoint now) {
+  now_ = now;
+  const bool was = pc_attached_;
+  pc_attached_ = false;
+  rs232_through_ = false;
+  if (!powered_ || !was) return;
+  // §3.1 bit 3: on 1→0 the Proxy-Request bit is always set; Proxy-Enable is read again.
+  if (rs4_up_ && !sync_running_) proxy_request_ = true;
+  proxy_enable_known_ = false;
+  refresh_input(now);
+}
+
+std::error_code Adapter::proxy_sync_started(TimePoint now) {
+  now_ = now;
+  if (!powered_) return AdapterApiError::kPoweredOff;
+  if (!proxy_request_) return AdapterApiError::kNoSyncRequested;
+  proxy_request_ = false;  // §3.1 bit 2: reset when the check begins
+  sync_running_ = true;
+  refresh_input(now);
+  return {};
+}
+
+std::error_code Adapter::proxy_sync_succeeded(TimePoint now) {
+  now_ = now;
+  if (!powered_) return AdapterApiError::kPoweredOff;
+  if (!sync_running_) return AdapterApiError::kNoSyncRunning;
+  sync_running_ = false;
+  released_ = true;  // §4: Proxy-Enable 1 → OSSD released after a successful sync
+  rs232_through_ = pc_attached_;
+  refresh_input(now);
+  return {};
+}
+
+std::error_code Adapter::proxy_sync_failed(TimePoint now) {
+  now_ = now;
+  if (!powered_) return AdapterApiError::kPoweredOff;
+  if (!sync_running_) return AdapterApiError::kNoSyncRunning;
+  sync_running_ = false;
+  proxy_request_ = true;  // §3.1 bit 2: set again if the check fails
+  if (proxy_enable_) released_ = false;  // §4: OSSD unaffected unless the sync fails
+  rs232_through_ = pc_attached_;
+  refresh_input(now);
+  return {};
+}
+
+// ---- the input byte ----------------------------------------------------------------------
+void Adapter::refresh_input(TimePoint now) {
+  input_byte_ = powered_ ? compose_input_byte(now) : 0;
+  fdevice_.set_input(std::span<const std::uint8_t>(&input_byte_, 1));
+}
+
+// THE predicate of the OSSD bit (STYLE.md habit 7; spec §3.1, §3.2, §4). The bit may read
+// 1 only when every one of these holds; every other path leaves it 0:
+//  - the safety layer exchanges process values (FDevice kRun, no activate_FV),
+//  - the RS4 is operational and the parameter check of §4 passed or is not needed,
+//  - no field pair error, and ≥500 ms passed since a valid number returned,
+//  - both OSSDs of the RS4 are on.
+bool Adapter::ossd_release_allowed(TimePoint now) const noexcept {
+  if (!powered_ || !connected_ || !fdevice_.sends_process_values()) return false;
+  if (!rs4_up_ || !released_) return false;
+  if (field_pair_error_) return false;
+  if (field_pair_release_at_ && now < *field_pair_release_at_) return false;
+  return scanner_.ossd();
+}
+
+// The only function that composes the input byte; bit 7 comes from the predicate above.
+std::uint8_t Adapter::compose_input_byte(TimePoint now) const noexcept {
+  const auto st = scanner_.status();
+  InputBits bits;
+  bits.ossd = ossd_release_allowed(now);
+  bits.warning_output_active = st.warning_output;
+  bits.error = st.fault || st.state == scanner::OperatingState::kError || field_pair_error_;
+  bits.not_operational = !rs4_up_ || !released_ || !rs4_operational(st.state);
+  bits.rs232_active = rs232_through_;
+  bits.proxy_request = proxy_request_;
+  bits.protective_field = st.protective_violated;
+  bits.warning_field = st.warning_violated;
+  return encode_input_byte(bits);
+}
+
+}  // namespace rs4sim::rs4::adapter

@@ -1,0 +1,101 @@
+#include "rs4/adapter/rs4_commands.h"
+
+#include "rs4/protocol/measurement.h"
+#include "rs4/protocol/option_bytes.h"
+#include "rs4/protocol/telegram.h"
+#include "rs4/scanner/measurement.h"
+
+namespace rs4sim::rs4::adapter {
+
+namespace {
+
+protocol::TelegramPrefix prefix_of(const scanner::Scanner& rs4) {
+  const auto st = rs4.status();
+  protocol::TelegramPrefix p;
+  auto& o = p.options;
+  o.state = static_cast<protocol::OperatingState>(st.state);  // same values (§6 option 1)
+  o.flags.protective_field_occupied = st.protective_violated;
+  o.flags.warning_field_occupied = st.warning_violated;
+  o.flags.warning = st.contamination_warning;
+  o.flags.fault = st.fault;
+  o.flags.restart_interlock = st.restart_interlock;
+  o.flags.second_protective_field_occupied = st.second_protective_violated;
+  o.flags.second_warning_field_occupied = st.second_warning_violated;
+  o.first_field_pair = st.first_pair;
+  o.second_field_pair = st.second_pair;
+  return p;
+}
+
+std::vector<std::uint8_t> report_telegram(protocol::TelegramCode code, const scanner::Scanner& rs4,
+                                          const protocol::ErrorReport& report) {
+  std::vector<std::uint8_t> out;
+  if (code == protocol::TelegramCode::kErrorOccure) {
+    auto r = protocol::encode_telegram(protocol::ErrorTelegram{prefix_of(rs4), report});
+    if (r) out = std::move(r.value());
+  } else {
+    auto r = protocol::encode_telegram(protocol::WarningTelegram{prefix_of(rs4), report});
+    if (r) out = std::move(r.value());
+  }
+  return out;
+}
+
+bool scanning(const scanner::Scanner& rs4) {
+  const auto s = rs4.status().state;
+  return (s == scanner::OperatingState::kMeasuring || s == scanner::OperatingState::kError) &&
+         rs4.status().scan_counter != 0;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> error_telegram(const scanner::Scanner& rs4, std::uint16_t number,
+                                         std::uint16_t parameter, std::uint16_t function) {
+  return report_telegram(protocol::TelegramCode::kErrorOccure, rs4, {number, parameter, function});
+}
+
+std::vector<std::uint8_t> event_telegram(const scanner::Scanner& rs4, const scanner::Rs4Event& e) {
+  const auto code = e.kind == scanner::Rs4Event::Kind::kError ? protocol::TelegramCode::kErrorOccure
+                                                              : protocol::TelegramCode::kWarningOccure;
+  return report_telegram(code, rs4, {e.number, e.parameter, e.function});
+}
+
+std::vector<std::uint8_t> alive_telegram(const scanner::Scanner& rs4) {
+  auto r = protocol::encode_telegram(protocol::AliveTelegram{prefix_of(rs4)});
+  return r ? std::move(r.value()) : std::vector<std::uint8_t>{};
+}
+
+std::vector<std::uint8_t> measurement_telegram(const scanner::Scanner& rs4) {
+  const auto& window = rs4.parameters().measurement;
+  const auto flagged = scanner::measurement_contour(rs4.last_scan(), window);
+  std::vector<std::uint8_t> out;
+  if (protocol::encode_prefix(static_cast<std::uint8_t>(protocol::TelegramCode::kMess16Rt),
+                              prefix_of(rs4), out)) {
+    return {};
+  }
+  if (protocol::encode_measurement_data(rs4.last_scan().scan_number, window.resolution,
+                                        window.start, window.stop, flagged, out)) {
+    return {};
+  }
+  return out;
+}
+
+std::vector<std::uint8_t> answer_rs4_command(const scanner::Scanner& rs4,
+                                             std::span<const std::uint8_t> command) {
+  const auto prefix = protocol::decode_prefix(command);
+  const std::uint8_t code = command.empty() ? 0 : command[0];
+  if (prefix && prefix.value().size == command.size()) {  // commands without data
+    if (code == kRs4RequestOneScan) {
+      if (!scanning(rs4)) {
+        return error_telegram(rs4, kRs4ErrorNoScan, static_cast<std::uint16_t>(rs4.status().state),
+                              kRs4ErrorFunctionCommands);
+      }
+      auto t = measurement_telegram(rs4);
+      if (!t.empty()) return t;
+    } else if (code == static_cast<std::uint8_t>(protocol::TelegramCode::kAlive)) {
+      return alive_telegram(rs4);
+    }
+  }
+  // §5.3: a command the RS4 does not know is answered with an error telegram.
+  return error_telegram(rs4, kRs4ErrorUnknownCommand, code, kRs4ErrorFunctionCommands);
+}
+
+}  // namespace rs4sim::rs4::adapter
