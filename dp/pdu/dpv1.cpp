@@ -79,6 +79,7 @@ using namespace internal;
 
 Result<C1Request> decode_c1_request(std::span<const std::uint8_t> du) {
   if (du.empty()) return PduError::kTooShort;
+  if (du.size() > wire::kMaxDpDu) return PduError::kTooLong;
   switch (du[0]) {
     case fn(Dpv1Function::kRead): {
       BOOST_OUTCOME_TRY(r, decode_read_request(du));
@@ -98,6 +99,7 @@ Result<C1Request> decode_c1_request(std::span<const std::uint8_t> du) {
 
 Result<C1Response> decode_c1_response(std::span<const std::uint8_t> du) {
   if (du.empty()) return PduError::kTooShort;
+  if (du.size() > wire::kMaxDpDu) return PduError::kTooLong;
   if ((du[0] & kDpv1ErrorBit) != 0) {
     BOOST_OUTCOME_TRY(e, decode_negative(du));
     return C1Response{e};

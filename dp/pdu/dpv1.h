@@ -110,12 +110,12 @@ struct Dpv1Error {
 using C1Request = std::variant<ReadRequest, WriteRequest, AlarmAck>;
 using C1Response = std::variant<ReadResponse, WriteResponse, AlarmAck, Dpv1Error>;
 
-// Slave side. Errors: kTooShort, kBadFunctionCode (anything but 5E/5F/5C — the slave
+// Slave side. Errors: kTooShort, kTooLong (DU > 244), kBadFunctionCode (anything but 5E/5F/5C — the slave
 // leaves data exchange, §3.3), kLengthMismatch (Read.req not exactly 4 bytes, Write data
 // count ≠ Length), kValueOutOfRange (Read Length 0 or > 240, Write Length 0).
 // A malformed Read/Write is answered with a negative response (see c1_reject_response).
 Result<C1Request> decode_c1_request(std::span<const std::uint8_t> du);
-// Master side. Errors: kTooShort, kBadFunctionCode, kLengthMismatch (Read.res data count ≠
+// Master side. Errors: kTooShort, kTooLong (DU > 244), kBadFunctionCode, kLengthMismatch (Read.res data count ≠
 // Length, Write.res/Alarm_Ack/Neg.res not exactly 4 bytes), kValueOutOfRange (Length > 240).
 Result<C1Response> decode_c1_response(std::span<const std::uint8_t> du);
 

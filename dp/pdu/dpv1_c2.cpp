@@ -89,6 +89,7 @@ Result<ResourceManagerResponse> decode_rm_response(std::span<const std::uint8_t>
 
 Result<C2Request> decode_c2_request(std::span<const std::uint8_t> du) {
   if (du.empty()) return PduError::kTooShort;
+  if (du.size() > wire::kMaxDpDu) return PduError::kTooLong;  // found by fuzz_pdu_dpv1_c2
   switch (du[0]) {
     case fn(Dpv1Function::kInitiate): {
       BOOST_OUTCOME_TRY(r, decode_initiate_request(du));
@@ -120,6 +121,7 @@ Result<C2Request> decode_c2_request(std::span<const std::uint8_t> du) {
 
 Result<C2Response> decode_c2_response(std::span<const std::uint8_t> du) {
   if (du.empty()) return PduError::kTooShort;
+  if (du.size() > wire::kMaxDpDu) return PduError::kTooLong;
   if ((du[0] & kDpv1ErrorBit) != 0) {
     BOOST_OUTCOME_TRY(e, decode_negative(du));
     return C2Response{e};

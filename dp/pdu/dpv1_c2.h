@@ -102,8 +102,9 @@ using C2Request = std::variant<InitiateRequest, Abort, ReadRequest, WriteRequest
 using C2Response =
     std::variant<InitiateResponse, Abort, ReadResponse, WriteResponse, DataTransport, Idle, Dpv1Error>;
 
-// Errors: kTooShort, kBadFunctionCode, kLengthMismatch (address/data counts disagree with
-// the bytes present), kValueOutOfRange (Abort subnet > 2 / instance > 2, Idle > 2 bytes).
+// Errors: kTooShort, kTooLong (DU > 244, or Idle > 2 bytes), kBadFunctionCode,
+// kLengthMismatch (address/data counts disagree with the bytes present), kValueOutOfRange
+// (Abort subnet > 2 / instance > 2).
 Result<ResourceManagerResponse> decode_rm_response(std::span<const std::uint8_t> du);
 Result<C2Request> decode_c2_request(std::span<const std::uint8_t> du);
 Result<C2Response> decode_c2_response(std::span<const std::uint8_t> du);

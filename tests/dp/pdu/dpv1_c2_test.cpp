@@ -116,6 +116,12 @@ TEST(PduDpv1C2, MalformedPdus) {
   EXPECT_EQ(req({0x48, 0x00, 0x00}), PduError::kTooLong);
   EXPECT_EQ(req({0x51, 0x00, 0x05, 0x03, 0xAA}), PduError::kLengthMismatch);
   EXPECT_EQ(req({0x5C, 0x00, 0x01, 0x09}), PduError::kBadFunctionCode);  // Alarm_Ack is C1 only
+  // Initiate.res whose S_Len (240) is consistent with the bytes present but makes the PDU
+  // 252 bytes, beyond the 244-byte DP maximum (found by fuzz_pdu_dpv1_c2).
+  Bytes long_res = {0x57, 0xF0, 1, 0, 0, 0, 0x2B, 0x34, 0x57, 0xF0, 0x01, 0x00};
+  long_res.resize(12 + 240, 0xFF);
+  EXPECT_EQ(res(long_res), PduError::kTooLong);
+  EXPECT_EQ(req(long_res), PduError::kTooLong);
   EXPECT_EQ(req({0x56, 0x30, 0x00, 0x64}), PduError::kBadFunctionCode);
   fdl::DataUnit out;
   EXPECT_EQ(error_of(encode(Abort{AbortSubnet::kNone, AbortInstance::kUser, 16, 0}, out)),

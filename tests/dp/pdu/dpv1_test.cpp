@@ -126,6 +126,8 @@ TEST(PduDpv1, MalformedResponses) {
   EXPECT_EQ(err({0xDE, 0x80, 0xB0}), PduError::kTooShort);
   EXPECT_EQ(err({0xC0, 0x80, 0xB0, 0x00}), PduError::kBadFunctionCode);  // 0x40 is no DPV1 function
   EXPECT_EQ(err({0x12}), PduError::kBadFunctionCode);
+  EXPECT_EQ(error_of(decode_c1_request(Bytes(245, 0x5F))), PduError::kTooLong);
+  EXPECT_EQ(error_of(decode_c1_response(Bytes(245, 0x5E))), PduError::kTooLong);
 }
 
 TEST(PduDpv1, EncoderRanges) {
