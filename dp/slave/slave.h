@@ -67,6 +67,8 @@ class Slave final : public Station, public SlaveControl {
  public:
   // Throws std::system_error (dp.slave category) if `config.validate()` fails.
   Slave(const SlaveConfig& config, SlaveApplication& app);
+  Slave(const Slave&) = delete;  // the application holds a SlaveControl& to this object
+  Slave& operator=(const Slave&) = delete;
 
   // ---- Station ----
   [[nodiscard]] std::uint8_t address() const override { return address_; }
@@ -93,7 +95,7 @@ class Slave final : public Station, public SlaveControl {
   [[nodiscard]] bool diag_flag() const { return diag_flag_ || stat_diag_; }
   [[nodiscard]] bool dpv1_active() const { return dpv1_.has_value(); }
   [[nodiscard]] const AlarmQueue& alarms() const { return alarms_; }
-  [[nodiscard]] bool c2_connected() const { return c2_.bound; }
+  [[nodiscard]] bool c2_connected() const { return c2_.bound && c2_.established; }
   // The Slave_Diag DU the slave would send now (without fetching it).
   [[nodiscard]] fdl::DataUnit diagnosis() const;
   [[nodiscard]] const SlaveCounters& counters() const { return counters_; }
