@@ -54,6 +54,11 @@ std::optional<fdl::Telegram> Master::take_transmit() {
   return t;
 }
 
+void Master::on_malformed_frame(std::error_code why) {
+  (void)why;
+  ++counters_.malformed_frames;
+}
+
 std::optional<TimePoint> Master::next_deadline() const {
   if (!started_) return TimePoint{};  // run on_time() at once
   if (phase_ == MasterPhase::kListening) return listen_until_;

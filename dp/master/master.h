@@ -51,6 +51,7 @@ struct MasterCounters {
   std::uint64_t replies = 0;          // replies matched to the outstanding request
   std::uint64_t slot_timeouts = 0;    // TSL expiries (each one a retry or a no-answer)
   std::uint64_t ignored_telegrams = 0;  // not for us, requests of other stations, late replies
+  std::uint64_t malformed_frames = 0;   // reported by the link's decoder
   std::uint64_t global_controls = 0;
   Duration last_cycle{};
   Duration max_cycle{};
@@ -67,6 +68,9 @@ class Master final : public Station {
   void on_time(TimePoint now) override;
   [[nodiscard]] std::optional<TimePoint> next_deadline() const override;
   std::optional<fdl::Telegram> take_transmit() override;
+  // A frame the link's decoder rejected (§1.10): counted; a garbled reply is handled like
+  // a missing one, by the slot time and a retry with the same FCB (§1.8).
+  void on_malformed_frame(std::error_code why) override;
 
   // --- User API ---
   // Outputs sent with every Data_Exchange; length must equal the configured length.

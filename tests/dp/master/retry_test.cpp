@@ -88,6 +88,16 @@ TEST(MasterRetry, FirstFrameIsNotRetried) {
   EXPECT_EQ(f.events<SlaveFault>().size(), 1U);
 }
 
+TEST(MasterRetry, GarbledReplyIsRetriedAfterTheSlotTime) {
+  MasterFixture f;
+  f.bring_to_dx();
+  const Bytes dx = f.step();
+  f.master.on_malformed_frame(make_error_code(fdl::DecodeError::kBadFcs));
+  EXPECT_EQ(f.master.counters().malformed_frames, 1U);
+  EXPECT_TRUE(f.poke().empty()) << "no immediate repeat";
+  EXPECT_EQ(hex(f.step()), hex(dx)) << "same FCB after the slot time";
+}
+
 TEST(MasterRetry, RetryLimitIsConfigurable) {
   MasterConfig cfg = example_master();
   cfg.bus.max_retry_limit = 3;
