@@ -212,6 +212,15 @@ void MemoryBus::clear_faults() { faults_.clear(); }
 
 void MemoryBus::set_silenced(std::uint8_t address, bool silenced) { port(address).silenced = silenced; }
 
+void MemoryBus::send_raw(std::uint8_t to, std::span<const std::uint8_t> bytes) {
+  if (to >= kMaxStations || !ports_[to]) return;
+  Pending p{clock_.now(), sequence_++, to, {}};
+  const std::size_t n = std::min(bytes.size(), p.bytes.capacity());
+  p.bytes.assign(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(n));
+  queue_.push_back(std::move(p));
+  std::push_heap(queue_.begin(), queue_.end());
+}
+
 void MemoryBus::deliver(Pending& pending) {
   Port& to = *ports_[pending.to];
   if (to.silenced) {

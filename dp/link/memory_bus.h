@@ -95,6 +95,10 @@ class MemoryBus {
   void clear_fault(FaultId id);
   void clear_faults();
   void set_silenced(std::uint8_t address, bool silenced);
+  // Puts arbitrary bytes (≤ 255, e.g. a hand-made or garbage frame) on the wire to the
+  // station at `to`, arriving now; they go through its decoder like any
+  // frame. For tests and fuzzing. Unknown `to`: ignored.
+  void send_raw(std::uint8_t to, std::span<const std::uint8_t> bytes);
 
   void set_observer(BusObserver observer) { observer_ = std::move(observer); }
 

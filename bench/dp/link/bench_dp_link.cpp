@@ -1,0 +1,92 @@
+// bench_dp_link: the in-memory bus against the wire it simulates.
+//
+// BM_MemoryBusCycle125: one full poll cycle of our master over 125 generic slaves in
+// Data_Exch (one Data_Exchange each), processed by the MemoryBus. Reported with the wire
+// time the same telegrams would take at 12 Mbit/s (spec/profibus-dp.md §1.1/§1.7: 11 bit
+// per character, TSYN 33 bit before each request, min TSDR 11 bit before each reply) and
+// the ratio wire time / simulation time (target ≥ 20).
+// BM_MemoryPerSlave: bytes one generic slave costs (object + heap + its bus port).
+#include "dp/devices/generic_bus.h"
+
+#include <benchmark/benchmark.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+namespace {
+std::atomic<std::size_t> g_allocated{0};
+}  // namespace
+
+void* operator new(std::size_t n) {
+  g_allocated += n;
+  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace {
+
+using namespace rs4sim;
+using namespace std::chrono_literals;
+
+dp::devices::GenericBusConfig bus_of_125() {
+  dp::devices::GenericBusConfig c;
+  c.master_address = 0;
+  c.cycle_target = 1us;  // cycles back to back
+  for (std::uint8_t a = 1; a <= 125; ++a) c.slaves.push_back({a, 0x1234, {0x31}, true});  // 2 B in/out
+  return c;
+}
+
+void BM_MemoryBusCycle125(benchmark::State& state) {
+  dp::devices::GenericBus b(bus_of_125());
+  if (!b.run_until([&] { return b.slaves_in_data_exchange() == 125; }, 5s)) {
+    state.SkipWithError("slaves did not reach Data_Exch");
+    return;
+  }
+  b.run_for(50ms);  // steady state
+  std::uint64_t wire_bits = 0, telegrams = 0;
+  b.bus().set_observer([&](const dp::link::BusEvent& e) {
+    const auto& t = *e.telegram;
+    const bool request = t.type == dp::fdl::FrameType::kToken ||
+                         (t.type != dp::fdl::FrameType::kShortAck && t.fc.is_request());
+    wire_bits += e.wire.size() * 11 + (request ? 33 : 11);
+    ++telegrams;
+  });
+  std::uint64_t cycles = 0;
+  for (auto _ : state) {
+    const auto target = b.master().counters().cycles + 1;
+    b.run_until([&] { return b.master().counters().cycles >= target; }, 1s);
+    ++cycles;
+  }
+  const double wire_s_per_cycle = static_cast<double>(wire_bits) / 12e6 / static_cast<double>(cycles);
+  state.counters["telegrams_per_cycle"] = static_cast<double>(telegrams) / static_cast<double>(cycles);
+  state.counters["wire_us_per_cycle_12M"] = wire_s_per_cycle * 1e6;
+  // Ratio: wire time of a cycle / simulation time of a cycle (s per iteration, inverted rate).
+  state.counters["x_faster_than_wire"] =
+      benchmark::Counter(wire_s_per_cycle, benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_MemoryBusCycle125)->Unit(benchmark::kMicrosecond);
+
+void BM_MemoryPerSlave(benchmark::State& state) {
+  std::size_t per_slave = 0;
+  for (auto _ : state) {
+    dp::ManualClock clock;
+    dp::link::MemoryBus bus(clock);
+    std::vector<std::unique_ptr<dp::devices::GenericSlave>> slaves;
+    slaves.reserve(125);
+    const std::size_t before = g_allocated.load();
+    for (std::uint8_t a = 1; a <= 125; ++a) {
+      slaves.push_back(std::make_unique<dp::devices::GenericSlave>(dp::devices::GenericSlaveConfig{a, 0x1234, {0x31}, true}));
+      bus.attach(*slaves.back());
+    }
+    per_slave = (g_allocated.load() - before) / 125;
+    benchmark::DoNotOptimize(slaves.data());
+  }
+  state.counters["bytes_per_slave"] = static_cast<double>(per_slave);
+  state.counters["sizeof_GenericSlave"] = static_cast<double>(sizeof(dp::devices::GenericSlave));
+}
+BENCHMARK(BM_MemoryPerSlave)->Unit(benchmark::kMillisecond);
+
+}  // namespace
