@@ -220,9 +220,9 @@ void Adapter::enter_data_exchange(TimePoint now) {
 }
 
 void Adapter::on_c2_event(dp::C2Event ev, std::uint8_t master, TimePoint now) {
-  (void)master, (void)now;
-  if (ev != dp::C2Event::kConnected || c2_.answers.empty()) c2_.clear();
-  if (ev == dp::C2Event::kConnected) c2_.clear();
+  (void)ev, (void)master, (void)now;
+  // A new or ended class 2 connection starts without leftover blocks or answers.
+  c2_.clear();
 }
 
 // ---- time ----------------------------------------------------------------------------------

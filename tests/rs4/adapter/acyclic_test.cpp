@@ -128,6 +128,20 @@ TEST_F(Acyclic, Rs4CommandsAreAnsweredByTheRs4) {
   }));
 }
 
+TEST_F(Acyclic, AliveTelegramCarriesTheOptionBytes) {
+  rig.run(31s);
+  rig.write(Rig::block({0x14, 0x01}));
+  EXPECT_EQ(rig.read_answer(), (Bytes{
+      0x14,  // COM_CMD_ALIVE
+      0x0B,  // option 1: 3 option bytes, state 010 measuring
+      0x90,  // option 2: bit 4 restart interlock (start interlock), bit 7 option 3 follows
+      0x81,  // option 3: field pair 1, bit 7
+  }));
+  rig.restart_pulse();
+  rig.write(Rig::block({0x14, 0x01}));
+  EXPECT_EQ(rig.read_answer(), (Bytes{0x14, 0x0B, 0x80, 0x81}));  // as in spec §11
+}
+
 TEST_F(Acyclic, Class2MayNotUseAdapterCommands) {
   rig.write(Rig::block({0x90}), 2, AcyclicChannel::kC2, true);
   const auto a = rig.read_answer(240, AcyclicChannel::kC2);
