@@ -1,0 +1,136 @@
+#include "rs4/device/rs4_device.h"
+
+#include "gsd/device_gsd.h"
+
+namespace rs4sim::rs4::device {
+
+namespace {
+
+adapter::AdapterConfig adapter_config(const Rs4DeviceConfig& c) {
+  adapter::AdapterConfig a = c.adapter;
+  a.scanner = c.scanner;
+  a.scanner.boot_duration = c.boot_time;
+  a.switches = c.switches;
+  a.init_duration = c.adapter_init;
+  a.reset_link_down = c.reset_link_down;
+  return a;
+}
+
+}  // namespace
+
+dp::SlaveConfig rs4_slave_config(std::uint8_t address) {
+  dp::SlaveConfig s;
+  s.address = address;
+  s.ident_number = gsd::kRs4simIdentNumber;  // Ident_Number 0x5234 (docs/gsd.md)
+  s.dpv1 = true;                             // DPV1_Slave = 1
+  s.fail_safe_supported = false;             // Fail_Safe = 0
+  s.wd_base_1ms_supported = false;           // WD_Base_1ms_supp = 0
+  s.c1_max_data_length = 240;                // C1_Max_Data_Len
+  s.c2_supported = true;                     // C2_Read_Write_supp = 1
+  s.c2_max_data_length = 240;                // C2_Max_Data_Len
+  s.c2_rm_send_timeout = 100;                // C2_Response_Timeout = 1 s
+  s.alarm_capacity = 8;                      // Alarm_Sequence_Mode_Count = 8
+  s.alarm_sequence_numbers = 8;
+  s.max_diag_length = 32;                    // Max_Diag_Data_Len = 32
+  return s;
+}
+
+Rs4Device::Rs4Device(const Rs4DeviceConfig& config) : adapter_(adapter_config(config)) {
+  const auto addr = adapter::station_address(config.switches);
+  fresh_slave(addr ? addr.value() : std::uint8_t{126});
+}
+
+// A new dp::Slave in Wait_Prm. The old one is replaced in place, so the adapter's
+// SlaveControl pointer is valid again as soon as the new slave attaches itself.
+void Rs4Device::fresh_slave(std::uint8_t address) {
+  slave_.emplace(rs4_slave_config(address), adapter_);
+}
+
+void Rs4Device::power_on(TimePoint now) {
+  if (powered_) return;
+  powered_ = true;
+  link_down_ = false;
+  pending_.clear();
+  ++counters_.power_ups;
+  adapter_.power_on(now);  // reads the address switches (§2)
+  const auto addr = adapter_.station_address();
+  fresh_slave(addr ? *addr : slave_->address());
+}
+
+void Rs4Device::power_off(TimePoint now) {
+  powered_ = false;
+  link_down_ = false;
+  pending_.clear();
+  adapter_.power_off(now);
+}
+
+void Rs4Device::power_cycle(TimePoint now) {
+  power_off(now);
+  power_on(now);
+}
+
+bool Rs4Device::on_bus(TimePoint now) const noexcept {
+  (void)now;
+  return powered_ && adapter_.station_address().has_value() && !link_down_;
+}
+
+void Rs4Device::on_telegram(const dp::fdl::Telegram& t, TimePoint now) {
+  if (!on_bus(now)) {
+    ++counters_.ignored_while_silent;
+    return;
+  }
+  slave_->on_telegram(t, now);
+  after_core_call(now);
+}
+
+void Rs4Device::on_time(TimePoint now) {
+  if (!powered_) return;
+  if (on_bus(now)) {
+    slave_->on_time(now);
+  } else {
+    // The slave is bypassed while the link is down: the adapter (and its scanner) runs on.
+    const auto d = adapter_.next_deadline();
+    if (d && now >= *d) adapter_.on_time(now);
+  }
+  after_core_call(now);
+}
+
+// Link drop and return around PROFI_CMD_RESET (§5.3). The reply the slave queued for the
+// request that carried the reset still goes out; then the station is silent until the
+// adapter's link-down time has passed and comes back as a fresh slave in Wait_Prm.
+void Rs4Device::after_core_call(TimePoint now) {
+  (void)now;
+  const bool wants_down = adapter_.wants_link_down_until().has_value();
+  if (wants_down && !link_down_) {
+    while (auto t = slave_->take_transmit()) pending_.push_back(std::move(*t));
+    link_down_ = true;
+    ++counters_.link_drops;
+    fresh_slave(slave_->address());
+  } else if (!wants_down && link_down_) {
+    link_down_ = false;
+    const auto addr = adapter_.station_address();
+    fresh_slave(addr ? *addr : slave_->address());
+  }
+}
+
+std::optional<TimePoint> Rs4Device::next_deadline() const {
+  if (!powered_) return std::nullopt;
+  if (link_down_) return adapter_.next_deadline();
+  return slave_->next_deadline();
+}
+
+std::optional<dp::fdl::Telegram> Rs4Device::take_transmit() {
+  if (!pending_.empty()) {
+    auto t = std::move(pending_.front());
+    pending_.pop_front();
+    return t;
+  }
+  if (!powered_ || link_down_) return std::nullopt;
+  return slave_->take_transmit();
+}
+
+void Rs4Device::on_malformed_frame(std::error_code why) {
+  if (powered_ && !link_down_) slave_->on_malformed_frame(why);
+}
+
+}  // namespace rs4sim::rs4::device
