@@ -21,19 +21,26 @@ std::error_code Dpv1Client::submit(Dpv1Job job) {
   return {};
 }
 
-std::optional<fdl::DataUnit> Dpv1Client::next_pdu(TimePoint now) {
+fdl::DataUnit Dpv1Client::request_pdu(const Dpv1Job& j) const {
   fdl::DataUnit du;
-  if (active_) return du;  // empty poll (§3.4 step 3)
-  if (queue_.empty()) return std::nullopt;
-  active_ = Active{std::move(queue_.front()), now + timeout_};
-  queue_.pop_front();
-  const Dpv1Job& j = active_->job;
   if (j.operation == Dpv1Operation::kRead) {
     (void)pdu::encode(pdu::ReadRequest{j.slot, j.index, j.length}, du);
   } else {
     (void)pdu::encode(pdu::WriteRequest{j.slot, j.index, j.data}, du);
   }
   return du;
+}
+
+std::optional<fdl::DataUnit> Dpv1Client::next_pdu(TimePoint now) {
+  if (active_) {
+    if (!active_->resend) return fdl::DataUnit{};  // empty poll (§3.4 step 3)
+    active_->resend = false;
+    return request_pdu(active_->job);
+  }
+  if (queue_.empty()) return std::nullopt;
+  active_ = Active{std::move(queue_.front()), now + timeout_};
+  queue_.pop_front();
+  return request_pdu(active_->job);
 }
 
 Dpv1Result Dpv1Client::result_for(const Dpv1Job& job) const {
@@ -67,8 +74,12 @@ void Dpv1Client::on_reply(const Reply& r, EventQueue& events) {
     finish_with(make_error_code(MasterErrc::kSapNotEnabled), events);
     return;
   }
+  if (!r.short_ack && r.status == S::kNoResource && !r.has_saps) {
+    active_->resend = true;  // busy with an earlier request: try again next turn
+    return;
+  }
   if (!r.carries_data() || !r.from_saps(pdu::sap::kMasterMsac1, pdu::sap::kMsacC1)) {
-    const bool rejected = !r.short_ack && (r.status == S::kUserError || r.status == S::kNoResource);
+    const bool rejected = !r.short_ack && r.status == S::kUserError;
     finish_with(make_error_code(rejected ? MasterErrc::kServiceRejected
                                          : MasterErrc::kInvalidResponse),
                 events);

@@ -7,7 +7,9 @@
 // 51 that carry no DU (DSAP/SSAP only, e.g. `68 05 05 68 85 82 7C 33 33 E9 16`) until the
 // reply carries the response or the negative response, or the C1 response timeout
 // (counted from the first transmission of the request) expires. One request at a time per
-// slave; further requests wait in a FIFO.
+// slave; further requests wait in a FIFO. A reply RR (no resources: the slave still
+// works on an earlier request, §3.4 [VPC3+C p56]) makes the master send the request
+// again on its next turn, until the timeout.
 
 #include "dp/master/event_queue.h"
 #include "dp/master/events.h"
@@ -66,7 +68,9 @@ class Dpv1Client {
   struct Active {
     Dpv1Job job;
     TimePoint deadline;
+    bool resend = false;  // the slave answered RR (no free buffer): send the request again
   };
+  [[nodiscard]] fdl::DataUnit request_pdu(const Dpv1Job& j) const;
   void complete(Dpv1Result r, EventQueue& events);
   void finish_with(std::error_code ec, EventQueue& events);
   void on_response(const pdu::C1Response& resp, EventQueue& events);

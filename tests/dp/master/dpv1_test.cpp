@@ -161,6 +161,22 @@ TEST(MasterDpv1, RsOnSap51IsSapNotEnabled) {
   EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kDataExchange);
 }
 
+TEST(MasterDpv1, NoResourceRepeatsTheRequest) {
+  MasterFixture f;
+  f.bring_to_dx();
+  ASSERT_TRUE(f.master.read(5, 0, 1, 16));
+  const Bytes req = after_dx(f);
+  f.reply({0x10, 0x02, 0x05,
+           0x02,  // FC RR: no resources (slave still busy with an earlier request)
+           fcs({0x02, 0x05, 0x02}), 0x16});
+  EXPECT_TRUE(f.events<Dpv1Result>().empty());
+  const Bytes again = after_dx(f);
+  ASSERT_EQ(again.size(), req.size()) << "the request PDU again, not an empty poll";
+  EXPECT_EQ(hex(Bytes(again.begin() + 7, again.end() - 2)), "33 33 5E 00 01 10");
+  f.reply({0xE5});
+  EXPECT_EQ(after_dx(f).size(), 11U) << "then empty polls";
+}
+
 TEST(MasterDpv1, MismatchedResponseIsInvalid) {
   MasterFixture f;
   f.bring_to_dx();
