@@ -47,7 +47,10 @@ struct MemoryBus::Port final : fdl::DecoderSink {
     if (is_request(t) && t.da != fdl::kBroadcastAddress) last_requester = t.sa;
     station->on_telegram(t, now);
   }
-  void on_decode_error(std::error_code) override { ++counters.malformed; }
+  void on_decode_error(std::error_code e) override {
+    ++counters.malformed;
+    station->on_malformed_frame(e);  // Station contract step 4
+  }
 };
 
 struct MemoryBus::Pending {
@@ -128,10 +131,13 @@ std::optional<std::uint8_t> MemoryBus::route(Port& from, const fdl::Telegram& t)
   return to;
 }
 
-TimePoint MemoryBus::arrival_time(const fdl::Telegram& t, std::size_t bytes) {
+TimePoint MemoryBus::arrival_time(const Port& from, const fdl::Telegram& t, std::size_t bytes) {
   if (!config_.wire_model) return clock_.now();
   const BaudRate baud = *config_.wire_model;
-  const std::uint32_t gap = is_request(t) ? kTsynBits : config_.min_tsdr_bits;  // §1.7
+  // §1.7: TSYN before a request; before a reply the responder's own min TSDR (from its
+  // Set_Prm), never less than the configured floor.
+  const std::uint32_t gap =
+      is_request(t) ? kTsynBits : std::max<std::uint32_t>(config_.min_tsdr_bits, from.station->min_tsdr_bits());
   // Rounded up to the clock tick once per telegram (idle gap + characters).
   line_free_ = std::max(clock_.now(), line_free_) + bit_time(baud, gap + telegram_bits(bytes));
   return line_free_;
@@ -151,7 +157,7 @@ void MemoryBus::transmit(Port& from, const fdl::Telegram& t) {
     ev.fate = Fate::kUnroutable;
   } else {
     ev.to = to;
-    ev.arrival = arrival_time(t, encode_buf_.size());
+    ev.arrival = arrival_time(from, t, encode_buf_.size());
     if (*to == fdl::kBroadcastAddress) {
       for (Port* p : order_) {
         if (p != &from) schedule(from, p->station->address(), ev.arrival, encode_buf_);

@@ -33,7 +33,9 @@ namespace rs4sim::dp::link {
 struct MemoryBusConfig {
   // nullopt: telegrams arrive at the instant they are sent (pure logic tests).
   std::optional<BaudRate> wire_model;
-  std::uint32_t min_tsdr_bits = kMinTsdrBits;  // gap before a reply when modelling the wire
+  // Floor for the gap before a reply; the responder's Station::min_tsdr_bits() applies
+  // when larger (a slave reports what Set_Prm byte 3 set, §1.7).
+  std::uint32_t min_tsdr_bits = kMinTsdrBits;
 };
 
 enum class FaultKind : std::uint8_t { kDrop, kCorrupt, kDelay };
@@ -122,7 +124,7 @@ class MemoryBus {
   void drain(Port& p);
   void transmit(Port& from, const fdl::Telegram& t);
   std::optional<std::uint8_t> route(Port& from, const fdl::Telegram& t);
-  TimePoint arrival_time(const fdl::Telegram& t, std::size_t bytes);
+  TimePoint arrival_time(const Port& from, const fdl::Telegram& t, std::size_t bytes);
   Fate schedule(Port& from, std::uint8_t to, TimePoint arrival, std::span<const std::uint8_t> wire);
   std::optional<Fault> match_fault(FaultKind kind, std::uint8_t from, std::uint8_t to);
   void deliver(Pending& p);

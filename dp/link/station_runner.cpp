@@ -59,7 +59,10 @@ void StationRunner::on_telegram(const fdl::Telegram& t) {
   for (Station* s : stations_) s->on_telegram(t, now_);
 }
 
-void StationRunner::on_decode_error(std::error_code) { ++counters_.malformed; }
+void StationRunner::on_decode_error(std::error_code e) {
+  ++counters_.malformed;
+  for (Station* s : stations_) s->on_malformed_frame(e);  // Station contract step 4
+}
 
 void StationRunner::on_transport_error(std::error_code e) {
   last_error_ = e;

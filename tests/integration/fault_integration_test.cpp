@@ -55,6 +55,7 @@ TEST_F(FaultIntegration, ACorruptedRequestIsRejectedByTheSlaveDecoderAndRetried)
   b.bus().inject({FaultKind::kCorrupt, 1, 7, 1, {}, 5 * 8 + 2});  // a bit in SA / FC area
   b.run_for(100ms);
   EXPECT_EQ(b.bus().counters(7).malformed, 1U);
+  EXPECT_EQ(b.slave(7).slave().counters().malformed_dropped, 1U);  // on_malformed_frame()
   EXPECT_EQ(b.bus().counters(1).corrupted, 1U);
   EXPECT_EQ(retries(7), before + 1);
   EXPECT_EQ(b.slaves_in_data_exchange(), 3U);
