@@ -137,7 +137,9 @@ class Adapter final : public dp::SlaveApplication {
   [[nodiscard]] std::optional<TimePoint> wants_link_down_until() const noexcept;
 
   // ---- scene and user actions -----------------------------------------------------------
-  scanner::Scanner& scanner() noexcept { return scanner_; }  // scene, faults, contamination
+  // Scene, faults, contamination. After a change, run on_time(now) (the owner's loop does)
+  // so that the input byte follows; the byte on the wire is composed fresh in read_inputs.
+  scanner::Scanner& scanner() noexcept { return scanner_; }
   [[nodiscard]] const scanner::Scanner& scanner() const noexcept { return scanner_; }
   void set_restart_button(bool pressed, TimePoint now);     // button on X1 (§1)
   void attach_pc_adapter(TimePoint now);                    // reed contact of X5 (§4)

@@ -29,6 +29,7 @@ void Adapter::collect_rs4(TimePoint now) {
   // A fault that is still present keeps the error "coming" (no going alarm, §7.2).
   if (scanner_.status().fault || field_pair_error_) last_error_at_ = now;
   capture_forwarding();
+  refresh_input(now);  // the RS4 state may have changed: the input byte follows at once
 }
 
 // First buffer: the next measurement (or alive) telegram, only after the previous one

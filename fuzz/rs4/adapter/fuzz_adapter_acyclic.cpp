@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <span>
 #include <vector>
@@ -31,7 +32,12 @@ void check_ossd_invariant(const rs4::adapter::Adapter& a) {
   const bool allowed = v.powered && v.connected && a.fdevice().sends_process_values() &&
                        a.released() && !v.field_pair_error && a.scanner().ossd() &&
                        v.output.field_pair_valid();
-  if (!allowed) std::abort();
+  if (!allowed) {
+    std::fprintf(stderr, "OSSD bit 1: powered %d connected %d fdev %d released %d fperr %d scanner %d pair %d\n",
+                 v.powered, v.connected, a.fdevice().sends_process_values(), a.released(),
+                 v.field_pair_error, a.scanner().ossd(), v.output.field_pair_valid());
+    std::abort();
+  }
 }
 
 void cyclic(rs4::adapter::Adapter& a, profisafe::FHost& host, std::uint8_t out,
@@ -110,12 +116,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 9: {
         const auto f = static_cast<rs4::scanner::Fault>(in.byte() % 4);
         (void)((op & 0x10) ? a.scanner().clear_fault(f, now) : a.scanner().inject_fault(f, now));
+        a.on_time(now);  // the owner's loop runs the adapter after every harness action
         break;
       }
       case 10: {
         auto& scene = a.scanner().edit_scene(now);
         if (op & 0x10) scene.clear();
         else (void)scene.add(rs4::scanner::Circle{{double(in.byte()) * 10, 0}, 50});
+        a.on_time(now);
         break;
       }
       default:
