@@ -85,6 +85,7 @@ void MemoryBus::attach(Station& station) {
   ports_[a]->station = &station;
   order_.push_back(ports_[a].get());
   refresh_deadline(*ports_[a]);
+  deadlines_dirty_ = true;
 }
 
 MemoryBus::Port& MemoryBus::port(std::uint8_t address) {
@@ -116,7 +117,11 @@ void MemoryBus::start() {
 
 void MemoryBus::notify(std::uint8_t address) { drain(port(address)); }
 
-void MemoryBus::refresh_deadline(Port& p) { p.deadline = p.station->next_deadline(); }
+void MemoryBus::refresh_deadline(Port& p) {
+  const auto d = p.station->next_deadline();
+  if (d != p.deadline) deadlines_dirty_ = true;
+  p.deadline = d;
+}
 
 void MemoryBus::drain(Port& p) {
   while (auto t = p.station->take_transmit()) transmit(p, *t);
@@ -240,11 +245,14 @@ void MemoryBus::deliver(Pending& pending) {
 }
 
 std::optional<std::pair<TimePoint, MemoryBus::Port*>> MemoryBus::earliest_deadline() const {
-  std::optional<std::pair<TimePoint, Port*>> best;
+  // Cached: a scan over all ports only after some port's deadline changed.
+  if (!deadlines_dirty_) return earliest_;
+  earliest_.reset();
   for (Port* p : order_) {
-    if (p->deadline && (!best || *p->deadline < best->first)) best.emplace(*p->deadline, p);
+    if (p->deadline && (!earliest_ || *p->deadline < earliest_->first)) earliest_.emplace(*p->deadline, p);
   }
-  return best;
+  deadlines_dirty_ = false;
+  return earliest_;
 }
 
 std::optional<TimePoint> MemoryBus::next_event_time() const {

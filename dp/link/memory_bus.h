@@ -141,6 +141,8 @@ class MemoryBus {
   FaultId next_fault_id_ = 1;
   std::uint64_t sequence_ = 0;
   TimePoint line_free_{};
+  mutable std::optional<std::pair<TimePoint, Port*>> earliest_;  // cache of earliest_deadline()
+  mutable bool deadlines_dirty_ = true;
   std::vector<std::uint8_t> encode_buf_;
   BusObserver observer_;
 };

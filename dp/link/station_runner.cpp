@@ -6,7 +6,7 @@ namespace rs4sim::dp::link {
 
 StationRunner::StationRunner(boost::asio::io_context& io, const Clock& clock, Transport& transport,
                              RunnerOptions options)
-    : io_(io), clock_(clock), transport_(transport), options_(options), timer_(io),
+    : clock_(clock), transport_(transport), options_(options), timer_(io),
       idle_timer_(io) {
   encode_buf_.reserve(fdl::kMaxTelegramSize);
 }

@@ -67,7 +67,6 @@ class StationRunner final : private fdl::DecoderSink {
   void arm_timer();
   void arm_idle_timer();
 
-  boost::asio::io_context& io_;
   const Clock& clock_;
   Transport& transport_;
   RunnerOptions options_;
