@@ -106,3 +106,43 @@ TEST(Rs4Safety, Rs4ErrorGivesDiagnosisAlarmComingThenGoing) {
 
 }  // namespace
 }  // namespace rs4sim::rs4::device::testing
+
+namespace rs4sim::rs4::device::testing {
+namespace {
+
+// §8 passivation (§7.3.2): a CRC2 error → substitute value 0 (OSSD reads 0), ACK_REQ once
+// communication is healthy, ACK_REI reintegrates.
+TEST(Rs4Safety, CommunicationErrorPassivatesUntilAckRei) {
+  Rs4Segment s(segment_config());
+  bring_to_ossd_on(s);
+  s.device().adapter().safety_faults().corrupt_crc2 = 1;
+  ASSERT_TRUE(s.run_until([&] { return s.fhost().passivated(); }, 200ms));
+  EXPECT_EQ(s.input_byte(), 0);  // substitute value
+  ASSERT_TRUE(s.run_until([&] { return s.fhost().ack_req(); }, 200ms));
+  s.run_for(1s);
+  EXPECT_EQ(s.input_byte(), 0);  // stays passivated without the user acknowledgement
+  // The passivated host sends fail-safe values 0: output byte 0 is field pair 0, so the
+  // device itself reports the switching error (0x2600) and holds its OSSD bit at 0.
+  EXPECT_FALSE(s.device().adapter().ossd_bit());
+  s.ack_rei();
+  // Pair 1 again: released ≈500 ms later (§3.2), then seen through the F-host.
+  const auto t = time_until(s, [&] { return (s.input_byte() & kInputOssd) != 0; }, 1s);
+  ASSERT_TRUE(t.has_value());
+  EXPECT_LE(*t, 650ms);
+  EXPECT_EQ(s.fhost().counters().crc_errors, 1U);
+}
+
+TEST(Rs4Safety, AutoAckReiOptionReintegratesAtOnce) {
+  auto c = segment_config();
+  c.auto_ack_rei = true;
+  Rs4Segment s(c);
+  bring_to_ossd_on(s);
+  const auto before = s.fhost().counters().reintegrations;
+  s.device().adapter().safety_faults().corrupt_crc2 = 1;
+  ASSERT_TRUE(s.run_until([&] { return s.fhost().passivated(); }, 200ms));
+  EXPECT_TRUE(s.run_until([&] { return (s.input_byte() & kInputOssd) != 0; }, 200ms));
+  EXPECT_EQ(s.fhost().counters().reintegrations, before + 1);  // the ACK_REI after the fault
+}
+
+}  // namespace
+}  // namespace rs4sim::rs4::device::testing

@@ -1,0 +1,58 @@
+// `rs4sim demo` (RS4 scenario) and `rs4sim run --device rs4` at the app layer.
+#include "app/command.h"
+#include "app/rs4_demo.h"
+#include "app/rs4_run.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+
+namespace rs4sim::app {
+namespace {
+
+TEST(Rs4Demo, EveryStepHappensAndIsNarrated) {
+  std::ostringstream out;
+  EXPECT_EQ(run_rs4_demo(out), 0) << out.str();
+  const std::string text = out.str();
+  for (const char* line : {"DP start-up done", "F-host in RUN", "RS4 operational", "OSSD bit 0",
+                           "restart interlock", "field pair 1 → 2", "0x2600", "COM_CMD_MESS_16_RT",
+                           "529/529 equal", "diagnosis alarm coming", "diagnosis alarm going", "ACK_REI",
+                           "demo complete"}) {
+    EXPECT_NE(text.find(line), std::string::npos) << "missing: " << line << "\n" << text;
+  }
+  EXPECT_EQ(text.find("FAILED"), std::string::npos) << text;
+  if (std::getenv("RS4SIM_SHOW_DEMO") != nullptr) std::cout << text;
+}
+
+TEST(Rs4Run, MemoryLinkReachesDataExchange) {
+  Rs4RunOptions o;
+  o.address = 12;
+  o.duration = 5;
+  o.boot_time_ms = 1000;
+  std::ostringstream out;
+  EXPECT_EQ(run_rs4_device(o, out), 0) << out.str();
+  EXPECT_NE(out.str().find("rs4 12: LED off"), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("RS4 measuring"), std::string::npos) << out.str();
+}
+
+TEST(Rs4Run, BadArgumentsAreUsageErrors) {
+  const auto bad = [](auto edit) {
+    Rs4RunOptions o;
+    edit(o);
+    std::ostringstream out;
+    EXPECT_THROW(run_rs4_device(o, out), UsageError);
+  };
+  bad([](Rs4RunOptions& o) { o.address = 127; });  // §2: must not be used
+  bad([](Rs4RunOptions& o) { o.address = -1; });
+  bad([](Rs4RunOptions& o) { o.boot_time_ms = -5; });
+  bad([](Rs4RunOptions& o) { o.link = "can"; });
+  bad([](Rs4RunOptions& o) { o.link = "serial"; });  // no --port
+  bad([](Rs4RunOptions& o) { o.link = "udp"; o.listen = "127.0.0.1:5001"; });  // no --peer
+  bad([](Rs4RunOptions& o) { o.link = "pty"; o.baud = "1234"; });
+  bad([](Rs4RunOptions& o) { o.duration = -1; });
+}
+
+}  // namespace
+}  // namespace rs4sim::app
