@@ -1,7 +1,7 @@
 // libFuzzer target: a whole RS4 segment (GSD master + F-host + Rs4Device on the memory bus)
 // driven by a fuzzed script of bus frames, DPV1 records, process outputs, power and scene
-// actions and time steps. Invariants: no crash or hang; the OSSD bit of the device is 1
-// only while the scanner's OSSDs are on (spec/rs4-profisafe.md §3.1: the only safety
+// actions and time steps. Invariants: no crash or hang; one cycle after any step the OSSD
+// bit of the device is 1 only while the scanner's OSSDs are on (spec/rs4-profisafe.md §3.1: the only safety
 // bit); the F-host's input is 0 whenever it is passivated; a powered-off or link-down
 // station sends nothing.
 //
@@ -23,7 +23,12 @@ namespace {
 using namespace std::chrono_literals;
 using rs4sim::rs4::device::Rs4Segment;
 
+// Harness actions act on the scanner at once; the adapter composes its input byte on its
+// next call (a bus cycle or a scanner deadline). The invariant is checked after 15 ms,
+// more than one 10 ms master cycle: the OSSD bit never outlives the scanner's OSSDs by
+// more than a cycle.
 void check(Rs4Segment& s) {
+  s.run_for(15ms);
   auto& d = s.device();
   if (d.adapter().ossd_bit() && !d.scanner().ossd()) std::abort();
   if (s.fhost().passivated() && s.input_byte() != 0) std::abort();
