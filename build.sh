@@ -9,7 +9,7 @@
 #   ./build.sh build   install + build only
 #
 # Environment: JOBS (parallel build jobs, default: nproc), FUZZ_SECONDS (per fuzz target
-# in `test`, default 20).
+# in `test`, default 10).
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -19,7 +19,7 @@ case "$mode" in demo|test|build) ;; *)
 esac
 
 JOBS=${JOBS:-$(nproc)}
-FUZZ_SECONDS=${FUZZ_SECONDS:-20}
+FUZZ_SECONDS=${FUZZ_SECONDS:-10}
 
 packages=(build-essential cmake ninja-build pkg-config libboost-dev libsqlite3-dev
           libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev)

@@ -2,6 +2,7 @@
 // manual clock with the 1.5 Mbit/s wire modelled. Narrates start-up, data exchange, a
 // DPV1 write/read, an alarm round trip and a watchdog fault with recovery; exits 0 when
 // every step did what the spec says and 1 otherwise (CI runs it).
+#include "app/rs4_demo.h"
 #include "app/command.h"
 #include "app/demo_narrator.h"
 #include "dp/devices/generic_bus.h"
@@ -147,9 +148,14 @@ bool Demo::watchdog() {
   return check(dropped, "slave 5 leaves Data_Exch on watchdog expiry") && check(back, "recovery to Data_Exch");
 }
 
-const CommandRegistration kDemo("demo", "narrated master + generic slaves scenario on the in-memory bus", [](CLI::App&) {
-  return []() { return Demo().run(); };
-});
+const CommandRegistration kDemo(
+    "demo", "narrated RS4/PROFIsafe scenario (or --device generic) on the simulated bus",
+    [](CLI::App& cmd) {
+      auto device = std::make_shared<std::string>("rs4");
+      cmd.add_option("--device", *device, "rs4 (default) | generic")
+          ->check(CLI::IsMember({"rs4", "generic"}));
+      return [device]() { return *device == "rs4" ? run_rs4_demo(std::cout) : Demo().run(); };
+    });
 
 }  // namespace
 }  // namespace rs4sim::app

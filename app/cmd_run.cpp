@@ -1,5 +1,6 @@
 // `rs4sim run`: one virtual slave on a link, until Ctrl-C (or --duration).
 //
+//   rs4sim run --device rs4 --address 4 --link pty        (the RS4/PROFIsafe, GSD RSIM5234)
 //   rs4sim run --device generic --address 5 --ident 0x1234 --cfg "10 20" --link pty
 //   rs4sim run ... --link serial --port /dev/ttyUSB0 --baud 1.5M
 //   rs4sim run ... --link udp --listen 127.0.0.1:5001 --peer 127.0.0.1:5000
@@ -7,6 +8,7 @@
 //                                                   10 s of simulated time)
 // With --link pty the first line on stdout is the pty's slave path for the DP master.
 #include "app/command.h"
+#include "app/rs4_run.h"
 #include "app/run_options.h"
 #include "dp/devices/generic_bus.h"
 #include "dp/link/pty.h"
@@ -129,10 +131,13 @@ int run_realtime(const RunOptions& o, const dp::devices::GenericSlaveConfig& sc)
 
 Action setup(CLI::App& cmd) {
   auto o = std::make_shared<RunOptions>();
-  cmd.add_option("--device", o->device, "device to emulate")->check(CLI::IsMember({"generic"}));
-  cmd.add_option("--address", o->address, "FDL address 0..125")->required();
-  cmd.add_option("--ident", o->ident, "Ident_Number, e.g. 0x1234")->required();
-  cmd.add_option("--cfg", o->cfg, "configuration identifiers in hex, e.g. \"10 20\"")->required();
+  auto boot_time_ms = std::make_shared<int>(30000);
+  cmd.add_option("--device", o->device, "device to emulate: generic | rs4")
+      ->check(CLI::IsMember({"generic", "rs4"}));
+  cmd.add_option("--address", o->address, "FDL address 0..125 (rs4: 0..126, default 4)");
+  cmd.add_option("--ident", o->ident, "generic: Ident_Number, e.g. 0x1234");
+  cmd.add_option("--cfg", o->cfg, "generic: configuration identifiers in hex, e.g. \"10 20\"");
+  cmd.add_option("--boot-time", *boot_time_ms, "rs4: boot time until operational in ms (default 30000)");
   cmd.add_option("--link", o->link, "memory | pty | serial | udp")
       ->check(CLI::IsMember({"memory", "pty", "serial", "udp"}));
   cmd.add_option("--port", o->port, "serial device (--link serial)");
@@ -141,7 +146,18 @@ Action setup(CLI::App& cmd) {
   cmd.add_option("--peer", o->peer, "HOST:PORT of the master (--link udp)");
   cmd.add_option("--duration", o->duration, "seconds to run (0 = until Ctrl-C; memory: simulated)")
       ->check(CLI::NonNegativeNumber);
-  return [o]() -> int {
+  return [o, boot_time_ms]() -> int {
+    if (o->device == "rs4") {
+      if (!o->ident.empty() || !o->cfg.empty()) {
+        throw UsageError("--ident/--cfg are for --device generic; the RS4's come from its GSD");
+      }
+      const Rs4RunOptions r{o->address < 0 ? 4 : o->address, o->link, o->port, o->baud,
+                            o->listen, o->peer, o->duration, *boot_time_ms};
+      return run_rs4_device(r, std::cout);
+    }
+    if (o->address < 0 || o->ident.empty() || o->cfg.empty()) {
+      throw UsageError("--device generic needs --address, --ident and --cfg");
+    }
     const auto sc = generic_slave_config(o->address, o->ident, o->cfg);
     if (o->link == "memory") return run_memory(*o, sc);
     return run_realtime(*o, sc);
