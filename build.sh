@@ -55,7 +55,7 @@ case "$mode" in
     configure_and_build build
     (cd build && ctest --output-on-failure -j "$JOBS")
     echo "==> [2/3] ASan + UBSan build + ctest"
-    configure_and_build build-asan -DCMAKE_BUILD_TYPE=Debug -DRS4SIM_SANITIZE=ON -DRS4SIM_BENCH=OFF
+    configure_and_build build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRS4SIM_SANITIZE=ON -DRS4SIM_BENCH=OFF
     (cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
        UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j "$JOBS")
     echo "==> [3/3] libFuzzer targets, ${FUZZ_SECONDS}s each"
