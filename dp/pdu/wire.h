@@ -34,7 +34,7 @@ inline std::uint16_t be16(std::uint8_t hi, std::uint8_t lo) {
 }
 inline std::uint8_t hi(std::uint16_t v) { return static_cast<std::uint8_t>(v >> 8); }
 inline std::uint8_t lo(std::uint16_t v) { return static_cast<std::uint8_t>(v & 0xFFU); }
-inline constexpr bool bit(std::uint8_t b, unsigned n) { return ((b >> n) & 1U) != 0; }
+inline constexpr bool bit(std::uint8_t b, unsigned n) { return ((static_cast<unsigned>(b) >> n) & 1U) != 0; }
 inline constexpr std::uint8_t flag(bool v, unsigned n) {
   return static_cast<std::uint8_t>((v ? 1U : 0U) << n);
 }
