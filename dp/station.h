@@ -6,13 +6,18 @@
 //   1. decodes received bytes into telegrams (fdl::Decoder) and calls on_telegram();
 //   2. calls on_time() when the station's next_deadline() has passed;
 //   3. after either call, drains take_transmit() and puts the telegrams on the wire;
-//   4. reports frames its decoder rejected through on_malformed_frame().
+//   4. reports frames its decoder rejected through on_malformed_frame();
+//   5. installs a wake handler (set_wake_handler): a core whose transmit queue or
+//      next_deadline() changed outside on_telegram()/on_time() (an application request,
+//      a power-up) calls wake(), and the link drains and re-reads the deadline. Nobody
+//      has to remember to tell the link (the shape of lely-core's can_net_set_next_func).
 // Cores never block, sleep or read a clock; one event loop thread calls them.
 
 #include "dp/fdl/telegram.h"
 #include "dp/time/clock.h"
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <system_error>
 
@@ -44,6 +49,20 @@ class Station {
   // How long (Tbit) a responder waits after a request before replying (min TSDR, §1.7);
   // a slave reports what the master set with Set_Prm byte 3. Default: 11 Tbit.
   [[nodiscard]] virtual std::uint16_t min_tsdr_bits() const { return 11; }
+
+  // Installed by the link the station is attached to (one link at a time); an empty
+  // handler detaches. Called on the loop thread only.
+  void set_wake_handler(std::function<void()> handler) { wake_ = std::move(handler); }
+
+ protected:
+  // The core's transmit queue or next_deadline() changed outside on_telegram()/on_time():
+  // tells the link. Cheap and safe to call more than once (the link coalesces).
+  void wake() const {
+    if (wake_) wake_();
+  }
+
+ private:
+  std::function<void()> wake_;
 };
 
 }  // namespace rs4sim::dp

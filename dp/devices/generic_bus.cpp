@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace rs4sim::dp::devices {
 
@@ -29,19 +30,18 @@ GenericBus::GenericBus(const GenericBusConfig& config)
 }
 
 GenericSlave& GenericBus::slave(std::uint8_t address) {
-  for (auto& s : slaves_) {
+  return const_cast<GenericSlave&>(std::as_const(*this).slave(address));
+}
+
+const GenericSlave& GenericBus::slave(std::uint8_t address) const {
+  for (const auto& s : slaves_) {
     if (s->address() == address) return *s;
   }
   throw std::out_of_range("generic bus: no slave at address " + std::to_string(address));
 }
 
 void GenericBus::collect() {
-  scratch_.clear();
-  master_->take_events(scratch_);
-  for (auto& e : scratch_) {
-    if (hook_) hook_(e);
-    events_.push_back(std::move(e));
-  }
+  master_->take_events(events_);  // appends
 }
 
 bool GenericBus::run_until(const std::function<bool()>& done, Duration timeout) {

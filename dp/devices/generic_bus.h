@@ -29,22 +29,22 @@ class GenericBus {
 
   [[nodiscard]] ManualClock& clock() { return clock_; }
   [[nodiscard]] link::MemoryBus& bus() { return *bus_; }
+  [[nodiscard]] const link::MemoryBus& bus() const { return *bus_; }
   [[nodiscard]] master::Master& master() { return *master_; }
+  [[nodiscard]] const master::Master& master() const { return *master_; }
   // Throws std::out_of_range for an address without a slave.
   [[nodiscard]] GenericSlave& slave(std::uint8_t address);
+  [[nodiscard]] const GenericSlave& slave(std::uint8_t address) const;
   [[nodiscard]] std::size_t slave_count() const { return slaves_.size(); }
 
   // Simulated time runs until `done()` holds (checked after every bus event) or `timeout`
   // of simulated time has passed; returns done(). Master events are collected.
   bool run_until(const std::function<bool()>& done, Duration timeout);
   void run_for(Duration d);
-  // After a Master API call (read, write, set_outputs, …): let the bus see the new work.
-  void notify_master() { bus_->notify(master_->address()); }
 
   // Master events collected so far; take_events() moves them out.
   [[nodiscard]] const std::vector<master::MasterEvent>& events() const { return events_; }
   std::vector<master::MasterEvent> take_events();
-  void set_event_hook(std::function<void(const master::MasterEvent&)> hook) { hook_ = std::move(hook); }
 
   // Slaves currently in data exchange according to the master.
   [[nodiscard]] std::size_t slaves_in_data_exchange() const;
@@ -57,8 +57,6 @@ class GenericBus {
   std::unique_ptr<master::Master> master_;
   std::vector<std::unique_ptr<GenericSlave>> slaves_;
   std::vector<master::MasterEvent> events_;
-  std::vector<master::MasterEvent> scratch_;
-  std::function<void(const master::MasterEvent&)> hook_;
 };
 
 }  // namespace rs4sim::dp::devices

@@ -12,8 +12,8 @@ constexpr std::uint8_t kStateConflict = 0xB5;
 constexpr std::uint8_t kResourceUnavailable = 0xC3;
 constexpr std::uint8_t kProcessAlarm = 2;  // §3.5 Alarm_Type
 
-AcyclicResult dpv1_error(std::uint8_t code1, std::uint8_t code2 = 0) {
-  return AcyclicResult::fail({0x80, code1, code2});
+dp::slave::AcyclicResult dpv1_error(std::uint8_t code1, std::uint8_t code2 = 0) {
+  return dp::slave::AcyclicResult::fail({0x80, code1, code2});
 }
 
 std::uint16_t record_key(std::uint8_t slot, std::uint8_t index) {
@@ -37,21 +37,24 @@ GenericDevice::GenericDevice(GenericDeviceConfig config) : cfg_(std::move(config
   outputs_.resize(output_length_, 0);
 }
 
-PrmVerdict GenericDevice::check_parameters(const pdu::SetPrm& prm) {
+dp::slave::PrmVerdict GenericDevice::check_parameters(const pdu::SetPrm& prm, TimePoint now) {
+  (void)now;
   user_prm_.assign(prm.user_data.begin(), prm.user_data.end());
-  return PrmVerdict::kAccept;
+  return dp::slave::PrmVerdict::kAccept;
 }
 
-CfgVerdict GenericDevice::check_config(std::span<const std::uint8_t> cfg, bool user_check) {
-  if (std::ranges::equal(cfg, cfg_)) return CfgVerdict::kAccept;
+dp::slave::CfgVerdict GenericDevice::check_config(std::span<const std::uint8_t> cfg, bool user_check,
+                                       TimePoint now) {
+  (void)now;
+  if (std::ranges::equal(cfg, cfg_)) return dp::slave::CfgVerdict::kAccept;
   if (user_check) {  // DPV1 Check_Cfg_Mode: same image lengths are enough (§3.1)
     auto summary = pdu::summarize_cfg(cfg, pdu::CfgService::kChkCfg);
     if (summary && summary.value().input_bytes == input_length_ &&
         summary.value().output_bytes == output_length_) {
-      return CfgVerdict::kAccept;
+      return dp::slave::CfgVerdict::kAccept;
     }
   }
-  return CfgVerdict::kCfgFault;
+  return dp::slave::CfgVerdict::kCfgFault;
 }
 
 void GenericDevice::on_outputs(std::span<const std::uint8_t> outputs, TimePoint) {
@@ -60,42 +63,43 @@ void GenericDevice::on_outputs(std::span<const std::uint8_t> outputs, TimePoint)
   std::copy_n(outputs.begin(), n, outputs_.begin());
 }
 
-void GenericDevice::on_outputs_cleared(OutputClear, TimePoint) {
+void GenericDevice::on_outputs_cleared(dp::slave::OutputClear, TimePoint) {
   std::fill(outputs_.begin(), outputs_.end(), std::uint8_t{0});
 }
 
-void GenericDevice::read_inputs(std::span<std::uint8_t> inputs) {
+void GenericDevice::read_inputs(std::span<std::uint8_t> inputs, TimePoint now) {
+  (void)now;
   const std::size_t n = std::min(inputs.size(), outputs_.size());
   std::copy_n(outputs_.begin(), n, inputs.begin());
   std::fill(inputs.begin() + static_cast<std::ptrdiff_t>(n), inputs.end(), std::uint8_t{0});
 }
 
-void GenericDevice::on_state_change(SlaveState, SlaveState to, TransitionReason, TimePoint) {
+void GenericDevice::on_state_change(dp::slave::State, dp::slave::State to, dp::slave::TransitionReason, TimePoint) {
   state_ = to;
 }
 
-AcyclicResult GenericDevice::on_acyclic(const AcyclicRequest& req, TimePoint) {
+dp::slave::AcyclicResult GenericDevice::on_acyclic(const dp::slave::AcyclicRequest& req, TimePoint) {
   switch (req.service) {
-    case AcyclicService::kRead: return read_record(req);
-    case AcyclicService::kWrite: return write_record(req);
-    case AcyclicService::kDataTransport: break;
+    case dp::slave::AcyclicService::kRead: return read_record(req);
+    case dp::slave::AcyclicService::kWrite: return write_record(req);
+    case dp::slave::AcyclicService::kDataTransport: break;
   }
   return dpv1_error(0xA9);  // feature not supported
 }
 
-AcyclicResult GenericDevice::read_record(const AcyclicRequest& req) const {
+dp::slave::AcyclicResult GenericDevice::read_record(const dp::slave::AcyclicRequest& req) const {
   const auto it = records_.find(record_key(req.slot, req.index));
   if (it == records_.end()) return dpv1_error(kInvalidIndex);
   const std::size_t n = std::min<std::size_t>(req.length, it->second.size());
-  return AcyclicResult::ok(std::span<const std::uint8_t>(it->second).first(n));
+  return dp::slave::AcyclicResult::ok(std::span<const std::uint8_t>(it->second).first(n));
 }
 
-AcyclicResult GenericDevice::write_record(const AcyclicRequest& req) {
+dp::slave::AcyclicResult GenericDevice::write_record(const dp::slave::AcyclicRequest& req) {
   if (req.slot == 0 && req.index == kAlarmTriggerIndex) {
-    if (req.data.size() > kMaxAlarmUserData) return dpv1_error(kWriteLengthError);
+    if (req.data.size() > dp::slave::kMaxAlarmUserData) return dpv1_error(kWriteLengthError);
     const std::error_code ec = raise_alarm(kProcessAlarm, 0, req.data);
     if (ec) return dpv1_error(kStateConflict, static_cast<std::uint8_t>(ec.value()));
-    return AcyclicResult::ok();
+    return dp::slave::AcyclicResult::ok();
   }
   const std::uint16_t key = record_key(req.slot, req.index);
   auto it = records_.find(key);
@@ -104,13 +108,13 @@ AcyclicResult GenericDevice::write_record(const AcyclicRequest& req) {
     it = records_.emplace(key, std::vector<std::uint8_t>{}).first;
   }
   it->second.assign(req.data.begin(), req.data.end());
-  return AcyclicResult::ok();
+  return dp::slave::AcyclicResult::ok();
 }
 
 std::error_code GenericDevice::raise_alarm(std::uint8_t type, std::uint8_t slot,
                                            std::span<const std::uint8_t> user_data) {
   if (control_ == nullptr) return std::make_error_code(std::errc::not_connected);
-  AlarmRequest a;
+  dp::slave::AlarmRequest a;
   a.type = type;
   a.slot = slot;
   a.specifier = 1;  // appears (§3.5)
@@ -118,7 +122,7 @@ std::error_code GenericDevice::raise_alarm(std::uint8_t type, std::uint8_t slot,
   return control_->submit_alarm(a);
 }
 
-void GenericDevice::on_alarm_acknowledged(const AlarmAck& ack, TimePoint) { acked_.push_back(ack); }
+void GenericDevice::on_alarm_acknowledged(const dp::slave::AlarmAck& ack, TimePoint) { acked_.push_back(ack); }
 
 const std::vector<std::uint8_t>* GenericDevice::record(std::uint8_t slot, std::uint8_t index) const {
   const auto it = records_.find(record_key(slot, index));

@@ -1,7 +1,7 @@
 #pragma once
-// The generic virtual slave: a dp::SlaveApplication for any ident and configuration.
+// The generic virtual slave: a dp::slave::SlaveApplication for any ident and configuration.
 //
-// * Set_Prm: every parameter set with the right ident is accepted (dp::Slave already
+// * Set_Prm: every parameter set with the right ident is accepted (dp::slave::Slave already
 //   refuses a wrong ident with Prm_Fault, §2.3); User_Prm_Data are kept for inspection.
 // * Chk_Cfg: accepted only when the identifiers equal the real configuration byte for
 //   byte (§2.4); anything else → Cfg_Fault. With DPV1 Check_Cfg_Mode (user check) the
@@ -33,7 +33,7 @@ struct GenericDeviceConfig {
   std::vector<std::uint8_t> cfg;  // real configuration identifiers (Get_Cfg reply, §2.4)
 };
 
-class GenericDevice final : public SlaveApplication {
+class GenericDevice final : public dp::slave::SlaveApplication {
  public:
   static constexpr std::size_t kMaxRecords = 32;
   static constexpr std::uint8_t kAlarmTriggerIndex = 200;
@@ -43,17 +43,18 @@ class GenericDevice final : public SlaveApplication {
   explicit GenericDevice(GenericDeviceConfig config);
 
   // ---- SlaveApplication ----
-  void on_attach(SlaveControl& control) override { control_ = &control; }
-  PrmVerdict check_parameters(const pdu::SetPrm& prm) override;
-  CfgVerdict check_config(std::span<const std::uint8_t> cfg, bool user_check) override;
+  void on_attach(dp::slave::SlaveControl& control) override { control_ = &control; }
+  dp::slave::PrmVerdict check_parameters(const pdu::SetPrm& prm, TimePoint now) override;
+  dp::slave::CfgVerdict check_config(std::span<const std::uint8_t> cfg, bool user_check,
+                          TimePoint now) override;
   [[nodiscard]] std::span<const std::uint8_t> real_config() const override { return cfg_; }
   void on_outputs(std::span<const std::uint8_t> outputs, TimePoint now) override;
-  void on_outputs_cleared(OutputClear why, TimePoint now) override;
-  void read_inputs(std::span<std::uint8_t> inputs) override;
-  void on_state_change(SlaveState from, SlaveState to, TransitionReason why,
+  void on_outputs_cleared(dp::slave::OutputClear why, TimePoint now) override;
+  void read_inputs(std::span<std::uint8_t> inputs, TimePoint now) override;
+  void on_state_change(dp::slave::State from, dp::slave::State to, dp::slave::TransitionReason why,
                        TimePoint now) override;
-  AcyclicResult on_acyclic(const AcyclicRequest& req, TimePoint now) override;
-  void on_alarm_acknowledged(const AlarmAck& ack, TimePoint now) override;
+  dp::slave::AcyclicResult on_acyclic(const dp::slave::AcyclicRequest& req, TimePoint now) override;
+  void on_alarm_acknowledged(const dp::slave::AlarmAck& ack, TimePoint now) override;
 
   // ---- control and observation ----
   // Submits a process alarm; errors as SlaveControl::submit_alarm (alarms closed, type
@@ -64,27 +65,27 @@ class GenericDevice final : public SlaveApplication {
   [[nodiscard]] std::size_t output_length() const { return output_length_; }
   [[nodiscard]] std::span<const std::uint8_t> outputs() const { return {outputs_.data(), outputs_.size()}; }
   [[nodiscard]] std::uint64_t exchanges() const { return exchanges_; }
-  [[nodiscard]] SlaveState state() const { return state_; }
-  [[nodiscard]] const std::vector<AlarmAck>& acknowledged_alarms() const { return acked_; }
+  [[nodiscard]] dp::slave::State state() const { return state_; }
+  [[nodiscard]] const std::vector<dp::slave::AlarmAck>& acknowledged_alarms() const { return acked_; }
   [[nodiscard]] std::span<const std::uint8_t> user_prm_data() const {
     return {user_prm_.data(), user_prm_.size()};
   }
   [[nodiscard]] const std::vector<std::uint8_t>* record(std::uint8_t slot, std::uint8_t index) const;
 
  private:
-  AcyclicResult read_record(const AcyclicRequest& req) const;
-  AcyclicResult write_record(const AcyclicRequest& req);
+  dp::slave::AcyclicResult read_record(const dp::slave::AcyclicRequest& req) const;
+  dp::slave::AcyclicResult write_record(const dp::slave::AcyclicRequest& req);
 
-  SlaveControl* control_ = nullptr;
+  dp::slave::SlaveControl* control_ = nullptr;
   std::vector<std::uint8_t> cfg_;
   std::size_t input_length_ = 0;
   std::size_t output_length_ = 0;
   boost::container::static_vector<std::uint8_t, 244> outputs_;
   boost::container::static_vector<std::uint8_t, 244> user_prm_;
   std::map<std::uint16_t, std::vector<std::uint8_t>> records_;  // key = slot << 8 | index
-  std::vector<AlarmAck> acked_;
+  std::vector<dp::slave::AlarmAck> acked_;
   std::uint64_t exchanges_ = 0;
-  SlaveState state_ = SlaveState::kWaitPrm;
+  dp::slave::State state_ = dp::slave::State::kWaitPrm;
 };
 
 }  // namespace rs4sim::dp::devices

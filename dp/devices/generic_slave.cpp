@@ -2,8 +2,8 @@
 
 namespace rs4sim::dp::devices {
 
-SlaveConfig GenericSlave::slave_config(const GenericSlaveConfig& c) {
-  SlaveConfig s;
+dp::slave::Config GenericSlave::slave_config(const GenericSlaveConfig& c) {
+  dp::slave::Config s;
   s.address = c.address;
   s.ident_number = c.ident_number;
   s.dpv1 = c.dpv1;

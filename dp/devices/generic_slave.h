@@ -1,5 +1,5 @@
 #pragma once
-// One generic virtual slave as a single dp::Station: the dp::Slave protocol core with a
+// One generic virtual slave as a single dp::Station: the dp::slave::Slave protocol core with a
 // GenericDevice behind it (see generic_device.h for the device's behaviour).
 
 #include "dp/devices/generic_device.h"
@@ -33,14 +33,14 @@ class GenericSlave final : public Station {
 
   [[nodiscard]] GenericDevice& device() { return device_; }
   [[nodiscard]] const GenericDevice& device() const { return device_; }
-  [[nodiscard]] Slave& slave() { return slave_; }
-  [[nodiscard]] const Slave& slave() const { return slave_; }
+  [[nodiscard]] dp::slave::Slave& slave() { return slave_; }
+  [[nodiscard]] const dp::slave::Slave& slave() const { return slave_; }
 
  private:
-  static SlaveConfig slave_config(const GenericSlaveConfig& c);
+  static dp::slave::Config slave_config(const GenericSlaveConfig& c);
 
-  GenericDevice device_;  // before slave_: the Slave constructor calls device_.on_attach()
-  Slave slave_;
+  GenericDevice device_;  // before slave_: the dp::slave::Slave constructor calls device_.on_attach()
+  dp::slave::Slave slave_;
 };
 
 }  // namespace rs4sim::dp::devices

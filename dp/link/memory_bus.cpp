@@ -8,6 +8,8 @@
 
 namespace rs4sim::dp::link {
 
+static_assert(MemoryBus::kMaxStations <= DeadlineTree::kSlots);
+
 namespace {
 // A core that keeps reporting a deadline at or before `now` after on_time() would stall
 // simulated time; after this many calls at one instant the bus reports the faulty station.
@@ -41,6 +43,8 @@ struct MemoryBus::Port final : fdl::DecoderSink {
   TimePoint now{};  // valid during a delivery
   TimePoint last_fire{};
   std::uint32_t fires_at_instant = 0;
+  std::size_t slot = 0;  // attach order: the tie-break among equal deadlines
+  bool woken = false;
 
   void on_telegram(const fdl::Telegram& t) override {
     ++counters.received;
@@ -66,7 +70,7 @@ struct MemoryBus::Pending {
 };
 
 MemoryBus::MemoryBus(ManualClock& clock, MemoryBusConfig config)
-    : clock_(clock), config_(config), line_free_(clock.now()) {
+    : clock_(clock), config_(config), line_free_(clock.now()), alive_(std::make_shared<char>()) {
   encode_buf_.reserve(fdl::kMaxTelegramSize);
 }
 
@@ -83,9 +87,15 @@ void MemoryBus::attach(Station& station) {
   }
   ports_[a] = std::make_unique<Port>();
   ports_[a]->station = &station;
-  order_.push_back(ports_[a].get());
-  refresh_deadline(*ports_[a]);
-  deadlines_dirty_ = true;
+  Port* p = ports_[a].get();
+  p->slot = order_.size();
+  order_.push_back(p);
+  // A station may outlive the bus (or the other way round): a wake after the bus is gone
+  // finds the token expired and does nothing.
+  station.set_wake_handler([alive = std::weak_ptr(alive_), this, p] {
+    if (!alive.expired()) on_wake(*p);
+  });
+  refresh_deadline(*p);
 }
 
 MemoryBus::Port& MemoryBus::port(std::uint8_t address) {
@@ -107,20 +117,51 @@ const fdl::DecoderStats& MemoryBus::decoder_stats(std::uint8_t address) const {
   return port(address).decoder.stats();
 }
 
+// Marks a bus call: a station that wakes inside it is drained when it returns, so no core
+// is ever re-entered from its own on_telegram()/on_time().
+struct MemoryBus::InCall {
+  MemoryBus& bus;
+  explicit InCall(MemoryBus& b) : bus(b) { bus.in_call_ = true; }
+  InCall(const InCall&) = delete;
+  InCall& operator=(const InCall&) = delete;
+  ~InCall() { bus.in_call_ = false; }
+};
+
 void MemoryBus::start() {
-  for (Port* p : order_) {
-    p->station->on_time(clock_.now());
-    refresh_deadline(*p);
-    drain(*p);
+  {
+    const InCall call(*this);
+    for (Port* p : order_) {
+      p->station->on_time(clock_.now());
+      refresh_deadline(*p);
+      drain(*p);
+    }
+  }
+  drain_woken();
+}
+
+void MemoryBus::on_wake(Port& p) {
+  if (!in_call_) {
+    drain(p);
+  } else if (!p.woken) {
+    p.woken = true;
+    woken_.push_back(&p);
   }
 }
 
-void MemoryBus::notify(std::uint8_t address) { drain(port(address)); }
+void MemoryBus::drain_woken() {
+  // Index loop: a drain may wake further stations, appended behind.
+  for (std::size_t i = 0; i < woken_.size(); ++i) {
+    woken_[i]->woken = false;
+    drain(*woken_[i]);
+  }
+  woken_.clear();
+}
 
 void MemoryBus::refresh_deadline(Port& p) {
   const auto d = p.station->next_deadline();
-  if (d != p.deadline) deadlines_dirty_ = true;
+  if (d == p.deadline) return;
   p.deadline = d;
+  deadlines_.set(p.slot, d);
 }
 
 void MemoryBus::drain(Port& p) {
@@ -245,14 +286,9 @@ void MemoryBus::deliver(Pending& pending) {
 }
 
 std::optional<std::pair<TimePoint, MemoryBus::Port*>> MemoryBus::earliest_deadline() const {
-  // Cached: a scan over all ports only after some port's deadline changed.
-  if (!deadlines_dirty_) return earliest_;
-  earliest_.reset();
-  for (Port* p : order_) {
-    if (p->deadline && (!earliest_ || *p->deadline < earliest_->first)) earliest_.emplace(*p->deadline, p);
-  }
-  deadlines_dirty_ = false;
-  return earliest_;
+  const auto e = deadlines_.earliest();
+  if (!e) return std::nullopt;
+  return std::pair{e->first, order_[e->second]};
 }
 
 std::optional<TimePoint> MemoryBus::next_event_time() const {
@@ -278,6 +314,16 @@ void MemoryBus::fire_deadline(Port& p) {
 }
 
 bool MemoryBus::step() {
+  bool stepped = false;
+  {
+    const InCall call(*this);
+    stepped = step_once();
+  }
+  drain_woken();
+  return stepped;
+}
+
+bool MemoryBus::step_once() {
   const auto deadline = earliest_deadline();
   if (!queue_.empty() && (!deadline || queue_.front().arrival <= deadline->first)) {
     std::pop_heap(queue_.begin(), queue_.end());

@@ -19,6 +19,7 @@
 #include "dp/fdl/decoder.h"
 #include "dp/link/baud_rate.h"
 #include "dp/link/counters.h"
+#include "dp/link/deadline_tree.h"
 #include "dp/station.h"
 
 #include <array>
@@ -75,16 +76,14 @@ class MemoryBus {
   MemoryBus(const MemoryBus&) = delete;
   MemoryBus& operator=(const MemoryBus&) = delete;
 
-  // Attaches a station by its address(). Throws std::invalid_argument for an address
-  // above 126 or already in use. The station must outlive the bus.
+  // Attaches a station by its address() and installs its wake handler (a station that
+  // changes outside a bus call is drained and its deadline re-read at once; during a bus
+  // call, when that call returns). Throws std::invalid_argument for an address above 126
+  // or already in use. The station must outlive the bus.
   void attach(Station& station);
 
   // Calls on_time() once on every station (the contract's "at least once after start").
   void start();
-
-  // The station changed outside a bus call (an application request queued a telegram or
-  // moved its deadline): drain its transmit queue and re-read its deadline now.
-  void notify(std::uint8_t address);
 
   // Processes the earliest pending event and moves the clock to it. false = nothing pending.
   bool step();
@@ -113,6 +112,7 @@ class MemoryBus {
  private:
   struct Port;
   struct Pending;
+  struct InCall;
   struct ActiveFault {
     FaultId id;
     Fault fault;
@@ -122,6 +122,9 @@ class MemoryBus {
   Port& port(std::uint8_t address);
   const Port& port(std::uint8_t address) const;
   void drain(Port& p);
+  void on_wake(Port& p);
+  bool step_once();
+  void drain_woken();
   void transmit(Port& from, const fdl::Telegram& t);
   std::optional<std::uint8_t> route(Port& from, const fdl::Telegram& t);
   TimePoint arrival_time(const Port& from, const fdl::Telegram& t, std::size_t bytes);
@@ -130,7 +133,7 @@ class MemoryBus {
   void deliver(Pending& p);
   void fire_deadline(Port& p);
   void refresh_deadline(Port& p);
-  std::optional<std::pair<TimePoint, Port*>> earliest_deadline() const;
+  [[nodiscard]] std::optional<std::pair<TimePoint, Port*>> earliest_deadline() const;
 
   ManualClock& clock_;
   MemoryBusConfig config_;
@@ -141,9 +144,11 @@ class MemoryBus {
   FaultId next_fault_id_ = 1;
   std::uint64_t sequence_ = 0;
   TimePoint line_free_{};
-  mutable std::optional<std::pair<TimePoint, Port*>> earliest_;  // cache of earliest_deadline()
-  mutable bool deadlines_dirty_ = true;
+  DeadlineTree deadlines_;  // slot = attach order
   std::vector<std::uint8_t> encode_buf_;
+  std::vector<Port*> woken_;  // woke during a bus call: drained when the call returns
+  bool in_call_ = false;
+  std::shared_ptr<char> alive_;  // wake handlers hold a weak_ptr to it
   BusObserver observer_;
 };
 

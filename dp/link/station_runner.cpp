@@ -1,6 +1,7 @@
 #include "dp/link/station_runner.h"
 
 #include <boost/asio/error.hpp>
+#include <boost/asio/post.hpp>
 
 namespace rs4sim::dp::link {
 
@@ -9,9 +10,16 @@ StationRunner::StationRunner(boost::asio::io_context& io, const Clock& clock, Tr
     : clock_(clock), transport_(transport), options_(options), timer_(io),
       idle_timer_(io) {
   encode_buf_.reserve(fdl::kMaxTelegramSize);
+  self_ = std::make_shared<StationRunner*>(this);
 }
 
-void StationRunner::add(Station& station) { stations_.push_back(&station); }
+void StationRunner::add(Station& station) {
+  stations_.push_back(&station);
+  // A station may outlive the runner: a wake after it is gone does nothing.
+  station.set_wake_handler([alive = std::weak_ptr(self_), this] {
+    if (!alive.expired()) on_wake();
+  });
+}
 
 void StationRunner::start() {
   running_ = true;
@@ -30,10 +38,19 @@ void StationRunner::stop() {
   transport_.close();
 }
 
-void StationRunner::notify() {
-  if (!running_) return;
-  drain_all();
-  arm_timer();
+void StationRunner::on_wake() {
+  if (!running_ || wake_posted_) return;
+  wake_posted_ = true;
+  boost::asio::post(timer_.get_executor(), [weak = std::weak_ptr(self_)] {
+    const auto self = weak.lock();
+    if (!self) return;
+    StationRunner& r = **self;
+    r.wake_posted_ = false;
+    if (!r.running_) return;
+    r.now_ = r.clock_.now();
+    r.drain_all();
+    r.arm_timer();
+  });
 }
 
 void StationRunner::on_bytes(std::span<const std::uint8_t> bytes) {
@@ -51,11 +68,6 @@ void StationRunner::on_bytes(std::span<const std::uint8_t> bytes) {
 
 void StationRunner::on_telegram(const fdl::Telegram& t) {
   ++counters_.received;
-  if (observer_) {
-    encode_buf_.clear();
-    fdl::encode(t, encode_buf_);
-    observer_(Direction::kReceived, t, encode_buf_, now_);
-  }
   for (Station* s : stations_) s->on_telegram(t, now_);
 }
 
@@ -75,7 +87,6 @@ void StationRunner::drain_all() {
       ++counters_.sent;
       encode_buf_.clear();
       fdl::encode(*t, encode_buf_);
-      if (observer_) observer_(Direction::kSent, *t, encode_buf_, now_);
       transport_.send(encode_buf_);
     }
   }

@@ -22,6 +22,7 @@
 #include <boost/asio/steady_timer.hpp>
 
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace rs4sim::dp::link {
@@ -30,11 +31,6 @@ struct RunnerOptions {
   Duration idle_gap = std::chrono::milliseconds(30);
 };
 
-enum class Direction : std::uint8_t { kReceived, kSent };
-// Called for every telegram crossing the link (capture, narration); bytes = wire bytes.
-using LinkObserver =
-    std::function<void(Direction, const fdl::Telegram&, std::span<const std::uint8_t>, TimePoint)>;
-
 class StationRunner final : private fdl::DecoderSink {
  public:
   StationRunner(boost::asio::io_context& io, const Clock& clock, Transport& transport,
@@ -42,20 +38,17 @@ class StationRunner final : private fdl::DecoderSink {
   StationRunner(const StationRunner&) = delete;
   StationRunner& operator=(const StationRunner&) = delete;
 
-  // Adds a station (before start()). The station must outlive the runner.
+  // Adds a station (before start()) and installs its wake handler: a station that changes
+  // outside a runner call gets one drain + timer re-arm posted to the loop (coalesced).
+  // The station must outlive the runner.
   void add(Station& station);
   // Starts receiving and calls on_time() once on every station.
   void start();
   // Stops the timers and closes the transport.
   void stop();
-  // A station changed outside a runner call (an application request on the loop thread):
-  // drain its transmit queue and re-arm the timer.
-  void notify();
-
   [[nodiscard]] const StationCounters& counters() const { return counters_; }
   [[nodiscard]] const fdl::DecoderStats& decoder_stats() const { return decoder_.stats(); }
   [[nodiscard]] std::error_code last_error() const { return last_error_; }
-  void set_observer(LinkObserver observer) { observer_ = std::move(observer); }
 
  private:
   void on_telegram(const fdl::Telegram& t) override;
@@ -66,6 +59,7 @@ class StationRunner final : private fdl::DecoderSink {
   void drain_all();
   void arm_timer();
   void arm_idle_timer();
+  void on_wake();
 
   const Clock& clock_;
   Transport& transport_;
@@ -79,9 +73,10 @@ class StationRunner final : private fdl::DecoderSink {
   std::error_code last_error_;
   std::vector<std::uint8_t> encode_buf_;
   TimePoint now_{};
-  LinkObserver observer_;
   std::uint64_t idle_generation_ = 0;
   bool running_ = false;
+  bool wake_posted_ = false;
+  std::shared_ptr<StationRunner*> self_;  // posted wake-ups check it is still alive
 };
 
 }  // namespace rs4sim::dp::link

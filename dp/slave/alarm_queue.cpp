@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-namespace rs4sim::dp {
+namespace rs4sim::dp::slave {
 
 AlarmQueue::AlarmQueue(std::uint8_t capacity, std::uint8_t sequence_numbers,
                        std::uint8_t queue_limit)
@@ -99,4 +99,4 @@ bool AlarmQueue::acknowledge(std::uint8_t slot, std::uint8_t type, std::uint8_t 
   return true;
 }
 
-}  // namespace rs4sim::dp
+}  // namespace rs4sim::dp::slave

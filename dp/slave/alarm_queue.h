@@ -17,7 +17,7 @@
 #include <optional>
 #include <system_error>
 
-namespace rs4sim::dp {
+namespace rs4sim::dp::slave {
 
 struct Alarm {
   std::uint8_t type = 0;
@@ -81,4 +81,4 @@ class AlarmQueue {
   boost::container::static_vector<Outstanding, 32> outstanding_;
 };
 
-}  // namespace rs4sim::dp
+}  // namespace rs4sim::dp::slave

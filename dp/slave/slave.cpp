@@ -9,22 +9,22 @@
 #include <stdexcept>
 #include <system_error>
 
-namespace rs4sim::dp {
+namespace rs4sim::dp::slave {
 
 using fdl::FrameType;
 using fdl::RequestFunction;
 using fdl::ResponseStatus;
 
-const char* state_name(SlaveState s) {
+const char* to_string(State s) {
   switch (s) {
-    case SlaveState::kWaitPrm: return "Wait_Prm";
-    case SlaveState::kWaitCfg: return "Wait_Cfg";
-    case SlaveState::kDataExch: return "Data_Exch";
+    case State::kWaitPrm: return "Wait_Prm";
+    case State::kWaitCfg: return "Wait_Cfg";
+    case State::kDataExch: return "Data_Exch";
   }
   return "?";
 }
 
-const char* reason_name(TransitionReason r) {
+const char* to_string(TransitionReason r) {
   switch (r) {
     case TransitionReason::kPrmAccepted: return "Set_Prm accepted";
     case TransitionReason::kPrmFault: return "Prm_Fault";
@@ -50,7 +50,7 @@ AcyclicResult AcyclicResult::ok(std::span<const std::uint8_t> bytes) {
 }
 
 namespace {
-const SlaveConfig& checked(const SlaveConfig& c) {
+const Config& checked(const Config& c) {
   if (const auto ec = c.validate()) throw std::system_error(ec, "dp::SlaveConfig");
   return c;
 }
@@ -59,7 +59,7 @@ bool is_srd(RequestFunction f) { return f == RequestFunction::kSrdLow || f == Re
 bool is_sda(RequestFunction f) { return f == RequestFunction::kSdaLow || f == RequestFunction::kSdaHigh; }
 }  // namespace
 
-Slave::Slave(const SlaveConfig& config, SlaveApplication& app)
+Slave::Slave(const Config& config, SlaveApplication& app)
     : config_(checked(config)),
       app_(app),
       address_(config.address),
@@ -169,8 +169,8 @@ void Slave::dispatch_dp_sap(const fdl::Telegram& t, TimePoint now) {
   }
   switch (*t.dsap) {
     case pdu::sap::kSetSlaveAdd: on_set_slave_add(t, now); break;
-    case pdu::sap::kRdInp: on_read_io(t, true); break;
-    case pdu::sap::kRdOutp: on_read_io(t, false); break;
+    case pdu::sap::kRdInp: on_read_io(t, true, now); break;
+    case pdu::sap::kRdOutp: on_read_io(t, false, now); break;
     case pdu::sap::kGlobalControl:
       on_global_control(t, now);
       reply_short_ack();
@@ -215,7 +215,7 @@ void Slave::check_timers(TimePoint now) {
   if (wd_deadline_ && now >= *wd_deadline_) {  // §2.8: expiry at exactly T_WD
     ++counters_.watchdog_expiries;
     reset_parameters(false);
-    enter(SlaveState::kWaitPrm, TransitionReason::kWatchdog, now);
+    enter(State::kWaitPrm, TransitionReason::kWatchdog, now);
   }
   if (c2_.bound && now >= c2_.deadline) c2_close(C2Event::kTimedOut, now);  // §3.7 step 5
 }
@@ -237,9 +237,9 @@ void Slave::reset_parameters(bool keep_master) {
   output_length_ = 0;
 }
 
-void Slave::enter(SlaveState to, TransitionReason why, TimePoint now) {
-  const SlaveState from = state_;
-  if (from == SlaveState::kDataExch && to != SlaveState::kDataExch) {
+void Slave::enter(State to, TransitionReason why, TimePoint now) {
+  const State from = state_;
+  if (from == State::kDataExch && to != State::kDataExch) {
     // §2.2: leaving Data_Exch puts the outputs into the safe state; §3.3 closes C1/alarms.
     sync_mode_ = false;
     freeze_mode_ = false;
@@ -247,13 +247,13 @@ void Slave::enter(SlaveState to, TransitionReason why, TimePoint now) {
     std::fill(outputs_.begin(), outputs_.end(), std::uint8_t{0});
     app_.on_outputs_cleared(OutputClear::kLeftDataExchange, now);
   }
-  if (to != SlaveState::kDataExch) close_dpv1();
+  if (to != State::kDataExch) close_dpv1();
   state_ = to;
-  if (to == SlaveState::kDataExch && from != SlaveState::kDataExch && dpv1_ &&
+  if (to == State::kDataExch && from != State::kDataExch && dpv1_ &&
       dpv1_->any_alarm_enabled()) {
     alarms_.open(*dpv1_);  // §3.3: alarm machine opens on entering Data_Exch
   }
-  const SlaveTransition tr{from, to, why, now};
+  const Transition tr{from, to, why, now};
   if (trace_) trace_(tr);
   app_.on_state_change(from, to, why, now);
 }
@@ -286,4 +286,4 @@ fdl::DataUnit& Slave::reply_data(const fdl::Telegram& req, ResponseStatus st) {
   return tx_->data;
 }
 
-}  // namespace rs4sim::dp
+}  // namespace rs4sim::dp::slave

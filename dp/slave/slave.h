@@ -35,14 +35,14 @@
 #include <functional>
 #include <optional>
 
-namespace rs4sim::dp {
+namespace rs4sim::dp::slave {
 
 // fdl::DataUnit as a byte span (boost::container::static_vector is not a std range here).
 [[nodiscard]] inline std::span<const std::uint8_t> bytes_of(const fdl::DataUnit& d) {
   return {d.data(), d.size()};
 }
 
-struct SlaveCounters {
+struct Counters {
   std::uint64_t telegrams_seen = 0;        // every telegram given to on_telegram()
   std::uint64_t for_other_stations = 0;    // DA not ours (and not a broadcast we take)
   std::uint64_t broadcasts = 0;            // SDN to 127 evaluated
@@ -56,9 +56,9 @@ struct SlaveCounters {
   std::array<std::uint64_t, 64> per_sap{}; // requests per DSAP 0…63
 };
 
-struct SlaveTransition {
-  SlaveState from;
-  SlaveState to;
+struct Transition {
+  State from;
+  State to;
   TransitionReason why;
   TimePoint at;
 };
@@ -66,7 +66,7 @@ struct SlaveTransition {
 class Slave final : public Station, public SlaveControl {
  public:
   // Throws std::system_error (dp.slave category) if `config.validate()` fails.
-  Slave(const SlaveConfig& config, SlaveApplication& app);
+  Slave(const Config& config, SlaveApplication& app);
   Slave(const Slave&) = delete;  // the application holds a SlaveControl& to this object
   Slave& operator=(const Slave&) = delete;
 
@@ -88,7 +88,7 @@ class Slave final : public Station, public SlaveControl {
                                        bool stat_diag) override;
 
   // ---- observation ----
-  [[nodiscard]] SlaveState state() const { return state_; }
+  [[nodiscard]] State state() const { return state_; }
   [[nodiscard]] std::uint8_t master_address() const { return master_; }
   [[nodiscard]] std::uint8_t min_tsdr() const { return min_tsdr_; }  // Tbit (§1.7)
   [[nodiscard]] std::optional<Duration> watchdog_time() const { return wd_time_; }
@@ -98,9 +98,9 @@ class Slave final : public Station, public SlaveControl {
   [[nodiscard]] bool c2_connected() const { return c2_.bound && c2_.established; }
   // The Slave_Diag DU the slave would send now (without fetching it).
   [[nodiscard]] fdl::DataUnit diagnosis() const;
-  [[nodiscard]] const SlaveCounters& counters() const { return counters_; }
-  // Transition trace (state names via state_name()); no printing in the core.
-  void set_trace(std::function<void(const SlaveTransition&)> hook) { trace_ = std::move(hook); }
+  [[nodiscard]] const Counters& counters() const { return counters_; }
+  // Transition trace (state names via to_string()); no printing in the core.
+  void set_trace(std::function<void(const Transition&)> hook) { trace_ = std::move(hook); }
 
  private:
   struct AcyclicJob {
@@ -127,7 +127,7 @@ class Slave final : public Station, public SlaveControl {
   void dispatch(const fdl::Telegram& t, TimePoint now);
   void dispatch_dp_sap(const fdl::Telegram& t, TimePoint now);
   void check_timers(TimePoint now);
-  void enter(SlaveState to, TransitionReason why, TimePoint now);
+  void enter(State to, TransitionReason why, TimePoint now);
   void reset_parameters(bool keep_master);
   void retrigger_watchdog(std::uint8_t sa, TimePoint now);
   void promote_alarm();
@@ -141,16 +141,16 @@ class Slave final : public Station, public SlaveControl {
 
   // DP-V0 services (slave_dpv0.cpp)
   void on_set_prm(const fdl::Telegram& t, TimePoint now);
-  PrmVerdict judge_prm(const pdu::SetPrm& prm);
+  PrmVerdict judge_prm(const pdu::SetPrm& prm, TimePoint now);
   void take_over_prm(const pdu::SetPrm& prm, std::uint8_t master, TimePoint now);
   void on_chk_cfg(const fdl::Telegram& t, TimePoint now);
   void on_get_cfg(const fdl::Telegram& t);
   void on_slave_diag(const fdl::Telegram& t);
   void on_global_control(const fdl::Telegram& t, TimePoint now);
   void on_data_exchange(const fdl::Telegram& t, TimePoint now);
-  void on_read_io(const fdl::Telegram& t, bool inputs);
+  void on_read_io(const fdl::Telegram& t, bool inputs, TimePoint now);
   void on_set_slave_add(const fdl::Telegram& t, TimePoint now);
-  void fill_inputs(fdl::DataUnit& out);
+  void fill_inputs(fdl::DataUnit& out, TimePoint now);
 
   // DPV1 (slave_dpv1.cpp, slave_c2.cpp)
   void on_msac_c1(const fdl::Telegram& t, TimePoint now);
@@ -167,15 +167,15 @@ class Slave final : public Station, public SlaveControl {
   void start_c2_request(const fdl::Telegram& t, TimePoint now);
   void c2_close(C2Event why, TimePoint now);
 
-  SlaveConfig config_;
+  Config config_;
   SlaveApplication& app_;
-  std::function<void(const SlaveTransition&)> trace_;
-  SlaveCounters counters_;
+  std::function<void(const Transition&)> trace_;
+  Counters counters_;
   fdl::FcbResponder fcb_;
   std::optional<fdl::Telegram> tx_;
 
   // state and parameters
-  SlaveState state_ = SlaveState::kWaitPrm;
+  State state_ = State::kWaitPrm;
   std::uint8_t address_;
   bool address_locked_;
   std::uint8_t master_ = 0xFF;
@@ -214,4 +214,4 @@ class Slave final : public Station, public SlaveControl {
   C2Connection c2_;
 };
 
-}  // namespace rs4sim::dp
+}  // namespace rs4sim::dp::slave

@@ -7,7 +7,9 @@
 //
 //   slave → application: SlaveApplication (virtual on_*/check_* calls, always from the
 //                        slave's own on_telegram()/on_time(), one thread, no re-entry
-//                        needed: the application may call SlaveControl from inside them)
+//                        needed: the application may call SlaveControl from inside them).
+//                        Every call carries the link's `now`: no application keeps its
+//                        own copy of the time.
 //   application → slave: SlaveControl (complete an acyclic request later, submit an
 //                        alarm, set the device-related diagnosis blocks)
 
@@ -21,11 +23,11 @@
 #include <span>
 #include <system_error>
 
-namespace rs4sim::dp {
+namespace rs4sim::dp::slave {
 
 // Slave states, spec/profibus-dp.md §2.2 (VPC3 names: WAIT_PRM, WAIT_CFG, DATA_EX).
-enum class SlaveState : std::uint8_t { kWaitPrm, kWaitCfg, kDataExch };
-[[nodiscard]] const char* state_name(SlaveState s);  // "Wait_Prm", "Wait_Cfg", "Data_Exch"
+enum class State : std::uint8_t { kWaitPrm, kWaitCfg, kDataExch };
+[[nodiscard]] const char* to_string(State s);  // "Wait_Prm", "Wait_Cfg", "Data_Exch"
 
 // Why the state changed (trace and application notification).
 enum class TransitionReason : std::uint8_t {
@@ -39,7 +41,7 @@ enum class TransitionReason : std::uint8_t {
   kProtocolViolation,   // unmatched Alarm_Ack / unknown C1 function (§3.3, §3.5)
   kAddressChanged,      // Set_Slave_Add took effect (stays Wait_Prm)
 };
-[[nodiscard]] const char* reason_name(TransitionReason r);
+[[nodiscard]] const char* to_string(TransitionReason r);
 
 // Why the application must put its outputs into the safe state.
 enum class OutputClear : std::uint8_t {
@@ -147,9 +149,10 @@ class SlaveApplication {
   virtual void on_attach(SlaveControl& control) { (void)control; }
 
   // Set_Prm with a matching ident: check the User_Prm_Data (after the DPV1 bytes).
-  virtual PrmVerdict check_parameters(const pdu::SetPrm& prm) = 0;
+  virtual PrmVerdict check_parameters(const pdu::SetPrm& prm, TimePoint now) = 0;
   // Chk_Cfg: compare with the real configuration; `user_check` = DPV1 Check_Cfg_Mode.
-  virtual CfgVerdict check_config(std::span<const std::uint8_t> cfg, bool user_check) = 0;
+  virtual CfgVerdict check_config(std::span<const std::uint8_t> cfg, bool user_check,
+                                  TimePoint now) = 0;
   // Get_Cfg reply: the real configuration identifiers (§2.4).
   [[nodiscard]] virtual std::span<const std::uint8_t> real_config() const = 0;
 
@@ -157,9 +160,9 @@ class SlaveApplication {
   virtual void on_outputs(std::span<const std::uint8_t> outputs, TimePoint now) = 0;
   virtual void on_outputs_cleared(OutputClear why, TimePoint now) = 0;
   // Fills the input image (length as configured) for the Data_Exchange reply.
-  virtual void read_inputs(std::span<std::uint8_t> inputs) = 0;
+  virtual void read_inputs(std::span<std::uint8_t> inputs, TimePoint now) = 0;
 
-  virtual void on_state_change(SlaveState from, SlaveState to, TransitionReason why,
+  virtual void on_state_change(State from, State to, TransitionReason why,
                                TimePoint now) {
     (void)from, (void)to, (void)why, (void)now;
   }
@@ -175,8 +178,8 @@ class SlaveApplication {
   }
   // Set_Slave_Add took effect: persist the new address (and the No_Add_Chg lock).
   virtual void on_address_changed(std::uint8_t new_address, bool no_add_chg,
-                                  std::span<const std::uint8_t> rem_slave_data) {
-    (void)new_address, (void)no_add_chg, (void)rem_slave_data;
+                                  std::span<const std::uint8_t> rem_slave_data, TimePoint now) {
+    (void)new_address, (void)no_add_chg, (void)rem_slave_data, (void)now;
   }
 
   // The application's own timer, folded into the slave's next_deadline().
@@ -184,4 +187,4 @@ class SlaveApplication {
   virtual void on_time(TimePoint now) { (void)now; }
 };
 
-}  // namespace rs4sim::dp
+}  // namespace rs4sim::dp::slave

@@ -8,7 +8,7 @@
 #include <chrono>
 #include <variant>
 
-namespace rs4sim::dp {
+namespace rs4sim::dp::slave {
 
 namespace {
 constexpr std::uint8_t kFnIdle = 0x48;
@@ -165,4 +165,4 @@ void Slave::start_c2_request(const fdl::Telegram& t, TimePoint now) {
   run_acyclic(job, req, now);
 }
 
-}  // namespace rs4sim::dp
+}  // namespace rs4sim::dp::slave

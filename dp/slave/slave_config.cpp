@@ -2,9 +2,9 @@
 
 #include "dp/slave/slave_error.h"
 
-namespace rs4sim::dp {
+namespace rs4sim::dp::slave {
 
-std::error_code SlaveConfig::validate() const {
+std::error_code Config::validate() const {
   if (address > 126) return SlaveError::kInvalidAddress;
   if (max_diag_length < 6 || max_diag_length > 244) return SlaveError::kInvalidMaxDiagLength;
   if (min_tsdr_default < 11) return SlaveError::kInvalidMinTsdr;
@@ -22,4 +22,4 @@ std::error_code SlaveConfig::validate() const {
   return {};
 }
 
-}  // namespace rs4sim::dp
+}  // namespace rs4sim::dp::slave

@@ -5,9 +5,9 @@
 #include <cstdint>
 #include <system_error>
 
-namespace rs4sim::dp {
+namespace rs4sim::dp::slave {
 
-struct SlaveConfig {
+struct Config {
   std::uint8_t address = 126;        // FDL address, 0…126 (126 = delivery address, §1.4)
   std::uint16_t ident_number = 0;    // PNO ident; Set_Prm must match it (§2.3)
 
@@ -41,4 +41,4 @@ struct SlaveConfig {
   [[nodiscard]] std::error_code validate() const;
 };
 
-}  // namespace rs4sim::dp
+}  // namespace rs4sim::dp::slave

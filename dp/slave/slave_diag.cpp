@@ -6,7 +6,7 @@
 
 #include <algorithm>
 
-namespace rs4sim::dp {
+namespace rs4sim::dp::slave {
 
 namespace {
 
@@ -27,14 +27,14 @@ fdl::DataUnit Slave::diagnosis() const {
   fdl::DataUnit du;
   // Station_Status_1 (§2.5): bits 0, 5, 7 are set by the master only — always 0 here.
   std::uint8_t s1 = 0;
-  if (state_ != SlaveState::kDataExch) s1 |= 0x02;  // Station_Not_Ready
+  if (state_ != State::kDataExch) s1 |= 0x02;  // Station_Not_Ready
   if (cfg_fault_) s1 |= 0x04;
   if (ext_diag_) s1 |= 0x08;
   if (not_supported_) s1 |= 0x10;
   if (prm_fault_) s1 |= 0x40;
   // Station_Status_2: bit 2 always 1; bit 7 Deactivated is the master's.
   std::uint8_t s2 = 0x04;
-  if (state_ == SlaveState::kWaitPrm) s2 |= 0x01;  // Prm_Req
+  if (state_ == State::kWaitPrm) s2 |= 0x01;  // Prm_Req
   if (stat_diag_) s2 |= 0x02;
   if (wd_on_) s2 |= 0x08;
   if (freeze_mode_) s2 |= 0x10;
@@ -86,6 +86,7 @@ std::error_code Slave::submit_alarm(const AlarmRequest& a) {
   if (6 + 4 + a.user_data.size() > config_.max_diag_length) return SlaveError::kInvalidAlarm;
   if (const auto ec = alarms_.submit(a)) return ec;
   promote_alarm();
+  wake();
   return {};
 }
 
@@ -105,7 +106,8 @@ std::error_code Slave::set_device_diagnosis(std::span<const std::uint8_t> blocks
   ext_diag_ = ext_diag;
   stat_diag_ = stat_diag;
   diag_flag_ = true;  // new diagnosis: DH until the master fetched it (§2.9)
+  wake();
   return {};
 }
 
-}  // namespace rs4sim::dp
+}  // namespace rs4sim::dp::slave

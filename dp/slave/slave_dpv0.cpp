@@ -9,20 +9,20 @@
 #include <algorithm>
 #include <chrono>
 
-namespace rs4sim::dp {
+namespace rs4sim::dp::slave {
 
 using fdl::ResponseStatus;
 
 void Slave::fault_to_wait_prm(TransitionReason why, bool keep_master, TimePoint now) {
   reset_parameters(keep_master);
-  enter(SlaveState::kWaitPrm, why, now);
+  enter(State::kWaitPrm, why, now);
 }
 
 // ---- Set_Prm (DSAP 61) ---------------------------------------------------------------------
 
 void Slave::on_set_prm(const fdl::Telegram& t, TimePoint now) {
   // DECISION (§2.2 UNCERTAIN): a slave locked to another master does not execute it.
-  if (state_ != SlaveState::kWaitPrm && master_ != pdu::sap::kNoMasterAddress && !is_owner(t.sa)) {
+  if (state_ != State::kWaitPrm && master_ != pdu::sap::kNoMasterAddress && !is_owner(t.sa)) {
     reply_rs(t);
     return;
   }
@@ -46,7 +46,7 @@ void Slave::on_set_prm(const fdl::Telegram& t, TimePoint now) {
     return;
   }
   prm_fault_ = cfg_fault_ = not_supported_ = false;
-  switch (judge_prm(prm)) {
+  switch (judge_prm(prm, now)) {
     case PrmVerdict::kAccept: take_over_prm(prm, t.sa, now); break;
     case PrmVerdict::kPrmFault:
       prm_fault_ = true;
@@ -59,7 +59,7 @@ void Slave::on_set_prm(const fdl::Telegram& t, TimePoint now) {
   }
 }
 
-PrmVerdict Slave::judge_prm(const pdu::SetPrm& prm) {
+PrmVerdict Slave::judge_prm(const pdu::SetPrm& prm, TimePoint now) {
   const auto& st = prm.station_status;
   if (prm.ident_number != config_.ident_number) return PrmVerdict::kPrmFault;  // §2.3
   if (st.wd_on && (prm.wd_fact_1 == 0 || prm.wd_fact_2 == 0)) return PrmVerdict::kPrmFault;
@@ -72,7 +72,7 @@ PrmVerdict Slave::judge_prm(const pdu::SetPrm& prm) {
     if (d.fail_safe && !config_.fail_safe_supported) return PrmVerdict::kNotSupported;
     if (d.wd_base_1ms && !config_.wd_base_1ms_supported) return PrmVerdict::kNotSupported;
   }
-  return app_.check_parameters(prm);
+  return app_.check_parameters(prm, now);
 }
 
 void Slave::take_over_prm(const pdu::SetPrm& prm, std::uint8_t master, TimePoint now) {
@@ -96,13 +96,13 @@ void Slave::take_over_prm(const pdu::SetPrm& prm, std::uint8_t master, TimePoint
   } else {
     dpv1_.reset();
   }
-  enter(SlaveState::kWaitCfg, TransitionReason::kPrmAccepted, now);
+  enter(State::kWaitCfg, TransitionReason::kPrmAccepted, now);
 }
 
 // ---- Chk_Cfg (DSAP 62) / Get_Cfg (DSAP 59) ---------------------------------------------------
 
 void Slave::on_chk_cfg(const fdl::Telegram& t, TimePoint now) {
-  if (state_ == SlaveState::kWaitPrm || !is_owner(t.sa)) {
+  if (state_ == State::kWaitPrm || !is_owner(t.sa)) {
     reply_rs(t);
     return;
   }
@@ -110,7 +110,7 @@ void Slave::on_chk_cfg(const fdl::Telegram& t, TimePoint now) {
   const auto summary = pdu::summarize_cfg(bytes_of(t.data), pdu::CfgService::kChkCfg);
   const bool user_check = dpv1_ && dpv1_->check_cfg_mode;
   const CfgVerdict verdict =
-      summary ? app_.check_config(bytes_of(t.data), user_check) : CfgVerdict::kCfgFault;
+      summary ? app_.check_config(bytes_of(t.data), user_check, now) : CfgVerdict::kCfgFault;
   if (verdict != CfgVerdict::kAccept) {
     cfg_fault_ = true;  // DECISION: Cfg_Fault → Wait_Prm, Master_Add kept for the master
     fault_to_wait_prm(TransitionReason::kCfgFault, true, now);
@@ -121,8 +121,8 @@ void Slave::on_chk_cfg(const fdl::Telegram& t, TimePoint now) {
   output_length_ = summary.value().output_bytes;
   outputs_.assign(output_length_, 0);
   c1_open_ = dpv1_.has_value();  // §3.3: SAP 51 opens when Chk_Cfg is accepted
-  if (state_ != SlaveState::kDataExch) {
-    enter(SlaveState::kDataExch, TransitionReason::kCfgAccepted, now);
+  if (state_ != State::kDataExch) {
+    enter(State::kDataExch, TransitionReason::kCfgAccepted, now);
   }
 }
 
@@ -137,7 +137,7 @@ void Slave::on_get_cfg(const fdl::Telegram& t) {
 
 void Slave::on_global_control(const fdl::Telegram& t, TimePoint now) {
   // Executed only in Data_Exch, from the owning master, for a selected group (§2.6).
-  if (state_ != SlaveState::kDataExch || !is_owner(t.sa)) return;
+  if (state_ != State::kDataExch || !is_owner(t.sa)) return;
   const auto decoded = pdu::decode_global_control(bytes_of(t.data));
   if (!decoded || !decoded.value().addresses(group_ident_)) return;
   const pdu::GlobalControl& gc = decoded.value();
@@ -160,24 +160,24 @@ void Slave::on_global_control(const fdl::Telegram& t, TimePoint now) {
     freeze_mode_ = false;
   } else if (gc.freeze) {
     freeze_mode_ = false;
-    fill_inputs(frozen_inputs_);  // latch the live inputs
+    fill_inputs(frozen_inputs_, now);  // latch the live inputs
     freeze_mode_ = true;
   }
 }
 
 // ---- Data_Exchange (default SAP) -------------------------------------------------------------
 
-void Slave::fill_inputs(fdl::DataUnit& out) {
+void Slave::fill_inputs(fdl::DataUnit& out, TimePoint now) {
   if (freeze_mode_) {
     out.assign(frozen_inputs_.begin(), frozen_inputs_.end());
     return;
   }
   out.resize(input_length_);
-  app_.read_inputs(std::span<std::uint8_t>(out.data(), out.size()));
+  app_.read_inputs(std::span<std::uint8_t>(out.data(), out.size()), now);
 }
 
 void Slave::on_data_exchange(const fdl::Telegram& t, TimePoint now) {
-  if (state_ != SlaveState::kDataExch || !is_owner(t.sa)) {
+  if (state_ != State::kDataExch || !is_owner(t.sa)) {
     reply_rs(t);  // §2.2: DX outside Data_Exch → SD1 FC RS
     return;
   }
@@ -203,19 +203,19 @@ void Slave::on_data_exchange(const fdl::Telegram& t, TimePoint now) {
     }
     return;
   }
-  fill_inputs(reply_data(t, status));
+  fill_inputs(reply_data(t, status), now);
 }
 
 // ---- Rd_Inp (56) / Rd_Outp (57) / Set_Slave_Add (55) ----------------------------------------
 
-void Slave::on_read_io(const fdl::Telegram& t, bool inputs) {
-  if (state_ != SlaveState::kDataExch) {
+void Slave::on_read_io(const fdl::Telegram& t, bool inputs, TimePoint now) {
+  if (state_ != State::kDataExch) {
     reply_rs(t);  // DECISION (§2.2 UNCERTAIN): only in Data_Exch, from any master
     return;
   }
   fdl::DataUnit& du = reply_data(t, ResponseStatus::kDataLow);
   if (inputs) {
-    fill_inputs(du);
+    fill_inputs(du, now);
   } else {
     du.assign(outputs_.begin(), outputs_.end());
   }
@@ -223,7 +223,7 @@ void Slave::on_read_io(const fdl::Telegram& t, bool inputs) {
 
 void Slave::on_set_slave_add(const fdl::Telegram& t, TimePoint now) {
   // §2.7: only in Wait_Prm, only if supported and not locked by No_Add_Chg.
-  if (!config_.set_slave_add_supported || state_ != SlaveState::kWaitPrm || address_locked_) {
+  if (!config_.set_slave_add_supported || state_ != State::kWaitPrm || address_locked_) {
     reply_rs(t);
     return;
   }
@@ -239,8 +239,9 @@ void Slave::on_set_slave_add(const fdl::Telegram& t, TimePoint now) {
   fcb_.reset();
   app_.on_address_changed(ssa.new_address, ssa.no_add_chg,
                           std::span<const std::uint8_t>(ssa.rem_slave_data.data(),
-                                                        ssa.rem_slave_data.size()));
-  enter(SlaveState::kWaitPrm, TransitionReason::kAddressChanged, now);
+                                                        ssa.rem_slave_data.size()),
+                          now);
+  enter(State::kWaitPrm, TransitionReason::kAddressChanged, now);
 }
 
-}  // namespace rs4sim::dp
+}  // namespace rs4sim::dp::slave

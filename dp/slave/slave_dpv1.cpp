@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <variant>
 
-namespace rs4sim::dp {
+namespace rs4sim::dp::slave {
 
 namespace {
 constexpr std::uint8_t kFnRead = 0x5E;
@@ -159,7 +159,9 @@ std::error_code Slave::complete_acyclic(AcyclicChannel channel, const AcyclicRes
   AcyclicJob& job = channel == AcyclicChannel::kC1 ? c1_ : c2_.job;
   if (job.phase != AcyclicJob::Phase::kWaitingForApp) return SlaveError::kNoPendingRequest;
   if (r.kind == AcyclicResult::Kind::kPending) return {};
-  return finish_job(job, r);
+  const auto ec = finish_job(job, r);
+  wake();
+  return ec;
 }
 
 void Slave::on_alarm_ack(AcyclicJob& job, const fdl::Telegram& t, TimePoint now) {
@@ -179,4 +181,4 @@ void Slave::on_alarm_ack(AcyclicJob& job, const fdl::Telegram& t, TimePoint now)
   promote_alarm();
 }
 
-}  // namespace rs4sim::dp
+}  // namespace rs4sim::dp::slave

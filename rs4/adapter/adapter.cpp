@@ -1,6 +1,7 @@
 // Adapter: power, start-up, Set_Prm/Chk_Cfg, DP state, LED, observation.
 // spec/rs4-profisafe.md §1, §2, §4, §8; manual §4.4, §4.5, §6.3.
 #include "rs4/adapter/adapter.h"
+#include "rs4/adapter/rs4_gsd.h"
 
 #include <algorithm>
 #include <string>
@@ -75,7 +76,6 @@ Adapter::Adapter(AdapterConfig config)
 
 void Adapter::power_on(TimePoint now) {
   if (powered_) return;
-  now_ = now;
   powered_ = true;
   rs4_up_ = false;
   released_ = false;
@@ -85,7 +85,6 @@ void Adapter::power_on(TimePoint now) {
 }
 
 void Adapter::power_off(TimePoint now) {
-  now_ = now;
   powered_ = false;
   scanner_.power_off(now);
   errors_.clear();  // §5.3: the error memory does not survive power-off
@@ -116,7 +115,10 @@ void Adapter::start_adapter(TimePoint now, bool keep_errors) {
   address_ = addr ? std::optional<std::uint8_t>(addr.value()) : std::nullopt;
   fdevice_ = profisafe::FDevice(fdevice_config(address_));
   if (!keep_errors) errors_.clear();
-  init_end_ = now + config_.init_duration;
+  init_end_.reset();
+  if (config_.init_duration > decltype(config_.init_duration)::zero()) {
+    init_end_ = now + config_.init_duration;
+  }
   connected_ = false;
   prm_refused_ = false;
   sync_running_ = false;
@@ -148,12 +150,12 @@ std::optional<TimePoint> Adapter::wants_link_down_until() const noexcept {
 }
 
 // ---- Set_Prm / Chk_Cfg (§8, docs/gsd.md) -------------------------------------------------
-dp::PrmVerdict Adapter::check_parameters(const dp::pdu::SetPrm& prm) {
+dp::slave::PrmVerdict Adapter::check_parameters(const dp::pdu::SetPrm& prm, TimePoint now) {
   // Not ready (no power, invalid address switches, adapter still initialising): refused
   // without a PROFIsafe diagnosis; the master repeats the start-up.
-  if (!powered_ || !address_ || now_ < init_end_ || link_down_until_) {
+  if (!powered_ || !address_ || (init_end_ && now < *init_end_) || link_down_until_) {
     ++counters_.prm_refused;
-    return dp::PrmVerdict::kPrmFault;
+    return dp::slave::PrmVerdict::kPrmFault;
   }
   const std::span<const std::uint8_t> user(prm.user_data.data(), prm.user_data.size());
   const bool shaped = user.size() == kFBlockHeader.size() + profisafe::kFParametersSize &&
@@ -161,7 +163,7 @@ dp::PrmVerdict Adapter::check_parameters(const dp::pdu::SetPrm& prm) {
   if (!shaped) {  // not the F-parameter block of docs/gsd.md: Prm_Fault, no status PDU
     ++counters_.prm_refused;
     if (control_) control_->set_device_diagnosis({}, false, false);
-    return dp::PrmVerdict::kPrmFault;
+    return dp::slave::PrmVerdict::kPrmFault;
   }
   const auto v = fdevice_.set_parameters(user.subspan(kFBlockHeader.size()));
   // §8: the status PDU 05 81 00 00 nn follows the 6 standard diagnosis bytes; a refused
@@ -171,29 +173,29 @@ dp::PrmVerdict Adapter::check_parameters(const dp::pdu::SetPrm& prm) {
   prm_refused_ = !v.ok();
   if (!v.ok()) {
     ++counters_.prm_refused;
-    return dp::PrmVerdict::kPrmFault;
+    return dp::slave::PrmVerdict::kPrmFault;
   }
   ++counters_.prm_accepted;
-  return dp::PrmVerdict::kAccept;
+  return dp::slave::PrmVerdict::kAccept;
 }
 
-dp::CfgVerdict Adapter::check_config(std::span<const std::uint8_t> cfg, bool user_check) {
-  (void)user_check;  // the RS4 has one module: the Cfg must be exactly C0 84 84
+dp::slave::CfgVerdict Adapter::check_config(std::span<const std::uint8_t> cfg, bool user_check,
+                                     TimePoint now) {
+  (void)user_check, (void)now;  // the RS4 has one module: the Cfg must be exactly C0 84 84
   if (std::equal(cfg.begin(), cfg.end(), kRealConfig.begin(), kRealConfig.end())) {
-    return dp::CfgVerdict::kAccept;
+    return dp::slave::CfgVerdict::kAccept;
   }
   ++counters_.cfg_refused;
-  return dp::CfgVerdict::kCfgFault;
+  return dp::slave::CfgVerdict::kCfgFault;
 }
 
-void Adapter::on_state_change(dp::SlaveState from, dp::SlaveState to, dp::TransitionReason why,
+void Adapter::on_state_change(dp::slave::State from, dp::slave::State to, dp::slave::TransitionReason why,
                               TimePoint now) {
   (void)why;
-  now_ = now;
   if (!powered_) return;
-  if (to == dp::SlaveState::kDataExch && from != dp::SlaveState::kDataExch) {
+  if (to == dp::slave::State::kDataExch && from != dp::slave::State::kDataExch) {
     enter_data_exchange(now);
-  } else if (from == dp::SlaveState::kDataExch && to != dp::SlaveState::kDataExch) {
+  } else if (from == dp::slave::State::kDataExch && to != dp::slave::State::kDataExch) {
     connected_ = false;
     restart_bus_ = false;
     drive_restart_input(now);
@@ -219,7 +221,7 @@ void Adapter::enter_data_exchange(TimePoint now) {
   refresh_input(now);
 }
 
-void Adapter::on_c2_event(dp::C2Event ev, std::uint8_t master, TimePoint now) {
+void Adapter::on_c2_event(dp::slave::C2Event ev, std::uint8_t master, TimePoint now) {
   (void)ev, (void)master, (void)now;
   // A new or ended class 2 connection starts without leftover blocks or answers.
   c2_.clear();
@@ -233,7 +235,7 @@ std::optional<TimePoint> Adapter::next_deadline() const {
     if (t && (!next || *t < *next)) next = t;
   };
   fold(fdevice_.next_deadline());
-  if (init_end_ > now_) fold(init_end_);
+  fold(init_end_);
   fold(link_down_until_);
   fold(field_pair_release_at_);
   if (error_active_) fold(last_error_at_ + config_.going_alarm_delay);
@@ -241,8 +243,8 @@ std::optional<TimePoint> Adapter::next_deadline() const {
 }
 
 void Adapter::on_time(TimePoint now) {
-  now_ = now;
   if (!powered_) return;
+  if (init_end_ && now >= *init_end_) init_end_.reset();
   if (link_down_until_ && now >= *link_down_until_) link_down_until_.reset();
   fdevice_.on_time(now);
   collect_rs4(now);
@@ -255,7 +257,7 @@ void Adapter::on_time(TimePoint now) {
 LedState Adapter::led() const noexcept {
   if (!powered_) return LedState::kDark;
   if (!address_) return LedState::kSteadyFault;  // steady > 3 s: not addressable
-  if (now_ < init_end_ || link_down_until_) return LedState::kSteadyInit;
+  if (init_end_ || link_down_until_) return LedState::kSteadyInit;
   if (prm_refused_) return LedState::kSlowBlink;
   return connected_ ? LedState::kOffConnected : LedState::kFastBlink;
 }

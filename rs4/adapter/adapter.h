@@ -2,8 +2,8 @@
 // The PROFIsafe adapter of the RS4/PROFIsafe (spec/rs4-profisafe.md §2 … §8; manual
 // §4.4, §4.5, §5, §7): what makes rs4sim behave like the real device on the bus.
 //
-// rs4::adapter::Adapter implements dp::SlaveApplication. The owner (rs4/device) builds a
-// dp::Slave at station_address() around it, forwards the slave's calls, honours
+// rs4::adapter::Adapter implements dp::slave::SlaveApplication. The owner (rs4/device) builds a
+// dp::slave::Slave at station_address() around it, forwards the slave's calls, honours
 // wants_link_down_until() (PROFI_CMD_RESET, §5.3) and drives on_time()/next_deadline().
 // Sans-I/O: time comes in, no clock reads, no threads (DESIGN.md §1).
 //
@@ -16,6 +16,7 @@
 //
 // Decisions the manual leaves open are listed in docs/rs4-adapter.md.
 
+#include "gsd/device_gsd.h"
 #include "dp/slave/slave_application.h"
 #include "profisafe/f_device.h"
 #include "rs4/adapter/cyclic_bytes.h"
@@ -40,12 +41,12 @@ namespace rs4sim::rs4::adapter {
 using TimePoint = dp::TimePoint;
 using std::chrono::milliseconds;
 
-// ---- configuration constants matching the project's GSD (docs/gsd.md) -----------------
-// The adapter does not depend on gsd/ (layers look down); tests/rs4/adapter proves that
-// what gsd::configure produces for the shipped GSD is accepted.
-inline constexpr std::uint16_t kIdentNumber = 0x5234;                       // GSD Ident_Number
-inline constexpr std::array<std::uint8_t, 3> kRealConfig{0xC0, 0x84, 0x84};  // 5 bytes out/in
-inline constexpr std::array<std::uint8_t, 4> kFBlockHeader{0x0E, 0x05, 0x01, 0x00};
+// ---- configuration constants of the project's GSD (docs/gsd.md, gsd/device_gsd.h) -----
+// One source: the layout constants beside the built-in GSD (ident, F_Dest_Add and slave
+// settings: rs4/adapter/rs4_gsd.h); tests/rs4/adapter proves that what gsd::configure
+// produces for the shipped GSD is accepted.
+inline constexpr const auto& kRealConfig = gsd::kRs4simCfg;  // C0 84 84: 5 bytes out/in
+inline constexpr const auto& kFBlockHeader = gsd::kRs4simFBlockHeader;
 inline constexpr std::size_t kPduSize = 5;  // PROFIsafe V1: data, status, number, CRC2 hi/lo
 
 struct AdapterConfig {
@@ -120,7 +121,7 @@ struct AdapterView {
   bool error_active = false;                    // diagnosis alarm "coming" outstanding
 };
 
-class Adapter final : public dp::SlaveApplication {
+class Adapter final : public dp::slave::SlaveApplication {
  public:
   explicit Adapter(AdapterConfig config = {});  // powered off
 
@@ -161,27 +162,28 @@ class Adapter final : public dp::SlaveApplication {
   [[nodiscard]] ProxyPhase proxy_phase() const noexcept;
   // The parameter-check gate of §4: true once the OSSD bit may follow the RS4.
   [[nodiscard]] bool released() const noexcept { return released_; }
-  [[nodiscard]] protocol::FlowState flow_state(dp::AcyclicChannel ch) const noexcept;
-  [[nodiscard]] std::uint8_t flow_byte(dp::AcyclicChannel ch, bool payload) const noexcept;
+  [[nodiscard]] protocol::FlowState flow_state(dp::slave::AcyclicChannel ch) const noexcept;
+  [[nodiscard]] std::uint8_t flow_byte(dp::slave::AcyclicChannel ch, bool payload) const noexcept;
   [[nodiscard]] const ErrorMemory& error_memory() const noexcept { return errors_; }
   [[nodiscard]] const AdapterCounters& counters() const noexcept { return counters_; }
   [[nodiscard]] const profisafe::FDevice& fdevice() const noexcept { return fdevice_; }
   profisafe::PduFaults& safety_faults() noexcept { return fdevice_.faults(); }
-  [[nodiscard]] std::size_t pending_answers(dp::AcyclicChannel ch) const noexcept;
+  [[nodiscard]] std::size_t pending_answers(dp::slave::AcyclicChannel ch) const noexcept;
   [[nodiscard]] std::size_t buffered_events() const noexcept { return event_buffer_.size(); }
 
-  // ---- dp::SlaveApplication ----------------------------------------------------------
-  void on_attach(dp::SlaveControl& control) override { control_ = &control; }
-  dp::PrmVerdict check_parameters(const dp::pdu::SetPrm& prm) override;
-  dp::CfgVerdict check_config(std::span<const std::uint8_t> cfg, bool user_check) override;
+  // ---- dp::slave::SlaveApplication ----------------------------------------------------------
+  void on_attach(dp::slave::SlaveControl& control) override { control_ = &control; }
+  dp::slave::PrmVerdict check_parameters(const dp::pdu::SetPrm& prm, TimePoint now) override;
+  dp::slave::CfgVerdict check_config(std::span<const std::uint8_t> cfg, bool user_check,
+                              TimePoint now) override;
   [[nodiscard]] std::span<const std::uint8_t> real_config() const override { return kRealConfig; }
   void on_outputs(std::span<const std::uint8_t> outputs, TimePoint now) override;
-  void on_outputs_cleared(dp::OutputClear why, TimePoint now) override;
-  void read_inputs(std::span<std::uint8_t> inputs) override;
-  void on_state_change(dp::SlaveState from, dp::SlaveState to, dp::TransitionReason why,
+  void on_outputs_cleared(dp::slave::OutputClear why, TimePoint now) override;
+  void read_inputs(std::span<std::uint8_t> inputs, TimePoint now) override;
+  void on_state_change(dp::slave::State from, dp::slave::State to, dp::slave::TransitionReason why,
                        TimePoint now) override;
-  dp::AcyclicResult on_acyclic(const dp::AcyclicRequest& req, TimePoint now) override;
-  void on_c2_event(dp::C2Event ev, std::uint8_t master, TimePoint now) override;
+  dp::slave::AcyclicResult on_acyclic(const dp::slave::AcyclicRequest& req, TimePoint now) override;
+  void on_c2_event(dp::slave::C2Event ev, std::uint8_t master, TimePoint now) override;
   [[nodiscard]] std::optional<TimePoint> next_deadline() const override;
   void on_time(TimePoint now) override;
 
@@ -211,15 +213,15 @@ class Adapter final : public dp::SlaveApplication {
   [[nodiscard]] std::uint8_t compose_input_byte(TimePoint now) const noexcept;
   void drive_restart_input(TimePoint now);
   // adapter_acyclic.cpp
-  dp::AcyclicResult on_write(const dp::AcyclicRequest& req, Channel& ch, TimePoint now);
-  dp::AcyclicResult on_read(const dp::AcyclicRequest& req, Channel& ch, TimePoint now);
-  void execute(std::span<const std::uint8_t> command, dp::AcyclicChannel which, Channel& ch,
+  dp::slave::AcyclicResult on_write(const dp::slave::AcyclicRequest& req, Channel& ch, TimePoint now);
+  dp::slave::AcyclicResult on_read(const dp::slave::AcyclicRequest& req, Channel& ch, TimePoint now);
+  void execute(std::span<const std::uint8_t> command, dp::slave::AcyclicChannel which, Channel& ch,
                TimePoint now);
   void execute_adapter_command(std::span<const std::uint8_t> command, Channel& ch, TimePoint now);
   [[nodiscard]] std::vector<std::uint8_t> execute_rs4_command(std::span<const std::uint8_t> command) const;
-  [[nodiscard]] bool ready_for_write(dp::AcyclicChannel which) const noexcept;
-  [[nodiscard]] Channel& channel(dp::AcyclicChannel which) noexcept;
-  [[nodiscard]] const Channel& channel(dp::AcyclicChannel which) const noexcept;
+  [[nodiscard]] bool ready_for_write(dp::slave::AcyclicChannel which) const noexcept;
+  [[nodiscard]] Channel& channel(dp::slave::AcyclicChannel which) noexcept;
+  [[nodiscard]] const Channel& channel(dp::slave::AcyclicChannel which) const noexcept;
   // adapter_events.cpp: RS4 events, forwarding, error memory, alarms
   void collect_rs4(TimePoint now);
   void capture_forwarding();
@@ -230,15 +232,14 @@ class Adapter final : public dp::SlaveApplication {
   void check_going_alarm(TimePoint now);
 
   AdapterConfig config_;
-  dp::SlaveControl* control_ = nullptr;
+  dp::slave::SlaveControl* control_ = nullptr;
   scanner::Scanner scanner_;
   profisafe::FDevice fdevice_;
   ErrorMemory errors_;
 
   bool powered_ = false;
   std::optional<std::uint8_t> address_;
-  TimePoint now_{};
-  TimePoint init_end_{};
+  std::optional<TimePoint> init_end_;  // adapter initialising until then (§1)
   std::optional<TimePoint> link_down_until_;
   bool connected_ = false;                        // class 1 in Data_Exch
   bool prm_refused_ = false;                      // F-parameters refused (LED slow blink)

@@ -10,9 +10,9 @@
 namespace rs4sim::rs4::adapter {
 
 namespace {
-using dp::AcyclicChannel;
-using dp::AcyclicError;
-using dp::AcyclicResult;
+using dp::slave::AcyclicChannel;
+using dp::slave::AcyclicError;
+using dp::slave::AcyclicResult;
 // DPV1 Error_Code_1 (profibus-dp.md §3.3): class 0xB access, codes 0 invalid index,
 // 1 write length error, 2 invalid slot, 8 invalid parameter; 0xA9 feature not supported.
 constexpr AcyclicError kInvalidIndex{0x80, 0xB0, 0x00};
@@ -36,7 +36,7 @@ std::size_t Adapter::pending_answers(AcyclicChannel which) const noexcept {
 // Table 5.2-2 bits 6..4. DECISION: 011 is shown to every master while a proxy sync runs
 // (the proxy's own requests on C1 are processed normally).
 protocol::FlowState Adapter::flow_state(AcyclicChannel which) const noexcept {
-  if (!powered_ || now_ < init_end_ || link_down_until_) return protocol::FlowState::kNoCommunicationPath;
+  if (!powered_ || init_end_ || link_down_until_) return protocol::FlowState::kNoCommunicationPath;
   if (rs232_through_) return protocol::FlowState::kPcAdapterAttached;
   if (sync_running_) return protocol::FlowState::kProxyBusy;
   if (which == AcyclicChannel::kC2 && !connected_) return protocol::FlowState::kNoConnection;
@@ -58,11 +58,10 @@ std::uint8_t Adapter::flow_byte(AcyclicChannel which, bool payload) const noexce
   return protocol::encode_flow_control({ready_for_write(which), payload, flow_state(which)});
 }
 
-dp::AcyclicResult Adapter::on_acyclic(const dp::AcyclicRequest& req, TimePoint now) {
-  now_ = now;
+dp::slave::AcyclicResult Adapter::on_acyclic(const dp::slave::AcyclicRequest& req, TimePoint now) {
   if (!powered_) return AcyclicResult::fail(kNotSupported);
   collect_rs4(now);
-  if (req.service == dp::AcyclicService::kDataTransport) {
+  if (req.service == dp::slave::AcyclicService::kDataTransport) {
     ++counters_.dpv1_rejected;
     return AcyclicResult::fail(kNotSupported);
   }
@@ -72,15 +71,15 @@ dp::AcyclicResult Adapter::on_acyclic(const dp::AcyclicRequest& req, TimePoint n
     return AcyclicResult::fail(req.slot != 0 ? kInvalidSlot : kInvalidIndex);
   }
   auto& ch = channel(req.channel);
-  return req.service == dp::AcyclicService::kWrite ? on_write(req, ch, now)
+  return req.service == dp::slave::AcyclicService::kWrite ? on_write(req, ch, now)
                                                     : on_read(req, ch, now);
 }
 
-dp::AcyclicResult Adapter::on_write(const dp::AcyclicRequest& req, Channel& ch, TimePoint now) {
+dp::slave::AcyclicResult Adapter::on_write(const dp::slave::AcyclicRequest& req, Channel& ch, TimePoint now) {
   ++counters_.writes;
   if (req.channel == AcyclicChannel::kC2 && req.first_write_after_initiate && control_) {
     // §7.1: update alarm to the class 1 master, 04 06 00 spec (ack required).
-    const dp::AlarmRequest alarm{protocol::kAlarmTypeUpdate, 0, 0, true, {}};
+    const dp::slave::AlarmRequest alarm{protocol::kAlarmTypeUpdate, 0, 0, true, {}};
     if (control_->submit_alarm(alarm)) ++counters_.alarms_refused; else ++counters_.alarms_submitted;
   }
   // §5: records of 5..240 bytes.
@@ -120,7 +119,7 @@ dp::AcyclicResult Adapter::on_write(const dp::AcyclicRequest& req, Channel& ch, 
   return AcyclicResult::ok();
 }
 
-dp::AcyclicResult Adapter::on_read(const dp::AcyclicRequest& req, Channel& ch, TimePoint now) {
+dp::slave::AcyclicResult Adapter::on_read(const dp::slave::AcyclicRequest& req, Channel& ch, TimePoint now) {
   (void)now;
   ++counters_.reads;
   if (req.length < protocol::kMinWriteRecordSize) {

@@ -14,7 +14,6 @@ bool rs4_operational(scanner::OperatingState s) noexcept {
 
 // ---- Data_Exchange -------------------------------------------------------------------
 void Adapter::on_outputs(std::span<const std::uint8_t> outputs, TimePoint now) {
-  now_ = now;
   if (!powered_) return;
   collect_rs4(now);
   std::fill(output_pdu_.begin(), output_pdu_.end(), std::uint8_t{0});
@@ -40,9 +39,8 @@ void Adapter::on_outputs(std::span<const std::uint8_t> outputs, TimePoint now) {
   refresh_input(now);
 }
 
-void Adapter::on_outputs_cleared(dp::OutputClear why, TimePoint now) {
+void Adapter::on_outputs_cleared(dp::slave::OutputClear why, TimePoint now) {
   (void)why;
-  now_ = now;
   if (!powered_) return;
   output_byte_ = 0;
   restart_bus_ = false;
@@ -50,10 +48,10 @@ void Adapter::on_outputs_cleared(dp::OutputClear why, TimePoint now) {
   refresh_input(now);
 }
 
-void Adapter::read_inputs(std::span<std::uint8_t> inputs) {
+void Adapter::read_inputs(std::span<std::uint8_t> inputs, TimePoint now) {
   std::fill(inputs.begin(), inputs.end(), std::uint8_t{0});
   if (!powered_) return;
-  refresh_input(now_);
+  refresh_input(now);
   const auto pdu = fdevice_.response();  // empty while muted by fault injection
   std::fill(input_pdu_.begin(), input_pdu_.end(), std::uint8_t{0});
   std::copy_n(pdu.begin(), std::min(pdu.size(), kPduSize), input_pdu_.begin());
@@ -108,7 +106,6 @@ void Adapter::drive_restart_input(TimePoint now) {
 }
 
 void Adapter::set_restart_button(bool pressed, TimePoint now) {
-  now_ = now;
   restart_button_ = pressed;
   if (!powered_) return;
   drive_restart_input(now);
@@ -129,7 +126,6 @@ void Adapter::update_rs4_phase(TimePoint now) {
 }
 
 void Adapter::attach_pc_adapter(TimePoint now) {
-  now_ = now;
   pc_attached_ = true;
   // §3.1 bit 3: during a sync the RS232 is switched through only after the sync ends.
   if (!sync_running_) rs232_through_ = true;
@@ -137,7 +133,6 @@ void Adapter::attach_pc_adapter(TimePoint now) {
 }
 
 void Adapter::detach_pc_adapter(TimePoint now) {
-  now_ = now;
   const bool was = pc_attached_;
   pc_attached_ = false;
   rs232_through_ = false;
@@ -149,7 +144,6 @@ void Adapter::detach_pc_adapter(TimePoint now) {
 }
 
 std::error_code Adapter::proxy_sync_started(TimePoint now) {
-  now_ = now;
   if (!powered_) return AdapterApiError::kPoweredOff;
   if (!proxy_request_) return AdapterApiError::kNoSyncRequested;
   proxy_request_ = false;  // §3.1 bit 2: reset when the check begins
@@ -159,7 +153,6 @@ std::error_code Adapter::proxy_sync_started(TimePoint now) {
 }
 
 std::error_code Adapter::proxy_sync_succeeded(TimePoint now) {
-  now_ = now;
   if (!powered_) return AdapterApiError::kPoweredOff;
   if (!sync_running_) return AdapterApiError::kNoSyncRunning;
   sync_running_ = false;
@@ -170,7 +163,6 @@ std::error_code Adapter::proxy_sync_succeeded(TimePoint now) {
 }
 
 std::error_code Adapter::proxy_sync_failed(TimePoint now) {
-  now_ = now;
   if (!powered_) return AdapterApiError::kPoweredOff;
   if (!sync_running_) return AdapterApiError::kNoSyncRunning;
   sync_running_ = false;

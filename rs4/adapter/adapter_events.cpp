@@ -98,7 +98,7 @@ void Adapter::submit_diagnosis_alarm(protocol::AlarmDifferentiation d) {
   a.uc1_error = last_uc1_error_;
   a.uc1_count = errors_.count(Processor::kUc1, last_uc1_error_);
   const auto pdu = protocol::encode_diagnosis_alarm(a);
-  dp::AlarmRequest req;
+  dp::slave::AlarmRequest req;
   req.type = protocol::kAlarmTypeDiagnosis;
   req.slot = 0;
   req.specifier = static_cast<std::uint8_t>(d);

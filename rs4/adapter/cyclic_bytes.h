@@ -65,13 +65,8 @@ enum class AddressError : std::uint8_t {
 const std::error_category& address_category() noexcept;
 std::error_code make_error_code(AddressError e) noexcept;
 
-inline constexpr std::uint16_t kFDestAddBase = 500;  // F_Dest_Add = 500 + address (§2)
-
 // Station address 0..126: bit 7 of the switch value is not evaluated.
 boost::outcome_v2::std_result<std::uint8_t> station_address(AddressSwitches s) noexcept;
-[[nodiscard]] constexpr std::uint16_t f_dest_add(std::uint8_t address) noexcept {
-  return static_cast<std::uint16_t>(kFDestAddBase + address);
-}
 
 }  // namespace rs4sim::rs4::adapter
 

@@ -1,6 +1,6 @@
 #include "rs4/device/rs4_device.h"
 
-#include "gsd/device_gsd.h"
+#include "rs4/adapter/rs4_gsd.h"
 
 namespace rs4sim::rs4::device {
 
@@ -18,32 +18,18 @@ adapter::AdapterConfig adapter_config(const Rs4DeviceConfig& c) {
 
 }  // namespace
 
-dp::SlaveConfig rs4_slave_config(std::uint8_t address) {
-  dp::SlaveConfig s;
-  s.address = address;
-  s.ident_number = gsd::kRs4simIdentNumber;  // Ident_Number 0x5234 (docs/gsd.md)
-  s.dpv1 = true;                             // DPV1_Slave = 1
-  s.fail_safe_supported = false;             // Fail_Safe = 0
-  s.wd_base_1ms_supported = false;           // WD_Base_1ms_supp = 0
-  s.c1_max_data_length = 240;                // C1_Max_Data_Len
-  s.c2_supported = true;                     // C2_Read_Write_supp = 1
-  s.c2_max_data_length = 240;                // C2_Max_Data_Len
-  s.c2_rm_send_timeout = 100;                // C2_Response_Timeout = 1 s
-  s.alarm_capacity = 8;                      // Alarm_Sequence_Mode_Count = 8
-  s.alarm_sequence_numbers = 8;
-  s.max_diag_length = 32;                    // Max_Diag_Data_Len = 32
-  return s;
-}
+dp::slave::Config rs4_slave_config(std::uint8_t address) { return adapter::slave_config(address); }
 
 Rs4Device::Rs4Device(const Rs4DeviceConfig& config) : adapter_(adapter_config(config)) {
   const auto addr = adapter::station_address(config.switches);
   fresh_slave(addr ? addr.value() : std::uint8_t{126});
 }
 
-// A new dp::Slave in Wait_Prm. The old one is replaced in place, so the adapter's
+// A new dp::slave::Slave in Wait_Prm. The old one is replaced in place, so the adapter's
 // SlaveControl pointer is valid again as soon as the new slave attaches itself.
 void Rs4Device::fresh_slave(std::uint8_t address) {
   slave_.emplace(rs4_slave_config(address), adapter_);
+  slave_->set_wake_handler([this] { wake(); });  // the slave's wake-ups are the device's
 }
 
 void Rs4Device::power_on(TimePoint now) {
@@ -55,6 +41,7 @@ void Rs4Device::power_on(TimePoint now) {
   adapter_.power_on(now);  // reads the address switches (§2)
   const auto addr = adapter_.station_address();
   fresh_slave(addr ? *addr : slave_->address());
+  wake();
 }
 
 void Rs4Device::power_off(TimePoint now) {
@@ -62,6 +49,7 @@ void Rs4Device::power_off(TimePoint now) {
   link_down_ = false;
   pending_.clear();
   adapter_.power_off(now);
+  wake();
 }
 
 void Rs4Device::power_cycle(TimePoint now) {

@@ -1,6 +1,6 @@
 #pragma once
 // One emulated RS4/PROFIsafe on a PROFIBUS link (spec/rs4-profisafe.md §1, §2, §5.3):
-// a dp::Slave around an rs4::adapter::Adapter (which owns the Scanner), as a dp::Station
+// a dp::slave::Slave around an rs4::adapter::Adapter (which owns the Scanner), as a dp::Station
 // so that every link (memory bus, serial/pty, UDP) runs it.
 //
 // Device behaviour this class adds on top of the adapter:
@@ -40,9 +40,9 @@ struct Rs4DeviceConfig {
   return {static_cast<std::uint8_t>((address >> 4) & 0x0F), static_cast<std::uint8_t>(address & 0x0F)};
 }
 
-// The dp::Slave features of the RS4/PROFIsafe as its GSD declares them (RSIM5234.gsd:
+// The dp::slave::Slave features of the RS4/PROFIsafe as its GSD declares them (RSIM5234.gsd:
 // DPV1, C2, diagnosis/update alarms in sequence mode for 8 alarms, no Sync/Freeze).
-[[nodiscard]] dp::SlaveConfig rs4_slave_config(std::uint8_t address);
+[[nodiscard]] dp::slave::Config rs4_slave_config(std::uint8_t address);
 
 struct Rs4DeviceCounters {
   std::uint64_t power_ups = 0;
@@ -73,7 +73,7 @@ class Rs4Device final : public dp::Station {
   [[nodiscard]] const adapter::Adapter& adapter() const noexcept { return adapter_; }
   scanner::Scanner& scanner() noexcept { return adapter_.scanner(); }
   [[nodiscard]] const scanner::Scanner& scanner() const noexcept { return adapter_.scanner(); }
-  [[nodiscard]] const dp::Slave& slave() const noexcept { return *slave_; }
+  [[nodiscard]] const dp::slave::Slave& slave() const noexcept { return *slave_; }
   [[nodiscard]] const Rs4DeviceCounters& counters() const noexcept { return counters_; }
   // Heap owned by the device beyond sizeof (scene obstacles), for the memory benchmark.
   [[nodiscard]] std::size_t heap_bytes() const noexcept { return adapter_.scanner().heap_bytes(); }
@@ -92,7 +92,7 @@ class Rs4Device final : public dp::Station {
   void after_core_call(TimePoint now);
 
   adapter::Adapter adapter_;
-  std::optional<dp::Slave> slave_;     // always engaged: the adapter keeps a SlaveControl*
+  std::optional<dp::slave::Slave> slave_;     // always engaged: the adapter keeps a SlaveControl*
   std::deque<dp::fdl::Telegram> pending_;  // replies the slave queued just before the link drop
   bool powered_ = false;
   bool link_down_ = false;

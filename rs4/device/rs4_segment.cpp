@@ -74,7 +74,6 @@ void Rs4Segment::collect() {
   master_->take_events(scratch_);
   for (auto& e : scratch_) {
     if (std::holds_alternative<dp::master::CycleCompleted>(e)) safety_cycle();
-    if (hook_) hook_(e);
     events_.push_back(std::move(e));
   }
 }
@@ -103,7 +102,6 @@ std::optional<dp::master::Dpv1Result> Rs4Segment::await(dp::master::Dpv1RequestI
                                                         dp::Duration timeout) {
   std::optional<dp::master::Dpv1Result> result;
   const auto size_before = events_.size();
-  bus_->notify(master_->address());
   run_until(
       [&] {
         for (std::size_t i = size_before; i < events_.size(); ++i) {

@@ -42,12 +42,15 @@ class Rs4Segment {
   [[nodiscard]] dp::TimePoint now() const { return clock_.now(); }
   [[nodiscard]] dp::link::MemoryBus& bus() { return *bus_; }
   [[nodiscard]] dp::master::Master& master() { return *master_; }
+  [[nodiscard]] const dp::master::Master& master() const { return *master_; }
   [[nodiscard]] Rs4Device& device() { return *device_; }
+  [[nodiscard]] const Rs4Device& device() const { return *device_; }
   [[nodiscard]] profisafe::FHost& fhost() { return *fhost_; }
+  [[nodiscard]] const profisafe::FHost& fhost() const { return *fhost_; }
   [[nodiscard]] const Rs4MasterEntry& entry() const { return entry_; }
   [[nodiscard]] std::uint8_t rs4_address() const { return entry_.slave.address; }
 
-  void power_on() { device_->power_on(now()); bus_->notify(device_->address()); }
+  void power_on() { device_->power_on(now()); }
   void power_off() { device_->power_off(now()); }
 
   // Process output byte (§3.2) sent through the F-host from the next cycle on.
@@ -79,7 +82,6 @@ class Rs4Segment {
 
   [[nodiscard]] const std::vector<dp::master::MasterEvent>& events() const { return events_; }
   std::vector<dp::master::MasterEvent> take_events();
-  void set_event_hook(std::function<void(const dp::master::MasterEvent&)> hook) { hook_ = std::move(hook); }
 
  private:
   void collect();
@@ -96,7 +98,6 @@ class Rs4Segment {
   bool auto_ack_rei_ = false;
   std::vector<dp::master::MasterEvent> events_;
   std::vector<dp::master::MasterEvent> scratch_;
-  std::function<void(const dp::master::MasterEvent&)> hook_;
 };
 
 }  // namespace rs4sim::rs4::device

@@ -70,25 +70,25 @@ TEST_F(FaultIntegration, ASilencedSlaveIsLostThenRecovers) {
   EXPECT_EQ(left->reason, dp::master::MasterErrc::kNoAnswer);
   // The silent slave's watchdog (100 ms) expires too: it is back in Wait_Prm.
   b.run_for(200ms);
-  EXPECT_EQ(b.slave(6).slave().state(), dp::SlaveState::kWaitPrm);
+  EXPECT_EQ(b.slave(6).slave().state(), dp::slave::State::kWaitPrm);
   EXPECT_EQ(b.slave(6).slave().counters().watchdog_expiries, 1U);
   b.bus().set_silenced(6, false);
   ASSERT_TRUE(b.run_until([&] { return b.slaves_in_data_exchange() == 3; }, 2s));
   EXPECT_EQ(count_events<dp::master::SlaveEnteredDataExchange>(b.events(), 6), 1U);
-  EXPECT_EQ(b.slave(6).slave().state(), dp::SlaveState::kDataExch);
+  EXPECT_EQ(b.slave(6).slave().state(), dp::slave::State::kDataExch);
 }
 
 TEST_F(FaultIntegration, WatchdogDropsSlavesWhenTheMasterFallsSilentAndTheyComeBack) {
   b.bus().set_silenced(1, true);
   const TimePoint t0 = b.clock().now();
-  ASSERT_TRUE(b.run_until([&] { return b.slave(5).slave().state() == dp::SlaveState::kWaitPrm; }, 1s));
+  ASSERT_TRUE(b.run_until([&] { return b.slave(5).slave().state() == dp::slave::State::kWaitPrm; }, 1s));
   // T_WD = 100 ms after the last telegram the slave received (§2.8).
   EXPECT_LE(b.clock().now() - t0, 100ms);
   EXPECT_GE(b.clock().now() - t0, 85ms);
-  EXPECT_EQ(b.slave(5).device().state(), dp::SlaveState::kWaitPrm);
+  EXPECT_EQ(b.slave(5).device().state(), dp::slave::State::kWaitPrm);
   b.bus().set_silenced(1, false);
   ASSERT_TRUE(b.run_until([&] { return b.slaves_in_data_exchange() == 3 &&
-                                       b.slave(5).slave().state() == dp::SlaveState::kDataExch; },
+                                       b.slave(5).slave().state() == dp::slave::State::kDataExch; },
                           2s));
 }
 

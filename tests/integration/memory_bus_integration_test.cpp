@@ -29,7 +29,6 @@ TEST(MemoryBusIntegration, MasterAnd125SlavesExchangeLoopedBackData) {
       const auto out = pattern(a, b.slave(a).device().output_length(), round);
       ASSERT_FALSE(b.master().set_outputs(a, out)) << int(a);
     }
-    b.notify_master();
     const auto loops_back = [&] {
       for (std::uint8_t a = 1; a <= 125; ++a) {
         const auto in = b.master().inputs(a);
@@ -41,7 +40,7 @@ TEST(MemoryBusIntegration, MasterAnd125SlavesExchangeLoopedBackData) {
     ASSERT_TRUE(b.run_until(loops_back, 2s)) << "round " << int(round);
   }
   for (std::uint8_t a = 1; a <= 125; ++a) {
-    EXPECT_EQ(b.slave(a).slave().state(), dp::SlaveState::kDataExch) << int(a);
+    EXPECT_EQ(b.slave(a).slave().state(), dp::slave::State::kDataExch) << int(a);
     EXPECT_EQ(b.bus().counters(a).malformed, 0U);
   }
   EXPECT_EQ(b.bus().counters(0).malformed, 0U);
@@ -69,7 +68,6 @@ TEST(MemoryBusIntegration, Dpv1WriteReadAndAlarmRoundTrip) {
   const std::vector<std::uint8_t> record = {0xDE, 0xAD, 0xBE, 0xEF};
   auto wid = b.master().write(5, 3, 17, record);
   ASSERT_TRUE(wid);
-  b.notify_master();
   ASSERT_TRUE(b.run_until([&] { return last_event<dp::master::Dpv1Result>(b.events()) != nullptr; }, 2s));
   const auto* w = last_event<dp::master::Dpv1Result>(b.events());
   EXPECT_EQ(w->id, wid.value());
@@ -77,7 +75,6 @@ TEST(MemoryBusIntegration, Dpv1WriteReadAndAlarmRoundTrip) {
   b.take_events();
   auto rid = b.master().read(5, 3, 17, 240);
   ASSERT_TRUE(rid);
-  b.notify_master();
   ASSERT_TRUE(b.run_until([&] { return last_event<dp::master::Dpv1Result>(b.events()) != nullptr; }, 2s));
   const auto* r = last_event<dp::master::Dpv1Result>(b.events());
   EXPECT_FALSE(r->error) << r->error.message();
@@ -85,7 +82,6 @@ TEST(MemoryBusIntegration, Dpv1WriteReadAndAlarmRoundTrip) {
   // Unknown record → negative response B0 (invalid index).
   b.take_events();
   ASSERT_TRUE(b.master().read(5, 9, 9, 4));
-  b.notify_master();
   ASSERT_TRUE(b.run_until([&] { return last_event<dp::master::Dpv1Result>(b.events()) != nullptr; }, 2s));
   const auto* neg = last_event<dp::master::Dpv1Result>(b.events());
   ASSERT_TRUE(neg->negative);
@@ -94,7 +90,6 @@ TEST(MemoryBusIntegration, Dpv1WriteReadAndAlarmRoundTrip) {
   b.take_events();
   const std::vector<std::uint8_t> user = {0x42};
   ASSERT_FALSE(b.slave(5).device().raise_alarm(2, 0, user));
-  b.bus().notify(5);
   ASSERT_TRUE(b.run_until([&] { return !b.slave(5).device().acknowledged_alarms().empty(); }, 2s));
   const auto* alarm = last_event<dp::master::AlarmReceived>(b.events());
   ASSERT_NE(alarm, nullptr);

@@ -69,26 +69,22 @@ class RealtimeScenario {
     ASSERT_TRUE(wait([&] { return in_dx(); })) << "no Data_Exch over the link";
     const std::vector<std::uint8_t> out = {0x12, 0x34};
     ASSERT_FALSE(master_.set_outputs(5, out));
-    rm_.notify();
     ASSERT_TRUE(wait([&] {
       const auto in = master_.inputs(5);
       return std::equal(in.begin(), in.end(), out.begin(), out.end());
     }));
     const std::vector<std::uint8_t> rec = {1, 2, 3, 4, 5};
     ASSERT_TRUE(master_.write(5, 1, 2, rec));
-    rm_.notify();
     ASSERT_TRUE(wait([&] { return last_event<dp::master::Dpv1Result>(events); }));
     EXPECT_FALSE(last_event<dp::master::Dpv1Result>(events)->error);
     events.clear();
     ASSERT_TRUE(master_.read(5, 1, 2, 100));
-    rm_.notify();
     ASSERT_TRUE(wait([&] { return last_event<dp::master::Dpv1Result>(events); }));
     const auto* r = last_event<dp::master::Dpv1Result>(events);
     EXPECT_FALSE(r->error) << r->error.message();
     EXPECT_EQ(std::vector<std::uint8_t>(r->data.begin(), r->data.end()), rec);
     const std::vector<std::uint8_t> user = {0x77};
     ASSERT_FALSE(slave_.device().raise_alarm(2, 0, user));
-    rs_.notify();
     ASSERT_TRUE(wait([&] { return !slave_.device().acknowledged_alarms().empty(); }));
     EXPECT_NE(last_event<dp::master::AlarmReceived>(events), nullptr);
     EXPECT_EQ(rm_.counters().malformed, 0U);

@@ -1,4 +1,4 @@
-// bench_dp_slave: the cyclic hot path of dp::Slave and its memory footprint.
+// bench_dp_slave: the cyclic hot path of dp::slave::Slave and its memory footprint.
 //   BM_DataExchangeDecodeHandleEncode  wire bytes → fdl::Decoder → Slave (FCB, state,
 //                                      outputs, inputs) → fdl::encode; target ≤ 0.5 µs
 //   BM_SlaveMemory                     sizeof(Slave) and heap bytes of one instance
@@ -40,8 +40,8 @@ namespace {
 
 using testing::Bytes;
 
-SlaveConfig bench_config() {
-  SlaveConfig c;
+dp::slave::Config bench_config() {
+  dp::slave::Config c;
   c.address = 5;
   c.ident_number = 0x1234;
   c.dpv1 = true;
@@ -49,7 +49,7 @@ SlaveConfig bench_config() {
 }
 
 struct Sink final : fdl::DecoderSink {
-  Slave* slave = nullptr;
+  dp::slave::Slave* slave = nullptr;
   TimePoint now{};
   void on_telegram(const fdl::Telegram& t) override { slave->on_telegram(t, now); }
 };
@@ -69,12 +69,12 @@ void start_up(fdl::Decoder& dec, Sink& sink) {
 
 void BM_DataExchangeDecodeHandleEncode(benchmark::State& state) {
   testing::FakeApplication app;
-  Slave slave(bench_config(), app);
+  dp::slave::Slave slave(bench_config(), app);
   fdl::Decoder dec;
   Sink sink;
   sink.slave = &slave;
   start_up(dec, sink);
-  if (slave.state() != SlaveState::kDataExch) {
+  if (slave.state() != dp::slave::State::kDataExch) {
     state.SkipWithError("slave did not reach Data_Exch");
     return;
   }
@@ -102,14 +102,14 @@ void BM_SlaveMemory(benchmark::State& state) {
   std::size_t heap = 0;
   for (auto _ : state) {
     // The Slave itself lives in a stack buffer so that only its own allocations count.
-    alignas(Slave) static unsigned char storage[sizeof(Slave)];
+    alignas(dp::slave::Slave) static unsigned char storage[sizeof(dp::slave::Slave)];
     const std::size_t before = g_heap_bytes.load();
-    auto* slave = new (storage) Slave(bench_config(), app);
+    auto* slave = new (storage) dp::slave::Slave(bench_config(), app);
     heap = g_heap_bytes.load() - before;
     benchmark::DoNotOptimize(slave);
     std::destroy_at(slave);
   }
-  state.counters["sizeof_bytes"] = static_cast<double>(sizeof(Slave));
+  state.counters["sizeof_bytes"] = static_cast<double>(sizeof(dp::slave::Slave));
   state.counters["heap_bytes"] = static_cast<double>(heap);
 }
 BENCHMARK(BM_SlaveMemory);

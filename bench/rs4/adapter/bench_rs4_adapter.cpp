@@ -22,9 +22,9 @@ struct Running {
     dp::pdu::SetPrm prm;
     for (auto b : rs4::adapter::kFBlockHeader) prm.user_data.push_back(b);
     for (auto b : profisafe::encode_f_parameters(params())) prm.user_data.push_back(b);
-    (void)adapter.check_parameters(prm);
-    adapter.on_state_change(dp::SlaveState::kWaitCfg, dp::SlaveState::kDataExch,
-                            dp::TransitionReason::kCfgAccepted, now);
+    (void)adapter.check_parameters(prm, now);
+    adapter.on_state_change(dp::slave::State::kWaitCfg, dp::slave::State::kDataExch,
+                            dp::slave::TransitionReason::kCfgAccepted, now);
     for (int i = 0; i < 1600; ++i) cycle(20ms);  // past the 30 s boot
   }
   static profisafe::FParameters params() {
@@ -44,7 +44,7 @@ struct Running {
     std::copy(req.begin(), req.end(), pdu.begin());
     adapter.on_outputs(pdu, now);
     std::array<std::uint8_t, 5> in{};
-    adapter.read_inputs(in);
+    adapter.read_inputs(in, now);
     host.on_pdu(in, now);
   }
   dp::TimePoint now{};
@@ -66,13 +66,13 @@ BENCHMARK(BM_CyclicExchange);
 void BM_AcyclicVersion(benchmark::State& state) {
   Running r;
   const std::array<std::uint8_t, 5> cmd{0x00, 0x05, 0xFF, 0xFF, 0x90};
-  dp::AcyclicRequest w;
-  w.service = dp::AcyclicService::kWrite;
+  dp::slave::AcyclicRequest w;
+  w.service = dp::slave::AcyclicService::kWrite;
   w.index = 2;
   w.length = 5;
   w.data = cmd;
-  dp::AcyclicRequest rd;
-  rd.service = dp::AcyclicService::kRead;
+  dp::slave::AcyclicRequest rd;
+  rd.service = dp::slave::AcyclicService::kRead;
   rd.index = 2;
   rd.length = 240;
   for (auto _ : state) {

@@ -1,5 +1,5 @@
 // Benchmarks of the RS4 device assembly (issue 4): memory per emulated RS4 (target
-// ≤ 200 KiB: dp::Slave + Adapter + Scanner, sizeof + heap) and one bus cycle master ↔ RS4
+// ≤ 200 KiB: dp::slave::Slave + Adapter + Scanner, sizeof + heap) and one bus cycle master ↔ RS4
 // including the PROFIsafe F-host and F-device. Figures are reported, never asserted.
 #include "rs4/device/rs4_segment.h"
 

@@ -1,7 +1,7 @@
 // fuzz_dp_link_bus: arbitrary frames on the in-memory bus into a generic slave.
 //
 // Input = records [ctl][len][len bytes]: the bytes go onto the wire to slave 5 (through
-// its fdl::Decoder, then dp::Slave and the GenericDevice); ctl bit 7 lets 150 ms of
+// its fdl::Decoder, then dp::slave::Slave and the GenericDevice); ctl bit 7 lets 150 ms of
 // simulated time pass afterwards (watchdog, poll timeouts), bits 0..6 a few µs. Whatever
 // arrives, the bus must neither crash nor stall, and every reply must re-encode. The rest
 // of the input also goes through parse_baud_rate (the CLI/serial rate parser).

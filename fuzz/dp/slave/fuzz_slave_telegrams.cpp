@@ -1,4 +1,4 @@
-// libFuzzer target: arbitrary telegram sequences into a dp::Slave with a FakeApplication,
+// libFuzzer target: arbitrary telegram sequences into a dp::slave::Slave with a FakeApplication,
 // time advanced from the input. Invariants (spec/profibus-dp.md §1.10, §2.5):
 //   * never a reply to DA 127 or to an SDN request, at most one reply per request;
 //   * every reply encodes, decodes back to itself and is addressed to the requester;
@@ -23,6 +23,7 @@
 #include <vector>
 
 using namespace rs4sim::dp;
+namespace dp = rs4sim::dp;
 
 namespace {
 
@@ -30,7 +31,7 @@ void require(bool ok) {
   if (!ok) std::abort();
 }
 
-void check_reply(const Slave& slave, const fdl::Telegram& req, const fdl::Telegram& reply) {
+void check_reply(const dp::slave::Slave& slave, const fdl::Telegram& req, const fdl::Telegram& reply) {
   std::vector<std::uint8_t> wire;
   fdl::encode(reply, wire);  // throws (→ libFuzzer crash report) if malformed
   fdl::Telegram back;
@@ -44,7 +45,7 @@ void check_reply(const Slave& slave, const fdl::Telegram& req, const fdl::Telegr
   (void)slave;
 }
 
-void deliver(Slave& slave, const fdl::Telegram& t, TimePoint now) {
+void deliver(dp::slave::Slave& slave, const fdl::Telegram& t, TimePoint now) {
   slave.on_telegram(t, now);
   auto reply = slave.take_transmit();
   require(!slave.take_transmit().has_value());
@@ -57,17 +58,17 @@ void deliver(Slave& slave, const fdl::Telegram& t, TimePoint now) {
   require((diag[0] & 0xA1) == 0 && (diag[1] & 0x84) == 0x04);
 }
 
-void app_action(Slave& slave, rs4sim::dp::testing::FakeApplication& app, std::uint8_t what,
+void app_action(dp::slave::Slave& slave, rs4sim::dp::testing::FakeApplication& app, std::uint8_t what,
                 std::uint8_t arg) {
   static const std::uint8_t kData[8] = {0x84, 0x24, 0x18, 0x00, 0x01, 0x00, 0x00, 0x00};
   switch (what % 5) {
     case 0: (void)slave.submit_alarm({static_cast<std::uint8_t>(arg % 8), 0, static_cast<std::uint8_t>(arg >> 6), true, std::span(kData, arg % 9)}); break;
     case 1: (void)slave.set_device_diagnosis(std::span(kData, arg % 9), (arg & 1) != 0, (arg & 2) != 0); break;
-    case 2: (void)slave.complete_acyclic(AcyclicChannel::kC1, AcyclicResult::ok(std::span(kData, arg % 9))); break;
-    case 3: (void)slave.complete_acyclic(AcyclicChannel::kC2, AcyclicResult::fail({0x80, arg, 0})); break;
+    case 2: (void)slave.complete_acyclic(dp::slave::AcyclicChannel::kC1, dp::slave::AcyclicResult::ok(std::span(kData, arg % 9))); break;
+    case 3: (void)slave.complete_acyclic(dp::slave::AcyclicChannel::kC2, dp::slave::AcyclicResult::fail({0x80, arg, 0})); break;
     default:
       app.acyclic_mode = static_cast<rs4sim::dp::testing::FakeApplication::AcyclicMode>(arg % 3);
-      app.prm_verdict = static_cast<PrmVerdict>((arg >> 2) % 3);
+      app.prm_verdict = static_cast<dp::slave::PrmVerdict>((arg >> 2) % 3);
       break;
   }
 }
@@ -76,14 +77,14 @@ void app_action(Slave& slave, rs4sim::dp::testing::FakeApplication& app, std::ui
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   rs4sim::dp::testing::FakeApplication app;
-  SlaveConfig cfg;
+  dp::slave::Config cfg;
   cfg.address = 5;
   cfg.ident_number = 0x1234;
   cfg.dpv1 = true;
   cfg.sync_supported = cfg.freeze_supported = cfg.set_slave_add_supported = true;
   cfg.fail_safe_supported = cfg.c2_supported = true;
   cfg.max_diag_length = size > 0 && (data[0] & 0x80) ? 16 : 244;
-  Slave slave(cfg, app);
+  dp::slave::Slave slave(cfg, app);
   ManualClock clock;
   std::size_t i = 0;
   const auto take = [&](std::size_t n) -> std::span<const std::uint8_t> {

@@ -47,15 +47,15 @@ void cyclic(rs4::adapter::Adapter& a, profisafe::FHost& host, std::uint8_t out,
   const std::vector<std::uint8_t> pdu(req.begin(), req.end());
   a.on_outputs(pdu, now);
   std::array<std::uint8_t, 5> in{};
-  a.read_inputs(in);
+  a.read_inputs(in, now);
   host.on_pdu(in, now);
 }
 
 void acyclic(rs4::adapter::Adapter& a, Input& in, bool write, dp::TimePoint now) {
-  dp::AcyclicRequest r;
+  dp::slave::AcyclicRequest r;
   const auto sel = in.byte();
-  r.channel = (sel & 1) ? dp::AcyclicChannel::kC2 : dp::AcyclicChannel::kC1;
-  r.service = write ? dp::AcyclicService::kWrite : dp::AcyclicService::kRead;
+  r.channel = (sel & 1) ? dp::slave::AcyclicChannel::kC2 : dp::slave::AcyclicChannel::kC1;
+  r.service = write ? dp::slave::AcyclicService::kWrite : dp::slave::AcyclicService::kRead;
   r.slot = (sel & 2) ? in.byte() : 0;
   r.index = (sel & 4) ? in.byte() : static_cast<std::uint8_t>(2 + ((sel >> 3) & 1));
   r.first_write_after_initiate = (sel & 0x10) != 0;
@@ -94,9 +94,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   dp::pdu::SetPrm prm;
   for (auto b : rs4::adapter::kFBlockHeader) prm.user_data.push_back(b);
   for (auto b : profisafe::encode_f_parameters(fp)) prm.user_data.push_back(b);
-  if (a.check_parameters(prm) == dp::PrmVerdict::kAccept) {
-    a.on_state_change(dp::SlaveState::kWaitCfg, dp::SlaveState::kDataExch,
-                      dp::TransitionReason::kCfgAccepted, now);
+  if (a.check_parameters(prm, now) == dp::slave::PrmVerdict::kAccept) {
+    a.on_state_change(dp::slave::State::kWaitCfg, dp::slave::State::kDataExch,
+                      dp::slave::TransitionReason::kCfgAccepted, now);
   }
   for (unsigned steps = 0; steps < 256 && !in.empty(); ++steps) {
     const auto op = in.byte();

@@ -54,7 +54,7 @@ class GenericSlaveSpec : public ::testing::Test {
 
 TEST_F(GenericSlaveSpec, StartUpAndLoopbackDataExchange) {
   start_up();
-  EXPECT_EQ(slave.slave().state(), SlaveState::kDataExch);
+  EXPECT_EQ(slave.slave().state(), dp::slave::State::kDataExch);
   // §2.10 "M→S DX" out = A5; the generic device loops it back: in = A5.
   EXPECT_EQ(master.send_frame({0x68, 0x04, 0x04, 0x68, 0x05, 0x02, 0x7D, 0xA5, 0x29, 0x16}),
             (Bytes{0x68, 0x04, 0x04, 0x68,
@@ -76,7 +76,7 @@ TEST_F(GenericSlaveSpec, WrongConfigurationIsACfgFault) {
   const Bytes diag = master.request(5, 60, 62, {});
   ASSERT_GE(diag.size(), 15U);
   EXPECT_EQ(diag[9] & 0x04, 0x04) << "Station_Status_1 bit 2 Cfg_Fault (§2.5)";
-  EXPECT_NE(slave.slave().state(), SlaveState::kDataExch);
+  EXPECT_NE(slave.slave().state(), dp::slave::State::kDataExch);
 }
 
 TEST_F(GenericSlaveSpec, DataExchangeBeforeStartUpIsAnsweredRs) {
@@ -160,21 +160,21 @@ TEST(GenericDevice, ImageLengthsComeFromTheIdentifiers) {
   d.on_outputs(out, TimePoint{});
   std::array<std::uint8_t, 6> in{};
   in.fill(0xEE);
-  d.read_inputs(in);
+  d.read_inputs(in, TimePoint{});
   EXPECT_EQ(in, (std::array<std::uint8_t, 6>{0x11, 0x22, 0, 0, 0, 0}));
-  d.on_outputs_cleared(OutputClear::kLeftDataExchange, TimePoint{});
-  d.read_inputs(in);
+  d.on_outputs_cleared(dp::slave::OutputClear::kLeftDataExchange, TimePoint{});
+  d.read_inputs(in, TimePoint{});
   EXPECT_EQ(in[0], 0);
 }
 
 TEST(GenericDevice, ConfigCheckIsExactUnlessUserCheck) {
   GenericDevice d({{0x10, 0x20}});
-  EXPECT_EQ(d.check_config(Bytes{0x10, 0x20}, false), CfgVerdict::kAccept);
-  EXPECT_EQ(d.check_config(Bytes{0x20, 0x10}, false), CfgVerdict::kCfgFault);
-  EXPECT_EQ(d.check_config(Bytes{0x20, 0x10}, true), CfgVerdict::kAccept);  // same lengths
-  EXPECT_EQ(d.check_config(Bytes{0x30}, true), CfgVerdict::kAccept);        // 1 in + 1 out
-  EXPECT_EQ(d.check_config(Bytes{0x31}, true), CfgVerdict::kCfgFault);
-  EXPECT_EQ(d.check_config(Bytes{}, true), CfgVerdict::kCfgFault);
+  EXPECT_EQ(d.check_config(Bytes{0x10, 0x20}, false, TimePoint{}), dp::slave::CfgVerdict::kAccept);
+  EXPECT_EQ(d.check_config(Bytes{0x20, 0x10}, false, TimePoint{}), dp::slave::CfgVerdict::kCfgFault);
+  EXPECT_EQ(d.check_config(Bytes{0x20, 0x10}, true, TimePoint{}), dp::slave::CfgVerdict::kAccept);  // same lengths
+  EXPECT_EQ(d.check_config(Bytes{0x30}, true, TimePoint{}), dp::slave::CfgVerdict::kAccept);        // 1 in + 1 out
+  EXPECT_EQ(d.check_config(Bytes{0x31}, true, TimePoint{}), dp::slave::CfgVerdict::kCfgFault);
+  EXPECT_EQ(d.check_config(Bytes{}, true, TimePoint{}), dp::slave::CfgVerdict::kCfgFault);
 }
 
 TEST(GenericDevice, MalformedIdentifiersAreRejectedAtConstruction) {
@@ -184,33 +184,33 @@ TEST(GenericDevice, MalformedIdentifiersAreRejectedAtConstruction) {
 
 TEST(GenericDevice, RecordStoreLimits) {
   GenericDevice d({{0x30}});
-  AcyclicRequest w;
-  w.service = AcyclicService::kWrite;
+  dp::slave::AcyclicRequest w;
+  w.service = dp::slave::AcyclicService::kWrite;
   const Bytes data = {1, 2, 3};
   w.data = data;
   w.length = 3;
   for (std::size_t i = 0; i < GenericDevice::kMaxRecords; ++i) {
     w.index = static_cast<std::uint8_t>(i);
-    EXPECT_EQ(d.on_acyclic(w, TimePoint{}).kind, AcyclicResult::Kind::kData);
+    EXPECT_EQ(d.on_acyclic(w, TimePoint{}).kind, dp::slave::AcyclicResult::Kind::kData);
   }
   w.index = 100;
   const auto full = d.on_acyclic(w, TimePoint{});
-  EXPECT_EQ(full.kind, AcyclicResult::Kind::kError);
+  EXPECT_EQ(full.kind, dp::slave::AcyclicResult::Kind::kError);
   EXPECT_EQ(full.error.error_code_1, 0xC3);  // resource unavailable
   w.index = 0;  // overwrite of an existing record still works
-  EXPECT_EQ(d.on_acyclic(w, TimePoint{}).kind, AcyclicResult::Kind::kData);
+  EXPECT_EQ(d.on_acyclic(w, TimePoint{}).kind, dp::slave::AcyclicResult::Kind::kData);
   // Read returns at most the requested length.
-  AcyclicRequest r;
-  r.service = AcyclicService::kRead;
+  dp::slave::AcyclicRequest r;
+  r.service = dp::slave::AcyclicService::kRead;
   r.index = 0;
   r.length = 2;
   const auto got = d.on_acyclic(r, TimePoint{});
-  ASSERT_EQ(got.kind, AcyclicResult::Kind::kData);
+  ASSERT_EQ(got.kind, dp::slave::AcyclicResult::Kind::kData);
   EXPECT_EQ(Bytes(got.data.begin(), got.data.end()), (Bytes{1, 2}));
   // Alarm trigger without an attached slave: state conflict, no crash.
   w.index = GenericDevice::kAlarmTriggerIndex;
   const auto alarm = d.on_acyclic(w, TimePoint{});
-  EXPECT_EQ(alarm.kind, AcyclicResult::Kind::kError);
+  EXPECT_EQ(alarm.kind, dp::slave::AcyclicResult::Kind::kError);
   EXPECT_EQ(alarm.error.error_code_1, 0xB5);
 }
 

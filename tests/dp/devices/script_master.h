@@ -54,7 +54,7 @@ class ScriptMaster final : public Station {
   Bytes send(const fdl::Telegram& t) {
     last_reply_.clear();
     out_.push_back(t);
-    bus_.notify(address_);
+    wake();  // Station::wake(): the bus drains the new request
     bus_.run_for(std::chrono::milliseconds(1));
     return last_reply_;
   }

@@ -65,6 +65,13 @@ class FakeStation : public Station {
     next_ = first;
     period = p;
     on_timer = std::move(telegram);
+    wake();
+  }
+
+  // Queues a telegram from outside a link call and tells the link (Station::wake()).
+  void send(fdl::Telegram t) {
+    outbox.push_back(std::move(t));
+    wake();
   }
 
   std::vector<Received> received;

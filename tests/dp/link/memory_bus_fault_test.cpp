@@ -65,8 +65,7 @@ class MemoryBusFaults : public ::testing::Test {
     bus.start();
   }
   void exchange(Bytes out) {
-    master.outbox.push_back(srd_request(5, 2, std::move(out)));
-    bus.notify(2);
+    master.send(srd_request(5, 2, std::move(out)));
     bus.run_for(1ms);
   }
   ManualClock clock;
@@ -111,8 +110,7 @@ TEST_F(MemoryBusFaults, CorruptedShortAckIsNotTakenAsAnAck) {
   FakeStation acker(7, FakeStation::Reply::kShortAck);
   bus.attach(acker);
   bus.inject({FaultKind::kCorrupt, 7, 2, 1, {}, 3});  // E5 → ED
-  master.outbox.push_back(srd_request(7, 2, {0x01}));
-  bus.notify(2);
+  master.send(srd_request(7, 2, {0x01}));
   bus.run_for(1ms);
   EXPECT_EQ(acker.received.size(), 1U);
   EXPECT_TRUE(master.received.empty());

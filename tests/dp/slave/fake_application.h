@@ -11,6 +11,7 @@
 #include <vector>
 
 namespace rs4sim::dp::testing {
+using namespace ::rs4sim::dp::slave;  // the slave under test
 
 using Bytes = std::vector<std::uint8_t>;
 
@@ -35,7 +36,7 @@ class FakeApplication : public SlaveApplication {
   std::vector<Bytes> outputs;
   std::vector<OutputClear> clears;
   struct Transition {
-    SlaveState from, to;
+    State from, to;
     TransitionReason why;
   };
   std::vector<Transition> transitions;
@@ -52,11 +53,11 @@ class FakeApplication : public SlaveApplication {
   int time_calls = 0;
 
   void on_attach(SlaveControl& c) override { control = &c; }
-  PrmVerdict check_parameters(const pdu::SetPrm& prm) override {
+  PrmVerdict check_parameters(const pdu::SetPrm& prm, TimePoint) override {
     user_prm.emplace_back(prm.user_data.begin(), prm.user_data.end());
     return prm_verdict;
   }
-  CfgVerdict check_config(std::span<const std::uint8_t> cfg, bool user_check) override {
+  CfgVerdict check_config(std::span<const std::uint8_t> cfg, bool user_check, TimePoint) override {
     last_user_check = user_check;
     if (cfg_verdict) return *cfg_verdict;
     return Bytes(cfg.begin(), cfg.end()) == config ? CfgVerdict::kAccept : CfgVerdict::kCfgFault;
@@ -66,10 +67,10 @@ class FakeApplication : public SlaveApplication {
     outputs.emplace_back(o.begin(), o.end());
   }
   void on_outputs_cleared(OutputClear why, TimePoint) override { clears.push_back(why); }
-  void read_inputs(std::span<std::uint8_t> in) override {
+  void read_inputs(std::span<std::uint8_t> in, TimePoint) override {
     for (std::size_t i = 0; i < in.size(); ++i) in[i] = i < inputs.size() ? inputs[i] : 0;
   }
-  void on_state_change(SlaveState from, SlaveState to, TransitionReason why, TimePoint) override {
+  void on_state_change(State from, State to, TransitionReason why, TimePoint) override {
     transitions.push_back({from, to, why});
   }
   AcyclicResult on_acyclic(const AcyclicRequest& req, TimePoint) override {
@@ -86,7 +87,7 @@ class FakeApplication : public SlaveApplication {
   }
   void on_alarm_acknowledged(const AlarmAck& a, TimePoint) override { acks.push_back(a); }
   void on_c2_event(C2Event ev, std::uint8_t, TimePoint) override { c2_events.push_back(ev); }
-  void on_address_changed(std::uint8_t a, bool, std::span<const std::uint8_t>) override {
+  void on_address_changed(std::uint8_t a, bool, std::span<const std::uint8_t>, TimePoint) override {
     new_addresses.push_back(a);
   }
   [[nodiscard]] std::optional<TimePoint> next_deadline() const override { return deadline; }

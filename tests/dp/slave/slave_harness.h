@@ -1,5 +1,5 @@
 #pragma once
-// Test harness: one dp::Slave with a FakeApplication on a manual clock, driven with wire
+// Test harness: one dp::slave::Slave with a FakeApplication on a manual clock, driven with wire
 // bytes. Frames are framed here with an independent SD/LE/FCS/ED helper (§1.2, §1.3),
 // not with the code under test; the slave's reply is encoded with fdl::encode and
 // compared byte for byte.
@@ -16,6 +16,7 @@
 #include <vector>
 
 namespace rs4sim::dp::testing {
+using namespace ::rs4sim::dp::slave;  // the slave under test
 
 // §1.3: FCS = sum of DA…last DU byte mod 256.
 inline std::uint8_t fcs_of(const Bytes& body) {
@@ -38,8 +39,8 @@ inline Bytes sd1(std::uint8_t da, std::uint8_t sa, std::uint8_t fc) {
 inline const Bytes kSc{0xE5};
 
 // The §2.10 slave: address 5, ident 0x1234, DPV1, 1 byte in / 1 byte out.
-inline SlaveConfig example_config() {
-  SlaveConfig c;
+inline Config example_config() {
+  Config c;
   c.address = 5;
   c.ident_number = 0x1234;
   c.dpv1 = true;
@@ -53,7 +54,7 @@ inline SlaveConfig example_config() {
 
 class SlaveHarness {
  public:
-  explicit SlaveHarness(const SlaveConfig& cfg = example_config()) : slave(cfg, app) {}
+  explicit SlaveHarness(const Config& cfg = example_config()) : slave(cfg, app) {}
 
   ManualClock clock;
   FakeApplication app;
@@ -115,7 +116,7 @@ class SlaveHarness {
   void to_data_exchange(const Bytes& prm = example_prm(), const Bytes& cfg = {0x10, 0x20}) {
     EXPECT_EQ(send(dp(0x3D, prm)), kSc);
     EXPECT_EQ(send(dp(0x3E, cfg)), kSc);
-    EXPECT_EQ(slave.state(), SlaveState::kDataExch);
+    EXPECT_EQ(slave.state(), State::kDataExch);
   }
   // Fetches the diagnosis as the owner; returns the DU after DSAP/SSAP.
   Bytes diag() {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace rs4sim::dp {
+using namespace ::rs4sim::dp::slave;  // the slave under test
 namespace {
 
 pdu::Dpv1Status sequence_mode(std::uint8_t alarm_mode) {

@@ -4,10 +4,11 @@
 #include "tests/dp/slave/slave_harness.h"
 
 namespace rs4sim::dp::testing {
+using namespace ::rs4sim::dp::slave;  // the slave under test
 namespace {
 
-SlaveConfig rs4_like() {
-  SlaveConfig c = example_config();
+Config rs4_like() {
+  Config c = example_config();
   c.alarm_capacity = 8;
   c.alarm_sequence_numbers = 8;  // RS4 §7: Seq_Nr in specifier bits 5..3 (0..7)
   return c;
@@ -56,7 +57,7 @@ TEST(SlaveAlarms, UnmatchedAckLeavesDataExchange) {
   ASSERT_FALSE(h.app.control->submit_alarm(diag_alarm({})));
   h.diag();
   EXPECT_EQ(h.send(h.dp(0x33, {0x5C, 0x00, 0x01, 0x0D}, 0x33)), kSc);  // Seq 1: none
-  EXPECT_EQ(h.slave.state(), SlaveState::kWaitPrm);
+  EXPECT_EQ(h.slave.state(), State::kWaitPrm);
   EXPECT_FALSE(h.slave.alarms().is_open());
   EXPECT_EQ(h.app.control->submit_alarm(diag_alarm({})), make_error_code(SlaveError::kAlarmsClosed));
 }
@@ -84,7 +85,7 @@ TEST(SlaveAlarms, AlarmFollowsTheDeviceBlocks) {
 }
 
 TEST(SlaveAlarms, ExtraAlarmSap50) {
-  SlaveConfig cfg = rs4_like();
+  Config cfg = rs4_like();
   cfg.extra_alarm_sap = true;
   SlaveHarness h(cfg);
   h.to_data_exchange(kAlarmPrm);

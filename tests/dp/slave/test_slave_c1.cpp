@@ -3,6 +3,7 @@
 #include "tests/dp/slave/slave_harness.h"
 
 namespace rs4sim::dp::testing {
+using namespace ::rs4sim::dp::slave;  // the slave under test
 namespace {
 
 // Brings the slave into DPV1 Data_Exch and one DX further, so that the next new frame
@@ -72,11 +73,11 @@ TEST(SlaveC1, MalformedRequestsGetTheDriversImmediateNegatives) {
   h.send(h.dp(0x33, {0x5F, 0x00, 0x02, 0x03, 0x01}, 0x33));
   EXPECT_EQ(h.send(h.dp(0x33, {}, 0x33)), SlaveHarness::reply(0x08, 0x33, 0x33, {0xDF, 0x80, 0xB3, 0x00}));
   EXPECT_TRUE(h.app.acyclic.empty());  // none reached the application
-  EXPECT_EQ(h.slave.state(), SlaveState::kDataExch);
+  EXPECT_EQ(h.slave.state(), State::kDataExch);
 }
 
 TEST(SlaveC1, MoreThanC1MaxDataLenIsRefused) {
-  SlaveConfig cfg = example_config();
+  Config cfg = example_config();
   cfg.c1_max_data_length = 2;
   SlaveHarness h(cfg);
   to_c1(h);
@@ -147,7 +148,7 @@ TEST(SlaveC1, UnknownFunctionLeavesDataExchange) {
   SlaveHarness h;
   to_c1(h);
   EXPECT_EQ(h.send(h.dp(0x33, {0x57, 0x00, 0x00, 0x00}, 0x33)), kSc);
-  EXPECT_EQ(h.slave.state(), SlaveState::kWaitPrm);
+  EXPECT_EQ(h.slave.state(), State::kWaitPrm);
   EXPECT_EQ(h.app.transitions.back().why, TransitionReason::kProtocolViolation);
 }
 

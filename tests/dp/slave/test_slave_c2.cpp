@@ -5,6 +5,7 @@
 #include <chrono>
 
 namespace rs4sim::dp::testing {
+using namespace ::rs4sim::dp::slave;  // the slave under test
 namespace {
 
 using std::chrono::milliseconds;
@@ -154,7 +155,7 @@ TEST(SlaveC2, UnknownPduAbortsAndOffWhenNotSupported) {
   EXPECT_EQ(h.send(m.frame(0x30, {})), C2Master::reply(0x30, {0x58, 0x00, 0x12, 0x00}));
   EXPECT_FALSE(h.slave.c2_connected());
 
-  SlaveConfig cfg = example_config();
+  Config cfg = example_config();
   cfg.c2_supported = false;
   SlaveHarness off(cfg);
   C2Master m2;

@@ -3,6 +3,7 @@
 #include "tests/dp/slave/slave_harness.h"
 
 namespace rs4sim::dp::testing {
+using namespace ::rs4sim::dp::slave;  // the slave under test
 namespace {
 
 // Bits the slave never sets (master-only, §2.5): Station_Non_Existent (S1 bit 0),
@@ -67,7 +68,7 @@ TEST(SlaveDiag, InputlessSlaveAnswersScOrSd1DataHigh) {
 }
 
 TEST(SlaveDiag, OverflowDropsWholeBlocksAndSetsTheBit) {
-  SlaveConfig cfg = example_config();
+  Config cfg = example_config();
   cfg.max_diag_length = 12;  // 6 standard + 6 bytes
   SlaveHarness h(cfg);
   const Bytes blocks{0x04, 0x01, 0x02, 0x03,   // device block, 4 bytes

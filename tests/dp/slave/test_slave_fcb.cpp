@@ -3,6 +3,7 @@
 #include "tests/dp/slave/slave_harness.h"
 
 namespace rs4sim::dp::testing {
+using namespace ::rs4sim::dp::slave;  // the slave under test
 namespace {
 
 TEST(SlaveFcb, RepeatedDataExchangeIsAnsweredFromTheStoreNotExecuted) {
@@ -30,7 +31,7 @@ TEST(SlaveFcb, RepeatedSetPrmIsNotExecutedTwice) {
   EXPECT_EQ(h.send(prm), kSc);
   const Bytes cfg = h.dp(0x3E, {0x10, 0x20});
   EXPECT_EQ(h.send(cfg), kSc);
-  ASSERT_EQ(h.slave.state(), SlaveState::kDataExch);
+  ASSERT_EQ(h.slave.state(), State::kDataExch);
   EXPECT_EQ(h.send(cfg), kSc);  // repeat of Chk_Cfg: stored SC
   EXPECT_EQ(h.app.transitions.size(), 2U);
 }

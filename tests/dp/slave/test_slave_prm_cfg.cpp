@@ -3,6 +3,7 @@
 #include "tests/dp/slave/slave_harness.h"
 
 namespace rs4sim::dp::testing {
+using namespace ::rs4sim::dp::slave;  // the slave under test
 namespace {
 
 const Bytes kRsTo2{0x10, 0x02, 0x05, 0x03, 0x0A, 0x16};  // SD1 DA 2 SA 5 FC RS
@@ -13,7 +14,7 @@ TEST(SlaveSetPrm, IdentMismatchGivesPrmFault) {
                   0x43, 0x21,  // Ident 0x4321 ≠ 0x1234
                   0x00, 0x80, 0x20, 0x00};
   EXPECT_EQ(h.send(h.dp(0x3D, prm)), kSc);  // SC = received, not accepted (§1.6)
-  EXPECT_EQ(h.slave.state(), SlaveState::kWaitPrm);
+  EXPECT_EQ(h.slave.state(), State::kWaitPrm);
   EXPECT_EQ(h.diag(), (Bytes{0x42,  // Prm_Fault + Station_Not_Ready
                              0x05,  // Prm_Req + bit 2
                              0x00, 0xFF, 0x12, 0x34}));
@@ -26,11 +27,11 @@ TEST(SlaveSetPrm, TooShortAndZeroWatchdogFactorGivePrmFault) {
   EXPECT_EQ(h.diag()[0], 0x42);
   EXPECT_EQ(h.send(h.dp(0x3D, {0x88, 0x00, 0x01, 0x0B, 0x12, 0x34, 0x00, 0x80, 0x20, 0x00})), kSc);
   EXPECT_EQ(h.diag()[0], 0x42);
-  EXPECT_EQ(h.slave.state(), SlaveState::kWaitPrm);
+  EXPECT_EQ(h.slave.state(), State::kWaitPrm);
 }
 
 TEST(SlaveSetPrm, UnsupportedFeaturesGiveNotSupported) {
-  SlaveConfig cfg = example_config();
+  Config cfg = example_config();
   cfg.sync_supported = false;
   SlaveHarness h(cfg);
   EXPECT_EQ(h.send(h.dp(0x3D, {0xA8, 0x0A, 0x01, 0x0B, 0x12, 0x34, 0x00, 0x80, 0x20, 0x00})), kSc);
@@ -54,14 +55,14 @@ TEST(SlaveSetPrm, UserParametersGoToTheApplicationWhichMayRefuse) {
   EXPECT_EQ(h.diag()[0], 0x42);
   h.app.prm_verdict = PrmVerdict::kAccept;
   EXPECT_EQ(h.send(h.dp(0x3D, prm)), kSc);
-  EXPECT_EQ(h.slave.state(), SlaveState::kWaitCfg);
+  EXPECT_EQ(h.slave.state(), State::kWaitCfg);
   EXPECT_EQ(h.diag(), (Bytes{0x02,  // only Station_Not_Ready: Prm_Fault cleared
                              0x0C,  // WD_On + bit 2, Prm_Req cleared
                              0x00, 0x02, 0x12, 0x34}));
 }
 
 TEST(SlaveSetPrm, DpV0SlaveReadsBytes7To9AsUserData) {
-  SlaveConfig cfg = example_config();
+  Config cfg = example_config();
   cfg.dpv1 = false;
   SlaveHarness h(cfg);
   EXPECT_EQ(h.send(h.dp(0x3D, SlaveHarness::example_prm())), kSc);
@@ -77,10 +78,10 @@ TEST(SlaveSetPrm, NoLockTakesOnlyMinTsdrUnlockReleases) {
   // Station_Status 00: only min TSDR (here 20) is taken over (§2.3).
   EXPECT_EQ(h.send(h.dp(0x3D, {0x00, 0x01, 0x01, 0x14, 0x00, 0x00, 0x00})), kSc);
   EXPECT_EQ(h.slave.min_tsdr(), 20);
-  EXPECT_EQ(h.slave.state(), SlaveState::kDataExch);
+  EXPECT_EQ(h.slave.state(), State::kDataExch);
   // Unlock_Req: released, back to Wait_Prm, outputs safe.
   EXPECT_EQ(h.send(h.dp(0x3D, {0x40, 0x01, 0x01, 0x00, 0x12, 0x34, 0x00})), kSc);
-  EXPECT_EQ(h.slave.state(), SlaveState::kWaitPrm);
+  EXPECT_EQ(h.slave.state(), State::kWaitPrm);
   EXPECT_EQ(h.slave.master_address(), 0xFF);
   ASSERT_EQ(h.app.clears.size(), 1U);
   EXPECT_EQ(h.app.clears[0], OutputClear::kLeftDataExchange);
@@ -90,7 +91,7 @@ TEST(SlaveSetPrm, NewSetPrmInDataExchGoesToWaitCfg) {
   SlaveHarness h;
   h.to_data_exchange();
   EXPECT_EQ(h.send(h.dp(0x3D, SlaveHarness::example_prm())), kSc);
-  EXPECT_EQ(h.slave.state(), SlaveState::kWaitCfg);
+  EXPECT_EQ(h.slave.state(), State::kWaitCfg);
   EXPECT_EQ(h.app.clears.size(), 1U);
 }
 
@@ -102,7 +103,7 @@ TEST(SlaveSetPrm, LockedSlaveRefusesSetPrmFromAnotherMaster) {
   const Bytes prm = SlaveHarness::example_prm();
   body.insert(body.end(), prm.begin(), prm.end());
   EXPECT_EQ(h.send(sd2(body)), (Bytes{0x10, 0x03, 0x05, 0x03, 0x0B, 0x16}));
-  EXPECT_EQ(h.slave.state(), SlaveState::kDataExch);
+  EXPECT_EQ(h.slave.state(), State::kDataExch);
   EXPECT_EQ(h.slave.master_address(), 2);
 }
 
@@ -110,7 +111,7 @@ TEST(SlaveChkCfg, MismatchGivesCfgFaultAndWaitPrm) {
   SlaveHarness h;
   EXPECT_EQ(h.send(h.dp(0x3D, SlaveHarness::example_prm())), kSc);
   EXPECT_EQ(h.send(h.dp(0x3E, {0x10, 0x21})), kSc);  // 2 bytes out instead of 1
-  EXPECT_EQ(h.slave.state(), SlaveState::kWaitPrm);
+  EXPECT_EQ(h.slave.state(), State::kWaitPrm);
   EXPECT_EQ(h.diag(), (Bytes{0x06,  // Cfg_Fault + Station_Not_Ready
                              0x05, 0x00,
                              0x02,  // Master_Add kept
@@ -122,7 +123,7 @@ TEST(SlaveChkCfg, MalformedIdentifiersAreACfgFaultWithoutAskingTheApplication) {
   h.app.cfg_verdict = CfgVerdict::kAccept;
   EXPECT_EQ(h.send(h.dp(0x3D, SlaveHarness::example_prm())), kSc);
   EXPECT_EQ(h.send(h.dp(0x3E, {0x40})), kSc);  // special format, input length byte missing
-  EXPECT_EQ(h.slave.state(), SlaveState::kWaitPrm);
+  EXPECT_EQ(h.slave.state(), State::kWaitPrm);
 }
 
 TEST(SlaveChkCfg, WrongStateAndWrongMasterAreRs) {
@@ -131,7 +132,7 @@ TEST(SlaveChkCfg, WrongStateAndWrongMasterAreRs) {
   EXPECT_EQ(h.send(h.dp(0x3D, SlaveHarness::example_prm())), kSc);
   EXPECT_EQ(h.send(sd2({0x85, 0x83, 0x6D, 0x3E, 0x3E, 0x10, 0x20})),
             (Bytes{0x10, 0x03, 0x05, 0x03, 0x0B, 0x16}));  // master 3 does not own it
-  EXPECT_EQ(h.slave.state(), SlaveState::kWaitCfg);
+  EXPECT_EQ(h.slave.state(), State::kWaitCfg);
 }
 
 TEST(SlaveChkCfg, CheckCfgModeIsPassedToTheApplication) {

@@ -4,6 +4,7 @@
 #include <chrono>
 
 namespace rs4sim::dp::testing {
+using namespace ::rs4sim::dp::slave;  // the slave under test
 namespace {
 
 using std::chrono::milliseconds;
@@ -16,9 +17,9 @@ TEST(SlaveWatchdog, ExpiresAtExactlyFactorTimesBaseNotBefore) {
   ASSERT_EQ(h.slave.watchdog_time(), Duration(milliseconds(100)));
   EXPECT_EQ(h.slave.next_deadline(), start + milliseconds(100));
   h.advance(milliseconds(100) - nanoseconds(1));
-  EXPECT_EQ(h.slave.state(), SlaveState::kDataExch);
+  EXPECT_EQ(h.slave.state(), State::kDataExch);
   h.advance(nanoseconds(1));
-  EXPECT_EQ(h.slave.state(), SlaveState::kWaitPrm);
+  EXPECT_EQ(h.slave.state(), State::kWaitPrm);
   EXPECT_EQ(h.slave.counters().watchdog_expiries, 1U);
   ASSERT_EQ(h.app.clears.size(), 1U);
   EXPECT_EQ(h.app.clears[0], OutputClear::kLeftDataExchange);
@@ -37,9 +38,9 @@ TEST(SlaveWatchdog, EveryTelegramFromTheOwnerRetriggersOthersDoNot) {
   h.advance(milliseconds(60));
   h.send(sd2({0x85, 0x83, 0x6D, 0x3C, 0x3E}));  // master 3 reads diag: no retrigger
   h.advance(milliseconds(39));
-  EXPECT_EQ(h.slave.state(), SlaveState::kDataExch);
+  EXPECT_EQ(h.slave.state(), State::kDataExch);
   h.advance(milliseconds(1));
-  EXPECT_EQ(h.slave.state(), SlaveState::kWaitPrm);
+  EXPECT_EQ(h.slave.state(), State::kWaitPrm);
 }
 
 TEST(SlaveWatchdog, ATelegramArrivingAtTheDeadlineIsTooLate) {
@@ -56,7 +57,7 @@ TEST(SlaveWatchdog, OneMillisecondBaseAndWaitCfgAndOff) {
   EXPECT_EQ(h.send(h.dp(0x3D, {0x88, 0x0A, 0x03, 0x0B, 0x12, 0x34, 0x00, 0x84, 0x00, 0x00})), kSc);
   EXPECT_EQ(h.slave.watchdog_time(), Duration(milliseconds(30)));
   h.advance(milliseconds(30));  // also supervised in Wait_Cfg
-  EXPECT_EQ(h.slave.state(), SlaveState::kWaitPrm);
+  EXPECT_EQ(h.slave.state(), State::kWaitPrm);
   // WD_On = 0: no supervision at all.
   EXPECT_EQ(h.send(h.dp(0x3D, {0x80, 0x0A, 0x03, 0x0B, 0x12, 0x34, 0x00, 0x80, 0x00, 0x00})), kSc);
   EXPECT_FALSE(h.slave.next_deadline().has_value());

@@ -6,6 +6,7 @@
 #include <string>
 
 namespace rs4sim::dp::testing {
+using namespace ::rs4sim::dp::slave;  // the slave under test
 namespace {
 
 TEST(SlaveWorkedExample, FullStartUpAndCycle) {
@@ -58,7 +59,7 @@ TEST(SlaveWorkedExample, FullStartUpAndCycle) {
       0x63, 0x16,
   };
   EXPECT_EQ(h.send(set_prm), kSc);
-  EXPECT_EQ(h.slave.state(), SlaveState::kWaitCfg);
+  EXPECT_EQ(h.slave.state(), State::kWaitCfg);
 
   const Bytes chk_cfg{0x68, 0x07, 0x07, 0x68, 0x85, 0x82,
                       0x7D,        // FC FCV=1, FCB=1
@@ -67,7 +68,7 @@ TEST(SlaveWorkedExample, FullStartUpAndCycle) {
                       0x20,        // 1 byte output
                       0x30, 0x16};
   EXPECT_EQ(h.send(chk_cfg), kSc);
-  EXPECT_EQ(h.slave.state(), SlaveState::kDataExch);
+  EXPECT_EQ(h.slave.state(), State::kDataExch);
 
   const Bytes diag2{0x68, 0x05, 0x05, 0x68, 0x85, 0x82, 0x5D, 0x3C, 0x3E, 0xDE, 0x16};
   const Bytes diag2_reply{0x68, 0x0B, 0x0B, 0x68, 0x82, 0x85, 0x08, 0x3E, 0x3C,
@@ -123,8 +124,8 @@ TEST(SlaveWorkedExample, DataExchangeOutsideDataExchIsRs) {
 TEST(SlaveWorkedExample, TransitionsAreReportedByStateName) {
   SlaveHarness h;
   std::vector<std::string> log;
-  h.slave.set_trace([&](const SlaveTransition& tr) {
-    log.push_back(std::string(state_name(tr.from)) + "->" + state_name(tr.to));
+  h.slave.set_trace([&](const Transition& tr) {
+    log.push_back(std::string(to_string(tr.from)) + "->" + to_string(tr.to));
   });
   h.to_data_exchange();
   EXPECT_EQ(log, (std::vector<std::string>{"Wait_Prm->Wait_Cfg", "Wait_Cfg->Data_Exch"}));
@@ -134,7 +135,7 @@ TEST(SlaveWorkedExample, TransitionsAreReportedByStateName) {
 
 TEST(SlaveWorkedExample, Et200sTraceSetPrmShape) {
   // [TRACE #26] (§2.10): DPV0 Set_Prm `B8 1E 01 00 80 6A 01`, diag after it `02 0C 00 02`.
-  SlaveConfig cfg = example_config();
+  Config cfg = example_config();
   cfg.dpv1 = false;
   cfg.ident_number = 0x806A;
   SlaveHarness h(cfg);
@@ -145,7 +146,7 @@ TEST(SlaveWorkedExample, Et200sTraceSetPrmShape) {
                   0x80, 0x6A,  // Ident_Number
                   0x01};       // Group_Ident: group 1
   EXPECT_EQ(h.send(h.dp(0x3D, prm)), kSc);
-  EXPECT_EQ(h.slave.state(), SlaveState::kWaitCfg);
+  EXPECT_EQ(h.slave.state(), State::kWaitCfg);
   EXPECT_EQ(h.slave.watchdog_time(), Duration(std::chrono::milliseconds(300)));
   EXPECT_EQ(h.slave.min_tsdr(), 11);
   EXPECT_EQ(h.diag(), (Bytes{0x02, 0x0C, 0x00, 0x02, 0x80, 0x6A}));

@@ -9,9 +9,9 @@ namespace rs4sim::rs4::adapter::testing {
 namespace {
 
 using Bytes = std::vector<std::uint8_t>;
-using dp::AcyclicChannel;
+using dp::slave::AcyclicChannel;
 
-Bytes data_of(const dp::AcyclicResult& r) { return Bytes(r.data.begin(), r.data.end()); }
+Bytes data_of(const dp::slave::AcyclicResult& r) { return Bytes(r.data.begin(), r.data.end()); }
 
 struct Acyclic : ::testing::Test {
   Rig rig;
@@ -20,13 +20,13 @@ struct Acyclic : ::testing::Test {
 
 TEST_F(Acyclic, OnlySlot0Index2Or3) {
   auto r = rig.read(240, AcyclicChannel::kC1, 1, 3);
-  ASSERT_EQ(r.kind, dp::AcyclicResult::Kind::kError);
-  EXPECT_EQ(r.error, (dp::AcyclicError{0x80, 0xB2, 0x00}));  // invalid slot
+  ASSERT_EQ(r.kind, dp::slave::AcyclicResult::Kind::kError);
+  EXPECT_EQ(r.error, (dp::slave::AcyclicError{0x80, 0xB2, 0x00}));  // invalid slot
   r = rig.read(240, AcyclicChannel::kC1, 0, 4);
-  EXPECT_EQ(r.error, (dp::AcyclicError{0x80, 0xB0, 0x00}));  // invalid index
-  EXPECT_EQ(rig.write(Rig::block({0x90}), 1).error, (dp::AcyclicError{0x80, 0xB0, 0x00}));
-  EXPECT_EQ(rig.write({0x00, 0x04, 0xFF, 0xFF}).error, (dp::AcyclicError{0x80, 0xB1, 0x00}));
-  EXPECT_EQ(rig.write(Rig::block({0x90}), 3).kind, dp::AcyclicResult::Kind::kData);  // index 3 too
+  EXPECT_EQ(r.error, (dp::slave::AcyclicError{0x80, 0xB0, 0x00}));  // invalid index
+  EXPECT_EQ(rig.write(Rig::block({0x90}), 1).error, (dp::slave::AcyclicError{0x80, 0xB0, 0x00}));
+  EXPECT_EQ(rig.write({0x00, 0x04, 0xFF, 0xFF}).error, (dp::slave::AcyclicError{0x80, 0xB1, 0x00}));
+  EXPECT_EQ(rig.write(Rig::block({0x90}), 3).kind, dp::slave::AcyclicResult::Kind::kData);  // index 3 too
 }
 
 TEST_F(Acyclic, EmptyReadIsTheHeaderAlone) {
@@ -38,7 +38,7 @@ TEST_F(Acyclic, EmptyReadIsTheHeaderAlone) {
 }
 
 TEST_F(Acyclic, GetVersion0x90) {
-  ASSERT_EQ(rig.write({0x00, 0x05, 0xFF, 0xFF, 0x90}).kind, dp::AcyclicResult::Kind::kData);
+  ASSERT_EQ(rig.write({0x00, 0x05, 0xFF, 0xFF, 0x90}).kind, dp::slave::AcyclicResult::Kind::kData);
   EXPECT_EQ(data_of(rig.read()), (Bytes{
       0x43,        // flow: ready, payload, normal
       0x0E,        // 14 bytes
@@ -208,14 +208,14 @@ TEST_F(Acyclic, FlowStates) {
   rig.adapter.attach_pc_adapter(rig.now);
   EXPECT_EQ(rig.adapter.flow_byte(AcyclicChannel::kC1, false), 0x20);  // 010 PC adapter
   rig.adapter.detach_pc_adapter(rig.now);
-  rig.adapter.on_state_change(dp::SlaveState::kDataExch, dp::SlaveState::kWaitPrm,
-                              dp::TransitionReason::kWatchdog, rig.now);
+  rig.adapter.on_state_change(dp::slave::State::kDataExch, dp::slave::State::kWaitPrm,
+                              dp::slave::TransitionReason::kWatchdog, rig.now);
   EXPECT_EQ(rig.adapter.flow_byte(AcyclicChannel::kC2, false), 0x51);  // 101 no connection
 }
 
 TEST_F(Acyclic, WritesIgnoredWhilePcAdapterAttached) {
   rig.adapter.attach_pc_adapter(rig.now);
-  EXPECT_EQ(rig.write(Rig::block({0x90})).kind, dp::AcyclicResult::Kind::kData);
+  EXPECT_EQ(rig.write(Rig::block({0x90})).kind, dp::slave::AcyclicResult::Kind::kData);
   EXPECT_EQ(rig.adapter.counters().writes_ignored, 1u);
   EXPECT_EQ(data_of(rig.read()), (Bytes{0x20, 0x04, 0xFF, 0xFF}));  // flow 010, nothing
   EXPECT_EQ(rig.adapter.error_memory().last_error().uc2_error, 0);   // without error

@@ -1,10 +1,11 @@
 #pragma once
-// Test rig: one Adapter driven through its dp::SlaveApplication calls, a fake
+// Test rig: one Adapter driven through its dp::slave::SlaveApplication calls, a fake
 // SlaveControl that records alarms and diagnosis, and a real profisafe::FHost producing
 // the F-output PDUs. Time is a manual clock (no sleeps).
 
 #include "profisafe/f_host.h"
 #include "rs4/adapter/adapter.h"
+#include "rs4/adapter/rs4_gsd.h"
 #include "rs4/adapter/cyclic_bytes.h"
 #include "rs4/protocol/block.h"
 
@@ -24,12 +25,12 @@ struct RecordedAlarm {
   std::vector<std::uint8_t> user_data;
 };
 
-class FakeControl final : public dp::SlaveControl {
+class FakeControl final : public dp::slave::SlaveControl {
  public:
-  std::error_code complete_acyclic(dp::AcyclicChannel, const dp::AcyclicResult&) override {
+  std::error_code complete_acyclic(dp::slave::AcyclicChannel, const dp::slave::AcyclicResult&) override {
     return {};
   }
-  std::error_code submit_alarm(const dp::AlarmRequest& a) override {
+  std::error_code submit_alarm(const dp::slave::AlarmRequest& a) override {
     alarms.push_back({a.type, a.slot, a.specifier, a.add_ack,
                       std::vector<std::uint8_t>(a.user_data.begin(), a.user_data.end())});
     return {};
@@ -57,7 +58,7 @@ inline profisafe::FParameters rs4_fparams(std::uint16_t dest = 504) {
 // User_Prm_Data after the DPV1 bytes (docs/gsd.md): 0E 05 01 00 + the F-parameter block.
 inline dp::pdu::SetPrm set_prm_for(const profisafe::FParameters& p) {
   dp::pdu::SetPrm prm;
-  prm.ident_number = kIdentNumber;
+  prm.ident_number = ident_number();
   for (auto b : kFBlockHeader) prm.user_data.push_back(b);
   for (auto b : profisafe::encode_f_parameters(p)) prm.user_data.push_back(b);
   return prm;
@@ -90,10 +91,10 @@ struct Rig {
   void start(bool power = true) {
     if (power) adapter.power_on(now);
     advance(3s);
-    ASSERT_EQ(adapter.check_parameters(set_prm_for(params)), dp::PrmVerdict::kAccept);
-    ASSERT_EQ(adapter.check_config(kRealConfig, false), dp::CfgVerdict::kAccept);
-    adapter.on_state_change(dp::SlaveState::kWaitCfg, dp::SlaveState::kDataExch,
-                            dp::TransitionReason::kCfgAccepted, now);
+    ASSERT_EQ(adapter.check_parameters(set_prm_for(params), now), dp::slave::PrmVerdict::kAccept);
+    ASSERT_EQ(adapter.check_config(kRealConfig, false, now), dp::slave::CfgVerdict::kAccept);
+    adapter.on_state_change(dp::slave::State::kWaitCfg, dp::slave::State::kDataExch,
+                            dp::slave::TransitionReason::kCfgAccepted, now);
   }
   // One Data_Exchange: FHost PDU → adapter → F-input PDU → FHost.
   void cycle() {
@@ -102,7 +103,7 @@ struct Rig {
     const std::vector<std::uint8_t> pdu(req.begin(), req.end());
     adapter.on_outputs(pdu, now);
     std::array<std::uint8_t, kPduSize> in{};
-    adapter.read_inputs(in);
+    adapter.read_inputs(in, now);
     host.on_pdu(in, now);
   }
   // Cyclic exchange every `step` for `d`, the adapter's own timers in between.
@@ -123,23 +124,23 @@ struct Rig {
   }
 
   // ---- acyclic ----
-  dp::AcyclicResult write(std::vector<std::uint8_t> record, std::uint8_t index = 2,
-                          dp::AcyclicChannel ch = dp::AcyclicChannel::kC1,
+  dp::slave::AcyclicResult write(std::vector<std::uint8_t> record, std::uint8_t index = 2,
+                          dp::slave::AcyclicChannel ch = dp::slave::AcyclicChannel::kC1,
                           bool first_c2 = false) {
-    dp::AcyclicRequest r;
+    dp::slave::AcyclicRequest r;
     r.channel = ch;
-    r.service = dp::AcyclicService::kWrite;
+    r.service = dp::slave::AcyclicService::kWrite;
     r.index = index;
     r.length = static_cast<std::uint8_t>(record.size());
     r.data = record;
     r.first_write_after_initiate = first_c2;
     return adapter.on_acyclic(r, now);
   }
-  dp::AcyclicResult read(std::uint8_t length = 240, dp::AcyclicChannel ch = dp::AcyclicChannel::kC1,
+  dp::slave::AcyclicResult read(std::uint8_t length = 240, dp::slave::AcyclicChannel ch = dp::slave::AcyclicChannel::kC1,
                          std::uint8_t slot = 0, std::uint8_t index = 3) {
-    dp::AcyclicRequest r;
+    dp::slave::AcyclicRequest r;
     r.channel = ch;
-    r.service = dp::AcyclicService::kRead;
+    r.service = dp::slave::AcyclicService::kRead;
     r.slot = slot;
     r.index = index;
     r.length = length;
@@ -158,11 +159,11 @@ struct Rig {
   }
   // Reads all blocks of one answer; returns the payload, checks numbering.
   std::vector<std::uint8_t> read_answer(std::uint8_t length = 240,
-                                        dp::AcyclicChannel ch = dp::AcyclicChannel::kC1) {
+                                        dp::slave::AcyclicChannel ch = dp::slave::AcyclicChannel::kC1) {
     std::vector<std::uint8_t> payload;
     for (unsigned n = 0; n < 100; ++n) {
       const auto r = read(length, ch);
-      EXPECT_EQ(r.kind, dp::AcyclicResult::Kind::kData);
+      EXPECT_EQ(r.kind, dp::slave::AcyclicResult::Kind::kData);
       if (r.data.size() < 4) return payload;
       payload.insert(payload.end(), r.data.begin() + 4, r.data.end());
       if (r.data[2] == 0xFF && r.data[3] == 0xFF) return payload;

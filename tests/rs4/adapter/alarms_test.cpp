@@ -13,7 +13,7 @@ struct Alarms : ::testing::Test {
 };
 
 TEST_F(Alarms, UpdateAlarmOnFirstClass2Write) {
-  rig.write(Rig::block({0x24, 0x01}), 2, dp::AcyclicChannel::kC2, /*first=*/true);
+  rig.write(Rig::block({0x24, 0x01}), 2, dp::slave::AcyclicChannel::kC2, /*first=*/true);
   ASSERT_EQ(rig.control.alarms.size(), 1u);
   const auto& a = rig.control.alarms[0];
   EXPECT_EQ(a.type, 6);        // update alarm: 04 06 00 spec
@@ -21,7 +21,7 @@ TEST_F(Alarms, UpdateAlarmOnFirstClass2Write) {
   EXPECT_EQ(a.specifier, 0);
   EXPECT_TRUE(a.add_ack);      // specifier bit 2
   EXPECT_TRUE(a.user_data.empty());
-  rig.write(Rig::block({0x24, 0x01}), 2, dp::AcyclicChannel::kC2, false);
+  rig.write(Rig::block({0x24, 0x01}), 2, dp::slave::AcyclicChannel::kC2, false);
   EXPECT_EQ(rig.control.alarms.size(), 1u);
 }
 
@@ -65,18 +65,18 @@ TEST_F(Alarms, PersistingRs4ErrorIsReportedAgainAfterReconnection) {
       0x00, 0x00,        // μC1: none
       0x00, 0x00,
   }));
-  rig.adapter.on_state_change(dp::SlaveState::kDataExch, dp::SlaveState::kWaitPrm,
-                              dp::TransitionReason::kWatchdog, rig.now);
+  rig.adapter.on_state_change(dp::slave::State::kDataExch, dp::slave::State::kWaitPrm,
+                              dp::slave::TransitionReason::kWatchdog, rig.now);
   rig.advance(100ms);
-  rig.adapter.on_state_change(dp::SlaveState::kWaitCfg, dp::SlaveState::kDataExch,
-                              dp::TransitionReason::kCfgAccepted, rig.now);
+  rig.adapter.on_state_change(dp::slave::State::kWaitCfg, dp::slave::State::kDataExch,
+                              dp::slave::TransitionReason::kCfgAccepted, rig.now);
   EXPECT_EQ(rig.alarms_of(1, 1), 2u);
 }
 
 TEST_F(Alarms, NoAlarmWhileNotConnected) {
-  rig.adapter.on_state_change(dp::SlaveState::kDataExch, dp::SlaveState::kWaitPrm,
-                              dp::TransitionReason::kWatchdog, rig.now);
-  rig.write({0x00, 0x05, 0x00, 0x01, 0x90}, 2, dp::AcyclicChannel::kC2);
+  rig.adapter.on_state_change(dp::slave::State::kDataExch, dp::slave::State::kWaitPrm,
+                              dp::slave::TransitionReason::kWatchdog, rig.now);
+  rig.write({0x00, 0x05, 0x00, 0x01, 0x90}, 2, dp::slave::AcyclicChannel::kC2);
   EXPECT_TRUE(rig.control.alarms.empty());
   EXPECT_EQ(rig.adapter.error_memory().last_error().uc2_error, 0x2A0B);
 }

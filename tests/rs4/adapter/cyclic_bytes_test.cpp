@@ -1,6 +1,7 @@
 // Cyclic process bytes and address switches (spec/rs4-profisafe.md §2, §3; manual §4.5,
 // §5.1.1, §5.1.2). Known answers written from the spec tables.
 #include "rs4/adapter/cyclic_bytes.h"
+#include "rs4/adapter/rs4_gsd.h"
 
 #include <gtest/gtest.h>
 

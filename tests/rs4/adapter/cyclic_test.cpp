@@ -123,11 +123,11 @@ TEST_F(Running, ScannerFaultSetsErrorBitAndOssd0) {
 TEST_F(Running, LeavingDataExchangeAndComingBackSelectsPair1) {
   rig.out_byte = 0x03;
   rig.run(100ms);
-  rig.adapter.on_state_change(dp::SlaveState::kDataExch, dp::SlaveState::kWaitPrm,
-                              dp::TransitionReason::kWatchdog, rig.now);
+  rig.adapter.on_state_change(dp::slave::State::kDataExch, dp::slave::State::kWaitPrm,
+                              dp::slave::TransitionReason::kWatchdog, rig.now);
   EXPECT_FALSE(rig.adapter.ossd_bit());
-  rig.adapter.on_state_change(dp::SlaveState::kWaitCfg, dp::SlaveState::kDataExch,
-                              dp::TransitionReason::kCfgAccepted, rig.now);
+  rig.adapter.on_state_change(dp::slave::State::kWaitCfg, dp::slave::State::kDataExch,
+                              dp::slave::TransitionReason::kCfgAccepted, rig.now);
   rig.adapter.on_time(rig.now + 100ms);
   EXPECT_EQ(rig.adapter.scanner().status().first_pair, 1);
 }

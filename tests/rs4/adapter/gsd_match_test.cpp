@@ -29,15 +29,15 @@ dp::pdu::SetPrm from_gsd(const gsd::SlaveConfig& c) {
 
 TEST(GsdMatch, IdentCfgAndUserPrmOfTheShippedGsdAreAccepted) {
   const auto c = configure(504);
-  EXPECT_EQ(c.ident_number, kIdentNumber);
+  EXPECT_EQ(c.ident_number, ident_number());
   EXPECT_EQ(c.cfg, std::vector<std::uint8_t>(kRealConfig.begin(), kRealConfig.end()));
   EXPECT_EQ(c.input_len, kPduSize);
   EXPECT_EQ(c.output_len, kPduSize);
   Rig rig;
   rig.adapter.power_on(rig.now);
   rig.advance(3s);
-  EXPECT_EQ(rig.adapter.check_parameters(from_gsd(c)), dp::PrmVerdict::kAccept);
-  EXPECT_EQ(rig.adapter.check_config(c.cfg, false), dp::CfgVerdict::kAccept);
+  EXPECT_EQ(rig.adapter.check_parameters(from_gsd(c), rig.now), dp::slave::PrmVerdict::kAccept);
+  EXPECT_EQ(rig.adapter.check_config(c.cfg, false, rig.now), dp::slave::CfgVerdict::kAccept);
   // status PDU "no error" (§8: 05 81 00 00 00), Ext_Diag off
   EXPECT_EQ(rig.control.diagnosis, (std::vector<std::uint8_t>{0x05, 0x81, 0x00, 0x00, 0x00}));
   EXPECT_FALSE(rig.control.ext_diag);
@@ -48,7 +48,7 @@ TEST(GsdMatch, GsdBlockForAnotherAddressIsRefusedWith66) {
   Rig rig;
   rig.adapter.power_on(rig.now);
   rig.advance(3s);
-  EXPECT_EQ(rig.adapter.check_parameters(from_gsd(c)), dp::PrmVerdict::kPrmFault);
+  EXPECT_EQ(rig.adapter.check_parameters(from_gsd(c), rig.now), dp::slave::PrmVerdict::kPrmFault);
   // §8: 05 81 00 00 42 = wrong F_Dest_Add (66)
   EXPECT_EQ(rig.control.diagnosis, (std::vector<std::uint8_t>{0x05, 0x81, 0x00, 0x00, 66}));
   EXPECT_TRUE(rig.control.ext_diag);

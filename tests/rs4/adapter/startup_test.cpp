@@ -138,7 +138,7 @@ TEST(Startup, SetPrmDuringAdapterInitIsRefusedWithoutStatusPdu) {
   Rig rig;
   rig.adapter.power_on(rig.now);
   rig.advance(1s);
-  EXPECT_EQ(rig.adapter.check_parameters(set_prm_for(rig.params)), dp::PrmVerdict::kPrmFault);
+  EXPECT_EQ(rig.adapter.check_parameters(set_prm_for(rig.params), rig.now), dp::slave::PrmVerdict::kPrmFault);
   EXPECT_TRUE(rig.control.diagnosis.empty());
 }
 
@@ -148,14 +148,14 @@ TEST(Startup, WrongUserPrmShapeAndWrongCfgAreRefused) {
   rig.advance(3s);
   auto prm = set_prm_for(rig.params);
   prm.user_data[1] = 0x06;  // structure type 6 instead of 5 (F-parameters)
-  EXPECT_EQ(rig.adapter.check_parameters(prm), dp::PrmVerdict::kPrmFault);
+  EXPECT_EQ(rig.adapter.check_parameters(prm, rig.now), dp::slave::PrmVerdict::kPrmFault);
   prm = set_prm_for(rig.params);
   prm.user_data.pop_back();  // 13 bytes
-  EXPECT_EQ(rig.adapter.check_parameters(prm), dp::PrmVerdict::kPrmFault);
+  EXPECT_EQ(rig.adapter.check_parameters(prm, rig.now), dp::slave::PrmVerdict::kPrmFault);
   const std::array<std::uint8_t, 3> other{0xC0, 0x84, 0x85};
-  EXPECT_EQ(rig.adapter.check_config(other, false), dp::CfgVerdict::kCfgFault);
+  EXPECT_EQ(rig.adapter.check_config(other, false, rig.now), dp::slave::CfgVerdict::kCfgFault);
   const std::array<std::uint8_t, 2> shorter{0xC0, 0x84};
-  EXPECT_EQ(rig.adapter.check_config(shorter, false), dp::CfgVerdict::kCfgFault);
+  EXPECT_EQ(rig.adapter.check_config(shorter, false, rig.now), dp::slave::CfgVerdict::kCfgFault);
 }
 
 TEST(Startup, AddressSwitchesSetFDestAddAtPowerOn) {

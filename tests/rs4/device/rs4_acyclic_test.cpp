@@ -54,7 +54,6 @@ TEST(Rs4Acyclic, UnknownAdapterChannelRecordIsRefusedWithADpv1Error) {
   const std::vector<std::uint8_t> rec{0x00, 0x05, 0xFF, 0xFF, 0x84};
   auto id = s.master().write(s.rs4_address(), 0, 7, rec);
   ASSERT_TRUE(id);
-  s.bus().notify(s.master().address());
   ASSERT_TRUE(s.run_until([&] { return !events_of<dp::master::Dpv1Result>(s).empty(); }, 2s));
   EXPECT_TRUE(events_of<dp::master::Dpv1Result>(s).front().error);
 }
