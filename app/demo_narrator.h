@@ -1,6 +1,6 @@
 #pragma once
-// Human-readable one-line meaning of a DP telegram, for `rs4sim demo` (header-only:
-// app/ compiles only cmd_*.cpp). Names follow spec/profibus-dp.md §1.5, §2.1, §2.5, §3.3.
+// Human-readable one-line meaning of a DP telegram, for the narrated demos
+// (app/narration.h). Names follow spec/profibus-dp.md §1.5, §2.1, §2.5, §3.3.
 
 #include "app/run_options.h"
 #include "dp/fdl/telegram.h"

@@ -1,7 +1,7 @@
 #pragma once
-// Option parsing shared by `rs4sim run` and `rs4sim demo` (header-only: app/ compiles only
-// cmd_*.cpp): hexadecimal byte strings ("10 20", "1020", "0x10,0x20"), idents ("0x1234"),
-// the generic slave configuration. Errors are UsageError with the reason.
+// Option parsing of the device entries and demos (header-only): hexadecimal byte strings
+// ("10 20", "1020", "0x10,0x20"), idents ("0x1234"), the generic slave configuration.
+// Errors are UsageError with the reason.
 
 #include "app/command.h"
 #include "dp/devices/generic_slave.h"

@@ -1,7 +1,7 @@
 // `rs4sim demo` (RS4 scenario) and `rs4sim run --device rs4` at the app layer.
 #include "app/command.h"
-#include "app/rs4_demo.h"
-#include "app/rs4_run.h"
+#include "app/demos.h"
+#include "app/shell.h"
 
 #include <gtest/gtest.h>
 
@@ -11,6 +11,15 @@
 
 namespace rs4sim::app {
 namespace {
+
+// The options of `rs4sim run --device rs4`, run through the runtime's shell.
+struct Rs4RunOptions {
+  DeviceOptions device;
+  LinkOptions link;
+};
+int run_rs4_device(const Rs4RunOptions& o, std::ostream& out) {
+  return run_device(*find_device("rs4"), o.device, o.link, out);
+}
 
 TEST(Rs4Demo, EveryStepHappensAndIsNarrated) {
   std::ostringstream out;
@@ -28,9 +37,9 @@ TEST(Rs4Demo, EveryStepHappensAndIsNarrated) {
 
 TEST(Rs4Run, MemoryLinkReachesDataExchange) {
   Rs4RunOptions o;
-  o.address = 12;
-  o.duration = 5;
-  o.boot_time_ms = 1000;
+  o.device.address = 12;
+  o.link.duration = 5;
+  o.device.boot_time_ms = 1000;
   std::ostringstream out;
   EXPECT_EQ(run_rs4_device(o, out), 0) << out.str();
   EXPECT_NE(out.str().find("rs4 12: LED off"), std::string::npos) << out.str();
@@ -44,14 +53,14 @@ TEST(Rs4Run, BadArgumentsAreUsageErrors) {
     std::ostringstream out;
     EXPECT_THROW(run_rs4_device(o, out), UsageError);
   };
-  bad([](Rs4RunOptions& o) { o.address = 127; });  // §2: must not be used
-  bad([](Rs4RunOptions& o) { o.address = -1; });
-  bad([](Rs4RunOptions& o) { o.boot_time_ms = -5; });
-  bad([](Rs4RunOptions& o) { o.link = "can"; });
-  bad([](Rs4RunOptions& o) { o.link = "serial"; });  // no --port
-  bad([](Rs4RunOptions& o) { o.link = "udp"; o.listen = "127.0.0.1:5001"; });  // no --peer
-  bad([](Rs4RunOptions& o) { o.link = "pty"; o.baud = "1234"; });
-  bad([](Rs4RunOptions& o) { o.duration = -1; });
+  bad([](Rs4RunOptions& o) { o.device.address = 127; });  // §2: must not be used
+  bad([](Rs4RunOptions& o) { o.device.address = -1; });
+  bad([](Rs4RunOptions& o) { o.device.boot_time_ms = -5; });
+  bad([](Rs4RunOptions& o) { o.link.link = "can"; });
+  bad([](Rs4RunOptions& o) { o.link.link = "serial"; });  // no --port
+  bad([](Rs4RunOptions& o) { o.link.link = "udp"; o.link.listen = "127.0.0.1:5001"; });  // no --peer
+  bad([](Rs4RunOptions& o) { o.link.link = "pty"; o.link.baud = "1234"; });
+  bad([](Rs4RunOptions& o) { o.link.duration = -1; });
 }
 
 }  // namespace

@@ -1,0 +1,113 @@
+// Device entry `rs4` (the default): one emulated RS4/PROFIsafe (rs4/device), its ident,
+// F_Dest_Add rule and slave settings from the built-in GSD (rs4/adapter/rs4_gsd.h).
+#include "app/demos.h"
+#include "app/device_registry.h"
+#include "app/run_options.h"
+#include "rs4/adapter/rs4_gsd.h"
+#include "rs4/device/rs4_segment.h"
+
+#include <cstdio>
+#include <ostream>
+
+namespace rs4sim::app {
+namespace {
+
+using rs4::device::Rs4Device;
+using rs4::device::Rs4DeviceConfig;
+
+constexpr int kDefaultAddress = 4;  // factory setting of the hex switches [RS4 manual §2]
+
+Rs4DeviceConfig device_config(const DeviceOptions& o) {
+  Rs4DeviceConfig c;
+  c.switches = rs4::device::switches_for(static_cast<std::uint8_t>(*o.address));
+  c.boot_time = std::chrono::milliseconds(o.boot_time_ms);
+  return c;
+}
+
+void print_state(std::ostream& out, const Rs4Device& d) {
+  const auto v = d.adapter().view();
+  out << "rs4 " << int(d.address()) << ": LED " << rs4::adapter::to_string(v.led) << ", RS4 "
+      << rs4::scanner::to_string(v.rs4) << ", input byte " << hex(std::span(&v.input_byte, 1))
+      << ", output byte " << hex(std::span(&v.output_byte, 1)) << ", PROFIsafe "
+      << profisafe::to_string(v.fdevice) << std::endl;
+}
+
+class Rs4Instance final : public DeviceInstance {
+ public:
+  explicit Rs4Instance(const DeviceOptions& o)
+      : device_(device_config(o)), address_(static_cast<std::uint8_t>(*o.address)),
+        boot_time_ms_(o.boot_time_ms) {}
+  std::vector<dp::Station*> stations() override { return {&device_}; }
+  void start(dp::TimePoint now) override { device_.power_on(now); }
+  [[nodiscard]] std::string describe() const override {
+    char ident[8];
+    std::snprintf(ident, sizeof ident, "%x", rs4::adapter::ident_number());
+    return "RS4/PROFIsafe at address " + std::to_string(address_) + " (ident 0x" + ident +
+           ", F_Dest_Add " + std::to_string(rs4::adapter::f_dest_add(address_)) + ", boot " +
+           std::to_string(boot_time_ms_) + " ms)";
+  }
+  void print_status(std::ostream& out, const dp::link::StationCounters& link) const override {
+    (void)link;
+    print_state(out, device_);
+  }
+
+ private:
+  Rs4Device device_;
+  std::uint8_t address_;
+  int boot_time_ms_;
+};
+
+// Our master configured from the GSD and a PROFIsafe F-host that acknowledges every
+// ACK_REQ, on the in-memory bus.
+class Rs4Simulation final : public SimulatedSegment {
+ public:
+  explicit Rs4Simulation(const DeviceOptions& o) : segment_(segment_config(o)) {
+    segment_.power_on();
+  }
+  void run_for(dp::Duration d) override { segment_.run_for(d); }
+  [[nodiscard]] std::uint8_t master_address() const override { return segment_.master().address(); }
+  void print_summary(std::ostream& out) const override {
+    out << " (from the GSD), F-host " << profisafe::to_string(segment_.fhost().state()) << ", "
+        << segment_.master().counters().cycles << " cycles" << std::endl;
+    print_state(out, segment_.device());
+  }
+  [[nodiscard]] bool healthy() const override { return segment_.in_data_exchange(); }
+
+ private:
+  static rs4::device::Rs4SegmentConfig segment_config(const DeviceOptions& o) {
+    rs4::device::Rs4SegmentConfig c;
+    c.device = device_config(o);
+    c.master.address = static_cast<std::uint8_t>(*o.address);
+    c.master_address = *o.address == 1 ? 2 : 1;
+    c.auto_ack_rei = true;
+    return c;
+  }
+
+  rs4::device::Rs4Segment segment_;
+};
+
+void validate(DeviceOptions& o) {
+  if (!o.ident.empty() || !o.cfg.empty()) {
+    throw UsageError("--ident/--cfg are for --device generic; the RS4's come from its GSD");
+  }
+  if (!o.address) o.address = kDefaultAddress;
+  if (*o.address < 0 || *o.address > 126) {
+    throw UsageError("--address: " + std::to_string(*o.address) +
+                     " is outside 0..126 (the RS4's switches; 127 and 255 must not be used, §2)");
+  }
+  if (o.boot_time_ms < 0 || o.boot_time_ms > 600000) {
+    throw UsageError("--boot-time: " + std::to_string(o.boot_time_ms) + " ms is outside 0..600000");
+  }
+}
+
+const DeviceRegistration kRs4({
+    "rs4",
+    40.0,
+    validate,
+    [](const DeviceOptions& o) { return std::make_unique<Rs4Instance>(o); },
+    [](const DeviceOptions& o) { return std::make_unique<Rs4Simulation>(o); },
+    run_rs4_demo,
+});
+
+}  // namespace
+}  // namespace rs4sim::app

@@ -1,0 +1,53 @@
+#pragma once
+// The narrated-demo framework of the runtime: every `rs4sim demo` scenario (one per
+// device entry) tells its story through a Narration and runs as a list of steps on the
+// simulated bus (manual clock): each step waits for what the manual or the spec
+// prescribes and fails the demo if it does not happen.
+
+#include "dp/time/clock.h"
+
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace rs4sim::app {
+
+// Runs simulated time until `done` holds or `limit` passes; returns done().
+using RunUntil = std::function<bool(const std::function<bool()>& done, dp::Duration limit)>;
+
+class Narration {
+ public:
+  // How a line is stamped with the simulated time since the start.
+  enum class Stamp : std::uint8_t {
+    kMilliseconds,  // "   12.345 ms  text"
+    kSeconds,       // "[  12.345 s] text"
+  };
+
+  Narration(std::ostream& out, const dp::Clock& clock, RunUntil run_until, Stamp stamp);
+
+  // A time-stamped line.
+  void say(const std::string& text) const;
+  // An unstamped line (a heading, a blank line …), as given.
+  void print(const std::string& text) const;
+  // `ok`, or an unstamped "FAILED: what" line.
+  bool check(bool ok, const std::string& what) const;
+  // Runs until `done` (≤ limit); says `text` when it happened, the failure otherwise.
+  bool wait(const std::function<bool()>& done, dp::Duration limit, const std::string& text) const;
+  // The simulated time since `since`, in whole milliseconds (for "after N ms").
+  [[nodiscard]] long long ms_since(dp::TimePoint since) const;
+
+  [[nodiscard]] std::ostream& out() const { return out_; }
+
+ private:
+  std::ostream& out_;
+  const dp::Clock& clock_;
+  RunUntil run_until_;
+  Stamp stamp_;
+  dp::TimePoint t0_;
+};
+
+// Runs the steps in order until one fails; returns true when all passed.
+bool run_steps(const std::vector<std::function<bool()>>& steps);
+
+}  // namespace rs4sim::app

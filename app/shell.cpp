@@ -1,0 +1,114 @@
+#include "app/shell.h"
+
+#include "app/command.h"
+#include "dp/link/pty.h"
+#include "dp/link/serial_transport.h"
+#include "dp/link/station_runner.h"
+#include "dp/link/udp_transport.h"
+
+#include <boost/asio/signal_set.hpp>
+#include <boost/asio/steady_timer.hpp>
+
+#include <csignal>
+#include <iostream>
+
+namespace rs4sim::app {
+namespace {
+
+namespace asio = boost::asio;
+namespace link = dp::link;
+
+dp::Duration seconds(double s) {
+  return std::chrono::duration_cast<dp::Duration>(std::chrono::duration<double>(s));
+}
+
+int run_memory(const DeviceEntry& device, const DeviceOptions& o, const LinkOptions& l,
+               std::ostream& out) {
+  const auto segment = device.simulate(o);
+  const double secs = l.duration > 0 ? l.duration : device.simulated_seconds;
+  segment->run_for(seconds(secs));
+  out << "in-memory bus, " << secs << " s simulated, master " << int(segment->master_address());
+  segment->print_summary(out);
+  return segment->healthy() ? 0 : 1;
+}
+
+std::unique_ptr<link::Transport> make_transport(const LinkOptions& l, asio::io_context& io,
+                                                std::unique_ptr<link::PseudoTerminal>& pty,
+                                                std::ostream& out) {
+  const auto baud = link::parse_baud_rate(l.baud);
+  const link::LogFn note = [](const std::string& s) { std::cerr << "rs4sim: note: " << s << std::endl; };
+  if (l.link == "pty") {
+    pty = std::make_unique<link::PseudoTerminal>();
+    out << pty->slave_path() << std::endl;  // first line: where the DP master connects
+    return std::make_unique<link::SerialTransport>(io, pty->release_master(), *baud, "pty", note);
+  }
+  if (l.link == "serial") return std::make_unique<link::SerialTransport>(io, l.port, *baud, note);
+  return std::make_unique<link::UdpTransport>(io, link::resolve_udp_endpoint(io, l.listen),
+                                              link::resolve_udp_endpoint(io, l.peer));
+}
+
+int run_realtime(const DeviceEntry& device, const DeviceOptions& o, const LinkOptions& l,
+                 std::ostream& out) {
+  asio::io_context io;
+  std::unique_ptr<link::PseudoTerminal> pty;
+  std::unique_ptr<link::Transport> transport;
+  try {
+    transport = make_transport(l, io, pty, out);
+  } catch (const link::LinkException& e) {
+    std::cerr << "rs4sim: " << e.what() << " [" << e.code().category().name() << ":"
+              << e.code().value() << "]" << std::endl;
+    return 1;
+  }
+  dp::RealClock clock;
+  const auto instance = device.build(o);
+  instance->start(clock.now());
+  link::StationRunner runner(io, clock, *transport);
+  for (dp::Station* s : instance->stations()) runner.add(*s);
+  asio::signal_set signals(io, SIGINT, SIGTERM);
+  asio::steady_timer limit(io);
+  const auto stop = [&] {
+    runner.stop();
+    signals.cancel();
+    limit.cancel();
+  };
+  signals.async_wait([&](const boost::system::error_code& ec, int) { if (!ec) stop(); });
+  if (l.duration > 0) {
+    limit.expires_after(seconds(l.duration));
+    limit.async_wait([&](const boost::system::error_code& ec) { if (!ec) stop(); });
+  }
+  std::cerr << "rs4sim: " << instance->describe() << " on " << l.link << "; Ctrl-C to stop"
+            << std::endl;
+  runner.start();
+  io.run();
+  instance->print_status(out, runner.counters());
+  return 0;
+}
+
+}  // namespace
+
+void validate(const LinkOptions& l) {
+  if (l.duration < 0) throw UsageError("--duration must not be negative");
+  if (l.link != "memory" && l.link != "pty" && l.link != "serial" && l.link != "udp") {
+    throw UsageError("--link " + l.link + ": use memory, pty, serial or udp");
+  }
+  if ((l.link == "pty" || l.link == "serial") && !link::parse_baud_rate(l.baud)) {
+    throw UsageError("--baud " + l.baud + ": not a PROFIBUS rate; use one of " +
+                     link::standard_baud_rate_list());
+  }
+  if (l.link == "serial" && l.port.empty()) {
+    throw UsageError("--link serial needs --port DEVICE (e.g. /dev/ttyUSB0)");
+  }
+  if (l.link == "udp" && (l.listen.empty() || l.peer.empty())) {
+    throw UsageError("--link udp needs --listen HOST:PORT and --peer HOST:PORT");
+  }
+}
+
+int run_device(const DeviceEntry& device, DeviceOptions options, const LinkOptions& link,
+               std::ostream& out) {
+  device.validate(options);
+  validate(link);
+  if (link.link == "memory") return run_memory(device, options, link, out);
+  return run_realtime(device, options, link, out);
+}
+
+}  // namespace rs4sim::app

@@ -1,0 +1,35 @@
+#pragma once
+// The Asio shell of the runtime: runs any registered device (app/device_registry.h) on any
+// link, the one place with a real-time loop, signals, --duration, the pty path printout
+// and the end-of-run summary.
+//
+//   memory  our master + the device on the in-memory bus, simulated time (default
+//           duration per device), summary + status; exit 0 when in data exchange
+//   pty     a pseudo-terminal pair; the first stdout line is the slave side's path
+//   serial  --port DEVICE at --baud
+//   udp     one telegram per datagram, --listen HOST:PORT, --peer HOST:PORT
+
+#include "app/device_registry.h"
+
+#include <iosfwd>
+#include <string>
+
+namespace rs4sim::app {
+
+struct LinkOptions {
+  std::string link = "memory";  // memory | pty | serial | udp
+  std::string port;             // serial
+  std::string baud = "1.5M";    // serial / pty
+  std::string listen, peer;     // udp
+  double duration = 0;          // seconds; 0 = until Ctrl-C (memory: the device's default)
+};
+
+// Throws UsageError with the reason for a bad combination.
+void validate(const LinkOptions& link);
+
+// Validates both option sets, builds the device and runs it; returns the exit code
+// (1 for a link error, reported on stderr).
+int run_device(const DeviceEntry& device, DeviceOptions options, const LinkOptions& link,
+               std::ostream& out);
+
+}  // namespace rs4sim::app
