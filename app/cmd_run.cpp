@@ -40,7 +40,8 @@ Action setup(CLI::App& cmd) {
   cmd.add_option("--address", o->address, "FDL address 0..125 (rs4: 0..126, default 4)");
   cmd.add_option("--ident", d.ident, "generic: Ident_Number, e.g. 0x1234");
   cmd.add_option("--cfg", d.cfg, "generic: configuration identifiers in hex, e.g. \"10 20\"");
-  cmd.add_option("--boot-time", d.boot_time_ms, "rs4: boot time until operational in ms (default 30000)");
+  cmd.add_option("--boot-time", d.boot_time_ms,
+                 "rs4: boot time until operational in ms (default 30000)");
   cmd.add_option("--link", l.link, "memory | pty | serial | udp")
       ->check(CLI::IsMember({"memory", "pty", "serial", "udp"}));
   cmd.add_option("--port", l.port, "serial device (--link serial)");
@@ -57,7 +58,8 @@ Action setup(CLI::App& cmd) {
   };
 }
 
-const CommandRegistration kRun("run", "run a virtual DP slave on a link (memory, pty, serial, udp)", setup);
+const CommandRegistration kRun("run", "run a virtual DP slave on a link (memory, pty, serial, udp)",
+                               setup);
 
 }  // namespace
 }  // namespace rs4sim::app

@@ -17,7 +17,8 @@ using dp::devices::GenericSlaveConfig;
 void trace(GenericSlave& s) {
   s.slave().set_trace([a = s.address()](const dp::slave::Transition& t) {
     std::cout << "slave " << int(a) << ": " << dp::slave::to_string(t.from) << " -> "
-              << dp::slave::to_string(t.to) << " (" << dp::slave::to_string(t.why) << ")" << std::endl;
+              << dp::slave::to_string(t.to) << " (" << dp::slave::to_string(t.why) << ")"
+              << std::endl;
   });
 }
 

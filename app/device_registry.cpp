@@ -11,7 +11,8 @@ std::vector<DeviceEntry>& device_registry() {
 
 const DeviceEntry* find_device(std::string_view name) {
   const auto& r = device_registry();
-  const auto it = std::find_if(r.begin(), r.end(), [name](const DeviceEntry& e) { return e.name == name; });
+  const auto it =
+      std::find_if(r.begin(), r.end(), [name](const DeviceEntry& e) { return e.name == name; });
   return it == r.end() ? nullptr : &*it;
 }
 
