@@ -1,7 +1,6 @@
 // FDL telegram encoding, spec/profibus-dp.md §1.2–§1.4.
 #include "dp/fdl/telegram.h"
 
-#include <array>
 #include <cstring>
 #include <stdexcept>
 
@@ -147,10 +146,9 @@ std::size_t encode(const Telegram& t, std::span<std::uint8_t> out) {
 }
 
 std::size_t encode(const Telegram& t, std::vector<std::uint8_t>& out) {
-  std::array<std::uint8_t, kMaxTelegramSize> buf{};
-  const std::size_t n = encode(t, std::span<std::uint8_t>(buf));
-  out.insert(out.end(), buf.begin(), buf.begin() + static_cast<std::ptrdiff_t>(n));
-  return n;
+  const std::size_t old = out.size();
+  out.resize(old + encoded_size(t));  // checks first: `out` is unchanged when this throws
+  return encode(t, std::span<std::uint8_t>(out).subspan(old));
 }
 
 }  // namespace rs4sim::dp::fdl

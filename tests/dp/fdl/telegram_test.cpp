@@ -219,7 +219,9 @@ TEST(FdlTelegram, FcsIsArithmeticSumMod256) {
 // The word-wise sum equals the plain byte sum for every length and alignment.
 TEST(FdlTelegram, FcsMatchesByteSumForEveryLengthAndOffset) {
   Bytes bytes(kMaxTelegramSize + 8);
-  for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<std::uint8_t>(i * 37 + 0xA5);
+  for (std::size_t i = 0; i < bytes.size(); ++i) {
+    bytes[i] = static_cast<std::uint8_t>(i * 37 + 0xA5);
+  }
   for (std::size_t offset = 0; offset < 8; ++offset) {
     for (std::size_t n = 0; n + offset <= bytes.size(); ++n) {
       unsigned expected = 0;
