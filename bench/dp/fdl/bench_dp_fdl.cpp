@@ -1,6 +1,7 @@
 // FDL codec hot paths (spec/profibus-dp.md §1.2): one Data_Exchange request decoded and
-// one response encoded (SD2, 6 data bytes), the slave's decode→reply→encode step, the
-// streaming decoder's throughput, and the PDU decoders used at start-up.
+// one response encoded (SD2, 6 data bytes), the slave's decode→reply→encode step (with its
+// speed-up over pyprofibus), the streaming decoder's throughput, and the PDU decoders used
+// at start-up. The same telegrams in Python: bench/dp/fdl/pyprofibus_fdl_bench.py.
 #include "dp/fdl/decoder.h"
 #include "dp/fdl/fcb.h"
 #include "dp/pdu/cfg.h"
@@ -10,6 +11,7 @@
 #include <benchmark/benchmark.h>
 
 #include <array>
+#include <cstdlib>
 #include <vector>
 
 namespace {
@@ -32,6 +34,17 @@ fdl::Telegram dx_request() {
 fdl::Telegram dx_response() {
   return fdl::make_data_telegram(2, 5, fdl::FrameControl::response(fdl::ResponseStatus::kDataLow), std::nullopt,
                                  std::nullopt, kOutputs);
+}
+
+// pyprofibus' FDL layer on the same two telegrams, CPU ns per decode+encode, measured by
+// bench/dp/fdl/pyprofibus_fdl_bench.py (figure and machine in dp/fdl/README.md); set
+// PYPROFIBUS_NS to the figure that script prints on the machine at hand.
+constexpr double kPyprofibusNs = 2460;
+
+double pyprofibus_ns() {
+  const char* env = std::getenv("PYPROFIBUS_NS");
+  const double ns = env != nullptr ? std::strtod(env, nullptr) : 0.0;
+  return ns > 0.0 ? ns : kPyprofibusNs;
 }
 
 class CountSink final : public fdl::DecoderSink {
@@ -93,6 +106,10 @@ void BM_DecodeReplyEncodeDataExchange(benchmark::State& state) {
     toggle = !toggle;
   }
   benchmark::DoNotOptimize(sink.written);
+  // Speed-up over pyprofibus on the same telegrams: Google Benchmark divides a rate
+  // counter by the CPU time per iteration, so "x_pyprofibus=N/s" reads as N times faster.
+  state.counters["x_pyprofibus"] =
+      benchmark::Counter(pyprofibus_ns() * 1e-9, benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_DecodeReplyEncodeDataExchange);
 

@@ -2,7 +2,8 @@
 // Input byte 0 picks a chunk size; the rest is the bus byte stream.
 // Invariants: every delivered telegram re-encodes and decodes back to itself; the same
 // stream fed in one chunk and in small chunks gives the same telegrams and errors; every
-// fed byte is accounted for (delivered, discarded or pending).
+// fed byte is accounted for (delivered, discarded or pending); the FCS of the whole input
+// equals its plain byte sum.
 #include "dp/fdl/decoder.h"
 
 #include <cstdlib>
@@ -57,5 +58,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   check(a.delivered_bytes + whole.stats().discarded_bytes + whole.pending_bytes() == stream.size());
   whole.idle(a);
   check(whole.pending_bytes() == 0);
+  // The word-wise FCS equals the plain byte sum at every length and alignment.
+  unsigned sum = 0;
+  for (const std::uint8_t byte : stream) sum += byte;
+  check(rs4sim::dp::fdl::frame_check_sequence(stream) == static_cast<std::uint8_t>(sum));
   return 0;
 }

@@ -216,6 +216,22 @@ TEST(FdlTelegram, FcsIsArithmeticSumMod256) {
   EXPECT_EQ(frame_check_sequence(carry), 0x01);
 }
 
+// The word-wise sum equals the plain byte sum for every length and alignment.
+TEST(FdlTelegram, FcsMatchesByteSumForEveryLengthAndOffset) {
+  Bytes bytes(kMaxTelegramSize + 8);
+  for (std::size_t i = 0; i < bytes.size(); ++i) {
+    bytes[i] = static_cast<std::uint8_t>(i * 37 + 0xA5);
+  }
+  for (std::size_t offset = 0; offset < 8; ++offset) {
+    for (std::size_t n = 0; n + offset <= bytes.size(); ++n) {
+      unsigned expected = 0;
+      for (std::size_t i = 0; i < n; ++i) expected += bytes[offset + i];
+      const std::span<const std::uint8_t> s(bytes.data() + offset, n);
+      ASSERT_EQ(frame_check_sequence(s), static_cast<std::uint8_t>(expected)) << n << "@" << offset;
+    }
+  }
+}
+
 TEST(FdlTelegram, MaximumSd2AndEmptySd2) {
   Telegram t = make_data_telegram(3, 1, FrameControl::request(RequestFunction::kSrdHigh, true, true), 51, 51,
                                   std::vector<std::uint8_t>(244, 0xE5));
