@@ -22,6 +22,7 @@ struct SnapshotVersion {
   std::uint32_t restored_from{0};    // version number, 0 = none
   bool pending_download{false};
   std::string serial_number;
+  bool operator==(const SnapshotVersion&) const = default;
 };
 
 struct SnapshotStation {
@@ -31,6 +32,7 @@ struct SnapshotStation {
   std::vector<SnapshotVersion> versions;   // ascending by number
   std::uint32_t current_version{0};        // 0 = none
   std::vector<SyncLogEntry> sync_log;      // oldest first (entry.station ignored)
+  bool operator==(const SnapshotStation&) const = default;
 };
 
 struct Snapshot {
@@ -38,6 +40,7 @@ struct Snapshot {
   Timestamp exported_at{};
   std::vector<SnapshotStation> stations;
   std::vector<ParameterSetRecord> sets;
+  bool operator==(const Snapshot&) const = default;
 };
 
 struct ImportSummary {

@@ -31,21 +31,23 @@ Result<void> apply_options(sqlite::Database& db, const SqliteOptions& options) {
 
 Result<std::unique_ptr<SqliteArchive>> SqliteArchive::open(const std::filesystem::path& path,
                                                            const SqliteOptions& options) {
-  const auto parent = path.parent_path();
-  if (!options.read_only && !parent.empty() && path != ":memory:") {
-    std::error_code ec;
-    std::filesystem::create_directories(parent, ec);
-    if (ec) {
-      return archive_error(ArchiveErrc::kIo, "open " + path.string() + ": cannot create " +
-                                                 parent.string() + " (" + ec.message() + ")");
+  return with_context("open " + path.string(), [&]() -> Result<std::unique_ptr<SqliteArchive>> {
+    const auto parent = path.parent_path();
+    if (!options.read_only && !parent.empty() && path != ":memory:") {
+      std::error_code ec;
+      std::filesystem::create_directories(parent, ec);
+      if (ec) {
+        return archive_error(ArchiveErrc::kIo,
+                             "cannot create " + parent.string() + " (" + ec.message() + ")");
+      }
     }
-  }
-  const int flags = options.read_only ? SQLITE_OPEN_READONLY
-                                      : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
-  BOOST_OUTCOME_TRY(db, sqlite::Database::open(path.string(), flags));
-  BOOST_OUTCOME_TRY(apply_options(*db, options));
-  BOOST_OUTCOME_TRY(sqlite::prepare_schema(*db, options.read_only));
-  return std::unique_ptr<SqliteArchive>(new SqliteArchive(std::move(db)));
+    const int flags = options.read_only ? SQLITE_OPEN_READONLY
+                                        : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
+    BOOST_OUTCOME_TRY(db, sqlite::Database::open(path.string(), flags));
+    BOOST_OUTCOME_TRY(apply_options(*db, options));
+    BOOST_OUTCOME_TRY(sqlite::prepare_schema(*db, options.read_only));
+    return std::unique_ptr<SqliteArchive>(new SqliteArchive(std::move(db)));
+  });
 }
 
 Result<std::int64_t> SqliteArchive::station_id(const StationKey& key) {

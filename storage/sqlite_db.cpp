@@ -27,7 +27,9 @@ Statement::~Statement() { sqlite3_finalize(stmt_); }
 void Statement::bind(int index, std::int64_t value) { sqlite3_bind_int64(stmt_, index, value); }
 
 void Statement::bind(int index, std::string_view text) {
-  sqlite3_bind_text64(stmt_, index, text.data(), text.size(), SQLITE_TRANSIENT, SQLITE_UTF8);
+  // A default string_view has no data pointer, which SQLite would store as NULL.
+  const char* data = text.data() != nullptr ? text.data() : "";
+  sqlite3_bind_text64(stmt_, index, data, text.size(), SQLITE_TRANSIENT, SQLITE_UTF8);
 }
 
 void Statement::bind(int index, std::span<const std::uint8_t> blob) {
@@ -66,7 +68,7 @@ Result<std::unique_ptr<Database>> Database::open(const std::string& path, int fl
   sqlite3* db = nullptr;
   const int rc = sqlite3_open_v2(path.c_str(), &db, flags | SQLITE_OPEN_NOMUTEX, nullptr);
   if (rc != SQLITE_OK) {
-    auto err = error_from(rc, db, "open " + path);
+    auto err = error_from(rc, db, "sqlite3_open_v2");
     sqlite3_close_v2(db);
     return err;
   }

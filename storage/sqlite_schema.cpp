@@ -82,23 +82,22 @@ Result<void> run_script(Database& db, std::string_view script, std::string_view 
 }
 
 Result<void> check_ownership(Database& db, std::int64_t app_id, std::int64_t version) {
-  const std::string& file = db.path();
   if (app_id == 0 && version == 0) {
     BOOST_OUTCOME_TRY(tables, db.query_int("SELECT count(*) FROM sqlite_schema"));
     if (tables != 0) {
       return archive_error(ArchiveErrc::kNotAnArchive,
-                           "open " + file + ": a SQLite database with other tables");
+                           "a SQLite database with other tables");
     }
     return boost::outcome_v2::success();
   }
   if (app_id != kApplicationId) {
     return archive_error(ArchiveErrc::kNotAnArchive,
-                         "open " + file + ": application_id " + std::to_string(app_id) +
+                         "application_id " + std::to_string(app_id) +
                              " is not rs4sim's " + std::to_string(kApplicationId));
   }
   if (version > kSchemaVersion) {
     return archive_error(ArchiveErrc::kNewerSchema,
-                         "open " + file + ": schema version " + std::to_string(version) +
+                         "schema version " + std::to_string(version) +
                              ", this rs4sim knows up to " + std::to_string(kSchemaVersion));
   }
   return boost::outcome_v2::success();
@@ -109,7 +108,7 @@ Result<void> migrate(Database& db) {
   // Read again under the write lock: another process may have migrated meanwhile.
   BOOST_OUTCOME_TRY(version, db.query_int("PRAGMA user_version"));
   for (auto v = version; v < kSchemaVersion; ++v) {
-    const auto what = "migrate " + db.path() + " to schema " + std::to_string(v + 1);
+    const auto what = "migrate to schema " + std::to_string(v + 1);
     BOOST_OUTCOME_TRY(run_script(db, kMigrations[static_cast<std::size_t>(v)], what));
   }
   BOOST_OUTCOME_TRY(db.exec("PRAGMA application_id = " + std::to_string(kApplicationId)));
@@ -126,7 +125,7 @@ Result<void> prepare_schema(Database& db, bool read_only) {
   if (version == kSchemaVersion) return boost::outcome_v2::success();
   if (read_only) {
     return archive_error(ArchiveErrc::kReadOnly,
-                         "open " + db.path() + ": schema version " + std::to_string(version) +
+                         "schema version " + std::to_string(version) +
                              " needs a migration, but the archive is opened read-only");
   }
   return migrate(db);

@@ -46,6 +46,7 @@ struct ParameterSetRecord {
   std::uint32_t crc32{0};
   std::vector<std::uint8_t> blob;
   std::string summary;
+  bool operator==(const ParameterSetRecord&) const = default;
 };
 
 struct VersionInfo {
