@@ -1,5 +1,6 @@
 #include "storage/archive_file.h"
 
+#include <google/protobuf/stubs/logging.h>
 #include <google/protobuf/util/json_util.h>
 
 #include <climits>
@@ -187,6 +188,7 @@ std::string encode_json(const Snapshot& snapshot) {
 
 Result<Snapshot> decode_binary(std::span<const std::uint8_t> bytes) {
   pb::ArchiveExport message;
+  const google::protobuf::LogSilencer quiet;   // a bad file is our error, not a log line
   if (bytes.size() > static_cast<std::size_t>(INT_MAX) ||
       !message.ParseFromArray(bytes.data(), static_cast<int>(bytes.size()))) {
     return archive_error(ArchiveErrc::kCorruptImport, "not a binary rs4sim.v1.ArchiveExport");
@@ -197,6 +199,7 @@ Result<Snapshot> decode_binary(std::span<const std::uint8_t> bytes) {
 Result<Snapshot> decode_json(std::string_view text) {
   pb::ArchiveExport message;
   google::protobuf::util::JsonParseOptions options;   // unknown fields are an error
+  const google::protobuf::LogSilencer quiet;
   const auto status = google::protobuf::util::JsonStringToMessage(
       google::protobuf::StringPiece(text.data(), text.size()), &message, options);
   if (!status.ok()) {

@@ -113,7 +113,8 @@ Result<VersionInfo> SqliteArchive::restore(VersionId version, Timestamp at, std:
     BOOST_OUTCOME_TRY(old, version_info(version));
     BOOST_OUTCOME_TRY(station, station_id(old.station));
     BOOST_OUTCOME_TRY(s, db_->statement(
-        "UPDATE versions SET pending_download = 0 WHERE station_id = ?"));
+        "UPDATE versions SET pending_download = 0 "
+        "WHERE station_id = ? AND pending_download <> 0"));
     s->bind(1, station);
     BOOST_OUTCOME_TRY(db_->run(*s, "clear pending download"));
     NewVersion v;

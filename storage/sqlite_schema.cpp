@@ -47,7 +47,7 @@ CREATE TABLE current_versions (
   station_id INTEGER PRIMARY KEY REFERENCES stations(id),
   version_id INTEGER NOT NULL REFERENCES versions(id));
 )sql",
-    // 1 -> 2: restore pending download, sync log.
+    // 1 -> 2: restore pending download (partial index: only pending rows), sync log.
     R"sql(
 ALTER TABLE versions ADD COLUMN pending_download INTEGER NOT NULL DEFAULT 0;
 CREATE TABLE sync_log (
@@ -62,6 +62,7 @@ CREATE TABLE sync_log (
   error_number_device INTEGER NOT NULL,
   duration_ms         INTEGER NOT NULL);
 CREATE INDEX sync_log_by_station ON sync_log (station_id, id);
+CREATE INDEX versions_pending ON versions (station_id) WHERE pending_download <> 0;
 )sql",
 };
 
