@@ -17,6 +17,7 @@ namespace {
 Result<void> apply_options(sqlite::Database& db, const SqliteOptions& options) {
   sqlite3_busy_timeout(db.handle(), static_cast<int>(options.busy_timeout.count()));
   BOOST_OUTCOME_TRY(db.exec("PRAGMA foreign_keys = ON"));
+  BOOST_OUTCOME_TRY(db.exec("PRAGMA cache_size = -" + std::to_string(options.cache_kib)));
   if (options.max_page_count != 0) {
     BOOST_OUTCOME_TRY(db.exec("PRAGMA max_page_count = " +
                               std::to_string(options.max_page_count)));
