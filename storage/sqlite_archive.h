@@ -82,6 +82,7 @@ class SqliteArchive final : public ParameterArchive {
                            std::string_view summary, bool& inserted);
   Result<VersionId> append_version(std::int64_t station, const NewVersion& v);
   Result<void> make_current(std::int64_t station, VersionId version);
+  Result<void> clear_pending(std::int64_t station);
   Result<VersionInfo> version_info(VersionId version);               // kUnknownVersion
   Result<ParameterSetRecord> set_record(SetId set);
   Result<VersionWithSet> version_with_set(VersionId version);

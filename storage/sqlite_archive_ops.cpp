@@ -37,6 +37,15 @@ Result<void> check_request(const StoreRequest& r) {
 
 }  // namespace
 
+// A new current version supersedes a restore still waiting for its download.
+Result<void> SqliteArchive::clear_pending(std::int64_t station) {
+  BOOST_OUTCOME_TRY(s, db_->statement(
+      "UPDATE versions SET pending_download = 0 "
+      "WHERE station_id = ? AND pending_download <> 0"));
+  s->bind(1, station);
+  return db_->run(*s, "clear pending download");
+}
+
 Result<VersionInfo> SqliteArchive::store(const StoreRequest& r) {
   return with_context("store " + label(r.station), [&]() -> Result<VersionInfo> {
     BOOST_OUTCOME_TRY(check_request(r));
@@ -45,13 +54,7 @@ Result<VersionInfo> SqliteArchive::store(const StoreRequest& r) {
     BOOST_OUTCOME_TRY(see_serial(station, r.serial_number, r.at, r.at));
     bool inserted = false;
     BOOST_OUTCOME_TRY(set, intern_set(r.blob, r.crc32, r.summary, inserted));
-    {  // a new current version supersedes a restore still waiting for its download
-      BOOST_OUTCOME_TRY(s, db_->statement(
-          "UPDATE versions SET pending_download = 0 "
-          "WHERE station_id = ? AND pending_download <> 0"));
-      s->bind(1, station);
-      BOOST_OUTCOME_TRY(db_->run(*s, "clear pending download"));
-    }
+    BOOST_OUTCOME_TRY(clear_pending(station));
     NewVersion v;
     v.set_id = set;
     v.source = r.source;
@@ -112,11 +115,7 @@ Result<VersionInfo> SqliteArchive::restore(VersionId version, Timestamp at, std:
     BOOST_OUTCOME_TRY(tx, Transaction::begin(*db_));
     BOOST_OUTCOME_TRY(old, version_info(version));
     BOOST_OUTCOME_TRY(station, station_id(old.station));
-    BOOST_OUTCOME_TRY(s, db_->statement(
-        "UPDATE versions SET pending_download = 0 "
-        "WHERE station_id = ? AND pending_download <> 0"));
-    s->bind(1, station);
-    BOOST_OUTCOME_TRY(db_->run(*s, "clear pending download"));
+    BOOST_OUTCOME_TRY(clear_pending(station));
     NewVersion v;
     v.set_id = old.set_id;
     v.source = VersionSource::kRestore;

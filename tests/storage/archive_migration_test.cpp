@@ -53,15 +53,17 @@ std::int64_t user_version(const std::filesystem::path& file) {
   return v;
 }
 
+void write_v1_file(const std::filesystem::path& file) {
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(file.c_str(), &db), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(db, kSchemaV1File, nullptr, nullptr, nullptr), SQLITE_OK);
+  sqlite3_close(db);
+}
+
 TEST(ArchiveMigration, Version1FileIsUpgradedAndKeepsItsRows) {
   testing::TempDir dir;
   const auto file = dir.file("v1.sqlite3");
-  {
-    sqlite3* db = nullptr;
-    ASSERT_EQ(sqlite3_open(file.c_str(), &db), SQLITE_OK);
-    ASSERT_EQ(sqlite3_exec(db, kSchemaV1File, nullptr, nullptr, nullptr), SQLITE_OK);
-    sqlite3_close(db);
-  }
+  write_v1_file(file);
   ASSERT_EQ(user_version(file), 1);
   auto archive = SqliteArchive::open(file).value();
   EXPECT_EQ(user_version(file), 2);
@@ -92,12 +94,7 @@ TEST(ArchiveMigration, EmptyFileIsVersion0AndGetsTheWholeSchema) {
 TEST(ArchiveMigration, ReadOnlyOpenOfAnOldFileIsRefused) {
   testing::TempDir dir;
   const auto file = dir.file("v1.sqlite3");
-  {
-    sqlite3* db = nullptr;
-    ASSERT_EQ(sqlite3_open(file.c_str(), &db), SQLITE_OK);
-    ASSERT_EQ(sqlite3_exec(db, kSchemaV1File, nullptr, nullptr, nullptr), SQLITE_OK);
-    sqlite3_close(db);
-  }
+  write_v1_file(file);
   SqliteOptions options;
   options.read_only = true;
   const auto r = SqliteArchive::open(file, options);
