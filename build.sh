@@ -23,6 +23,7 @@ FUZZ_SECONDS=${FUZZ_SECONDS:-10}
 
 packages=(build-essential cmake ninja-build pkg-config libboost-dev libsqlite3-dev
           libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev)
+packages+=(libprotobuf-dev protobuf-compiler zlib1g-dev)   # storage/: archive export format, CRC-32
 [ "$mode" = test ] && packages+=(clang libclang-rt-14-dev)
 
 missing=()

@@ -1,0 +1,59 @@
+#pragma once
+// The parameter archive as the proxy, the CLI and the RPC see it. Narrow on purpose:
+// value types in and out, no SQL, no handles, so a second backend (PostgreSQL) can
+// implement it without touching a caller. SqliteArchive (sqlite_archive.h) is the
+// embedded default.
+//
+// Contract for every backend:
+//   - each call that changes the archive is one transaction: it happens completely or
+//     not at all; on any error the archive is unchanged;
+//   - the archive reads no clock: every instant comes from the caller;
+//   - a parameter set is stored once per distinct byte string (deduplicated); its
+//     CRC-32 is computed by the archive and must equal the caller's claim.
+
+#include <cstddef>
+#include <vector>
+
+#include "storage/errors.h"
+#include "storage/snapshot.h"
+#include "storage/types.h"
+
+namespace rs4sim::storage {
+
+class ParameterArchive {
+ public:
+  virtual ~ParameterArchive() = default;
+
+  // New version of the station (created on first use), becomes its current set.
+  virtual Result<VersionInfo> store(const StoreRequest& request) = 0;
+  virtual Result<VersionWithSet> current(const StationKey& station) = 0;
+  // All versions of the station, ascending by number.
+  virtual Result<std::vector<VersionInfo>> history(const StationKey& station) = 0;
+  virtual Result<VersionWithSet> get(VersionId version) = 0;
+  // New version (source kRestore) with the same set as `version`; becomes current and is
+  // pending download until mark_downloaded().
+  virtual Result<VersionInfo> restore(VersionId version, Timestamp at, std::string note) = 0;
+  virtual Result<void> mark_downloaded(VersionId version) = 0;
+  virtual Result<std::vector<StationInfo>> stations() = 0;
+
+  virtual Result<void> log_sync(const SyncLogEntry& entry) = 0;
+  // The station's newest `limit` entries, oldest first.
+  virtual Result<std::vector<SyncLogEntry>> sync_log(const StationKey& station,
+                                                     std::size_t limit) = 0;
+
+  // Structural checks of the backend plus every stored blob's CRC-32 re-computed.
+  virtual Result<IntegrityReport> check_integrity() = 0;
+
+  virtual Result<Snapshot> export_snapshot(Timestamp exported_at) = 0;
+  // validate()s the snapshot, then adds it in one transaction: stations are matched by
+  // bus/address (created if new), versions appended after the existing ones (renumbered,
+  // everything else kept), the snapshot's current version becomes current.
+  virtual Result<ImportSummary> import_snapshot(const Snapshot& snapshot) = 0;
+
+ protected:
+  ParameterArchive() = default;
+  ParameterArchive(const ParameterArchive&) = default;
+  ParameterArchive& operator=(const ParameterArchive&) = default;
+};
+
+}  // namespace rs4sim::storage

@@ -1,0 +1,96 @@
+#include "storage/snapshot.h"
+
+#include <set>
+#include <unordered_set>
+
+#include "storage/crc32.h"
+
+namespace rs4sim::storage {
+namespace {
+
+using boost::outcome_v2::success;
+
+ArchiveError corrupt(const std::string& what) {
+  return archive_error(ArchiveErrc::kCorruptImport, what);
+}
+
+Result<void> validate_sets(const Snapshot& snap, std::unordered_set<SetId>& ids) {
+  for (const auto& set : snap.sets) {
+    const auto name = "parameter set " + std::to_string(set.id);
+    if (set.id <= 0) return corrupt(name + ": id must be >= 1");
+    if (!ids.insert(set.id).second) return corrupt(name + ": id used twice");
+    if (set.blob.empty()) return corrupt(name + ": empty blob");
+    if (crc32(set.blob) != set.crc32) {
+      return archive_error(ArchiveErrc::kCrcMismatch, name + ": CRC-32 does not match its blob");
+    }
+  }
+  return success();
+}
+
+Result<void> validate_versions(const SnapshotStation& st, const std::string& name,
+                               const std::unordered_set<SetId>& set_ids) {
+  std::set<std::uint32_t> numbers;
+  std::uint32_t last = 0;
+  for (const auto& v : st.versions) {
+    const auto vname = name + " version " + std::to_string(v.number);
+    if (v.number <= last) return corrupt(vname + ": numbers must be >= 1 and increasing");
+    last = v.number;
+    if (set_ids.count(v.set_id) == 0) return corrupt(vname + ": unknown parameter set");
+    const auto source = static_cast<int>(v.source);
+    if (source < 1 || source > 4) return corrupt(vname + ": unknown source");
+    if (v.restored_from != 0 && numbers.count(v.restored_from) == 0) {
+      return corrupt(vname + ": restored from a version that does not precede it");
+    }
+    numbers.insert(v.number);
+  }
+  if (st.current_version != 0 && numbers.count(st.current_version) == 0) {
+    return corrupt(name + ": current version " + std::to_string(st.current_version) +
+                   " not in its versions");
+  }
+  return success();
+}
+
+Result<void> validate_station(const SnapshotStation& st,
+                              const std::unordered_set<SetId>& set_ids) {
+  const auto name = "station " + st.key.bus + "/" + std::to_string(st.key.address);
+  if (st.key.address > 126) return corrupt(name + ": address above 126");
+  std::set<std::string> serials;
+  for (const auto& s : st.serials) {
+    if (s.serial_number.empty() || !serials.insert(s.serial_number).second) {
+      return corrupt(name + ": empty or repeated serial number");
+    }
+    if (s.first_seen > s.last_seen) return corrupt(name + ": serial first seen after last seen");
+  }
+  BOOST_OUTCOME_TRY(validate_versions(st, name, set_ids));
+  for (const auto& e : st.sync_log) {
+    const auto direction = static_cast<int>(e.direction);
+    const auto outcome = static_cast<int>(e.outcome);
+    if (direction < 1 || direction > 4 || outcome < 1 || outcome > 3) {
+      return corrupt(name + ": sync log entry with unknown direction or outcome");
+    }
+    if (e.duration.count() < 0) return corrupt(name + ": negative sync duration");
+  }
+  return success();
+}
+
+}  // namespace
+
+Result<void> validate(const Snapshot& snapshot) {
+  if (snapshot.format_version != kExportFormatVersion) {
+    return corrupt("format version " + std::to_string(snapshot.format_version) +
+                   ", this rs4sim reads " + std::to_string(kExportFormatVersion));
+  }
+  std::unordered_set<SetId> set_ids;
+  BOOST_OUTCOME_TRY(validate_sets(snapshot, set_ids));
+  std::set<StationKey> keys;
+  for (const auto& st : snapshot.stations) {
+    if (!keys.insert(st.key).second) {
+      return corrupt("station " + st.key.bus + "/" + std::to_string(st.key.address) +
+                     " appears twice");
+    }
+    BOOST_OUTCOME_TRY(validate_station(st, set_ids));
+  }
+  return success();
+}
+
+}  // namespace rs4sim::storage

@@ -1,0 +1,193 @@
+// SqliteArchive: store, read, restore, stations (sqlite_archive.h).
+#include <cstdio>
+
+#include "storage/crc32.h"
+#include "storage/sqlite_archive.h"
+#include "storage/sqlite_rows.h"
+#include "storage/time_ms.h"
+
+namespace rs4sim::storage {
+
+using boost::outcome_v2::success;
+using sqlite::Transaction;
+
+namespace {
+
+constexpr std::uint8_t kMaxAddress = 126;
+
+std::string hex32(std::uint32_t v) {
+  char text[11];
+  std::snprintf(text, sizeof text, "0x%08X", v);
+  return text;
+}
+
+Result<void> check_request(const StoreRequest& r) {
+  if (r.station.address > kMaxAddress) {
+    return archive_error(ArchiveErrc::kInvalidArgument,
+                         "address " + std::to_string(r.station.address) + " above 126");
+  }
+  if (r.blob.empty()) return archive_error(ArchiveErrc::kInvalidArgument, "empty blob");
+  const auto actual = crc32(r.blob);
+  if (actual != r.crc32) {
+    return archive_error(ArchiveErrc::kCrcMismatch,
+                         "claimed " + hex32(r.crc32) + ", blob has " + hex32(actual));
+  }
+  return success();
+}
+
+}  // namespace
+
+// A new current version supersedes a restore still waiting for its download.
+Result<void> SqliteArchive::clear_pending(std::int64_t station) {
+  BOOST_OUTCOME_TRY(s, db_->statement(
+      "UPDATE versions SET pending_download = 0 "
+      "WHERE station_id = ? AND pending_download <> 0"));
+  s->bind(1, station);
+  return db_->run(*s, "clear pending download");
+}
+
+Result<VersionInfo> SqliteArchive::store(const StoreRequest& r) {
+  return with_context("store " + label(r.station), [&]() -> Result<VersionInfo> {
+    BOOST_OUTCOME_TRY(check_request(r));
+    BOOST_OUTCOME_TRY(tx, Transaction::begin(*db_));
+    BOOST_OUTCOME_TRY(station, upsert_station(r.station, r.device_type));
+    BOOST_OUTCOME_TRY(see_serial(station, r.serial_number, r.at, r.at));
+    bool inserted = false;
+    BOOST_OUTCOME_TRY(set, intern_set(r.blob, r.crc32, r.summary, inserted));
+    BOOST_OUTCOME_TRY(clear_pending(station));
+    NewVersion v;
+    v.set_id = set;
+    v.source = r.source;
+    v.at = r.at;
+    v.note = r.note;
+    v.serial_number = r.serial_number;
+    BOOST_OUTCOME_TRY(id, append_version(station, v));
+    BOOST_OUTCOME_TRY(make_current(station, id));
+    BOOST_OUTCOME_TRY(info, version_info(id));
+    BOOST_OUTCOME_TRY(tx.commit());
+    return info;
+  });
+}
+
+Result<VersionWithSet> SqliteArchive::current(const StationKey& key) {
+  return with_context("current", [&]() -> Result<VersionWithSet> {
+    auto read = Transaction::begin_read(*db_);   // one snapshot for all reads
+    if (!read) return std::move(read).error();
+    BOOST_OUTCOME_TRY(station, station_id(key));
+    BOOST_OUTCOME_TRY(s, db_->statement(
+        "SELECT version_id FROM current_versions WHERE station_id = ?"));
+    s->bind(1, station);
+    const int rc = s->step();
+    if (rc == SQLITE_DONE) {
+      return archive_error(ArchiveErrc::kNotFound, label(key) + " has no current set");
+    }
+    if (rc != SQLITE_ROW) return db_->error(rc, label(key));
+    return version_with_set(s->int64(0));
+  });
+}
+
+Result<std::vector<VersionInfo>> SqliteArchive::history(const StationKey& key) {
+  return with_context("history", [&]() -> Result<std::vector<VersionInfo>> {
+    auto read = Transaction::begin_read(*db_);   // one snapshot for all reads
+    if (!read) return std::move(read).error();
+    BOOST_OUTCOME_TRY(station, station_id(key));
+    BOOST_OUTCOME_TRY(s, db_->statement(std::string(kVersionColumns) +
+                                        "WHERE v.station_id = ? ORDER BY v.number"));
+    s->bind(1, station);
+    std::vector<VersionInfo> out;
+    int rc = SQLITE_ROW;
+    while ((rc = s->step()) == SQLITE_ROW) out.push_back(read_version(*s));
+    if (rc != SQLITE_DONE) return db_->error(rc, label(key));
+    return out;
+  });
+}
+
+Result<VersionWithSet> SqliteArchive::get(VersionId version) {
+  return with_context("get", [&]() -> Result<VersionWithSet> {
+    auto read = Transaction::begin_read(*db_);   // one snapshot for all reads
+    if (!read) return std::move(read).error();
+    return version_with_set(version);
+  });
+}
+
+Result<VersionInfo> SqliteArchive::restore(VersionId version, Timestamp at, std::string note) {
+  return with_context("restore", [&]() -> Result<VersionInfo> {
+    BOOST_OUTCOME_TRY(tx, Transaction::begin(*db_));
+    BOOST_OUTCOME_TRY(old, version_info(version));
+    BOOST_OUTCOME_TRY(station, station_id(old.station));
+    BOOST_OUTCOME_TRY(clear_pending(station));
+    NewVersion v;
+    v.set_id = old.set_id;
+    v.source = VersionSource::kRestore;
+    v.at = at;
+    v.note = note;
+    v.restored_from = version;
+    v.pending_download = true;
+    BOOST_OUTCOME_TRY(id, append_version(station, v));
+    BOOST_OUTCOME_TRY(make_current(station, id));
+    BOOST_OUTCOME_TRY(info, version_info(id));
+    BOOST_OUTCOME_TRY(tx.commit());
+    return info;
+  });
+}
+
+Result<void> SqliteArchive::mark_downloaded(VersionId version) {
+  return with_context("mark downloaded", [&]() -> Result<void> {
+    BOOST_OUTCOME_TRY(tx, Transaction::begin(*db_));
+    BOOST_OUTCOME_TRY(version_info(version));
+    BOOST_OUTCOME_TRY(s, db_->statement(
+        "UPDATE versions SET pending_download = 0 WHERE id = ?"));
+    s->bind(1, version);
+    BOOST_OUTCOME_TRY(db_->run(*s, "version " + std::to_string(version)));
+    return tx.commit();
+  });
+}
+
+Result<std::vector<SerialSeen>> SqliteArchive::serials(std::int64_t station) {
+  BOOST_OUTCOME_TRY(s, db_->statement(
+      "SELECT serial_number, first_seen_ms, last_seen_ms FROM station_serials "
+      "WHERE station_id = ? ORDER BY first_seen_ms, serial_number"));
+  s->bind(1, station);
+  std::vector<SerialSeen> out;
+  int rc = SQLITE_ROW;
+  while ((rc = s->step()) == SQLITE_ROW) {
+    out.push_back({s->text(0), from_ms(s->int64(1)), from_ms(s->int64(2))});
+  }
+  if (rc != SQLITE_DONE) return db_->error(rc, "serial numbers");
+  return out;
+}
+
+Result<std::vector<std::pair<std::int64_t, StationInfo>>> SqliteArchive::list_stations() {
+  BOOST_OUTCOME_TRY(s, db_->statement(
+      "SELECT s.id, s.bus, s.address, s.device_type, c.version_id FROM stations s "
+      "LEFT JOIN current_versions c ON c.station_id = s.id ORDER BY s.bus, s.address"));
+  std::vector<std::pair<std::int64_t, StationInfo>> out;
+  int rc = SQLITE_ROW;
+  while ((rc = s->step()) == SQLITE_ROW) {
+    StationInfo info;
+    info.key = StationKey{s->text(1), static_cast<std::uint8_t>(s->int64(2))};
+    info.device_type = s->text(3);
+    if (!s->is_null(4)) info.current = s->int64(4);
+    out.emplace_back(s->int64(0), std::move(info));
+  }
+  if (rc != SQLITE_DONE) return db_->error(rc, "list");
+  for (auto& [id, info] : out) {
+    BOOST_OUTCOME_TRY(seen, serials(id));
+    info.serials = std::move(seen);
+  }
+  return out;
+}
+
+Result<std::vector<StationInfo>> SqliteArchive::stations() {
+  return with_context("stations", [&]() -> Result<std::vector<StationInfo>> {
+    auto read = Transaction::begin_read(*db_);   // one snapshot for all reads
+    if (!read) return std::move(read).error();
+    BOOST_OUTCOME_TRY(list, list_stations());
+    std::vector<StationInfo> out;
+    out.reserve(list.size());
+    for (auto& entry : list) out.push_back(std::move(entry.second));
+    return out;
+  });
+}
+
+}  // namespace rs4sim::storage

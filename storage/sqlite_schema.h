@@ -1,0 +1,20 @@
+#pragma once
+// The SQLite archive's schema and its forward migrations (docs/storage.md "Schema").
+// A file is ours when PRAGMA application_id is kApplicationId; PRAGMA user_version is
+// the schema version. Migrations run in one BEGIN IMMEDIATE transaction on open.
+
+#include <cstdint>
+
+#include "storage/errors.h"
+#include "storage/sqlite_db.h"
+
+namespace rs4sim::storage::sqlite {
+
+inline constexpr std::int64_t kApplicationId = 0x52533441;   // "RS4A"
+inline constexpr std::int64_t kSchemaVersion = 2;
+
+// Checks that the file is ours and not newer, then migrates it to kSchemaVersion (an
+// empty file is created). A read-only connection must already be at kSchemaVersion.
+Result<void> prepare_schema(Database& db, bool read_only);
+
+}  // namespace rs4sim::storage::sqlite
