@@ -48,6 +48,13 @@ class Reader {
     const auto low = u16_le();
     return be32(u16_le(), low);
   }
+  // An n-byte big-endian unsigned value, n = 0..4 (e.g. a 16- or 24-bit CRC).
+  constexpr std::uint32_t uint_be(std::size_t n) noexcept {
+    if (n > 4) fail();
+    std::uint32_t v = 0;
+    for (const auto b : bytes(n)) v = (v << 8U) | b;
+    return v;
+  }
   // Fills `out` with consecutive big-endian 16-bit values (one bounds check for all;
   // zeros after an error).
   constexpr void u16_be_array(std::span<std::uint16_t> out) noexcept {

@@ -33,6 +33,12 @@ class FieldWriter {
   constexpr void u32_le(std::uint32_t v) noexcept {
     write(std::array{byte_of(v, 0), byte_of(v, 1), byte_of(v, 2), byte_of(v, 3)});
   }
+  // The low n bytes of v, high byte first, n = 0..4 (e.g. a 24-bit CRC).
+  constexpr void uint_be(std::uint32_t v, std::size_t n) noexcept {
+    const std::array b{byte_of(v, 3), byte_of(v, 2), byte_of(v, 1), byte_of(v, 0)};
+    if (n > 4) return fail();
+    write(std::span<const std::uint8_t>(b).last(n));
+  }
   constexpr void bytes(std::span<const std::uint8_t> b) noexcept { write(b); }
   // Writes an array of bytes or byte-sized characters.
   template <class T, std::size_t N>
@@ -47,6 +53,8 @@ class FieldWriter {
   [[nodiscard]] std::error_code error() const noexcept {
     return failed_ ? make_error_code(BufferError::kWritePastEnd) : std::error_code{};
   }
+  // Latches an error found by the caller; every later write is dropped.
+  constexpr void fail() noexcept { failed_ = true; }
 
  private:
   template <class Bytes>

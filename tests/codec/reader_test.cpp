@@ -92,6 +92,21 @@ TEST(ReaderTest, U16BeArrayReadsAllOrNothing) {
   EXPECT_FALSE(r.ok());
 }
 
+TEST(ReaderTest, UintBeReadsVariableWidthValues) {
+  const std::array<std::uint8_t, 6> bytes{
+      0x12, 0x34, 0x56,  // 0-2  24-bit CRC2 = 0x123456
+      0xAB, 0xCD,        // 3-4  16-bit = 0xABCD
+      0xEF,              // 5    left over
+  };
+  Reader r(bytes);
+  EXPECT_EQ(r.uint_be(3), 0x123456U);
+  EXPECT_EQ(r.uint_be(2), 0xABCDU);
+  EXPECT_EQ(r.uint_be(0), 0U);
+  EXPECT_TRUE(r.ok());
+  EXPECT_EQ(r.uint_be(5), 0U);  // wider than 32 bits: an error, not a truncated value
+  EXPECT_FALSE(r.ok());
+}
+
 TEST(ReaderTest, FailLatchesACallersError) {
   const std::array<std::uint8_t, 2> bytes{0x05, 0x00};  // a length byte 5 that cannot be right
   Reader r(bytes);

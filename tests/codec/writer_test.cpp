@@ -42,6 +42,18 @@ TEST(WriterTest, OverflowDropsTheWriteAndKeepsTheFirstError) {
   EXPECT_EQ(buffer, (std::array<std::uint8_t, 3>{0xA1, 0xB2, 0x00}));
 }
 
+TEST(WriterTest, UintBeWritesTheLowBytesHighFirst) {
+  std::array<std::uint8_t, 8> buffer{};
+  Writer w(buffer);
+  w.uint_be(0x00123456, 3);  // 0-2  24-bit CRC2
+  w.uint_be(0xABCD, 2);      // 3-4
+  EXPECT_TRUE(w.ok());
+  EXPECT_EQ(buffer, (std::array<std::uint8_t, 8>{0x12, 0x34, 0x56, 0xAB, 0xCD, 0, 0, 0}));
+  w.uint_be(0, 5);           // wider than 32 bits: an error, nothing written
+  EXPECT_FALSE(w.ok());
+  EXPECT_EQ(w.size(), 5U);
+}
+
 TEST(AppenderTest, AppendsUpToTheLimit) {
   boost::container::static_vector<std::uint8_t, 8> out{0x68};  // one byte already there
   Appender a(out, 4);
