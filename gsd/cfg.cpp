@@ -10,7 +10,7 @@ namespace {
 Error cfg_error(std::size_t offset, const char* what) {
   char text[96];
   std::snprintf(text, sizeof text, "Cfg identifier at byte %zu: %s", offset, what);
-  return Error{ErrorCode::kBadCfg, "", 0, "", text};
+  return Error{GsdError::kBadCfg, "", 0, "", text};
 }
 
 // Length byte of the special format: b7 consistency, b6 words, b5..0 length - 1.
@@ -57,7 +57,7 @@ Result<CfgIdentifier> decode_one(std::span<const std::uint8_t> cfg, std::size_t 
 }  // namespace
 
 Result<CfgLayout> decode_cfg(std::span<const std::uint8_t> cfg) {
-  if (cfg.empty()) return Error{ErrorCode::kBadCfg, "", 0, "", "Cfg data is empty"};
+  if (cfg.empty()) return Error{GsdError::kBadCfg, "", 0, "", "Cfg data is empty"};
   CfgLayout layout;
   for (std::size_t offset = 0; offset < cfg.size();) {
     RS4SIM_GSD_TRY(auto id, decode_one(cfg, offset));

@@ -28,7 +28,7 @@ struct CfgLayout {
   std::size_t output_bytes = 0;
 };
 
-// Errors (ErrorCode::kBadCfg, the message names the identifier's offset): empty data,
+// Errors (GsdError::kBadCfg, the message names the identifier's offset): empty data,
 // a length byte or manufacturer-specific bytes missing at the end. Manufacturer count
 // 15 ("no manufacturer data, skip the check", Chk_Cfg) is accepted as 0 bytes.
 Result<CfgLayout> decode_cfg(std::span<const std::uint8_t> cfg);

@@ -1,42 +1,26 @@
 #include "gsd/error.h"
 
 namespace rs4sim::gsd {
-namespace {
 
-class Category final : public std::error_category {
- public:
-  const char* name() const noexcept override { return "rs4sim.gsd"; }
-  std::string message(int value) const override {
-    switch (static_cast<ErrorCode>(value)) {
-      case ErrorCode::kSyntax: return "GSD syntax error";
-      case ErrorCode::kMissingHeader: return "GSD does not start with #Profibus_DP";
-      case ErrorCode::kBlockStructure: return "GSD block structure error";
-      case ErrorCode::kBadValue: return "GSD keyword has a malformed value";
-      case ErrorCode::kOutOfRange: return "value out of range";
-      case ErrorCode::kMissingKeyword: return "required GSD keyword missing";
-      case ErrorCode::kDuplicate: return "defined twice";
-      case ErrorCode::kUnknownReference: return "reference to an undefined entry";
-      case ErrorCode::kBadCfg: return "malformed Cfg identifier";
-      case ErrorCode::kUnknownModule: return "unknown module";
-      case ErrorCode::kUnknownParameter: return "unknown parameter";
-      case ErrorCode::kNotChangeable: return "parameter is not changeable";
-      case ErrorCode::kPrmTooLong: return "User_Prm_Data too long";
-      case ErrorCode::kFParameterLayout: return "F-parameter layout error";
-      case ErrorCode::kModuleCount: return "wrong number of modules";
-    }
-    return "unknown GSD error";
+std::string_view to_string(GsdError e) noexcept {
+  switch (e) {
+    case GsdError::kSyntax: return "GSD syntax error";
+    case GsdError::kMissingHeader: return "GSD does not start with #Profibus_DP";
+    case GsdError::kBlockStructure: return "GSD block structure error";
+    case GsdError::kBadValue: return "GSD keyword has a malformed value";
+    case GsdError::kOutOfRange: return "value out of range";
+    case GsdError::kMissingKeyword: return "required GSD keyword missing";
+    case GsdError::kDuplicate: return "defined twice";
+    case GsdError::kUnknownReference: return "reference to an undefined entry";
+    case GsdError::kBadCfg: return "malformed Cfg identifier";
+    case GsdError::kUnknownModule: return "unknown module";
+    case GsdError::kUnknownParameter: return "unknown parameter";
+    case GsdError::kNotChangeable: return "parameter is not changeable";
+    case GsdError::kPrmTooLong: return "User_Prm_Data too long";
+    case GsdError::kFParameterLayout: return "F-parameter layout error";
+    case GsdError::kModuleCount: return "wrong number of modules";
   }
-};
-
-}  // namespace
-
-const std::error_category& error_category() noexcept {
-  static const Category category;
-  return category;
-}
-
-std::error_code make_error_code(ErrorCode code) noexcept {
-  return {static_cast<int>(code), error_category()};
+  return "unknown GSD error";
 }
 
 std::string Error::what() const {

@@ -3,15 +3,18 @@
 // the context an engineer needs to fix the file or the command: file name, line number
 // (1-based; 0 = not tied to a line) and the offending text.
 
+#include "codec/error_category.h"
+
 #include <boost/outcome/result.hpp>
 
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <utility>
 
 namespace rs4sim::gsd {
 
-enum class ErrorCode {
+enum class GsdError {
   kSyntax = 1,          // malformed token or line (unterminated string, stray character)
   kMissingHeader,       // the first keyword line is not #Profibus_DP
   kBlockStructure,      // End… without its block, nested block, block not closed
@@ -29,11 +32,14 @@ enum class ErrorCode {
   kModuleCount,         // wrong number of modules for the station type
 };
 
-const std::error_category& error_category() noexcept;
-std::error_code make_error_code(ErrorCode code) noexcept;
+[[nodiscard]] std::string_view to_string(GsdError code) noexcept;
+constexpr const char* error_category_name(GsdError) noexcept { return "rs4sim.gsd"; }
+inline std::error_code make_error_code(GsdError code) noexcept {
+  return codec::make_error_code_of(code);
+}
 
 struct Error {
-  ErrorCode code = ErrorCode::kSyntax;
+  GsdError code = GsdError::kSyntax;
   std::string file;     // file name as given to parse(), may be empty
   int line = 0;         // 1-based line of the statement; 0 = not tied to a line
   std::string text;     // offending text (statement or value), may be empty
@@ -66,4 +72,4 @@ using Result = boost::outcome_v2::result<T, Error, boost::outcome_v2::policy::te
   } while (0)
 
 template <>
-struct std::is_error_code_enum<rs4sim::gsd::ErrorCode> : std::true_type {};
+struct std::is_error_code_enum<rs4sim::gsd::GsdError> : std::true_type {};

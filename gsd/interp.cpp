@@ -118,7 +118,7 @@ Result<void> Interpreter::once(const syntax::Statement& st) {
   std::string key = lower(st.keyword);
   const auto [it, fresh] = seen_.emplace(key, st.line);
   if (!fresh) {
-    return error(file_.name, st, ErrorCode::kDuplicate,
+    return error(file_.name, st, GsdError::kDuplicate,
                  st.keyword + " already given at line " + std::to_string(it->second));
   }
   given_.insert(std::move(key));
@@ -132,7 +132,7 @@ Result<void> Interpreter::definitions() {
       RS4SIM_GSD_TRY(auto p, detail::interpret_ext_param(file_.name, e));
       const int n = p.number;
       if (!device_.params.emplace(n, std::move(p)).second) {
-        return error(file_.name, e.statement, ErrorCode::kDuplicate,
+        return error(file_.name, e.statement, GsdError::kDuplicate,
                      "ExtUserPrmData " + std::to_string(n) + " already defined at line " +
                          std::to_string(device_.params.at(n).line));
       }
@@ -140,13 +140,13 @@ Result<void> Interpreter::definitions() {
       RS4SIM_GSD_TRY(auto t, detail::interpret_prm_text(file_.name, e));
       const int n = t.number;
       if (!device_.prm_texts.emplace(n, std::move(t)).second) {
-        return error(file_.name, e.statement, ErrorCode::kDuplicate, "PrmText " + std::to_string(n) + " defined twice");
+        return error(file_.name, e.statement, GsdError::kDuplicate, "PrmText " + std::to_string(n) + " defined twice");
       }
     }
   }
   for (const auto& [n, p] : device_.params) {
     if (p.prm_text_ref && !device_.prm_texts.count(*p.prm_text_ref)) {
-      return Error{ErrorCode::kUnknownReference, file_.name, p.line, p.name,
+      return Error{GsdError::kUnknownReference, file_.name, p.line, p.name,
                    "Prm_Text_Ref = " + std::to_string(*p.prm_text_ref) + " names no PrmText"};
     }
   }
@@ -175,7 +175,7 @@ Result<bool> Interpreter::baud_keyword(const syntax::Statement& st) {
 Result<void> Interpreter::legacy_user_prm(const syntax::Statement& st) {
   RS4SIM_GSD_TRYV(once(st));
   if (!st.has_equals || st.fields.size() != 1) {
-    return error(file_.name, st, ErrorCode::kBadValue, "User_Prm_Data expects bytes b0,b1,…");
+    return error(file_.name, st, GsdError::kBadValue, "User_Prm_Data expects bytes b0,b1,…");
   }
   RS4SIM_GSD_TRY(auto bytes, detail::byte_list(file_.name, st, st.fields[0]));
   global_.consts.push_back({0, std::move(bytes), &st});
@@ -214,22 +214,22 @@ Result<void> Interpreter::statement(const syntax::Statement& st) {
 
 Result<void> Interpreter::finish() {
   if (!given_.count("ident_number")) {
-    return Error{ErrorCode::kMissingKeyword, file_.name, 0, "", "Ident_Number is missing"};
+    return Error{GsdError::kMissingKeyword, file_.name, 0, "", "Ident_Number is missing"};
   }
   bool any = false;
   for (const auto& b : device_.baud_rates) {
     if (b.supported && !b.max_tsdr) {
-      return Error{ErrorCode::kMissingKeyword, file_.name, seen_.at(lower(std::string(b.name) + "_supp")),
+      return Error{GsdError::kMissingKeyword, file_.name, seen_.at(lower(std::string(b.name) + "_supp")),
                    std::string(b.name) + "_supp = 1", "MaxTsdr_" + std::string(b.name) + " is missing"};
     }
     any = any || b.supported;
   }
-  if (!any) return Error{ErrorCode::kMissingKeyword, file_.name, 0, "", "no baud rate is supported (<rate>_supp = 1)"};
+  if (!any) return Error{GsdError::kMissingKeyword, file_.name, 0, "", "no baud rate is supported (<rate>_supp = 1)"};
   std::optional<std::size_t> max;
   if (device_.max_user_prm_data_len) max = *device_.max_user_prm_data_len;
   RS4SIM_GSD_TRY(device_.user_prm, global_.finish(file_.name, device_.params, max));
   if (device_.dpv1.slave && device_.user_prm.length < 3) {
-    return Error{ErrorCode::kMissingKeyword, file_.name, 0, "",
+    return Error{GsdError::kMissingKeyword, file_.name, 0, "",
                  "DPV1_Slave = 1 but User_Prm_Data does not hold the 3 DPV1_Status bytes"};
   }
   return boost::outcome_v2::success();
@@ -244,7 +244,7 @@ Result<Device> Interpreter::run() {
     } else if (e.statement.is("Module")) {
       RS4SIM_GSD_TRY(auto m, detail::interpret_module(file_.name, e, device_.params));
       if (device_.find_module(m.name)) {
-        return error(file_.name, e.statement, ErrorCode::kDuplicate, "module \"" + m.name + "\" defined twice");
+        return error(file_.name, e.statement, GsdError::kDuplicate, "module \"" + m.name + "\" defined twice");
       }
       device_.modules.push_back(std::move(m));
     }

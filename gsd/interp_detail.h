@@ -12,7 +12,7 @@
 
 namespace rs4sim::gsd::detail {
 
-Error error(const std::string& file, const syntax::Statement& st, ErrorCode code,
+Error error(const std::string& file, const syntax::Statement& st, GsdError code,
             std::string message);
 
 // `keyword = n` with lo <= n <= hi.

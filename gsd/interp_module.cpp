@@ -14,14 +14,14 @@ struct ModuleBuilder {
 Result<void> read_head(const std::string& file, const syntax::Statement& head, Module& m) {
   if (!head.has_equals || head.fields.size() != 2 || head.fields[0].size() != 1 ||
       !head.fields[0][0].is_string()) {
-    return error(file, head, ErrorCode::kBadValue, "Module expects = \"name\" cfg,cfg,…");
+    return error(file, head, GsdError::kBadValue, "Module expects = \"name\" cfg,cfg,…");
   }
   m.name = head.fields[0][0].text;
   m.line = head.line;
   RS4SIM_GSD_TRY(m.cfg, byte_list(file, head, head.fields[1]));
   auto layout = decode_cfg(m.cfg);
   if (!layout) {
-    return error(file, head, ErrorCode::kBadCfg, "module \"" + m.name + "\": " + layout.error().message);
+    return error(file, head, GsdError::kBadCfg, "module \"" + m.name + "\": " + layout.error().message);
   }
   m.input_len = layout.value().input_bytes;
   m.output_len = layout.value().output_bytes;
@@ -30,7 +30,7 @@ Result<void> read_head(const std::string& file, const syntax::Statement& head, M
 
 Result<void> read_length(const std::string& file, const syntax::Statement& st, TemplateBuilder& t) {
   if (t.length_st) {
-    return error(file, st, ErrorCode::kDuplicate, st.keyword + " already given at line " + std::to_string(t.length_st->line));
+    return error(file, st, GsdError::kDuplicate, st.keyword + " already given at line " + std::to_string(t.length_st->line));
   }
   RS4SIM_GSD_TRY(const auto len, number(file, st, 0, 237));
   t.length = static_cast<std::size_t>(len);
@@ -49,7 +49,7 @@ Result<void> read_body_line(const std::string& file, const syntax::Statement& st
   if (st.keyword.empty()) {  // the module's reference number
     if (b.module.reference || st.fields.size() != 1 || st.fields[0].size() != 1 ||
         !st.fields[0][0].is_number() || st.fields[0][0].number < 0) {
-      return error(file, st, ErrorCode::kBadValue, "a module takes one reference number line");
+      return error(file, st, GsdError::kBadValue, "a module takes one reference number line");
     }
     b.module.reference = static_cast<std::uint32_t>(st.fields[0][0].number);
     return boost::outcome_v2::success();
@@ -80,7 +80,7 @@ Result<void> read_body_line(const std::string& file, const syntax::Statement& st
 Result<void> require_length(const std::string& file, const syntax::Statement& head,
                             const TemplateBuilder& t, std::string_view keyword) {
   if (!t.empty() && !t.length) {
-    return error(file, head, ErrorCode::kMissingKeyword,
+    return error(file, head, GsdError::kMissingKeyword,
                  t.what + " has parameter bytes but no " + std::string(keyword));
   }
   return boost::outcome_v2::success();

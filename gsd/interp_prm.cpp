@@ -42,11 +42,11 @@ Result<std::pair<std::int64_t, std::int64_t>> read_type(const std::string& file,
   }
   if (st.is("BitArea")) {
     if (!st.has_args || st.args.size() != 1 || !st.args[0].is_range()) {
-      return error(file, st, ErrorCode::kBadValue, "BitArea expects (first-last)");
+      return error(file, st, GsdError::kBadValue, "BitArea expects (first-last)");
     }
     const auto& r = st.args[0];
     if (r.number < 0 || r.high > 7 || r.number > r.high) {
-      return error(file, st, ErrorCode::kOutOfRange, "BitArea(" + std::to_string(r.number) + "-" +
+      return error(file, st, GsdError::kOutOfRange, "BitArea(" + std::to_string(r.number) + "-" +
                                                          std::to_string(r.high) + ") must lie within bits 0..7, first <= last");
     }
     p.type = ParamType::kBitArea;
@@ -56,12 +56,12 @@ Result<std::pair<std::int64_t, std::int64_t>> read_type(const std::string& file,
   }
   for (const auto& t : kByteTypes) {
     if (st.is(t.keyword)) {
-      if (st.has_args) return error(file, st, ErrorCode::kBadValue, st.keyword + " takes no (…)");
+      if (st.has_args) return error(file, st, GsdError::kBadValue, st.keyword + " takes no (…)");
       p.type = t.type;
       return std::pair<std::int64_t, std::int64_t>{t.lo, t.hi};
     }
   }
-  return error(file, st, ErrorCode::kBadValue, "unknown parameter type " + st.keyword);
+  return error(file, st, GsdError::kBadValue, "unknown parameter type " + st.keyword);
 }
 
 // `<type> default min-max` or `<type> default a,b,c`.
@@ -69,7 +69,7 @@ Result<void> read_type_line(const std::string& file, const syntax::Statement& st
   RS4SIM_GSD_TRY(const auto limits, read_type(file, st, p));
   if (st.has_equals || st.fields.size() != 2 || st.fields[0].size() != 1 ||
       !st.fields[0][0].is_number()) {
-    return error(file, st, ErrorCode::kBadValue,
+    return error(file, st, GsdError::kBadValue,
                  "type line expects: " + st.keyword + " <default> <min-max | a,b,…>");
   }
   p.default_value = st.fields[0][0].number;
@@ -77,22 +77,22 @@ Result<void> read_type_line(const std::string& file, const syntax::Statement& st
   if (allowed.size() == 1 && allowed[0].is_range()) {
     p.min = allowed[0].number;
     p.max = allowed[0].high;
-    if (p.min > p.max) return error(file, st, ErrorCode::kOutOfRange, "range " + p.range_text() + " is empty");
+    if (p.min > p.max) return error(file, st, GsdError::kOutOfRange, "range " + p.range_text() + " is empty");
   } else {
     for (const auto& v : allowed) {
-      if (!v.is_number()) return error(file, st, ErrorCode::kBadValue, "allowed values must be numbers");
+      if (!v.is_number()) return error(file, st, GsdError::kBadValue, "allowed values must be numbers");
       p.allowed.push_back(v.number);
     }
     p.min = *std::min_element(p.allowed.begin(), p.allowed.end());
     p.max = *std::max_element(p.allowed.begin(), p.allowed.end());
   }
   if (p.min < limits.first || p.max > limits.second) {
-    return error(file, st, ErrorCode::kOutOfRange,
+    return error(file, st, GsdError::kOutOfRange,
                  "allowed values " + p.range_text() + " do not fit " + st.keyword + " (" +
                      std::to_string(limits.first) + ".." + std::to_string(limits.second) + ")");
   }
   if (!p.accepts(p.default_value)) {
-    return error(file, st, ErrorCode::kOutOfRange,
+    return error(file, st, GsdError::kOutOfRange,
                  "default " + std::to_string(p.default_value) + " is not within " + p.range_text());
   }
   return boost::outcome_v2::success();
@@ -106,11 +106,11 @@ Result<ExtParam> interpret_ext_param(const std::string& file, const syntax::Entr
   p.line = head.line;
   if (!head.has_equals || head.fields.size() != 2 || head.fields[0].size() != 1 ||
       !head.fields[0][0].is_number() || head.fields[1].size() != 1 || !head.fields[1][0].is_string()) {
-    return error(file, head, ErrorCode::kBadValue, "ExtUserPrmData expects = <number> \"name\"");
+    return error(file, head, GsdError::kBadValue, "ExtUserPrmData expects = <number> \"name\"");
   }
   const std::int64_t number_value = head.fields[0][0].number;
   if (number_value < 0 || number_value > 65535) {
-    return error(file, head, ErrorCode::kOutOfRange,
+    return error(file, head, GsdError::kOutOfRange,
                  "ExtUserPrmData number " + std::to_string(number_value) + " is out of range 0..65535");
   }
   p.number = static_cast<int>(number_value);
@@ -118,7 +118,7 @@ Result<ExtParam> interpret_ext_param(const std::string& file, const syntax::Entr
   bool typed = false;
   for (const auto& st : *entry.body) {
     if (is_type_line(st)) {
-      if (typed) return error(file, st, ErrorCode::kDuplicate, "second type line in ExtUserPrmData " + std::to_string(p.number));
+      if (typed) return error(file, st, GsdError::kDuplicate, "second type line in ExtUserPrmData " + std::to_string(p.number));
       RS4SIM_GSD_TRYV(read_type_line(file, st, p));
       typed = true;
     } else if (st.is("Prm_Text_Ref")) {
@@ -133,7 +133,7 @@ Result<ExtParam> interpret_ext_param(const std::string& file, const syntax::Entr
     }  // other keywords carry nothing a master needs
   }
   if (!typed) {
-    return error(file, head, ErrorCode::kMissingKeyword,
+    return error(file, head, GsdError::kMissingKeyword,
                  "ExtUserPrmData " + std::to_string(p.number) + " has no type line (Bit, BitArea, Unsigned8, …)");
   }
   return p;
@@ -145,14 +145,14 @@ Result<PrmText> interpret_prm_text(const std::string& file, const syntax::Entry&
   t.number = static_cast<int>(number_value);
   for (const auto& st : *entry.body) {
     if (!st.is("Text")) {
-      return error(file, st, ErrorCode::kBadValue, "PrmText holds only Text(value) = \"…\" lines");
+      return error(file, st, GsdError::kBadValue, "PrmText holds only Text(value) = \"…\" lines");
     }
     if (!st.has_args || st.args.size() != 1 || !st.args[0].is_number()) {
-      return error(file, st, ErrorCode::kBadValue, "Text expects one number in (…)");
+      return error(file, st, GsdError::kBadValue, "Text expects one number in (…)");
     }
     RS4SIM_GSD_TRY(auto text, string_value(file, st));
     if (!t.texts.emplace(st.args[0].number, std::move(text)).second) {
-      return error(file, st, ErrorCode::kDuplicate, "Text(" + std::to_string(st.args[0].number) + ") given twice");
+      return error(file, st, GsdError::kDuplicate, "Text(" + std::to_string(st.args[0].number) + ") given twice");
     }
   }
   return t;

@@ -5,7 +5,7 @@
 
 namespace rs4sim::gsd::detail {
 
-Error error(const std::string& file, const syntax::Statement& st, ErrorCode code,
+Error error(const std::string& file, const syntax::Statement& st, GsdError code,
             std::string message) {
   return Error{code, file, st.line, st.text, std::move(message)};
 }
@@ -20,11 +20,11 @@ Result<std::int64_t> number(const std::string& file, const syntax::Statement& st
                             std::int64_t lo, std::int64_t hi) {
   if (!st.has_equals || st.fields.size() != 1 || st.fields[0].size() != 1 ||
       !st.fields[0][0].is_number()) {
-    return error(file, st, ErrorCode::kBadValue, st.keyword + " expects one number");
+    return error(file, st, GsdError::kBadValue, st.keyword + " expects one number");
   }
   const std::int64_t v = st.fields[0][0].number;
   if (v < lo || v > hi) {
-    return error(file, st, ErrorCode::kOutOfRange,
+    return error(file, st, GsdError::kOutOfRange,
                  st.keyword + " = " + std::to_string(v) + " is out of range " + range(lo, hi));
   }
   return v;
@@ -37,7 +37,7 @@ Result<std::string> string_value(const std::string& file, const syntax::Statemen
     ok = ok && field.size() == 1 && field[0].is_string();
     if (ok) out += field[0].text;
   }
-  if (!ok) return error(file, st, ErrorCode::kBadValue, st.keyword + " expects a \"string\"");
+  if (!ok) return error(file, st, GsdError::kBadValue, st.keyword + " expects a \"string\"");
   return out;
 }
 
@@ -46,11 +46,11 @@ Result<std::vector<std::uint8_t>> byte_list(const std::string& file, const synta
   std::vector<std::uint8_t> bytes;
   for (const auto& v : field) {
     if (!v.is_number()) {
-      return error(file, st, ErrorCode::kBadValue, st.keyword + ": byte value expected, got '" +
+      return error(file, st, GsdError::kBadValue, st.keyword + ": byte value expected, got '" +
                                                        v.text + "'");
     }
     if (v.number < 0 || v.number > 255) {
-      return error(file, st, ErrorCode::kOutOfRange,
+      return error(file, st, GsdError::kOutOfRange,
                    st.keyword + ": byte value " + std::to_string(v.number) + " is out of range 0..255");
     }
     bytes.push_back(static_cast<std::uint8_t>(v.number));
@@ -61,11 +61,11 @@ Result<std::vector<std::uint8_t>> byte_list(const std::string& file, const synta
 Result<std::int64_t> number_arg(const std::string& file, const syntax::Statement& st,
                                 std::int64_t lo, std::int64_t hi) {
   if (!st.has_args || st.args.size() != 1 || !st.args[0].is_number()) {
-    return error(file, st, ErrorCode::kBadValue, st.keyword + " expects one number in (…)");
+    return error(file, st, GsdError::kBadValue, st.keyword + " expects one number in (…)");
   }
   const std::int64_t v = st.args[0].number;
   if (v < lo || v > hi) {
-    return error(file, st, ErrorCode::kOutOfRange, st.keyword + "(" + std::to_string(v) +
+    return error(file, st, GsdError::kOutOfRange, st.keyword + "(" + std::to_string(v) +
                                                        ") is out of range " + range(lo, hi));
   }
   return v;
@@ -74,7 +74,7 @@ Result<std::int64_t> number_arg(const std::string& file, const syntax::Statement
 Result<void> TemplateBuilder::add_const(const std::string& file, const syntax::Statement& st) {
   RS4SIM_GSD_TRY(const auto offset, number_arg(file, st, 0, 243));
   if (!st.has_equals || st.fields.size() != 1) {
-    return error(file, st, ErrorCode::kBadValue, st.keyword + " expects bytes b0,b1,…");
+    return error(file, st, GsdError::kBadValue, st.keyword + " expects bytes b0,b1,…");
   }
   RS4SIM_GSD_TRY(auto bytes, byte_list(file, st, st.fields[0]));
   consts.push_back({static_cast<std::size_t>(offset), std::move(bytes), &st});
@@ -100,7 +100,7 @@ Result<PrmTemplate> TemplateBuilder::finish(const std::string& file,
   for (std::size_t i = 0; i < refs.size(); ++i) {
     const auto it = params.find(refs[i].param);
     if (it == params.end()) {
-      return error(file, *ref_statements[i], ErrorCode::kUnknownReference,
+      return error(file, *ref_statements[i], GsdError::kUnknownReference,
                    what + ": no ExtUserPrmData " + std::to_string(refs[i].param));
     }
     extent = std::max(extent, refs[i].offset + byte_size(it->second.type));
@@ -108,13 +108,13 @@ Result<PrmTemplate> TemplateBuilder::finish(const std::string& file,
   t.length = length.value_or(extent);
   if (max_length && t.length > *max_length) {
     const syntax::Statement* at = length_st ? length_st : (consts.empty() ? ref_statements.front() : consts.front().st);
-    return error(file, *at, ErrorCode::kPrmTooLong,
+    return error(file, *at, GsdError::kPrmTooLong,
                  what + " is " + std::to_string(t.length) + " bytes, more than the maximum " +
                      std::to_string(*max_length));
   }
   for (const auto& c : consts) {
     if (c.offset + c.bytes.size() > t.length) {
-      return error(file, *c.st, ErrorCode::kOutOfRange,
+      return error(file, *c.st, GsdError::kOutOfRange,
                    what + ": constant bytes end at byte " + std::to_string(c.offset + c.bytes.size()) +
                        ", beyond the length " + std::to_string(t.length));
     }
@@ -122,7 +122,7 @@ Result<PrmTemplate> TemplateBuilder::finish(const std::string& file,
   for (std::size_t i = 0; i < refs.size(); ++i) {
     const std::size_t end = refs[i].offset + byte_size(params.at(refs[i].param).type);
     if (end > t.length) {
-      return error(file, *ref_statements[i], ErrorCode::kOutOfRange,
+      return error(file, *ref_statements[i], GsdError::kOutOfRange,
                    what + ": parameter ends at byte " + std::to_string(end) +
                        ", beyond the length " + std::to_string(t.length));
     }

@@ -20,7 +20,7 @@ bool is_word(char c) {
 }
 
 Error error_at(const std::string& file, int line, std::string text, std::string message) {
-  return Error{ErrorCode::kSyntax, file, line, std::move(text), std::move(message)};
+  return Error{GsdError::kSyntax, file, line, std::move(text), std::move(message)};
 }
 
 // Removes a `;` comment (outside strings) and trailing blanks from one physical line.

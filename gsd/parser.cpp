@@ -39,7 +39,7 @@ const BlockKind* closer(const Statement& st) {
 }
 
 Error structure_error(const std::string& file, const Statement& st, std::string message) {
-  return Error{ErrorCode::kBlockStructure, file, st.line, st.text, std::move(message)};
+  return Error{GsdError::kBlockStructure, file, st.line, st.text, std::move(message)};
 }
 
 }  // namespace
@@ -58,12 +58,12 @@ Result<File> parse_syntax(std::string_view text, std::string file_name) {
   RS4SIM_GSD_TRY(auto lines, split_logical_lines(text, file_name));
   File file{file_name, {}};
   if (lines.empty()) {
-    return Error{ErrorCode::kMissingHeader, file_name, 1, "",
+    return Error{GsdError::kMissingHeader, file_name, 1, "",
                  "no keyword line: the file must start with #Profibus_DP"};
   }
   RS4SIM_GSD_TRY(auto header, parse_statement(lines.front(), file_name));
   if (!header.is("#Profibus_DP")) {
-    return Error{ErrorCode::kMissingHeader, file_name, header.line, header.text,
+    return Error{GsdError::kMissingHeader, file_name, header.line, header.text,
                  "the first keyword line must be #Profibus_DP"};
   }
   const BlockKind* open = nullptr;  // the block being read, if any

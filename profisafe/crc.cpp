@@ -1,6 +1,8 @@
 // CRC machinery (profisafe-v1.md §2, §4). See crc.h.
 #include "profisafe/crc.h"
 
+#include "codec/writer.h"
+
 namespace rs4sim::profisafe {
 
 std::uint32_t Crc::update(std::uint32_t reg, std::span<const std::uint8_t> data) const noexcept {
@@ -33,9 +35,8 @@ std::uint16_t crc1(std::span<const std::uint8_t, 8> block8, std::optional<std::u
   std::uint32_t reg = 0;
   if (ipar_crc) {
     // §2: the F_iPar_CRC's big-endian bytes come first (VERIFIED vector 3).
-    const std::array<std::uint8_t, 4> ipar{
-        static_cast<std::uint8_t>(*ipar_crc >> 24), static_cast<std::uint8_t>(*ipar_crc >> 16),
-        static_cast<std::uint8_t>(*ipar_crc >> 8), static_cast<std::uint8_t>(*ipar_crc)};
+    std::array<std::uint8_t, 4> ipar{};
+    codec::Writer(ipar).u32_be(*ipar_crc);
     reg = kCrc16.update(reg, ipar);
   }
   return static_cast<std::uint16_t>(kCrc16.update(reg, block8));

@@ -3,13 +3,16 @@
 // per-PDU check failures, carried as std::error_code with the "rs4sim.profisafe" category.
 // The RS4's F-parameter diagnosis codes (65..72) have their own enum in f_parameters.h.
 
+#include "codec/error_category.h"
+
 #include <cstdint>
+#include <string_view>
 #include <system_error>
 #include <type_traits>
 
 namespace rs4sim::profisafe {
 
-enum class Errc : std::uint8_t {
+enum class ProfisafeError : std::uint8_t {
   kOk = 0,
   // F-parameter block (profisafe-v1.md §1)
   kFParamsWrongSize = 1,        // the block is not exactly 10 bytes
@@ -25,13 +28,14 @@ enum class Errc : std::uint8_t {
   kNotParameterised = 20,       // no valid F-parameters yet
 };
 
-const std::error_category& profisafe_category() noexcept;
-
-inline std::error_code make_error_code(Errc e) noexcept {
-  return {static_cast<int>(e), profisafe_category()};
+[[nodiscard]] std::string_view to_string(ProfisafeError e) noexcept;
+constexpr const char* error_category_name(ProfisafeError) noexcept { return "rs4sim.profisafe"; }
+inline std::error_code make_error_code(ProfisafeError e) noexcept { return codec::make_error_code_of(e); }
+inline const std::error_category& profisafe_category() noexcept {
+  return codec::category_of<ProfisafeError>();
 }
 
 }  // namespace rs4sim::profisafe
 
 template <>
-struct std::is_error_code_enum<rs4sim::profisafe::Errc> : std::true_type {};
+struct std::is_error_code_enum<rs4sim::profisafe::ProfisafeError> : std::true_type {};

@@ -2,6 +2,9 @@
 // rs4-profisafe.md §8). See f_parameters.h.
 #include "profisafe/f_parameters.h"
 
+#include "codec/endian.h"
+#include "codec/reader.h"
+#include "codec/writer.h"
 #include "profisafe/crc.h"
 
 namespace rs4sim::profisafe {
@@ -10,26 +13,20 @@ namespace {
 constexpr std::uint8_t kFlag1Reserved = 0xC0;  // F_Prm_Flag1 b6-7
 constexpr std::uint8_t kFlag2Reserved = 0x07;  // F_Prm_Flag2 b0-2
 
-constexpr std::uint16_t be16(std::span<const std::uint8_t> b, std::size_t at) noexcept {
-  return static_cast<std::uint16_t>((b[at] << 8) | b[at + 1]);
-}
-constexpr void put_be16(std::span<std::uint8_t> b, std::size_t at, std::uint16_t v) noexcept {
-  b[at] = static_cast<std::uint8_t>(v >> 8);
-  b[at + 1] = static_cast<std::uint8_t>(v);
-}
 constexpr bool valid_address(std::uint16_t a) noexcept { return a != 0 && a != 0xFFFF; }
 
 }  // namespace
 
 std::array<std::uint8_t, 8> encode_f_parameters_without_crc(const FParameters& p) noexcept {
   std::array<std::uint8_t, 8> b{};
-  b[0] = static_cast<std::uint8_t>((p.check_seqnr ? 0x01 : 0x00) | (p.check_ipar ? 0x02 : 0x00) |
-                                   ((static_cast<unsigned>(p.sil) & 0x3u) << 2) |
-                                   ((static_cast<unsigned>(p.crc_length) & 0x3u) << 4));
-  b[1] = static_cast<std::uint8_t>(((p.block_id & 0x7u) << 3) | ((p.par_version & 0x3u) << 6));
-  put_be16(b, 2, p.source_add);
-  put_be16(b, 4, p.dest_add);
-  put_be16(b, 6, p.wd_time_ms);
+  codec::Writer w(b);
+  w.u8(static_cast<std::uint8_t>((p.check_seqnr ? 0x01 : 0x00) | (p.check_ipar ? 0x02 : 0x00) |
+                                 ((static_cast<unsigned>(p.sil) & 0x3u) << 2) |
+                                 ((static_cast<unsigned>(p.crc_length) & 0x3u) << 4)));
+  w.u8(static_cast<std::uint8_t>(((p.block_id & 0x7u) << 3) | ((p.par_version & 0x3u) << 6)));
+  w.u16_be(p.source_add);
+  w.u16_be(p.dest_add);
+  w.u16_be(p.wd_time_ms);
   return b;
 }
 
@@ -41,8 +38,9 @@ std::uint16_t crc1(const FParameters& p) noexcept {
 std::array<std::uint8_t, kFParametersSize> encode_f_parameters_raw(const FParameters& p) noexcept {
   std::array<std::uint8_t, kFParametersSize> out{};
   const auto b = encode_f_parameters_without_crc(p);
-  std::copy(b.begin(), b.end(), out.begin());
-  put_be16(out, 8, p.par_crc);
+  codec::Writer w(out);
+  w.bytes(b);
+  w.u16_be(p.par_crc);
   return out;
 }
 
@@ -54,9 +52,9 @@ std::array<std::uint8_t, kFParametersSize> encode_f_parameters(const FParameters
 
 Result<FParameters> parse_f_parameters(std::span<const std::uint8_t> block,
                                        std::optional<std::uint32_t> ipar_crc) {
-  if (block.size() != kFParametersSize) return make_error_code(Errc::kFParamsWrongSize);
+  if (block.size() != kFParametersSize) return make_error_code(ProfisafeError::kFParamsWrongSize);
   if ((block[0] & kFlag1Reserved) != 0 || (block[1] & kFlag2Reserved) != 0) {
-    return make_error_code(Errc::kFParamsReservedBits);
+    return make_error_code(ProfisafeError::kFParamsReservedBits);
   }
   FParameters p;
   p.check_seqnr = (block[0] & 0x01) != 0;
@@ -65,11 +63,12 @@ Result<FParameters> parse_f_parameters(std::span<const std::uint8_t> block,
   p.crc_length = static_cast<CrcLength>((block[0] >> 4) & 0x3);
   p.block_id = static_cast<std::uint8_t>((block[1] >> 3) & 0x7);
   p.par_version = static_cast<std::uint8_t>((block[1] >> 6) & 0x3);
-  if (ipar_crc && p.par_version != 1) return make_error_code(Errc::kFParamsIParCrcNeedsV2);
-  p.source_add = be16(block, 2);
-  p.dest_add = be16(block, 4);
-  p.wd_time_ms = be16(block, 6);
-  p.par_crc = be16(block, 8);
+  if (ipar_crc && p.par_version != 1) return make_error_code(ProfisafeError::kFParamsIParCrcNeedsV2);
+  codec::Reader r(block.subspan(2));
+  p.source_add = r.u16_be();
+  p.dest_add = r.u16_be();
+  p.wd_time_ms = r.u16_be();
+  p.par_crc = r.u16_be();
   p.ipar_crc = ipar_crc;
   return p;
 }
@@ -111,7 +110,7 @@ Validation validate(std::span<const std::uint8_t> block, const DeviceProfile& d)
     Validation v;
     v.diagnosis = FDiagnosis::kWrongBlockIdOrParVersion;
     if (block.size() == kFParametersSize) {
-      v.received_crc1 = be16(block, 8);
+      v.received_crc1 = codec::be16(block[8], block[9]);
       v.computed_crc1 = crc1(block.first<8>());
     }
     return v;

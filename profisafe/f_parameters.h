@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 
 namespace rs4sim::profisafe {
 
@@ -62,7 +63,7 @@ struct FParameters {
 // The 10-byte block carrying p.par_crc as given (for fault injection: wrong CRC1).
 [[nodiscard]] std::array<std::uint8_t, kFParametersSize> encode_f_parameters_raw(const FParameters& p) noexcept;
 
-// Parse the 10-byte block. Errors: Errc::kFParamsWrongSize, Errc::kFParamsReservedBits.
+// Parse the 10-byte block. Errors: ProfisafeError::kFParamsWrongSize, ProfisafeError::kFParamsReservedBits.
 // The F_iPar_CRC is not part of the block; pass it if the configuration has one.
 [[nodiscard]] Result<FParameters> parse_f_parameters(std::span<const std::uint8_t> block,
                                                      std::optional<std::uint32_t> ipar_crc = std::nullopt);
@@ -85,11 +86,16 @@ enum class FDiagnosis : std::uint8_t {
   kWrongCrc1 = 72,                  // 72 = Falsche CRC1 ueber die F-Parameter
 };
 
-const std::error_category& fdiagnosis_category() noexcept;
-inline std::error_code make_error_code(FDiagnosis d) noexcept {
-  return {static_cast<int>(d), fdiagnosis_category()};
-}
 [[nodiscard]] const char* to_string(FDiagnosis d) noexcept;
+// "65 internal F_Dest_Add error" (the category's message).
+[[nodiscard]] std::string error_message(FDiagnosis d);
+constexpr const char* error_category_name(FDiagnosis) noexcept {
+  return "rs4sim.profisafe.fdiagnosis";
+}
+inline std::error_code make_error_code(FDiagnosis d) noexcept { return codec::make_error_code_of(d); }
+inline const std::error_category& fdiagnosis_category() noexcept {
+  return codec::category_of<FDiagnosis>();
+}
 
 // What a device accepts: fixed values and ranges plus its own F_Dest_Add.
 struct DeviceProfile {

@@ -1,6 +1,8 @@
 // Safety PDU build and check (profisafe-v1.md §3, §4). See pdu.h.
 #include "profisafe/pdu.h"
 
+#include "codec/reader.h"
+#include "codec/writer.h"
 #include "profisafe/crc.h"
 
 #include <algorithm>
@@ -50,9 +52,8 @@ std::uint32_t crc2_v2(const PduConfig& c, std::span<const std::uint8_t> data, st
                       std::uint32_t vcn) noexcept {
   const Crc& crc = crc24();
   const std::array<std::uint8_t, 1> s{sc};
-  const std::array<std::uint8_t, 4> vcn_reversed{
-      static_cast<std::uint8_t>(vcn), static_cast<std::uint8_t>(vcn >> 8),
-      static_cast<std::uint8_t>(vcn >> 16), static_cast<std::uint8_t>(vcn >> 24)};
+  std::array<std::uint8_t, 4> vcn_reversed{};
+  codec::Writer(vcn_reversed).u32_le(vcn);
   std::uint32_t reg = crc.update(c.crc1, s);
   reg = crc.update_reversed(reg, data);
   return crc.update(reg, vcn_reversed);
@@ -73,9 +74,9 @@ PduConfig PduConfig::from(const FParameters& p, std::size_t data_size, Crc2Varia
 std::size_t pdu_size(const PduConfig& c) noexcept { return c.data_size + kOverhead; }
 
 std::error_code check_config(const PduConfig& c) noexcept {
-  if (c.data_size == 0 || c.data_size > kMaxDataSize) return make_error_code(Errc::kPduDataTooLong);
+  if (c.data_size == 0 || c.data_size > kMaxDataSize) return make_error_code(ProfisafeError::kPduDataTooLong);
   if (c.version != ProtocolVersion::kV1 && c.version != ProtocolVersion::kV2) {
-    return make_error_code(Errc::kPduUnsupportedCrcLength);
+    return make_error_code(ProfisafeError::kPduUnsupportedCrcLength);
   }
   return {};
 }
@@ -90,35 +91,32 @@ Result<std::size_t> build_pdu(const PduConfig& c, std::span<const std::uint8_t> 
                               std::uint32_t consecutive_number, std::span<std::uint8_t> out) noexcept {
   if (auto ec = check_config(c)) return ec;
   const std::size_t size = pdu_size(c);
-  if (data.size() != c.data_size || out.size() < size) return make_error_code(Errc::kPduWrongSize);
-  std::copy(data.begin(), data.end(), out.begin());
-  std::size_t at = data.size();
-  out[at++] = sc;
-  if (c.version == ProtocolVersion::kV1) out[at++] = static_cast<std::uint8_t>(consecutive_number);
-  const std::uint32_t crc = crc2(c, data, sc, consecutive_number);
-  for (std::size_t i = crc2_size(c.version); i > 0; --i) {
-    out[at++] = static_cast<std::uint8_t>(crc >> (8 * (i - 1)));  // high byte first
-  }
+  if (data.size() != c.data_size || out.size() < size) return make_error_code(ProfisafeError::kPduWrongSize);
+  codec::Writer w(out);
+  w.bytes(data);
+  w.u8(sc);
+  if (c.version == ProtocolVersion::kV1) w.u8(static_cast<std::uint8_t>(consecutive_number));
+  w.uint_be(crc2(c, data, sc, consecutive_number), crc2_size(c.version));
   return size;
 }
 
 PduCheck check_pdu(const PduConfig& c, std::span<const std::uint8_t> pdu, std::uint32_t vcn) noexcept {
   PduCheck r;
   if (check_config(c) || pdu.size() != pdu_size(c)) {
-    r.error = Errc::kPduWrongSize;
+    r.error = ProfisafeError::kPduWrongSize;
     return r;
   }
-  r.data = pdu.first(c.data_size);
-  std::size_t at = c.data_size;
-  r.status_or_control = pdu[at++];
+  codec::Reader in(pdu);
+  r.data = in.bytes(c.data_size);
+  r.status_or_control = in.u8();
   std::uint32_t number = vcn;
   if (c.version == ProtocolVersion::kV1) {
-    r.consecutive_number = pdu[at++];
+    r.consecutive_number = in.u8();
     number = r.consecutive_number;
   }
-  for (std::size_t i = 0; i < crc2_size(c.version); ++i) r.received_crc2 = (r.received_crc2 << 8) | pdu[at++];
+  r.received_crc2 = in.uint_be(crc2_size(c.version));
   r.computed_crc2 = crc2(c, r.data, r.status_or_control, number);
-  if (r.computed_crc2 != r.received_crc2) r.error = Errc::kPduCrc2Mismatch;
+  if (r.computed_crc2 != r.received_crc2) r.error = ProfisafeError::kPduCrc2Mismatch;
   return r;
 }
 

@@ -95,7 +95,7 @@ struct PduConfig {
 
 // Total PDU size (data + status/control + [V1: number] + CRC2).
 [[nodiscard]] std::size_t pdu_size(const PduConfig& c) noexcept;
-// Errc::kPduDataTooLong / kPduUnsupportedCrcLength if the configuration cannot be used.
+// ProfisafeError::kPduDataTooLong / kPduUnsupportedCrcLength if the configuration cannot be used.
 [[nodiscard]] std::error_code check_config(const PduConfig& c) noexcept;
 
 // CRC2 of the given content. `consecutive_number`: V1 the 1-byte number (low 8 bits),
@@ -110,13 +110,13 @@ struct PduConfig {
                                             std::span<std::uint8_t> out) noexcept;
 
 struct PduCheck {
-  Errc error = Errc::kOk;                     // kOk, kPduWrongSize, kPduCrc2Mismatch
+  ProfisafeError error = ProfisafeError::kOk;                     // kOk, kPduWrongSize, kPduCrc2Mismatch
   std::span<const std::uint8_t> data;         // F-data (empty on kPduWrongSize)
   std::uint8_t status_or_control = 0;
   std::uint8_t consecutive_number = 0;        // V1: as received; V2: 0 (not sent)
   std::uint32_t received_crc2 = 0;
   std::uint32_t computed_crc2 = 0;
-  [[nodiscard]] bool ok() const noexcept { return error == Errc::kOk; }
+  [[nodiscard]] bool ok() const noexcept { return error == ProfisafeError::kOk; }
 };
 
 // Check size and CRC2 of a received PDU. V1: CRC2 is computed over the number as received

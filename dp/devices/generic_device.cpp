@@ -5,14 +5,10 @@
 namespace rs4sim::dp::devices {
 
 namespace {
-// DPV1 Error_Code_1 values (class|code), spec/profibus-dp.md §3.3.
-constexpr std::uint8_t kInvalidIndex = 0xB0;
-constexpr std::uint8_t kWriteLengthError = 0xB1;
-constexpr std::uint8_t kStateConflict = 0xB5;
-constexpr std::uint8_t kResourceUnavailable = 0xC3;
+using pdu::ErrorCode1;
 constexpr std::uint8_t kProcessAlarm = 2;  // §3.5 Alarm_Type
 
-dp::slave::AcyclicResult dpv1_error(std::uint8_t code1, std::uint8_t code2 = 0) {
+dp::slave::AcyclicResult dpv1_error(ErrorCode1 code1, std::uint8_t code2 = 0) {
   return dp::slave::AcyclicResult::fail({0x80, code1, code2});
 }
 
@@ -84,27 +80,27 @@ dp::slave::AcyclicResult GenericDevice::on_acyclic(const dp::slave::AcyclicReque
     case dp::slave::AcyclicService::kWrite: return write_record(req);
     case dp::slave::AcyclicService::kDataTransport: break;
   }
-  return dpv1_error(0xA9);  // feature not supported
+  return dpv1_error(ErrorCode1::kFeatureNotSupported);
 }
 
 dp::slave::AcyclicResult GenericDevice::read_record(const dp::slave::AcyclicRequest& req) const {
   const auto it = records_.find(record_key(req.slot, req.index));
-  if (it == records_.end()) return dpv1_error(kInvalidIndex);
+  if (it == records_.end()) return dpv1_error(ErrorCode1::kInvalidIndex);
   const std::size_t n = std::min<std::size_t>(req.length, it->second.size());
   return dp::slave::AcyclicResult::ok(std::span<const std::uint8_t>(it->second).first(n));
 }
 
 dp::slave::AcyclicResult GenericDevice::write_record(const dp::slave::AcyclicRequest& req) {
   if (req.slot == 0 && req.index == kAlarmTriggerIndex) {
-    if (req.data.size() > dp::slave::kMaxAlarmUserData) return dpv1_error(kWriteLengthError);
+    if (req.data.size() > dp::slave::kMaxAlarmUserData) return dpv1_error(ErrorCode1::kWriteLengthError);
     const std::error_code ec = raise_alarm(kProcessAlarm, 0, req.data);
-    if (ec) return dpv1_error(kStateConflict, static_cast<std::uint8_t>(ec.value()));
+    if (ec) return dpv1_error(ErrorCode1::kStateConflict, static_cast<std::uint8_t>(ec.value()));
     return dp::slave::AcyclicResult::ok();
   }
   const std::uint16_t key = record_key(req.slot, req.index);
   auto it = records_.find(key);
   if (it == records_.end()) {
-    if (records_.size() >= kMaxRecords) return dpv1_error(kResourceUnavailable);
+    if (records_.size() >= kMaxRecords) return dpv1_error(ErrorCode1::kResourceUnavailable);
     it = records_.emplace(key, std::vector<std::uint8_t>{}).first;
   }
   it->second.assign(req.data.begin(), req.data.end());

@@ -1,8 +1,11 @@
 #pragma once
 // Typed FDL receive errors (spec/profibus-dp.md §1.2–§1.4, receiver checklist §1.10).
-// Carried as std::error_code with the category fdl::decode_category().
+// Carried as std::error_code with the category "fdl.decode" (codec::ErrorCategory).
+
+#include "codec/error_category.h"
 
 #include <cstdint>
+#include <string_view>
 #include <system_error>
 
 namespace rs4sim::dp::fdl {
@@ -22,8 +25,11 @@ enum class DecodeError : std::uint8_t {
 };
 inline constexpr std::size_t kDecodeErrorKinds = 11;
 
-const std::error_category& decode_category() noexcept;
-std::error_code make_error_code(DecodeError e) noexcept;
+[[nodiscard]] std::string_view to_string(DecodeError e) noexcept;
+constexpr const char* error_category_name(DecodeError) noexcept { return "fdl.decode"; }
+inline std::error_code make_error_code(DecodeError e) noexcept {
+  return codec::make_error_code_of(e);
+}
 
 }  // namespace rs4sim::dp::fdl
 

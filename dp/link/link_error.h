@@ -3,9 +3,12 @@
 // These are configuration/OS errors at the edge; bad wire input is never an error here
 // (it is dropped and counted, see counters.h).
 
+#include "codec/error_category.h"
+
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <system_error>
 
 namespace rs4sim::dp::link {
@@ -21,8 +24,11 @@ enum class LinkError : std::uint8_t {
   kBindFailed,               // UDP bind failed (port in use, …)
 };
 
-const std::error_category& link_category() noexcept;
-std::error_code make_error_code(LinkError e) noexcept;
+[[nodiscard]] std::string_view to_string(LinkError e) noexcept;
+constexpr const char* error_category_name(LinkError) noexcept { return "dp.link"; }
+inline std::error_code make_error_code(LinkError e) noexcept {
+  return codec::make_error_code_of(e);
+}
 
 // Thrown by link constructors: the code plus the context (device path, rate, errno text).
 class LinkException : public std::system_error {

@@ -38,7 +38,7 @@ std::error_code AlarmTracker::on_diag(std::span<const std::uint8_t> ext_diag, bo
   for (;;) {
     auto block = reader.next();
     if (!block) {
-      result = make_error_code(MasterErrc::kInvalidResponse);
+      result = make_error_code(MasterError::kInvalidResponse);
       break;
     }
     if (!block.value()) break;
@@ -47,7 +47,7 @@ std::error_code AlarmTracker::on_diag(std::span<const std::uint8_t> ext_diag, bo
     const pdu::AlarmAck key{alarm->slot, alarm->alarm_type, alarm->specifier_byte()};
     if (present.size() < present.capacity()) present.push_back(key);
     if (known(key)) continue;
-    if (exceeds_mode(key)) result = make_error_code(MasterErrc::kAlarmLimitExceeded);
+    if (exceeds_mode(key)) result = make_error_code(MasterError::kAlarmLimitExceeded);
     if (outstanding_.size() == outstanding_.capacity()) continue;
     outstanding_.push_back(Entry{key, auto_ack, false});
     ++received_;
@@ -94,7 +94,7 @@ void AlarmTracker::on_ack_reply(const Reply& r, std::uint8_t reply_ssap, EventQu
     return;
   }
   if (!r.short_ack && r.status == fdl::ResponseStatus::kSapNotEnabled) {
-    finish_in_flight(make_error_code(MasterErrc::kSapNotEnabled), std::nullopt, events);
+    finish_in_flight(make_error_code(MasterError::kSapNotEnabled), std::nullopt, events);
     return;
   }
   const auto in_flight = std::find_if(outstanding_.begin(), outstanding_.end(),
@@ -111,11 +111,11 @@ void AlarmTracker::on_ack_reply(const Reply& r, std::uint8_t reply_ssap, EventQu
     }
     if (const auto* neg = std::get_if<pdu::Dpv1Error>(&resp.value());
         neg && neg->function == pdu::Dpv1Function::kAlarmAck) {
-      finish_in_flight(make_error_code(MasterErrc::kAlarmAckRejected), *neg, events);
+      finish_in_flight(make_error_code(MasterError::kAlarmAckRejected), *neg, events);
       return;
     }
   }
-  finish_in_flight(make_error_code(MasterErrc::kInvalidResponse), std::nullopt, events);
+  finish_in_flight(make_error_code(MasterError::kInvalidResponse), std::nullopt, events);
 }
 
 std::error_code AlarmTracker::acknowledge(std::uint8_t slot, std::uint8_t alarm_type,
@@ -127,7 +127,7 @@ std::error_code AlarmTracker::acknowledge(std::uint8_t slot, std::uint8_t alarm_
       return {};
     }
   }
-  return make_error_code(MasterErrc::kAlarmNotOutstanding);
+  return make_error_code(MasterError::kAlarmNotOutstanding);
 }
 
 void AlarmTracker::reset() {

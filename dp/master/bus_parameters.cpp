@@ -64,7 +64,7 @@ std::error_code validate(const BusParameters& p) {
                   35 + 2 * p.tset + p.tqui <= p.max_tsdr && p.max_tsdr <= 1023 &&
                   p.min_tsdr >= 11 && p.min_tsdr + 1 <= p.max_tsdr && p.tid1 >= kTsynBits &&
                   p.tid2 >= kTsynBits && p.hsa >= 1 && p.hsa <= 126;
-  return ok ? std::error_code{} : make_error_code(MasterErrc::kBadBusParameters);
+  return ok ? std::error_code{} : make_error_code(MasterError::kBadBusParameters);
 }
 
 }  // namespace rs4sim::dp::master

@@ -56,7 +56,7 @@ struct BusParameters {
 
 // §1.7 constraints: maxTSDR + 15 ≤ TSL ≤ 16383; 35 + 2·TSET + TQUI ≤ maxTSDR ≤ 1023;
 // 11 ≤ minTSDR ≤ maxTSDR − 1; TID1, TID2 ≥ TSYN; baud one of §1.1.
-// Returns a MasterErrc::kBadBusParameters error naming nothing more; the message of the
+// Returns a MasterError::kBadBusParameters error naming nothing more; the message of the
 // category says which rule.
 std::error_code validate(const BusParameters& p);
 

@@ -11,9 +11,9 @@ std::error_code Dpv1Client::submit(Dpv1Job job) {
   const bool write_ok = job.operation == Dpv1Operation::kWrite && !job.data.empty();
   // Index 255 is reserved for the I&M call mechanism but legal on the wire (§3.3).
   if (!(read_ok || write_ok) || job.slot == 255) {
-    return make_error_code(MasterErrc::kBadArgument);
+    return make_error_code(MasterError::kBadArgument);
   }
-  if (queued() >= kQueueLimit) return make_error_code(MasterErrc::kQueueFull);
+  if (queued() >= kQueueLimit) return make_error_code(MasterError::kQueueFull);
   if (job.operation == Dpv1Operation::kWrite) {
     job.length = static_cast<std::uint8_t>(job.data.size());
   }
@@ -71,7 +71,7 @@ void Dpv1Client::on_reply(const Reply& r, EventQueue& events) {
   using S = fdl::ResponseStatus;
   if (r.empty_ack()) return;  // no response yet: poll again (§3.4 step 2)
   if (!r.short_ack && r.status == S::kSapNotEnabled) {
-    finish_with(make_error_code(MasterErrc::kSapNotEnabled), events);
+    finish_with(make_error_code(MasterError::kSapNotEnabled), events);
     return;
   }
   if (!r.short_ack && r.status == S::kNoResource && !r.has_saps) {
@@ -80,14 +80,14 @@ void Dpv1Client::on_reply(const Reply& r, EventQueue& events) {
   }
   if (!r.carries_data() || !r.from_saps(pdu::sap::kMasterMsac1, pdu::sap::kMsacC1)) {
     const bool rejected = !r.short_ack && r.status == S::kUserError;
-    finish_with(make_error_code(rejected ? MasterErrc::kServiceRejected
-                                         : MasterErrc::kInvalidResponse),
+    finish_with(make_error_code(rejected ? MasterError::kServiceRejected
+                                         : MasterError::kInvalidResponse),
                 events);
     return;
   }
   auto resp = pdu::decode_c1_response(r.data);
   if (!resp) {
-    finish_with(make_error_code(MasterErrc::kInvalidResponse), events);
+    finish_with(make_error_code(MasterError::kInvalidResponse), events);
     return;
   }
   on_response(resp.value(), events);
@@ -111,14 +111,14 @@ void Dpv1Client::on_response(const pdu::C1Response& resp, EventQueue& events) {
     out.negative = *neg;
     out.error = to_error_code(*neg);
   } else {
-    out.error = make_error_code(MasterErrc::kInvalidResponse);
+    out.error = make_error_code(MasterError::kInvalidResponse);
   }
   complete(std::move(out), events);
 }
 
 void Dpv1Client::check_timeout(TimePoint now, EventQueue& events) {
   if (active_ && now >= active_->deadline) {
-    finish_with(make_error_code(MasterErrc::kDpv1Timeout), events);
+    finish_with(make_error_code(MasterError::kDpv1Timeout), events);
   }
 }
 

@@ -7,7 +7,7 @@ namespace rs4sim::dp::master {
 
 std::error_code Master::set_outputs(std::uint8_t slave, std::span<const std::uint8_t> outputs) {
   SlaveHandler* s = find(slave);
-  if (s == nullptr) return make_error_code(MasterErrc::kUnknownSlave);
+  if (s == nullptr) return make_error_code(MasterError::kUnknownSlave);
   return s->set_outputs(outputs);
 }
 
@@ -31,8 +31,8 @@ std::vector<std::uint8_t> Master::slave_addresses() const {
 
 std::error_code Master::global_control(const pdu::GlobalControl& gc) {
   static constexpr std::size_t kQueueLimit = 8;
-  if (gc.reserved != 0) return make_error_code(MasterErrc::kBadArgument);  // bits 0, 6, 7
-  if (gc_queue_.size() >= kQueueLimit) return make_error_code(MasterErrc::kQueueFull);
+  if (gc.reserved != 0) return make_error_code(MasterError::kBadArgument);  // bits 0, 6, 7
+  if (gc_queue_.size() >= kQueueLimit) return make_error_code(MasterError::kQueueFull);
   gc_queue_.push_back(gc);
   return {};
 }
@@ -47,7 +47,7 @@ void Master::set_operating_mode(OperatingMode mode) {
 
 boost::outcome_v2::std_result<Dpv1RequestId> Master::submit(std::uint8_t slave, Dpv1Job job) {
   SlaveHandler* s = find(slave);
-  if (s == nullptr) return make_error_code(MasterErrc::kUnknownSlave);
+  if (s == nullptr) return make_error_code(MasterError::kUnknownSlave);
   job.id = next_id_;
   if (auto ec = s->submit(std::move(job))) return ec;
   const Dpv1RequestId id = next_id_;
@@ -70,7 +70,7 @@ boost::outcome_v2::std_result<Dpv1RequestId> Master::write(std::uint8_t slave, s
                                                            std::uint8_t index,
                                                            std::span<const std::uint8_t> data) {
   if (data.empty() || data.size() > pdu::kDpv1MaxData) {
-    return make_error_code(MasterErrc::kBadArgument);
+    return make_error_code(MasterError::kBadArgument);
   }
   Dpv1Job job;
   job.operation = Dpv1Operation::kWrite;
@@ -83,7 +83,7 @@ boost::outcome_v2::std_result<Dpv1RequestId> Master::write(std::uint8_t slave, s
 std::error_code Master::acknowledge_alarm(std::uint8_t slave, std::uint8_t slot,
                                           std::uint8_t alarm_type, std::uint8_t seq_nr) {
   SlaveHandler* s = find(slave);
-  if (s == nullptr) return make_error_code(MasterErrc::kUnknownSlave);
+  if (s == nullptr) return make_error_code(MasterError::kUnknownSlave);
   return s->acknowledge_alarm(slot, alarm_type, seq_nr);
 }
 

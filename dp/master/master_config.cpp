@@ -10,7 +10,7 @@
 namespace rs4sim::dp::master {
 
 std::error_code validate(const SlaveConfig& s) {
-  const auto bad = make_error_code(MasterErrc::kBadSlaveConfig);
+  const auto bad = make_error_code(MasterError::kBadSlaveConfig);
   if (s.address > pdu::sap::kMaxSlaveAddress) return bad;
   fdl::DataUnit prm;
   if (!pdu::encode_set_prm(s.prm, prm)) return bad;
@@ -29,17 +29,17 @@ std::error_code validate(const SlaveConfig& s) {
 }
 
 std::error_code validate(const MasterConfig& m) {
-  if (m.address > 126) return make_error_code(MasterErrc::kBadMasterAddress);
+  if (m.address > 126) return make_error_code(MasterError::kBadMasterAddress);
   if (auto ec = validate(m.bus)) return ec;
   if (m.cycle_target < Duration::zero() || m.ready_timeout <= Duration::zero() ||
       m.global_control_interval < Duration::zero()) {
-    return make_error_code(MasterErrc::kBadSlaveConfig);
+    return make_error_code(MasterError::kBadSlaveConfig);
   }
   std::array<bool, 128> seen{};
   seen[m.address] = true;
   for (const SlaveConfig& s : m.slaves) {
     if (auto ec = validate(s)) return ec;
-    if (seen[s.address]) return make_error_code(MasterErrc::kDuplicateSlave);
+    if (seen[s.address]) return make_error_code(MasterError::kDuplicateSlave);
     seen[s.address] = true;
   }
   return {};

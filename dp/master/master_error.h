@@ -2,14 +2,16 @@
 // Typed errors of the class 1 master (spec/profibus-dp.md §4.2, §4.4, §3.3, §3.5).
 // Carried as std::error_code with the category master::error_category().
 
+#include "codec/error_category.h"
 #include "dp/pdu/dpv1.h"
 
 #include <cstdint>
+#include <string_view>
 #include <system_error>
 
 namespace rs4sim::dp::master {
 
-enum class MasterErrc : std::uint8_t {
+enum class MasterError : std::uint8_t {
   // Per-slave start-up and supervision (§4.2, §4.4).
   kNoAnswer = 1,           // no reply within TSL after max_retry_limit retries
   kNotASlave,              // FDL_Status reply shows a master station type (§1.5)
@@ -45,19 +47,27 @@ enum class MasterErrc : std::uint8_t {
   kDuplicateSlave,
 };
 
-const std::error_category& error_category() noexcept;
-std::error_code make_error_code(MasterErrc e) noexcept;
+[[nodiscard]] std::string_view to_string(MasterError e) noexcept;
+constexpr const char* error_category_name(MasterError) noexcept { return "dp.master"; }
+inline std::error_code make_error_code(MasterError e) noexcept {
+  return codec::make_error_code_of(e);
+}
+inline const std::error_category& error_category() noexcept {
+  return codec::category_of<MasterError>();
+}
 
 // Category whose values are DPV1 Error_Code_1 bytes (§3.3: class in the high nibble,
-// code in the low nibble; constants in pdu::error_code_1). Messages name class and code.
-const std::error_category& dpv1_error_category() noexcept;
+// code in the low nibble; pdu::ErrorCode1). Messages name class and code.
+inline const std::error_category& dpv1_error_category() noexcept {
+  return codec::category_of<pdu::ErrorCode1>();
+}
 
 // The std::error_code of a negative response: Error_Code_1 in dpv1_error_category() when
-// Error_Decode = 0x80 (DPV1) and Error_Code_1 ≠ 0; otherwise MasterErrc::kDpv1Negative.
+// Error_Decode = 0x80 (DPV1) and Error_Code_1 ≠ 0; otherwise MasterError::kDpv1Negative.
 // The complete bytes stay available in the result (pdu::Dpv1Error).
 std::error_code to_error_code(const pdu::Dpv1Error& e) noexcept;
 
 }  // namespace rs4sim::dp::master
 
 template <>
-struct std::is_error_code_enum<rs4sim::dp::master::MasterErrc> : std::true_type {};
+struct std::is_error_code_enum<rs4sim::dp::master::MasterError> : std::true_type {};

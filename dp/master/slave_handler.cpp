@@ -57,7 +57,7 @@ std::optional<Request> SlaveHandler::next_request(SlaveContext& ctx, TimePoint n
     if (turn_.count > 0 && !continue_) return std::nullopt;
     continue_ = false;
     if (state_ == SlaveState::kWaitReady && now - wait_ready_since_ >= ctx.ready_timeout) {
-      restart(ctx, make_error_code(MasterErrc::kStartupTimeout), SlaveState::kReadDiag);
+      restart(ctx, make_error_code(MasterError::kStartupTimeout), SlaveState::kReadDiag);
     }
     r = startup_request(ctx);
   } else {
@@ -147,7 +147,7 @@ void SlaveHandler::on_cycle_start(SlaveContext& ctx, TimePoint now) {
 
 std::error_code SlaveHandler::set_outputs(std::span<const std::uint8_t> outputs) {
   if (outputs.size() != config_.output_length) {
-    return make_error_code(MasterErrc::kOutputLengthMismatch);
+    return make_error_code(MasterError::kOutputLengthMismatch);
   }
   std::copy(outputs.begin(), outputs.end(), outputs_.begin());
   return {};
@@ -159,8 +159,8 @@ std::span<const std::uint8_t> SlaveHandler::inputs() const {
 }
 
 std::error_code SlaveHandler::submit(Dpv1Job job) {
-  if (state_ != SlaveState::kDataExchange) return make_error_code(MasterErrc::kNotInDataExchange);
-  if (!config_.dpv1_enabled()) return make_error_code(MasterErrc::kDpv1NotEnabled);
+  if (state_ != SlaveState::kDataExchange) return make_error_code(MasterError::kNotInDataExchange);
+  if (!config_.dpv1_enabled()) return make_error_code(MasterError::kDpv1NotEnabled);
   return dpv1_.submit(std::move(job));
 }
 

@@ -13,11 +13,11 @@ using S = fdl::ResponseStatus;
 
 // Error for a reply that is neither the expected answer nor a data-less positive ack.
 std::error_code negative_reply(const Reply& r) {
-  if (!r.short_ack && r.status == S::kSapNotEnabled) return make_error_code(MasterErrc::kSapNotEnabled);
+  if (!r.short_ack && r.status == S::kSapNotEnabled) return make_error_code(MasterError::kSapNotEnabled);
   if (!r.short_ack && (r.status == S::kUserError || r.status == S::kNoResource)) {
-    return make_error_code(MasterErrc::kServiceRejected);
+    return make_error_code(MasterError::kServiceRejected);
   }
-  return make_error_code(MasterErrc::kInvalidResponse);
+  return make_error_code(MasterError::kInvalidResponse);
 }
 
 }  // namespace
@@ -37,9 +37,9 @@ void SlaveHandler::on_reply(SlaveContext& ctx, const Reply& r, TimePoint now) {
 void SlaveHandler::on_no_answer(SlaveContext& ctx) {
   // §4.4: mark the slave offline, restart at step 0/1 with a fresh FCB (FCV=0).
   ++counters_.no_answer;
-  const auto no_answer = make_error_code(MasterErrc::kNoAnswer);
+  const auto no_answer = make_error_code(MasterError::kNoAnswer);
   if (last_kind_ == RequestKind::kDpv1) {
-    dpv1_.abort_all(no_answer, make_error_code(MasterErrc::kAborted), ctx.events);
+    dpv1_.abort_all(no_answer, make_error_code(MasterError::kAborted), ctx.events);
   }
   ctx.fcb.responder_lost(config_.address);
   restart(ctx, no_answer, initial_state());
@@ -49,11 +49,11 @@ void SlaveHandler::on_status_reply(SlaveContext& ctx, const Reply& r) {
   // §4.2 step 0: SD1 reply, FC status OK with station type "slave" (`00`).
   if (r.short_ack || r.has_saps || !r.data.empty() || r.status != S::kOk) {
     ++counters_.invalid_responses;
-    fault(ctx, make_error_code(MasterErrc::kInvalidResponse));
+    fault(ctx, make_error_code(MasterError::kInvalidResponse));
     return;
   }
   if (r.station_type != fdl::StationType::kSlave) {
-    fault(ctx, make_error_code(MasterErrc::kNotASlave));
+    fault(ctx, make_error_code(MasterError::kNotASlave));
     return;
   }
   state_ = SlaveState::kReadDiag;
@@ -67,7 +67,7 @@ void SlaveHandler::on_diag_reply(SlaveContext& ctx, const Reply& r) {
                      : pdu::Result<pdu::SlaveDiag>(make_error_code(pdu::PduError::kTooShort));
   if (!diag) {
     ++counters_.invalid_responses;
-    restart(ctx, shaped ? make_error_code(MasterErrc::kInvalidResponse) : negative_reply(r),
+    restart(ctx, shaped ? make_error_code(MasterError::kInvalidResponse) : negative_reply(r),
             SlaveState::kReadDiag);
     return;
   }
@@ -84,11 +84,11 @@ void SlaveHandler::on_diag_reply(SlaveContext& ctx, const Reply& r) {
 void SlaveHandler::on_first_diag(SlaveContext& ctx, const pdu::SlaveDiag& d) {
   // §4.2 step 1: the Ident must match; Master_Add of another master ⇒ Master_Lock.
   if (d.ident_number != config_.prm.ident_number) {
-    fault(ctx, make_error_code(MasterErrc::kIdentMismatch));
+    fault(ctx, make_error_code(MasterError::kIdentMismatch));
     return;
   }
   if (d.master_add != pdu::sap::kNoMasterAddress && d.master_add != ctx.master_address) {
-    fault(ctx, make_error_code(MasterErrc::kMasterLock));
+    fault(ctx, make_error_code(MasterError::kMasterLock));
     return;
   }
   state_ = SlaveState::kSetPrm;
@@ -97,19 +97,19 @@ void SlaveHandler::on_first_diag(SlaveContext& ctx, const pdu::SlaveDiag& d) {
 
 void SlaveHandler::on_ready_diag(SlaveContext& ctx, const pdu::SlaveDiag& d) {
   // §4.2 step 4: faults restart at step 1, Prm_Req at step 2; wait while not ready.
-  const auto err = [](MasterErrc e) { return make_error_code(e); };
+  const auto err = [](MasterError e) { return make_error_code(e); };
   if (d.ident_number != config_.prm.ident_number) {
-    restart(ctx, err(MasterErrc::kIdentMismatch), SlaveState::kReadDiag);
+    restart(ctx, err(MasterError::kIdentMismatch), SlaveState::kReadDiag);
   } else if (d.status1.prm_fault) {
-    restart(ctx, err(MasterErrc::kPrmFault), SlaveState::kReadDiag);
+    restart(ctx, err(MasterError::kPrmFault), SlaveState::kReadDiag);
   } else if (d.status1.cfg_fault) {
-    restart(ctx, err(MasterErrc::kCfgFault), SlaveState::kReadDiag);
+    restart(ctx, err(MasterError::kCfgFault), SlaveState::kReadDiag);
   } else if (d.status1.not_supported) {
-    restart(ctx, err(MasterErrc::kNotSupported), SlaveState::kReadDiag);
+    restart(ctx, err(MasterError::kNotSupported), SlaveState::kReadDiag);
   } else if (d.status2.prm_req) {
     state_ = SlaveState::kSetPrm;
   } else if (d.master_add != ctx.master_address) {
-    restart(ctx, err(MasterErrc::kMasterLock), SlaveState::kReadDiag);
+    restart(ctx, err(MasterError::kMasterLock), SlaveState::kReadDiag);
   } else if (!d.status1.station_not_ready && !d.status2.stat_diag) {
     enter_data_exchange(ctx);
     continue_ = true;  // first Data_Exchange in this turn
@@ -121,18 +121,18 @@ void SlaveHandler::on_cyclic_diag(SlaveContext& ctx, const pdu::SlaveDiag& d) {
     if (auto ec = alarms_.on_diag({d.ext_diag.data(), d.ext_diag.size()}, ctx.auto_alarm_ack, ctx.events)) fault(ctx, ec);
   }
   diag_needed_ = d.status2.stat_diag;  // keep fetching while Stat_Diag (§2.5)
-  const auto err = [](MasterErrc e) { return make_error_code(e); };
+  const auto err = [](MasterError e) { return make_error_code(e); };
   if (d.status1.prm_fault || d.status1.cfg_fault || d.status1.not_supported) {
-    leave_data_exchange(ctx, err(d.status1.prm_fault   ? MasterErrc::kPrmFault
-                                 : d.status1.cfg_fault ? MasterErrc::kCfgFault
-                                                       : MasterErrc::kNotSupported),
+    leave_data_exchange(ctx, err(d.status1.prm_fault   ? MasterError::kPrmFault
+                                 : d.status1.cfg_fault ? MasterError::kCfgFault
+                                                       : MasterError::kNotSupported),
                         SlaveState::kReadDiag);
   } else if (d.status2.prm_req || d.status1.station_not_ready ||
              d.master_add != ctx.master_address) {
     // §4.4: slave reset or watchdog expiry ⇒ re-parameterise; another master ⇒ step 1.
     const bool foreign = d.master_add != ctx.master_address &&
                          d.master_add != pdu::sap::kNoMasterAddress;
-    leave_data_exchange(ctx, err(MasterErrc::kLeftDataExchange),
+    leave_data_exchange(ctx, err(MasterError::kLeftDataExchange),
                         foreign ? SlaveState::kReadDiag : SlaveState::kSetPrm);
   }
 }
@@ -165,7 +165,7 @@ void SlaveHandler::on_dx_reply(SlaveContext& ctx, const Reply& r) {
   if (r.carries_data()) in = r.data;
   if (in.size() != config_.input_length) {
     ++counters_.invalid_responses;
-    leave_data_exchange(ctx, make_error_code(MasterErrc::kInputLengthMismatch),
+    leave_data_exchange(ctx, make_error_code(MasterError::kInputLengthMismatch),
                         SlaveState::kReadDiag);
     return;
   }
@@ -214,7 +214,7 @@ void SlaveHandler::leave_data_exchange(SlaveContext& ctx, std::error_code reason
   state_ = next;
   continue_ = false;
   diag_needed_ = false;
-  dpv1_.abort_all(make_error_code(MasterErrc::kAborted), make_error_code(MasterErrc::kAborted),
+  dpv1_.abort_all(make_error_code(MasterError::kAborted), make_error_code(MasterError::kAborted),
                   ctx.events);
   alarms_.reset();
   ctx.events.push(SlaveLeftDataExchange{config_.address, reason});

@@ -21,6 +21,12 @@ bool known_function(std::uint8_t code) {
   return false;
 }
 
+Result<void> check_du(std::span<const std::uint8_t> du) {
+  if (du.empty()) return PduError::kTooShort;
+  if (du.size() > wire::kMaxDpDu) return PduError::kTooLong;
+  return boost::outcome_v2::success();
+}
+
 Result<void> exact_size(std::span<const std::uint8_t> du, std::size_t n) {
   if (du.size() < n) return PduError::kTooShort;
   if (du.size() > n) return PduError::kLengthMismatch;
@@ -62,7 +68,12 @@ Result<Dpv1Error> decode_negative(std::span<const std::uint8_t> du) {
   BOOST_OUTCOME_TRY(exact_size(du, 4));
   const auto code = static_cast<std::uint8_t>(du[0] & ~kDpv1ErrorBit);
   if (!known_function(code)) return PduError::kBadFunctionCode;
-  return Dpv1Error{static_cast<Dpv1Function>(code), du[1], du[2], du[3]};
+  return Dpv1Error{static_cast<Dpv1Function>(code), du[1], error_code_1_from_wire(du[2]), du[3]};
+}
+
+Result<AlarmAck> decode_alarm_ack(std::span<const std::uint8_t> du) {
+  BOOST_OUTCOME_TRY(exact_size(du, 4));
+  return AlarmAck{du[1], du[2], du[3]};
 }
 
 Result<void> encode_data_pdu(Dpv1Function f, std::uint8_t slot, std::uint8_t index,
@@ -78,45 +89,22 @@ Result<void> encode_data_pdu(Dpv1Function f, std::uint8_t slot, std::uint8_t ind
 using namespace internal;
 
 Result<C1Request> decode_c1_request(std::span<const std::uint8_t> du) {
-  if (du.empty()) return PduError::kTooShort;
-  if (du.size() > wire::kMaxDpDu) return PduError::kTooLong;
+  BOOST_OUTCOME_TRY(check_du(du));
   switch (du[0]) {
-    case fn(Dpv1Function::kRead): {
-      BOOST_OUTCOME_TRY(r, decode_read_request(du));
-      return C1Request{r};
-    }
-    case fn(Dpv1Function::kWrite): {
-      BOOST_OUTCOME_TRY(w, decode_write_request(du));
-      return C1Request{std::move(w)};
-    }
-    case fn(Dpv1Function::kAlarmAck): {
-      BOOST_OUTCOME_TRY(exact_size(du, 4));
-      return C1Request{AlarmAck{du[1], du[2], du[3]}};
-    }
+    case fn(Dpv1Function::kRead): return as<C1Request>(decode_read_request(du));
+    case fn(Dpv1Function::kWrite): return as<C1Request>(decode_write_request(du));
+    case fn(Dpv1Function::kAlarmAck): return as<C1Request>(decode_alarm_ack(du));
     default: return PduError::kBadFunctionCode;
   }
 }
 
 Result<C1Response> decode_c1_response(std::span<const std::uint8_t> du) {
-  if (du.empty()) return PduError::kTooShort;
-  if (du.size() > wire::kMaxDpDu) return PduError::kTooLong;
-  if ((du[0] & kDpv1ErrorBit) != 0) {
-    BOOST_OUTCOME_TRY(e, decode_negative(du));
-    return C1Response{e};
-  }
+  BOOST_OUTCOME_TRY(check_du(du));
+  if ((du[0] & kDpv1ErrorBit) != 0) return as<C1Response>(decode_negative(du));
   switch (du[0]) {
-    case fn(Dpv1Function::kRead): {
-      BOOST_OUTCOME_TRY(r, decode_read_response(du));
-      return C1Response{std::move(r)};
-    }
-    case fn(Dpv1Function::kWrite): {
-      BOOST_OUTCOME_TRY(w, decode_write_response(du));
-      return C1Response{w};
-    }
-    case fn(Dpv1Function::kAlarmAck): {
-      BOOST_OUTCOME_TRY(exact_size(du, 4));
-      return C1Response{AlarmAck{du[1], du[2], du[3]}};
-    }
+    case fn(Dpv1Function::kRead): return as<C1Response>(decode_read_response(du));
+    case fn(Dpv1Function::kWrite): return as<C1Response>(decode_write_response(du));
+    case fn(Dpv1Function::kAlarmAck): return as<C1Response>(decode_alarm_ack(du));
     default: return PduError::kBadFunctionCode;
   }
 }
@@ -155,7 +143,7 @@ Result<void> encode(const AlarmAck& a, fdl::DataUnit& out) {
 Result<void> encode(const Dpv1Error& e, fdl::DataUnit& out) {
   if (!known_function(static_cast<std::uint8_t>(e.function))) return PduError::kBadFunctionCode;
   return wire::append(out, {static_cast<std::uint8_t>(static_cast<std::uint8_t>(e.function) | kDpv1ErrorBit),
-                            e.error_decode, e.error_code_1, e.error_code_2});
+                            e.error_decode, to_wire(e.error_code_1), e.error_code_2});
 }
 
 }  // namespace rs4sim::dp::pdu

@@ -8,6 +8,7 @@
 //   Neg.res     (Fn|0x80) Error_Decode Error_Code_1 Error_Code_2
 
 #include "dp/fdl/telegram.h"
+#include "dp/pdu/error_code_1.h"
 #include "dp/pdu/errors.h"
 
 #include <boost/container/static_vector.hpp>
@@ -41,28 +42,7 @@ inline constexpr std::uint8_t kFms = 0xFE;
 inline constexpr std::uint8_t kHart = 0xFF;
 }  // namespace error_decode
 
-// Error_Code_1 = class (high nibble) | code (low nibble) (§3.3).
-namespace error_code_1 {
-inline constexpr std::uint8_t kReadError = 0xA0;
-inline constexpr std::uint8_t kWriteError = 0xA1;
-inline constexpr std::uint8_t kModuleFailure = 0xA2;
-inline constexpr std::uint8_t kVersionConflict = 0xA8;
-inline constexpr std::uint8_t kFeatureNotSupported = 0xA9;
-inline constexpr std::uint8_t kInvalidIndex = 0xB0;
-inline constexpr std::uint8_t kWriteLengthError = 0xB1;
-inline constexpr std::uint8_t kInvalidSlot = 0xB2;
-inline constexpr std::uint8_t kTypeConflict = 0xB3;
-inline constexpr std::uint8_t kInvalidArea = 0xB4;
-inline constexpr std::uint8_t kStateConflict = 0xB5;
-inline constexpr std::uint8_t kAccessDenied = 0xB6;
-inline constexpr std::uint8_t kInvalidRange = 0xB7;
-inline constexpr std::uint8_t kInvalidParameter = 0xB8;
-inline constexpr std::uint8_t kInvalidType = 0xB9;
-inline constexpr std::uint8_t kReadConstraintConflict = 0xC0;
-inline constexpr std::uint8_t kWriteConstraintConflict = 0xC1;
-inline constexpr std::uint8_t kResourceBusy = 0xC2;
-inline constexpr std::uint8_t kResourceUnavailable = 0xC3;
-}  // namespace error_code_1
+// Error_Code_1: ErrorCode1 in error_code_1.h.
 
 using Dpv1Data = boost::container::static_vector<std::uint8_t, kDpv1MaxData>;
 
@@ -102,7 +82,7 @@ struct AlarmAck {
 struct Dpv1Error {
   Dpv1Function function = Dpv1Function::kRead;  // the failed service (wire: | 0x80)
   std::uint8_t error_decode = error_decode::kDpv1;
-  std::uint8_t error_code_1 = 0;
+  ErrorCode1 error_code_1 = ErrorCode1::kNone;
   std::uint8_t error_code_2 = 0;
   friend bool operator==(const Dpv1Error&, const Dpv1Error&) = default;
 };
@@ -129,7 +109,7 @@ Result<void> encode(const Dpv1Error& e, fdl::DataUnit& out);
 
 // The negative response the slave sends for a malformed Read/Write (§3.3 [VPC3-C1]).
 constexpr Dpv1Error type_conflict(Dpv1Function f) {
-  return Dpv1Error{f, error_decode::kDpv1, error_code_1::kTypeConflict, 0};
+  return Dpv1Error{f, error_decode::kDpv1, ErrorCode1::kTypeConflict, 0};
 }
 
 // What a slave answers to a C1 request that decode_c1_request() rejected (§3.3): a Read or

@@ -25,10 +25,10 @@ Result<void> decode_addresses(std::span<const std::uint8_t> du, std::size_t head
 Result<InitiateRequest> decode_initiate_request(std::span<const std::uint8_t> du) {
   if (du.size() < kInitiateReqHead) return PduError::kTooShort;
   InitiateRequest r;
-  r.send_timeout = wire::be16(du[4], du[5]);
+  r.send_timeout = codec::be16(du[4], du[5]);
   r.features_supported = {du[6], du[7]};
   r.profile_features_supported = {du[8], du[9]};
-  r.profile_ident_number = wire::be16(du[10], du[11]);
+  r.profile_ident_number = codec::be16(du[10], du[11]);
   r.s_type = du[12];
   r.d_type = du[14];
   BOOST_OUTCOME_TRY(decode_addresses(du, kInitiateReqHead, r.s_addr, r.d_addr));
@@ -41,7 +41,7 @@ Result<InitiateResponse> decode_initiate_response(std::span<const std::uint8_t> 
   r.max_len_data_unit = du[1];
   r.features_supported = {du[2], du[3]};
   r.profile_features_supported = {du[4], du[5]};
-  r.profile_ident_number = wire::be16(du[6], du[7]);
+  r.profile_ident_number = codec::be16(du[6], du[7]);
   r.s_type = du[8];
   r.d_type = du[10];
   BOOST_OUTCOME_TRY(decode_addresses(du, kInitiateResHead, r.s_addr, r.d_addr));
@@ -84,81 +84,50 @@ Result<ResourceManagerResponse> decode_rm_response(std::span<const std::uint8_t>
   BOOST_OUTCOME_TRY(exact_size(du, 4));
   if (du[0] != static_cast<std::uint8_t>(Dpv1Function::kResourceManager)) return PduError::kBadFunctionCode;
   if (du[1] > sap::kMsacC2Max) return PduError::kValueOutOfRange;
-  return ResourceManagerResponse{du[1], wire::be16(du[2], du[3])};
+  return ResourceManagerResponse{du[1], codec::be16(du[2], du[3])};
 }
 
-Result<C2Request> decode_c2_request(std::span<const std::uint8_t> du) {
-  if (du.empty()) return PduError::kTooShort;
-  if (du.size() > wire::kMaxDpDu) return PduError::kTooLong;  // found by fuzz_pdu_dpv1_c2
+namespace {
+
+// The C2 services of one direction: Initiate, Read and Write differ between request and
+// response, Abort, Data_Transport and Idle are the same (§3.7).
+template <class Out, class Initiate, class Read, class Write>
+Result<Out> decode_c2(std::span<const std::uint8_t> du,
+                      Result<Initiate> (*initiate)(std::span<const std::uint8_t>),
+                      Result<Read> (*read)(std::span<const std::uint8_t>),
+                      Result<Write> (*write)(std::span<const std::uint8_t>)) {
+  BOOST_OUTCOME_TRY(check_du(du));
   switch (du[0]) {
-    case fn(Dpv1Function::kInitiate): {
-      BOOST_OUTCOME_TRY(r, decode_initiate_request(du));
-      return C2Request{std::move(r)};
-    }
-    case fn(Dpv1Function::kAbort): {
-      BOOST_OUTCOME_TRY(a, decode_abort(du));
-      return C2Request{a};
-    }
-    case fn(Dpv1Function::kRead): {
-      BOOST_OUTCOME_TRY(r, decode_read_request(du));
-      return C2Request{r};
-    }
-    case fn(Dpv1Function::kWrite): {
-      BOOST_OUTCOME_TRY(w, decode_write_request(du));
-      return C2Request{std::move(w)};
-    }
-    case fn(Dpv1Function::kDataTransport): {
-      BOOST_OUTCOME_TRY(t, decode_transport(du));
-      return C2Request{std::move(t)};
-    }
-    case fn(Dpv1Function::kIdle): {
-      BOOST_OUTCOME_TRY(i, decode_idle(du));
-      return C2Request{i};
-    }
+    case fn(Dpv1Function::kInitiate): return as<Out>(initiate(du));
+    case fn(Dpv1Function::kAbort): return as<Out>(decode_abort(du));
+    case fn(Dpv1Function::kRead): return as<Out>(read(du));
+    case fn(Dpv1Function::kWrite): return as<Out>(write(du));
+    case fn(Dpv1Function::kDataTransport): return as<Out>(decode_transport(du));
+    case fn(Dpv1Function::kIdle): return as<Out>(decode_idle(du));
     default: return PduError::kBadFunctionCode;
   }
+}
+
+}  // namespace
+
+Result<C2Request> decode_c2_request(std::span<const std::uint8_t> du) {
+  return decode_c2<C2Request>(du, decode_initiate_request, decode_read_request,
+                              decode_write_request);
 }
 
 Result<C2Response> decode_c2_response(std::span<const std::uint8_t> du) {
-  if (du.empty()) return PduError::kTooShort;
-  if (du.size() > wire::kMaxDpDu) return PduError::kTooLong;
-  if ((du[0] & kDpv1ErrorBit) != 0) {
-    BOOST_OUTCOME_TRY(e, decode_negative(du));
-    return C2Response{e};
+  if (!du.empty() && (du[0] & kDpv1ErrorBit) != 0) {
+    BOOST_OUTCOME_TRY(check_du(du));
+    return as<C2Response>(decode_negative(du));
   }
-  switch (du[0]) {
-    case fn(Dpv1Function::kInitiate): {
-      BOOST_OUTCOME_TRY(r, decode_initiate_response(du));
-      return C2Response{std::move(r)};
-    }
-    case fn(Dpv1Function::kAbort): {
-      BOOST_OUTCOME_TRY(a, decode_abort(du));
-      return C2Response{a};
-    }
-    case fn(Dpv1Function::kRead): {
-      BOOST_OUTCOME_TRY(r, decode_read_response(du));
-      return C2Response{std::move(r)};
-    }
-    case fn(Dpv1Function::kWrite): {
-      BOOST_OUTCOME_TRY(w, decode_write_response(du));
-      return C2Response{w};
-    }
-    case fn(Dpv1Function::kDataTransport): {
-      BOOST_OUTCOME_TRY(t, decode_transport(du));
-      return C2Response{std::move(t)};
-    }
-    case fn(Dpv1Function::kIdle): {
-      BOOST_OUTCOME_TRY(i, decode_idle(du));
-      return C2Response{i};
-    }
-    default: return PduError::kBadFunctionCode;
-  }
+  return decode_c2<C2Response>(du, decode_initiate_response, decode_read_response,
+                               decode_write_response);
 }
 
 Result<void> encode(const ResourceManagerResponse& r, fdl::DataUnit& out) {
   if (r.sap > sap::kMsacC2Max) return PduError::kValueOutOfRange;
   return wire::append(out, {static_cast<std::uint8_t>(Dpv1Function::kResourceManager), r.sap,
-                            wire::hi(r.send_timeout), wire::lo(r.send_timeout)});
+                            codec::high_byte(r.send_timeout), codec::low_byte(r.send_timeout)});
 }
 
 Result<void> encode(const InitiateRequest& r, fdl::DataUnit& out) {
@@ -166,10 +135,10 @@ Result<void> encode(const InitiateRequest& r, fdl::DataUnit& out) {
     return PduError::kTooLong;
   }
   (void)wire::append(out, {static_cast<std::uint8_t>(Dpv1Function::kInitiate), 0, 0, 0,
-                           wire::hi(r.send_timeout), wire::lo(r.send_timeout), r.features_supported[0],
+                           codec::high_byte(r.send_timeout), codec::low_byte(r.send_timeout), r.features_supported[0],
                            r.features_supported[1], r.profile_features_supported[0],
-                           r.profile_features_supported[1], wire::hi(r.profile_ident_number),
-                           wire::lo(r.profile_ident_number)});
+                           r.profile_features_supported[1], codec::high_byte(r.profile_ident_number),
+                           codec::low_byte(r.profile_ident_number)});
   return encode_addresses(r.s_type, r.s_addr, r.d_type, r.d_addr, 4, out);
 }
 
@@ -180,7 +149,7 @@ Result<void> encode(const InitiateResponse& r, fdl::DataUnit& out) {
   (void)wire::append(out, {static_cast<std::uint8_t>(Dpv1Function::kInitiate), r.max_len_data_unit,
                            r.features_supported[0], r.features_supported[1],
                            r.profile_features_supported[0], r.profile_features_supported[1],
-                           wire::hi(r.profile_ident_number), wire::lo(r.profile_ident_number)});
+                           codec::high_byte(r.profile_ident_number), codec::low_byte(r.profile_ident_number)});
   return encode_addresses(r.s_type, r.s_addr, r.d_type, r.d_addr, 4, out);
 }
 

@@ -1,12 +1,15 @@
 #pragma once
 // Typed decode/encode errors of the DP and DPV1 service PDUs (spec/profibus-dp.md §2, §3).
-// Carried as std::error_code with the category pdu::pdu_category(); decoders return
+// Carried as std::error_code with the category "dp.pdu"; decoders return
 // pdu::Result<T> = boost::outcome_v2::std_result<T>.
+
+#include "codec/error_category.h"
 
 #include <boost/outcome/std_result.hpp>
 #include <boost/outcome/try.hpp>
 
 #include <cstdint>
+#include <string_view>
 #include <system_error>
 
 namespace rs4sim::dp::pdu {
@@ -24,8 +27,9 @@ enum class PduError : std::uint8_t {
   kBadPrmBlock,           // structured parameter block length malformed (§3.2)
 };
 
-const std::error_category& pdu_category() noexcept;
-std::error_code make_error_code(PduError e) noexcept;
+[[nodiscard]] std::string_view to_string(PduError e) noexcept;
+constexpr const char* error_category_name(PduError) noexcept { return "dp.pdu"; }
+inline std::error_code make_error_code(PduError e) noexcept { return codec::make_error_code_of(e); }
 
 template <class T>
 using Result = boost::outcome_v2::std_result<T>;

@@ -21,29 +21,46 @@ bool valid_status_type(std::uint8_t t) {
   return (t >= 1 && t <= 3) || (t >= status_type::kPrmCmdAck && t <= 126);
 }
 
-Result<ExtDiagBlock> decode_dpv1_block(std::span<const std::uint8_t> block) {
-  if (block.size() < kDpv1BlockHead) return PduError::kBadAlarm;
-  const std::uint8_t type = block[1] & 0x7FU;
-  const std::uint8_t spec = block[3];
-  if ((block[1] & kStatusBit) != 0) {
+// The bytes after the header byte: type, slot, specifier, data (§3.5/§3.6).
+Result<ExtDiagBlock> decode_dpv1_block(std::span<const std::uint8_t> body) {
+  codec::Reader r(body);
+  const std::uint8_t type_byte = r.u8();
+  const std::uint8_t slot = r.u8();
+  const std::uint8_t spec = r.u8();
+  if (!r.ok()) return PduError::kBadAlarm;
+  const std::uint8_t type = type_byte & 0x7FU;
+  if ((type_byte & kStatusBit) != 0) {
     if (!valid_status_type(type)) return PduError::kBadAlarm;
-    StatusPdu s;
-    s.status_type = type;
-    s.slot = block[2];
-    s.specifier = static_cast<StatusSpecifier>(spec & 0x03U);
-    s.specifier_reserved = static_cast<std::uint8_t>(spec & 0xFCU);
-    s.data = block.subspan(kDpv1BlockHead);
-    return ExtDiagBlock{s};
+    return ExtDiagBlock{StatusPdu{type, slot, static_cast<StatusSpecifier>(spec & 0x03U),
+                                  static_cast<std::uint8_t>(spec & 0xFCU), r.rest()}};
   }
   if (!valid_alarm_type(type)) return PduError::kBadAlarm;
-  AlarmPdu a;
-  a.alarm_type = type;
-  a.slot = block[2];
-  a.seq_nr = static_cast<std::uint8_t>(spec >> 3);
-  a.add_ack = wire::bit(spec, 2);
-  a.specifier = static_cast<AlarmSpecifier>(spec & 0x03U);
-  a.data = block.subspan(kDpv1BlockHead);
-  return ExtDiagBlock{a};
+  return ExtDiagBlock{AlarmPdu{type, slot, static_cast<std::uint8_t>(spec >> 3),
+                               wire::bit(spec, 2), static_cast<AlarmSpecifier>(spec & 0x03U),
+                               r.rest()}};
+}
+
+// The block after its header byte h (kind in bits 7..6).
+Result<ExtDiagBlock> decode_block(std::uint8_t h, bool dpv1, codec::Reader& in) {
+  const unsigned kind = h >> 6U;
+  if (kind == 2) {  // channel-related: fixed 3 bytes
+    const std::uint8_t b1 = in.u8();
+    const std::uint8_t b2 = in.u8();
+    if (!in.ok()) return PduError::kBadDiagBlock;
+    return ExtDiagBlock{ChannelDiag{static_cast<std::uint8_t>(h & 0x3FU),
+                                    static_cast<ChannelDirection>(b1 >> 6),
+                                    static_cast<std::uint8_t>(b1 & 0x3FU),
+                                    static_cast<std::uint8_t>(b2 >> 5),
+                                    static_cast<std::uint8_t>(b2 & 0x1FU)}};
+  }
+  if (kind == 3) return ExtDiagBlock{RevisionBlock{h}};  // revision / reserved: one byte
+  const std::size_t len = h & 0x3FU;
+  if (len < 2) return PduError::kBadDiagBlock;
+  const auto body = in.bytes(len - 1);
+  if (!in.ok()) return PduError::kBadDiagBlock;
+  if (kind == 1) return ExtDiagBlock{IdentifierDiag{body}};
+  if (dpv1) return decode_dpv1_block(body);
+  return ExtDiagBlock{DeviceDiag{body}};
 }
 
 Result<void> append_block(std::uint8_t kind_bits, std::span<const std::uint8_t> head,
@@ -69,41 +86,13 @@ std::uint8_t AlarmPdu::specifier_byte() const {
 }
 
 Result<std::optional<ExtDiagBlock>> ExtDiagReader::next() {
-  if (rest_.empty()) return std::optional<ExtDiagBlock>{};
-  const std::uint8_t h = rest_[0];
-  const unsigned kind = h >> 6;
-  std::size_t len = 0;
-  Result<ExtDiagBlock> block{PduError::kBadDiagBlock};
-  if (kind == 2) {  // channel-related: fixed 3 bytes
-    len = 3;
-    if (rest_.size() >= len) {
-      block = ExtDiagBlock{ChannelDiag{static_cast<std::uint8_t>(h & 0x3FU),
-                                       static_cast<ChannelDirection>(rest_[1] >> 6),
-                                       static_cast<std::uint8_t>(rest_[1] & 0x3FU),
-                                       static_cast<std::uint8_t>(rest_[2] >> 5),
-                                       static_cast<std::uint8_t>(rest_[2] & 0x1FU)}};
-    }
-  } else if (kind == 3) {  // revision / reserved: one byte
-    len = 1;
-    block = ExtDiagBlock{RevisionBlock{h}};
-  } else {
-    len = h & 0x3FU;
-    if (len >= 2 && len <= rest_.size()) {
-      const auto body = rest_.first(len);
-      if (kind == 1) {
-        block = ExtDiagBlock{IdentifierDiag{body.subspan(1)}};
-      } else if (dpv1_) {
-        block = decode_dpv1_block(body);
-      } else {
-        block = ExtDiagBlock{DeviceDiag{body.subspan(1)}};
-      }
-    }
-  }
+  if (in_.at_end()) return std::optional<ExtDiagBlock>{};
+  const std::uint8_t h = in_.u8();
+  auto block = decode_block(h, dpv1_, in_);
   if (!block) {
-    rest_ = {};
+    in_.fail();
     return block.error();
   }
-  rest_ = rest_.subspan(len);
   return std::optional<ExtDiagBlock>{block.value()};
 }
 

@@ -5,6 +5,7 @@
 // Header byte bits 7..6: 00 device-related, 01 identifier-related, 10 channel-related
 // (fixed 3 bytes), 11 revision/reserved. Bits 5..0: block length incl. header (00/01).
 
+#include "codec/reader.h"
 #include "dp/fdl/telegram.h"
 #include "dp/pdu/errors.h"
 
@@ -99,13 +100,13 @@ using ExtDiagBlock =
 // the input bytes). With `dpv1` the device-related blocks are read as alarm/status PDUs.
 class ExtDiagReader {
  public:
-  ExtDiagReader(std::span<const std::uint8_t> ext_diag, bool dpv1) : rest_(ext_diag), dpv1_(dpv1) {}
+  ExtDiagReader(std::span<const std::uint8_t> ext_diag, bool dpv1) : in_(ext_diag), dpv1_(dpv1) {}
   // nullopt at the end. Errors: kBadDiagBlock (length 0/1 or beyond the data),
   // kBadAlarm (DPV1 block shorter than 4 bytes). After an error the reader is at its end.
   Result<std::optional<ExtDiagBlock>> next();
 
  private:
-  std::span<const std::uint8_t> rest_;
+  codec::Reader in_;
   bool dpv1_;
 };
 

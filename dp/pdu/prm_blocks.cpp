@@ -6,15 +6,16 @@
 namespace rs4sim::dp::pdu {
 
 Result<std::optional<PrmBlock>> PrmBlockReader::next() {
-  if (rest_.empty()) return std::optional<PrmBlock>{};
-  const std::size_t len = rest_[0];
-  if (len < kPrmBlockHead || len > rest_.size()) {
-    rest_ = {};
+  if (in_.at_end()) return std::optional<PrmBlock>{};
+  codec::Reader peek = in_;
+  const std::size_t len = peek.u8();  // Structure_Length, incl. itself
+  const auto raw = in_.bytes(len);
+  if (len < kPrmBlockHead || !in_.ok()) {
+    in_.fail();
     return PduError::kBadPrmBlock;
   }
-  const auto raw = rest_.first(len);
-  rest_ = rest_.subspan(len);
-  return std::optional<PrmBlock>{PrmBlock{raw[1], raw[2], raw[3], raw.subspan(kPrmBlockHead), raw}};
+  codec::Reader head(raw.subspan(1));
+  return std::optional<PrmBlock>{PrmBlock{head.u8(), head.u8(), head.u8(), head.rest(), raw}};
 }
 
 Result<void> encode_prm_block(std::uint8_t type, std::uint8_t slot, std::uint8_t index,

@@ -4,6 +4,7 @@
 //   [Structure_Length (incl. itself)] [Structure_Type] [Slot] [Index/Specifier] [data…]
 // PROFIsafe F-parameter blocks use the same shape with type 0x05 (§5.6, inferred).
 
+#include "codec/reader.h"
 #include "dp/fdl/telegram.h"
 #include "dp/pdu/errors.h"
 
@@ -37,13 +38,13 @@ struct PrmBlock {
 // Reads the blocks one by one (no allocation; blocks refer to the input bytes).
 class PrmBlockReader {
  public:
-  explicit PrmBlockReader(std::span<const std::uint8_t> user_prm_data) : rest_(user_prm_data) {}
+  explicit PrmBlockReader(std::span<const std::uint8_t> user_prm_data) : in_(user_prm_data) {}
   // nullopt at the end. Errors: kBadPrmBlock (Structure_Length < 4 or beyond the data);
   // after an error the reader is at its end.
   Result<std::optional<PrmBlock>> next();
 
  private:
-  std::span<const std::uint8_t> rest_;
+  codec::Reader in_;
 };
 
 // Appends one block (Errors: kValueOutOfRange if it exceeds 255 bytes, kTooLong if the DU

@@ -80,7 +80,7 @@ Result<SetPrm> decode_set_prm(std::span<const std::uint8_t> du, PrmLayout layout
   p.wd_fact_1 = du[1];
   p.wd_fact_2 = du[2];
   p.min_tsdr = du[3];
-  p.ident_number = wire::be16(du[4], du[5]);
+  p.ident_number = codec::be16(du[4], du[5]);
   p.group_ident = du[6];
   std::size_t user = kSetPrmFixedLength;
   if (layout == PrmLayout::kDpv1 && du.size() >= kSetPrmDpv1Length) {
@@ -95,7 +95,7 @@ Result<void> encode_set_prm(const SetPrm& prm, fdl::DataUnit& out) {
   const std::size_t size = kSetPrmFixedLength + (prm.dpv1 ? 3U : 0U) + prm.user_data.size();
   if (out.size() + size > wire::kMaxDpDu) return PduError::kTooLong;
   (void)wire::append(out, {prm.station_status.to_byte(), prm.wd_fact_1, prm.wd_fact_2, prm.min_tsdr,
-                           wire::hi(prm.ident_number), wire::lo(prm.ident_number), prm.group_ident});
+                           codec::high_byte(prm.ident_number), codec::low_byte(prm.ident_number), prm.group_ident});
   if (prm.dpv1) (void)wire::append(out, prm.dpv1->to_bytes());
   return wire::append(out, prm.user_data);
 }

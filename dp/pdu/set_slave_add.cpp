@@ -12,7 +12,7 @@ Result<SetSlaveAdd> decode_set_slave_add(std::span<const std::uint8_t> du) {
   if (du[0] > sap::kMaxSlaveAddress) return PduError::kValueOutOfRange;
   SetSlaveAdd s;
   s.new_address = du[0];
-  s.ident_number = wire::be16(du[1], du[2]);
+  s.ident_number = codec::be16(du[1], du[2]);
   s.no_add_chg = du[3] != 0;
   s.rem_slave_data.assign(du.begin() + kSetSlaveAddFixedLength, du.end());
   return s;
@@ -23,7 +23,7 @@ Result<void> encode_set_slave_add(const SetSlaveAdd& ssa, fdl::DataUnit& out) {
   if (out.size() + kSetSlaveAddFixedLength + ssa.rem_slave_data.size() > wire::kMaxDpDu) {
     return PduError::kTooLong;
   }
-  (void)wire::append(out, {ssa.new_address, wire::hi(ssa.ident_number), wire::lo(ssa.ident_number),
+  (void)wire::append(out, {ssa.new_address, codec::high_byte(ssa.ident_number), codec::low_byte(ssa.ident_number),
                            static_cast<std::uint8_t>(ssa.no_add_chg ? 0xFF : 0x00)});
   return wire::append(out, ssa.rem_slave_data);
 }

@@ -45,7 +45,7 @@ Result<SlaveDiag> decode_slave_diag(std::span<const std::uint8_t> du) {
   d.status2 = StationStatus2::from_byte(du[1]);
   d.status3 = StationStatus3::from_byte(du[2]);
   d.master_add = du[3];
-  d.ident_number = wire::be16(du[4], du[5]);
+  d.ident_number = codec::be16(du[4], du[5]);
   d.ext_diag.assign(du.begin() + kDiagStandardLength, du.end());
   return d;
 }
@@ -55,7 +55,7 @@ Result<void> encode_slave_diag(const SlaveDiag& diag, fdl::DataUnit& out) {
     return PduError::kTooLong;
   }
   (void)wire::append(out, {diag.status1.to_byte(), diag.status2.to_byte(), diag.status3.to_byte(),
-                           diag.master_add, wire::hi(diag.ident_number), wire::lo(diag.ident_number)});
+                           diag.master_add, codec::high_byte(diag.ident_number), codec::low_byte(diag.ident_number)});
   return wire::append(out, diag.ext_diag);
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 // Internal helpers of the PDU codecs (not part of the public API).
 
+#include "codec/endian.h"
+#include "codec/reader.h"
 #include "dp/fdl/telegram.h"
 #include "dp/pdu/errors.h"
 
@@ -29,11 +31,6 @@ inline Result<void> append(fdl::DataUnit& out, const Container& c) {
   return append(out, std::span<const std::uint8_t>(c.data(), c.size()));
 }
 
-inline std::uint16_t be16(std::uint8_t hi, std::uint8_t lo) {
-  return static_cast<std::uint16_t>((hi << 8) | lo);
-}
-inline std::uint8_t hi(std::uint16_t v) { return static_cast<std::uint8_t>(v >> 8); }
-inline std::uint8_t lo(std::uint16_t v) { return static_cast<std::uint8_t>(v & 0xFFU); }
 inline constexpr bool bit(std::uint8_t b, unsigned n) { return ((static_cast<unsigned>(b) >> n) & 1U) != 0; }
 inline constexpr std::uint8_t flag(bool v, unsigned n) {
   return static_cast<std::uint8_t>((v ? 1U : 0U) << n);

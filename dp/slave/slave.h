@@ -160,7 +160,7 @@ class Slave final : public Station, public SlaveControl {
   bool poll_job(AcyclicJob& job, const fdl::Telegram& t);
   void run_acyclic(AcyclicJob& job, const AcyclicRequest& req, TimePoint now);
   static std::error_code finish_job(AcyclicJob& job, const AcyclicResult& r);
-  static void fail_job(AcyclicJob& job, std::uint8_t code_1);
+  static void fail_job(AcyclicJob& job, pdu::ErrorCode1 code_1);
   void close_dpv1();
   void on_c2_rm(const fdl::Telegram& t, TimePoint now);
   void on_c2_sap(const fdl::Telegram& t, TimePoint now);

@@ -13,6 +13,7 @@
 //   application → slave: SlaveControl (complete an acyclic request later, submit an
 //                        alarm, set the device-related diagnosis blocks)
 
+#include "dp/pdu/error_code_1.h"
 #include "dp/pdu/set_prm.h"
 #include "dp/time/clock.h"
 
@@ -75,7 +76,7 @@ struct AcyclicRequest {
 // Negative response `(Fn|0x80) Error_Decode Error_Code_1 Error_Code_2` (§3.3).
 struct AcyclicError {
   std::uint8_t error_decode = 0x80;  // 0x80 = DPV1
-  std::uint8_t error_code_1 = 0;     // class|code, e.g. 0xB0 invalid index
+  pdu::ErrorCode1 error_code_1 = pdu::ErrorCode1::kNone;  // class|code, e.g. 0xB0
   std::uint8_t error_code_2 = 0;
   friend bool operator==(const AcyclicError&, const AcyclicError&) = default;
 };
@@ -170,7 +171,7 @@ class SlaveApplication {
   // DPV1 Read/Write/Data_Transport. Default: "feature not supported" (A9).
   virtual AcyclicResult on_acyclic(const AcyclicRequest& req, TimePoint now) {
     (void)req, (void)now;
-    return AcyclicResult::fail({0x80, 0xA9, 0x00});
+    return AcyclicResult::fail({0x80, pdu::ErrorCode1::kFeatureNotSupported, 0x00});
   }
   virtual void on_alarm_acknowledged(const AlarmAck& ack, TimePoint now) { (void)ack, (void)now; }
   virtual void on_c2_event(C2Event ev, std::uint8_t master, TimePoint now) {

@@ -1,5 +1,6 @@
 // dp::Slave MSAC_C2 (§3.7): resource manager on SAP 49, one connection at a time on the
 // dynamic SAP config.c2_sap, Initiate/Abort/Idle/Read/Write/Data_Transport, idle timeout.
+#include "codec/endian.h"
 #include "dp/pdu/dpv1_c2.h"
 #include "dp/pdu/sap.h"
 #include "dp/slave/slave.h"
@@ -83,8 +84,8 @@ void Slave::on_c2_rm(const fdl::Telegram& t, TimePoint now) {
   c2_.deadline = now + c2_.send_timeout;
   // Immediate RM reply `56 SAP Send_Timeout` with FC DL [VPC3 FDL_RM_ANSWER].
   reply_data(t, fdl::ResponseStatus::kDataLow) = {
-      kFnResourceManager, config_.c2_sap, static_cast<std::uint8_t>(config_.c2_rm_send_timeout >> 8),
-      static_cast<std::uint8_t>(config_.c2_rm_send_timeout & 0xFF)};
+      kFnResourceManager, config_.c2_sap, codec::high_byte(config_.c2_rm_send_timeout),
+      codec::low_byte(config_.c2_rm_send_timeout)};
   app_.on_c2_event(event, t.sa, now);
 }
 
@@ -140,7 +141,7 @@ void Slave::start_c2_request(const fdl::Telegram& t, TimePoint now) {
   req.length = pdu[3];
   if (pdu[0] == kFnRead) {
     if (pdu.size() != 4 || pdu[3] == 0 || pdu[3] > config_.c2_max_data_length) {
-      fail_job(job, pdu::error_code_1::kTypeConflict);
+      fail_job(job, pdu::ErrorCode1::kTypeConflict);
       return;
     }
     req.service = AcyclicService::kRead;
@@ -148,11 +149,11 @@ void Slave::start_c2_request(const fdl::Telegram& t, TimePoint now) {
     // Same rules as C1 (dp/pdu c1_reject_response): Length 0 or ≠ data → B3; more than
     // C2_Max_Data_Len → B1 (write length error).
     if ((pdu[3] == 0 && pdu[0] == kFnWrite) || pdu.size() != 4U + pdu[3]) {
-      fail_job(job, pdu::error_code_1::kTypeConflict);
+      fail_job(job, pdu::ErrorCode1::kTypeConflict);
       return;
     }
     if (pdu[3] > config_.c2_max_data_length) {
-      fail_job(job, pdu::error_code_1::kWriteLengthError);
+      fail_job(job, pdu::ErrorCode1::kWriteLengthError);
       return;
     }
     req.service = pdu[0] == kFnWrite ? AcyclicService::kWrite : AcyclicService::kDataTransport;

@@ -1,5 +1,6 @@
 // dp::Slave diagnosis: Slave_Diag (DSAP 60) reply, station status bits, the diag flag
 // (DH), device blocks and the alarm written into the diagnosis (§2.5, §2.9, §3.5, §3.6).
+#include "codec/endian.h"
 #include "dp/pdu/sap.h"
 #include "dp/slave/slave.h"
 #include "dp/slave/slave_error.h"
@@ -43,8 +44,8 @@ fdl::DataUnit Slave::diagnosis() const {
   du.push_back(s2);
   du.push_back(0);  // Station_Status_3, bit 7 patched below
   du.push_back(master_);
-  du.push_back(static_cast<std::uint8_t>(config_.ident_number >> 8));
-  du.push_back(static_cast<std::uint8_t>(config_.ident_number & 0xFF));
+  du.push_back(codec::high_byte(config_.ident_number));
+  du.push_back(codec::low_byte(config_.ident_number));
   // Device blocks first (the RS4's PROFIsafe status PDU sits at bytes 7..11), then the
   // alarm; blocks that do not fit are dropped whole and Ext_Diag_Overflow is set.
   const std::size_t alarm_size = alarm_in_diag_ ? alarm_in_diag_->block_size() : 0;

@@ -72,8 +72,8 @@ bool Slave::poll_job(AcyclicJob& job, const fdl::Telegram& t) {
   return false;  // a new request; an unfetched ready response is dropped
 }
 
-void Slave::fail_job(AcyclicJob& job, std::uint8_t code_1) {
-  job.response = {static_cast<std::uint8_t>(job.function | 0x80), 0x80, code_1, 0x00};
+void Slave::fail_job(AcyclicJob& job, pdu::ErrorCode1 code_1) {
+  job.response = {static_cast<std::uint8_t>(job.function | 0x80), 0x80, pdu::to_wire(code_1), 0x00};
   job.phase = AcyclicJob::Phase::kReady;
 }
 
@@ -98,7 +98,7 @@ void Slave::start_c1_request(const fdl::Telegram& t, TimePoint now) {
   req.master_address = t.sa;
   if (const auto* r = std::get_if<pdu::ReadRequest>(&decoded.value())) {
     if (r->length > config_.c1_max_data_length) {  // beyond C1_Max_Data_Len
-      fail_job(c1_, pdu::error_code_1::kTypeConflict);
+      fail_job(c1_, pdu::ErrorCode1::kTypeConflict);
       return;
     }
     req.service = AcyclicService::kRead;
@@ -107,7 +107,7 @@ void Slave::start_c1_request(const fdl::Telegram& t, TimePoint now) {
     req.length = r->length;
   } else if (const auto* w = std::get_if<pdu::WriteRequest>(&decoded.value())) {
     if (w->data.size() > config_.c1_max_data_length) {
-      fail_job(c1_, pdu::error_code_1::kWriteLengthError);
+      fail_job(c1_, pdu::ErrorCode1::kWriteLengthError);
       return;
     }
     req.service = AcyclicService::kWrite;
@@ -127,7 +127,7 @@ void Slave::run_acyclic(AcyclicJob& job, const AcyclicRequest& req, TimePoint no
   const AcyclicResult r = app_.on_acyclic(req, now);
   // The application may also have called complete_acyclic() from inside on_acyclic().
   if (r.kind != AcyclicResult::Kind::kPending && job.phase == AcyclicJob::Phase::kWaitingForApp) {
-    if (finish_job(job, r)) fail_job(job, pdu::error_code_1::kReadError);
+    if (finish_job(job, r)) fail_job(job, pdu::ErrorCode1::kReadError);
   }
 }
 
@@ -135,7 +135,7 @@ std::error_code Slave::finish_job(AcyclicJob& job, const AcyclicResult& r) {
   if (r.kind == AcyclicResult::Kind::kError) {
     const auto& e = r.error;
     job.response = {static_cast<std::uint8_t>(job.function | 0x80), e.error_decode,
-                    e.error_code_1, e.error_code_2};
+                    pdu::to_wire(e.error_code_1), e.error_code_2};
     job.phase = AcyclicJob::Phase::kReady;
     return {};
   }

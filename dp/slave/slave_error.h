@@ -1,9 +1,12 @@
 #pragma once
 // Errors the slave core reports to its owner and to the application (not wire errors:
 // on the wire the slave answers as spec/profibus-dp.md §2/§3 prescribe).
-// Carried as std::error_code with the category dp::slave_category().
+// Carried as std::error_code with the category "dp.slave".
+
+#include "codec/error_category.h"
 
 #include <cstdint>
+#include <string_view>
 #include <system_error>
 
 namespace rs4sim::dp {
@@ -29,8 +32,9 @@ enum class SlaveError : std::uint8_t {
   kResponseTooLong,           // acyclic read data longer than requested / 240 bytes
 };
 
-const std::error_category& slave_category() noexcept;
-std::error_code make_error_code(SlaveError e) noexcept;
+[[nodiscard]] std::string_view to_string(SlaveError e) noexcept;
+constexpr const char* error_category_name(SlaveError) noexcept { return "dp.slave"; }
+inline std::error_code make_error_code(SlaveError e) noexcept { return codec::make_error_code_of(e); }
 
 }  // namespace rs4sim::dp
 

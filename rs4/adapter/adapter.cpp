@@ -19,28 +19,16 @@ profisafe::FDeviceConfig fdevice_config(std::optional<std::uint8_t> address) {
   return c;
 }
 
-class ApiCategory final : public std::error_category {
- public:
-  const char* name() const noexcept override { return "rs4.adapter"; }
-  std::string message(int c) const override {
-    switch (static_cast<AdapterApiError>(c)) {
-      case AdapterApiError::kPoweredOff: return "the RS4/PROFIsafe has no power";
-      case AdapterApiError::kNoSyncRequested:
-        return "proxy sync started although the device does not request one (Proxy-Request 0)";
-      case AdapterApiError::kNoSyncRunning: return "no proxy sync is running";
-    }
-    return "unknown adapter API error";
-  }
-};
-
 }  // namespace
 
-const std::error_category& adapter_api_category() noexcept {
-  static const ApiCategory c;
-  return c;
-}
-std::error_code make_error_code(AdapterApiError e) noexcept {
-  return {static_cast<int>(e), adapter_api_category()};
+std::string_view to_string(AdapterApiError e) noexcept {
+  switch (e) {
+    case AdapterApiError::kPoweredOff: return "the RS4/PROFIsafe has no power";
+    case AdapterApiError::kNoSyncRequested:
+      return "proxy sync started although the device does not request one (Proxy-Request 0)";
+    case AdapterApiError::kNoSyncRunning: return "no proxy sync is running";
+  }
+  return "unknown adapter API error";
 }
 
 const char* to_string(LedState s) noexcept {

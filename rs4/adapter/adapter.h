@@ -96,8 +96,11 @@ enum class AdapterApiError : std::uint8_t {
   kNoSyncRequested,     // sync started while Proxy-Request is 0
   kNoSyncRunning,       // sync succeeded/failed without sync started
 };
-const std::error_category& adapter_api_category() noexcept;
-std::error_code make_error_code(AdapterApiError e) noexcept;
+[[nodiscard]] std::string_view to_string(AdapterApiError e) noexcept;
+constexpr const char* error_category_name(AdapterApiError) noexcept { return "rs4.adapter.api"; }
+inline std::error_code make_error_code(AdapterApiError e) noexcept {
+  return codec::make_error_code_of(e);
+}
 
 // Everything an observer (gRPC service, CLI, tests) sees in one snapshot.
 struct AdapterView {

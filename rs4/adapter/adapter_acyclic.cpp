@@ -13,13 +13,13 @@ namespace {
 using dp::slave::AcyclicChannel;
 using dp::slave::AcyclicError;
 using dp::slave::AcyclicResult;
-// DPV1 Error_Code_1 (profibus-dp.md §3.3): class 0xB access, codes 0 invalid index,
-// 1 write length error, 2 invalid slot, 8 invalid parameter; 0xA9 feature not supported.
-constexpr AcyclicError kInvalidIndex{0x80, 0xB0, 0x00};
-constexpr AcyclicError kWriteLengthError{0x80, 0xB1, 0x00};
-constexpr AcyclicError kInvalidSlot{0x80, 0xB2, 0x00};
-constexpr AcyclicError kInvalidParameter{0x80, 0xB8, 0x00};
-constexpr AcyclicError kNotSupported{0x80, 0xA9, 0x00};
+using dp::pdu::ErrorCode1;
+// DPV1 negative responses (profibus-dp.md §3.3), Error_Decode 0x80 = DPV1.
+constexpr AcyclicError kInvalidIndex{0x80, ErrorCode1::kInvalidIndex, 0x00};
+constexpr AcyclicError kWriteLengthError{0x80, ErrorCode1::kWriteLengthError, 0x00};
+constexpr AcyclicError kInvalidSlot{0x80, ErrorCode1::kInvalidSlot, 0x00};
+constexpr AcyclicError kInvalidParameter{0x80, ErrorCode1::kInvalidParameter, 0x00};
+constexpr AcyclicError kNotSupported{0x80, ErrorCode1::kFeatureNotSupported, 0x00};
 }  // namespace
 
 Adapter::Channel& Adapter::channel(AcyclicChannel which) noexcept {

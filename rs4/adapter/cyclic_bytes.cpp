@@ -44,28 +44,13 @@ std::uint8_t encode_output_byte(const OutputBits& bits) noexcept {
   return b;
 }
 
-namespace {
-class AddressCategory final : public std::error_category {
- public:
-  const char* name() const noexcept override { return "rs4.address"; }
-  std::string message(int c) const override {
-    switch (static_cast<AddressError>(c)) {
-      case AddressError::kReservedAddress:
-        return "address switches give 127: reserved, must not be used (manual §4.5)";
-      case AddressError::kNibbleOutOfRange:
-        return "hex switch value above 0xF";
-    }
-    return "unknown address error";
+std::string_view to_string(AddressError e) noexcept {
+  switch (e) {
+    case AddressError::kReservedAddress:
+      return "address switches give 127: reserved, must not be used (manual §4.5)";
+    case AddressError::kNibbleOutOfRange: return "hex switch value above 0xF";
   }
-};
-}  // namespace
-
-const std::error_category& address_category() noexcept {
-  static const AddressCategory c;
-  return c;
-}
-std::error_code make_error_code(AddressError e) noexcept {
-  return {static_cast<int>(e), address_category()};
+  return "unknown address error";
 }
 
 boost::outcome_v2::std_result<std::uint8_t> station_address(AddressSwitches s) noexcept {

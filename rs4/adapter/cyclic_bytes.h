@@ -2,9 +2,12 @@
 // The cyclic process bytes of the RS4/PROFIsafe (spec/rs4-profisafe.md §3; manual §5.1)
 // and the PROFIBUS address switches (§2; manual §4.5). Pure functions, no state.
 
+#include "codec/error_category.h"
+
 #include <boost/outcome/std_result.hpp>
 
 #include <cstdint>
+#include <string_view>
 #include <system_error>
 
 namespace rs4sim::rs4::adapter {
@@ -62,8 +65,11 @@ enum class AddressError : std::uint8_t {
   kReservedAddress = 1,  // 127 (0x7F) or 255 (0xFF): must not be used (§2)
   kNibbleOutOfRange,     // a switch value above 0xF
 };
-const std::error_category& address_category() noexcept;
-std::error_code make_error_code(AddressError e) noexcept;
+[[nodiscard]] std::string_view to_string(AddressError e) noexcept;
+constexpr const char* error_category_name(AddressError) noexcept { return "rs4.address"; }
+inline std::error_code make_error_code(AddressError e) noexcept {
+  return codec::make_error_code_of(e);
+}
 
 // Station address 0..126: bit 7 of the switch value is not evaluated.
 boost::outcome_v2::std_result<std::uint8_t> station_address(AddressSwitches s) noexcept;

@@ -18,7 +18,7 @@ bool overrides(const std::vector<gsd::ParamOverride>& list, const char* name) {
 
 gsd::Error layout_error(std::string message) {
   gsd::Error e;
-  e.code = gsd::ErrorCode::kFParameterLayout;
+  e.code = gsd::GsdError::kFParameterLayout;
   e.message = std::move(message);
   return e;
 }

@@ -1,18 +1,11 @@
 #include "rs4/protocol/adapter_answer.h"
 
+#include "codec/reader.h"
+#include "codec/writer.h"
 #include "rs4/protocol/adapter_command.h"
 
 namespace rs4sim::rs4::protocol {
 namespace {
-
-void put16(std::vector<std::uint8_t>& out, std::uint16_t v) {
-  out.push_back(static_cast<std::uint8_t>(v >> 8));
-  out.push_back(static_cast<std::uint8_t>(v & 0xFFU));
-}
-
-std::uint16_t get16(std::span<const std::uint8_t> in, std::size_t at) noexcept {
-  return static_cast<std::uint16_t>((in[at] << 8) | in[at + 1]);
-}
 
 // Checks code byte and exact length, the two ways an answer can be malformed in frame.
 std::error_code check_frame(std::span<const std::uint8_t> answer, AdapterCommandCode code,
@@ -25,19 +18,22 @@ std::error_code check_frame(std::span<const std::uint8_t> answer, AdapterCommand
 }
 
 void put_ring(std::vector<std::uint8_t>& out, const ErrorRingBuffer& ring) {
-  out.push_back(ring.write_index);
-  out.push_back(ring.age_flag);
-  for (const auto entry : ring.entries) put16(out, entry);
+  codec::Appender w(out);
+  w.u8(ring.write_index);
+  w.u8(ring.age_flag);
+  for (const auto entry : ring.entries) w.u16_be(entry);
 }
 
 Result<ErrorRingBuffer> get_ring(std::span<const std::uint8_t> in) noexcept {
   ErrorRingBuffer ring;
-  ring.write_index = in[0];
-  ring.age_flag = in[1];
+  codec::Reader r(in);
+  ring.write_index = r.u8();
+  ring.age_flag = r.u8();
   if (ring.write_index >= ErrorRingBuffer::kEntries || ring.age_flag > 1) {
     return ProtocolError::kBadAnswerValue;
   }
-  for (std::size_t i = 0; i < ErrorRingBuffer::kEntries; ++i) ring.entries[i] = get16(in, 2 + 2 * i);
+  r.u16_be_array(ring.entries);
+  if (!r.ok()) return ProtocolError::kBadAnswerLength;
   return ring;
 }
 
@@ -63,10 +59,9 @@ Result<VersionAnswer> decode_version_answer(std::span<const std::uint8_t> answer
 std::vector<std::uint8_t> encode_last_error_answer(const LastErrorAnswer& a) {
   std::vector<std::uint8_t> out{static_cast<std::uint8_t>(AdapterCommandCode::kError)};
   out.reserve(kLastErrorAnswerSize);
-  put16(out, a.uc2_error);
-  put16(out, a.uc2_count);
-  put16(out, a.uc1_error);
-  put16(out, a.uc1_count);  // DECISION §5.3: high byte first
+  codec::Appender w(out);
+  // DECISION §5.3: high byte first
+  for (const auto v : {a.uc2_error, a.uc2_count, a.uc1_error, a.uc1_count}) w.u16_be(v);
   return out;
 }
 
@@ -74,7 +69,8 @@ Result<LastErrorAnswer> decode_last_error_answer(std::span<const std::uint8_t> a
   if (auto ec = check_frame(answer, AdapterCommandCode::kError, kLastErrorAnswerSize)) {
     return ec;
   }
-  return LastErrorAnswer{get16(answer, 1), get16(answer, 3), get16(answer, 5), get16(answer, 7)};
+  codec::Reader r(answer.subspan(1));
+  return LastErrorAnswer{r.u16_be(), r.u16_be(), r.u16_be(), r.u16_be()};
 }
 
 void ErrorRingBuffer::push(std::uint16_t error) noexcept {

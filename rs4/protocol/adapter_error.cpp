@@ -52,26 +52,6 @@ Text text(AdapterError e) noexcept {
   }
 }
 
-class AdapterCategory final : public std::error_category {
- public:
-  const char* name() const noexcept override { return "rs4.adapter"; }
-  std::string message(int value) const override {
-    const auto e = static_cast<AdapterError>(value);
-    const Text t = text(e);
-    std::string out = "0x";
-    constexpr char kHex[] = "0123456789ABCDEF";
-    for (int shift = 12; shift >= 0; shift -= 4) {
-      out += kHex[(static_cast<unsigned>(value) >> shift) & 0xFU];
-    }
-    out += ": ";
-    out += t.cause;
-    out += " (remedy: ";
-    out += t.remedy;
-    out += ")";
-    return out;
-  }
-};
-
 }  // namespace
 
 AdapterError echo_crc_wrong(std::uint8_t crc_number) noexcept {
@@ -106,15 +86,21 @@ std::optional<AdapterError> adapter_error_from_wire(std::uint16_t value) noexcep
 }
 
 std::string_view adapter_error_cause(AdapterError e) noexcept { return text(e).cause; }
+std::string_view to_string(AdapterError e) noexcept { return text(e).cause; }
 std::string_view adapter_error_remedy(AdapterError e) noexcept { return text(e).remedy; }
 
-const std::error_category& adapter_category() noexcept {
-  static const AdapterCategory category;
-  return category;
-}
-
-std::error_code make_error_code(AdapterError e) noexcept {
-  return {static_cast<int>(e), adapter_category()};
+std::string error_message(AdapterError e) {
+  const auto value = to_wire(e);
+  const Text t = text(e);
+  std::string out = "0x";
+  constexpr char kHex[] = "0123456789ABCDEF";
+  for (int shift = 12; shift >= 0; shift -= 4) out += kHex[(static_cast<unsigned>(value) >> shift) & 0xFU];
+  out += ": ";
+  out += t.cause;
+  out += " (remedy: ";
+  out += t.remedy;
+  out += ")";
+  return out;
 }
 
 }  // namespace rs4sim::rs4::protocol

@@ -4,8 +4,11 @@
 // PROFI_CMD_ERROR / PROFI_CMD_GET_ERROR (§5.3) and as std::error_code inside the
 // project (category adapter_category(), message = the manual's cause and remedy).
 
+#include "codec/error_category.h"
+
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <system_error>
 
@@ -39,8 +42,16 @@ constexpr std::uint16_t to_wire(AdapterError e) noexcept { return static_cast<st
 std::string_view adapter_error_cause(AdapterError e) noexcept;
 std::string_view adapter_error_remedy(AdapterError e) noexcept;
 
-const std::error_category& adapter_category() noexcept;
-std::error_code make_error_code(AdapterError e) noexcept;
+// The cause; the category's message is "0x2A0B: <cause> (remedy: <remedy>)".
+[[nodiscard]] std::string_view to_string(AdapterError e) noexcept;
+[[nodiscard]] std::string error_message(AdapterError e);
+constexpr const char* error_category_name(AdapterError) noexcept { return "rs4.adapter"; }
+inline std::error_code make_error_code(AdapterError e) noexcept {
+  return codec::make_error_code_of(e);
+}
+inline const std::error_category& adapter_category() noexcept {
+  return codec::category_of<AdapterError>();
+}
 
 }  // namespace rs4sim::rs4::protocol
 

@@ -1,5 +1,8 @@
 #include "rs4/protocol/alarm.h"
 
+#include "codec/reader.h"
+#include "codec/writer.h"
+
 namespace rs4sim::rs4::protocol {
 namespace {
 
@@ -9,15 +12,6 @@ constexpr unsigned kSequenceShift = 3;
 constexpr std::uint8_t kSequenceMask = 0x07;
 constexpr std::uint8_t kDifferentiationMask = 0x03;
 constexpr std::uint8_t kSpecifierReserved = 0xC0;
-
-void put16(std::vector<std::uint8_t>& out, std::uint16_t v) {
-  out.push_back(static_cast<std::uint8_t>(v >> 8));
-  out.push_back(static_cast<std::uint8_t>(v & 0xFFU));
-}
-
-std::uint16_t get16(std::span<const std::uint8_t> in, std::size_t at) noexcept {
-  return static_cast<std::uint16_t>((in[at] << 8) | in[at + 1]);
-}
 
 std::error_code check_header(std::span<const std::uint8_t> pdu, std::uint8_t size,
                              std::uint8_t type) noexcept {
@@ -58,19 +52,20 @@ std::vector<std::uint8_t> encode_diagnosis_alarm(const DiagnosisAlarm& alarm) {
                                 alarm_specifier(alarm.sequence, alarm.differentiation),
                                 kErrorFromSlave};
   out.reserve(kDiagnosisAlarmSize);
-  put16(out, alarm.uc2_error);
-  put16(out, alarm.uc2_count);
-  put16(out, alarm.uc1_error);
-  put16(out, alarm.uc1_count);
+  codec::Appender w(out);
+  for (const auto v : {alarm.uc2_error, alarm.uc2_count, alarm.uc1_error, alarm.uc1_count}) {
+    w.u16_be(v);
+  }
   return out;
 }
 
 Result<DiagnosisAlarm> decode_diagnosis_alarm(std::span<const std::uint8_t> pdu) {
   if (auto ec = check_header(pdu, kDiagnosisAlarmSize, kAlarmTypeDiagnosis)) return ec;
   if (pdu[4] != kErrorFromSlave) return ProtocolError::kBadErrorCode;
+  codec::Reader r(pdu.subspan(5));
   return DiagnosisAlarm{sequence_of(pdu[3]),
                         static_cast<AlarmDifferentiation>(pdu[3] & kDifferentiationMask),
-                        get16(pdu, 5), get16(pdu, 7), get16(pdu, 9), get16(pdu, 11)};
+                        r.u16_be(), r.u16_be(), r.u16_be(), r.u16_be()};
 }
 
 }  // namespace rs4sim::rs4::protocol

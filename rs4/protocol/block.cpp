@@ -1,5 +1,7 @@
 #include "rs4/protocol/block.h"
 
+#include "codec/reader.h"
+#include "codec/writer.h"
 #include "rs4/protocol/adapter_error.h"
 
 #include <algorithm>
@@ -12,9 +14,6 @@ constexpr std::uint8_t kPayloadBit = 0x02;
 constexpr std::uint8_t kReservedBits = 0x8C;  // bits 2, 3, 7 (table 5.2-2)
 constexpr unsigned kStateShift = 4;
 constexpr std::uint8_t kStateMask = 0x07;
-
-std::uint8_t lo(std::uint16_t v) noexcept { return static_cast<std::uint8_t>(v & 0xFFU); }
-std::uint8_t hi(std::uint16_t v) noexcept { return static_cast<std::uint8_t>(v >> 8); }
 
 }  // namespace
 
@@ -42,10 +41,11 @@ Result<BlockView> decode_block(std::span<const std::uint8_t> record, Direction d
       direction == Direction::kWrite ? kMinWriteRecordSize : kBlockHeaderSize;
   if (record.size() < min_block) return ProtocolError::kRecordTooShort;
   if (record.size() > kMaxRecordSize) return ProtocolError::kRecordTooLong;
+  codec::Reader r(record);
   BlockHeader header;
-  header.flow_control = record[0];
-  header.length = record[1];
-  header.number = static_cast<std::uint16_t>((record[2] << 8) | record[3]);
+  header.flow_control = r.u8();
+  header.length = r.u8();
+  header.number = r.u16_be();
   if (header.length < min_block || header.length > kMaxRecordSize) {
     return ProtocolError::kBlockLengthOutOfRange;
   }
@@ -56,11 +56,11 @@ Result<BlockView> decode_block(std::span<const std::uint8_t> record, Direction d
 std::error_code encode_block(std::uint8_t flow_control, std::uint16_t number,
                              std::span<const std::uint8_t> payload, std::vector<std::uint8_t>& out) {
   if (payload.size() > kMaxBlockPayload) return ProtocolError::kBlockLengthOutOfRange;
-  out.push_back(flow_control);
-  out.push_back(static_cast<std::uint8_t>(kBlockHeaderSize + payload.size()));
-  out.push_back(hi(number));
-  out.push_back(lo(number));
-  out.insert(out.end(), payload.begin(), payload.end());
+  codec::Appender w(out);
+  w.u8(flow_control);
+  w.u8(static_cast<std::uint8_t>(kBlockHeaderSize + payload.size()));
+  w.u16_be(number);
+  w.bytes(payload);
   return {};
 }
 

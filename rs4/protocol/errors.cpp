@@ -1,11 +1,8 @@
 #include "rs4/protocol/errors.h"
 
-#include <string>
-
 namespace rs4sim::rs4::protocol {
-namespace {
 
-const char* describe(ProtocolError e) noexcept {
+std::string_view to_string(ProtocolError e) noexcept {
   switch (e) {
     case ProtocolError::kRecordTooShort: return "record too short for a block (§5.1)";
     case ProtocolError::kRecordTooLong: return "record longer than 240 bytes (§5)";
@@ -43,25 +40,6 @@ const char* describe(ProtocolError e) noexcept {
     case ProtocolError::kBadErrorCode: return "diagnosis alarm code is not 0x84 (§7.2)";
   }
   return "unknown rs4 protocol error";
-}
-
-class ProtocolCategory final : public std::error_category {
- public:
-  const char* name() const noexcept override { return "rs4.protocol"; }
-  std::string message(int value) const override {
-    return describe(static_cast<ProtocolError>(value));
-  }
-};
-
-}  // namespace
-
-const std::error_category& protocol_category() noexcept {
-  static const ProtocolCategory category;
-  return category;
-}
-
-std::error_code make_error_code(ProtocolError e) noexcept {
-  return {static_cast<int>(e), protocol_category()};
 }
 
 }  // namespace rs4sim::rs4::protocol

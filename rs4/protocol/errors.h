@@ -2,11 +2,14 @@
 // Typed decode/encode errors of the RS4 wire formats (spec/rs4-profisafe.md §5, §6, §7,
 // §11). The adapter's own error numbers (table 5.3-3) are AdapterError in
 // adapter_error.h; this category covers malformed bytes and invalid values handed to
-// an encoder. Carried as std::error_code with the category protocol_category().
+// an encoder. Carried as std::error_code with the category "rs4.protocol".
+
+#include "codec/error_category.h"
 
 #include <boost/outcome/std_result.hpp>
 
 #include <cstdint>
+#include <string_view>
 #include <system_error>
 
 namespace rs4sim::rs4::protocol {
@@ -56,8 +59,11 @@ enum class ProtocolError : std::uint8_t {
   kBadErrorCode,              // diagnosis alarm byte 5 is not 0x84
 };
 
-const std::error_category& protocol_category() noexcept;
-std::error_code make_error_code(ProtocolError e) noexcept;
+[[nodiscard]] std::string_view to_string(ProtocolError e) noexcept;
+constexpr const char* error_category_name(ProtocolError) noexcept { return "rs4.protocol"; }
+inline std::error_code make_error_code(ProtocolError e) noexcept {
+  return codec::make_error_code_of(e);
+}
 
 }  // namespace rs4sim::rs4::protocol
 

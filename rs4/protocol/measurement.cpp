@@ -1,27 +1,23 @@
 #include "rs4/protocol/measurement.h"
 
+#include "codec/reader.h"
+#include "codec/writer.h"
+
 namespace rs4sim::rs4::protocol {
 namespace {
 
-void put16(std::vector<std::uint8_t>& out, std::uint16_t v) {
-  out.push_back(static_cast<std::uint8_t>(v >> 8));
-  out.push_back(static_cast<std::uint8_t>(v & 0xFFU));
-}
-
-std::uint16_t get16(std::span<const std::uint8_t> in, std::size_t at) noexcept {
-  return static_cast<std::uint16_t>((in[at] << 8) | in[at + 1]);
-}
+using Appender = codec::Appender<std::vector<std::uint8_t>>;
 
 // Scan number, resolution, start, stop (table 5.2-14 bytes 9..21).
 void put_header(std::uint32_t scan, std::uint8_t resolution, std::uint16_t start,
-                std::uint16_t stop, std::vector<std::uint8_t>& out) {
-  for (int shift = 24; shift >= 0; shift -= 8) {
-    out.push_back(static_cast<std::uint8_t>((scan >> shift) & 0xFFU));
-    out.push_back(kScanNumberFiller);  // keeps small numbers from making runs of zeros
+                std::uint16_t stop, Appender& w) {
+  for (unsigned n = 4; n-- > 0;) {
+    w.u8(codec::byte_of(scan, n));
+    w.u8(kScanNumberFiller);  // keeps small numbers from making runs of zeros
   }
-  out.push_back(resolution);
-  put16(out, start);
-  put16(out, stop);
+  w.u8(resolution);
+  w.u16_be(start);
+  w.u16_be(stop);
 }
 
 }  // namespace
@@ -42,8 +38,9 @@ std::error_code encode_measurement_data(const MeasurementTelegram& t,
   if (!count) return count.error();
   if (count.value() != t.values.size()) return ProtocolError::kValueCountMismatch;
   out.reserve(out.size() + kMeasurementHeaderSize + 2 * t.values.size());
-  put_header(t.scan_number, t.resolution, t.start, t.stop, out);
-  for (const auto value : t.values) put16(out, value);
+  Appender w(out);
+  put_header(t.scan_number, t.resolution, t.start, t.stop, w);
+  for (const auto value : t.values) w.u16_be(value);
   return {};
 }
 
@@ -54,34 +51,33 @@ std::error_code encode_measurement_data(std::uint32_t scan_number, std::uint8_t 
   auto count = measurement_value_count(start, stop, resolution);
   if (!count) return count.error();
   out.reserve(out.size() + kMeasurementHeaderSize + 2 * count.value());
-  put_header(scan_number, resolution, start, stop, out);
+  Appender w(out);
+  put_header(scan_number, resolution, start, stop, w);
   std::size_t segment = start;
-  for (; segment < stop; segment += resolution) put16(out, contour[segment]);
-  put16(out, contour[stop]);  // the stop segment is always output (§6.1)
+  for (; segment < stop; segment += resolution) w.u16_be(contour[segment]);
+  w.u16_be(contour[stop]);  // the stop segment is always output (§6.1)
   return {};
 }
 
 std::error_code decode_measurement_data(std::span<const std::uint8_t> data,
                                         MeasurementTelegram& t) {
   if (data.size() < kMeasurementHeaderSize) return ProtocolError::kTruncated;
+  codec::Reader r(data);
   std::uint32_t scan = 0;
   for (std::size_t i = 0; i < 4; ++i) {
-    if (data[2 * i + 1] != kScanNumberFiller) return ProtocolError::kBadScanNumberFiller;
-    scan = (scan << 8) | data[2 * i];
+    scan = (scan << 8U) | r.u8();
+    if (r.u8() != kScanNumberFiller) return ProtocolError::kBadScanNumberFiller;
   }
   t.scan_number = scan;
-  t.resolution = data[8];
-  t.start = get16(data, 9);
-  t.stop = get16(data, 11);
+  t.resolution = r.u8();
+  t.start = r.u16_be();
+  t.stop = r.u16_be();
   auto count = measurement_value_count(t.start, t.stop, t.resolution);
   if (!count) return count.error();
-  const std::size_t values_size = data.size() - kMeasurementHeaderSize;
-  if (values_size < 2 * count.value()) return ProtocolError::kTruncated;
-  if (values_size > 2 * count.value()) return ProtocolError::kTrailingBytes;
+  if (r.remaining() < 2 * count.value()) return ProtocolError::kTruncated;
+  if (r.remaining() > 2 * count.value()) return ProtocolError::kTrailingBytes;
   t.values.resize(count.value());
-  for (std::size_t i = 0; i < count.value(); ++i) {
-    t.values[i] = get16(data, kMeasurementHeaderSize + 2 * i);
-  }
+  r.u16_be_array(t.values);
   return {};
 }
 

@@ -1,18 +1,12 @@
 #include "rs4/protocol/telegram.h"
 
+#include "codec/reader.h"
+#include "codec/writer.h"
+
 namespace rs4sim::rs4::protocol {
 namespace {
 
 constexpr std::size_t kErrorReportSize = 6;
-
-void put16(std::vector<std::uint8_t>& out, std::uint16_t v) {
-  out.push_back(static_cast<std::uint8_t>(v >> 8));
-  out.push_back(static_cast<std::uint8_t>(v & 0xFFU));
-}
-
-std::uint16_t get16(std::span<const std::uint8_t> in, std::size_t at) noexcept {
-  return static_cast<std::uint16_t>((in[at] << 8) | in[at + 1]);
-}
 
 std::uint8_t code_byte(TelegramCode code) noexcept { return static_cast<std::uint8_t>(code); }
 
@@ -23,9 +17,8 @@ std::error_code encode_body(const AliveTelegram& t, std::vector<std::uint8_t>& o
 std::error_code encode_report(TelegramCode code, const TelegramPrefix& prefix,
                               const ErrorReport& r, std::vector<std::uint8_t>& out) {
   if (auto ec = encode_prefix(code_byte(code), prefix, out)) return ec;
-  put16(out, r.number);
-  put16(out, r.parameter);
-  put16(out, r.function);
+  codec::Appender w(out);
+  for (const auto v : {r.number, r.parameter, r.function}) w.u16_be(v);
   return {};
 }
 
@@ -49,7 +42,8 @@ std::error_code exact_size(std::span<const std::uint8_t> data, std::size_t size)
 template <typename Report>
 Result<Rs4Telegram> decode_report(const TelegramPrefix& prefix, std::span<const std::uint8_t> data) {
   if (auto ec = exact_size(data, kErrorReportSize)) return ec;
-  return Rs4Telegram{Report{prefix, ErrorReport{get16(data, 0), get16(data, 2), get16(data, 4)}}};
+  codec::Reader r(data);
+  return Rs4Telegram{Report{prefix, ErrorReport{r.u16_be(), r.u16_be(), r.u16_be()}}};
 }
 
 }  // namespace

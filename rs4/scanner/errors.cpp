@@ -1,12 +1,9 @@
 #include "rs4/scanner/errors.h"
 
-#include <string>
-
 namespace rs4sim::rs4::scanner {
-namespace {
 
-std::string parameter_message(int v) {
-  switch (static_cast<ParameterError>(v)) {
+std::string_view to_string(ParameterError e) noexcept {
+  switch (e) {
     case ParameterError::kProtectiveTooFar: return "protective contour beyond 4000 mm";
     case ParameterError::kWarningTooFar: return "warning contour beyond 15000 mm";
     case ParameterError::kResponseTimeSteps: return "response time steps out of range";
@@ -22,8 +19,8 @@ std::string parameter_message(int v) {
   return "unknown parameter error";
 }
 
-std::string codec_message(int v) {
-  switch (static_cast<CodecError>(v)) {
+std::string_view to_string(CodecError e) noexcept {
+  switch (e) {
     case CodecError::kTooShort: return "parameter set encoding too short";
     case CodecError::kTooLong: return "bytes after the parameter set encoding";
     case CodecError::kBadMagic: return "parameter set magic is not RS4P";
@@ -33,8 +30,8 @@ std::string codec_message(int v) {
   return "unknown codec error";
 }
 
-std::string scene_message(int v) {
-  switch (static_cast<SceneError>(v)) {
+std::string_view to_string(SceneError e) noexcept {
+  switch (e) {
     case SceneError::kNotFinite: return "coordinate not finite";
     case SceneError::kBadRadius: return "circle radius must be > 0";
     case SceneError::kTooFewVertices: return "polygon needs at least 3 vertices";
@@ -47,57 +44,14 @@ std::string scene_message(int v) {
   return "unknown scene error";
 }
 
-std::string scanner_message(int v) {
-  switch (static_cast<ScannerError>(v)) {
+std::string_view to_string(ScannerError e) noexcept {
+  switch (e) {
     case ScannerError::kNotInConfiguration: return "scanner not in configuration state";
     case ScannerError::kInvalidParameterSet: return "parameter set failed validation";
     case ScannerError::kNotMeasuring: return "scanner not measuring";
     case ScannerError::kUnknownFault: return "unknown fault";
   }
   return "unknown scanner error";
-}
-
-class Category final : public std::error_category {
- public:
-  using Message = std::string (*)(int);
-  Category(const char* name, Message text) : name_(name), message_(text) {}
-  const char* name() const noexcept override { return name_; }
-  std::string message(int v) const override { return message_(v); }
-
- private:
-  const char* name_;
-  Message message_;
-};
-
-}  // namespace
-
-const std::error_category& parameter_category() noexcept {
-  static const Category c("rs4.scanner.parameter", parameter_message);
-  return c;
-}
-const std::error_category& codec_category() noexcept {
-  static const Category c("rs4.scanner.codec", codec_message);
-  return c;
-}
-const std::error_category& scene_category() noexcept {
-  static const Category c("rs4.scanner.scene", scene_message);
-  return c;
-}
-const std::error_category& scanner_category() noexcept {
-  static const Category c("rs4.scanner", scanner_message);
-  return c;
-}
-std::error_code make_error_code(ParameterError e) noexcept {
-  return {static_cast<int>(e), parameter_category()};
-}
-std::error_code make_error_code(CodecError e) noexcept {
-  return {static_cast<int>(e), codec_category()};
-}
-std::error_code make_error_code(SceneError e) noexcept {
-  return {static_cast<int>(e), scene_category()};
-}
-std::error_code make_error_code(ScannerError e) noexcept {
-  return {static_cast<int>(e), scanner_category()};
 }
 
 }  // namespace rs4sim::rs4::scanner

@@ -2,7 +2,10 @@
 // Typed errors of the scanner model, each an enum class carried as std::error_code with
 // its own category (CONTRIBUTING-HELPERS.md, "Errors").
 
+#include "codec/error_category.h"
+
 #include <cstdint>
+#include <string_view>
 #include <system_error>
 
 namespace rs4sim::rs4::scanner {
@@ -51,14 +54,24 @@ enum class ScannerError : std::uint8_t {
   kUnknownFault,             // a Fault value outside the enumeration
 };
 
-const std::error_category& parameter_category() noexcept;
-const std::error_category& codec_category() noexcept;
-const std::error_category& scene_category() noexcept;
-const std::error_category& scanner_category() noexcept;
-std::error_code make_error_code(ParameterError e) noexcept;
-std::error_code make_error_code(CodecError e) noexcept;
-std::error_code make_error_code(SceneError e) noexcept;
-std::error_code make_error_code(ScannerError e) noexcept;
+[[nodiscard]] std::string_view to_string(ParameterError e) noexcept;
+[[nodiscard]] std::string_view to_string(CodecError e) noexcept;
+[[nodiscard]] std::string_view to_string(SceneError e) noexcept;
+[[nodiscard]] std::string_view to_string(ScannerError e) noexcept;
+constexpr const char* error_category_name(ParameterError) noexcept {
+  return "rs4.scanner.parameter";
+}
+constexpr const char* error_category_name(CodecError) noexcept { return "rs4.scanner.codec"; }
+constexpr const char* error_category_name(SceneError) noexcept { return "rs4.scanner.scene"; }
+constexpr const char* error_category_name(ScannerError) noexcept { return "rs4.scanner"; }
+inline std::error_code make_error_code(ParameterError e) noexcept {
+  return codec::make_error_code_of(e);
+}
+inline std::error_code make_error_code(CodecError e) noexcept { return codec::make_error_code_of(e); }
+inline std::error_code make_error_code(SceneError e) noexcept { return codec::make_error_code_of(e); }
+inline std::error_code make_error_code(ScannerError e) noexcept {
+  return codec::make_error_code_of(e);
+}
 
 }  // namespace rs4sim::rs4::scanner
 

@@ -1,56 +1,25 @@
 #include "rs4/scanner/parameter_codec.h"
 
-#include <algorithm>
-
+#include "codec/reader.h"
+#include "codec/writer.h"
 #include "rs4/scanner/crc32.h"
+
+#include <algorithm>
 
 namespace rs4sim::rs4::scanner {
 namespace {
 
 constexpr std::array<std::uint8_t, 4> kMagic{'R', 'S', '4', 'P'};
 
-class Writer {
- public:
-  explicit Writer(std::vector<std::uint8_t>& out) : out_(out) {}
-  void u8(std::uint8_t v) { out_.push_back(v); }
-  void u16(std::uint16_t v) {
-    u8(static_cast<std::uint8_t>(v >> 8));
-    u8(static_cast<std::uint8_t>(v & 0xFFU));
-  }
-  void u32(std::uint32_t v) {
-    u16(static_cast<std::uint16_t>(v >> 16));
-    u16(static_cast<std::uint16_t>(v & 0xFFFFU));
-  }
-
- private:
-  std::vector<std::uint8_t>& out_;
-};
-
-// Reads within a span whose length was checked beforehand.
-class Reader {
- public:
-  explicit Reader(std::span<const std::uint8_t> in) : in_(in) {}
-  std::uint8_t u8() { return in_[pos_++]; }
-  std::uint16_t u16() {
-    const auto hi = u8();
-    return static_cast<std::uint16_t>((hi << 8) | u8());
-  }
-  std::uint32_t u32() {
-    const std::uint32_t hi = u16();
-    return (hi << 16) | u16();
-  }
-
- private:
-  std::span<const std::uint8_t> in_;
-  std::size_t pos_ = 0;
-};
+using Writer = codec::Appender<std::vector<std::uint8_t>>;
+using Reader = codec::Reader;
 
 void write_header(Writer& w, const ParameterSet& s) {
   for (const auto b : kMagic) w.u8(b);
   w.u8(kParameterFormatVersion);
   w.u8(0);  // reserved
-  w.u32(s.identity.serial_number);
-  w.u16(s.identity.device_type);
+  w.u32_be(s.identity.serial_number);
+  w.u16_be(s.identity.device_type);
   w.u8(s.identity.firmware_major);
   w.u8(s.identity.firmware_minor);
   w.u8(s.response_steps);
@@ -59,16 +28,16 @@ void write_header(Writer& w, const ParameterSet& s) {
   for (const auto row : s.permitted) w.u8(row);
   w.u8(s.warning_output);
   w.u8(s.measurement.resolution);
-  w.u16(s.measurement.start);
-  w.u16(s.measurement.stop);
+  w.u16_be(s.measurement.start);
+  w.u16_be(s.measurement.stop);
   for (const auto& pw : s.passwords) {
     for (const auto b : pw) w.u8(b);
   }
 }
 
 void read_header(Reader& r, ParameterSet& s) {
-  s.identity.serial_number = r.u32();
-  s.identity.device_type = r.u16();
+  s.identity.serial_number = r.u32_be();
+  s.identity.device_type = r.u16_be();
   s.identity.firmware_major = r.u8();
   s.identity.firmware_minor = r.u8();
   s.response_steps = r.u8();
@@ -77,8 +46,8 @@ void read_header(Reader& r, ParameterSet& s) {
   for (auto& row : s.permitted) row = r.u8();
   s.warning_output = r.u8();
   s.measurement.resolution = r.u8();
-  s.measurement.start = r.u16();
-  s.measurement.stop = r.u16();
+  s.measurement.start = r.u16_be();
+  s.measurement.stop = r.u16_be();
   for (auto& pw : s.passwords) {
     for (auto& b : pw) b = r.u8();
   }
@@ -92,8 +61,8 @@ std::vector<std::uint8_t> encode(const ParameterSet& set) {
   Writer w(out);
   write_header(w, set);
   for (const FieldPair& fp : set.pairs) {
-    for (const auto v : fp.protective_mm) w.u16(v);
-    for (const auto v : fp.warning_mm) w.u16(v);
+    for (const auto v : fp.protective_mm) w.u16_be(v);
+    for (const auto v : fp.warning_mm) w.u16_be(v);
   }
   return out;
 }
@@ -108,8 +77,8 @@ boost::outcome_v2::std_result<ParameterSet> decode(std::span<const std::uint8_t>
   Reader r(bytes.subspan(6));
   read_header(r, s);
   for (FieldPair& fp : s.pairs) {
-    for (auto& v : fp.protective_mm) v = r.u16();
-    for (auto& v : fp.warning_mm) v = r.u16();
+    r.u16_be_array(fp.protective_mm);
+    r.u16_be_array(fp.warning_mm);
   }
   return s;
 }

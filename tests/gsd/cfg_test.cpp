@@ -83,7 +83,7 @@ TEST(GsdCfg, MalformedIdentifiers) {
   for (const auto& c : cases) {
     auto l = decode_cfg(c.cfg);
     ASSERT_FALSE(l) << c.message;
-    EXPECT_EQ(l.error().code, ErrorCode::kBadCfg);
+    EXPECT_EQ(l.error().code, GsdError::kBadCfg);
     EXPECT_EQ(l.error().message, c.message);
   }
 }

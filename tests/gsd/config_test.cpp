@@ -94,20 +94,20 @@ TEST(GsdConfig, CheckSeqNrSetsBit0OfFlag1) {
 TEST(GsdConfig, OutOfRangeAndFixedValuesAreRefusedByName) {
   const struct {
     ParamOverride o;
-    ErrorCode code;
+    GsdError code;
     const char* message;
   } cases[] = {
-      {{"F_WD_Time", 5}, ErrorCode::kOutOfRange, "F_WD_Time = 5 is out of range 10..1000"},
-      {{"F_WD_Time", 1001}, ErrorCode::kOutOfRange, "F_WD_Time = 1001 is out of range 10..1000"},
-      {{"F_Source_Add", 0}, ErrorCode::kOutOfRange, "F_Source_Add = 0 is out of range 1..65534"},
-      {{"F_Source_Add", 65535}, ErrorCode::kOutOfRange, "F_Source_Add = 65535 is out of range 1..65534"},
-      {{"F_Dest_Add", 627}, ErrorCode::kOutOfRange, "F_Dest_Add = 627 is out of range 500..626"},
-      {{"F_Check_SeqNr", 2}, ErrorCode::kOutOfRange, "F_Check_SeqNr = 2 is out of range 0..1"},
-      {{"F_SIL", 2}, ErrorCode::kNotChangeable, "F_SIL is fixed at 1 (Changeable = 0), cannot set 2"},
-      {{"F_Par_Version", 1}, ErrorCode::kNotChangeable, "F_Par_Version is fixed at 0 (Changeable = 0), cannot set 1"},
-      {{"F_Par_CRC", 0x1234}, ErrorCode::kNotChangeable,
+      {{"F_WD_Time", 5}, GsdError::kOutOfRange, "F_WD_Time = 5 is out of range 10..1000"},
+      {{"F_WD_Time", 1001}, GsdError::kOutOfRange, "F_WD_Time = 1001 is out of range 10..1000"},
+      {{"F_Source_Add", 0}, GsdError::kOutOfRange, "F_Source_Add = 0 is out of range 1..65534"},
+      {{"F_Source_Add", 65535}, GsdError::kOutOfRange, "F_Source_Add = 65535 is out of range 1..65534"},
+      {{"F_Dest_Add", 627}, GsdError::kOutOfRange, "F_Dest_Add = 627 is out of range 500..626"},
+      {{"F_Check_SeqNr", 2}, GsdError::kOutOfRange, "F_Check_SeqNr = 2 is out of range 0..1"},
+      {{"F_SIL", 2}, GsdError::kNotChangeable, "F_SIL is fixed at 1 (Changeable = 0), cannot set 2"},
+      {{"F_Par_Version", 1}, GsdError::kNotChangeable, "F_Par_Version is fixed at 0 (Changeable = 0), cannot set 1"},
+      {{"F_Par_CRC", 0x1234}, GsdError::kNotChangeable,
        "F_Par_CRC is computed (CRC1 over the F-parameters) and cannot be set"},
-      {{"F_Watchdog", 100}, ErrorCode::kUnknownParameter,
+      {{"F_Watchdog", 100}, GsdError::kUnknownParameter,
        "no parameter \"F_Watchdog\" in this configuration (parameters: F_Block_ID, F_CRC_Length, "
        "F_Check_SeqNr, F_Check_iPar, F_Dest_Add, F_Par_CRC, F_Par_Version, F_SIL, F_Source_Add, F_WD_Time)"},
   };
@@ -124,11 +124,11 @@ TEST(GsdConfig, OutOfRangeAndFixedValuesAreRefusedByName) {
 TEST(GsdConfig, ModuleChoiceIsChecked) {
   auto wrong = configure(rs4(), {{"DI 8"}, {}});
   ASSERT_FALSE(wrong);
-  EXPECT_EQ(wrong.error().code, ErrorCode::kUnknownModule);
+  EXPECT_EQ(wrong.error().code, GsdError::kUnknownModule);
   EXPECT_EQ(wrong.error().message, "no module \"DI 8\" in the GSD (modules: \"RS4/PROFIsafe F-I/O (1 byte)\")");
   auto two = configure(rs4(), {{std::string(kRs4simModuleName), std::string(kRs4simModuleName)}, {}});
   ASSERT_FALSE(two);
-  EXPECT_EQ(two.error().code, ErrorCode::kModuleCount);
+  EXPECT_EQ(two.error().code, GsdError::kModuleCount);
   EXPECT_TRUE(configure(rs4(), {{"rs4/profisafe f-i/o (1 byte)"}, {}}));
 }
 
@@ -190,7 +190,7 @@ TEST(GsdConfig, TotalUserPrmDataRespectsMaxUserPrmDataLen) {
   EXPECT_TRUE(configure(d.value(), {{"P", "P"}, {}}));
   auto r = configure(d.value(), {{"P", "P", "P"}, {}});
   ASSERT_FALSE(r);
-  EXPECT_EQ(r.error().code, ErrorCode::kPrmTooLong);
+  EXPECT_EQ(r.error().code, GsdError::kPrmTooLong);
   EXPECT_EQ(r.error().message, "User_Prm_Data is 6 bytes, more than 4");
 }
 
@@ -199,7 +199,7 @@ TEST(GsdConfig, FModuleWithoutFParCrcIsALayoutError) {
   ASSERT_TRUE(d) << d.error().what();
   auto r = configure(d.value(), {});
   ASSERT_FALSE(r);
-  EXPECT_EQ(r.error().code, ErrorCode::kFParameterLayout);
+  EXPECT_EQ(r.error().code, GsdError::kFParameterLayout);
 }
 
 }  // namespace

@@ -67,7 +67,7 @@ TEST_F(FaultIntegration, ASilencedSlaveIsLostThenRecovers) {
   const auto* left = last_event<dp::master::SlaveLeftDataExchange>(b.events());
   ASSERT_NE(left, nullptr);
   EXPECT_EQ(left->address, 6);
-  EXPECT_EQ(left->reason, dp::master::MasterErrc::kNoAnswer);
+  EXPECT_EQ(left->reason, dp::master::MasterError::kNoAnswer);
   // The silent slave's watchdog (100 ms) expires too: it is back in Wait_Prm.
   b.run_for(200ms);
   EXPECT_EQ(b.slave(6).slave().state(), dp::slave::State::kWaitPrm);

@@ -85,7 +85,7 @@ TEST(MemoryBusIntegration, Dpv1WriteReadAndAlarmRoundTrip) {
   ASSERT_TRUE(b.run_until([&] { return last_event<dp::master::Dpv1Result>(b.events()) != nullptr; }, 2s));
   const auto* neg = last_event<dp::master::Dpv1Result>(b.events());
   ASSERT_TRUE(neg->negative);
-  EXPECT_EQ(neg->negative->error_code_1, 0xB0);
+  EXPECT_EQ(dp::pdu::to_wire(neg->negative->error_code_1), 0xB0);
   // Alarm raised by the device: the master sees it in the diagnosis and acknowledges it.
   b.take_events();
   const std::vector<std::uint8_t> user = {0x42};

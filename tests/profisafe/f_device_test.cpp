@@ -137,7 +137,7 @@ TEST_F(ProfisafeFDeviceTest, CrcErrorFailSafeAndRecovery) {
 TEST_F(ProfisafeFDeviceTest, WrongSizeIsCrcError) {
   parameterise();
   EXPECT_EQ(dev_.on_pdu(Bytes{0, 0, 1, 0}, kT0), FDeviceEvent::kCrcError);
-  EXPECT_EQ(dev_.last_check().error, Errc::kPduWrongSize);
+  EXPECT_EQ(dev_.last_check().error, ProfisafeError::kPduWrongSize);
 }
 
 TEST_F(ProfisafeFDeviceTest, ConsecutiveNumberErrorIsCommunicationFault) {
@@ -192,7 +192,7 @@ TEST_F(ProfisafeFDeviceTest, InjectedFaultsOnResponses) {
   ASSERT_EQ(dev_.on_pdu(host_pdu(0, 0, 1), kT0), FDeviceEvent::kNew);
   const Bytes good = response();
   dev_.faults().corrupt_crc2 = 1;
-  EXPECT_EQ(check_pdu(host_, response()).error, Errc::kPduCrc2Mismatch);
+  EXPECT_EQ(check_pdu(host_, response()).error, ProfisafeError::kPduCrc2Mismatch);
   EXPECT_EQ(response(), good);  // counted down
   dev_.faults().mute = true;
   EXPECT_TRUE(dev_.response().empty());
@@ -205,7 +205,7 @@ TEST_F(ProfisafeFDeviceTest, InjectedFaultsOnResponses) {
   EXPECT_EQ(check_pdu(host_, response()).consecutive_number, 1);  // the previously sent PDU again
   EXPECT_EQ(check_pdu(host_, response()).consecutive_number, 2);
   dev_.faults().crc1_override = 0x1234;
-  EXPECT_EQ(check_pdu(host_, response()).error, Errc::kPduCrc2Mismatch);
+  EXPECT_EQ(check_pdu(host_, response()).error, ProfisafeError::kPduCrc2Mismatch);
 }
 
 }  // namespace

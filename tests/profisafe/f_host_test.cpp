@@ -141,7 +141,7 @@ TEST_F(ProfisafeFHostTest, DeviceReportedFaultsPassivate) {
 TEST_F(ProfisafeFHostTest, InjectedPduFaults) {
   start(kT0);
   host_.faults().corrupt_crc2 = 1;
-  EXPECT_EQ(request(kT0 + 1ms).error, Errc::kPduCrc2Mismatch);
+  EXPECT_EQ(request(kT0 + 1ms).error, ProfisafeError::kPduCrc2Mismatch);
   EXPECT_TRUE(request(kT0 + 2ms).ok());
   host_.faults().repeat_number = 1;
   EXPECT_EQ(request(kT0 + 3ms).consecutive_number, 1);  // the previous PDU again
@@ -154,7 +154,7 @@ TEST_F(ProfisafeFHostTest, InjectedPduFaults) {
   host_.faults().mute = false;
   host_.faults().crc1_override = 0xBEEF;
   ASSERT_EQ(host_.on_pdu(device_pdu(0, 0, 4), kT0 + 8ms), FHostEvent::kValid);
-  EXPECT_EQ(request(kT0 + 9ms).error, Errc::kPduCrc2Mismatch);
+  EXPECT_EQ(request(kT0 + 9ms).error, ProfisafeError::kPduCrc2Mismatch);
 }
 
 TEST_F(ProfisafeFHostTest, InjectedParameterFaultsGiveTheDeviceDiagnosis) {

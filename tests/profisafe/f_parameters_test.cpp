@@ -104,7 +104,7 @@ TEST(ProfisafeFParameters, RejectsWrongSizes) {
     const Bytes b(n, 0);
     const auto p = parse_f_parameters(b);
     ASSERT_FALSE(p) << n;
-    EXPECT_EQ(p.error(), Errc::kFParamsWrongSize);
+    EXPECT_EQ(p.error(), ProfisafeError::kFParamsWrongSize);
   }
 }
 
@@ -114,16 +114,16 @@ TEST(ProfisafeFParameters, RejectsReservedBits) {
     b[static_cast<std::size_t>(at)] = static_cast<std::uint8_t>(b[static_cast<std::size_t>(at)] | bit);
     const auto p = parse_f_parameters(b);
     ASSERT_FALSE(p) << at << " " << bit;
-    EXPECT_EQ(p.error(), Errc::kFParamsReservedBits);
+    EXPECT_EQ(p.error(), ProfisafeError::kFParamsReservedBits);
   }
 }
 
 TEST(ProfisafeFParameters, IParCrcOnlyForV2) {
-  EXPECT_EQ(parse_f_parameters(kRs4Default, 5u).error(), Errc::kFParamsIParCrcNeedsV2);
+  EXPECT_EQ(parse_f_parameters(kRs4Default, 5u).error(), ProfisafeError::kFParamsIParCrcNeedsV2);
 }
 
 TEST(ProfisafeFParameters, ErrorCodesHaveMessages) {
-  const std::error_code ec = Errc::kFParamsWrongSize;
+  const std::error_code ec = ProfisafeError::kFParamsWrongSize;
   EXPECT_EQ(ec.category().name(), std::string("rs4sim.profisafe"));
   EXPECT_EQ(ec.message(), "F-parameter block is not 10 bytes");
   const std::error_code d = FDiagnosis::kWrongCrc1;

@@ -147,7 +147,7 @@ TEST(ProfisafePcapV2, AWrongVirtualNumberFailsEveryPdu) {
     if (last != nullptr && pdu == *last) continue;
     if (last != nullptr && toggled(*last, pdu)) vcn = next_virtual_consecutive_number(vcn);
     last = &pdu;
-    ASSERT_EQ(check_pdu(capture_config(), pdu, vcn + 1).error, Errc::kPduCrc2Mismatch) << vcn;
+    ASSERT_EQ(check_pdu(capture_config(), pdu, vcn + 1).error, ProfisafeError::kPduCrc2Mismatch) << vcn;
   }
 }
 

@@ -41,7 +41,7 @@ TEST(ProfisafePduV2, SpecVector1) {
   EXPECT_TRUE(r.ok());
   EXPECT_EQ(r.status_or_control, 0x40);
   EXPECT_EQ(r.received_crc2, 0xBB5FB5u);
-  EXPECT_EQ(check_pdu(v2_config(), pdu, 1).error, Errc::kPduCrc2Mismatch);  // VCN is covered
+  EXPECT_EQ(check_pdu(v2_config(), pdu, 1).error, ProfisafeError::kPduCrc2Mismatch);  // VCN is covered
 }
 
 TEST(ProfisafePduV2, SpecVector2) {
@@ -103,7 +103,7 @@ TEST(ProfisafePduV1, SeqNrCoveredAndEveryVariant) {
   // F_Check_SeqNr 1 → CRC1 0xE850 (block 15 00 00 01 01 F8 00 0A).
   PduConfig c = rs4_config(0xE850, true);
   EXPECT_EQ(build(c, {0x41}, 0x00, 7), (Bytes{0x41, 0x00, 0x07, 0xF3, 0xF8}));
-  EXPECT_EQ(check_pdu(c, Bytes{0x41, 0x00, 0x08, 0xF3, 0xF8}).error, Errc::kPduCrc2Mismatch);
+  EXPECT_EQ(check_pdu(c, Bytes{0x41, 0x00, 0x08, 0xF3, 0xF8}).error, ProfisafeError::kPduCrc2Mismatch);
   c.variant.order = Crc2Variant::Order::kForward;
   EXPECT_EQ(build(c, {0x41}, 0x00, 7), (Bytes{0x41, 0x00, 0x07, 0x69, 0x8C}));
   c.variant = {};
@@ -118,7 +118,7 @@ TEST(ProfisafePduV1, SeqNrCoveredAndEveryVariant) {
   EXPECT_EQ(build(c, {0x41}, 0x00, 7), (Bytes{0x41, 0x00, 0x07, 0xF3, 0xF8}));
   c.check_seqnr = true;
   c.variant.seq_coverage = Crc2Variant::SeqCoverage::kNever;
-  EXPECT_EQ(check_pdu(c, Bytes{0x41, 0x00, 0x08, 0xF3, 0xF8}).error, Errc::kPduCrc2Mismatch);
+  EXPECT_EQ(check_pdu(c, Bytes{0x41, 0x00, 0x08, 0xF3, 0xF8}).error, ProfisafeError::kPduCrc2Mismatch);
 }
 
 TEST(ProfisafePduV1, ThreeDataBytes) {
@@ -135,21 +135,21 @@ TEST(ProfisafePduV1, ThreeDataBytes) {
 TEST(ProfisafePdu, WrongSizesAreTypedErrors) {
   const PduConfig c = rs4_config(0x83A9, false);
   for (std::size_t n : {0u, 1u, 4u, 6u, 100u}) {
-    EXPECT_EQ(check_pdu(c, Bytes(n, 0)).error, Errc::kPduWrongSize) << n;
+    EXPECT_EQ(check_pdu(c, Bytes(n, 0)).error, ProfisafeError::kPduWrongSize) << n;
   }
   std::array<std::uint8_t, 4> small{};
-  EXPECT_EQ(build_pdu(c, Bytes{1}, 0, 1, small).error(), Errc::kPduWrongSize);
+  EXPECT_EQ(build_pdu(c, Bytes{1}, 0, 1, small).error(), ProfisafeError::kPduWrongSize);
   std::array<std::uint8_t, kMaxPduSize> out{};
-  EXPECT_EQ(build_pdu(c, Bytes{1, 2}, 0, 1, out).error(), Errc::kPduWrongSize);
+  EXPECT_EQ(build_pdu(c, Bytes{1, 2}, 0, 1, out).error(), ProfisafeError::kPduWrongSize);
   PduConfig big = c;
   big.data_size = kMaxDataSize + 1;
-  EXPECT_EQ(build_pdu(big, Bytes(kMaxDataSize + 1, 0), 0, 1, out).error(), Errc::kPduDataTooLong);
-  EXPECT_EQ(check_pdu(big, Bytes(kMaxDataSize + 5, 0)).error, Errc::kPduWrongSize);
+  EXPECT_EQ(build_pdu(big, Bytes(kMaxDataSize + 1, 0), 0, 1, out).error(), ProfisafeError::kPduDataTooLong);
+  EXPECT_EQ(check_pdu(big, Bytes(kMaxDataSize + 5, 0)).error, ProfisafeError::kPduWrongSize);
 }
 
 TEST(ProfisafePdu, CorruptedCrcReportsBothValues) {
   const auto r = check_pdu(rs4_config(0x83A9, false), Bytes{0x80, 0x00, 0x01, 0x73, 0x0A});
-  EXPECT_EQ(r.error, Errc::kPduCrc2Mismatch);
+  EXPECT_EQ(r.error, ProfisafeError::kPduCrc2Mismatch);
   EXPECT_EQ(r.received_crc2, 0x730Au);
   EXPECT_EQ(r.computed_crc2, 0x730Bu);
 }

@@ -196,7 +196,7 @@ TEST(GenericDevice, RecordStoreLimits) {
   w.index = 100;
   const auto full = d.on_acyclic(w, TimePoint{});
   EXPECT_EQ(full.kind, dp::slave::AcyclicResult::Kind::kError);
-  EXPECT_EQ(full.error.error_code_1, 0xC3);  // resource unavailable
+  EXPECT_EQ(pdu::to_wire(full.error.error_code_1), 0xC3);  // resource unavailable
   w.index = 0;  // overwrite of an existing record still works
   EXPECT_EQ(d.on_acyclic(w, TimePoint{}).kind, dp::slave::AcyclicResult::Kind::kData);
   // Read returns at most the requested length.
@@ -211,7 +211,7 @@ TEST(GenericDevice, RecordStoreLimits) {
   w.index = GenericDevice::kAlarmTriggerIndex;
   const auto alarm = d.on_acyclic(w, TimePoint{});
   EXPECT_EQ(alarm.kind, dp::slave::AcyclicResult::Kind::kError);
-  EXPECT_EQ(alarm.error.error_code_1, 0xB5);
+  EXPECT_EQ(pdu::to_wire(alarm.error.error_code_1), 0xB5);
 }
 
 }  // namespace

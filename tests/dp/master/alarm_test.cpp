@@ -114,8 +114,8 @@ TEST(MasterAlarm, ManualAcknowledgement) {
   f.bring_to_dx();
   const Bytes next = deliver_diag(f, diag_with(kDiagAlarmSlot0Seq1));
   EXPECT_EQ(next[4], 0x05) << "no automatic Alarm_Ack";
-  EXPECT_EQ(f.master.acknowledge_alarm(5, 0, 1, 2), make_error_code(MasterErrc::kAlarmNotOutstanding));
-  EXPECT_EQ(f.master.acknowledge_alarm(7, 0, 1, 1), make_error_code(MasterErrc::kUnknownSlave));
+  EXPECT_EQ(f.master.acknowledge_alarm(5, 0, 1, 2), make_error_code(MasterError::kAlarmNotOutstanding));
+  EXPECT_EQ(f.master.acknowledge_alarm(7, 0, 1, 1), make_error_code(MasterError::kUnknownSlave));
   EXPECT_FALSE(f.master.acknowledge_alarm(5, 0, 1, 1));
   f.reply(kDxDl);
   const Bytes ack = f.step();
@@ -132,9 +132,9 @@ TEST(MasterAlarm, NegativeAckIsReported) {
            fcs({0x82, 0x85, 0x08, 0x33, 0x33, 0xDC, 0x80, 0xB5, 0x00}), 0x16});
   const auto acked = f.events<AlarmAcknowledged>();
   ASSERT_EQ(acked.size(), 1U);
-  EXPECT_EQ(acked[0].result, make_error_code(MasterErrc::kAlarmAckRejected));
+  EXPECT_EQ(acked[0].result, make_error_code(MasterError::kAlarmAckRejected));
   ASSERT_TRUE(acked[0].negative);
-  EXPECT_EQ(acked[0].negative->error_code_1, 0xB5);
+  EXPECT_EQ(pdu::to_wire(acked[0].negative->error_code_1), 0xB5);
 }
 
 TEST(MasterAlarm, TypeModeAllowsOneOutstandingAlarmPerType) {
@@ -145,7 +145,7 @@ TEST(MasterAlarm, TypeModeAllowsOneOutstandingAlarmPerType) {
   EXPECT_EQ(f.events<AlarmReceived>().size(), 2U);
   const auto faults = f.events<SlaveFault>();
   ASSERT_EQ(faults.size(), 1U);
-  EXPECT_EQ(faults[0].reason, make_error_code(MasterErrc::kAlarmLimitExceeded));
+  EXPECT_EQ(faults[0].reason, make_error_code(MasterError::kAlarmLimitExceeded));
 }
 
 TEST(MasterAlarm, SequenceModeAllowsSeveralAndAcksInOrder) {
@@ -178,7 +178,7 @@ TEST(MasterAlarm, MalformedBlockIsReportedNotFatal) {
   MasterFixture f;
   f.bring_to_dx();
   deliver_diag(f, diag_with({0x3F, 0x01}));  // device block claims 63 bytes, 2 present
-  EXPECT_EQ(f.events<SlaveFault>().at(0).reason, make_error_code(MasterErrc::kInvalidResponse));
+  EXPECT_EQ(f.events<SlaveFault>().at(0).reason, make_error_code(MasterError::kInvalidResponse));
   EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kDataExchange);
 }
 

@@ -42,41 +42,41 @@ TEST(MasterConfigTest, BitTimes) {
 TEST(MasterConfigTest, BusParameterConstraints) {
   BusParameters p = BusParameters::defaults_for(Baud::k1M5);
   p.tsl = p.max_tsdr + 14;  // maxTSDR + 15 ≤ TSL violated
-  EXPECT_EQ(validate(p), make_error_code(MasterErrc::kBadBusParameters));
+  EXPECT_EQ(validate(p), make_error_code(MasterError::kBadBusParameters));
   p = BusParameters::defaults_for(Baud::k1M5);
   p.min_tsdr = 10;
-  EXPECT_EQ(validate(p), make_error_code(MasterErrc::kBadBusParameters));
+  EXPECT_EQ(validate(p), make_error_code(MasterError::kBadBusParameters));
   p = BusParameters::defaults_for(Baud::k1M5);
   p.tid1 = 32;  // below TSYN
-  EXPECT_EQ(validate(p), make_error_code(MasterErrc::kBadBusParameters));
+  EXPECT_EQ(validate(p), make_error_code(MasterError::kBadBusParameters));
   p = BusParameters::defaults_for(Baud::k1M5);
   p.baud = static_cast<Baud>(1234);
-  EXPECT_EQ(validate(p), make_error_code(MasterErrc::kBadBusParameters));
+  EXPECT_EQ(validate(p), make_error_code(MasterError::kBadBusParameters));
 }
 
 TEST(MasterConfigTest, SlaveAndMasterChecks) {
   EXPECT_FALSE(validate(example_master()));
   MasterConfig m = example_master();
   m.address = 127;
-  EXPECT_EQ(validate(m), make_error_code(MasterErrc::kBadMasterAddress));
+  EXPECT_EQ(validate(m), make_error_code(MasterError::kBadMasterAddress));
   m = example_master();
   m.slaves.push_back(example_slave(5));
-  EXPECT_EQ(validate(m), make_error_code(MasterErrc::kDuplicateSlave));
+  EXPECT_EQ(validate(m), make_error_code(MasterError::kDuplicateSlave));
   m = example_master();
   m.slaves[0].address = 2;  // the master's own address
-  EXPECT_EQ(validate(m), make_error_code(MasterErrc::kDuplicateSlave));
+  EXPECT_EQ(validate(m), make_error_code(MasterError::kDuplicateSlave));
   SlaveConfig s = example_slave();
   s.address = 126;  // default address is not for operation (§1.4)
-  EXPECT_EQ(validate(s), make_error_code(MasterErrc::kBadSlaveConfig));
+  EXPECT_EQ(validate(s), make_error_code(MasterError::kBadSlaveConfig));
   s = example_slave();
   s.input_length = 2;  // Chk_Cfg says 1 byte in
-  EXPECT_EQ(validate(s), make_error_code(MasterErrc::kBadSlaveConfig));
+  EXPECT_EQ(validate(s), make_error_code(MasterError::kBadSlaveConfig));
   s = example_slave();
   s.cfg.clear();  // Chk_Cfg needs 1..244 bytes
-  EXPECT_EQ(validate(s), make_error_code(MasterErrc::kBadSlaveConfig));
+  EXPECT_EQ(validate(s), make_error_code(MasterError::kBadSlaveConfig));
   s = example_slave();
   s.c1_response_timeout = Duration::zero();
-  EXPECT_EQ(validate(s), make_error_code(MasterErrc::kBadSlaveConfig));
+  EXPECT_EQ(validate(s), make_error_code(MasterError::kBadSlaveConfig));
   m = example_master();
   m.slaves[0].input_length = 3;
   EXPECT_THROW(Master{m}, std::system_error);
@@ -100,9 +100,9 @@ TEST(MasterConfigTest, WatchdogFactors) {
 
 TEST(MasterConfigTest, ErrorCategories) {
   EXPECT_STREQ(error_category().name(), "dp.master");
-  EXPECT_EQ(make_error_code(MasterErrc::kNoAnswer).message(),
+  EXPECT_EQ(make_error_code(MasterError::kNoAnswer).message(),
             "slave does not answer (slot time expired after all retries)");
-  for (int v = 1; v <= static_cast<int>(MasterErrc::kDuplicateSlave); ++v) {
+  for (int v = 1; v <= static_cast<int>(MasterError::kDuplicateSlave); ++v) {
     EXPECT_NE(error_category().message(v), "unknown master error") << v;
   }
   EXPECT_EQ(std::error_code(0xB5, dpv1_error_category()).message(),
@@ -111,8 +111,8 @@ TEST(MasterConfigTest, ErrorCategories) {
             "DPV1 resource error: resource busy");
   EXPECT_EQ(std::error_code(0xAA, dpv1_error_category()).message(),
             "DPV1 application error: user specific or reserved code");
-  EXPECT_EQ(to_error_code(pdu::Dpv1Error{pdu::Dpv1Function::kRead, 0x80, 0x00, 0x00}),
-            make_error_code(MasterErrc::kDpv1Negative));
+  EXPECT_EQ(to_error_code(pdu::Dpv1Error{pdu::Dpv1Function::kRead, 0x80, pdu::ErrorCode1::kNone, 0x00}),
+            make_error_code(MasterError::kDpv1Negative));
 }
 
 TEST(MasterConfigTest, ObserverDispatch) {

@@ -94,7 +94,7 @@ TEST(MasterDpv1, NegativeResponseMapsToTypedError) {
   EXPECT_NE(r[0].error.message().find("access"), std::string::npos);
   ASSERT_TRUE(r[0].negative);
   EXPECT_EQ(r[0].negative->error_decode, 0x80);
-  EXPECT_EQ(r[0].negative->error_code_1, 0xB0);
+  EXPECT_EQ(pdu::to_wire(r[0].negative->error_code_1), 0xB0);
   EXPECT_EQ(r[0].negative->error_code_2, 0x00);
 }
 
@@ -108,7 +108,7 @@ TEST(MasterDpv1, NonDpv1ErrorDecodeIsKeptVerbatim) {
            fcs({0x82, 0x85, 0x08, 0x33, 0x33, 0xDF, 0xFE, 0x12, 0x34}), 0x16});
   const auto r = f.events<Dpv1Result>();
   ASSERT_EQ(r.size(), 1U);
-  EXPECT_EQ(r[0].error, make_error_code(MasterErrc::kDpv1Negative));
+  EXPECT_EQ(r[0].error, make_error_code(MasterError::kDpv1Negative));
   EXPECT_EQ(r[0].negative->error_decode, 0xFE);
   EXPECT_EQ(r[0].negative->error_code_2, 0x34);
 }
@@ -130,7 +130,7 @@ TEST(MasterDpv1, TimeoutResultCarriesTheTimeoutError) {
   EXPECT_LT(f.clock.now() - before, std::chrono::milliseconds(10));
   const auto r = f.events<Dpv1Result>();
   ASSERT_EQ(r.size(), 1U);
-  EXPECT_EQ(r[0].error, make_error_code(MasterErrc::kDpv1Timeout));
+  EXPECT_EQ(r[0].error, make_error_code(MasterError::kDpv1Timeout));
   f.reply(kDxDl);
   EXPECT_EQ(f.step()[4], 0x05) << "no more polls after the timeout: next cycle's DX";
 }
@@ -146,8 +146,8 @@ TEST(MasterDpv1, NoAnswerIsDistinctFromTimeout) {
   f.poke();     // gives up
   const auto r = f.events<Dpv1Result>();
   ASSERT_EQ(r.size(), 2U);
-  EXPECT_EQ(r[0].error, make_error_code(MasterErrc::kNoAnswer));
-  EXPECT_EQ(r[1].error, make_error_code(MasterErrc::kAborted));
+  EXPECT_EQ(r[0].error, make_error_code(MasterError::kNoAnswer));
+  EXPECT_EQ(r[1].error, make_error_code(MasterError::kAborted));
   EXPECT_EQ(f.events<SlaveLeftDataExchange>().size(), 1U);
 }
 
@@ -157,7 +157,7 @@ TEST(MasterDpv1, RsOnSap51IsSapNotEnabled) {
   ASSERT_TRUE(f.master.read(5, 0, 1, 4));
   after_dx(f);
   f.reply({0x10, 0x02, 0x05, 0x03, 0x0A, 0x16});
-  EXPECT_EQ(f.events<Dpv1Result>().at(0).error, make_error_code(MasterErrc::kSapNotEnabled));
+  EXPECT_EQ(f.events<Dpv1Result>().at(0).error, make_error_code(MasterError::kSapNotEnabled));
   EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kDataExchange);
 }
 
@@ -185,28 +185,28 @@ TEST(MasterDpv1, MismatchedResponseIsInvalid) {
   // Read.res for index 2 instead of 1.
   f.reply({0x68, 0x0A, 0x0A, 0x68, 0x82, 0x85, 0x08, 0x33, 0x33, 0x5E, 0x00, 0x02, 0x01, 0x77,
            fcs({0x82, 0x85, 0x08, 0x33, 0x33, 0x5E, 0x00, 0x02, 0x01, 0x77}), 0x16});
-  EXPECT_EQ(f.events<Dpv1Result>().at(0).error, make_error_code(MasterErrc::kInvalidResponse));
+  EXPECT_EQ(f.events<Dpv1Result>().at(0).error, make_error_code(MasterError::kInvalidResponse));
 }
 
 TEST(MasterDpv1, RequestsAreRejectedUpFront) {
   MasterFixture f;
-  EXPECT_EQ(f.master.read(5, 0, 1, 4).error(), make_error_code(MasterErrc::kNotInDataExchange));
-  EXPECT_EQ(f.master.read(9, 0, 1, 4).error(), make_error_code(MasterErrc::kUnknownSlave));
+  EXPECT_EQ(f.master.read(5, 0, 1, 4).error(), make_error_code(MasterError::kNotInDataExchange));
+  EXPECT_EQ(f.master.read(9, 0, 1, 4).error(), make_error_code(MasterError::kUnknownSlave));
   f.bring_to_dx();
-  EXPECT_EQ(f.master.read(5, 0, 1, 0).error(), make_error_code(MasterErrc::kBadArgument));
-  EXPECT_EQ(f.master.read(5, 0, 1, 241).error(), make_error_code(MasterErrc::kBadArgument));
-  EXPECT_EQ(f.master.write(5, 0, 1, Bytes{}).error(), make_error_code(MasterErrc::kBadArgument));
+  EXPECT_EQ(f.master.read(5, 0, 1, 0).error(), make_error_code(MasterError::kBadArgument));
+  EXPECT_EQ(f.master.read(5, 0, 1, 241).error(), make_error_code(MasterError::kBadArgument));
+  EXPECT_EQ(f.master.write(5, 0, 1, Bytes{}).error(), make_error_code(MasterError::kBadArgument));
   EXPECT_EQ(f.master.write(5, 0, 1, Bytes(241, 0)).error(),
-            make_error_code(MasterErrc::kBadArgument));
+            make_error_code(MasterError::kBadArgument));
   for (std::size_t i = 0; i < Dpv1Client::kQueueLimit; ++i) ASSERT_TRUE(f.master.read(5, 0, 1, 4));
-  EXPECT_EQ(f.master.read(5, 0, 1, 4).error(), make_error_code(MasterErrc::kQueueFull));
+  EXPECT_EQ(f.master.read(5, 0, 1, 4).error(), make_error_code(MasterError::kQueueFull));
 
   MasterConfig cfg = example_master();
   cfg.slaves[0].prm.dpv1.reset();  // DPV0 parameterisation
   MasterFixture g(cfg);
   // Bring up with the DPV0 Set_Prm (7 bytes); the rest of the start-up is the same.
   g.bring_to_dx();
-  EXPECT_EQ(g.master.read(5, 0, 1, 4).error(), make_error_code(MasterErrc::kDpv1NotEnabled));
+  EXPECT_EQ(g.master.read(5, 0, 1, 4).error(), make_error_code(MasterError::kDpv1NotEnabled));
 }
 
 TEST(MasterDpv1, LeavingDataExchangeAbortsQueuedRequests) {
@@ -217,7 +217,7 @@ TEST(MasterDpv1, LeavingDataExchangeAbortsQueuedRequests) {
   f.reply({0x10, 0x02, 0x05, 0x03, 0x0A, 0x16});  // RS to the DX
   const auto r = f.events<Dpv1Result>();
   ASSERT_EQ(r.size(), 1U);
-  EXPECT_EQ(r[0].error, make_error_code(MasterErrc::kAborted));
+  EXPECT_EQ(r[0].error, make_error_code(MasterError::kAborted));
 }
 
 }  // namespace

@@ -76,10 +76,10 @@ TEST(MasterGlobalControl, RejectsReservedBitsAndOverflow) {
   MasterFixture f;
   pdu::GlobalControl bad;
   bad.reserved = 0x01;  // bit 0 reserved
-  EXPECT_EQ(f.master.global_control(bad), make_error_code(MasterErrc::kBadArgument));
+  EXPECT_EQ(f.master.global_control(bad), make_error_code(MasterError::kBadArgument));
   pdu::GlobalControl ok;
   for (int i = 0; i < 8; ++i) ASSERT_FALSE(f.master.global_control(ok));
-  EXPECT_EQ(f.master.global_control(ok), make_error_code(MasterErrc::kQueueFull));
+  EXPECT_EQ(f.master.global_control(ok), make_error_code(MasterError::kQueueFull));
 }
 
 TEST(MasterGlobalControl, PeriodicOperateBroadcast) {

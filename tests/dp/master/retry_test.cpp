@@ -58,7 +58,7 @@ TEST(MasterRetry, LostSlaveAfterRetryLimitRestartsStartUp) {
   const auto left = f.events<SlaveLeftDataExchange>();
   ASSERT_EQ(left.size(), 1U);
   EXPECT_EQ(left[0].address, 5);
-  EXPECT_EQ(left[0].reason, make_error_code(MasterErrc::kNoAnswer));
+  EXPECT_EQ(left[0].reason, make_error_code(MasterError::kNoAnswer));
   EXPECT_EQ(hex(next), hex(kFdlStatus));
   EXPECT_TRUE(f.master.inputs(5).empty()) << "no inputs outside data exchange";
   f.reply({0x10, 0x02, 0x05, 0x00, 0x07, 0x16});
@@ -67,7 +67,7 @@ TEST(MasterRetry, LostSlaveAfterRetryLimitRestartsStartUp) {
   const auto st = f.master.slave_status(5);
   EXPECT_EQ(st->counters.no_answer, 1U);
   EXPECT_EQ(st->counters.left_data_exchange, 1U);
-  EXPECT_EQ(st->last_error, make_error_code(MasterErrc::kNoAnswer));
+  EXPECT_EQ(st->last_error, make_error_code(MasterError::kNoAnswer));
 }
 
 TEST(MasterRetry, FirstFrameIsNotRetried) {

@@ -32,7 +32,7 @@ const Bytes kRs = {0x10, 0x02, 0x05,
                    0x03,  // FC RS: SAP not enabled (slave left DATA_EXCH, §2.2 [TRACE #19])
                    0x0A, 0x16};
 
-std::error_code err(MasterErrc e) { return make_error_code(e); }
+std::error_code err(MasterError e) { return make_error_code(e); }
 
 // Runs the start-up up to the diag after Chk_Cfg and answers it with `reply`.
 void to_wait_ready(MasterFixture& f, const Bytes& reply) {
@@ -77,7 +77,7 @@ TEST(MasterSupervision, PrmReqInDataExchangeReparameterises) {
   f.reply(diag(0x02, 0x05, 0xFF));  // watchdog fired: Not_Ready, Prm_Req, no master
   const auto left = f.events<SlaveLeftDataExchange>();
   ASSERT_EQ(left.size(), 1U);
-  EXPECT_EQ(left[0].reason, err(MasterErrc::kLeftDataExchange));
+  EXPECT_EQ(left[0].reason, err(MasterError::kLeftDataExchange));
   // Next cycle starts again at Set_Prm (§4.2 "Prm_Req → restart at 2"), FCB toggled.
   const Bytes prm = f.step();
   ASSERT_GT(prm.size(), 9U);
@@ -93,7 +93,7 @@ TEST(MasterSupervision, RsToDataExchangeRestartsAtSlaveDiag) {
   f.reply(kRs);
   const auto left = f.events<SlaveLeftDataExchange>();
   ASSERT_EQ(left.size(), 1U);
-  EXPECT_EQ(left[0].reason, err(MasterErrc::kSapNotEnabled));
+  EXPECT_EQ(left[0].reason, err(MasterError::kSapNotEnabled));
   EXPECT_EQ(hex(f.step()), hex(diag_request(0x7D)));
 }
 
@@ -105,7 +105,7 @@ TEST(MasterSupervision, InputLengthMismatchLeavesDataExchange) {
            fcs({0x02, 0x05, 0x08, 0x3C, 0x3D}), 0x16});  // two input bytes, one configured
   const auto left = f.events<SlaveLeftDataExchange>();
   ASSERT_EQ(left.size(), 1U);
-  EXPECT_EQ(left[0].reason, err(MasterErrc::kInputLengthMismatch));
+  EXPECT_EQ(left[0].reason, err(MasterError::kInputLengthMismatch));
   EXPECT_EQ(f.master.slave_status(5)->counters.invalid_responses, 1U);
 }
 
@@ -124,14 +124,14 @@ TEST(MasterSupervision, StatDiagKeepsFetchingEveryCycle) {
 TEST(MasterSupervision, StartupFaultReasons) {
   struct Case {
     Bytes reply;
-    MasterErrc reason;
+    MasterError reason;
   };
   const Case cases[] = {
-      {diag(0x40, 0x0C, 0x02), MasterErrc::kPrmFault},       // Station_Status_1 bit 6
-      {diag(0x04, 0x0C, 0x02), MasterErrc::kCfgFault},       // bit 2
-      {diag(0x10, 0x0C, 0x02), MasterErrc::kNotSupported},   // bit 4
-      {diag(0x00, 0x0C, 0x07), MasterErrc::kMasterLock},     // Master_Add 7
-      {diag(0x00, 0x0C, 0x02, 0x4711), MasterErrc::kIdentMismatch},
+      {diag(0x40, 0x0C, 0x02), MasterError::kPrmFault},       // Station_Status_1 bit 6
+      {diag(0x04, 0x0C, 0x02), MasterError::kCfgFault},       // bit 2
+      {diag(0x10, 0x0C, 0x02), MasterError::kNotSupported},   // bit 4
+      {diag(0x00, 0x0C, 0x07), MasterError::kMasterLock},     // Master_Add 7
+      {diag(0x00, 0x0C, 0x02, 0x4711), MasterError::kIdentMismatch},
   };
   for (const Case& c : cases) {
     MasterFixture f;
@@ -157,11 +157,11 @@ TEST(MasterSupervision, FirstDiagChecksIdentAndMasterLock) {
   f.reply({0x10, 0x02, 0x05, 0x00, 0x07, 0x16});
   f.step();
   f.reply(diag(0x82, 0x04, 0x09));  // parameterised by master 9
-  EXPECT_EQ(f.events<SlaveFault>().at(0).reason, err(MasterErrc::kMasterLock));
+  EXPECT_EQ(f.events<SlaveFault>().at(0).reason, err(MasterError::kMasterLock));
   EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kReadDiag);
   f.step();
   f.reply(diag(0x02, 0x05, 0xFF, 0x9999));
-  EXPECT_EQ(f.events<SlaveFault>().at(0).reason, err(MasterErrc::kIdentMismatch));
+  EXPECT_EQ(f.events<SlaveFault>().at(0).reason, err(MasterError::kIdentMismatch));
 }
 
 TEST(MasterSupervision, FdlStatusFromAMasterIsNotASlave) {
@@ -170,7 +170,7 @@ TEST(MasterSupervision, FdlStatusFromAMasterIsNotASlave) {
   f.reply({0x10, 0x02, 0x05,
            0x20,  // FC: station type "master ready, no token", status OK
            fcs({0x02, 0x05, 0x20}), 0x16});
-  EXPECT_EQ(f.events<SlaveFault>().at(0).reason, err(MasterErrc::kNotASlave));
+  EXPECT_EQ(f.events<SlaveFault>().at(0).reason, err(MasterError::kNotASlave));
   EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kStatusRequest);
 }
 
@@ -182,7 +182,7 @@ TEST(MasterSupervision, SetPrmRejectedWithRsRestarts) {
   f.reply(diag(0x02, 0x05, 0xFF));
   f.step();
   f.reply(kRs);
-  EXPECT_EQ(f.events<SlaveFault>().at(0).reason, err(MasterErrc::kSapNotEnabled));
+  EXPECT_EQ(f.events<SlaveFault>().at(0).reason, err(MasterError::kSapNotEnabled));
   EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kReadDiag);
 }
 
@@ -197,7 +197,7 @@ TEST(MasterSupervision, ReadyTimeoutRestartsAtSlaveDiag) {
   }
   EXPECT_TRUE(f.events<SlaveFault>().empty());
   f.step();  // third cycle ≥ 25 ms after Chk_Cfg
-  EXPECT_EQ(f.events<SlaveFault>().at(0).reason, err(MasterErrc::kStartupTimeout));
+  EXPECT_EQ(f.events<SlaveFault>().at(0).reason, err(MasterError::kStartupTimeout));
   EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kReadDiag);
 }
 

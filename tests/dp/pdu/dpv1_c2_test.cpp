@@ -98,7 +98,7 @@ TEST(PduDpv1C2, DataTransportReadWriteIdle) {
   EXPECT_EQ(enc(std::get<Idle>(decode_c2_request(Bytes{0x48, 0x00}).value())), (Bytes{0x48, 0x00}));
   const Dpv1Error neg = std::get<Dpv1Error>(decode_c2_response(Bytes{0xD7, 0x80, 0xB5, 0x00}).value());
   EXPECT_EQ(neg.function, Dpv1Function::kInitiate);
-  EXPECT_EQ(neg.error_code_1, error_code_1::kStateConflict);
+  EXPECT_EQ(neg.error_code_1, ErrorCode1::kStateConflict);
   EXPECT_EQ(enc(neg), (Bytes{0xD7, 0x80, 0xB5, 0x00}));
 }
 

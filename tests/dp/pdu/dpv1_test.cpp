@@ -51,7 +51,7 @@ TEST(PduDpv1, NegativeResponseInvalidIndex) {
   const auto r = decode_c1_response(du);
   ASSERT_TRUE(r);
   const Dpv1Error e = std::get<Dpv1Error>(r.value());
-  EXPECT_EQ(e, (Dpv1Error{Dpv1Function::kRead, error_decode::kDpv1, error_code_1::kInvalidIndex, 0}));
+  EXPECT_EQ(e, (Dpv1Error{Dpv1Function::kRead, error_decode::kDpv1, ErrorCode1::kInvalidIndex, 0}));
   EXPECT_EQ(enc(e), du);
   // §3.3: the negative response to a malformed Write.
   EXPECT_EQ(enc(type_conflict(Dpv1Function::kWrite)), (Bytes{0xDF, 0x80, 0xB3, 0x00}));

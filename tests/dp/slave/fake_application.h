@@ -28,7 +28,7 @@ class FakeApplication : public SlaveApplication {
   std::optional<CfgVerdict> cfg_verdict;  // default: accept iff Chk_Cfg == config
   enum class AcyclicMode { kData, kError, kPending } acyclic_mode = AcyclicMode::kData;
   Bytes read_data{std::begin(kReadData), std::end(kReadData)};
-  AcyclicError acyclic_error{0x80, 0xB0, 0x00};
+  AcyclicError acyclic_error{0x80, dp::pdu::ErrorCode1{0xB0}, 0x00};
   std::optional<TimePoint> deadline;
 
   // --- recorded calls ---

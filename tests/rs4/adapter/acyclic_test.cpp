@@ -21,11 +21,11 @@ struct Acyclic : ::testing::Test {
 TEST_F(Acyclic, OnlySlot0Index2Or3) {
   auto r = rig.read(240, AcyclicChannel::kC1, 1, 3);
   ASSERT_EQ(r.kind, dp::slave::AcyclicResult::Kind::kError);
-  EXPECT_EQ(r.error, (dp::slave::AcyclicError{0x80, 0xB2, 0x00}));  // invalid slot
+  EXPECT_EQ(r.error, (dp::slave::AcyclicError{0x80, dp::pdu::ErrorCode1{0xB2}, 0x00}));  // invalid slot
   r = rig.read(240, AcyclicChannel::kC1, 0, 4);
-  EXPECT_EQ(r.error, (dp::slave::AcyclicError{0x80, 0xB0, 0x00}));  // invalid index
-  EXPECT_EQ(rig.write(Rig::block({0x90}), 1).error, (dp::slave::AcyclicError{0x80, 0xB0, 0x00}));
-  EXPECT_EQ(rig.write({0x00, 0x04, 0xFF, 0xFF}).error, (dp::slave::AcyclicError{0x80, 0xB1, 0x00}));
+  EXPECT_EQ(r.error, (dp::slave::AcyclicError{0x80, dp::pdu::ErrorCode1{0xB0}, 0x00}));  // invalid index
+  EXPECT_EQ(rig.write(Rig::block({0x90}), 1).error, (dp::slave::AcyclicError{0x80, dp::pdu::ErrorCode1{0xB0}, 0x00}));
+  EXPECT_EQ(rig.write({0x00, 0x04, 0xFF, 0xFF}).error, (dp::slave::AcyclicError{0x80, dp::pdu::ErrorCode1{0xB1}, 0x00}));
   EXPECT_EQ(rig.write(Rig::block({0x90}), 3).kind, dp::slave::AcyclicResult::Kind::kData);  // index 3 too
 }
 

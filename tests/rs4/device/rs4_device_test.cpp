@@ -100,7 +100,7 @@ TEST(Rs4DeviceOnBus, AdapterResetDropsTheLinkForTwoSeconds) {
   // The WRITE is accepted (short ack) and the adapter resets at once: the master sees
   // the slave leave data exchange before it can poll the Write response.
   ASSERT_TRUE(w.has_value());
-  EXPECT_EQ(w->error, dp::master::make_error_code(dp::master::MasterErrc::kAborted)) << w->error.message();
+  EXPECT_EQ(w->error, dp::master::make_error_code(dp::master::MasterError::kAborted)) << w->error.message();
   const auto reset_at = s.now();
   EXPECT_TRUE(s.device().link_down());
   ASSERT_TRUE(s.run_until([&] { return !s.in_data_exchange(); }, 1s));

@@ -55,7 +55,7 @@ TEST(Rs4MasterEntry, OutOfRangeOverrideIsAGsdError) {
   o.overrides.push_back({"F_WD_Time", 5});  // GSD range 10..1000
   const auto e = rs4_master_entry(o);
   ASSERT_FALSE(e);
-  EXPECT_EQ(e.error().code, gsd::ErrorCode::kOutOfRange);
+  EXPECT_EQ(e.error().code, gsd::GsdError::kOutOfRange);
   EXPECT_THROW(Rs4Segment([&] {
                  auto c = segment_config();
                  c.master = o;
