@@ -3,13 +3,16 @@
 #
 #   ./build.sh demo    install what is missing, build, run `rs4sim demo`
 #   ./build.sh test    install what is missing, build and run every test:
-#                        1. unit + integration tests (ctest, RelWithDebInfo)
+#                        1. ctest (RelWithDebInfo), fastest tier first: unit (one library,
+#                           manual clock), integration (master + slaves, CLI), realtime
+#                           (wall clock: pty, UDP, benchmark smoke runs)
 #                        2. the same under AddressSanitizer + UndefinedBehaviorSanitizer
 #                        3. every libFuzzer target, briefly, from its seed corpus (clang)
 #   ./build.sh build   install + build only
 #
 # Environment: JOBS (parallel build jobs, default: nproc), FUZZ_SECONDS (per fuzz target
-# in `test`, default 10).
+# in `test`, default 10), RS4SIM_WERROR (warnings are errors, default ON here; a plain
+# `cmake` configure leaves them warnings).
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -20,6 +23,7 @@ esac
 
 JOBS=${JOBS:-$(nproc)}
 FUZZ_SECONDS=${FUZZ_SECONDS:-10}
+RS4SIM_WERROR=${RS4SIM_WERROR:-ON}
 
 packages=(build-essential cmake ninja-build pkg-config libboost-dev libsqlite3-dev
           libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev)
@@ -39,7 +43,7 @@ fi
 
 configure_and_build() {  # dir, extra cmake args...
   local dir=$1; shift
-  cmake -S . -B "$dir" -G Ninja "$@" >/dev/null
+  cmake -S . -B "$dir" -G Ninja -DRS4SIM_WERROR="$RS4SIM_WERROR" "$@" >/dev/null
   cmake --build "$dir" -j "$JOBS"
 }
 
@@ -52,9 +56,12 @@ case "$mode" in
     exec build/app/rs4sim demo
     ;;
   test)
-    echo "==> [1/3] build + ctest"
+    echo "==> [1/3] build + ctest: unit, integration, realtime"
     configure_and_build build
-    (cd build && ctest --output-on-failure -j "$JOBS")
+    for tier in unit integration realtime; do
+      echo "--- ctest -L $tier"
+      (cd build && ctest -L "^$tier\$" --output-on-failure -j "$JOBS")
+    done
     echo "==> [2/3] ASan + UBSan build + ctest"
     configure_and_build build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRS4SIM_SANITIZE=ON -DRS4SIM_BENCH=OFF
     (cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \

@@ -6,6 +6,8 @@
 // diagnosis 0).
 #include "app/command.h"
 #include "profisafe/f_parameters.h"
+#include "rs4/safety/diagnosis.h"
+#include "rs4/safety/profile.h"
 
 #include <cctype>
 #include <cstdint>
@@ -111,8 +113,9 @@ int run_decode(const FparamsOptions& o) {
   if (o.address > 126) throw UsageError("--address must be a DP station address 0..126");
   const auto bytes = parse_hex(o.decode);
   const auto parsed = profisafe::parse_f_parameters(bytes);
-  const auto v = profisafe::validate(bytes, profisafe::DeviceProfile::rs4(o.address));
-  const auto pdu = profisafe::status_pdu(v.diagnosis);
+  const auto v = profisafe::validate(bytes, rs4::safety::device_profile(o.address));
+  const auto diagnosis = rs4::safety::diagnosis(v.fault);
+  const auto pdu = rs4::safety::status_pdu(diagnosis);
   char line[160];
   if (parsed) {
     const FParameters& p = parsed.value();
@@ -130,7 +133,7 @@ int run_decode(const FparamsOptions& o) {
     std::cout << "not a parameter block: " << parsed.error().message() << "\n";
   }
   std::snprintf(line, sizeof line, "RS4 diagnosis %u (%s), status PDU %02X %02X %02X %02X %02X\n",
-                static_cast<unsigned>(v.diagnosis), profisafe::to_string(v.diagnosis), pdu[0], pdu[1], pdu[2],
+                static_cast<unsigned>(diagnosis), rs4::safety::to_string(diagnosis), pdu[0], pdu[1], pdu[2],
                 pdu[3], pdu[4]);
   std::cout << line;
   return v.ok() ? 0 : 1;

@@ -5,6 +5,7 @@
 #include "gsd/config.h"
 #include "gsd/device_gsd.h"
 #include "gsd/interp.h"
+#include "rs4/safety/profile.h"
 
 #include <cstdio>
 #include <fstream>
@@ -77,7 +78,7 @@ gsd::ParamOverride parse_set(const std::string& text) {
 }
 
 // One line per User_Prm_Data byte: offset, value and what lies in it.
-std::string byte_notes(const gsd::SlaveConfig& c, std::size_t i) {
+std::string byte_notes(const gsd::SlaveSetup& c, std::size_t i) {
   std::string notes;
   if (c.dpv1 && i < 3) notes = "DPV1_Status_" + std::to_string(i + 1);
   for (const auto& f : c.fields) {
@@ -90,7 +91,7 @@ std::string byte_notes(const gsd::SlaveConfig& c, std::size_t i) {
   return notes.empty() ? "constant" : notes;
 }
 
-void print_text(const gsd::SlaveConfig& c, const std::string& source, std::ostream& out) {
+void print_text(const gsd::SlaveSetup& c, const std::string& source, std::ostream& out) {
   out << "GSD: " << source << "\n";
   out << "Ident_Number: " << hex16(c.ident_number) << "\n";
   for (const auto& m : c.modules) out << "Module: " << m << "\n";
@@ -108,7 +109,7 @@ void print_text(const gsd::SlaveConfig& c, const std::string& source, std::ostre
   }
 }
 
-void print_json(const gsd::SlaveConfig& c, const std::string& source, std::ostream& out) {
+void print_json(const gsd::SlaveSetup& c, const std::string& source, std::ostream& out) {
   out << "{\n  \"gsd\": " << json_string(source) << ",\n";
   out << "  \"ident_number\": " << json_string(hex16(c.ident_number)) << ",\n";
   out << "  \"modules\": [";
@@ -131,8 +132,7 @@ void print_json(const gsd::SlaveConfig& c, const std::string& source, std::ostre
 
 std::vector<gsd::ParamOverride> overrides(const Options& o, bool builtin) {
   std::vector<gsd::ParamOverride> list;
-  // RS4 manual §4.5: the RS4/PROFIsafe's F_Dest_Add is 500 + its PROFIBUS address.
-  if (o.address && builtin) list.push_back({"F_Dest_Add", 500 + static_cast<std::int64_t>(*o.address)});
+  if (o.address && builtin) list.push_back({"F_Dest_Add", rs4::safety::f_dest_add(*o.address)});
   if (o.f_source_add) list.push_back({"F_Source_Add", *o.f_source_add});
   if (o.f_wd_time) list.push_back({"F_WD_Time", *o.f_wd_time});
   if (o.f_check_seqnr) list.push_back({"F_Check_SeqNr", 1});

@@ -47,8 +47,8 @@ class Demo {
     dp::devices::GenericBusConfig c;
     c.master_address = 1;
     c.slaves = {{5, 0x1234, {0x10, 0x20}, true}, {6, 0x4711, {0x31}, true}};  // 1+1 B, 2+2 B
-    c.bus.wire_model = dp::link::BaudRate::k1M5;
-    c.baud = dp::master::Baud::k1M5;
+    c.bus.wire_model = dp::BaudRate::k1M5;
+    c.baud = dp::BaudRate::k1M5;
     return c;
   }
   void say(const std::string& text) const { n_.say(text); }

@@ -35,7 +35,7 @@ int run_memory(const DeviceEntry& device, const DeviceOptions& o, const LinkOpti
 std::unique_ptr<link::Transport> make_transport(const LinkOptions& l, asio::io_context& io,
                                                 std::unique_ptr<link::PseudoTerminal>& pty,
                                                 std::ostream& out) {
-  const auto baud = link::parse_baud_rate(l.baud);
+  const auto baud = dp::parse_baud_rate(l.baud);
   const link::LogFn note = [](const std::string& s) { std::cerr << "rs4sim: note: " << s << std::endl; };
   if (l.link == "pty") {
     pty = std::make_unique<link::PseudoTerminal>();
@@ -91,9 +91,9 @@ void validate(const LinkOptions& l) {
   if (l.link != "memory" && l.link != "pty" && l.link != "serial" && l.link != "udp") {
     throw UsageError("--link " + l.link + ": use memory, pty, serial or udp");
   }
-  if ((l.link == "pty" || l.link == "serial") && !link::parse_baud_rate(l.baud)) {
+  if ((l.link == "pty" || l.link == "serial") && !dp::parse_baud_rate(l.baud)) {
     throw UsageError("--baud " + l.baud + ": not a PROFIBUS rate; use one of " +
-                     link::standard_baud_rate_list());
+                     dp::standard_baud_rate_list());
   }
   if (l.link == "serial" && l.port.empty()) {
     throw UsageError("--link serial needs --port DEVICE (e.g. /dev/ttyUSB0)");

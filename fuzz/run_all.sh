@@ -1,17 +1,26 @@
 #!/usr/bin/env bash
 # Runs every libFuzzer executable in <dir> for <seconds>, starting from its seed corpus
 # fuzz/corpus/<target>/ (copied to a scratch directory so the checked-in corpus stays
-# small). Fails on the first crash, leak, timeout or sanitizer report.
+# small), plus the seeds that live elsewhere in the tree (extra_seeds: the shipped GSD file
+# is read where it is, not copied). Fails on the first crash, leak, timeout or sanitizer
+# report.
 #   fuzz/run_all.sh build-fuzz/fuzz 20        (-runs=N instead: RUNS=1000000)
 set -euo pipefail
 dir=$1; seconds=${2:-20}
 here=$(cd "$(dirname "$0")" && pwd)
+extra_seeds() {  # target -> a folder of more seed files, or nothing
+  case "$1" in
+    fuzz_gsd_parse) echo "$here/../gsd/files" ;;
+  esac
+}
 found=0
 for exe in $(find "$dir" -type f -executable -name 'fuzz_*' | sort); do
   name=$(basename "$exe")
   found=$((found + 1))
   work=$(mktemp -d)
   [ -d "$here/corpus/$name" ] && cp -r "$here/corpus/$name/." "$work/"
+  extra=$(extra_seeds "$name")
+  [ -n "$extra" ] && cp "$extra"/* "$work/"
   if [ -n "${RUNS:-}" ]; then limit="-runs=$RUNS"; else limit="-max_total_time=$seconds"; fi
   echo "--- $name ($limit)"
   log=$(mktemp)

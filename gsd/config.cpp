@@ -37,7 +37,7 @@ class Configurator {
  public:
   Configurator(const Device& device, const ConfigRequest& request)
       : device_(device), request_(request) {}
-  Result<SlaveConfig> run();
+  Result<SlaveSetup> run();
 
  private:
   Result<std::vector<const Module*>> choose_modules() const;
@@ -48,7 +48,7 @@ class Configurator {
 
   const Device& device_;
   const ConfigRequest& request_;
-  SlaveConfig out_;
+  SlaveSetup out_;
   std::set<std::size_t> used_;  // indices into request_.overrides
 };
 
@@ -159,7 +159,7 @@ Result<void> Configurator::check_overrides_used() const {
   return boost::outcome_v2::success();
 }
 
-Result<SlaveConfig> Configurator::run() {
+Result<SlaveSetup> Configurator::run() {
   RS4SIM_GSD_TRY(const auto modules, choose_modules());
   out_.ident_number = device_.ident_number;
   out_.dpv1 = device_.dpv1.slave;
@@ -191,7 +191,7 @@ Result<SlaveConfig> Configurator::run() {
 
 }  // namespace
 
-Result<SlaveConfig> configure(const Device& device, const ConfigRequest& request) {
+Result<SlaveSetup> configure(const Device& device, const ConfigRequest& request) {
   return Configurator(device, request).run();
 }
 

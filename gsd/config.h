@@ -4,7 +4,7 @@
 // Chk_Cfg bytes a class 1 master sends. The F-parameter block of a PROFIsafe module gets
 // its F_Par_CRC (CRC1, profisafe-v1.md §2) computed by profisafe/.
 //
-// gsd/ knows nothing of dp/: the app layer copies a SlaveConfig into the master's
+// gsd/ knows nothing of dp/: the app layer copies a SlaveSetup into the master's
 // per-slave configuration (station address, watchdog and Station_Status are the
 // master's business, not the GSD's).
 
@@ -42,17 +42,19 @@ struct PrmField {
   int bit_low = 0;
   int bit_high = 0;
   std::int64_t value = 0;
-  std::size_t module = kGlobal;  // index into SlaveConfig::modules, or kGlobal
+  std::size_t module = kGlobal;  // index into SlaveSetup::modules, or kGlobal
   bool f_parameter = false;      // placed by F_Ext_User_Prm_Data_Ref
 };
 
 struct FParameterBlock {
-  std::size_t module = 0;        // index into SlaveConfig::modules
+  std::size_t module = 0;        // index into SlaveSetup::modules
   std::size_t offset = 0;        // of F_Prm_Flag1 in user_prm_data (10 bytes follow)
   profisafe::FParameters parameters;  // par_crc = the CRC1 written into the block
 };
 
-struct SlaveConfig {
+// What a class 1 master sends to set up one slave (Set_Prm user data, Chk_Cfg), as the
+// GSD computes it, with the layout behind the bytes.
+struct SlaveSetup {
   std::uint16_t ident_number = 0;       // Set_Prm bytes 4..5
   bool dpv1 = false;                    // DPV1_Slave = 1
   std::array<std::uint8_t, 3> dpv1_status{};  // = user_prm_data[0..2] when dpv1
@@ -71,7 +73,7 @@ struct SlaveConfig {
 // modular: at most Max_Module), kUnknownParameter (lists the known names), kOutOfRange
 // ("F_WD_Time = 5 is out of range 10..1000"), kNotChangeable (Changeable = 0, or
 // F_Par_CRC which is always computed), kPrmTooLong, kFParameterLayout.
-Result<SlaveConfig> configure(const Device& device, const ConfigRequest& request);
+Result<SlaveSetup> configure(const Device& device, const ConfigRequest& request);
 
 // F_ParamDescCRC as the rs4sim project defines it (docs/gsd.md; the PI algorithm for
 // text GSDs is not public): CRC-16 poly 0x4EAB, preset 0 (the CRC1 polynomial) over

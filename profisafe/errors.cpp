@@ -1,6 +1,5 @@
-// Messages of the PROFIsafe layer's errors. See errors.h and f_parameters.h.
+// Messages of the PROFIsafe layer's errors. See errors.h.
 #include "profisafe/errors.h"
-#include "profisafe/f_parameters.h"
 
 #include <string>
 
@@ -21,7 +20,5 @@ std::string_view to_string(ProfisafeError e) noexcept {
   }
   return "unknown PROFIsafe error";
 }
-
-std::string error_message(FDiagnosis d) { return std::to_string(static_cast<int>(d)) + " " + to_string(d); }
 
 }  // namespace rs4sim::profisafe

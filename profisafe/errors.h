@@ -1,7 +1,7 @@
 #pragma once
 // Typed errors of the PROFIsafe layer (STYLE.md habit 6): wire-level decode failures and
 // per-PDU check failures, carried as std::error_code with the "rs4sim.profisafe" category.
-// The RS4's F-parameter diagnosis codes (65..72) have their own enum in f_parameters.h.
+// Refused F-parameters are not errors of this kind: see FParameterFault in f_parameters.h.
 
 #include "codec/error_category.h"
 

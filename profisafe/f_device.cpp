@@ -20,7 +20,6 @@ FDevice::FDevice(FDeviceConfig config) : config_(config) {
 
 Validation FDevice::set_parameters(std::span<const std::uint8_t> block) {
   validation_ = validate(block, config_.profile);
-  diagnosis_ = validation_.diagnosis;
   fault_bits_ = 0;
   fault_reported_ = false;
   activate_fv_ = false;

@@ -27,7 +27,7 @@ using TimePoint = std::chrono::steady_clock::time_point;
 
 struct FDeviceConfig {
   DeviceProfile profile{};       // fixed values, ranges, own F_Dest_Add
-  std::size_t data_size = 1;     // F-data bytes each way (RS4: 1)
+  std::size_t data_size = 1;     // F-data bytes each way
   Crc2Variant crc2_variant{};    // V1 CRC2 rule (UNCERTAIN, see pdu.h)
 };
 
@@ -56,11 +56,9 @@ class FDevice {
   // 1..kMaxDataSize.
   explicit FDevice(FDeviceConfig config);
 
-  // Set_Prm: the F-parameter block (10 bytes). Valid → kStartup; otherwise the diagnosis
-  // number is kept and the device stays in / returns to kNoParameters.
+  // Set_Prm: the F-parameter block (10 bytes). Valid → kStartup; otherwise the fault is
+  // kept and the device stays in / returns to kNoParameters.
   Validation set_parameters(std::span<const std::uint8_t> block);
-  [[nodiscard]] FDiagnosis diagnosis() const noexcept { return diagnosis_; }
-  [[nodiscard]] std::array<std::uint8_t, 5> diagnosis_status_pdu() const noexcept { return status_pdu(diagnosis_); }
   [[nodiscard]] const Validation& last_validation() const noexcept { return validation_; }
 
   // The application's process input (device → host). Size must equal data_size.
@@ -94,7 +92,6 @@ class FDevice {
   FDeviceConfig config_;
   PduConfig pdu_config_{};
   FDeviceState state_ = FDeviceState::kNoParameters;
-  FDiagnosis diagnosis_ = FDiagnosis::kNone;
   Validation validation_{};
   std::uint8_t fault_bits_ = 0;
   bool fault_reported_ = false;

@@ -27,7 +27,7 @@ using TimePoint = std::chrono::steady_clock::time_point;
 
 struct FHostConfig {
   FParameters params{};        // F-parameters of the device (par_crc is computed in)
-  std::size_t data_size = 1;   // F-data bytes each way (RS4: 1)
+  std::size_t data_size = 1;   // F-data bytes each way
   Crc2Variant crc2_variant{};  // V1 CRC2 rule (UNCERTAIN, see pdu.h)
 };
 

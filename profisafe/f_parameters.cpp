@@ -1,5 +1,4 @@
-// F-parameter block: codec, validation, RS4 diagnosis (profisafe-v1.md §1-2,
-// rs4-profisafe.md §8). See f_parameters.h.
+// F-parameter block: codec and validation (profisafe-v1.md §1-2). See f_parameters.h.
 #include "profisafe/f_parameters.h"
 
 #include "codec/endian.h"
@@ -73,34 +72,27 @@ Result<FParameters> parse_f_parameters(std::span<const std::uint8_t> block,
   return p;
 }
 
-DeviceProfile DeviceProfile::rs4(unsigned dp_address) noexcept {
-  DeviceProfile d;
-  // §4.5: F_Dest_Add = 16-bit sum of 500 and the PROFIBUS address (0..126 valid).
-  d.dest_add = dp_address <= 126 ? static_cast<std::uint16_t>(500u + dp_address) : std::uint16_t{0};
-  return d;
-}
-
 Validation validate(const FParameters& p, const DeviceProfile& d) noexcept {
   Validation v;
   v.received_crc1 = p.par_crc;
   v.computed_crc1 = crc1(p);
-  auto fail = [&v](FDiagnosis diag) {
-    v.diagnosis = diag;
+  auto fail = [&v](FParameterFault fault) {
+    v.fault = fault;
     return v;
   };
-  // Ascending code order of the manual's table 6.3-1 (DECISION: the first failing check).
-  if (!valid_address(d.dest_add)) return fail(FDiagnosis::kInternalDestAdd);
-  if (p.dest_add != d.dest_add) return fail(FDiagnosis::kWrongDestAdd);
+  // The first failing check, in the enum's order.
+  if (!valid_address(d.dest_add)) return fail(FParameterFault::kDestAddInvalid);
+  if (p.dest_add != d.dest_add) return fail(FParameterFault::kDestAddMismatch);
   if (!valid_address(p.source_add) || p.source_add < d.min_source_add || p.source_add > d.max_source_add) {
-    return fail(FDiagnosis::kWrongSourceAdd);
+    return fail(FParameterFault::kSourceAddInvalid);
   }
-  if (p.wd_time_ms < d.min_wd_time_ms || p.wd_time_ms > d.max_wd_time_ms) return fail(FDiagnosis::kWrongWdTime);
-  if (p.sil != d.sil) return fail(FDiagnosis::kWrongSil);
-  if (p.crc_length != d.crc_length) return fail(FDiagnosis::kWrongCrcLength);
+  if (p.wd_time_ms < d.min_wd_time_ms || p.wd_time_ms > d.max_wd_time_ms) return fail(FParameterFault::kWdTimeInvalid);
+  if (p.sil != d.sil) return fail(FParameterFault::kSilMismatch);
+  if (p.crc_length != d.crc_length) return fail(FParameterFault::kCrcLengthMismatch);
   if (p.block_id != d.block_id || p.par_version != d.par_version || p.check_ipar != d.check_ipar) {
-    return fail(FDiagnosis::kWrongBlockIdOrParVersion);
+    return fail(FParameterFault::kVersionMismatch);
   }
-  if (v.received_crc1 != v.computed_crc1) return fail(FDiagnosis::kWrongCrc1);
+  if (v.received_crc1 != v.computed_crc1) return fail(FParameterFault::kCrc1Mismatch);
   return v;
 }
 
@@ -108,7 +100,7 @@ Validation validate(std::span<const std::uint8_t> block, const DeviceProfile& d)
   auto parsed = parse_f_parameters(block);
   if (!parsed) {
     Validation v;
-    v.diagnosis = FDiagnosis::kWrongBlockIdOrParVersion;
+    v.fault = FParameterFault::kVersionMismatch;
     if (block.size() == kFParametersSize) {
       v.received_crc1 = codec::be16(block[8], block[9]);
       v.computed_crc1 = crc1(block.first<8>());
@@ -118,25 +110,19 @@ Validation validate(std::span<const std::uint8_t> block, const DeviceProfile& d)
   return validate(parsed.value(), d);
 }
 
-std::array<std::uint8_t, 5> status_pdu(FDiagnosis d) noexcept {
-  // Manual §6.3 table 6.3-1: length 5 incl. header, 0x81 status message, no slot,
-  // no status differentiation, error number.
-  return {0x05, 0x81, 0x00, 0x00, static_cast<std::uint8_t>(d)};
-}
-
-const char* to_string(FDiagnosis d) noexcept {
-  switch (d) {
-    case FDiagnosis::kNone: return "no error";
-    case FDiagnosis::kInternalDestAdd: return "internal F_Dest_Add error";
-    case FDiagnosis::kWrongDestAdd: return "wrong F_Dest_Add";
-    case FDiagnosis::kWrongSourceAdd: return "wrong F_Source_Add";
-    case FDiagnosis::kWrongWdTime: return "wrong F_WD_Time";
-    case FDiagnosis::kWrongSil: return "wrong SIL";
-    case FDiagnosis::kWrongCrcLength: return "wrong CRC length";
-    case FDiagnosis::kWrongBlockIdOrParVersion: return "wrong F_Block_ID or F_Par_Version";
-    case FDiagnosis::kWrongCrc1: return "wrong CRC1 over the F-parameters";
+const char* to_string(FParameterFault f) noexcept {
+  switch (f) {
+    case FParameterFault::kNone: return "no error";
+    case FParameterFault::kDestAddInvalid: return "internal F_Dest_Add error";
+    case FParameterFault::kDestAddMismatch: return "wrong F_Dest_Add";
+    case FParameterFault::kSourceAddInvalid: return "wrong F_Source_Add";
+    case FParameterFault::kWdTimeInvalid: return "wrong F_WD_Time";
+    case FParameterFault::kSilMismatch: return "wrong SIL";
+    case FParameterFault::kCrcLengthMismatch: return "wrong CRC length";
+    case FParameterFault::kVersionMismatch: return "wrong F_Block_ID or F_Par_Version";
+    case FParameterFault::kCrc1Mismatch: return "wrong CRC1 over the F-parameters";
   }
-  return "unknown F-parameter diagnosis";
+  return "unknown F-parameter fault";
 }
 
 }  // namespace rs4sim::profisafe

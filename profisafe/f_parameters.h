@@ -1,5 +1,5 @@
 #pragma once
-// The PROFIsafe F-parameter block (profisafe-v1.md §1, §2; device rules rs4-profisafe.md §8).
+// The PROFIsafe F-parameter block (profisafe-v1.md §1, §2).
 //
 //   offset 0  F_Prm_Flag1   b0 F_Check_SeqNr, b1 F_Check_iPar, b2-3 F_SIL, b4-5 F_CRC_Length
 //   offset 1  F_Prm_Flag2   b3-5 F_Block_ID, b6-7 F_Par_Version
@@ -10,7 +10,8 @@
 //
 // Syntax (parse_f_parameters) is apart from meaning (validate): parsing only rejects a
 // block that is not 10 bytes or has reserved bits set; validate() compares the fields
-// with a DeviceProfile and yields the RS4's diagnosis number (manual table 6.3-1).
+// with a DeviceProfile and names the first field the device refuses (FParameterFault);
+// how a device numbers these faults in its diagnosis is the device's business.
 
 #include "profisafe/errors.h"
 
@@ -42,7 +43,7 @@ struct FParameters {
   std::uint8_t block_id = 0;         // F_Block_ID, 0..7
   std::uint8_t par_version = 0;      // F_Par_Version, 0 = V1, 1 = V2 (2 bits on the wire)
   std::uint16_t source_add = 1;      // F_Source_Add
-  std::uint16_t dest_add = 504;      // F_Dest_Add (RS4: 500 + DP address)
+  std::uint16_t dest_add = 504;      // F_Dest_Add
   std::uint16_t wd_time_ms = 10;     // F_WD_Time
   std::uint16_t par_crc = 0;         // F_Par_CRC (CRC1) as carried in the block
   std::optional<std::uint32_t> ipar_crc;  // F_iPar_CRC (V2 only; not in the 10 bytes)
@@ -69,33 +70,21 @@ struct FParameters {
                                                      std::optional<std::uint32_t> ipar_crc = std::nullopt);
 
 // ---------------------------------------------------------------------------------
-// Device-side validation (rs4-profisafe.md §8; manual §6.3 table 6.3-1).
+// Device-side validation: the F-parameter checks of IEC 61784-3-3 (PROFIsafe), in the
+// order validate() makes them.
 
-// The RS4's F-parameter diagnosis numbers, byte 11 of the status PDU `05 81 00 00 nn`.
-// Wire values from the manual. (The generic PROFIsafe code 64 "F_Dest_Add mismatch" is not
-// in the RS4's table: the RS4 reports a wrong F_Dest_Add as 66.)
-enum class FDiagnosis : std::uint8_t {
-  kNone = 0,                        // 0  = Kein Fehler
-  kInternalDestAdd = 65,            // 65 = Interner Fehler bei F_Dest_Add
-  kWrongDestAdd = 66,               // 66 = Falsche F_Dest_Add
-  kWrongSourceAdd = 67,             // 67 = Falsche F_Source_Add
-  kWrongWdTime = 68,                // 68 = Falsche F_WD_Time Einstellung
-  kWrongSil = 69,                   // 69 = Falsche SIL Einstellung
-  kWrongCrcLength = 70,             // 70 = Falsche CRC Laenge
-  kWrongBlockIdOrParVersion = 71,   // 71 = Falsche F_Block_ID oder F_Par_Version
-  kWrongCrc1 = 72,                  // 72 = Falsche CRC1 ueber die F-Parameter
+enum class FParameterFault : std::uint8_t {
+  kNone = 0,
+  kDestAddInvalid,        // the device itself has no valid F_Dest_Add (0 or 65535)
+  kDestAddMismatch,       // F_Dest_Add is not the device's
+  kSourceAddInvalid,      // F_Source_Add 0, 65535 or outside the device's range
+  kWdTimeInvalid,         // F_WD_Time outside the device's range
+  kSilMismatch,           // F_SIL is not the device's
+  kCrcLengthMismatch,     // F_CRC_Length is not the device's
+  kVersionMismatch,       // F_Block_ID, F_Par_Version or F_Check_iPar; or no block layout
+  kCrc1Mismatch,          // F_Par_CRC is not CRC1 over the block
 };
-
-[[nodiscard]] const char* to_string(FDiagnosis d) noexcept;
-// "65 internal F_Dest_Add error" (the category's message).
-[[nodiscard]] std::string error_message(FDiagnosis d);
-constexpr const char* error_category_name(FDiagnosis) noexcept {
-  return "rs4sim.profisafe.fdiagnosis";
-}
-inline std::error_code make_error_code(FDiagnosis d) noexcept { return codec::make_error_code_of(d); }
-inline const std::error_category& fdiagnosis_category() noexcept {
-  return codec::category_of<FDiagnosis>();
-}
+[[nodiscard]] const char* to_string(FParameterFault f) noexcept;
 
 // What a device accepts: fixed values and ranges plus its own F_Dest_Add.
 struct DeviceProfile {
@@ -108,35 +97,25 @@ struct DeviceProfile {
   std::uint16_t max_source_add = 65534;
   std::uint16_t min_wd_time_ms = 10;
   std::uint16_t max_wd_time_ms = 1000;
-  // The device's own F_Dest_Add; 0 or 65535 = the device has no valid one (→ 65).
+  // The device's own F_Dest_Add; 0 or 65535 = the device has no valid one
+  // (kDestAddInvalid).
   std::uint16_t dest_add = 504;
-
-  // The RS4/PROFIsafe at a DP address: SIL2, 2-byte CRC, block 0, V1, WD 10..1000 ms,
-  // F_Dest_Add = 500 + address (§4.5, §6.2). Addresses above 126 are not valid DP
-  // station addresses; the profile then has no F_Dest_Add (dest_add = 0 → 65).
-  [[nodiscard]] static DeviceProfile rs4(unsigned dp_address) noexcept;
 };
 
 struct Validation {
-  FDiagnosis diagnosis = FDiagnosis::kNone;
+  FParameterFault fault = FParameterFault::kNone;
   std::uint16_t received_crc1 = 0;   // F_Par_CRC as received
-  std::uint16_t computed_crc1 = 0;   // CRC1 the device computed (for logging on 72)
-  [[nodiscard]] bool ok() const noexcept { return diagnosis == FDiagnosis::kNone; }
+  std::uint16_t computed_crc1 = 0;   // CRC1 the device computed (for logging a CRC1 fault)
+  [[nodiscard]] bool ok() const noexcept { return fault == FParameterFault::kNone; }
 };
 
-// Check the parameters against the profile. The first failing check in ascending code
-// order (65, 66, ..., 72) is reported. F_Check_iPar != profile is reported as 71.
+// Check the parameters against the profile. The first failing check in the enum's order
+// is reported. F_Check_iPar != profile is reported as kVersionMismatch.
 [[nodiscard]] Validation validate(const FParameters& p, const DeviceProfile& profile) noexcept;
 
 // Parse + validate raw bytes as the device receives them: a block that does not parse
-// (wrong size, reserved bits) is reported as 71 (not a block layout the device knows).
+// (wrong size, reserved bits) is reported as kVersionMismatch (not a block layout the
+// device knows).
 [[nodiscard]] Validation validate(std::span<const std::uint8_t> block, const DeviceProfile& profile) noexcept;
 
-// The 5 bytes after the 6 standard diagnosis bytes (manual §6.3, bytes 7..11):
-// length 5, type 0x81 status message, slot 0, no differentiation, error number.
-[[nodiscard]] std::array<std::uint8_t, 5> status_pdu(FDiagnosis d) noexcept;
-
 }  // namespace rs4sim::profisafe
-
-template <>
-struct std::is_error_code_enum<rs4sim::profisafe::FDiagnosis> : std::true_type {};

@@ -4,7 +4,7 @@
 //   V1 (2-byte CRC2):  F-data[N] | status/control | consecutive number | CRC2 hi | CRC2 lo
 //   V2 (3-byte CRC2):  F-data[N] | status/control | CRC2 (3 bytes, high first)
 //
-// The RS4 uses V1 with N = 1: five bytes each way. CRC2 runs over F-data, the
+// V1 with N = 1 is five bytes each way. CRC2 runs over F-data, the
 // status/control byte and the consecutive number (V1: only when F_Check_SeqNr = 1, or as
 // the Crc2Variant says; V2: always, as a 4-byte virtual number that is not sent).
 //

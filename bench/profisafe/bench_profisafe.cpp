@@ -68,7 +68,7 @@ BENCHMARK(BM_Crc1);
 // One bus cycle: host request → device check + response → host check.
 void BM_HostDeviceCycle(benchmark::State& state) {
   FHost host(FHostConfig{});
-  FDevice dev(FDeviceConfig{DeviceProfile::rs4(4), 1, {}});
+  FDevice dev(FDeviceConfig{DeviceProfile{}, 1, {}});
   (void)dev.set_parameters(host.parameter_block());
   const std::uint8_t in = 0x80;
   dev.set_input(std::span<const std::uint8_t>(&in, 1));

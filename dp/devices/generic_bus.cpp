@@ -73,7 +73,7 @@ std::size_t GenericBus::slaves_in_data_exchange() const {
   std::size_t n = 0;
   for (const auto& s : slaves_) {
     const auto st = master_->slave_status(s->address());
-    if (st && st->state == master::SlaveState::kDataExchange) ++n;
+    if (st && st->state == master::PollState::kDataExchange) ++n;
   }
   return n;
 }

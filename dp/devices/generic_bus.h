@@ -17,7 +17,7 @@ struct GenericBusConfig {
   std::uint8_t master_address = 1;
   std::vector<GenericSlaveConfig> slaves;
   link::MemoryBusConfig bus;  // wire model off by default: replies arrive at once
-  master::Baud baud = master::Baud::k12M;
+  BaudRate baud = BaudRate::k12M;
   Duration cycle_target = std::chrono::milliseconds(10);
   std::chrono::milliseconds watchdog{100};
 };

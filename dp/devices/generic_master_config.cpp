@@ -4,10 +4,10 @@
 
 namespace rs4sim::dp::devices {
 
-master::SlaveConfig master_entry_for(const GenericSlaveConfig& slave, std::chrono::milliseconds watchdog) {
+master::SlaveEntry master_entry_for(const GenericSlaveConfig& slave, std::chrono::milliseconds watchdog) {
   auto summary = pdu::summarize_cfg(slave.cfg, pdu::CfgService::kChkCfg);
   if (!summary) throw std::system_error(summary.error(), "generic slave configuration");
-  master::SlaveConfig m;
+  master::SlaveEntry m;
   m.address = slave.address;
   m.prm.station_status.lock_req = true;
   m.prm.station_status.wd_on = true;

@@ -10,7 +10,7 @@
 namespace rs4sim::dp::devices {
 
 // Throws std::system_error for identifiers that do not parse (§2.4).
-master::SlaveConfig master_entry_for(const GenericSlaveConfig& slave,
+master::SlaveEntry master_entry_for(const GenericSlaveConfig& slave,
                                      std::chrono::milliseconds watchdog = std::chrono::milliseconds(100));
 
 }  // namespace rs4sim::dp::devices

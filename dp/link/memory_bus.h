@@ -17,7 +17,7 @@
 // delay, and silence a station (it neither sends nor receives).
 
 #include "dp/fdl/decoder.h"
-#include "dp/link/baud_rate.h"
+#include "dp/time/baud_rate.h"
 #include "dp/link/counters.h"
 #include "dp/link/deadline_tree.h"
 #include "dp/station.h"

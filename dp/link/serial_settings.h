@@ -8,7 +8,7 @@
 // error (LinkException), while a pseudo-terminal, which has no line and may drop parity or
 // the exact rate, only produces a note and carries on.
 
-#include "dp/link/baud_rate.h"
+#include "dp/time/baud_rate.h"
 #include "dp/link/link_error.h"
 
 #include <functional>

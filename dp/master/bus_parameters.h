@@ -2,8 +2,10 @@
 // Bus parameters of the class 1 master (spec/profibus-dp.md §1.1, §1.7).
 //
 // All FDL times are counted in bit times (Tbit = 1/baud). The defaults per baud rate are
-// the table of §1.7; `validate` checks the constraints of §1.7 ([ELPRO p91]).
+// the table of §1.7 (dp/time/baud_rate.h); `validate` checks the constraints of §1.7
+// ([ELPRO p91]).
 
+#include "dp/time/baud_rate.h"
 #include "dp/time/clock.h"
 
 #include <cstdint>
@@ -11,25 +13,8 @@
 
 namespace rs4sim::dp::master {
 
-// Baud rates of §1.1 in bit/s (31.25 kbit/s is MBP/PA only and not offered).
-enum class Baud : std::uint32_t {
-  k9k6 = 9'600,
-  k19k2 = 19'200,
-  k45k45 = 45'450,
-  k93k75 = 93'750,
-  k187k5 = 187'500,
-  k500k = 500'000,
-  k1M5 = 1'500'000,
-  k3M = 3'000'000,
-  k6M = 6'000'000,
-  k12M = 12'000'000,
-};
-
-inline constexpr std::uint32_t kTsynBits = 33;       // idle before every request (§1.7)
-inline constexpr std::uint32_t kBitsPerCharacter = 11;  // start, 8 data, parity, stop (§1.1)
-
 struct BusParameters {
-  Baud baud = Baud::k1M5;
+  BaudRate baud = BaudRate::k1M5;
   std::uint32_t tsl = 300;       // slot time: wait for the first reply character
   std::uint32_t min_tsdr = 11;   // responder's minimum delay
   std::uint32_t max_tsdr = 150;  // responder's maximum delay
@@ -42,10 +27,10 @@ struct BusParameters {
 
   // The §1.7 default table for `baud` (TSL, TSDR, TSET, TQUI) with TID1 = 37 and
   // TID2 = max TSDR.
-  static BusParameters defaults_for(Baud baud);
+  static BusParameters defaults_for(BaudRate baud);
 
   // Duration of `bits` bit times at this baud rate, rounded up to the next nanosecond.
-  [[nodiscard]] Duration bits(std::uint64_t n) const;
+  [[nodiscard]] Duration bits(std::uint64_t n) const { return bit_time(baud, n); }
   // Wire time of `characters` UART characters (11 bits each, §1.1).
   [[nodiscard]] Duration characters(std::uint64_t n) const {
     return bits(n * kBitsPerCharacter);

@@ -54,7 +54,6 @@ Dpv1Result Dpv1Client::result_for(const Dpv1Job& job) const {
 }
 
 void Dpv1Client::complete(Dpv1Result r, EventQueue& events) {
-  (r.error ? failed_ : ok_)++;
   active_.reset();
   events.push(std::move(r));
 }

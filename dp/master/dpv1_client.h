@@ -61,9 +61,6 @@ class Dpv1Client {
   // Completes the job in progress with `active_error` and every queued one with `rest`.
   void abort_all(std::error_code active_error, std::error_code rest, EventQueue& events);
 
-  [[nodiscard]] std::uint64_t completed_ok() const { return ok_; }
-  [[nodiscard]] std::uint64_t completed_failed() const { return failed_; }
-
  private:
   struct Active {
     Dpv1Job job;
@@ -80,8 +77,6 @@ class Dpv1Client {
   Duration timeout_;
   std::deque<Dpv1Job> queue_;
   std::optional<Active> active_;
-  std::uint64_t ok_ = 0;
-  std::uint64_t failed_ = 0;
 };
 
 }  // namespace rs4sim::dp::master

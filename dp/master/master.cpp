@@ -21,7 +21,7 @@ Master::Master(MasterConfig config)
       phase_(config_.claim_token ? MasterPhase::kListening : MasterPhase::kRunning) {
   index_.fill(-1);
   slaves_.reserve(config_.slaves.size());
-  for (const SlaveConfig& s : config_.slaves) {
+  for (const SlaveEntry& s : config_.slaves) {
     index_[s.address] = static_cast<std::int16_t>(slaves_.size());
     slaves_.emplace_back(s, config_.fdl_status_first);
   }

@@ -9,7 +9,7 @@
 
 namespace rs4sim::dp::master {
 
-std::error_code validate(const SlaveConfig& s) {
+std::error_code validate(const SlaveEntry& s) {
   const auto bad = make_error_code(MasterError::kBadSlaveConfig);
   if (s.address > pdu::sap::kMaxSlaveAddress) return bad;
   fdl::DataUnit prm;
@@ -37,7 +37,7 @@ std::error_code validate(const MasterConfig& m) {
   }
   std::array<bool, 128> seen{};
   seen[m.address] = true;
-  for (const SlaveConfig& s : m.slaves) {
+  for (const SlaveEntry& s : m.slaves) {
     if (auto ec = validate(s)) return ec;
     if (seen[s.address]) return make_error_code(MasterError::kDuplicateSlave);
     seen[s.address] = true;

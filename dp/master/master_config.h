@@ -19,7 +19,7 @@ namespace rs4sim::dp::master {
 
 using namespace std::chrono_literals;
 
-struct SlaveConfig {
+struct SlaveEntry {
   std::uint8_t address = 3;  // 0..125 (§1.4)
   // Set_Prm (§2.3): Station_Status (Lock_Req, WD_On, Sync/Freeze_Req), WD factors, min
   // TSDR, Ident_Number, Group_Ident, DPV1_Status bytes (§3.1) and User_Prm_Data.
@@ -40,7 +40,7 @@ struct SlaveConfig {
 
 struct MasterConfig {
   std::uint8_t address = 1;  // own FDL address TS, 0..126
-  BusParameters bus = BusParameters::defaults_for(Baud::k1M5);
+  BusParameters bus = BusParameters::defaults_for(BaudRate::k1M5);
   // Target time between the starts of two poll cycles; a cycle that takes longer starts
   // the next one at once.
   Duration cycle_target = 10ms;
@@ -55,12 +55,12 @@ struct MasterConfig {
   Duration ready_timeout = 1s;
   // Period of the Global_Control Operate/Clear broadcast (§4.3); 0 = only on request.
   Duration global_control_interval = 0s;
-  std::vector<SlaveConfig> slaves;  // up to 125, polled in this order
+  std::vector<SlaveEntry> slaves;  // up to 125, polled in this order
 };
 
 // Checks a slave entry (address range, Set_Prm length ≤ 244, Chk_Cfg 1..244 bytes and
 // consistent with input_length/output_length, image lengths ≤ 244, timeout > 0).
-std::error_code validate(const SlaveConfig& s);
+std::error_code validate(const SlaveEntry& s);
 // Checks the master address, the bus parameters, every slave and that slave addresses
 // are unique and differ from the master's.
 std::error_code validate(const MasterConfig& m);

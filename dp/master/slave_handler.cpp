@@ -7,30 +7,30 @@
 
 namespace rs4sim::dp::master {
 
-const char* to_string(SlaveState s) {
+const char* to_string(PollState s) {
   switch (s) {
-    case SlaveState::kStatusRequest: return "StatusRequest";
-    case SlaveState::kReadDiag: return "ReadDiag";
-    case SlaveState::kSetPrm: return "SetPrm";
-    case SlaveState::kChkCfg: return "ChkCfg";
-    case SlaveState::kWaitReady: return "WaitReady";
-    case SlaveState::kDataExchange: return "DataExchange";
+    case PollState::kStatusRequest: return "StatusRequest";
+    case PollState::kReadDiag: return "ReadDiag";
+    case PollState::kSetPrm: return "SetPrm";
+    case PollState::kChkCfg: return "ChkCfg";
+    case PollState::kWaitReady: return "WaitReady";
+    case PollState::kDataExchange: return "DataExchange";
   }
   return "?";
 }
 
-SlaveHandler::SlaveHandler(const SlaveConfig& config, bool fdl_status_first)
+SlaveHandler::SlaveHandler(const SlaveEntry& config, bool fdl_status_first)
     : config_(config),
       fdl_status_first_(fdl_status_first),
-      state_(fdl_status_first ? SlaveState::kStatusRequest : SlaveState::kReadDiag),
+      state_(fdl_status_first ? PollState::kStatusRequest : PollState::kReadDiag),
       dpv1_(config.address, config.c1_response_timeout),
       alarms_(config.address, config.prm.dpv1 ? config.prm.dpv1->alarm_mode : 0) {
-  (void)pdu::encode_set_prm(config_.prm, prm_du_);  // validated by validate(SlaveConfig)
+  (void)pdu::encode_set_prm(config_.prm, prm_du_);  // validated by validate(SlaveEntry)
   outputs_.resize(config_.output_length, 0);
 }
 
-SlaveState SlaveHandler::initial_state() const {
-  return fdl_status_first_ ? SlaveState::kStatusRequest : SlaveState::kReadDiag;
+PollState SlaveHandler::initial_state() const {
+  return fdl_status_first_ ? PollState::kStatusRequest : PollState::kReadDiag;
 }
 
 std::uint8_t SlaveHandler::alarm_dsap() const {
@@ -53,11 +53,11 @@ Request SlaveHandler::make(SlaveContext& ctx, RequestKind kind, fdl::FrameContro
 std::optional<Request> SlaveHandler::next_request(SlaveContext& ctx, TimePoint now) {
   if (turn_.count >= kMaxRequestsPerTurn) return std::nullopt;
   std::optional<Request> r;
-  if (state_ != SlaveState::kDataExchange) {
+  if (state_ != PollState::kDataExchange) {
     if (turn_.count > 0 && !continue_) return std::nullopt;
     continue_ = false;
-    if (state_ == SlaveState::kWaitReady && now - wait_ready_since_ >= ctx.ready_timeout) {
-      restart(ctx, make_error_code(MasterError::kStartupTimeout), SlaveState::kReadDiag);
+    if (state_ == PollState::kWaitReady && now - wait_ready_since_ >= ctx.ready_timeout) {
+      restart(ctx, make_error_code(MasterError::kStartupTimeout), PollState::kReadDiag);
     }
     r = startup_request(ctx);
   } else {
@@ -76,20 +76,20 @@ std::optional<Request> SlaveHandler::startup_request(SlaveContext& ctx) {
   const std::uint8_t addr = config_.address;
   using F = fdl::RequestFunction;
   switch (state_) {
-    case SlaveState::kStatusRequest:  // `10 DA SA 49 FCS 16`, no FCB (§1.8, §4.2 step 0)
+    case PollState::kStatusRequest:  // `10 DA SA 49 FCS 16`, no FCB (§1.8, §4.2 step 0)
       return make(ctx, RequestKind::kFdlStatus, fdl::FcbInitiator::unsequenced(F::kFdlStatus),
                   std::nullopt, {}, 6);
-    case SlaveState::kReadDiag:
-    case SlaveState::kWaitReady:
+    case PollState::kReadDiag:
+    case PollState::kWaitReady:
       return make(ctx, RequestKind::kDiag, ctx.fcb.next(addr, F::kSrdHigh), sap::kSlaveDiag, {},
                   fdl::kMaxTelegramSize);
-    case SlaveState::kSetPrm:
+    case PollState::kSetPrm:
       return make(ctx, RequestKind::kSetPrm, ctx.fcb.next(addr, F::kSrdHigh), sap::kSetPrm,
                   bytes(prm_du_), 6);
-    case SlaveState::kChkCfg:
+    case PollState::kChkCfg:
       return make(ctx, RequestKind::kChkCfg, ctx.fcb.next(addr, F::kSrdHigh), sap::kChkCfg,
                   bytes(config_.cfg), 6);
-    case SlaveState::kDataExchange:
+    case PollState::kDataExchange:
       break;
   }
   return std::nullopt;
@@ -154,12 +154,12 @@ std::error_code SlaveHandler::set_outputs(std::span<const std::uint8_t> outputs)
 }
 
 std::span<const std::uint8_t> SlaveHandler::inputs() const {
-  if (state_ != SlaveState::kDataExchange) return {};
+  if (state_ != PollState::kDataExchange) return {};
   return {inputs_.data(), inputs_.size()};
 }
 
 std::error_code SlaveHandler::submit(Dpv1Job job) {
-  if (state_ != SlaveState::kDataExchange) return make_error_code(MasterError::kNotInDataExchange);
+  if (state_ != PollState::kDataExchange) return make_error_code(MasterError::kNotInDataExchange);
   if (!config_.dpv1_enabled()) return make_error_code(MasterError::kDpv1NotEnabled);
   return dpv1_.submit(std::move(job));
 }

@@ -25,7 +25,7 @@
 
 namespace rs4sim::dp::master {
 
-enum class SlaveState : std::uint8_t {
+enum class PollState : std::uint8_t {
   kStatusRequest,  // §4.2 step 0: FDL_Status
   kReadDiag,       // step 1: first Slave_Diag (ident, Master_Add)
   kSetPrm,         // step 2
@@ -33,7 +33,7 @@ enum class SlaveState : std::uint8_t {
   kWaitReady,      // step 4: Slave_Diag until ready
   kDataExchange,   // step 5: cyclic Data_Exchange
 };
-const char* to_string(SlaveState s);
+const char* to_string(PollState s);
 
 enum class RequestKind : std::uint8_t {
   kFdlStatus, kDiag, kSetPrm, kChkCfg, kDataExchange, kDpv1, kAlarmAck
@@ -45,7 +45,7 @@ struct Request {
   std::size_t max_reply_bytes = 6;  // longest reply accepted, for the slot deadline
 };
 
-struct SlaveCounters {
+struct PollCounters {
   std::uint64_t requests = 0;          // telegrams sent to the slave (retries included)
   std::uint64_t retries = 0;           // re-sent after a missing reply (§1.8)
   std::uint64_t no_answer = 0;         // gave up after max_retry_limit retries
@@ -58,9 +58,9 @@ struct SlaveCounters {
 
 struct SlaveStatus {
   std::uint8_t address = 0;
-  SlaveState state = SlaveState::kStatusRequest;
+  PollState state = PollState::kStatusRequest;
   const char* state_name = "";
-  SlaveCounters counters;
+  PollCounters counters;
   fdl::DataUnit last_diag;      // the last Slave_Diag DU received
   std::error_code last_error;   // the last fault (kept after recovery)
   std::size_t alarms_outstanding = 0;
@@ -81,7 +81,7 @@ class SlaveHandler {
  public:
   static constexpr unsigned kMaxRequestsPerTurn = 8;
 
-  SlaveHandler(const SlaveConfig& config, bool fdl_status_first);
+  SlaveHandler(const SlaveEntry& config, bool fdl_status_first);
 
   void begin_turn() { turn_ = {}; }
   // The next request of this turn, nullopt when the turn is over.
@@ -101,9 +101,9 @@ class SlaveHandler {
   std::error_code acknowledge_alarm(std::uint8_t slot, std::uint8_t type, std::uint8_t seq_nr);
 
   [[nodiscard]] std::uint8_t address() const { return config_.address; }
-  [[nodiscard]] SlaveState state() const { return state_; }
-  [[nodiscard]] bool in_data_exchange() const { return state_ == SlaveState::kDataExchange; }
-  [[nodiscard]] const SlaveConfig& config() const { return config_; }
+  [[nodiscard]] PollState state() const { return state_; }
+  [[nodiscard]] bool in_data_exchange() const { return state_ == PollState::kDataExchange; }
+  [[nodiscard]] const SlaveEntry& config() const { return config_; }
   [[nodiscard]] SlaveStatus status() const;
 
  private:
@@ -117,7 +117,7 @@ class SlaveHandler {
   std::optional<Request> startup_request(SlaveContext& ctx);
   std::optional<Request> cyclic_request(SlaveContext& ctx, TimePoint now);
   Request data_exchange_request(SlaveContext& ctx) const;
-  [[nodiscard]] SlaveState initial_state() const;
+  [[nodiscard]] PollState initial_state() const;
   [[nodiscard]] std::uint8_t alarm_dsap() const;
 
   // Reply handlers (slave_replies.cpp).
@@ -132,14 +132,14 @@ class SlaveHandler {
 
   // Transitions.
   void fault(SlaveContext& ctx, std::error_code reason);
-  void restart(SlaveContext& ctx, std::error_code reason, SlaveState next);
+  void restart(SlaveContext& ctx, std::error_code reason, PollState next);
   void enter_data_exchange(SlaveContext& ctx);
-  void leave_data_exchange(SlaveContext& ctx, std::error_code reason, SlaveState next);
+  void leave_data_exchange(SlaveContext& ctx, std::error_code reason, PollState next);
 
-  SlaveConfig config_;
+  SlaveEntry config_;
   fdl::DataUnit prm_du_;
   bool fdl_status_first_;
-  SlaveState state_;
+  PollState state_;
   RequestKind last_kind_ = RequestKind::kFdlStatus;
   Turn turn_;
   bool continue_ = false;      // chain the next start-up step in this turn
@@ -150,7 +150,7 @@ class SlaveHandler {
   fdl::DataUnit last_diag_;
   std::error_code last_error_;
   std::error_code reported_;   // last fault reported as an event (reset in DX)
-  SlaveCounters counters_;
+  PollCounters counters_;
   Dpv1Client dpv1_;
   AlarmTracker alarms_;
 };

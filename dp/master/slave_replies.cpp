@@ -56,7 +56,7 @@ void SlaveHandler::on_status_reply(SlaveContext& ctx, const Reply& r) {
     fault(ctx, make_error_code(MasterError::kNotASlave));
     return;
   }
-  state_ = SlaveState::kReadDiag;
+  state_ = PollState::kReadDiag;
   continue_ = true;
 }
 
@@ -68,15 +68,15 @@ void SlaveHandler::on_diag_reply(SlaveContext& ctx, const Reply& r) {
   if (!diag) {
     ++counters_.invalid_responses;
     restart(ctx, shaped ? make_error_code(MasterError::kInvalidResponse) : negative_reply(r),
-            SlaveState::kReadDiag);
+            PollState::kReadDiag);
     return;
   }
   ++counters_.diag_reads;
-  record_diag(ctx, r.data, state_ == SlaveState::kDataExchange);
+  record_diag(ctx, r.data, state_ == PollState::kDataExchange);
   switch (state_) {
-    case SlaveState::kReadDiag: on_first_diag(ctx, diag.value()); break;
-    case SlaveState::kWaitReady: on_ready_diag(ctx, diag.value()); break;
-    case SlaveState::kDataExchange: on_cyclic_diag(ctx, diag.value()); break;
+    case PollState::kReadDiag: on_first_diag(ctx, diag.value()); break;
+    case PollState::kWaitReady: on_ready_diag(ctx, diag.value()); break;
+    case PollState::kDataExchange: on_cyclic_diag(ctx, diag.value()); break;
     default: break;
   }
 }
@@ -91,7 +91,7 @@ void SlaveHandler::on_first_diag(SlaveContext& ctx, const pdu::SlaveDiag& d) {
     fault(ctx, make_error_code(MasterError::kMasterLock));
     return;
   }
-  state_ = SlaveState::kSetPrm;
+  state_ = PollState::kSetPrm;
   continue_ = true;
 }
 
@@ -99,17 +99,17 @@ void SlaveHandler::on_ready_diag(SlaveContext& ctx, const pdu::SlaveDiag& d) {
   // §4.2 step 4: faults restart at step 1, Prm_Req at step 2; wait while not ready.
   const auto err = [](MasterError e) { return make_error_code(e); };
   if (d.ident_number != config_.prm.ident_number) {
-    restart(ctx, err(MasterError::kIdentMismatch), SlaveState::kReadDiag);
+    restart(ctx, err(MasterError::kIdentMismatch), PollState::kReadDiag);
   } else if (d.status1.prm_fault) {
-    restart(ctx, err(MasterError::kPrmFault), SlaveState::kReadDiag);
+    restart(ctx, err(MasterError::kPrmFault), PollState::kReadDiag);
   } else if (d.status1.cfg_fault) {
-    restart(ctx, err(MasterError::kCfgFault), SlaveState::kReadDiag);
+    restart(ctx, err(MasterError::kCfgFault), PollState::kReadDiag);
   } else if (d.status1.not_supported) {
-    restart(ctx, err(MasterError::kNotSupported), SlaveState::kReadDiag);
+    restart(ctx, err(MasterError::kNotSupported), PollState::kReadDiag);
   } else if (d.status2.prm_req) {
-    state_ = SlaveState::kSetPrm;
+    state_ = PollState::kSetPrm;
   } else if (d.master_add != ctx.master_address) {
-    restart(ctx, err(MasterError::kMasterLock), SlaveState::kReadDiag);
+    restart(ctx, err(MasterError::kMasterLock), PollState::kReadDiag);
   } else if (!d.status1.station_not_ready && !d.status2.stat_diag) {
     enter_data_exchange(ctx);
     continue_ = true;  // first Data_Exchange in this turn
@@ -126,14 +126,14 @@ void SlaveHandler::on_cyclic_diag(SlaveContext& ctx, const pdu::SlaveDiag& d) {
     leave_data_exchange(ctx, err(d.status1.prm_fault   ? MasterError::kPrmFault
                                  : d.status1.cfg_fault ? MasterError::kCfgFault
                                                        : MasterError::kNotSupported),
-                        SlaveState::kReadDiag);
+                        PollState::kReadDiag);
   } else if (d.status2.prm_req || d.status1.station_not_ready ||
              d.master_add != ctx.master_address) {
     // §4.4: slave reset or watchdog expiry ⇒ re-parameterise; another master ⇒ step 1.
     const bool foreign = d.master_add != ctx.master_address &&
                          d.master_add != pdu::sap::kNoMasterAddress;
     leave_data_exchange(ctx, err(MasterError::kLeftDataExchange),
-                        foreign ? SlaveState::kReadDiag : SlaveState::kSetPrm);
+                        foreign ? PollState::kReadDiag : PollState::kSetPrm);
   }
 }
 
@@ -141,13 +141,13 @@ void SlaveHandler::on_prm_cfg_reply(SlaveContext& ctx, const Reply& r, TimePoint
   // Set_Prm/Chk_Cfg are confirmed by SC only; acceptance shows in the next diag (§1.6).
   if (!r.empty_ack()) {
     ++counters_.invalid_responses;
-    restart(ctx, negative_reply(r), SlaveState::kReadDiag);
+    restart(ctx, negative_reply(r), PollState::kReadDiag);
     return;
   }
-  if (state_ == SlaveState::kSetPrm) {
-    state_ = SlaveState::kChkCfg;
+  if (state_ == PollState::kSetPrm) {
+    state_ = PollState::kChkCfg;
   } else {
-    state_ = SlaveState::kWaitReady;
+    state_ = PollState::kWaitReady;
     wait_ready_since_ = now;
   }
   continue_ = true;
@@ -159,14 +159,14 @@ void SlaveHandler::on_dx_reply(SlaveContext& ctx, const Reply& r) {
   std::span<const std::uint8_t> in;
   if (r.has_saps || !(r.carries_data() || r.empty_ack())) {
     ++counters_.invalid_responses;
-    leave_data_exchange(ctx, negative_reply(r), SlaveState::kReadDiag);
+    leave_data_exchange(ctx, negative_reply(r), PollState::kReadDiag);
     return;
   }
   if (r.carries_data()) in = r.data;
   if (in.size() != config_.input_length) {
     ++counters_.invalid_responses;
     leave_data_exchange(ctx, make_error_code(MasterError::kInputLengthMismatch),
-                        SlaveState::kReadDiag);
+                        PollState::kReadDiag);
     return;
   }
   std::copy(in.begin(), in.end(), inputs_.begin());
@@ -189,8 +189,8 @@ void SlaveHandler::fault(SlaveContext& ctx, std::error_code reason) {
   }
 }
 
-void SlaveHandler::restart(SlaveContext& ctx, std::error_code reason, SlaveState next) {
-  if (state_ == SlaveState::kDataExchange) {
+void SlaveHandler::restart(SlaveContext& ctx, std::error_code reason, PollState next) {
+  if (state_ == PollState::kDataExchange) {
     leave_data_exchange(ctx, reason, next);
     return;
   }
@@ -200,7 +200,7 @@ void SlaveHandler::restart(SlaveContext& ctx, std::error_code reason, SlaveState
 }
 
 void SlaveHandler::enter_data_exchange(SlaveContext& ctx) {
-  state_ = SlaveState::kDataExchange;
+  state_ = PollState::kDataExchange;
   reported_ = {};
   diag_needed_ = false;
   inputs_.assign(config_.input_length, 0);
@@ -209,7 +209,7 @@ void SlaveHandler::enter_data_exchange(SlaveContext& ctx) {
 }
 
 void SlaveHandler::leave_data_exchange(SlaveContext& ctx, std::error_code reason,
-                                       SlaveState next) {
+                                       PollState next) {
   ++counters_.left_data_exchange;
   state_ = next;
   continue_ = false;

@@ -10,7 +10,7 @@
 
 namespace {
 
-void check(const rs4sim::gsd::SlaveConfig& c) {
+void check(const rs4sim::gsd::SlaveSetup& c) {
   // Set_Prm DU ≤ 244 bytes = 7 standard bytes + user data (profibus-dp.md §2.3).
   if (c.user_prm_data.size() > 237) __builtin_trap();
   if (c.cfg.empty()) return;

@@ -12,7 +12,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace rs4sim::profisafe;
   if (size < kFParametersSize) return 0;
-  FDevice dev(FDeviceConfig{DeviceProfile::rs4(4), 1, {}});
+  FDevice dev(FDeviceConfig{DeviceProfile{}, 1, {}});
   (void)dev.set_parameters(std::span<const std::uint8_t>(data, kFParametersSize));
   const std::uint8_t input = 0xA5;
   dev.set_input(std::span<const std::uint8_t>(&input, 1));

@@ -11,17 +11,18 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace rs4sim::profisafe;
   const std::span<const std::uint8_t> in(data, size);
-  const unsigned address = size > 0 ? data[0] : 4u;
-  const DeviceProfile profile = DeviceProfile::rs4(address);
+  // The device's own F_Dest_Add from the first byte: 0 (none), 4, ..., 504 (the default), ...
+  DeviceProfile profile;
+  profile.dest_add = size > 0 ? static_cast<std::uint16_t>(data[0] << 2) : std::uint16_t{504};
   const Validation from_bytes = validate(in, profile);
   const auto parsed = parse_f_parameters(in);
   if (!parsed) {
-    if (from_bytes.diagnosis != FDiagnosis::kWrongBlockIdOrParVersion) std::abort();
+    if (from_bytes.fault != FParameterFault::kVersionMismatch) std::abort();
     return 0;
   }
   const auto again = encode_f_parameters_raw(parsed.value());
   if (std::memcmp(again.data(), data, kFParametersSize) != 0) std::abort();
-  if (validate(parsed.value(), profile).diagnosis != from_bytes.diagnosis) std::abort();
-  if (from_bytes.ok() && status_pdu(from_bytes.diagnosis)[4] != 0) std::abort();
+  if (validate(parsed.value(), profile).fault != from_bytes.fault) std::abort();
+  if (from_bytes.ok() && from_bytes.received_crc1 != from_bytes.computed_crc1) std::abort();
   return 0;
 }

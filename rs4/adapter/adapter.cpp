@@ -3,6 +3,9 @@
 #include "rs4/adapter/adapter.h"
 #include "rs4/adapter/rs4_gsd.h"
 
+#include "rs4/safety/diagnosis.h"
+#include "rs4/safety/profile.h"
+
 #include <algorithm>
 #include <string>
 
@@ -14,7 +17,7 @@ profisafe::FDeviceConfig fdevice_config(std::optional<std::uint8_t> address) {
   profisafe::FDeviceConfig c;
   // §2: F_Dest_Add = 500 + address. Without a valid address the profile has no
   // F_Dest_Add and every block is refused with 65 (internal F_Dest_Add error).
-  c.profile = profisafe::DeviceProfile::rs4(address ? *address : 127U);
+  c.profile = safety::device_profile(address ? *address : 127U);
   c.data_size = 1;
   return c;
 }
@@ -156,7 +159,7 @@ dp::slave::PrmVerdict Adapter::check_parameters(const dp::pdu::SetPrm& prm, Time
   const auto v = fdevice_.set_parameters(user.subspan(kFBlockHeader.size()));
   // §8: the status PDU 05 81 00 00 nn follows the 6 standard diagnosis bytes; a refused
   // block sets Ext_Diag, the slave reports Prm_Fault and stays out of data exchange.
-  const auto pdu = fdevice_.diagnosis_status_pdu();
+  const auto pdu = safety::status_pdu(safety::diagnosis(v.fault));
   if (control_) control_->set_device_diagnosis(pdu, !v.ok(), false);
   prm_refused_ = !v.ok();
   if (!v.ok()) {

@@ -119,7 +119,7 @@ struct AdapterView {
   std::array<std::uint8_t, kPduSize> input_pdu{};
   std::array<std::uint8_t, kPduSize> output_pdu{};
   profisafe::FDeviceState fdevice = profisafe::FDeviceState::kNoParameters;
-  scanner::OperatingState rs4 = scanner::OperatingState::kOff;
+  scanner::ScannerState rs4 = scanner::ScannerState::kOff;
   bool field_pair_error = false;
   bool error_active = false;                    // diagnosis alarm "coming" outstanding
 };

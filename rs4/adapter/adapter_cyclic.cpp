@@ -7,8 +7,8 @@
 namespace rs4sim::rs4::adapter {
 
 namespace {
-bool rs4_operational(scanner::OperatingState s) noexcept {
-  return s == scanner::OperatingState::kMeasuring || s == scanner::OperatingState::kError;
+bool rs4_operational(scanner::ScannerState s) noexcept {
+  return s == scanner::ScannerState::kMeasuring || s == scanner::ScannerState::kError;
 }
 }  // namespace
 
@@ -199,7 +199,7 @@ std::uint8_t Adapter::compose_input_byte(TimePoint now) const noexcept {
   InputBits bits;
   bits.ossd = ossd_release_allowed(now);
   bits.warning_output_active = st.warning_output;
-  bits.error = st.fault || st.state == scanner::OperatingState::kError || field_pair_error_;
+  bits.error = st.fault || st.state == scanner::ScannerState::kError || field_pair_error_;
   bits.not_operational = !rs4_up_ || !released_ || !rs4_operational(st.state);
   bits.rs232_active = rs232_through_;
   bits.proxy_request = proxy_request_;

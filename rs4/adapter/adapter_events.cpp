@@ -38,8 +38,8 @@ void Adapter::capture_forwarding() {
   const auto want = forwarding_.mask & (protocol::kForwardMeasurement | protocol::kForwardAlive);
   if (want == 0 || forwarding_.telegram) return;
   const auto st = scanner_.status();
-  const bool scanning = (st.state == scanner::OperatingState::kMeasuring ||
-                         st.state == scanner::OperatingState::kError) && st.scan_counter != 0;
+  const bool scanning = (st.state == scanner::ScannerState::kMeasuring ||
+                         st.state == scanner::ScannerState::kError) && st.scan_counter != 0;
   if (!scanning) return;
   const auto scan = scanner_.last_scan().scan_number;
   if (forwarding_.last_scan && *forwarding_.last_scan == scan) return;

@@ -13,7 +13,7 @@ protocol::TelegramPrefix prefix_of(const scanner::Scanner& rs4) {
   const auto st = rs4.status();
   protocol::TelegramPrefix p;
   auto& o = p.options;
-  o.state = static_cast<protocol::OperatingState>(st.state);  // same values (§6 option 1)
+  o.state = static_cast<protocol::Option1State>(st.state);  // same values (§6 option 1)
   o.flags.protective_field_occupied = st.protective_violated;
   o.flags.warning_field_occupied = st.warning_violated;
   o.flags.warning = st.contamination_warning;
@@ -41,7 +41,7 @@ std::vector<std::uint8_t> report_telegram(protocol::TelegramCode code, const sca
 
 bool scanning(const scanner::Scanner& rs4) {
   const auto s = rs4.status().state;
-  return (s == scanner::OperatingState::kMeasuring || s == scanner::OperatingState::kError) &&
+  return (s == scanner::ScannerState::kMeasuring || s == scanner::ScannerState::kError) &&
          rs4.status().scan_counter != 0;
 }
 

@@ -36,7 +36,7 @@ gsd::Result<Rs4MasterEntry> rs4_master_entry(const Rs4MasterOptions& options) {
   if (!overrides(options.overrides, "F_WD_Time")) {
     request.overrides.push_back({"F_WD_Time", options.f_wd_time_ms});
   }
-  RS4SIM_GSD_TRY(gsd::SlaveConfig config, gsd::configure(device.value(), request));
+  RS4SIM_GSD_TRY(gsd::SlaveSetup config, gsd::configure(device.value(), request));
   if (config.f_parameters.size() != 1) return layout_error("the RS4 module needs one F-parameter block");
 
   // Set_Prm DU = 7 fixed bytes (§2.3) + User_Prm_Data (DPV1_Status_1..3 first, §3.1).

@@ -33,8 +33,8 @@ struct Rs4MasterOptions {
 };
 
 struct Rs4MasterEntry {
-  dp::master::SlaveConfig slave;       // for dp::MasterConfig::slaves
-  gsd::SlaveConfig gsd;                // what the GSD produced (fields, F-block offset)
+  dp::master::SlaveEntry slave;       // for dp::MasterConfig::slaves
+  gsd::SlaveSetup gsd;                // what the GSD produced (fields, F-block offset)
   profisafe::FParameters f_parameters; // incl. the CRC1 written into the block
 };
 

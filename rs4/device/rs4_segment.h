@@ -25,7 +25,7 @@ struct Rs4SegmentConfig {
   Rs4DeviceConfig device{};                // address switches, boot time, scanner …
   Rs4MasterOptions master{};               // station address (must match the switches)
   std::uint8_t master_address = 1;
-  dp::master::Baud baud = dp::master::Baud::k1M5;
+  dp::BaudRate baud = dp::BaudRate::k1M5;
   dp::Duration cycle_target = std::chrono::milliseconds(10);
   dp::link::MemoryBusConfig bus{};
   std::uint8_t output_byte = 0x01;         // initial process output: field pair 1

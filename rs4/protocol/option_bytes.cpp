@@ -37,10 +37,10 @@ Result<std::uint8_t> decode_option1(std::uint8_t b, OptionBytes& o) noexcept {
   if (count == 0) return ProtocolError::kBadOptionCount;
   if ((b & kReserved7) != 0) return ProtocolError::kReservedBitSet;
   const auto state = static_cast<std::uint8_t>((b >> kStateShift) & kStateMask);
-  if (state > static_cast<std::uint8_t>(OperatingState::kFault)) {
+  if (state > static_cast<std::uint8_t>(Option1State::kFault)) {
     return ProtocolError::kBadOperatingState;
   }
-  o.state = static_cast<OperatingState>(state);
+  o.state = static_cast<Option1State>(state);
   o.password = (b & kPasswordBit) != 0;
   o.acknowledge = (b & kAcknowledgeBit) != 0;
   return count;

@@ -18,8 +18,9 @@
 
 namespace rs4sim::rs4::protocol {
 
-// Option 1 bits 4..2.
-enum class OperatingState : std::uint8_t {
+// The operating state a telegram carries in option 1 bits 4..2 (the wire code; the
+// scanner model's own state is scanner::ScannerState).
+enum class Option1State : std::uint8_t {
   kNone = 0b000,            // in messages to the RS4
   kInitialisation = 0b001,
   kMeasuring = 0b010,
@@ -41,7 +42,7 @@ struct ScannerFlags {
 };
 
 struct OptionBytes {
-  OperatingState state = OperatingState::kNone;
+  Option1State state = Option1State::kNone;
   bool password = false;     // option 1 bit 5: an 8-byte password follows the options
   bool acknowledge = false;  // option 1 bit 6: the RS4 acknowledges (0x16/0x17, §11)
   ScannerFlags flags;

@@ -4,13 +4,13 @@
 
 namespace rs4sim::rs4::scanner {
 
-const char* to_string(OperatingState s) noexcept {
+const char* to_string(ScannerState s) noexcept {
   switch (s) {
-    case OperatingState::kOff: return "off";
-    case OperatingState::kInitialisation: return "initialisation";
-    case OperatingState::kMeasuring: return "measuring";
-    case OperatingState::kConfiguration: return "configuration";
-    case OperatingState::kError: return "error";
+    case ScannerState::kOff: return "off";
+    case ScannerState::kInitialisation: return "initialisation";
+    case ScannerState::kMeasuring: return "measuring";
+    case ScannerState::kConfiguration: return "configuration";
+    case ScannerState::kError: return "error";
   }
   return "unknown";
 }
@@ -28,7 +28,7 @@ Scanner::Scanner(ScannerConfig config) : config_(config), params_(factory_defaul
 // OSSDs switch on only after a free scan and, once on, switch off after T/40 ms
 // consecutive violated scans (the response time, docs/rs4-scanner.md "OSSD model").
 bool Scanner::ossd_may_be_on() const noexcept {
-  if (state_ != OperatingState::kMeasuring) return false;
+  if (state_ != ScannerState::kMeasuring) return false;
   if (any_fault_latched()) return false;
   if (restart_held_ || interlock_ || !scanned_since_start_) return false;
   const bool field_free = violated_scans_ == 0;
@@ -46,8 +46,8 @@ void Scanner::apply_ossd() noexcept {
 // ----- lifecycle -------------------------------------------------------------------
 
 void Scanner::power_on(TimePoint now) {
-  if (state_ != OperatingState::kOff) return;
-  state_ = OperatingState::kInitialisation;
+  if (state_ != ScannerState::kOff) return;
+  state_ = ScannerState::kInitialisation;
   boot_end_ = now + config_.boot_duration;
   scan_counter_ = 0;
   ++counters_.boots;
@@ -57,7 +57,7 @@ void Scanner::power_on(TimePoint now) {
 
 void Scanner::power_off(TimePoint now) {
   advance(now);
-  state_ = OperatingState::kOff;
+  state_ = ScannerState::kOff;
   steady_ = false;
   interlock_ = false;
   violated_scans_ = 0;
@@ -78,18 +78,18 @@ void Scanner::power_cycle(TimePoint now) {
 }
 
 void Scanner::advance(TimePoint now) {
-  if (state_ == OperatingState::kInitialisation && now >= boot_end_) start_measuring(boot_end_);
+  if (state_ == ScannerState::kInitialisation && now >= boot_end_) start_measuring(boot_end_);
   run_scans(now);
 }
 
 TimePoint Scanner::next_deadline() const noexcept {
-  if (state_ == OperatingState::kInitialisation) return boot_end_;
+  if (state_ == ScannerState::kInitialisation) return boot_end_;
   if (scanning()) return next_scan_;
   return TimePoint::max();
 }
 
 bool Scanner::scanning() const noexcept {
-  return state_ == OperatingState::kMeasuring || state_ == OperatingState::kError;
+  return state_ == ScannerState::kMeasuring || state_ == ScannerState::kError;
 }
 
 // Entry into protective operation: after boot, after a fault acknowledge, after
@@ -97,7 +97,7 @@ bool Scanner::scanning() const noexcept {
 // Fehler oder nach dem Einschalten"), the start pair is active first and the pair at the
 // input is then reached like any other switch (so it must be permitted from the start pair).
 void Scanner::start_measuring(TimePoint at) {
-  state_ = OperatingState::kMeasuring;
+  state_ = ScannerState::kMeasuring;
   steady_ = false;
   interlock_ = params_.restart_mode != RestartMode::kAutomatic;
   violated_scans_ = 0;
@@ -107,7 +107,7 @@ void Scanner::start_measuring(TimePoint at) {
   next_scan_ = at;
   update_contamination(at);
   if (any_fault_latched()) {
-    state_ = OperatingState::kError;
+    state_ = ScannerState::kError;
   } else if (requested_pair_ != active_pair_) {
     request_pair(requested_pair_, at);
     second_pair_ = 0;                    // nothing to overlap before the first scan
@@ -151,7 +151,7 @@ void Scanner::do_scan(TimePoint at) {
   const std::uint32_t k = scans_to_switch_off(params_);
   const std::uint32_t before = violated_scans_;
   violated_scans_ = violated ? std::min(violated_scans_ + 1, k) : 0;
-  if (violated_scans_ >= k && state_ == OperatingState::kMeasuring &&
+  if (violated_scans_ >= k && state_ == ScannerState::kMeasuring &&
       params_.restart_mode == RestartMode::kStartRestartInterlock) {
     interlock_ = true;                   // §4.3: restart only after a pulse
   }
@@ -176,7 +176,7 @@ bool Scanner::warning_output() const noexcept {
   const std::uint8_t w = params_.warning_output;
   return ((w & kWarnOnContamination) != 0 && contamination_warning_) ||
          ((w & kWarnOnWarningField) != 0 && last_.first.warning_violated()) ||
-         ((w & kWarnOnFault) != 0 && state_ == OperatingState::kError) ||
+         ((w & kWarnOnFault) != 0 && state_ == ScannerState::kError) ||
          ((w & kWarnOnRestartInterlock) != 0 && interlock_);
 }
 
@@ -193,8 +193,8 @@ ScannerStatus Scanner::status() const noexcept {
   // A switch-over shows two selected pairs from the switch until the scan after the one
   // that monitored both (option 3, §5.2.3: "zwei Schutzfeldpaare gleichzeitig ausgewählt").
   s.contamination_warning = contamination_warning_;
-  s.fault = state_ == OperatingState::kError || any_fault_latched();
-  s.restart_interlock = interlock_ && state_ == OperatingState::kMeasuring;
+  s.fault = state_ == ScannerState::kError || any_fault_latched();
+  s.restart_interlock = interlock_ && state_ == ScannerState::kMeasuring;
   s.first_pair = scanning() ? active_pair_ : 0;
   s.second_pair = scanning() ? (second_pair_ != 0 ? second_pair_ : last_.second_pair) : 0;
   s.restart_held = restart_held_;

@@ -36,15 +36,16 @@ struct ScannerConfig {                          // simulation settings, not RS4 
   Identity identity{0x00012345, 0x0004, 1, 0};      // serial number, type, firmware
 };
 
-// Option-1 operating state values (§6: bits 2..4), kOff = powered off (no telegrams).
-enum class OperatingState : std::uint8_t {
+// The scanner model's operating state; values as option 1 bits 2..4 of its telegrams
+// (§6, protocol::Option1State), kOff = powered off (no telegrams).
+enum class ScannerState : std::uint8_t {
   kOff = 0,
   kInitialisation = 1,
   kMeasuring = 2,
   kConfiguration = 3,
   kError = 4,
 };
-const char* to_string(OperatingState s) noexcept;
+const char* to_string(ScannerState s) noexcept;
 
 struct Rs4Event {                               // content of 0x53 / 0x54 (§5.2.3.2/3)
   enum class Kind : std::uint8_t { kError, kWarning };
@@ -66,7 +67,7 @@ struct ScanResult {
 };
 
 struct ScannerStatus {                          // everything the cyclic byte and option 2/3 need
-  OperatingState state = OperatingState::kOff;
+  ScannerState state = ScannerState::kOff;
   bool ossd = false;
   bool warning_output = false;                  // true = set/active (the adapter inverts, §3.1)
   bool protective_violated = false;             // option 2 bit 0 / input bit 1
@@ -168,7 +169,7 @@ class Scanner {
   Scene scene_;
   std::uint64_t rendered_revision_ = ~std::uint64_t{0};
 
-  OperatingState state_ = OperatingState::kOff;
+  ScannerState state_ = ScannerState::kOff;
   TimePoint boot_end_{};
   TimePoint next_scan_{};
   bool steady_ = false;                         // the next due scans change nothing but counters

@@ -35,12 +35,12 @@ void Scanner::set_restart_input(bool high, TimePoint now) {
 // An accepted pulse acknowledges a fault whose cause is gone (a new start follows), or
 // releases the interlock when the protective field is free.
 void Scanner::on_restart_pulse(TimePoint at) {
-  if (state_ == OperatingState::kError && !any_fault_present()) {
+  if (state_ == ScannerState::kError && !any_fault_present()) {
     for (FaultState& f : faults_) f.latched = false;
     start_measuring(at);
     return;
   }
-  if (state_ == OperatingState::kMeasuring && interlock_ && scanned_since_start_ && violated_scans_ == 0) {
+  if (state_ == ScannerState::kMeasuring && interlock_ && scanned_since_start_ && violated_scans_ == 0) {
     interlock_ = false;
     return;
   }
@@ -53,7 +53,7 @@ void Scanner::select_field_pair(std::uint8_t pair, TimePoint now) {
   advance(now);
   steady_ = false;
   requested_pair_ = pair;
-  if (state_ == OperatingState::kMeasuring) request_pair(pair, now);
+  if (state_ == ScannerState::kMeasuring) request_pair(pair, now);
   apply_ossd();
 }
 
@@ -103,8 +103,8 @@ void Scanner::raise_fault(Fault fault, std::uint16_t parameter, TimePoint at) {
   f.latched = true;
   ++f.occurrences;
   ++counters_.faults;
-  if (state_ == OperatingState::kMeasuring) state_ = OperatingState::kError;
-  if (state_ != OperatingState::kOff) {
+  if (state_ == ScannerState::kMeasuring) state_ = ScannerState::kError;
+  if (state_ != ScannerState::kOff) {
     const FaultInfo& info = fault_info(fault);
     push_event(Rs4Event{Rs4Event::Kind::kError, info.error_number, parameter, info.function, at});
   }
@@ -149,14 +149,14 @@ boost::outcome_v2::std_result<void> Scanner::enter_configuration(TimePoint now) 
   advance(now);
   if (!scanning()) return ScannerError::kNotMeasuring;
   steady_ = false;
-  state_ = OperatingState::kConfiguration;
+  state_ = ScannerState::kConfiguration;
   apply_ossd();
   return boost::outcome_v2::success();
 }
 
 boost::outcome_v2::std_result<void> Scanner::set_parameters(const ParameterSet& set, TimePoint now) {
   advance(now);
-  if (state_ != OperatingState::kConfiguration && state_ != OperatingState::kOff) {
+  if (state_ != ScannerState::kConfiguration && state_ != ScannerState::kOff) {
     return ScannerError::kNotInConfiguration;
   }
   if (validate(set)) return ScannerError::kInvalidParameterSet;
@@ -167,7 +167,7 @@ boost::outcome_v2::std_result<void> Scanner::set_parameters(const ParameterSet& 
 
 boost::outcome_v2::std_result<void> Scanner::leave_configuration(TimePoint now) {
   advance(now);
-  if (state_ != OperatingState::kConfiguration) return ScannerError::kNotInConfiguration;
+  if (state_ != ScannerState::kConfiguration) return ScannerError::kNotInConfiguration;
   start_measuring(now);
   return boost::outcome_v2::success();
 }

@@ -31,14 +31,14 @@ const Device& rs4() {
   return d.value();
 }
 
-SlaveConfig configure_ok(const Device& d, const ConfigRequest& r) {
+SlaveSetup configure_ok(const Device& d, const ConfigRequest& r) {
   auto c = configure(d, r);
   EXPECT_TRUE(c) << (c ? "" : c.error().what());
-  return c ? c.value() : SlaveConfig{};
+  return c ? c.value() : SlaveSetup{};
 }
 
 TEST(GsdConfig, Rs4DefaultsGiveTheDocumentedSetPrmUserData) {
-  const SlaveConfig c = configure_ok(rs4(), {});
+  const SlaveSetup c = configure_ok(rs4(), {});
   const std::vector<std::uint8_t> expected_without_crc{
       0x80,        // +0  DPV1_Status_1: DPV1_Enable
       0x24,        // +1  DPV1_Status_2: Enable_Diagnostic_Alarm (b5), Enable_Update_Alarm (b2)
@@ -72,7 +72,7 @@ TEST(GsdConfig, Rs4DefaultsGiveTheDocumentedSetPrmUserData) {
 
 TEST(GsdConfig, ManualDialogValuesGiveThePublishedCrc1) {
   // rs4-profisafe.md §8: src 2002, dst 604 (address 104), WD 500 → CRC1 0x5696.
-  const SlaveConfig c = configure_ok(rs4(), {{}, {{"F_Source_Add", 2002}, {"F_Dest_Add", 604}, {"f_wd_time", 500}}});
+  const SlaveSetup c = configure_ok(rs4(), {{}, {{"F_Source_Add", 2002}, {"F_Dest_Add", 604}, {"f_wd_time", 500}}});
   const std::vector<std::uint8_t> f_block{
       0x14, 0x00,  // +7  flags: SIL2, 2-byte CRC, V1
       0x07, 0xD2,  // +9  F_Source_Add 2002
@@ -84,7 +84,7 @@ TEST(GsdConfig, ManualDialogValuesGiveThePublishedCrc1) {
 }
 
 TEST(GsdConfig, CheckSeqNrSetsBit0OfFlag1) {
-  const SlaveConfig c = configure_ok(rs4(), {{}, {{"F_Check_SeqNr", 1}}});
+  const SlaveSetup c = configure_ok(rs4(), {{}, {{"F_Check_SeqNr", 1}}});
   EXPECT_EQ(c.user_prm_data[7], 0x15);
   EXPECT_EQ(c.user_prm_data[15] << 8 | c.user_prm_data[16],
             reference_crc1({0x15, 0x00, 0x00, 0x01, 0x01, 0xF8, 0x00, 0x0A}));
@@ -135,7 +135,7 @@ TEST(GsdConfig, ModuleChoiceIsChecked) {
 TEST(GsdConfig, ProfisafeV2DefaultBlockGivesThePublishedCrc1) {
   auto d = parse(testing::corpus("profisafe_v2.gsd"), "profisafe_v2.gsd");
   ASSERT_TRUE(d) << d.error().what();
-  const SlaveConfig c = configure_ok(d.value(), {{"75x-661 4FDI", "empty slot"}, {}});
+  const SlaveSetup c = configure_ok(d.value(), {{"75x-661 4FDI", "empty slot"}, {}});
   const std::vector<std::uint8_t> expected{
       0x80, 0x00, 0x08,        // +0  DPV1_Status_1..3 (global const)
       0x03, 0x00, 0x00,        // +3  module 1 Ext_Module_Prm_Data (3 bytes)
@@ -156,7 +156,7 @@ TEST(GsdConfig, ProfisafeV2DefaultBlockGivesThePublishedCrc1) {
 TEST(GsdConfig, ModularStationWithBitsWordsAndSignedValues) {
   auto d = parse(testing::corpus("modular_dpv1.gsd"), "modular_dpv1.gsd");
   ASSERT_TRUE(d) << d.error().what();
-  const SlaveConfig c = configure_ok(d.value(), {{"DI 8", "AI 2", "DO 16 consistent"},
+  const SlaveSetup c = configure_ok(d.value(), {{"DI 8", "AI 2", "DO 16 consistent"},
                                                  {{"Filter time", 564}, {"Offset", -100}, {"Mode", 5}}});
   const std::vector<std::uint8_t> expected{
       0x80, 0x00, 0x00,  // +0 DPV1_Status_1..3

@@ -23,7 +23,7 @@ namespace link = dp::link;
 dp::master::MasterConfig realtime_master(const GenericSlaveConfig& s) {
   dp::master::MasterConfig m;
   m.address = 2;
-  m.bus = dp::master::BusParameters::defaults_for(dp::master::Baud::k9k6);
+  m.bus = dp::master::BusParameters::defaults_for(dp::BaudRate::k9k6);
   m.bus.tsl = 16000;
   m.claim_token = false;  // TTO = TSL·(6+2·TS) would be 16.7 s at this slot time (§1.7)
   m.cycle_target = 20ms;
@@ -61,7 +61,7 @@ class RealtimeScenario {
   }
   bool in_dx() const {
     const auto st = master_.slave_status(5);
-    return st && st->state == dp::master::SlaveState::kDataExchange;
+    return st && st->state == dp::master::PollState::kDataExchange;
   }
   // The full scenario of both real-time tests.
   void run() {
@@ -107,8 +107,8 @@ TEST(RealtimeIntegration, MasterAndSlaveOverAPtyPair) {
   link::PseudoTerminal pty;
   RealtimeScenario scenario([&](asio::io_context& io) {
     TransportPair p;
-    p.second = std::make_unique<link::SerialTransport>(io, pty.release_master(), link::BaudRate::k9k6, "pty");
-    p.first = std::make_unique<link::SerialTransport>(io, pty.slave_path(), link::BaudRate::k9k6);
+    p.second = std::make_unique<link::SerialTransport>(io, pty.release_master(), dp::BaudRate::k9k6, "pty");
+    p.first = std::make_unique<link::SerialTransport>(io, pty.slave_path(), dp::BaudRate::k9k6);
     return p;
   });
   scenario.run();

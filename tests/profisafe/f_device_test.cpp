@@ -19,7 +19,7 @@ const TimePoint kT0{std::chrono::hours(1)};
 
 class ProfisafeFDeviceTest : public ::testing::Test {
  protected:
-  ProfisafeFDeviceTest() : dev_(FDeviceConfig{DeviceProfile::rs4(4), 1, {}}) {}
+  ProfisafeFDeviceTest() : dev_(FDeviceConfig{DeviceProfile{}, 1, {}}) {}
 
   void parameterise(std::uint16_t wd_ms = 10) {
     FParameters p;
@@ -63,8 +63,9 @@ TEST_F(ProfisafeFDeviceTest, WrongParametersKeepDiagnosis) {
   FParameters p;
   p.dest_add = 505;
   const auto v = dev_.set_parameters(encode_f_parameters(p));
-  EXPECT_EQ(v.diagnosis, FDiagnosis::kWrongDestAdd);
-  EXPECT_EQ(dev_.diagnosis_status_pdu(), (std::array<std::uint8_t, 5>{0x05, 0x81, 0x00, 0x00, 66}));
+  EXPECT_EQ(v.fault, FParameterFault::kDestAddMismatch);
+  // The status PDU the RS4 reports for it: tests/rs4/safety/diagnosis_test.cpp.
+  EXPECT_EQ(dev_.last_validation().fault, FParameterFault::kDestAddMismatch);
   EXPECT_EQ(dev_.state(), FDeviceState::kNoParameters);
   EXPECT_EQ(dev_.counters().parameter_errors, 1u);
 }
@@ -215,13 +216,13 @@ namespace rs4sim::profisafe {
 namespace {
 
 TEST(ProfisafeFDeviceConfig, RejectsNonV1Profiles) {
-  FDeviceConfig c{DeviceProfile::rs4(4), 1, {}};
+  FDeviceConfig c{DeviceProfile{}, 1, {}};
   c.profile.par_version = 1;
   EXPECT_THROW(FDevice{c}, std::invalid_argument);
-  c.profile = DeviceProfile::rs4(4);
+  c.profile = DeviceProfile{};
   c.profile.crc_length = CrcLength::k3Byte;
   EXPECT_THROW(FDevice{c}, std::invalid_argument);
-  c.profile = DeviceProfile::rs4(4);
+  c.profile = DeviceProfile{};
   c.data_size = 0;
   EXPECT_THROW(FDevice{c}, std::invalid_argument);
   c.data_size = 12;

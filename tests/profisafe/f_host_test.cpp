@@ -158,17 +158,17 @@ TEST_F(ProfisafeFHostTest, InjectedPduFaults) {
 }
 
 TEST_F(ProfisafeFHostTest, InjectedParameterFaultsGiveTheDeviceDiagnosis) {
-  const auto profile = DeviceProfile::rs4(4);
+  const DeviceProfile profile{};  // F_Dest_Add 504, as the host is configured
   EXPECT_TRUE(validate(host_.parameter_block(), profile).ok());
   host_.parameter_faults().dest_add = 505;
-  EXPECT_EQ(validate(host_.parameter_block(), profile).diagnosis, FDiagnosis::kWrongDestAdd);
+  EXPECT_EQ(validate(host_.parameter_block(), profile).fault, FParameterFault::kDestAddMismatch);
   host_.parameter_faults() = {};
   host_.parameter_faults().source_add = 0;
-  EXPECT_EQ(validate(host_.parameter_block(), profile).diagnosis, FDiagnosis::kWrongSourceAdd);
+  EXPECT_EQ(validate(host_.parameter_block(), profile).fault, FParameterFault::kSourceAddInvalid);
   host_.parameter_faults() = {};
   host_.parameter_faults().par_crc = 0x5430;  // the manual's unreproducible screenshot value
   const auto v = validate(host_.parameter_block(), profile);
-  EXPECT_EQ(v.diagnosis, FDiagnosis::kWrongCrc1);
+  EXPECT_EQ(v.fault, FParameterFault::kCrc1Mismatch);
   EXPECT_EQ(v.received_crc1, 0x5430);
 }
 

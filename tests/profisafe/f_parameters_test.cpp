@@ -126,9 +126,8 @@ TEST(ProfisafeFParameters, ErrorCodesHaveMessages) {
   const std::error_code ec = ProfisafeError::kFParamsWrongSize;
   EXPECT_EQ(ec.category().name(), std::string("rs4sim.profisafe"));
   EXPECT_EQ(ec.message(), "F-parameter block is not 10 bytes");
-  const std::error_code d = FDiagnosis::kWrongCrc1;
-  EXPECT_EQ(d.value(), 72);
-  EXPECT_EQ(d.message(), "72 wrong CRC1 over the F-parameters");
+  // The RS4's diagnosis numbers and their messages: tests/rs4/safety/diagnosis_test.cpp.
+  EXPECT_STREQ(to_string(FParameterFault::kCrc1Mismatch), "wrong CRC1 over the F-parameters");
 }
 
 }  // namespace

@@ -19,7 +19,7 @@ using namespace std::chrono_literals;
 
 class ProfisafeLoop : public ::testing::Test {
  protected:
-  ProfisafeLoop() : host_(host_config()), dev_(FDeviceConfig{DeviceProfile::rs4(4), 1, {}}) {
+  ProfisafeLoop() : host_(host_config()), dev_(FDeviceConfig{DeviceProfile{}, 1, {}}) {
     EXPECT_TRUE(dev_.set_parameters(host_.parameter_block()).ok());
     const std::uint8_t in = 0x80;  // OSSD on
     dev_.set_input(std::span<const std::uint8_t>(&in, 1));
@@ -158,7 +158,7 @@ TEST(ProfisafeLoopWide, FourDataBytesEachWay) {
   hc.data_size = 4;
   hc.params.check_seqnr = true;
   FHost host(hc);
-  FDevice dev(FDeviceConfig{DeviceProfile::rs4(4), 4, {}});
+  FDevice dev(FDeviceConfig{DeviceProfile{}, 4, {}});
   ASSERT_TRUE(dev.set_parameters(host.parameter_block()).ok());
   const std::array<std::uint8_t, 4> in{0xDE, 0xAD, 0xBE, 0xEF}, out{1, 2, 3, 4};
   dev.set_input(in);

@@ -22,8 +22,8 @@ using namespace rs4sim::dp::master;
 
 constexpr std::size_t kIo = 8;  // bytes of inputs and outputs per slave
 
-SlaveConfig bench_slave(std::uint8_t address) {
-  SlaveConfig s;
+SlaveEntry bench_slave(std::uint8_t address) {
+  SlaveEntry s;
   s.address = address;
   s.prm.station_status.lock_req = true;
   s.prm.ident_number = 0x1234;

@@ -30,7 +30,7 @@ std::vector<std::uint8_t> measurement_body(std::uint8_t resolution) {
   const auto contour = make_contour();
   std::vector<std::uint8_t> body;
   TelegramPrefix prefix;
-  prefix.options.state = OperatingState::kMeasuring;
+  prefix.options.state = Option1State::kMeasuring;
   prefix.options.first_field_pair = 1;
   (void)encode_prefix(static_cast<std::uint8_t>(TelegramCode::kMess16Rt), prefix, body);
   (void)encode_measurement_data(1, resolution, 0, kMaxSegment, contour, body);
@@ -42,7 +42,7 @@ void BM_MeasurementFromContour(benchmark::State& state) {
   const auto resolution = static_cast<std::uint8_t>(state.range(0));
   const auto contour = make_contour();
   TelegramPrefix prefix;
-  prefix.options.state = OperatingState::kMeasuring;
+  prefix.options.state = Option1State::kMeasuring;
   prefix.options.first_field_pair = 1;
   std::vector<std::uint8_t> body;
   std::uint32_t scan = 0;

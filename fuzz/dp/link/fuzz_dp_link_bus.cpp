@@ -6,7 +6,7 @@
 // arrives, the bus must neither crash nor stall, and every reply must re-encode. The rest
 // of the input also goes through parse_baud_rate (the CLI/serial rate parser).
 #include "dp/devices/generic_slave.h"
-#include "dp/link/baud_rate.h"
+#include "dp/time/baud_rate.h"
 #include "dp/link/memory_bus.h"
 
 #include <cstdint>
@@ -33,7 +33,7 @@ class Sink final : public dp::Station {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  (void)dp::link::parse_baud_rate(std::string_view(reinterpret_cast<const char*>(data), std::min<std::size_t>(size, 24)));
+  (void)dp::parse_baud_rate(std::string_view(reinterpret_cast<const char*>(data), std::min<std::size_t>(size, 24)));
   dp::ManualClock clock;
   dp::link::MemoryBus bus(clock);
   Sink master;

@@ -44,9 +44,9 @@ class Input {
   std::size_t pos_ = 0;
 };
 
-SlaveConfig slave(std::uint8_t address, bool dpv1, std::uint8_t alarm_mode, bool extra_sap,
+SlaveEntry slave(std::uint8_t address, bool dpv1, std::uint8_t alarm_mode, bool extra_sap,
                   std::size_t in, std::size_t out) {
-  SlaveConfig s;
+  SlaveEntry s;
   s.address = address;
   s.prm.station_status.lock_req = true;
   s.prm.ident_number = 0x1234;

@@ -16,14 +16,14 @@ using std::chrono::milliseconds;
 void check(const Scanner& s, TimePoint now) {
   const ScannerStatus st = s.status();
   if (st.ossd) {
-    if (st.state != OperatingState::kMeasuring || st.fault || st.restart_held || st.restart_interlock) {
+    if (st.state != ScannerState::kMeasuring || st.fault || st.restart_held || st.restart_interlock) {
       std::abort();
     }
     for (const FaultState& f : s.faults()) {
       if (f.latched) std::abort();
     }
   }
-  const bool scanning = st.state == OperatingState::kMeasuring || st.state == OperatingState::kError;
+  const bool scanning = st.state == ScannerState::kMeasuring || st.state == ScannerState::kError;
   if (scanning && s.next_deadline() <= now) std::abort();
 }
 

@@ -179,7 +179,7 @@ TEST(MasterAlarm, MalformedBlockIsReportedNotFatal) {
   f.bring_to_dx();
   deliver_diag(f, diag_with({0x3F, 0x01}));  // device block claims 63 bytes, 2 present
   EXPECT_EQ(f.events<SlaveFault>().at(0).reason, make_error_code(MasterError::kInvalidResponse));
-  EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kDataExchange);
+  EXPECT_EQ(f.master.slave_status(5)->state, PollState::kDataExchange);
 }
 
 }  // namespace

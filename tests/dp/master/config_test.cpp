@@ -10,14 +10,14 @@ namespace {
 
 TEST(MasterConfigTest, BusParameterDefaultsFollowTheTable) {
   struct Row {
-    Baud baud;
+    BaudRate baud;
     std::uint32_t tsl, max_tsdr, tset, tqui;
   };
   // §1.7 default bus parameters (Tbit).
-  const Row rows[] = {{Baud::k9k6, 100, 60, 1, 0},    {Baud::k187k5, 100, 60, 1, 0},
-                      {Baud::k500k, 200, 100, 1, 0},  {Baud::k1M5, 300, 150, 1, 0},
-                      {Baud::k3M, 400, 250, 4, 3},    {Baud::k6M, 600, 450, 8, 6},
-                      {Baud::k12M, 1000, 800, 16, 9}};
+  const Row rows[] = {{BaudRate::k9k6, 100, 60, 1, 0},    {BaudRate::k187k5, 100, 60, 1, 0},
+                      {BaudRate::k500k, 200, 100, 1, 0},  {BaudRate::k1M5, 300, 150, 1, 0},
+                      {BaudRate::k3M, 400, 250, 4, 3},    {BaudRate::k6M, 600, 450, 8, 6},
+                      {BaudRate::k12M, 1000, 800, 16, 9}};
   for (const Row& r : rows) {
     const BusParameters p = BusParameters::defaults_for(r.baud);
     EXPECT_EQ(p.tsl, r.tsl);
@@ -30,9 +30,9 @@ TEST(MasterConfigTest, BusParameterDefaultsFollowTheTable) {
 }
 
 TEST(MasterConfigTest, BitTimes) {
-  const BusParameters slow = BusParameters::defaults_for(Baud::k9k6);
+  const BusParameters slow = BusParameters::defaults_for(BaudRate::k9k6);
   EXPECT_EQ(slow.bits(1), std::chrono::nanoseconds(104'167));  // 104.2 µs (§1.1)
-  const BusParameters fast = BusParameters::defaults_for(Baud::k12M);
+  const BusParameters fast = BusParameters::defaults_for(BaudRate::k12M);
   EXPECT_EQ(fast.bits(12), std::chrono::nanoseconds(1'000));
   EXPECT_EQ(fast.characters(1), std::chrono::nanoseconds(917));  // 11 bit, rounded up
   // TTO = TSL·(6 + 2·TS): 1000·(6 + 2·3) bit at 12 Mbit/s = 1 ms.
@@ -40,17 +40,17 @@ TEST(MasterConfigTest, BitTimes) {
 }
 
 TEST(MasterConfigTest, BusParameterConstraints) {
-  BusParameters p = BusParameters::defaults_for(Baud::k1M5);
+  BusParameters p = BusParameters::defaults_for(BaudRate::k1M5);
   p.tsl = p.max_tsdr + 14;  // maxTSDR + 15 ≤ TSL violated
   EXPECT_EQ(validate(p), make_error_code(MasterError::kBadBusParameters));
-  p = BusParameters::defaults_for(Baud::k1M5);
+  p = BusParameters::defaults_for(BaudRate::k1M5);
   p.min_tsdr = 10;
   EXPECT_EQ(validate(p), make_error_code(MasterError::kBadBusParameters));
-  p = BusParameters::defaults_for(Baud::k1M5);
+  p = BusParameters::defaults_for(BaudRate::k1M5);
   p.tid1 = 32;  // below TSYN
   EXPECT_EQ(validate(p), make_error_code(MasterError::kBadBusParameters));
-  p = BusParameters::defaults_for(Baud::k1M5);
-  p.baud = static_cast<Baud>(1234);
+  p = BusParameters::defaults_for(BaudRate::k1M5);
+  p.baud = static_cast<BaudRate>(1234);
   EXPECT_EQ(validate(p), make_error_code(MasterError::kBadBusParameters));
 }
 
@@ -65,7 +65,7 @@ TEST(MasterConfigTest, SlaveAndMasterChecks) {
   m = example_master();
   m.slaves[0].address = 2;  // the master's own address
   EXPECT_EQ(validate(m), make_error_code(MasterError::kDuplicateSlave));
-  SlaveConfig s = example_slave();
+  SlaveEntry s = example_slave();
   s.address = 126;  // default address is not for operation (§1.4)
   EXPECT_EQ(validate(s), make_error_code(MasterError::kBadSlaveConfig));
   s = example_slave();

@@ -158,7 +158,7 @@ TEST(MasterDpv1, RsOnSap51IsSapNotEnabled) {
   after_dx(f);
   f.reply({0x10, 0x02, 0x05, 0x03, 0x0A, 0x16});
   EXPECT_EQ(f.events<Dpv1Result>().at(0).error, make_error_code(MasterError::kSapNotEnabled));
-  EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kDataExchange);
+  EXPECT_EQ(f.master.slave_status(5)->state, PollState::kDataExchange);
 }
 
 TEST(MasterDpv1, NoResourceRepeatsTheRequest) {

@@ -42,8 +42,8 @@ inline std::string hex(const Bytes& b) {
 // The slave of the §2.10 worked example: address 5, ident 0x1234, Set_Prm
 // `88 0A 01 0B 12 34 00 80 20 00` (Lock+WD_On, WD 10·10·1, minTSDR 11, group 0, DPV1 80 20 00),
 // Chk_Cfg `10 20` (1 byte in, 1 byte out).
-inline SlaveConfig example_slave(std::uint8_t address = 5) {
-  SlaveConfig s;
+inline SlaveEntry example_slave(std::uint8_t address = 5) {
+  SlaveEntry s;
   s.address = address;
   s.prm.station_status.lock_req = true;
   s.prm.station_status.wd_on = true;
@@ -65,7 +65,7 @@ inline SlaveConfig example_slave(std::uint8_t address = 5) {
 inline MasterConfig example_master() {
   MasterConfig m;
   m.address = 2;
-  m.bus = BusParameters::defaults_for(Baud::k1M5);
+  m.bus = BusParameters::defaults_for(BaudRate::k1M5);
   m.claim_token = false;
   m.cycle_target = std::chrono::milliseconds(10);
   m.slaves = {example_slave()};
@@ -137,7 +137,7 @@ class MasterFixture {
     step();                           // DX 7D
     reply({0x68, 0x04, 0x04, 0x68, 0x02, 0x05, 0x08, 0x3C, 0x4B, 0x16});  // DL, in 3C
     ASSERT_TRUE(step(1).empty());  // the turn ends; the next cycle is not yet due
-    ASSERT_TRUE(master.slave_status(5)->state == SlaveState::kDataExchange);
+    ASSERT_TRUE(master.slave_status(5)->state == PollState::kDataExchange);
     log.clear();
     master.take_events();
   }

@@ -144,7 +144,7 @@ TEST(MasterStartup, NotReadyDiagWaitsForTheNextCycle) {
   EXPECT_EQ(hex(next), hex(Bytes{0x68, 0x05, 0x05, 0x68, 0x85, 0x82, 0x7D, 0x3C, 0x3E,
                                  fcs({0x85, 0x82, 0x7D, 0x3C, 0x3E}), 0x16}));
   EXPECT_GT(f.clock.now() - after, std::chrono::milliseconds(9));
-  EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kWaitReady);
+  EXPECT_EQ(f.master.slave_status(5)->state, PollState::kWaitReady);
 }
 
 TEST(MasterStartup, WithoutFdlStatusStartsWithSlaveDiag) {

@@ -59,7 +59,7 @@ TEST(MasterSupervision, DataHighFetchesDiagInTheNextSlot) {
   ASSERT_EQ(diags.size(), 1U);
   EXPECT_EQ(hex(Bytes(diags[0].diag.begin(), diags[0].diag.end())),
             "08 0C 00 02 12 34");
-  EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kDataExchange);
+  EXPECT_EQ(f.master.slave_status(5)->state, PollState::kDataExchange);
   EXPECT_EQ(f.master.slave_status(5)->counters.diag_reads, 3U);
   // Next cycle: only the Data_Exchange (FCB=0 again), no diag.
   EXPECT_EQ(f.step()[6], 0x5D);
@@ -83,7 +83,7 @@ TEST(MasterSupervision, PrmReqInDataExchangeReparameterises) {
   ASSERT_GT(prm.size(), 9U);
   EXPECT_EQ(prm[6], 0x5D);
   EXPECT_EQ(prm[7], 0x3D) << "DSAP 61 Set_Prm";
-  EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kSetPrm);
+  EXPECT_EQ(f.master.slave_status(5)->state, PollState::kSetPrm);
 }
 
 TEST(MasterSupervision, RsToDataExchangeRestartsAtSlaveDiag) {
@@ -139,7 +139,7 @@ TEST(MasterSupervision, StartupFaultReasons) {
     const auto faults = f.events<SlaveFault>();
     ASSERT_EQ(faults.size(), 1U) << hex(c.reply);
     EXPECT_EQ(faults[0].reason, err(c.reason)) << hex(c.reply);
-    EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kReadDiag) << hex(c.reply);
+    EXPECT_EQ(f.master.slave_status(5)->state, PollState::kReadDiag) << hex(c.reply);
     EXPECT_TRUE(f.events<SlaveEnteredDataExchange>().empty());
   }
 }
@@ -147,7 +147,7 @@ TEST(MasterSupervision, StartupFaultReasons) {
 TEST(MasterSupervision, PrmReqAfterChkCfgRepeatsSetPrm) {
   MasterFixture f;
   to_wait_ready(f, diag(0x02, 0x05, 0xFF));
-  EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kSetPrm);
+  EXPECT_EQ(f.master.slave_status(5)->state, PollState::kSetPrm);
   EXPECT_EQ(f.step()[7], 0x3D);
 }
 
@@ -158,7 +158,7 @@ TEST(MasterSupervision, FirstDiagChecksIdentAndMasterLock) {
   f.step();
   f.reply(diag(0x82, 0x04, 0x09));  // parameterised by master 9
   EXPECT_EQ(f.events<SlaveFault>().at(0).reason, err(MasterError::kMasterLock));
-  EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kReadDiag);
+  EXPECT_EQ(f.master.slave_status(5)->state, PollState::kReadDiag);
   f.step();
   f.reply(diag(0x02, 0x05, 0xFF, 0x9999));
   EXPECT_EQ(f.events<SlaveFault>().at(0).reason, err(MasterError::kIdentMismatch));
@@ -171,7 +171,7 @@ TEST(MasterSupervision, FdlStatusFromAMasterIsNotASlave) {
            0x20,  // FC: station type "master ready, no token", status OK
            fcs({0x02, 0x05, 0x20}), 0x16});
   EXPECT_EQ(f.events<SlaveFault>().at(0).reason, err(MasterError::kNotASlave));
-  EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kStatusRequest);
+  EXPECT_EQ(f.master.slave_status(5)->state, PollState::kStatusRequest);
 }
 
 TEST(MasterSupervision, SetPrmRejectedWithRsRestarts) {
@@ -183,7 +183,7 @@ TEST(MasterSupervision, SetPrmRejectedWithRsRestarts) {
   f.step();
   f.reply(kRs);
   EXPECT_EQ(f.events<SlaveFault>().at(0).reason, err(MasterError::kSapNotEnabled));
-  EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kReadDiag);
+  EXPECT_EQ(f.master.slave_status(5)->state, PollState::kReadDiag);
 }
 
 TEST(MasterSupervision, ReadyTimeoutRestartsAtSlaveDiag) {
@@ -198,7 +198,7 @@ TEST(MasterSupervision, ReadyTimeoutRestartsAtSlaveDiag) {
   EXPECT_TRUE(f.events<SlaveFault>().empty());
   f.step();  // third cycle ≥ 25 ms after Chk_Cfg
   EXPECT_EQ(f.events<SlaveFault>().at(0).reason, err(MasterError::kStartupTimeout));
-  EXPECT_EQ(f.master.slave_status(5)->state, SlaveState::kReadDiag);
+  EXPECT_EQ(f.master.slave_status(5)->state, PollState::kReadDiag);
 }
 
 }  // namespace

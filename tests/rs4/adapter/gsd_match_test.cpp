@@ -8,7 +8,7 @@
 namespace rs4sim::rs4::adapter::testing {
 namespace {
 
-gsd::SlaveConfig configure(std::int64_t dest) {
+gsd::SlaveSetup configure(std::int64_t dest) {
   const auto& device = gsd::rs4sim_device();
   EXPECT_TRUE(device);
   gsd::ConfigRequest req;
@@ -19,7 +19,7 @@ gsd::SlaveConfig configure(std::int64_t dest) {
   return cfg.value();
 }
 
-dp::pdu::SetPrm from_gsd(const gsd::SlaveConfig& c) {
+dp::pdu::SetPrm from_gsd(const gsd::SlaveSetup& c) {
   dp::pdu::SetPrm prm;
   prm.ident_number = c.ident_number;
   prm.dpv1 = dp::pdu::Dpv1Status::from_bytes(c.user_prm_data[0], c.user_prm_data[1], c.user_prm_data[2]);

@@ -28,10 +28,10 @@ TEST(Startup, BootTakes30Seconds) {
   Rig rig;
   rig.start();  // 3 s after power-on
   rig.run(26s);  // 29 s
-  EXPECT_NE(rig.adapter.view().rs4, scanner::OperatingState::kMeasuring);
+  EXPECT_NE(rig.adapter.view().rs4, scanner::ScannerState::kMeasuring);
   EXPECT_EQ(rig.adapter.proxy_phase(), ProxyPhase::kWaitRs4);
   rig.run(1500ms);
-  EXPECT_EQ(rig.adapter.view().rs4, scanner::OperatingState::kMeasuring);
+  EXPECT_EQ(rig.adapter.view().rs4, scanner::ScannerState::kMeasuring);
 }
 
 TEST(Startup, ProxyEnable1_ReleasedOnlyAfterSuccessfulSync) {

@@ -43,7 +43,7 @@ TEST(Rs4Acyclic, MeasurementTelegramMatchesTheScannerContour) {
   // 90° is segment 14 + 250 = 264: the object straight ahead at ≈1400 mm.
   EXPECT_LT(protocol::value_distance_mm(m->values[264]), 1500);
   EXPECT_GT(near, 3U);
-  EXPECT_EQ(m->prefix.options.state, protocol::OperatingState::kMeasuring);
+  EXPECT_EQ(m->prefix.options.state, protocol::Option1State::kMeasuring);
 }
 
 TEST(Rs4Acyclic, UnknownAdapterChannelRecordIsRefusedWithADpv1Error) {

@@ -46,7 +46,7 @@ TEST(Rs4Measurement, DecodesWorkedExample) {
 
 TEST(Rs4Measurement, EncodesWorkedExample) {
   MeasurementTelegram m;
-  m.prefix.options.state = OperatingState::kMeasuring;
+  m.prefix.options.state = Option1State::kMeasuring;
   m.prefix.options.first_field_pair = 1;
   m.scan_number = 1;
   m.resolution = 4;

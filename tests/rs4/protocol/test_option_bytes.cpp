@@ -23,7 +23,7 @@ Bytes encode(const OptionBytes& o) {
 
 TEST(Rs4OptionBytes, OnlyOption1WhenNoFlags) {
   OptionBytes o;
-  o.state = OperatingState::kMeasuring;
+  o.state = Option1State::kMeasuring;
   // 0x09 = 0 0 0 010 01: 1 option byte, state 010 measuring, no password, no ack
   EXPECT_EQ(encode(o), Bytes{0x09});
 }
@@ -39,7 +39,7 @@ TEST(Rs4OptionBytes, ToTheRs4WithAcknowledgeIs0x41) {
 
 TEST(Rs4OptionBytes, Option2WhenAFlagIsSet) {
   OptionBytes o;
-  o.state = OperatingState::kFault;
+  o.state = Option1State::kFault;
   o.flags.fault = true;
   o.flags.restart_interlock = true;
   const Bytes expected{
@@ -75,7 +75,7 @@ TEST(Rs4OptionBytes, Option3ForcesOption2With0x80) {
       0x81,  // option 3: bit 7 = 1, bits 2..0 first pair 1, bits 5..3 second pair 0
   };
   OptionBytes o;
-  o.state = OperatingState::kMeasuring;
+  o.state = Option1State::kMeasuring;
   o.first_field_pair = 1;
   EXPECT_EQ(encode(o), expected);
   auto d = decode_option_bytes(expected);
@@ -86,7 +86,7 @@ TEST(Rs4OptionBytes, Option3ForcesOption2With0x80) {
 
 TEST(Rs4OptionBytes, TwoPairsDuringSwitchOver) {
   OptionBytes o;
-  o.state = OperatingState::kMeasuring;
+  o.state = Option1State::kMeasuring;
   o.flags.protective_field_occupied = true;
   o.first_field_pair = 2;
   o.second_field_pair = 4;

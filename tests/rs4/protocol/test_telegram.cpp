@@ -23,7 +23,7 @@ TEST(Rs4Telegram, AliveInMeasuringWithFieldPair1) {
   ASSERT_TRUE(d);
   ASSERT_TRUE(std::holds_alternative<AliveTelegram>(d.value()));
   const auto& alive = std::get<AliveTelegram>(d.value());
-  EXPECT_EQ(alive.prefix.options.state, OperatingState::kMeasuring);
+  EXPECT_EQ(alive.prefix.options.state, Option1State::kMeasuring);
   EXPECT_EQ(alive.prefix.options.first_field_pair, 1);
   EXPECT_EQ(telegram_code(d.value()), TelegramCode::kAlive);
   auto e = encode_telegram(d.value());
@@ -44,7 +44,7 @@ TEST(Rs4Telegram, AliveMinimal) {
 
 TEST(Rs4Telegram, ErrorOccure) {
   ErrorTelegram t;
-  t.prefix.options.state = OperatingState::kFault;
+  t.prefix.options.state = Option1State::kFault;
   t.prefix.options.flags.fault = true;
   t.report = {0x1234, 0x0005, 0xABCD};
   const Bytes expected{

@@ -39,7 +39,7 @@ TEST(ScannerFieldPairs, PermittedSwitchUsesTheNewFieldAndOverlapsOneScan) {
   EXPECT_EQ(s.status().second_pair, 0);
   EXPECT_FALSE(s.ossd());
   EXPECT_EQ(s.counters().field_pair_switches, 1U);
-  EXPECT_EQ(s.status().state, OperatingState::kMeasuring);
+  EXPECT_EQ(s.status().state, ScannerState::kMeasuring);
 }
 
 // The pair being left is still monitored in the overlapping scan (option 2 bit 5).
@@ -68,7 +68,7 @@ TEST(ScannerFieldPairs, ForbiddenTransitionIsAFaultAcknowledgedByPulse) {
   ASSERT_TRUE(s.ossd());
   s.select_field_pair(3, t.advance(milliseconds(5)));
   EXPECT_FALSE(s.ossd());
-  EXPECT_EQ(s.status().state, OperatingState::kError);
+  EXPECT_EQ(s.status().state, ScannerState::kError);
   EXPECT_TRUE(s.faults()[static_cast<std::size_t>(Fault::kFieldPairSequence)].latched);
   const auto e = s.pop_event();
   ASSERT_TRUE(e.has_value());
@@ -78,11 +78,11 @@ TEST(ScannerFieldPairs, ForbiddenTransitionIsAFaultAcknowledgedByPulse) {
   EXPECT_EQ(e->function, 0x0004);
   // Acknowledge with pair 3 still requested: a start goes via the start pair 1 → 3 again.
   pulse(s, t);
-  EXPECT_EQ(s.status().state, OperatingState::kError);
+  EXPECT_EQ(s.status().state, ScannerState::kError);
   EXPECT_EQ(s.counters().faults, 2U);
   s.select_field_pair(2, t.now);                                // 1 → 2 is permitted
   pulse(s, t);
-  EXPECT_EQ(s.status().state, OperatingState::kMeasuring);
+  EXPECT_EQ(s.status().state, ScannerState::kMeasuring);
   EXPECT_EQ(s.status().first_pair, 2);
   s.advance(t.advance(milliseconds(40)));
   EXPECT_TRUE(s.ossd());
@@ -105,7 +105,7 @@ TEST(ScannerFieldPairs, StartGoesThroughTheStartPair) {
   s.select_field_pair(4, t.now);                                // not permitted from 1
   s.power_on(t.now);
   s.advance(t.advance(seconds(30)));
-  EXPECT_EQ(s.status().state, OperatingState::kError);
+  EXPECT_EQ(s.status().state, ScannerState::kError);
   EXPECT_FALSE(s.ossd());
 }
 
@@ -116,15 +116,15 @@ TEST(ScannerFaults, InjectedFaultNeedsClearAndAcknowledge) {
   ASSERT_TRUE(s.ossd());
   ASSERT_TRUE(s.inject_fault(Fault::kMotorSpeed, t.now));
   EXPECT_FALSE(s.ossd());
-  EXPECT_EQ(s.status().state, OperatingState::kError);
+  EXPECT_EQ(s.status().state, ScannerState::kError);
   EXPECT_TRUE(s.status().fault);
   EXPECT_EQ(s.pop_event()->number, 0x0201);
   pulse(s, t);                                                  // cause still present
-  EXPECT_EQ(s.status().state, OperatingState::kError);
+  EXPECT_EQ(s.status().state, ScannerState::kError);
   ASSERT_TRUE(s.clear_fault(Fault::kMotorSpeed, t.now));
-  EXPECT_EQ(s.status().state, OperatingState::kError);          // latched until acknowledged
+  EXPECT_EQ(s.status().state, ScannerState::kError);          // latched until acknowledged
   pulse(s, t);                                                  // acknowledge → new start
-  EXPECT_EQ(s.status().state, OperatingState::kMeasuring);
+  EXPECT_EQ(s.status().state, ScannerState::kMeasuring);
   EXPECT_FALSE(s.ossd());                                       // start interlock
   pulse(s, t);
   EXPECT_TRUE(s.ossd());
@@ -136,10 +136,10 @@ TEST(ScannerFaults, FaultDuringBootShowsAtBootEnd) {
   Scanner s;
   s.power_on(t.now);
   ASSERT_TRUE(s.inject_fault(Fault::kInternalHardware, t.advance(seconds(10))));
-  EXPECT_EQ(s.status().state, OperatingState::kInitialisation);
+  EXPECT_EQ(s.status().state, ScannerState::kInitialisation);
   EXPECT_EQ(s.pop_event()->number, 0x0102);
   s.advance(t.advance(seconds(20)));
-  EXPECT_EQ(s.status().state, OperatingState::kError);
+  EXPECT_EQ(s.status().state, ScannerState::kError);
   EXPECT_FALSE(s.ossd());
 }
 
@@ -260,7 +260,7 @@ TEST(ScannerConfiguration, ParametersChangeOnlyInConfiguration) {
   p.identity.serial_number = 4242;
   EXPECT_EQ(s.set_parameters(p, t.now).error(), ScannerError::kNotInConfiguration);
   ASSERT_TRUE(s.enter_configuration(t.now));
-  EXPECT_EQ(s.status().state, OperatingState::kConfiguration);
+  EXPECT_EQ(s.status().state, ScannerState::kConfiguration);
   EXPECT_FALSE(s.ossd());
   ParameterSet bad = p;
   bad.start_pair = 7;
@@ -269,7 +269,7 @@ TEST(ScannerConfiguration, ParametersChangeOnlyInConfiguration) {
   EXPECT_EQ(s.parameters().response_steps, 2);
   EXPECT_EQ(s.parameters().identity.serial_number, ScannerConfig{}.identity.serial_number);
   ASSERT_TRUE(s.leave_configuration(t.now));
-  EXPECT_EQ(s.status().state, OperatingState::kMeasuring);
+  EXPECT_EQ(s.status().state, ScannerState::kMeasuring);
   EXPECT_TRUE(s.ossd());
   EXPECT_EQ(s.leave_configuration(t.now).error(), ScannerError::kNotInConfiguration);
 }
@@ -287,7 +287,7 @@ TEST(ScannerConfiguration, FactoryResetKeepsIdentityAndPasswords) {
   EXPECT_EQ(s.parameters().response_steps, 0);
   EXPECT_EQ(s.parameters().passwords[0], p.passwords[0]);
   EXPECT_EQ(s.parameters().identity, ScannerConfig{}.identity);
-  EXPECT_EQ(s.status().state, OperatingState::kMeasuring);
+  EXPECT_EQ(s.status().state, ScannerState::kMeasuring);
   EXPECT_FALSE(s.ossd());                                       // factory: start interlock
   EXPECT_STREQ(to_string(s.status().state), "measuring");
 }
@@ -298,14 +298,14 @@ TEST(ScannerLifecycle, PowerCycleRebootsAndResetsCounter) {
   s.advance(t.advance(seconds(1)));
   EXPECT_GT(s.status().scan_counter, 1U);
   s.power_cycle(t.now);
-  EXPECT_EQ(s.status().state, OperatingState::kInitialisation);
+  EXPECT_EQ(s.status().state, ScannerState::kInitialisation);
   EXPECT_FALSE(s.ossd());
   EXPECT_EQ(s.status().scan_counter, 0U);
   s.advance(t.advance(seconds(30)));
   EXPECT_TRUE(s.ossd());
   EXPECT_EQ(s.counters().boots, 2U);
   s.power_off(t.now);
-  EXPECT_EQ(s.status().state, OperatingState::kOff);
+  EXPECT_EQ(s.status().state, ScannerState::kOff);
   EXPECT_EQ(s.next_deadline(), TimePoint::max());
 }
 

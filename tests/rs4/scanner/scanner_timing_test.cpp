@@ -14,14 +14,14 @@ TEST(ScannerTiming, BootTakes30SecondsNotLess) {
   Scanner s;
   ASSERT_TRUE(s.set_parameters(params(RestartMode::kAutomatic), t.now));
   s.power_on(t.now);
-  EXPECT_EQ(s.status().state, OperatingState::kInitialisation);
+  EXPECT_EQ(s.status().state, ScannerState::kInitialisation);
   EXPECT_EQ(s.next_deadline(), kT0 + seconds(30));
   s.advance(t.advance(seconds(30) - std::chrono::nanoseconds(1)));
-  EXPECT_EQ(s.status().state, OperatingState::kInitialisation);
+  EXPECT_EQ(s.status().state, ScannerState::kInitialisation);
   EXPECT_FALSE(s.ossd());
   EXPECT_EQ(s.status().scan_counter, 0U);
   s.advance(t.advance(std::chrono::nanoseconds(1)));
-  EXPECT_EQ(s.status().state, OperatingState::kMeasuring);
+  EXPECT_EQ(s.status().state, ScannerState::kMeasuring);
   EXPECT_TRUE(s.ossd());                              // automatic start, free field
   EXPECT_EQ(s.status().scan_counter, 1U);             // first scan at the boot end
   EXPECT_EQ(s.next_deadline(), kT0 + seconds(30) + milliseconds(40));
@@ -34,9 +34,9 @@ TEST(ScannerTiming, ConfigurableBootDuration) {
   Scanner s(cfg);
   s.power_on(t.now);
   s.advance(t.advance(milliseconds(499)));
-  EXPECT_EQ(s.status().state, OperatingState::kInitialisation);
+  EXPECT_EQ(s.status().state, ScannerState::kInitialisation);
   s.advance(t.advance(milliseconds(1)));
-  EXPECT_EQ(s.status().state, OperatingState::kMeasuring);
+  EXPECT_EQ(s.status().state, ScannerState::kMeasuring);
 }
 
 // The OSSDs never switch on while the field is occupied, also not at the first scan.

@@ -1,9 +1,9 @@
 // Baud rates (§1.1) and bit-time arithmetic (§1.1/§1.7).
-#include "dp/link/baud_rate.h"
+#include "dp/time/baud_rate.h"
 
 #include <gtest/gtest.h>
 
-namespace rs4sim::dp::link {
+namespace rs4sim::dp {
 namespace {
 
 using namespace std::chrono_literals;
@@ -51,4 +51,4 @@ TEST(BaudRate, BitTimesFromTheSpec) {
 }
 
 }  // namespace
-}  // namespace rs4sim::dp::link
+}  // namespace rs4sim::dp

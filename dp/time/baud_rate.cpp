@@ -1,9 +1,9 @@
-#include "dp/link/baud_rate.h"
+#include "dp/time/baud_rate.h"
 
 #include <cctype>
 #include <charconv>
 
-namespace rs4sim::dp::link {
+namespace rs4sim::dp {
 
 std::optional<BaudRate> baud_rate_from_bps(std::uint64_t bps) {
   for (BaudRate b : kStandardBaudRates) {
@@ -78,4 +78,4 @@ Duration bit_time(BaudRate b, std::uint64_t bits) {
   return std::chrono::duration_cast<Duration>(std::chrono::nanoseconds(ns));
 }
 
-}  // namespace rs4sim::dp::link
+}  // namespace rs4sim::dp

@@ -1,5 +1,6 @@
 #pragma once
-// PROFIBUS baud rates and wire timing, spec/profibus-dp.md §1.1 and §1.7.
+// PROFIBUS baud rates and wire timing, spec/profibus-dp.md §1.1 and §1.7: the one table
+// the links (wire model, serial speed) and the master (bus parameters) share.
 //
 // One UART character is 11 bits (start, 8 data LSB first, even parity, stop; §1.1).
 // All FDL times are counted in bit times Tbit = 1/baud. Before every request the line
@@ -14,7 +15,7 @@
 #include <string>
 #include <string_view>
 
-namespace rs4sim::dp::link {
+namespace rs4sim::dp {
 
 // The standard PROFIBUS-DP (RS-485) rates in bit/s, §1.1 (31.25k is MBP/PA only).
 enum class BaudRate : std::uint32_t {
@@ -37,6 +38,22 @@ inline constexpr std::array<BaudRate, 10> kStandardBaudRates = {
 inline constexpr std::uint32_t kBitsPerCharacter = 11;  // §1.1
 inline constexpr std::uint32_t kTsynBits = 33;          // §1.7 TSYN
 inline constexpr std::uint32_t kMinTsdrBits = 11;       // §1.7 default min TSDR
+inline constexpr std::uint32_t kTid1Bits = 37;          // idle after a reply ([COMPB])
+
+// The §1.7 default bus times at one rate, in bit times ([FELSER time ratios table]).
+struct DefaultBusTimes {
+  std::uint32_t tqui, tset, max_tsdr, tsl;
+};
+[[nodiscard]] constexpr DefaultBusTimes default_bus_times(BaudRate b) {
+  switch (b) {
+    case BaudRate::k500k: return {0, 1, 100, 200};
+    case BaudRate::k1M5: return {0, 1, 150, 300};
+    case BaudRate::k3M: return {3, 4, 250, 400};
+    case BaudRate::k6M: return {6, 8, 450, 600};
+    case BaudRate::k12M: return {9, 16, 800, 1000};
+    default: return {0, 1, 60, 100};  // ≤ 187.5 kbit/s
+  }
+}
 
 [[nodiscard]] constexpr std::uint32_t bits_per_second(BaudRate b) {
   return static_cast<std::uint32_t>(b);
@@ -63,4 +80,4 @@ inline constexpr std::uint32_t kMinTsdrBits = 11;       // §1.7 default min TSD
   return static_cast<std::uint64_t>(bytes) * kBitsPerCharacter;
 }
 
-}  // namespace rs4sim::dp::link
+}  // namespace rs4sim::dp

@@ -1,6 +1,9 @@
 // RS4 F-parameter diagnosis (manual §6.3, table 6.3-1; rs4-profisafe.md §8): every error
 // number with the block that provokes it and the 5-byte status PDU the slave reports.
+#include "profisafe/f_device.h"
 #include "profisafe/f_parameters.h"
+#include "rs4/safety/diagnosis.h"
+#include "rs4/safety/profile.h"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +11,14 @@
 #include <cstdint>
 #include <vector>
 
-namespace rs4sim::profisafe {
+namespace rs4sim::rs4::safety {
 namespace {
+
+using profisafe::CrcLength;
+using profisafe::encode_f_parameters;
+using profisafe::FParameters;
+using profisafe::Sil;
+using profisafe::validate;
 
 using Bytes = std::vector<std::uint8_t>;
 
@@ -37,41 +46,41 @@ Bytes block(void (*change)(FParameters&)) {
 }
 
 void expect_code(const Bytes& b, FDiagnosis d, std::uint8_t nn) {
-  const auto v = validate(b, DeviceProfile::rs4(4));
-  EXPECT_EQ(v.diagnosis, d);
-  EXPECT_EQ(static_cast<int>(v.diagnosis), nn);
-  EXPECT_EQ(to_bytes(status_pdu(v.diagnosis)), status_bytes(nn));
+  const auto v = validate(b, device_profile(4));
+  EXPECT_EQ(diagnosis(v.fault), d);
+  EXPECT_EQ(static_cast<int>(diagnosis(v.fault)), nn);
+  EXPECT_EQ(to_bytes(status_pdu(diagnosis(v.fault))), status_bytes(nn));
 }
 
-TEST(ProfisafeDiagnosis, Code0NoError) {
+TEST(Rs4SafetyDiagnosis, Code0NoError) {
   const Bytes b{0x14, 0x00, 0x00, 0x01, 0x01, 0xF8, 0x00, 0x0A, 0x83, 0xA9};  // RS4 defaults
   expect_code(b, FDiagnosis::kNone, 0);
-  EXPECT_TRUE(validate(b, DeviceProfile::rs4(4)).ok());
+  EXPECT_TRUE(validate(b, device_profile(4)).ok());
 }
 
-TEST(ProfisafeDiagnosis, Code65InternalDestAdd) {
+TEST(Rs4SafetyDiagnosis, Code65InternalDestAdd) {
   // The device's own F_Dest_Add is not valid: DP address 127 is not a station address.
   const Bytes b{0x14, 0x00,  // 0 F_Prm_Flag1 SIL2 2-byte CRC, 1 F_Prm_Flag2 V1 block 0
                 0x00, 0x01,  // 2 F_Source_Add 1
                 0x02, 0x73,  // 4 F_Dest_Add 627 = 500 + 127
                 0x00, 0x0A,  // 6 F_WD_Time 10
                 0x13, 0x28};  // 8 F_Par_CRC (correct)
-  const auto v = validate(b, DeviceProfile::rs4(127));
-  EXPECT_EQ(static_cast<int>(v.diagnosis), 65);
-  EXPECT_EQ(to_bytes(status_pdu(v.diagnosis)), status_bytes(65));
+  const auto v = validate(b, device_profile(127));
+  EXPECT_EQ(static_cast<int>(diagnosis(v.fault)), 65);
+  EXPECT_EQ(to_bytes(status_pdu(diagnosis(v.fault))), status_bytes(65));
 }
 
-TEST(ProfisafeDiagnosis, Code66WrongDestAdd) {
+TEST(Rs4SafetyDiagnosis, Code66WrongDestAdd) {
   const Bytes b{0x14, 0x00, 0x00, 0x01,
                 0x01, 0xF9,  // 4 F_Dest_Add = 505 but the device is at address 4 (expects 504)
                 0x00, 0x0A,
                 0x63, 0x81};  // 8 F_Par_CRC (correct)
   expect_code(b, FDiagnosis::kWrongDestAdd, 66);
   // 500 + address: at address 5 the same block is accepted
-  EXPECT_TRUE(validate(block([](FParameters& p) { p.dest_add = 505; }), DeviceProfile::rs4(5)).ok());
+  EXPECT_TRUE(validate(block([](FParameters& p) { p.dest_add = 505; }), device_profile(5)).ok());
 }
 
-TEST(ProfisafeDiagnosis, Code67WrongSourceAdd) {
+TEST(Rs4SafetyDiagnosis, Code67WrongSourceAdd) {
   const Bytes b{0x14, 0x00,
                 0x00, 0x00,  // 2 F_Source_Add = 0: not a valid address
                 0x01, 0xF8, 0x00, 0x0A,
@@ -79,10 +88,10 @@ TEST(ProfisafeDiagnosis, Code67WrongSourceAdd) {
   expect_code(b, FDiagnosis::kWrongSourceAdd, 67);
   expect_code(block([](FParameters& p) { p.source_add = 0; }), FDiagnosis::kWrongSourceAdd, 67);
   expect_code(block([](FParameters& p) { p.source_add = 65535; }), FDiagnosis::kWrongSourceAdd, 67);
-  EXPECT_TRUE(validate(block([](FParameters& p) { p.source_add = 65534; }), DeviceProfile::rs4(4)).ok());
+  EXPECT_TRUE(validate(block([](FParameters& p) { p.source_add = 65534; }), device_profile(4)).ok());
 }
 
-TEST(ProfisafeDiagnosis, Code68WrongWdTime) {
+TEST(Rs4SafetyDiagnosis, Code68WrongWdTime) {
   const Bytes b{0x14, 0x00, 0x00, 0x01, 0x01, 0xF8,
                 0x00, 0x09,   // 6 F_WD_Time = 9 ms < 10 ms
                 0x50, 0x54};  // 8 F_Par_CRC (correct)
@@ -90,10 +99,10 @@ TEST(ProfisafeDiagnosis, Code68WrongWdTime) {
   expect_code(block([](FParameters& p) { p.wd_time_ms = 9; }), FDiagnosis::kWrongWdTime, 68);
   expect_code(block([](FParameters& p) { p.wd_time_ms = 1001; }), FDiagnosis::kWrongWdTime, 68);
   expect_code(block([](FParameters& p) { p.wd_time_ms = 0; }), FDiagnosis::kWrongWdTime, 68);
-  EXPECT_TRUE(validate(block([](FParameters& p) { p.wd_time_ms = 1000; }), DeviceProfile::rs4(4)).ok());
+  EXPECT_TRUE(validate(block([](FParameters& p) { p.wd_time_ms = 1000; }), device_profile(4)).ok());
 }
 
-TEST(ProfisafeDiagnosis, Code69WrongSil) {
+TEST(Rs4SafetyDiagnosis, Code69WrongSil) {
   const Bytes b{0x18,  // 0 F_Prm_Flag1: F_SIL = 2 (SIL3), F_CRC_Length 1
                 0x00, 0x00, 0x01, 0x01, 0xF8, 0x00, 0x0A,
                 0xEE, 0xD3};  // 8 F_Par_CRC (correct)
@@ -102,7 +111,7 @@ TEST(ProfisafeDiagnosis, Code69WrongSil) {
   expect_code(block([](FParameters& p) { p.sil = Sil::kSil1; }), FDiagnosis::kWrongSil, 69);
 }
 
-TEST(ProfisafeDiagnosis, Code70WrongCrcLength) {
+TEST(Rs4SafetyDiagnosis, Code70WrongCrcLength) {
   const Bytes b{0x04,  // 0 F_Prm_Flag1: SIL2, F_CRC_Length = 0 (3-byte CRC, a V2 setting)
                 0x00, 0x00, 0x01, 0x01, 0xF8, 0x00, 0x0A,
                 0xD5, 0x68};  // 8 F_Par_CRC (correct)
@@ -111,7 +120,7 @@ TEST(ProfisafeDiagnosis, Code70WrongCrcLength) {
   expect_code(block([](FParameters& p) { p.crc_length = CrcLength::kReserved; }), FDiagnosis::kWrongCrcLength, 70);
 }
 
-TEST(ProfisafeDiagnosis, Code71WrongBlockIdOrParVersion) {
+TEST(Rs4SafetyDiagnosis, Code71WrongBlockIdOrParVersion) {
   const Bytes v2{0x14,
                  0x40,  // 1 F_Prm_Flag2: F_Par_Version = 1 (V2)
                  0x00, 0x01, 0x01, 0xF8, 0x00, 0x0A,
@@ -129,30 +138,47 @@ TEST(ProfisafeDiagnosis, Code71WrongBlockIdOrParVersion) {
   expect_code(Bytes(9, 0), FDiagnosis::kWrongBlockIdOrParVersion, 71);
 }
 
-TEST(ProfisafeDiagnosis, Code72WrongCrc1ReportsBothValues) {
+TEST(Rs4SafetyDiagnosis, Code72WrongCrc1ReportsBothValues) {
   Bytes b{0x14, 0x00, 0x00, 0x01, 0x01, 0xF8, 0x00, 0x0A,
           0x83, 0xA8};  // 8 F_Par_CRC = 0x83A8, one off the correct 0x83A9
   expect_code(b, FDiagnosis::kWrongCrc1, 72);
-  const auto v = validate(b, DeviceProfile::rs4(4));
+  const auto v = validate(b, device_profile(4));
   EXPECT_EQ(v.received_crc1, 0x83A8);
   EXPECT_EQ(v.computed_crc1, 0x83A9);
 }
 
-TEST(ProfisafeDiagnosis, FirstFailingCheckInCodeOrderWins) {
+TEST(Rs4SafetyDiagnosis, FirstFailingCheckInCodeOrderWins) {
   // wrong F_Dest_Add (66) and wrong SIL (69) and wrong CRC1 (72): 66 is reported.
   FParameters p;
   p.dest_add = 600;
   p.sil = Sil::kSil3;
   p.par_crc = 0;
-  EXPECT_EQ(validate(p, DeviceProfile::rs4(4)).diagnosis, FDiagnosis::kWrongDestAdd);
+  EXPECT_EQ(diagnosis(validate(p, device_profile(4)).fault), FDiagnosis::kWrongDestAdd);
 }
 
-TEST(ProfisafeDiagnosis, Rs4ProfileDestAddIs500PlusAddress) {
-  EXPECT_EQ(DeviceProfile::rs4(0).dest_add, 500);
-  EXPECT_EQ(DeviceProfile::rs4(4).dest_add, 504);
-  EXPECT_EQ(DeviceProfile::rs4(126).dest_add, 626);
-  EXPECT_EQ(DeviceProfile::rs4(127).dest_add, 0);
+TEST(Rs4SafetyDiagnosis, ErrorCodesHaveMessages) {
+  const std::error_code d = FDiagnosis::kWrongCrc1;
+  EXPECT_EQ(d.value(), 72);
+  EXPECT_EQ(d.message(), "72 wrong CRC1 over the F-parameters");
+}
+
+TEST(Rs4SafetyDiagnosis, FDeviceRefusingParametersReportsTheStatusPdu) {
+  profisafe::FDevice dev(profisafe::FDeviceConfig{device_profile(4), 1, {}});
+  FParameters p;
+  p.dest_add = 505;
+  const auto v = dev.set_parameters(encode_f_parameters(p));
+  EXPECT_EQ(diagnosis(v.fault), FDiagnosis::kWrongDestAdd);
+  EXPECT_EQ(status_pdu(diagnosis(dev.last_validation().fault)),
+            (std::array<std::uint8_t, 5>{0x05, 0x81, 0x00, 0x00, 66}));
+}
+
+TEST(Rs4SafetyDiagnosis, Rs4ProfileDestAddIs500PlusAddress) {
+  EXPECT_EQ(device_profile(0).dest_add, 500);
+  EXPECT_EQ(device_profile(4).dest_add, 504);
+  EXPECT_EQ(device_profile(126).dest_add, 626);
+  EXPECT_EQ(device_profile(127).dest_add, 0);
+  EXPECT_EQ(f_dest_add(7), 507);
 }
 
 }  // namespace
-}  // namespace rs4sim::profisafe
+}  // namespace rs4sim::rs4::safety
