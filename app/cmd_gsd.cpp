@@ -105,7 +105,8 @@ void print_text(const gsd::SlaveSetup& c, const std::string& source, std::ostrea
     out << b << byte_notes(c, i) << "\n";
   }
   for (const auto& f : c.f_parameters) {
-    out << "F_Par_CRC (CRC1) of module " << f.module + 1 << ": " << hex16(f.parameters.par_crc) << "\n";
+    out << "F_Par_CRC (CRC1) of module " << f.module + 1 << ": " << hex16(f.parameters.par_crc)
+        << "\n";
   }
 }
 
@@ -113,15 +114,16 @@ void print_json(const gsd::SlaveSetup& c, const std::string& source, std::ostrea
   out << "{\n  \"gsd\": " << json_string(source) << ",\n";
   out << "  \"ident_number\": " << json_string(hex16(c.ident_number)) << ",\n";
   out << "  \"modules\": [";
-  for (std::size_t i = 0; i < c.modules.size(); ++i) out << (i ? ", " : "") << json_string(c.modules[i]);
+  for (std::size_t i = 0; i < c.modules.size(); ++i)
+    out << (i ? ", " : "") << json_string(c.modules[i]);
   out << "],\n  \"chk_cfg\": " << json_string(hex_bytes(c.cfg)) << ",\n";
   out << "  \"input_len\": " << c.input_len << ",\n  \"output_len\": " << c.output_len << ",\n";
   out << "  \"user_prm_data\": " << json_string(hex_bytes(c.user_prm_data)) << ",\n";
   out << "  \"parameters\": [";
   for (std::size_t i = 0; i < c.fields.size(); ++i) {
     const auto& f = c.fields[i];
-    out << (i ? ",\n    " : "\n    ") << "{\"name\": " << json_string(f.name) << ", \"offset\": " << f.offset
-        << ", \"value\": " << f.value << "}";
+    out << (i ? ",\n    " : "\n    ") << "{\"name\": " << json_string(f.name)
+        << ", \"offset\": " << f.offset << ", \"value\": " << f.value << "}";
   }
   out << "\n  ],\n  \"f_par_crc\": [";
   for (std::size_t i = 0; i < c.f_parameters.size(); ++i) {
@@ -163,9 +165,12 @@ int run_prm(const Options& o) {
     std::cerr << "rs4sim gsd: " << config.error().what() << "\n";
     return 1;
   }
-  const std::string source = builtin ? std::string(gsd::kRs4simGsdFileName) + " (built in)" : o.gsd_file;
-  if (o.json) print_json(config.value(), source, std::cout);
-  else print_text(config.value(), source, std::cout);
+  const std::string source =
+      builtin ? std::string(gsd::kRs4simGsdFileName) + " (built in)" : o.gsd_file;
+  if (o.json)
+    print_json(config.value(), source, std::cout);
+  else
+    print_text(config.value(), source, std::cout);
   return 0;
 }
 
@@ -195,15 +200,19 @@ const CommandRegistration kRegistration{
     [](CLI::App& cmd) -> Action {
       auto o = std::make_shared<Options>();
       cmd.add_option("--output,-o", o->output, "write the GSD file here instead of stdout");
-      cmd.add_flag("--prm", o->prm, "print Ident_Number, Chk_Cfg and User_Prm_Data instead of the GSD");
+      cmd.add_flag("--prm", o->prm,
+                   "print Ident_Number, Chk_Cfg and User_Prm_Data instead of the GSD");
       cmd.add_flag("--json", o->json, "with --prm: JSON output");
-      cmd.add_option("--address", o->address, "PROFIBUS address; the built-in GSD sets F_Dest_Add = 500 + address")
+      cmd.add_option("--address", o->address,
+                     "PROFIBUS address; the built-in GSD sets F_Dest_Add = 500 + address")
           ->check(CLI::Range(0, 126));
       cmd.add_option("--f-source-add", o->f_source_add, "F_Source_Add");
       cmd.add_option("--f-wd-time", o->f_wd_time, "F_WD_Time in ms");
-      cmd.add_flag("--f-check-seqnr", o->f_check_seqnr, "F_Check_SeqNr = 1 (consecutive number in CRC2)");
+      cmd.add_flag("--f-check-seqnr", o->f_check_seqnr,
+                   "F_Check_SeqNr = 1 (consecutive number in CRC2)");
       cmd.add_option("--gsd", o->gsd_file, "use this GSD file instead of the built-in one");
-      cmd.add_option("--module", o->modules, "module name (repeat for a modular station, in slot order)");
+      cmd.add_option("--module", o->modules,
+                     "module name (repeat for a modular station, in slot order)");
       cmd.add_option("--set", o->sets, "NAME=VALUE: set any ExtUserPrmData parameter by name");
       return [o] { return run(*o); };
     }};

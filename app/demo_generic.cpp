@@ -1,7 +1,7 @@
 // The generic demo of `rs4sim demo --device generic` (app/demos.h): our class 1 master and
 // two generic slaves on the in-memory bus, on a manual clock with the 1.5 Mbit/s wire
 // modelled. Narrates start-up, data exchange, a DPV1 write/read, an alarm round trip and a
-// watchdog fault with recovery; exits 0 when every step did what the spec says and 1
+// watchdog fault with recovery; exits 0 when every step did what the standard says and 1
 // otherwise (CI runs it).
 #include "app/demo_narrator.h"
 #include "app/demos.h"
@@ -21,16 +21,17 @@ class Demo {
  public:
   explicit Demo(std::ostream& out)
       : bus_(config()),
-        n_(out, bus_.clock(),
-           [this](const std::function<bool()>& done, dp::Duration limit) {
-             return bus_.run_until(done, limit);
-           },
-           Narration::Stamp::kMilliseconds) {
+        n_(
+            out, bus_.clock(),
+            [this](const std::function<bool()>& done, dp::Duration limit) {
+              return bus_.run_until(done, limit);
+            },
+            Narration::Stamp::kMilliseconds) {
     bus_.bus().set_observer([this](const dp::link::BusEvent& e) { on_wire(e); });
     for (std::uint8_t a : {std::uint8_t{5}, std::uint8_t{6}}) {
       bus_.slave(a).slave().set_trace([this, a](const dp::slave::Transition& t) {
-        say("slave " + std::to_string(a) + " " + dp::slave::to_string(t.from) + " -> " + dp::slave::to_string(t.to) +
-            " (" + dp::slave::to_string(t.why) + ")");
+        say("slave " + std::to_string(a) + " " + dp::slave::to_string(t.from) + " -> " +
+            dp::slave::to_string(t.to) + " (" + dp::slave::to_string(t.why) + ")");
       });
     }
   }
@@ -80,8 +81,10 @@ class Demo {
 };
 
 bool Demo::start_up() {
-  n_.print("== 1. Start-up (§4.2): master 1 claims the token, then FDL_Status, Slave_Diag, "
-           "Set_Prm, Chk_Cfg, Slave_Diag per slave\n");
+  n_.print(
+      "== 1. Start-up ([IEC 61158-6-3 master start-up of a slave] [pyprofibus dp_master.py]): "
+      "master 1 claims the token, then FDL_Status, Slave_Diag, "
+      "Set_Prm, Chk_Cfg, Slave_Diag per slave\n");
   return check(bus_.run_until([&] { return bus_.slaves_in_data_exchange() == 2; }, 2s),
                "both slaves reach Data_Exch within 2 s");
 }
@@ -105,12 +108,20 @@ bool Demo::data_exchange() {
 }
 
 bool Demo::dpv1_result(std::uint32_t id) {
-  const bool done = bus_.run_until([&] { const auto* r = last<dp::master::Dpv1Result>(); return r && r->id == id; }, 2s);
-  return check(done && !last<dp::master::Dpv1Result>()->error, "DPV1 request " + std::to_string(id) + " succeeds");
+  const bool done = bus_.run_until(
+      [&] {
+        const auto* r = last<dp::master::Dpv1Result>();
+        return r && r->id == id;
+      },
+      2s);
+  return check(done && !last<dp::master::Dpv1Result>()->error,
+               "DPV1 request " + std::to_string(id) + " succeeds");
 }
 
 bool Demo::dpv1() {
-  n_.print("\n== 3. DPV1 class-1 write and read of record slot 1 index 7 on slave 6 (§3.3, §3.4)\n");
+  n_.print(
+      "\n== 3. DPV1 class-1 write and read of record slot 1 index 7 on slave 6 "
+      "([IEC 61158-6-3 MSAC_C1, MSAC_C1 polling])\n");
   verbose_ = true;
   const std::vector<std::uint8_t> rec = {0x01, 0x02, 0x03};
   const auto w = bus_.master().write(6, 1, 7, rec);
@@ -118,31 +129,46 @@ bool Demo::dpv1() {
   const auto r = bus_.master().read(6, 1, 7, 16);
   if (!check(r.has_value() && dpv1_result(r.value()), "read")) return false;
   const auto& data = last<dp::master::Dpv1Result>()->data;
-  return check(std::equal(data.begin(), data.end(), rec.begin(), rec.end()), "read returns what was written");
+  return check(std::equal(data.begin(), data.end(), rec.begin(), rec.end()),
+               "read returns what was written");
 }
 
 bool Demo::alarm() {
-  n_.print("\n== 4. Alarm round trip (§3.5): slave 5 raises a process alarm; DH, diagnosis, Alarm_Ack\n");
+  n_.print(
+      "\n== 4. Alarm round trip ([IEC 61158-6-3 DPV1 alarms]): slave 5 raises a process alarm; DH, "
+      "diagnosis, "
+      "Alarm_Ack\n");
   const std::vector<std::uint8_t> user = {0x42};
-  if (!check(!bus_.slave(5).device().raise_alarm(2, 0, user), "alarm accepted by the slave")) return false;
-  const bool acked = bus_.run_until([&] { return !bus_.slave(5).device().acknowledged_alarms().empty(); }, 1s);
-  return check(acked && last<dp::master::AlarmReceived>() != nullptr, "master sees and acknowledges the alarm");
+  if (!check(!bus_.slave(5).device().raise_alarm(2, 0, user), "alarm accepted by the slave"))
+    return false;
+  const bool acked =
+      bus_.run_until([&] { return !bus_.slave(5).device().acknowledged_alarms().empty(); }, 1s);
+  return check(acked && last<dp::master::AlarmReceived>() != nullptr,
+               "master sees and acknowledges the alarm");
 }
 
 bool Demo::watchdog() {
-  n_.print("\n== 5. Watchdog (§2.8): the master falls silent for 150 ms (T_WD = 100 ms), then returns\n");
+  n_.print(
+      "\n== 5. Watchdog ([IEC 61158-6-3 watchdog]): the master falls silent for 150 ms (T_WD = 100 "
+      "ms), then "
+      "returns\n");
   verbose_ = false;
   bus_.bus().set_silenced(1, true);
-  const bool dropped = bus_.run_until([&] { return bus_.slave(5).slave().state() == dp::slave::State::kWaitPrm; }, 150ms);
+  const bool dropped = bus_.run_until(
+      [&] { return bus_.slave(5).slave().state() == dp::slave::State::kWaitPrm; }, 150ms);
   bus_.run_for(50ms);
   bus_.bus().set_silenced(1, false);
   say("master back on the bus");
-  const bool back = bus_.run_until([&] {
-    return bus_.slaves_in_data_exchange() == 2 && bus_.slave(5).slave().state() == dp::slave::State::kDataExch &&
-           bus_.slave(6).slave().state() == dp::slave::State::kDataExch;
-  }, 2s);
+  const bool back = bus_.run_until(
+      [&] {
+        return bus_.slaves_in_data_exchange() == 2 &&
+               bus_.slave(5).slave().state() == dp::slave::State::kDataExch &&
+               bus_.slave(6).slave().state() == dp::slave::State::kDataExch;
+      },
+      2s);
   say("both slaves in Data_Exch again");
-  return check(dropped, "slave 5 leaves Data_Exch on watchdog expiry") && check(back, "recovery to Data_Exch");
+  return check(dropped, "slave 5 leaves Data_Exch on watchdog expiry") &&
+         check(back, "recovery to Data_Exch");
 }
 
 }  // namespace

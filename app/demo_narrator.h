@@ -1,6 +1,7 @@
 #pragma once
 // Human-readable one-line meaning of a DP telegram, for the narrated demos
-// (app/narration.h). Names follow spec/profibus-dp.md §1.5, §2.1, §2.5, §3.3.
+// (app/narration.h). Names follow [IEC 61158-4-3 frame control]
+// [IEC 61158-6-3 SAP assignment, Slave_Diag, MSAC_C1].
 
 #include "app/run_options.h"
 #include "dp/fdl/telegram.h"
@@ -32,15 +33,24 @@ inline std::string diag_flags(std::span<const std::uint8_t> d) {
 }
 
 inline std::string dpv1(std::span<const std::uint8_t> p, bool request) {
-  if (p.empty()) return request ? "DPV1 poll (waiting for the response, §3.4)" : "DPV1 empty";
-  const std::string args = p.size() >= 4 ? " slot " + std::to_string(p[1]) + " index " + std::to_string(p[2]) : "";
+  if (p.empty())
+    return request ? "DPV1 poll (waiting for the response, "
+                     "[IEC 61158-6-3 MSAC_C1 polling])"
+                   : "DPV1 empty";
+  const std::string args =
+      p.size() >= 4 ? " slot " + std::to_string(p[1]) + " index " + std::to_string(p[2]) : "";
   switch (p[0]) {
-    case 0x5E: return request ? "DPV1 Read.req" + args + " max " + std::to_string(p[3])
-                              : "DPV1 Read.res+" + args + " data " + hex(p.subspan(4));
-    case 0x5F: return request ? "DPV1 Write.req" + args + " data " + hex(p.subspan(std::min<std::size_t>(4, p.size())))
-                              : "DPV1 Write.res+" + args;
-    case 0x5C: return std::string(request ? "Alarm_Ack.req" : "Alarm_Ack.res+") + " slot " +
-                      std::to_string(p.size() > 1 ? p[1] : 0) + " type " + std::to_string(p.size() > 2 ? p[2] : 0);
+    case 0x5E:
+      return request ? "DPV1 Read.req" + args + " max " + std::to_string(p[3])
+                     : "DPV1 Read.res+" + args + " data " + hex(p.subspan(4));
+    case 0x5F:
+      return request ? "DPV1 Write.req" + args + " data " +
+                           hex(p.subspan(std::min<std::size_t>(4, p.size())))
+                     : "DPV1 Write.res+" + args;
+    case 0x5C:
+      return std::string(request ? "Alarm_Ack.req" : "Alarm_Ack.res+") + " slot " +
+             std::to_string(p.size() > 1 ? p[1] : 0) + " type " +
+             std::to_string(p.size() > 2 ? p[2] : 0);
     default: break;
   }
   if (p[0] & 0x80) return "DPV1 negative response " + hex(p);
@@ -58,7 +68,8 @@ inline std::string request(const dp::fdl::Telegram& t) {
     case 62: return "Chk_Cfg " + hex(du);
     case 59: return "Get_Cfg request";
     case 58: return "Global_Control " + hex(du);
-    case 50: case 51: return dpv1(du, true);
+    case 50:
+    case 51: return dpv1(du, true);
     default: return "request to SAP " + std::to_string(*t.dsap);
   }
 }

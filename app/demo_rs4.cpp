@@ -26,11 +26,12 @@ class Demo {
  public:
   Demo(Rs4Segment& s, std::ostream& out)
       : s_(s),
-        n_(out, s.clock(),
-           [&s](const std::function<bool()>& done, dp::Duration limit) {
-             return s.run_until(done, limit);
-           },
-           Narration::Stamp::kSeconds) {}
+        n_(
+            out, s.clock(),
+            [&s](const std::function<bool()>& done, dp::Duration limit) {
+              return s.run_until(done, limit);
+            },
+            Narration::Stamp::kSeconds) {}
 
   void say(const std::string& text) const { n_.say(text); }
   bool wait(const std::function<bool()>& done, dp::Duration limit, const std::string& text) const {
@@ -45,8 +46,9 @@ class Demo {
     s_.set_output_byte(static_cast<std::uint8_t>(kOutputRestart | pair));
     s_.run_for(200ms);
     s_.set_output_byte(pair);
-    if (!wait([&] { return ossd(); }, 500ms, "restart pulse 200 ms (output 8" + std::to_string(pair) +
-                                                  " → 0" + std::to_string(pair) + "): OSSD bit 1")) {
+    if (!wait([&] { return ossd(); }, 500ms,
+              "restart pulse 200 ms (output 8" + std::to_string(pair) + " → 0" +
+                  std::to_string(pair) + "): OSSD bit 1")) {
       return false;
     }
     say("  " + input());
@@ -59,14 +61,20 @@ class Demo {
 bool startup(Demo& d) {
   Rs4Segment& s = d.s_;
   const auto& e = s.entry();
-  d.say("RS4/PROFIsafe at address " + std::to_string(s.rs4_address()) + ", master from RSIM5234.gsd: Set_Prm user data " +
+  d.say("RS4/PROFIsafe at address " + std::to_string(s.rs4_address()) +
+        ", master from RSIM5234.gsd: Set_Prm user data " +
         hex(std::span(e.gsd.user_prm_data.data(), e.gsd.user_prm_data.size())) + ", Chk_Cfg " +
         hex(std::span(e.gsd.cfg.data(), e.gsd.cfg.size())));
   s.power_on();
   d.say("power on: adapter LED steady (init 2–3 s), RS4 boots (≈30 s)");
-  if (!d.wait([&] { return s.in_data_exchange(); }, 5s, "DP start-up done: data exchange (LED off)")) return false;
-  if (!d.wait([&] { return s.fhost().state() == profisafe::FHostState::kRun && s.input_byte() != 0; }, 1s,
-              "PROFIsafe: F_Dest_Add " + std::to_string(e.f_parameters.dest_add) + " accepted, F-host in RUN")) {
+  if (!d.wait([&] { return s.in_data_exchange(); }, 5s,
+              "DP start-up done: data exchange (LED off)"))
+    return false;
+  if (!d.wait(
+          [&] { return s.fhost().state() == profisafe::FHostState::kRun && s.input_byte() != 0; },
+          1s,
+          "PROFIsafe: F_Dest_Add " + std::to_string(e.f_parameters.dest_add) +
+              " accepted, F-host in RUN")) {
     return false;
   }
   d.say("  " + d.input() + " (bit 4: RS4 not yet operational, so OSSD 0)");
@@ -84,9 +92,11 @@ bool protective_field(Demo& d) {
   if (!id) return false;
   const auto at = s.now();
   d.say("object enters the protective field of pair 1 (Ø 100 mm at 600 mm, field 1000 mm)");
-  if (!d.wait([&] { return !d.ossd(); }, 230ms, "OSSD bit 0 (T_R = 80 ms scanner + 150 ms F_WD_Time)")) return false;
-  d.say("  after " + std::to_string(d.n_.ms_since(at)) +
-        " ms, " + d.input() + " (bit 1: protective field violated)");
+  if (!d.wait([&] { return !d.ossd(); }, 230ms,
+              "OSSD bit 0 (T_R = 80 ms scanner + 150 ms F_WD_Time)"))
+    return false;
+  d.say("  after " + std::to_string(d.n_.ms_since(at)) + " ms, " + d.input() +
+        " (bit 1: protective field violated)");
   (void)s.device().scanner().edit_scene(s.now()).remove(id.value());
   if (!d.wait([&] { return (s.input_byte() & rs4::adapter::kInputProtectiveField) == 0; }, 500ms,
               "object left: field free, OSSD stays 0 (restart interlock)")) {
@@ -105,15 +115,15 @@ bool field_pairs(Demo& d) {
     return false;
   }
   s.set_output_byte(0x00);
-  if (!d.wait([&] { return !d.ossd(); }, 200ms, "invalid field pair 0 (output 00): adapter error 0x2600, OSSD 0")) {
+  if (!d.wait([&] { return !d.ossd(); }, 200ms,
+              "invalid field pair 0 (output 00): adapter error 0x2600, OSSD 0")) {
     return false;
   }
   s.run_for(300ms);
   s.set_output_byte(0x01);
   const auto at = s.now();
   if (!d.wait([&] { return d.ossd(); }, 1s, "valid pair 1 again: OSSD released")) return false;
-  d.say("  after " + std::to_string(d.n_.ms_since(at)) +
-        " ms (manual: ≈500 ms)");
+  d.say("  after " + std::to_string(d.n_.ms_since(at)) + " ms (manual: ≈500 ms)");
   return true;
 }
 
@@ -122,7 +132,9 @@ bool measurement(Demo& d) {
   (void)s.device().scanner().edit_scene(s.now()).add(rs4::scanner::Circle{{0, 1500}, 100});
   s.run_for(100ms);
   const std::uint8_t cmd[] = {0x92, 0x01, 0x00};
-  d.say("DPV1 WRITE slot 0 index 2: 00 07 FF FF 92 01 00 (PROFI_CMD_GET_RS4_DATA, measurement, once)");
+  d.say(
+      "DPV1 WRITE slot 0 index 2: 00 07 FF FF 92 01 00 (PROFI_CMD_GET_RS4_DATA, measurement, "
+      "once)");
   const auto answer = s.command(cmd);
   if (!answer) {
     d.say("FAILED: measurement telegram: " + answer.error().message());
@@ -136,11 +148,14 @@ bool measurement(Demo& d) {
   }
   const auto& contour = s.device().scanner().last_scan().contour;
   std::size_t equal = 0;
-  for (std::size_t i = 0; i < 529; ++i) equal += rs4::protocol::value_distance_mm(m->values[i]) == (contour[i] & 0xFFFE);
-  d.say("READ blocks → 0x23 COM_CMD_MESS_16_RT, " + std::to_string(answer.value().size()) + " bytes: scan " +
-        std::to_string(m->scan_number) + ", segments " + std::to_string(m->start) + ".." + std::to_string(m->stop) +
-        ", 90° = " + std::to_string(rs4::protocol::value_distance_mm(m->values[264])) + " mm (object at 1400 mm), " +
-        std::to_string(equal) + "/529 equal to the scanner's contour");
+  for (std::size_t i = 0; i < 529; ++i)
+    equal += rs4::protocol::value_distance_mm(m->values[i]) == (contour[i] & 0xFFFE);
+  d.say("READ blocks → 0x23 COM_CMD_MESS_16_RT, " + std::to_string(answer.value().size()) +
+        " bytes: scan " + std::to_string(m->scan_number) + ", segments " +
+        std::to_string(m->start) + ".." + std::to_string(m->stop) +
+        ", 90° = " + std::to_string(rs4::protocol::value_distance_mm(m->values[264])) +
+        " mm (object at 1400 mm), " + std::to_string(equal) +
+        "/529 equal to the scanner's contour");
   return equal == 529;
 }
 
@@ -156,8 +171,10 @@ bool rs4_error(Demo& d) {
   Rs4Segment& s = d.s_;
   const auto from = s.events().size();
   (void)s.device().scanner().inject_fault(rs4::scanner::Fault::kDazzled, s.now());
-  d.say("RS4 error: receiver dazzled (error " + std::to_string(rs4::scanner::fault_info(rs4::scanner::Fault::kDazzled).error_number) + ")");
-  if (!d.wait([&] { return alarm_of(s, 0x01, from) && !d.ossd(); }, 1s, "diagnosis alarm coming (type 1, 84 …), OSSD 0")) {
+  d.say("RS4 error: receiver dazzled (error " +
+        std::to_string(rs4::scanner::fault_info(rs4::scanner::Fault::kDazzled).error_number) + ")");
+  if (!d.wait([&] { return alarm_of(s, 0x01, from) && !d.ossd(); }, 1s,
+              "diagnosis alarm coming (type 1, 84 …), OSSD 0")) {
     return false;
   }
   (void)s.device().scanner().clear_fault(rs4::scanner::Fault::kDazzled, s.now());
@@ -169,7 +186,8 @@ bool rs4_error(Demo& d) {
               "cause gone; a restart pulse acknowledges the latched fault")) {
     return false;
   }
-  if (!d.wait([&] { return alarm_of(s, 0x02, from); }, 2s, "diagnosis alarm going (≥ 500 ms without error)")) {
+  if (!d.wait([&] { return alarm_of(s, 0x02, from); }, 2s,
+              "diagnosis alarm going (≥ 500 ms without error)")) {
     return false;
   }
   return d.ossd() || d.restart_pulse(1);
@@ -179,7 +197,8 @@ bool passivation(Demo& d) {
   Rs4Segment& s = d.s_;
   s.device().adapter().safety_faults().corrupt_crc2 = 1;
   d.say("one F-input PDU with a wrong CRC2 (fault injection on the device)");
-  if (!d.wait([&] { return s.fhost().ack_req(); }, 500ms, "F-host passivated (substitute 0), communication healthy: ACK_REQ")) {
+  if (!d.wait([&] { return s.fhost().ack_req(); }, 500ms,
+              "F-host passivated (substitute 0), communication healthy: ACK_REQ")) {
     return false;
   }
   s.ack_rei();

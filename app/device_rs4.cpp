@@ -35,7 +35,8 @@ void print_state(std::ostream& out, const Rs4Device& d) {
 class Rs4Instance final : public DeviceInstance {
  public:
   explicit Rs4Instance(const DeviceOptions& o)
-      : device_(device_config(o)), address_(static_cast<std::uint8_t>(*o.address)),
+      : device_(device_config(o)),
+        address_(static_cast<std::uint8_t>(*o.address)),
         boot_time_ms_(o.boot_time_ms) {}
   std::vector<dp::Station*> stations() override { return {&device_}; }
   void start(dp::TimePoint now) override { device_.power_on(now); }
@@ -93,7 +94,8 @@ void validate(DeviceOptions& o) {
   if (!o.address) o.address = kDefaultAddress;
   if (*o.address < 0 || *o.address > 126) {
     throw UsageError("--address: " + std::to_string(*o.address) +
-                     " is outside 0..126 (the RS4's switches; 127 and 255 must not be used, §2)");
+                     " is outside 0..126 (the RS4's switches; 127 and 255 must not be used, "
+                     "[RS4 manual §4.5])");
   }
   if (o.boot_time_ms < 0 || o.boot_time_ms > 600000) {
     throw UsageError("--boot-time: " + std::to_string(o.boot_time_ms) + " ms is outside 0..600000");

@@ -15,8 +15,9 @@ std::vector<CommandInfo>& command_registry() {
 
 int main(int argc, char** argv) {
   using namespace rs4sim::app;
-  CLI::App cli{"rs4sim — virtual PROFIBUS-DP/PROFIsafe slave behaving like a Leuze ROTOSCAN "
-               "RS4/PROFIsafe, with a class 1 master and tools"};
+  CLI::App cli{
+      "rs4sim — virtual PROFIBUS-DP/PROFIsafe slave behaving like a Leuze ROTOSCAN "
+      "RS4/PROFIsafe, with a class 1 master and tools"};
   cli.require_subcommand(1);
   cli.set_version_flag("--version", "rs4sim 0.1.0");
 

@@ -25,7 +25,8 @@ inline std::vector<std::uint8_t> parse_hex_bytes(const std::string& text, const 
     }
     if (c == ' ' || c == ',' || c == ':' || c == '-') continue;
     if (!std::isxdigit(static_cast<unsigned char>(c))) {
-      throw UsageError(what + ": '" + text + "' is not hexadecimal (e.g. \"10 20\" or \"0x10,0x20\")");
+      throw UsageError(what + ": '" + text +
+                       "' is not hexadecimal (e.g. \"10 20\" or \"0x10,0x20\")");
     }
     digits += c;
   }
@@ -52,16 +53,20 @@ inline std::uint16_t parse_ident(const std::string& text) {
 }
 
 inline dp::devices::GenericSlaveConfig generic_slave_config(int address, const std::string& ident,
-                                                     const std::string& cfg_hex) {
+                                                            const std::string& cfg_hex) {
   if (address < 0 || address > 125) {
-    throw UsageError("--address: " + std::to_string(address) + " is outside 0..125 (§1.4)");
+    throw UsageError("--address: " + std::to_string(address) +
+                     " is outside 0..125 "
+                     "([IEC 61158-4-3 addresses, SAPs])");
   }
   dp::devices::GenericSlaveConfig c{static_cast<std::uint8_t>(address), parse_ident(ident),
                                     parse_hex_bytes(cfg_hex, "--cfg"), true};
   try {
     dp::devices::GenericDevice probe({c.cfg});
   } catch (const std::system_error& e) {
-    throw UsageError("--cfg " + cfg_hex + ": " + e.what() + " (identifiers per §2.4)");
+    throw UsageError("--cfg " + cfg_hex + ": " + e.what() +
+                     " (identifiers per "
+                     "[IEC 61158-6-3 Chk_Cfg/Get_Cfg])");
   }
   return c;
 }

@@ -36,7 +36,9 @@ std::unique_ptr<link::Transport> make_transport(const LinkOptions& l, asio::io_c
                                                 std::unique_ptr<link::PseudoTerminal>& pty,
                                                 std::ostream& out) {
   const auto baud = dp::parse_baud_rate(l.baud);
-  const link::LogFn note = [](const std::string& s) { std::cerr << "rs4sim: note: " << s << std::endl; };
+  const link::LogFn note = [](const std::string& s) {
+    std::cerr << "rs4sim: note: " << s << std::endl;
+  };
   if (l.link == "pty") {
     pty = std::make_unique<link::PseudoTerminal>();
     out << pty->slave_path() << std::endl;  // first line: where the DP master connects
@@ -71,10 +73,14 @@ int run_realtime(const DeviceEntry& device, const DeviceOptions& o, const LinkOp
     signals.cancel();
     limit.cancel();
   };
-  signals.async_wait([&](const boost::system::error_code& ec, int) { if (!ec) stop(); });
+  signals.async_wait([&](const boost::system::error_code& ec, int) {
+    if (!ec) stop();
+  });
   if (l.duration > 0) {
     limit.expires_after(seconds(l.duration));
-    limit.async_wait([&](const boost::system::error_code& ec) { if (!ec) stop(); });
+    limit.async_wait([&](const boost::system::error_code& ec) {
+      if (!ec) stop();
+    });
   }
   std::cerr << "rs4sim: " << instance->describe() << " on " << l.link << "; Ctrl-C to stop"
             << std::endl;

@@ -10,8 +10,8 @@
 namespace rs4sim::codec {
 
 enum class BufferError : std::uint8_t {
-  kReadPastEnd = 1,   // Reader: fewer bytes left than the field needs
-  kWritePastEnd,      // Writer: no room left in the caller's buffer
+  kReadPastEnd = 1,  // Reader: fewer bytes left than the field needs
+  kWritePastEnd,     // Writer: no room left in the caller's buffer
 };
 
 [[nodiscard]] std::string_view to_string(BufferError e) noexcept;

@@ -29,7 +29,9 @@ class ErrorCategory final : public std::error_category {
   [[nodiscard]] const char* name() const noexcept override { return error_category_name(E{}); }
   [[nodiscard]] std::string message(int value) const override {
     const auto e = static_cast<E>(value);
-    if constexpr (requires { { error_message(e) } -> std::convertible_to<std::string>; }) {
+    if constexpr (requires {
+                    { error_message(e) } -> std::convertible_to<std::string>;
+                  }) {
       return error_message(e);
     } else {
       return std::string(to_string(e));

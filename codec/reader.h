@@ -72,8 +72,7 @@ class Reader {
   }
   // Fills an array of bytes or byte-sized characters (zeros after an error).
   template <class T, std::size_t N>
-    requires(sizeof(T) == 1)
-  constexpr void copy_to(std::array<T, N>& out) noexcept {
+  requires(sizeof(T) == 1) constexpr void copy_to(std::array<T, N>& out) noexcept {
     const auto in = bytes(N);
     for (std::size_t i = 0; i < N; ++i) out[i] = in.empty() ? T{} : static_cast<T>(in[i]);
   }

@@ -42,8 +42,7 @@ class FieldWriter {
   constexpr void bytes(std::span<const std::uint8_t> b) noexcept { write(b); }
   // Writes an array of bytes or byte-sized characters.
   template <class T, std::size_t N>
-    requires(sizeof(T) == 1)
-  constexpr void copy_from(const std::array<T, N>& in) noexcept {
+  requires(sizeof(T) == 1) constexpr void copy_from(const std::array<T, N>& in) noexcept {
     std::array<std::uint8_t, N> b{};
     for (std::size_t i = 0; i < N; ++i) b[i] = static_cast<std::uint8_t>(in[i]);
     write(b);

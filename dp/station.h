@@ -42,12 +42,14 @@ class Station {
   // The next telegram to send, if any. The link calls this until it returns nullopt.
   virtual std::optional<fdl::Telegram> take_transmit() = 0;
 
-  // The link's decoder rejected a frame under the receiver checks (§1.10): the station
-  // counts it (a slave shows it in its counters). Default: ignored.
+  // The link's decoder rejected a frame under the receiver checks
+  // ([IEC 61158-4-3 frame reception]): the station counts it (a slave shows it in its counters).
+  // Default: ignored.
   virtual void on_malformed_frame(std::error_code why) { (void)why; }
 
-  // How long (Tbit) a responder waits after a request before replying (min TSDR, §1.7);
-  // a slave reports what the master set with Set_Prm byte 3. Default: 11 Tbit.
+  // How long (Tbit) a responder waits after a request before replying (min TSDR,
+  // [IEC 61158-4-3 bus parameters, timing]); a slave reports what the master set with Set_Prm
+  // byte 3. Default: 11 Tbit.
   [[nodiscard]] virtual std::uint16_t min_tsdr_bits() const { return 11; }
 
   // Installed by the link the station is attached to (one link at a time); an empty

@@ -1,4 +1,5 @@
-// Cfg identifier decoding, profibus-dp.md §2.4 (VPC3 3.1/3.2, CP5613 p204).
+// Cfg identifier decoding, [IEC 61158-6-3 Chk_Cfg/Get_Cfg] ([VPC3+ dp_if.h §3.1, §3.2],
+// [CP 5613/5614 DP manual p. 204]).
 #include "gsd/cfg.h"
 
 #include <cstdio>

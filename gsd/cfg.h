@@ -1,5 +1,5 @@
 #pragma once
-// Chk_Cfg / Get_Cfg identifiers (profibus-dp.md §2.4): what a module's Cfg bytes say
+// Chk_Cfg / Get_Cfg identifiers ([IEC 61158-6-3 Chk_Cfg/Get_Cfg]): what a module's Cfg bytes say
 // about its input and output lengths. The GSD module needs this to fill the slave
 // configuration; it does not depend on dp/, so it carries its own small decoder.
 
@@ -13,11 +13,11 @@
 namespace rs4sim::gsd {
 
 struct CfgIdentifier {
-  std::size_t offset = 0;        // of the identifier byte in the Cfg data
-  std::size_t size = 1;          // identifier + length bytes + manufacturer bytes
+  std::size_t offset = 0;  // of the identifier byte in the Cfg data
+  std::size_t size = 1;    // identifier + length bytes + manufacturer bytes
   std::size_t input_bytes = 0;
   std::size_t output_bytes = 0;
-  bool input_consistent = false;   // consistency over the whole length
+  bool input_consistent = false;  // consistency over the whole length
   bool output_consistent = false;
   std::size_t manufacturer_bytes = 0;
 };

@@ -1,4 +1,5 @@
-// Slave configuration from a GSD: Set_Prm user data and Chk_Cfg (profibus-dp.md §5.3).
+// Slave configuration from a GSD: Set_Prm user data and Chk_Cfg
+// ([PROFIBUS GSD spec User_Prm_Data]).
 #include "gsd/config.h"
 
 #include "codec/endian.h"
@@ -61,24 +62,30 @@ Result<std::vector<const Module*>> Configurator::choose_modules() const {
     const Module* m = device_.find_module(name);
     if (!m) {
       std::string known;
-      for (const auto& each : device_.modules) known += (known.empty() ? "\"" : ", \"") + each.name + "\"";
-      return config_error(GsdError::kUnknownModule, "no module \"" + name + "\" in the GSD (modules: " + known + ")");
+      for (const auto& each : device_.modules)
+        known += (known.empty() ? "\"" : ", \"") + each.name + "\"";
+      return config_error(GsdError::kUnknownModule,
+                          "no module \"" + name + "\" in the GSD (modules: " + known + ")");
     }
     chosen.push_back(m);
   }
   if (chosen.empty() && device_.modules.size() != 1) {
     std::string known;
-    for (const auto& each : device_.modules) known += (known.empty() ? "\"" : ", \"") + each.name + "\"";
+    for (const auto& each : device_.modules)
+      known += (known.empty() ? "\"" : ", \"") + each.name + "\"";
     return config_error(GsdError::kModuleCount, "choose the module(s) to configure (modules: " +
-                                                     (known.empty() ? std::string("none") : known) + ")");
+                                                    (known.empty() ? std::string("none") : known) +
+                                                    ")");
   }
   if (!device_.modular_station && chosen.size() != 1) {
-    return config_error(GsdError::kModuleCount, "a compact station (Modular_Station = 0) takes exactly one module, got " +
-                                                     std::to_string(chosen.size()));
+    return config_error(GsdError::kModuleCount,
+                        "a compact station (Modular_Station = 0) takes exactly one module, got " +
+                            std::to_string(chosen.size()));
   }
   if (device_.modular_station && (chosen.empty() || chosen.size() > device_.max_module)) {
-    return config_error(GsdError::kModuleCount, "a modular station takes 1.." + std::to_string(device_.max_module) +
-                                                     " modules (Max_Module), got " + std::to_string(chosen.size()));
+    return config_error(GsdError::kModuleCount,
+                        "a modular station takes 1.." + std::to_string(device_.max_module) +
+                            " modules (Max_Module), got " + std::to_string(chosen.size()));
   }
   return chosen;
 }
@@ -92,15 +99,17 @@ Result<std::int64_t> Configurator::value_for(const ExtParam& p) {
   }
   if (!value) return p.default_value;
   if (syntax::iequals(p.name, "F_Par_CRC")) {
-    return config_error(GsdError::kNotChangeable, "F_Par_CRC is computed (CRC1 over the F-parameters) and cannot be set");
+    return config_error(GsdError::kNotChangeable,
+                        "F_Par_CRC is computed (CRC1 over the F-parameters) and cannot be set");
   }
   if (!p.changeable && *value != p.default_value) {
-    return config_error(GsdError::kNotChangeable, p.name + " is fixed at " + std::to_string(p.default_value) +
-                                                       " (Changeable = 0), cannot set " + std::to_string(*value));
+    return config_error(GsdError::kNotChangeable,
+                        p.name + " is fixed at " + std::to_string(p.default_value) +
+                            " (Changeable = 0), cannot set " + std::to_string(*value));
   }
   if (!p.accepts(*value)) {
     return config_error(GsdError::kOutOfRange, p.name + " = " + std::to_string(*value) +
-                                                    " is out of range " + p.range_text());
+                                                   " is out of range " + p.range_text());
   }
   return *value;
 }
@@ -112,32 +121,39 @@ Result<void> Configurator::place(const PrmTemplate& t, std::size_t module, bool 
     const ExtParam& p = device_.params.at(ref.param);  // resolved by the interpreter
     RS4SIM_GSD_TRY(const auto value, value_for(p));
     write_value(out_.user_prm_data, base + ref.offset, p, value);
-    out_.fields.push_back({base + ref.offset, p.name, p.type, p.bit_low, p.bit_high, value, module, f_part});
+    out_.fields.push_back(
+        {base + ref.offset, p.name, p.type, p.bit_low, p.bit_high, value, module, f_part});
   }
   return boost::outcome_v2::success();
 }
 
-// The 10-byte F-parameter block ends with F_Par_CRC (profisafe-v1.md §1): its 8 bytes
+// The 10-byte F-parameter block ends with F_Par_CRC ([IEC 61784-3-3 F-Parameters]): its 8 bytes
 // before F_Par_CRC go through CRC1, the result replaces the GSD's default.
 Result<void> Configurator::seal_f_block(const Module& m, std::size_t module, std::size_t base) {
-  const auto crc_ref = std::find_if(m.f_prm->refs.begin(), m.f_prm->refs.end(), [&](const PrmRef& r) {
-    return syntax::iequals(device_.params.at(r.param).name, "F_Par_CRC");
-  });
+  const auto crc_ref =
+      std::find_if(m.f_prm->refs.begin(), m.f_prm->refs.end(), [&](const PrmRef& r) {
+        return syntax::iequals(device_.params.at(r.param).name, "F_Par_CRC");
+      });
   if (crc_ref == m.f_prm->refs.end() || crc_ref->offset < 8 ||
       byte_size(device_.params.at(crc_ref->param).type) != 2) {
-    return config_error(GsdError::kFParameterLayout, "module \"" + m.name +
-        "\": the F-parameters need a 2-byte F_Par_CRC reference at offset 8 or later");
+    return config_error(
+        GsdError::kFParameterLayout,
+        "module \"" + m.name +
+            "\": the F-parameters need a 2-byte F_Par_CRC reference at offset 8 or later");
   }
   const std::size_t start = base + crc_ref->offset - 8;
-  const std::span<const std::uint8_t> block(out_.user_prm_data.data() + start, profisafe::kFParametersSize);
+  const std::span<const std::uint8_t> block(out_.user_prm_data.data() + start,
+                                            profisafe::kFParametersSize);
   auto parsed = profisafe::parse_f_parameters(block);
   if (!parsed) {
-    return config_error(GsdError::kFParameterLayout, "module \"" + m.name + "\": F-parameter block: " +
-                                                          parsed.error().message());
+    return config_error(
+        GsdError::kFParameterLayout,
+        "module \"" + m.name + "\": F-parameter block: " + parsed.error().message());
   }
   profisafe::FParameters params = parsed.value();
   const auto encoded = profisafe::encode_f_parameters(params);
-  std::copy(encoded.begin() + 8, encoded.end(), out_.user_prm_data.begin() + static_cast<std::ptrdiff_t>(start + 8));
+  std::copy(encoded.begin() + 8, encoded.end(),
+            out_.user_prm_data.begin() + static_cast<std::ptrdiff_t>(start + 8));
   params.par_crc = codec::be16(encoded[8], encoded[9]);
   for (auto& f : out_.fields) {
     if (f.offset == start + 8 && f.f_parameter && f.module == module) f.value = params.par_crc;
@@ -153,8 +169,9 @@ Result<void> Configurator::check_overrides_used() const {
     for (const auto& f : out_.fields) names.insert(f.name);
     std::string known;
     for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
-    return config_error(GsdError::kUnknownParameter, "no parameter \"" + request_.overrides[i].name +
-                                                          "\" in this configuration (parameters: " + known + ")");
+    return config_error(GsdError::kUnknownParameter,
+                        "no parameter \"" + request_.overrides[i].name +
+                            "\" in this configuration (parameters: " + known + ")");
   }
   return boost::outcome_v2::success();
 }
@@ -178,16 +195,16 @@ Result<SlaveSetup> Configurator::run() {
     }
   }
   RS4SIM_GSD_TRYV(check_overrides_used());
-  // Set_Prm DU ≤ 244 bytes = 7 standard bytes + user data (§2.3).
+  // Set_Prm DU ≤ 244 bytes = 7 standard bytes + user data ([IEC 61158-6-3 Set_Prm]).
   const std::size_t limit = std::min<std::size_t>(237, device_.max_user_prm_data_len.value_or(237));
   if (out_.user_prm_data.size() > limit) {
-    return config_error(GsdError::kPrmTooLong, "User_Prm_Data is " + std::to_string(out_.user_prm_data.size()) +
-                                                    " bytes, more than " + std::to_string(limit));
+    return config_error(GsdError::kPrmTooLong, "User_Prm_Data is " +
+                                                   std::to_string(out_.user_prm_data.size()) +
+                                                   " bytes, more than " + std::to_string(limit));
   }
   if (out_.dpv1) std::copy_n(out_.user_prm_data.begin(), 3, out_.dpv1_status.begin());
   return std::move(out_);
 }
-
 
 }  // namespace
 
@@ -207,7 +224,8 @@ std::uint16_t f_param_desc_crc(const Device& device, const Module& module) {
     canon.push_back(static_cast<std::uint8_t>(p.bit_low));
     canon.push_back(static_cast<std::uint8_t>(p.bit_high));
     codec::Appender w(canon);
-    for (const std::int64_t v : {p.default_value, p.min, p.max}) w.u32_be(static_cast<std::uint32_t>(v));
+    for (const std::int64_t v : {p.default_value, p.min, p.max})
+      w.u32_be(static_cast<std::uint32_t>(v));
     canon.push_back(p.changeable ? 1 : 0);
   }
   return static_cast<std::uint16_t>(profisafe::crc16().update(0, canon));

@@ -1,8 +1,8 @@
 #pragma once
-// Configuration of one slave from its GSD (profibus-dp.md §5.3, §5.4, §2.3, §3.1):
-// GSD + chosen modules + named parameter overrides → the exact Set_Prm user data and
-// Chk_Cfg bytes a class 1 master sends. The F-parameter block of a PROFIsafe module gets
-// its F_Par_CRC (CRC1, profisafe-v1.md §2) computed by profisafe/.
+// Configuration of one slave from its GSD ([PROFIBUS GSD spec User_Prm_Data, modules]
+// [IEC 61158-6-3 Set_Prm, DPV1_Status]): GSD + chosen modules + named parameter overrides → the
+// exact Set_Prm user data and Chk_Cfg bytes a class 1 master sends. The F-parameter block of a
+// PROFIsafe module gets its F_Par_CRC (CRC1, [IEC 61784-3-3 CRC1]) computed by profisafe/.
 //
 // gsd/ knows nothing of dp/: the app layer copies a SlaveSetup into the master's
 // per-slave configuration (station address, watchdog and Station_Status are the
@@ -21,7 +21,7 @@
 namespace rs4sim::gsd {
 
 struct ParamOverride {
-  std::string name;      // ExtUserPrmData name, case-insensitive, e.g. "F_WD_Time"
+  std::string name;  // ExtUserPrmData name, case-insensitive, e.g. "F_WD_Time"
   std::int64_t value = 0;
 };
 
@@ -36,7 +36,7 @@ inline constexpr std::size_t kGlobal = static_cast<std::size_t>(-1);
 
 // One parameter as placed in user_prm_data (for listings and for tests).
 struct PrmField {
-  std::size_t offset = 0;       // in user_prm_data
+  std::size_t offset = 0;  // in user_prm_data
   std::string name;
   ParamType type = ParamType::kUnsigned8;
   int bit_low = 0;
@@ -47,23 +47,23 @@ struct PrmField {
 };
 
 struct FParameterBlock {
-  std::size_t module = 0;        // index into SlaveSetup::modules
-  std::size_t offset = 0;        // of F_Prm_Flag1 in user_prm_data (10 bytes follow)
+  std::size_t module = 0;             // index into SlaveSetup::modules
+  std::size_t offset = 0;             // of F_Prm_Flag1 in user_prm_data (10 bytes follow)
   profisafe::FParameters parameters;  // par_crc = the CRC1 written into the block
 };
 
 // What a class 1 master sends to set up one slave (Set_Prm user data, Chk_Cfg), as the
 // GSD computes it, with the layout behind the bytes.
 struct SlaveSetup {
-  std::uint16_t ident_number = 0;       // Set_Prm bytes 4..5
-  bool dpv1 = false;                    // DPV1_Slave = 1
+  std::uint16_t ident_number = 0;             // Set_Prm bytes 4..5
+  bool dpv1 = false;                          // DPV1_Slave = 1
   std::array<std::uint8_t, 3> dpv1_status{};  // = user_prm_data[0..2] when dpv1
   // Set_Prm DU from byte 7 on: global part (DPV1_Status_1..3 first on a DPV1 slave),
   // then per module in slot order its Ext_Module part and its F-part.
   std::vector<std::uint8_t> user_prm_data;
-  std::vector<std::uint8_t> cfg;        // Chk_Cfg DU: the modules' Cfg bytes in slot order
-  std::size_t input_len = 0;            // Data_Exchange input bytes (slave → master)
-  std::size_t output_len = 0;           // Data_Exchange output bytes (master → slave)
+  std::vector<std::uint8_t> cfg;  // Chk_Cfg DU: the modules' Cfg bytes in slot order
+  std::size_t input_len = 0;      // Data_Exchange input bytes (slave → master)
+  std::size_t output_len = 0;     // Data_Exchange output bytes (master → slave)
   std::vector<std::string> modules;
   std::vector<PrmField> fields;
   std::vector<FParameterBlock> f_parameters;

@@ -24,7 +24,8 @@ inline constexpr std::size_t kRs4simUserPrmDataLen = 17;
 inline constexpr std::array<std::uint8_t, 3> kRs4simDpv1Status{0x80, 0x24, 0x0B};
 inline constexpr std::array<std::uint8_t, 4> kRs4simFBlockHeader{0x0E, 0x05, 0x01, 0x00};
 inline constexpr std::size_t kRs4simFBlockHeaderOffset = 3;
-inline constexpr std::size_t kRs4simFParametersOffset = 7;  // 10 bytes, profisafe-v1.md §1
+inline constexpr std::size_t kRs4simFParametersOffset = 7;  // 10 bytes,
+                                                            // [IEC 61784-3-3 F-Parameters]
 inline constexpr std::array<std::uint8_t, 3> kRs4simCfg{0xC0, 0x84, 0x84};
 
 // The file's bytes exactly as shipped (ASCII, CRLF line ends).

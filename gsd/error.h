@@ -15,21 +15,21 @@
 namespace rs4sim::gsd {
 
 enum class GsdError {
-  kSyntax = 1,          // malformed token or line (unterminated string, stray character)
-  kMissingHeader,       // the first keyword line is not #Profibus_DP
-  kBlockStructure,      // End… without its block, nested block, block not closed
-  kBadValue,            // a keyword has the wrong kind or number of values
-  kOutOfRange,          // a value outside what the keyword or parameter allows
-  kMissingKeyword,      // a required keyword is absent (e.g. Ident_Number)
-  kDuplicate,           // a keyword, parameter number or module defined twice
-  kUnknownReference,    // Ext_User_Prm_Data_Ref / Prm_Text_Ref to nothing
-  kBadCfg,              // a module's Cfg identifiers do not decode (profibus-dp.md §2.4)
-  kUnknownModule,       // configuration names a module the GSD does not have
-  kUnknownParameter,    // override names no parameter of the configuration
-  kNotChangeable,       // override of a parameter with Changeable = 0 (or F_Par_CRC)
-  kPrmTooLong,          // User_Prm_Data longer than Max_User_Prm_Data_Len / 237
-  kFParameterLayout,    // F-parameters not laid out as the PROFIsafe block
-  kModuleCount,         // wrong number of modules for the station type
+  kSyntax = 1,        // malformed token or line (unterminated string, stray character)
+  kMissingHeader,     // the first keyword line is not #Profibus_DP
+  kBlockStructure,    // End… without its block, nested block, block not closed
+  kBadValue,          // a keyword has the wrong kind or number of values
+  kOutOfRange,        // a value outside what the keyword or parameter allows
+  kMissingKeyword,    // a required keyword is absent (e.g. Ident_Number)
+  kDuplicate,         // a keyword, parameter number or module defined twice
+  kUnknownReference,  // Ext_User_Prm_Data_Ref / Prm_Text_Ref to nothing
+  kBadCfg,            // a module's Cfg identifiers do not decode ([IEC 61158-6-3 Chk_Cfg/Get_Cfg])
+  kUnknownModule,     // configuration names a module the GSD does not have
+  kUnknownParameter,  // override names no parameter of the configuration
+  kNotChangeable,     // override of a parameter with Changeable = 0 (or F_Par_CRC)
+  kPrmTooLong,        // User_Prm_Data longer than Max_User_Prm_Data_Len / 237
+  kFParameterLayout,  // F-parameters not laid out as the PROFIsafe block
+  kModuleCount,       // wrong number of modules for the station type
 };
 
 [[nodiscard]] std::string_view to_string(GsdError code) noexcept;
@@ -59,15 +59,15 @@ using Result = boost::outcome_v2::result<T, Error, boost::outcome_v2::policy::te
 // variable). RS4SIM_GSD_TRY(decl_or_lvalue, expr); RS4SIM_GSD_TRYV(expr) for Result<void>.
 #define RS4SIM_GSD_CONCAT_(a, b) a##b
 #define RS4SIM_GSD_CONCAT(a, b) RS4SIM_GSD_CONCAT_(a, b)
-#define RS4SIM_GSD_TRY_(tmp, decl, ...)     \
-  auto&& tmp = (__VA_ARGS__);               \
-  if (!tmp) return std::move(tmp).error();  \
+#define RS4SIM_GSD_TRY_(tmp, decl, ...)    \
+  auto&& tmp = (__VA_ARGS__);              \
+  if (!tmp) return std::move(tmp).error(); \
   decl = std::move(tmp).value()
 #define RS4SIM_GSD_TRY(decl, ...) \
   RS4SIM_GSD_TRY_(RS4SIM_GSD_CONCAT(rs4sim_gsd_try_, __LINE__), decl, __VA_ARGS__)
-#define RS4SIM_GSD_TRYV(...)                                      \
-  do {                                                            \
-    auto&& rs4sim_gsd_tryv = (__VA_ARGS__);                       \
+#define RS4SIM_GSD_TRYV(...)                                         \
+  do {                                                               \
+    auto&& rs4sim_gsd_tryv = (__VA_ARGS__);                          \
     if (!rs4sim_gsd_tryv) return std::move(rs4sim_gsd_tryv).error(); \
   } while (0)
 

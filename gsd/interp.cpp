@@ -1,4 +1,5 @@
-// GSD interpreter: top-level keywords (profibus-dp.md §5.2, §5.5), then blocks.
+// GSD interpreter: top-level keywords ([PROFIBUS GSD spec general keywords, DPV1 keywords]), then
+// blocks.
 #include "gsd/interp.h"
 
 #include "gsd/interp_detail.h"
@@ -21,45 +22,67 @@ struct NumberKey {
 };
 
 template <class T>
-T narrow(std::int64_t v) { return static_cast<T>(v); }
+T narrow(std::int64_t v) {
+  return static_cast<T>(v);
+}
 
 // Every numeric keyword the interpreter uses, with the range the GSD allows.
 const std::array<NumberKey, 40> kNumberKeys{{
     {"GSD_Revision", 0, 255, [](Device& d, std::int64_t v) { d.gsd_revision = narrow<int>(v); }},
-    {"Ident_Number", 0, 0xFFFF, [](Device& d, std::int64_t v) { d.ident_number = narrow<std::uint16_t>(v); }},
+    {"Ident_Number", 0, 0xFFFF,
+     [](Device& d, std::int64_t v) { d.ident_number = narrow<std::uint16_t>(v); }},
     {"Modular_Station", 0, 1, [](Device& d, std::int64_t v) { d.modular_station = v == 1; }},
-    {"Max_Module", 1, 244, [](Device& d, std::int64_t v) { d.max_module = narrow<std::uint8_t>(v); }},
-    {"Max_Input_Len", 0, 244, [](Device& d, std::int64_t v) { d.max_input_len = narrow<std::uint8_t>(v); }},
-    {"Max_Output_Len", 0, 244, [](Device& d, std::int64_t v) { d.max_output_len = narrow<std::uint8_t>(v); }},
-    {"Max_Data_Len", 0, 488, [](Device& d, std::int64_t v) { d.max_data_len = narrow<std::uint16_t>(v); }},
-    {"Max_Diag_Data_Len", 6, 244, [](Device& d, std::int64_t v) { d.max_diag_data_len = narrow<std::uint8_t>(v); }},
-    {"Min_Slave_Intervall", 1, 0xFFFF, [](Device& d, std::int64_t v) { d.min_slave_interval = narrow<std::uint16_t>(v); }},
+    {"Max_Module", 1, 244,
+     [](Device& d, std::int64_t v) { d.max_module = narrow<std::uint8_t>(v); }},
+    {"Max_Input_Len", 0, 244,
+     [](Device& d, std::int64_t v) { d.max_input_len = narrow<std::uint8_t>(v); }},
+    {"Max_Output_Len", 0, 244,
+     [](Device& d, std::int64_t v) { d.max_output_len = narrow<std::uint8_t>(v); }},
+    {"Max_Data_Len", 0, 488,
+     [](Device& d, std::int64_t v) { d.max_data_len = narrow<std::uint16_t>(v); }},
+    {"Max_Diag_Data_Len", 6, 244,
+     [](Device& d, std::int64_t v) { d.max_diag_data_len = narrow<std::uint8_t>(v); }},
+    {"Min_Slave_Intervall", 1, 0xFFFF,
+     [](Device& d, std::int64_t v) { d.min_slave_interval = narrow<std::uint16_t>(v); }},
     {"Fail_Safe", 0, 1, [](Device& d, std::int64_t v) { d.fail_safe = v == 1; }},
     {"Freeze_Mode_supp", 0, 1, [](Device& d, std::int64_t v) { d.freeze_mode = v == 1; }},
     {"Sync_Mode_supp", 0, 1, [](Device& d, std::int64_t v) { d.sync_mode = v == 1; }},
     {"Auto_Baud_supp", 0, 1, [](Device& d, std::int64_t v) { d.auto_baud = v == 1; }},
     {"Set_Slave_Add_supp", 0, 1, [](Device& d, std::int64_t v) { d.set_slave_add = v == 1; }},
-    {"Max_User_Prm_Data_Len", 0, 237, [](Device& d, std::int64_t v) { d.max_user_prm_data_len = narrow<std::uint8_t>(v); }},
+    {"Max_User_Prm_Data_Len", 0, 237,
+     [](Device& d, std::int64_t v) { d.max_user_prm_data_len = narrow<std::uint8_t>(v); }},
     {"DPV1_Slave", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.slave = v == 1; }},
     {"C1_Read_Write_supp", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.c1_read_write = v == 1; }},
     {"C2_Read_Write_supp", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.c2_read_write = v == 1; }},
-    {"C1_Max_Data_Len", 0, 240, [](Device& d, std::int64_t v) { d.dpv1.c1_max_data_len = narrow<std::uint8_t>(v); }},
-    {"C2_Max_Data_Len", 0, 240, [](Device& d, std::int64_t v) { d.dpv1.c2_max_data_len = narrow<std::uint8_t>(v); }},
-    {"C1_Response_Timeout", 1, 0xFFFF, [](Device& d, std::int64_t v) { d.dpv1.c1_response_timeout = narrow<std::uint16_t>(v); }},
-    {"C2_Response_Timeout", 1, 0xFFFF, [](Device& d, std::int64_t v) { d.dpv1.c2_response_timeout = narrow<std::uint16_t>(v); }},
-    {"C2_Max_Count_Channels", 0, 32, [](Device& d, std::int64_t v) { d.dpv1.c2_max_count_channels = narrow<std::uint8_t>(v); }},
-    {"Diagnostic_Alarm_supp", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.diagnostic_alarm = v == 1; }},
+    {"C1_Max_Data_Len", 0, 240,
+     [](Device& d, std::int64_t v) { d.dpv1.c1_max_data_len = narrow<std::uint8_t>(v); }},
+    {"C2_Max_Data_Len", 0, 240,
+     [](Device& d, std::int64_t v) { d.dpv1.c2_max_data_len = narrow<std::uint8_t>(v); }},
+    {"C1_Response_Timeout", 1, 0xFFFF,
+     [](Device& d, std::int64_t v) { d.dpv1.c1_response_timeout = narrow<std::uint16_t>(v); }},
+    {"C2_Response_Timeout", 1, 0xFFFF,
+     [](Device& d, std::int64_t v) { d.dpv1.c2_response_timeout = narrow<std::uint16_t>(v); }},
+    {"C2_Max_Count_Channels", 0, 32,
+     [](Device& d, std::int64_t v) { d.dpv1.c2_max_count_channels = narrow<std::uint8_t>(v); }},
+    {"Diagnostic_Alarm_supp", 0, 1,
+     [](Device& d, std::int64_t v) { d.dpv1.diagnostic_alarm = v == 1; }},
     {"Process_Alarm_supp", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.process_alarm = v == 1; }},
-    {"Pull_Plug_Alarm_supp", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.pull_plug_alarm = v == 1; }},
+    {"Pull_Plug_Alarm_supp", 0, 1,
+     [](Device& d, std::int64_t v) { d.dpv1.pull_plug_alarm = v == 1; }},
     {"Status_Alarm_supp", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.status_alarm = v == 1; }},
     {"Update_Alarm_supp", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.update_alarm = v == 1; }},
-    {"Manufacturer_Specific_Alarm_supp", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.manufacturer_specific_alarm = v == 1; }},
-    // DPV1_Status_3 Alarm_Mode can express 1 (per type), 2, 4, 8, 12, 16, 24, 32 (§3.1)
-    {"Alarm_Sequence_Mode_Count", 0, 32, [](Device& d, std::int64_t v) { d.dpv1.alarm_sequence_mode_count = narrow<std::uint8_t>(v); }},
-    {"Alarm_Type_Mode_supp", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.alarm_type_mode = v == 1; }},
+    {"Manufacturer_Specific_Alarm_supp", 0, 1,
+     [](Device& d, std::int64_t v) { d.dpv1.manufacturer_specific_alarm = v == 1; }},
+    // DPV1_Status_3 Alarm_Mode can express 1 (per type), 2, 4, 8, 12, 16, 24, 32
+    // ([IEC 61158-6-3 DPV1_Status])
+    {"Alarm_Sequence_Mode_Count", 0, 32,
+     [](Device& d, std::int64_t v) { d.dpv1.alarm_sequence_mode_count = narrow<std::uint8_t>(v); }},
+    {"Alarm_Type_Mode_supp", 0, 1,
+     [](Device& d, std::int64_t v) { d.dpv1.alarm_type_mode = v == 1; }},
     {"WD_Base_1ms_supp", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.wd_base_1ms = v == 1; }},
     {"Check_Cfg_Mode", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.check_cfg_mode = v == 1; }},
-    {"Prm_Block_Structure_supp", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.prm_block_structure = v == 1; }},
+    {"Prm_Block_Structure_supp", 0, 1,
+     [](Device& d, std::int64_t v) { d.dpv1.prm_block_structure = v == 1; }},
     {"Protocol_Ident", 0, 0, [](Device&, std::int64_t) {}},  // 0 = PROFIBUS-DP
     {"Station_Type", 0, 0, [](Device&, std::int64_t) {}},    // 0 = DP slave
     {"FMS_supp", 0, 1, [](Device&, std::int64_t) {}},
@@ -84,9 +107,16 @@ struct BaudName {
   std::string_view name;
   std::uint32_t bps;
 };
-constexpr std::array<BaudName, 10> kBauds{{{"9.6", 9600}, {"19.2", 19200}, {"45.45", 45450},
-    {"93.75", 93750}, {"187.5", 187500}, {"500", 500000}, {"1.5M", 1500000},
-    {"3M", 3000000}, {"6M", 6000000}, {"12M", 12000000}}};
+constexpr std::array<BaudName, 10> kBauds{{{"9.6", 9600},
+                                           {"19.2", 19200},
+                                           {"45.45", 45450},
+                                           {"93.75", 93750},
+                                           {"187.5", 187500},
+                                           {"500", 500000},
+                                           {"1.5M", 1500000},
+                                           {"3M", 3000000},
+                                           {"6M", 6000000},
+                                           {"12M", 12000000}}};
 
 std::string lower(std::string_view s) {
   std::string out(s);
@@ -100,7 +130,7 @@ class Interpreter {
   Result<Device> run();
 
  private:
-  Result<void> definitions();           // pass 1: PrmText, ExtUserPrmData
+  Result<void> definitions();  // pass 1: PrmText, ExtUserPrmData
   Result<void> statement(const syntax::Statement& st);
   Result<bool> baud_keyword(const syntax::Statement& st);
   Result<void> legacy_user_prm(const syntax::Statement& st);
@@ -110,8 +140,8 @@ class Interpreter {
   const syntax::File& file_;
   Device device_;
   detail::TemplateBuilder global_{"global User_Prm_Data", {}, {}, {}, std::nullopt, nullptr};
-  std::map<std::string, int> seen_;     // lower-case keyword(+arg) → line
-  std::set<std::string> given_;         // keywords present (lower case)
+  std::map<std::string, int> seen_;  // lower-case keyword(+arg) → line
+  std::set<std::string> given_;      // keywords present (lower case)
 };
 
 Result<void> Interpreter::once(const syntax::Statement& st) {
@@ -140,7 +170,8 @@ Result<void> Interpreter::definitions() {
       RS4SIM_GSD_TRY(auto t, detail::interpret_prm_text(file_.name, e));
       const int n = t.number;
       if (!device_.prm_texts.emplace(n, std::move(t)).second) {
-        return error(file_.name, e.statement, GsdError::kDuplicate, "PrmText " + std::to_string(n) + " defined twice");
+        return error(file_.name, e.statement, GsdError::kDuplicate,
+                     "PrmText " + std::to_string(n) + " defined twice");
       }
     }
   }
@@ -219,12 +250,15 @@ Result<void> Interpreter::finish() {
   bool any = false;
   for (const auto& b : device_.baud_rates) {
     if (b.supported && !b.max_tsdr) {
-      return Error{GsdError::kMissingKeyword, file_.name, seen_.at(lower(std::string(b.name) + "_supp")),
-                   std::string(b.name) + "_supp = 1", "MaxTsdr_" + std::string(b.name) + " is missing"};
+      return Error{
+          GsdError::kMissingKeyword, file_.name, seen_.at(lower(std::string(b.name) + "_supp")),
+          std::string(b.name) + "_supp = 1", "MaxTsdr_" + std::string(b.name) + " is missing"};
     }
     any = any || b.supported;
   }
-  if (!any) return Error{GsdError::kMissingKeyword, file_.name, 0, "", "no baud rate is supported (<rate>_supp = 1)"};
+  if (!any)
+    return Error{GsdError::kMissingKeyword, file_.name, 0, "",
+                 "no baud rate is supported (<rate>_supp = 1)"};
   std::optional<std::size_t> max;
   if (device_.max_user_prm_data_len) max = *device_.max_user_prm_data_len;
   RS4SIM_GSD_TRY(device_.user_prm, global_.finish(file_.name, device_.params, max));
@@ -244,7 +278,8 @@ Result<Device> Interpreter::run() {
     } else if (e.statement.is("Module")) {
       RS4SIM_GSD_TRY(auto m, detail::interpret_module(file_.name, e, device_.params));
       if (device_.find_module(m.name)) {
-        return error(file_.name, e.statement, GsdError::kDuplicate, "module \"" + m.name + "\" defined twice");
+        return error(file_.name, e.statement, GsdError::kDuplicate,
+                     "module \"" + m.name + "\" defined twice");
       }
       device_.modules.push_back(std::move(m));
     }

@@ -1,5 +1,5 @@
 #pragma once
-// GSD meaning (profibus-dp.md §5.2–§5.6): syntax::File → Device. Unknown keywords are
+// GSD meaning ([PROFIBUS GSD spec]): syntax::File → Device. Unknown keywords are
 // skipped (GSD files carry many keywords a master does not need); every keyword the
 // interpreter uses is checked for kind and range, every reference is resolved, and
 // every error names file:line and the offending text.

@@ -16,8 +16,8 @@ Error error(const std::string& file, const syntax::Statement& st, GsdError code,
             std::string message);
 
 // `keyword = n` with lo <= n <= hi.
-Result<std::int64_t> number(const std::string& file, const syntax::Statement& st,
-                            std::int64_t lo, std::int64_t hi);
+Result<std::int64_t> number(const std::string& file, const syntax::Statement& st, std::int64_t lo,
+                            std::int64_t hi);
 // `keyword = "a" "b"` → "ab" (adjacent strings concatenate, as after a `\` continuation).
 Result<std::string> string_value(const std::string& file, const syntax::Statement& st);
 // `keyword(off) = b0,b1,…` → the bytes; every value 0..255.
@@ -30,7 +30,7 @@ Result<std::int64_t> number_arg(const std::string& file, const syntax::Statement
 // Collects Ext_User_Prm_Data_Const/_Ref lines of one template; finish() checks them
 // against the declared length and the parameter definitions.
 struct TemplateBuilder {
-  std::string what;                         // "global User_Prm_Data", "module \"x\""
+  std::string what;  // "global User_Prm_Data", "module \"x\""
   struct Const {
     std::size_t offset;
     std::vector<std::uint8_t> bytes;
@@ -39,7 +39,7 @@ struct TemplateBuilder {
   std::vector<Const> consts;
   std::vector<PrmRef> refs;
   std::vector<const syntax::Statement*> ref_statements;
-  std::optional<std::size_t> length;        // declared length, if any
+  std::optional<std::size_t> length;  // declared length, if any
   const syntax::Statement* length_st = nullptr;
 
   bool empty() const { return consts.empty() && refs.empty(); }

@@ -1,4 +1,5 @@
-// Module … EndModule blocks (profibus-dp.md §5.4) with their PROFIsafe F-entries (§5.6).
+// Module … EndModule blocks ([PROFIBUS GSD spec modules]) with their PROFIsafe F-entries
+// ([PROFIBUS GSD spec F-parameter keywords]).
 #include "gsd/cfg.h"
 #include "gsd/interp_detail.h"
 
@@ -21,7 +22,8 @@ Result<void> read_head(const std::string& file, const syntax::Statement& head, M
   RS4SIM_GSD_TRY(m.cfg, byte_list(file, head, head.fields[1]));
   auto layout = decode_cfg(m.cfg);
   if (!layout) {
-    return error(file, head, GsdError::kBadCfg, "module \"" + m.name + "\": " + layout.error().message);
+    return error(file, head, GsdError::kBadCfg,
+                 "module \"" + m.name + "\": " + layout.error().message);
   }
   m.input_len = layout.value().input_bytes;
   m.output_len = layout.value().output_bytes;
@@ -30,7 +32,8 @@ Result<void> read_head(const std::string& file, const syntax::Statement& head, M
 
 Result<void> read_length(const std::string& file, const syntax::Statement& st, TemplateBuilder& t) {
   if (t.length_st) {
-    return error(file, st, GsdError::kDuplicate, st.keyword + " already given at line " + std::to_string(t.length_st->line));
+    return error(file, st, GsdError::kDuplicate,
+                 st.keyword + " already given at line " + std::to_string(t.length_st->line));
   }
   RS4SIM_GSD_TRY(const auto len, number(file, st, 0, 237));
   t.length = static_cast<std::size_t>(len);
@@ -45,7 +48,8 @@ Result<void> read_crc(const std::string& file, const syntax::Statement& st,
   return boost::outcome_v2::success();
 }
 
-Result<void> read_body_line(const std::string& file, const syntax::Statement& st, ModuleBuilder& b) {
+Result<void> read_body_line(const std::string& file, const syntax::Statement& st,
+                            ModuleBuilder& b) {
   if (st.keyword.empty()) {  // the module's reference number
     if (b.module.reference || st.fields.size() != 1 || st.fields[0].size() != 1 ||
         !st.fields[0][0].is_number() || st.fields[0][0].number < 0) {
@@ -76,7 +80,8 @@ Result<void> read_body_line(const std::string& file, const syntax::Statement& st
   return boost::outcome_v2::success();
 }
 
-// A template with bytes needs its declared length (§5.4: Ext_Module_Prm_Data_Len).
+// A template with bytes needs its declared length ([PROFIBUS GSD spec modules]:
+// Ext_Module_Prm_Data_Len).
 Result<void> require_length(const std::string& file, const syntax::Statement& head,
                             const TemplateBuilder& t, std::string_view keyword) {
   if (!t.empty() && !t.length) {

@@ -1,4 +1,4 @@
-// ExtUserPrmData and PrmText blocks (profibus-dp.md §5.2).
+// ExtUserPrmData and PrmText blocks ([PROFIBUS GSD spec general keywords]).
 #include "gsd/interp_detail.h"
 
 #include <algorithm>
@@ -46,13 +46,15 @@ Result<std::pair<std::int64_t, std::int64_t>> read_type(const std::string& file,
     }
     const auto& r = st.args[0];
     if (r.number < 0 || r.high > 7 || r.number > r.high) {
-      return error(file, st, GsdError::kOutOfRange, "BitArea(" + std::to_string(r.number) + "-" +
-                                                         std::to_string(r.high) + ") must lie within bits 0..7, first <= last");
+      return error(file, st, GsdError::kOutOfRange,
+                   "BitArea(" + std::to_string(r.number) + "-" + std::to_string(r.high) +
+                       ") must lie within bits 0..7, first <= last");
     }
     p.type = ParamType::kBitArea;
     p.bit_low = static_cast<int>(r.number);
     p.bit_high = static_cast<int>(r.high);
-    return std::pair<std::int64_t, std::int64_t>{0, (std::int64_t{1} << (p.bit_high - p.bit_low + 1)) - 1};
+    return std::pair<std::int64_t, std::int64_t>{
+        0, (std::int64_t{1} << (p.bit_high - p.bit_low + 1)) - 1};
   }
   for (const auto& t : kByteTypes) {
     if (st.is(t.keyword)) {
@@ -77,10 +79,12 @@ Result<void> read_type_line(const std::string& file, const syntax::Statement& st
   if (allowed.size() == 1 && allowed[0].is_range()) {
     p.min = allowed[0].number;
     p.max = allowed[0].high;
-    if (p.min > p.max) return error(file, st, GsdError::kOutOfRange, "range " + p.range_text() + " is empty");
+    if (p.min > p.max)
+      return error(file, st, GsdError::kOutOfRange, "range " + p.range_text() + " is empty");
   } else {
     for (const auto& v : allowed) {
-      if (!v.is_number()) return error(file, st, GsdError::kBadValue, "allowed values must be numbers");
+      if (!v.is_number())
+        return error(file, st, GsdError::kBadValue, "allowed values must be numbers");
       p.allowed.push_back(v.number);
     }
     p.min = *std::min_element(p.allowed.begin(), p.allowed.end());
@@ -105,20 +109,24 @@ Result<ExtParam> interpret_ext_param(const std::string& file, const syntax::Entr
   ExtParam p;
   p.line = head.line;
   if (!head.has_equals || head.fields.size() != 2 || head.fields[0].size() != 1 ||
-      !head.fields[0][0].is_number() || head.fields[1].size() != 1 || !head.fields[1][0].is_string()) {
+      !head.fields[0][0].is_number() || head.fields[1].size() != 1 ||
+      !head.fields[1][0].is_string()) {
     return error(file, head, GsdError::kBadValue, "ExtUserPrmData expects = <number> \"name\"");
   }
   const std::int64_t number_value = head.fields[0][0].number;
   if (number_value < 0 || number_value > 65535) {
-    return error(file, head, GsdError::kOutOfRange,
-                 "ExtUserPrmData number " + std::to_string(number_value) + " is out of range 0..65535");
+    return error(
+        file, head, GsdError::kOutOfRange,
+        "ExtUserPrmData number " + std::to_string(number_value) + " is out of range 0..65535");
   }
   p.number = static_cast<int>(number_value);
   p.name = head.fields[1][0].text;
   bool typed = false;
   for (const auto& st : *entry.body) {
     if (is_type_line(st)) {
-      if (typed) return error(file, st, GsdError::kDuplicate, "second type line in ExtUserPrmData " + std::to_string(p.number));
+      if (typed)
+        return error(file, st, GsdError::kDuplicate,
+                     "second type line in ExtUserPrmData " + std::to_string(p.number));
       RS4SIM_GSD_TRYV(read_type_line(file, st, p));
       typed = true;
     } else if (st.is("Prm_Text_Ref")) {
@@ -134,7 +142,8 @@ Result<ExtParam> interpret_ext_param(const std::string& file, const syntax::Entr
   }
   if (!typed) {
     return error(file, head, GsdError::kMissingKeyword,
-                 "ExtUserPrmData " + std::to_string(p.number) + " has no type line (Bit, BitArea, Unsigned8, …)");
+                 "ExtUserPrmData " + std::to_string(p.number) +
+                     " has no type line (Bit, BitArea, Unsigned8, …)");
   }
   return p;
 }
@@ -152,7 +161,8 @@ Result<PrmText> interpret_prm_text(const std::string& file, const syntax::Entry&
     }
     RS4SIM_GSD_TRY(auto text, string_value(file, st));
     if (!t.texts.emplace(st.args[0].number, std::move(text)).second) {
-      return error(file, st, GsdError::kDuplicate, "Text(" + std::to_string(st.args[0].number) + ") given twice");
+      return error(file, st, GsdError::kDuplicate,
+                   "Text(" + std::to_string(st.args[0].number) + ") given twice");
     }
   }
   return t;

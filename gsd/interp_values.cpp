@@ -1,4 +1,4 @@
-// Value helpers and the user-parameter template builder (profibus-dp.md §5.3).
+// Value helpers and the user-parameter template builder ([PROFIBUS GSD spec User_Prm_Data]).
 #include "gsd/interp_detail.h"
 
 #include <algorithm>
@@ -16,8 +16,8 @@ std::string range(std::int64_t lo, std::int64_t hi) {
 }
 }  // namespace
 
-Result<std::int64_t> number(const std::string& file, const syntax::Statement& st,
-                            std::int64_t lo, std::int64_t hi) {
+Result<std::int64_t> number(const std::string& file, const syntax::Statement& st, std::int64_t lo,
+                            std::int64_t hi) {
   if (!st.has_equals || st.fields.size() != 1 || st.fields[0].size() != 1 ||
       !st.fields[0][0].is_number()) {
     return error(file, st, GsdError::kBadValue, st.keyword + " expects one number");
@@ -46,12 +46,13 @@ Result<std::vector<std::uint8_t>> byte_list(const std::string& file, const synta
   std::vector<std::uint8_t> bytes;
   for (const auto& v : field) {
     if (!v.is_number()) {
-      return error(file, st, GsdError::kBadValue, st.keyword + ": byte value expected, got '" +
-                                                       v.text + "'");
+      return error(file, st, GsdError::kBadValue,
+                   st.keyword + ": byte value expected, got '" + v.text + "'");
     }
     if (v.number < 0 || v.number > 255) {
-      return error(file, st, GsdError::kOutOfRange,
-                   st.keyword + ": byte value " + std::to_string(v.number) + " is out of range 0..255");
+      return error(
+          file, st, GsdError::kOutOfRange,
+          st.keyword + ": byte value " + std::to_string(v.number) + " is out of range 0..255");
     }
     bytes.push_back(static_cast<std::uint8_t>(v.number));
   }
@@ -65,8 +66,8 @@ Result<std::int64_t> number_arg(const std::string& file, const syntax::Statement
   }
   const std::int64_t v = st.args[0].number;
   if (v < lo || v > hi) {
-    return error(file, st, GsdError::kOutOfRange, st.keyword + "(" + std::to_string(v) +
-                                                       ") is out of range " + range(lo, hi));
+    return error(file, st, GsdError::kOutOfRange,
+                 st.keyword + "(" + std::to_string(v) + ") is out of range " + range(lo, hi));
   }
   return v;
 }
@@ -107,7 +108,8 @@ Result<PrmTemplate> TemplateBuilder::finish(const std::string& file,
   }
   t.length = length.value_or(extent);
   if (max_length && t.length > *max_length) {
-    const syntax::Statement* at = length_st ? length_st : (consts.empty() ? ref_statements.front() : consts.front().st);
+    const syntax::Statement* at =
+        length_st ? length_st : (consts.empty() ? ref_statements.front() : consts.front().st);
     return error(file, *at, GsdError::kPrmTooLong,
                  what + " is " + std::to_string(t.length) + " bytes, more than the maximum " +
                      std::to_string(*max_length));
@@ -115,8 +117,9 @@ Result<PrmTemplate> TemplateBuilder::finish(const std::string& file,
   for (const auto& c : consts) {
     if (c.offset + c.bytes.size() > t.length) {
       return error(file, *c.st, GsdError::kOutOfRange,
-                   what + ": constant bytes end at byte " + std::to_string(c.offset + c.bytes.size()) +
-                       ", beyond the length " + std::to_string(t.length));
+                   what + ": constant bytes end at byte " +
+                       std::to_string(c.offset + c.bytes.size()) + ", beyond the length " +
+                       std::to_string(t.length));
     }
   }
   for (std::size_t i = 0; i < refs.size(); ++i) {
@@ -128,7 +131,9 @@ Result<PrmTemplate> TemplateBuilder::finish(const std::string& file,
     }
   }
   t.defaults.assign(t.length, 0);
-  for (const auto& c : consts) std::copy(c.bytes.begin(), c.bytes.end(), t.defaults.begin() + static_cast<std::ptrdiff_t>(c.offset));
+  for (const auto& c : consts)
+    std::copy(c.bytes.begin(), c.bytes.end(),
+              t.defaults.begin() + static_cast<std::ptrdiff_t>(c.offset));
   return t;
 }
 

@@ -1,5 +1,5 @@
 // GSD lexer: physical lines → logical lines → tokens → one Statement per logical line.
-// Grammar (profibus-dp.md §5.1): `;` starts a comment (outside strings), `\` at the end
+// Grammar ([PROFIBUS GSD spec syntax]): `;` starts a comment (outside strings), `\` at the end
 // of a line continues it, strings are "…", numbers are decimal or 0x-hex, keywords
 // may start with digits (`9.6_supp`, `MaxTsdr_1.5M`).
 #include "gsd/syntax.h"
@@ -76,8 +76,9 @@ Result<std::vector<Token>> tokenize(const LogicalLine& line, const std::string& 
     } else {
       const auto byte = static_cast<unsigned char>(c);
       char shown[48];
-      std::snprintf(shown, sizeof shown, std::isprint(byte) ? "unexpected character '%c'"
-                                                            : "unexpected byte 0x%02X", byte);
+      std::snprintf(shown, sizeof shown,
+                    std::isprint(byte) ? "unexpected character '%c'" : "unexpected byte 0x%02X",
+                    byte);
       return error_at(file, line.line, s, shown);
     }
   }
@@ -238,15 +239,18 @@ Result<std::vector<LogicalLine>> split_logical_lines(std::string_view text,
     std::string_view body = strip_comment(physical);
     const bool continues = !body.empty() && body.back() == '\\';
     if (continues) body.remove_suffix(1);
-    if (!pending) pending = LogicalLine{number, {}};
-    else pending->text += ' ';
+    if (!pending)
+      pending = LogicalLine{number, {}};
+    else
+      pending->text += ' ';
     pending->text.append(body);
     if (pending->text.size() > kMaxLogicalLine) {
       return error_at(file_name, pending->line, pending->text.substr(0, 80), "line too long");
     }
     if (!continues || last) {
       if (continues) {
-        return error_at(file_name, pending->line, pending->text, "'\\' continues past the end of the file");
+        return error_at(file_name, pending->line, pending->text,
+                        "'\\' continues past the end of the file");
       }
       const auto first = pending->text.find_first_not_of(" \t\r\f\v");
       if (first != std::string::npos) out.push_back(std::move(*pending));

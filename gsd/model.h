@@ -1,5 +1,5 @@
 #pragma once
-// The meaning of a GSD (profibus-dp.md §5.2–§5.6): what a master needs to know about a
+// The meaning of a GSD ([PROFIBUS GSD spec]): what a master needs to know about a
 // slave. Produced by gsd::interpret() / gsd::parse() (interp.h).
 
 #include <cstddef>
@@ -14,17 +14,18 @@ namespace rs4sim::gsd {
 
 // One of the ten DP baud rates with its `<name>_supp` and `MaxTsdr_<name>` keywords.
 struct BaudRate {
-  std::string_view name;          // as in the keywords: "9.6" … "12M"
+  std::string_view name;  // as in the keywords: "9.6" … "12M"
   std::uint32_t bits_per_second = 0;
   bool supported = false;
   std::optional<std::uint16_t> max_tsdr;  // Tbit; absent when the file does not say
 };
 
-// DP-V1 capabilities (§5.5). Timeouts as written in the file (unit 10 ms by convention).
+// DP-V1 capabilities ([PROFIBUS GSD spec DPV1 keywords]). Timeouts as written in the file (unit 10
+// ms by convention).
 struct Dpv1Info {
-  bool slave = false;                 // DPV1_Slave
-  bool c1_read_write = false;         // C1_Read_Write_supp
-  bool c2_read_write = false;         // C2_Read_Write_supp
+  bool slave = false;          // DPV1_Slave
+  bool c1_read_write = false;  // C1_Read_Write_supp
+  bool c2_read_write = false;  // C2_Read_Write_supp
   std::uint8_t c1_max_data_len = 0;
   std::uint8_t c2_max_data_len = 0;
   std::uint16_t c1_response_timeout = 0;
@@ -40,24 +41,32 @@ struct Dpv1Info {
   bool alarm_type_mode = false;
   bool wd_base_1ms = false;
   bool check_cfg_mode = false;
-  bool prm_block_structure = false;   // Prm_Block_Structure_supp
+  bool prm_block_structure = false;  // Prm_Block_Structure_supp
 };
 
-enum class ParamType { kBit, kBitArea, kUnsigned8, kUnsigned16, kUnsigned32,
-                       kSigned8, kSigned16, kSigned32 };
+enum class ParamType {
+  kBit,
+  kBitArea,
+  kUnsigned8,
+  kUnsigned16,
+  kUnsigned32,
+  kSigned8,
+  kSigned16,
+  kSigned32
+};
 
 std::string_view to_string(ParamType type);
 std::size_t byte_size(ParamType type);  // bytes written at the reference offset
 
-// ExtUserPrmData = n "name" … EndExtUserPrmData (§5.2).
+// ExtUserPrmData = n "name" … EndExtUserPrmData ([PROFIBUS GSD spec general keywords]).
 struct ExtParam {
   int number = 0;
   std::string name;
   ParamType type = ParamType::kUnsigned8;
-  int bit_low = 0;                    // kBit: the bit; kBitArea: first bit
-  int bit_high = 0;                   // kBitArea: last bit (kBit: same as bit_low)
+  int bit_low = 0;   // kBit: the bit; kBitArea: first bit
+  int bit_high = 0;  // kBitArea: last bit (kBit: same as bit_low)
   std::int64_t default_value = 0;
-  std::int64_t min = 0;               // allowed range when `allowed` is empty
+  std::int64_t min = 0;  // allowed range when `allowed` is empty
   std::int64_t max = 0;
   std::vector<std::int64_t> allowed;  // list form `a,b,c`
   std::optional<int> prm_text_ref;
@@ -66,7 +75,7 @@ struct ExtParam {
   int line = 0;
 
   bool accepts(std::int64_t value) const;
-  std::string range_text() const;     // "10..1000" or "0, 6, 10"
+  std::string range_text() const;  // "10..1000" or "0, 6, 10"
 };
 
 struct PrmText {
@@ -90,13 +99,13 @@ struct PrmTemplate {
 
 struct Module {
   std::string name;
-  std::vector<std::uint8_t> cfg;       // Chk_Cfg identifiers (§2.4)
-  std::size_t input_len = 0;           // bytes, from the Cfg identifiers
+  std::vector<std::uint8_t> cfg;  // Chk_Cfg identifiers ([IEC 61158-6-3 Chk_Cfg/Get_Cfg])
+  std::size_t input_len = 0;      // bytes, from the Cfg identifiers
   std::size_t output_len = 0;
   std::optional<std::uint32_t> reference;  // the bare number line after Module
   std::string info_text;
   PrmTemplate prm;
-  std::optional<PrmTemplate> f_prm;    // F_Ext_Module_Prm_Data_Len / F_Ext_User_Prm_Data_*
+  std::optional<PrmTemplate> f_prm;  // F_Ext_Module_Prm_Data_Len / F_Ext_User_Prm_Data_*
   std::optional<std::uint16_t> f_param_desc_crc;
   std::optional<std::uint16_t> f_io_structure_desc_crc;
   int line = 0;
@@ -111,7 +120,7 @@ struct Device {
   std::string order_number;
   std::string info_text;
   std::uint16_t ident_number = 0;
-  std::vector<BaudRate> baud_rates;    // the ten DP rates, slowest first
+  std::vector<BaudRate> baud_rates;  // the ten DP rates, slowest first
   bool modular_station = false;
   std::uint8_t max_module = 1;
   std::uint8_t max_input_len = 0;
@@ -126,7 +135,7 @@ struct Device {
   bool set_slave_add = false;
   Dpv1Info dpv1;
   std::optional<std::uint8_t> max_user_prm_data_len;
-  PrmTemplate user_prm;                // legacy User_Prm_Data or Ext_User_Prm_Data_*
+  PrmTemplate user_prm;  // legacy User_Prm_Data or Ext_User_Prm_Data_*
   std::map<int, ExtParam> params;
   std::map<int, PrmText> prm_texts;
   std::vector<Module> modules;

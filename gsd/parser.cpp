@@ -1,4 +1,4 @@
-// GSD parser: statements → entries with blocks (profibus-dp.md §5.1). Checks only the
+// GSD parser: statements → entries with blocks ([PROFIBUS GSD spec syntax]). Checks only the
 // structure: the #Profibus_DP header first, every block closed by its own End keyword,
 // no block inside another.
 #include "gsd/syntax.h"
@@ -45,8 +45,7 @@ Error structure_error(const std::string& file, const Statement& st, std::string 
 }  // namespace
 
 bool iequals(std::string_view a, std::string_view b) {
-  return a.size() == b.size() &&
-         std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
            return std::tolower(static_cast<unsigned char>(x)) ==
                   std::tolower(static_cast<unsigned char>(y));
          });
@@ -73,15 +72,16 @@ Result<File> parse_syntax(std::string_view text, std::string file_name) {
     if (const BlockKind* starts = opener(st)) {
       if (open) {
         return structure_error(file_name, st,
-            std::string(starts->open) + " inside " + std::string(open->open) + " started at line " +
-            std::to_string(file.entries.back().statement.line));
+                               std::string(starts->open) + " inside " + std::string(open->open) +
+                                   " started at line " +
+                                   std::to_string(file.entries.back().statement.line));
       }
       open = starts;
       file.entries.push_back({std::move(st), std::vector<Statement>{}});
     } else if (const BlockKind* ends = closer(st)) {
       if (open != ends) {
         return structure_error(file_name, st,
-            std::string(ends->close) + " without " + std::string(ends->open));
+                               std::string(ends->close) + " without " + std::string(ends->open));
       }
       if (st.has_args || st.has_equals || !st.fields.empty()) {
         return structure_error(file_name, st, std::string(ends->close) + " takes no value");
@@ -95,8 +95,9 @@ Result<File> parse_syntax(std::string_view text, std::string file_name) {
   }
   if (open) {
     const Statement& head = file.entries.back().statement;
-    return structure_error(file_name, head, std::string(open->open) + " is not closed (" +
-                                                std::string(open->close) + " missing)");
+    return structure_error(
+        file_name, head,
+        std::string(open->open) + " is not closed (" + std::string(open->close) + " missing)");
   }
   return file;
 }

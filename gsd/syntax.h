@@ -1,5 +1,5 @@
 #pragma once
-// GSD syntax (profibus-dp.md §5.1): what the text says, before any meaning is given to
+// GSD syntax ([PROFIBUS GSD spec syntax]): what the text says, before any meaning is given to
 // it. The parser turns a GSD text into logical lines (comments `;` removed, lines ending
 // in `\` joined), each line into a Statement (keyword, optional `(args)`, optional `=`,
 // value fields) and groups the statements between block keywords (Module…EndModule,
@@ -35,20 +35,20 @@ struct Value {
 using Field = std::vector<Value>;
 
 struct Statement {
-  int line = 0;               // first physical line of the logical line (1-based)
-  std::string keyword;        // as written; "#Profibus_DP" for the header; empty for a
-                              // line of bare values (a module's reference number)
-  bool has_args = false;      // `keyword(args)`
+  int line = 0;           // first physical line of the logical line (1-based)
+  std::string keyword;    // as written; "#Profibus_DP" for the header; empty for a
+                          // line of bare values (a module's reference number)
+  bool has_args = false;  // `keyword(args)`
   std::vector<Value> args;
   bool has_equals = false;
   std::vector<Field> fields;
-  std::string text;           // the logical line, comments removed, for error messages
+  std::string text;  // the logical line, comments removed, for error messages
 
   bool is(std::string_view name) const;  // case-insensitive keyword comparison
 };
 
 struct Entry {
-  Statement statement;                        // a plain statement or a block's head
+  Statement statement;                         // a plain statement or a block's head
   std::optional<std::vector<Statement>> body;  // set for blocks (without the End line)
 };
 

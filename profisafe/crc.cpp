@@ -1,4 +1,4 @@
-// CRC machinery (profisafe-v1.md §2, §4). See crc.h.
+// CRC machinery ([IEC 61784-3-3 CRC1, CRC2]). See crc.h.
 #include "profisafe/crc.h"
 
 #include "codec/writer.h"
@@ -14,7 +14,8 @@ std::uint32_t Crc::update(std::uint32_t reg, std::span<const std::uint8_t> data)
   return reg;
 }
 
-std::uint32_t Crc::update_reversed(std::uint32_t reg, std::span<const std::uint8_t> data) const noexcept {
+std::uint32_t Crc::update_reversed(std::uint32_t reg,
+                                   std::span<const std::uint8_t> data) const noexcept {
   const unsigned shift = width_ - 8u;
   for (auto it = data.rbegin(); it != data.rend(); ++it) {
     const auto index = static_cast<std::uint8_t>((reg >> shift) ^ *it);
@@ -31,10 +32,11 @@ constexpr Crc kCrc24{24, kCrc24Poly};
 const Crc& crc16() noexcept { return kCrc16; }
 const Crc& crc24() noexcept { return kCrc24; }
 
-std::uint16_t crc1(std::span<const std::uint8_t, 8> block8, std::optional<std::uint32_t> ipar_crc) noexcept {
+std::uint16_t crc1(std::span<const std::uint8_t, 8> block8,
+                   std::optional<std::uint32_t> ipar_crc) noexcept {
   std::uint32_t reg = 0;
   if (ipar_crc) {
-    // §2: the F_iPar_CRC's big-endian bytes come first (VERIFIED vector 3).
+    // [IEC 61784-3-3 CRC1]: the F_iPar_CRC's big-endian bytes come first (VERIFIED vector 3).
     std::array<std::uint8_t, 4> ipar{};
     codec::Writer(ipar).u32_be(*ipar_crc);
     reg = kCrc16.update(reg, ipar);

@@ -1,5 +1,5 @@
 #pragma once
-// CRC machinery of PROFIsafe (profisafe-v1.md §2, §4).
+// CRC machinery of PROFIsafe ([IEC 61784-3-3 CRC1, CRC2]).
 //
 // All PROFIsafe CRCs are MSB-first ("non-reflected"), no final XOR; they differ in width,
 // polynomial and preset. CRC1 (F_Par_CRC) is VERIFIED against three published blocks;
@@ -13,9 +13,9 @@
 
 namespace rs4sim::profisafe {
 
-// CRC-16 polynomial of CRC1 and of the 2-byte CRC2 (x^16 + 0x4EAB), §2.
+// CRC-16 polynomial of CRC1 and of the 2-byte CRC2 (x^16 + 0x4EAB), [IEC 61784-3-3 CRC1].
 inline constexpr std::uint32_t kCrc16Poly = 0x4EAB;
-// CRC-24 polynomial of the V2 3-byte CRC2, §4 (VERIFIED on the capture).
+// CRC-24 polynomial of the V2 3-byte CRC2, [IEC 61784-3-3 CRC2] (VERIFIED on the capture).
 inline constexpr std::uint32_t kCrc24Poly = 0x5D6DCB;
 
 // A table-driven MSB-first CRC of width 16 or 24 (8 < width <= 32, multiple of 8 not
@@ -23,8 +23,10 @@ inline constexpr std::uint32_t kCrc24Poly = 0x5D6DCB;
 class Crc {
  public:
   constexpr Crc(unsigned width, std::uint32_t poly) noexcept;
-  [[nodiscard]] std::uint32_t update(std::uint32_t reg, std::span<const std::uint8_t> data) const noexcept;
-  [[nodiscard]] std::uint32_t update_reversed(std::uint32_t reg, std::span<const std::uint8_t> data) const noexcept;
+  [[nodiscard]] std::uint32_t update(std::uint32_t reg,
+                                     std::span<const std::uint8_t> data) const noexcept;
+  [[nodiscard]] std::uint32_t update_reversed(std::uint32_t reg,
+                                              std::span<const std::uint8_t> data) const noexcept;
   [[nodiscard]] constexpr unsigned width() const noexcept { return width_; }
   [[nodiscard]] constexpr std::uint32_t poly() const noexcept { return poly_; }
   [[nodiscard]] constexpr std::uint32_t mask() const noexcept { return mask_; }
@@ -41,7 +43,7 @@ const Crc& crc16() noexcept;
 const Crc& crc24() noexcept;
 
 // CRC1 = F_Par_CRC over the 8 bytes F_Prm_Flag1 .. F_WD_Time (preset 0). When an
-// F_iPar_CRC exists, its 4 big-endian bytes are fed first (§2, VERIFIED).
+// F_iPar_CRC exists, its 4 big-endian bytes are fed first ([IEC 61784-3-3 CRC1], VERIFIED).
 [[nodiscard]] std::uint16_t crc1(std::span<const std::uint8_t, 8> block8,
                                  std::optional<std::uint32_t> ipar_crc = std::nullopt) noexcept;
 

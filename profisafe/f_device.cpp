@@ -1,4 +1,5 @@
-// PROFIsafe F-device driver (profisafe-v1.md §5). See f_device.h and docs/profisafe.md.
+// PROFIsafe F-device driver ([PROFIsafe V1.30 F-Device behaviour]). See f_device.h and
+// docs/profisafe.md.
 #include "profisafe/f_device.h"
 
 #include <algorithm>
@@ -11,7 +12,8 @@ FDevice::FDevice(FDeviceConfig config) : config_(config) {
     throw std::invalid_argument("FDevice: data_size must be 1..12");
   }
   if (config_.profile.par_version != 0 || config_.profile.crc_length != CrcLength::k2Byte) {
-    throw std::invalid_argument("FDevice: only PROFIsafe V1 (F_Par_Version 0, 2-byte CRC) is driven");
+    throw std::invalid_argument(
+        "FDevice: only PROFIsafe V1 (F_Par_Version 0, 2-byte CRC) is driven");
   }
   pdu_config_.data_size = config_.data_size;
   pdu_config_.variant = config_.crc2_variant;
@@ -41,7 +43,8 @@ Validation FDevice::set_parameters(std::span<const std::uint8_t> block) {
 }
 
 void FDevice::set_input(std::span<const std::uint8_t> data) {
-  if (data.size() != config_.data_size) throw std::invalid_argument("FDevice::set_input: wrong data size");
+  if (data.size() != config_.data_size)
+    throw std::invalid_argument("FDevice::set_input: wrong data size");
   std::copy(data.begin(), data.end(), input_.begin());
   build_response();
 }
@@ -52,7 +55,8 @@ bool FDevice::sends_process_values() const noexcept {
 
 std::uint8_t FDevice::status_byte() const noexcept {
   if (state_ == FDeviceState::kNoParameters) return 0;
-  return static_cast<std::uint8_t>(fault_bits_ | (sends_process_values() ? 0 : status_bit::kFvActivated));
+  return static_cast<std::uint8_t>(fault_bits_ |
+                                   (sends_process_values() ? 0 : status_bit::kFvActivated));
 }
 
 void FDevice::enter_fault(std::uint8_t bit) {
@@ -102,8 +106,9 @@ FDeviceEvent FDevice::on_pdu(std::span<const std::uint8_t> pdu, TimePoint now) {
     if (state_ == FDeviceState::kFault) fault_reported_ = true;
     event = FDeviceEvent::kRepeat;
   } else if (synced_ && last_check_.consecutive_number != next_consecutive_number(last_number_)) {
-    // §5 UNCERTAIN detail: a wrong number is a communication fault reported as CE_CRC.
-    // The device then re-synchronises to the host's next valid number (docs/profisafe.md).
+    // [PROFIsafe V1.30 F-Device behaviour] UNCERTAIN detail: a wrong number is a communication
+    // fault reported as CE_CRC. The device then re-synchronises to the host's next valid number
+    // (docs/profisafe.md).
     ++counters_.number_errors;
     enter_fault(status_bit::kCeCrc);
     synced_ = false;
@@ -117,7 +122,8 @@ FDeviceEvent FDevice::on_pdu(std::span<const std::uint8_t> pdu, TimePoint now) {
 
 void FDevice::on_time(TimePoint now) {
   if (watchdog_deadline_ && now >= *watchdog_deadline_) {
-    // §5: no valid new PDU within F_WD_Time → WD_timeout, fail-safe values.
+    // [PROFIsafe V1.30 F-Device behaviour]: no valid new PDU within F_WD_Time → WD_timeout,
+    // fail-safe values.
     ++counters_.watchdog_timeouts;
     watchdog_deadline_.reset();
     enter_fault(status_bit::kWdTimeout);
@@ -138,8 +144,9 @@ void FDevice::build_response() {
   if (state_ == FDeviceState::kNoParameters) return;  // all-zero PDU (DECISION)
   std::array<std::uint8_t, kMaxDataSize> data{};
   if (sends_process_values()) data = input_;
-  const auto written = build_pdu(pdu_config_, std::span<const std::uint8_t>(data).first(config_.data_size),
-                                 status_byte(), last_number_, response_);
+  const auto written =
+      build_pdu(pdu_config_, std::span<const std::uint8_t>(data).first(config_.data_size),
+                status_byte(), last_number_, response_);
   (void)written;
 }
 
@@ -157,9 +164,11 @@ void FDevice::apply_faults() {
   if ((skip || faults_.crc1_override) && state_ != FDeviceState::kNoParameters) {
     PduConfig c = pdu_config_;
     if (faults_.crc1_override) c.crc1 = *faults_.crc1_override;
-    const std::uint8_t n = skip ? next_consecutive_number(response_[number_at]) : response_[number_at];
-    const auto written = build_pdu(c, std::span<const std::uint8_t>(response_).first(config_.data_size),
-                                   response_[config_.data_size], n, wire_);
+    const std::uint8_t n =
+        skip ? next_consecutive_number(response_[number_at]) : response_[number_at];
+    const auto written =
+        build_pdu(c, std::span<const std::uint8_t>(response_).first(config_.data_size),
+                  response_[config_.data_size], n, wire_);
     (void)written;  // cannot fail: the configuration was checked when it was set
   }
   if (faults_.corrupt_crc2 > 0) {

@@ -1,5 +1,5 @@
 #pragma once
-// PROFIsafe F-device driver (profisafe-v1.md §5; rules in docs/profisafe.md).
+// PROFIsafe F-device driver ([PROFIsafe V1.30 F-Device behaviour]; rules in docs/profisafe.md).
 //
 // Sans-I/O: the DP slave hands each received F-output PDU to on_pdu() with `now`, then
 // sends response(). The application sets its input data with set_input() and reads the
@@ -26,9 +26,9 @@ namespace rs4sim::profisafe {
 using TimePoint = std::chrono::steady_clock::time_point;
 
 struct FDeviceConfig {
-  DeviceProfile profile{};       // fixed values, ranges, own F_Dest_Add
-  std::size_t data_size = 1;     // F-data bytes each way
-  Crc2Variant crc2_variant{};    // V1 CRC2 rule (UNCERTAIN, see pdu.h)
+  DeviceProfile profile{};     // fixed values, ranges, own F_Dest_Add
+  std::size_t data_size = 1;   // F-data bytes each way
+  Crc2Variant crc2_variant{};  // V1 CRC2 rule (UNCERTAIN, see pdu.h)
 };
 
 enum class FDeviceState : std::uint8_t { kNoParameters, kStartup, kRun, kFault };
@@ -36,11 +36,11 @@ enum class FDeviceState : std::uint8_t { kNoParameters, kStartup, kRun, kFault }
 
 // What on_pdu() made of a host PDU.
 enum class FDeviceEvent : std::uint8_t {
-  kIgnored,       // no valid F-parameters: not evaluated
-  kNew,           // valid PDU with a new consecutive number (watchdog restarted)
-  kRepeat,        // valid PDU repeating the last number (nothing changes)
-  kCrcError,      // size or CRC2 wrong → CE_CRC, fail-safe values
-  kNumberError,   // consecutive number neither last nor next → CE_CRC, fail-safe values
+  kIgnored,      // no valid F-parameters: not evaluated
+  kNew,          // valid PDU with a new consecutive number (watchdog restarted)
+  kRepeat,       // valid PDU repeating the last number (nothing changes)
+  kCrcError,     // size or CRC2 wrong → CE_CRC, fail-safe values
+  kNumberError,  // consecutive number neither last nor next → CE_CRC, fail-safe values
 };
 [[nodiscard]] const char* to_string(FDeviceEvent e) noexcept;
 
@@ -101,8 +101,8 @@ class FDevice {
   std::array<std::uint8_t, kMaxDataSize> input_{};
   std::array<std::uint8_t, kMaxDataSize> output_{};
   std::array<std::uint8_t, kMaxPduSize> response_{};
-  std::array<std::uint8_t, kMaxPduSize> sent_{};   // what response() returned last
-  std::array<std::uint8_t, kMaxPduSize> wire_{};   // response with faults applied
+  std::array<std::uint8_t, kMaxPduSize> sent_{};  // what response() returned last
+  std::array<std::uint8_t, kMaxPduSize> wire_{};  // response with faults applied
   std::size_t response_size_ = 0;
   std::uint16_t wd_time_ms_ = 0;
   bool has_sent_ = false;

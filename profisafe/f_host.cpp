@@ -1,4 +1,5 @@
-// PROFIsafe F-host driver, V1 (profisafe-v1.md §5). See f_host.h and docs/profisafe.md.
+// PROFIsafe F-host driver, V1 ([PROFIsafe V1.30 F-Device behaviour]). See f_host.h and
+// docs/profisafe.md.
 #include "profisafe/f_host.h"
 
 #include <algorithm>
@@ -28,7 +29,8 @@ std::array<std::uint8_t, kFParametersSize> FHost::parameter_block() const noexce
 }
 
 void FHost::set_output(std::span<const std::uint8_t> data) {
-  if (data.size() != config_.data_size) throw std::invalid_argument("FHost::set_output: wrong data size");
+  if (data.size() != config_.data_size)
+    throw std::invalid_argument("FHost::set_output: wrong data size");
   std::copy(data.begin(), data.end(), output_.begin());
 }
 
@@ -58,8 +60,9 @@ void FHost::build_new_pdu(TimePoint now) {
   if (!fail_safe) data = output_;
   const auto control =
       static_cast<std::uint8_t>(fail_safe || user_activate_fv_ ? control_bit::kActivateFv : 0);
-  const auto written = build_pdu(pdu_config_, std::span<const std::uint8_t>(data).first(config_.data_size), control,
-                                 number_, pdu_);
+  const auto written =
+      build_pdu(pdu_config_, std::span<const std::uint8_t>(data).first(config_.data_size), control,
+                number_, pdu_);
   (void)written;  // cannot fail: the configuration was checked in the constructor
   outstanding_ = true;
   watchdog_deadline_ = now + std::chrono::milliseconds(config_.params.wd_time_ms);
@@ -81,7 +84,8 @@ std::span<const std::uint8_t> FHost::request(TimePoint now) {
     c.crc1 = *faults_.crc1_override;
     const std::size_t ds = config_.data_size;
     const auto fields = wire_;  // build_pdu must not read and write the same buffer
-    const auto written = build_pdu(c, std::span<const std::uint8_t>(fields).first(ds), fields[ds], fields[ds + 1], wire_);
+    const auto written = build_pdu(c, std::span<const std::uint8_t>(fields).first(ds), fields[ds],
+                                   fields[ds + 1], wire_);
     (void)written;
   }
   if (faults_.corrupt_crc2 > 0) {
@@ -133,13 +137,15 @@ FHostEvent FHost::on_pdu(std::span<const std::uint8_t> pdu, TimePoint now) {
     return FHostEvent::kNumberError;
   }
   handle_valid(last_check_);
-  return (last_status_ & (status_bit::kCeCrc | status_bit::kWdTimeout)) != 0 ? FHostEvent::kDeviceFault
-                                                                              : FHostEvent::kValid;
+  return (last_status_ & (status_bit::kCeCrc | status_bit::kWdTimeout)) != 0
+             ? FHostEvent::kDeviceFault
+             : FHostEvent::kValid;
 }
 
 void FHost::on_time(TimePoint now) {
   if (watchdog_deadline_ && now >= *watchdog_deadline_) {
-    // §5: no valid answer within F_WD_Time → passivate; keep waiting for the answer.
+    // [PROFIsafe V1.30 F-Device behaviour]: no valid answer within F_WD_Time → passivate; keep
+    // waiting for the answer.
     ++counters_.watchdog_timeouts;
     watchdog_deadline_.reset();
     passivate();
@@ -150,7 +156,8 @@ std::optional<TimePoint> FHost::next_deadline() const noexcept { return watchdog
 
 std::span<const std::uint8_t> FHost::input() const noexcept {
   static const std::array<std::uint8_t, kMaxDataSize> kZero{};
-  if (state_ != FHostState::kRun) return std::span<const std::uint8_t>(kZero).first(config_.data_size);
+  if (state_ != FHostState::kRun)
+    return std::span<const std::uint8_t>(kZero).first(config_.data_size);
   return std::span<const std::uint8_t>(input_).first(config_.data_size);
 }
 

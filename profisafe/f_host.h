@@ -1,5 +1,5 @@
 #pragma once
-// PROFIsafe F-host driver, V1 (profisafe-v1.md §5; rules in docs/profisafe.md).
+// PROFIsafe F-host driver, V1 ([PROFIsafe V1.30 F-Device behaviour]; rules in docs/profisafe.md).
 //
 // Sans-I/O: each bus cycle the master asks request(now) for the F-output PDU and hands
 // the slave's answer to on_pdu(). The host sends consecutive number n until a valid answer
@@ -40,12 +40,12 @@ enum class FHostState : std::uint8_t {
 [[nodiscard]] const char* to_string(FHostState s) noexcept;
 
 enum class FHostEvent : std::uint8_t {
-  kValid,          // valid answer to the current number
-  kStale,          // valid answer echoing the previous number (device not there yet)
-  kCrcError,       // size or CRC2 wrong
-  kNumberError,    // any other consecutive number
-  kDeviceFault,    // valid answer carrying CE_CRC or WD_timeout
-  kNotExpected,    // nothing was sent yet
+  kValid,        // valid answer to the current number
+  kStale,        // valid answer echoing the previous number (device not there yet)
+  kCrcError,     // size or CRC2 wrong
+  kNumberError,  // any other consecutive number
+  kDeviceFault,  // valid answer carrying CE_CRC or WD_timeout
+  kNotExpected,  // nothing was sent yet
 };
 [[nodiscard]] const char* to_string(FHostEvent e) noexcept;
 
@@ -97,8 +97,8 @@ class FHost {
   FHostConfig config_;
   PduConfig pdu_config_{};
   FHostState state_ = FHostState::kStartup;
-  std::uint8_t number_ = 0;          // number of the PDU in flight (0 = none yet)
-  bool outstanding_ = false;         // a PDU with number_ waits for its answer
+  std::uint8_t number_ = 0;   // number of the PDU in flight (0 = none yet)
+  bool outstanding_ = false;  // a PDU with number_ waits for its answer
   bool user_activate_fv_ = false;
   std::uint8_t last_status_ = 0;
   std::optional<TimePoint> watchdog_deadline_;

@@ -1,4 +1,4 @@
-// F-parameter block: codec and validation (profisafe-v1.md §1-2). See f_parameters.h.
+// F-parameter block: codec and validation ([IEC 61784-3-3 F-Parameters, CRC1]). See f_parameters.h.
 #include "profisafe/f_parameters.h"
 
 #include "codec/endian.h"
@@ -62,7 +62,8 @@ Result<FParameters> parse_f_parameters(std::span<const std::uint8_t> block,
   p.crc_length = static_cast<CrcLength>((block[0] >> 4) & 0x3);
   p.block_id = static_cast<std::uint8_t>((block[1] >> 3) & 0x7);
   p.par_version = static_cast<std::uint8_t>((block[1] >> 6) & 0x3);
-  if (ipar_crc && p.par_version != 1) return make_error_code(ProfisafeError::kFParamsIParCrcNeedsV2);
+  if (ipar_crc && p.par_version != 1)
+    return make_error_code(ProfisafeError::kFParamsIParCrcNeedsV2);
   codec::Reader r(block.subspan(2));
   p.source_add = r.u16_be();
   p.dest_add = r.u16_be();
@@ -83,10 +84,12 @@ Validation validate(const FParameters& p, const DeviceProfile& d) noexcept {
   // The first failing check, in the enum's order.
   if (!valid_address(d.dest_add)) return fail(FParameterFault::kDestAddInvalid);
   if (p.dest_add != d.dest_add) return fail(FParameterFault::kDestAddMismatch);
-  if (!valid_address(p.source_add) || p.source_add < d.min_source_add || p.source_add > d.max_source_add) {
+  if (!valid_address(p.source_add) || p.source_add < d.min_source_add ||
+      p.source_add > d.max_source_add) {
     return fail(FParameterFault::kSourceAddInvalid);
   }
-  if (p.wd_time_ms < d.min_wd_time_ms || p.wd_time_ms > d.max_wd_time_ms) return fail(FParameterFault::kWdTimeInvalid);
+  if (p.wd_time_ms < d.min_wd_time_ms || p.wd_time_ms > d.max_wd_time_ms)
+    return fail(FParameterFault::kWdTimeInvalid);
   if (p.sil != d.sil) return fail(FParameterFault::kSilMismatch);
   if (p.crc_length != d.crc_length) return fail(FParameterFault::kCrcLengthMismatch);
   if (p.block_id != d.block_id || p.par_version != d.par_version || p.check_ipar != d.check_ipar) {

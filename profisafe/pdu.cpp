@@ -1,4 +1,4 @@
-// Safety PDU build and check (profisafe-v1.md §3, §4). See pdu.h.
+// Safety PDU build and check ([PROFIsafe V1.30 safety PDU] [IEC 61784-3-3 CRC2]). See pdu.h.
 #include "profisafe/pdu.h"
 
 #include "codec/reader.h"
@@ -10,7 +10,9 @@
 namespace rs4sim::profisafe {
 namespace {
 
-constexpr std::size_t crc2_size(ProtocolVersion v) noexcept { return v == ProtocolVersion::kV1 ? 2 : 3; }
+constexpr std::size_t crc2_size(ProtocolVersion v) noexcept {
+  return v == ProtocolVersion::kV1 ? 2 : 3;
+}
 // V1: status/control + number + 2-byte CRC2; V2: status/control + 3-byte CRC2.
 constexpr std::size_t kOverhead = 4;
 
@@ -61,7 +63,8 @@ std::uint32_t crc2_v2(const PduConfig& c, std::span<const std::uint8_t> data, st
 
 }  // namespace
 
-PduConfig PduConfig::from(const FParameters& p, std::size_t data_size, Crc2Variant variant) noexcept {
+PduConfig PduConfig::from(const FParameters& p, std::size_t data_size,
+                          Crc2Variant variant) noexcept {
   PduConfig c;
   c.version = p.par_version == 1 ? ProtocolVersion::kV2 : ProtocolVersion::kV1;
   c.data_size = data_size;
@@ -74,7 +77,8 @@ PduConfig PduConfig::from(const FParameters& p, std::size_t data_size, Crc2Varia
 std::size_t pdu_size(const PduConfig& c) noexcept { return c.data_size + kOverhead; }
 
 std::error_code check_config(const PduConfig& c) noexcept {
-  if (c.data_size == 0 || c.data_size > kMaxDataSize) return make_error_code(ProfisafeError::kPduDataTooLong);
+  if (c.data_size == 0 || c.data_size > kMaxDataSize)
+    return make_error_code(ProfisafeError::kPduDataTooLong);
   if (c.version != ProtocolVersion::kV1 && c.version != ProtocolVersion::kV2) {
     return make_error_code(ProfisafeError::kPduUnsupportedCrcLength);
   }
@@ -87,11 +91,13 @@ std::uint32_t crc2(const PduConfig& c, std::span<const std::uint8_t> data, std::
   return crc2_v1(c, data, sc, static_cast<std::uint8_t>(consecutive_number));
 }
 
-Result<std::size_t> build_pdu(const PduConfig& c, std::span<const std::uint8_t> data, std::uint8_t sc,
-                              std::uint32_t consecutive_number, std::span<std::uint8_t> out) noexcept {
+Result<std::size_t> build_pdu(const PduConfig& c, std::span<const std::uint8_t> data,
+                              std::uint8_t sc, std::uint32_t consecutive_number,
+                              std::span<std::uint8_t> out) noexcept {
   if (auto ec = check_config(c)) return ec;
   const std::size_t size = pdu_size(c);
-  if (data.size() != c.data_size || out.size() < size) return make_error_code(ProfisafeError::kPduWrongSize);
+  if (data.size() != c.data_size || out.size() < size)
+    return make_error_code(ProfisafeError::kPduWrongSize);
   codec::Writer w(out);
   w.bytes(data);
   w.u8(sc);
@@ -100,7 +106,8 @@ Result<std::size_t> build_pdu(const PduConfig& c, std::span<const std::uint8_t> 
   return size;
 }
 
-PduCheck check_pdu(const PduConfig& c, std::span<const std::uint8_t> pdu, std::uint32_t vcn) noexcept {
+PduCheck check_pdu(const PduConfig& c, std::span<const std::uint8_t> pdu,
+                   std::uint32_t vcn) noexcept {
   PduCheck r;
   if (check_config(c) || pdu.size() != pdu_size(c)) {
     r.error = ProfisafeError::kPduWrongSize;
@@ -135,8 +142,8 @@ std::vector<Crc2Variant> all_crc2_variants() {
   return out;
 }
 
-std::vector<Crc2Variant> matching_crc2_variants(const PduConfig& base,
-                                                std::span<const std::span<const std::uint8_t>> pdus) {
+std::vector<Crc2Variant> matching_crc2_variants(
+    const PduConfig& base, std::span<const std::span<const std::uint8_t>> pdus) {
   std::vector<Crc2Variant> out;
   for (const Crc2Variant& v : all_crc2_variants()) {
     PduConfig c = base;

@@ -1,13 +1,14 @@
 #include "storage/archive_file.h"
 
+#include "rs4sim/v1/archive.pb.h"
+#include "storage/time_ms.h"
+
+#include <climits>
+
 #include <google/protobuf/stubs/logging.h>
 #include <google/protobuf/util/json_util.h>
 
-#include <climits>
 #include <limits>
-
-#include "rs4sim/v1/archive.pb.h"
-#include "storage/time_ms.h"
 
 namespace rs4sim::storage {
 namespace {
@@ -34,7 +35,7 @@ void put_time(Timestamp t, google::protobuf::Timestamp& out) {
 Result<Timestamp> get_time(const google::protobuf::Timestamp& t, const char* what) {
   if (t.seconds() < kMinSeconds || t.seconds() > kMaxSeconds || t.nanos() < 0 ||
       t.nanos() > 999'999'999) {
-    return archive_error(ArchiveErrc::kCorruptImport, std::string(what) + ": bad timestamp");
+    return archive_error(ArchiveError::kCorruptImport, std::string(what) + ": bad timestamp");
   }
   return from_ms(t.seconds() * 1000 + t.nanos() / 1'000'000);
 }
@@ -93,7 +94,7 @@ Result<SnapshotVersion> get_version(const pb::Version& v) {
   SnapshotVersion out;
   out.number = v.number();
   if (v.parameter_set_id() > static_cast<std::uint64_t>(INT64_MAX)) {
-    return archive_error(ArchiveErrc::kCorruptImport, "version: parameter set id too large");
+    return archive_error(ArchiveError::kCorruptImport, "version: parameter set id too large");
   }
   out.set_id = static_cast<SetId>(v.parameter_set_id());
   BOOST_OUTCOME_TRY(at, get_time(v.stored_at(), "version"));
@@ -118,7 +119,7 @@ Result<SyncLogEntry> get_sync(const pb::SyncLogEntry& e, const StationKey& key) 
   out.error_code_sfc = e.error_code_sfc();
   out.error_number_device = e.error_number_device();
   if (e.duration_ms() > static_cast<std::uint64_t>(INT64_MAX)) {
-    return archive_error(ArchiveErrc::kCorruptImport, "sync log entry: duration too large");
+    return archive_error(ArchiveError::kCorruptImport, "sync log entry: duration too large");
   }
   out.duration = std::chrono::milliseconds{static_cast<std::int64_t>(e.duration_ms())};
   return out;
@@ -126,9 +127,9 @@ Result<SyncLogEntry> get_sync(const pb::SyncLogEntry& e, const StationKey& key) 
 
 Result<SnapshotStation> get_station(const pb::Station& st) {
   if (st.address() > 126) {
-    return archive_error(ArchiveErrc::kCorruptImport,
-                         "station " + st.bus() + "/" + std::to_string(st.address()) +
-                             ": address above 126");
+    return archive_error(
+        ArchiveError::kCorruptImport,
+        "station " + st.bus() + "/" + std::to_string(st.address()) + ": address above 126");
   }
   SnapshotStation out;
   out.key = StationKey{st.bus(), static_cast<std::uint8_t>(st.address())};
@@ -161,11 +162,13 @@ Result<Snapshot> from_proto(const pb::ArchiveExport& in) {
   }
   for (const auto& set : in.parameter_sets()) {
     if (set.id() > static_cast<std::uint64_t>(INT64_MAX)) {
-      return archive_error(ArchiveErrc::kCorruptImport, "parameter set id too large");
+      return archive_error(ArchiveError::kCorruptImport, "parameter set id too large");
     }
     const auto* data = reinterpret_cast<const std::uint8_t*>(set.blob().data());
-    out.sets.push_back({static_cast<SetId>(set.id()), set.crc32(),
-                        {data, data + set.blob().size()}, set.summary()});
+    out.sets.push_back({static_cast<SetId>(set.id()),
+                        set.crc32(),
+                        {data, data + set.blob().size()},
+                        set.summary()});
   }
   BOOST_OUTCOME_TRY(validate(out));
   return out;
@@ -188,22 +191,22 @@ std::string encode_json(const Snapshot& snapshot) {
 
 Result<Snapshot> decode_binary(std::span<const std::uint8_t> bytes) {
   pb::ArchiveExport message;
-  const google::protobuf::LogSilencer quiet;   // a bad file is our error, not a log line
+  const google::protobuf::LogSilencer quiet;  // a bad file is our error, not a log line
   if (bytes.size() > static_cast<std::size_t>(INT_MAX) ||
       !message.ParseFromArray(bytes.data(), static_cast<int>(bytes.size()))) {
-    return archive_error(ArchiveErrc::kCorruptImport, "not a binary rs4sim.v1.ArchiveExport");
+    return archive_error(ArchiveError::kCorruptImport, "not a binary rs4sim.v1.ArchiveExport");
   }
   return from_proto(message);
 }
 
 Result<Snapshot> decode_json(std::string_view text) {
   pb::ArchiveExport message;
-  google::protobuf::util::JsonParseOptions options;   // unknown fields are an error
+  google::protobuf::util::JsonParseOptions options;  // unknown fields are an error
   const google::protobuf::LogSilencer quiet;
   const auto status = google::protobuf::util::JsonStringToMessage(
       google::protobuf::StringPiece(text.data(), text.size()), &message, options);
   if (!status.ok()) {
-    return archive_error(ArchiveErrc::kCorruptImport,
+    return archive_error(ArchiveError::kCorruptImport,
                          "not a JSON rs4sim.v1.ArchiveExport (" + status.ToString() + ")");
   }
   return from_proto(message);
@@ -223,13 +226,13 @@ Result<ImportSummary> import_binary(ParameterArchive& archive,
                                     std::span<const std::uint8_t> bytes) {
   auto snap = with_context("import", [&] { return decode_binary(bytes); });
   if (!snap) return std::move(snap).error();
-  return archive.import_snapshot(snap.value());   // adds its own "import: " context
+  return archive.import_snapshot(snap.value());  // adds its own "import: " context
 }
 
 Result<ImportSummary> import_json(ParameterArchive& archive, std::string_view text) {
   auto snap = with_context("import", [&] { return decode_json(text); });
   if (!snap) return std::move(snap).error();
-  return archive.import_snapshot(snap.value());   // adds its own "import: " context
+  return archive.import_snapshot(snap.value());  // adds its own "import: " context
 }
 
 }  // namespace rs4sim::storage

@@ -4,15 +4,15 @@
 // mapping (docs/storage.md "Export format"). Decoding checks syntax, then validate()s
 // the meaning; an import writes nothing unless the whole file is sound.
 
+#include "storage/errors.h"
+#include "storage/parameter_archive.h"
+#include "storage/snapshot.h"
+
 #include <cstdint>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include "storage/errors.h"
-#include "storage/parameter_archive.h"
-#include "storage/snapshot.h"
 
 namespace rs4sim::storage {
 
@@ -24,8 +24,7 @@ Result<Snapshot> decode_json(std::string_view text);
 
 Result<std::vector<std::uint8_t>> export_binary(ParameterArchive& archive, Timestamp at);
 Result<std::string> export_json(ParameterArchive& archive, Timestamp at);
-Result<ImportSummary> import_binary(ParameterArchive& archive,
-                                    std::span<const std::uint8_t> bytes);
+Result<ImportSummary> import_binary(ParameterArchive& archive, std::span<const std::uint8_t> bytes);
 Result<ImportSummary> import_json(ParameterArchive& archive, std::string_view text);
 
 }  // namespace rs4sim::storage

@@ -1,6 +1,6 @@
-#include <cstdlib>
-
 #include "storage/sqlite_archive.h"
+
+#include <cstdlib>
 
 namespace rs4sim::storage {
 namespace {

@@ -1,7 +1,9 @@
 #pragma once
 // Errors of the parameter archive: an enum class in its own std::error_category, and
-// ArchiveError, which adds the context a user needs (which station, version or file).
+// ArchiveFailure, which adds the context a user needs (which station, version or file).
 // Every operation returns Result<T>; on any error the archive is unchanged.
+
+#include "codec/error_category.h"
 
 #include <boost/outcome/std_result.hpp>
 #include <boost/outcome/try.hpp>
@@ -13,42 +15,48 @@
 
 namespace rs4sim::storage {
 
-enum class ArchiveErrc : std::uint8_t {
-  kUnknownStation = 1,   // no station with that bus/address
-  kUnknownVersion,       // no version with that id
-  kNotFound,             // a station without a current set, an empty result
-  kNotAnArchive,         // not a SQLite file, or a SQLite file that is not ours
-  kNewerSchema,          // written by a newer rs4sim (PRAGMA user_version too high)
-  kCorruptImport,        // import file malformed or inconsistent
-  kCrcMismatch,          // a blob's CRC-32 differs from the one claimed or stored
-  kInvalidArgument,      // a request the archive cannot store (empty blob, bad address)
-  kBusy,                 // another connection holds the lock (SQLITE_BUSY/LOCKED)
-  kReadOnly,             // the file or connection is read-only
-  kDiskFull,             // SQLITE_FULL: disk or max_page_count reached
-  kCorruptArchive,       // SQLITE_CORRUPT, or an integrity check found a problem
-  kIo,                   // cannot open, I/O error, or any other SQLite failure
+enum class ArchiveError : std::uint8_t {
+  kUnknownStation = 1,  // no station with that bus/address
+  kUnknownVersion,      // no version with that id
+  kNotFound,            // a station without a current set, an empty result
+  kNotAnArchive,        // not a SQLite file, or a SQLite file that is not ours
+  kNewerSchema,         // written by a newer rs4sim (PRAGMA user_version too high)
+  kCorruptImport,       // import file malformed or inconsistent
+  kCrcMismatch,         // a blob's CRC-32 differs from the one claimed or stored
+  kInvalidArgument,     // a request the archive cannot store (empty blob, bad address)
+  kBusy,                // another connection holds the lock (SQLITE_BUSY/LOCKED)
+  kReadOnly,            // the file or connection is read-only
+  kDiskFull,            // SQLITE_FULL: disk or max_page_count reached
+  kCorruptArchive,      // SQLITE_CORRUPT, or an integrity check found a problem
+  kIo,                  // cannot open, I/O error, or any other SQLite failure
 };
 
-const std::error_category& archive_category() noexcept;
-std::error_code make_error_code(ArchiveErrc e) noexcept;
+[[nodiscard]] std::string_view to_string(ArchiveError e) noexcept;
+constexpr const char* error_category_name(ArchiveError) noexcept { return "rs4sim.archive"; }
+inline std::error_code make_error_code(ArchiveError e) noexcept {
+  return codec::make_error_code_of(e);
+}
+inline const std::error_category& archive_category() noexcept {
+  return codec::category_of<ArchiveError>();
+}
 
 // The code plus a message naming the operation and its object.
-struct ArchiveError {
-  ArchiveErrc code{ArchiveErrc::kIo};
-  std::string message;   // e.g. "store station bus1/4: disk full (database or disk is full)"
+struct ArchiveFailure {
+  ArchiveError code{ArchiveError::kIo};
+  std::string message;  // e.g. "store station bus1/4: disk full (database or disk is full)"
 };
 
 // Lets Result<T>::value() throw std::system_error when misused (outcome's default policy).
-std::error_code make_error_code(const ArchiveError& e) noexcept;
+std::error_code make_error_code(const ArchiveFailure& e) noexcept;
 // Found by ADL when value() is called on a failed Result: throws std::system_error
 // carrying the code and the message.
-[[noreturn]] void outcome_throw_as_system_error_with_payload(const ArchiveError& e);
+[[noreturn]] void outcome_throw_as_system_error_with_payload(const ArchiveFailure& e);
 
 template <class T>
-using Result = boost::outcome_v2::std_result<T, ArchiveError>;
+using Result = boost::outcome_v2::std_result<T, ArchiveFailure>;
 
 // "<context>: <the code's message>".
-ArchiveError archive_error(ArchiveErrc code, std::string_view context);
+ArchiveFailure archive_error(ArchiveError code, std::string_view context);
 
 // Runs f() (returning a Result) and prefixes an error's message with "<operation>: ".
 template <class F>
@@ -63,4 +71,4 @@ auto with_context(std::string_view operation, F&& f) -> decltype(f()) {
 }  // namespace rs4sim::storage
 
 template <>
-struct std::is_error_code_enum<rs4sim::storage::ArchiveErrc> : std::true_type {};
+struct std::is_error_code_enum<rs4sim::storage::ArchiveError> : std::true_type {};

@@ -11,12 +11,12 @@
 //   - a parameter set is stored once per distinct byte string (deduplicated); its
 //     CRC-32 is computed by the archive and must equal the caller's claim.
 
-#include <cstddef>
-#include <vector>
-
 #include "storage/errors.h"
 #include "storage/snapshot.h"
 #include "storage/types.h"
+
+#include <cstddef>
+#include <vector>
 
 namespace rs4sim::storage {
 

@@ -1,17 +1,17 @@
 #include "storage/snapshot.h"
 
+#include "storage/crc32.h"
+
 #include <set>
 #include <unordered_set>
-
-#include "storage/crc32.h"
 
 namespace rs4sim::storage {
 namespace {
 
 using boost::outcome_v2::success;
 
-ArchiveError corrupt(const std::string& what) {
-  return archive_error(ArchiveErrc::kCorruptImport, what);
+ArchiveFailure corrupt(const std::string& what) {
+  return archive_error(ArchiveError::kCorruptImport, what);
 }
 
 Result<void> validate_sets(const Snapshot& snap, std::unordered_set<SetId>& ids) {
@@ -21,7 +21,7 @@ Result<void> validate_sets(const Snapshot& snap, std::unordered_set<SetId>& ids)
     if (!ids.insert(set.id).second) return corrupt(name + ": id used twice");
     if (set.blob.empty()) return corrupt(name + ": empty blob");
     if (crc32(set.blob) != set.crc32) {
-      return archive_error(ArchiveErrc::kCrcMismatch, name + ": CRC-32 does not match its blob");
+      return archive_error(ArchiveError::kCrcMismatch, name + ": CRC-32 does not match its blob");
     }
   }
   return success();
@@ -50,8 +50,7 @@ Result<void> validate_versions(const SnapshotStation& st, const std::string& nam
   return success();
 }
 
-Result<void> validate_station(const SnapshotStation& st,
-                              const std::unordered_set<SetId>& set_ids) {
+Result<void> validate_station(const SnapshotStation& st, const std::unordered_set<SetId>& set_ids) {
   const auto name = "station " + st.key.bus + "/" + std::to_string(st.key.address);
   if (st.key.address > 126) return corrupt(name + ": address above 126");
   std::set<std::string> serials;

@@ -3,11 +3,11 @@
 // the backend and of the file format (archive_file.h turns it into protobuf).
 // Versions refer to sets by the snapshot-local SetId of `sets`.
 
-#include <cstdint>
-#include <vector>
-
 #include "storage/errors.h"
 #include "storage/types.h"
+
+#include <cstdint>
+#include <vector>
 
 namespace rs4sim::storage {
 
@@ -19,7 +19,7 @@ struct SnapshotVersion {
   Timestamp at{};
   VersionSource source{VersionSource::kUpload};
   std::string note;
-  std::uint32_t restored_from{0};    // version number, 0 = none
+  std::uint32_t restored_from{0};  // version number, 0 = none
   bool pending_download{false};
   std::string serial_number;
   bool operator==(const SnapshotVersion&) const = default;
@@ -29,9 +29,9 @@ struct SnapshotStation {
   StationKey key;
   std::string device_type;
   std::vector<SerialSeen> serials;
-  std::vector<SnapshotVersion> versions;   // ascending by number
-  std::uint32_t current_version{0};        // 0 = none
-  std::vector<SyncLogEntry> sync_log;      // oldest first (entry.station ignored)
+  std::vector<SnapshotVersion> versions;  // ascending by number
+  std::uint32_t current_version{0};       // 0 = none
+  std::vector<SyncLogEntry> sync_log;     // oldest first (entry.station ignored)
   bool operator==(const SnapshotStation&) const = default;
 };
 
@@ -46,7 +46,7 @@ struct Snapshot {
 struct ImportSummary {
   std::size_t stations{0};
   std::size_t versions{0};
-  std::size_t new_sets{0};           // sets not already in the archive
+  std::size_t new_sets{0};  // sets not already in the archive
   std::size_t sync_log_entries{0};
 };
 

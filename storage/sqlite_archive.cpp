@@ -1,11 +1,11 @@
 #include "storage/sqlite_archive.h"
 
-#include <system_error>
-
 #include "storage/crc32.h"
-#include "storage/sqlite_schema.h"
 #include "storage/sqlite_rows.h"
+#include "storage/sqlite_schema.h"
 #include "storage/time_ms.h"
+
+#include <system_error>
 
 namespace rs4sim::storage {
 
@@ -19,8 +19,7 @@ Result<void> apply_options(sqlite::Database& db, const SqliteOptions& options) {
   BOOST_OUTCOME_TRY(db.exec("PRAGMA foreign_keys = ON"));
   BOOST_OUTCOME_TRY(db.exec("PRAGMA cache_size = -" + std::to_string(options.cache_kib)));
   if (options.max_page_count != 0) {
-    BOOST_OUTCOME_TRY(db.exec("PRAGMA max_page_count = " +
-                              std::to_string(options.max_page_count)));
+    BOOST_OUTCOME_TRY(db.exec("PRAGMA max_page_count = " + std::to_string(options.max_page_count)));
   }
   if (options.read_only) return success();
   BOOST_OUTCOME_TRY(db.exec("PRAGMA journal_mode = WAL"));
@@ -38,12 +37,12 @@ Result<std::unique_ptr<SqliteArchive>> SqliteArchive::open(const std::filesystem
       std::error_code ec;
       std::filesystem::create_directories(parent, ec);
       if (ec) {
-        return archive_error(ArchiveErrc::kIo,
+        return archive_error(ArchiveError::kIo,
                              "cannot create " + parent.string() + " (" + ec.message() + ")");
       }
     }
-    const int flags = options.read_only ? SQLITE_OPEN_READONLY
-                                        : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
+    const int flags =
+        options.read_only ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
     BOOST_OUTCOME_TRY(db, sqlite::Database::open(path.string(), flags));
     BOOST_OUTCOME_TRY(apply_options(*db, options));
     BOOST_OUTCOME_TRY(sqlite::prepare_schema(*db, options.read_only));
@@ -57,17 +56,18 @@ Result<std::int64_t> SqliteArchive::station_id(const StationKey& key) {
   s->bind(2, std::int64_t{key.address});
   const int rc = s->step();
   if (rc == SQLITE_ROW) return s->int64(0);
-  if (rc == SQLITE_DONE) return archive_error(ArchiveErrc::kUnknownStation, label(key));
+  if (rc == SQLITE_DONE) return archive_error(ArchiveError::kUnknownStation, label(key));
   return db_->error(rc, label(key));
 }
 
 Result<std::int64_t> SqliteArchive::upsert_station(const StationKey& key,
                                                    std::string_view device_type) {
-  BOOST_OUTCOME_TRY(s, db_->statement(
-      "INSERT INTO stations (bus, address, device_type) VALUES (?, ?, ?) "
-      "ON CONFLICT (bus, address) DO UPDATE SET device_type = CASE "
-      "WHEN excluded.device_type <> '' THEN excluded.device_type ELSE device_type END "
-      "RETURNING id"));
+  BOOST_OUTCOME_TRY(
+      s, db_->statement(
+             "INSERT INTO stations (bus, address, device_type) VALUES (?, ?, ?) "
+             "ON CONFLICT (bus, address) DO UPDATE SET device_type = CASE "
+             "WHEN excluded.device_type <> '' THEN excluded.device_type ELSE device_type END "
+             "RETURNING id"));
   s->bind(1, key.bus);
   s->bind(2, std::int64_t{key.address});
   s->bind(3, device_type);
@@ -79,11 +79,10 @@ Result<std::int64_t> SqliteArchive::upsert_station(const StationKey& key,
 Result<void> SqliteArchive::see_serial(std::int64_t station, std::string_view serial,
                                        Timestamp first, Timestamp last) {
   if (serial.empty()) return success();
-  BOOST_OUTCOME_TRY(s, db_->statement(
-      "INSERT INTO station_serials VALUES (?, ?, ?, ?) "
-      "ON CONFLICT (station_id, serial_number) DO UPDATE SET "
-      "first_seen_ms = min(first_seen_ms, excluded.first_seen_ms), "
-      "last_seen_ms = max(last_seen_ms, excluded.last_seen_ms)"));
+  BOOST_OUTCOME_TRY(s, db_->statement("INSERT INTO station_serials VALUES (?, ?, ?, ?) "
+                                      "ON CONFLICT (station_id, serial_number) DO UPDATE SET "
+                                      "first_seen_ms = min(first_seen_ms, excluded.first_seen_ms), "
+                                      "last_seen_ms = max(last_seen_ms, excluded.last_seen_ms)"));
   s->bind(1, station);
   s->bind(2, serial);
   s->bind(3, to_ms(first));
@@ -95,8 +94,9 @@ Result<SetId> SqliteArchive::intern_set(std::span<const std::uint8_t> blob, std:
                                         std::string_view summary, bool& inserted) {
   inserted = false;
   {
-    BOOST_OUTCOME_TRY(s, db_->statement(
-        "SELECT id FROM parameter_sets WHERE crc32 = ? AND size = ? AND blob = ?"));
+    BOOST_OUTCOME_TRY(
+        s,
+        db_->statement("SELECT id FROM parameter_sets WHERE crc32 = ? AND size = ? AND blob = ?"));
     s->bind(1, std::int64_t{crc});
     s->bind(2, static_cast<std::int64_t>(blob.size()));
     s->bind(3, blob);
@@ -104,8 +104,9 @@ Result<SetId> SqliteArchive::intern_set(std::span<const std::uint8_t> blob, std:
     if (rc == SQLITE_ROW) return s->int64(0);
     if (rc != SQLITE_DONE) return db_->error(rc, "look up parameter set");
   }
-  BOOST_OUTCOME_TRY(s, db_->statement(
-      "INSERT INTO parameter_sets (crc32, size, blob, summary) VALUES (?, ?, ?, ?)"));
+  BOOST_OUTCOME_TRY(
+      s, db_->statement(
+             "INSERT INTO parameter_sets (crc32, size, blob, summary) VALUES (?, ?, ?, ?)"));
   s->bind(1, std::int64_t{crc});
   s->bind(2, static_cast<std::int64_t>(blob.size()));
   s->bind(3, blob);
@@ -120,16 +121,18 @@ Result<VersionId> SqliteArchive::append_version(std::int64_t station, const NewV
   if (v.number) {
     number = *v.number;
   } else {
-    BOOST_OUTCOME_TRY(q, db_->statement(
-        "SELECT coalesce(max(number), 0) + 1 FROM versions WHERE station_id = ?"));
+    BOOST_OUTCOME_TRY(
+        q,
+        db_->statement("SELECT coalesce(max(number), 0) + 1 FROM versions WHERE station_id = ?"));
     q->bind(1, station);
     const int rc = q->step();
     if (rc != SQLITE_ROW) return db_->error(rc, "number new version");
     number = q->int64(0);
   }
-  BOOST_OUTCOME_TRY(s, db_->statement(
-      "INSERT INTO versions (station_id, number, set_id, source, stored_at_ms, note, "
-      "serial_number, restored_from, pending_download) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)"));
+  BOOST_OUTCOME_TRY(
+      s, db_->statement(
+             "INSERT INTO versions (station_id, number, set_id, source, stored_at_ms, note, "
+             "serial_number, restored_from, pending_download) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)"));
   s->bind(1, station);
   s->bind(2, number);
   s->bind(3, v.set_id);
@@ -148,9 +151,9 @@ Result<VersionId> SqliteArchive::append_version(std::int64_t station, const NewV
 }
 
 Result<void> SqliteArchive::make_current(std::int64_t station, VersionId version) {
-  BOOST_OUTCOME_TRY(s, db_->statement(
-      "INSERT INTO current_versions (station_id, version_id) VALUES (?, ?) "
-      "ON CONFLICT (station_id) DO UPDATE SET version_id = excluded.version_id"));
+  BOOST_OUTCOME_TRY(
+      s, db_->statement("INSERT INTO current_versions (station_id, version_id) VALUES (?, ?) "
+                        "ON CONFLICT (station_id) DO UPDATE SET version_id = excluded.version_id"));
   s->bind(1, station);
   s->bind(2, version);
   return db_->run(*s, "set current version");
@@ -162,17 +165,17 @@ Result<VersionInfo> SqliteArchive::version_info(VersionId version) {
   const int rc = s->step();
   if (rc == SQLITE_ROW) return read_version(*s);
   const auto what = "version " + std::to_string(version);
-  if (rc == SQLITE_DONE) return archive_error(ArchiveErrc::kUnknownVersion, what);
+  if (rc == SQLITE_DONE) return archive_error(ArchiveError::kUnknownVersion, what);
   return db_->error(rc, what);
 }
 
 Result<ParameterSetRecord> SqliteArchive::set_record(SetId set) {
-  BOOST_OUTCOME_TRY(s, db_->statement(
-      "SELECT crc32, blob, summary FROM parameter_sets WHERE id = ?"));
+  BOOST_OUTCOME_TRY(s,
+                    db_->statement("SELECT crc32, blob, summary FROM parameter_sets WHERE id = ?"));
   s->bind(1, set);
   const int rc = s->step();
   const auto what = "parameter set " + std::to_string(set);
-  if (rc == SQLITE_DONE) return archive_error(ArchiveErrc::kCorruptArchive, what + " missing");
+  if (rc == SQLITE_DONE) return archive_error(ArchiveError::kCorruptArchive, what + " missing");
   if (rc != SQLITE_ROW) return db_->error(rc, what);
   return ParameterSetRecord{set, static_cast<std::uint32_t>(s->int64(0)), s->blob(1), s->text(2)};
 }

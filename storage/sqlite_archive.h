@@ -4,6 +4,9 @@
 // change one BEGIN IMMEDIATE transaction, every multi-statement read one read
 // transaction. One object per connection; not thread-safe (one owner, as the event loop).
 
+#include "storage/parameter_archive.h"
+#include "storage/sqlite_db.h"
+
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
@@ -11,9 +14,6 @@
 #include <optional>
 #include <unordered_map>
 #include <utility>
-
-#include "storage/parameter_archive.h"
-#include "storage/sqlite_db.h"
 
 namespace rs4sim::storage {
 
@@ -25,7 +25,7 @@ struct SqliteOptions {
   // loss but the last commits may be lost; no fsync per commit (>= 2k stores/s).
   // FULL: fsync at every commit, survives power loss (~130 stores/s on the test VM).
   bool synchronous_full{false};
-  std::uint32_t max_page_count{0};   // 0 = SQLite's default; a size cap for the file
+  std::uint32_t max_page_count{0};  // 0 = SQLite's default; a size cap for the file
   // Page cache per connection (SQLite's default is 2 MiB): 16 MiB keeps the current sets
   // of ~1000 stations (3 pages each) and the B-tree interiors in memory.
   std::uint32_t cache_kib{16384};
@@ -53,8 +53,7 @@ class SqliteArchive final : public ParameterArchive {
   Result<void> mark_downloaded(VersionId version) override;
   Result<std::vector<StationInfo>> stations() override;
   Result<void> log_sync(const SyncLogEntry& entry) override;
-  Result<std::vector<SyncLogEntry>> sync_log(const StationKey& station,
-                                             std::size_t limit) override;
+  Result<std::vector<SyncLogEntry>> sync_log(const StationKey& station, std::size_t limit) override;
   Result<IntegrityReport> check_integrity() override;
   Result<Snapshot> export_snapshot(Timestamp exported_at) override;
   Result<ImportSummary> import_snapshot(const Snapshot& snapshot) override;
@@ -68,12 +67,12 @@ class SqliteArchive final : public ParameterArchive {
     std::string_view serial_number;
     std::optional<VersionId> restored_from;
     bool pending_download{false};
-    std::optional<std::uint32_t> number;   // default: the station's next number
+    std::optional<std::uint32_t> number;  // default: the station's next number
   };
 
   explicit SqliteArchive(std::unique_ptr<sqlite::Database> db) : db_(std::move(db)) {}
 
-  Result<std::int64_t> station_id(const StationKey& key);            // kUnknownStation
+  Result<std::int64_t> station_id(const StationKey& key);  // kUnknownStation
   Result<std::int64_t> upsert_station(const StationKey& key, std::string_view device_type);
   Result<void> see_serial(std::int64_t station, std::string_view serial, Timestamp first,
                           Timestamp last);
@@ -83,7 +82,7 @@ class SqliteArchive final : public ParameterArchive {
   Result<VersionId> append_version(std::int64_t station, const NewVersion& v);
   Result<void> make_current(std::int64_t station, VersionId version);
   Result<void> clear_pending(std::int64_t station);
-  Result<VersionInfo> version_info(VersionId version);               // kUnknownVersion
+  Result<VersionInfo> version_info(VersionId version);  // kUnknownVersion
   Result<ParameterSetRecord> set_record(SetId set);
   Result<VersionWithSet> version_with_set(VersionId version);
   Result<std::vector<SerialSeen>> serials(std::int64_t station);

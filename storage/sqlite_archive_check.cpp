@@ -9,9 +9,11 @@ using boost::outcome_v2::success;
 using sqlite::Transaction;
 
 Result<void> SqliteArchive::insert_sync(std::int64_t station, const SyncLogEntry& e) {
-  BOOST_OUTCOME_TRY(s, db_->statement(
-      "INSERT INTO sync_log (station_id, at_ms, reason, direction, outcome, error_number_fb, "
-      "error_code_sfc, error_number_device, duration_ms) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)"));
+  BOOST_OUTCOME_TRY(
+      s,
+      db_->statement(
+          "INSERT INTO sync_log (station_id, at_ms, reason, direction, outcome, error_number_fb, "
+          "error_code_sfc, error_number_device, duration_ms) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)"));
   s->bind(1, station);
   s->bind(2, to_ms(e.at));
   s->bind(3, e.reason);
@@ -27,7 +29,7 @@ Result<void> SqliteArchive::insert_sync(std::int64_t station, const SyncLogEntry
 Result<void> SqliteArchive::log_sync(const SyncLogEntry& entry) {
   return with_context("log sync " + label(entry.station), [&]() -> Result<void> {
     if (entry.station.address > 126) {
-      return archive_error(ArchiveErrc::kInvalidArgument, "address above 126");
+      return archive_error(ArchiveError::kInvalidArgument, "address above 126");
     }
     BOOST_OUTCOME_TRY(tx, Transaction::begin(*db_));
     BOOST_OUTCOME_TRY(station, upsert_station(entry.station, ""));
@@ -39,10 +41,11 @@ Result<void> SqliteArchive::log_sync(const SyncLogEntry& entry) {
 Result<std::vector<SyncLogEntry>> SqliteArchive::sync_rows(std::int64_t station,
                                                            const StationKey& key,
                                                            std::int64_t limit) {
-  BOOST_OUTCOME_TRY(s, db_->statement(
-      "SELECT at_ms, reason, direction, outcome, error_number_fb, error_code_sfc, "
-      "error_number_device, duration_ms FROM (SELECT * FROM sync_log WHERE station_id = ? "
-      "ORDER BY id DESC LIMIT ?) ORDER BY id"));
+  BOOST_OUTCOME_TRY(
+      s, db_->statement(
+             "SELECT at_ms, reason, direction, outcome, error_number_fb, error_code_sfc, "
+             "error_number_device, duration_ms FROM (SELECT * FROM sync_log WHERE station_id = ? "
+             "ORDER BY id DESC LIMIT ?) ORDER BY id"));
   s->bind(1, station);
   s->bind(2, limit);
   std::vector<SyncLogEntry> out;
@@ -67,7 +70,7 @@ Result<std::vector<SyncLogEntry>> SqliteArchive::sync_rows(std::int64_t station,
 Result<std::vector<SyncLogEntry>> SqliteArchive::sync_log(const StationKey& key,
                                                           std::size_t limit) {
   return with_context("sync log", [&]() -> Result<std::vector<SyncLogEntry>> {
-    auto read = Transaction::begin_read(*db_);   // one snapshot for all reads
+    auto read = Transaction::begin_read(*db_);  // one snapshot for all reads
     if (!read) return std::move(read).error();
     BOOST_OUTCOME_TRY(station, station_id(key));
     constexpr std::size_t kAll = static_cast<std::size_t>(INT64_MAX);
@@ -111,9 +114,10 @@ Result<void> SqliteArchive::integrity_blobs(IntegrityReport& report) {
     }
     if (rc != SQLITE_DONE) return db_->error(rc, "read parameter sets");
   }
-  BOOST_OUTCOME_TRY(s, db_->statement(
-      "SELECT c.station_id FROM current_versions c JOIN versions v ON v.id = c.version_id "
-      "WHERE v.station_id <> c.station_id"));
+  BOOST_OUTCOME_TRY(
+      s, db_->statement(
+             "SELECT c.station_id FROM current_versions c JOIN versions v ON v.id = c.version_id "
+             "WHERE v.station_id <> c.station_id"));
   int rc = SQLITE_ROW;
   while ((rc = s->step()) == SQLITE_ROW) {
     report.problems.push_back("station " + std::to_string(s->int64(0)) +
@@ -125,7 +129,7 @@ Result<void> SqliteArchive::integrity_blobs(IntegrityReport& report) {
 
 Result<IntegrityReport> SqliteArchive::check_integrity() {
   return with_context("integrity check", [&]() -> Result<IntegrityReport> {
-    auto read = Transaction::begin_read(*db_);   // one snapshot for all reads
+    auto read = Transaction::begin_read(*db_);  // one snapshot for all reads
     if (!read) return std::move(read).error();
     IntegrityReport report;
     BOOST_OUTCOME_TRY(integrity_pragmas(report));

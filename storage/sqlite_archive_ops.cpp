@@ -1,10 +1,10 @@
 // SqliteArchive: store, read, restore, stations (sqlite_archive.h).
-#include <cstdio>
-
 #include "storage/crc32.h"
 #include "storage/sqlite_archive.h"
 #include "storage/sqlite_rows.h"
 #include "storage/time_ms.h"
+
+#include <cstdio>
 
 namespace rs4sim::storage {
 
@@ -23,13 +23,13 @@ std::string hex32(std::uint32_t v) {
 
 Result<void> check_request(const StoreRequest& r) {
   if (r.station.address > kMaxAddress) {
-    return archive_error(ArchiveErrc::kInvalidArgument,
+    return archive_error(ArchiveError::kInvalidArgument,
                          "address " + std::to_string(r.station.address) + " above 126");
   }
-  if (r.blob.empty()) return archive_error(ArchiveErrc::kInvalidArgument, "empty blob");
+  if (r.blob.empty()) return archive_error(ArchiveError::kInvalidArgument, "empty blob");
   const auto actual = crc32(r.blob);
   if (actual != r.crc32) {
-    return archive_error(ArchiveErrc::kCrcMismatch,
+    return archive_error(ArchiveError::kCrcMismatch,
                          "claimed " + hex32(r.crc32) + ", blob has " + hex32(actual));
   }
   return success();
@@ -39,9 +39,8 @@ Result<void> check_request(const StoreRequest& r) {
 
 // A new current version supersedes a restore still waiting for its download.
 Result<void> SqliteArchive::clear_pending(std::int64_t station) {
-  BOOST_OUTCOME_TRY(s, db_->statement(
-      "UPDATE versions SET pending_download = 0 "
-      "WHERE station_id = ? AND pending_download <> 0"));
+  BOOST_OUTCOME_TRY(s, db_->statement("UPDATE versions SET pending_download = 0 "
+                                      "WHERE station_id = ? AND pending_download <> 0"));
   s->bind(1, station);
   return db_->run(*s, "clear pending download");
 }
@@ -71,15 +70,15 @@ Result<VersionInfo> SqliteArchive::store(const StoreRequest& r) {
 
 Result<VersionWithSet> SqliteArchive::current(const StationKey& key) {
   return with_context("current", [&]() -> Result<VersionWithSet> {
-    auto read = Transaction::begin_read(*db_);   // one snapshot for all reads
+    auto read = Transaction::begin_read(*db_);  // one snapshot for all reads
     if (!read) return std::move(read).error();
     BOOST_OUTCOME_TRY(station, station_id(key));
-    BOOST_OUTCOME_TRY(s, db_->statement(
-        "SELECT version_id FROM current_versions WHERE station_id = ?"));
+    BOOST_OUTCOME_TRY(
+        s, db_->statement("SELECT version_id FROM current_versions WHERE station_id = ?"));
     s->bind(1, station);
     const int rc = s->step();
     if (rc == SQLITE_DONE) {
-      return archive_error(ArchiveErrc::kNotFound, label(key) + " has no current set");
+      return archive_error(ArchiveError::kNotFound, label(key) + " has no current set");
     }
     if (rc != SQLITE_ROW) return db_->error(rc, label(key));
     return version_with_set(s->int64(0));
@@ -88,7 +87,7 @@ Result<VersionWithSet> SqliteArchive::current(const StationKey& key) {
 
 Result<std::vector<VersionInfo>> SqliteArchive::history(const StationKey& key) {
   return with_context("history", [&]() -> Result<std::vector<VersionInfo>> {
-    auto read = Transaction::begin_read(*db_);   // one snapshot for all reads
+    auto read = Transaction::begin_read(*db_);  // one snapshot for all reads
     if (!read) return std::move(read).error();
     BOOST_OUTCOME_TRY(station, station_id(key));
     BOOST_OUTCOME_TRY(s, db_->statement(std::string(kVersionColumns) +
@@ -104,7 +103,7 @@ Result<std::vector<VersionInfo>> SqliteArchive::history(const StationKey& key) {
 
 Result<VersionWithSet> SqliteArchive::get(VersionId version) {
   return with_context("get", [&]() -> Result<VersionWithSet> {
-    auto read = Transaction::begin_read(*db_);   // one snapshot for all reads
+    auto read = Transaction::begin_read(*db_);  // one snapshot for all reads
     if (!read) return std::move(read).error();
     return version_with_set(version);
   });
@@ -135,8 +134,7 @@ Result<void> SqliteArchive::mark_downloaded(VersionId version) {
   return with_context("mark downloaded", [&]() -> Result<void> {
     BOOST_OUTCOME_TRY(tx, Transaction::begin(*db_));
     BOOST_OUTCOME_TRY(version_info(version));
-    BOOST_OUTCOME_TRY(s, db_->statement(
-        "UPDATE versions SET pending_download = 0 WHERE id = ?"));
+    BOOST_OUTCOME_TRY(s, db_->statement("UPDATE versions SET pending_download = 0 WHERE id = ?"));
     s->bind(1, version);
     BOOST_OUTCOME_TRY(db_->run(*s, "version " + std::to_string(version)));
     return tx.commit();
@@ -144,9 +142,9 @@ Result<void> SqliteArchive::mark_downloaded(VersionId version) {
 }
 
 Result<std::vector<SerialSeen>> SqliteArchive::serials(std::int64_t station) {
-  BOOST_OUTCOME_TRY(s, db_->statement(
-      "SELECT serial_number, first_seen_ms, last_seen_ms FROM station_serials "
-      "WHERE station_id = ? ORDER BY first_seen_ms, serial_number"));
+  BOOST_OUTCOME_TRY(
+      s, db_->statement("SELECT serial_number, first_seen_ms, last_seen_ms FROM station_serials "
+                        "WHERE station_id = ? ORDER BY first_seen_ms, serial_number"));
   s->bind(1, station);
   std::vector<SerialSeen> out;
   int rc = SQLITE_ROW;
@@ -158,9 +156,10 @@ Result<std::vector<SerialSeen>> SqliteArchive::serials(std::int64_t station) {
 }
 
 Result<std::vector<std::pair<std::int64_t, StationInfo>>> SqliteArchive::list_stations() {
-  BOOST_OUTCOME_TRY(s, db_->statement(
-      "SELECT s.id, s.bus, s.address, s.device_type, c.version_id FROM stations s "
-      "LEFT JOIN current_versions c ON c.station_id = s.id ORDER BY s.bus, s.address"));
+  BOOST_OUTCOME_TRY(
+      s, db_->statement(
+             "SELECT s.id, s.bus, s.address, s.device_type, c.version_id FROM stations s "
+             "LEFT JOIN current_versions c ON c.station_id = s.id ORDER BY s.bus, s.address"));
   std::vector<std::pair<std::int64_t, StationInfo>> out;
   int rc = SQLITE_ROW;
   while ((rc = s->step()) == SQLITE_ROW) {
@@ -180,7 +179,7 @@ Result<std::vector<std::pair<std::int64_t, StationInfo>>> SqliteArchive::list_st
 
 Result<std::vector<StationInfo>> SqliteArchive::stations() {
   return with_context("stations", [&]() -> Result<std::vector<StationInfo>> {
-    auto read = Transaction::begin_read(*db_);   // one snapshot for all reads
+    auto read = Transaction::begin_read(*db_);  // one snapshot for all reads
     if (!read) return std::move(read).error();
     BOOST_OUTCOME_TRY(list, list_stations());
     std::vector<StationInfo> out;

@@ -1,10 +1,10 @@
 // SqliteArchive: export to and import from a Snapshot (sqlite_archive.h).
-#include <map>
-#include <unordered_map>
-
 #include "storage/sqlite_archive.h"
 #include "storage/sqlite_rows.h"
 #include "storage/time_ms.h"
+
+#include <map>
+#include <unordered_map>
 
 namespace rs4sim::storage {
 
@@ -16,16 +16,16 @@ Result<SnapshotStation> SqliteArchive::export_station(std::int64_t id, StationIn
   out.key = info.key;
   out.device_type = std::move(info.device_type);
   out.serials = std::move(info.serials);
-  BOOST_OUTCOME_TRY(s, db_->statement(std::string(kVersionColumns) +
-                                      "WHERE v.station_id = ? ORDER BY v.number"));
+  BOOST_OUTCOME_TRY(
+      s, db_->statement(std::string(kVersionColumns) + "WHERE v.station_id = ? ORDER BY v.number"));
   s->bind(1, id);
   std::map<VersionId, std::uint32_t> numbers;
   int rc = SQLITE_ROW;
   while ((rc = s->step()) == SQLITE_ROW) {
     const auto v = read_version(*s);
     numbers[v.id] = v.number;
-    SnapshotVersion sv{v.number, v.set_id, v.at, v.source, v.note, 0, v.pending_download,
-                       v.serial_number};
+    SnapshotVersion sv{v.number, v.set_id,           v.at,           v.source, v.note,
+                       0,        v.pending_download, v.serial_number};
     if (v.restored_from) sv.restored_from = numbers[*v.restored_from];
     if (info.current == v.id) out.current_version = v.number;
     out.versions.push_back(std::move(sv));
@@ -38,17 +38,17 @@ Result<SnapshotStation> SqliteArchive::export_station(std::int64_t id, StationIn
 
 Result<Snapshot> SqliteArchive::export_snapshot(Timestamp exported_at) {
   return with_context("export", [&]() -> Result<Snapshot> {
-    auto read = Transaction::begin_read(*db_);   // one snapshot for all reads
+    auto read = Transaction::begin_read(*db_);  // one snapshot for all reads
     if (!read) return std::move(read).error();
     Snapshot snap;
     snap.exported_at = exported_at;
     {
-      BOOST_OUTCOME_TRY(s, db_->statement(
-          "SELECT id, crc32, blob, summary FROM parameter_sets ORDER BY id"));
+      BOOST_OUTCOME_TRY(
+          s, db_->statement("SELECT id, crc32, blob, summary FROM parameter_sets ORDER BY id"));
       int rc = SQLITE_ROW;
       while ((rc = s->step()) == SQLITE_ROW) {
-        snap.sets.push_back({s->int64(0), static_cast<std::uint32_t>(s->int64(1)), s->blob(2),
-                             s->text(3)});
+        snap.sets.push_back(
+            {s->int64(0), static_cast<std::uint32_t>(s->int64(1)), s->blob(2), s->text(3)});
       }
       if (rc != SQLITE_DONE) return db_->error(rc, "read parameter sets");
     }
@@ -66,11 +66,11 @@ Result<void> SqliteArchive::import_station(const SnapshotStation& in,
                                            ImportSummary& summary) {
   BOOST_OUTCOME_TRY(station, upsert_station(in.key, in.device_type));
   for (const auto& serial : in.serials) {
-    BOOST_OUTCOME_TRY(see_serial(station, serial.serial_number, serial.first_seen,
-                                 serial.last_seen));
+    BOOST_OUTCOME_TRY(
+        see_serial(station, serial.serial_number, serial.first_seen, serial.last_seen));
   }
   // Appended after the station's own versions: number n of the file becomes base + n'.
-  std::map<std::uint32_t, VersionId> ids;   // number in the file -> new version id
+  std::map<std::uint32_t, VersionId> ids;  // number in the file -> new version id
   for (const auto& v : in.versions) {
     NewVersion nv;
     nv.set_id = set_ids.at(v.set_id);

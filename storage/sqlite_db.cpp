@@ -4,15 +4,15 @@
 
 namespace rs4sim::storage::sqlite {
 
-ArchiveError error_from(int rc, sqlite3* db, std::string_view what) {
-  ArchiveErrc code = ArchiveErrc::kIo;
+ArchiveFailure error_from(int rc, sqlite3* db, std::string_view what) {
+  ArchiveError code = ArchiveError::kIo;
   switch (rc & 0xFF) {
     case SQLITE_BUSY:
-    case SQLITE_LOCKED: code = ArchiveErrc::kBusy; break;
-    case SQLITE_READONLY: code = ArchiveErrc::kReadOnly; break;
-    case SQLITE_FULL: code = ArchiveErrc::kDiskFull; break;
-    case SQLITE_NOTADB: code = ArchiveErrc::kNotAnArchive; break;
-    case SQLITE_CORRUPT: code = ArchiveErrc::kCorruptArchive; break;
+    case SQLITE_LOCKED: code = ArchiveError::kBusy; break;
+    case SQLITE_READONLY: code = ArchiveError::kReadOnly; break;
+    case SQLITE_FULL: code = ArchiveError::kDiskFull; break;
+    case SQLITE_NOTADB: code = ArchiveError::kNotAnArchive; break;
+    case SQLITE_CORRUPT: code = ArchiveError::kCorruptArchive; break;
     default: break;
   }
   auto error = archive_error(code, what);
@@ -77,7 +77,7 @@ Result<std::unique_ptr<Database>> Database::open(const std::string& path, int fl
 }
 
 Database::~Database() {
-  cache_.clear();   // finalize every statement before closing
+  cache_.clear();  // finalize every statement before closing
   sqlite3_close_v2(db_);
 }
 

@@ -2,7 +2,9 @@
 // Thin RAII layer over the SQLite C API (https://sqlite.org/c3ref/intro.html): one owner
 // per sqlite3* and sqlite3_stmt*, prepared statements only (cached per SQL text), a
 // transaction guard that rolls back unless committed, SQLite result codes mapped to
-// ArchiveErrc. Internal to storage/.
+// ArchiveError. Internal to storage/.
+
+#include "storage/errors.h"
 
 #include <sqlite3.h>
 
@@ -14,12 +16,10 @@
 #include <unordered_map>
 #include <vector>
 
-#include "storage/errors.h"
-
 namespace rs4sim::storage::sqlite {
 
 // Maps a SQLite result code (primary or extended) to our error, with `what` as context.
-ArchiveError error_from(int rc, sqlite3* db, std::string_view what);
+ArchiveFailure error_from(int rc, sqlite3* db, std::string_view what);
 
 class Statement {
  public:
@@ -34,7 +34,7 @@ class Statement {
   void bind(int index, std::span<const std::uint8_t> blob);
   void bind_null(int index);
 
-  int step() noexcept { return sqlite3_step(stmt_); }   // SQLITE_ROW / SQLITE_DONE / error
+  int step() noexcept { return sqlite3_step(stmt_); }  // SQLITE_ROW / SQLITE_DONE / error
   void reset() noexcept;
 
   std::int64_t int64(int column) const noexcept { return sqlite3_column_int64(stmt_, column); }
@@ -83,7 +83,7 @@ class Database {
   Result<std::int64_t> query_int(std::string_view sql);
   // Steps `s` to SQLITE_DONE; an error is mapped with `what` as context.
   Result<void> run(Statement& s, std::string_view what);
-  ArchiveError error(int rc, std::string_view what) const { return error_from(rc, db_, what); }
+  ArchiveFailure error(int rc, std::string_view what) const { return error_from(rc, db_, what); }
 
  private:
   Database(sqlite3* db, std::string path) noexcept : db_(db), path_(std::move(path)) {}

@@ -1,11 +1,11 @@
 #pragma once
 // Row readers shared by the SqliteArchive source files (internal to storage/).
 
-#include <string_view>
-
 #include "storage/sqlite_db.h"
 #include "storage/time_ms.h"
 #include "storage/types.h"
+
+#include <string_view>
 
 namespace rs4sim::storage {
 

@@ -72,10 +72,9 @@ Result<void> run_script(Database& db, std::string_view script, std::string_view 
   const char* end = script.data() + script.size();
   while (tail < end) {
     sqlite3_stmt* raw = nullptr;
-    const int rc = sqlite3_prepare_v2(db.handle(), tail, static_cast<int>(end - tail), &raw,
-                                      &tail);
+    const int rc = sqlite3_prepare_v2(db.handle(), tail, static_cast<int>(end - tail), &raw, &tail);
     if (rc != SQLITE_OK) return db.error(rc, what);
-    if (raw == nullptr) break;   // only whitespace left
+    if (raw == nullptr) break;  // only whitespace left
     Statement s(raw);
     BOOST_OUTCOME_TRY(db.run(s, what));
   }
@@ -86,20 +85,19 @@ Result<void> check_ownership(Database& db, std::int64_t app_id, std::int64_t ver
   if (app_id == 0 && version == 0) {
     BOOST_OUTCOME_TRY(tables, db.query_int("SELECT count(*) FROM sqlite_schema"));
     if (tables != 0) {
-      return archive_error(ArchiveErrc::kNotAnArchive,
-                           "a SQLite database with other tables");
+      return archive_error(ArchiveError::kNotAnArchive, "a SQLite database with other tables");
     }
     return boost::outcome_v2::success();
   }
   if (app_id != kApplicationId) {
-    return archive_error(ArchiveErrc::kNotAnArchive,
-                         "application_id " + std::to_string(app_id) +
-                             " is not rs4sim's " + std::to_string(kApplicationId));
+    return archive_error(ArchiveError::kNotAnArchive, "application_id " + std::to_string(app_id) +
+                                                         " is not rs4sim's " +
+                                                         std::to_string(kApplicationId));
   }
   if (version > kSchemaVersion) {
-    return archive_error(ArchiveErrc::kNewerSchema,
-                         "schema version " + std::to_string(version) +
-                             ", this rs4sim knows up to " + std::to_string(kSchemaVersion));
+    return archive_error(ArchiveError::kNewerSchema, "schema version " + std::to_string(version) +
+                                                        ", this rs4sim knows up to " +
+                                                        std::to_string(kSchemaVersion));
   }
   return boost::outcome_v2::success();
 }
@@ -125,7 +123,7 @@ Result<void> prepare_schema(Database& db, bool read_only) {
   BOOST_OUTCOME_TRY(check_ownership(db, app_id, version));
   if (version == kSchemaVersion) return boost::outcome_v2::success();
   if (read_only) {
-    return archive_error(ArchiveErrc::kReadOnly,
+    return archive_error(ArchiveError::kReadOnly,
                          "schema version " + std::to_string(version) +
                              " needs a migration, but the archive is opened read-only");
   }

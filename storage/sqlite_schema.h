@@ -3,14 +3,14 @@
 // A file is ours when PRAGMA application_id is kApplicationId; PRAGMA user_version is
 // the schema version. Migrations run in one BEGIN IMMEDIATE transaction on open.
 
-#include <cstdint>
-
 #include "storage/errors.h"
 #include "storage/sqlite_db.h"
 
+#include <cstdint>
+
 namespace rs4sim::storage::sqlite {
 
-inline constexpr std::int64_t kApplicationId = 0x52533441;   // "RS4A"
+inline constexpr std::int64_t kApplicationId = 0x52533441;  // "RS4A"
 inline constexpr std::int64_t kSchemaVersion = 2;
 
 // Checks that the file is ours and not newer, then migrates it to kSchemaVersion (an

@@ -2,10 +2,10 @@
 // Conversions between Timestamp and the Unix milliseconds the archive stores, and the
 // station label used in error messages ("bus1/4").
 
+#include "storage/types.h"
+
 #include <cstdint>
 #include <string>
-
-#include "storage/types.h"
 
 namespace rs4sim::storage {
 

@@ -15,12 +15,12 @@ namespace rs4sim::storage {
 
 // Instants are passed in by the caller (the archive reads no clock); stored as Unix ms.
 using Timestamp = std::chrono::sys_time<std::chrono::milliseconds>;
-using VersionId = std::int64_t;      // archive-wide id of one version row
-using SetId = std::int64_t;          // archive-wide id of one distinct parameter set
+using VersionId = std::int64_t;  // archive-wide id of one version row
+using SetId = std::int64_t;      // archive-wide id of one distinct parameter set
 
 struct StationKey {
-  std::string bus;                   // the caller's bus name
-  std::uint8_t address{0};           // 0..126
+  std::string bus;          // the caller's bus name
+  std::uint8_t address{0};  // 0..126
   auto operator<=>(const StationKey&) const = default;
 };
 
@@ -34,8 +34,8 @@ struct StoreRequest {
   std::string device_type;
   std::string serial_number;
   std::span<const std::uint8_t> blob;
-  std::uint32_t crc32{0};            // the caller's CRC-32/ISO-HDLC claim, checked
-  std::string summary;               // decoded summary (text or JSON), stored as given
+  std::uint32_t crc32{0};  // the caller's CRC-32/ISO-HDLC claim, checked
+  std::string summary;     // decoded summary (text or JSON), stored as given
   VersionSource source{VersionSource::kUpload};
   Timestamp at{};
   std::string note;
@@ -52,7 +52,7 @@ struct ParameterSetRecord {
 struct VersionInfo {
   VersionId id{0};
   StationKey station;
-  std::uint32_t number{0};           // 1, 2, 3 ... per station
+  std::uint32_t number{0};  // 1, 2, 3 ... per station
   SetId set_id{0};
   std::uint32_t crc32{0};
   std::uint32_t size{0};
@@ -80,7 +80,7 @@ struct SerialSeen {
 struct StationInfo {
   StationKey key;
   std::string device_type;
-  std::vector<SerialSeen> serials;   // in order of first appearance
+  std::vector<SerialSeen> serials;  // in order of first appearance
   std::optional<VersionId> current;
 };
 
@@ -98,7 +98,7 @@ struct SyncLogEntry {
 };
 
 struct IntegrityReport {
-  std::vector<std::string> problems;   // empty: the archive is sound
+  std::vector<std::string> problems;  // empty: the archive is sound
   bool ok() const { return problems.empty(); }
 };
 

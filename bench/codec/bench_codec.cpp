@@ -64,8 +64,7 @@ void BM_ReadU16BeReaderArray(benchmark::State& state) {
 BENCHMARK(BM_ReadU16BeReaderArray);
 
 // A short header of mixed fields, as in a DPV1 request: slot, index, length, u16, u32.
-constexpr std::array<std::uint8_t, 9> kHeader{0x5E, 0x01, 0x02, 0x03, 0x12, 0x34,
-                                              0xDE, 0xAD, 0xBE};
+constexpr std::array<std::uint8_t, 9> kHeader{0x5E, 0x01, 0x02, 0x03, 0x12, 0x34, 0xDE, 0xAD, 0xBE};
 
 void BM_ReadHeaderHandWritten(benchmark::State& state) {
   auto bytes = kHeader;

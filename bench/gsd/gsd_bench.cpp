@@ -31,7 +31,8 @@ BENCHMARK(BM_ParseShippedGsd);
 
 void BM_ConfigureRs4WithOverrides(benchmark::State& state) {
   const Device& device = rs4sim_device().value();
-  const ConfigRequest request{{}, {{"F_Dest_Add", 600}, {"F_WD_Time", 500}, {"F_Source_Add", 2002}}};
+  const ConfigRequest request{{},
+                              {{"F_Dest_Add", 600}, {"F_WD_Time", 500}, {"F_Source_Add", 2002}}};
   for (auto _ : state) {
     auto config = configure(device, request);
     benchmark::DoNotOptimize(config);
@@ -40,7 +41,8 @@ void BM_ConfigureRs4WithOverrides(benchmark::State& state) {
 BENCHMARK(BM_ConfigureRs4WithOverrides);
 
 void BM_DecodeCfg(benchmark::State& state) {
-  const std::vector<std::uint8_t> cfg{0xC4, 0x84, 0x84, 0x05, 0x0A, 0x05, 0x0A, 0x10, 0x20, 0x51, 0xB4};
+  const std::vector<std::uint8_t> cfg{0xC4, 0x84, 0x84, 0x05, 0x0A, 0x05,
+                                      0x0A, 0x10, 0x20, 0x51, 0xB4};
   for (auto _ : state) {
     auto layout = decode_cfg(cfg);
     benchmark::DoNotOptimize(layout);

@@ -48,7 +48,8 @@ void BM_CheckPduV2Capture(benchmark::State& state) {
   c.version = ProtocolVersion::kV2;
   c.data_size = 8;
   c.crc1 = 0x22FF;
-  const std::array<std::uint8_t, 12> pdu{0x41, 0x01, 0x00, 0x04, 0, 0, 0, 0, 0x40, 0xBB, 0x5F, 0xB5};
+  const std::array<std::uint8_t, 12> pdu{0x41, 0x01, 0x00, 0x04, 0,    0,
+                                         0,    0,    0x40, 0xBB, 0x5F, 0xB5};
   for (auto _ : state) {
     auto r = check_pdu(c, pdu, 0);
     benchmark::DoNotOptimize(r);

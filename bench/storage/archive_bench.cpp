@@ -1,12 +1,12 @@
 // SqliteArchive on a real file: store throughput with 8507-byte sets (distinct contents,
 // and with deduplication hits), current-set lookup in an archive of N stored sets, and
 // the history of a station with 1000 versions.
+#include "storage/sqlite_archive.h"
+#include "tests/storage/archive_test_support.h"
+
 #include <benchmark/benchmark.h>
 
 #include <cstring>
-
-#include "storage/sqlite_archive.h"
-#include "tests/storage/archive_test_support.h"
 
 namespace rs4sim::storage {
 namespace {
@@ -28,7 +28,7 @@ void BM_StoreDistinct(benchmark::State& state) {
   std::uint64_t counter = 0;
   for (auto _ : state) {
     ++counter;
-    std::memcpy(blob.data(), &counter, sizeof counter);   // new content every time
+    std::memcpy(blob.data(), &counter, sizeof counter);  // new content every time
     auto r = request({"bus1", static_cast<std::uint8_t>(counter % 100)}, blob);
     benchmark::DoNotOptimize(archive->store(r).value());
   }
@@ -85,8 +85,12 @@ void BM_CurrentLookup(benchmark::State& state) {
   }
   state.SetItemsProcessed(state.iterations());
 }
-BENCHMARK(BM_CurrentLookup)->ArgName("stored_sets")->Arg(1000)->Arg(100000)
-    ->Unit(benchmark::kMicrosecond)->Iterations(20000);
+BENCHMARK(BM_CurrentLookup)
+    ->ArgName("stored_sets")
+    ->Arg(1000)
+    ->Arg(100000)
+    ->Unit(benchmark::kMicrosecond)
+    ->Iterations(20000);
 
 void BM_History1000(benchmark::State& state) {
   testing::TempDir dir;

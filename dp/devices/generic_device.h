@@ -2,19 +2,20 @@
 // The generic virtual slave: a dp::slave::SlaveApplication for any ident and configuration.
 //
 // * Set_Prm: every parameter set with the right ident is accepted (dp::slave::Slave already
-//   refuses a wrong ident with Prm_Fault, §2.3); User_Prm_Data are kept for inspection.
+//   refuses a wrong ident with Prm_Fault, [IEC 61158-6-3 Set_Prm]); User_Prm_Data are kept for
+//   inspection.
 // * Chk_Cfg: accepted only when the identifiers equal the real configuration byte for
-//   byte (§2.4); anything else → Cfg_Fault. With DPV1 Check_Cfg_Mode (user check) the
-//   device still requires the same I/O lengths (input and output bytes).
+//   byte ([IEC 61158-6-3 Chk_Cfg/Get_Cfg]); anything else → Cfg_Fault. With DPV1 Check_Cfg_Mode
+//   (user check) the device still requires the same I/O lengths (input and output bytes).
 // * Data_Exchange: the outputs are looped back to the inputs. The image lengths come from
 //   the identifiers; when input and output lengths differ, the first min(in, out) bytes
 //   are copied and the rest of the inputs is 0.
 // * DPV1 C1/C2 Read/Write: a small record store addressed by (slot, index), up to
-//   kMaxRecords records of up to 240 bytes (§3.3). Read of an unknown record → B0 invalid
-//   index; Write that would create a record beyond capacity → C3 resource unavailable.
-//   Record (slot 0, index kAlarmTriggerIndex) is special: writing it raises a process
-//   alarm (type 2) on slot 0 whose user data are the written bytes (≤ 59), so a remote
-//   master can provoke an alarm round trip; its response is a normal Write.res.
+//   kMaxRecords records of up to 240 bytes ([IEC 61158-6-3 MSAC_C1]). Read of an unknown record →
+//   B0 invalid index; Write that would create a record beyond capacity → C3 resource unavailable.
+//   Record (slot 0, index kAlarmTriggerIndex) is special: writing it raises a process alarm
+//   (type 2) on slot 0 whose user data are the written bytes (≤ 59), so a remote master can provoke
+//   an alarm round trip; its response is a normal Write.res.
 // * raise_alarm(): the application side of the same, for tests, the demo and the CLI.
 
 #include "dp/pdu/cfg.h"
@@ -30,7 +31,8 @@
 namespace rs4sim::dp::devices {
 
 struct GenericDeviceConfig {
-  std::vector<std::uint8_t> cfg;  // real configuration identifiers (Get_Cfg reply, §2.4)
+  std::vector<std::uint8_t> cfg;  // real configuration identifiers (Get_Cfg reply,
+                                  // [IEC 61158-6-3 Chk_Cfg/Get_Cfg])
 };
 
 class GenericDevice final : public dp::slave::SlaveApplication {
@@ -38,15 +40,15 @@ class GenericDevice final : public dp::slave::SlaveApplication {
   static constexpr std::size_t kMaxRecords = 32;
   static constexpr std::uint8_t kAlarmTriggerIndex = 200;
 
-  // Throws std::system_error (dp.pdu category) if the identifiers do not parse (§2.4) or
-  // the images exceed 244 bytes.
+  // Throws std::system_error (dp.pdu category) if the identifiers do not parse
+  // ([IEC 61158-6-3 Chk_Cfg/Get_Cfg]) or the images exceed 244 bytes.
   explicit GenericDevice(GenericDeviceConfig config);
 
   // ---- SlaveApplication ----
   void on_attach(dp::slave::SlaveControl& control) override { control_ = &control; }
   dp::slave::PrmVerdict check_parameters(const pdu::SetPrm& prm, TimePoint now) override;
   dp::slave::CfgVerdict check_config(std::span<const std::uint8_t> cfg, bool user_check,
-                          TimePoint now) override;
+                                     TimePoint now) override;
   [[nodiscard]] std::span<const std::uint8_t> real_config() const override { return cfg_; }
   void on_outputs(std::span<const std::uint8_t> outputs, TimePoint now) override;
   void on_outputs_cleared(dp::slave::OutputClear why, TimePoint now) override;
@@ -63,14 +65,19 @@ class GenericDevice final : public dp::slave::SlaveApplication {
                               std::span<const std::uint8_t> user_data);
   [[nodiscard]] std::size_t input_length() const { return input_length_; }
   [[nodiscard]] std::size_t output_length() const { return output_length_; }
-  [[nodiscard]] std::span<const std::uint8_t> outputs() const { return {outputs_.data(), outputs_.size()}; }
+  [[nodiscard]] std::span<const std::uint8_t> outputs() const {
+    return {outputs_.data(), outputs_.size()};
+  }
   [[nodiscard]] std::uint64_t exchanges() const { return exchanges_; }
   [[nodiscard]] dp::slave::State state() const { return state_; }
-  [[nodiscard]] const std::vector<dp::slave::AlarmAck>& acknowledged_alarms() const { return acked_; }
+  [[nodiscard]] const std::vector<dp::slave::AlarmAck>& acknowledged_alarms() const {
+    return acked_;
+  }
   [[nodiscard]] std::span<const std::uint8_t> user_prm_data() const {
     return {user_prm_.data(), user_prm_.size()};
   }
-  [[nodiscard]] const std::vector<std::uint8_t>* record(std::uint8_t slot, std::uint8_t index) const;
+  [[nodiscard]] const std::vector<std::uint8_t>* record(std::uint8_t slot,
+                                                        std::uint8_t index) const;
 
  private:
   dp::slave::AcyclicResult read_record(const dp::slave::AcyclicRequest& req) const;

@@ -4,7 +4,8 @@
 
 namespace rs4sim::dp::devices {
 
-master::SlaveEntry master_entry_for(const GenericSlaveConfig& slave, std::chrono::milliseconds watchdog) {
+master::SlaveEntry master_entry_for(const GenericSlaveConfig& slave,
+                                    std::chrono::milliseconds watchdog) {
   auto summary = pdu::summarize_cfg(slave.cfg, pdu::CfgService::kChkCfg);
   if (!summary) throw std::system_error(summary.error(), "generic slave configuration");
   master::SlaveEntry m;

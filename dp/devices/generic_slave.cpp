@@ -11,6 +11,8 @@ dp::slave::Config GenericSlave::slave_config(const GenericSlaveConfig& c) {
 }
 
 GenericSlave::GenericSlave(const GenericSlaveConfig& config)
-    : device_(GenericDeviceConfig{config.cfg}), slave_(slave_config(config), device_) {}
+    : device_(GenericDeviceConfig{config.cfg}), slave_(slave_config(config), device_) {
+  slave_.set_wake_handler([this] { wake(); });  // the slave's wake-ups are this station's
+}
 
 }  // namespace rs4sim::dp::devices

@@ -39,7 +39,8 @@ class GenericSlave final : public Station {
  private:
   static dp::slave::Config slave_config(const GenericSlaveConfig& c);
 
-  GenericDevice device_;  // before slave_: the dp::slave::Slave constructor calls device_.on_attach()
+  // Before slave_: the dp::slave::Slave constructor calls device_.on_attach().
+  GenericDevice device_;
   dp::slave::Slave slave_;
 };
 

@@ -1,4 +1,5 @@
-// Streaming FDL receiver, spec/profibus-dp.md §1.2–§1.4 and the receiver checklist §1.10.
+// Streaming FDL receiver, [IEC 61158-4-3 frame formats, FCS, addresses, SAPs] and the receiver
+// checklist [IEC 61158-4-3 frame reception].
 #include "dp/fdl/decoder.h"
 
 #include <algorithm>
@@ -8,8 +9,8 @@ namespace rs4sim::dp::fdl {
 namespace {
 
 constexpr std::uint8_t kExtensionBit = 0x80;
-constexpr std::uint8_t kMinLe = 3;    // DA SA FC (§1.10: reject LE < 3)
-constexpr std::uint8_t kMaxLe = 249;  // §1.2
+constexpr std::uint8_t kMinLe = 3;    // DA SA FC ([IEC 61158-4-3 frame reception]: reject LE < 3)
+constexpr std::uint8_t kMaxLe = 249;  // [IEC 61158-4-3 frame formats]
 
 static_assert(static_cast<std::size_t>(DecodeError::kTruncated) == kDecodeErrorKinds,
               "DecoderStats::errors is indexed by DecodeError");
@@ -18,8 +19,8 @@ bool is_start_delimiter(std::uint8_t b) {
   return b == kSd1 || b == kSd2 || b == kSd3 || b == kSd4 || b == kSc;
 }
 
-// §1.5: request codes 0,3,4,5,6,7,9,C,D,E,F; response codes 0,1,2,3,8,9,A,C,D.
-// Bit 7 only for a clock value (request, function 0).
+// [IEC 61158-4-3 frame control]: request codes 0,3,4,5,6,7,9,C,D,E,F; response codes
+// 0,1,2,3,8,9,A,C,D. Bit 7 only for a clock value (request, function 0).
 bool valid_frame_control(std::uint8_t fc) {
   constexpr std::uint16_t kRequestCodes = 0xF2F9;   // bits 0,3,4,5,6,7,9,12,13,14,15
   constexpr std::uint16_t kResponseCodes = 0x370F;  // bits 0,1,2,3,8,9,10,12,13
@@ -32,7 +33,8 @@ bool valid_frame_control(std::uint8_t fc) {
   return ((kResponseCodes >> code) & 1U) != 0;
 }
 
-// DP uses exactly one extension byte per address whose bits 7 and 6 are 0 (§1.4).
+// DP uses exactly one extension byte per address whose bits 7 and 6 are 0
+// ([IEC 61158-4-3 addresses, SAPs]).
 bool valid_sap_byte(std::uint8_t b) { return (b & 0xC0U) == 0; }
 
 }  // namespace
@@ -50,7 +52,8 @@ void Decoder::feed(std::span<const std::uint8_t> bytes, DecoderSink& sink) {
       // Fast path: decode straight from the caller's bytes; keep only an incomplete tail.
       const std::size_t used = run(bytes, sink);
       bytes = bytes.subspan(used);
-      if (!bytes.empty()) [[unlikely]] std::memcpy(buf_.data(), bytes.data(), bytes.size());
+      if (!bytes.empty()) [[unlikely]]
+        std::memcpy(buf_.data(), bytes.data(), bytes.size());
       len_ = bytes.size();
       return;
     }
@@ -171,7 +174,7 @@ std::size_t Decoder::parse_fixed(Bytes v, std::size_t frame_len, DecoderSink& si
 // `frame` is SD…ED with correct length, FCS and ED; `header_len` bytes precede DA.
 // Semantic errors drop the whole frame: its framing is confirmed.
 [[gnu::always_inline]] inline std::size_t Decoder::deliver(Bytes frame, std::size_t header_len,
-                                                          DecoderSink& sink) {
+                                                           DecoderSink& sink) {
   const std::uint8_t da = frame[header_len];
   const std::uint8_t sa = frame[header_len + 1];
   const std::uint8_t fc = frame[header_len + 2];
@@ -189,7 +192,9 @@ std::size_t Decoder::parse_fixed(Bytes v, std::size_t frame_len, DecoderSink& si
   }
   if (has_dsap != has_ssap) return reject(DecodeError::kSapWithoutPartner, frame.size(), sink);
   in_garbage_ = false;
-  out_.type = frame[0] == kSd1 ? FrameType::kSd1 : frame[0] == kSd2 ? FrameType::kSd2 : FrameType::kSd3;
+  out_.type = frame[0] == kSd1   ? FrameType::kSd1
+              : frame[0] == kSd2 ? FrameType::kSd2
+                                 : FrameType::kSd3;
   out_.da = static_cast<std::uint8_t>(da & 0x7FU);
   out_.sa = static_cast<std::uint8_t>(sa & 0x7FU);
   out_.fc = FrameControl{fc};

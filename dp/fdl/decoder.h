@@ -1,6 +1,6 @@
 #pragma once
 // Streaming FDL receiver: byte chunks in, telegrams or typed errors out
-// (spec/profibus-dp.md §1.2–§1.4, §1.10).
+// ([IEC 61158-4-3 frame formats, FCS, addresses, SAPs, frame reception]).
 //
 // Chunks may split or merge frames arbitrarily. On a malformed frame the decoder reports
 // one DecodeError and rescans from the byte after the rejected start delimiter, so a good
@@ -48,8 +48,8 @@ class Decoder {
   // Feeds received bytes; delivers every complete telegram and every error to `sink`.
   void feed(std::span<const std::uint8_t> bytes, DecoderSink& sink);
 
-  // The line has been idle for ≥ TSYN (§1.7): a partial frame is reported as kTruncated
-  // and dropped. Links with idle detection call this; others never need to.
+  // The line has been idle for ≥ TSYN ([IEC 61158-4-3 bus parameters, timing]): a partial frame is
+  // reported as kTruncated and dropped. Links with idle detection call this; others never need to.
   void idle(DecoderSink& sink);
 
   // Drops any partial frame without reporting it (e.g. link re-opened).

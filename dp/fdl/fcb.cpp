@@ -1,4 +1,4 @@
-// FCB/FCV rules, spec/profibus-dp.md §1.8.
+// FCB/FCV rules, [IEC 61158-4-3 FCB/FCV].
 #include "dp/fdl/fcb.h"
 
 namespace rs4sim::dp::fdl {

@@ -1,5 +1,5 @@
 #pragma once
-// Frame count bit (FCB/FCV) rules, spec/profibus-dp.md §1.8.
+// Frame count bit (FCB/FCV) rules, [IEC 61158-4-3 FCB/FCV].
 //
 // FcbResponder (slave side): classifies each request from an initiator as first / new /
 // repeat and keeps the last reply, so a repeated request gets the stored reply again
@@ -55,7 +55,8 @@ class FcbInitiator {
   // Precondition: next() was called for `da` before; otherwise equals a first frame.
   [[nodiscard]] FrameControl repeat(std::uint8_t da, RequestFunction f) const;
 
-  // True if the last frame to `da` was a first frame (FCV=0), which is not retried (§1.8).
+  // True if the last frame to `da` was a first frame (FCV=0), which is not retried
+  // ([IEC 61158-4-3 FCB/FCV]).
   [[nodiscard]] bool last_was_first(std::uint8_t da) const;
 
   // The responder was marked non-operational: the next frame is a first frame again.

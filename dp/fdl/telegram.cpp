@@ -1,4 +1,4 @@
-// FDL telegram encoding, spec/profibus-dp.md §1.2–§1.4.
+// FDL telegram encoding, [IEC 61158-4-3 frame formats, FCS, addresses, SAPs].
 #include "dp/fdl/telegram.h"
 
 #include <cstring>
@@ -17,16 +17,19 @@ constexpr std::uint8_t kMaxSap = 63;
 
 // Checks the preconditions of encode(); returns the DU length incl. extension bytes.
 std::size_t checked_du_length(const Telegram& t) {
-  if ((t.da | t.sa) > kBroadcastAddress) [[unlikely]] fail("fdl::encode: address above 127");
+  if ((t.da | t.sa) > kBroadcastAddress) [[unlikely]]
+    fail("fdl::encode: address above 127");
   if (t.dsap.has_value() != t.ssap.has_value()) [[unlikely]] {
-    fail("fdl::encode: DSAP without SSAP (§1.4)");
+    fail("fdl::encode: DSAP without SSAP ([IEC 61158-4-3 addresses, SAPs])");
   }
   std::size_t du = t.data.size();
   if (t.dsap) {
-    if (*t.dsap > kMaxSap || *t.ssap > kMaxSap) [[unlikely]] fail("fdl::encode: SAP above 63");
+    if (*t.dsap > kMaxSap || *t.ssap > kMaxSap) [[unlikely]]
+      fail("fdl::encode: SAP above 63");
     du += 2;
   }
-  if (du > kMaxDataUnit) [[unlikely]] fail("fdl::encode: DU longer than 246 bytes");
+  if (du > kMaxDataUnit) [[unlikely]]
+    fail("fdl::encode: DU longer than 246 bytes");
   if (t.type == FrameType::kSd1 && du != 0) [[unlikely]] {
     fail("fdl::encode: SD1 carries no DU");
   }
@@ -120,7 +123,8 @@ std::size_t encoded_size(const Telegram& t) { return wire_size(t.type, checked_d
 
 std::size_t encode(const Telegram& t, std::span<std::uint8_t> out) {
   const std::size_t size = wire_size(t.type, checked_du_length(t));
-  if (out.size() < size) [[unlikely]] fail("fdl::encode: output buffer too small");
+  if (out.size() < size) [[unlikely]]
+    fail("fdl::encode: output buffer too small");
   std::uint8_t* const p = out.data();
   switch (t.type) {
     case FrameType::kSd2:

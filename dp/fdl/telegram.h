@@ -1,5 +1,5 @@
 #pragma once
-// PROFIBUS FDL telegrams (layer 2), spec/profibus-dp.md §1.2–§1.6.
+// PROFIBUS FDL telegrams (layer 2), [IEC 61158-4-3].
 //
 // A `Telegram` is the decoded, validated content of one frame; `encode` turns it back
 // into wire bytes (start delimiter … end delimiter). The streaming decoder that cuts a
@@ -18,13 +18,13 @@
 namespace rs4sim::dp::fdl {
 
 inline constexpr std::uint8_t kBroadcastAddress = 127;
-inline constexpr std::size_t kMaxDataUnit = 246;  // DU incl. DSAP/SSAP bytes (LE 249 - 3)
+inline constexpr std::size_t kMaxDataUnit = 246;      // DU incl. DSAP/SSAP bytes (LE 249 - 3)
 inline constexpr std::size_t kMaxTelegramSize = 255;  // SD2 with LE 249
 
 enum class FrameType : std::uint8_t { kSd1, kSd2, kSd3, kToken, kShortAck };
 
-// Start delimiters and the end delimiter (§1.2). Declared after FrameType so that
-// its scoped enumerators of the same names do not trigger -Wshadow.
+// Start delimiters and the end delimiter ([IEC 61158-4-3 frame formats]). Declared after FrameType
+// so that its scoped enumerators of the same names do not trigger -Wshadow.
 inline constexpr std::uint8_t kSd1 = 0x10;  // fixed length, no data unit
 inline constexpr std::uint8_t kSd2 = 0x68;  // variable length, LE 4..249
 inline constexpr std::uint8_t kSd3 = 0xA2;  // fixed length, 8 DU bytes
@@ -32,7 +32,7 @@ inline constexpr std::uint8_t kSd4 = 0xDC;  // token
 inline constexpr std::uint8_t kSc = 0xE5;   // short acknowledgement
 inline constexpr std::uint8_t kEd = 0x16;
 
-// Request function codes, FC bits 3..0 when bit 6 = 1 (§1.5).
+// Request function codes, FC bits 3..0 when bit 6 = 1 ([IEC 61158-4-3 frame control]).
 enum class RequestFunction : std::uint8_t {
   kTimeEvent = 0x0,
   kSdaLow = 0x3,
@@ -47,7 +47,7 @@ enum class RequestFunction : std::uint8_t {
   kLsapStatus = 0xF,
 };
 
-// Response status, FC bits 3..0 when bit 6 = 0 (§1.5).
+// Response status, FC bits 3..0 when bit 6 = 0 ([IEC 61158-4-3 frame control]).
 enum class ResponseStatus : std::uint8_t {
   kOk = 0x0,
   kUserError = 0x1,
@@ -90,8 +90,7 @@ struct FrameControl {
     return {static_cast<std::uint8_t>(0x40 | (fcb ? 0x20 : 0) | (fcv ? 0x10 : 0) |
                                       static_cast<std::uint8_t>(f))};
   }
-  static constexpr FrameControl response(ResponseStatus s,
-                                         StationType t = StationType::kSlave) {
+  static constexpr FrameControl response(ResponseStatus s, StationType t = StationType::kSlave) {
     return {static_cast<std::uint8_t>((static_cast<std::uint8_t>(t) << 4) |
                                       static_cast<std::uint8_t>(s))};
   }
@@ -102,9 +101,9 @@ struct FrameControl {
 using DataUnit = boost::container::static_vector<std::uint8_t, kMaxDataUnit>;
 
 // One FDL telegram. Addresses are stored without the extension bit (0..127); the
-// extension bit on the wire is derived from dsap/ssap being present (§1.4). For DP,
-// dsap and ssap are either both present (a DP service SAP) or both absent (default
-// SAP = Data_Exchange). `data` is the DU *after* the DSAP/SSAP bytes.
+// extension bit on the wire is derived from dsap/ssap being present
+// ([IEC 61158-4-3 addresses, SAPs]). For DP, dsap and ssap are either both present (a DP service
+// SAP) or both absent (default SAP = Data_Exchange). `data` is the DU *after* the DSAP/SSAP bytes.
 struct Telegram {
   FrameType type = FrameType::kSd2;
   std::uint8_t da = 0;  // destination address (token: DA)
@@ -118,15 +117,15 @@ struct Telegram {
 };
 
 // Builders for the common shapes. `make_data_telegram` picks SD1 when the DU (including
-// SAP bytes) is empty and SD2 otherwise (SD2 is always legal, §1.2). It throws
-// std::invalid_argument if `data` is longer than kMaxDataUnit.
+// SAP bytes) is empty and SD2 otherwise (SD2 is always legal, [IEC 61158-4-3 frame formats]). It
+// throws std::invalid_argument if `data` is longer than kMaxDataUnit.
 Telegram make_short_ack();
 Telegram make_token(std::uint8_t da, std::uint8_t sa);
 Telegram make_data_telegram(std::uint8_t da, std::uint8_t sa, FrameControl fc,
                             std::optional<std::uint8_t> dsap, std::optional<std::uint8_t> ssap,
                             std::span<const std::uint8_t> data);
 
-// FCS: arithmetic sum mod 256 of DA..last DU byte, extension bytes included (§1.3).
+// FCS: arithmetic sum mod 256 of DA..last DU byte, extension bytes included ([IEC 61158-4-3 FCS]).
 // Inline and table-free, 8 bytes per step: each 64-bit word is split into four 16-bit lane
 // sums kept mod 256 (no carry crosses a lane), a loop the compiler may vectorise. On a
 // little-endian host the last 1..7 bytes are one overlapping word whose bytes already

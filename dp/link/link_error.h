@@ -14,7 +14,8 @@
 namespace rs4sim::dp::link {
 
 enum class LinkError : std::uint8_t {
-  kUnsupportedBaudRate = 1,  // not a PROFIBUS rate (§1.1)
+  kUnsupportedBaudRate = 1,  // not a PROFIBUS rate ([IEC 61158-4-3 UART character]
+                             // [IEC 61158-2 baud rates])
   kAdapterRefusedBaudRate,   // the serial driver did not take the rate
   kAdapterRefusedFormat,     // the serial driver did not take 8E1
   kNotATerminal,             // the device is no tty (tcgetattr failed)
@@ -33,7 +34,8 @@ inline std::error_code make_error_code(LinkError e) noexcept {
 // Thrown by link constructors: the code plus the context (device path, rate, errno text).
 class LinkException : public std::system_error {
  public:
-  LinkException(LinkError e, const std::string& what) : std::system_error(make_error_code(e), what) {}
+  LinkException(LinkError e, const std::string& what)
+      : std::system_error(make_error_code(e), what) {}
 };
 
 }  // namespace rs4sim::dp::link

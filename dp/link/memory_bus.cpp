@@ -1,7 +1,8 @@
 #include "dp/link/memory_bus.h"
 
-#include <algorithm>
 #include <boost/container/static_vector.hpp>
+
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -83,7 +84,8 @@ void MemoryBus::attach(Station& station) {
                                 " is outside 0..126");
   }
   if (ports_[a]) {
-    throw std::invalid_argument("memory bus: address " + std::to_string(a) + " is already attached");
+    throw std::invalid_argument("memory bus: address " + std::to_string(a) +
+                                " is already attached");
   }
   ports_[a] = std::make_unique<Port>();
   ports_[a]->station = &station;
@@ -180,10 +182,11 @@ std::optional<std::uint8_t> MemoryBus::route(Port& from, const fdl::Telegram& t)
 TimePoint MemoryBus::arrival_time(const Port& from, const fdl::Telegram& t, std::size_t bytes) {
   if (!config_.wire_model) return clock_.now();
   const BaudRate baud = *config_.wire_model;
-  // §1.7: TSYN before a request; before a reply the responder's own min TSDR (from its
-  // Set_Prm), never less than the configured floor.
+  // [IEC 61158-4-3 bus parameters, timing]: TSYN before a request; before a reply the responder's
+  // own min TSDR (from its Set_Prm), never less than the configured floor.
   const std::uint32_t gap =
-      is_request(t) ? kTsynBits : std::max<std::uint32_t>(config_.min_tsdr_bits, from.station->min_tsdr_bits());
+      is_request(t) ? kTsynBits
+                    : std::max<std::uint32_t>(config_.min_tsdr_bits, from.station->min_tsdr_bits());
   // Rounded up to the clock tick once per telegram (idle gap + characters).
   line_free_ = std::max(clock_.now(), line_free_) + bit_time(baud, gap + telegram_bits(bytes));
   return line_free_;
@@ -193,8 +196,8 @@ void MemoryBus::transmit(Port& from, const fdl::Telegram& t) {
   ++from.counters.sent;
   encode_buf_.clear();
   fdl::encode(t, encode_buf_);
-  BusEvent ev{clock_.now(), clock_.now(), from.station->address(), std::nullopt, &t,
-              encode_buf_, Fate::kDelivered};
+  BusEvent ev{clock_.now(), clock_.now(), from.station->address(), std::nullopt,
+              &t,           encode_buf_,  Fate::kDelivered};
   if (from.silenced) {
     ++from.counters.silenced;
     ev.fate = Fate::kSilenced;
@@ -262,7 +265,9 @@ void MemoryBus::clear_fault(FaultId id) {
 
 void MemoryBus::clear_faults() { faults_.clear(); }
 
-void MemoryBus::set_silenced(std::uint8_t address, bool silenced) { port(address).silenced = silenced; }
+void MemoryBus::set_silenced(std::uint8_t address, bool silenced) {
+  port(address).silenced = silenced;
+}
 
 void MemoryBus::send_raw(std::uint8_t to, std::span<const std::uint8_t> bytes) {
   if (to >= kMaxStations || !ports_[to]) return;
@@ -281,7 +286,8 @@ void MemoryBus::deliver(Pending& pending) {
   }
   to.now = clock_.now();
   to.decoder.feed(std::span<const std::uint8_t>(pending.bytes.data(), pending.bytes.size()), to);
-  to.decoder.idle(to);  // TSYN of idle line follows every frame on this bus (§1.7)
+  to.decoder.idle(to);  // TSYN of idle line follows every frame on this bus
+                        // ([IEC 61158-4-3 bus parameters, timing])
   drain(to);
 }
 

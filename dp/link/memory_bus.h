@@ -1,26 +1,28 @@
 #pragma once
 // In-memory PROFIBUS: one master and up to 125 slaves in one process, on a ManualClock.
 //
-// Every telegram a station transmits is encoded to wire bytes (§1.2) and fed, byte for
-// byte, into the receiving station's own fdl::Decoder, so corrupted frames are rejected
-// exactly as on a real line. Routing: a request or token goes to the station with its DA
-// (DA 127 = broadcast to every other station, §1.4); a reply (FC bit 6 = 0) or a short
-// acknowledgement E5 goes to the station whose request the sender received last (§1.6).
+// Every telegram a station transmits is encoded to wire bytes ([IEC 61158-4-3 frame formats]) and
+// fed, byte for byte, into the receiving station's own fdl::Decoder, so corrupted frames are
+// rejected exactly as on a real line. Routing: a request or token goes to the station with its DA
+// (DA 127 = broadcast to every other station, [IEC 61158-4-3 addresses, SAPs]); a reply (FC bit 6
+// = 0) or a short acknowledgement E5 goes to the station whose request the sender received last
+// ([IEC 61158-4-3 short acknowledgement]).
 //
 // Time is simulated: step() jumps the clock to the next event (a delivery or a station
 // deadline); run_until() repeats that up to a time, so a 30 s scenario runs in
 // milliseconds, deterministically. Optionally the bus models the wire: each telegram takes
-// 11 bit per character (§1.1) after TSYN = 33 bit idle before a request or min TSDR before a
-// reply (§1.7), and the line carries one telegram at a time.
+// 11 bit per character ([IEC 61158-4-3 UART character] [IEC 61158-2 baud rates]) after TSYN = 33
+// bit idle before a request or min TSDR before a reply ([IEC 61158-4-3 bus parameters, timing]),
+// and the line carries one telegram at a time.
 //
 // Fault injection: drop, corrupt (flip one bit; the receiver's decoder must reject it),
 // delay, and silence a station (it neither sends nor receives).
 
 #include "dp/fdl/decoder.h"
-#include "dp/time/baud_rate.h"
 #include "dp/link/counters.h"
 #include "dp/link/deadline_tree.h"
 #include "dp/station.h"
+#include "dp/time/baud_rate.h"
 
 #include <array>
 #include <cstdint>
@@ -35,7 +37,7 @@ struct MemoryBusConfig {
   // nullopt: telegrams arrive at the instant they are sent (pure logic tests).
   std::optional<BaudRate> wire_model;
   // Floor for the gap before a reply; the responder's Station::min_tsdr_bits() applies
-  // when larger (a slave reports what Set_Prm byte 3 set, §1.7).
+  // when larger (a slave reports what Set_Prm byte 3 set, [IEC 61158-4-3 bus parameters, timing]).
   std::uint32_t min_tsdr_bits = kMinTsdrBits;
 };
 
@@ -47,18 +49,25 @@ struct Fault {
   std::optional<std::uint8_t> from;  // sender address; nullopt = any sender
   std::optional<std::uint8_t> to;    // receiver address; nullopt = any receiver
   std::uint32_t count = 1;
-  Duration delay{};                  // kDelay: added to the arrival time
-  std::uint32_t bit = 0;             // kCorrupt: bit index into the frame (mod its size)
+  Duration delay{};       // kDelay: added to the arrival time
+  std::uint32_t bit = 0;  // kCorrupt: bit index into the frame (mod its size)
 };
 using FaultId = std::uint32_t;
 
 // What happened to one transmitted telegram, for observers (demo narration, capture).
-enum class Fate : std::uint8_t { kDelivered, kDropped, kCorrupted, kDelayed, kSilenced, kUnroutable };
+enum class Fate : std::uint8_t {
+  kDelivered,
+  kDropped,
+  kCorrupted,
+  kDelayed,
+  kSilenced,
+  kUnroutable
+};
 const char* to_string(Fate f);
 
 struct BusEvent {
-  TimePoint time;                 // when the sender handed it to the bus
-  TimePoint arrival;              // when it reaches the receiver(s)
+  TimePoint time;     // when the sender handed it to the bus
+  TimePoint arrival;  // when it reaches the receiver(s)
   std::uint8_t from = 0;
   std::optional<std::uint8_t> to;  // 127 = broadcast; nullopt = unroutable
   const fdl::Telegram* telegram = nullptr;
@@ -138,7 +147,7 @@ class MemoryBus {
   ManualClock& clock_;
   MemoryBusConfig config_;
   std::array<std::unique_ptr<Port>, kMaxStations> ports_;
-  std::vector<Port*> order_;  // attach order = deterministic tie-break for deadlines
+  std::vector<Port*> order_;    // attach order = deterministic tie-break for deadlines
   std::vector<Pending> queue_;  // binary heap on (arrival, sequence)
   std::vector<ActiveFault> faults_;
   FaultId next_fault_id_ = 1;

@@ -25,8 +25,11 @@ std::optional<speed_t> standard_speed(BaudRate b) {
 void raw_8e1(termios& tio) {
   cfmakeraw(&tio);
   tio.c_cflag &= ~static_cast<tcflag_t>(CSIZE | PARODD | CSTOPB | CRTSCTS);
-  tio.c_cflag |= CS8 | PARENB | CLOCAL | CREAD;  // §1.1: 8 data bits, even parity, 1 stop
-  tio.c_iflag |= INPCK | IGNPAR;  // a character with a parity error is dropped (§1.1)
+  tio.c_cflag |= CS8 | PARENB | CLOCAL | CREAD;  // [IEC 61158-4-3 UART character]
+                                                 // [IEC 61158-2 baud rates]: 8 data bits, even
+                                                 // parity, 1 stop
+  tio.c_iflag |= INPCK | IGNPAR;                 // a character with a parity error is dropped
+                                  // ([IEC 61158-4-3 UART character] [IEC 61158-2 baud rates])
   tio.c_cc[VMIN] = 1;
   tio.c_cc[VTIME] = 0;
 }
@@ -74,8 +77,10 @@ SerialSetup configure_serial(int fd, BaudRate baud, const std::string& name, con
   if (tcgetattr(fd, &back) != 0) {
     throw LinkException(LinkError::kNotATerminal, name + ": " + std::strerror(errno));
   }
-  if ((back.c_cflag & PARENB) == 0 || (back.c_cflag & PARODD) != 0 || (back.c_cflag & CSIZE) != CS8) {
-    refuse(setup, LinkError::kAdapterRefusedFormat, name + ": even parity / 8 data bits not kept", log);
+  if ((back.c_cflag & PARENB) == 0 || (back.c_cflag & PARODD) != 0 ||
+      (back.c_cflag & CSIZE) != CS8) {
+    refuse(setup, LinkError::kAdapterRefusedFormat, name + ": even parity / 8 data bits not kept",
+           log);
   }
   const std::uint32_t actual = detail::read_baud(fd);
   if (actual != bits_per_second(baud)) {

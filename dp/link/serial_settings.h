@@ -1,6 +1,7 @@
 #pragma once
-// Puts a tty file descriptor into PROFIBUS character format (§1.1): 8 data bits, even
-// parity, 1 stop bit, raw bytes, at a standard PROFIBUS rate.
+// Puts a tty file descriptor into PROFIBUS character format ([IEC 61158-4-3 UART character]
+// [IEC 61158-2 baud rates]): 8 data bits, even parity, 1 stop bit, raw bytes, at a standard
+// PROFIBUS rate.
 //
 // Standard termios speeds (B9600, B19200, B500000, B1500000, B3000000) are set with
 // cfsetspeed; the others (45.45k, 93.75k, 187.5k, 6M, 12M) with Linux termios2/BOTHER.
@@ -8,8 +9,8 @@
 // error (LinkException), while a pseudo-terminal, which has no line and may drop parity or
 // the exact rate, only produces a note and carries on.
 
-#include "dp/time/baud_rate.h"
 #include "dp/link/link_error.h"
+#include "dp/time/baud_rate.h"
 
 #include <functional>
 #include <string>

@@ -46,20 +46,22 @@ void SerialTransport::start(BytesFn on_bytes, ErrorFn on_error) {
 }
 
 void SerialTransport::read_next() {
-  port_.async_read_some(asio::buffer(rx_), [this](const boost::system::error_code& ec, std::size_t n) {
-    if (ec == asio::error::operation_aborted || !port_.is_open()) return;
-    if (ec) {
-      // e.g. EIO while the other side of a pty is closed: report, retry shortly.
-      if (on_error_) on_error_(ec);
-      retry_timer_.expires_after(std::chrono::milliseconds(100));
-      retry_timer_.async_wait([this](const boost::system::error_code& e) {
-        if (!e && port_.is_open()) read_next();
-      });
-      return;
-    }
-    if (on_bytes_) on_bytes_(std::span<const std::uint8_t>(rx_.data(), n));
-    read_next();
-  });
+  port_.async_read_some(asio::buffer(rx_),
+                        [this](const boost::system::error_code& ec, std::size_t n) {
+                          if (ec == asio::error::operation_aborted || !port_.is_open()) return;
+                          if (ec) {
+                            // e.g. EIO while the other side of a pty is closed: report, retry
+                            // shortly.
+                            if (on_error_) on_error_(ec);
+                            retry_timer_.expires_after(std::chrono::milliseconds(100));
+                            retry_timer_.async_wait([this](const boost::system::error_code& e) {
+                              if (!e && port_.is_open()) read_next();
+                            });
+                            return;
+                          }
+                          if (on_bytes_) on_bytes_(std::span<const std::uint8_t>(rx_.data(), n));
+                          read_next();
+                        });
 }
 
 void SerialTransport::send(std::span<const std::uint8_t> frame) {

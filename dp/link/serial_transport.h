@@ -1,7 +1,8 @@
 #pragma once
 // Serial link: a tty (RS-485 adapter, or either side of a pseudo-terminal) carried by
-// asio::serial_port, in PROFIBUS character format 8E1 at a standard rate (§1.1; see
-// serial_settings.h for how refused settings are handled).
+// asio::serial_port, in PROFIBUS character format 8E1 at a standard rate
+// ([IEC 61158-4-3 UART character] [IEC 61158-2 baud rates]; see serial_settings.h for how refused
+// settings are handled).
 
 #include "dp/link/serial_settings.h"
 #include "dp/link/transport.h"

@@ -7,8 +7,7 @@ namespace rs4sim::dp::link {
 
 StationRunner::StationRunner(boost::asio::io_context& io, const Clock& clock, Transport& transport,
                              RunnerOptions options)
-    : clock_(clock), transport_(transport), options_(options), timer_(io),
-      idle_timer_(io) {
+    : clock_(clock), transport_(transport), options_(options), timer_(io), idle_timer_(io) {
   encode_buf_.reserve(fdl::kMaxTelegramSize);
   self_ = std::make_shared<StationRunner*>(this);
 }
@@ -130,7 +129,8 @@ void StationRunner::arm_idle_timer() {
     if (ec || !running_ || generation != idle_generation_) return;
     if (decoder_.pending_bytes() == 0) return;
     now_ = clock_.now();
-    decoder_.idle(*this);  // §1.7: a frame never spans an idle line
+    decoder_.idle(*this);  // [IEC 61158-4-3 bus parameters, timing]: a frame never spans an idle
+                           // line
   });
 }
 

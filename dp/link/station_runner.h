@@ -1,6 +1,6 @@
 #pragma once
 // Drives dp::Station cores over a real-time Transport from one asio::io_context thread
-// (DESIGN.md §1.3, the Station contract in dp/station.h):
+// ([docs/design.md#one-event-loop], the Station contract in dp/station.h):
 //   received bytes → fdl::Decoder → on_telegram() of every station (the cores filter by
 //   address) → take_transmit() drained → fdl::encode → Transport::send();
 //   one steady_timer armed for the earliest next_deadline() → on_time().
@@ -8,10 +8,10 @@
 //
 // Framing on a byte stream (serial, pty): the decoder cuts frames by SD/LE/FCS/ED and
 // rescans after a bad frame (dp/fdl/decoder.h). Line idle ≥ TSYN marks a frame boundary on
-// a real line (§1.7); user-space only sees bytes in OS-sized chunks, so the runner treats a
-// pause of `idle_gap` (default: the larger of TSYN and 30 ms) inside a partial frame as that
-// idle and drops the partial frame (counted malformed, fdl kTruncated). On UDP each
-// datagram must be exactly one telegram; anything left over is malformed.
+// a real line ([IEC 61158-4-3 bus parameters, timing]); user-space only sees bytes in OS-sized
+// chunks, so the runner treats a pause of `idle_gap` (default: the larger of TSYN and 30 ms) inside
+// a partial frame as that idle and drops the partial frame (counted malformed, fdl kTruncated). On
+// UDP each datagram must be exactly one telegram; anything left over is malformed.
 
 #include "dp/fdl/decoder.h"
 #include "dp/link/counters.h"

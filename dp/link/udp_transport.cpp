@@ -15,7 +15,8 @@ udp::endpoint resolve_udp_endpoint(asio::io_context& io, const std::string& host
     throw LinkException(LinkError::kBadEndpoint, "'" + host_port + "': expected HOST:PORT");
   }
   std::string host = host_port.substr(0, colon);
-  if (host.size() > 2 && host.front() == '[' && host.back() == ']') host = host.substr(1, host.size() - 2);
+  if (host.size() > 2 && host.front() == '[' && host.back() == ']')
+    host = host.substr(1, host.size() - 2);
   const std::string port_text = host_port.substr(colon + 1);
   unsigned port = 0;
   const auto [p, ec] = std::from_chars(port_text.data(), port_text.data() + port_text.size(), port);
@@ -35,14 +36,16 @@ udp::endpoint resolve_udp_endpoint(asio::io_context& io, const std::string& host
   return results.begin()->endpoint();
 }
 
-UdpTransport::UdpTransport(asio::io_context& io, const udp::endpoint& listen, const udp::endpoint& peer)
+UdpTransport::UdpTransport(asio::io_context& io, const udp::endpoint& listen,
+                           const udp::endpoint& peer)
     : socket_(io), peer_(peer) {
   boost::system::error_code ec;
   socket_.open(listen.protocol(), ec);
   if (!ec) socket_.bind(listen, ec);
   if (ec) {
     throw LinkException(LinkError::kBindFailed, "UDP " + listen.address().to_string() + ":" +
-                                                    std::to_string(listen.port()) + ": " + ec.message());
+                                                    std::to_string(listen.port()) + ": " +
+                                                    ec.message());
   }
 }
 
@@ -59,7 +62,8 @@ void UdpTransport::start(BytesFn on_bytes, ErrorFn on_error) {
 void UdpTransport::receive_next() {
   socket_.async_receive_from(asio::buffer(rx_), sender_,
                              [this](const boost::system::error_code& ec, std::size_t n) {
-                               if (ec == asio::error::operation_aborted || !socket_.is_open()) return;
+                               if (ec == asio::error::operation_aborted || !socket_.is_open())
+                                 return;
                                if (ec) {
                                  if (on_error_) on_error_(ec);
                                } else if (sender_ != peer_) {

@@ -10,7 +10,7 @@
 namespace rs4sim::dp::master {
 namespace {
 
-// Alarm_Mode 1..7 → outstanding alarms in total (§3.1 DPV1_Status_3).
+// Alarm_Mode 1..7 → outstanding alarms in total ([IEC 61158-6-3 DPV1_Status] DPV1_Status_3).
 constexpr std::array<std::size_t, 8> kSequenceLimit{1, 2, 4, 8, 12, 16, 24, 32};
 
 }  // namespace
@@ -76,8 +76,7 @@ std::optional<pdu::AlarmAck> AlarmTracker::next_ack() {
   return std::nullopt;
 }
 
-void AlarmTracker::finish_in_flight(std::error_code result,
-                                    std::optional<pdu::Dpv1Error> negative,
+void AlarmTracker::finish_in_flight(std::error_code result, std::optional<pdu::Dpv1Error> negative,
                                     EventQueue& events) {
   const auto it = std::find_if(outstanding_.begin(), outstanding_.end(),
                                [](const Entry& e) { return e.ack_sent; });

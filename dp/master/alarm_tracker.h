@@ -1,15 +1,15 @@
 #pragma once
-// DPV1 alarms of one slave as seen by the master (spec/profibus-dp.md §3.5).
+// DPV1 alarms of one slave as seen by the master ([IEC 61158-6-3 DPV1 alarms]).
 //
 // Alarms arrive in the device-related blocks of the extended diagnosis. Each new alarm
 // (slot, type, Seq_Nr) is delivered once as AlarmReceived and waits for its Alarm_Ack
 // (`5C Slot Alarm_Type Alarm_Specifier`, the full specifier byte echoed), sent
 // automatically or when the user acknowledges it. Acks go out in arrival order. An alarm
 // that was acknowledged but still appears in later diagnoses (the slave need not remove
-// it, §3.5 [VPC3-C1]) is not delivered again; once a diagnosis no longer contains it, the
-// same key counts as new again. Alarm_Mode is honoured by checking the slave: more
-// outstanding alarms than the mode allows (type mode: one per type; sequence mode: 2..32
-// in total) is reported as kAlarmLimitExceeded.
+// it, [IEC 61158-6-3 DPV1 alarms] [VPC3+ dp_msac1.c]) is not delivered again; once a diagnosis no
+// longer contains it, the same key counts as new again. Alarm_Mode is honoured by checking the
+// slave: more outstanding alarms than the mode allows (type mode: one per type; sequence
+// mode: 2..32 in total) is reported as kAlarmLimitExceeded.
 
 #include "dp/master/event_queue.h"
 #include "dp/master/reply.h"
@@ -28,7 +28,7 @@ class AlarmTracker {
  public:
   static constexpr std::size_t kMaxOutstanding = 32;
 
-  // `alarm_mode` = DPV1_Status_3 bits 2..0 from the slave's Set_Prm (§3.1).
+  // `alarm_mode` = DPV1_Status_3 bits 2..0 from the slave's Set_Prm ([IEC 61158-6-3 DPV1_Status]).
   AlarmTracker(std::uint8_t slave_address, std::uint8_t alarm_mode)
       : address_(slave_address), alarm_mode_(alarm_mode) {}
 
@@ -45,7 +45,8 @@ class AlarmTracker {
   // no such alarm waits.
   std::error_code acknowledge(std::uint8_t slot, std::uint8_t alarm_type, std::uint8_t seq_nr);
 
-  // The slave left data exchange: its alarm machine is closed (§3.3), forget everything.
+  // The slave left data exchange: its alarm machine is closed ([IEC 61158-6-3 MSAC_C1]), forget
+  // everything.
   void reset();
 
   [[nodiscard]] std::size_t outstanding() const { return outstanding_.size(); }

@@ -6,10 +6,11 @@
 namespace rs4sim::dp::master {
 
 std::error_code Dpv1Client::submit(Dpv1Job job) {
-  const bool read_ok = job.operation == Dpv1Operation::kRead && job.length >= 1 &&
-                       job.length <= pdu::kDpv1MaxData;
+  const bool read_ok =
+      job.operation == Dpv1Operation::kRead && job.length >= 1 && job.length <= pdu::kDpv1MaxData;
   const bool write_ok = job.operation == Dpv1Operation::kWrite && !job.data.empty();
-  // Index 255 is reserved for the I&M call mechanism but legal on the wire (§3.3).
+  // Index 255 is reserved for the I&M call mechanism but legal on the wire
+  // ([IEC 61158-6-3 MSAC_C1]).
   if (!(read_ok || write_ok) || job.slot == 255) {
     return make_error_code(MasterError::kBadArgument);
   }
@@ -33,7 +34,9 @@ fdl::DataUnit Dpv1Client::request_pdu(const Dpv1Job& j) const {
 
 std::optional<fdl::DataUnit> Dpv1Client::next_pdu(TimePoint now) {
   if (active_) {
-    if (!active_->resend) return fdl::DataUnit{};  // empty poll (§3.4 step 3)
+    if (!active_->resend)
+      return fdl::DataUnit{};  // empty poll ([IEC 61158-6-3 MSAC_C1 polling]
+                               // step 3)
     active_->resend = false;
     return request_pdu(active_->job);
   }
@@ -68,7 +71,9 @@ void Dpv1Client::finish_with(std::error_code ec, EventQueue& events) {
 void Dpv1Client::on_reply(const Reply& r, EventQueue& events) {
   if (!active_) return;
   using S = fdl::ResponseStatus;
-  if (r.empty_ack()) return;  // no response yet: poll again (§3.4 step 2)
+  if (r.empty_ack())
+    return;  // no response yet: poll again ([IEC 61158-6-3 MSAC_C1 polling]
+             // step 2)
   if (!r.short_ack && r.status == S::kSapNotEnabled) {
     finish_with(make_error_code(MasterError::kSapNotEnabled), events);
     return;
@@ -79,9 +84,9 @@ void Dpv1Client::on_reply(const Reply& r, EventQueue& events) {
   }
   if (!r.carries_data() || !r.from_saps(pdu::sap::kMasterMsac1, pdu::sap::kMsacC1)) {
     const bool rejected = !r.short_ack && r.status == S::kUserError;
-    finish_with(make_error_code(rejected ? MasterError::kServiceRejected
-                                         : MasterError::kInvalidResponse),
-                events);
+    finish_with(
+        make_error_code(rejected ? MasterError::kServiceRejected : MasterError::kInvalidResponse),
+        events);
     return;
   }
   auto resp = pdu::decode_c1_response(r.data);
@@ -105,8 +110,8 @@ void Dpv1Client::on_response(const pdu::C1Response& resp, EventQueue& events) {
              wr && !is_read && wr->slot == job.slot && wr->index == job.index) {
     out.length = wr->length;
   } else if (const auto* neg = std::get_if<pdu::Dpv1Error>(&resp);
-             neg && neg->function == (is_read ? pdu::Dpv1Function::kRead
-                                              : pdu::Dpv1Function::kWrite)) {
+             neg &&
+             neg->function == (is_read ? pdu::Dpv1Function::kRead : pdu::Dpv1Function::kWrite)) {
     out.negative = *neg;
     out.error = to_error_code(*neg);
   } else {
@@ -121,8 +126,7 @@ void Dpv1Client::check_timeout(TimePoint now, EventQueue& events) {
   }
 }
 
-void Dpv1Client::abort_all(std::error_code active_error, std::error_code rest,
-                           EventQueue& events) {
+void Dpv1Client::abort_all(std::error_code active_error, std::error_code rest, EventQueue& events) {
   finish_with(active_error, events);
   while (!queue_.empty()) {
     Dpv1Result r = result_for(queue_.front());

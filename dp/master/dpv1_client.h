@@ -1,15 +1,16 @@
 #pragma once
 // MSAC_C1 client of one slave: Read/Write requests and their polling
-// (spec/profibus-dp.md §3.3, §3.4).
+// ([IEC 61158-6-3 MSAC_C1, MSAC_C1 polling]).
 //
-// Wire pattern (§3.4): SRD to DSAP 51 from SSAP 51 with the request PDU; while the slave
-// answers without a response PDU (SC or "no data"), the master polls with SRDs to DSAP
+// Wire pattern ([IEC 61158-6-3 MSAC_C1 polling]): SRD to DSAP 51 from SSAP 51 with the request PDU;
+// while the slave answers without a response PDU (SC or "no data"), the master polls with SRDs to
+// DSAP
 // 51 that carry no DU (DSAP/SSAP only, e.g. `68 05 05 68 85 82 7C 33 33 E9 16`) until the
 // reply carries the response or the negative response, or the C1 response timeout
 // (counted from the first transmission of the request) expires. One request at a time per
 // slave; further requests wait in a FIFO. A reply RR (no resources: the slave still
-// works on an earlier request, §3.4 [VPC3+C p56]) makes the master send the request
-// again on its next turn, until the timeout.
+// works on an earlier request, [IEC 61158-6-3 MSAC_C1 polling] [VPC3+C manual p. 56]) makes the
+// master send the request again on its next turn, until the timeout.
 
 #include "dp/master/event_queue.h"
 #include "dp/master/events.h"
@@ -49,7 +50,8 @@ class Dpv1Client {
   // for the job in progress. nullopt when idle. Starts the job's timeout on first send.
   std::optional<fdl::DataUnit> next_pdu(TimePoint now);
 
-  // A job was sent and its response is still outstanding (the SAP is busy, §3.5).
+  // A job was sent and its response is still outstanding (the SAP is busy,
+  // [IEC 61158-6-3 DPV1 alarms]).
   [[nodiscard]] bool busy() const { return active_.has_value(); }
   [[nodiscard]] bool idle() const { return !active_ && queue_.empty(); }
   [[nodiscard]] std::size_t queued() const { return queue_.size() + (active_ ? 1 : 0); }

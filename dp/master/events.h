@@ -1,5 +1,6 @@
 #pragma once
-// What the class 1 master reports upward (DESIGN.md §1.1, STYLE habit 11).
+// What the class 1 master reports upward ([docs/design.md#sans-io-cores],
+// [docs/design.md#upward-events]).
 //
 // The core never calls user code: it appends events to a queue that the owner drains
 // with Master::take_events() after each on_time()/on_telegram(). `dispatch` hands one
@@ -19,13 +20,14 @@ namespace rs4sim::dp::master {
 // Identifies one DPV1 Read/Write request; unique per master, never 0.
 using Dpv1RequestId = std::uint32_t;
 
-// §4.2 step 5 reached: the slave is in cyclic Data_Exchange.
+// [IEC 61158-6-3 master start-up of a slave] [pyprofibus dp_master.py] step 5 reached: the slave is
+// in cyclic Data_Exchange.
 struct SlaveEnteredDataExchange {
   std::uint8_t address = 0;
 };
 
-// The slave left cyclic Data_Exchange (§4.4); `reason` says why (kNoAnswer,
-// kSapNotEnabled, kLeftDataExchange, kInvalidResponse, …). Its start-up restarts.
+// The slave left cyclic Data_Exchange ([IEC 61158-6-3 slave supervision]); `reason` says why
+// (kNoAnswer, kSapNotEnabled, kLeftDataExchange, kInvalidResponse, …). Its start-up restarts.
 struct SlaveLeftDataExchange {
   std::uint8_t address = 0;
   std::error_code reason;
@@ -38,18 +40,19 @@ struct SlaveFault {
   std::error_code reason;
 };
 
-// A Slave_Diag reply with new content, or one fetched because of a DH reply (§2.9).
+// A Slave_Diag reply with new content, or one fetched because of a DH reply
+// ([IEC 61158-6-3 Data_Exchange]).
 struct DiagReceived {
   std::uint8_t address = 0;
-  fdl::DataUnit diag;  // the complete Slave_Diag DU (§2.5)
+  fdl::DataUnit diag;  // the complete Slave_Diag DU ([IEC 61158-6-3 Slave_Diag])
 };
 
-// A DPV1 alarm found in the extended diagnosis (§3.5).
+// A DPV1 alarm found in the extended diagnosis ([IEC 61158-6-3 DPV1 alarms]).
 struct AlarmReceived {
   std::uint8_t address = 0;
   std::uint8_t alarm_type = 0;
   std::uint8_t slot = 0;
-  std::uint8_t specifier = 0;  // Alarm_Specifier byte: Seq_Nr<<3 | Add_Ack<<2 | bits 1..0
+  std::uint8_t specifier = 0;      // Alarm_Specifier byte: Seq_Nr<<3 | Add_Ack<<2 | bits 1..0
   std::vector<std::uint8_t> data;  // Diagnostic_User_Data
   [[nodiscard]] std::uint8_t seq_nr() const { return static_cast<std::uint8_t>(specifier >> 3); }
   [[nodiscard]] bool add_ack() const { return (specifier & 0x04) != 0; }
@@ -65,9 +68,9 @@ struct AlarmAcknowledged {
 
 enum class Dpv1Operation : std::uint8_t { kRead, kWrite };
 
-// Completion of a DPV1 Read/Write (§3.4). `error` empty = success; a negative response
-// carries its bytes in `negative` and error = to_error_code(*negative); kDpv1Timeout,
-// kNoAnswer, kAborted, kSapNotEnabled, kInvalidResponse are the other outcomes.
+// Completion of a DPV1 Read/Write ([IEC 61158-6-3 MSAC_C1 polling]). `error` empty = success; a
+// negative response carries its bytes in `negative` and error = to_error_code(*negative);
+// kDpv1Timeout, kNoAnswer, kAborted, kSapNotEnabled, kInvalidResponse are the other outcomes.
 struct Dpv1Result {
   Dpv1RequestId id = 0;
   std::uint8_t address = 0;
@@ -76,7 +79,7 @@ struct Dpv1Result {
   std::uint8_t index = 0;
   std::error_code error;
   std::optional<pdu::Dpv1Error> negative;
-  pdu::Dpv1Data data;      // Read: the bytes returned
+  pdu::Dpv1Data data;       // Read: the bytes returned
   std::uint8_t length = 0;  // Write: the Length echoed by the slave
 };
 
@@ -86,9 +89,9 @@ struct CycleCompleted {
   std::uint32_t slaves_in_data_exchange = 0;
 };
 
-using MasterEvent = std::variant<SlaveEnteredDataExchange, SlaveLeftDataExchange, SlaveFault,
-                                 DiagReceived, AlarmReceived, AlarmAcknowledged, Dpv1Result,
-                                 CycleCompleted>;
+using MasterEvent =
+    std::variant<SlaveEnteredDataExchange, SlaveLeftDataExchange, SlaveFault, DiagReceived,
+                 AlarmReceived, AlarmAcknowledged, Dpv1Result, CycleCompleted>;
 
 class MasterObserver {
  public:

@@ -38,8 +38,9 @@ const SlaveHandler* Master::find(std::uint8_t address) const {
 }
 
 SlaveContext Master::context() {
-  return SlaveContext{config_.address, fcb_, events_, mode_ == OperatingMode::kClear,
-                      config_.auto_alarm_ack, config_.ready_timeout};
+  return SlaveContext{
+      config_.address,      fcb_, events_, mode_ == OperatingMode::kClear, config_.auto_alarm_ack,
+      config_.ready_timeout};
 }
 
 void Master::transmit(fdl::Telegram t) {
@@ -75,7 +76,7 @@ void Master::on_time(TimePoint now) {
   }
   if (phase_ == MasterPhase::kListening) {
     if (now < listen_until_) return;
-    phase_ = MasterPhase::kClaimingToken;  // §1.9: TTO of silence
+    phase_ = MasterPhase::kClaimingToken;  // [IEC 61158-4-3 token]: TTO of silence
     next_send_ = now;
   }
   if (phase_ == MasterPhase::kClaimingToken) {
@@ -86,18 +87,17 @@ void Master::on_time(TimePoint now) {
 }
 
 void Master::claim_token_step(TimePoint now) {
-  // §1.9: a lone master sends the token to itself twice, TSYN apart.
+  // [IEC 61158-4-3 token]: a lone master sends the token to itself twice, TSYN apart.
   const fdl::Telegram token = fdl::make_token(config_.address, config_.address);
   transmit(token);
-  next_send_ = now + config_.bus.characters(fdl::encoded_size(token)) +
-               config_.bus.bits(kTsynBits);
+  next_send_ = now + config_.bus.characters(fdl::encoded_size(token)) + config_.bus.bits(kTsynBits);
   if (++tokens_sent_ == 2) phase_ = MasterPhase::kRunning;
 }
 
 void Master::on_telegram(const fdl::Telegram& t, TimePoint now) {
   if (phase_ == MasterPhase::kListening) {
     if (started_) listen_until_ = now + config_.bus.token_lost_timeout(config_.address);
-    return;  // another active station: keep listening (§4.1)
+    return;  // another active station: keep listening ([IEC 61158-4-3 token, bus start])
   }
   if (!outstanding_ || t.type == fdl::FrameType::kToken) {
     ++counters_.ignored_telegrams;
@@ -130,9 +130,9 @@ void Master::on_slot_expired(TimePoint now) {
   Outstanding& o = *outstanding_;
   SlaveHandler& slave = slaves_[o.slave];
   const fdl::FrameControl fc = o.request.telegram.fc;
-  const bool first_frame = fc.fcb() && !fc.fcv();  // not retried (§1.8)
+  const bool first_frame = fc.fcb() && !fc.fcv();  // not retried ([IEC 61158-4-3 FCB/FCV])
   if (!first_frame && o.retries < config_.bus.max_retry_limit) {
-    // §1.8: re-send with the same FCB.
+    // [IEC 61158-4-3 FCB/FCV]: re-send with the same FCB.
     ++o.retries;
     slave.count_retry();
     const BusParameters& b = config_.bus;
@@ -193,7 +193,8 @@ void Master::start_cycle(TimePoint now) {
   SlaveContext ctx = context();
   for (SlaveHandler& s : slaves_) s.on_cycle_start(ctx, now);
   if (config_.global_control_interval > Duration::zero() && now >= next_gc_) {
-    // §4.3: the master repeats its operating state (Operate `00 00`, Clear `02 00`).
+    // [IEC 61158-6-3 class 1 master cycle]: the master repeats its operating state (Operate `00
+    // 00`, Clear `02 00`).
     pdu::GlobalControl gc;
     gc.clear_data = mode_ == OperatingMode::kClear;
     if (gc_queue_.empty()) gc_queue_.push_back(gc);
@@ -216,17 +217,19 @@ void Master::end_cycle(TimePoint now) {
 }
 
 void Master::send_global_control(const pdu::GlobalControl& gc, TimePoint now) {
-  // §2.6: SDN broadcast to DA 127, DSAP 58 from SSAP 62, e.g. `68 07 07 68 FF 82 46 3A 3E
+  // [IEC 61158-6-3 Global_Control]: SDN broadcast to DA 127, DSAP 58 from SSAP 62, e.g. `68 07 07
+  // 68 FF 82 46 3A 3E
   // 02 00 41 16`; no reply, so the next request waits TID2.
   fdl::DataUnit du;
   (void)pdu::encode_global_control(gc, du);
-  const fdl::Telegram t = fdl::make_data_telegram(
-      fdl::kBroadcastAddress, config_.address,
-      fdl::FcbInitiator::unsequenced(fdl::RequestFunction::kSdnHigh), pdu::sap::kGlobalControl,
-      pdu::sap::kMasterMs0, bytes(du));
+  const fdl::Telegram t =
+      fdl::make_data_telegram(fdl::kBroadcastAddress, config_.address,
+                              fdl::FcbInitiator::unsequenced(fdl::RequestFunction::kSdnHigh),
+                              pdu::sap::kGlobalControl, pdu::sap::kMasterMs0, bytes(du));
   cycle_sent_ = true;
   ++counters_.global_controls;
-  next_send_ = now + config_.bus.characters(fdl::encoded_size(t)) + config_.bus.bits(config_.bus.tid2);
+  next_send_ =
+      now + config_.bus.characters(fdl::encoded_size(t)) + config_.bus.bits(config_.bus.tid2);
   transmit(t);
 }
 

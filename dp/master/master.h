@@ -1,21 +1,23 @@
 #pragma once
-// PROFIBUS-DP class 1 master, sans-I/O (spec/profibus-dp.md §1.7–§1.9, §4; DESIGN.md §1).
+// PROFIBUS-DP class 1 master, sans-I/O ([IEC 61158-4-3 bus parameters, timing, FCB/FCV, token]
+// [IEC 61158-6-3 class 1 master]; [docs/design.md#principles]).
 //
 // Bus access. The master is meant to be the only active station on its link. With
-// `claim_token` it starts as §4.1/§1.9 prescribe for a lone master: it listens for the
-// token-lost timeout TTO (any traffic restarts the wait) and claims the token by sending
-// `DC TS TS` twice, TSYN apart. It then keeps the token for good: it neither passes it
-// to itself between cycles nor GAP-polls for other masters (documented simplification).
+// `claim_token` it starts as [IEC 61158-4-3 token, bus start, token] prescribe for a lone master:
+// it listens for the token-lost timeout TTO (any traffic restarts the wait) and claims the token by
+// sending `DC TS TS` twice, TSYN apart. It then keeps the token for good: it neither passes it to
+// itself between cycles nor GAP-polls for other masters (documented simplification).
 //
 // Cycle. Every `cycle_target` a poll cycle starts: queued Global_Control broadcasts go
 // first (SDN, then TID2 idle), then each slave gets one turn in configuration order
 // (slave_handler.h). At most one request is outstanding. Its slot deadline is
 // send time + request wire time + TSL + wire time of the longest acceptable reply: links
 // deliver a reply only when it is complete, so the wait for the first character (TSL,
-// §1.7) is extended by the reply's own transmission time. After a reply the next request
-// waits TID1 (≥ TSYN). On expiry the same telegram (same FCB) is re-sent up to
-// max_retry_limit times, except a first frame (FCV=0), which is not retried (§1.8); then
-// the slave counts as not answering (§4.4).
+// [IEC 61158-4-3 bus parameters, timing]) is extended by the reply's own transmission time. After a
+// reply the next request waits TID1 (≥ TSYN). On expiry the same telegram (same FCB) is re-sent up
+// to max_retry_limit times, except a first frame (FCV=0), which is not retried
+// ([IEC 61158-4-3 FCB/FCV]); then the slave counts as not answering
+// ([IEC 61158-6-3 slave supervision]).
 //
 // Results. Events are queued and drained with take_events() (events.h). DPV1 Read/Write
 // return a request id at once; the outcome arrives later as a Dpv1Result event (a
@@ -47,9 +49,9 @@ enum class OperatingMode : std::uint8_t { kOperate, kClear };
 
 struct MasterCounters {
   std::uint64_t cycles = 0;
-  std::uint64_t telegrams_sent = 0;   // requests, retries, broadcasts and tokens
-  std::uint64_t replies = 0;          // replies matched to the outstanding request
-  std::uint64_t slot_timeouts = 0;    // TSL expiries (each one a retry or a no-answer)
+  std::uint64_t telegrams_sent = 0;     // requests, retries, broadcasts and tokens
+  std::uint64_t replies = 0;            // replies matched to the outstanding request
+  std::uint64_t slot_timeouts = 0;      // TSL expiries (each one a retry or a no-answer)
   std::uint64_t ignored_telegrams = 0;  // not for us, requests of other stations, late replies
   std::uint64_t malformed_frames = 0;   // reported by the link's decoder
   std::uint64_t global_controls = 0;
@@ -68,8 +70,9 @@ class Master final : public Station {
   void on_time(TimePoint now) override;
   [[nodiscard]] std::optional<TimePoint> next_deadline() const override;
   std::optional<fdl::Telegram> take_transmit() override;
-  // A frame the link's decoder rejected (§1.10): counted; a garbled reply is handled like
-  // a missing one, by the slot time and a retry with the same FCB (§1.8).
+  // A frame the link's decoder rejected ([IEC 61158-4-3 frame reception]): counted; a garbled reply
+  // is handled like a missing one, by the slot time and a retry with the same FCB
+  // ([IEC 61158-4-3 FCB/FCV]).
   void on_malformed_frame(std::error_code why) override;
 
   // --- User API ---
@@ -79,24 +82,24 @@ class Master final : public Station {
   [[nodiscard]] std::span<const std::uint8_t> inputs(std::uint8_t slave) const;
   [[nodiscard]] std::optional<SlaveStatus> slave_status(std::uint8_t slave) const;
   [[nodiscard]] std::vector<std::uint8_t> slave_addresses() const;
-  // Queues a Global_Control broadcast (§2.6) for the start of the next cycle.
-  // kBadArgument for reserved command bits, kQueueFull beyond 8 pending.
+  // Queues a Global_Control broadcast ([IEC 61158-6-3 Global_Control]) for the start of the next
+  // cycle. kBadArgument for reserved command bits, kQueueFull beyond 8 pending.
   std::error_code global_control(const pdu::GlobalControl& gc);
   // CLEAR: outputs sent as zeros (empty for Fail_Safe slaves) and GC Clear broadcast;
-  // OPERATE: outputs as set and GC Operate (§2.6, §2.9).
+  // OPERATE: outputs as set and GC Operate ([IEC 61158-6-3 Global_Control, Data_Exchange]).
   void set_operating_mode(OperatingMode mode);
   [[nodiscard]] OperatingMode operating_mode() const { return mode_; }
-  // DPV1 C1 Read (length 1..240) / Write (1..240 bytes) (§3.3). Errors now: kUnknownSlave,
-  // kNotInDataExchange, kDpv1NotEnabled, kBadArgument, kQueueFull; later outcomes come
-  // as a Dpv1Result event with the returned id.
+  // DPV1 C1 Read (length 1..240) / Write (1..240 bytes) ([IEC 61158-6-3 MSAC_C1]). Errors now:
+  // kUnknownSlave, kNotInDataExchange, kDpv1NotEnabled, kBadArgument, kQueueFull; later outcomes
+  // come as a Dpv1Result event with the returned id.
   boost::outcome_v2::std_result<Dpv1RequestId> read(std::uint8_t slave, std::uint8_t slot,
                                                     std::uint8_t index, std::uint8_t length);
   boost::outcome_v2::std_result<Dpv1RequestId> write(std::uint8_t slave, std::uint8_t slot,
                                                      std::uint8_t index,
                                                      std::span<const std::uint8_t> data);
   // Manual alarm acknowledgement (auto_alarm_ack = false), by (slot, type, Seq_Nr).
-  std::error_code acknowledge_alarm(std::uint8_t slave, std::uint8_t slot,
-                                    std::uint8_t alarm_type, std::uint8_t seq_nr);
+  std::error_code acknowledge_alarm(std::uint8_t slave, std::uint8_t slot, std::uint8_t alarm_type,
+                                    std::uint8_t seq_nr);
   // Moves all queued events to `out` (appends).
   void take_events(std::vector<MasterEvent>& out) { events_.take(out); }
   std::vector<MasterEvent> take_events();

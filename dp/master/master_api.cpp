@@ -40,7 +40,7 @@ std::error_code Master::global_control(const pdu::GlobalControl& gc) {
 void Master::set_operating_mode(OperatingMode mode) {
   if (mode == mode_) return;
   mode_ = mode;
-  pdu::GlobalControl gc;  // §2.6: Clear `02 00`, Operate `00 00`
+  pdu::GlobalControl gc;  // [IEC 61158-6-3 Global_Control]: Clear `02 00`, Operate `00 00`
   gc.clear_data = mode == OperatingMode::kClear;
   (void)global_control(gc);
 }
@@ -56,8 +56,7 @@ boost::outcome_v2::std_result<Dpv1RequestId> Master::submit(std::uint8_t slave, 
 }
 
 boost::outcome_v2::std_result<Dpv1RequestId> Master::read(std::uint8_t slave, std::uint8_t slot,
-                                                          std::uint8_t index,
-                                                          std::uint8_t length) {
+                                                          std::uint8_t index, std::uint8_t length) {
   Dpv1Job job;
   job.operation = Dpv1Operation::kRead;
   job.slot = slot;

@@ -15,7 +15,7 @@ std::error_code validate(const SlaveEntry& s) {
   fdl::DataUnit prm;
   if (!pdu::encode_set_prm(s.prm, prm)) return bad;
   if (s.input_length > fdl::kMaxDataUnit - 2 || s.output_length > fdl::kMaxDataUnit - 2) {
-    return bad;  // 244-byte images (§2.4)
+    return bad;  // 244-byte images ([IEC 61158-6-3 Chk_Cfg/Get_Cfg])
   }
   const auto summary = pdu::summarize_cfg(bytes(s.cfg), pdu::CfgService::kChkCfg);
   if (!summary) return bad;

@@ -1,6 +1,7 @@
 #pragma once
 // Configuration of the class 1 master and of each slave it polls
-// (spec/profibus-dp.md §2.3 Set_Prm, §2.4 Chk_Cfg, §3.1 DPV1 status, §4).
+// ([IEC 61158-6-3 Set_Prm] Set_Prm, [IEC 61158-6-3 Chk_Cfg/Get_Cfg] Chk_Cfg,
+// [IEC 61158-6-3 DPV1_Status] DPV1 status, [IEC 61158-6-3 class 1 master]).
 //
 // A GSD-driven configurator fills these entries; the master only validates them once
 // (`validate`) and sends the bytes as they are.
@@ -20,16 +21,18 @@ namespace rs4sim::dp::master {
 using namespace std::chrono_literals;
 
 struct SlaveEntry {
-  std::uint8_t address = 3;  // 0..125 (§1.4)
-  // Set_Prm (§2.3): Station_Status (Lock_Req, WD_On, Sync/Freeze_Req), WD factors, min
-  // TSDR, Ident_Number, Group_Ident, DPV1_Status bytes (§3.1) and User_Prm_Data.
+  std::uint8_t address = 3;  // 0..125 ([IEC 61158-4-3 addresses, SAPs])
+  // Set_Prm ([IEC 61158-6-3 Set_Prm]): Station_Status (Lock_Req, WD_On, Sync/Freeze_Req), WD
+  // factors, min TSDR, Ident_Number, Group_Ident, DPV1_Status bytes ([IEC 61158-6-3 DPV1_Status])
+  // and User_Prm_Data.
   pdu::SetPrm prm;
-  // Chk_Cfg identifiers in slot order (§2.4), 1..244 bytes.
+  // Chk_Cfg identifiers in slot order ([IEC 61158-6-3 Chk_Cfg/Get_Cfg]), 1..244 bytes.
   fdl::DataUnit cfg;
   // Data_Exchange image lengths; must equal the sums of the Chk_Cfg identifiers.
   std::size_t input_length = 0;
   std::size_t output_length = 0;
-  // Alarm_Ack goes to DSAP 50 instead of 51 (GSD Extra_Alarm_SAP_supp=1, §3.5).
+  // Alarm_Ack goes to DSAP 50 instead of 51 (GSD Extra_Alarm_SAP_supp=1,
+  // [IEC 61158-6-3 DPV1 alarms]).
   bool extra_alarm_sap = false;
   // DPV1 C1 response timeout (GSD C1_Response_Timeout), counted from the request.
   Duration c1_response_timeout = 1s;
@@ -44,16 +47,19 @@ struct MasterConfig {
   // Target time between the starts of two poll cycles; a cycle that takes longer starts
   // the next one at once.
   Duration cycle_target = 10ms;
-  // §4.1: listen for TTO and claim the token (`DC TS TS` twice) before the first cycle.
+  // [IEC 61158-4-3 token, bus start]: listen for TTO and claim the token (`DC TS TS` twice) before
+  // the first cycle.
   bool claim_token = true;
-  // §4.2 step 0: start each slave with an FDL_Status request.
+  // [IEC 61158-6-3 master start-up of a slave] [pyprofibus dp_master.py] step 0: start each slave
+  // with an FDL_Status request.
   bool fdl_status_first = true;
   // Acknowledge alarms automatically (otherwise the user calls acknowledge_alarm()).
   bool auto_alarm_ack = true;
-  // §4.2 step 4: time allowed from Chk_Cfg until Slave_Diag shows the slave ready
-  // (pyprofibus WDXRDY 1 s).
+  // [IEC 61158-6-3 master start-up of a slave] [pyprofibus dp_master.py] step 4: time allowed from
+  // Chk_Cfg until Slave_Diag shows the slave ready (pyprofibus WDXRDY 1 s).
   Duration ready_timeout = 1s;
-  // Period of the Global_Control Operate/Clear broadcast (§4.3); 0 = only on request.
+  // Period of the Global_Control Operate/Clear broadcast ([IEC 61158-6-3 class 1 master cycle]); 0
+  // = only on request.
   Duration global_control_interval = 0s;
   std::vector<SlaveEntry> slaves;  // up to 125, polled in this order
 };
@@ -65,8 +71,8 @@ std::error_code validate(const SlaveEntry& s);
 // are unique and differ from the master's.
 std::error_code validate(const MasterConfig& m);
 
-// WD_Fact_1/WD_Fact_2 for a watchdog time (§2.3: T_WD = base · F1 · F2 with base 10 ms,
-// or 1 ms when `base_1ms`). Rounds up; clamps to 1..255 each.
+// WD_Fact_1/WD_Fact_2 for a watchdog time ([IEC 61158-6-3 Set_Prm]: T_WD = base · F1 · F2 with base
+// 10 ms, or 1 ms when `base_1ms`). Rounds up; clamps to 1..255 each.
 struct WatchdogFactors {
   std::uint8_t f1 = 1;
   std::uint8_t f2 = 1;

@@ -1,6 +1,7 @@
 #pragma once
 // A slave's reply to the master's outstanding request, reduced to what the master
-// evaluates (spec/profibus-dp.md §1.5 response FC, §1.6 short acknowledgement).
+// evaluates ([IEC 61158-4-3 frame control] response FC, [IEC 61158-4-3 short acknowledgement] short
+// acknowledgement).
 
 #include "dp/fdl/telegram.h"
 
@@ -10,12 +11,10 @@
 namespace rs4sim::dp::master {
 
 // A DataUnit (boost static_vector) as a byte span.
-inline std::span<const std::uint8_t> bytes(const fdl::DataUnit& d) {
-  return {d.data(), d.size()};
-}
+inline std::span<const std::uint8_t> bytes(const fdl::DataUnit& d) { return {d.data(), d.size()}; }
 
 struct Reply {
-  bool short_ack = false;  // E5 (§1.6)
+  bool short_ack = false;  // E5 ([IEC 61158-4-3 short acknowledgement])
   fdl::ResponseStatus status = fdl::ResponseStatus::kOk;
   fdl::StationType station_type = fdl::StationType::kSlave;
   bool has_saps = false;
@@ -38,18 +37,19 @@ struct Reply {
     return r;
   }
 
-  // DL, DH, RDL, RDH: the reply carries response data (§1.5).
+  // DL, DH, RDL, RDH: the reply carries response data ([IEC 61158-4-3 frame control]).
   [[nodiscard]] bool carries_data() const {
     using S = fdl::ResponseStatus;
     return !short_ack && (status == S::kDataLow || status == S::kDataHigh ||
                           status == S::kNotReceivedDataLow || status == S::kNotReceivedDataHigh);
   }
-  // DH or RDH: the slave has diagnosis pending (§2.9).
+  // DH or RDH: the slave has diagnosis pending ([IEC 61158-6-3 Data_Exchange]).
   [[nodiscard]] bool diag_pending() const {
     using S = fdl::ResponseStatus;
     return !short_ack && (status == S::kDataHigh || status == S::kNotReceivedDataHigh);
   }
-  // SC, or an SD1 reply "OK"/"no data" without SAPs and data (§1.6).
+  // SC, or an SD1 reply "OK"/"no data" without SAPs and data
+  // ([IEC 61158-4-3 short acknowledgement]).
   [[nodiscard]] bool empty_ack() const {
     using S = fdl::ResponseStatus;
     if (short_ack) return true;

@@ -40,7 +40,8 @@ std::uint8_t SlaveHandler::alarm_dsap() const {
 Request SlaveHandler::make(SlaveContext& ctx, RequestKind kind, fdl::FrameControl fc,
                            std::optional<std::uint8_t> dsap, std::span<const std::uint8_t> data,
                            std::size_t max_reply) const {
-  // DP services: master SSAP 62 (MS0), DPV1 C1: 51 (§2.1); DSAP and SSAP go together.
+  // DP services: master SSAP 62 (MS0), DPV1 C1: 51 ([IEC 61158-6-3 SAP assignment]); DSAP and SSAP
+  // go together.
   std::optional<std::uint8_t> ssap;
   if (dsap) {
     const bool c1 = kind == RequestKind::kDpv1 || kind == RequestKind::kAlarmAck;
@@ -76,7 +77,9 @@ std::optional<Request> SlaveHandler::startup_request(SlaveContext& ctx) {
   const std::uint8_t addr = config_.address;
   using F = fdl::RequestFunction;
   switch (state_) {
-    case PollState::kStatusRequest:  // `10 DA SA 49 FCS 16`, no FCB (§1.8, §4.2 step 0)
+    case PollState::kStatusRequest:  // `10 DA SA 49 FCS 16`, no FCB ([IEC 61158-4-3 FCB/FCV]
+                                     // [IEC 61158-6-3 master start-up of a slave]
+                                     // [pyprofibus dp_master.py] step 0)
       return make(ctx, RequestKind::kFdlStatus, fdl::FcbInitiator::unsequenced(F::kFdlStatus),
                   std::nullopt, {}, 6);
     case PollState::kReadDiag:
@@ -89,15 +92,14 @@ std::optional<Request> SlaveHandler::startup_request(SlaveContext& ctx) {
     case PollState::kChkCfg:
       return make(ctx, RequestKind::kChkCfg, ctx.fcb.next(addr, F::kSrdHigh), sap::kChkCfg,
                   bytes(config_.cfg), 6);
-    case PollState::kDataExchange:
-      break;
+    case PollState::kDataExchange: break;
   }
   return std::nullopt;
 }
 
 Request SlaveHandler::data_exchange_request(SlaveContext& ctx) const {
-  // §2.9: SRD_HI on the default SAP with the whole output image; in CLEAR zeros, or an
-  // empty telegram for slaves parameterised with Fail_Safe.
+  // [IEC 61158-6-3 Data_Exchange]: SRD_HI on the default SAP with the whole output image; in CLEAR
+  // zeros, or an empty telegram for slaves parameterised with Fail_Safe.
   fdl::DataUnit out;
   if (!ctx.clear_mode) {
     out = outputs_;
@@ -106,8 +108,8 @@ Request SlaveHandler::data_exchange_request(SlaveContext& ctx) const {
   }
   const std::size_t reply = std::max<std::size_t>(6, 9 + config_.input_length);
   return make(ctx, RequestKind::kDataExchange,
-              ctx.fcb.next(config_.address, fdl::RequestFunction::kSrdHigh), std::nullopt, bytes(out),
-              reply);
+              ctx.fcb.next(config_.address, fdl::RequestFunction::kSrdHigh), std::nullopt,
+              bytes(out), reply);
 }
 
 std::optional<Request> SlaveHandler::cyclic_request(SlaveContext& ctx, TimePoint now) {
@@ -116,7 +118,8 @@ std::optional<Request> SlaveHandler::cyclic_request(SlaveContext& ctx, TimePoint
     turn_.dx = true;
     return data_exchange_request(ctx);
   }
-  if (diag_needed_ && !turn_.diag) {  // DH → Slave_Diag in the next slot (§4.3)
+  if (diag_needed_ && !turn_.diag) {  // DH → Slave_Diag in the next slot
+                                      // ([IEC 61158-6-3 class 1 master cycle])
     turn_.diag = true;
     return make(ctx, RequestKind::kDiag, ctx.fcb.next(config_.address, F::kSrdHigh),
                 pdu::sap::kSlaveDiag, {}, fdl::kMaxTelegramSize);

@@ -1,14 +1,15 @@
 #pragma once
 // The master's view of one slave: start-up, cyclic Data_Exchange and supervision
-// (spec/profibus-dp.md §4.2–§4.4), with the DPV1 C1 client and the alarm tracker.
+// ([IEC 61158-6-3 master start-up of a slave, class 1 master cycle, slave supervision]
+// [pyprofibus dp_master.py]), with the DPV1 C1 client and the alarm tracker.
 //
-// Start-up (§4.2): kStatusRequest (FDL_Status, optional) → kReadDiag (Slave_Diag, FCB
-// first frame) → kSetPrm → kChkCfg → kWaitReady (Slave_Diag until Prm_Req, Stat_Diag,
-// Station_Not_Ready, Prm/Cfg_Fault clear and Master_Add = own) → kDataExchange.
-// The master gives each slave one *turn* per poll cycle; within a turn the handler may
-// chain start-up steps (Diag → Set_Prm → Chk_Cfg → Diag) and, in data exchange, adds at
-// most one Slave_Diag (after DH), one Alarm_Ack and one DPV1 exchange after the
-// Data_Exchange (§4.3).
+// Start-up ([IEC 61158-6-3 master start-up of a slave] [pyprofibus dp_master.py]): kStatusRequest
+// (FDL_Status, optional) → kReadDiag (Slave_Diag, FCB first frame) → kSetPrm → kChkCfg → kWaitReady
+// (Slave_Diag until Prm_Req, Stat_Diag, Station_Not_Ready, Prm/Cfg_Fault clear and Master_Add =
+// own) → kDataExchange. The master gives each slave one *turn* per poll cycle; within a turn the
+// handler may chain start-up steps (Diag → Set_Prm → Chk_Cfg → Diag) and, in data exchange, adds at
+// most one Slave_Diag (after DH), one Alarm_Ack and one DPV1 exchange after the Data_Exchange
+// ([IEC 61158-6-3 class 1 master cycle]).
 
 #include "dp/fdl/fcb.h"
 #include "dp/master/alarm_tracker.h"
@@ -26,7 +27,8 @@
 namespace rs4sim::dp::master {
 
 enum class PollState : std::uint8_t {
-  kStatusRequest,  // §4.2 step 0: FDL_Status
+  kStatusRequest,  // [IEC 61158-6-3 master start-up of a slave] [pyprofibus dp_master.py] step 0:
+                   // FDL_Status
   kReadDiag,       // step 1: first Slave_Diag (ident, Master_Add)
   kSetPrm,         // step 2
   kChkCfg,         // step 3
@@ -36,7 +38,13 @@ enum class PollState : std::uint8_t {
 const char* to_string(PollState s);
 
 enum class RequestKind : std::uint8_t {
-  kFdlStatus, kDiag, kSetPrm, kChkCfg, kDataExchange, kDpv1, kAlarmAck
+  kFdlStatus,
+  kDiag,
+  kSetPrm,
+  kChkCfg,
+  kDataExchange,
+  kDpv1,
+  kAlarmAck
 };
 
 struct Request {
@@ -46,13 +54,14 @@ struct Request {
 };
 
 struct PollCounters {
-  std::uint64_t requests = 0;          // telegrams sent to the slave (retries included)
-  std::uint64_t retries = 0;           // re-sent after a missing reply (§1.8)
-  std::uint64_t no_answer = 0;         // gave up after max_retry_limit retries
-  std::uint64_t data_exchanges = 0;    // successful Data_Exchange cycles
+  std::uint64_t requests = 0;        // telegrams sent to the slave (retries included)
+  std::uint64_t retries = 0;         // re-sent after a missing reply ([IEC 61158-4-3 FCB/FCV])
+  std::uint64_t no_answer = 0;       // gave up after max_retry_limit retries
+  std::uint64_t data_exchanges = 0;  // successful Data_Exchange cycles
   std::uint64_t diag_reads = 0;
   std::uint64_t entered_data_exchange = 0;
-  std::uint64_t left_data_exchange = 0;  // lost slave or re-parameterisation (§4.4)
+  std::uint64_t left_data_exchange = 0;  // lost slave or re-parameterisation
+                                         // ([IEC 61158-6-3 slave supervision])
   std::uint64_t invalid_responses = 0;
 };
 
@@ -61,8 +70,8 @@ struct SlaveStatus {
   PollState state = PollState::kStatusRequest;
   const char* state_name = "";
   PollCounters counters;
-  fdl::DataUnit last_diag;      // the last Slave_Diag DU received
-  std::error_code last_error;   // the last fault (kept after recovery)
+  fdl::DataUnit last_diag;     // the last Slave_Diag DU received
+  std::error_code last_error;  // the last fault (kept after recovery)
   std::size_t alarms_outstanding = 0;
   std::size_t dpv1_queued = 0;
 };
@@ -72,7 +81,8 @@ struct SlaveContext {
   std::uint8_t master_address;
   fdl::FcbInitiator& fcb;
   EventQueue& events;
-  bool clear_mode;       // outputs as zeros (or empty for Fail_Safe slaves, §2.9)
+  bool clear_mode;  // outputs as zeros (or empty for Fail_Safe slaves,
+                    // [IEC 61158-6-3 Data_Exchange])
   bool auto_alarm_ack;
   Duration ready_timeout;
 };
@@ -88,9 +98,12 @@ class SlaveHandler {
   std::optional<Request> next_request(SlaveContext& ctx, TimePoint now);
   // The reply to the last request (already checked to come from this slave).
   void on_reply(SlaveContext& ctx, const Reply& r, TimePoint now);
-  // No reply after all retries (§4.4).
+  // No reply after all retries ([IEC 61158-6-3 slave supervision]).
   void on_no_answer(SlaveContext& ctx);
-  void count_retry() { ++counters_.retries; ++counters_.requests; }
+  void count_retry() {
+    ++counters_.retries;
+    ++counters_.requests;
+  }
   // Housekeeping once per cycle (DPV1 timeouts).
   void on_cycle_start(SlaveContext& ctx, TimePoint now);
 
@@ -142,14 +155,14 @@ class SlaveHandler {
   PollState state_;
   RequestKind last_kind_ = RequestKind::kFdlStatus;
   Turn turn_;
-  bool continue_ = false;      // chain the next start-up step in this turn
-  bool diag_needed_ = false;   // DH seen or Stat_Diag set (§2.9)
+  bool continue_ = false;     // chain the next start-up step in this turn
+  bool diag_needed_ = false;  // DH seen or Stat_Diag set ([IEC 61158-6-3 Data_Exchange])
   TimePoint wait_ready_since_{};
   fdl::DataUnit outputs_;
   fdl::DataUnit inputs_;
   fdl::DataUnit last_diag_;
   std::error_code last_error_;
-  std::error_code reported_;   // last fault reported as an event (reset in DX)
+  std::error_code reported_;  // last fault reported as an event (reset in DX)
   PollCounters counters_;
   Dpv1Client dpv1_;
   AlarmTracker alarms_;

@@ -1,4 +1,6 @@
-// Reply evaluation and state transitions of SlaveHandler (spec/profibus-dp.md §4.2–§4.4).
+// Reply evaluation and state transitions of SlaveHandler
+// ([IEC 61158-6-3 master start-up of a slave, class 1 master cycle, slave supervision]
+// [pyprofibus dp_master.py]).
 
 #include "dp/master/master_error.h"
 #include "dp/master/slave_handler.h"
@@ -13,7 +15,8 @@ using S = fdl::ResponseStatus;
 
 // Error for a reply that is neither the expected answer nor a data-less positive ack.
 std::error_code negative_reply(const Reply& r) {
-  if (!r.short_ack && r.status == S::kSapNotEnabled) return make_error_code(MasterError::kSapNotEnabled);
+  if (!r.short_ack && r.status == S::kSapNotEnabled)
+    return make_error_code(MasterError::kSapNotEnabled);
   if (!r.short_ack && (r.status == S::kUserError || r.status == S::kNoResource)) {
     return make_error_code(MasterError::kServiceRejected);
   }
@@ -35,7 +38,8 @@ void SlaveHandler::on_reply(SlaveContext& ctx, const Reply& r, TimePoint now) {
 }
 
 void SlaveHandler::on_no_answer(SlaveContext& ctx) {
-  // §4.4: mark the slave offline, restart at step 0/1 with a fresh FCB (FCV=0).
+  // [IEC 61158-6-3 slave supervision]: mark the slave offline, restart at step 0/1 with a fresh FCB
+  // (FCV=0).
   ++counters_.no_answer;
   const auto no_answer = make_error_code(MasterError::kNoAnswer);
   if (last_kind_ == RequestKind::kDpv1) {
@@ -46,7 +50,8 @@ void SlaveHandler::on_no_answer(SlaveContext& ctx) {
 }
 
 void SlaveHandler::on_status_reply(SlaveContext& ctx, const Reply& r) {
-  // §4.2 step 0: SD1 reply, FC status OK with station type "slave" (`00`).
+  // [IEC 61158-6-3 master start-up of a slave] [pyprofibus dp_master.py] step 0: SD1 reply, FC
+  // status OK with station type "slave" (`00`).
   if (r.short_ack || r.has_saps || !r.data.empty() || r.status != S::kOk) {
     ++counters_.invalid_responses;
     fault(ctx, make_error_code(MasterError::kInvalidResponse));
@@ -61,7 +66,8 @@ void SlaveHandler::on_status_reply(SlaveContext& ctx, const Reply& r) {
 }
 
 void SlaveHandler::on_diag_reply(SlaveContext& ctx, const Reply& r) {
-  // Slave_Diag reply: DL/DH with DSAP 62 (master MS0) and SSAP 60 (§2.1, §2.5).
+  // Slave_Diag reply: DL/DH with DSAP 62 (master MS0) and SSAP 60
+  // ([IEC 61158-6-3 SAP assignment, Slave_Diag]).
   const bool shaped = r.carries_data() && r.from_saps(pdu::sap::kMasterMs0, pdu::sap::kSlaveDiag);
   auto diag = shaped ? pdu::decode_slave_diag(r.data)
                      : pdu::Result<pdu::SlaveDiag>(make_error_code(pdu::PduError::kTooShort));
@@ -82,7 +88,8 @@ void SlaveHandler::on_diag_reply(SlaveContext& ctx, const Reply& r) {
 }
 
 void SlaveHandler::on_first_diag(SlaveContext& ctx, const pdu::SlaveDiag& d) {
-  // §4.2 step 1: the Ident must match; Master_Add of another master ⇒ Master_Lock.
+  // [IEC 61158-6-3 master start-up of a slave] [pyprofibus dp_master.py] step 1: the Ident must
+  // match; Master_Add of another master ⇒ Master_Lock.
   if (d.ident_number != config_.prm.ident_number) {
     fault(ctx, make_error_code(MasterError::kIdentMismatch));
     return;
@@ -96,7 +103,8 @@ void SlaveHandler::on_first_diag(SlaveContext& ctx, const pdu::SlaveDiag& d) {
 }
 
 void SlaveHandler::on_ready_diag(SlaveContext& ctx, const pdu::SlaveDiag& d) {
-  // §4.2 step 4: faults restart at step 1, Prm_Req at step 2; wait while not ready.
+  // [IEC 61158-6-3 master start-up of a slave] [pyprofibus dp_master.py] step 4: faults restart at
+  // step 1, Prm_Req at step 2; wait while not ready.
   const auto err = [](MasterError e) { return make_error_code(e); };
   if (d.ident_number != config_.prm.ident_number) {
     restart(ctx, err(MasterError::kIdentMismatch), PollState::kReadDiag);
@@ -118,27 +126,32 @@ void SlaveHandler::on_ready_diag(SlaveContext& ctx, const pdu::SlaveDiag& d) {
 
 void SlaveHandler::on_cyclic_diag(SlaveContext& ctx, const pdu::SlaveDiag& d) {
   if (config_.dpv1_enabled()) {
-    if (auto ec = alarms_.on_diag({d.ext_diag.data(), d.ext_diag.size()}, ctx.auto_alarm_ack, ctx.events)) fault(ctx, ec);
+    if (auto ec =
+            alarms_.on_diag({d.ext_diag.data(), d.ext_diag.size()}, ctx.auto_alarm_ack, ctx.events))
+      fault(ctx, ec);
   }
-  diag_needed_ = d.status2.stat_diag;  // keep fetching while Stat_Diag (§2.5)
+  diag_needed_ = d.status2.stat_diag;  // keep fetching while Stat_Diag ([IEC 61158-6-3 Slave_Diag])
   const auto err = [](MasterError e) { return make_error_code(e); };
   if (d.status1.prm_fault || d.status1.cfg_fault || d.status1.not_supported) {
-    leave_data_exchange(ctx, err(d.status1.prm_fault   ? MasterError::kPrmFault
-                                 : d.status1.cfg_fault ? MasterError::kCfgFault
-                                                       : MasterError::kNotSupported),
+    leave_data_exchange(ctx,
+                        err(d.status1.prm_fault   ? MasterError::kPrmFault
+                            : d.status1.cfg_fault ? MasterError::kCfgFault
+                                                  : MasterError::kNotSupported),
                         PollState::kReadDiag);
   } else if (d.status2.prm_req || d.status1.station_not_ready ||
              d.master_add != ctx.master_address) {
-    // §4.4: slave reset or watchdog expiry ⇒ re-parameterise; another master ⇒ step 1.
-    const bool foreign = d.master_add != ctx.master_address &&
-                         d.master_add != pdu::sap::kNoMasterAddress;
+    // [IEC 61158-6-3 slave supervision]: slave reset or watchdog expiry ⇒ re-parameterise; another
+    // master ⇒ step 1.
+    const bool foreign =
+        d.master_add != ctx.master_address && d.master_add != pdu::sap::kNoMasterAddress;
     leave_data_exchange(ctx, err(MasterError::kLeftDataExchange),
                         foreign ? PollState::kReadDiag : PollState::kSetPrm);
   }
 }
 
 void SlaveHandler::on_prm_cfg_reply(SlaveContext& ctx, const Reply& r, TimePoint now) {
-  // Set_Prm/Chk_Cfg are confirmed by SC only; acceptance shows in the next diag (§1.6).
+  // Set_Prm/Chk_Cfg are confirmed by SC only; acceptance shows in the next diag
+  // ([IEC 61158-4-3 short acknowledgement]).
   if (!r.empty_ack()) {
     ++counters_.invalid_responses;
     restart(ctx, negative_reply(r), PollState::kReadDiag);
@@ -154,8 +167,8 @@ void SlaveHandler::on_prm_cfg_reply(SlaveContext& ctx, const Reply& r, TimePoint
 }
 
 void SlaveHandler::on_dx_reply(SlaveContext& ctx, const Reply& r) {
-  // §2.9: DL/DH with the input image on the default SAP, or SC for a slave without
-  // inputs; RS ⇒ the slave left DATA_EXCH (§4.4).
+  // [IEC 61158-6-3 Data_Exchange]: DL/DH with the input image on the default SAP, or SC for a slave
+  // without inputs; RS ⇒ the slave left DATA_EXCH ([IEC 61158-6-3 slave supervision]).
   std::span<const std::uint8_t> in;
   if (r.has_saps || !(r.carries_data() || r.empty_ack())) {
     ++counters_.invalid_responses;
@@ -208,8 +221,7 @@ void SlaveHandler::enter_data_exchange(SlaveContext& ctx) {
   ctx.events.push(SlaveEnteredDataExchange{config_.address});
 }
 
-void SlaveHandler::leave_data_exchange(SlaveContext& ctx, std::error_code reason,
-                                       PollState next) {
+void SlaveHandler::leave_data_exchange(SlaveContext& ctx, std::error_code reason, PollState next) {
   ++counters_.left_data_exchange;
   state_ = next;
   continue_ = false;

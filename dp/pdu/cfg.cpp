@@ -1,4 +1,4 @@
-// Configuration identifiers, spec/profibus-dp.md §2.4.
+// Configuration identifiers, [IEC 61158-6-3 Chk_Cfg/Get_Cfg].
 #include "dp/pdu/cfg.h"
 
 #include "dp/pdu/wire.h"
@@ -38,8 +38,9 @@ Result<CfgParse> decode_special(std::span<const std::uint8_t> du, CfgService ser
     p.identifier.skip_manufacturer_check = true;
   } else {
     if (du.size() < pos + manufacturer) return PduError::kTooShort;
-    p.identifier.manufacturer_data.assign(du.begin() + static_cast<std::ptrdiff_t>(pos),
-                                          du.begin() + static_cast<std::ptrdiff_t>(pos + manufacturer));
+    p.identifier.manufacturer_data.assign(
+        du.begin() + static_cast<std::ptrdiff_t>(pos),
+        du.begin() + static_cast<std::ptrdiff_t>(pos + manufacturer));
     pos += manufacturer;
   }
   p.size = pos;
@@ -59,8 +60,9 @@ Result<void> encode_general(const CfgIdentifier& id, fdl::DataUnit& out) {
   BOOST_OUTCOME_TRY(check_count(id.output, 16));
   const IoLength& l = id.input ? *id.input : *id.output;
   const unsigned dir = (id.input ? 1U : 0U) | (id.output ? 2U : 0U);
-  return wire::append(out, {static_cast<std::uint8_t>(wire::flag(l.consistent, 7) | wire::flag(l.words, 6) |
-                                                      (dir << 4) | ((l.count - 1U) & 0x0FU))});
+  return wire::append(
+      out, {static_cast<std::uint8_t>(wire::flag(l.consistent, 7) | wire::flag(l.words, 6) |
+                                      (dir << 4) | ((l.count - 1U) & 0x0FU))});
 }
 
 Result<void> encode_special(const CfgIdentifier& id, fdl::DataUnit& out) {
@@ -68,8 +70,9 @@ Result<void> encode_special(const CfgIdentifier& id, fdl::DataUnit& out) {
   BOOST_OUTCOME_TRY(check_count(id.output, 64));
   if (id.skip_manufacturer_check && !id.manufacturer_data.empty()) return PduError::kBadIdentifier;
   const unsigned length_bytes = (id.input ? 1U : 0U) | (id.output ? 2U : 0U);
-  const unsigned manufacturer =
-      id.skip_manufacturer_check ? kSkipManufacturerCheck : static_cast<unsigned>(id.manufacturer_data.size());
+  const unsigned manufacturer = id.skip_manufacturer_check
+                                    ? kSkipManufacturerCheck
+                                    : static_cast<unsigned>(id.manufacturer_data.size());
   if (out.size() + id.encoded_size() > wire::kMaxDpDu) return PduError::kTooLong;
   (void)wire::append(out, {static_cast<std::uint8_t>((length_bytes << 6) | manufacturer)});
   if (id.output) (void)wire::append(out, {special_length_byte(*id.output)});

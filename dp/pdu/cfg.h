@@ -1,5 +1,5 @@
 #pragma once
-// Chk_Cfg (DSAP 62) / Get_Cfg (DSAP 59) configuration identifiers, spec/profibus-dp.md §2.4.
+// Chk_Cfg (DSAP 62) / Get_Cfg (DSAP 59) configuration identifiers, [IEC 61158-6-3 Chk_Cfg/Get_Cfg].
 //
 // General ("compact") identifier: 1 byte. Special identifier: header byte with bits 5..4 = 00,
 // then the length byte(s) (output first, then input), then 0…14 manufacturer bytes.
@@ -15,7 +15,7 @@
 
 namespace rs4sim::dp::pdu {
 
-inline constexpr std::size_t kCfgMaxLength = 244;  // Chk_Cfg DU 1…244 (§2.3)
+inline constexpr std::size_t kCfgMaxLength = 244;  // Chk_Cfg DU 1…244 ([IEC 61158-6-3 Set_Prm])
 
 // Length of one direction: `count` units of byte or word, consistent over the whole length.
 struct IoLength {
@@ -51,7 +51,7 @@ struct CfgParse {
   std::size_t size = 0;
 };
 // Errors: kTooShort (empty, or length/manufacturer bytes missing), kBadIdentifier
-// (manufacturer code 15 in a Get_Cfg reply, §2.4).
+// (manufacturer code 15 in a Get_Cfg reply, [IEC 61158-6-3 Chk_Cfg/Get_Cfg]).
 Result<CfgParse> decode_cfg_identifier(std::span<const std::uint8_t> du, CfgService service);
 
 // Walks a whole Chk_Cfg/Get_Cfg DU without storing the identifiers.

@@ -1,4 +1,4 @@
-// DPV1 MSAC_C1 PDUs, spec/profibus-dp.md §3.3–§3.5.
+// DPV1 MSAC_C1 PDUs, [IEC 61158-6-3 MSAC_C1, MSAC_C1 polling, DPV1 alarms].
 #include "dp/pdu/dpv1.h"
 
 #include "dp/pdu/dpv1_internal.h"
@@ -80,7 +80,8 @@ Result<void> encode_data_pdu(Dpv1Function f, std::uint8_t slot, std::uint8_t ind
                              std::span<const std::uint8_t> data, fdl::DataUnit& out) {
   if (data.size() > kDpv1MaxData) return PduError::kValueOutOfRange;
   if (out.size() + 4 + data.size() > wire::kMaxDpDu) return PduError::kTooLong;
-  (void)wire::append(out, {static_cast<std::uint8_t>(f), slot, index, static_cast<std::uint8_t>(data.size())});
+  (void)wire::append(
+      out, {static_cast<std::uint8_t>(f), slot, index, static_cast<std::uint8_t>(data.size())});
   return wire::append(out, data);
 }
 
@@ -118,7 +119,8 @@ std::optional<Dpv1Error> c1_reject_response(std::span<const std::uint8_t> du) {
 
 Result<void> encode(const ReadRequest& r, fdl::DataUnit& out) {
   if (r.length == 0 || r.length > kDpv1MaxData) return PduError::kValueOutOfRange;
-  return wire::append(out, {static_cast<std::uint8_t>(Dpv1Function::kRead), r.slot, r.index, r.length});
+  return wire::append(out,
+                      {static_cast<std::uint8_t>(Dpv1Function::kRead), r.slot, r.index, r.length});
 }
 
 Result<void> encode(const ReadResponse& r, fdl::DataUnit& out) {
@@ -132,18 +134,20 @@ Result<void> encode(const WriteRequest& r, fdl::DataUnit& out) {
 
 Result<void> encode(const WriteResponse& r, fdl::DataUnit& out) {
   if (r.length > kDpv1MaxData) return PduError::kValueOutOfRange;
-  return wire::append(out, {static_cast<std::uint8_t>(Dpv1Function::kWrite), r.slot, r.index, r.length});
+  return wire::append(out,
+                      {static_cast<std::uint8_t>(Dpv1Function::kWrite), r.slot, r.index, r.length});
 }
 
 Result<void> encode(const AlarmAck& a, fdl::DataUnit& out) {
-  return wire::append(out, {static_cast<std::uint8_t>(Dpv1Function::kAlarmAck), a.slot, a.alarm_type,
-                            a.specifier});
+  return wire::append(
+      out, {static_cast<std::uint8_t>(Dpv1Function::kAlarmAck), a.slot, a.alarm_type, a.specifier});
 }
 
 Result<void> encode(const Dpv1Error& e, fdl::DataUnit& out) {
   if (!known_function(static_cast<std::uint8_t>(e.function))) return PduError::kBadFunctionCode;
-  return wire::append(out, {static_cast<std::uint8_t>(static_cast<std::uint8_t>(e.function) | kDpv1ErrorBit),
-                            e.error_decode, to_wire(e.error_code_1), e.error_code_2});
+  return wire::append(
+      out, {static_cast<std::uint8_t>(static_cast<std::uint8_t>(e.function) | kDpv1ErrorBit),
+            e.error_decode, to_wire(e.error_code_1), e.error_code_2});
 }
 
 }  // namespace rs4sim::dp::pdu

@@ -1,6 +1,7 @@
 #pragma once
-// DPV1 MSAC_C1 PDUs (slave DSAP 51, Alarm_Ack also DSAP 50), spec/profibus-dp.md §3.3–§3.5:
-// Read, Write, Alarm_Ack requests and responses, and the negative response.
+// DPV1 MSAC_C1 PDUs (slave DSAP 51, Alarm_Ack also DSAP 50),
+// [IEC 61158-6-3 MSAC_C1, MSAC_C1 polling, DPV1 alarms]: Read, Write, Alarm_Ack requests and
+// responses, and the negative response.
 //
 //   Read.req    5E Slot Index Length              Read.res+   5E Slot Index Length Data
 //   Write.req   5F Slot Index Length Data         Write.res+  5F Slot Index Length
@@ -20,9 +21,10 @@
 
 namespace rs4sim::dp::pdu {
 
-inline constexpr std::size_t kDpv1MaxData = 240;  // 4-byte header + 240 = 244 (§3.3)
+inline constexpr std::size_t kDpv1MaxData = 240;  // 4-byte header + 240 = 244
+                                                  // ([IEC 61158-6-3 MSAC_C1])
 
-// DPV1 function numbers (§3.3). Negative response = function | 0x80.
+// DPV1 function numbers ([IEC 61158-6-3 MSAC_C1]). Negative response = function | 0x80.
 enum class Dpv1Function : std::uint8_t {
   kIdle = 0x48,             // C2
   kDataTransport = 0x51,    // C2
@@ -35,7 +37,7 @@ enum class Dpv1Function : std::uint8_t {
 };
 inline constexpr std::uint8_t kDpv1ErrorBit = 0x80;
 
-// Error_Decode (§3.3).
+// Error_Decode ([IEC 61158-6-3 MSAC_C1]).
 namespace error_decode {
 inline constexpr std::uint8_t kDpv1 = 0x80;
 inline constexpr std::uint8_t kFms = 0xFE;
@@ -70,7 +72,7 @@ struct WriteResponse {
   std::uint8_t length = 0;  // bytes written
   friend bool operator==(const WriteResponse&, const WriteResponse&) = default;
 };
-// Alarm_Ack request and positive response have the same 4 bytes (§3.5).
+// Alarm_Ack request and positive response have the same 4 bytes ([IEC 61158-6-3 DPV1 alarms]).
 struct AlarmAck {
   std::uint8_t slot = 0;
   std::uint8_t alarm_type = 0;
@@ -90,13 +92,14 @@ struct Dpv1Error {
 using C1Request = std::variant<ReadRequest, WriteRequest, AlarmAck>;
 using C1Response = std::variant<ReadResponse, WriteResponse, AlarmAck, Dpv1Error>;
 
-// Slave side. Errors: kTooShort, kTooLong (DU > 244), kBadFunctionCode (anything but 5E/5F/5C — the slave
-// leaves data exchange, §3.3), kLengthMismatch (Read.req not exactly 4 bytes, Write data
-// count ≠ Length), kValueOutOfRange (Read Length 0 or > 240, Write Length 0).
-// A malformed Read/Write is answered with a negative response (see c1_reject_response).
+// Slave side. Errors: kTooShort, kTooLong (DU > 244), kBadFunctionCode (anything but 5E/5F/5C — the
+// slave leaves data exchange, [IEC 61158-6-3 MSAC_C1]), kLengthMismatch (Read.req not exactly 4
+// bytes, Write data count ≠ Length), kValueOutOfRange (Read Length 0 or > 240, Write Length 0). A
+// malformed Read/Write is answered with a negative response (see c1_reject_response).
 Result<C1Request> decode_c1_request(std::span<const std::uint8_t> du);
-// Master side. Errors: kTooShort, kTooLong (DU > 244), kBadFunctionCode, kLengthMismatch (Read.res data count ≠
-// Length, Write.res/Alarm_Ack/Neg.res not exactly 4 bytes), kValueOutOfRange (Length > 240).
+// Master side. Errors: kTooShort, kTooLong (DU > 244), kBadFunctionCode, kLengthMismatch (Read.res
+// data count ≠ Length, Write.res/Alarm_Ack/Neg.res not exactly 4 bytes), kValueOutOfRange (Length >
+// 240).
 Result<C1Response> decode_c1_response(std::span<const std::uint8_t> du);
 
 // Encoders (Errors: kValueOutOfRange for Length 0/ > 240 where the PDU forbids it).
@@ -107,15 +110,15 @@ Result<void> encode(const WriteResponse& r, fdl::DataUnit& out);
 Result<void> encode(const AlarmAck& a, fdl::DataUnit& out);
 Result<void> encode(const Dpv1Error& e, fdl::DataUnit& out);
 
-// The negative response the slave sends for a malformed Read/Write (§3.3 [VPC3-C1]).
+// The negative response the slave sends for a malformed Read/Write ([IEC 61158-6-3 MSAC_C1]
+// [VPC3+ dp_msac1.c]).
 constexpr Dpv1Error type_conflict(Dpv1Function f) {
   return Dpv1Error{f, error_decode::kDpv1, ErrorCode1::kTypeConflict, 0};
 }
 
-// What a slave answers to a C1 request that decode_c1_request() rejected (§3.3): a Read or
-// Write PDU gets type_conflict(Read/Write) (e.g. DE 80 B3 00); for anything else (unknown
-// function, malformed Alarm_Ack, empty DU) nullopt = no PDU reply, the slave leaves data
-// exchange.
+// What a slave answers to a C1 request that decode_c1_request() rejected ([IEC 61158-6-3 MSAC_C1]):
+// a Read or Write PDU gets type_conflict(Read/Write) (e.g. DE 80 B3 00); for anything else (unknown
+// function, malformed Alarm_Ack, empty DU) nullopt = no PDU reply, the slave leaves data exchange.
 std::optional<Dpv1Error> c1_reject_response(std::span<const std::uint8_t> du);
 
 }  // namespace rs4sim::dp::pdu

@@ -1,4 +1,4 @@
-// DPV1 MSAC_C2 PDUs, spec/profibus-dp.md §3.7.
+// DPV1 MSAC_C2 PDUs, [IEC 61158-6-3 MSAC_C2].
 #include "dp/pdu/dpv1_c2.h"
 
 #include "dp/pdu/dpv1_internal.h"
@@ -82,7 +82,8 @@ Result<void> encode_addresses(std::uint8_t s_type, const C2Address& s, std::uint
 
 Result<ResourceManagerResponse> decode_rm_response(std::span<const std::uint8_t> du) {
   BOOST_OUTCOME_TRY(exact_size(du, 4));
-  if (du[0] != static_cast<std::uint8_t>(Dpv1Function::kResourceManager)) return PduError::kBadFunctionCode;
+  if (du[0] != static_cast<std::uint8_t>(Dpv1Function::kResourceManager))
+    return PduError::kBadFunctionCode;
   if (du[1] > sap::kMsacC2Max) return PduError::kValueOutOfRange;
   return ResourceManagerResponse{du[1], codec::be16(du[2], du[3])};
 }
@@ -90,7 +91,7 @@ Result<ResourceManagerResponse> decode_rm_response(std::span<const std::uint8_t>
 namespace {
 
 // The C2 services of one direction: Initiate, Read and Write differ between request and
-// response, Abort, Data_Transport and Idle are the same (§3.7).
+// response, Abort, Data_Transport and Idle are the same ([IEC 61158-6-3 MSAC_C2]).
 template <class Out, class Initiate, class Read, class Write>
 Result<Out> decode_c2(std::span<const std::uint8_t> du,
                       Result<Initiate> (*initiate)(std::span<const std::uint8_t>),
@@ -134,11 +135,12 @@ Result<void> encode(const InitiateRequest& r, fdl::DataUnit& out) {
   if (out.size() + kInitiateReqHead + r.s_addr.size() + r.d_addr.size() > wire::kMaxDpDu) {
     return PduError::kTooLong;
   }
-  (void)wire::append(out, {static_cast<std::uint8_t>(Dpv1Function::kInitiate), 0, 0, 0,
-                           codec::high_byte(r.send_timeout), codec::low_byte(r.send_timeout), r.features_supported[0],
-                           r.features_supported[1], r.profile_features_supported[0],
-                           r.profile_features_supported[1], codec::high_byte(r.profile_ident_number),
-                           codec::low_byte(r.profile_ident_number)});
+  (void)wire::append(
+      out,
+      {static_cast<std::uint8_t>(Dpv1Function::kInitiate), 0, 0, 0,
+       codec::high_byte(r.send_timeout), codec::low_byte(r.send_timeout), r.features_supported[0],
+       r.features_supported[1], r.profile_features_supported[0], r.profile_features_supported[1],
+       codec::high_byte(r.profile_ident_number), codec::low_byte(r.profile_ident_number)});
   return encode_addresses(r.s_type, r.s_addr, r.d_type, r.d_addr, 4, out);
 }
 
@@ -146,20 +148,23 @@ Result<void> encode(const InitiateResponse& r, fdl::DataUnit& out) {
   if (out.size() + kInitiateResHead + r.s_addr.size() + r.d_addr.size() > wire::kMaxDpDu) {
     return PduError::kTooLong;
   }
-  (void)wire::append(out, {static_cast<std::uint8_t>(Dpv1Function::kInitiate), r.max_len_data_unit,
-                           r.features_supported[0], r.features_supported[1],
-                           r.profile_features_supported[0], r.profile_features_supported[1],
-                           codec::high_byte(r.profile_ident_number), codec::low_byte(r.profile_ident_number)});
+  (void)wire::append(
+      out, {static_cast<std::uint8_t>(Dpv1Function::kInitiate), r.max_len_data_unit,
+            r.features_supported[0], r.features_supported[1], r.profile_features_supported[0],
+            r.profile_features_supported[1], codec::high_byte(r.profile_ident_number),
+            codec::low_byte(r.profile_ident_number)});
   return encode_addresses(r.s_type, r.s_addr, r.d_type, r.d_addr, 4, out);
 }
 
 Result<void> encode(const Abort& a, fdl::DataUnit& out) {
-  if (static_cast<unsigned>(a.subnet) > 2 || static_cast<unsigned>(a.instance) > 2 || a.reason > 15) {
+  if (static_cast<unsigned>(a.subnet) > 2 || static_cast<unsigned>(a.instance) > 2 ||
+      a.reason > 15) {
     return PduError::kValueOutOfRange;
   }
-  return wire::append(out, {static_cast<std::uint8_t>(Dpv1Function::kAbort), static_cast<std::uint8_t>(a.subnet),
-                            static_cast<std::uint8_t>((static_cast<unsigned>(a.instance) << 4) | a.reason),
-                            a.reserved});
+  return wire::append(
+      out,
+      {static_cast<std::uint8_t>(Dpv1Function::kAbort), static_cast<std::uint8_t>(a.subnet),
+       static_cast<std::uint8_t>((static_cast<unsigned>(a.instance) << 4) | a.reason), a.reserved});
 }
 
 Result<void> encode(const DataTransport& d, fdl::DataUnit& out) {

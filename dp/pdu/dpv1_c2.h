@@ -1,5 +1,5 @@
 #pragma once
-// DPV1 MSAC_C2 PDUs (class-2, connection oriented), spec/profibus-dp.md §3.7:
+// DPV1 MSAC_C2 PDUs (class-2, connection oriented), [IEC 61158-6-3 MSAC_C2]:
 // resource-manager reply, Initiate, Abort, Data_Transport, Idle; Read/Write are the C1
 // PDUs of dpv1.h on the connection SAP.
 //
@@ -10,7 +10,7 @@
 //                 S_Type S_Len D_Type D_Len S_Addr[S_Len] D_Addr[D_Len]
 //   Abort         58 Subnet Instance|Reason Reserved
 //   Data_Transport 51 Slot Index Length Data   (request and response; neg. D1)
-//   Idle          48 [+ 1 byte, UNCERTAIN §7.9]
+//   Idle          48 [+ 1 byte, UNCERTAIN [docs/decisions.md#dp-open-points]]
 
 #include "dp/fdl/telegram.h"
 #include "dp/pdu/dpv1.h"
@@ -61,7 +61,7 @@ struct InitiateResponse {
   friend bool operator==(const InitiateResponse&, const InitiateResponse&) = default;
 };
 
-// Abort subnet (§3.7).
+// Abort subnet ([IEC 61158-6-3 MSAC_C2]).
 enum class AbortSubnet : std::uint8_t { kNone = 0, kLocal = 1, kRemote = 2 };
 // Abort instance, bits 5..4.
 enum class AbortInstance : std::uint8_t { kFdl = 0, kMsacC2 = 1, kUser = 2 };
@@ -94,13 +94,15 @@ struct DataTransport {
 };
 
 struct Idle {
-  std::optional<std::uint8_t> second_byte;  // UNCERTAIN (§7.9): 1- and 2-byte forms accepted
+  std::optional<std::uint8_t> second_byte;  // UNCERTAIN ([docs/decisions.md#dp-open-points]): 1-
+                                            // and 2-byte forms accepted
   friend bool operator==(const Idle&, const Idle&) = default;
 };
 
-using C2Request = std::variant<InitiateRequest, Abort, ReadRequest, WriteRequest, DataTransport, Idle>;
-using C2Response =
-    std::variant<InitiateResponse, Abort, ReadResponse, WriteResponse, DataTransport, Idle, Dpv1Error>;
+using C2Request =
+    std::variant<InitiateRequest, Abort, ReadRequest, WriteRequest, DataTransport, Idle>;
+using C2Response = std::variant<InitiateResponse, Abort, ReadResponse, WriteResponse, DataTransport,
+                                Idle, Dpv1Error>;
 
 // Errors: kTooShort, kTooLong (DU > 244, or Idle > 2 bytes), kBadFunctionCode,
 // kLengthMismatch (address/data counts disagree with the bytes present), kValueOutOfRange

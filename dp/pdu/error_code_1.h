@@ -23,7 +23,7 @@ enum class ErrorClass : std::uint8_t {
 };
 
 enum class ErrorCode1 : std::uint8_t {
-  kNone = 0x00,                      // not an error (e.g. Error_Decode other than DPV1)
+  kNone = 0x00,  // not an error (e.g. Error_Decode other than DPV1)
   // class 0xA: application
   kReadError = 0xA0,
   kWriteError = 0xA1,
@@ -69,7 +69,9 @@ enum class ErrorCode1 : std::uint8_t {
 // "DPV1 access error: state conflict" (the category's message).
 [[nodiscard]] std::string error_message(ErrorCode1 e);
 constexpr const char* error_category_name(ErrorCode1) noexcept { return "dp.dpv1"; }
-inline std::error_code make_error_code(ErrorCode1 e) noexcept { return codec::make_error_code_of(e); }
+inline std::error_code make_error_code(ErrorCode1 e) noexcept {
+  return codec::make_error_code_of(e);
+}
 
 }  // namespace rs4sim::dp::pdu
 

@@ -1,4 +1,5 @@
-// Extended diagnosis blocks, spec/profibus-dp.md §2.5; alarm and status PDUs §3.5/§3.6.
+// Extended diagnosis blocks, [IEC 61158-6-3 Slave_Diag]; alarm and status PDUs
+// [IEC 61158-6-3 DPV1 alarms, status PDUs].
 #include "dp/pdu/ext_diag.h"
 
 #include "dp/pdu/wire.h"
@@ -7,21 +8,22 @@ namespace rs4sim::dp::pdu {
 namespace {
 
 constexpr std::uint8_t kMaxBlockLength = 63;  // 6-bit length incl. header
-constexpr std::size_t kDpv1BlockHead = 4;      // header, type, slot, specifier
+constexpr std::size_t kDpv1BlockHead = 4;     // header, type, slot, specifier
 constexpr std::uint8_t kStatusBit = 0x80;
 
-// §3.5: 1…6 and 32…126 are defined; 0, 7…31 and 127 are reserved.
+// [IEC 61158-6-3 DPV1 alarms]: 1…6 and 32…126 are defined; 0, 7…31 and 127 are reserved.
 bool valid_alarm_type(std::uint8_t t) {
   return (t >= alarm_type::kDiagnostic && t <= alarm_type::kUpdate) ||
          (t >= alarm_type::kManufacturerMin && t <= alarm_type::kManufacturerMax);
 }
 
-// §3.6: 1, 2, 3, 30, 31 and 32…126 are defined.
+// [IEC 61158-6-3 status PDUs]: 1, 2, 3, 30, 31 and 32…126 are defined.
 bool valid_status_type(std::uint8_t t) {
   return (t >= 1 && t <= 3) || (t >= status_type::kPrmCmdAck && t <= 126);
 }
 
-// The bytes after the header byte: type, slot, specifier, data (§3.5/§3.6).
+// The bytes after the header byte: type, slot, specifier, data
+// ([IEC 61158-6-3 DPV1 alarms, status PDUs]).
 Result<ExtDiagBlock> decode_dpv1_block(std::span<const std::uint8_t> body) {
   codec::Reader r(body);
   const std::uint8_t type_byte = r.u8();
@@ -35,9 +37,8 @@ Result<ExtDiagBlock> decode_dpv1_block(std::span<const std::uint8_t> body) {
                                   static_cast<std::uint8_t>(spec & 0xFCU), r.rest()}};
   }
   if (!valid_alarm_type(type)) return PduError::kBadAlarm;
-  return ExtDiagBlock{AlarmPdu{type, slot, static_cast<std::uint8_t>(spec >> 3),
-                               wire::bit(spec, 2), static_cast<AlarmSpecifier>(spec & 0x03U),
-                               r.rest()}};
+  return ExtDiagBlock{AlarmPdu{type, slot, static_cast<std::uint8_t>(spec >> 3), wire::bit(spec, 2),
+                               static_cast<AlarmSpecifier>(spec & 0x03U), r.rest()}};
 }
 
 // The block after its header byte h (kind in bits 7..6).
@@ -47,11 +48,10 @@ Result<ExtDiagBlock> decode_block(std::uint8_t h, bool dpv1, codec::Reader& in) 
     const std::uint8_t b1 = in.u8();
     const std::uint8_t b2 = in.u8();
     if (!in.ok()) return PduError::kBadDiagBlock;
-    return ExtDiagBlock{ChannelDiag{static_cast<std::uint8_t>(h & 0x3FU),
-                                    static_cast<ChannelDirection>(b1 >> 6),
-                                    static_cast<std::uint8_t>(b1 & 0x3FU),
-                                    static_cast<std::uint8_t>(b2 >> 5),
-                                    static_cast<std::uint8_t>(b2 & 0x1FU)}};
+    return ExtDiagBlock{
+        ChannelDiag{static_cast<std::uint8_t>(h & 0x3FU), static_cast<ChannelDirection>(b1 >> 6),
+                    static_cast<std::uint8_t>(b1 & 0x3FU), static_cast<std::uint8_t>(b2 >> 5),
+                    static_cast<std::uint8_t>(b2 & 0x1FU)}};
   }
   if (kind == 3) return ExtDiagBlock{RevisionBlock{h}};  // revision / reserved: one byte
   const std::size_t len = h & 0x3FU;
@@ -109,9 +109,10 @@ Result<void> encode_channel_diag(const ChannelDiag& c, fdl::DataUnit& out) {
       c.direction == ChannelDirection::kReserved || static_cast<unsigned>(c.direction) > 3) {
     return PduError::kValueOutOfRange;
   }
-  return wire::append(out, {static_cast<std::uint8_t>(0x80U | c.identifier),
-                            static_cast<std::uint8_t>((static_cast<unsigned>(c.direction) << 6) | c.channel),
-                            static_cast<std::uint8_t>((c.channel_type << 5) | c.error_type)});
+  return wire::append(
+      out, {static_cast<std::uint8_t>(0x80U | c.identifier),
+            static_cast<std::uint8_t>((static_cast<unsigned>(c.direction) << 6) | c.channel),
+            static_cast<std::uint8_t>((c.channel_type << 5) | c.error_type)});
 }
 
 Result<void> encode_alarm(const AlarmPdu& a, fdl::DataUnit& out) {
@@ -127,9 +128,9 @@ Result<void> encode_status(const StatusPdu& s, fdl::DataUnit& out) {
       static_cast<unsigned>(s.specifier) > 3) {
     return PduError::kValueOutOfRange;
   }
-  const std::uint8_t head[3] = {static_cast<std::uint8_t>(kStatusBit | s.status_type), s.slot,
-                                static_cast<std::uint8_t>(s.specifier_reserved |
-                                                          static_cast<std::uint8_t>(s.specifier))};
+  const std::uint8_t head[3] = {
+      static_cast<std::uint8_t>(kStatusBit | s.status_type), s.slot,
+      static_cast<std::uint8_t>(s.specifier_reserved | static_cast<std::uint8_t>(s.specifier))};
   return append_block(0x00, head, s.data, out);
 }
 

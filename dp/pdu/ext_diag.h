@@ -1,6 +1,6 @@
 #pragma once
-// Extended diagnosis blocks of Slave_Diag (spec/profibus-dp.md §2.5) and the DPV1 alarm
-// and status PDUs carried in the device-related block (§3.5, §3.6).
+// Extended diagnosis blocks of Slave_Diag ([IEC 61158-6-3 Slave_Diag]) and the DPV1 alarm
+// and status PDUs carried in the device-related block ([IEC 61158-6-3 DPV1 alarms, status PDUs]).
 //
 // Header byte bits 7..6: 00 device-related, 01 identifier-related, 10 channel-related
 // (fixed 3 bytes), 11 revision/reserved. Bits 5..0: block length incl. header (00/01).
@@ -22,25 +22,34 @@ struct IdentifierDiag {
   [[nodiscard]] bool has_diag(std::size_t identifier) const;
 };
 
-enum class ChannelDirection : std::uint8_t { kReserved = 0, kInput = 1, kOutput = 2, kInputOutput = 3 };
+enum class ChannelDirection : std::uint8_t {
+  kReserved = 0,
+  kInput = 1,
+  kOutput = 2,
+  kInputOutput = 3
+};
 
-// Channel-related block, 3 bytes (§2.5). Type 1 bit … 6 two words; error 1 short circuit
+// Channel-related block, 3 bytes ([IEC 61158-6-3 Slave_Diag]). Type 1 bit … 6 two words; error 1
+// short circuit
 // … 9 error, 16–31 manufacturer.
 struct ChannelDiag {
   std::uint8_t identifier = 0;  // 0…63
   ChannelDirection direction = ChannelDirection::kInput;
-  std::uint8_t channel = 0;     // 0…63
+  std::uint8_t channel = 0;       // 0…63
   std::uint8_t channel_type = 0;  // bits 7..5 of byte 3
   std::uint8_t error_type = 0;    // bits 4..0 of byte 3
   friend bool operator==(const ChannelDiag&, const ChannelDiag&) = default;
 };
 
-// Alarm_Specifier bits 1..0 (§3.5).
+// Alarm_Specifier bits 1..0 ([IEC 61158-6-3 DPV1 alarms]).
 enum class AlarmSpecifier : std::uint8_t {
-  kNoInfo = 0, kAppears = 1, kDisappears = 2, kDisappearsStillFaulty = 3
+  kNoInfo = 0,
+  kAppears = 1,
+  kDisappears = 2,
+  kDisappearsStillFaulty = 3
 };
 
-// Alarm types (§3.5); 32…126 manufacturer specific.
+// Alarm types ([IEC 61158-6-3 DPV1 alarms]); 32…126 manufacturer specific.
 namespace alarm_type {
 inline constexpr std::uint8_t kDiagnostic = 1;
 inline constexpr std::uint8_t kProcess = 2;
@@ -52,7 +61,7 @@ inline constexpr std::uint8_t kManufacturerMin = 32;
 inline constexpr std::uint8_t kManufacturerMax = 126;
 }  // namespace alarm_type
 
-// DPV1 alarm PDU in the device-related block (§3.5).
+// DPV1 alarm PDU in the device-related block ([IEC 61158-6-3 DPV1 alarms]).
 struct AlarmPdu {
   std::uint8_t alarm_type = alarm_type::kDiagnostic;  // 1…126, bit 7 = 0
   std::uint8_t slot = 0;
@@ -63,7 +72,7 @@ struct AlarmPdu {
   [[nodiscard]] std::uint8_t specifier_byte() const;
 };
 
-// Status types (§3.6), sent as 0x80 | type.
+// Status types ([IEC 61158-6-3 status PDUs]), sent as 0x80 | type.
 namespace status_type {
 inline constexpr std::uint8_t kStatusMessage = 1;
 inline constexpr std::uint8_t kModuleStatus = 2;
@@ -72,9 +81,14 @@ inline constexpr std::uint8_t kPrmCmdAck = 30;
 inline constexpr std::uint8_t kRedState = 31;
 }  // namespace status_type
 
-enum class StatusSpecifier : std::uint8_t { kNone = 0, kAppears = 1, kDisappears = 2, kReserved = 3 };
+enum class StatusSpecifier : std::uint8_t {
+  kNone = 0,
+  kAppears = 1,
+  kDisappears = 2,
+  kReserved = 3
+};
 
-// DPV1 status PDU in the device-related block (§3.6).
+// DPV1 status PDU in the device-related block ([IEC 61158-6-3 status PDUs]).
 struct StatusPdu {
   std::uint8_t status_type = status_type::kStatusMessage;  // 1…126 (without bit 7)
   std::uint8_t slot = 0;

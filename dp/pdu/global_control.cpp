@@ -1,4 +1,4 @@
-// Global_Control, spec/profibus-dp.md §2.6.
+// Global_Control, [IEC 61158-6-3 Global_Control].
 #include "dp/pdu/global_control.h"
 
 #include "dp/pdu/wire.h"

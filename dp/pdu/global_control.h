@@ -1,5 +1,5 @@
 #pragma once
-// Global_Control (DSAP 58, DA 127, SDN), spec/profibus-dp.md §2.6.
+// Global_Control (DSAP 58, DA 127, SDN), [IEC 61158-6-3 Global_Control].
 // DU: [0] Control_Command [1] Group_Select.
 
 #include "dp/fdl/telegram.h"
@@ -11,12 +11,12 @@
 namespace rs4sim::dp::pdu {
 
 struct GlobalControl {
-  bool clear_data = false;  // bit 1
-  bool unfreeze = false;    // bit 2
-  bool freeze = false;      // bit 3
-  bool unsync = false;      // bit 4
-  bool sync = false;        // bit 5
-  std::uint8_t reserved = 0;  // bits 0, 6, 7 in place (mask 0xC1)
+  bool clear_data = false;        // bit 1
+  bool unfreeze = false;          // bit 2
+  bool freeze = false;            // bit 3
+  bool unsync = false;            // bit 4
+  bool sync = false;              // bit 5
+  std::uint8_t reserved = 0;      // bits 0, 6, 7 in place (mask 0xC1)
   std::uint8_t group_select = 0;  // 0 = all slaves
 
   [[nodiscard]] std::uint8_t control_command() const;

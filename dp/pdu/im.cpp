@@ -1,4 +1,4 @@
-// I&M call header and I&M0 record, spec/profibus-dp.md §3.3.
+// I&M call header and I&M0 record, [IEC 61158-6-3 MSAC_C1].
 #include "dp/pdu/im.h"
 
 #include "codec/writer.h"

@@ -1,4 +1,4 @@
-// Structured parameter blocks, spec/profibus-dp.md §3.2.
+// Structured parameter blocks, [IEC 61158-6-3 structured Prm_Data].
 #include "dp/pdu/prm_blocks.h"
 
 #include "dp/pdu/wire.h"

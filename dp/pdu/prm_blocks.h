@@ -1,8 +1,9 @@
 #pragma once
 // Structured parameter blocks in Set_Prm User_Prm_Data (DPV1_Status_3 Prm_Structure = 1),
-// spec/profibus-dp.md §3.2:
+// [IEC 61158-6-3 structured Prm_Data]:
 //   [Structure_Length (incl. itself)] [Structure_Type] [Slot] [Index/Specifier] [data…]
-// PROFIsafe F-parameter blocks use the same shape with type 0x05 (§5.6, inferred).
+// PROFIsafe F-parameter blocks use the same shape with type 0x05
+// ([PROFIBUS GSD spec F-parameter keywords], inferred).
 
 #include "codec/reader.h"
 #include "dp/fdl/telegram.h"
@@ -15,10 +16,11 @@
 namespace rs4sim::dp::pdu {
 
 namespace prm_block_type {
-inline constexpr std::uint8_t kPrmCmd = 0x02;         // redundancy (DPV2)
+inline constexpr std::uint8_t kPrmCmd = 0x02;  // redundancy (DPV2)
 inline constexpr std::uint8_t kDxbLinkTable = 0x03;
 inline constexpr std::uint8_t kIsochronous = 0x04;
-inline constexpr std::uint8_t kFParameters = 0x05;    // PROFIsafe (UNCERTAIN §7.8)
+inline constexpr std::uint8_t kFParameters = 0x05;  // PROFIsafe (UNCERTAIN
+                                                    // [docs/decisions.md#dp-open-points])
 inline constexpr std::uint8_t kDxbSubscriber = 0x07;
 inline constexpr std::uint8_t kTimeAr = 0x08;
 inline constexpr std::uint8_t kUserPrmData = 0x81;
@@ -29,8 +31,8 @@ inline constexpr std::size_t kPrmBlockHead = 4;
 struct PrmBlock {
   std::uint8_t type = 0;
   std::uint8_t slot = 0;
-  std::uint8_t index = 0;                // Index/Specifier
-  std::span<const std::uint8_t> data;    // Structure_Length − 4 bytes
+  std::uint8_t index = 0;              // Index/Specifier
+  std::span<const std::uint8_t> data;  // Structure_Length − 4 bytes
   // The whole block incl. its 4-byte head (e.g. the 14-byte F-parameter block).
   std::span<const std::uint8_t> raw;
 };

@@ -1,4 +1,4 @@
-// Set_Prm, spec/profibus-dp.md §2.3 and DPV1_Status §3.1.
+// Set_Prm, [IEC 61158-6-3 Set_Prm] and DPV1_Status [IEC 61158-6-3 DPV1_Status].
 #include "dp/pdu/set_prm.h"
 
 #include "dp/pdu/wire.h"
@@ -14,8 +14,8 @@ std::uint8_t PrmStationStatus::to_byte() const {
 }
 
 PrmStationStatus PrmStationStatus::from_byte(std::uint8_t b) {
-  return {bit(b, 7), bit(b, 6), bit(b, 5), bit(b, 4), bit(b, 3),
-          static_cast<std::uint8_t>(b & 0x07U)};
+  return {bit(b, 7), bit(b, 6), bit(b, 5),
+          bit(b, 4), bit(b, 3), static_cast<std::uint8_t>(b & 0x07U)};
 }
 
 std::array<std::uint8_t, 3> Dpv1Status::to_bytes() const {
@@ -27,9 +27,9 @@ std::array<std::uint8_t, 3> Dpv1Status::to_bytes() const {
       flag(enable_diagnostic_alarm, 5) | flag(enable_manufacturer_specific_alarm, 4) |
       flag(enable_status_alarm, 3) | flag(enable_update_alarm, 2) | flag(check_cfg_mode, 0) |
       (status2_reserved & 0x02U));
-  const auto s3 = static_cast<std::uint8_t>(flag(prm_cmd, 7) | flag(isom_req, 4) |
-                                            flag(prm_structure, 3) | (alarm_mode & 0x07U) |
-                                            (status3_reserved & 0x60U));
+  const auto s3 =
+      static_cast<std::uint8_t>(flag(prm_cmd, 7) | flag(isom_req, 4) | flag(prm_structure, 3) |
+                                (alarm_mode & 0x07U) | (status3_reserved & 0x60U));
   return {s1, s2, s3};
 }
 
@@ -57,7 +57,8 @@ Dpv1Status Dpv1Status::from_bytes(std::uint8_t s1, std::uint8_t s2, std::uint8_t
 }
 
 unsigned Dpv1Status::max_outstanding_alarms() const {
-  static constexpr unsigned kTotals[8] = {1, 2, 4, 8, 12, 16, 24, 32};  // §3.1 Alarm_Mode
+  // [IEC 61158-6-3 DPV1_Status] Alarm_Mode
+  static constexpr unsigned kTotals[8] = {1, 2, 4, 8, 12, 16, 24, 32};
   return kTotals[alarm_mode & 0x07U];
 }
 
@@ -95,7 +96,8 @@ Result<void> encode_set_prm(const SetPrm& prm, fdl::DataUnit& out) {
   const std::size_t size = kSetPrmFixedLength + (prm.dpv1 ? 3U : 0U) + prm.user_data.size();
   if (out.size() + size > wire::kMaxDpDu) return PduError::kTooLong;
   (void)wire::append(out, {prm.station_status.to_byte(), prm.wd_fact_1, prm.wd_fact_2, prm.min_tsdr,
-                           codec::high_byte(prm.ident_number), codec::low_byte(prm.ident_number), prm.group_ident});
+                           codec::high_byte(prm.ident_number), codec::low_byte(prm.ident_number),
+                           prm.group_ident});
   if (prm.dpv1) (void)wire::append(out, prm.dpv1->to_bytes());
   return wire::append(out, prm.user_data);
 }

@@ -1,4 +1,4 @@
-// Set_Slave_Add, spec/profibus-dp.md §2.7.
+// Set_Slave_Add, [IEC 61158-6-3 Set_Slave_Add, Rd_Inp/Rd_Outp].
 #include "dp/pdu/set_slave_add.h"
 
 #include "dp/pdu/sap.h"
@@ -23,8 +23,9 @@ Result<void> encode_set_slave_add(const SetSlaveAdd& ssa, fdl::DataUnit& out) {
   if (out.size() + kSetSlaveAddFixedLength + ssa.rem_slave_data.size() > wire::kMaxDpDu) {
     return PduError::kTooLong;
   }
-  (void)wire::append(out, {ssa.new_address, codec::high_byte(ssa.ident_number), codec::low_byte(ssa.ident_number),
-                           static_cast<std::uint8_t>(ssa.no_add_chg ? 0xFF : 0x00)});
+  (void)wire::append(
+      out, {ssa.new_address, codec::high_byte(ssa.ident_number), codec::low_byte(ssa.ident_number),
+            static_cast<std::uint8_t>(ssa.no_add_chg ? 0xFF : 0x00)});
   return wire::append(out, ssa.rem_slave_data);
 }
 

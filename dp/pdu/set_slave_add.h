@@ -1,5 +1,5 @@
 #pragma once
-// Set_Slave_Add (DSAP 55), spec/profibus-dp.md §2.7.
+// Set_Slave_Add (DSAP 55), [IEC 61158-6-3 Set_Slave_Add, Rd_Inp/Rd_Outp].
 // DU: [0] New_Slave_Add (0…125) [1..2] Ident_Number (BE) [3] No_Add_Chg [4..] Rem_Slave_Data.
 
 #include "dp/fdl/telegram.h"

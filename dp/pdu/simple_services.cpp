@@ -1,4 +1,5 @@
-// Empty requests and I/O images, spec/profibus-dp.md §2.1, §2.7, §2.9.
+// Empty requests and I/O images,
+// [IEC 61158-6-3 SAP assignment, Set_Slave_Add, Rd_Inp/Rd_Outp, Data_Exchange].
 #include "dp/pdu/simple_services.h"
 
 #include "dp/pdu/wire.h"

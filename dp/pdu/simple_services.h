@@ -1,6 +1,6 @@
 #pragma once
 // DP services whose request carries no data: Slave_Diag, Get_Cfg, Rd_Inp, Rd_Outp
-// (spec/profibus-dp.md §2.1, §2.7), and the I/O images they return.
+// ([IEC 61158-6-3 SAP assignment, Set_Slave_Add, Rd_Inp/Rd_Outp]), and the I/O images they return.
 
 #include "dp/fdl/telegram.h"
 #include "dp/pdu/errors.h"
@@ -10,7 +10,8 @@
 
 namespace rs4sim::dp::pdu {
 
-// Max I/O image of one slave (Max_Input_Len / Max_Output_Len ≤ 244, §2.4).
+// Max I/O image of one slave (Max_Input_Len / Max_Output_Len ≤ 244,
+// [IEC 61158-6-3 Chk_Cfg/Get_Cfg]).
 inline constexpr std::size_t kMaxIoLength = 244;
 
 // Slave_Diag.req / Get_Cfg.req / Rd_Inp.req / Rd_Outp.req carry an empty DU.

@@ -1,4 +1,4 @@
-// Slave_Diag response, spec/profibus-dp.md §2.5.
+// Slave_Diag response, [IEC 61158-6-3 Slave_Diag].
 #include "dp/pdu/slave_diag.h"
 
 #include "dp/pdu/wire.h"
@@ -54,8 +54,9 @@ Result<void> encode_slave_diag(const SlaveDiag& diag, fdl::DataUnit& out) {
   if (out.size() + kDiagStandardLength + diag.ext_diag.size() > wire::kMaxDpDu) {
     return PduError::kTooLong;
   }
-  (void)wire::append(out, {diag.status1.to_byte(), diag.status2.to_byte(), diag.status3.to_byte(),
-                           diag.master_add, codec::high_byte(diag.ident_number), codec::low_byte(diag.ident_number)});
+  (void)wire::append(
+      out, {diag.status1.to_byte(), diag.status2.to_byte(), diag.status3.to_byte(), diag.master_add,
+            codec::high_byte(diag.ident_number), codec::low_byte(diag.ident_number)});
   return wire::append(out, diag.ext_diag);
 }
 

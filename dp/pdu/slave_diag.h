@@ -1,5 +1,5 @@
 #pragma once
-// Slave_Diag response (DSAP 60 → master SSAP 62), spec/profibus-dp.md §2.5.
+// Slave_Diag response (DSAP 60 → master SSAP 62), [IEC 61158-6-3 Slave_Diag].
 // DU: [0] Station_Status_1 [1] Station_Status_2 [2] Station_Status_3 [3] Diag.Master_Add
 //     [4..5] Ident_Number (BE) [6..] extended diagnosis blocks (see ext_diag.h).
 
@@ -17,7 +17,7 @@ inline constexpr std::size_t kDiagStandardLength = 6;
 inline constexpr std::size_t kDiagMaxLength = 244;
 inline constexpr std::size_t kExtDiagMaxLength = kDiagMaxLength - kDiagStandardLength;  // 238
 
-// Station_Status_1 (§2.5). (M) = set by the master only; a slave sends 0.
+// Station_Status_1 ([IEC 61158-6-3 Slave_Diag]). (M) = set by the master only; a slave sends 0.
 struct StationStatus1 {
   bool station_non_existent = false;    // bit 0 (M)
   bool station_not_ready = false;       // bit 1
@@ -32,7 +32,7 @@ struct StationStatus1 {
   friend bool operator==(const StationStatus1&, const StationStatus1&) = default;
 };
 
-// Station_Status_2 (§2.5).
+// Station_Status_2 ([IEC 61158-6-3 Slave_Diag]).
 struct StationStatus2 {
   bool prm_req = false;      // bit 0
   bool stat_diag = false;    // bit 1
@@ -47,7 +47,7 @@ struct StationStatus2 {
   friend bool operator==(const StationStatus2&, const StationStatus2&) = default;
 };
 
-// Station_Status_3 (§2.5).
+// Station_Status_3 ([IEC 61158-6-3 Slave_Diag]).
 struct StationStatus3 {
   bool ext_diag_overflow = false;  // bit 7
   std::uint8_t reserved = 0;       // bits 6..0

@@ -64,8 +64,8 @@ bool AlarmQueue::may_send(const Alarm& a) const {
 }
 
 std::uint8_t AlarmQueue::next_free_seq() {
-  // Seq_Nr unique among outstanding alarms (§3.5); capacity ≤ sequence numbers, so a free
-  // one always exists when may_send() said yes.
+  // Seq_Nr unique among outstanding alarms ([IEC 61158-6-3 DPV1 alarms]); capacity ≤ sequence
+  // numbers, so a free one always exists when may_send() said yes.
   for (unsigned tries = 0; tries < sequence_numbers_; ++tries) {
     const std::uint8_t seq = next_seq_;
     next_seq_ = static_cast<std::uint8_t>((next_seq_ + 1) % sequence_numbers_);

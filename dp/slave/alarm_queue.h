@@ -1,6 +1,6 @@
 #pragma once
-// DPV1 alarm state machine of the slave, spec/profibus-dp.md §3.5 (model: the profichip
-// DPV1 driver [VPC3-C1 AL_*]).
+// DPV1 alarm state machine of the slave, [IEC 61158-6-3 DPV1 alarms] (model: the profichip
+// DPV1 driver [VPC3+ dp_msac1.c AL_*]).
 //
 //   submit() → pending queue → take_next() (when the previous diagnosis was fetched and
 //   the Alarm_Mode limit allows) → outstanding, written once into a diagnosis → the
@@ -24,10 +24,11 @@ struct Alarm {
   std::uint8_t slot = 0;
   std::uint8_t specifier = 0;  // bits 1..0
   bool add_ack = false;
-  std::uint8_t seq_nr = 0;     // assigned by take_next()
+  std::uint8_t seq_nr = 0;  // assigned by take_next()
   boost::container::static_vector<std::uint8_t, kMaxAlarmUserData> user_data;
 
-  // Alarm block: [00LLLLLL][type][slot][Seq_Nr<<3 | Add_Ack<<2 | specifier][data…] (§3.5).
+  // Alarm block: [00LLLLLL][type][slot][Seq_Nr<<3 | Add_Ack<<2 | specifier][data…]
+  // ([IEC 61158-6-3 DPV1 alarms]).
   [[nodiscard]] std::size_t block_size() const { return 4 + user_data.size(); }
   template <class Out>
   void append_block(Out& out) const {
@@ -43,10 +44,11 @@ class AlarmQueue {
  public:
   AlarmQueue(std::uint8_t capacity, std::uint8_t sequence_numbers, std::uint8_t queue_limit);
 
-  // Opens on entering Data_Exch with the master's DPV1 settings (§3.3): the enabled types
-  // (DPV1_Status_2) and the limit from Alarm_Mode (0 = one per type), bounded by capacity.
+  // Opens on entering Data_Exch with the master's DPV1 settings ([IEC 61158-6-3 MSAC_C1]): the
+  // enabled types (DPV1_Status_2) and the limit from Alarm_Mode (0 = one per type), bounded by
+  // capacity.
   void open(const pdu::Dpv1Status& dpv1);
-  // Closes: clears both queues (§3.3 "closing clears … the alarm queues").
+  // Closes: clears both queues ([IEC 61158-6-3 MSAC_C1] "closing clears … the alarm queues").
   void close();
   [[nodiscard]] bool is_open() const { return open_; }
 

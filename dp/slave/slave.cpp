@@ -1,5 +1,7 @@
 // dp::Slave: address filter, FCB rule, SAP dispatch, transitions, timers, replies.
-// Services are in slave_dpv0.cpp (§2), slave_dpv1.cpp (§3.3–3.6), slave_c2.cpp (§3.7).
+// Services are in slave_dpv0.cpp ([IEC 61158-6-3 DP-V0 services]), slave_dpv1.cpp
+// ([IEC 61158-6-3 MSAC_C1, MSAC_C1 polling, DPV1 alarms, status PDUs]), slave_c2.cpp
+// ([IEC 61158-6-3 MSAC_C2]).
 #include "dp/slave/slave.h"
 
 #include "dp/pdu/sap.h"
@@ -54,9 +56,15 @@ const Config& checked(const Config& c) {
   if (const auto ec = c.validate()) throw std::system_error(ec, "dp::SlaveConfig");
   return c;
 }
-bool is_sdn(RequestFunction f) { return f == RequestFunction::kSdnLow || f == RequestFunction::kSdnHigh; }
-bool is_srd(RequestFunction f) { return f == RequestFunction::kSrdLow || f == RequestFunction::kSrdHigh; }
-bool is_sda(RequestFunction f) { return f == RequestFunction::kSdaLow || f == RequestFunction::kSdaHigh; }
+bool is_sdn(RequestFunction f) {
+  return f == RequestFunction::kSdnLow || f == RequestFunction::kSdnHigh;
+}
+bool is_srd(RequestFunction f) {
+  return f == RequestFunction::kSrdLow || f == RequestFunction::kSrdHigh;
+}
+bool is_sda(RequestFunction f) {
+  return f == RequestFunction::kSdaLow || f == RequestFunction::kSdaHigh;
+}
 }  // namespace
 
 Slave::Slave(const Config& config, SlaveApplication& app)
@@ -75,11 +83,13 @@ void Slave::on_telegram(const fdl::Telegram& t, TimePoint now) {
   ++counters_.telegrams_seen;
   check_timers(now);
   if (t.type == FrameType::kToken || t.type == FrameType::kShortAck || !t.fc.is_request()) {
-    ++counters_.ignored;  // slaves ignore tokens and other stations' replies (§1.9)
+    ++counters_.ignored;  // slaves ignore tokens and other stations' replies
+                          // ([IEC 61158-4-3 token])
     return;
   }
   if (t.da == fdl::kBroadcastAddress) {
-    // §1.10: never answer DA 127; only SDN Global_Control is meaningful (§2.6).
+    // [IEC 61158-4-3 frame reception]: never answer DA 127; only SDN Global_Control is meaningful
+    // ([IEC 61158-6-3 Global_Control]).
     if (is_sdn(t.fc.function()) && t.dsap == pdu::sap::kGlobalControl && t.ssap) {
       ++counters_.broadcasts;
       ++counters_.per_sap[pdu::sap::kGlobalControl];
@@ -102,7 +112,8 @@ void Slave::handle_request(const fdl::Telegram& t, TimePoint now) {
   const RequestFunction f = t.fc.function();
   retrigger_watchdog(t.sa, now);
   tx_.reset();
-  if (f == RequestFunction::kFdlStatus) {  // §2.10: reply SD1 FC 00 (slave, OK)
+  if (f == RequestFunction::kFdlStatus) {  // [docs/references.md#dp-worked-example]: reply SD1 FC
+                                           // 00 (slave, OK)
     reply_status(t, ResponseStatus::kOk);
     return;
   }
@@ -118,21 +129,21 @@ void Slave::handle_request(const fdl::Telegram& t, TimePoint now) {
   if (!is_sdn(f)) {
     verdict = fcb_.on_request(t.sa, t.fc);
     if (verdict == fdl::FcbVerdict::kRepeat && fcb_.stored_reply() != nullptr) {
-      ++counters_.repeats_answered;  // §1.8: resend, do not execute again
+      ++counters_.repeats_answered;  // [IEC 61158-4-3 FCB/FCV]: resend, do not execute again
       tx_ = *fcb_.stored_reply();
       return;
     }
   }
   dispatch(t, now);
   if (is_sdn(f)) {
-    tx_.reset();  // §1.10: never reply to SDN
+    tx_.reset();  // [IEC 61158-4-3 frame reception]: never reply to SDN
     return;
   }
   if (!tx_) return;
   if (tx_->type == FrameType::kSd2 && !tx_->dsap && tx_->data.empty()) tx_->type = FrameType::kSd1;
   if (is_sda(f) && tx_->type != FrameType::kShortAck &&
       tx_->fc.status() != ResponseStatus::kSapNotEnabled) {
-    reply_short_ack();  // SDA is only acknowledged (§1.6)
+    reply_short_ack();  // SDA is only acknowledged ([IEC 61158-4-3 short acknowledgement])
   }
   if (verdict != fdl::FcbVerdict::kNotEvaluated) fcb_.store_reply(*tx_);
 }
@@ -163,7 +174,8 @@ void Slave::dispatch(const fdl::Telegram& t, TimePoint now) {
 }
 
 void Slave::dispatch_dp_sap(const fdl::Telegram& t, TimePoint now) {
-  if (*t.ssap != pdu::sap::kMasterMs0) {  // DP services come from master SAP 62 (§2.1)
+  if (*t.ssap != pdu::sap::kMasterMs0) {  // DP services come from master SAP 62
+                                          // ([IEC 61158-6-3 SAP assignment])
     reply_rs(t);
     return;
   }
@@ -212,12 +224,13 @@ std::optional<fdl::Telegram> Slave::take_transmit() {
 // ---- timers and transitions ------------------------------------------------------------
 
 void Slave::check_timers(TimePoint now) {
-  if (wd_deadline_ && now >= *wd_deadline_) {  // §2.8: expiry at exactly T_WD
+  if (wd_deadline_ && now >= *wd_deadline_) {  // [IEC 61158-6-3 watchdog]: expiry at exactly T_WD
     ++counters_.watchdog_expiries;
     reset_parameters(false);
     enter(State::kWaitPrm, TransitionReason::kWatchdog, now);
   }
-  if (c2_.bound && now >= c2_.deadline) c2_close(C2Event::kTimedOut, now);  // §3.7 step 5
+  // [IEC 61158-6-3 MSAC_C2] step 5
+  if (c2_.bound && now >= c2_.deadline) c2_close(C2Event::kTimedOut, now);
 }
 
 void Slave::retrigger_watchdog(std::uint8_t sa, TimePoint now) {
@@ -240,7 +253,8 @@ void Slave::reset_parameters(bool keep_master) {
 void Slave::enter(State to, TransitionReason why, TimePoint now) {
   const State from = state_;
   if (from == State::kDataExch && to != State::kDataExch) {
-    // §2.2: leaving Data_Exch puts the outputs into the safe state; §3.3 closes C1/alarms.
+    // [IEC 61158-6-3 slave state machine]: leaving Data_Exch puts the outputs into the safe state;
+    // [IEC 61158-6-3 MSAC_C1] closes C1/alarms.
     sync_mode_ = false;
     freeze_mode_ = false;
     held_outputs_valid_ = false;
@@ -249,9 +263,8 @@ void Slave::enter(State to, TransitionReason why, TimePoint now) {
   }
   if (to != State::kDataExch) close_dpv1();
   state_ = to;
-  if (to == State::kDataExch && from != State::kDataExch && dpv1_ &&
-      dpv1_->any_alarm_enabled()) {
-    alarms_.open(*dpv1_);  // §3.3: alarm machine opens on entering Data_Exch
+  if (to == State::kDataExch && from != State::kDataExch && dpv1_ && dpv1_->any_alarm_enabled()) {
+    alarms_.open(*dpv1_);  // [IEC 61158-6-3 MSAC_C1]: alarm machine opens on entering Data_Exch
   }
   const Transition tr{from, to, why, now};
   if (trace_) trace_(tr);
@@ -281,7 +294,7 @@ void Slave::reply_rs(const fdl::Telegram& req) {
 fdl::DataUnit& Slave::reply_data(const fdl::Telegram& req, ResponseStatus st) {
   reply_status(req, st);
   tx_->type = FrameType::kSd2;
-  tx_->dsap = req.ssap;  // reply frames swap the SAPs (§2.1)
+  tx_->dsap = req.ssap;  // reply frames swap the SAPs ([IEC 61158-6-3 SAP assignment])
   tx_->ssap = req.dsap;
   return tx_->data;
 }

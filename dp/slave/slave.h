@@ -1,27 +1,37 @@
 #pragma once
-// dp::Slave — the DP/DPV1 slave state machine (spec/profibus-dp.md §1.7–§1.10, §2, §3).
+// dp::Slave — the DP/DPV1 slave state machine
+// ([IEC 61158-4-3 bus parameters, timing, FCB/FCV, token, frame reception]
+// [IEC 61158-6-3 DP-V0 services, DPV1]).
 //
-// Sans-I/O (DESIGN.md §1): telegrams and time in (dp::Station), reply telegrams and the
-// next deadline out. The device behind it is a SlaveApplication.
+// Sans-I/O ([docs/design.md#principles]): telegrams and time in (dp::Station), reply telegrams and
+// the next deadline out. The device behind it is a SlaveApplication.
 //
-// Behaviour in one place (decisions on the spec's UNCERTAIN points are marked DECISION):
-// * Address filter (§1.10): own address; DA 127 only for SDN (Global_Control), never
+// Behaviour in one place (decisions on points the sources leave open are marked DECISION):
+// * Address filter ([IEC 61158-4-3 frame reception]): own address; DA 127 only for SDN
+// (Global_Control), never
 //   answered; responses and tokens are ignored.
-// * FCB/FCV (§1.8): a repeat (same SA, FCV=1, same FCB) gets the stored reply again and is
+// * FCB/FCV ([IEC 61158-4-3 FCB/FCV]): a repeat (same SA, FCV=1, same FCB) gets the stored reply
+// again and is
 //   not executed a second time.
-// * States Wait_Prm → Wait_Cfg → Data_Exch (§2.2). A service the current state does not
+// * States Wait_Prm → Wait_Cfg → Data_Exch ([IEC 61158-6-3 slave state machine]). A service the
+// current state does not
 //   allow, or a DP service from a master that does not own the slave, is answered RS
-//   (SD1 FC 03) like a SAP that is not activated (§2.2 DX trace, §3.4 VPC3 SAP list).
+//   (SD1 FC 03) like a SAP that is not activated ([IEC 61158-6-3 slave state machine] DX trace,
+//   [IEC 61158-6-3 MSAC_C1 polling] VPC3 SAP list).
 //   DECISION: Chk_Cfg refused → Wait_Prm; Set_Prm in Data_Exch → Wait_Cfg; after the
 //   watchdog the slave forgets its master (Master_Add FF).
-// * Watchdog (§2.8): T_WD = F1·F2·10 ms (1 ms with WD_Base_1ms), retriggered by every
+// * Watchdog ([IEC 61158-6-3 watchdog]): T_WD = F1·F2·10 ms (1 ms with WD_Base_1ms), retriggered by
+// every
 //   telegram to this station from the owning master; expiry at exactly T_WD.
-// * Diagnosis (§2.5): station status computed from the state; new diagnosis (device
+// * Diagnosis ([IEC 61158-6-3 Slave_Diag]): station status computed from the state; new diagnosis
+// (device
 //   blocks, an alarm, Not_Supported) sets the diag flag → Data_Exchange answers DH until
 //   the owner fetched the diagnosis; Stat_Diag keeps the flag set.
-// * DPV1 (§3.3–§3.6): C1 on SAP 51 (Alarm_Ack also on SAP 50 with extra_alarm_sap) with
-//   the poll pattern of §3.4: a request is answered SC, the response goes out on a later
-//   poll; alarms per alarm_queue.h. MSAC_C2 (§3.7): one connection, RM on SAP 49.
+// * DPV1 ([IEC 61158-6-3 MSAC_C1, MSAC_C1 polling, DPV1 alarms, status PDUs]): C1 on SAP 51
+// (Alarm_Ack also on SAP 50 with extra_alarm_sap) with
+//   the poll pattern of [IEC 61158-6-3 MSAC_C1 polling]: a request is answered SC, the response
+//   goes out on a later poll; alarms per alarm_queue.h. MSAC_C2 ([IEC 61158-6-3 MSAC_C2]): one
+//   connection, RM on SAP 49.
 
 #include "dp/fdl/fcb.h"
 #include "dp/pdu/set_prm.h"
@@ -43,17 +53,17 @@ namespace rs4sim::dp::slave {
 }
 
 struct Counters {
-  std::uint64_t telegrams_seen = 0;        // every telegram given to on_telegram()
-  std::uint64_t for_other_stations = 0;    // DA not ours (and not a broadcast we take)
-  std::uint64_t broadcasts = 0;            // SDN to 127 evaluated
-  std::uint64_t ignored = 0;               // responses, tokens, unsupported broadcasts
-  std::uint64_t malformed_dropped = 0;     // reported by the link (on_malformed_frame)
-  std::uint64_t repeats_answered = 0;      // FCB repeats answered from the stored reply
-  std::uint64_t rs_replies = 0;            // SAP not activated / wrong state / not owner
+  std::uint64_t telegrams_seen = 0;      // every telegram given to on_telegram()
+  std::uint64_t for_other_stations = 0;  // DA not ours (and not a broadcast we take)
+  std::uint64_t broadcasts = 0;          // SDN to 127 evaluated
+  std::uint64_t ignored = 0;             // responses, tokens, unsupported broadcasts
+  std::uint64_t malformed_dropped = 0;   // reported by the link (on_malformed_frame)
+  std::uint64_t repeats_answered = 0;    // FCB repeats answered from the stored reply
+  std::uint64_t rs_replies = 0;          // SAP not activated / wrong state / not owner
   std::uint64_t watchdog_expiries = 0;
-  std::uint64_t output_length_errors = 0;  // Data_Exchange DU ≠ configured output length
-  std::uint64_t default_sap = 0;           // Data_Exchange requests
-  std::array<std::uint64_t, 64> per_sap{}; // requests per DSAP 0…63
+  std::uint64_t output_length_errors = 0;   // Data_Exchange DU ≠ configured output length
+  std::uint64_t default_sap = 0;            // Data_Exchange requests
+  std::array<std::uint64_t, 64> per_sap{};  // requests per DSAP 0…63
 };
 
 struct Transition {
@@ -76,9 +86,11 @@ class Slave final : public Station, public SlaveControl {
   void on_time(TimePoint now) override;
   [[nodiscard]] std::optional<TimePoint> next_deadline() const override;
   std::optional<fdl::Telegram> take_transmit() override;
-  // The link dropped a frame that failed the §1.10 checks: counted (malformed_dropped).
+  // The link dropped a frame that failed the [IEC 61158-4-3 frame reception] checks: counted
+  // (malformed_dropped).
   void on_malformed_frame(std::error_code why) override;
-  // min TSDR in Tbit: config default until Set_Prm byte 3 changes it (§1.7).
+  // min TSDR in Tbit: config default until Set_Prm byte 3 changes it
+  // ([IEC 61158-4-3 bus parameters, timing]).
   [[nodiscard]] std::uint16_t min_tsdr_bits() const override { return min_tsdr_; }
 
   // ---- SlaveControl (see slave_application.h) ----
@@ -90,7 +102,8 @@ class Slave final : public Station, public SlaveControl {
   // ---- observation ----
   [[nodiscard]] State state() const { return state_; }
   [[nodiscard]] std::uint8_t master_address() const { return master_; }
-  [[nodiscard]] std::uint8_t min_tsdr() const { return min_tsdr_; }  // Tbit (§1.7)
+  // Tbit ([IEC 61158-4-3 bus parameters, timing])
+  [[nodiscard]] std::uint8_t min_tsdr() const { return min_tsdr_; }
   [[nodiscard]] std::optional<Duration> watchdog_time() const { return wd_time_; }
   [[nodiscard]] bool diag_flag() const { return diag_flag_ || stat_diag_; }
   [[nodiscard]] bool dpv1_active() const { return dpv1_.has_value(); }
@@ -106,14 +119,15 @@ class Slave final : public Station, public SlaveControl {
   struct AcyclicJob {
     enum class Phase : std::uint8_t { kIdle, kWaitingForApp, kReady };
     Phase phase = Phase::kIdle;
-    std::uint8_t function = 0;      // function number of the request
-    fdl::DataUnit request;          // repeated identical request = poll (§3.4)
+    std::uint8_t function = 0;  // function number of the request
+    fdl::DataUnit request;      // repeated identical request = poll
+                                // ([IEC 61158-6-3 MSAC_C1 polling])
     fdl::DataUnit response;
     bool close_after_send = false;  // C2 Abort / refused Initiate
   };
   struct C2Connection {
     bool bound = false;
-    bool established = false;       // Initiate.res produced
+    bool established = false;  // Initiate.res produced
     bool first_write_seen = false;
     std::uint8_t master = 0;
     std::uint8_t master_sap = 0;
@@ -186,19 +200,20 @@ class Slave final : public Station, public SlaveControl {
   std::optional<TimePoint> wd_deadline_;
   bool sync_req_ = false;
   bool freeze_req_ = false;
-  std::optional<pdu::Dpv1Status> dpv1_;  // DPV1 mode from the accepted Set_Prm (§3.1)
+  std::optional<pdu::Dpv1Status> dpv1_;  // DPV1 mode from the accepted Set_Prm
+                                         // ([IEC 61158-6-3 DPV1_Status])
   std::size_t input_length_ = 0;
   std::size_t output_length_ = 0;
   bool c1_open_ = false;
 
-  // Global_Control (§2.6)
+  // Global_Control ([IEC 61158-6-3 Global_Control])
   bool sync_mode_ = false;
   bool freeze_mode_ = false;
-  fdl::DataUnit outputs_;         // last outputs received (Rd_Outp)
+  fdl::DataUnit outputs_;  // last outputs received (Rd_Outp)
   fdl::DataUnit frozen_inputs_;
   bool held_outputs_valid_ = false;
 
-  // diagnosis (§2.5)
+  // diagnosis ([IEC 61158-6-3 Slave_Diag])
   bool prm_fault_ = false;
   bool cfg_fault_ = false;
   bool not_supported_ = false;

@@ -1,5 +1,6 @@
 #pragma once
-// How a device plugs into dp::Slave (DESIGN.md §2: the RS4 adapter, the loopback device).
+// How a device plugs into dp::Slave ([docs/design.md#layers]: the RS4 adapter, the loopback
+// device).
 //
 // The slave owns the protocol (FDL, FCB, states, watchdog, diagnosis, alarm queue, the
 // DPV1 polling pattern); the application owns the meaning of parameters, configuration,
@@ -26,40 +27,44 @@
 
 namespace rs4sim::dp::slave {
 
-// Slave states, spec/profibus-dp.md §2.2 (VPC3 names: WAIT_PRM, WAIT_CFG, DATA_EX).
+// Slave states, [IEC 61158-6-3 slave state machine] (VPC3 names: WAIT_PRM, WAIT_CFG, DATA_EX).
 enum class State : std::uint8_t { kWaitPrm, kWaitCfg, kDataExch };
 [[nodiscard]] const char* to_string(State s);  // "Wait_Prm", "Wait_Cfg", "Data_Exch"
 
 // Why the state changed (trace and application notification).
 enum class TransitionReason : std::uint8_t {
-  kPrmAccepted,         // Set_Prm taken over (→ Wait_Cfg)
-  kPrmFault,            // Set_Prm refused: ident, factors, user prm … (→ Wait_Prm)
-  kNotSupported,        // Set_Prm asked for a feature the slave lacks (→ Wait_Prm)
-  kCfgAccepted,         // Chk_Cfg accepted (→ Data_Exch)
-  kCfgFault,            // Chk_Cfg refused (→ Wait_Prm)
-  kUnlock,              // Set_Prm with Unlock_Req released the slave (→ Wait_Prm)
-  kWatchdog,            // no telegram from the master within T_WD (§2.8) (→ Wait_Prm)
-  kProtocolViolation,   // unmatched Alarm_Ack / unknown C1 function (§3.3, §3.5)
-  kAddressChanged,      // Set_Slave_Add took effect (stays Wait_Prm)
+  kPrmAccepted,        // Set_Prm taken over (→ Wait_Cfg)
+  kPrmFault,           // Set_Prm refused: ident, factors, user prm … (→ Wait_Prm)
+  kNotSupported,       // Set_Prm asked for a feature the slave lacks (→ Wait_Prm)
+  kCfgAccepted,        // Chk_Cfg accepted (→ Data_Exch)
+  kCfgFault,           // Chk_Cfg refused (→ Wait_Prm)
+  kUnlock,             // Set_Prm with Unlock_Req released the slave (→ Wait_Prm)
+  kWatchdog,           // no telegram from the master within T_WD ([IEC 61158-6-3 watchdog]) (→
+                       // Wait_Prm)
+  kProtocolViolation,  // unmatched Alarm_Ack / unknown C1 function
+                       // ([IEC 61158-6-3 MSAC_C1, DPV1 alarms])
+  kAddressChanged,     // Set_Slave_Add took effect (stays Wait_Prm)
 };
 [[nodiscard]] const char* to_string(TransitionReason r);
 
 // Why the application must put its outputs into the safe state.
 enum class OutputClear : std::uint8_t {
-  kGlobalControlClear,  // Global_Control Clear_Data (§2.6)
-  kFailSafe,            // empty Data_Exchange from a Fail_Safe master in CLEAR (§2.9)
-  kLeftDataExchange,    // watchdog, new Set_Prm, Cfg_Fault … (§2.2)
+  kGlobalControlClear,  // Global_Control Clear_Data ([IEC 61158-6-3 Global_Control])
+  kFailSafe,            // empty Data_Exchange from a Fail_Safe master in CLEAR
+                        // ([IEC 61158-6-3 Data_Exchange])
+  kLeftDataExchange,  // watchdog, new Set_Prm, Cfg_Fault … ([IEC 61158-6-3 slave state machine])
 };
 
-// Verdicts on the master's parameters and configuration (§2.3, §2.4).
+// Verdicts on the master's parameters and configuration ([IEC 61158-6-3 Set_Prm, Chk_Cfg/Get_Cfg]).
 enum class PrmVerdict : std::uint8_t { kAccept, kPrmFault, kNotSupported };
 enum class CfgVerdict : std::uint8_t { kAccept, kCfgFault };
 
-// ---- DPV1 acyclic services (§3.3, §3.7) ----------------------------------------------
+// ---- DPV1 acyclic services ([IEC 61158-6-3 MSAC_C1, MSAC_C2]) -----------------------------------
 enum class AcyclicChannel : std::uint8_t { kC1, kC2 };
 enum class AcyclicService : std::uint8_t { kRead = 0x5E, kWrite = 0x5F, kDataTransport = 0x51 };
 
-inline constexpr std::size_t kMaxAcyclicData = 240;  // 4-byte header + 240 = 244 (§3.3)
+inline constexpr std::size_t kMaxAcyclicData = 240;  // 4-byte header + 240 = 244
+                                                     // ([IEC 61158-6-3 MSAC_C1])
 using AcyclicData = boost::container::static_vector<std::uint8_t, kMaxAcyclicData>;
 
 struct AcyclicRequest {
@@ -68,14 +73,15 @@ struct AcyclicRequest {
   std::uint8_t master_address = 0;
   std::uint8_t slot = 0;
   std::uint8_t index = 0;
-  std::uint8_t length = 0;              // Read: max bytes wanted; Write/Transport: data size
-  std::span<const std::uint8_t> data;   // Write/Data_Transport payload (valid during the call)
-  bool first_write_after_initiate = false;  // C2 only: RS4 raises an update alarm (§7.1)
+  std::uint8_t length = 0;                  // Read: max bytes wanted; Write/Transport: data size
+  std::span<const std::uint8_t> data;       // Write/Data_Transport payload (valid during the call)
+  bool first_write_after_initiate = false;  // C2 only: RS4 raises an update alarm
+                                            // ([RS4 manual §5.3.1])
 };
 
-// Negative response `(Fn|0x80) Error_Decode Error_Code_1 Error_Code_2` (§3.3).
+// Negative response `(Fn|0x80) Error_Decode Error_Code_1 Error_Code_2` ([IEC 61158-6-3 MSAC_C1]).
 struct AcyclicError {
-  std::uint8_t error_decode = 0x80;  // 0x80 = DPV1
+  std::uint8_t error_decode = 0x80;                       // 0x80 = DPV1
   pdu::ErrorCode1 error_code_1 = pdu::ErrorCode1::kNone;  // class|code, e.g. 0xB0
   std::uint8_t error_code_2 = 0;
   friend bool operator==(const AcyclicError&, const AcyclicError&) = default;
@@ -94,7 +100,7 @@ struct AcyclicResult {
   static AcyclicResult pending() { return {}; }
 };
 
-// ---- Alarms (§3.5) -------------------------------------------------------------------
+// ---- Alarms ([IEC 61158-6-3 DPV1 alarms]) -------------------------------------------------------
 inline constexpr std::size_t kMaxAlarmUserData = 59;  // block ≤ 63 incl. 4-byte head
 
 struct AlarmRequest {
@@ -116,7 +122,7 @@ struct AlarmAck {
 enum class C2Event : std::uint8_t {
   kConnected,        // Initiate accepted
   kAbortedByMaster,  // Abort.req from the master
-  kTimedOut,         // no request within Send_Timeout (§3.7)
+  kTimedOut,         // no request within Send_Timeout ([IEC 61158-6-3 MSAC_C2])
   kRefused,          // Initiate.req invalid: Abort sent instead of Initiate.res
   kAbortedBySlave,   // invalid request PDU on the connection: Abort sent, SAP freed
 };
@@ -125,17 +131,18 @@ enum class C2Event : std::uint8_t {
 class SlaveControl {
  public:
   // Answers the acyclic request the application left pending on `channel`; the slave
-  // sends it on the master's next poll (§3.4). kNoPendingRequest if there is none.
+  // sends it on the master's next poll ([IEC 61158-6-3 MSAC_C1 polling]). kNoPendingRequest if
+  // there is none.
   virtual std::error_code complete_acyclic(AcyclicChannel channel, const AcyclicResult& r) = 0;
   // Queues an alarm; the slave assigns the Seq_Nr and puts it into a diagnosis when the
   // previous diagnosis was fetched. Errors: kAlarmsClosed, kAlarmTypeNotEnabled,
   // kAlarmQueueFull, kInvalidAlarm.
   virtual std::error_code submit_alarm(const AlarmRequest& a) = 0;
-  // Replaces the device's extended diagnosis blocks (§2.5 blocks, e.g. the PROFIsafe
-  // status PDU 05 81 00 00 nn) and its Ext_Diag / Stat_Diag bits; a change raises the
+  // Replaces the device's extended diagnosis blocks ([IEC 61158-6-3 Slave_Diag] blocks, e.g. the
+  // PROFIsafe status PDU 05 81 00 00 nn) and its Ext_Diag / Stat_Diag bits; a change raises the
   // diagnosis flag (DH on Data_Exchange). Errors: kDiagnosisTooLong, kInvalidDiagnosisBlock.
-  virtual std::error_code set_device_diagnosis(std::span<const std::uint8_t> blocks,
-                                               bool ext_diag, bool stat_diag) = 0;
+  virtual std::error_code set_device_diagnosis(std::span<const std::uint8_t> blocks, bool ext_diag,
+                                               bool stat_diag) = 0;
 
  protected:
   ~SlaveControl() = default;
@@ -154,7 +161,7 @@ class SlaveApplication {
   // Chk_Cfg: compare with the real configuration; `user_check` = DPV1 Check_Cfg_Mode.
   virtual CfgVerdict check_config(std::span<const std::uint8_t> cfg, bool user_check,
                                   TimePoint now) = 0;
-  // Get_Cfg reply: the real configuration identifiers (§2.4).
+  // Get_Cfg reply: the real configuration identifiers ([IEC 61158-6-3 Chk_Cfg/Get_Cfg]).
   [[nodiscard]] virtual std::span<const std::uint8_t> real_config() const = 0;
 
   // Data_Exchange outputs (length as configured by the accepted Chk_Cfg).
@@ -163,8 +170,7 @@ class SlaveApplication {
   // Fills the input image (length as configured) for the Data_Exchange reply.
   virtual void read_inputs(std::span<std::uint8_t> inputs, TimePoint now) = 0;
 
-  virtual void on_state_change(State from, State to, TransitionReason why,
-                               TimePoint now) {
+  virtual void on_state_change(State from, State to, TransitionReason why, TimePoint now) {
     (void)from, (void)to, (void)why, (void)now;
   }
 

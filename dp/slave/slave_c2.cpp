@@ -1,5 +1,5 @@
-// dp::Slave MSAC_C2 (§3.7): resource manager on SAP 49, one connection at a time on the
-// dynamic SAP config.c2_sap, Initiate/Abort/Idle/Read/Write/Data_Transport, idle timeout.
+// dp::Slave MSAC_C2 ([IEC 61158-6-3 MSAC_C2]): resource manager on SAP 49, one connection at a time
+// on the dynamic SAP config.c2_sap, Initiate/Abort/Idle/Read/Write/Data_Transport, idle timeout.
 #include "codec/endian.h"
 #include "dp/pdu/dpv1_c2.h"
 #include "dp/pdu/sap.h"
@@ -20,7 +20,8 @@ constexpr std::uint8_t kFnAbort = 0x58;
 constexpr std::uint8_t kFnRead = 0x5E;
 constexpr std::uint8_t kFnWrite = 0x5F;
 
-// Abort PDU `58 Subnet Instance|Reason 00`, instance MSAC_C2 (bits 5..4 = 01) (§3.7).
+// Abort PDU `58 Subnet Instance|Reason 00`, instance MSAC_C2 (bits 5..4 = 01)
+// ([IEC 61158-6-3 MSAC_C2]).
 enum class AbortReason : std::uint8_t {
   kInvalidRequestPdu = 2,
   kTimeout = 3,
@@ -40,7 +41,8 @@ void Slave::c2_close(C2Event why, TimePoint now) {
 }
 
 void Slave::on_c2_rm(const fdl::Telegram& t, TimePoint now) {
-  // §3.7 step 2: with the connection SAP taken (or C2 off) the RM is not loaded → RS.
+  // [IEC 61158-6-3 MSAC_C2] step 2: with the connection SAP taken (or C2 off) the RM is not loaded
+  // → RS.
   if (!config_.c2_supported || c2_.bound || t.data.empty() || t.data[0] != kFnInitiate) {
     reply_rs(t);
     return;
@@ -57,12 +59,14 @@ void Slave::on_c2_rm(const fdl::Telegram& t, TimePoint now) {
   C2Event event = C2Event::kRefused;
   if (init == nullptr) {
     const bool addr = !decoded && decoded.error() == pdu::PduError::kLengthMismatch;
-    c2_.job.response = abort_pdu(addr ? AbortReason::kInvalidAddressInfo : AbortReason::kInvalidRequestPdu);
+    c2_.job.response =
+        abort_pdu(addr ? AbortReason::kInvalidAddressInfo : AbortReason::kInvalidRequestPdu);
   } else if (init->send_timeout == 0) {
     c2_.job.response = abort_pdu(AbortReason::kSendTimeoutTooSmall);
   } else {
-    // Initiate.res (UNCERTAIN §7.9): our Max_Len_Data_Unit and features (01 00), the
-    // profile fields echoed, the address blocks with source and destination swapped.
+    // Initiate.res (UNCERTAIN [docs/decisions.md#dp-open-points]): our Max_Len_Data_Unit and
+    // features (01 00), the profile fields echoed, the address blocks with source and destination
+    // swapped.
     pdu::InitiateResponse res;
     res.max_len_data_unit = static_cast<std::uint8_t>(config_.c2_max_data_length + 4);
     res.profile_features_supported = init->profile_features_supported;
@@ -82,10 +86,10 @@ void Slave::on_c2_rm(const fdl::Telegram& t, TimePoint now) {
   }
   c2_.job.close_after_send = !c2_.established;
   c2_.deadline = now + c2_.send_timeout;
-  // Immediate RM reply `56 SAP Send_Timeout` with FC DL [VPC3 FDL_RM_ANSWER].
-  reply_data(t, fdl::ResponseStatus::kDataLow) = {
-      kFnResourceManager, config_.c2_sap, codec::high_byte(config_.c2_rm_send_timeout),
-      codec::low_byte(config_.c2_rm_send_timeout)};
+  // Immediate RM reply `56 SAP Send_Timeout` with FC DL [VPC3+ dp_if.h FDL_RM_ANSWER].
+  reply_data(t, fdl::ResponseStatus::kDataLow) = {kFnResourceManager, config_.c2_sap,
+                                                  codec::high_byte(config_.c2_rm_send_timeout),
+                                                  codec::low_byte(config_.c2_rm_send_timeout)};
   app_.on_c2_event(event, t.sa, now);
 }
 
@@ -94,7 +98,8 @@ void Slave::on_c2_sap(const fdl::Telegram& t, TimePoint now) {
     reply_rs(t);
     return;
   }
-  c2_.deadline = now + c2_.send_timeout;  // every request retriggers (§3.7 step 5)
+  c2_.deadline = now + c2_.send_timeout;  // every request retriggers ([IEC 61158-6-3 MSAC_C2]
+                                          // step 5)
   if (c2_.job.close_after_send && c2_.job.phase == AcyclicJob::Phase::kReady) {
     // A refused Initiate or a slave Abort: whatever the master sends next gets the Abort,
     // then the SAP is free again.

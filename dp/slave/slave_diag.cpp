@@ -1,5 +1,6 @@
 // dp::Slave diagnosis: Slave_Diag (DSAP 60) reply, station status bits, the diag flag
-// (DH), device blocks and the alarm written into the diagnosis (§2.5, §2.9, §3.5, §3.6).
+// (DH), device blocks and the alarm written into the diagnosis
+// ([IEC 61158-6-3 Slave_Diag, Data_Exchange, DPV1 alarms, status PDUs]).
 #include "codec/endian.h"
 #include "dp/pdu/sap.h"
 #include "dp/slave/slave.h"
@@ -11,8 +12,9 @@ namespace rs4sim::dp::slave {
 
 namespace {
 
-// Size of the §2.5 block starting at `header`: device/identifier blocks carry their length
-// (incl. header) in bits 5..0, channel blocks are 3 bytes; 11 = 1-byte revision (VPC3).
+// Size of the [IEC 61158-6-3 Slave_Diag] block starting at `header`: device/identifier blocks carry
+// their length (incl. header) in bits 5..0, channel blocks are 3 bytes; 11 = 1-byte revision
+// (VPC3).
 std::size_t block_size(std::uint8_t header) {
   switch (header >> 6) {
     case 0:
@@ -26,7 +28,8 @@ std::size_t block_size(std::uint8_t header) {
 
 fdl::DataUnit Slave::diagnosis() const {
   fdl::DataUnit du;
-  // Station_Status_1 (§2.5): bits 0, 5, 7 are set by the master only — always 0 here.
+  // Station_Status_1 ([IEC 61158-6-3 Slave_Diag]): bits 0, 5, 7 are set by the master only — always
+  // 0 here.
   std::uint8_t s1 = 0;
   if (state_ != State::kDataExch) s1 |= 0x02;  // Station_Not_Ready
   if (cfg_fault_) s1 |= 0x04;
@@ -49,7 +52,8 @@ fdl::DataUnit Slave::diagnosis() const {
   // Device blocks first (the RS4's PROFIsafe status PDU sits at bytes 7..11), then the
   // alarm; blocks that do not fit are dropped whole and Ext_Diag_Overflow is set.
   const std::size_t alarm_size = alarm_in_diag_ ? alarm_in_diag_->block_size() : 0;
-  const std::size_t room = config_.max_diag_length - 6 - std::min<std::size_t>(alarm_size, config_.max_diag_length - 6U);
+  const std::size_t room =
+      config_.max_diag_length - 6 - std::min<std::size_t>(alarm_size, config_.max_diag_length - 6U);
   std::size_t pos = 0;
   while (pos < device_diag_.size()) {
     const std::size_t n = block_size(device_diag_[pos]);
@@ -59,7 +63,8 @@ fdl::DataUnit Slave::diagnosis() const {
     }
     pos += n;
   }
-  du.insert(du.end(), device_diag_.begin(), device_diag_.begin() + static_cast<std::ptrdiff_t>(pos));
+  du.insert(du.end(), device_diag_.begin(),
+            device_diag_.begin() + static_cast<std::ptrdiff_t>(pos));
   if (alarm_in_diag_) alarm_in_diag_->append_block(du);
   return du;
 }
@@ -67,7 +72,8 @@ fdl::DataUnit Slave::diagnosis() const {
 void Slave::on_slave_diag(const fdl::Telegram& t) {
   reply_data(t, fdl::ResponseStatus::kDataLow) = diagnosis();
   // Fetched by the owner (or anyone while unparameterised): the diag flag clears, the
-  // alarm in it now only waits for its Alarm_Ack, the next alarm may follow (§3.5).
+  // alarm in it now only waits for its Alarm_Ack, the next alarm may follow
+  // ([IEC 61158-6-3 DPV1 alarms]).
   if (master_ == pdu::sap::kNoMasterAddress || is_owner(t.sa)) {
     diag_flag_ = false;
     alarm_in_diag_.reset();
@@ -100,13 +106,15 @@ std::error_code Slave::set_device_diagnosis(std::span<const std::uint8_t> blocks
     if (pos + n > blocks.size()) return SlaveError::kInvalidDiagnosisBlock;
     pos += n;
   }
-  const bool same = ext_diag == ext_diag_ && stat_diag == stat_diag_ &&
-                    std::equal(blocks.begin(), blocks.end(), device_diag_.begin(), device_diag_.end());
+  const bool same =
+      ext_diag == ext_diag_ && stat_diag == stat_diag_ &&
+      std::equal(blocks.begin(), blocks.end(), device_diag_.begin(), device_diag_.end());
   if (same) return {};
   device_diag_.assign(blocks.begin(), blocks.end());
   ext_diag_ = ext_diag;
   stat_diag_ = stat_diag;
-  diag_flag_ = true;  // new diagnosis: DH until the master fetched it (§2.9)
+  diag_flag_ = true;  // new diagnosis: DH until the master fetched it
+                      // ([IEC 61158-6-3 Data_Exchange])
   wake();
   return {};
 }

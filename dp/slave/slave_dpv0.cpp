@@ -1,9 +1,11 @@
-// dp::Slave DP-V0 services: Set_Prm (§2.3, §3.1), Chk_Cfg/Get_Cfg (§2.4), Global_Control
-// (§2.6), Data_Exchange (§2.9), Rd_Inp/Rd_Outp and Set_Slave_Add (§2.7).
+// dp::Slave DP-V0 services: Set_Prm ([IEC 61158-6-3 Set_Prm, DPV1_Status]), Chk_Cfg/Get_Cfg
+// ([IEC 61158-6-3 Chk_Cfg/Get_Cfg]), Global_Control ([IEC 61158-6-3 Global_Control]), Data_Exchange
+// ([IEC 61158-6-3 Data_Exchange]), Rd_Inp/Rd_Outp and Set_Slave_Add
+// ([IEC 61158-6-3 Set_Slave_Add, Rd_Inp/Rd_Outp]).
 #include "dp/pdu/cfg.h"
 #include "dp/pdu/global_control.h"
-#include "dp/pdu/set_slave_add.h"
 #include "dp/pdu/sap.h"
+#include "dp/pdu/set_slave_add.h"
 #include "dp/slave/slave.h"
 
 #include <algorithm>
@@ -21,12 +23,14 @@ void Slave::fault_to_wait_prm(TransitionReason why, bool keep_master, TimePoint 
 // ---- Set_Prm (DSAP 61) ---------------------------------------------------------------------
 
 void Slave::on_set_prm(const fdl::Telegram& t, TimePoint now) {
-  // DECISION (§2.2 UNCERTAIN): a slave locked to another master does not execute it.
+  // DECISION ([docs/decisions.md#dp-open-points] UNCERTAIN): a slave locked to another master does
+  // not execute it.
   if (state_ != State::kWaitPrm && master_ != pdu::sap::kNoMasterAddress && !is_owner(t.sa)) {
     reply_rs(t);
     return;
   }
-  reply_short_ack();  // SC only says "received"; acceptance shows in the diagnosis (§1.6)
+  reply_short_ack();  // SC only says "received"; acceptance shows in the diagnosis
+                      // ([IEC 61158-4-3 short acknowledgement])
   const auto layout = config_.dpv1 ? pdu::PrmLayout::kDpv1 : pdu::PrmLayout::kDpv0;
   const auto decoded = pdu::decode_set_prm(bytes_of(t.data), layout);
   if (!decoded) {
@@ -36,12 +40,12 @@ void Slave::on_set_prm(const fdl::Telegram& t, TimePoint now) {
   }
   const pdu::SetPrm& prm = decoded.value();
   const auto& st = prm.station_status;
-  if (st.unlock_req) {  // §2.3: 01 and 11 release the slave for other masters
+  if (st.unlock_req) {  // [IEC 61158-6-3 Set_Prm]: 01 and 11 release the slave for other masters
     prm_fault_ = cfg_fault_ = not_supported_ = false;
     fault_to_wait_prm(TransitionReason::kUnlock, false, now);
     return;
   }
-  if (!st.lock_req) {  // §2.3: 00 = only min TSDR is taken over
+  if (!st.lock_req) {  // [IEC 61158-6-3 Set_Prm]: 00 = only min TSDR is taken over
     if (prm.min_tsdr != 0) min_tsdr_ = prm.min_tsdr;
     return;
   }
@@ -61,12 +65,13 @@ void Slave::on_set_prm(const fdl::Telegram& t, TimePoint now) {
 
 PrmVerdict Slave::judge_prm(const pdu::SetPrm& prm, TimePoint now) {
   const auto& st = prm.station_status;
-  if (prm.ident_number != config_.ident_number) return PrmVerdict::kPrmFault;  // §2.3
+  // [IEC 61158-6-3 Set_Prm]
+  if (prm.ident_number != config_.ident_number) return PrmVerdict::kPrmFault;
   if (st.wd_on && (prm.wd_fact_1 == 0 || prm.wd_fact_2 == 0)) return PrmVerdict::kPrmFault;
   if ((st.sync_req && !config_.sync_supported) || (st.freeze_req && !config_.freeze_supported)) {
-    return PrmVerdict::kNotSupported;  // §2.3 Not_Supported
+    return PrmVerdict::kNotSupported;  // [IEC 61158-6-3 Set_Prm] Not_Supported
   }
-  if (prm.dpv1 && prm.dpv1->dpv1_enable) {  // §3.1
+  if (prm.dpv1 && prm.dpv1->dpv1_enable) {  // [IEC 61158-6-3 DPV1_Status]
     const auto& d = *prm.dpv1;
     if (d.publisher_enable || d.isom_req || d.prm_cmd) return PrmVerdict::kNotSupported;
     if (d.fail_safe && !config_.fail_safe_supported) return PrmVerdict::kNotSupported;
@@ -80,7 +85,7 @@ void Slave::take_over_prm(const pdu::SetPrm& prm, std::uint8_t master, TimePoint
   master_ = master;
   wd_on_ = prm.station_status.wd_on;
   const bool base_1ms = prm.dpv1 && prm.dpv1->dpv1_enable && prm.dpv1->wd_base_1ms;
-  if (wd_on_) {  // §2.3: T_WD = base · WD_Fact_1 · WD_Fact_2
+  if (wd_on_) {  // [IEC 61158-6-3 Set_Prm]: T_WD = base · WD_Fact_1 · WD_Fact_2
     wd_time_ = milliseconds(base_1ms ? 1 : 10) * prm.wd_fact_1 * prm.wd_fact_2;
     wd_deadline_ = now + *wd_time_;
   } else {
@@ -120,7 +125,7 @@ void Slave::on_chk_cfg(const fdl::Telegram& t, TimePoint now) {
   input_length_ = summary.value().input_bytes;
   output_length_ = summary.value().output_bytes;
   outputs_.assign(output_length_, 0);
-  c1_open_ = dpv1_.has_value();  // §3.3: SAP 51 opens when Chk_Cfg is accepted
+  c1_open_ = dpv1_.has_value();  // [IEC 61158-6-3 MSAC_C1]: SAP 51 opens when Chk_Cfg is accepted
   if (state_ != State::kDataExch) {
     enter(State::kDataExch, TransitionReason::kCfgAccepted, now);
   }
@@ -136,7 +141,8 @@ void Slave::on_get_cfg(const fdl::Telegram& t) {
 // ---- Global_Control (DSAP 58) ----------------------------------------------------------------
 
 void Slave::on_global_control(const fdl::Telegram& t, TimePoint now) {
-  // Executed only in Data_Exch, from the owning master, for a selected group (§2.6).
+  // Executed only in Data_Exch, from the owning master, for a selected group
+  // ([IEC 61158-6-3 Global_Control]).
   if (state_ != State::kDataExch || !is_owner(t.sa)) return;
   const auto decoded = pdu::decode_global_control(bytes_of(t.data));
   if (!decoded || !decoded.value().addresses(group_ident_)) return;
@@ -146,7 +152,7 @@ void Slave::on_global_control(const fdl::Telegram& t, TimePoint now) {
     app_.on_outputs_cleared(OutputClear::kGlobalControlClear, now);
   }
   if (((gc.sync || gc.unsync) && !sync_req_) || ((gc.freeze || gc.unfreeze) && !freeze_req_)) {
-    not_supported_ = true;  // not requested in Set_Prm (§2.6)
+    not_supported_ = true;  // not requested in Set_Prm ([IEC 61158-6-3 Global_Control])
     diag_flag_ = true;
     return;
   }
@@ -178,14 +184,16 @@ void Slave::fill_inputs(fdl::DataUnit& out, TimePoint now) {
 
 void Slave::on_data_exchange(const fdl::Telegram& t, TimePoint now) {
   if (state_ != State::kDataExch || !is_owner(t.sa)) {
-    reply_rs(t);  // §2.2: DX outside Data_Exch → SD1 FC RS
+    reply_rs(t);  // [IEC 61158-6-3 slave state machine]: DX outside Data_Exch → SD1 FC RS
     return;
   }
   if (t.data.empty() && output_length_ > 0 && dpv1_ && dpv1_->fail_safe) {
-    std::fill(outputs_.begin(), outputs_.end(), std::uint8_t{0});  // §2.9 Fail_Safe
+    std::fill(outputs_.begin(), outputs_.end(), std::uint8_t{0});  // [IEC 61158-6-3 Data_Exchange]
+                                                                   // Fail_Safe
     app_.on_outputs_cleared(OutputClear::kFailSafe, now);
   } else if (t.data.size() != output_length_) {
-    ++counters_.output_length_errors;  // DECISION (§2.9 UNCERTAIN): keep last outputs
+    ++counters_.output_length_errors;  // DECISION ([docs/decisions.md#dp-open-points] UNCERTAIN):
+                                       // keep last outputs
   } else {
     outputs_.assign(t.data.begin(), t.data.end());
     if (sync_mode_) {
@@ -197,9 +205,9 @@ void Slave::on_data_exchange(const fdl::Telegram& t, TimePoint now) {
   const auto status = diag_flag() ? ResponseStatus::kDataHigh : ResponseStatus::kDataLow;
   if (input_length_ == 0 && !freeze_mode_) {
     if (diag_flag()) {
-      reply_status(t, status);  // §2.9: SD1 DH flags the diagnosis
+      reply_status(t, status);  // [IEC 61158-6-3 Data_Exchange]: SD1 DH flags the diagnosis
     } else {
-      reply_short_ack();  // §2.9: slave without inputs answers SC
+      reply_short_ack();  // [IEC 61158-6-3 Data_Exchange]: slave without inputs answers SC
     }
     return;
   }
@@ -210,7 +218,8 @@ void Slave::on_data_exchange(const fdl::Telegram& t, TimePoint now) {
 
 void Slave::on_read_io(const fdl::Telegram& t, bool inputs, TimePoint now) {
   if (state_ != State::kDataExch) {
-    reply_rs(t);  // DECISION (§2.2 UNCERTAIN): only in Data_Exch, from any master
+    reply_rs(t);  // DECISION ([docs/decisions.md#dp-open-points] UNCERTAIN): only in Data_Exch,
+                  // from any master
     return;
   }
   fdl::DataUnit& du = reply_data(t, ResponseStatus::kDataLow);
@@ -222,7 +231,8 @@ void Slave::on_read_io(const fdl::Telegram& t, bool inputs, TimePoint now) {
 }
 
 void Slave::on_set_slave_add(const fdl::Telegram& t, TimePoint now) {
-  // §2.7: only in Wait_Prm, only if supported and not locked by No_Add_Chg.
+  // [IEC 61158-6-3 Set_Slave_Add, Rd_Inp/Rd_Outp]: only in Wait_Prm, only if supported and not
+  // locked by No_Add_Chg.
   if (!config_.set_slave_add_supported || state_ != State::kWaitPrm || address_locked_) {
     reply_rs(t);
     return;
@@ -237,10 +247,9 @@ void Slave::on_set_slave_add(const fdl::Telegram& t, TimePoint now) {
   address_ = ssa.new_address;
   address_locked_ = ssa.no_add_chg;
   fcb_.reset();
-  app_.on_address_changed(ssa.new_address, ssa.no_add_chg,
-                          std::span<const std::uint8_t>(ssa.rem_slave_data.data(),
-                                                        ssa.rem_slave_data.size()),
-                          now);
+  app_.on_address_changed(
+      ssa.new_address, ssa.no_add_chg,
+      std::span<const std::uint8_t>(ssa.rem_slave_data.data(), ssa.rem_slave_data.size()), now);
   enter(State::kWaitPrm, TransitionReason::kAddressChanged, now);
 }
 

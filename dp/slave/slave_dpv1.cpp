@@ -1,4 +1,5 @@
-// dp::Slave MSAC_C1 (§3.3), the poll pattern (§3.4) and Alarm_Ack (§3.5).
+// dp::Slave MSAC_C1 ([IEC 61158-6-3 MSAC_C1]), the poll pattern ([IEC 61158-6-3 MSAC_C1 polling])
+// and Alarm_Ack ([IEC 61158-6-3 DPV1 alarms]).
 #include "dp/pdu/dpv1.h"
 #include "dp/pdu/sap.h"
 #include "dp/slave/slave.h"
@@ -24,8 +25,8 @@ void Slave::close_dpv1() {
 }
 
 void Slave::protocol_violation(TimePoint now) {
-  // §3.3/§3.5 [VPC3-C1]: unknown function on SAP 51 or an unmatched Alarm_Ack makes the
-  // slave leave data exchange; the master must parameterise it again.
+  // [IEC 61158-6-3 MSAC_C1, DPV1 alarms] [VPC3+ dp_msac1.c]: unknown function on SAP 51 or an
+  // unmatched Alarm_Ack makes the slave leave data exchange; the master must parameterise it again.
   fault_to_wait_prm(TransitionReason::kProtocolViolation, false, now);
 }
 
@@ -49,12 +50,13 @@ void Slave::on_msac_c1(const fdl::Telegram& t, TimePoint now) {
   }
 }
 
-// §3.4: an empty DU, or the DU of the request being served, is a poll: SC until the
-// response is ready, then the response (FC DL). Another request while the application is
-// still busy gets RR (no free indication buffer).
+// [IEC 61158-6-3 MSAC_C1 polling]: an empty DU, or the DU of the request being served, is a poll:
+// SC until the response is ready, then the response (FC DL). Another request while the application
+// is still busy gets RR (no free indication buffer).
 bool Slave::poll_job(AcyclicJob& job, const fdl::Telegram& t) {
-  const bool same = job.phase != AcyclicJob::Phase::kIdle &&
-                    std::equal(t.data.begin(), t.data.end(), job.request.begin(), job.request.end());
+  const bool same =
+      job.phase != AcyclicJob::Phase::kIdle &&
+      std::equal(t.data.begin(), t.data.end(), job.request.begin(), job.request.end());
   if (t.data.empty() || same) {
     if (job.phase == AcyclicJob::Phase::kReady) {
       reply_data(t, fdl::ResponseStatus::kDataLow) = job.response;
@@ -78,14 +80,14 @@ void Slave::fail_job(AcyclicJob& job, pdu::ErrorCode1 code_1) {
 }
 
 void Slave::start_c1_request(const fdl::Telegram& t, TimePoint now) {
-  reply_short_ack();  // §3.4 step 2: the response comes on a later poll
+  reply_short_ack();  // [IEC 61158-6-3 MSAC_C1 polling] step 2: the response comes on a later poll
   c1_.request = t.data;
   c1_.function = t.data[0];
   c1_.close_after_send = false;
   const auto decoded = pdu::decode_c1_request(bytes_of(t.data));
   if (!decoded) {
-    // §3.3 [VPC3-C1]: a malformed Read/Write gets DE/DF 80 B3 00; anything else (unknown
-    // function) makes the slave leave data exchange.
+    // [IEC 61158-6-3 MSAC_C1] [VPC3+ dp_msac1.c]: a malformed Read/Write gets DE/DF 80 B3 00;
+    // anything else (unknown function) makes the slave leave data exchange.
     if (const auto neg = pdu::c1_reject_response(bytes_of(t.data))) {
       fail_job(c1_, neg->error_code_1);
     } else {
@@ -140,10 +142,11 @@ std::error_code Slave::finish_job(AcyclicJob& job, const AcyclicResult& r) {
     return {};
   }
   const std::uint8_t wanted = job.request.size() >= 4 ? job.request[3] : 0;
-  if (job.function == kFnWrite) {  // Write.res+ = the 4-byte header, no data (§3.3)
+  if (job.function == kFnWrite) {  // Write.res+ = the 4-byte header, no data
+                                   // ([IEC 61158-6-3 MSAC_C1])
     job.response.assign(job.request.begin(), job.request.begin() + 4);
   } else {
-    // Read.res+: Length = bytes actually returned, ≤ requested (§3.3).
+    // Read.res+: Length = bytes actually returned, ≤ requested ([IEC 61158-6-3 MSAC_C1]).
     if (r.data.size() > kMaxAcyclicData || (job.function == kFnRead && r.data.size() > wanted)) {
       return SlaveError::kResponseTooLong;
     }
@@ -175,7 +178,7 @@ void Slave::on_alarm_ack(AcyclicJob& job, const fdl::Telegram& t, TimePoint now)
   }
   job.request = pdu;
   job.function = kFnAlarmAck;
-  job.response = pdu;  // Alarm_Ack.res+ = 4-byte echo, FC DL [VPC3-C1]
+  job.response = pdu;  // Alarm_Ack.res+ = 4-byte echo, FC DL [VPC3+ dp_msac1.c]
   job.phase = AcyclicJob::Phase::kReady;
   app_.on_alarm_acknowledged({pdu[2], pdu[1], static_cast<std::uint8_t>(pdu[3] >> 3)}, now);
   promote_alarm();

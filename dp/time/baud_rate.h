@@ -1,11 +1,13 @@
 #pragma once
-// PROFIBUS baud rates and wire timing, spec/profibus-dp.md §1.1 and §1.7: the one table
-// the links (wire model, serial speed) and the master (bus parameters) share.
+// PROFIBUS baud rates and wire timing, [IEC 61158-4-3 UART character, bus parameters, timing]
+// [IEC 61158-2 baud rates]: the one table the links (wire model, serial speed) and the master (bus
+// parameters) share.
 //
-// One UART character is 11 bits (start, 8 data LSB first, even parity, stop; §1.1).
-// All FDL times are counted in bit times Tbit = 1/baud. Before every request the line
-// is idle for TSYN = 33 Tbit; a responder waits at least min TSDR (default 11 Tbit)
-// after the end of the request (§1.7).
+// One UART character is 11 bits (start, 8 data LSB first, even parity, stop;
+// [IEC 61158-4-3 UART character] [IEC 61158-2 baud rates]). All FDL times are counted in bit times
+// Tbit = 1/baud. Before every request the line is idle for TSYN = 33 Tbit; a responder waits at
+// least min TSDR (default 11 Tbit) after the end of the request
+// ([IEC 61158-4-3 bus parameters, timing]).
 
 #include "dp/time/clock.h"
 
@@ -17,7 +19,8 @@
 
 namespace rs4sim::dp {
 
-// The standard PROFIBUS-DP (RS-485) rates in bit/s, §1.1 (31.25k is MBP/PA only).
+// The standard PROFIBUS-DP (RS-485) rates in bit/s, [IEC 61158-4-3 UART character]
+// [IEC 61158-2 baud rates] (31.25k is MBP/PA only).
 enum class BaudRate : std::uint32_t {
   k9k6 = 9'600,
   k19k2 = 19'200,
@@ -35,12 +38,17 @@ inline constexpr std::array<BaudRate, 10> kStandardBaudRates = {
     BaudRate::k9k6,  BaudRate::k19k2, BaudRate::k45k45, BaudRate::k93k75, BaudRate::k187k5,
     BaudRate::k500k, BaudRate::k1M5,  BaudRate::k3M,    BaudRate::k6M,    BaudRate::k12M};
 
-inline constexpr std::uint32_t kBitsPerCharacter = 11;  // §1.1
-inline constexpr std::uint32_t kTsynBits = 33;          // §1.7 TSYN
-inline constexpr std::uint32_t kMinTsdrBits = 11;       // §1.7 default min TSDR
-inline constexpr std::uint32_t kTid1Bits = 37;          // idle after a reply ([COMPB])
+inline constexpr std::uint32_t kBitsPerCharacter = 11;  // [IEC 61158-4-3 UART character]
+                                                        // [IEC 61158-2 baud rates]
+inline constexpr std::uint32_t kTsynBits = 33;          // [IEC 61158-4-3 bus parameters, timing]
+                                                        // TSYN
+inline constexpr std::uint32_t kMinTsdrBits = 11;       // [IEC 61158-4-3 bus parameters, timing]
+                                                        // default min TSDR
+inline constexpr std::uint32_t kTid1Bits = 37;          // idle after a reply
+                                                        // ([COM PROFIBUS bus-parameter printout])
 
-// The §1.7 default bus times at one rate, in bit times ([FELSER time ratios table]).
+// The [IEC 61158-4-3 bus parameters, timing] default bus times at one rate, in bit times
+// ([Felser PROFIBUS manual, time ratios table]).
 struct DefaultBusTimes {
   std::uint32_t tqui, tset, max_tsdr, tsl;
 };
@@ -75,7 +83,8 @@ struct DefaultBusTimes {
 // Time `bits` bit times take at `b`, rounded up to the clock's tick (nanoseconds).
 [[nodiscard]] Duration bit_time(BaudRate b, std::uint64_t bits);
 
-// Bits one telegram of `bytes` characters occupies on the line (§1.1: 11 bit/char).
+// Bits one telegram of `bytes` characters occupies on the line ([IEC 61158-4-3 UART character]
+// [IEC 61158-2 baud rates]: 11 bit/char).
 [[nodiscard]] constexpr std::uint64_t telegram_bits(std::size_t bytes) {
   return static_cast<std::uint64_t>(bytes) * kBitsPerCharacter;
 }

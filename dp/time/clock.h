@@ -1,6 +1,6 @@
 #pragma once
-// Injected time (DESIGN.md §1.2). Protocol cores never read a clock: they receive `now`
-// and report their next deadline. Only the event loop (and tests) own a Clock.
+// Injected time ([docs/design.md#injected-time]). Protocol cores never read a clock: they receive
+// `now` and report their next deadline. Only the event loop (and tests) own a Clock.
 
 #include <chrono>
 

@@ -42,7 +42,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (b.size() != (fits ? width : 0)) std::abort();
       }
     }
-    if (fits) pos += width; else failed = true;
+    if (fits)
+      pos += width;
+    else
+      failed = true;
     if (got != expected || r.ok() == failed) std::abort();
     if (r.remaining() != (failed ? 0 : input.size() - pos)) std::abort();
   }

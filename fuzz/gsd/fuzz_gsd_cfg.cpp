@@ -1,4 +1,4 @@
-// libFuzzer: Chk_Cfg bytes → gsd::decode_cfg (profibus-dp.md §2.4). The identifiers
+// libFuzzer: Chk_Cfg bytes → gsd::decode_cfg ([IEC 61158-6-3 Chk_Cfg/Get_Cfg]). The identifiers
 // found must tile the input exactly.
 #include "gsd/cfg.h"
 

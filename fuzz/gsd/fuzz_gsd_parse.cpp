@@ -11,7 +11,7 @@
 namespace {
 
 void check(const rs4sim::gsd::SlaveSetup& c) {
-  // Set_Prm DU ≤ 244 bytes = 7 standard bytes + user data (profibus-dp.md §2.3).
+  // Set_Prm DU ≤ 244 bytes = 7 standard bytes + user data ([IEC 61158-6-3 Set_Prm]).
   if (c.user_prm_data.size() > 237) __builtin_trap();
   if (c.cfg.empty()) return;
   auto layout = rs4sim::gsd::decode_cfg(c.cfg);

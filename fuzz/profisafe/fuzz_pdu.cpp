@@ -18,8 +18,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   PduConfig c;
   c.version = (sel & 0x01) != 0 ? ProtocolVersion::kV2 : ProtocolVersion::kV1;
   c.check_seqnr = (sel & 0x02) != 0;
-  c.variant.order = (sel & 0x04) != 0 ? Crc2Variant::Order::kForward : Crc2Variant::Order::kReversed;
-  c.variant.seq_position = (sel & 0x08) != 0 ? Crc2Variant::SeqPosition::kLast : Crc2Variant::SeqPosition::kFirst;
+  c.variant.order =
+      (sel & 0x04) != 0 ? Crc2Variant::Order::kForward : Crc2Variant::Order::kReversed;
+  c.variant.seq_position =
+      (sel & 0x08) != 0 ? Crc2Variant::SeqPosition::kLast : Crc2Variant::SeqPosition::kFirst;
   c.variant.preset = (sel & 0x10) != 0 ? Crc2Variant::Preset::kZero : Crc2Variant::Preset::kCrc1;
   c.crc1 = static_cast<std::uint16_t>((data[1] << 8) | data[2]);
   c.data_size = data[3] % 16u;
@@ -31,6 +33,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::array<std::uint8_t, kMaxPduSize> out{};
   const std::uint32_t number = c.version == ProtocolVersion::kV1 ? r.consecutive_number : vcn;
   const auto n = build_pdu(c, r.data, r.status_or_control, number, out);
-  if (!n || n.value() != pdu.size() || std::memcmp(out.data(), pdu.data(), pdu.size()) != 0) std::abort();
+  if (!n || n.value() != pdu.size() || std::memcmp(out.data(), pdu.data(), pdu.size()) != 0)
+    std::abort();
   return 0;
 }

@@ -1,6 +1,10 @@
 // libFuzzer: arbitrary bytes as a binary and as a JSON archive import into an in-memory
 // SqliteArchive. Must never crash; a rejected import must leave the archive unchanged
 // (its full export before == after); an accepted one must leave a sound archive.
+#include "storage/archive_file.h"
+#include "storage/crc32.h"
+#include "storage/sqlite_archive.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -8,17 +12,13 @@
 #include <string_view>
 #include <vector>
 
-#include "storage/archive_file.h"
-#include "storage/crc32.h"
-#include "storage/sqlite_archive.h"
-
 namespace {
 
 using namespace rs4sim::storage;
 
 std::unique_ptr<SqliteArchive> fresh_archive() {
   auto archive = SqliteArchive::open(":memory:").value();
-  const std::vector<std::uint8_t> blob{'a', 'b', 'c'};   // the corpus's set "abc"
+  const std::vector<std::uint8_t> blob{'a', 'b', 'c'};  // the corpus's set "abc"
   StoreRequest r;
   r.station = {"line1", 5};
   r.blob = blob;
@@ -38,7 +38,7 @@ template <class Import>
 void check(std::unique_ptr<SqliteArchive>& archive, Import import) {
   const auto result = import(*archive);
   if (result.has_error()) {
-    if (export_binary(*archive, {}).value() != fresh_export()) std::abort();   // changed
+    if (export_binary(*archive, {}).value() != fresh_export()) std::abort();  // changed
     return;
   }
   if (!archive->check_integrity().value().ok()) std::abort();

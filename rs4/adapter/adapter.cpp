@@ -1,8 +1,8 @@
 // Adapter: power, start-up, Set_Prm/Chk_Cfg, DP state, LED, observation.
-// spec/rs4-profisafe.md §1, §2, §4, §8; manual §4.4, §4.5, §6.3.
+// [RS4 manual §2.3, §2.4, §4.5, §7.1, §7.2, §6.2, §6.3, §4.4].
 #include "rs4/adapter/adapter.h"
-#include "rs4/adapter/rs4_gsd.h"
 
+#include "rs4/adapter/rs4_gsd.h"
 #include "rs4/safety/diagnosis.h"
 #include "rs4/safety/profile.h"
 
@@ -15,7 +15,7 @@ namespace {
 
 profisafe::FDeviceConfig fdevice_config(std::optional<std::uint8_t> address) {
   profisafe::FDeviceConfig c;
-  // §2: F_Dest_Add = 500 + address. Without a valid address the profile has no
+  // [RS4 manual §4.5]: F_Dest_Add = 500 + address. Without a valid address the profile has no
   // F_Dest_Add and every block is refused with 65 (internal F_Dest_Add error).
   c.profile = safety::device_profile(address ? *address : 127U);
   c.data_size = 1;
@@ -78,7 +78,7 @@ void Adapter::power_on(TimePoint now) {
 void Adapter::power_off(TimePoint now) {
   powered_ = false;
   scanner_.power_off(now);
-  errors_.clear();  // §5.3: the error memory does not survive power-off
+  errors_.clear();  // [RS4 manual §5.2.2]: the error memory does not survive power-off
   address_.reset();
   fdevice_ = profisafe::FDevice(fdevice_config(std::nullopt));
   link_down_until_.reset();
@@ -100,7 +100,7 @@ void Adapter::power_cycle(TimePoint now) {
 }
 
 // The adapter part of power-on, also run by PROFI_CMD_RESET (RS4 not affected, error
-// memory kept). §1: the adapter initialises for a few seconds (LED steady 2–3 s).
+// memory kept). [RS4 manual §4.4]: the adapter initialises for a few seconds (LED steady 2–3 s).
 void Adapter::start_adapter(TimePoint now, bool keep_errors) {
   const auto addr = adapter::station_address(config_.switches);
   address_ = addr ? std::optional<std::uint8_t>(addr.value()) : std::nullopt;
@@ -122,7 +122,7 @@ void Adapter::start_adapter(TimePoint now, bool keep_errors) {
   drive_restart_input(now);
   field_pair_error_ = false;
   field_pair_release_at_.reset();
-  field_pair_ = 1;  // §3.2: field pair 1 during PROFIBUS start-up
+  field_pair_ = 1;  // [RS4 manual §5.1.2]: field pair 1 during PROFIBUS start-up
   scanner_.select_field_pair(1, now);
   output_byte_ = 0;
   output_pdu_.fill(0);
@@ -140,7 +140,7 @@ std::optional<TimePoint> Adapter::wants_link_down_until() const noexcept {
   return link_down_until_;
 }
 
-// ---- Set_Prm / Chk_Cfg (§8, docs/gsd.md) -------------------------------------------------
+// ---- Set_Prm / Chk_Cfg ([RS4 manual §6.2, §6.3], docs/gsd.md) -----------------------------------
 dp::slave::PrmVerdict Adapter::check_parameters(const dp::pdu::SetPrm& prm, TimePoint now) {
   // Not ready (no power, invalid address switches, adapter still initialising): refused
   // without a PROFIsafe diagnosis; the master repeats the start-up.
@@ -157,8 +157,8 @@ dp::slave::PrmVerdict Adapter::check_parameters(const dp::pdu::SetPrm& prm, Time
     return dp::slave::PrmVerdict::kPrmFault;
   }
   const auto v = fdevice_.set_parameters(user.subspan(kFBlockHeader.size()));
-  // §8: the status PDU 05 81 00 00 nn follows the 6 standard diagnosis bytes; a refused
-  // block sets Ext_Diag, the slave reports Prm_Fault and stays out of data exchange.
+  // [RS4 manual §6.2, §6.3]: the status PDU 05 81 00 00 nn follows the 6 standard diagnosis bytes;
+  // a refused block sets Ext_Diag, the slave reports Prm_Fault and stays out of data exchange.
   const auto pdu = safety::status_pdu(safety::diagnosis(v.fault));
   if (control_) control_->set_device_diagnosis(pdu, !v.ok(), false);
   prm_refused_ = !v.ok();
@@ -171,7 +171,7 @@ dp::slave::PrmVerdict Adapter::check_parameters(const dp::pdu::SetPrm& prm, Time
 }
 
 dp::slave::CfgVerdict Adapter::check_config(std::span<const std::uint8_t> cfg, bool user_check,
-                                     TimePoint now) {
+                                            TimePoint now) {
   (void)user_check, (void)now;  // the RS4 has one module: the Cfg must be exactly C0 84 84
   if (std::equal(cfg.begin(), cfg.end(), kRealConfig.begin(), kRealConfig.end())) {
     return dp::slave::CfgVerdict::kAccept;
@@ -180,8 +180,8 @@ dp::slave::CfgVerdict Adapter::check_config(std::span<const std::uint8_t> cfg, b
   return dp::slave::CfgVerdict::kCfgFault;
 }
 
-void Adapter::on_state_change(dp::slave::State from, dp::slave::State to, dp::slave::TransitionReason why,
-                              TimePoint now) {
+void Adapter::on_state_change(dp::slave::State from, dp::slave::State to,
+                              dp::slave::TransitionReason why, TimePoint now) {
   (void)why;
   if (!powered_) return;
   if (to == dp::slave::State::kDataExch && from != dp::slave::State::kDataExch) {
@@ -195,8 +195,8 @@ void Adapter::on_state_change(dp::slave::State from, dp::slave::State to, dp::sl
   }
 }
 
-// PROFIBUS start-up (§3.2, §4, §7.2): field pair 1, Proxy-Enable evaluated from the first
-// process output, the last error re-reported when still present.
+// PROFIBUS start-up ([RS4 manual §5.1.2, §7.1, §7.2, §5.3.2]): field pair 1, Proxy-Enable evaluated
+// from the first process output, the last error re-reported when still present.
 void Adapter::enter_data_exchange(TimePoint now) {
   connected_ = true;
   proxy_enable_known_ = false;

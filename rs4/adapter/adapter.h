@@ -1,23 +1,26 @@
 #pragma once
-// The PROFIsafe adapter of the RS4/PROFIsafe (spec/rs4-profisafe.md §2 … §8; manual
-// §4.4, §4.5, §5, §7): what makes rs4sim behave like the real device on the bus.
+// The PROFIsafe adapter of the RS4/PROFIsafe
+// ([RS4 manual §4.5, §5.1, §7.1, §7.2, §5.2, §5.2.3, §5.3, §6.2, §6.3];
+// [RS4 manual §4.4, §4.5, §5, §7]): what makes rs4sim behave like the real device on the bus.
 //
 // rs4::adapter::Adapter implements dp::slave::SlaveApplication. The owner (rs4/device) builds a
 // dp::slave::Slave at station_address() around it, forwards the slave's calls, honours
-// wants_link_down_until() (PROFI_CMD_RESET, §5.3) and drives on_time()/next_deadline().
-// Sans-I/O: time comes in, no clock reads, no threads (DESIGN.md §1).
+// wants_link_down_until() (PROFI_CMD_RESET, [RS4 manual §5.2.2]) and drives
+// on_time()/next_deadline(). Sans-I/O: time comes in, no clock reads, no threads
+// ([docs/design.md#principles]).
 //
 //   cyclic  5-byte F-output PDU → profisafe::FDevice → output byte → Scanner (restart,
 //           field pair) ; Scanner state → input byte (compose_input_byte, the only place
 //           where the OSSD bit can become 1) → FDevice (status, CRC2) → 5-byte F-input PDU
 //   acyclic slot 0, index 2/3, block protocol (rs4/protocol/block.h) → adapter command
 //           or RS4 command → answer queue → READ blocks with the flow-control byte
-//   alarms  update alarm (§7.1) and diagnosis alarms coming/going (§7.2) via SlaveControl
+//   alarms  update alarm ([RS4 manual §5.3.1]) and diagnosis alarms coming/going
+//     ([RS4 manual §5.3.2]) via SlaveControl
 //
 // Decisions the manual leaves open are listed in docs/rs4-adapter.md.
 
-#include "gsd/device_gsd.h"
 #include "dp/slave/slave_application.h"
+#include "gsd/device_gsd.h"
 #include "profisafe/f_device.h"
 #include "rs4/adapter/cyclic_bytes.h"
 #include "rs4/adapter/error_memory.h"
@@ -51,17 +54,19 @@ inline constexpr std::size_t kPduSize = 5;  // PROFIsafe V1: data, status, numbe
 
 struct AdapterConfig {
   scanner::ScannerConfig scanner{};
-  AddressSwitches switches{};                    // factory setting 4 (§2)
-  milliseconds init_duration{2500};              // LED steady 2–3 s (§1, manual §4.4)
-  milliseconds reset_link_down{2000};            // PROFI_CMD_RESET: link down ≈2 s (§5.3)
-  milliseconds field_pair_release{500};          // valid pair again → OSSD after ≈500 ms (§3.2)
-  milliseconds going_alarm_delay{500};           // ≥500 ms without error → going alarm (§7.2)
-  std::size_t read_buffers = 4;                  // answers awaiting a READ per channel (0x2A05)
-  std::size_t event_buffer = 8;                  // second buffer: 0x53/0x54 for 0x92 (§5.3)
-  protocol::VersionAnswer version{};             // PROFI_CMD_GET_VERSION bytes
+  AddressSwitches switches{};            // factory setting 4 ([RS4 manual §4.5])
+  milliseconds init_duration{2500};      // LED steady 2–3 s ([RS4 manual §4.4])
+  milliseconds reset_link_down{2000};    // PROFI_CMD_RESET: link down ≈2 s ([RS4 manual §5.2.2])
+  milliseconds field_pair_release{500};  // valid pair again → OSSD after ≈500 ms
+                                         // ([RS4 manual §5.1.2])
+  milliseconds going_alarm_delay{500};   // ≥500 ms without error → going alarm
+                                         // ([RS4 manual §5.3.2])
+  std::size_t read_buffers = 4;          // answers awaiting a READ per channel (0x2A05)
+  std::size_t event_buffer = 8;          // second buffer: 0x53/0x54 for 0x92 ([RS4 manual §5.2.2])
+  protocol::VersionAnswer version{};     // PROFI_CMD_GET_VERSION bytes
 };
 
-// Status LED of the adapter (§1; manual §4.4).
+// Status LED of the adapter ([RS4 manual §4.4]).
 enum class LedState : std::uint8_t {
   kDark,          // powered off
   kSteadyInit,    // steady 2–3 s after power-on / adapter reset
@@ -72,12 +77,12 @@ enum class LedState : std::uint8_t {
 };
 [[nodiscard]] const char* to_string(LedState s) noexcept;
 
-// Where the Proxy-Enable / Proxy-Request / OSSD-release logic of §4 stands.
+// Where the Proxy-Enable / Proxy-Request / OSSD-release logic of [RS4 manual §7.1, §7.2] stands.
 enum class ProxyPhase : std::uint8_t {
-  kWaitRs4,        // RS4 not yet operational since power-on: OSSD bit 0
-  kRequested,      // Proxy-Request set, no check running
-  kSyncRunning,    // the proxy reported "sync started": Proxy-Request 0
-  kDone,           // check passed (or not needed): release allowed
+  kWaitRs4,      // RS4 not yet operational since power-on: OSSD bit 0
+  kRequested,    // Proxy-Request set, no check running
+  kSyncRunning,  // the proxy reported "sync started": Proxy-Request 0
+  kDone,         // check passed (or not needed): release allowed
 };
 [[nodiscard]] const char* to_string(ProxyPhase p) noexcept;
 
@@ -92,9 +97,9 @@ struct AdapterCounters {
 
 // Errors of the control API (not wire errors).
 enum class AdapterApiError : std::uint8_t {
-  kPoweredOff = 1,      // the device has no power
-  kNoSyncRequested,     // sync started while Proxy-Request is 0
-  kNoSyncRunning,       // sync succeeded/failed without sync started
+  kPoweredOff = 1,   // the device has no power
+  kNoSyncRequested,  // sync started while Proxy-Request is 0
+  kNoSyncRunning,    // sync succeeded/failed without sync started
 };
 [[nodiscard]] std::string_view to_string(AdapterApiError e) noexcept;
 constexpr const char* error_category_name(AdapterApiError) noexcept { return "rs4.adapter.api"; }
@@ -111,33 +116,33 @@ struct AdapterView {
   ProxyPhase proxy = ProxyPhase::kWaitRs4;
   bool proxy_enable = false;
   bool pc_adapter_attached = false;
-  bool connected = false;                       // class 1 data exchange
-  std::uint8_t input_byte = 0;                  // the process byte before FDevice
+  bool connected = false;       // class 1 data exchange
+  std::uint8_t input_byte = 0;  // the process byte before FDevice
   InputBits input;
-  std::uint8_t output_byte = 0;                 // the process byte FDevice delivered
+  std::uint8_t output_byte = 0;  // the process byte FDevice delivered
   OutputBits output;
   std::array<std::uint8_t, kPduSize> input_pdu{};
   std::array<std::uint8_t, kPduSize> output_pdu{};
   profisafe::FDeviceState fdevice = profisafe::FDeviceState::kNoParameters;
   scanner::ScannerState rs4 = scanner::ScannerState::kOff;
   bool field_pair_error = false;
-  bool error_active = false;                    // diagnosis alarm "coming" outstanding
+  bool error_active = false;  // diagnosis alarm "coming" outstanding
 };
 
 class Adapter final : public dp::slave::SlaveApplication {
  public:
   explicit Adapter(AdapterConfig config = {});  // powered off
 
-  // ---- power and switches (§2, §4) -----------------------------------------------------
-  void power_on(TimePoint now);                 // reads the address switches
-  void power_off(TimePoint now);                // error memory lost
+  // ---- power and switches ([RS4 manual §4.5, §7.1, §7.2]) ---------------------------------------
+  void power_on(TimePoint now);   // reads the address switches
+  void power_off(TimePoint now);  // error memory lost
   void power_cycle(TimePoint now);
   // Takes effect at the next power-on / adapter reset, as on the device.
   void set_address_switches(AddressSwitches s) noexcept { config_.switches = s; }
   [[nodiscard]] AddressSwitches address_switches() const noexcept { return config_.switches; }
   // The station address read at power-on; nullopt while off or when the switches are invalid.
   [[nodiscard]] std::optional<std::uint8_t> station_address() const noexcept { return address_; }
-  // While set, the owner keeps the DP link down (PROFI_CMD_RESET, §5.3).
+  // While set, the owner keeps the DP link down (PROFI_CMD_RESET, [RS4 manual §5.2.2]).
   [[nodiscard]] std::optional<TimePoint> wants_link_down_until() const noexcept;
 
   // ---- scene and user actions -----------------------------------------------------------
@@ -145,11 +150,12 @@ class Adapter final : public dp::slave::SlaveApplication {
   // so that the input byte follows; the byte on the wire is composed fresh in read_inputs.
   scanner::Scanner& scanner() noexcept { return scanner_; }
   [[nodiscard]] const scanner::Scanner& scanner() const noexcept { return scanner_; }
-  void set_restart_button(bool pressed, TimePoint now);     // button on X1 (§1)
-  void attach_pc_adapter(TimePoint now);                    // reed contact of X5 (§4)
+  void set_restart_button(bool pressed, TimePoint now);  // button on X1 ([RS4 manual §2.3, §2.4])
+  void attach_pc_adapter(TimePoint now);                 // reed contact of X5
+                                                         // ([RS4 manual §7.1, §7.2])
   void detach_pc_adapter(TimePoint now);
 
-  // ---- proxy hooks (EXTENSION, §4/§10) --------------------------------------------------
+  // ---- proxy hooks (EXTENSION, [RS4 manual §7.1, §7.2] [docs/decisions.md#rs4-extensions]) ------
   // The adapter side of the Proxy-FB sync. The wire commands that drive these entry points
   // come with the proxy issue; until then the harness and tests call them directly.
   std::error_code proxy_sync_started(TimePoint now);    // Proxy-Request → 0
@@ -163,7 +169,7 @@ class Adapter final : public dp::slave::SlaveApplication {
   [[nodiscard]] std::uint8_t output_byte() const noexcept { return output_byte_; }
   [[nodiscard]] LedState led() const noexcept;
   [[nodiscard]] ProxyPhase proxy_phase() const noexcept;
-  // The parameter-check gate of §4: true once the OSSD bit may follow the RS4.
+  // The parameter-check gate of [RS4 manual §7.1, §7.2]: true once the OSSD bit may follow the RS4.
   [[nodiscard]] bool released() const noexcept { return released_; }
   [[nodiscard]] protocol::FlowState flow_state(dp::slave::AcyclicChannel ch) const noexcept;
   [[nodiscard]] std::uint8_t flow_byte(dp::slave::AcyclicChannel ch, bool payload) const noexcept;
@@ -178,7 +184,7 @@ class Adapter final : public dp::slave::SlaveApplication {
   void on_attach(dp::slave::SlaveControl& control) override { control_ = &control; }
   dp::slave::PrmVerdict check_parameters(const dp::pdu::SetPrm& prm, TimePoint now) override;
   dp::slave::CfgVerdict check_config(std::span<const std::uint8_t> cfg, bool user_check,
-                              TimePoint now) override;
+                                     TimePoint now) override;
   [[nodiscard]] std::span<const std::uint8_t> real_config() const override { return kRealConfig; }
   void on_outputs(std::span<const std::uint8_t> outputs, TimePoint now) override;
   void on_outputs_cleared(dp::slave::OutputClear why, TimePoint now) override;
@@ -191,23 +197,23 @@ class Adapter final : public dp::slave::SlaveApplication {
   void on_time(TimePoint now) override;
 
  private:
-  struct Channel {                               // one per acyclic channel (C1, C2)
+  struct Channel {  // one per acyclic channel (C1, C2)
     protocol::BlockAssembler assembler{protocol::Direction::kWrite};
     std::deque<std::vector<std::uint8_t>> answers;  // results awaiting READ
-    protocol::BlockSplitter reading;             // the answer being read out
+    protocol::BlockSplitter reading;                // the answer being read out
     void clear();
   };
-  struct Forwarding {                            // PROFI_CMD_GET_RS4_DATA state (§5.3)
+  struct Forwarding {  // PROFI_CMD_GET_RS4_DATA state ([RS4 manual §5.2.2])
     std::uint8_t mask = 0;
     bool permanent = false;
     std::optional<std::vector<std::uint8_t>> telegram;  // first buffer: 0x23 / 0x14
-    std::optional<std::uint32_t> last_scan;     // scan captured last (nullopt: take the next)
+    std::optional<std::uint32_t> last_scan;  // scan captured last (nullopt: take the next)
   };
 
   // adapter.cpp: power, start-up, parameters
   void start_adapter(TimePoint now, bool keep_errors);
   void enter_data_exchange(TimePoint now);
-  // adapter_cyclic.cpp: the process bytes and the §4 logic
+  // adapter_cyclic.cpp: the process bytes and the [RS4 manual §7.1, §7.2] logic
   void apply_output_byte(std::uint8_t out, TimePoint now);
   void apply_field_pair(std::uint8_t pair, TimePoint now);
   void update_rs4_phase(TimePoint now);
@@ -216,12 +222,15 @@ class Adapter final : public dp::slave::SlaveApplication {
   [[nodiscard]] std::uint8_t compose_input_byte(TimePoint now) const noexcept;
   void drive_restart_input(TimePoint now);
   // adapter_acyclic.cpp
-  dp::slave::AcyclicResult on_write(const dp::slave::AcyclicRequest& req, Channel& ch, TimePoint now);
-  dp::slave::AcyclicResult on_read(const dp::slave::AcyclicRequest& req, Channel& ch, TimePoint now);
+  dp::slave::AcyclicResult on_write(const dp::slave::AcyclicRequest& req, Channel& ch,
+                                    TimePoint now);
+  dp::slave::AcyclicResult on_read(const dp::slave::AcyclicRequest& req, Channel& ch,
+                                   TimePoint now);
   void execute(std::span<const std::uint8_t> command, dp::slave::AcyclicChannel which, Channel& ch,
                TimePoint now);
   void execute_adapter_command(std::span<const std::uint8_t> command, Channel& ch, TimePoint now);
-  [[nodiscard]] std::vector<std::uint8_t> execute_rs4_command(std::span<const std::uint8_t> command) const;
+  [[nodiscard]] std::vector<std::uint8_t> execute_rs4_command(
+      std::span<const std::uint8_t> command) const;
   [[nodiscard]] bool ready_for_write(dp::slave::AcyclicChannel which) const noexcept;
   [[nodiscard]] Channel& channel(dp::slave::AcyclicChannel which) noexcept;
   [[nodiscard]] const Channel& channel(dp::slave::AcyclicChannel which) const noexcept;
@@ -242,26 +251,26 @@ class Adapter final : public dp::slave::SlaveApplication {
 
   bool powered_ = false;
   std::optional<std::uint8_t> address_;
-  std::optional<TimePoint> init_end_;  // adapter initialising until then (§1)
+  std::optional<TimePoint> init_end_;  // adapter initialising until then ([RS4 manual §2.3, §2.4])
   std::optional<TimePoint> link_down_until_;
-  bool connected_ = false;                        // class 1 in Data_Exch
-  bool prm_refused_ = false;                      // F-parameters refused (LED slow blink)
+  bool connected_ = false;    // class 1 in Data_Exch
+  bool prm_refused_ = false;  // F-parameters refused (LED slow blink)
 
-  // §4 proxy logic
-  bool rs4_up_ = false;                           // RS4 reached operation since power-on
+  // [RS4 manual §7.1, §7.2] proxy logic
+  bool rs4_up_ = false;  // RS4 reached operation since power-on
   bool sync_running_ = false;
-  bool released_ = false;                         // parameter check passed or not needed
+  bool released_ = false;  // parameter check passed or not needed
   bool proxy_request_ = false;
   bool proxy_enable_ = false;
-  bool proxy_enable_known_ = false;               // evaluated since DP start-up / PC removal
-  bool pc_attached_ = false;                      // reed contact
-  bool rs232_through_ = false;                    // bit 3: switched through (not during a sync)
+  bool proxy_enable_known_ = false;  // evaluated since DP start-up / PC removal
+  bool pc_attached_ = false;         // reed contact
+  bool rs232_through_ = false;       // bit 3: switched through (not during a sync)
 
-  // §3 cyclic
+  // [RS4 manual §5.1] cyclic
   std::uint8_t input_byte_ = 0;
   std::uint8_t output_byte_ = 0;
   std::array<std::uint8_t, kPduSize> output_pdu_{};
-  std::array<std::uint8_t, kPduSize> input_pdu_{};   // the F-input PDU sent last
+  std::array<std::uint8_t, kPduSize> input_pdu_{};  // the F-input PDU sent last
   bool restart_bus_ = false;
   bool restart_button_ = false;
   bool restart_driven_ = false;
@@ -269,16 +278,16 @@ class Adapter final : public dp::slave::SlaveApplication {
   std::optional<TimePoint> field_pair_release_at_;
   std::uint8_t field_pair_ = 1;
 
-  // §5 acyclic
+  // [RS4 manual §5.2] acyclic
   Channel c1_, c2_;
   Forwarding forwarding_;
   std::deque<std::vector<std::uint8_t>> event_buffer_;  // second buffer: 0x53 / 0x54
 
-  // §7 alarms
+  // [RS4 manual §5.3] alarms
   bool error_active_ = false;
   TimePoint last_error_at_{};
   std::uint16_t last_uc2_error_ = 0, last_uc1_error_ = 0;
-  std::vector<std::uint16_t> reported_;           // errors reported coming since going/connect
+  std::vector<std::uint16_t> reported_;  // errors reported coming since going/connect
 
   AdapterCounters counters_;
 };

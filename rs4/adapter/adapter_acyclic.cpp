@@ -1,4 +1,4 @@
-// Adapter: acyclic data exchange (spec/rs4-profisafe.md §5; manual §5.2): slot 0,
+// Adapter: acyclic data exchange ([RS4 manual §5.2]): slot 0,
 // index 2/3, block protocol with the flow-control byte, adapter commands and RS4 commands.
 #include "rs4/adapter/adapter.h"
 #include "rs4/adapter/rs4_commands.h"
@@ -10,11 +10,11 @@
 namespace rs4sim::rs4::adapter {
 
 namespace {
+using dp::pdu::ErrorCode1;
 using dp::slave::AcyclicChannel;
 using dp::slave::AcyclicError;
 using dp::slave::AcyclicResult;
-using dp::pdu::ErrorCode1;
-// DPV1 negative responses (profibus-dp.md §3.3), Error_Decode 0x80 = DPV1.
+// DPV1 negative responses ([IEC 61158-6-3 MSAC_C1]), Error_Decode 0x80 = DPV1.
 constexpr AcyclicError kInvalidIndex{0x80, ErrorCode1::kInvalidIndex, 0x00};
 constexpr AcyclicError kWriteLengthError{0x80, ErrorCode1::kWriteLengthError, 0x00};
 constexpr AcyclicError kInvalidSlot{0x80, ErrorCode1::kInvalidSlot, 0x00};
@@ -65,30 +65,35 @@ dp::slave::AcyclicResult Adapter::on_acyclic(const dp::slave::AcyclicRequest& re
     ++counters_.dpv1_rejected;
     return AcyclicResult::fail(kNotSupported);
   }
-  // §5: slot 0 only, index 2 or 3 (treated identically).
+  // [RS4 manual §5.2]: slot 0 only, index 2 or 3 (treated identically).
   if (req.slot != 0 || (req.index != 2 && req.index != 3)) {
     ++counters_.dpv1_rejected;
     return AcyclicResult::fail(req.slot != 0 ? kInvalidSlot : kInvalidIndex);
   }
   auto& ch = channel(req.channel);
   return req.service == dp::slave::AcyclicService::kWrite ? on_write(req, ch, now)
-                                                    : on_read(req, ch, now);
+                                                          : on_read(req, ch, now);
 }
 
-dp::slave::AcyclicResult Adapter::on_write(const dp::slave::AcyclicRequest& req, Channel& ch, TimePoint now) {
+dp::slave::AcyclicResult Adapter::on_write(const dp::slave::AcyclicRequest& req, Channel& ch,
+                                           TimePoint now) {
   ++counters_.writes;
   if (req.channel == AcyclicChannel::kC2 && req.first_write_after_initiate && control_) {
-    // §7.1: update alarm to the class 1 master, 04 06 00 spec (ack required).
+    // [RS4 manual §5.3.1]: update alarm to the class 1 master, 04 06 00 spec (ack required).
     const dp::slave::AlarmRequest alarm{protocol::kAlarmTypeUpdate, 0, 0, true, {}};
-    if (control_->submit_alarm(alarm)) ++counters_.alarms_refused; else ++counters_.alarms_submitted;
+    if (control_->submit_alarm(alarm))
+      ++counters_.alarms_refused;
+    else
+      ++counters_.alarms_submitted;
   }
-  // §5: records of 5..240 bytes.
-  if (req.data.size() < protocol::kMinWriteRecordSize || req.data.size() > protocol::kMaxRecordSize) {
+  // [RS4 manual §5.2]: records of 5..240 bytes.
+  if (req.data.size() < protocol::kMinWriteRecordSize ||
+      req.data.size() > protocol::kMaxRecordSize) {
     ++counters_.dpv1_rejected;
     return AcyclicResult::fail(kWriteLengthError);
   }
   if (flow_state(req.channel) == protocol::FlowState::kPcAdapterAttached) {
-    ++counters_.writes_ignored;  // §5.2 state 010: WRITEs are ignored without error
+    ++counters_.writes_ignored;  // [RS4 manual §5.2.1] state 010: WRITEs are ignored without error
     return AcyclicResult::ok();
   }
   if (!ready_for_write(req.channel)) {
@@ -96,7 +101,8 @@ dp::slave::AcyclicResult Adapter::on_write(const dp::slave::AcyclicRequest& req,
     const bool full = pending_answers(req.channel) >= config_.read_buffers &&
                       flow_state(req.channel) != protocol::FlowState::kNoCommunicationPath;
     adapter_error(full ? protocol::AdapterError::kReadBuffersFull
-                       : protocol::AdapterError::kTelegramNotProcessed, now);
+                       : protocol::AdapterError::kTelegramNotProcessed,
+                  now);
     return AcyclicResult::ok();
   }
   const auto progress = ch.assembler.push(req.data);
@@ -119,7 +125,8 @@ dp::slave::AcyclicResult Adapter::on_write(const dp::slave::AcyclicRequest& req,
   return AcyclicResult::ok();
 }
 
-dp::slave::AcyclicResult Adapter::on_read(const dp::slave::AcyclicRequest& req, Channel& ch, TimePoint now) {
+dp::slave::AcyclicResult Adapter::on_read(const dp::slave::AcyclicRequest& req, Channel& ch,
+                                          TimePoint now) {
   (void)now;
   ++counters_.reads;
   if (req.length < protocol::kMinWriteRecordSize) {
@@ -132,7 +139,8 @@ dp::slave::AcyclicResult Adapter::on_read(const dp::slave::AcyclicRequest& req, 
       ch.reading = protocol::BlockSplitter(std::move(ch.answers.front()), block_size);
       ch.answers.pop_front();
     } else if (req.channel == AcyclicChannel::kC1) {
-      if (auto t = take_forwarded()) ch.reading = protocol::BlockSplitter(std::move(*t), block_size);
+      if (auto t = take_forwarded())
+        ch.reading = protocol::BlockSplitter(std::move(*t), block_size);
     }
   }
   std::vector<std::uint8_t> block;
@@ -144,14 +152,15 @@ dp::slave::AcyclicResult Adapter::on_read(const dp::slave::AcyclicRequest& req, 
                         flow_state(req.channel) != protocol::FlowState::kNoCommunicationPath);
     block = ch.reading.next({ready, false, flow_state(req.channel)});
   } else {  // nothing to read: the header alone (table 5.2-1)
-    (void)protocol::encode_block(flow_byte(req.channel, false), protocol::kLastBlockNumber, {}, block);
+    (void)protocol::encode_block(flow_byte(req.channel, false), protocol::kLastBlockNumber, {},
+                                 block);
   }
   return AcyclicResult::ok(block);
 }
 
-// A complete command. DECISION (§5: class 2 may not use adapter commands): on C2 every
-// command goes to the RS4 unchecked, so an adapter code from class 2 is answered by the
-// RS4 as an unknown command (error telegram 0x53), as for any other unknown first byte.
+// A complete command. DECISION ([RS4 manual §5.2]: class 2 may not use adapter commands): on C2
+// every command goes to the RS4 unchecked, so an adapter code from class 2 is answered by the RS4
+// as an unknown command (error telegram 0x53), as for any other unknown first byte.
 void Adapter::execute(std::span<const std::uint8_t> command, AcyclicChannel which, Channel& ch,
                       TimePoint now) {
   if (which == AcyclicChannel::kC2) {
@@ -202,7 +211,8 @@ void Adapter::execute_adapter_command(std::span<const std::uint8_t> command, Cha
   }
 }
 
-std::vector<std::uint8_t> Adapter::execute_rs4_command(std::span<const std::uint8_t> command) const {
+std::vector<std::uint8_t> Adapter::execute_rs4_command(
+    std::span<const std::uint8_t> command) const {
   return answer_rs4_command(scanner_, command);
 }
 

@@ -1,5 +1,5 @@
-// Adapter: the cyclic process bytes (spec/rs4-profisafe.md §3) and the Proxy-Enable /
-// Proxy-Request / OSSD-release logic of §4 (manual §5.1, §7.1, §7.2).
+// Adapter: the cyclic process bytes ([RS4 manual §5.1]) and the Proxy-Enable /
+// Proxy-Request / OSSD-release logic of [RS4 manual §7.1, §7.2] ([RS4 manual §5.1, §7.1, §7.2]).
 #include "rs4/adapter/adapter.h"
 
 #include <algorithm>
@@ -58,15 +58,15 @@ void Adapter::read_inputs(std::span<std::uint8_t> inputs, TimePoint now) {
   std::copy_n(pdu.begin(), std::min(pdu.size(), inputs.size()), inputs.begin());
 }
 
-// §3.2: restart bit → RS4 restart input; Proxy-Enable only at DP start-up and after the
-// PC adapter was removed; field pair 1..4 → RS4.
+// [RS4 manual §5.1.2]: restart bit → RS4 restart input; Proxy-Enable only at DP start-up and after
+// the PC adapter was removed; field pair 1..4 → RS4.
 void Adapter::apply_output_byte(std::uint8_t out, TimePoint now) {
   output_byte_ = out;
   const auto bits = decode_output_byte(out);
   if (!proxy_enable_known_) {
     proxy_enable_known_ = true;
     proxy_enable_ = bits.proxy_enable;
-    // Proxy-Enable 0: the OSSD bit is released without the proxy (§3.2, §4).
+    // Proxy-Enable 0: the OSSD bit is released without the proxy ([RS4 manual §5.1.2, §7.1, §7.2]).
     if (!proxy_enable_ && rs4_up_ && !sync_running_) released_ = true;
   }
   restart_bus_ = bits.restart;
@@ -74,7 +74,7 @@ void Adapter::apply_output_byte(std::uint8_t out, TimePoint now) {
   apply_field_pair(bits.field_pair, now);
 }
 
-// §3.2: an invalid number is not forwarded, gives 0x2600 and OSSD bit 0; the bit is
+// [RS4 manual §5.1.2]: an invalid number is not forwarded, gives 0x2600 and OSSD bit 0; the bit is
 // released ≈500 ms after a valid number is present again.
 void Adapter::apply_field_pair(std::uint8_t pair, TimePoint now) {
   if (pair >= 1 && pair <= 4) {
@@ -112,11 +112,11 @@ void Adapter::set_restart_button(bool pressed, TimePoint now) {
   refresh_input(now);
 }
 
-// ---- §4: RS4 start-up, PC adapter, proxy ----------------------------------------------
+// ---- [RS4 manual §7.1, §7.2]: RS4 start-up, PC adapter, proxy -----------------------------------
 void Adapter::update_rs4_phase(TimePoint now) {
   (void)now;
   if (rs4_up_ || !rs4_operational(scanner_.status().state)) return;
-  rs4_up_ = true;  // §7.1.1: the RS4 is operational (≈30 s after power-on)
+  rs4_up_ = true;  // [RS4 manual §7.1.1]: the RS4 is operational (≈30 s after power-on)
   if (pc_attached_) {
     released_ = true;  // PC adapter at start-up: no Proxy-Request, OSSD follows the RS4
     return;
@@ -127,7 +127,8 @@ void Adapter::update_rs4_phase(TimePoint now) {
 
 void Adapter::attach_pc_adapter(TimePoint now) {
   pc_attached_ = true;
-  // §3.1 bit 3: during a sync the RS232 is switched through only after the sync ends.
+  // [RS4 manual §5.1.1] bit 3: during a sync the RS232 is switched through only after the sync
+  // ends.
   if (!sync_running_) rs232_through_ = true;
   if (powered_) refresh_input(now);
 }
@@ -137,7 +138,8 @@ void Adapter::detach_pc_adapter(TimePoint now) {
   pc_attached_ = false;
   rs232_through_ = false;
   if (!powered_ || !was) return;
-  // §3.1 bit 3: on 1→0 the Proxy-Request bit is always set; Proxy-Enable is read again.
+  // [RS4 manual §5.1.1] bit 3: on 1→0 the Proxy-Request bit is always set; Proxy-Enable is read
+  // again.
   if (rs4_up_ && !sync_running_) proxy_request_ = true;
   proxy_enable_known_ = false;
   refresh_input(now);
@@ -146,7 +148,7 @@ void Adapter::detach_pc_adapter(TimePoint now) {
 std::error_code Adapter::proxy_sync_started(TimePoint now) {
   if (!powered_) return AdapterApiError::kPoweredOff;
   if (!proxy_request_) return AdapterApiError::kNoSyncRequested;
-  proxy_request_ = false;  // §3.1 bit 2: reset when the check begins
+  proxy_request_ = false;  // [RS4 manual §5.1.1] bit 2: reset when the check begins
   sync_running_ = true;
   refresh_input(now);
   return {};
@@ -156,7 +158,8 @@ std::error_code Adapter::proxy_sync_succeeded(TimePoint now) {
   if (!powered_) return AdapterApiError::kPoweredOff;
   if (!sync_running_) return AdapterApiError::kNoSyncRunning;
   sync_running_ = false;
-  released_ = true;  // §4: Proxy-Enable 1 → OSSD released after a successful sync
+  released_ = true;  // [RS4 manual §7.1, §7.2]: Proxy-Enable 1 → OSSD released after a successful
+                     // sync
   rs232_through_ = pc_attached_;
   refresh_input(now);
   return {};
@@ -166,8 +169,10 @@ std::error_code Adapter::proxy_sync_failed(TimePoint now) {
   if (!powered_) return AdapterApiError::kPoweredOff;
   if (!sync_running_) return AdapterApiError::kNoSyncRunning;
   sync_running_ = false;
-  proxy_request_ = true;  // §3.1 bit 2: set again if the check fails
-  if (proxy_enable_) released_ = false;  // §4: OSSD unaffected unless the sync fails
+  proxy_request_ = true;  // [RS4 manual §5.1.1] bit 2: set again if the check fails
+  if (proxy_enable_)
+    released_ = false;  // [RS4 manual §7.1, §7.2]: OSSD unaffected unless the sync
+                        // fails
   rs232_through_ = pc_attached_;
   refresh_input(now);
   return {};
@@ -179,10 +184,12 @@ void Adapter::refresh_input(TimePoint now) {
   fdevice_.set_input(std::span<const std::uint8_t>(&input_byte_, 1));
 }
 
-// THE predicate of the OSSD bit (STYLE.md habit 7; spec §3.1, §3.2, §4). The bit may read
+// THE predicate of the OSSD bit ([docs/design.md#one-predicate-for-the-safe-state];
+// [RS4 manual §5.1.1, §5.1.2, §7.1, §7.2]). The bit may read
 // 1 only when every one of these holds; every other path leaves it 0:
 //  - the safety layer exchanges process values (FDevice kRun, no activate_FV),
-//  - the RS4 is operational and the parameter check of §4 passed or is not needed,
+//  - the RS4 is operational and the parameter check of [RS4 manual §7.1, §7.2] passed or is not
+//  needed,
 //  - no field pair error, and ≥500 ms passed since a valid number returned,
 //  - both OSSDs of the RS4 are on.
 bool Adapter::ossd_release_allowed(TimePoint now) const noexcept {

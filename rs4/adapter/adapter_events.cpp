@@ -1,5 +1,5 @@
 // Adapter: RS4 events, PROFI_CMD_GET_RS4_DATA forwarding, error memory and diagnosis
-// alarms (spec/rs4-profisafe.md §5.3, §7; manual §5.2.2.2, §5.3.2).
+// alarms ([RS4 manual §5.2.2, §5.3, §5.2.2.2, §5.3.2]).
 #include "rs4/adapter/adapter.h"
 #include "rs4/adapter/rs4_commands.h"
 #include "rs4/protocol/adapter_command.h"
@@ -10,7 +10,7 @@ namespace rs4sim::rs4::adapter {
 
 // Runs the scanner up to `now` and takes its 0x53/0x54 events: each one is an error of
 // the RS4 (error memory, diagnosis alarm) and, when forwarding asks for it, goes to the
-// second buffer (§5.3: "a slow master gets both measurements and errors").
+// second buffer ([RS4 manual §5.2.2]: "a slow master gets both measurements and errors").
 void Adapter::collect_rs4(TimePoint now) {
   scanner_.advance(now);
   update_rs4_phase(now);
@@ -22,30 +22,32 @@ void Adapter::collect_rs4(TimePoint now) {
         event_buffer_.push_back(event_telegram(scanner_, *e));
       }
     }
-    // DECISION: the RS4's number goes into the μC2 fields (§7.2 "μC2 error number (or of
-    // the RS4)") and the μC2 ring; μC1 reports 0 for it.
+    // DECISION: the RS4's number goes into the μC2 fields ([RS4 manual §5.3.2] "μC2 error number
+    // (or of the RS4)") and the μC2 ring; μC1 reports 0 for it.
     report_error(e->number, 0, e->at);
   }
-  // A fault that is still present keeps the error "coming" (no going alarm, §7.2).
+  // A fault that is still present keeps the error "coming" (no going alarm, [RS4 manual §5.3.2]).
   if (scanner_.status().fault || field_pair_error_) last_error_at_ = now;
   capture_forwarding();
   refresh_input(now);  // the RS4 state may have changed: the input byte follows at once
 }
 
 // First buffer: the next measurement (or alive) telegram, only after the previous one
-// was fetched (§5.3).
+// was fetched ([RS4 manual §5.2.2]).
 void Adapter::capture_forwarding() {
   const auto want = forwarding_.mask & (protocol::kForwardMeasurement | protocol::kForwardAlive);
   if (want == 0 || forwarding_.telegram) return;
   const auto st = scanner_.status();
   const bool scanning = (st.state == scanner::ScannerState::kMeasuring ||
-                         st.state == scanner::ScannerState::kError) && st.scan_counter != 0;
+                         st.state == scanner::ScannerState::kError) &&
+                        st.scan_counter != 0;
   if (!scanning) return;
   const auto scan = scanner_.last_scan().scan_number;
   if (forwarding_.last_scan && *forwarding_.last_scan == scan) return;
   forwarding_.last_scan = scan;
-  forwarding_.telegram = (want & protocol::kForwardMeasurement) != 0 ? measurement_telegram(scanner_)
-                                                                      : alive_telegram(scanner_);
+  forwarding_.telegram = (want & protocol::kForwardMeasurement) != 0
+                             ? measurement_telegram(scanner_)
+                             : alive_telegram(scanner_);
 }
 
 std::optional<std::vector<std::uint8_t>> Adapter::take_forwarded() {
@@ -81,13 +83,13 @@ void Adapter::report_error(std::uint16_t uc2_error, std::uint16_t uc1_error, Tim
   error_active_ = true;
   last_error_at_ = now;
   const auto key = uc2_error != 0 ? uc2_error : uc1_error;
-  if (!connected_) return;  // reported at the next data exchange (§7.2)
+  if (!connected_) return;  // reported at the next data exchange ([RS4 manual §5.3.2])
   if (std::find(reported_.begin(), reported_.end(), key) != reported_.end()) return;
-  reported_.push_back(key);  // §7.2: once per error while the link stays up
+  reported_.push_back(key);  // [RS4 manual §5.3.2]: once per error while the link stays up
   submit_diagnosis_alarm(protocol::AlarmDifferentiation::kAppears);
 }
 
-// §7.2: 0D 01 00 spec | 84 e2 e2 c2 c2 e1 e1 c1 c1; the slave adds the 4-byte header
+// [RS4 manual §5.3.2]: 0D 01 00 spec | 84 e2 e2 c2 c2 e1 e1 c1 c1; the slave adds the 4-byte header
 // (length, type, slot, specifier with its own sequence number).
 void Adapter::submit_diagnosis_alarm(protocol::AlarmDifferentiation d) {
   if (!control_) return;
@@ -111,7 +113,7 @@ void Adapter::submit_diagnosis_alarm(protocol::AlarmDifferentiation d) {
   }
 }
 
-// §7.2: after ≥500 ms without an error, a going alarm.
+// [RS4 manual §5.3.2]: after ≥500 ms without an error, a going alarm.
 void Adapter::check_going_alarm(TimePoint now) {
   if (!error_active_ || now - last_error_at_ < config_.going_alarm_delay) return;
   error_active_ = false;

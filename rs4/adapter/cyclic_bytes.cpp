@@ -7,7 +7,7 @@ namespace rs4sim::rs4::adapter {
 InputBits decode_input_byte(std::uint8_t b) noexcept {
   InputBits bits;
   bits.ossd = (b & kInputOssd) != 0;
-  bits.warning_output_active = (b & kInputWarningOutputN) == 0;  // §3.1: inverted
+  bits.warning_output_active = (b & kInputWarningOutputN) == 0;  // [RS4 manual §5.1.1]: inverted
   bits.error = (b & kInputError) != 0;
   bits.not_operational = (b & kInputOperatingState) != 0;
   bits.rs232_active = (b & kInputRs232Active) != 0;
@@ -47,7 +47,7 @@ std::uint8_t encode_output_byte(const OutputBits& bits) noexcept {
 std::string_view to_string(AddressError e) noexcept {
   switch (e) {
     case AddressError::kReservedAddress:
-      return "address switches give 127: reserved, must not be used (manual §4.5)";
+      return "address switches give 127: reserved, must not be used ([RS4 manual §4.5])";
     case AddressError::kNibbleOutOfRange: return "hex switch value above 0xF";
   }
   return "unknown address error";
@@ -55,7 +55,7 @@ std::string_view to_string(AddressError e) noexcept {
 
 boost::outcome_v2::std_result<std::uint8_t> station_address(AddressSwitches s) noexcept {
   if (s.hex_high > 0xF || s.hex_low > 0xF) return make_error_code(AddressError::kNibbleOutOfRange);
-  // §2 / manual §4.5: bit 7 (HexH bit 3) is not evaluated; 127 and 255 must not be used.
+  // [RS4 manual §4.5]: bit 7 (HexH bit 3) is not evaluated; 127 and 255 must not be used.
   const auto value = static_cast<std::uint8_t>(((s.hex_high << 4) | s.hex_low) & 0x7F);
   if (value == 0x7F) return make_error_code(AddressError::kReservedAddress);
   return value;

@@ -1,8 +1,8 @@
 #pragma once
-// The adapter's error memory (spec/rs4-profisafe.md §5.3 PROFI_CMD_ERROR / _GET_ERROR,
-// §7.2 counts in the diagnosis alarm): per microcontroller μC1/μC2 a ring of 20 error
-// numbers with write index and age flag, the newest error and how often each number
-// occurred since power-on. Kept over an adapter reset (0x94), lost at power-off.
+// The adapter's error memory ([RS4 manual §5.2.2] PROFI_CMD_ERROR / _GET_ERROR,
+// [RS4 manual §5.3.2] counts in the diagnosis alarm): per microcontroller μC1/μC2 a ring of 20
+// error numbers with write index and age flag, the newest error and how often each number occurred
+// since power-on. Kept over an adapter reset (0x94), lost at power-off.
 
 #include "rs4/protocol/adapter_answer.h"
 
@@ -25,8 +25,10 @@ class ErrorMemory {
   [[nodiscard]] std::uint16_t count(Processor p, std::uint16_t error) const noexcept;
   [[nodiscard]] const protocol::ErrorRingBuffer& ring(Processor p) const noexcept;
   [[nodiscard]] bool empty(Processor p) const noexcept;
-  [[nodiscard]] protocol::LastErrorAnswer last_error() const noexcept;       // 0x84
-  [[nodiscard]] protocol::ErrorMemoryAnswer memory() const noexcept { return {uc2_, uc1_}; }  // 0x91
+  [[nodiscard]] protocol::LastErrorAnswer last_error() const noexcept;  // 0x84
+  [[nodiscard]] protocol::ErrorMemoryAnswer memory() const noexcept {
+    return {uc2_, uc1_};
+  }  // 0x91
 
  private:
   protocol::ErrorRingBuffer uc1_, uc2_;

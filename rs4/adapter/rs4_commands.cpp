@@ -13,7 +13,8 @@ protocol::TelegramPrefix prefix_of(const scanner::Scanner& rs4) {
   const auto st = rs4.status();
   protocol::TelegramPrefix p;
   auto& o = p.options;
-  o.state = static_cast<protocol::Option1State>(st.state);  // same values (§6 option 1)
+  o.state = static_cast<protocol::Option1State>(st.state);  // same values ([RS4 manual §5.2.3]
+                                                            // option 1)
   o.flags.protective_field_occupied = st.protective_violated;
   o.flags.warning_field_occupied = st.warning_violated;
   o.flags.warning = st.contamination_warning;
@@ -53,8 +54,9 @@ std::vector<std::uint8_t> error_telegram(const scanner::Scanner& rs4, std::uint1
 }
 
 std::vector<std::uint8_t> event_telegram(const scanner::Scanner& rs4, const scanner::Rs4Event& e) {
-  const auto code = e.kind == scanner::Rs4Event::Kind::kError ? protocol::TelegramCode::kErrorOccure
-                                                              : protocol::TelegramCode::kWarningOccure;
+  const auto code = e.kind == scanner::Rs4Event::Kind::kError
+                        ? protocol::TelegramCode::kErrorOccure
+                        : protocol::TelegramCode::kWarningOccure;
   return report_telegram(code, rs4, {e.number, e.parameter, e.function});
 }
 
@@ -94,7 +96,7 @@ std::vector<std::uint8_t> answer_rs4_command(const scanner::Scanner& rs4,
       return alive_telegram(rs4);
     }
   }
-  // §5.3: a command the RS4 does not know is answered with an error telegram.
+  // [RS4 manual §5.2.2]: a command the RS4 does not know is answered with an error telegram.
   return error_telegram(rs4, kRs4ErrorUnknownCommand, code, kRs4ErrorFunctionCommands);
 }
 

@@ -1,14 +1,16 @@
 #pragma once
 // What the emulated RS4 answers to the commands and telegrams the adapter passes on
-// (spec/rs4-profisafe.md §5.3, §6, §11). Builds RS4 telegram bodies (CMD, options, data)
-// from the scanner model; the block header is the adapter's.
+// ([RS4 manual §5.2.2, §5.2.3] [roboticslibrary/rl LeuzeRs4.cpp]). Builds RS4 telegram bodies (CMD,
+// options, data) from the scanner model; the block header is the adapter's.
 //
 // Commands the emulated RS4 answers (DECISION, docs/rs4-adapter.md):
-//   0x24 request one scan (§11)  → 0x23 COM_CMD_MESS_16_RT of the last scan, window of
+//   0x24 request one scan ([roboticslibrary/rl LeuzeRs4.cpp])  → 0x23 COM_CMD_MESS_16_RT of the
+//     last scan, window of
 //                                   the parameter set; 0x53 "no scan" while not scanning
 //   0x14 COM_CMD_ALIVE           → 0x14 with the current option bytes
 //   anything else / malformed    → 0x53 COM_CMD_ERROR_OCCURE "unknown command"
-// The identification and parameter-set commands of DESIGN.md §4 come with the proxy issue.
+// The identification and parameter-set commands of [docs/decisions.md#rs4-extensions] come with the
+// proxy issue.
 
 #include "rs4/scanner/scanner.h"
 
@@ -18,7 +20,8 @@
 
 namespace rs4sim::rs4::adapter {
 
-inline constexpr std::uint8_t kRs4RequestOneScan = 0x24;      // §11 "00 00 24 01 25 …"
+inline constexpr std::uint8_t kRs4RequestOneScan = 0x24;  // [roboticslibrary/rl LeuzeRs4.cpp] "00
+                                                          // 00 24 01 25 …"
 // Error numbers of the emulated RS4's command interpreter (EXTENSION; function 0x0005,
 // beside the scanner's fault numbers 0x01xx..0x04xx in docs/rs4-scanner.md).
 inline constexpr std::uint16_t kRs4ErrorUnknownCommand = 0x0501;  // parameter: command byte
@@ -29,7 +32,7 @@ inline constexpr std::uint16_t kRs4ErrorFunctionCommands = 0x0005;
 std::vector<std::uint8_t> answer_rs4_command(const scanner::Scanner& rs4,
                                              std::span<const std::uint8_t> command);
 
-// Telegram bodies with option 1..3 taken from the scanner state (§6).
+// Telegram bodies with option 1..3 taken from the scanner state ([RS4 manual §5.2.3]).
 std::vector<std::uint8_t> alive_telegram(const scanner::Scanner& rs4);
 std::vector<std::uint8_t> measurement_telegram(const scanner::Scanner& rs4);  // last scan
 std::vector<std::uint8_t> event_telegram(const scanner::Scanner& rs4, const scanner::Rs4Event& e);

@@ -41,7 +41,7 @@ dp::slave::Config slave_config(std::uint8_t address) {
   s.c2_supported = d.dpv1.c2_read_write;
   s.c2_max_data_length = d.dpv1.c2_max_data_len;
   s.c2_rm_send_timeout = d.dpv1.c2_response_timeout;
-  // Alarm_Sequence_Mode_Count: alarms outstanding and Seq_Nr cycle (§3.5).
+  // Alarm_Sequence_Mode_Count: alarms outstanding and Seq_Nr cycle ([IEC 61158-6-3 DPV1 alarms]).
   s.alarm_capacity = d.dpv1.alarm_sequence_mode_count;
   s.alarm_sequence_numbers = d.dpv1.alarm_sequence_mode_count;
   return s;

@@ -38,7 +38,7 @@ void Rs4Device::power_on(TimePoint now) {
   link_down_ = false;
   pending_.clear();
   ++counters_.power_ups;
-  adapter_.power_on(now);  // reads the address switches (§2)
+  adapter_.power_on(now);  // reads the address switches ([RS4 manual §4.5])
   const auto addr = adapter_.station_address();
   fresh_slave(addr ? *addr : slave_->address());
   wake();
@@ -83,9 +83,9 @@ void Rs4Device::on_time(TimePoint now) {
   after_core_call(now);
 }
 
-// Link drop and return around PROFI_CMD_RESET (§5.3). The reply the slave queued for the
-// request that carried the reset still goes out; then the station is silent until the
-// adapter's link-down time has passed and comes back as a fresh slave in Wait_Prm.
+// Link drop and return around PROFI_CMD_RESET ([RS4 manual §5.2.2]). The reply the slave queued for
+// the request that carried the reset still goes out; then the station is silent until the adapter's
+// link-down time has passed and comes back as a fresh slave in Wait_Prm.
 void Rs4Device::after_core_call(TimePoint now) {
   (void)now;
   const bool wants_down = adapter_.wants_link_down_until().has_value();

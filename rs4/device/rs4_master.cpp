@@ -3,8 +3,9 @@
 #include "dp/pdu/set_prm.h"
 #include "gsd/device_gsd.h"
 
-#include <algorithm>
 #include <strings.h>
+
+#include <algorithm>
 
 namespace rs4sim::rs4::device {
 
@@ -31,15 +32,17 @@ gsd::Result<Rs4MasterEntry> rs4_master_entry(const Rs4MasterOptions& options) {
   gsd::ConfigRequest request;
   request.overrides = options.overrides;
   if (!overrides(options.overrides, "F_Dest_Add")) {
-    request.overrides.push_back({"F_Dest_Add", 500 + options.address});  // §2
+    request.overrides.push_back({"F_Dest_Add", 500 + options.address});  // [RS4 manual §4.5]
   }
   if (!overrides(options.overrides, "F_WD_Time")) {
     request.overrides.push_back({"F_WD_Time", options.f_wd_time_ms});
   }
   RS4SIM_GSD_TRY(gsd::SlaveSetup config, gsd::configure(device.value(), request));
-  if (config.f_parameters.size() != 1) return layout_error("the RS4 module needs one F-parameter block");
+  if (config.f_parameters.size() != 1)
+    return layout_error("the RS4 module needs one F-parameter block");
 
-  // Set_Prm DU = 7 fixed bytes (§2.3) + User_Prm_Data (DPV1_Status_1..3 first, §3.1).
+  // Set_Prm DU = 7 fixed bytes ([RS4 manual §2.3]) + User_Prm_Data (DPV1_Status_1..3 first,
+  // [RS4 manual §5.1.1]).
   Rs4MasterEntry entry;
   dp::fdl::DataUnit du;
   dp::pdu::SetPrm fixed;
@@ -52,7 +55,8 @@ gsd::Result<Rs4MasterEntry> rs4_master_entry(const Rs4MasterOptions& options) {
   fixed.ident_number = config.ident_number;
   if (!dp::pdu::encode_set_prm(fixed, du)) return layout_error("Set_Prm header does not encode");
   du.insert(du.end(), config.user_prm_data.begin(), config.user_prm_data.end());
-  auto prm = dp::pdu::decode_set_prm(std::span<const std::uint8_t>(du.data(), du.size()), dp::pdu::PrmLayout::kDpv1);
+  auto prm = dp::pdu::decode_set_prm(std::span<const std::uint8_t>(du.data(), du.size()),
+                                     dp::pdu::PrmLayout::kDpv1);
   if (!prm) return layout_error("the GSD's Set_Prm does not decode: " + prm.error().message());
 
   entry.slave.address = options.address;
@@ -74,7 +78,7 @@ gsd::Result<Rs4MasterEntry> rs4_master_entry(const Rs4MasterOptions& options) {
 profisafe::FHostConfig rs4_fhost_config(const Rs4MasterEntry& entry) {
   profisafe::FHostConfig c;
   c.params = entry.f_parameters;
-  c.data_size = 1;  // §3: one byte of process data each way
+  c.data_size = 1;  // [RS4 manual §5.1]: one byte of process data each way
   return c;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// Master side of an RS4/PROFIsafe (spec/rs4-profisafe.md §3, §8; profibus-dp.md §4):
+// Master side of an RS4/PROFIsafe ([RS4 manual §5.1, §6.2, §6.3]; [IEC 61158-6-3 class 1 master]):
 // the dp::Master entry configured from the shipped GSD (gsd::configure → Set_Prm user
 // data + Chk_Cfg), and a PROFIsafe F-host over the 5-byte cyclic PDUs.
 //
@@ -19,23 +19,24 @@
 namespace rs4sim::rs4::device {
 
 struct Rs4MasterOptions {
-  std::uint8_t address = 4;                        // the RS4's station address
-  std::chrono::milliseconds dp_watchdog{200};      // Set_Prm WD (base 10 ms)
-  // F_WD_Time unless overridden: the GSD default 10 ms is below the §8 sizing
-  // 2·max(10 ms, t_scan_rec) + 4·Bus_Cycle_Time (§7.3.1: > 60 ms in practice).
+  std::uint8_t address = 4;                    // the RS4's station address
+  std::chrono::milliseconds dp_watchdog{200};  // Set_Prm WD (base 10 ms)
+  // F_WD_Time unless overridden: the GSD default 10 ms is below the [RS4 manual §6.2, §6.3] sizing
+  // 2·max(10 ms, t_scan_rec) + 4·Bus_Cycle_Time ([RS4 manual §7.3.1]: > 60 ms in practice).
   std::uint16_t f_wd_time_ms = 150;
   // GSD parameter overrides, e.g. {"F_WD_Time", 150}. F_Dest_Add defaults to
-  // 500 + address (§2) unless overridden here (to provoke diagnosis 66).
+  // 500 + address ([RS4 manual §4.5]) unless overridden here (to provoke diagnosis 66).
   std::vector<gsd::ParamOverride> overrides;
   // Fault injection: F_Par_CRC sent in Set_Prm instead of the computed CRC1 (the device
-  // answers with PROFIsafe diagnosis 72, §8). The F-host keeps the correct CRC1.
+  // answers with PROFIsafe diagnosis 72, [RS4 manual §6.2, §6.3]). The F-host keeps the correct
+  // CRC1.
   std::optional<std::uint16_t> f_par_crc_override;
 };
 
 struct Rs4MasterEntry {
-  dp::master::SlaveEntry slave;       // for dp::MasterConfig::slaves
-  gsd::SlaveSetup gsd;                // what the GSD produced (fields, F-block offset)
-  profisafe::FParameters f_parameters; // incl. the CRC1 written into the block
+  dp::master::SlaveEntry slave;         // for dp::master::MasterConfig::slaves
+  gsd::SlaveSetup gsd;                  // what the GSD produced (fields, F-block offset)
+  profisafe::FParameters f_parameters;  // incl. the CRC1 written into the block
 };
 
 // Errors: the gsd::Error of configure() (unknown parameter, out of range, …).

@@ -56,8 +56,9 @@ bool Rs4Segment::in_data_exchange() const {
   return st && st->state == dp::master::PollState::kDataExchange;
 }
 
-// One PROFIsafe step per master cycle: answer in, next request out (profisafe-v1.md §5).
-// The F-host starts with the first data exchange (its watchdog runs from the first PDU).
+// One PROFIsafe step per master cycle: answer in, next request out
+// ([PROFIsafe V1.30 F-Device behaviour]). The F-host starts with the first data exchange (its
+// watchdog runs from the first PDU).
 void Rs4Segment::safety_cycle() {
   if (!in_data_exchange()) return;
   const auto now = clock_.now();
@@ -124,7 +125,8 @@ std::optional<dp::master::Dpv1Result> Rs4Segment::write_record(std::span<const s
   return await(id.value(), timeout);
 }
 
-std::optional<dp::master::Dpv1Result> Rs4Segment::read_record(std::uint8_t length, dp::Duration timeout) {
+std::optional<dp::master::Dpv1Result> Rs4Segment::read_record(std::uint8_t length,
+                                                              dp::Duration timeout) {
   auto id = master_->read(rs4_address(), 0, 2, length);
   if (!id) return std::nullopt;
   return await(id.value(), timeout);
@@ -133,7 +135,8 @@ std::optional<dp::master::Dpv1Result> Rs4Segment::read_record(std::uint8_t lengt
 boost::outcome_v2::std_result<std::vector<std::uint8_t>> Rs4Segment::command(
     std::span<const std::uint8_t> payload, dp::Duration timeout) {
   std::vector<std::uint8_t> record;
-  if (auto ec = protocol::encode_block(0x00, protocol::kLastBlockNumber, payload, record)) return ec;
+  if (auto ec = protocol::encode_block(0x00, protocol::kLastBlockNumber, payload, record))
+    return ec;
   const auto written = write_record(record, timeout);
   if (!written) return std::make_error_code(std::errc::timed_out);
   if (written->error) return written->error;

@@ -6,7 +6,7 @@
 //
 // Each master cycle (CycleCompleted) the F-host sees the RS4's last F-input PDU and
 // builds the next F-output PDU around the process output byte (restart, Proxy-Enable,
-// field pair, §3.2); its input() is the unwrapped input byte, 0 while passivated.
+// field pair, [RS4 manual §5.1.2]); its input() is the unwrapped input byte, 0 while passivated.
 
 #include "dp/link/memory_bus.h"
 #include "dp/master/master.h"
@@ -22,14 +22,14 @@
 namespace rs4sim::rs4::device {
 
 struct Rs4SegmentConfig {
-  Rs4DeviceConfig device{};                // address switches, boot time, scanner …
-  Rs4MasterOptions master{};               // station address (must match the switches)
+  Rs4DeviceConfig device{};   // address switches, boot time, scanner …
+  Rs4MasterOptions master{};  // station address (must match the switches)
   std::uint8_t master_address = 1;
   dp::BaudRate baud = dp::BaudRate::k1M5;
   dp::Duration cycle_target = std::chrono::milliseconds(10);
   dp::link::MemoryBusConfig bus{};
-  std::uint8_t output_byte = 0x01;         // initial process output: field pair 1
-  bool auto_ack_rei = false;               // acknowledge every ACK_REQ at once
+  std::uint8_t output_byte = 0x01;  // initial process output: field pair 1
+  bool auto_ack_rei = false;        // acknowledge every ACK_REQ at once
 };
 
 class Rs4Segment {
@@ -53,10 +53,10 @@ class Rs4Segment {
   void power_on() { device_->power_on(now()); }
   void power_off() { device_->power_off(now()); }
 
-  // Process output byte (§3.2) sent through the F-host from the next cycle on.
+  // Process output byte ([RS4 manual §5.1.2]) sent through the F-host from the next cycle on.
   void set_output_byte(std::uint8_t out);
   [[nodiscard]] std::uint8_t output_byte() const { return output_; }
-  // Unwrapped process input byte (§3.1); 0 while the F-host is passivated.
+  // Unwrapped process input byte ([RS4 manual §5.1.1]); 0 while the F-host is passivated.
   [[nodiscard]] std::uint8_t input_byte() const;
   [[nodiscard]] bool in_data_exchange() const;
   void ack_rei() { fhost_->ack_rei(); }
@@ -66,16 +66,18 @@ class Rs4Segment {
   bool run_until(const std::function<bool()>& done, dp::Duration timeout);
   void run_for(dp::Duration d);
 
-  // DPV1 C1 Write then wait for its result (slot 0, index 2, §5); nullopt on timeout.
-  std::optional<dp::master::Dpv1Result> write_record(std::span<const std::uint8_t> record,
-                                                     dp::Duration timeout = std::chrono::seconds(2));
+  // DPV1 C1 Write then wait for its result (slot 0, index 2, [RS4 manual §5.2]); nullopt on
+  // timeout.
+  std::optional<dp::master::Dpv1Result> write_record(
+      std::span<const std::uint8_t> record, dp::Duration timeout = std::chrono::seconds(2));
   std::optional<dp::master::Dpv1Result> read_record(std::uint8_t length = 240,
                                                     dp::Duration timeout = std::chrono::seconds(2));
 
-  // One command through the block protocol (§5.1): WRITE it as a single block (payload
+  // One command through the block protocol ([RS4 manual §5.2.1]): WRITE it as a single block
+  // (payload
   // ≤ 236 bytes), then READ blocks until the last one (0xFFFF) and return the joined
-  // answer payload. A READ without payload (answer not ready, §5.2 flow bit 1 = 0) is
-  // repeated every cycle up to `timeout`. Errors: the DPV1 error of a failed WRITE/READ,
+  // answer payload. A READ without payload (answer not ready, [RS4 manual §5.2.1] flow bit 1 = 0)
+  // is repeated every cycle up to `timeout`. Errors: the DPV1 error of a failed WRITE/READ,
   // std::errc::timed_out, or the block decoder's error.
   boost::outcome_v2::std_result<std::vector<std::uint8_t>> command(
       std::span<const std::uint8_t> payload, dp::Duration timeout = std::chrono::seconds(2));

@@ -43,8 +43,14 @@ constexpr std::size_t kRingSize = 2 + 2 * ErrorRingBuffer::kEntries;  // 42 byte
 
 std::vector<std::uint8_t> encode_version_answer(const VersionAnswer& a) {
   return {static_cast<std::uint8_t>(AdapterCommandCode::kGetVersion),
-          a.profisafe_version_hi, a.profisafe_version_lo, a.dp_version_hi, a.dp_version_lo,
-          a.dpv1sl_components_hi, a.dpv1sl_components_lo, a.main_interface, a.function,
+          a.profisafe_version_hi,
+          a.profisafe_version_lo,
+          a.dp_version_hi,
+          a.dp_version_lo,
+          a.dpv1sl_components_hi,
+          a.dpv1sl_components_lo,
+          a.main_interface,
+          a.function,
           a.bugfix};
 }
 
@@ -60,7 +66,7 @@ std::vector<std::uint8_t> encode_last_error_answer(const LastErrorAnswer& a) {
   std::vector<std::uint8_t> out{static_cast<std::uint8_t>(AdapterCommandCode::kError)};
   out.reserve(kLastErrorAnswerSize);
   codec::Appender w(out);
-  // DECISION §5.3: high byte first
+  // DECISION [docs/decisions.md#rs4-uc1-count-byte-order]: high byte first
   for (const auto v : {a.uc2_error, a.uc2_count, a.uc1_error, a.uc1_count}) w.u16_be(v);
   return out;
 }

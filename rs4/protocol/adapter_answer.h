@@ -1,5 +1,5 @@
 #pragma once
-// READ answers of the adapter commands (spec/rs4-profisafe.md §5.3; manual tables
+// READ answers of the adapter commands ([RS4 manual §5.2.2]; manual tables
 // 5.2-6, 5.2-7, 5.2-8) and the error memory they report. Payload only: the block
 // header is added by BlockSplitter.
 
@@ -16,23 +16,24 @@ namespace rs4sim::rs4::protocol {
 // are the values the manual lists; the three DPV1 slave firmware bytes are the
 // emulated device's own.
 struct VersionAnswer {
-  std::uint8_t profisafe_version_hi = 1;   // PROFIsafe version 1.0
+  std::uint8_t profisafe_version_hi = 1;  // PROFIsafe version 1.0
   std::uint8_t profisafe_version_lo = 0;
-  std::uint8_t dp_version_hi = 1;          // PROFIBUS DP version 1.0
+  std::uint8_t dp_version_hi = 1;  // PROFIBUS DP version 1.0
   std::uint8_t dp_version_lo = 0;
   std::uint8_t dpv1sl_components_hi = 0x11;  // VISL_COMP_INSTALLED_C2 | _DPC31
   std::uint8_t dpv1sl_components_lo = 0x0D;  // _C2 | _SUB_AL | _SUB_CH1
-  std::uint8_t main_interface = 0;         // DPV1SL main interface
-  std::uint8_t function = 0;               // DPV1SL function
-  std::uint8_t bugfix = 0;                 // DPV1SL bugfix
+  std::uint8_t main_interface = 0;           // DPV1SL main interface
+  std::uint8_t function = 0;                 // DPV1SL function
+  std::uint8_t bugfix = 0;                   // DPV1SL bugfix
   friend bool operator==(const VersionAnswer&, const VersionAnswer&) = default;
 };
 inline constexpr std::size_t kVersionAnswerSize = 10;
 std::vector<std::uint8_t> encode_version_answer(const VersionAnswer& answer);
 Result<VersionAnswer> decode_version_answer(std::span<const std::uint8_t> answer);
 
-// PROFI_CMD_ERROR answer, table 5.2-7 (9 bytes, code 0x84 first). DECISION (§5.3):
-// every 2-byte value high byte first, also the μC1 count the manual lists lo, hi.
+// PROFI_CMD_ERROR answer, table 5.2-7 (9 bytes, code 0x84 first). DECISION
+// ([docs/decisions.md#rs4-uc1-count-byte-order]): every 2-byte value high byte first, also the μC1
+// count the manual lists lo, hi.
 struct LastErrorAnswer {
   std::uint16_t uc2_error = 0;
   std::uint16_t uc2_count = 0;  // occurrences since power-on

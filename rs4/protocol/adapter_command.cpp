@@ -3,9 +3,7 @@
 namespace rs4sim::rs4::protocol {
 namespace {
 
-constexpr std::uint8_t code(AdapterCommandCode c) noexcept {
-  return static_cast<std::uint8_t>(c);
-}
+constexpr std::uint8_t code(AdapterCommandCode c) noexcept { return static_cast<std::uint8_t>(c); }
 
 RejectedCommand wrong_length(std::uint8_t command) noexcept {
   return {CommandErrorKind::kWrongLength, command};
@@ -17,7 +15,8 @@ WriteCommand parse_get_rs4_data(std::span<const std::uint8_t> payload) {
   const std::uint8_t mask = payload[1];
   const std::uint8_t mode = payload[2];
   // Bits 4..7 of the mask select nothing the manual defines; mode > 1 is "nicht zulässig".
-  if ((mask & ~kForwardMaskDefined) != 0 || mode > static_cast<std::uint8_t>(ForwardMode::kPermanent)) {
+  if ((mask & ~kForwardMaskDefined) != 0 ||
+      mode > static_cast<std::uint8_t>(ForwardMode::kPermanent)) {
     return RejectedCommand{CommandErrorKind::kWrongParameter, payload[0]};
   }
   return GetRs4DataCommand{mask, static_cast<ForwardMode>(mode)};
@@ -50,8 +49,7 @@ Result<WriteCommand> parse_write_command(std::span<const std::uint8_t> payload) 
     case AdapterCommandCode::kError: return single_byte<GetLastErrorCommand>(payload);
     case AdapterCommandCode::kGetError: return single_byte<GetErrorMemoryCommand>(payload);
     case AdapterCommandCode::kErrorInTelegram:  // an answer code, not a command
-    default:
-      return WriteCommand{Rs4Command{payload}};
+    default: return WriteCommand{Rs4Command{payload}};
   }
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// Adapter commands written by a class 1 master (spec/rs4-profisafe.md §5.3, manual
-// §5.2.2, tables 5.2-3 … 5.2-8). The first payload byte of a reassembled WRITE
+// Adapter commands written by a class 1 master ([RS4 manual §5.2.2],
+// [RS4 manual §5.2.2], tables 5.2-3 … 5.2-8). The first payload byte of a reassembled WRITE
 // decides: one of the codes below is an adapter command, checked for length and
 // parameter range; any other byte is an RS4 command forwarded unchecked.
 // Whether the writer may use adapter commands (class 1 only) is the adapter's call.
@@ -15,12 +15,13 @@
 namespace rs4sim::rs4::protocol {
 
 enum class AdapterCommandCode : std::uint8_t {
-  kError = 0x84,           // PROFI_CMD_ERROR: last adapter error (§5.2.2.4)
-  kGetVersion = 0x90,      // PROFI_CMD_GET_VERSION (§5.2.2.3)
-  kGetError = 0x91,        // PROFI_CMD_GET_ERROR: error memory (§5.2.2.5)
-  kGetRs4Data = 0x92,      // PROFI_CMD_GET_RS4_DATA: forwarding of RS4 telegrams (§5.2.2.2)
-  kErrorInTelegram = 0x93, // answer only: "error in telegram" (table 5.2-3)
-  kReset = 0x94,           // PROFI_CMD_RESET (§5.2.2.1)
+  kError = 0x84,            // PROFI_CMD_ERROR: last adapter error ([RS4 manual §5.2.2.4])
+  kGetVersion = 0x90,       // PROFI_CMD_GET_VERSION ([RS4 manual §5.2.2.3])
+  kGetError = 0x91,         // PROFI_CMD_GET_ERROR: error memory ([RS4 manual §5.2.2.5])
+  kGetRs4Data = 0x92,       // PROFI_CMD_GET_RS4_DATA: forwarding of RS4 telegrams
+                            // ([RS4 manual §5.2.2.2])
+  kErrorInTelegram = 0x93,  // answer only: "error in telegram" (table 5.2-3)
+  kReset = 0x94,            // PROFI_CMD_RESET ([RS4 manual §5.2.2.1])
 };
 
 // PROFI_CMD_GET_RS4_DATA byte 6 (table 5.2-5); 0 stops all forwarding.
@@ -70,9 +71,8 @@ struct Rs4Command {
   std::span<const std::uint8_t> bytes;
 };
 
-using WriteCommand = std::variant<Rs4Command, ResetCommand, GetRs4DataCommand,
-                                  GetVersionCommand, GetLastErrorCommand,
-                                  GetErrorMemoryCommand, RejectedCommand>;
+using WriteCommand = std::variant<Rs4Command, ResetCommand, GetRs4DataCommand, GetVersionCommand,
+                                  GetLastErrorCommand, GetErrorMemoryCommand, RejectedCommand>;
 
 // Classifies a reassembled WRITE payload. The only error is kEmptyCommand; a bad
 // adapter command is a RejectedCommand value (it has a prescribed answer).

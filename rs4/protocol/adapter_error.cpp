@@ -8,7 +8,7 @@ namespace {
 constexpr std::uint16_t kFamilyMask = 0xFFF0;
 constexpr std::string_view kProxyRemedy =
     "process acyclic READ and WRITE only after the Proxy-FB completed the parameter "
-    "sync; watch FB_BUSY (§6.4)";
+    "sync; watch FB_BUSY ([RS4 manual §6.4])";
 
 struct Text {
   std::string_view cause;
@@ -34,7 +34,7 @@ Text text(AdapterError e) noexcept {
       return {"wrong protective field pair number", "select only field pairs 1 to 4"};
     case AdapterError::kTelegramNotProcessed:
       return {"PROFIBUS telegram could not be processed",
-              "evaluate the flow-control byte (§5.2) before acyclic WRITEs"};
+              "evaluate the flow-control byte ([RS4 manual §5.2.1]) before acyclic WRITEs"};
     case AdapterError::kReadBuffersFull:
       return {"all read buffers for PROFIBUS telegrams are occupied",
               "fetch the result the adapter provides after every WRITE"};
@@ -43,12 +43,9 @@ Text text(AdapterError e) noexcept {
     case AdapterError::kUnexpectedBlockNumber:
       return {"unexpected block number in PROFIBUS telegram",
               "number the blocks of a telegram sequentially"};
-    case AdapterError::kProxyStateUnknown:
-      return {"unknown state of the Proxy-FB", kProxyRemedy};
-    case AdapterError::kCrcComparison:
-      return {"error in CRC comparison", kProxyRemedy};
-    default:
-      return {"unknown adapter error", "see manual table 5.3-3"};
+    case AdapterError::kProxyStateUnknown: return {"unknown state of the Proxy-FB", kProxyRemedy};
+    case AdapterError::kCrcComparison: return {"error in CRC comparison", kProxyRemedy};
+    default: return {"unknown adapter error", "see [RS4 manual table 5.3-3]"};
   }
 }
 
@@ -74,11 +71,16 @@ std::optional<std::uint8_t> crc_number(AdapterError e) noexcept {
 
 std::optional<AdapterError> adapter_error_from_wire(std::uint16_t value) noexcept {
   switch (value) {
-    case 0x2418: case 0x2419: case 0x2600: case 0x2A04: case 0x2A05: case 0x2A06:
-    case 0x2A0B: case 0x2B01: case 0x2B09:
-      return static_cast<AdapterError>(value);
-    default:
-      break;
+    case 0x2418:
+    case 0x2419:
+    case 0x2600:
+    case 0x2A04:
+    case 0x2A05:
+    case 0x2A06:
+    case 0x2A0B:
+    case 0x2B01:
+    case 0x2B09: return static_cast<AdapterError>(value);
+    default: break;
   }
   const auto family = static_cast<std::uint16_t>(value & kFamilyMask);
   if (family == 0x2B10 || family == 0x2B20) return static_cast<AdapterError>(value);
@@ -94,7 +96,8 @@ std::string error_message(AdapterError e) {
   const Text t = text(e);
   std::string out = "0x";
   constexpr char kHex[] = "0123456789ABCDEF";
-  for (int shift = 12; shift >= 0; shift -= 4) out += kHex[(static_cast<unsigned>(value) >> shift) & 0xFU];
+  for (int shift = 12; shift >= 0; shift -= 4)
+    out += kHex[(static_cast<unsigned>(value) >> shift) & 0xFU];
   out += ": ";
   out += t.cause;
   out += " (remedy: ";

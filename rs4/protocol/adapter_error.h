@@ -1,7 +1,7 @@
 #pragma once
-// Error numbers of the PROFIsafe adapter (spec/rs4-profisafe.md §7.3, manual table
-// 5.3-3). They appear in the diagnosis alarm (§7.2), in the answers to
-// PROFI_CMD_ERROR / PROFI_CMD_GET_ERROR (§5.3) and as std::error_code inside the
+// Error numbers of the PROFIsafe adapter ([RS4 manual §5.3.2, table 5.3-3]).
+// They appear in the diagnosis alarm ([RS4 manual §5.3.2]), in the answers to
+// PROFI_CMD_ERROR / PROFI_CMD_GET_ERROR ([RS4 manual §5.2.2]) and as std::error_code inside the
 // project (category adapter_category(), message = the manual's cause and remedy).
 
 #include "codec/error_category.h"

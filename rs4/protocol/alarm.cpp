@@ -63,9 +63,10 @@ Result<DiagnosisAlarm> decode_diagnosis_alarm(std::span<const std::uint8_t> pdu)
   if (auto ec = check_header(pdu, kDiagnosisAlarmSize, kAlarmTypeDiagnosis)) return ec;
   if (pdu[4] != kErrorFromSlave) return ProtocolError::kBadErrorCode;
   codec::Reader r(pdu.subspan(5));
-  return DiagnosisAlarm{sequence_of(pdu[3]),
-                        static_cast<AlarmDifferentiation>(pdu[3] & kDifferentiationMask),
-                        r.u16_be(), r.u16_be(), r.u16_be(), r.u16_be()};
+  return DiagnosisAlarm{
+      sequence_of(pdu[3]), static_cast<AlarmDifferentiation>(pdu[3] & kDifferentiationMask),
+      r.u16_be(),          r.u16_be(),
+      r.u16_be(),          r.u16_be()};
 }
 
 }  // namespace rs4sim::rs4::protocol

@@ -1,11 +1,12 @@
 #pragma once
-// Alarm PDUs of the RS4/PROFIsafe (spec/rs4-profisafe.md §7; manual §5.3, tables 5.3-1
+// Alarm PDUs of the RS4/PROFIsafe ([RS4 manual §5.3], tables 5.3-1
 // and 5.3-2). Both carry, in byte 4 (specifier), the sequence number in bits 5..3 and
 // bit 2 = 1 (acknowledge required).
-//   Update alarm      04 06 00 spec                  (class 2 master wrote first, §7.1)
-//   Diagnosis alarm   0D 01 00 spec 84 e2 e2 c2 c2 e1 e1 c1 c1   (§7.2)
-// DECISION (§7.2): diagnosis alarm specifier bits 1..0 use the DPV1 values 01 (appears)
-// and 10 (disappears) although the manual's table shows 00.
+//   Update alarm      04 06 00 spec                  (class 2 master wrote first,
+//     [RS4 manual §5.3.1])
+//   Diagnosis alarm   0D 01 00 spec 84 e2 e2 c2 c2 e1 e1 c1 c1   ([RS4 manual §5.3.2])
+// DECISION ([docs/decisions.md#rs4-alarm-specifier]): diagnosis alarm specifier bits 1..0 use the
+// DPV1 values 01 (appears) and 10 (disappears) although the manual's table shows 00.
 
 #include "rs4/protocol/errors.h"
 
@@ -17,9 +18,9 @@ namespace rs4sim::rs4::protocol {
 
 // Specifier bits 1..0 (DPV1 alarm specifier).
 enum class AlarmDifferentiation : std::uint8_t {
-  kNone = 0b00,              // update alarm (table 5.3-1)
-  kAppears = 0b01,           // coming diagnosis alarm
-  kDisappears = 0b10,        // going diagnosis alarm (≥ 500 ms without an error)
+  kNone = 0b00,        // update alarm (table 5.3-1)
+  kAppears = 0b01,     // coming diagnosis alarm
+  kDisappears = 0b10,  // going diagnosis alarm (≥ 500 ms without an error)
   kAppearsStillFaulty = 0b11,
 };
 

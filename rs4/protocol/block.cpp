@@ -54,7 +54,8 @@ Result<BlockView> decode_block(std::span<const std::uint8_t> record, Direction d
 }
 
 std::error_code encode_block(std::uint8_t flow_control, std::uint16_t number,
-                             std::span<const std::uint8_t> payload, std::vector<std::uint8_t>& out) {
+                             std::span<const std::uint8_t> payload,
+                             std::vector<std::uint8_t>& out) {
   if (payload.size() > kMaxBlockPayload) return ProtocolError::kBlockLengthOutOfRange;
   codec::Appender w(out);
   w.u8(flow_control);
@@ -82,7 +83,7 @@ Result<BlockAssembler::Progress> BlockAssembler::push(std::span<const std::uint8
   auto block = decode_block(record, direction_);
   if (!block) return fail(block.error());
   const BlockHeader& header = block.value().header;
-  // Blocks count 0, 1, 2, … and the last one is 0xFFFF (§5.1, error 0x2A0B).
+  // Blocks count 0, 1, 2, … and the last one is 0xFFFF ([RS4 manual §5.2.1], error 0x2A0B).
   if (!header.is_last() && header.number != next_number_) {
     return fail(AdapterError::kUnexpectedBlockNumber);
   }

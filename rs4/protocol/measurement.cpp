@@ -55,7 +55,7 @@ std::error_code encode_measurement_data(std::uint32_t scan_number, std::uint8_t 
   put_header(scan_number, resolution, start, stop, w);
   std::size_t segment = start;
   for (; segment < stop; segment += resolution) w.u16_be(contour[segment]);
-  w.u16_be(contour[stop]);  // the stop segment is always output (§6.1)
+  w.u16_be(contour[stop]);  // the stop segment is always output ([RS4 manual §5.2.3.4])
   return {};
 }
 

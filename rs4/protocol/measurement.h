@@ -1,6 +1,6 @@
 #pragma once
-// COM_CMD_MESS_16_RT 0x23, the measurement telegram (spec/rs4-profisafe.md §6.1;
-// manual §5.2.3.4, table 5.2-14). Data after the options:
+// COM_CMD_MESS_16_RT 0x23, the measurement telegram ([RS4 manual §5.2.3.4];
+// [RS4 manual §5.2.3.4], table 5.2-14). Data after the options:
 //   scan number  8 bytes  b31..24 FE b23..16 FE b15..8 FE b7..0 FE
 //   resolution   1 byte   segments between two output values (≥ 1)
 //   start        2 bytes  first segment output (0..528)
@@ -35,7 +35,7 @@ constexpr std::uint16_t value_distance_mm(std::uint16_t value) noexcept {
 constexpr bool value_field_violated(std::uint16_t value) noexcept { return (value & 1U) != 0; }
 
 // Number of values for a window, or kBadResolution / kSegmentOutOfRange /
-// kStartAfterStop. Example §6.1: start 0, stop 528, resolution 4 → 133.
+// kStartAfterStop. Example [RS4 manual §5.2.3.4]: start 0, stop 528, resolution 4 → 133.
 Result<std::size_t> measurement_value_count(std::uint16_t start, std::uint16_t stop,
                                             std::uint8_t resolution) noexcept;
 

@@ -11,7 +11,7 @@ constexpr std::uint8_t kStateMask = 0x07;
 constexpr std::uint8_t kPasswordBit = 0x20;
 constexpr std::uint8_t kAcknowledgeBit = 0x40;
 constexpr std::uint8_t kReserved7 = 0x80;
-constexpr std::uint8_t kMoreBit = 0x80;      // option 2 bit 7 / option 3 bit 7
+constexpr std::uint8_t kMoreBit = 0x80;  // option 2 bit 7 / option 3 bit 7
 constexpr std::uint8_t kOption3Reserved = 0x40;
 constexpr unsigned kSecondPairShift = 3;
 constexpr std::uint8_t kPairMask = 0x07;
@@ -22,9 +22,9 @@ std::uint8_t bit(bool value, unsigned n) noexcept {
 
 std::uint8_t encode_flags(const ScannerFlags& f) noexcept {
   return static_cast<std::uint8_t>(
-      bit(f.protective_field_occupied, 0) | bit(f.warning_field_occupied, 1) |
-      bit(f.warning, 2) | bit(f.fault, 3) | bit(f.restart_interlock, 4) |
-      bit(f.second_protective_field_occupied, 5) | bit(f.second_warning_field_occupied, 6));
+      bit(f.protective_field_occupied, 0) | bit(f.warning_field_occupied, 1) | bit(f.warning, 2) |
+      bit(f.fault, 3) | bit(f.restart_interlock, 4) | bit(f.second_protective_field_occupied, 5) |
+      bit(f.second_warning_field_occupied, 6));
 }
 
 ScannerFlags decode_flags(std::uint8_t b) noexcept {
@@ -72,7 +72,8 @@ Result<std::size_t> encode_option_bytes(const OptionBytes& o, std::vector<std::u
   out.push_back(static_cast<std::uint8_t>(count | (state << kStateShift) |
                                           (o.password ? kPasswordBit : 0U) |
                                           (o.acknowledge ? kAcknowledgeBit : 0U)));
-  if (with2) out.push_back(static_cast<std::uint8_t>(encode_flags(o.flags) | (with3 ? kMoreBit : 0U)));
+  if (with2)
+    out.push_back(static_cast<std::uint8_t>(encode_flags(o.flags) | (with3 ? kMoreBit : 0U)));
   if (with3) {
     out.push_back(static_cast<std::uint8_t>(kMoreBit | o.first_field_pair |
                                             (o.second_field_pair << kSecondPairShift)));
@@ -108,7 +109,8 @@ std::error_code encode_prefix(std::uint8_t code, const TelegramPrefix& prefix,
     out.pop_back();
     return options.error();
   }
-  if (prefix.options.password) out.insert(out.end(), prefix.password.begin(), prefix.password.end());
+  if (prefix.options.password)
+    out.insert(out.end(), prefix.password.begin(), prefix.password.end());
   return {};
 }
 
@@ -123,7 +125,8 @@ Result<DecodedPrefix> decode_prefix(std::span<const std::uint8_t> body) {
   if (d.prefix.options.password) {
     const std::size_t size = d.prefix.password.size();
     if (body.size() < d.size + size) return ProtocolError::kTruncated;
-    std::copy_n(body.begin() + static_cast<std::ptrdiff_t>(d.size), size, d.prefix.password.begin());
+    std::copy_n(body.begin() + static_cast<std::ptrdiff_t>(d.size), size,
+                d.prefix.password.begin());
     d.size += size;
   }
   return d;

@@ -1,5 +1,5 @@
 #pragma once
-// Option bytes of RS4 telegrams (spec/rs4-profisafe.md §6; manual table 5.2-9).
+// Option bytes of RS4 telegrams ([RS4 manual §5.2.3, table 5.2-9]).
 //   Option 1 (always): bits 1..0 number of option bytes (1..3), bits 4..2 operating
 //     state, bit 5 password follows, bit 6 acknowledge requested, bit 7 reserved.
 //   Option 2 (only when a flag is set): field/warning/fault/restart-interlock flags,
@@ -21,7 +21,7 @@ namespace rs4sim::rs4::protocol {
 // The operating state a telegram carries in option 1 bits 4..2 (the wire code; the
 // scanner model's own state is scanner::ScannerState).
 enum class Option1State : std::uint8_t {
-  kNone = 0b000,            // in messages to the RS4
+  kNone = 0b000,  // in messages to the RS4
   kInitialisation = 0b001,
   kMeasuring = 0b010,
   kConfiguration = 0b011,
@@ -44,7 +44,8 @@ struct ScannerFlags {
 struct OptionBytes {
   Option1State state = Option1State::kNone;
   bool password = false;     // option 1 bit 5: an 8-byte password follows the options
-  bool acknowledge = false;  // option 1 bit 6: the RS4 acknowledges (0x16/0x17, §11)
+  bool acknowledge = false;  // option 1 bit 6: the RS4 acknowledges (0x16/0x17,
+                             // [roboticslibrary/rl LeuzeRs4.cpp])
   ScannerFlags flags;
   std::uint8_t first_field_pair = 0;   // option 3 bits 2..0: 0 none, 1..4
   std::uint8_t second_field_pair = 0;  // option 3 bits 5..3: during a switch-over
@@ -65,7 +66,7 @@ struct DecodedOptions {
 Result<DecodedOptions> decode_option_bytes(std::span<const std::uint8_t> bytes);
 
 // The body's prefix: options and, with option 1 bit 5, the 8-byte password (ASCII,
-// 0xFF-padded, §11).
+// 0xFF-padded, [roboticslibrary/rl LeuzeRs4.cpp]).
 using Password = std::array<std::uint8_t, 8>;
 struct TelegramPrefix {
   OptionBytes options;

@@ -4,7 +4,8 @@ namespace rs4sim::rs4::protocol {
 namespace {
 
 constexpr std::size_t kMinFrameBody = 3;  // CMD, OPT1, CHK
-constexpr unsigned kEndZeros = 3;         // three zeros never occur inside a frame (§11)
+constexpr unsigned kEndZeros = 3;         // three zeros never occur inside a frame
+                                          // ([roboticslibrary/rl LeuzeRs4.cpp])
 
 }  // namespace
 

@@ -1,5 +1,5 @@
 #pragma once
-// The RS4's own RS232 framing behind the optical PC adapter (spec/rs4-profisafe.md §11;
+// The RS4's own RS232 framing behind the optical PC adapter ([roboticslibrary/rl LeuzeRs4.cpp];
 // the manual only says the block header replaces it):
 //   00 00 | stuffed body (CMD, options, [password], data) | CHK | 00 00 00
 // Zero-stuffing: after two consecutive 0x00 inside the body a 0xFF is inserted (the
@@ -23,13 +23,13 @@ std::error_code frame_rs232(std::span<const std::uint8_t> body, std::vector<std:
 Result<std::vector<std::uint8_t>> frame_rs232(std::span<const std::uint8_t> body);
 
 struct DeframerCounters {
-  std::uint64_t frames = 0;            // good frames delivered
-  std::uint64_t garbage_bytes = 0;     // bytes outside any frame that are not zeros
-  std::uint64_t check_errors = 0;      // kBadCheck
-  std::uint64_t stuffing_errors = 0;   // kStuffingViolation
-  std::uint64_t short_frames = 0;      // kFrameTooShort
-  std::uint64_t long_frames = 0;       // kFrameTooLong
-  std::uint64_t bad_command_bytes = 0; // kBadCommandByte (00 00 FF outside a frame)
+  std::uint64_t frames = 0;             // good frames delivered
+  std::uint64_t garbage_bytes = 0;      // bytes outside any frame that are not zeros
+  std::uint64_t check_errors = 0;       // kBadCheck
+  std::uint64_t stuffing_errors = 0;    // kStuffingViolation
+  std::uint64_t short_frames = 0;       // kFrameTooShort
+  std::uint64_t long_frames = 0;        // kFrameTooLong
+  std::uint64_t bad_command_bytes = 0;  // kBadCommandByte (00 00 FF outside a frame)
 };
 
 // Streaming receiver: feed it chunks of any size; it reports each complete frame's body
@@ -57,8 +57,8 @@ class Rs232Deframer {
 
   std::size_t max_body_;
   bool in_frame_ = false;
-  unsigned zeros_ = 0;       // consecutive zeros seen (outside: since the last non-zero)
-  std::uint8_t xor_ = 0;     // XOR of every transmitted byte of the current frame
+  unsigned zeros_ = 0;    // consecutive zeros seen (outside: since the last non-zero)
+  std::uint8_t xor_ = 0;  // XOR of every transmitted byte of the current frame
   std::vector<std::uint8_t> body_;
   DeframerCounters counters_;
 };

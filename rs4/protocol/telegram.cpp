@@ -14,8 +14,8 @@ std::error_code encode_body(const AliveTelegram& t, std::vector<std::uint8_t>& o
   return encode_prefix(code_byte(TelegramCode::kAlive), t.prefix, out);
 }
 
-std::error_code encode_report(TelegramCode code, const TelegramPrefix& prefix,
-                              const ErrorReport& r, std::vector<std::uint8_t>& out) {
+std::error_code encode_report(TelegramCode code, const TelegramPrefix& prefix, const ErrorReport& r,
+                              std::vector<std::uint8_t>& out) {
   if (auto ec = encode_prefix(code_byte(code), prefix, out)) return ec;
   codec::Appender w(out);
   for (const auto v : {r.number, r.parameter, r.function}) w.u16_be(v);
@@ -40,7 +40,8 @@ std::error_code exact_size(std::span<const std::uint8_t> data, std::size_t size)
 }
 
 template <typename Report>
-Result<Rs4Telegram> decode_report(const TelegramPrefix& prefix, std::span<const std::uint8_t> data) {
+Result<Rs4Telegram> decode_report(const TelegramPrefix& prefix,
+                                  std::span<const std::uint8_t> data) {
   if (auto ec = exact_size(data, kErrorReportSize)) return ec;
   codec::Reader r(data);
   return Rs4Telegram{Report{prefix, ErrorReport{r.u16_be(), r.u16_be(), r.u16_be()}}};
@@ -66,8 +67,7 @@ bool is_known_code(std::uint8_t code) noexcept {
     case TelegramCode::kAlive:
     case TelegramCode::kMess16Rt:
     case TelegramCode::kErrorOccure:
-    case TelegramCode::kWarningOccure:
-      return true;
+    case TelegramCode::kWarningOccure: return true;
   }
   return false;
 }

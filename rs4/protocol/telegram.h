@@ -1,9 +1,9 @@
 #pragma once
-// RS4 telegrams forwarded to the master (spec/rs4-profisafe.md §6; manual §5.2.3,
+// RS4 telegrams forwarded to the master ([RS4 manual §5.2.3],
 // tables 5.2-10 … 5.2-14). A telegram body is
 //   CMD | option 1 [option 2 [option 3]] | [8-byte password if option 1 bit 5] | data
 // On PROFIBUS it travels behind the block header; behind the optical PC adapter inside
-// the RS232 frame (§11, rs232.h).
+// the RS232 frame ([roboticslibrary/rl LeuzeRs4.cpp], rs232.h).
 
 #include "rs4/protocol/errors.h"
 #include "rs4/protocol/measurement.h"
@@ -18,10 +18,10 @@
 namespace rs4sim::rs4::protocol {
 
 enum class TelegramCode : std::uint8_t {
-  kAlive = 0x14,           // COM_CMD_ALIVE (§5.2.3.1)
-  kMess16Rt = 0x23,        // COM_CMD_MESS_16_RT (§5.2.3.4)
-  kErrorOccure = 0x53,     // COM_CMD_ERROR_OCCURE (§5.2.3.2)
-  kWarningOccure = 0x54,   // COM_CMD_WARNING_OCCURE (§5.2.3.3)
+  kAlive = 0x14,          // COM_CMD_ALIVE ([RS4 manual §5.2.3.1])
+  kMess16Rt = 0x23,       // COM_CMD_MESS_16_RT ([RS4 manual §5.2.3.4])
+  kErrorOccure = 0x53,    // COM_CMD_ERROR_OCCURE ([RS4 manual §5.2.3.2])
+  kWarningOccure = 0x54,  // COM_CMD_WARNING_OCCURE ([RS4 manual §5.2.3.3])
 };
 
 struct AliveTelegram {  // 0x14: no data

@@ -25,7 +25,6 @@ constexpr std::array<Row, 9> kTable{{
     {FParameterFault::kCrc1Mismatch, FDiagnosis::kWrongCrc1},
 }};
 
-
 }  // namespace
 
 FDiagnosis diagnosis(FParameterFault f) noexcept {

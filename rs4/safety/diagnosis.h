@@ -16,15 +16,15 @@
 namespace rs4sim::rs4::safety {
 
 enum class FDiagnosis : std::uint8_t {
-  kNone = 0,                        // 0  = Kein Fehler
-  kInternalDestAdd = 65,            // 65 = Interner Fehler bei F_Dest_Add
-  kWrongDestAdd = 66,               // 66 = Falsche F_Dest_Add
-  kWrongSourceAdd = 67,             // 67 = Falsche F_Source_Add
-  kWrongWdTime = 68,                // 68 = Falsche F_WD_Time Einstellung
-  kWrongSil = 69,                   // 69 = Falsche SIL Einstellung
-  kWrongCrcLength = 70,             // 70 = Falsche CRC Laenge
-  kWrongBlockIdOrParVersion = 71,   // 71 = Falsche F_Block_ID oder F_Par_Version
-  kWrongCrc1 = 72,                  // 72 = Falsche CRC1 ueber die F-Parameter
+  kNone = 0,                       // 0  = Kein Fehler
+  kInternalDestAdd = 65,           // 65 = Interner Fehler bei F_Dest_Add
+  kWrongDestAdd = 66,              // 66 = Falsche F_Dest_Add
+  kWrongSourceAdd = 67,            // 67 = Falsche F_Source_Add
+  kWrongWdTime = 68,               // 68 = Falsche F_WD_Time Einstellung
+  kWrongSil = 69,                  // 69 = Falsche SIL Einstellung
+  kWrongCrcLength = 70,            // 70 = Falsche CRC Laenge
+  kWrongBlockIdOrParVersion = 71,  // 71 = Falsche F_Block_ID oder F_Par_Version
+  kWrongCrc1 = 72,                 // 72 = Falsche CRC1 ueber die F-Parameter
 };
 
 // The RS4's number for a generic F-parameter fault.
@@ -38,7 +38,9 @@ enum class FDiagnosis : std::uint8_t {
 // "66 F_Dest_Add mismatch": the number, then the fault (the category's message).
 [[nodiscard]] std::string error_message(FDiagnosis d);
 constexpr const char* error_category_name(FDiagnosis) noexcept { return "rs4sim.rs4.fdiagnosis"; }
-inline std::error_code make_error_code(FDiagnosis d) noexcept { return codec::make_error_code_of(d); }
+inline std::error_code make_error_code(FDiagnosis d) noexcept {
+  return codec::make_error_code_of(d);
+}
 inline const std::error_category& fdiagnosis_category() noexcept {
   return codec::category_of<FDiagnosis>();
 }

@@ -1,8 +1,9 @@
 #pragma once
 // Device faults of the scanner model. The RS4's own error numbers are not public (the
 // manual only shows that 0x53/0x54 carry "error number, parameter, function" of the
-// RS4, §5.2.3.2/3): the numbers below are the project's (EXTENSION, documented in
-// docs/rs4-scanner.md "Faults"). One value per fault (STYLE.md habit 7).
+// RS4, [RS4 manual §5.2.3.2, §5.2.3.3]): the numbers below are the project's (EXTENSION, documented
+// in docs/rs4-scanner.md "Faults"). One value per fault
+// ([docs/design.md#one-predicate-for-the-safe-state]).
 
 #include <array>
 #include <cstddef>
@@ -12,19 +13,19 @@
 namespace rs4sim::rs4::scanner {
 
 enum class Fault : std::uint8_t {
-  kOssdCrossCircuit = 0,   // OSSD1/OSSD2 short or cross circuit (injectable)
-  kMotorSpeed,             // rotation out of tolerance (injectable)
-  kInternalHardware,       // internal self-test failed (injectable)
-  kDazzled,                // receiver dazzled / no valid measurement (injectable)
-  kWindowContaminated,     // contamination at or above the fault level
-  kFieldPairSequence,      // field pair switched along a forbidden transition
-  kFieldPairInvalid,       // field pair number not 1..4 reached the scanner
+  kOssdCrossCircuit = 0,  // OSSD1/OSSD2 short or cross circuit (injectable)
+  kMotorSpeed,            // rotation out of tolerance (injectable)
+  kInternalHardware,      // internal self-test failed (injectable)
+  kDazzled,               // receiver dazzled / no valid measurement (injectable)
+  kWindowContaminated,    // contamination at or above the fault level
+  kFieldPairSequence,     // field pair switched along a forbidden transition
+  kFieldPairInvalid,      // field pair number not 1..4 reached the scanner
 };
 inline constexpr std::size_t kFaultCount = 7;
 
 struct FaultInfo {
-  std::uint16_t error_number;   // 0x53 "Fehler-Nummer"
-  std::uint16_t function;       // 0x53 "Fehler-Funktion": the subsystem (docs table)
+  std::uint16_t error_number;  // 0x53 "Fehler-Nummer"
+  std::uint16_t function;      // 0x53 "Fehler-Funktion": the subsystem (docs table)
   std::string_view name;
 };
 

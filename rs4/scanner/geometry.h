@@ -1,5 +1,5 @@
 #pragma once
-// Scan geometry of the RS4 (spec/rs4-profisafe.md §1; manual §2.3): one revolution is a
+// Scan geometry of the RS4 ([RS4 manual §2.3]): one revolution is a
 // contour of 529 distances, segment n lies at −5.04° + n·0.36° (segment 14 = 0°,
 // segment 264 = 90°, segment 528 = 185.04°).
 //
@@ -20,15 +20,15 @@ inline constexpr double kFirstSegmentDeg = -5.04;
 inline constexpr double kSegmentStepDeg = 0.36;
 
 // Distance value of a beam that saw no echo within the modelled range. Even, so that
-// bit 0 stays free for the measurement telegram's field-violation flag (§6.1).
+// bit 0 stays free for the measurement telegram's field-violation flag ([RS4 manual §5.2.3.4]).
 inline constexpr std::uint16_t kNoEchoMm = 0xFFFE;
 
-// Protective field limit (§1: max 4 m) and warning field limit (project decision,
-// docs/rs4-scanner.md: 15 m).
+// Protective field limit ([RS4 manual §2.3, §2.4]: max 4 m) and warning field limit (project
+// decision, docs/rs4-scanner.md: 15 m).
 inline constexpr std::uint16_t kMaxProtectiveMm = 4000;
 inline constexpr std::uint16_t kMaxWarningMm = 15000;
 
-using Contour = std::array<std::uint16_t, kSegmentCount>;   // mm per segment
+using Contour = std::array<std::uint16_t, kSegmentCount>;  // mm per segment
 using SegmentFlags = std::bitset<kSegmentCount>;
 
 // Angle of segment n in degrees (n in 0..528).

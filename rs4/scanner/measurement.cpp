@@ -9,7 +9,7 @@ std::uint16_t flagged(std::uint16_t mm, bool violated) {
   return static_cast<std::uint16_t>((mm & 0xFFFEU) | (violated ? 1U : 0U));
 }
 
-bool any_in(const SegmentFlags& f, std::size_t from, std::size_t to) {   // [from, to]
+bool any_in(const SegmentFlags& f, std::size_t from, std::size_t to) {  // [from, to]
   for (std::size_t n = from; n <= to; ++n) {
     if (f.test(n)) return true;
   }
@@ -22,7 +22,8 @@ Contour measurement_contour(const Contour& contour, const SegmentFlags& protecti
                             const MeasurementOutput& window) noexcept {
   Contour out{};
   for (std::size_t n = 0; n < kSegmentCount; ++n) out[n] = flagged(contour[n], protective.test(n));
-  if (window.resolution == 0 || window.start > window.stop || window.stop >= kSegmentCount) return out;
+  if (window.resolution == 0 || window.start > window.stop || window.stop >= kSegmentCount)
+    return out;
   std::size_t previous = window.start;
   for (std::size_t s = window.start; s <= window.stop; s += window.resolution) {
     const std::size_t from = s == window.start ? s : previous + 1;

@@ -1,14 +1,14 @@
 #pragma once
-// What the RS4 puts into COM_CMD_MESS_16_RT 0x23 (spec/rs4-profisafe.md §6.1; manual
-// §5.2.3.4, table 5.2-14): the values of segments start, start+res, …, stop (stop always),
-// each a distance in mm whose bit 0 says "the contour violated a protective field
-// between this value and the previous one". The bytes are rs4/protocol's job; this
-// computes the flagged values from a scan.
-
-#include <cstdint>
+// What the RS4 puts into COM_CMD_MESS_16_RT 0x23 ([RS4 manual §5.2.3.4];
+// [RS4 manual §5.2.3.4], table 5.2-14): the values of segments start, start+res, …, stop (stop
+// always), each a distance in mm whose bit 0 says "the contour violated a protective field between
+// this value and the previous one". The bytes are rs4/protocol's job; this computes the flagged
+// values from a scan.
 
 #include "rs4/scanner/field_evaluation.h"
 #include "rs4/scanner/parameter_set.h"
+
+#include <cstdint>
 
 namespace rs4sim::rs4::scanner {
 

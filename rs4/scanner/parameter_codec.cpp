@@ -83,7 +83,8 @@ boost::outcome_v2::std_result<ParameterSet> decode(std::span<const std::uint8_t>
   return s;
 }
 
-boost::outcome_v2::std_result<ParameterSet> decode_and_validate(std::span<const std::uint8_t> bytes) {
+boost::outcome_v2::std_result<ParameterSet> decode_and_validate(
+    std::span<const std::uint8_t> bytes) {
   auto decoded = decode(bytes);
   if (!decoded) return decoded.error();
   if (const auto issue = validate(decoded.value())) return issue->error;

@@ -1,11 +1,13 @@
 #pragma once
-// Binary encoding of the RS4 parameter set — EXTENSION (spec/rs4-profisafe.md §10),
+// Binary encoding of the RS4 parameter set — EXTENSION ([docs/decisions.md#rs4-extensions]),
 // layout in docs/rs4-scanner.md "Encoding". Deterministic: one set, one byte string.
-// All multi-byte fields are big-endian (high byte first, as every RS4 value, §5.2.3).
+// All multi-byte fields are big-endian (high byte first, as every RS4 value, [RS4 manual §5.2.3]).
 // The proxy transfers it in chunks; its checksum is CRC-32/ISO-HDLC over these bytes.
 //
 // decode() checks syntax only (length, magic, version, reserved byte); the meaning is
 // checked by validate() (parameter_set.h) — decode_and_validate() does both.
+
+#include "rs4/scanner/parameter_set.h"
 
 #include <boost/outcome/std_result.hpp>
 
@@ -14,20 +16,19 @@
 #include <span>
 #include <vector>
 
-#include "rs4/scanner/parameter_set.h"
-
 namespace rs4sim::rs4::scanner {
 
 inline constexpr std::uint8_t kParameterFormatVersion = 1;
 inline constexpr std::size_t kParameterHeaderSize = 43;
-inline constexpr std::size_t kParameterPairSize = 2 * kSegmentCount * 2;   // 2116
+inline constexpr std::size_t kParameterPairSize = 2 * kSegmentCount * 2;  // 2116
 inline constexpr std::size_t kParameterSetSize =
-    kParameterHeaderSize + kFieldPairCount * kParameterPairSize;           // 8507
+    kParameterHeaderSize + kFieldPairCount * kParameterPairSize;  // 8507
 
 std::vector<std::uint8_t> encode(const ParameterSet& set);
 boost::outcome_v2::std_result<ParameterSet> decode(std::span<const std::uint8_t> bytes);
 // Syntax, then meaning; a semantic failure returns the ParameterError of the first issue.
-boost::outcome_v2::std_result<ParameterSet> decode_and_validate(std::span<const std::uint8_t> bytes);
+boost::outcome_v2::std_result<ParameterSet> decode_and_validate(
+    std::span<const std::uint8_t> bytes);
 
 // CRC-32/ISO-HDLC over encode(set): the parameter checksum the proxy compares.
 std::uint32_t checksum(const ParameterSet& set);

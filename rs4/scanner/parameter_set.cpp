@@ -14,7 +14,8 @@ Issue issue(ParameterError e, std::string_view field, std::uint32_t value, std::
 
 Issue check_modes(const ParameterSet& s) {
   if (s.response_steps > kMaxResponseSteps) {
-    return issue(ParameterError::kResponseTimeSteps, "response_steps", s.response_steps, kMaxResponseSteps);
+    return issue(ParameterError::kResponseTimeSteps, "response_steps", s.response_steps,
+                 kMaxResponseSteps);
   }
   const auto mode = static_cast<std::uint8_t>(s.restart_mode);
   if (mode > static_cast<std::uint8_t>(RestartMode::kStartRestartInterlock)) {
@@ -29,17 +30,20 @@ Issue check_modes(const ParameterSet& s) {
     }
   }
   if ((s.warning_output & ~kWarningSourceMask) != 0) {
-    return issue(ParameterError::kWarningOutput, "warning_output", s.warning_output, kWarningSourceMask);
+    return issue(ParameterError::kWarningOutput, "warning_output", s.warning_output,
+                 kWarningSourceMask);
   }
   return std::nullopt;
 }
 
 Issue check_measurement(const MeasurementOutput& m) {
-  if (m.resolution == 0) return issue(ParameterError::kMeasurementResolution, "measurement.resolution", 0, 1);
+  if (m.resolution == 0)
+    return issue(ParameterError::kMeasurementResolution, "measurement.resolution", 0, 1);
   if (m.stop > kSegmentCount - 1) {
     return issue(ParameterError::kMeasurementRange, "measurement.stop", m.stop, kSegmentCount - 1);
   }
-  if (m.start > m.stop) return issue(ParameterError::kMeasurementRange, "measurement.start", m.start, m.stop);
+  if (m.start > m.stop)
+    return issue(ParameterError::kMeasurementRange, "measurement.start", m.start, m.stop);
   return std::nullopt;
 }
 
@@ -65,8 +69,8 @@ Issue check_pair(const FieldPair& fp, int pair) {
                    kMaxProtectiveMm, pair, static_cast<int>(n));
     }
     if (fp.warning_mm[n] > kMaxWarningMm) {
-      return issue(ParameterError::kWarningTooFar, "pairs[].warning_mm", fp.warning_mm[n], kMaxWarningMm,
-                   pair, static_cast<int>(n));
+      return issue(ParameterError::kWarningTooFar, "pairs[].warning_mm", fp.warning_mm[n],
+                   kMaxWarningMm, pair, static_cast<int>(n));
     }
   }
   return std::nullopt;

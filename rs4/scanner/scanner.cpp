@@ -24,7 +24,7 @@ Scanner::Scanner(ScannerConfig config) : config_(config), params_(factory_defaul
 
 // THE predicate: the only reason the OSSDs may be on. Everything not listed keeps them
 // off: powered off, booting, configuration, error state, any unacknowledged fault, the
-// restart button held (§4.3), the interlock waiting for a pulse, no scan yet. The
+// restart button held ([RS4 manual §4.3]), the interlock waiting for a pulse, no scan yet. The
 // OSSDs switch on only after a free scan and, once on, switch off after T/40 ms
 // consecutive violated scans (the response time, docs/rs4-scanner.md "OSSD model").
 bool Scanner::ossd_may_be_on() const noexcept {
@@ -65,7 +65,7 @@ void Scanner::power_off(TimePoint now) {
   active_pair_ = 0;
   second_pair_ = 0;
   contamination_warning_ = false;
-  for (FaultState& f : faults_) f.latched = false;   // causes (present) survive
+  for (FaultState& f : faults_) f.latched = false;  // causes (present) survive
   event_count_ = 0;
   last_ = ScanResult{};
   last_.contour.fill(kNoEchoMm);
@@ -93,7 +93,7 @@ bool Scanner::scanning() const noexcept {
 }
 
 // Entry into protective operation: after boot, after a fault acknowledge, after
-// configuration. A start: the start interlock applies (§5.1.2 Info: "Anlauf nach einem
+// configuration. A start: the start interlock applies ([RS4 manual §5.1.2] Info: "Anlauf nach einem
 // Fehler oder nach dem Einschalten"), the start pair is active first and the pair at the
 // input is then reached like any other switch (so it must be permitted from the start pair).
 void Scanner::start_measuring(TimePoint at) {
@@ -110,19 +110,19 @@ void Scanner::start_measuring(TimePoint at) {
     state_ = ScannerState::kError;
   } else if (requested_pair_ != active_pair_) {
     request_pair(requested_pair_, at);
-    second_pair_ = 0;                    // nothing to overlap before the first scan
+    second_pair_ = 0;  // nothing to overlap before the first scan
   }
   apply_ossd();
-  run_scans(at);                         // the first scan is due at once
+  run_scans(at);  // the first scan is due at once
 }
 
 // ----- scans -------------------------------------------------------------------------
 
 void Scanner::run_scans(TimePoint now) {
   while (scanning() && next_scan_ <= now) {
-    if (steady_) {                       // identical scans: only the counter moves
+    if (steady_) {  // identical scans: only the counter moves
       const auto n = static_cast<std::uint64_t>((now - next_scan_) / config_.scan_period) + 1;
-      scan_counter_ += static_cast<std::uint32_t>(n);   // wraps like the device's counter
+      scan_counter_ += static_cast<std::uint32_t>(n);  // wraps like the device's counter
       counters_.scans += n;
       next_scan_ += config_.scan_period * static_cast<std::int64_t>(n);
       last_.scan_number = scan_counter_;
@@ -140,12 +140,14 @@ void Scanner::do_scan(TimePoint at) {
     scene_.render(last_.contour);
     rendered_revision_ = scene_.revision();
   }
-  const bool same_pair = last_.first_pair == active_pair_ && last_.second_pair == 0 && second_pair_ == 0;
+  const bool same_pair =
+      last_.first_pair == active_pair_ && last_.second_pair == 0 && second_pair_ == 0;
   last_.first = evaluate(last_.contour, params_.pairs[active_pair_ - 1U]);
   last_.first_pair = active_pair_;
   last_.second_pair = second_pair_;
-  last_.second = second_pair_ != 0 ? evaluate(last_.contour, params_.pairs[second_pair_ - 1U]) : FieldFlags{};
-  second_pair_ = 0;                      // the switch-over ends with this scan
+  last_.second =
+      second_pair_ != 0 ? evaluate(last_.contour, params_.pairs[second_pair_ - 1U]) : FieldFlags{};
+  second_pair_ = 0;  // the switch-over ends with this scan
 
   const bool violated = last_.first.protective_violated() || last_.second.protective_violated();
   const std::uint32_t k = scans_to_switch_off(params_);
@@ -153,7 +155,7 @@ void Scanner::do_scan(TimePoint at) {
   violated_scans_ = violated ? std::min(violated_scans_ + 1, k) : 0;
   if (violated_scans_ >= k && state_ == ScannerState::kMeasuring &&
       params_.restart_mode == RestartMode::kStartRestartInterlock) {
-    interlock_ = true;                   // §4.3: restart only after a pulse
+    interlock_ = true;  // [RS4 manual §4.3]: restart only after a pulse
   }
   const bool first_scan = !scanned_since_start_;
   scanned_since_start_ = true;
@@ -191,7 +193,8 @@ ScannerStatus Scanner::status() const noexcept {
   s.second_protective_violated = scanned && last_.second.protective_violated();
   s.second_warning_violated = scanned && last_.second.warning_violated();
   // A switch-over shows two selected pairs from the switch until the scan after the one
-  // that monitored both (option 3, §5.2.3: "zwei Schutzfeldpaare gleichzeitig ausgewählt").
+  // that monitored both (option 3, [RS4 manual §5.2.3]: "zwei Schutzfeldpaare gleichzeitig
+  // ausgewählt").
   s.contamination_warning = contamination_warning_;
   s.fault = state_ == ScannerState::kError || any_fault_latched();
   s.restart_interlock = interlock_ && state_ == ScannerState::kMeasuring;

@@ -1,11 +1,18 @@
 #pragma once
-// The RS4 scanner model (spec/rs4-profisafe.md §1, §3, §6; manual §4.3, §5.1, §7.1).
+// The RS4 scanner model ([RS4 manual §2.3, §2.4, §5.1, §5.2.3, §4.3, §7.1]).
 // A pure core: inputs and `now` in, state and the next deadline out; no clock reads,
 // no I/O. Behaviour and the modelling decisions are documented in docs/rs4-scanner.md.
 //
-// Safety rule (STYLE.md habit 7): one value per fault (FaultTable), one predicate
-// decides whether the OSSDs may be on (Scanner::ossd_may_be_on), and only one function
-// writes the OSSD (Scanner::apply_ossd); every other path leaves it off.
+// Safety rule ([docs/design.md#one-predicate-for-the-safe-state]): one value per fault
+// (FaultTable), one predicate decides whether the OSSDs may be on (Scanner::ossd_may_be_on), and
+// only one function writes the OSSD (Scanner::apply_ossd); every other path leaves it off.
+
+#include "rs4/scanner/faults.h"
+#include "rs4/scanner/field_evaluation.h"
+#include "rs4/scanner/parameter_set.h"
+#include "rs4/scanner/scene.h"
+
+#include <boost/outcome/std_result.hpp>
 
 #include <array>
 #include <chrono>
@@ -13,23 +20,16 @@
 #include <cstdint>
 #include <optional>
 
-#include <boost/outcome/std_result.hpp>
-
-#include "rs4/scanner/faults.h"
-#include "rs4/scanner/field_evaluation.h"
-#include "rs4/scanner/parameter_set.h"
-#include "rs4/scanner/scene.h"
-
 namespace rs4sim::rs4::scanner {
 
 using TimePoint = std::chrono::steady_clock::time_point;
 
-// Restart pulse rule (manual §4.3: "zwischen 0,12 und 5 Sekunden"), both ends included.
+// Restart pulse rule ([RS4 manual §4.3]: "zwischen 0,12 und 5 Sekunden"), both ends included.
 inline constexpr std::chrono::milliseconds kRestartPulseMin{120};
 inline constexpr std::chrono::milliseconds kRestartPulseMax{5000};
 
-struct ScannerConfig {                          // simulation settings, not RS4 parameters
-  std::chrono::milliseconds boot_duration{30000};   // §7.1.1 "nach ca. 30 Sekunden"
+struct ScannerConfig {                              // simulation settings, not RS4 parameters
+  std::chrono::milliseconds boot_duration{30000};   // [RS4 manual §7.1.1] "nach ca. 30 Sekunden"
   std::chrono::milliseconds scan_period{40};        // 25 revolutions per second
   std::uint8_t contamination_warning_percent = 50;  // → warning (0x54), warning output
   std::uint8_t contamination_fault_percent = 80;    // → fault (0x53), OSSD off
@@ -37,7 +37,7 @@ struct ScannerConfig {                          // simulation settings, not RS4 
 };
 
 // The scanner model's operating state; values as option 1 bits 2..4 of its telegrams
-// (§6, protocol::Option1State), kOff = powered off (no telegrams).
+// ([RS4 manual §5.2.3], protocol::Option1State), kOff = powered off (no telegrams).
 enum class ScannerState : std::uint8_t {
   kOff = 0,
   kInitialisation = 1,
@@ -47,7 +47,7 @@ enum class ScannerState : std::uint8_t {
 };
 const char* to_string(ScannerState s) noexcept;
 
-struct Rs4Event {                               // content of 0x53 / 0x54 (§5.2.3.2/3)
+struct Rs4Event {  // content of 0x53 / 0x54 ([RS4 manual §5.2.3.2, §5.2.3.3])
   enum class Kind : std::uint8_t { kError, kWarning };
   Kind kind = Kind::kError;
   std::uint16_t number = 0;
@@ -57,28 +57,29 @@ struct Rs4Event {                               // content of 0x53 / 0x54 (§5.2
 };
 
 struct ScanResult {
-  std::uint32_t scan_number = 0;                // value of the scan counter (§6.1)
+  std::uint32_t scan_number = 0;  // value of the scan counter ([RS4 manual §5.2.3.4])
   TimePoint at{};
-  Contour contour{};                            // mm per segment, kNoEchoMm = no echo
-  FieldFlags first;                             // the active (first selected) pair
-  FieldFlags second;                            // pair being left in a switch-over
+  Contour contour{};  // mm per segment, kNoEchoMm = no echo
+  FieldFlags first;   // the active (first selected) pair
+  FieldFlags second;  // pair being left in a switch-over
   std::uint8_t first_pair = 0;
-  std::uint8_t second_pair = 0;                 // 0 = no switch-over in this scan
+  std::uint8_t second_pair = 0;  // 0 = no switch-over in this scan
 };
 
-struct ScannerStatus {                          // everything the cyclic byte and option 2/3 need
+struct ScannerStatus {  // everything the cyclic byte and option 2/3 need
   ScannerState state = ScannerState::kOff;
   bool ossd = false;
-  bool warning_output = false;                  // true = set/active (the adapter inverts, §3.1)
-  bool protective_violated = false;             // option 2 bit 0 / input bit 1
-  bool warning_violated = false;                // option 2 bit 1 / input bit 0
-  bool contamination_warning = false;           // option 2 bit 2
-  bool fault = false;                           // option 2 bit 3
-  bool restart_interlock = false;               // option 2 bit 4
-  bool second_protective_violated = false;      // option 2 bit 5
-  bool second_warning_violated = false;         // option 2 bit 6
-  std::uint8_t first_pair = 0;                  // option 3 bits 0..2
-  std::uint8_t second_pair = 0;                 // option 3 bits 3..5
+  bool warning_output = false;              // true = set/active (the adapter inverts,
+                                            // [RS4 manual §5.1.1])
+  bool protective_violated = false;         // option 2 bit 0 / input bit 1
+  bool warning_violated = false;            // option 2 bit 1 / input bit 0
+  bool contamination_warning = false;       // option 2 bit 2
+  bool fault = false;                       // option 2 bit 3
+  bool restart_interlock = false;           // option 2 bit 4
+  bool second_protective_violated = false;  // option 2 bit 5
+  bool second_warning_violated = false;     // option 2 bit 6
+  std::uint8_t first_pair = 0;              // option 3 bits 0..2
+  std::uint8_t second_pair = 0;             // option 3 bits 3..5
   bool restart_held = false;
   std::uint8_t contamination_percent = 0;
   std::uint32_t scan_counter = 0;
@@ -91,7 +92,7 @@ struct ScannerCounters {
   std::uint64_t restart_accepted = 0;
   std::uint64_t restart_too_short = 0;
   std::uint64_t restart_too_long = 0;
-  std::uint64_t restart_without_effect = 0;     // accepted pulse that changed nothing
+  std::uint64_t restart_without_effect = 0;  // accepted pulse that changed nothing
   std::uint64_t field_pair_switches = 0;
   std::uint64_t faults = 0;
   std::uint64_t events_dropped = 0;
@@ -113,23 +114,23 @@ class Scanner {
   // Inputs from the adapter / the harness.
   void set_restart_input(bool high, TimePoint now);
   void select_field_pair(std::uint8_t pair, TimePoint now);
-  void set_contamination(std::uint8_t percent, TimePoint now);   // clamped to 100 %
+  void set_contamination(std::uint8_t percent, TimePoint now);  // clamped to 100 %
   boost::outcome_v2::std_result<void> inject_fault(Fault fault, TimePoint now);
   boost::outcome_v2::std_result<void> clear_fault(Fault fault, TimePoint now);
-  Scene& edit_scene(TimePoint now);             // edits take effect at the next scan
+  Scene& edit_scene(TimePoint now);  // edits take effect at the next scan
 
-  // Parametrisation (§7.2: OSSD off while the set changes). The identity stays the
+  // Parametrisation ([RS4 manual §5.3.2]: OSSD off while the set changes). The identity stays the
   // device's; use merge_download() to keep passwords on a proxy download.
   boost::outcome_v2::std_result<void> enter_configuration(TimePoint now);
   boost::outcome_v2::std_result<void> set_parameters(const ParameterSet& set, TimePoint now);
   boost::outcome_v2::std_result<void> leave_configuration(TimePoint now);
-  // §4: when a proxy upload/download fails the device falls back to factory settings.
-  // Keeps identity and user passwords; a running scanner makes a new start.
+  // [RS4 manual §7.1, §7.2]: when a proxy upload/download fails the device falls back to factory
+  // settings. Keeps identity and user passwords; a running scanner makes a new start.
   void reset_to_factory_default(TimePoint now);
   // True while the set equals the factory default apart from identity and passwords
-  // (what the proxy reports as CONFIG_SET_TO_DEFAULT, §4 scenario 1).
+  // (what the proxy reports as CONFIG_SET_TO_DEFAULT, [RS4 manual §7.1, §7.2] scenario 1).
   [[nodiscard]] bool factory_settings() const;
-  [[nodiscard]] std::uint32_t parameter_checksum() const;   // CRC-32 of encode(parameters())
+  [[nodiscard]] std::uint32_t parameter_checksum() const;  // CRC-32 of encode(parameters())
 
   // Observation.
   [[nodiscard]] bool ossd() const noexcept { return ossd_; }
@@ -172,18 +173,18 @@ class Scanner {
   ScannerState state_ = ScannerState::kOff;
   TimePoint boot_end_{};
   TimePoint next_scan_{};
-  bool steady_ = false;                         // the next due scans change nothing but counters
+  bool steady_ = false;  // the next due scans change nothing but counters
   bool ossd_ = false;
 
   bool restart_held_ = false;
   TimePoint restart_pressed_at_{};
-  bool interlock_ = false;                      // start/restart interlock waits for a pulse
-  std::uint32_t violated_scans_ = 0;            // consecutive, saturates at T/40 ms
+  bool interlock_ = false;            // start/restart interlock waits for a pulse
+  std::uint32_t violated_scans_ = 0;  // consecutive, saturates at T/40 ms
   bool scanned_since_start_ = false;
 
-  std::uint8_t requested_pair_ = 1;             // the input (SF1..4 / cyclic bits 0..2)
+  std::uint8_t requested_pair_ = 1;  // the input (SF1..4 / cyclic bits 0..2)
   std::uint8_t active_pair_ = 0;
-  std::uint8_t second_pair_ = 0;                // pair being left until the next scan
+  std::uint8_t second_pair_ = 0;  // pair being left until the next scan
 
   std::uint8_t contamination_percent_ = 0;
   bool contamination_warning_ = false;

@@ -1,13 +1,13 @@
 // Inputs of the scanner model: restart button/bit, field pair selection, faults,
 // window contamination, configuration (docs/rs4-scanner.md).
-#include <algorithm>
-
 #include "rs4/scanner/parameter_codec.h"
 #include "rs4/scanner/scanner.h"
 
+#include <algorithm>
+
 namespace rs4sim::rs4::scanner {
 
-// ----- restart (manual §4.3, §5.1.2 bit 7) ---------------------------------------------
+// ----- restart ([RS4 manual §4.3, §5.1.2] bit 7) ---------------------------------------------
 
 // While the input is high the OSSDs are off. On release the pulse counts only if it
 // lasted 0.12 s … 5 s (both included); shorter or longer pulses are ignored.
@@ -40,14 +40,15 @@ void Scanner::on_restart_pulse(TimePoint at) {
     start_measuring(at);
     return;
   }
-  if (state_ == ScannerState::kMeasuring && interlock_ && scanned_since_start_ && violated_scans_ == 0) {
+  if (state_ == ScannerState::kMeasuring && interlock_ && scanned_since_start_ &&
+      violated_scans_ == 0) {
     interlock_ = false;
     return;
   }
   ++counters_.restart_without_effect;
 }
 
-// ----- field pairs (§5.1.2 bits 0..2, option 3) -----------------------------------------
+// ----- field pairs ([RS4 manual §5.1.2] bits 0..2, option 3) -------------------------------------
 
 void Scanner::select_field_pair(std::uint8_t pair, TimePoint now) {
   advance(now);
@@ -65,7 +66,8 @@ void Scanner::request_pair(std::uint8_t pair, TimePoint at) {
   if (pair < 1 || pair > kFieldPairCount) {
     raise_fault(Fault::kFieldPairInvalid, pair, at);
   } else if (!permits(params_, active_pair_, pair)) {
-    raise_fault(Fault::kFieldPairSequence, static_cast<std::uint16_t>(active_pair_ << 8U | pair), at);
+    raise_fault(Fault::kFieldPairSequence, static_cast<std::uint16_t>(active_pair_ << 8U | pair),
+                at);
   } else {
     second_pair_ = active_pair_;
     active_pair_ = pair;
@@ -118,7 +120,7 @@ bool Scanner::any_fault_latched() const noexcept {
   return std::any_of(faults_.begin(), faults_.end(), [](const FaultState& f) { return f.latched; });
 }
 
-// ----- window contamination (§5.1.1 bit 6, §5.2.3.3) -----------------------------------
+// ----- window contamination ([RS4 manual §5.1.1] bit 6, [RS4 manual §5.2.3.3]) -------------------
 
 void Scanner::set_contamination(std::uint8_t percent, TimePoint now) {
   advance(now);
@@ -131,8 +133,8 @@ void Scanner::set_contamination(std::uint8_t percent, TimePoint now) {
 void Scanner::update_contamination(TimePoint at) {
   const bool warning = contamination_percent_ >= config_.contamination_warning_percent;
   if (warning && !contamination_warning_) {
-    push_event(Rs4Event{Rs4Event::Kind::kWarning, kWarningContaminationNumber, contamination_percent_,
-                        kWarningContaminationFunction, at});
+    push_event(Rs4Event{Rs4Event::Kind::kWarning, kWarningContaminationNumber,
+                        contamination_percent_, kWarningContaminationFunction, at});
   }
   contamination_warning_ = warning;
   auto& fault = faults_[static_cast<std::size_t>(Fault::kWindowContaminated)];
@@ -143,7 +145,7 @@ void Scanner::update_contamination(TimePoint at) {
   }
 }
 
-// ----- configuration (§7.2: OSSD off while the RS4's set changes) -----------------------
+// ----- configuration ([RS4 manual §5.3.2]: OSSD off while the RS4's set changes) -----------------
 
 boost::outcome_v2::std_result<void> Scanner::enter_configuration(TimePoint now) {
   advance(now);
@@ -154,14 +156,15 @@ boost::outcome_v2::std_result<void> Scanner::enter_configuration(TimePoint now) 
   return boost::outcome_v2::success();
 }
 
-boost::outcome_v2::std_result<void> Scanner::set_parameters(const ParameterSet& set, TimePoint now) {
+boost::outcome_v2::std_result<void> Scanner::set_parameters(const ParameterSet& set,
+                                                            TimePoint now) {
   advance(now);
   if (state_ != ScannerState::kConfiguration && state_ != ScannerState::kOff) {
     return ScannerError::kNotInConfiguration;
   }
   if (validate(set)) return ScannerError::kInvalidParameterSet;
   params_ = set;
-  params_.identity = config_.identity;   // the serial number belongs to the device
+  params_.identity = config_.identity;  // the serial number belongs to the device
   return boost::outcome_v2::success();
 }
 

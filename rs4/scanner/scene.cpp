@@ -1,11 +1,11 @@
 #include "rs4/scanner/scene.h"
 
+#include "rs4/scanner/errors.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
-
-#include "rs4/scanner/errors.h"
 
 namespace rs4sim::rs4::scanner {
 namespace {
@@ -38,7 +38,7 @@ void hit_segment(const BeamTable& beams, std::size_t n, Point p, Point q, Work& 
   const Point d{beams.cos[n], beams.sin[n]};
   const Point e{q.x - p.x, q.y - p.y};
   const double denom = cross(d, e);
-  if (std::abs(denom) < 1e-12) return;                  // parallel to the beam
+  if (std::abs(denom) < 1e-12) return;  // parallel to the beam
   const double t = cross(p, e) / denom;
   const double u = cross(p, d) / denom;
   if (t < 0.0 || u < 0.0 || u > 1.0) return;
@@ -47,14 +47,14 @@ void hit_segment(const BeamTable& beams, std::size_t n, Point p, Point q, Work& 
 
 void render_edge(const BeamTable& beams, Point p, Point q, Work& best) {
   const auto each = [&](std::size_t n) { hit_segment(beams, n, p, q, best); };
-  if (std::abs(cross(p, q)) < 1e-9) {                   // on a line through the scanner
+  if (std::abs(cross(p, q)) < 1e-9) {  // on a line through the scanner
     for (std::size_t n = 0; n < kSegmentCount; ++n) each(n);
     return;
   }
   double a1 = angle_deg(p);
   double a2 = angle_deg(q);
   if (a1 > a2) std::swap(a1, a2);
-  if (a2 - a1 > 180.0) {                                 // the arc passes ±180°
+  if (a2 - a1 > 180.0) {  // the arc passes ±180°
     std::swap(a1, a2);
     a2 += 360.0;
   }
@@ -64,7 +64,7 @@ void render_edge(const BeamTable& beams, Point p, Point q, Work& best) {
 void render_circle(const BeamTable& beams, const Circle& c, Work& best) {
   const double cc = c.centre.x * c.centre.x + c.centre.y * c.centre.y;
   const double rr = c.radius * c.radius;
-  const bool inside = cc <= rr;                          // scanner within the outline
+  const bool inside = cc <= rr;  // scanner within the outline
   const auto each = [&](std::size_t n) {
     const double b = beams.cos[n] * c.centre.x + beams.sin[n] * c.centre.y;
     const double disc = b * b - (cc - rr);
@@ -98,7 +98,8 @@ void render_shape(const BeamTable& beams, const Shape& shape, Work& best) {
     render_circle(beams, *c, best);
   } else if (const auto* poly = std::get_if<Polygon>(&shape)) {
     const auto& v = poly->vertices;
-    for (std::size_t i = 0; i < v.size(); ++i) render_edge(beams, v[i], v[(i + 1) % v.size()], best);
+    for (std::size_t i = 0; i < v.size(); ++i)
+      render_edge(beams, v[i], v[(i + 1) % v.size()], best);
   } else if (const auto* w = std::get_if<Wall>(&shape)) {
     render_edge(beams, w->a, w->b, best);
   } else if (const auto* p = std::get_if<PointObstacle>(&shape)) {
@@ -136,7 +137,8 @@ outcome::std_result<void> check_shape(const Shape& shape) {
     if (c->radius <= 0.0) return SceneError::kBadRadius;
   } else if (const auto* poly = std::get_if<Polygon>(&shape)) {
     if (poly->vertices.size() < 3) return SceneError::kTooFewVertices;
-    if (!std::all_of(poly->vertices.begin(), poly->vertices.end(), finite)) return SceneError::kNotFinite;
+    if (!std::all_of(poly->vertices.begin(), poly->vertices.end(), finite))
+      return SceneError::kNotFinite;
   } else if (const auto* w = std::get_if<Wall>(&shape)) {
     if (!finite(w->a) || !finite(w->b)) return SceneError::kNotFinite;
     if (w->a.x == w->b.x && w->a.y == w->b.y) return SceneError::kDegenerateWall;
@@ -224,8 +226,10 @@ void Scene::render(Contour& out) const noexcept {
 std::size_t Scene::heap_bytes() const noexcept {
   std::size_t bytes = obstacles_.capacity() * sizeof(Obstacle);
   for (const Obstacle& o : obstacles_) {
-    if (const auto* poly = std::get_if<Polygon>(&o.shape)) bytes += poly->vertices.capacity() * sizeof(Point);
-    if (const auto* raw = std::get_if<RawContour>(&o.shape)) bytes += raw->mm.capacity() * sizeof(std::uint16_t);
+    if (const auto* poly = std::get_if<Polygon>(&o.shape))
+      bytes += poly->vertices.capacity() * sizeof(Point);
+    if (const auto* raw = std::get_if<RawContour>(&o.shape))
+      bytes += raw->mm.capacity() * sizeof(std::uint16_t);
   }
   return bytes;
 }

@@ -5,14 +5,14 @@
 // around the scanner models the walls of a room. Every scan renders the scene into a
 // 529-segment contour: the nearest hit along each beam, kNoEchoMm beyond the range.
 
+#include "rs4/scanner/geometry.h"
+
 #include <boost/outcome/std_result.hpp>
 
 #include <cstddef>
 #include <cstdint>
 #include <variant>
 #include <vector>
-
-#include "rs4/scanner/geometry.h"
 
 namespace rs4sim::rs4::scanner {
 
@@ -26,17 +26,17 @@ struct Circle {
   Point centre;
   double radius = 0;
 };
-struct Polygon {              // closed outline, convex or concave
+struct Polygon {  // closed outline, convex or concave
   std::vector<Point> vertices;
 };
-struct Wall {                 // a line segment
+struct Wall {  // a line segment
   Point a;
   Point b;
 };
-struct PointObstacle {        // a thin object: hits only the beam nearest to its angle
+struct PointObstacle {  // a thin object: hits only the beam nearest to its angle
   Point at;
 };
-struct RawContour {           // 529 distances in mm (kNoEchoMm = nothing), merged by min
+struct RawContour {  // 529 distances in mm (kNoEchoMm = nothing), merged by min
   std::vector<std::uint16_t> mm;
 };
 using Shape = std::variant<Circle, Polygon, Wall, PointObstacle, RawContour>;

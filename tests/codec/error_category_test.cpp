@@ -1,6 +1,7 @@
 // codec::ErrorCategory: name and messages come from the enum's own functions.
-#include "codec/buffer_error.h"
 #include "codec/error_category.h"
+
+#include "codec/buffer_error.h"
 
 #include <gtest/gtest.h>
 

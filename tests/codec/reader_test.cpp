@@ -57,7 +57,7 @@ TEST(ReaderTest, ReadPastTheEndReturnsZeroAndKeepsTheFirstError) {
   EXPECT_EQ(r.u8(), 0xAB);
   EXPECT_EQ(r.u32_be(), 0U);  // does not fit: zero, error latched
   EXPECT_FALSE(r.ok());
-  EXPECT_EQ(r.u8(), 0);       // the two bytes left are not handed out after the error
+  EXPECT_EQ(r.u8(), 0);  // the two bytes left are not handed out after the error
   EXPECT_EQ(r.u16_le(), 0);
   EXPECT_TRUE(r.bytes(1).empty());
   EXPECT_EQ(r.remaining(), 0U);

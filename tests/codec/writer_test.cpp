@@ -49,7 +49,7 @@ TEST(WriterTest, UintBeWritesTheLowBytesHighFirst) {
   w.uint_be(0xABCD, 2);      // 3-4
   EXPECT_TRUE(w.ok());
   EXPECT_EQ(buffer, (std::array<std::uint8_t, 8>{0x12, 0x34, 0x56, 0xAB, 0xCD, 0, 0, 0}));
-  w.uint_be(0, 5);           // wider than 32 bits: an error, nothing written
+  w.uint_be(0, 5);  // wider than 32 bits: an error, nothing written
   EXPECT_FALSE(w.ok());
   EXPECT_EQ(w.size(), 5U);
 }
@@ -58,10 +58,10 @@ TEST(AppenderTest, AppendsUpToTheLimit) {
   boost::container::static_vector<std::uint8_t, 8> out{0x68};  // one byte already there
   Appender a(out, 4);
   const std::array<std::uint8_t, 2> data{0x01, 0x02};
-  a.bytes(data);     // 1-2
-  a.u8(0x03);        // 3 -> size 4 = limit
+  a.bytes(data);  // 1-2
+  a.u8(0x03);     // 3 -> size 4 = limit
   EXPECT_TRUE(a.ok());
-  a.u8(0x04);        // beyond the limit
+  a.u8(0x04);  // beyond the limit
   EXPECT_FALSE(a.ok());
   EXPECT_EQ(out.size(), 4U);
   EXPECT_EQ(out[3], 0x03);

@@ -1,4 +1,4 @@
-// Cfg identifiers (profibus-dp.md §2.4): known answers from the spec's examples.
+// Cfg identifiers ([IEC 61158-6-3 Chk_Cfg/Get_Cfg]): known answers from the cited examples.
 #include "gsd/cfg.h"
 
 #include <gtest/gtest.h>
@@ -25,7 +25,8 @@ TEST(GsdCfg, CompactIdentifiers) {
 }
 
 TEST(GsdCfg, SpecialFormatProfisafeModule) {
-  // WAGO 75x-661 (§2.4 example): in/out, 4 manufacturer bytes, 5 bytes out, 5 bytes in.
+  // WAGO 75x-661 ([IEC 61158-6-3 Chk_Cfg/Get_Cfg] example): in/out, 4 manufacturer bytes, 5 bytes
+  // out, 5 bytes in.
   const std::vector<std::uint8_t> cfg{
       0xC4,                    // +0 special: 11 = output then input length byte, 4 manuf. bytes
       0x84,                    // +1 output length: b7 consistent, 4+1 = 5 bytes
@@ -44,7 +45,8 @@ TEST(GsdCfg, SpecialFormatProfisafeModule) {
 }
 
 TEST(GsdCfg, SpecialFormatCp5613Example) {
-  // §2.4: 0xC3 0xCF 0xC7 m m m = outputs 16 words consistent, inputs 8 words consistent.
+  // [IEC 61158-6-3 Chk_Cfg/Get_Cfg]: 0xC3 0xCF 0xC7 m m m = outputs 16 words consistent, inputs 8
+  // words consistent.
   const std::vector<std::uint8_t> cfg{0xC3, 0xCF, 0xC7, 0x01, 0x02, 0x03, 0x00};
   auto l = decode_cfg(cfg);
   ASSERT_TRUE(l);

@@ -1,6 +1,6 @@
-// `rs4sim gsd` run as a process: the output an engineer types into a master, checked
-// against the spec (CRC1 by a reference implementation written here from
-// profisafe-v1.md §2) and the refusals of bad input.
+// `rs4sim gsd` run as a process: the output an engineer types into a master, checked against the
+// sources (CRC1 by a reference implementation written here from [IEC 61784-3-3 CRC1]) and the
+// refusals of bad input.
 #include "test_util.h"
 
 #include <gtest/gtest.h>
@@ -26,7 +26,8 @@ ProcessResult run(const std::string& args) {
   if (!pipe) return r;
   std::array<char, 4096> buffer{};
   std::size_t n = 0;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.output.append(buffer.data(), n);
+  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+    r.output.append(buffer.data(), n);
   const int status = ::pclose(pipe);
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
@@ -73,17 +74,21 @@ TEST(GsdCli, DefaultPrm) {
   EXPECT_NE(r.output.find("Chk_Cfg: C0 84 84\n"), std::string::npos) << r.output;
   // DPV1 status, F header, flags SIL2/2-byte CRC, src 1, dst 504, WD 10 ms, CRC1.
   const std::string crc = crc_hex(reference_crc1({0x14, 0x00, 0x00, 0x01, 0x01, 0xF8, 0x00, 0x0A}));
-  EXPECT_NE(r.output.find("User_Prm_Data: 80 24 0B 0E 05 01 00 14 00 00 01 01 F8 00 0A " + crc + "\n"),
-            std::string::npos) << r.output;
+  EXPECT_NE(
+      r.output.find("User_Prm_Data: 80 24 0B 0E 05 01 00 14 00 00 01 01 F8 00 0A " + crc + "\n"),
+      std::string::npos)
+      << r.output;
 }
 
 TEST(GsdCli, Address100Watchdog500Source2002) {
   const ProcessResult r = run("gsd --prm --address 100 --f-wd-time 500 --f-source-add 2002");
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  // F_Dest_Add = 500 + 100 = 600 = 0x0258 (RS4 manual §4.5).
+  // F_Dest_Add = 500 + 100 = 600 = 0x0258 ([RS4 manual §4.5]).
   const std::string crc = crc_hex(reference_crc1({0x14, 0x00, 0x07, 0xD2, 0x02, 0x58, 0x01, 0xF4}));
-  EXPECT_NE(r.output.find("User_Prm_Data: 80 24 0B 0E 05 01 00 14 00 07 D2 02 58 01 F4 " + crc + "\n"),
-            std::string::npos) << r.output;
+  EXPECT_NE(
+      r.output.find("User_Prm_Data: 80 24 0B 0E 05 01 00 14 00 07 D2 02 58 01 F4 " + crc + "\n"),
+      std::string::npos)
+      << r.output;
   EXPECT_NE(r.output.find("F_Dest_Add=600"), std::string::npos);
 }
 
@@ -93,9 +98,12 @@ TEST(GsdCli, JsonOutput) {
   const std::string crc = crc_hex(reference_crc1({0x15, 0x00, 0x00, 0x01, 0x01, 0xF8, 0x00, 0x0A}));
   EXPECT_NE(r.output.find("\"ident_number\": \"0x5234\""), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("\"chk_cfg\": \"C0 84 84\""), std::string::npos);
-  EXPECT_NE(r.output.find("\"user_prm_data\": \"80 24 0B 0E 05 01 00 15 00 00 01 01 F8 00 0A " + crc + "\""),
-            std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("{\"name\": \"F_Check_SeqNr\", \"offset\": 7, \"value\": 1}"), std::string::npos);
+  EXPECT_NE(r.output.find("\"user_prm_data\": \"80 24 0B 0E 05 01 00 15 00 00 01 01 F8 00 0A " +
+                          crc + "\""),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("{\"name\": \"F_Check_SeqNr\", \"offset\": 7, \"value\": 1}"),
+            std::string::npos);
 }
 
 TEST(GsdCli, RefusesOutOfRangeValues) {
@@ -104,7 +112,8 @@ TEST(GsdCli, RefusesOutOfRangeValues) {
   EXPECT_NE(r.output.find("F_WD_Time = 5 is out of range 10..1000"), std::string::npos) << r.output;
   r = run("gsd --prm --f-source-add 65535");
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.output.find("F_Source_Add = 65535 is out of range 1..65534"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("F_Source_Add = 65535 is out of range 1..65534"), std::string::npos)
+      << r.output;
   r = run("gsd --prm --address 127");
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("--address"), std::string::npos) << r.output;
@@ -120,11 +129,13 @@ TEST(GsdCli, RefusesOutOfRangeValues) {
 
 TEST(GsdCli, ForeignGsdFileAndModule) {
   const std::string file = std::string(RS4SIM_GSD_CORPUS) + "/modular_dpv1.gsd";
-  ProcessResult r = run("gsd --prm --gsd " + file + " --module 'DI 8' --module 'AI 2' --set Mode=5 --set Offset=-100");
+  ProcessResult r = run("gsd --prm --gsd " + file +
+                        " --module 'DI 8' --module 'AI 2' --set Mode=5 --set Offset=-100");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("Ident_Number: 0xB756\n"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("Chk_Cfg: 10 51\n"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("User_Prm_Data: 80 00 00 55 AA 01 2C 9C\n"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("User_Prm_Data: 80 00 00 55 AA 01 2C 9C\n"), std::string::npos)
+      << r.output;
   r = run("gsd --prm --gsd " + file + " --module 'DI 9'");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.output.find("no module \"DI 9\""), std::string::npos) << r.output;
@@ -143,7 +154,8 @@ TEST(GsdCli, MalformedGsdFileReportsFileAndLine) {
   }
   const ProcessResult r = run("gsd --prm --gsd " + path.string());
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.output.find(path.string() + ":3: Module is not closed (EndModule missing)"), std::string::npos)
+  EXPECT_NE(r.output.find(path.string() + ":3: Module is not closed (EndModule missing)"),
+            std::string::npos)
       << r.output;
   std::filesystem::remove(path);
 }

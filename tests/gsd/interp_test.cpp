@@ -1,5 +1,6 @@
-// GSD meaning (profibus-dp.md §5.2–§5.6) of the corpus files under corpus/.
+// GSD meaning ([PROFIBUS GSD spec]) of the corpus files under corpus/.
 #include "gsd/interp.h"
+
 #include "test_util.h"
 
 #include <gtest/gtest.h>
@@ -30,7 +31,8 @@ TEST(GsdInterp, CompactDpv0WithLegacyUserPrmData) {
   EXPECT_EQ(d.user_prm.defaults, (std::vector<std::uint8_t>{0x01, 0x02, 0xFF}));
   ASSERT_EQ(d.modules.size(), 1U);
   EXPECT_EQ(d.modules[0].cfg, std::vector<std::uint8_t>{0x30});
-  EXPECT_EQ(d.modules[0].input_len, 1U);   // 0x30: in+out, 1 byte each (§2.4)
+  EXPECT_EQ(d.modules[0].input_len, 1U);  // 0x30: in+out, 1 byte each
+                                          // ([IEC 61158-6-3 Chk_Cfg/Get_Cfg])
   EXPECT_EQ(d.modules[0].output_len, 1U);
 }
 
@@ -72,7 +74,7 @@ TEST(GsdInterp, ModularDpv1WithExtUserPrmData) {
   const Module* ai = d.find_module("ai 2");  // names compare case-insensitively
   ASSERT_NE(ai, nullptr);
   EXPECT_EQ(ai->reference, 2U);
-  EXPECT_EQ(ai->input_len, 4U);            // 0x51: input, words, 2 words
+  EXPECT_EQ(ai->input_len, 4U);  // 0x51: input, words, 2 words
   EXPECT_EQ(ai->prm.length, 4U);
   EXPECT_EQ(ai->prm.defaults, (std::vector<std::uint8_t>{0xAA, 0, 0, 0}));
   EXPECT_EQ(d.find_module("DI 8")->info_text, "8 digital inputs");
@@ -84,7 +86,8 @@ TEST(GsdInterp, ProfisafeModuleWithFParameters) {
   const Module* f = d.find_module("75x-661 4FDI");
   ASSERT_NE(f, nullptr);
   EXPECT_EQ(f->reference, 6610U);
-  EXPECT_EQ(f->input_len, 5U);   // 0xC4 0x84 0x84 + 4 manufacturer bytes (§2.4)
+  EXPECT_EQ(f->input_len, 5U);  // 0xC4 0x84 0x84 + 4 manufacturer bytes
+                                // ([IEC 61158-6-3 Chk_Cfg/Get_Cfg])
   EXPECT_EQ(f->output_len, 5U);
   EXPECT_EQ(f->prm.length, 3U);
   ASSERT_TRUE(f->f_prm.has_value());

@@ -45,7 +45,7 @@ TEST(GsdShipped, ParsesWithOurParser) {
 TEST(GsdShipped, SupportsAllDpBaudRatesWithMaxTsdr) {
   const Device& dev = rs4sim_device().value();
   const std::pair<std::uint32_t, std::uint16_t> expected[] = {
-      {9600, 15}, {19200, 15}, {45450, 15}, {93750, 15}, {187500, 15},
+      {9600, 15},   {19200, 15},   {45450, 15},   {93750, 15},    {187500, 15},
       {500000, 15}, {1500000, 25}, {3000000, 50}, {6000000, 100}, {12000000, 200}};
   for (const auto& [bps, tsdr] : expected) {
     const BaudRate* b = dev.find_baud(bps);
@@ -66,7 +66,7 @@ TEST(GsdShipped, Dpv1Capabilities) {
   EXPECT_TRUE(v.diagnostic_alarm);
   EXPECT_TRUE(v.update_alarm);
   EXPECT_FALSE(v.process_alarm);
-  EXPECT_EQ(v.alarm_sequence_mode_count, 8);  // rs4-profisafe.md §7: sequence mode, 8 alarms
+  EXPECT_EQ(v.alarm_sequence_mode_count, 8);  // [RS4 manual §5.3]: sequence mode, 8 alarms
 }
 
 TEST(GsdShipped, OneProfisafeModuleOf5BytesEachWay) {
@@ -74,7 +74,7 @@ TEST(GsdShipped, OneProfisafeModuleOf5BytesEachWay) {
   ASSERT_EQ(dev.modules.size(), 1U);
   const Module& m = dev.modules[0];
   EXPECT_EQ(m.name, kRs4simModuleName);
-  // profisafe-v1.md §3: 1 data byte + status/control + consecutive number + CRC2 (2).
+  // [PROFIsafe V1.30 safety PDU]: 1 data byte + status/control + consecutive number + CRC2 (2).
   EXPECT_EQ(m.input_len, 5U);
   EXPECT_EQ(m.output_len, 5U);
   ASSERT_TRUE(m.f_prm.has_value());
@@ -82,7 +82,7 @@ TEST(GsdShipped, OneProfisafeModuleOf5BytesEachWay) {
 }
 
 TEST(GsdShipped, FParameterRangesAndDefaultsFollowTheManual) {
-  // rs4-profisafe.md §8.
+  // [RS4 manual §6.2, §6.3].
   const Device& dev = rs4sim_device().value();
   std::map<std::string, const ExtParam*> by_name;
   for (const auto& [n, p] : dev.params) by_name[p.name] = &p;
@@ -91,10 +91,10 @@ TEST(GsdShipped, FParameterRangesAndDefaultsFollowTheManual) {
     std::int64_t def, min, max;
     bool changeable;
   } expected[] = {
-      {"F_Check_SeqNr", 0, 0, 1, true},      {"F_Check_iPar", 0, 0, 0, false},
-      {"F_SIL", 1, 1, 1, false},             {"F_CRC_Length", 1, 1, 1, false},
-      {"F_Block_ID", 0, 0, 0, false},        {"F_Par_Version", 0, 0, 0, false},
-      {"F_Source_Add", 1, 1, 65534, true},   {"F_Dest_Add", 504, 500, 626, true},
+      {"F_Check_SeqNr", 0, 0, 1, true},    {"F_Check_iPar", 0, 0, 0, false},
+      {"F_SIL", 1, 1, 1, false},           {"F_CRC_Length", 1, 1, 1, false},
+      {"F_Block_ID", 0, 0, 0, false},      {"F_Par_Version", 0, 0, 0, false},
+      {"F_Source_Add", 1, 1, 65534, true}, {"F_Dest_Add", 504, 500, 626, true},
       {"F_WD_Time", 10, 10, 1000, true},
   };
   for (const auto& e : expected) {
@@ -115,7 +115,8 @@ TEST(GsdShipped, DefaultFParCrcInTheFileIsTheCrc1OfTheDefaults) {
   const Module& m = dev.modules[0];
   // The const bytes +12..+13 of the F block and the ExtUserPrmData default must agree
   // with what the configuration computes for the default values.
-  EXPECT_EQ(m.f_prm->defaults[12] << 8 | m.f_prm->defaults[13], c.value().f_parameters[0].parameters.par_crc);
+  EXPECT_EQ(m.f_prm->defaults[12] << 8 | m.f_prm->defaults[13],
+            c.value().f_parameters[0].parameters.par_crc);
   for (const auto& [n, p] : dev.params) {
     if (p.name == "F_Par_CRC") {
       EXPECT_EQ(p.default_value, c.value().f_parameters[0].parameters.par_crc);
@@ -132,7 +133,8 @@ TEST(GsdShipped, LayoutConstantsMatchTheConfiguration) {
   EXPECT_TRUE(std::equal(kRs4simFBlockHeader.begin(), kRs4simFBlockHeader.end(),
                          prm.begin() + kRs4simFBlockHeaderOffset));
   EXPECT_EQ(c.value().f_parameters[0].offset, kRs4simFParametersOffset);
-  EXPECT_TRUE(std::equal(kRs4simCfg.begin(), kRs4simCfg.end(), c.value().cfg.begin(), c.value().cfg.end()));
+  EXPECT_TRUE(
+      std::equal(kRs4simCfg.begin(), kRs4simCfg.end(), c.value().cfg.begin(), c.value().cfg.end()));
 }
 
 TEST(GsdShipped, FParamDescCrcMatchesTheProjectsDefinition) {

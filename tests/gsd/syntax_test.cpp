@@ -1,5 +1,6 @@
-// GSD syntax (profibus-dp.md §5.1): logical lines, statements, values and blocks.
+// GSD syntax ([PROFIBUS GSD spec syntax]): logical lines, statements, values and blocks.
 #include "gsd/syntax.h"
+
 #include "test_util.h"
 
 #include <gtest/gtest.h>
@@ -114,8 +115,10 @@ TEST(GsdStatement, KeywordComparisonIgnoresCase) {
 }
 
 TEST(GsdParser, BlocksCollectTheirBodies) {
-  auto f = parse_syntax("#Profibus_DP\nA = 1\nPrmText = 3\nText(0) = \"x\"\nEndPrmText\n"
-                        "Module = \"m\" 0x10\n1\nEndModule\nB = 2\n", "f.gsd");
+  auto f = parse_syntax(
+      "#Profibus_DP\nA = 1\nPrmText = 3\nText(0) = \"x\"\nEndPrmText\n"
+      "Module = \"m\" 0x10\n1\nEndModule\nB = 2\n",
+      "f.gsd");
   ASSERT_TRUE(f) << f.error().what();
   const auto& e = f.value().entries;
   ASSERT_EQ(e.size(), 4U);
@@ -128,8 +131,8 @@ TEST(GsdParser, BlocksCollectTheirBodies) {
 }
 
 TEST(GsdParser, EveryCorpusFileParses) {
-  for (const char* name : {"compact_dpv0.gsd", "modular_dpv1.gsd", "profisafe_v2.gsd",
-                           "whitespace_comments.gsd"}) {
+  for (const char* name :
+       {"compact_dpv0.gsd", "modular_dpv1.gsd", "profisafe_v2.gsd", "whitespace_comments.gsd"}) {
     auto f = parse_syntax(gsd::testing::corpus(name), name);
     EXPECT_TRUE(f) << name << ": " << (f ? "" : f.error().what());
   }
@@ -140,11 +143,11 @@ TEST(GsdParser, WhitespaceCorpusKeepsLineNumbersAndJoinsContinuations) {
   ASSERT_TRUE(f) << f.error().what();
   const auto& e = f.value().entries;
   ASSERT_EQ(e.size(), 6U);
-  EXPECT_EQ(e[0].statement.line, 5);      // Ident_Number after the header on line 4
+  EXPECT_EQ(e[0].statement.line, 5);  // Ident_Number after the header on line 4
   EXPECT_EQ(e[1].statement.fields[0][0].text, "semi;colon \\ inside");
-  EXPECT_EQ(e[4].statement.line, 9);      // MaxTsdr_500 continued over lines 9..11
+  EXPECT_EQ(e[4].statement.line, 9);  // MaxTsdr_500 continued over lines 9..11
   EXPECT_EQ(e[4].statement.fields[0][0].number, 100);
-  ASSERT_TRUE(e[5].body.has_value());     // Module … endmodule (lower case)
+  ASSERT_TRUE(e[5].body.has_value());  // Module … endmodule (lower case)
   EXPECT_EQ(e[5].statement.fields[1].size(), 2U);
 }
 

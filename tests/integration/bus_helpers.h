@@ -8,11 +8,11 @@
 namespace rs4sim::integration {
 
 using namespace std::chrono_literals;
+using dp::Duration;
+using dp::TimePoint;
 using dp::devices::GenericBus;
 using dp::devices::GenericBusConfig;
 using dp::devices::GenericSlaveConfig;
-using dp::TimePoint;
-using dp::Duration;
 
 // Slave `a` gets a configuration that varies with its address: 1…4 bytes in and out.
 inline GenericSlaveConfig slave_config(std::uint8_t a) {

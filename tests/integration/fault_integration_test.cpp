@@ -1,6 +1,7 @@
-// Fault injection on the in-memory bus: lost and corrupted telegrams are retried (§1.8,
-// §4.4), a silent slave is reported lost and comes back, and the slave watchdog (§2.8)
-// drops a slave whose master falls silent; all on the manual clock.
+// Fault injection on the in-memory bus: lost and corrupted telegrams are retried
+// ([IEC 61158-4-3 FCB/FCV], [IEC 61158-6-3 slave supervision]), a silent slave is reported lost and
+// comes back, and the slave watchdog ([IEC 61158-6-3 watchdog]) drops a slave whose master falls
+// silent; all on the manual clock.
 #include "dp/master/master_error.h"
 #include "tests/integration/bus_helpers.h"
 
@@ -44,7 +45,8 @@ TEST_F(FaultIntegration, ADroppedReplyIsRetriedAndTheRepeatIsNotExecutedTwice) {
   b.bus().inject({FaultKind::kDrop, 5, 1, 1});
   b.run_for(100ms);
   EXPECT_EQ(retries(5), before + 1);
-  // The repeated Data_Exchange (same FCB) is answered from the stored reply (§1.8).
+  // The repeated Data_Exchange (same FCB) is answered from the stored reply
+  // ([IEC 61158-4-3 FCB/FCV]).
   EXPECT_GE(b.slave(5).slave().counters().repeats_answered, 1U);
   EXPECT_GE(b.slave(5).device().exchanges(), exchanges);
   EXPECT_EQ(b.slaves_in_data_exchange(), 3U);
@@ -81,15 +83,19 @@ TEST_F(FaultIntegration, ASilencedSlaveIsLostThenRecovers) {
 TEST_F(FaultIntegration, WatchdogDropsSlavesWhenTheMasterFallsSilentAndTheyComeBack) {
   b.bus().set_silenced(1, true);
   const TimePoint t0 = b.clock().now();
-  ASSERT_TRUE(b.run_until([&] { return b.slave(5).slave().state() == dp::slave::State::kWaitPrm; }, 1s));
-  // T_WD = 100 ms after the last telegram the slave received (§2.8).
+  ASSERT_TRUE(
+      b.run_until([&] { return b.slave(5).slave().state() == dp::slave::State::kWaitPrm; }, 1s));
+  // T_WD = 100 ms after the last telegram the slave received ([IEC 61158-6-3 watchdog]).
   EXPECT_LE(b.clock().now() - t0, 100ms);
   EXPECT_GE(b.clock().now() - t0, 85ms);
   EXPECT_EQ(b.slave(5).device().state(), dp::slave::State::kWaitPrm);
   b.bus().set_silenced(1, false);
-  ASSERT_TRUE(b.run_until([&] { return b.slaves_in_data_exchange() == 3 &&
-                                       b.slave(5).slave().state() == dp::slave::State::kDataExch; },
-                          2s));
+  ASSERT_TRUE(b.run_until(
+      [&] {
+        return b.slaves_in_data_exchange() == 3 &&
+               b.slave(5).slave().state() == dp::slave::State::kDataExch;
+      },
+      2s));
 }
 
 TEST_F(FaultIntegration, AConstantReplyDelayWithinTheSlotTimeIsHarmless) {

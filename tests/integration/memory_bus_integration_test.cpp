@@ -68,21 +68,24 @@ TEST(MemoryBusIntegration, Dpv1WriteReadAndAlarmRoundTrip) {
   const std::vector<std::uint8_t> record = {0xDE, 0xAD, 0xBE, 0xEF};
   auto wid = b.master().write(5, 3, 17, record);
   ASSERT_TRUE(wid);
-  ASSERT_TRUE(b.run_until([&] { return last_event<dp::master::Dpv1Result>(b.events()) != nullptr; }, 2s));
+  ASSERT_TRUE(
+      b.run_until([&] { return last_event<dp::master::Dpv1Result>(b.events()) != nullptr; }, 2s));
   const auto* w = last_event<dp::master::Dpv1Result>(b.events());
   EXPECT_EQ(w->id, wid.value());
   EXPECT_FALSE(w->error) << w->error.message();
   b.take_events();
   auto rid = b.master().read(5, 3, 17, 240);
   ASSERT_TRUE(rid);
-  ASSERT_TRUE(b.run_until([&] { return last_event<dp::master::Dpv1Result>(b.events()) != nullptr; }, 2s));
+  ASSERT_TRUE(
+      b.run_until([&] { return last_event<dp::master::Dpv1Result>(b.events()) != nullptr; }, 2s));
   const auto* r = last_event<dp::master::Dpv1Result>(b.events());
   EXPECT_FALSE(r->error) << r->error.message();
   EXPECT_EQ(std::vector<std::uint8_t>(r->data.begin(), r->data.end()), record);
   // Unknown record → negative response B0 (invalid index).
   b.take_events();
   ASSERT_TRUE(b.master().read(5, 9, 9, 4));
-  ASSERT_TRUE(b.run_until([&] { return last_event<dp::master::Dpv1Result>(b.events()) != nullptr; }, 2s));
+  ASSERT_TRUE(
+      b.run_until([&] { return last_event<dp::master::Dpv1Result>(b.events()) != nullptr; }, 2s));
   const auto* neg = last_event<dp::master::Dpv1Result>(b.events());
   ASSERT_TRUE(neg->negative);
   EXPECT_EQ(dp::pdu::to_wire(neg->negative->error_code_1), 0xB0);

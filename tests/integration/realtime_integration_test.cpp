@@ -19,13 +19,14 @@ namespace asio = boost::asio;
 namespace link = dp::link;
 
 // Generous FDL timing for a loaded machine: 9.6 kbit/s parameters with the largest slot
-// time §1.7 allows (16383 bit ≈ 1.7 s).
+// time [IEC 61158-4-3 bus parameters, timing] allows (16383 bit ≈ 1.7 s).
 dp::master::MasterConfig realtime_master(const GenericSlaveConfig& s) {
   dp::master::MasterConfig m;
   m.address = 2;
   m.bus = dp::master::BusParameters::defaults_for(dp::BaudRate::k9k6);
   m.bus.tsl = 16000;
-  m.claim_token = false;  // TTO = TSL·(6+2·TS) would be 16.7 s at this slot time (§1.7)
+  m.claim_token = false;  // TTO = TSL·(6+2·TS) would be 16.7 s at this slot time
+                          // ([IEC 61158-4-3 bus parameters, timing])
   m.cycle_target = 20ms;
   m.slaves.push_back(dp::devices::master_entry_for(s, 2000ms));
   return m;
@@ -37,8 +38,10 @@ class RealtimeScenario {
  public:
   // `make` builds the master-side and the slave-side transport on the scenario's io_context.
   explicit RealtimeScenario(const std::function<TransportPair(asio::io_context&)>& make)
-      : transports_(make(io)), master_(realtime_master(kSlave)),
-        rm_(io, clock_, *transports_.first), rs_(io, clock_, *transports_.second) {
+      : transports_(make(io)),
+        master_(realtime_master(kSlave)),
+        rm_(io, clock_, *transports_.first),
+        rs_(io, clock_, *transports_.second) {
     rm_.add(master_);
     rs_.add(slave_);
   }
@@ -107,7 +110,8 @@ TEST(RealtimeIntegration, MasterAndSlaveOverAPtyPair) {
   link::PseudoTerminal pty;
   RealtimeScenario scenario([&](asio::io_context& io) {
     TransportPair p;
-    p.second = std::make_unique<link::SerialTransport>(io, pty.release_master(), dp::BaudRate::k9k6, "pty");
+    p.second = std::make_unique<link::SerialTransport>(io, pty.release_master(), dp::BaudRate::k9k6,
+                                                       "pty");
     p.first = std::make_unique<link::SerialTransport>(io, pty.slave_path(), dp::BaudRate::k9k6);
     return p;
   });

@@ -1,5 +1,5 @@
-// CRC1 (F_Par_CRC) known answers, profisafe-v1.md §2 (VERIFIED vectors) and
-// rs4-profisafe.md §8 (the manual's dialog values give 0x5696 by the verified rule).
+// CRC1 (F_Par_CRC) known answers, [IEC 61784-3-3 CRC1] (VERIFIED vectors) and
+// [RS4 manual §6.2, §6.3] (the manual's dialog values give 0x5696 by the verified rule).
 #include "profisafe/crc.h"
 #include "profisafe/f_parameters.h"
 
@@ -48,7 +48,7 @@ TEST(ProfisafeCrc1, PublishedVector3WithIParCrcFedFirst) {
 }
 
 TEST(ProfisafeCrc1, ManualDialogValuesGive0x5696) {
-  // rs4-profisafe.md §8: SIL2, 2-byte CRC, V1, block 0, src 2002, dst 604, WD 500.
+  // [RS4 manual §6.2, §6.3]: SIL2, 2-byte CRC, V1, block 0, src 2002, dst 604, WD 500.
   const Block8 b{0x14, 0x00, 0x07, 0xD2, 0x02, 0x5C, 0x01, 0xF4};
   EXPECT_EQ(crc1(b), 0x5696);
 }

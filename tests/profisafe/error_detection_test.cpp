@@ -1,4 +1,5 @@
-// Error detection of the RS4's 5-byte V1 PDUs (profisafe-v1.md §6), exhaustively over all
+// Error detection of the RS4's 5-byte V1 PDUs
+// ([docs/profisafe.md#error-detection-measured-by-error_detection_testcpp]), exhaustively over all
 // positions, for both directions, F_Check_SeqNr 0 and 1, and every named Crc2Variant.
 //
 // A corrupted PDU counts as detected when the receiver does not accept it as the expected
@@ -30,10 +31,12 @@ struct Case {
 
 std::vector<Case> cases() {
   std::vector<Case> out;
-  const std::array<Crc2Variant::Order, 2> orders{Crc2Variant::Order::kReversed, Crc2Variant::Order::kForward};
+  const std::array<Crc2Variant::Order, 2> orders{Crc2Variant::Order::kReversed,
+                                                 Crc2Variant::Order::kForward};
   const std::array<Crc2Variant::SeqPosition, 2> positions{Crc2Variant::SeqPosition::kFirst,
                                                           Crc2Variant::SeqPosition::kLast};
-  const std::array<Crc2Variant::Preset, 2> presets{Crc2Variant::Preset::kCrc1, Crc2Variant::Preset::kZero};
+  const std::array<Crc2Variant::Preset, 2> presets{Crc2Variant::Preset::kCrc1,
+                                                   Crc2Variant::Preset::kZero};
   for (bool seq : {false, true}) {
     for (auto order : orders) {
       for (auto pos : positions) {
@@ -44,8 +47,8 @@ std::vector<Case> cases() {
           c.variant.order = order;
           c.variant.seq_position = pos;
           c.variant.preset = preset;
-          const std::string n = std::string("seqnr") + (seq ? "1 " : "0 ") + to_string(order) + " " +
-                                to_string(pos) + " " + to_string(preset);
+          const std::string n = std::string("seqnr") + (seq ? "1 " : "0 ") + to_string(order) +
+                                " " + to_string(pos) + " " + to_string(preset);
           out.push_back({n + " device->host", c, 0x80, status_bit::kFvActivated, 17});
           out.push_back({n + " host->device", c, 0x41, control_bit::kActivateFv, 200});
         }
@@ -62,7 +65,8 @@ std::uint64_t to_bits(const std::array<std::uint8_t, 5>& b) {
 }
 std::array<std::uint8_t, 5> to_bytes(std::uint64_t v) {
   std::array<std::uint8_t, 5> b{};
-  for (int i = 4; i >= 0; --i, v >>= 8) b[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(v);
+  for (int i = 4; i >= 0; --i, v >>= 8)
+    b[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(v);
   return b;
 }
 
@@ -77,7 +81,8 @@ std::uint64_t undetected(const Case& c, std::uint64_t pdu, unsigned weight, unsi
                          std::uint64_t pattern = 0) {
   if (weight == 0) return pattern != 0 && accepted(c, pdu ^ pattern) ? 1 : 0;
   std::uint64_t n = 0;
-  for (unsigned i = from; i + weight <= kBits; ++i) n += undetected(c, pdu, weight - 1, i + 1, pattern | (1ull << i));
+  for (unsigned i = from; i + weight <= kBits; ++i)
+    n += undetected(c, pdu, weight - 1, i + 1, pattern | (1ull << i));
   return n;
 }
 
@@ -105,8 +110,9 @@ TEST(ProfisafeErrorDetection, HammingDistanceOfTheCandidate) {
     const std::uint64_t pdu = build_bits(c);
     const std::uint64_t w5 = undetected(c, pdu, 5);
     const std::uint64_t w6 = undetected(c, pdu, 6);
-    std::printf("[ hd ] %s: undetected weight5 %llu of 658008, weight6 %llu of 3838380\n", c.name.c_str(),
-                static_cast<unsigned long long>(w5), static_cast<unsigned long long>(w6));
+    std::printf("[ hd ] %s: undetected weight5 %llu of 658008, weight6 %llu of 3838380\n",
+                c.name.c_str(), static_cast<unsigned long long>(w5),
+                static_cast<unsigned long long>(w6));
     EXPECT_EQ(w5, 0u) << c.name;
     EXPECT_GT(w6, 0u) << c.name;  // so the code's Hamming distance here is exactly 6
   }
@@ -127,8 +133,8 @@ TEST(ProfisafeErrorDetection, ResidualRateOfRandomHeavyErrors) {
     }
     const double rate = static_cast<double>(missed) / static_cast<double>(kTrials);
     std::printf("[ residual ] %s: %llu of %llu accepted = %.3g (2^-16 = %.3g)\n", c.name.c_str(),
-                static_cast<unsigned long long>(missed), static_cast<unsigned long long>(kTrials), rate,
-                1.0 / 65536.0);
+                static_cast<unsigned long long>(missed), static_cast<unsigned long long>(kTrials),
+                rate, 1.0 / 65536.0);
     // Bounded by 2^-16 (CRC alone); the number comparison adds up to a factor 2^-8.
     EXPECT_LT(rate, 2.0 / 65536.0) << c.name;
   }

@@ -1,5 +1,6 @@
-// F-device driver on injected time (profisafe-v1.md §5, docs/profisafe.md "recovery rules").
-// Host PDUs are built with build_pdu from the RS4 defaults, independent of FHost.
+// F-device driver on injected time ([PROFIsafe V1.30 F-Device behaviour], docs/profisafe.md
+// "recovery rules"). Host PDUs are built with build_pdu from the RS4 defaults, independent of
+// FHost.
 #include "profisafe/f_device.h"
 
 #include <gtest/gtest.h>
@@ -173,8 +174,9 @@ TEST_F(ProfisafeFDeviceTest, ActivateFvHonouredAndReported) {
 TEST_F(ProfisafeFDeviceTest, ThePredicateAloneDecidesTheInputByte) {
   parameterise();
   dev_.set_input(Bytes{0xFF});
-  const Bytes steps[] = {host_pdu(0, 0, 1), host_pdu(0, control_bit::kActivateFv, 2), host_pdu(0, 0, 3),
-                         host_pdu(0, 0, 9), host_pdu(0, 0, 4), host_pdu(0, 0, 5)};
+  const Bytes steps[] = {host_pdu(0, 0, 1), host_pdu(0, control_bit::kActivateFv, 2),
+                         host_pdu(0, 0, 3), host_pdu(0, 0, 9),
+                         host_pdu(0, 0, 4), host_pdu(0, 0, 5)};
   TimePoint t = kT0;
   for (const Bytes& s : steps) {
     (void)dev_.on_pdu(s, t);

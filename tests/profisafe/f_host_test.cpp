@@ -1,5 +1,5 @@
-// F-host driver on injected time (profisafe-v1.md §5, RS4 manual §7.3.2 passivation).
-// Device PDUs are built with build_pdu, independent of FDevice.
+// F-host driver on injected time ([PROFIsafe V1.30 F-Device behaviour], [RS4 manual §7.3.2]
+// passivation). Device PDUs are built with build_pdu, independent of FDevice.
 #include "profisafe/f_host.h"
 
 #include <gtest/gtest.h>
@@ -61,7 +61,8 @@ TEST_F(ProfisafeFHostTest, StartupPassivatedThenAutomaticReintegration) {
   EXPECT_EQ(first.data[0], 0x00);                                // fail-safe output values
   EXPECT_EQ(first.status_or_control, control_bit::kActivateFv);  // while passivated
   EXPECT_EQ(host_.input()[0], 0);
-  EXPECT_EQ(host_.on_pdu(device_pdu(0x80, status_bit::kFvActivated, 1), kT0 + 1ms), FHostEvent::kValid);
+  EXPECT_EQ(host_.on_pdu(device_pdu(0x80, status_bit::kFvActivated, 1), kT0 + 1ms),
+            FHostEvent::kValid);
   EXPECT_EQ(host_.state(), FHostState::kRun);
   EXPECT_FALSE(host_.ack_req());
   const auto second = request(kT0 + 2ms);
@@ -127,13 +128,15 @@ TEST_F(ProfisafeFHostTest, NumberErrorAndStaleAnswer) {
 TEST_F(ProfisafeFHostTest, DeviceReportedFaultsPassivate) {
   start(kT0);
   (void)request(kT0 + 1ms);
-  EXPECT_EQ(host_.on_pdu(device_pdu(0, status_bit::kWdTimeout | status_bit::kFvActivated, 2), kT0 + 2ms),
-            FHostEvent::kDeviceFault);
+  EXPECT_EQ(
+      host_.on_pdu(device_pdu(0, status_bit::kWdTimeout | status_bit::kFvActivated, 2), kT0 + 2ms),
+      FHostEvent::kDeviceFault);
   EXPECT_EQ(host_.counters().device_wd_timeout, 1u);
   EXPECT_TRUE(host_.passivated());
   (void)request(kT0 + 3ms);
-  EXPECT_EQ(host_.on_pdu(device_pdu(0, status_bit::kCeCrc | status_bit::kFvActivated, 3), kT0 + 4ms),
-            FHostEvent::kDeviceFault);
+  EXPECT_EQ(
+      host_.on_pdu(device_pdu(0, status_bit::kCeCrc | status_bit::kFvActivated, 3), kT0 + 4ms),
+      FHostEvent::kDeviceFault);
   EXPECT_EQ(host_.counters().device_ce_crc, 1u);
   EXPECT_FALSE(host_.ack_req());
 }

@@ -1,5 +1,6 @@
 // F-parameter block: parsing, encoding, validation against the RS4 profile and the status
-// PDU `05 81 00 00 nn` (profisafe-v1.md §1, rs4-profisafe.md §8, manual table 6.3-1).
+// PDU `05 81 00 00 nn` ([IEC 61784-3-3 F-Parameters], [RS4 manual §6.2, §6.3],
+// [RS4 manual table 6.3-1]).
 #include "profisafe/f_parameters.h"
 
 #include <gtest/gtest.h>
@@ -21,7 +22,8 @@ const Bytes kRs4Default{
     0x00, 0x01,  // 2 F_Source_Add = 1
     0x01, 0xF8,  // 4 F_Dest_Add = 504 = 500 + address 4
     0x00, 0x0A,  // 6 F_WD_Time = 10 ms
-    0x83, 0xA9,  // 8 F_Par_CRC = CRC1 (bitwise reference of the VERIFIED rule, §2)
+    0x83, 0xA9,  // 8 F_Par_CRC = CRC1 (bitwise reference of the VERIFIED rule,
+                 // [IEC 61784-3-3 CRC1])
 };
 
 TEST(ProfisafeFParameters, ParsesPublishedVector2) {
@@ -31,7 +33,7 @@ TEST(ProfisafeFParameters, ParsesPublishedVector2) {
       0x00, 0x01,  // 2 F_Source_Add = 1
       0x00, 0x01,  // 4 F_Dest_Add = 1
       0x01, 0xF4,  // 6 F_WD_Time = 500
-      0x92, 0x23,  // 8 F_Par_CRC = 37411 (§2 vector)
+      0x92, 0x23,  // 8 F_Par_CRC = 37411 ([IEC 61784-3-3 CRC1] vector)
   };
   const auto p = parse_f_parameters(b);
   ASSERT_TRUE(p) << p.error().message();
@@ -50,8 +52,8 @@ TEST(ProfisafeFParameters, ParsesPublishedVector2) {
 
 TEST(ProfisafeFParameters, ParsesEveryFlagBit) {
   const Bytes b{
-      0x2F,        // 0 F_Prm_Flag1: b0 F_Check_SeqNr, b1 F_Check_iPar, F_SIL 3 (NoSIL), F_CRC_Length 2
-      0x78,        // 1 F_Prm_Flag2: F_Block_ID 7 (b3-5), F_Par_Version 1 (b6)
+      0x2F,  // 0 F_Prm_Flag1: b0 F_Check_SeqNr, b1 F_Check_iPar, F_SIL 3 (NoSIL), F_CRC_Length 2
+      0x78,  // 1 F_Prm_Flag2: F_Block_ID 7 (b3-5), F_Par_Version 1 (b6)
       0xFF, 0xFE,  // 2 F_Source_Add = 65534
       0x12, 0x34,  // 4 F_Dest_Add = 0x1234
       0x03, 0xE8,  // 6 F_WD_Time = 1000
@@ -111,7 +113,8 @@ TEST(ProfisafeFParameters, RejectsWrongSizes) {
 TEST(ProfisafeFParameters, RejectsReservedBits) {
   for (const auto& [at, bit] : {std::pair{0, 0x40}, {0, 0x80}, {1, 0x01}, {1, 0x02}, {1, 0x04}}) {
     Bytes b = kRs4Default;
-    b[static_cast<std::size_t>(at)] = static_cast<std::uint8_t>(b[static_cast<std::size_t>(at)] | bit);
+    b[static_cast<std::size_t>(at)] =
+        static_cast<std::uint8_t>(b[static_cast<std::size_t>(at)] | bit);
     const auto p = parse_f_parameters(b);
     ASSERT_FALSE(p) << at << " " << bit;
     EXPECT_EQ(p.error(), ProfisafeError::kFParamsReservedBits);

@@ -1,5 +1,5 @@
 // F-host and F-device together, one DP data exchange per cycle on injected time: the
-// scenarios of RS4 manual §7.3.2 (passivation → ACK_REQ → ACK_REI) provoked through the
+// scenarios of [RS4 manual §7.3.2] (passivation → ACK_REQ → ACK_REI) provoked through the
 // fault-injection API of both sides.
 #include "profisafe/f_device.h"
 #include "profisafe/f_host.h"
@@ -66,14 +66,14 @@ TEST_F(ProfisafeLoop, CorruptedHostPduPassivatesUntilAckRei) {
   host_.faults().corrupt_crc2 = 1;
   cycle();
   EXPECT_EQ(dev_.counters().crc_errors, 1u);
-  EXPECT_EQ(dev_.output()[0], 0);                    // device outputs fail-safe at once
-  cycle();                                           // device reports CE_CRC once
+  EXPECT_EQ(dev_.output()[0], 0);  // device outputs fail-safe at once
+  cycle();                         // device reports CE_CRC once
   EXPECT_EQ(host_.counters().device_ce_crc, 1u);
   EXPECT_TRUE(host_.passivated());
   EXPECT_EQ(host_input(), 0);
-  cycles(3);                                         // healthy again
+  cycles(3);  // healthy again
   EXPECT_TRUE(host_.ack_req());
-  EXPECT_EQ(host_input(), 0);                        // substitute value until ACK_REI
+  EXPECT_EQ(host_input(), 0);  // substitute value until ACK_REI
   host_.ack_rei();
   cycles(2);
   EXPECT_EQ(host_.state(), FHostState::kRun);

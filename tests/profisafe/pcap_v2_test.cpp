@@ -1,6 +1,6 @@
-// V2 CRC2 against a real capture (profisafe-v1.md §4, VERIFIED): a KUKA KRC4 F-device's
-// PROFINET RT frames (tests/profisafe/data/seb711_krc4_profisafe_v2_status.pcap, a copy of
-// /work/shared/profisafe/). The test parses the pcap itself.
+// V2 CRC2 against a real capture ([IEC 61784-3-3 CRC2], VERIFIED): a KUKA KRC4 F-device's
+// PROFINET RT frames (tests/profisafe/data/seb711_krc4_profisafe_v2_status.pcap, kept with
+// the test). The test parses the pcap itself.
 //
 // Encapsulation (found by exploration): pcap, link type 1 (Ethernet); PROFINET RT
 // (EtherType 0x8892), Frame ID 0x8000 = the device's cyclic input frame. Its payload starts
@@ -147,7 +147,8 @@ TEST(ProfisafePcapV2, AWrongVirtualNumberFailsEveryPdu) {
     if (last != nullptr && pdu == *last) continue;
     if (last != nullptr && toggled(*last, pdu)) vcn = next_virtual_consecutive_number(vcn);
     last = &pdu;
-    ASSERT_EQ(check_pdu(capture_config(), pdu, vcn + 1).error, ProfisafeError::kPduCrc2Mismatch) << vcn;
+    ASSERT_EQ(check_pdu(capture_config(), pdu, vcn + 1).error, ProfisafeError::kPduCrc2Mismatch)
+        << vcn;
   }
 }
 

@@ -1,6 +1,6 @@
-// Safety PDU build/check (profisafe-v1.md §3, §4).
-// V2 known answers are the spec's VERIFIED vectors. V1 CRC2 is UNCERTAIN: its fixed bytes
-// below were computed by an independent bitwise implementation of the spec's candidate rule
+// Safety PDU build/check ([PROFIsafe V1.30 safety PDU] [IEC 61784-3-3 CRC2]).
+// V2 known answers are the published VERIFIED vectors. V1 CRC2 is UNCERTAIN: its fixed bytes
+// below were computed by an independent bitwise implementation of the candidate rule
 // (and of each named variant), not by the code under test.
 #include "profisafe/pdu.h"
 
@@ -41,7 +41,8 @@ TEST(ProfisafePduV2, SpecVector1) {
   EXPECT_TRUE(r.ok());
   EXPECT_EQ(r.status_or_control, 0x40);
   EXPECT_EQ(r.received_crc2, 0xBB5FB5u);
-  EXPECT_EQ(check_pdu(v2_config(), pdu, 1).error, ProfisafeError::kPduCrc2Mismatch);  // VCN is covered
+  EXPECT_EQ(check_pdu(v2_config(), pdu, 1).error,
+            ProfisafeError::kPduCrc2Mismatch);  // VCN is covered
 }
 
 TEST(ProfisafePduV2, SpecVector2) {
@@ -103,7 +104,8 @@ TEST(ProfisafePduV1, SeqNrCoveredAndEveryVariant) {
   // F_Check_SeqNr 1 → CRC1 0xE850 (block 15 00 00 01 01 F8 00 0A).
   PduConfig c = rs4_config(0xE850, true);
   EXPECT_EQ(build(c, {0x41}, 0x00, 7), (Bytes{0x41, 0x00, 0x07, 0xF3, 0xF8}));
-  EXPECT_EQ(check_pdu(c, Bytes{0x41, 0x00, 0x08, 0xF3, 0xF8}).error, ProfisafeError::kPduCrc2Mismatch);
+  EXPECT_EQ(check_pdu(c, Bytes{0x41, 0x00, 0x08, 0xF3, 0xF8}).error,
+            ProfisafeError::kPduCrc2Mismatch);
   c.variant.order = Crc2Variant::Order::kForward;
   EXPECT_EQ(build(c, {0x41}, 0x00, 7), (Bytes{0x41, 0x00, 0x07, 0x69, 0x8C}));
   c.variant = {};
@@ -118,7 +120,8 @@ TEST(ProfisafePduV1, SeqNrCoveredAndEveryVariant) {
   EXPECT_EQ(build(c, {0x41}, 0x00, 7), (Bytes{0x41, 0x00, 0x07, 0xF3, 0xF8}));
   c.check_seqnr = true;
   c.variant.seq_coverage = Crc2Variant::SeqCoverage::kNever;
-  EXPECT_EQ(check_pdu(c, Bytes{0x41, 0x00, 0x08, 0xF3, 0xF8}).error, ProfisafeError::kPduCrc2Mismatch);
+  EXPECT_EQ(check_pdu(c, Bytes{0x41, 0x00, 0x08, 0xF3, 0xF8}).error,
+            ProfisafeError::kPduCrc2Mismatch);
 }
 
 TEST(ProfisafePduV1, ThreeDataBytes) {
@@ -143,7 +146,8 @@ TEST(ProfisafePdu, WrongSizesAreTypedErrors) {
   EXPECT_EQ(build_pdu(c, Bytes{1, 2}, 0, 1, out).error(), ProfisafeError::kPduWrongSize);
   PduConfig big = c;
   big.data_size = kMaxDataSize + 1;
-  EXPECT_EQ(build_pdu(big, Bytes(kMaxDataSize + 1, 0), 0, 1, out).error(), ProfisafeError::kPduDataTooLong);
+  EXPECT_EQ(build_pdu(big, Bytes(kMaxDataSize + 1, 0), 0, 1, out).error(),
+            ProfisafeError::kPduDataTooLong);
   EXPECT_EQ(check_pdu(big, Bytes(kMaxDataSize + 5, 0)).error, ProfisafeError::kPduWrongSize);
 }
 

@@ -1,7 +1,11 @@
 // Crash safety: a writer process (archive_writer) stores sets in a loop and reports each
 // committed version; we kill it with SIGKILL at random points, hundreds of times, then
 // prove that every version it reported is there with its CRC-32 and the file is sound.
+#include "storage/sqlite_archive.h"
+#include "tests/storage/archive_test_support.h"
+
 #include <gtest/gtest.h>
+
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -14,9 +18,6 @@
 #include <string>
 #include <thread>
 
-#include "storage/sqlite_archive.h"
-#include "tests/storage/archive_test_support.h"
-
 namespace rs4sim::storage {
 namespace {
 
@@ -24,7 +25,7 @@ constexpr int kKills = 400;
 
 struct Writer {
   pid_t pid{-1};
-  int out{-1};   // read end of the child's stdout
+  int out{-1};  // read end of the child's stdout
 };
 
 Writer spawn(const std::string& file, int seed) {
@@ -65,7 +66,7 @@ void parse(const std::string& buffer, std::map<VersionId, std::uint32_t>& report
 TEST(ArchiveCrashSafety, NoCommittedSetIsLostWhenTheWriterIsKilled) {
   testing::TempDir dir;
   const auto file = dir.file("crash.sqlite3").string();
-  std::mt19937 rng(20261201);   // fixed: a failure is reproducible
+  std::mt19937 rng(20261201);  // fixed: a failure is reproducible
   std::map<VersionId, std::uint32_t> reported;
   const auto start = std::chrono::steady_clock::now();
   for (int kill_no = 0; kill_no < kKills; ++kill_no) {
@@ -80,7 +81,7 @@ TEST(ArchiveCrashSafety, NoCommittedSetIsLostWhenTheWriterIsKilled) {
     ::kill(w.pid, SIGKILL);
     int status = 0;
     ::waitpid(w.pid, &status, 0);
-    read_lines(w.out, buffer, INT32_MAX);   // drain to EOF
+    read_lines(w.out, buffer, INT32_MAX);  // drain to EOF
     ::close(w.out);
     if (WIFEXITED(status)) FAIL() << "writer exited by itself: " << WEXITSTATUS(status);
     parse(buffer, reported);

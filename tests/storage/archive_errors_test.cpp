@@ -1,20 +1,20 @@
 // Every error path of SqliteArchive: the specific code, a message naming the object, and
 // the archive file unchanged afterwards (digest before == digest after).
+#include "storage/archive_file.h"
+#include "storage/sqlite_archive.h"
+#include "tests/storage/archive_test_support.h"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <fstream>
 
-#include "storage/archive_file.h"
-#include "storage/sqlite_archive.h"
-#include "tests/storage/archive_test_support.h"
-
 namespace rs4sim::storage {
 namespace {
 
-using ::testing::HasSubstr;
 using testing::at_ms;
 using testing::digest;
+using ::testing::HasSubstr;
 using testing::make_blob;
 using testing::request;
 
@@ -32,14 +32,15 @@ class ArchiveErrorsTest : public ::testing::Test {
   void SetUp() override {
     archive_ = SqliteArchive::open(path_).value();
     first_ = archive_->store(request(kStation, make_blob(1))).value();
-    archive_->log_sync({kStation, at_ms(1), "r", SyncDirection::kVerify,
-                        SyncOutcome::kSucceeded, 0, 0, 0, std::chrono::milliseconds{1}})
+    archive_
+        ->log_sync({kStation, at_ms(1), "r", SyncDirection::kVerify, SyncOutcome::kSucceeded, 0, 0,
+                    0, std::chrono::milliseconds{1}})
         .value();
     before_ = digest(path_);
   }
   // The error has `code`, its message contains `text`, and the file is unchanged.
   template <class T>
-  void expect_error(const Result<T>& r, ArchiveErrc code, const std::string& text) {
+  void expect_error(const Result<T>& r, ArchiveError code, const std::string& text) {
     ASSERT_TRUE(r.has_error());
     EXPECT_EQ(r.error().code, code) << r.error().message;
     EXPECT_THAT(r.error().message, HasSubstr(text));
@@ -54,40 +55,48 @@ class ArchiveErrorsTest : public ::testing::Test {
 
 TEST_F(ArchiveErrorsTest, UnknownStation) {
   const StationKey nobody{"bus9", 9};
-  expect_error(archive_->current(nobody), ArchiveErrc::kUnknownStation,
+  expect_error(archive_->current(nobody), ArchiveError::kUnknownStation,
                "current: station bus9/9: unknown station");
-  expect_error(archive_->history(nobody), ArchiveErrc::kUnknownStation, "station bus9/9");
-  expect_error(archive_->sync_log(nobody, 10), ArchiveErrc::kUnknownStation, "bus9/9");
+  expect_error(archive_->history(nobody), ArchiveError::kUnknownStation, "station bus9/9");
+  expect_error(archive_->sync_log(nobody, 10), ArchiveError::kUnknownStation, "bus9/9");
 }
 
 TEST_F(ArchiveErrorsTest, StationWithoutCurrentSet) {
-  archive_->log_sync({{"bus2", 7}, at_ms(1), "r", SyncDirection::kNone, SyncOutcome::kFailed,
-                      1, 2, 3, std::chrono::milliseconds{0}})
+  archive_
+      ->log_sync({{"bus2", 7},
+                  at_ms(1),
+                  "r",
+                  SyncDirection::kNone,
+                  SyncOutcome::kFailed,
+                  1,
+                  2,
+                  3,
+                  std::chrono::milliseconds{0}})
       .value();
   before_ = digest(path_);
-  expect_error(archive_->current({"bus2", 7}), ArchiveErrc::kNotFound,
+  expect_error(archive_->current({"bus2", 7}), ArchiveError::kNotFound,
                "station bus2/7 has no current set");
 }
 
 TEST_F(ArchiveErrorsTest, UnknownVersion) {
-  expect_error(archive_->get(999), ArchiveErrc::kUnknownVersion, "get: version 999");
-  expect_error(archive_->restore(999, at_ms(1), ""), ArchiveErrc::kUnknownVersion,
+  expect_error(archive_->get(999), ArchiveError::kUnknownVersion, "get: version 999");
+  expect_error(archive_->restore(999, at_ms(1), ""), ArchiveError::kUnknownVersion,
                "restore: version 999: unknown version");
-  expect_error(archive_->mark_downloaded(999), ArchiveErrc::kUnknownVersion, "version 999");
+  expect_error(archive_->mark_downloaded(999), ArchiveError::kUnknownVersion, "version 999");
 }
 
 TEST_F(ArchiveErrorsTest, CrcClaimMismatch) {
   auto r = request(kStation, make_blob(2));
   r.crc32 ^= 1;
-  expect_error(archive_->store(r), ArchiveErrc::kCrcMismatch, "store station bus1/4: claimed 0x");
+  expect_error(archive_->store(r), ArchiveError::kCrcMismatch, "store station bus1/4: claimed 0x");
 }
 
 TEST_F(ArchiveErrorsTest, InvalidRequests) {
   const std::vector<std::uint8_t> empty;
-  expect_error(archive_->store(request(kStation, empty)), ArchiveErrc::kInvalidArgument,
+  expect_error(archive_->store(request(kStation, empty)), ArchiveError::kInvalidArgument,
                "empty blob");
-  expect_error(archive_->store(request({"bus1", 127}, make_blob(2))),
-               ArchiveErrc::kInvalidArgument, "address 127 above 126");
+  expect_error(archive_->store(request({"bus1", 127}, make_blob(2))), ArchiveError::kInvalidArgument,
+               "address 127 above 126");
 }
 
 TEST_F(ArchiveErrorsTest, LockedByAnotherWriter) {
@@ -102,9 +111,10 @@ TEST_F(ArchiveErrorsTest, LockedByAnotherWriter) {
   const auto restore = archive_->restore(first_.id, at_ms(5), "");
   sqlite3_exec(other, "ROLLBACK", nullptr, nullptr, nullptr);
   sqlite3_close(other);
-  expect_error(r, ArchiveErrc::kBusy, "store station bus1/4: BEGIN IMMEDIATE: archive locked by another writer");
-  expect_error(restore, ArchiveErrc::kBusy, "restore");
-  EXPECT_TRUE(archive_->current(kStation).has_value());   // reads still work
+  expect_error(r, ArchiveError::kBusy,
+               "store station bus1/4: BEGIN IMMEDIATE: archive locked by another writer");
+  expect_error(restore, ArchiveError::kBusy, "restore");
+  EXPECT_TRUE(archive_->current(kStation).has_value());  // reads still work
 }
 
 TEST_F(ArchiveErrorsTest, OpenedReadOnly) {
@@ -113,31 +123,32 @@ TEST_F(ArchiveErrorsTest, OpenedReadOnly) {
   options.read_only = true;
   archive_ = SqliteArchive::open(path_, options).value();
   EXPECT_EQ(archive_->current(kStation).value().version, first_);
-  expect_error(archive_->store(request(kStation, make_blob(2))), ArchiveErrc::kReadOnly,
+  expect_error(archive_->store(request(kStation, make_blob(2))), ArchiveError::kReadOnly,
                "store station bus1/4");
-  expect_error(archive_->log_sync({kStation, at_ms(1), "r", SyncDirection::kNone,
-                                   SyncOutcome::kFailed, 0, 0, 0, {}}),
-               ArchiveErrc::kReadOnly, "log sync station bus1/4");
+  expect_error(
+      archive_->log_sync(
+          {kStation, at_ms(1), "r", SyncDirection::kNone, SyncOutcome::kFailed, 0, 0, 0, {}}),
+      ArchiveError::kReadOnly, "log sync station bus1/4");
 }
 
 TEST_F(ArchiveErrorsTest, ReadOnlyFile) {
   if (::geteuid() == 0) GTEST_SKIP() << "root ignores file permissions";
   archive_.reset();
-  std::filesystem::permissions(path_, std::filesystem::perms::owner_read |
-                                          std::filesystem::perms::group_read);
+  std::filesystem::permissions(
+      path_, std::filesystem::perms::owner_read | std::filesystem::perms::group_read);
   auto ro = SqliteArchive::open(path_);
   if (ro) {
-    expect_error(ro.value()->store(request(kStation, make_blob(2))), ArchiveErrc::kReadOnly,
+    expect_error(ro.value()->store(request(kStation, make_blob(2))), ArchiveError::kReadOnly,
                  "store");
   } else {
-    expect_error(ro, ArchiveErrc::kReadOnly, path_.string());
+    expect_error(ro, ArchiveError::kReadOnly, path_.string());
   }
 }
 
 TEST_F(ArchiveErrorsTest, DiskFull) {
   archive_.reset();
   SqliteOptions options;
-  options.max_page_count = 40;   // 160 KiB of 4 KiB pages
+  options.max_page_count = 40;  // 160 KiB of 4 KiB pages
   archive_ = SqliteArchive::open(path_, options).value();
   Result<VersionInfo> r = first_;
   std::uint64_t seed = 100;
@@ -145,7 +156,7 @@ TEST_F(ArchiveErrorsTest, DiskFull) {
     before_ = digest(path_);
     r = archive_->store(request(kStation, make_blob(seed++)));
   }
-  expect_error(r, ArchiveErrc::kDiskFull, "store station bus1/4: insert parameter set: disk full");
+  expect_error(r, ArchiveError::kDiskFull, "store station bus1/4: insert parameter set: disk full");
   EXPECT_TRUE(archive_->check_integrity().value().ok());
 }
 
@@ -155,7 +166,7 @@ TEST_F(ArchiveErrorsTest, NotAnSqliteFile) {
   std::ofstream(file) << std::string(5000, 'x');
   const auto r = SqliteArchive::open(file);
   ASSERT_TRUE(r.has_error());
-  EXPECT_EQ(r.error().code, ArchiveErrc::kNotAnArchive);
+  EXPECT_EQ(r.error().code, ArchiveError::kNotAnArchive);
   EXPECT_THAT(r.error().message, HasSubstr(file.string()));
   EXPECT_EQ(std::filesystem::file_size(file), 5000u);
 }
@@ -167,14 +178,14 @@ TEST_F(ArchiveErrorsTest, SqliteFileOfSomeoneElse) {
   const auto before = digest(file);
   const auto r = SqliteArchive::open(file);
   ASSERT_TRUE(r.has_error());
-  EXPECT_EQ(r.error().code, ArchiveErrc::kNotAnArchive);
+  EXPECT_EQ(r.error().code, ArchiveError::kNotAnArchive);
   EXPECT_THAT(r.error().message, HasSubstr("a SQLite database with other tables"));
   EXPECT_EQ(digest(file), before);
 
   raw_exec(file, "PRAGMA application_id = 1234;");
   const auto r2 = SqliteArchive::open(file);
   ASSERT_TRUE(r2.has_error());
-  EXPECT_EQ(r2.error().code, ArchiveErrc::kNotAnArchive);
+  EXPECT_EQ(r2.error().code, ArchiveError::kNotAnArchive);
   EXPECT_THAT(r2.error().message, HasSubstr("application_id 1234 is not rs4sim's"));
 }
 
@@ -182,34 +193,34 @@ TEST_F(ArchiveErrorsTest, NewerSchema) {
   archive_.reset();
   raw_exec(path_, "PRAGMA user_version = 99;");
   before_ = digest(path_);
-  expect_error(SqliteArchive::open(path_), ArchiveErrc::kNewerSchema,
+  expect_error(SqliteArchive::open(path_), ArchiveError::kNewerSchema,
                "schema version 99, this rs4sim knows up to 2");
 }
 
 TEST_F(ArchiveErrorsTest, ImportOfACorruptFile) {
   const std::vector<std::uint8_t> garbage{0xFF, 0xFF, 0xFF};
-  expect_error(import_binary(*archive_, garbage), ArchiveErrc::kCorruptImport,
+  expect_error(import_binary(*archive_, garbage), ArchiveError::kCorruptImport,
                "import: not a binary rs4sim.v1.ArchiveExport");
   expect_error(import_json(*archive_, "{\"formatVersion\": 1, \"bogus\": 2}"),
-               ArchiveErrc::kCorruptImport, "import: not a JSON rs4sim.v1.ArchiveExport");
-  expect_error(import_json(*archive_, "{\"formatVersion\": 2}"), ArchiveErrc::kCorruptImport,
+               ArchiveError::kCorruptImport, "import: not a JSON rs4sim.v1.ArchiveExport");
+  expect_error(import_json(*archive_, "{\"formatVersion\": 2}"), ArchiveError::kCorruptImport,
                "format version 2, this rs4sim reads 1");
 }
 
 TEST_F(ArchiveErrorsTest, ImportWithACrcMismatchOrBadReferenceWritesNothing) {
   auto snap = archive_->export_snapshot(at_ms(0)).value();
-  snap.stations[0].key.bus = "bus2";   // would be a new station
+  snap.stations[0].key.bus = "bus2";  // would be a new station
   auto bad_crc = snap;
   bad_crc.sets[0].crc32 ^= 0x80000000u;
-  expect_error(import_binary(*archive_, encode_binary(bad_crc)), ArchiveErrc::kCrcMismatch,
+  expect_error(import_binary(*archive_, encode_binary(bad_crc)), ArchiveError::kCrcMismatch,
                "parameter set 1: CRC-32 does not match its blob");
   auto bad_ref = snap;
   bad_ref.stations[0].versions[0].set_id = 77;
-  expect_error(import_json(*archive_, encode_json(bad_ref)), ArchiveErrc::kCorruptImport,
+  expect_error(import_json(*archive_, encode_json(bad_ref)), ArchiveError::kCorruptImport,
                "station bus2/4 version 1: unknown parameter set");
   auto bad_current = snap;
   bad_current.stations[0].current_version = 5;
-  expect_error(archive_->import_snapshot(bad_current), ArchiveErrc::kCorruptImport,
+  expect_error(archive_->import_snapshot(bad_current), ArchiveError::kCorruptImport,
                "current version 5 not in its versions");
 }
 
@@ -229,17 +240,17 @@ TEST_F(ArchiveErrorsTest, ImportThatFailsMidWriteRollsBack) {
   SqliteOptions options;
   options.max_page_count = 40;
   archive_ = SqliteArchive::open(path_, options).value();
-  expect_error(archive_->import_snapshot(snap), ArchiveErrc::kDiskFull,
+  expect_error(archive_->import_snapshot(snap), ArchiveError::kDiskFull,
                "import: insert parameter set: disk full");
 }
 
 TEST(ArchiveErrorValue, ThrowsSystemErrorWithTheMessage) {
-  Result<int> r = archive_error(ArchiveErrc::kUnknownVersion, "version 3");
+  Result<int> r = archive_error(ArchiveError::kUnknownVersion, "version 3");
   try {
     (void)r.value();
     FAIL();
   } catch (const std::system_error& e) {
-    EXPECT_EQ(e.code(), ArchiveErrc::kUnknownVersion);
+    EXPECT_EQ(e.code(), ArchiveError::kUnknownVersion);
     EXPECT_THAT(e.what(), HasSubstr("version 3: unknown version"));
   }
 }

@@ -1,13 +1,14 @@
 // Export/import file: round trips through binary and JSON, a hand-written JSON file and a
 // hand-annotated binary message as known answers (integration: real SQLite files).
+#include "storage/archive_file.h"
+
+#include "storage/sqlite_archive.h"
+#include "tests/storage/archive_test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
-
-#include "storage/archive_file.h"
-#include "storage/sqlite_archive.h"
-#include "tests/storage/archive_test_support.h"
 
 namespace rs4sim::storage {
 namespace {
@@ -33,7 +34,7 @@ const std::vector<std::uint8_t> kAnnotatedBinary = {
     0x22, 0x0C,                    // 4 parameter_sets[0], length 12
     0x08, 0x01,                    //   1 id: 1
     0x15, 0xC2, 0x41, 0x24, 0x35,  //   2 crc32, fixed32 little-endian: 0x352441C2
-    0x1A, 0x03, 'a', 'b', 'c',     //   3 blob, length 3: "abc"
+    0x1A, 0x03, 'a',  'b',  'c',   //   3 blob, length 3: "abc"
 };
 
 TEST(ArchiveFile, AnnotatedBinaryDecodesToTheExpectedValues) {
@@ -49,8 +50,8 @@ TEST(ArchiveFile, AnnotatedBinaryDecodesToTheExpectedValues) {
   EXPECT_EQ(st.key, (StationKey{"b", 4}));
   EXPECT_EQ(st.current_version, 1u);
   ASSERT_EQ(st.versions.size(), 1u);
-  EXPECT_EQ(st.versions[0], (SnapshotVersion{1, 1, at_ms(2000), VersionSource::kUpload, "", 0,
-                                             false, ""}));
+  EXPECT_EQ(st.versions[0],
+            (SnapshotVersion{1, 1, at_ms(2000), VersionSource::kUpload, "", 0, false, ""}));
   // And our encoder writes exactly these bytes for it.
   EXPECT_EQ(encode_binary(snap), kAnnotatedBinary);
 }
@@ -90,13 +91,13 @@ TEST(ArchiveFile, HandWrittenJsonImportsToTheExpectedRows) {
   const auto list = archive->stations().value();
   ASSERT_EQ(list.size(), 1u);
   EXPECT_EQ(list[0].device_type, "RS4/PROFIsafe");
-  EXPECT_EQ(list[0].serials, (std::vector<SerialSeen>{
-                                 {"0815", at_ms(1796025600000), at_ms(1796029200000)}}));
+  EXPECT_EQ(list[0].serials,
+            (std::vector<SerialSeen>{{"0815", at_ms(1796025600000), at_ms(1796029200000)}}));
   const auto log = archive->sync_log(station, 10).value();
   ASSERT_EQ(log.size(), 1u);
-  EXPECT_EQ(log[0], (SyncLogEntry{station, at_ms(1796029205000), "power-up check",
-                                  SyncDirection::kDownload, SyncOutcome::kFailed, 0x2B09, 0, 0,
-                                  std::chrono::milliseconds{1500}}));
+  EXPECT_EQ(log[0],
+            (SyncLogEntry{station, at_ms(1796029205000), "power-up check", SyncDirection::kDownload,
+                          SyncOutcome::kFailed, 0x2B09, 0, 0, std::chrono::milliseconds{1500}}));
 }
 
 class ArchiveRoundTrip : public ::testing::Test {
@@ -107,10 +108,11 @@ class ArchiveRoundTrip : public ::testing::Test {
     const StationKey s2{"bus2", 126};
     const auto v1 = source_->store(request(s1, make_blob(1), 1000)).value();
     source_->store(request(s1, make_blob(2), 2000)).value();
-    source_->store(request(s2, make_blob(1), 3000)).value();   // shares a set
+    source_->store(request(s2, make_blob(1), 3000)).value();  // shares a set
     source_->restore(v1.id, at_ms(4000), "restore").value();
-    source_->log_sync({s1, at_ms(5000), "PC adapter removed", SyncDirection::kDownload,
-                       SyncOutcome::kSucceeded, 0, 0, 0, std::chrono::milliseconds{42}})
+    source_
+        ->log_sync({s1, at_ms(5000), "PC adapter removed", SyncDirection::kDownload,
+                    SyncOutcome::kSucceeded, 0, 0, 0, std::chrono::milliseconds{42}})
         .value();
     expected_ = source_->export_snapshot(at_ms(9000)).value();
   }
@@ -134,10 +136,10 @@ TEST_F(ArchiveRoundTrip, Json) {
 
 TEST_F(ArchiveRoundTrip, ImportIntoANonEmptyArchiveAppendsAndDeduplicates) {
   const auto summary = source_->import_snapshot(expected_).value();
-  EXPECT_EQ(summary.new_sets, 0u);   // every set is already there
+  EXPECT_EQ(summary.new_sets, 0u);  // every set is already there
   const auto history = source_->history({"bus1", 4}).value();
   ASSERT_EQ(history.size(), 6u);
-  EXPECT_EQ(history[3].number, 4u);   // the file's version 1, renumbered
+  EXPECT_EQ(history[3].number, 4u);  // the file's version 1, renumbered
   EXPECT_EQ(history[3].set_id, history[0].set_id);
   EXPECT_EQ(history[5].restored_from, history[3].id);
   EXPECT_EQ(source_->current({"bus1", 4}).value().version.id, history[5].id);

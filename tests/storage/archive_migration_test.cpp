@@ -1,10 +1,10 @@
 // Forward migrations: files written by hand in older schemas open and are upgraded.
+#include "storage/sqlite_archive.h"
+#include "tests/storage/archive_test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
-
-#include "storage/sqlite_archive.h"
-#include "tests/storage/archive_test_support.h"
 
 namespace rs4sim::storage {
 namespace {
@@ -71,12 +71,13 @@ TEST(ArchiveMigration, Version1FileIsUpgradedAndKeepsItsRows) {
   const auto cur = archive->current(station).value();
   EXPECT_EQ(cur.version.note, "from v1");
   EXPECT_EQ(cur.version.crc32, 0x352441C2u);
-  EXPECT_FALSE(cur.version.pending_download);   // the new column's default
+  EXPECT_FALSE(cur.version.pending_download);  // the new column's default
   EXPECT_EQ(cur.set.blob, (std::vector<std::uint8_t>{'a', 'b', 'c'}));
   EXPECT_TRUE(archive->check_integrity().value().ok());
   // The version-2 features work on the upgraded file.
-  archive->log_sync({station, at_ms(2000), "r", SyncDirection::kVerify,
-                     SyncOutcome::kSucceeded, 0, 0, 0, {}})
+  archive
+      ->log_sync(
+          {station, at_ms(2000), "r", SyncDirection::kVerify, SyncOutcome::kSucceeded, 0, 0, 0, {}})
       .value();
   EXPECT_EQ(archive->sync_log(station, 10).value().size(), 1u);
   EXPECT_TRUE(archive->restore(cur.version.id, at_ms(3000), "").value().pending_download);
@@ -85,7 +86,7 @@ TEST(ArchiveMigration, Version1FileIsUpgradedAndKeepsItsRows) {
 TEST(ArchiveMigration, EmptyFileIsVersion0AndGetsTheWholeSchema) {
   testing::TempDir dir;
   const auto file = dir.file("empty.sqlite3");
-  std::ofstream{file};   // 0 bytes: SQLite treats it as an empty database
+  std::ofstream{file};  // 0 bytes: SQLite treats it as an empty database
   auto archive = SqliteArchive::open(file).value();
   EXPECT_EQ(user_version(file), 2);
   EXPECT_TRUE(archive->stations().value().empty());
@@ -99,7 +100,7 @@ TEST(ArchiveMigration, ReadOnlyOpenOfAnOldFileIsRefused) {
   options.read_only = true;
   const auto r = SqliteArchive::open(file, options);
   ASSERT_TRUE(r.has_error());
-  EXPECT_EQ(r.error().code, ArchiveErrc::kReadOnly);
+  EXPECT_EQ(r.error().code, ArchiveError::kReadOnly);
   EXPECT_EQ(user_version(file), 1);
 }
 

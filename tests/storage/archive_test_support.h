@@ -4,7 +4,11 @@
 // through a separate raw SQLite connection (so "unchanged" is checked independently of
 // the code under test).
 
+#include "storage/crc32.h"
+#include "storage/types.h"
+
 #include <sqlite3.h>
+
 #include <unistd.h>
 
 #include <cstdint>
@@ -15,12 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "storage/crc32.h"
-#include "storage/types.h"
-
 namespace rs4sim::storage::testing {
 
-inline constexpr std::size_t kRealisticSetSize = 8507;   // an RS4 parameter set's size
+inline constexpr std::size_t kRealisticSetSize = 8507;  // an RS4 parameter set's size
 
 class TempDir {
  public:

@@ -2,14 +2,14 @@
 // into the archive given on the command line, forever, and after each committed store
 // writes "<version id> <crc32>\n" to stdout with one write(2). The test kills it.
 //   archive_writer FILE SEED
+#include "storage/sqlite_archive.h"
+#include "tests/storage/archive_test_support.h"
+
 #include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <string>
-
-#include "storage/sqlite_archive.h"
-#include "tests/storage/archive_test_support.h"
 
 int main(int argc, char** argv) {
   using namespace rs4sim::storage;
@@ -26,8 +26,8 @@ int main(int argc, char** argv) {
   const StationKey station{"crash", static_cast<std::uint8_t>(seed % 127)};
   for (std::uint64_t i = 0;; ++i) {
     const auto blob = testing::make_blob(seed * 1'000'000 + i);
-    const auto v = archive.value()->store(testing::request(station, blob,
-                                                          static_cast<std::int64_t>(i)));
+    const auto v =
+        archive.value()->store(testing::request(station, blob, static_cast<std::int64_t>(i)));
     if (!v) {
       std::fprintf(stderr, "%s\n", v.error().message.c_str());
       return 1;

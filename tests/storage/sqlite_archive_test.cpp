@@ -1,8 +1,9 @@
 // Every operation of SqliteArchive on a real file (integration: SQLite on disk).
-#include <gtest/gtest.h>
-
 #include "storage/sqlite_archive.h"
+
 #include "tests/storage/archive_test_support.h"
+
+#include <gtest/gtest.h>
 
 namespace rs4sim::storage {
 namespace {
@@ -120,8 +121,9 @@ TEST_F(SqliteArchiveTest, StationsWithSerialNumbersSeen) {
   r.device_type = "TEST-DEVICE-2";
   r.at = at_ms(3000);
   const auto last = archive_->store(r).value();
-  archive_->log_sync({kOther, at_ms(5), "power-up check", SyncDirection::kNone,
-                      SyncOutcome::kFailed, 0x2B09, 0, 0, std::chrono::milliseconds{10}})
+  archive_
+      ->log_sync({kOther, at_ms(5), "power-up check", SyncDirection::kNone, SyncOutcome::kFailed,
+                  0x2B09, 0, 0, std::chrono::milliseconds{10}})
       .value();
 
   const auto list = archive_->stations().value();
@@ -132,15 +134,16 @@ TEST_F(SqliteArchiveTest, StationsWithSerialNumbersSeen) {
   ASSERT_EQ(list[0].serials.size(), 2u);
   EXPECT_EQ(list[0].serials[0], (SerialSeen{"A", at_ms(1000), at_ms(2000)}));
   EXPECT_EQ(list[0].serials[1], (SerialSeen{"B", at_ms(3000), at_ms(3000)}));
-  EXPECT_EQ(list[1].key, kOther);   // created by the sync log, no set yet
+  EXPECT_EQ(list[1].key, kOther);  // created by the sync log, no set yet
   EXPECT_FALSE(list[1].current);
 }
 
 TEST_F(SqliteArchiveTest, SyncLogKeepsTheNewestEntriesOldestFirst) {
   for (int i = 0; i < 5; ++i) {
-    archive_->log_sync({kStation, at_ms(i), "reason " + std::to_string(i),
-                        SyncDirection::kUpload, SyncOutcome::kSucceeded, 0, 0,
-                        static_cast<std::uint32_t>(i), std::chrono::milliseconds{i * 100}})
+    archive_
+        ->log_sync({kStation, at_ms(i), "reason " + std::to_string(i), SyncDirection::kUpload,
+                    SyncOutcome::kSucceeded, 0, 0, static_cast<std::uint32_t>(i),
+                    std::chrono::milliseconds{i * 100}})
         .value();
   }
   const auto all = archive_->sync_log(kStation, 100).value();
@@ -160,8 +163,7 @@ TEST_F(SqliteArchiveTest, IntegrityCheckPassesAndFindsABadBlob) {
   {  // damage a blob behind the archive's back
     sqlite3* db = nullptr;
     ASSERT_EQ(sqlite3_open(path_.c_str(), &db), SQLITE_OK);
-    ASSERT_EQ(sqlite3_exec(db, "UPDATE parameter_sets SET blob = x'00'", nullptr, nullptr,
-                           nullptr),
+    ASSERT_EQ(sqlite3_exec(db, "UPDATE parameter_sets SET blob = x'00'", nullptr, nullptr, nullptr),
               SQLITE_OK);
     sqlite3_close(db);
   }

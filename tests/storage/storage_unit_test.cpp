@@ -1,13 +1,13 @@
 // Pure functions of storage/: CRC-32, default path, snapshot validation, error texts.
-#include <gtest/gtest.h>
-
-#include <set>
-#include <string_view>
-
 #include "storage/crc32.h"
 #include "storage/errors.h"
 #include "storage/snapshot.h"
 #include "storage/sqlite_archive.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string_view>
 
 namespace rs4sim::storage {
 namespace {
@@ -42,9 +42,9 @@ Snapshot valid_snapshot() {
   return snap;
 }
 
-ArchiveErrc error_of(const Snapshot& snap) {
+ArchiveError error_of(const Snapshot& snap) {
   const auto r = validate(snap);
-  return r ? ArchiveErrc{} : r.error().code;
+  return r ? ArchiveError{} : r.error().code;
 }
 
 TEST(SnapshotValidation, AcceptsASoundSnapshot) { EXPECT_TRUE(validate(valid_snapshot())); }
@@ -52,42 +52,42 @@ TEST(SnapshotValidation, AcceptsASoundSnapshot) { EXPECT_TRUE(validate(valid_sna
 TEST(SnapshotValidation, RejectsEachKindOfInconsistency) {
   auto s = valid_snapshot();
   s.format_version = 2;
-  EXPECT_EQ(error_of(s), ArchiveErrc::kCorruptImport);
+  EXPECT_EQ(error_of(s), ArchiveError::kCorruptImport);
   s = valid_snapshot();
   s.sets[0].crc32 = 0;
-  EXPECT_EQ(error_of(s), ArchiveErrc::kCrcMismatch);
+  EXPECT_EQ(error_of(s), ArchiveError::kCrcMismatch);
   s = valid_snapshot();
   s.sets.push_back(s.sets[0]);
-  EXPECT_EQ(error_of(s), ArchiveErrc::kCorruptImport);   // set id twice
+  EXPECT_EQ(error_of(s), ArchiveError::kCorruptImport);  // set id twice
   s = valid_snapshot();
   s.stations[0].versions[1].number = 1;
-  EXPECT_EQ(error_of(s), ArchiveErrc::kCorruptImport);   // numbers not increasing
+  EXPECT_EQ(error_of(s), ArchiveError::kCorruptImport);  // numbers not increasing
   s = valid_snapshot();
   s.stations[0].versions[1].restored_from = 2;
-  EXPECT_EQ(error_of(s), ArchiveErrc::kCorruptImport);   // restores a later version
+  EXPECT_EQ(error_of(s), ArchiveError::kCorruptImport);  // restores a later version
   s = valid_snapshot();
   s.stations[0].versions[0].source = static_cast<VersionSource>(0);
-  EXPECT_EQ(error_of(s), ArchiveErrc::kCorruptImport);
+  EXPECT_EQ(error_of(s), ArchiveError::kCorruptImport);
   s = valid_snapshot();
   s.stations.push_back(s.stations[0]);
-  EXPECT_EQ(error_of(s), ArchiveErrc::kCorruptImport);   // station twice
+  EXPECT_EQ(error_of(s), ArchiveError::kCorruptImport);  // station twice
   s = valid_snapshot();
   s.stations[0].serials.push_back({"", {}, {}});
-  EXPECT_EQ(error_of(s), ArchiveErrc::kCorruptImport);
+  EXPECT_EQ(error_of(s), ArchiveError::kCorruptImport);
   s = valid_snapshot();
   s.stations[0].sync_log.push_back({});
   s.stations[0].sync_log[0].direction = static_cast<SyncDirection>(9);
-  EXPECT_EQ(error_of(s), ArchiveErrc::kCorruptImport);
+  EXPECT_EQ(error_of(s), ArchiveError::kCorruptImport);
 }
 
 TEST(ArchiveErrors, EveryCodeHasItsOwnMessage) {
   std::set<std::string> messages;
-  for (int v = 1; v <= static_cast<int>(ArchiveErrc::kIo); ++v) {
-    const auto ec = make_error_code(static_cast<ArchiveErrc>(v));
+  for (int v = 1; v <= static_cast<int>(ArchiveError::kIo); ++v) {
+    const auto ec = make_error_code(static_cast<ArchiveError>(v));
     EXPECT_EQ(ec.category().name(), std::string("rs4sim.archive"));
     messages.insert(ec.message());
   }
-  EXPECT_EQ(messages.size(), static_cast<std::size_t>(ArchiveErrc::kIo));
+  EXPECT_EQ(messages.size(), static_cast<std::size_t>(ArchiveError::kIo));
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// FDL codec hot paths (spec/profibus-dp.md §1.2): one Data_Exchange request decoded and
+// FDL codec hot paths ([IEC 61158-4-3 frame formats]): one Data_Exchange request decoded and
 // one response encoded (SD2, 6 data bytes), the slave's decode→reply→encode step (with its
 // speed-up over pyprofibus), the streaming decoder's throughput, and the PDU decoders used
 // at start-up. The same telegrams in Python: bench/dp/fdl/pyprofibus_fdl_bench.py.
@@ -27,13 +27,14 @@ std::vector<std::uint8_t> frame_of(const fdl::Telegram& t) {
 const std::array<std::uint8_t, 6> kOutputs = {0x11, 0x22, 0x33, 0x44, 0x55, 0x66};
 
 fdl::Telegram dx_request() {
-  return fdl::make_data_telegram(5, 2, fdl::FrameControl::request(fdl::RequestFunction::kSrdHigh, true, true),
-                                 std::nullopt, std::nullopt, kOutputs);
+  return fdl::make_data_telegram(
+      5, 2, fdl::FrameControl::request(fdl::RequestFunction::kSrdHigh, true, true), std::nullopt,
+      std::nullopt, kOutputs);
 }
 
 fdl::Telegram dx_response() {
-  return fdl::make_data_telegram(2, 5, fdl::FrameControl::response(fdl::ResponseStatus::kDataLow), std::nullopt,
-                                 std::nullopt, kOutputs);
+  return fdl::make_data_telegram(2, 5, fdl::FrameControl::response(fdl::ResponseStatus::kDataLow),
+                                 std::nullopt, std::nullopt, kOutputs);
 }
 
 // pyprofibus' FDL layer on the same two telegrams, CPU ns per decode+encode, measured by
@@ -61,7 +62,8 @@ void BM_DecodeDataExchangeRequest(benchmark::State& state) {
   fdl::Decoder d;
   CountSink sink;
   for (auto _ : state) d.feed(frame, sink);
-  if (sink.telegrams != static_cast<std::size_t>(state.iterations())) state.SkipWithError("lost telegrams");
+  if (sink.telegrams != static_cast<std::size_t>(state.iterations()))
+    state.SkipWithError("lost telegrams");
   state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(frame.size()));
 }
 BENCHMARK(BM_DecodeDataExchangeRequest);
@@ -117,7 +119,8 @@ BENCHMARK(BM_DecodeReplyEncodeDataExchange);
 void BM_StreamThroughput(benchmark::State& state) {
   std::vector<std::uint8_t> stream;
   while (stream.size() < 64 * 1024) {
-    for (const auto& t : {dx_request(), dx_response(), fdl::make_short_ack(), fdl::make_token(2, 2)}) {
+    for (const auto& t :
+         {dx_request(), dx_response(), fdl::make_short_ack(), fdl::make_token(2, 2)}) {
       const auto f = frame_of(t);
       stream.insert(stream.end(), f.begin(), f.end());
     }
@@ -130,7 +133,9 @@ void BM_StreamThroughput(benchmark::State& state) {
   CountSink sink;
   for (auto _ : state) {
     for (std::size_t pos = 0; pos < stream.size(); pos += chunk) {
-      d.feed(std::span<const std::uint8_t>(stream).subspan(pos, std::min(chunk, stream.size() - pos)), sink);
+      d.feed(
+          std::span<const std::uint8_t>(stream).subspan(pos, std::min(chunk, stream.size() - pos)),
+          sink);
     }
   }
   if (d.stats().total_errors() != 0) state.SkipWithError("decode errors");
@@ -139,7 +144,8 @@ void BM_StreamThroughput(benchmark::State& state) {
 BENCHMARK(BM_StreamThroughput)->Arg(1)->Arg(16)->Arg(256)->Arg(4096);
 
 void BM_DecodeSetPrm(benchmark::State& state) {
-  const std::array<std::uint8_t, 10> du = {0x88, 0x0A, 0x01, 0x0B, 0x12, 0x34, 0x00, 0x80, 0x20, 0x00};
+  const std::array<std::uint8_t, 10> du = {0x88, 0x0A, 0x01, 0x0B, 0x12,
+                                           0x34, 0x00, 0x80, 0x20, 0x00};
   for (auto _ : state) benchmark::DoNotOptimize(pdu::decode_set_prm(du, pdu::PrmLayout::kDpv1));
 }
 BENCHMARK(BM_DecodeSetPrm);

@@ -2,11 +2,11 @@
 //
 // BM_MemoryBusCycle125: one full poll cycle of our master over 125 generic slaves in
 // Data_Exch (one Data_Exchange each), processed by the MemoryBus. Reported with the wire
-// time the same telegrams would take at 12 Mbit/s (spec/profibus-dp.md §1.1/§1.7: 11 bit
-// per character, TSYN 33 bit before each request, min TSDR 11 bit before each reply) and
-// the ratio wire time / simulation time (target ≥ 20).
-// BM_MemoryPerSlave: heap bytes one generic slave costs (object + its allocations + its
-// bus port incl. decoder), measured with glibc mallinfo2().
+// time the same telegrams would take at 12 Mbit/s
+// ([IEC 61158-4-3 UART character, bus parameters, timing] [IEC 61158-2 baud rates]: 11 bit per
+// character, TSYN 33 bit before each request, min TSDR 11 bit before each reply) and the ratio wire
+// time / simulation time (target ≥ 20). BM_MemoryPerSlave: heap bytes one generic slave costs
+// (object + its allocations + its bus port incl. decoder), measured with glibc mallinfo2().
 #include "dp/devices/generic_bus.h"
 
 #include <benchmark/benchmark.h>
@@ -22,7 +22,8 @@ dp::devices::GenericBusConfig bus_of_125() {
   dp::devices::GenericBusConfig c;
   c.master_address = 0;
   c.cycle_target = 1us;  // cycles back to back
-  for (std::uint8_t a = 1; a <= 125; ++a) c.slaves.push_back({a, 0x1234, {0x31}, true});  // 2 B in/out
+  for (std::uint8_t a = 1; a <= 125; ++a)
+    c.slaves.push_back({a, 0x1234, {0x31}, true});  // 2 B in/out
   return c;
 }
 
@@ -47,8 +48,10 @@ void BM_MemoryBusCycle125(benchmark::State& state) {
     b.run_until([&] { return b.master().counters().cycles >= target; }, 1s);
     ++cycles;
   }
-  const double wire_s_per_cycle = static_cast<double>(wire_bits) / 12e6 / static_cast<double>(cycles);
-  state.counters["telegrams_per_cycle"] = static_cast<double>(telegrams) / static_cast<double>(cycles);
+  const double wire_s_per_cycle =
+      static_cast<double>(wire_bits) / 12e6 / static_cast<double>(cycles);
+  state.counters["telegrams_per_cycle"] =
+      static_cast<double>(telegrams) / static_cast<double>(cycles);
   state.counters["wire_us_per_cycle_12M"] = wire_s_per_cycle * 1e6;
   // Ratio: wire time of a cycle / simulation time of a cycle (s per iteration, inverted rate).
   state.counters["x_faster_than_wire"] =
@@ -65,7 +68,8 @@ void BM_MemoryPerSlave(benchmark::State& state) {
     slaves.reserve(125);
     const std::size_t before = mallinfo2().uordblks;  // glibc: bytes in use on the heap
     for (std::uint8_t a = 1; a <= 125; ++a) {
-      slaves.push_back(std::make_unique<dp::devices::GenericSlave>(dp::devices::GenericSlaveConfig{a, 0x1234, {0x31}, true}));
+      slaves.push_back(std::make_unique<dp::devices::GenericSlave>(
+          dp::devices::GenericSlaveConfig{a, 0x1234, {0x31}, true}));
       bus.attach(*slaves.back());
     }
     per_slave = (mallinfo2().uordblks - before) / 125;

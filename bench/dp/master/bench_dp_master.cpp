@@ -1,4 +1,4 @@
-// Class 1 master cost per Data_Exchange (spec/profibus-dp.md §4.3): one iteration = the
+// Class 1 master cost per Data_Exchange ([IEC 61158-6-3 class 1 master cycle]): one iteration = the
 // master decides and builds the next request (on_time + take_transmit) and handles the
 // slave's DL reply (on_telegram), with N slaves in data exchange, back-to-back cycles.
 // The *Wire variant adds the FDL codec work a link does: encode the request to bytes and
@@ -27,13 +27,14 @@ SlaveEntry bench_slave(std::uint8_t address) {
   s.address = address;
   s.prm.station_status.lock_req = true;
   s.prm.ident_number = 0x1234;
-  s.cfg = {0x37};  // 8 bytes in + 8 bytes out (general identifier, §2.4)
+  s.cfg = {0x37};  // 8 bytes in + 8 bytes out (general identifier, [IEC 61158-6-3 Chk_Cfg/Get_Cfg])
   s.input_length = kIo;
   s.output_length = kIo;
   return s;
 }
 
-// Replies as a slave that accepts its parameterisation (§2 answers per DSAP).
+// Replies as a slave that accepts its parameterisation ([IEC 61158-6-3 DP-V0 services] answers per
+// DSAP).
 std::optional<fdl::Telegram> answer(const fdl::Telegram& req, std::array<bool, 128>& prm) {
   using S = fdl::ResponseStatus;
   const auto ok = [&](S s, std::optional<std::uint8_t> d, std::optional<std::uint8_t> ss,
@@ -49,8 +50,11 @@ std::optional<fdl::Telegram> answer(const fdl::Telegram& req, std::array<bool, 1
   if (*req.dsap == 60) {
     const bool ready = prm[req.da];
     const std::uint8_t du[] = {static_cast<std::uint8_t>(ready ? 0x00 : 0x02),
-                               static_cast<std::uint8_t>(ready ? 0x0C : 0x05), 0x00,
-                               static_cast<std::uint8_t>(ready ? req.sa : 0xFF), 0x12, 0x34};
+                               static_cast<std::uint8_t>(ready ? 0x0C : 0x05),
+                               0x00,
+                               static_cast<std::uint8_t>(ready ? req.sa : 0xFF),
+                               0x12,
+                               0x34};
     return ok(S::kDataLow, req.ssap, req.dsap, du);
   }
   if (*req.dsap == 61) prm[req.da] = true;
@@ -70,7 +74,8 @@ struct Bench {
       master.take_events(events);
       bool done = false;
       for (const auto& e : events) {
-        if (const auto* c = std::get_if<CycleCompleted>(&e)) done = c->slaves_in_data_exchange == want;
+        if (const auto* c = std::get_if<CycleCompleted>(&e))
+          done = c->slaves_in_data_exchange == want;
       }
       events.clear();
       if (done) return;

@@ -56,7 +56,8 @@ void BM_BusCycleWithProfisafe(benchmark::State& state) {
   c.auto_ack_rei = true;
   Rs4Segment s(c);
   s.power_on();
-  if (!s.run_until([&] { return s.in_data_exchange(); }, 5s)) state.SkipWithError("no data exchange");
+  if (!s.run_until([&] { return s.in_data_exchange(); }, 5s))
+    state.SkipWithError("no data exchange");
   s.run_for(500ms);
   const auto cycles_before = s.master().counters().cycles;
   for (auto _ : state) s.run_for(10ms);

@@ -1,6 +1,6 @@
 // Hot paths of the RS4 wire formats: the measurement telegram 0x23 a scanner produces
-// every 40 ms (spec/rs4-profisafe.md §6.1), RS232 framing/deframing (§11) and the block
-// splitter/assembler (§5.1). Results are reported, never asserted.
+// every 40 ms ([RS4 manual §5.2.3.4]), RS232 framing/deframing ([roboticslibrary/rl LeuzeRs4.cpp])
+// and the block splitter/assembler ([RS4 manual §5.2.1]). Results are reported, never asserted.
 #include "rs4/protocol/block.h"
 #include "rs4/protocol/measurement.h"
 #include "rs4/protocol/rs232.h"
@@ -57,7 +57,8 @@ void BM_MeasurementFromContour(benchmark::State& state) {
       static_cast<double>(measurement_value_count(0, kMaxSegment, resolution).value());
   state.counters["bytes"] = static_cast<double>(body.size());
 }
-BENCHMARK(BM_MeasurementFromContour)->Arg(1)->Arg(4);  // 529 values; 133 values (§6.1)
+BENCHMARK(BM_MeasurementFromContour)->Arg(1)->Arg(4);  // 529 values; 133 values
+                                                       // ([RS4 manual §5.2.3.4])
 
 void BM_MeasurementDecode(benchmark::State& state) {
   const auto body = measurement_body(static_cast<std::uint8_t>(state.range(0)));

@@ -1,14 +1,14 @@
 // Benchmarks of the scanner model (targets in docs/rs4-scanner.md, reported, not asserted):
 // contour generation + field evaluation ≥ 20 000 scans/s per core with a typical scene;
 // a whole emulated RS4 ≤ 200 KiB (sizeof + heap, reported as counters).
+#include "rs4/scanner/parameter_codec.h"
+#include "rs4/scanner/scanner.h"
+
 #include <benchmark/benchmark.h>
 
 #include <atomic>
 #include <cstdlib>
 #include <new>
-
-#include "rs4/scanner/parameter_codec.h"
-#include "rs4/scanner/scanner.h"
 
 // Live heap bytes of this process: every allocation carries its size in a header.
 namespace {
@@ -25,7 +25,7 @@ void* operator new(std::size_t n) {
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"   // malloc'd in operator new above
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"  // malloc'd in operator new above
 #endif
 void operator delete(void* p) noexcept {
   if (p == nullptr) return;
@@ -62,8 +62,8 @@ void BM_RenderAndEvaluate(benchmark::State& state) {
     FieldFlags f = evaluate(contour, params.pairs[0]);
     benchmark::DoNotOptimize(f);
   }
-  state.counters["scans/s"] = benchmark::Counter(static_cast<double>(state.iterations()),
-                                                 benchmark::Counter::kIsRate);
+  state.counters["scans/s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_RenderAndEvaluate);
 
@@ -84,8 +84,8 @@ void BM_ScannerScanMovingObstacle(benchmark::State& state) {
     s.advance(now);
     benchmark::DoNotOptimize(s.ossd());
   }
-  state.counters["scans/s"] = benchmark::Counter(static_cast<double>(state.iterations()),
-                                                 benchmark::Counter::kIsRate);
+  state.counters["scans/s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_ScannerScanMovingObstacle);
 

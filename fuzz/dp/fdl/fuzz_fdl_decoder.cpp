@@ -1,9 +1,9 @@
-// libFuzzer target for the streaming FDL decoder (spec/profibus-dp.md §1.2–§1.4, §1.10).
-// Input byte 0 picks a chunk size; the rest is the bus byte stream.
-// Invariants: every delivered telegram re-encodes and decodes back to itself; the same
-// stream fed in one chunk and in small chunks gives the same telegrams and errors; every
-// fed byte is accounted for (delivered, discarded or pending); the FCS of the whole input
-// equals its plain byte sum.
+// libFuzzer target for the streaming FDL decoder
+// ([IEC 61158-4-3 frame formats, FCS, addresses, SAPs, frame reception]). Input byte 0 picks a
+// chunk size; the rest is the bus byte stream. Invariants: every delivered telegram re-encodes and
+// decodes back to itself; the same stream fed in one chunk and in small chunks gives the same
+// telegrams and errors; every fed byte is accounted for (delivered, discarded or pending); the FCS
+// of the whole input equals its plain byte sum.
 #include "dp/fdl/decoder.h"
 
 #include <cstdlib>

@@ -6,8 +6,8 @@
 // arrives, the bus must neither crash nor stall, and every reply must re-encode. The rest
 // of the input also goes through parse_baud_rate (the CLI/serial rate parser).
 #include "dp/devices/generic_slave.h"
-#include "dp/time/baud_rate.h"
 #include "dp/link/memory_bus.h"
+#include "dp/time/baud_rate.h"
 
 #include <cstdint>
 #include <cstdlib>
@@ -33,7 +33,8 @@ class Sink final : public dp::Station {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  (void)dp::parse_baud_rate(std::string_view(reinterpret_cast<const char*>(data), std::min<std::size_t>(size, 24)));
+  (void)dp::parse_baud_rate(
+      std::string_view(reinterpret_cast<const char*>(data), std::min<std::size_t>(size, 24)));
   dp::ManualClock clock;
   dp::link::MemoryBus bus(clock);
   Sink master;
@@ -47,7 +48,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::size_t len = std::min<std::size_t>(data[i + 1], size - i - 2);
     bus.send_raw(5, std::span<const std::uint8_t>(data + i + 2, len));
     i += 2 + len;
-    bus.run_for((ctl & 0x80) ? std::chrono::milliseconds(150) : std::chrono::microseconds(ctl & 0x7F));
+    bus.run_for((ctl & 0x80) ? std::chrono::milliseconds(150)
+                             : std::chrono::microseconds(ctl & 0x7F));
   }
   bus.run_for(std::chrono::seconds(1));
   return 0;

@@ -45,7 +45,7 @@ class Input {
 };
 
 SlaveEntry slave(std::uint8_t address, bool dpv1, std::uint8_t alarm_mode, bool extra_sap,
-                  std::size_t in, std::size_t out) {
+                 std::size_t in, std::size_t out) {
   SlaveEntry s;
   s.address = address;
   s.prm.station_status.lock_req = true;
@@ -132,15 +132,9 @@ struct Harness {
           return;
         }
         [[fallthrough]];
-      case 1:
-        deliver(fdl::make_data_telegram(2, from, fc, std::nullopt, std::nullopt, du));
-        return;
-      case 2:
-        deliver(fdl::make_data_telegram(2, from, fc, std::nullopt, std::nullopt, {}));
-        return;
-      default:
-        deliver(fdl::make_token(2, from & 0x7F));
-        return;
+      case 1: deliver(fdl::make_data_telegram(2, from, fc, std::nullopt, std::nullopt, du)); return;
+      case 2: deliver(fdl::make_data_telegram(2, from, fc, std::nullopt, std::nullopt, {})); return;
+      default: deliver(fdl::make_token(2, from & 0x7F)); return;
     }
   }
 
@@ -167,9 +161,7 @@ struct Harness {
       case 2:
         master.set_operating_mode((what & 4) ? OperatingMode::kClear : OperatingMode::kOperate);
         return;
-      default:
-        (void)master.acknowledge_alarm(address, in.u8(), in.u8(), in.u8() & 31);
-        return;
+      default: (void)master.acknowledge_alarm(address, in.u8(), in.u8(), in.u8() & 31); return;
     }
   }
 };

@@ -1,7 +1,6 @@
-// libFuzzer target: Chk_Cfg/Get_Cfg identifier decoder (spec/profibus-dp.md §2.4).
+// libFuzzer target: Chk_Cfg/Get_Cfg identifier decoder ([IEC 61158-6-3 Chk_Cfg/Get_Cfg]).
 // Every identifier re-encodes to exactly its bytes; the summary adds up the identifiers.
 #include "dp/pdu/cfg.h"
-
 #include "fuzz_check.h"
 
 using namespace rs4sim::dp::pdu;

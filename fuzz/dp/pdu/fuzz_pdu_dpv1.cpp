@@ -1,9 +1,9 @@
-// libFuzzer target: DPV1 MSAC_C1 request/response decoders (spec/profibus-dp.md §3.3–§3.5).
-// Every accepted PDU re-encodes to exactly the input bytes; the data part is also read
-// as an I&M call (+ I&M0 record) and must re-encode exactly.
+// libFuzzer target: DPV1 MSAC_C1 request/response decoders
+// ([IEC 61158-6-3 MSAC_C1, MSAC_C1 polling, DPV1 alarms]). Every accepted PDU re-encodes to exactly
+// the input bytes; the data part is also read as an I&M call (+ I&M0 record) and must re-encode
+// exactly.
 #include "dp/pdu/dpv1.h"
 #include "dp/pdu/im.h"
-
 #include "fuzz_check.h"
 
 using namespace rs4sim::dp::pdu;

@@ -1,7 +1,6 @@
-// libFuzzer target: DPV1 MSAC_C2 decoders (spec/profibus-dp.md §3.7). Initiate.req drops
+// libFuzzer target: DPV1 MSAC_C2 decoders ([IEC 61158-6-3 MSAC_C2]). Initiate.req drops
 // its reserved bytes 1..3, so the check is decode(encode(decode(x))) == decode(x).
 #include "dp/pdu/dpv1_c2.h"
-
 #include "fuzz_check.h"
 
 using namespace rs4sim::dp::pdu;

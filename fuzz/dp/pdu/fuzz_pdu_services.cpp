@@ -1,9 +1,9 @@
 // libFuzzer target: Global_Control, Set_Slave_Add, empty requests and I/O images
-// (spec/profibus-dp.md §2.1, §2.6, §2.7). Input byte 0 selects the service.
+// ([IEC 61158-6-3 SAP assignment, Global_Control, Set_Slave_Add, Rd_Inp/Rd_Outp]). Input byte 0
+// selects the service.
 #include "dp/pdu/global_control.h"
 #include "dp/pdu/set_slave_add.h"
 #include "dp/pdu/simple_services.h"
-
 #include "fuzz_check.h"
 
 using namespace rs4sim::dp::pdu;
@@ -22,7 +22,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     case 1:
       if (const auto ssa = decode_set_slave_add(du)) {
         fuzz::check(encode_set_slave_add(ssa.value(), out).has_value());
-        const auto again = decode_set_slave_add(std::span<const std::uint8_t>(out.data(), out.size()));
+        const auto again =
+            decode_set_slave_add(std::span<const std::uint8_t>(out.data(), out.size()));
         fuzz::check(again.has_value() && again.value() == ssa.value());
       }
       break;

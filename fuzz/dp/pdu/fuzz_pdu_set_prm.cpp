@@ -1,9 +1,9 @@
-// libFuzzer target: Set_Prm decoder (spec/profibus-dp.md §2.3, §3.1). Reserved bits are
+// libFuzzer target: Set_Prm decoder ([IEC 61158-6-3 Set_Prm, DPV1_Status]). Reserved bits are
 // preserved, so a decoded Set_Prm must re-encode to exactly the input bytes. The user
-// data is also read as structured blocks (§3.2); each block re-encodes to its bytes.
+// data is also read as structured blocks ([IEC 61158-6-3 structured Prm_Data]); each block
+// re-encodes to its bytes.
 #include "dp/pdu/prm_blocks.h"
 #include "dp/pdu/set_prm.h"
-
 #include "fuzz_check.h"
 
 using namespace rs4sim::dp::pdu;

@@ -1,9 +1,8 @@
 // libFuzzer target: Slave_Diag decoder and the extended-diagnosis block reader
-// (spec/profibus-dp.md §2.5, §3.5, §3.6). The diag re-encodes exactly; every block the
-// encoders can express re-encodes to its own bytes; the reader always terminates.
+// ([IEC 61158-6-3 Slave_Diag, DPV1 alarms, status PDUs]). The diag re-encodes exactly; every block
+// the encoders can express re-encodes to its own bytes; the reader always terminates.
 #include "dp/pdu/ext_diag.h"
 #include "dp/pdu/slave_diag.h"
-
 #include "fuzz_check.h"
 
 using namespace rs4sim::dp::pdu;

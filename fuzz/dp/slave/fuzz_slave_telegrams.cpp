@@ -1,5 +1,6 @@
 // libFuzzer target: arbitrary telegram sequences into a dp::slave::Slave with a FakeApplication,
-// time advanced from the input. Invariants (spec/profibus-dp.md §1.10, §2.5):
+// time advanced from the input. Invariants ([IEC 61158-4-3 frame reception]
+// [IEC 61158-6-3 Slave_Diag]):
 //   * never a reply to DA 127 or to an SDN request, at most one reply per request;
 //   * every reply encodes, decodes back to itself and is addressed to the requester;
 //   * the diagnosis never exceeds max_diag_length and never carries master-only bits;
@@ -31,7 +32,8 @@ void require(bool ok) {
   if (!ok) std::abort();
 }
 
-void check_reply(const dp::slave::Slave& slave, const fdl::Telegram& req, const fdl::Telegram& reply) {
+void check_reply(const dp::slave::Slave& slave, const fdl::Telegram& req,
+                 const fdl::Telegram& reply) {
   std::vector<std::uint8_t> wire;
   fdl::encode(reply, wire);  // throws (→ libFuzzer crash report) if malformed
   fdl::Telegram back;
@@ -58,14 +60,26 @@ void deliver(dp::slave::Slave& slave, const fdl::Telegram& t, TimePoint now) {
   require((diag[0] & 0xA1) == 0 && (diag[1] & 0x84) == 0x04);
 }
 
-void app_action(dp::slave::Slave& slave, rs4sim::dp::testing::FakeApplication& app, std::uint8_t what,
-                std::uint8_t arg) {
+void app_action(dp::slave::Slave& slave, rs4sim::dp::testing::FakeApplication& app,
+                std::uint8_t what, std::uint8_t arg) {
   static const std::uint8_t kData[8] = {0x84, 0x24, 0x18, 0x00, 0x01, 0x00, 0x00, 0x00};
   switch (what % 5) {
-    case 0: (void)slave.submit_alarm({static_cast<std::uint8_t>(arg % 8), 0, static_cast<std::uint8_t>(arg >> 6), true, std::span(kData, arg % 9)}); break;
-    case 1: (void)slave.set_device_diagnosis(std::span(kData, arg % 9), (arg & 1) != 0, (arg & 2) != 0); break;
-    case 2: (void)slave.complete_acyclic(dp::slave::AcyclicChannel::kC1, dp::slave::AcyclicResult::ok(std::span(kData, arg % 9))); break;
-    case 3: (void)slave.complete_acyclic(dp::slave::AcyclicChannel::kC2, dp::slave::AcyclicResult::fail({0x80, arg, 0})); break;
+    case 0:
+      (void)slave.submit_alarm({static_cast<std::uint8_t>(arg % 8), 0,
+                                static_cast<std::uint8_t>(arg >> 6), true,
+                                std::span(kData, arg % 9)});
+      break;
+    case 1:
+      (void)slave.set_device_diagnosis(std::span(kData, arg % 9), (arg & 1) != 0, (arg & 2) != 0);
+      break;
+    case 2:
+      (void)slave.complete_acyclic(dp::slave::AcyclicChannel::kC1,
+                                   dp::slave::AcyclicResult::ok(std::span(kData, arg % 9)));
+      break;
+    case 3:
+      (void)slave.complete_acyclic(dp::slave::AcyclicChannel::kC2,
+                                   dp::slave::AcyclicResult::fail({0x80, arg, 0}));
+      break;
     default:
       app.acyclic_mode = static_cast<rs4sim::dp::testing::FakeApplication::AcyclicMode>(arg % 3);
       app.prm_verdict = static_cast<dp::slave::PrmVerdict>((arg >> 2) % 3);

@@ -2,7 +2,7 @@
 // index and record), cyclic exchanges with arbitrary output bytes through a real FHost,
 // time steps and user actions (PC adapter, proxy hooks, restart button, faults, obstacle).
 // Invariants: no crash, every answer ≤ 240 bytes, and the OSSD bit is 1 only when the
-// conditions of spec/rs4-profisafe.md §3.1/§3.2/§4 hold (re-stated here independently of
+// conditions of [RS4 manual §5.1.1, §5.1.2, §7.1, §7.2] hold (re-stated here independently of
 // the adapter's own predicate).
 #include "profisafe/f_host.h"
 #include "rs4/adapter/adapter.h"
@@ -33,15 +33,16 @@ void check_ossd_invariant(const rs4::adapter::Adapter& a) {
                        a.released() && !v.field_pair_error && a.scanner().ossd() &&
                        v.output.field_pair_valid();
   if (!allowed) {
-    std::fprintf(stderr, "OSSD bit 1: powered %d connected %d fdev %d released %d fperr %d scanner %d pair %d\n",
-                 v.powered, v.connected, a.fdevice().sends_process_values(), a.released(),
-                 v.field_pair_error, a.scanner().ossd(), v.output.field_pair_valid());
+    std::fprintf(
+        stderr,
+        "OSSD bit 1: powered %d connected %d fdev %d released %d fperr %d scanner %d pair %d\n",
+        v.powered, v.connected, a.fdevice().sends_process_values(), a.released(),
+        v.field_pair_error, a.scanner().ossd(), v.output.field_pair_valid());
     std::abort();
   }
 }
 
-void cyclic(rs4::adapter::Adapter& a, profisafe::FHost& host, std::uint8_t out,
-            dp::TimePoint now) {
+void cyclic(rs4::adapter::Adapter& a, profisafe::FHost& host, std::uint8_t out, dp::TimePoint now) {
   host.set_output(std::span<const std::uint8_t>(&out, 1));
   const auto req = host.request(now);
   const std::vector<std::uint8_t> pdu(req.begin(), req.end());
@@ -101,15 +102,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (unsigned steps = 0; steps < 256 && !in.empty(); ++steps) {
     const auto op = in.byte();
     switch (op % 12) {
-      case 0: case 1: acyclic(a, in, true, now); break;
+      case 0:
+      case 1: acyclic(a, in, true, now); break;
       case 2: acyclic(a, in, false, now); break;
-      case 3: case 4: cyclic(a, host, in.byte(), now); break;
-      case 5: now += std::chrono::milliseconds(in.byte() * 10); a.on_time(now); break;
+      case 3:
+      case 4: cyclic(a, host, in.byte(), now); break;
+      case 5:
+        now += std::chrono::milliseconds(in.byte() * 10);
+        a.on_time(now);
+        break;
       case 6: (in.byte() & 1) ? a.attach_pc_adapter(now) : a.detach_pc_adapter(now); break;
       case 7: {
         const auto k = in.byte() % 3;
-        (void)(k == 0 ? a.proxy_sync_started(now)
-                      : k == 1 ? a.proxy_sync_succeeded(now) : a.proxy_sync_failed(now));
+        (void)(k == 0   ? a.proxy_sync_started(now)
+               : k == 1 ? a.proxy_sync_succeeded(now)
+                        : a.proxy_sync_failed(now));
         break;
       }
       case 8: a.set_restart_button(in.byte() & 1, now); break;
@@ -121,8 +128,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
       case 10: {
         auto& scene = a.scanner().edit_scene(now);
-        if (op & 0x10) scene.clear();
-        else (void)scene.add(rs4::scanner::Circle{{double(in.byte()) * 10, 0}, 50});
+        if (op & 0x10)
+          scene.clear();
+        else
+          (void)scene.add(rs4::scanner::Circle{{double(in.byte()) * 10, 0}, 50});
         a.on_time(now);
         break;
       }

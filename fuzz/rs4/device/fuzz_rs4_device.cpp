@@ -1,8 +1,8 @@
 // libFuzzer target: a whole RS4 segment (GSD master + F-host + Rs4Device on the memory bus)
 // driven by a fuzzed script of bus frames, DPV1 records, process outputs, power and scene
 // actions and time steps. Invariants: no crash or hang; one cycle after any step the OSSD
-// bit of the device is 1 only while the scanner's OSSDs are on (spec/rs4-profisafe.md §3.1: the only safety
-// bit); the F-host's input is 0 whenever it is passivated; a powered-off or link-down
+// bit of the device is 1 only while the scanner's OSSDs are on ([RS4 manual §5.1.1]: the
+// only safety bit); the F-host's input is 0 whenever it is passivated; a powered-off or link-down
 // station sends nothing.
 //
 // Script: op byte, then its arguments
@@ -56,11 +56,22 @@ void step(Rs4Segment& s, std::uint8_t op, const std::uint8_t*& p, const std::uin
       break;
     }
     case 3: s.set_output_byte(arg()); break;
-    case 4: s.power_off(); s.run_for(10ms); s.power_on(); break;
-    case 5: (void)s.device().scanner().edit_scene(s.now()).add(rs4sim::rs4::scanner::Circle{{0, arg() * 20.0}, 50}); break;
-    case 6: (void)s.device().scanner().inject_fault(static_cast<rs4sim::rs4::scanner::Fault>(arg() % 4), s.now()); break;
+    case 4:
+      s.power_off();
+      s.run_for(10ms);
+      s.power_on();
+      break;
+    case 5:
+      (void)s.device().scanner().edit_scene(s.now()).add(
+          rs4sim::rs4::scanner::Circle{{0, arg() * 20.0}, 50});
+      break;
+    case 6:
+      (void)s.device().scanner().inject_fault(static_cast<rs4sim::rs4::scanner::Fault>(arg() % 4),
+                                              s.now());
+      break;
     default:
-      (void)s.device().scanner().clear_fault(static_cast<rs4sim::rs4::scanner::Fault>(arg() % 4), s.now());
+      (void)s.device().scanner().clear_fault(static_cast<rs4sim::rs4::scanner::Fault>(arg() % 4),
+                                             s.now());
       s.set_output_byte(static_cast<std::uint8_t>(s.output_byte() | 0x80));
       s.run_for(200ms);
       s.set_output_byte(static_cast<std::uint8_t>(s.output_byte() & 0x7F));

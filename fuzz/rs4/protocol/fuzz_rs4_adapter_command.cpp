@@ -1,5 +1,5 @@
 // Fuzzes the adapter command parser and every adapter answer / alarm decoder
-// (spec/rs4-profisafe.md §5.3, §7); whatever decodes must re-encode to the same bytes.
+// ([RS4 manual §5.2.2, §5.3]); whatever decodes must re-encode to the same bytes.
 #include "rs4/protocol/adapter_answer.h"
 #include "rs4/protocol/adapter_command.h"
 #include "rs4/protocol/alarm.h"

@@ -1,4 +1,4 @@
-// Fuzzes the WRITE-side block assembler (spec/rs4-profisafe.md §5.1) with a stream of
+// Fuzzes the WRITE-side block assembler ([RS4 manual §5.2.1]) with a stream of
 // records, and checks splitter → READ assembler round trips on the same bytes.
 // Input: [n][n record bytes][n][…] — each record is preceded by its size byte.
 #include "rs4/protocol/adapter_command.h"

@@ -1,4 +1,4 @@
-// Fuzzes the streaming RS232 deframer (spec/rs4-profisafe.md §11) with arbitrary chunks,
+// Fuzzes the streaming RS232 deframer ([roboticslibrary/rl LeuzeRs4.cpp]) with arbitrary chunks,
 // and checks frame → deframe returns the body for any body the framer accepts.
 // Input: [chunk size seed][stream bytes…]
 #include "rs4/protocol/rs232.h"
@@ -19,7 +19,7 @@ void check(bool ok) {
 void round_trip(std::span<const std::uint8_t> body) {
   auto framed = frame_rs232(body);
   if (!framed) return;
-  // Three zeros never occur between start and end mark (§11).
+  // Three zeros never occur between start and end mark ([roboticslibrary/rl LeuzeRs4.cpp]).
   const auto& wire = framed.value();
   for (std::size_t i = 2; i + 5 < wire.size(); ++i) {
     check(!(wire[i] == 0 && wire[i + 1] == 0 && wire[i + 2] == 0));

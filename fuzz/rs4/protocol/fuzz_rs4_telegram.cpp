@@ -1,4 +1,4 @@
-// Fuzzes the RS4 telegram decoder (spec/rs4-profisafe.md §6, §6.1): decode → encode →
+// Fuzzes the RS4 telegram decoder ([RS4 manual §5.2.3, §5.2.3.4]): decode → encode →
 // decode must give the same telegram; the measurement encoder from a contour must agree
 // with the value-list encoder.
 #include "rs4/protocol/telegram.h"

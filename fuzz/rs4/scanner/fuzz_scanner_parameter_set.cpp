@@ -2,13 +2,13 @@
 // Invariants: never crash; whatever decodes re-encodes to the same bytes (the encoding
 // is deterministic and decode is its exact inverse); validation of any decoded set
 // returns an issue or nothing, never crashes.
+#include "rs4/scanner/parameter_codec.h"
+
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <span>
-
-#include "rs4/scanner/parameter_codec.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace rs4sim::rs4::scanner;

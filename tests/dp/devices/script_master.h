@@ -1,6 +1,6 @@
 #pragma once
 // A scripted master for device tests: sends one request at a time over a MemoryBus and
-// returns the wire bytes of the reply, so tests compare against bytes from the spec.
+// returns the wire bytes of the reply, so tests compare against bytes from the cited sources.
 
 #include "dp/fdl/decoder.h"
 #include "dp/fdl/fcb.h"
@@ -33,8 +33,8 @@ class ScriptMaster final : public Station {
     return t;
   }
 
-  // Sends exactly these wire bytes (a frame written from the spec) and returns the reply
-  // bytes (empty: no reply). The frame's FC must match the FCB sequence of §1.8.
+  // Sends exactly these wire bytes (a frame written from the cited sources) and returns the reply
+  // bytes (empty: no reply). The frame's FC must match the FCB sequence of [IEC 61158-4-3 FCB/FCV].
   Bytes send_frame(const Bytes& frame) {
     fdl::Telegram t;
     EXPECT_FALSE(fdl::decode_frame(frame, t)) << "spec frame does not decode";

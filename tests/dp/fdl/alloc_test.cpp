@@ -35,15 +35,18 @@ class ReplySink final : public DecoderSink {
     written += encode(reply, out);
   }
   FcbResponder fcb;
-  Telegram reply = make_data_telegram(2, 5, FrameControl::response(ResponseStatus::kDataLow), std::nullopt,
-                                      std::nullopt, std::array<std::uint8_t, 1>{0x3C});
+  Telegram reply =
+      make_data_telegram(2, 5, FrameControl::response(ResponseStatus::kDataLow), std::nullopt,
+                         std::nullopt, std::array<std::uint8_t, 1>{0x3C});
   std::array<std::uint8_t, kMaxTelegramSize> out{};
   std::size_t written = 0;
 };
 
 TEST(FdlAlloc, DecodeAndEncodeDataExchangeWithoutHeap) {
-  // §2.10 DX request with 6 output bytes (FCS computed over DA..DU).
-  std::array<std::uint8_t, 15> dx = {0x68, 0x09, 0x09, 0x68, 0x05, 0x02, 0x7D, 1, 2, 3, 4, 5, 6, 0, 0x16};
+  // [docs/references.md#dp-worked-example] DX request with 6 output bytes (FCS computed over
+  // DA..DU).
+  std::array<std::uint8_t, 15> dx = {0x68, 0x09, 0x09, 0x68, 0x05, 0x02, 0x7D, 1,
+                                     2,    3,    4,    5,    6,    0,    0x16};
   unsigned sum = 0;
   for (std::size_t i = 4; i < 13; ++i) sum += dx[i];
   dx[13] = static_cast<std::uint8_t>(sum);

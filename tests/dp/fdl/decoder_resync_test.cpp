@@ -1,4 +1,4 @@
-// Streaming decoder: one test per malformed class of spec/profibus-dp.md §1.10, each
+// Streaming decoder: one test per malformed class of [IEC 61158-4-3 frame reception], each
 // followed by a good telegram that must survive the resynchronisation.
 #include "collect_sink.h"
 
@@ -11,7 +11,8 @@ using testing::Bytes;
 using testing::CollectSink;
 using testing::concat;
 
-// §2.10 Slave_Diag request (FCS verified) and Data_Exchange request.
+// [docs/references.md#dp-worked-example] Slave_Diag request (FCS verified) and Data_Exchange
+// request.
 const Bytes kDiagReq = {0x68, 0x05, 0x05, 0x68, 0x85, 0x82, 0x6D, 0x3C, 0x3E, 0xEE, 0x16};
 const Bytes kDx = {0x68, 0x04, 0x04, 0x68, 0x05, 0x02, 0x7D, 0xA5, 0x29, 0x16};
 
@@ -67,19 +68,22 @@ TEST(FdlDecoderResync, BadFcsDropsTheWholeFrame) {
   expect_resync({0x68, 0x04, 0x04, 0x68, 0x05, 0x02, 0x7D, 0xA5, 0x2A, 0x16}, DecodeError::kBadFcs);
   // A data byte E5 inside a frame with a bad FCS must not become a short ack: ED confirms
   // the framing, so the frame is dropped as a whole.
-  const Outcome o = run(concat({{0x68, 0x04, 0x04, 0x68, 0x05, 0x02, 0x7D, 0xE5, 0x00, 0x16}, kDx}));
+  const Outcome o =
+      run(concat({{0x68, 0x04, 0x04, 0x68, 0x05, 0x02, 0x7D, 0xE5, 0x00, 0x16}, kDx}));
   ASSERT_EQ(o.sink.events.size(), 2U);
   EXPECT_EQ(o.sink.errors().at(0), DecodeError::kBadFcs);
   EXPECT_EQ(o.sink.telegrams().at(0).type, FrameType::kSd2);
   EXPECT_EQ(o.stats.discarded_bytes, 10U);
   // SD1 and SD3 with a bad FCS.
   expect_resync({0x10, 0x05, 0x02, 0x49, 0x51, 0x16}, DecodeError::kBadFcs);
-  expect_resync({0xA2, 0x82, 0x85, 0x08, 0x3E, 0x3C, 0x02, 0x05, 0x00, 0xFF, 0x12, 0x34, 0xD6, 0x16},
-                DecodeError::kBadFcs);
+  expect_resync(
+      {0xA2, 0x82, 0x85, 0x08, 0x3E, 0x3C, 0x02, 0x05, 0x00, 0xFF, 0x12, 0x34, 0xD6, 0x16},
+      DecodeError::kBadFcs);
 }
 
 TEST(FdlDecoderResync, BadEndDelimiter) {
-  expect_resync({0x68, 0x04, 0x04, 0x68, 0x05, 0x02, 0x7D, 0xA5, 0x29, 0x17}, DecodeError::kBadEndDelimiter);
+  expect_resync({0x68, 0x04, 0x04, 0x68, 0x05, 0x02, 0x7D, 0xA5, 0x29, 0x17},
+                DecodeError::kBadEndDelimiter);
   expect_resync({0x10, 0x05, 0x02, 0x49, 0x50, 0x00}, DecodeError::kBadEndDelimiter);
 }
 
@@ -90,7 +94,8 @@ TEST(FdlDecoderResync, LostTailDoesNotSwallowTheNextFrame) {
 }
 
 TEST(FdlDecoderResync, LengthMismatch) {
-  expect_resync({0x68, 0x05, 0x06, 0x68, 0x85, 0x82, 0x6D, 0x3C, 0x3E, 0xEE, 0x16}, DecodeError::kLengthMismatch);
+  expect_resync({0x68, 0x05, 0x06, 0x68, 0x85, 0x82, 0x6D, 0x3C, 0x3E, 0xEE, 0x16},
+                DecodeError::kLengthMismatch);
 }
 
 TEST(FdlDecoderResync, LengthOutOfRange) {
@@ -105,13 +110,15 @@ TEST(FdlDecoderResync, RepeatedStartDelimiterMismatch) {
 
 TEST(FdlDecoderResync, DsapWithoutSsapAndViceVersa) {
   // DA 5|0x80, SA 2 (no ext), FC 6D, DSAP 3C, data 01, FCS 31.
-  expect_resync({0x68, 0x05, 0x05, 0x68, 0x85, 0x02, 0x6D, 0x3C, 0x01, 0x31, 0x16}, DecodeError::kSapWithoutPartner);
+  expect_resync({0x68, 0x05, 0x05, 0x68, 0x85, 0x02, 0x6D, 0x3C, 0x01, 0x31, 0x16},
+                DecodeError::kSapWithoutPartner);
   // DA 5, SA 2|0x80, FC 6D, SSAP 3E, data 01, FCS 33.
-  expect_resync({0x68, 0x05, 0x05, 0x68, 0x05, 0x82, 0x6D, 0x3E, 0x01, 0x33, 0x16}, DecodeError::kSapWithoutPartner);
+  expect_resync({0x68, 0x05, 0x05, 0x68, 0x05, 0x82, 0x6D, 0x3E, 0x01, 0x33, 0x16},
+                DecodeError::kSapWithoutPartner);
 }
 
 TEST(FdlDecoderResync, UnsupportedOrMissingAddressExtension) {
-  // DSAP byte 7C has bit 6 set (segment address): not DP (§1.4). FCS 2E.
+  // DSAP byte 7C has bit 6 set (segment address): not DP ([IEC 61158-4-3 addresses, SAPs]). FCS 2E.
   expect_resync({0x68, 0x05, 0x05, 0x68, 0x85, 0x82, 0x6D, 0x7C, 0x3E, 0x2E, 0x16},
                 DecodeError::kBadAddressExtension);
   // SSAP byte BE has bit 7 set (another extension byte follows). FCS 6E.
@@ -122,10 +129,13 @@ TEST(FdlDecoderResync, UnsupportedOrMissingAddressExtension) {
 }
 
 TEST(FdlDecoderResync, ReservedFrameControl) {
-  expect_resync({0x10, 0x05, 0x02, 0x41, 0x48, 0x16}, DecodeError::kBadFrameControl);  // request fn 1
+  expect_resync({0x10, 0x05, 0x02, 0x41, 0x48, 0x16},
+                DecodeError::kBadFrameControl);  // request fn 1
   expect_resync({0x10, 0x02, 0x05, 0x04, 0x0B, 0x16}, DecodeError::kBadFrameControl);  // response 4
-  expect_resync({0x10, 0x02, 0x05, 0x80, 0x87, 0x16}, DecodeError::kBadFrameControl);  // bit 7 on a response
-  expect_resync({0x10, 0x05, 0x02, 0xC3, 0xCA, 0x16}, DecodeError::kBadFrameControl);  // bit 7 with SDA
+  expect_resync({0x10, 0x02, 0x05, 0x80, 0x87, 0x16},
+                DecodeError::kBadFrameControl);  // bit 7 on a response
+  expect_resync({0x10, 0x05, 0x02, 0xC3, 0xCA, 0x16},
+                DecodeError::kBadFrameControl);  // bit 7 with SDA
   // Bit 7 with function 0 is a clock value (CV), which is legal.
   const Outcome cv = run({0x10, 0x05, 0x02, 0xC0, 0xC7, 0x16});
   EXPECT_TRUE(cv.sink.errors().empty());

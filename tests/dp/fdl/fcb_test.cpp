@@ -1,4 +1,4 @@
-// FCB/FCV rules of spec/profibus-dp.md §1.8 on both sides.
+// FCB/FCV rules of [IEC 61158-4-3 FCB/FCV] on both sides.
 #include "dp/fdl/fcb.h"
 
 #include <gtest/gtest.h>
@@ -11,13 +11,14 @@ constexpr auto kSrd = RequestFunction::kSrdHigh;
 FrameControl fc(std::uint8_t raw) { return FrameControl{raw}; }
 
 Telegram reply_with(std::uint8_t byte) {
-  return make_data_telegram(2, 5, FrameControl::response(ResponseStatus::kDataLow), std::nullopt, std::nullopt,
-                            std::vector<std::uint8_t>{byte});
+  return make_data_telegram(2, 5, FrameControl::response(ResponseStatus::kDataLow), std::nullopt,
+                            std::nullopt, std::vector<std::uint8_t>{byte});
 }
 
 TEST(FdlFcbInitiator, FirstFrameThenTogglingAsInTheWorkedExample) {
   FcbInitiator m;
-  // §2.10: Slave_Diag 6D, Set_Prm 5D, Chk_Cfg 7D, Slave_Diag 5D, DX 7D.
+  // [docs/references.md#dp-worked-example]: Slave_Diag 6D, Set_Prm 5D, Chk_Cfg 7D, Slave_Diag 5D,
+  // DX 7D.
   EXPECT_EQ(m.next(5, kSrd).raw, 0x6D);
   EXPECT_TRUE(m.last_was_first(5));
   EXPECT_EQ(m.next(5, kSrd).raw, 0x5D);
@@ -56,8 +57,8 @@ TEST(FdlFcbResponder, FirstNewRepeatSequence) {
   EXPECT_EQ(s.on_request(2, fc(0x6D)), FcbVerdict::kFirst);  // FCV=0 FCB=1
   EXPECT_EQ(s.initiator(), 2);
   s.store_reply(reply_with(0x01));
-  EXPECT_EQ(s.on_request(2, fc(0x5D)), FcbVerdict::kNew);    // FCB toggled 1→0
-  EXPECT_EQ(s.stored_reply(), nullptr);                      // cleared for the new request
+  EXPECT_EQ(s.on_request(2, fc(0x5D)), FcbVerdict::kNew);  // FCB toggled 1→0
+  EXPECT_EQ(s.stored_reply(), nullptr);                    // cleared for the new request
   s.store_reply(reply_with(0x02));
   EXPECT_EQ(s.on_request(2, fc(0x5D)), FcbVerdict::kRepeat);  // same FCB: repetition
   ASSERT_NE(s.stored_reply(), nullptr);
@@ -67,7 +68,8 @@ TEST(FdlFcbResponder, FirstNewRepeatSequence) {
 }
 
 TEST(FdlFcbResponder, RepeatedFirstFrameIsExecutedAgain) {
-  // §1.8: the first frame (FCV=0) is not FCB-evaluated; each one restarts the cycle.
+  // [IEC 61158-4-3 FCB/FCV]: the first frame (FCV=0) is not FCB-evaluated; each one restarts the
+  // cycle.
   FcbResponder s;
   EXPECT_EQ(s.on_request(2, fc(0x6D)), FcbVerdict::kFirst);
   EXPECT_EQ(s.on_request(2, fc(0x6D)), FcbVerdict::kFirst);

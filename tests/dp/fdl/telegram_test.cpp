@@ -1,7 +1,9 @@
-// FDL telegram encoding/decoding against the byte examples of spec/profibus-dp.md §1.2,
-// §2.10 (worked example, FCS verified), §3.4/§3.5 (DPV1) and the traces cited there.
-#include "dp/fdl/decoder.h"
+// FDL telegram encoding/decoding against the byte examples of [IEC 61158-4-3 frame formats],
+// [docs/references.md#dp-worked-example] (worked example, FCS verified),
+// [IEC 61158-6-3 MSAC_C1 polling, DPV1 alarms] (DPV1) and the traces cited there.
 #include "dp/fdl/telegram.h"
+
+#include "dp/fdl/decoder.h"
 
 #include <gtest/gtest.h>
 
@@ -45,8 +47,9 @@ TEST(FdlTelegram, Sd1FdlStatusRequest) {
   EXPECT_EQ(t.fc.function(), RequestFunction::kFdlStatus);
   EXPECT_FALSE(t.dsap);
   EXPECT_TRUE(t.data.empty());
-  EXPECT_EQ(encode_bytes(make_data_telegram(5, 2, FrameControl::request(RequestFunction::kFdlStatus, false, false),
-                                            std::nullopt, std::nullopt, {})),
+  EXPECT_EQ(encode_bytes(make_data_telegram(
+                5, 2, FrameControl::request(RequestFunction::kFdlStatus, false, false),
+                std::nullopt, std::nullopt, {})),
             wire);
 }
 
@@ -60,9 +63,10 @@ TEST(FdlTelegram, Sd1FdlStatusReplyAndRs) {
   EXPECT_EQ(decode_ok(ok).fc.status(), ResponseStatus::kOk);
   EXPECT_EQ(decode_ok(ok).fc.station_type(), StationType::kSlave);
   EXPECT_EQ(decode_ok(rs).fc.status(), ResponseStatus::kSapNotEnabled);
-  EXPECT_EQ(encode_bytes(make_data_telegram(2, 5, FrameControl::response(ResponseStatus::kSapNotEnabled),
-                                            std::nullopt, std::nullopt, {})),
-            rs);
+  EXPECT_EQ(
+      encode_bytes(make_data_telegram(2, 5, FrameControl::response(ResponseStatus::kSapNotEnabled),
+                                      std::nullopt, std::nullopt, {})),
+      rs);
 }
 
 TEST(FdlTelegram, Sd2SlaveDiagRequestFirstFrame) {
@@ -88,8 +92,8 @@ TEST(FdlTelegram, Sd2SlaveDiagRequestFirstFrame) {
   EXPECT_EQ(t.dsap, 60);
   EXPECT_EQ(t.ssap, 62);
   EXPECT_TRUE(t.data.empty());
-  EXPECT_EQ(encode_bytes(make_data_telegram(5, 2, FrameControl::request(RequestFunction::kSrdHigh, true, false),
-                                            60, 62, {})),
+  EXPECT_EQ(encode_bytes(make_data_telegram(
+                5, 2, FrameControl::request(RequestFunction::kSrdHigh, true, false), 60, 62, {})),
             wire);
 }
 
@@ -142,16 +146,19 @@ TEST(FdlTelegram, SetPrmChkCfgAndDataExchangeFromWorkedExample) {
   EXPECT_FALSE(d.dsap);
   EXPECT_FALSE(d.ssap);
   EXPECT_EQ(d.data, (DataUnit{0xA5}));
-  EXPECT_EQ(encode_bytes(make_data_telegram(5, 2, FrameControl::request(RequestFunction::kSrdHigh, true, true),
-                                            std::nullopt, std::nullopt, std::vector<std::uint8_t>{0xA5})),
+  EXPECT_EQ(encode_bytes(make_data_telegram(
+                5, 2, FrameControl::request(RequestFunction::kSrdHigh, true, true), std::nullopt,
+                std::nullopt, std::vector<std::uint8_t>{0xA5})),
             dx);
   // Replies DL (08) and DH (0A, diagnosis pending) with input 3C.
-  EXPECT_EQ(encode_bytes(make_data_telegram(2, 5, FrameControl::response(ResponseStatus::kDataLow), std::nullopt,
-                                            std::nullopt, std::vector<std::uint8_t>{0x3C})),
-            (Bytes{0x68, 0x04, 0x04, 0x68, 0x02, 0x05, 0x08, 0x3C, 0x4B, 0x16}));
-  EXPECT_EQ(encode_bytes(make_data_telegram(2, 5, FrameControl::response(ResponseStatus::kDataHigh), std::nullopt,
-                                            std::nullopt, std::vector<std::uint8_t>{0x3C})),
-            (Bytes{0x68, 0x04, 0x04, 0x68, 0x02, 0x05, 0x0A, 0x3C, 0x4D, 0x16}));
+  EXPECT_EQ(
+      encode_bytes(make_data_telegram(2, 5, FrameControl::response(ResponseStatus::kDataLow),
+                                      std::nullopt, std::nullopt, std::vector<std::uint8_t>{0x3C})),
+      (Bytes{0x68, 0x04, 0x04, 0x68, 0x02, 0x05, 0x08, 0x3C, 0x4B, 0x16}));
+  EXPECT_EQ(
+      encode_bytes(make_data_telegram(2, 5, FrameControl::response(ResponseStatus::kDataHigh),
+                                      std::nullopt, std::nullopt, std::vector<std::uint8_t>{0x3C})),
+      (Bytes{0x68, 0x04, 0x04, 0x68, 0x02, 0x05, 0x0A, 0x3C, 0x4D, 0x16}));
 }
 
 TEST(FdlTelegram, GlobalControlBroadcastClear) {
@@ -169,15 +176,15 @@ TEST(FdlTelegram, GlobalControlBroadcastClear) {
 }
 
 TEST(FdlTelegram, TraceTiSlaveDiagAndFestoRs) {
-  // [TRACE #7]: SD2 with LE 11 where SD3 would also fit.
-  const Telegram ti = decode_ok({0x68, 0x0B, 0x0B, 0x68, 0xE3, 0x82, 0x08, 0x3E, 0x3C, 0x02, 0x05, 0x00, 0xFF,
-                                 0x0C, 0xDA, 0xD3, 0x16});
+  // [pyprofibus issue #7 trace]: SD2 with LE 11 where SD3 would also fit.
+  const Telegram ti = decode_ok({0x68, 0x0B, 0x0B, 0x68, 0xE3, 0x82, 0x08, 0x3E, 0x3C, 0x02, 0x05,
+                                 0x00, 0xFF, 0x0C, 0xDA, 0xD3, 0x16});
   EXPECT_EQ(ti.da, 99);
   EXPECT_EQ(ti.sa, 2);
-  // [TRACE #19]: slave 8 answers RS.
+  // [pyprofibus issue #19 trace]: slave 8 answers RS.
   const Telegram festo = decode_ok({0x10, 0x02, 0x08, 0x03, 0x0D, 0x16});
   EXPECT_EQ(festo.fc.status(), ResponseStatus::kSapNotEnabled);
-  // §1.2: Data_Exchange to a slave without outputs is SD1.
+  // [IEC 61158-4-3 frame formats]: Data_Exchange to a slave without outputs is SD1.
   const Telegram dx0 = decode_ok({0x10, 0x05, 0x02, 0x5D, 0x64, 0x16});
   EXPECT_EQ(dx0.type, FrameType::kSd1);
   EXPECT_FALSE(dx0.dsap);
@@ -189,8 +196,8 @@ TEST(FdlTelegram, Dpv1ReadRequestAndResponse) {
                      0x33, 0x33,              // 7,8 DSAP 51, SSAP 51 (MSAC_C1)
                      0x5E, 0x00, 0x01, 0x10,  // 9..12 Read slot 0 index 1 length 16
                      0x38, 0x16};
-  const Bytes res = {0x68, 0x0B, 0x0B, 0x68, 0x82, 0x85, 0x08, 0x33, 0x33,
-                     0x5E, 0x00, 0x01, 0x02, 0xAB, 0xCD,  // 9..14 Read.res+ 2 bytes AB CD
+  const Bytes res = {0x68, 0x0B, 0x0B, 0x68, 0x82, 0x85, 0x08, 0x33,
+                     0x33, 0x5E, 0x00, 0x01, 0x02, 0xAB, 0xCD,  // 9..14 Read.res+ 2 bytes AB CD
                      0x4E, 0x16};
   EXPECT_EQ(encode_bytes(decode_ok(req)), req);
   EXPECT_EQ(encode_bytes(decode_ok(res)), res);
@@ -200,9 +207,10 @@ TEST(FdlTelegram, Dpv1ReadRequestAndResponse) {
 TEST(FdlTelegram, ShortAckAndToken) {
   EXPECT_EQ(encode_bytes(make_short_ack()), (Bytes{0xE5}));
   EXPECT_EQ(decode_ok({0xE5}).type, FrameType::kShortAck);
-  const Bytes token = {0xDC,  // 0 SD4
-                       0x02,  // 1 DA 2
-                       0x02}; // 2 SA 2 (lone master passes the token to itself, §1.9)
+  const Bytes token = {0xDC,   // 0 SD4
+                       0x02,   // 1 DA 2
+                       0x02};  // 2 SA 2 (lone master passes the token to itself,
+                               // [IEC 61158-4-3 token])
   EXPECT_EQ(encode_bytes(make_token(2, 2)), token);
   const Telegram t = decode_ok(token);
   EXPECT_EQ(t.type, FrameType::kToken);
@@ -233,8 +241,9 @@ TEST(FdlTelegram, FcsMatchesByteSumForEveryLengthAndOffset) {
 }
 
 TEST(FdlTelegram, MaximumSd2AndEmptySd2) {
-  Telegram t = make_data_telegram(3, 1, FrameControl::request(RequestFunction::kSrdHigh, true, true), 51, 51,
-                                  std::vector<std::uint8_t>(244, 0xE5));
+  Telegram t =
+      make_data_telegram(3, 1, FrameControl::request(RequestFunction::kSrdHigh, true, true), 51, 51,
+                         std::vector<std::uint8_t>(244, 0xE5));
   const Bytes wire = encode_bytes(t);
   ASSERT_EQ(wire.size(), kMaxTelegramSize);
   EXPECT_EQ(wire[1], 249);  // LE = 3 + 2 ext + 244
@@ -247,11 +256,13 @@ TEST(FdlTelegram, MaximumSd2AndEmptySd2) {
   const Bytes empty_wire = {0x68, 0x03, 0x03, 0x68,  // SD2, LE = LEr = 3: DA SA FC only
                             0x01, 0x02, 0x00, 0x03, 0x16};
   EXPECT_EQ(encode_bytes(empty), empty_wire);
-  EXPECT_EQ(decode_ok(empty_wire), empty);  // accepted like pyprofibus (LE ≥ 3, §1.10)
+  EXPECT_EQ(decode_ok(empty_wire), empty);  // accepted like pyprofibus (LE ≥ 3,
+                                            // [IEC 61158-4-3 frame reception])
 }
 
 TEST(FdlTelegram, EncodeRejectsBrokenPreconditions) {
-  Telegram t = make_data_telegram(5, 2, FrameControl::request(RequestFunction::kSrdHigh, true, true), 60, 62, {});
+  Telegram t = make_data_telegram(
+      5, 2, FrameControl::request(RequestFunction::kSrdHigh, true, true), 60, 62, {});
   Bytes out;
   Telegram bad = t;
   bad.ssap.reset();

@@ -34,8 +34,9 @@ class FakeStation : public Station {
     if (reply_ == Reply::kEchoData) {
       outbox.push_back(fdl::make_data_telegram(
           t.sa, address_, fdl::FrameControl::response(fdl::ResponseStatus::kDataLow), t.ssap,
-          t.dsap, reply_data ? std::span<const std::uint8_t>(*reply_data)
-                             : std::span<const std::uint8_t>(t.data.data(), t.data.size())));
+          t.dsap,
+          reply_data ? std::span<const std::uint8_t>(*reply_data)
+                     : std::span<const std::uint8_t>(t.data.data(), t.data.size())));
     }
   }
 
@@ -79,7 +80,8 @@ class FakeStation : public Station {
   std::optional<Duration> period;
   std::optional<fdl::Telegram> on_timer;
   std::optional<TimePoint> stuck_deadline;
-  std::optional<std::vector<std::uint8_t>> reply_data;  // kEchoData: reply with this instead  // a broken core that never advances
+  std::optional<std::vector<std::uint8_t>>
+      reply_data;  // kEchoData: reply with this instead  // a broken core that never advances
   int on_time_calls = 0;
   int timer_fires = 0;
   TimePoint last_on_time{};
@@ -91,11 +93,10 @@ class FakeStation : public Station {
 };
 
 // A Data_Exchange-shaped request (default SAP, SRD_HI FCB=1 FCV=1) from `sa` to `da`.
-inline fdl::Telegram srd_request(std::uint8_t da, std::uint8_t sa,
-                                 std::vector<std::uint8_t> data) {
-  return fdl::make_data_telegram(da, sa,
-                                 fdl::FrameControl::request(fdl::RequestFunction::kSrdHigh, true, true),
-                                 std::nullopt, std::nullopt, data);
+inline fdl::Telegram srd_request(std::uint8_t da, std::uint8_t sa, std::vector<std::uint8_t> data) {
+  return fdl::make_data_telegram(
+      da, sa, fdl::FrameControl::request(fdl::RequestFunction::kSrdHigh, true, true), std::nullopt,
+      std::nullopt, data);
 }
 
 }  // namespace rs4sim::dp::link::testing

@@ -1,4 +1,5 @@
-// MemoryBus wire model (§1.1 11 bit/char, §1.7 TSYN/TSDR) and fault injection.
+// MemoryBus wire model ([IEC 61158-4-3 UART character] [IEC 61158-2 baud rates] 11 bit/char,
+// [IEC 61158-4-3 bus parameters, timing] TSYN/TSDR) and fault injection.
 #include "dp/link/memory_bus.h"
 #include "tests/dp/link/fake_station.h"
 
@@ -40,11 +41,12 @@ TEST(MemoryBusWire, SlowRateAndTheLineCarriesOneTelegramAtATime) {
   bus.attach(b);
   bus.attach(c);
   const TimePoint t0 = clock.now();
-  // SD1 FDL_Status requests, 6 bytes each (§1.2): 33 + 66 = 99 bit = 10.3125 ms at 9.6k.
+  // SD1 FDL_Status requests, 6 bytes each ([IEC 61158-4-3 frame formats]): 33 + 66 = 99 bit
+  // = 10.3125 ms at 9.6k.
   const auto status = [](std::uint8_t da, std::uint8_t sa) {
-    return fdl::make_data_telegram(da, sa,
-                                   fdl::FrameControl::request(fdl::RequestFunction::kFdlStatus, false, false),
-                                   std::nullopt, std::nullopt, {});
+    return fdl::make_data_telegram(
+        da, sa, fdl::FrameControl::request(fdl::RequestFunction::kFdlStatus, false, false),
+        std::nullopt, std::nullopt, {});
   };
   a.outbox.push_back(status(2, 1));
   a.outbox.push_back(status(3, 1));
@@ -93,7 +95,8 @@ TEST_F(MemoryBusFaults, DropOfTheReplyOnly) {
 }
 
 TEST_F(MemoryBusFaults, EverySingleBitFlipOfADataExchangeIsRejectedByTheReceiver) {
-  // 10-byte frame = 80 bits; FCS (§1.3), LE/LEr, SD and ED checks must catch each flip.
+  // 10-byte frame = 80 bits; FCS ([IEC 61158-4-3 FCS]), LE/LEr, SD and ED checks must catch each
+  // flip.
   for (std::uint32_t bit = 0; bit < 80; ++bit) {
     bus.inject({FaultKind::kCorrupt, 2, 5, 1, {}, bit});
     exchange({0x5A});

@@ -1,7 +1,8 @@
 // MemoryBus: routing, simulated time, wire model and fault injection.
-// Known answers are the worked example of spec/profibus-dp.md §2.10 and the timing
-// rules of §1.1/§1.7.
+// Known answers are the worked example of [docs/references.md#dp-worked-example] and the timing
+// rules of [IEC 61158-4-3 UART character, bus parameters, timing] [IEC 61158-2 baud rates].
 #include "dp/link/memory_bus.h"
+
 #include "tests/dp/link/fake_station.h"
 
 #include <gtest/gtest.h>
@@ -45,7 +46,7 @@ TEST_F(MemoryBusTest, DataExchangeOfSpecExampleIsRoutedAndAnswered) {
   while (bus.step()) {
   }
   ASSERT_EQ(log.size(), 2U);
-  // §2.10 "M→S DX": 68 04 04 68 05 02 7D A5 29 16
+  // [docs/references.md#dp-worked-example] "M→S DX": 68 04 04 68 05 02 7D A5 29 16
   const Bytes request = {
       0x68,  // 0 SD2
       0x04,  // 1 LE = DA+SA+FC+DU
@@ -60,7 +61,7 @@ TEST_F(MemoryBusTest, DataExchangeOfSpecExampleIsRoutedAndAnswered) {
   };
   EXPECT_EQ(log[0].bytes, request);
   EXPECT_EQ(log[0].to, 5);
-  // §2.10 "S→M DX reply DL": 68 04 04 68 02 05 08 3C 4B 16
+  // [docs/references.md#dp-worked-example] "S→M DX reply DL": 68 04 04 68 02 05 08 3C 4B 16
   const Bytes reply = {
       0x68, 0x04, 0x04, 0x68,  // 0..3 SD2 LE LEr SD2
       0x02,                    // 4 DA = master 2
@@ -108,7 +109,8 @@ TEST_F(MemoryBusTest, BroadcastReachesEveryOtherStationAndIsNeverAnswered) {
     slaves.push_back(std::make_unique<FakeStation>(a, FakeStation::Reply::kShortAck));
     bus.attach(*slaves.back());
   }
-  // §2.10 "M→* GC Clear": SDN high to DA 127, DSAP 58, SSAP 62, DU 02 00.
+  // [docs/references.md#dp-worked-example] "M→* GC Clear": SDN high to DA 127, DSAP 58, SSAP 62, DU
+  // 02 00.
   master.outbox.push_back(fdl::make_data_telegram(
       127, 2, fdl::FrameControl::request(fdl::RequestFunction::kSdnHigh, false, false), 58, 62,
       Bytes{0x02, 0x00}));

@@ -76,8 +76,10 @@ TEST_F(PtyLinkTest, GarbageAndATruncatedFrameAreDroppedAndCountedThenFramingReco
   // Noise, then the first 6 bytes of an SD2 frame that never completes (line goes idle).
   const Bytes noise = {0x00, 0xFF, 0x42, 0x68, 0x04, 0x04, 0x68, 0x05, 0x02};
   ASSERT_EQ(::write(fd, noise.data(), noise.size()), static_cast<ssize_t>(noise.size()));
-  ASSERT_TRUE(run_until(io, [&] { return runner.decoder_stats().count(fdl::DecodeError::kTruncated) == 1; }));
-  // §2.10 "M→S DX" arrives whole after the idle gap and is delivered.
+  ASSERT_TRUE(run_until(
+      io, [&] { return runner.decoder_stats().count(fdl::DecodeError::kTruncated) == 1; }));
+  // [docs/references.md#dp-worked-example] "M→S DX" arrives whole after the idle gap and is
+  // delivered.
   const Bytes dx = {0x68, 0x04, 0x04, 0x68, 0x05, 0x02, 0x7D, 0xA5, 0x29, 0x16};
   ASSERT_EQ(::write(fd, dx.data(), dx.size()), static_cast<ssize_t>(dx.size()));
   ASSERT_TRUE(run_until(io, [&] { return slave.received.size() == 1; }));

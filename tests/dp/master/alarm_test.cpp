@@ -1,4 +1,4 @@
-// DPV1 alarms seen by the master (spec/profibus-dp.md §3.5): alarm PDU in the extended
+// DPV1 alarms seen by the master ([IEC 61158-6-3 DPV1 alarms]): alarm PDU in the extended
 // diagnosis → AlarmReceived → Alarm_Ack, automatic or by the user, Alarm_Mode checks.
 
 #include "master_fixture.h"
@@ -17,11 +17,12 @@ Bytes diag_with(const Bytes& ext) {
   Bytes f;
   f.reserve(6 + le);
   for (std::uint8_t b : {std::uint8_t{0x68}, le, le, std::uint8_t{0x68}}) f.push_back(b);
-  for (int b : {0x82, 0x85, 0x08, 0x3E, 0x3C}) f.push_back(static_cast<std::uint8_t>(b));  // DA SA FC DSAP SSAP
-  for (int b : {0x08,                   // Station_Status_1: Ext_Diag
-                         0x0C,          // Station_Status_2: WD_On + always-1
-                         0x00, 0x02,    // Station_Status_3, Master_Add 2
-                         0x12, 0x34}) {  // Ident
+  for (int b : {0x82, 0x85, 0x08, 0x3E, 0x3C})
+    f.push_back(static_cast<std::uint8_t>(b));  // DA SA FC DSAP SSAP
+  for (int b : {0x08,                           // Station_Status_1: Ext_Diag
+                0x0C,                           // Station_Status_2: WD_On + always-1
+                0x00, 0x02,                     // Station_Status_3, Master_Add 2
+                0x12, 0x34}) {                  // Ident
     f.push_back(static_cast<std::uint8_t>(b));
   }
   for (std::uint8_t b : ext) f.push_back(b);
@@ -54,7 +55,7 @@ TEST(MasterAlarm, AlarmIsDeliveredAndAcknowledged) {
   MasterFixture f;
   f.bring_to_dx();
   const Bytes ack = deliver_diag(f, diag_with(kDiagAlarmSlot0Seq1));
-  // §3.5 example: Alarm_Ack for a diagnostic alarm, slot 0, Seq 1, appears.
+  // [IEC 61158-6-3 DPV1 alarms] example: Alarm_Ack for a diagnostic alarm, slot 0, Seq 1, appears.
   EXPECT_EQ(hex(ack), hex(Bytes{0x68, 0x09, 0x09, 0x68,  // SD2, LE 9
                                 0x85, 0x82,              // DA 5, SA 2
                                 0x5C,                    // SRD low, FCV=1, FCB=0
@@ -72,7 +73,7 @@ TEST(MasterAlarm, AlarmIsDeliveredAndAcknowledged) {
   EXPECT_FALSE(alarms[0].add_ack());
   EXPECT_EQ(alarms[0].data, Bytes{0x5A});
   EXPECT_EQ(f.master.slave_status(5)->alarms_outstanding, 1U);
-  // Alarm_Ack.res+ = echo with FC DL ([VPC3-C1]).
+  // Alarm_Ack.res+ = echo with FC DL ([VPC3+ dp_msac1.c]).
   f.reply({0x68, 0x09, 0x09, 0x68, 0x82, 0x85, 0x08, 0x33, 0x33, 0x5C, 0x00, 0x01, 0x09,
            fcs({0x82, 0x85, 0x08, 0x33, 0x33, 0x5C, 0x00, 0x01, 0x09}), 0x16});
   const auto acked = f.events<AlarmAcknowledged>();
@@ -84,7 +85,8 @@ TEST(MasterAlarm, AlarmIsDeliveredAndAcknowledged) {
 TEST(MasterAlarm, ProcessAlarmFromTheCp5613Example) {
   MasterFixture f;
   f.bring_to_dx();
-  // §3.5 [CP5613 p187]: `09 02 03 01 50 tt tt tt tt` = process alarm, slot 3, appears, Seq 0.
+  // [IEC 61158-6-3 DPV1 alarms] [CP 5613/5614 DP manual p. 187]: `09 02 03 01 50 tt tt tt tt` =
+  // process alarm, slot 3, appears, Seq 0.
   deliver_diag(f, diag_with({0x09, 0x02, 0x03, 0x01, 0x50, 0x11, 0x22, 0x33, 0x44}));
   const auto alarms = f.events<AlarmReceived>();
   ASSERT_EQ(alarms.size(), 1U);
@@ -114,7 +116,8 @@ TEST(MasterAlarm, ManualAcknowledgement) {
   f.bring_to_dx();
   const Bytes next = deliver_diag(f, diag_with(kDiagAlarmSlot0Seq1));
   EXPECT_EQ(next[4], 0x05) << "no automatic Alarm_Ack";
-  EXPECT_EQ(f.master.acknowledge_alarm(5, 0, 1, 2), make_error_code(MasterError::kAlarmNotOutstanding));
+  EXPECT_EQ(f.master.acknowledge_alarm(5, 0, 1, 2),
+            make_error_code(MasterError::kAlarmNotOutstanding));
   EXPECT_EQ(f.master.acknowledge_alarm(7, 0, 1, 1), make_error_code(MasterError::kUnknownSlave));
   EXPECT_FALSE(f.master.acknowledge_alarm(5, 0, 1, 1));
   f.reply(kDxDl);
@@ -127,8 +130,8 @@ TEST(MasterAlarm, NegativeAckIsReported) {
   MasterFixture f;
   f.bring_to_dx();
   deliver_diag(f, diag_with(kDiagAlarmSlot0Seq1));
-  f.reply({0x68, 0x09, 0x09, 0x68, 0x82, 0x85, 0x08, 0x33, 0x33,
-           0xDC, 0x80, 0xB5, 0x00,  // Alarm_Ack | 0x80, DPV1, state conflict
+  f.reply({0x68, 0x09, 0x09, 0x68, 0x82, 0x85, 0x08, 0x33, 0x33, 0xDC, 0x80, 0xB5,
+           0x00,  // Alarm_Ack | 0x80, DPV1, state conflict
            fcs({0x82, 0x85, 0x08, 0x33, 0x33, 0xDC, 0x80, 0xB5, 0x00}), 0x16});
   const auto acked = f.events<AlarmAcknowledged>();
   ASSERT_EQ(acked.size(), 1U);
@@ -153,8 +156,7 @@ TEST(MasterAlarm, SequenceModeAllowsSeveralAndAcksInOrder) {
   cfg.slaves[0].prm.dpv1->alarm_mode = 1;  // two outstanding alarms in total
   MasterFixture f(cfg);
   f.bring_to_dx();
-  const Bytes first = deliver_diag(f, diag_with({0x04, 0x01, 0x00, 0x09,
-                                                 0x04, 0x01, 0x01, 0x11}));
+  const Bytes first = deliver_diag(f, diag_with({0x04, 0x01, 0x00, 0x09, 0x04, 0x01, 0x01, 0x11}));
   EXPECT_TRUE(f.events<SlaveFault>().empty());
   EXPECT_EQ(hex(Bytes(first.begin() + 9, first.begin() + 13)), "5C 00 01 09");
   f.reply({0xE5});

@@ -1,5 +1,5 @@
-// Configuration checks, bus-parameter defaults (spec/profibus-dp.md §1.7), watchdog
-// factors (§2.3) and the error categories.
+// Configuration checks, bus-parameter defaults ([IEC 61158-4-3 bus parameters, timing]), watchdog
+// factors ([IEC 61158-6-3 Set_Prm]) and the error categories.
 
 #include "master_fixture.h"
 
@@ -13,10 +13,10 @@ TEST(MasterConfigTest, BusParameterDefaultsFollowTheTable) {
     BaudRate baud;
     std::uint32_t tsl, max_tsdr, tset, tqui;
   };
-  // §1.7 default bus parameters (Tbit).
-  const Row rows[] = {{BaudRate::k9k6, 100, 60, 1, 0},    {BaudRate::k187k5, 100, 60, 1, 0},
-                      {BaudRate::k500k, 200, 100, 1, 0},  {BaudRate::k1M5, 300, 150, 1, 0},
-                      {BaudRate::k3M, 400, 250, 4, 3},    {BaudRate::k6M, 600, 450, 8, 6},
+  // [IEC 61158-4-3 bus parameters, timing] default bus parameters (Tbit).
+  const Row rows[] = {{BaudRate::k9k6, 100, 60, 1, 0},   {BaudRate::k187k5, 100, 60, 1, 0},
+                      {BaudRate::k500k, 200, 100, 1, 0}, {BaudRate::k1M5, 300, 150, 1, 0},
+                      {BaudRate::k3M, 400, 250, 4, 3},   {BaudRate::k6M, 600, 450, 8, 6},
                       {BaudRate::k12M, 1000, 800, 16, 9}};
   for (const Row& r : rows) {
     const BusParameters p = BusParameters::defaults_for(r.baud);
@@ -31,7 +31,9 @@ TEST(MasterConfigTest, BusParameterDefaultsFollowTheTable) {
 
 TEST(MasterConfigTest, BitTimes) {
   const BusParameters slow = BusParameters::defaults_for(BaudRate::k9k6);
-  EXPECT_EQ(slow.bits(1), std::chrono::nanoseconds(104'167));  // 104.2 µs (§1.1)
+  EXPECT_EQ(slow.bits(1), std::chrono::nanoseconds(104'167));  // 104.2 µs
+                                                               // ([IEC 61158-4-3 UART character]
+                                                               // [IEC 61158-2 baud rates])
   const BusParameters fast = BusParameters::defaults_for(BaudRate::k12M);
   EXPECT_EQ(fast.bits(12), std::chrono::nanoseconds(1'000));
   EXPECT_EQ(fast.characters(1), std::chrono::nanoseconds(917));  // 11 bit, rounded up
@@ -66,7 +68,7 @@ TEST(MasterConfigTest, SlaveAndMasterChecks) {
   m.slaves[0].address = 2;  // the master's own address
   EXPECT_EQ(validate(m), make_error_code(MasterError::kDuplicateSlave));
   SlaveEntry s = example_slave();
-  s.address = 126;  // default address is not for operation (§1.4)
+  s.address = 126;  // default address is not for operation ([IEC 61158-4-3 addresses, SAPs])
   EXPECT_EQ(validate(s), make_error_code(MasterError::kBadSlaveConfig));
   s = example_slave();
   s.input_length = 2;  // Chk_Cfg says 1 byte in
@@ -83,7 +85,7 @@ TEST(MasterConfigTest, SlaveAndMasterChecks) {
 }
 
 TEST(MasterConfigTest, WatchdogFactors) {
-  // §2.3: T_WD = 10 ms · F1 · F2.
+  // [IEC 61158-6-3 Set_Prm]: T_WD = 10 ms · F1 · F2.
   auto w = watchdog_factors(std::chrono::milliseconds(100));
   EXPECT_EQ(w.f1 * w.f2, 10);
   w = watchdog_factors(std::chrono::milliseconds(5000));
@@ -111,8 +113,9 @@ TEST(MasterConfigTest, ErrorCategories) {
             "DPV1 resource error: resource busy");
   EXPECT_EQ(std::error_code(0xAA, dpv1_error_category()).message(),
             "DPV1 application error: user specific or reserved code");
-  EXPECT_EQ(to_error_code(pdu::Dpv1Error{pdu::Dpv1Function::kRead, 0x80, pdu::ErrorCode1::kNone, 0x00}),
-            make_error_code(MasterError::kDpv1Negative));
+  EXPECT_EQ(
+      to_error_code(pdu::Dpv1Error{pdu::Dpv1Function::kRead, 0x80, pdu::ErrorCode1::kNone, 0x00}),
+      make_error_code(MasterError::kDpv1Negative));
 }
 
 TEST(MasterConfigTest, ObserverDispatch) {

@@ -1,4 +1,4 @@
-// DPV1 MSAC_C1 client of the master (spec/profibus-dp.md §3.3, §3.4): request, polling
+// DPV1 MSAC_C1 client of the master ([IEC 61158-6-3 MSAC_C1, MSAC_C1 polling]): request, polling
 // until the response, negative responses, timeout and no-answer as distinct errors.
 
 #include "master_fixture.h"
@@ -23,7 +23,8 @@ TEST(MasterDpv1, ReadPollsUntilTheResponse) {
   f.bring_to_dx();
   const auto id = f.master.read(5, 0, 1, 16);
   ASSERT_TRUE(id) << id.error().message();
-  // Read.req after the DX (5D) of this turn, SRD low with FCB=1 (§3.4 example, FC 7C).
+  // Read.req after the DX (5D) of this turn, SRD low with FCB=1 ([IEC 61158-6-3 MSAC_C1 polling]
+  // example, FC 7C).
   EXPECT_EQ(hex(after_dx(f)),
             hex(Bytes{0x68, 0x09, 0x09, 0x68,  // SD2, LE 9
                       0x85, 0x82,              // DA 5, SA 2 (extension bits)
@@ -34,16 +35,16 @@ TEST(MasterDpv1, ReadPollsUntilTheResponse) {
                       0x01,                    // index 1
                       0x10,                    // length 16
                       fcs({0x85, 0x82, 0x7C, 0x33, 0x33, 0x5E, 0x00, 0x01, 0x10}), 0x16}));
-  f.reply({0xE5});  // no response yet (§3.4 step 2)
+  f.reply({0xE5});  // no response yet ([IEC 61158-6-3 MSAC_C1 polling] step 2)
   EXPECT_TRUE(f.events<Dpv1Result>().empty());
   // Next cycle: DX (FCB 0), then an empty poll on SAP 51 (FCB 1).
   f.step();
   f.reply(kDxDl);
   EXPECT_EQ(f.step(), Bytes({0x68, 0x05, 0x05, 0x68, 0x85, 0x82, 0x7C, 0x33, 0x33,
                              fcs({0x85, 0x82, 0x7C, 0x33, 0x33}), 0x16}));
-  // Read.res+ from the §3.4 example: 2 bytes AB CD.
-  f.reply({0x68, 0x0B, 0x0B, 0x68, 0x82, 0x85, 0x08, 0x33, 0x33,
-           0x5E, 0x00, 0x01, 0x02, 0xAB, 0xCD, 0x4E, 0x16});
+  // Read.res+ from the [IEC 61158-6-3 MSAC_C1 polling] example: 2 bytes AB CD.
+  f.reply({0x68, 0x0B, 0x0B, 0x68, 0x82, 0x85, 0x08, 0x33, 0x33, 0x5E, 0x00, 0x01, 0x02, 0xAB, 0xCD,
+           0x4E, 0x16});
   const auto results = f.events<Dpv1Result>();
   ASSERT_EQ(results.size(), 1U);
   EXPECT_EQ(results[0].id, id.value());
@@ -79,7 +80,8 @@ TEST(MasterDpv1, NegativeResponseMapsToTypedError) {
   f.bring_to_dx();
   ASSERT_TRUE(f.master.read(5, 0, 1, 16));
   after_dx(f);
-  // §3.4 negative example: DE 80 B0 00 = Read, DPV1, access/invalid index.
+  // [IEC 61158-6-3 MSAC_C1 polling] negative example: DE 80 B0 00 = Read, DPV1, access/invalid
+  // index.
   f.reply({0x68, 0x09, 0x09, 0x68, 0x82, 0x85, 0x08, 0x33, 0x33,
            0xDE,  // Read | 0x80
            0x80,  // Error_Decode DPV1
@@ -103,8 +105,8 @@ TEST(MasterDpv1, NonDpv1ErrorDecodeIsKeptVerbatim) {
   f.bring_to_dx();
   ASSERT_TRUE(f.master.write(5, 0, 3, Bytes{0x01}));
   after_dx(f);
-  f.reply({0x68, 0x09, 0x09, 0x68, 0x82, 0x85, 0x08, 0x33, 0x33,
-           0xDF, 0xFE, 0x12, 0x34,  // Write | 0x80, Error_Decode FMS, codes 12 34
+  f.reply({0x68, 0x09, 0x09, 0x68, 0x82, 0x85, 0x08, 0x33, 0x33, 0xDF, 0xFE, 0x12,
+           0x34,  // Write | 0x80, Error_Decode FMS, codes 12 34
            fcs({0x82, 0x85, 0x08, 0x33, 0x33, 0xDF, 0xFE, 0x12, 0x34}), 0x16});
   const auto r = f.events<Dpv1Result>();
   ASSERT_EQ(r.size(), 1U);
@@ -143,7 +145,7 @@ TEST(MasterDpv1, NoAnswerIsDistinctFromTimeout) {
   after_dx(f);  // request, no reply
   f.step();     // retry (same FCB)
   f.clock.set(*f.master.next_deadline());
-  f.poke();     // gives up
+  f.poke();  // gives up
   const auto r = f.events<Dpv1Result>();
   ASSERT_EQ(r.size(), 2U);
   EXPECT_EQ(r[0].error, make_error_code(MasterError::kNoAnswer));

@@ -1,5 +1,5 @@
-// Global_Control broadcasts and the CLEAR operating mode (spec/profibus-dp.md §2.6, §2.9,
-// §4.3).
+// Global_Control broadcasts and the CLEAR operating mode
+// ([IEC 61158-6-3 Global_Control, Data_Exchange, class 1 master cycle]).
 
 #include "master_fixture.h"
 
@@ -15,7 +15,7 @@ TEST(MasterGlobalControl, ClearModeBroadcastsGcClearAndZeroOutputs) {
   f.bring_to_dx();
   ASSERT_FALSE(f.master.set_outputs(5, Bytes{0xA5}));
   f.master.set_operating_mode(OperatingMode::kClear);
-  // §2.10 GC Clear of master 2.
+  // [docs/references.md#dp-worked-example] GC Clear of master 2.
   EXPECT_EQ(hex(f.step()), hex(Bytes{0x68, 0x07, 0x07, 0x68,  // SD2, LE 7
                                      0xFF,                    // DA 127 | extension
                                      0x82,                    // SA 2 | extension
@@ -46,7 +46,7 @@ TEST(MasterGlobalControl, FailSafeSlaveGetsEmptyDataExchangeInClear) {
   MasterFixture f(cfg);
   f.bring_to_dx();
   f.master.set_operating_mode(OperatingMode::kClear);
-  f.step();  // GC Clear
+  f.step();                                 // GC Clear
   EXPECT_EQ(hex(f.step()), hex(Bytes{0x10,  // SD1: no data unit
                                      0x05, 0x02, 0x5D, fcs({0x05, 0x02, 0x5D}), 0x16}));
 }
@@ -67,8 +67,7 @@ TEST(MasterGlobalControl, SyncFreezeWithGroups) {
                                      fcs({0xFF, 0x82, 0x46, 0x3A, 0x3E, 0x20, 0x02}), 0x16}));
   EXPECT_EQ(hex(f.step()), hex(Bytes{0x68, 0x07, 0x07, 0x68, 0xFF, 0x82, 0x46, 0x3A, 0x3E,
                                      0x08,  // Freeze (bit 3)
-                                     0x00, fcs({0xFF, 0x82, 0x46, 0x3A, 0x3E, 0x08, 0x00}),
-                                     0x16}));
+                                     0x00, fcs({0xFF, 0x82, 0x46, 0x3A, 0x3E, 0x08, 0x00}), 0x16}));
   EXPECT_EQ(f.step()[4], 0x05) << "then the slaves' turns";
 }
 

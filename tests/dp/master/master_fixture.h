@@ -1,7 +1,7 @@
 #pragma once
-// Test helpers for the class 1 master: a manual clock, the §2.10 worked-example
-// configuration (master 2, slave 5, ident 0x1234) and byte-level send/expect helpers.
-// Slave replies are written as annotated wire bytes and decoded with fdl::decode_frame.
+// Test helpers for the class 1 master: a manual clock, the [docs/references.md#dp-worked-example]
+// worked-example configuration (master 2, slave 5, ident 0x1234) and byte-level send/expect
+// helpers. Slave replies are written as annotated wire bytes and decoded with fdl::decode_frame.
 
 #include "dp/fdl/decoder.h"
 #include "dp/fdl/telegram.h"
@@ -21,7 +21,8 @@ namespace rs4sim::dp::master::testing {
 
 using Bytes = std::vector<std::uint8_t>;
 
-// §1.3: FCS = sum of DA..last DU byte mod 256, written here independently of the codec.
+// [IEC 61158-4-3 FCS]: FCS = sum of DA..last DU byte mod 256, written here independently of the
+// codec.
 inline std::uint8_t fcs(std::initializer_list<std::uint8_t> da_to_du) {
   unsigned sum = 0;
   for (auto b : da_to_du) sum += b;
@@ -39,9 +40,9 @@ inline std::string hex(const Bytes& b) {
   return s;
 }
 
-// The slave of the §2.10 worked example: address 5, ident 0x1234, Set_Prm
-// `88 0A 01 0B 12 34 00 80 20 00` (Lock+WD_On, WD 10·10·1, minTSDR 11, group 0, DPV1 80 20 00),
-// Chk_Cfg `10 20` (1 byte in, 1 byte out).
+// The slave of the [docs/references.md#dp-worked-example] worked example: address 5, ident 0x1234,
+// Set_Prm `88 0A 01 0B 12 34 00 80 20 00` (Lock+WD_On, WD 10·10·1, minTSDR 11, group 0, DPV1 80
+// 20 00), Chk_Cfg `10 20` (1 byte in, 1 byte out).
 inline SlaveEntry example_slave(std::uint8_t address = 5) {
   SlaveEntry s;
   s.address = address;
@@ -112,29 +113,31 @@ class MasterFixture {
     std::vector<E> out;
     std::vector<MasterEvent> rest;
     for (auto& e : log) {
-      if (auto* p = std::get_if<E>(&e)) out.push_back(*p);
-      else rest.push_back(std::move(e));
+      if (auto* p = std::get_if<E>(&e))
+        out.push_back(*p);
+      else
+        rest.push_back(std::move(e));
     }
     log = std::move(rest);
     return out;
   }
 
-  // Runs the §2.10 start-up of the example slave 5 to its first Data_Exchange (FCB
-  // sequence 6D 5D 7D 5D 7D); the next frame to slave 5 has FC x5 with FCB=0.
+  // Runs the [docs/references.md#dp-worked-example] start-up of the example slave 5 to its first
+  // Data_Exchange (FCB sequence 6D 5D 7D 5D 7D); the next frame to slave 5 has FC x5 with FCB=0.
   void bring_to_dx() {
     step();
     reply({0x10, 0x02, 0x05, 0x00, 0x07, 0x16});  // FDL_Status: slave, OK
     step();
-    reply({0x68, 0x0B, 0x0B, 0x68, 0x82, 0x85, 0x08, 0x3E, 0x3C, 0x02, 0x05, 0x00, 0xFF,
-           0x12, 0x34, 0xD5, 0x16});  // diag: Not_Ready, Prm_Req, Master_Add FF
+    reply({0x68, 0x0B, 0x0B, 0x68, 0x82, 0x85, 0x08, 0x3E, 0x3C, 0x02, 0x05, 0x00, 0xFF, 0x12, 0x34,
+           0xD5, 0x16});  // diag: Not_Ready, Prm_Req, Master_Add FF
     step();
     reply({0xE5});  // Set_Prm
     step();
     reply({0xE5});  // Chk_Cfg
     step();
-    reply({0x68, 0x0B, 0x0B, 0x68, 0x82, 0x85, 0x08, 0x3E, 0x3C, 0x00, 0x0C, 0x00, 0x02,
-           0x12, 0x34, 0xDD, 0x16});  // diag: ready, master 2
-    step();                           // DX 7D
+    reply({0x68, 0x0B, 0x0B, 0x68, 0x82, 0x85, 0x08, 0x3E, 0x3C, 0x00, 0x0C, 0x00, 0x02, 0x12, 0x34,
+           0xDD, 0x16});                                                  // diag: ready, master 2
+    step();                                                               // DX 7D
     reply({0x68, 0x04, 0x04, 0x68, 0x02, 0x05, 0x08, 0x3C, 0x4B, 0x16});  // DL, in 3C
     ASSERT_TRUE(step(1).empty());  // the turn ends; the next cycle is not yet due
     ASSERT_TRUE(master.slave_status(5)->state == PollState::kDataExchange);

@@ -1,5 +1,6 @@
-// Slot time, retries with the same FCB and lost-slave detection (spec/profibus-dp.md
-// §1.7, §1.8, §4.4), on the manual clock.
+// Slot time, retries with the same FCB and lost-slave detection (
+// [IEC 61158-4-3 bus parameters, timing, FCB/FCV] [IEC 61158-6-3 slave supervision]), on the manual
+// clock.
 
 #include "master_fixture.h"
 
@@ -12,11 +13,16 @@ using std::chrono::microseconds;
 using std::chrono::nanoseconds;
 
 // Data_Exchange to slave 5 with output A5, FCV=1 FCB=0.
-const Bytes kDx5D = {0x68, 0x04, 0x04, 0x68,  // SD2, LE 4
-                     0x05, 0x02,              // DA 5, SA 2
-                     0x5D,                    // SRD high, FCV=1, FCB=0
-                     0xA5,                    // output
-                     fcs({0x05, 0x02, 0x5D, 0xA5}), 0x16};
+const Bytes kDx5D = {0x68,
+                     0x04,
+                     0x04,
+                     0x68,  // SD2, LE 4
+                     0x05,
+                     0x02,  // DA 5, SA 2
+                     0x5D,  // SRD high, FCV=1, FCB=0
+                     0xA5,  // output
+                     fcs({0x05, 0x02, 0x5D, 0xA5}),
+                     0x16};
 const Bytes kFdlStatus = {0x10, 0x05, 0x02, 0x49, 0x50, 0x16};
 
 // 1.5 Mbit/s: TSL 300 bit = 200 µs; the 10-byte DX request and the longest accepted
@@ -36,8 +42,7 @@ TEST(MasterRetry, RetriesWithTheSameFcbAfterTheSlotTime) {
   EXPECT_TRUE(f.poke().empty());
   f.clock.set(sent + kTsl + 2 * kTenChars + nanoseconds(10));
   EXPECT_EQ(hex(f.poke()), hex(kDx5D)) << "retry keeps FCB=0";
-  f.reply({0x68, 0x04, 0x04, 0x68, 0x02, 0x05, 0x08, 0x44,
-           fcs({0x02, 0x05, 0x08, 0x44}), 0x16});
+  f.reply({0x68, 0x04, 0x04, 0x68, 0x02, 0x05, 0x08, 0x44, fcs({0x02, 0x05, 0x08, 0x44}), 0x16});
   EXPECT_EQ(f.master.inputs(5)[0], 0x44);
   const auto st = f.master.slave_status(5);
   EXPECT_EQ(st->counters.retries, 1U);
@@ -54,7 +59,7 @@ TEST(MasterRetry, LostSlaveAfterRetryLimitRestartsStartUp) {
   EXPECT_EQ(hex(f.step()), hex(kDx5D));
   EXPECT_EQ(hex(f.step()), hex(kDx5D));  // retry 1 (max_retry_limit = 1)
   EXPECT_TRUE(f.master.inputs(5).size() == 1);
-  const Bytes next = f.step();           // gives up, next cycle: FDL_Status
+  const Bytes next = f.step();  // gives up, next cycle: FDL_Status
   const auto left = f.events<SlaveLeftDataExchange>();
   ASSERT_EQ(left.size(), 1U);
   EXPECT_EQ(left[0].address, 5);
@@ -62,7 +67,8 @@ TEST(MasterRetry, LostSlaveAfterRetryLimitRestartsStartUp) {
   EXPECT_EQ(hex(next), hex(kFdlStatus));
   EXPECT_TRUE(f.master.inputs(5).empty()) << "no inputs outside data exchange";
   f.reply({0x10, 0x02, 0x05, 0x00, 0x07, 0x16});
-  // Fresh FCB after the slave was marked non-operational: first frame 6D (§1.8, §4.4).
+  // Fresh FCB after the slave was marked non-operational: first frame 6D ([IEC 61158-4-3 FCB/FCV]
+  // [IEC 61158-6-3 slave supervision]).
   EXPECT_EQ(hex(f.step()), "68 05 05 68 85 82 6D 3C 3E EE 16");
   const auto st = f.master.slave_status(5);
   EXPECT_EQ(st->counters.no_answer, 1U);
@@ -120,7 +126,7 @@ TEST(MasterRetry, ForeignAndLateTelegramsAreIgnored) {
   f.reply({0x10, 0x05, 0x09, 0x49, fcs({0x05, 0x09, 0x49}), 0x16});
   EXPECT_EQ(f.master.next_deadline(), deadline);
   EXPECT_EQ(f.master.counters().ignored_telegrams, 2U);
-  f.step();                                 // retry
+  f.step();                                // retry
   f.clock.set(*f.master.next_deadline());  // slot time expires again: no answer
   EXPECT_TRUE(f.poke().empty());
   const auto ignored = f.master.counters().ignored_telegrams;

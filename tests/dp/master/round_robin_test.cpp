@@ -1,5 +1,6 @@
-// Many slaves (spec/profibus-dp.md §4.3): 125 slaves started and polled round robin in
-// configuration order, against a scripted responder that answers per DSAP as §2 says.
+// Many slaves ([IEC 61158-6-3 class 1 master cycle]): 125 slaves started and polled round robin in
+// configuration order, against a scripted responder that answers per DSAP as
+// [IEC 61158-6-3 DP-V0 services] says.
 
 #include "master_fixture.h"
 
@@ -33,18 +34,17 @@ class Responder {
       case 60: {
         const bool ready = parameterised_[slave];
         const std::uint8_t du[] = {static_cast<std::uint8_t>(ready ? 0x00 : 0x02),
-                                   static_cast<std::uint8_t>(ready ? 0x0C : 0x05), 0x00,
-                                   static_cast<std::uint8_t>(ready ? master : 0xFF), 0x12, 0x34};
+                                   static_cast<std::uint8_t>(ready ? 0x0C : 0x05),
+                                   0x00,
+                                   static_cast<std::uint8_t>(ready ? master : 0xFF),
+                                   0x12,
+                                   0x34};
         return fdl::make_data_telegram(master, slave, fdl::FrameControl::response(S::kDataLow),
                                        *req.ssap, *req.dsap, du);
       }
-      case 61:
-        parameterised_[slave] = true;
-        return fdl::make_short_ack();
-      case 62:
-        return fdl::make_short_ack();
-      default:
-        return std::nullopt;
+      case 61: parameterised_[slave] = true; return fdl::make_short_ack();
+      case 62: return fdl::make_short_ack();
+      default: return std::nullopt;
     }
   }
 

@@ -1,5 +1,6 @@
 // Per-slave start-up of the class 1 master, byte for byte against the worked example of
-// spec/profibus-dp.md §2.10 (master 2, slave 5, ident 0x1234) and the table of §4.2.
+// [docs/references.md#dp-worked-example] (master 2, slave 5, ident 0x1234) and the table of
+// [IEC 61158-6-3 master start-up of a slave] [pyprofibus dp_master.py].
 
 #include "master_fixture.h"
 
@@ -8,7 +9,7 @@
 namespace rs4sim::dp::master::testing {
 namespace {
 
-// --- Requests of the master (§2.10) ---
+// --- Requests of the master ([docs/references.md#dp-worked-example]) ---
 const Bytes kFdlStatusReq = {
     0x10,  // 0 SD1
     0x05,  // 1 DA slave 5
@@ -21,7 +22,7 @@ const Bytes kDiagFirstReq = {
     0x68, 0x05, 0x05, 0x68,  // 0..3 SD2, LE=LEr=5
     0x85,                    // 4 DA 5 | extension bit
     0x82,                    // 5 SA 2 | extension bit
-    0x6D,                    // 6 FC SRD high, FCB=1 FCV=0 (first frame, §1.8)
+    0x6D,                    // 6 FC SRD high, FCB=1 FCV=0 (first frame, [IEC 61158-4-3 FCB/FCV])
     0x3C,                    // 7 DSAP 60 Slave_Diag
     0x3E,                    // 8 SSAP 62 master MS0
     0xEE, 0x16,              // 9 FCS, 10 ED
@@ -58,20 +59,19 @@ const Bytes kDxReq7D = {
     0x29, 0x16,              // FCS, ED
 };
 
-// --- Replies of the slave (§2.10) ---
+// --- Replies of the slave ([docs/references.md#dp-worked-example]) ---
 const Bytes kFdlStatusRes = {0x10, 0x02, 0x05,
                              0x00,  // FC: station type slave, status OK
                              0x07, 0x16};
-const Bytes kDiagWaitPrm = {
-    0x68, 0x0B, 0x0B, 0x68, 0x82, 0x85,
-    0x08,        // FC DL
-    0x3E, 0x3C,  // DSAP 62, SSAP 60
-    0x02,        // Station_Status_1: Station_Not_Ready
-    0x05,        // Station_Status_2: Prm_Req + always-1
-    0x00,        // Station_Status_3
-    0xFF,        // Master_Add: not parameterised
-    0x12, 0x34,  // Ident
-    0xD5, 0x16};
+const Bytes kDiagWaitPrm = {0x68, 0x0B, 0x0B, 0x68, 0x82, 0x85,
+                            0x08,        // FC DL
+                            0x3E, 0x3C,  // DSAP 62, SSAP 60
+                            0x02,        // Station_Status_1: Station_Not_Ready
+                            0x05,        // Station_Status_2: Prm_Req + always-1
+                            0x00,        // Station_Status_3
+                            0xFF,        // Master_Add: not parameterised
+                            0x12, 0x34,  // Ident
+                            0xD5, 0x16};
 const Bytes kDiagReady = {0x68, 0x0B, 0x0B, 0x68, 0x82, 0x85, 0x08, 0x3E, 0x3C,
                           0x00,  // Station_Status_1: ready
                           0x0C,  // Station_Status_2: WD_On + always-1
@@ -115,7 +115,8 @@ TEST(MasterStartup, NextRequestWaitsTid1AfterReply) {
   const TimePoint t_reply = f.clock.now() + std::chrono::microseconds(50);
   f.clock.set(t_reply);
   f.reply(kFdlStatusRes);
-  // TID1 = 37 bit at 1.5 Mbit/s = 24.67 µs (§1.7 [COMPB]).
+  // TID1 = 37 bit at 1.5 Mbit/s = 24.67 µs ([IEC 61158-4-3 bus parameters, timing]
+  // [COM PROFIBUS bus-parameter printout]).
   EXPECT_TRUE(f.poke().empty());
   f.clock.set(t_reply + std::chrono::nanoseconds(24'600));
   EXPECT_TRUE(f.poke().empty());
@@ -135,8 +136,7 @@ TEST(MasterStartup, NotReadyDiagWaitsForTheNextCycle) {
   f.reply(kSc);
   EXPECT_EQ(hex(f.step()), hex(kDiagReq5D));
   // Parameterised but Station_Not_Ready still set (ET200S trace `02 0C 00 02`).
-  f.reply({0x68, 0x0B, 0x0B, 0x68, 0x82, 0x85, 0x08, 0x3E, 0x3C,
-           0x02, 0x0C, 0x00, 0x02, 0x12, 0x34,
+  f.reply({0x68, 0x0B, 0x0B, 0x68, 0x82, 0x85, 0x08, 0x3E, 0x3C, 0x02, 0x0C, 0x00, 0x02, 0x12, 0x34,
            fcs({0x82, 0x85, 0x08, 0x3E, 0x3C, 0x02, 0x0C, 0x00, 0x02, 0x12, 0x34}), 0x16});
   const TimePoint after = f.clock.now();
   // Next request is the next cycle's Slave_Diag, 10 ms after the first cycle began.
@@ -160,12 +160,13 @@ TEST(MasterStartup, ClaimsTokenAfterTtoOfSilence) {
   MasterFixture f(cfg);
   EXPECT_TRUE(f.poke().empty());
   EXPECT_EQ(f.master.phase(), MasterPhase::kListening);
-  // TTO = TSL·(6 + 2·TS) = 300·10 = 3000 bit = 2 ms at 1.5 Mbit/s (§1.7).
+  // TTO = TSL·(6 + 2·TS) = 300·10 = 3000 bit = 2 ms at 1.5 Mbit/s
+  // ([IEC 61158-4-3 bus parameters, timing]).
   const TimePoint t0 = f.clock.now();
   f.clock.set(t0 + std::chrono::microseconds(1999));
   EXPECT_TRUE(f.poke().empty());
   f.clock.set(t0 + std::chrono::microseconds(2000));
-  EXPECT_EQ(hex(f.poke()), "DC 02 02");  // token to itself (§1.9)
+  EXPECT_EQ(hex(f.poke()), "DC 02 02");  // token to itself ([IEC 61158-4-3 token])
   EXPECT_EQ(hex(f.step()), "DC 02 02");  // again, TSYN later
   EXPECT_EQ(f.master.phase(), MasterPhase::kRunning);
   EXPECT_EQ(hex(f.step()), hex(kFdlStatusReq));

@@ -1,5 +1,7 @@
-// Start-up faults and supervision in data exchange (spec/profibus-dp.md §2.5, §2.9, §4.2,
-// §4.4): DH → Slave_Diag, Prm_Req → re-parameterisation, RS → restart, fault reasons.
+// Start-up faults and supervision in data exchange
+// ([IEC 61158-6-3 Slave_Diag, Data_Exchange, master start-up of a slave] [pyprofibus dp_master.py],
+// [IEC 61158-6-3 slave supervision]): DH → Slave_Diag, Prm_Req → re-parameterisation, RS → restart,
+// fault reasons.
 
 #include "master_fixture.h"
 
@@ -13,23 +15,35 @@ Bytes diag(std::uint8_t s1, std::uint8_t s2, std::uint8_t master_add,
            std::uint16_t ident = 0x1234) {
   const auto hi = static_cast<std::uint8_t>(ident >> 8);
   const auto lo = static_cast<std::uint8_t>(ident & 0xFF);
-  return {0x68, 0x0B, 0x0B, 0x68,
-          0x82, 0x85,  // DA 2, SA 5 (extension bits)
-          0x08,        // FC DL
-          0x3E, 0x3C,  // DSAP 62, SSAP 60
-          s1, s2, 0x00, master_add, hi, lo,
-          fcs({0x82, 0x85, 0x08, 0x3E, 0x3C, s1, s2, 0x00, master_add, hi, lo}), 0x16};
+  return {0x68,
+          0x0B,
+          0x0B,
+          0x68,
+          0x82,
+          0x85,  // DA 2, SA 5 (extension bits)
+          0x08,  // FC DL
+          0x3E,
+          0x3C,  // DSAP 62, SSAP 60
+          s1,
+          s2,
+          0x00,
+          master_add,
+          hi,
+          lo,
+          fcs({0x82, 0x85, 0x08, 0x3E, 0x3C, s1, s2, 0x00, master_add, hi, lo}),
+          0x16};
 }
 Bytes diag_request(std::uint8_t fc) {
-  return {0x68, 0x05, 0x05, 0x68, 0x85, 0x82, fc, 0x3C, 0x3E,
-          fcs({0x85, 0x82, fc, 0x3C, 0x3E}), 0x16};
+  return {0x68, 0x05, 0x05, 0x68, 0x85, 0x82, fc, 0x3C, 0x3E, fcs({0x85, 0x82, fc, 0x3C, 0x3E}),
+          0x16};
 }
 const Bytes kDxDh = {0x68, 0x04, 0x04, 0x68, 0x02, 0x05,
-                     0x0A,  // FC DH: diagnosis pending (§2.9)
+                     0x0A,  // FC DH: diagnosis pending ([IEC 61158-6-3 Data_Exchange])
                      0x3C, 0x4D, 0x16};
 const Bytes kDxDl = {0x68, 0x04, 0x04, 0x68, 0x02, 0x05, 0x08, 0x3C, 0x4B, 0x16};
 const Bytes kRs = {0x10, 0x02, 0x05,
-                   0x03,  // FC RS: SAP not enabled (slave left DATA_EXCH, §2.2 [TRACE #19])
+                   0x03,  // FC RS: SAP not enabled (slave left DATA_EXCH,
+                          // [IEC 61158-6-3 slave state machine] [pyprofibus issue #19 trace])
                    0x0A, 0x16};
 
 std::error_code err(MasterError e) { return make_error_code(e); }
@@ -54,11 +68,10 @@ TEST(MasterSupervision, DataHighFetchesDiagInTheNextSlot) {
   EXPECT_EQ(f.step()[6], 0x5D);
   f.reply(kDxDh);
   EXPECT_EQ(hex(f.step()), hex(diag_request(0x7D)));  // same turn, right after the DX
-  f.reply(diag(0x08, 0x0C, 0x02));                   // Ext_Diag only: stays in DX
+  f.reply(diag(0x08, 0x0C, 0x02));                    // Ext_Diag only: stays in DX
   const auto diags = f.events<DiagReceived>();
   ASSERT_EQ(diags.size(), 1U);
-  EXPECT_EQ(hex(Bytes(diags[0].diag.begin(), diags[0].diag.end())),
-            "08 0C 00 02 12 34");
+  EXPECT_EQ(hex(Bytes(diags[0].diag.begin(), diags[0].diag.end())), "08 0C 00 02 12 34");
   EXPECT_EQ(f.master.slave_status(5)->state, PollState::kDataExchange);
   EXPECT_EQ(f.master.slave_status(5)->counters.diag_reads, 3U);
   // Next cycle: only the Data_Exchange (FCB=0 again), no diag.
@@ -78,7 +91,8 @@ TEST(MasterSupervision, PrmReqInDataExchangeReparameterises) {
   const auto left = f.events<SlaveLeftDataExchange>();
   ASSERT_EQ(left.size(), 1U);
   EXPECT_EQ(left[0].reason, err(MasterError::kLeftDataExchange));
-  // Next cycle starts again at Set_Prm (§4.2 "Prm_Req → restart at 2"), FCB toggled.
+  // Next cycle starts again at Set_Prm ([IEC 61158-6-3 master start-up of a slave]
+  // [pyprofibus dp_master.py] "Prm_Req → restart at 2"), FCB toggled.
   const Bytes prm = f.step();
   ASSERT_GT(prm.size(), 9U);
   EXPECT_EQ(prm[6], 0x5D);
@@ -116,8 +130,8 @@ TEST(MasterSupervision, StatDiagKeepsFetchingEveryCycle) {
   f.reply(kDxDh);
   f.step();
   f.reply(diag(0x00, 0x0E, 0x02));  // Stat_Diag (bit 1) set
-  f.step();                          // next cycle DX
-  f.reply(kDxDl);                    // DL: no new diag flag …
+  f.step();                         // next cycle DX
+  f.reply(kDxDl);                   // DL: no new diag flag …
   EXPECT_EQ(f.step()[7], 0x3C) << "… but Stat_Diag still requires a Slave_Diag";
 }
 
@@ -127,10 +141,10 @@ TEST(MasterSupervision, StartupFaultReasons) {
     MasterError reason;
   };
   const Case cases[] = {
-      {diag(0x40, 0x0C, 0x02), MasterError::kPrmFault},       // Station_Status_1 bit 6
-      {diag(0x04, 0x0C, 0x02), MasterError::kCfgFault},       // bit 2
-      {diag(0x10, 0x0C, 0x02), MasterError::kNotSupported},   // bit 4
-      {diag(0x00, 0x0C, 0x07), MasterError::kMasterLock},     // Master_Add 7
+      {diag(0x40, 0x0C, 0x02), MasterError::kPrmFault},      // Station_Status_1 bit 6
+      {diag(0x04, 0x0C, 0x02), MasterError::kCfgFault},      // bit 2
+      {diag(0x10, 0x0C, 0x02), MasterError::kNotSupported},  // bit 4
+      {diag(0x00, 0x0C, 0x07), MasterError::kMasterLock},    // Master_Add 7
       {diag(0x00, 0x0C, 0x02, 0x4711), MasterError::kIdentMismatch},
   };
   for (const Case& c : cases) {

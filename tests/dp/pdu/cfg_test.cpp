@@ -1,5 +1,6 @@
-// Chk_Cfg / Get_Cfg identifiers, spec/profibus-dp.md §2.4 (examples from [CP5613 p204],
-// [WAGO-GSD], the §2.10 worked example and the mock GSD).
+// Chk_Cfg / Get_Cfg identifiers, [IEC 61158-6-3 Chk_Cfg/Get_Cfg] (examples from
+// [CP 5613/5614 DP manual p. 204], [WAGO 750-833 GSD B756_P33.GSD], the
+// [docs/references.md#dp-worked-example] worked example and the mock GSD).
 #include "dp/pdu/cfg.h"
 
 #include "pdu_test_util.h"
@@ -10,7 +11,9 @@ namespace {
 using testing::Bytes;
 using testing::error_of;
 
-Result<void> enc(const CfgIdentifier& id, fdl::DataUnit& out) { return encode_cfg_identifier(id, out); }
+Result<void> enc(const CfgIdentifier& id, fdl::DataUnit& out) {
+  return encode_cfg_identifier(id, out);
+}
 
 CfgIdentifier parse_one(const Bytes& du, CfgService s = CfgService::kChkCfg) {
   const auto r = decode_cfg_identifier(du, s);
@@ -47,9 +50,9 @@ TEST(PduCfg, GeneralFormatAllFields) {
 
 TEST(PduCfg, SpecialFormatCp5613Example) {
   const Bytes du = {
-      0xC3,              // 0 special: b7..6 = 11 output then input length byte, 3 manufacturer bytes
-      0xCF,              // 1 output: consistent, words, 16 words
-      0xC7,              // 2 input: consistent, words, 8 words
+      0xC3,  // 0 special: b7..6 = 11 output then input length byte, 3 manufacturer bytes
+      0xCF,  // 1 output: consistent, words, 16 words
+      0xC7,  // 2 input: consistent, words, 8 words
       0x01, 0x02, 0x03,  // 3..5 manufacturer data
   };
   const CfgIdentifier id = parse_one(du);
@@ -92,12 +95,17 @@ TEST(PduCfg, EmptySlotInputOnlyAndSkipCheck) {
 }
 
 TEST(PduCfg, MalformedIdentifiers) {
-  const auto err = [](const Bytes& du, CfgService s) { return error_of(decode_cfg_identifier(du, s)); };
+  const auto err = [](const Bytes& du, CfgService s) {
+    return error_of(decode_cfg_identifier(du, s));
+  };
   EXPECT_EQ(err({}, CfgService::kChkCfg), PduError::kTooShort);
-  EXPECT_EQ(err({0x40}, CfgService::kChkCfg), PduError::kTooShort);        // input length byte missing
-  EXPECT_EQ(err({0xC2, 0x84}, CfgService::kChkCfg), PduError::kTooShort);  // input length byte missing
-  EXPECT_EQ(err({0x03, 0x01}, CfgService::kChkCfg), PduError::kTooShort);  // 3 manufacturer bytes, 1 present
-  EXPECT_EQ(err({0x0F}, CfgService::kGetCfg), PduError::kBadIdentifier);   // 15 not allowed in Get_Cfg
+  EXPECT_EQ(err({0x40}, CfgService::kChkCfg), PduError::kTooShort);  // input length byte missing
+  EXPECT_EQ(err({0xC2, 0x84}, CfgService::kChkCfg),
+            PduError::kTooShort);  // input length byte missing
+  EXPECT_EQ(err({0x03, 0x01}, CfgService::kChkCfg),
+            PduError::kTooShort);  // 3 manufacturer bytes, 1 present
+  EXPECT_EQ(err({0x0F}, CfgService::kGetCfg),
+            PduError::kBadIdentifier);  // 15 not allowed in Get_Cfg
   EXPECT_EQ(error_of(summarize_cfg({}, CfgService::kChkCfg)), PduError::kTooShort);
   EXPECT_TRUE(summarize_cfg({}, CfgService::kGetCfg));
   const Bytes big(245, 0x10);

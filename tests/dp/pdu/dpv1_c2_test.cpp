@@ -1,4 +1,5 @@
-// DPV1 MSAC_C2 PDUs, spec/profibus-dp.md §3.7 (layouts [VPC3 11.7], defaults [SOFT]).
+// DPV1 MSAC_C2 PDUs, [IEC 61158-6-3 MSAC_C2] (layouts [VPC3+ dp_if.h §11.7], defaults
+// [Softing PB_DP.H]).
 #include "dp/pdu/dpv1_c2.h"
 
 #include "pdu_test_util.h"
@@ -27,8 +28,10 @@ TEST(PduDpv1C2, ResourceManagerReply) {
   ASSERT_TRUE(r);
   EXPECT_EQ(r.value(), (ResourceManagerResponse{48, 100}));
   EXPECT_EQ(enc(r.value()), du);
-  EXPECT_EQ(error_of(decode_rm_response(Bytes{0x56, 0x31, 0x00, 0x64})), PduError::kValueOutOfRange);
-  EXPECT_EQ(error_of(decode_rm_response(Bytes{0x57, 0x30, 0x00, 0x64})), PduError::kBadFunctionCode);
+  EXPECT_EQ(error_of(decode_rm_response(Bytes{0x56, 0x31, 0x00, 0x64})),
+            PduError::kValueOutOfRange);
+  EXPECT_EQ(error_of(decode_rm_response(Bytes{0x57, 0x30, 0x00, 0x64})),
+            PduError::kBadFunctionCode);
 }
 
 TEST(PduDpv1C2, InitiateRequestWithSoftingDefaults) {
@@ -92,11 +95,14 @@ TEST(PduDpv1C2, DataTransportReadWriteIdle) {
   const Bytes transport = {0x51, 0x00, 0x05, 0x02, 0xAA, 0xBB};
   EXPECT_EQ(enc(std::get<DataTransport>(decode_c2_request(transport).value())), transport);
   EXPECT_EQ(enc(std::get<DataTransport>(decode_c2_response(transport).value())), transport);
-  EXPECT_EQ(std::get<ReadRequest>(decode_c2_request(Bytes{0x5E, 1, 2, 3}).value()), (ReadRequest{1, 2, 3}));
-  EXPECT_EQ(std::get<WriteResponse>(decode_c2_response(Bytes{0x5F, 1, 2, 3}).value()), (WriteResponse{1, 2, 3}));
+  EXPECT_EQ(std::get<ReadRequest>(decode_c2_request(Bytes{0x5E, 1, 2, 3}).value()),
+            (ReadRequest{1, 2, 3}));
+  EXPECT_EQ(std::get<WriteResponse>(decode_c2_response(Bytes{0x5F, 1, 2, 3}).value()),
+            (WriteResponse{1, 2, 3}));
   EXPECT_EQ(enc(std::get<Idle>(decode_c2_request(Bytes{0x48}).value())), Bytes{0x48});
   EXPECT_EQ(enc(std::get<Idle>(decode_c2_request(Bytes{0x48, 0x00}).value())), (Bytes{0x48, 0x00}));
-  const Dpv1Error neg = std::get<Dpv1Error>(decode_c2_response(Bytes{0xD7, 0x80, 0xB5, 0x00}).value());
+  const Dpv1Error neg =
+      std::get<Dpv1Error>(decode_c2_response(Bytes{0xD7, 0x80, 0xB5, 0x00}).value());
   EXPECT_EQ(neg.function, Dpv1Function::kInitiate);
   EXPECT_EQ(neg.error_code_1, ErrorCode1::kStateConflict);
   EXPECT_EQ(enc(neg), (Bytes{0xD7, 0x80, 0xB5, 0x00}));
@@ -108,7 +114,8 @@ TEST(PduDpv1C2, MalformedPdus) {
   EXPECT_EQ(req({}), PduError::kTooShort);
   EXPECT_EQ(req({0x57, 0, 0, 0, 0, 0x64}), PduError::kTooShort);
   // S_Len 4 claimed but only 2 address bytes present.
-  EXPECT_EQ(req({0x57, 0, 0, 0, 0, 0x64, 1, 0, 0, 0, 0, 0, 0, 4, 0, 0, 0, 0}), PduError::kLengthMismatch);
+  EXPECT_EQ(req({0x57, 0, 0, 0, 0, 0x64, 1, 0, 0, 0, 0, 0, 0, 4, 0, 0, 0, 0}),
+            PduError::kLengthMismatch);
   EXPECT_EQ(res({0x57, 0xF0, 1, 0, 0, 0, 0, 0, 0, 2, 0, 2}), PduError::kLengthMismatch);
   EXPECT_EQ(req({0x58, 0x03, 0x13, 0x00}), PduError::kValueOutOfRange);  // subnet 3
   EXPECT_EQ(req({0x58, 0x00, 0x33, 0x00}), PduError::kValueOutOfRange);  // instance 3

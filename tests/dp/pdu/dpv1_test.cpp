@@ -1,4 +1,5 @@
-// DPV1 MSAC_C1 PDUs, spec/profibus-dp.md §3.3–§3.5 (examples §3.3 I&M call, §3.4, §3.5).
+// DPV1 MSAC_C1 PDUs, [IEC 61158-6-3 MSAC_C1, MSAC_C1 polling, DPV1 alarms] (examples
+// [IEC 61158-6-3 MSAC_C1] I&M call, [IEC 61158-6-3 MSAC_C1 polling, DPV1 alarms]).
 #include "dp/pdu/dpv1.h"
 
 #include "pdu_test_util.h"
@@ -53,7 +54,7 @@ TEST(PduDpv1, NegativeResponseInvalidIndex) {
   const Dpv1Error e = std::get<Dpv1Error>(r.value());
   EXPECT_EQ(e, (Dpv1Error{Dpv1Function::kRead, error_decode::kDpv1, ErrorCode1::kInvalidIndex, 0}));
   EXPECT_EQ(enc(e), du);
-  // §3.3: the negative response to a malformed Write.
+  // [IEC 61158-6-3 MSAC_C1]: the negative response to a malformed Write.
   EXPECT_EQ(enc(type_conflict(Dpv1Function::kWrite)), (Bytes{0xDF, 0x80, 0xB3, 0x00}));
 }
 
@@ -93,17 +94,18 @@ TEST(PduDpv1, MalformedRequests) {
   EXPECT_EQ(err({}), PduError::kTooShort);
   EXPECT_EQ(err({0x5E, 0x00, 0x01}), PduError::kTooShort);
   EXPECT_EQ(err({0x5E, 0x00, 0x01, 0x10, 0x00}), PduError::kLengthMismatch);  // Read.req is 4 bytes
-  EXPECT_EQ(err({0x5E, 0x00, 0x01, 0x00}), PduError::kValueOutOfRange);        // Length 0
-  EXPECT_EQ(err({0x5E, 0x00, 0x01, 0xF1}), PduError::kValueOutOfRange);        // Length 241
-  EXPECT_EQ(err({0x5F, 0x00, 0x01, 0x00}), PduError::kValueOutOfRange);        // Write Length 0
-  EXPECT_EQ(err({0x5F, 0x00, 0x01, 0x02, 0xAA}), PduError::kLengthMismatch);   // 1 of 2 bytes
+  EXPECT_EQ(err({0x5E, 0x00, 0x01, 0x00}), PduError::kValueOutOfRange);       // Length 0
+  EXPECT_EQ(err({0x5E, 0x00, 0x01, 0xF1}), PduError::kValueOutOfRange);       // Length 241
+  EXPECT_EQ(err({0x5F, 0x00, 0x01, 0x00}), PduError::kValueOutOfRange);       // Write Length 0
+  EXPECT_EQ(err({0x5F, 0x00, 0x01, 0x02, 0xAA}), PduError::kLengthMismatch);  // 1 of 2 bytes
   EXPECT_EQ(err({0x5C, 0x00, 0x01}), PduError::kTooShort);
   EXPECT_EQ(err({0x57, 0x00, 0x00, 0x00}), PduError::kBadFunctionCode);  // C2 Initiate on SAP 51
   EXPECT_EQ(err({0xDE, 0x80, 0xB0, 0x00}), PduError::kBadFunctionCode);  // a response as request
 }
 
 TEST(PduDpv1, RejectResponseForMalformedRequests) {
-  // §3.3 [VPC3-C1]: Read with Length 0 → DE 80 B3 00; Write with Length 0 → DF 80 B3 00.
+  // [IEC 61158-6-3 MSAC_C1] [VPC3+ dp_msac1.c]: Read with Length 0 → DE 80 B3 00; Write with Length
+  // 0 → DF 80 B3 00.
   const auto neg = [](const Bytes& du) {
     EXPECT_FALSE(decode_c1_request(du));
     const auto r = c1_reject_response(du);
@@ -122,7 +124,8 @@ TEST(PduDpv1, MalformedResponses) {
   const auto err = [](const Bytes& du) { return error_of(decode_c1_response(du)); };
   EXPECT_EQ(err({}), PduError::kTooShort);
   EXPECT_EQ(err({0x5E, 0x00, 0x01, 0x03, 0xAA}), PduError::kLengthMismatch);
-  EXPECT_EQ(err({0x5F, 0x00, 0x01, 0x03, 0xAA}), PduError::kLengthMismatch);  // Write.res has no data
+  EXPECT_EQ(err({0x5F, 0x00, 0x01, 0x03, 0xAA}),
+            PduError::kLengthMismatch);  // Write.res has no data
   EXPECT_EQ(err({0xDE, 0x80, 0xB0}), PduError::kTooShort);
   EXPECT_EQ(err({0xC0, 0x80, 0xB0, 0x00}), PduError::kBadFunctionCode);  // 0x40 is no DPV1 function
   EXPECT_EQ(err({0x12}), PduError::kBadFunctionCode);

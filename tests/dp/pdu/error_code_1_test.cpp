@@ -1,7 +1,7 @@
 // DPV1 Error_Code_1 as an enum class with its category [IEC 61158-6-3, DPV1 Error_Code_1].
-#include "dp/pdu/dpv1.h"
 #include "dp/pdu/error_code_1.h"
 
+#include "dp/pdu/dpv1.h"
 #include "pdu_test_util.h"
 
 namespace rs4sim::dp::pdu {

@@ -1,5 +1,6 @@
-// Extended diagnosis blocks (spec/profibus-dp.md §2.5) and DPV1 alarm/status PDUs
-// (§3.5, §3.6). Vectors: [PRST test_diag_iter] and [CP5613 p187].
+// Extended diagnosis blocks ([IEC 61158-6-3 Slave_Diag]) and DPV1 alarm/status PDUs
+// ([IEC 61158-6-3 DPV1 alarms, status PDUs]). Vectors: [profirust test_diag_iter] and
+// [CP 5613/5614 DP manual p. 187].
 #include "dp/pdu/ext_diag.h"
 
 #include "pdu_test_util.h"
@@ -142,9 +143,9 @@ TEST(PduExtDiag, SeveralBlocksInARow) {
 TEST(PduExtDiag, MalformedBlocks) {
   EXPECT_EQ(first_error({0x41, 0x00}, false), PduError::kBadDiagBlock);  // length 1: header only
   EXPECT_EQ(first_error({0x00}, false), PduError::kBadDiagBlock);        // length 0
-  EXPECT_EQ(first_error({0x45, 0x00, 0x01}, false), PduError::kBadDiagBlock);  // 5 > 3 present
-  EXPECT_EQ(first_error({0x82, 0x41}, false), PduError::kBadDiagBlock);  // channel block cut
-  EXPECT_EQ(first_error({0x03, 0x01, 0x00}, true), PduError::kBadAlarm);  // DPV1 block < 4
+  EXPECT_EQ(first_error({0x45, 0x00, 0x01}, false), PduError::kBadDiagBlock);   // 5 > 3 present
+  EXPECT_EQ(first_error({0x82, 0x41}, false), PduError::kBadDiagBlock);         // channel block cut
+  EXPECT_EQ(first_error({0x03, 0x01, 0x00}, true), PduError::kBadAlarm);        // DPV1 block < 4
   EXPECT_EQ(first_error({0x04, 0x00, 0x00, 0x01}, true), PduError::kBadAlarm);  // alarm type 0
   EXPECT_EQ(first_error({0x04, 0x07, 0x00, 0x01}, true), PduError::kBadAlarm);  // type 7 reserved
   EXPECT_EQ(first_error({0x04, 0x7F, 0x00, 0x01}, true), PduError::kBadAlarm);  // type 127

@@ -1,8 +1,8 @@
-// Structured parameter blocks (spec/profibus-dp.md §3.2, F-parameter block shape §5.6) and
-// the I&M call header / I&M0 record (§3.3).
+// Structured parameter blocks ([IEC 61158-6-3 structured Prm_Data], F-parameter block shape
+// [PROFIBUS GSD spec F-parameter keywords]) and the I&M call header / I&M0 record
+// ([IEC 61158-6-3 MSAC_C1]).
 #include "dp/pdu/im.h"
 #include "dp/pdu/prm_blocks.h"
-
 #include "pdu_test_util.h"
 
 namespace rs4sim::dp::pdu {
@@ -14,7 +14,7 @@ using testing::error_of;
 TEST(PduPrmBlocks, WagoFParameterBlockThenUserBlock) {
   const Bytes data = {
       0x0E,        // 0 Structure_Length 14 incl. itself
-      0x05,        // 1 Structure_Type 5 (F-parameters, §5.6)
+      0x05,        // 1 Structure_Type 5 (F-parameters, [PROFIBUS GSD spec F-parameter keywords])
       0x01,        // 2 slot 1
       0x00,        // 3 reserved/index
       0x08,        // 4 F_Prm_Flag1: F_SIL = 2 (SIL3)
@@ -82,17 +82,30 @@ TEST(PduIm, CallHeaderForIm0) {
 
 TEST(PduIm, Im0RecordOffsets) {
   Bytes rec(64, 0);
-  rec[10] = 0x01; rec[11] = 0x2C;                     // 10,11 MANUFACTURER_ID 0x012C
-  for (std::size_t i = 0; i < 20; ++i) rec[12 + i] = ' ';     // 12..31 ORDER_ID
-  rec[12] = 'R'; rec[13] = 'S'; rec[14] = '4';
-  for (std::size_t i = 0; i < 16; ++i) rec[32 + i] = static_cast<std::uint8_t>('0' + i % 10);  // 32..47 SERIAL_NUMBER
-  rec[48] = 0x00; rec[49] = 0x02;                     // 48,49 HARDWARE_REVISION 2
-  rec[50] = 'V'; rec[51] = 1; rec[52] = 2; rec[53] = 3;  // 50..53 SOFTWARE_REVISION V1.2.3
-  rec[54] = 0x00; rec[55] = 0x07;                     // 54,55 REVISION_COUNTER 7
-  rec[56] = 0x3A; rec[57] = 0x00;                     // 56,57 PROFILE_ID 0x3A00
-  rec[58] = 0x00; rec[59] = 0x01;                     // 58,59 PROFILE_SPECIFIC_TYPE 1
-  rec[60] = 0x01; rec[61] = 0x01;                     // 60,61 IM_VERSION 1.1
-  rec[62] = 0x00; rec[63] = 0x00;                     // 62,63 IM_SUPPORTED: only I&M0
+  rec[10] = 0x01;
+  rec[11] = 0x2C;                                          // 10,11 MANUFACTURER_ID 0x012C
+  for (std::size_t i = 0; i < 20; ++i) rec[12 + i] = ' ';  // 12..31 ORDER_ID
+  rec[12] = 'R';
+  rec[13] = 'S';
+  rec[14] = '4';
+  for (std::size_t i = 0; i < 16; ++i)
+    rec[32 + i] = static_cast<std::uint8_t>('0' + i % 10);  // 32..47 SERIAL_NUMBER
+  rec[48] = 0x00;
+  rec[49] = 0x02;  // 48,49 HARDWARE_REVISION 2
+  rec[50] = 'V';
+  rec[51] = 1;
+  rec[52] = 2;
+  rec[53] = 3;  // 50..53 SOFTWARE_REVISION V1.2.3
+  rec[54] = 0x00;
+  rec[55] = 0x07;  // 54,55 REVISION_COUNTER 7
+  rec[56] = 0x3A;
+  rec[57] = 0x00;  // 56,57 PROFILE_ID 0x3A00
+  rec[58] = 0x00;
+  rec[59] = 0x01;  // 58,59 PROFILE_SPECIFIC_TYPE 1
+  rec[60] = 0x01;
+  rec[61] = 0x01;  // 60,61 IM_VERSION 1.1
+  rec[62] = 0x00;
+  rec[63] = 0x00;  // 62,63 IM_SUPPORTED: only I&M0
   const auto r = decode_im0(rec);
   ASSERT_TRUE(r);
   const Im0& im = r.value();

@@ -1,10 +1,11 @@
-// Global_Control (§2.6), Set_Slave_Add (§2.7), empty requests and I/O images (§2.1, §2.7)
-// of spec/profibus-dp.md.
+// Global_Control ([IEC 61158-6-3 Global_Control]), Set_Slave_Add
+// ([IEC 61158-6-3 Set_Slave_Add, Rd_Inp/Rd_Outp]), empty requests and I/O images
+// ([IEC 61158-6-3 SAP assignment, Set_Slave_Add, Rd_Inp/Rd_Outp]) of [IEC 61158-4-3]
+// [IEC 61158-6-3].
 #include "dp/pdu/global_control.h"
 #include "dp/pdu/sap.h"
 #include "dp/pdu/set_slave_add.h"
 #include "dp/pdu/simple_services.h"
-
 #include "pdu_test_util.h"
 
 namespace rs4sim::dp::pdu {
@@ -13,8 +14,12 @@ namespace {
 using testing::Bytes;
 using testing::error_of;
 
-Result<void> enc_gc(const GlobalControl& g, fdl::DataUnit& out) { return encode_global_control(g, out); }
-Result<void> enc_ssa(const SetSlaveAdd& s, fdl::DataUnit& out) { return encode_set_slave_add(s, out); }
+Result<void> enc_gc(const GlobalControl& g, fdl::DataUnit& out) {
+  return encode_global_control(g, out);
+}
+Result<void> enc_ssa(const SetSlaveAdd& s, fdl::DataUnit& out) {
+  return encode_set_slave_add(s, out);
+}
 
 TEST(PduGlobalControl, ClearFromTheWorkedExample) {
   const Bytes du = {

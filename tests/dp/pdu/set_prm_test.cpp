@@ -1,4 +1,5 @@
-// Set_Prm, spec/profibus-dp.md §2.3 and DPV1_Status §3.1; vectors from §2.10 and [TRACE #26].
+// Set_Prm, [IEC 61158-6-3 Set_Prm] and DPV1_Status [IEC 61158-6-3 DPV1_Status]; vectors from
+// [docs/references.md#dp-worked-example] and [pyprofibus issue #26 trace].
 #include "dp/pdu/set_prm.h"
 
 #include "pdu_test_util.h"
@@ -69,7 +70,7 @@ TEST(PduSetPrm, Et200sTraceDpv0WithUserData) {
 }
 
 TEST(PduSetPrm, Dpv1LayoutShorterThanTenBytesIsDpv0Mode) {
-  // §3.1: DPV1 mode needs prm length ≥ 10; bytes 7..8 are then user data.
+  // [IEC 61158-6-3 DPV1_Status]: DPV1 mode needs prm length ≥ 10; bytes 7..8 are then user data.
   const Bytes du = {0x80, 0x01, 0x01, 0x00, 0x12, 0x34, 0x00, 0x80, 0x20};
   const auto r = decode_set_prm(du, PrmLayout::kDpv1);
   ASSERT_TRUE(r);
@@ -86,8 +87,8 @@ TEST(PduSetPrm, EveryDpv1BitHasItsPlace) {
   EXPECT_TRUE(d.dpv1_enable && d.fail_safe && d.publisher_enable && d.wd_base_1ms);
   EXPECT_EQ(d.status1_reserved, 0);
   EXPECT_TRUE(d.enable_pull_plug_alarm && d.enable_process_alarm && d.enable_diagnostic_alarm &&
-              d.enable_manufacturer_specific_alarm && d.enable_status_alarm && d.enable_update_alarm &&
-              d.check_cfg_mode);
+              d.enable_manufacturer_specific_alarm && d.enable_status_alarm &&
+              d.enable_update_alarm && d.check_cfg_mode);
   EXPECT_TRUE(d.prm_cmd && d.isom_req && d.prm_structure);
   EXPECT_EQ(d.alarm_mode, 7);
   EXPECT_EQ(d.max_outstanding_alarms(), 32U);

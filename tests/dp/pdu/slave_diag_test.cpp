@@ -1,4 +1,5 @@
-// Slave_Diag response, spec/profibus-dp.md §2.5; vectors from §2.10 and [TRACE #26].
+// Slave_Diag response, [IEC 61158-6-3 Slave_Diag]; vectors from
+// [docs/references.md#dp-worked-example] and [pyprofibus issue #26 trace].
 #include "dp/pdu/slave_diag.h"
 
 #include "pdu_test_util.h"
@@ -54,7 +55,7 @@ TEST(PduSlaveDiag, ReadyInDataExchange) {
 TEST(PduSlaveDiag, Et200sWithIdentifierBlock) {
   const Bytes du = {0x02, 0x05, 0x00, 0xFF, 0x80, 0x6A,
                     0x49,  // 6 identifier-related block, length 9 incl. header
-                    0, 0, 0, 0, 0, 0, 0, 0};
+                    0,    0,    0,    0,    0,    0,    0, 0};
   const auto r = decode_slave_diag(du);
   ASSERT_TRUE(r);
   EXPECT_EQ(r.value().ident_number, 0x806A);
@@ -63,19 +64,21 @@ TEST(PduSlaveDiag, Et200sWithIdentifierBlock) {
 }
 
 TEST(PduSlaveDiag, EveryStationStatusBit) {
-  const char* names1[] = {"Station_Non_Existent", "Station_Not_Ready", "Cfg_Fault", "Ext_Diag",
-                          "Not_Supported", "Invalid_Slave_Response", "Prm_Fault", "Master_Lock"};
+  const char* names1[] = {
+      "Station_Non_Existent", "Station_Not_Ready",      "Cfg_Fault", "Ext_Diag",
+      "Not_Supported",        "Invalid_Slave_Response", "Prm_Fault", "Master_Lock"};
   for (unsigned b = 0; b < 8; ++b) {
     SCOPED_TRACE(names1[b]);
     const auto byte = static_cast<std::uint8_t>(1U << b);
     const StationStatus1 s = StationStatus1::from_byte(byte);
-    const bool bits[] = {s.station_non_existent, s.station_not_ready, s.cfg_fault, s.ext_diag,
-                         s.not_supported, s.invalid_slave_response, s.prm_fault, s.master_lock};
+    const bool bits[] = {
+        s.station_non_existent, s.station_not_ready,      s.cfg_fault, s.ext_diag,
+        s.not_supported,        s.invalid_slave_response, s.prm_fault, s.master_lock};
     for (unsigned i = 0; i < 8; ++i) EXPECT_EQ(bits[i], i == b);
     EXPECT_EQ(s.to_byte(), byte);
     const StationStatus2 t = StationStatus2::from_byte(byte);
-    const bool bits2[] = {t.prm_req, t.stat_diag, t.always_one, t.wd_on,
-                          t.freeze_mode, t.sync_mode, t.reserved, t.deactivated};
+    const bool bits2[] = {t.prm_req,     t.stat_diag, t.always_one, t.wd_on,
+                          t.freeze_mode, t.sync_mode, t.reserved,   t.deactivated};
     for (unsigned i = 0; i < 8; ++i) EXPECT_EQ(bits2[i], i == b);
     EXPECT_EQ(t.to_byte(), byte);
   }

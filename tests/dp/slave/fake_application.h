@@ -19,7 +19,8 @@ class FakeApplication : public SlaveApplication {
  public:
   // --- configurable answers ---
   // (built from arrays: gcc 12 warns falsely on initializer-list members at -O2)
-  static constexpr std::uint8_t kConfig[] = {0x10, 0x20};  // 1 byte in, 1 byte out (§2.10)
+  // 1 byte in, 1 byte out ([docs/references.md#dp-worked-example])
+  static constexpr std::uint8_t kConfig[] = {0x10, 0x20};
   static constexpr std::uint8_t kInputs[] = {0x3C};
   static constexpr std::uint8_t kReadData[] = {0xAB, 0xCD};
   Bytes config{std::begin(kConfig), std::end(kConfig)};

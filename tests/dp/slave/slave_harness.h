@@ -1,8 +1,8 @@
 #pragma once
 // Test harness: one dp::slave::Slave with a FakeApplication on a manual clock, driven with wire
-// bytes. Frames are framed here with an independent SD/LE/FCS/ED helper (§1.2, §1.3),
-// not with the code under test; the slave's reply is encoded with fdl::encode and
-// compared byte for byte.
+// bytes. Frames are framed here with an independent SD/LE/FCS/ED helper
+// ([IEC 61158-4-3 frame formats, FCS]), not with the code under test; the slave's reply is encoded
+// with fdl::encode and compared byte for byte.
 
 #include "dp/fdl/decoder.h"
 #include "dp/fdl/telegram.h"
@@ -18,27 +18,29 @@
 namespace rs4sim::dp::testing {
 using namespace ::rs4sim::dp::slave;  // the slave under test
 
-// §1.3: FCS = sum of DA…last DU byte mod 256.
+// [IEC 61158-4-3 FCS]: FCS = sum of DA…last DU byte mod 256.
 inline std::uint8_t fcs_of(const Bytes& body) {
   unsigned sum = 0;
   for (auto b : body) sum += b;
   return static_cast<std::uint8_t>(sum & 0xFF);
 }
-// SD2: 68 LE LEr 68 <body = DA SA FC [DSAP SSAP] DU> FCS 16 (§1.2).
+// SD2: 68 LE LEr 68 <body = DA SA FC [DSAP SSAP] DU> FCS 16 ([IEC 61158-4-3 frame formats]).
 inline Bytes sd2(const Bytes& body) {
-  Bytes f{0x68, static_cast<std::uint8_t>(body.size()), static_cast<std::uint8_t>(body.size()), 0x68};
+  Bytes f{0x68, static_cast<std::uint8_t>(body.size()), static_cast<std::uint8_t>(body.size()),
+          0x68};
   f.insert(f.end(), body.begin(), body.end());
   f.push_back(fcs_of(body));
   f.push_back(0x16);
   return f;
 }
-// SD1: 10 DA SA FC FCS 16 (§1.2).
+// SD1: 10 DA SA FC FCS 16 ([IEC 61158-4-3 frame formats]).
 inline Bytes sd1(std::uint8_t da, std::uint8_t sa, std::uint8_t fc) {
   return {0x10, da, sa, fc, fcs_of({da, sa, fc}), 0x16};
 }
 inline const Bytes kSc{0xE5};
 
-// The §2.10 slave: address 5, ident 0x1234, DPV1, 1 byte in / 1 byte out.
+// The [docs/references.md#dp-worked-example] slave: address 5, ident 0x1234, DPV1, 1 byte in / 1
+// byte out.
 inline Config example_config() {
   Config c;
   c.address = 5;
@@ -79,7 +81,8 @@ class SlaveHarness {
     if (deadline && clock.now() >= *deadline) slave.on_time(clock.now());
   }
 
-  // Master 2 → slave 5 with the FCB sequence of §1.8: 6D first, then 5D/7D alternating.
+  // Master 2 → slave 5 with the FCB sequence of [IEC 61158-4-3 FCB/FCV]: 6D first, then 5D/7D
+  // alternating.
   std::uint8_t next_fc() {
     if (first_) {
       first_ = false;
@@ -109,10 +112,14 @@ class SlaveHarness {
     return sd2(body);
   }
 
-  // §2.10: Set_Prm (Lock+WD_On, 10·1·10 ms, minTSDR 11, ident 1234, DPV1 80 20 00).
-  static Bytes example_prm() { return {0x88, 0x0A, 0x01, 0x0B, 0x12, 0x34, 0x00, 0x80, 0x20, 0x00}; }
+  // [docs/references.md#dp-worked-example]: Set_Prm (Lock+WD_On, 10·1·10 ms, minTSDR 11, ident
+  // 1234, DPV1 80 20 00).
+  static Bytes example_prm() {
+    return {0x88, 0x0A, 0x01, 0x0B, 0x12, 0x34, 0x00, 0x80, 0x20, 0x00};
+  }
 
-  // Runs Set_Prm + Chk_Cfg (§2.10) and checks that the slave is in Data_Exch.
+  // Runs Set_Prm + Chk_Cfg ([docs/references.md#dp-worked-example]) and checks that the slave is in
+  // Data_Exch.
   void to_data_exchange(const Bytes& prm = example_prm(), const Bytes& cfg = {0x10, 0x20}) {
     EXPECT_EQ(send(dp(0x3D, prm)), kSc);
     EXPECT_EQ(send(dp(0x3E, cfg)), kSc);

@@ -1,4 +1,4 @@
-// AlarmQueue unit tests (spec/profibus-dp.md §3.5): limits per Alarm_Mode, Seq_Nr
+// AlarmQueue unit tests ([IEC 61158-6-3 DPV1 alarms]): limits per Alarm_Mode, Seq_Nr
 // assignment, type enables, acknowledge matching.
 #include "dp/slave/alarm_queue.h"
 #include "dp/slave/slave_error.h"
@@ -26,17 +26,18 @@ TEST(AlarmQueue, ClosedRefusesAlarms) {
 TEST(AlarmQueue, InvalidFieldsAreRefusedEvenWhenOpen) {
   AlarmQueue q(8, 8, 32);
   q.open(sequence_mode(3));
-  EXPECT_EQ(q.submit({0, 0, 1, false, {}}), make_error_code(SlaveError::kInvalidAlarm));   // type 0
-  EXPECT_EQ(q.submit({7, 0, 1, false, {}}), make_error_code(SlaveError::kInvalidAlarm));   // reserved 7
-  EXPECT_EQ(q.submit({127, 0, 1, false, {}}), make_error_code(SlaveError::kInvalidAlarm)); // 127
-  EXPECT_EQ(q.submit({1, 255, 1, false, {}}), make_error_code(SlaveError::kInvalidAlarm)); // slot
-  EXPECT_EQ(q.submit({1, 0, 4, false, {}}), make_error_code(SlaveError::kInvalidAlarm));   // spec
+  EXPECT_EQ(q.submit({0, 0, 1, false, {}}), make_error_code(SlaveError::kInvalidAlarm));  // type 0
+  EXPECT_EQ(q.submit({7, 0, 1, false, {}}),
+            make_error_code(SlaveError::kInvalidAlarm));  // reserved 7
+  EXPECT_EQ(q.submit({127, 0, 1, false, {}}), make_error_code(SlaveError::kInvalidAlarm));  // 127
+  EXPECT_EQ(q.submit({1, 255, 1, false, {}}), make_error_code(SlaveError::kInvalidAlarm));  // slot
+  EXPECT_EQ(q.submit({1, 0, 4, false, {}}), make_error_code(SlaveError::kInvalidAlarm));    // spec
   EXPECT_EQ(q.submit({2, 0, 1, false, {}}), make_error_code(SlaveError::kAlarmTypeNotEnabled));
 }
 
 TEST(AlarmQueue, SequenceModeEightOutstandingThenWaitsForAck) {
   AlarmQueue q(8, 8, 32);
-  q.open(sequence_mode(3));  // Alarm_Mode 3 = 8 outstanding (§3.1)
+  q.open(sequence_mode(3));  // Alarm_Mode 3 = 8 outstanding ([IEC 61158-6-3 DPV1_Status])
   EXPECT_EQ(q.limit(), 8U);
   for (int i = 0; i < 10; ++i) ASSERT_FALSE(q.submit({1, 0, 1, true, {}}));
   for (std::uint8_t i = 0; i < 8; ++i) {
@@ -93,7 +94,7 @@ TEST(AlarmQueue, QueueFullAndCloseClears) {
 }
 
 TEST(AlarmQueue, BlockBytesMatchTheRs4UpdateAlarm) {
-  // RS4 §7.1 update alarm: 04 06 00 0b00sss100 — seq 5 → specifier 0x2C.
+  // [RS4 manual §5.3.1] update alarm: 04 06 00 0b00sss100 — seq 5 → specifier 0x2C.
   Alarm a;
   a.type = 6;
   a.slot = 0;

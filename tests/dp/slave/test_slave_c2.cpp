@@ -1,5 +1,5 @@
-// MSAC_C2 (§3.7): RM on SAP 49, one connection on SAP 48, Initiate/Abort/Read/Write,
-// second Initiate refused with RS, idle timeout on the manual clock.
+// MSAC_C2 ([IEC 61158-6-3 MSAC_C2]): RM on SAP 49, one connection on SAP 48,
+// Initiate/Abort/Read/Write, second Initiate refused with RS, idle timeout on the manual clock.
 #include "tests/dp/slave/slave_harness.h"
 
 #include <chrono>
@@ -33,27 +33,25 @@ class C2Master {
   bool fcb_ = true;  // FCB of the last frame
 };
 
-const Bytes kInitiate{0x57, 0x00, 0x00, 0x00,
-                      0x00, 0x64,  // Send_Timeout 100 × 10 ms = 1 s
-                      0x01, 0x00,  // Features_Supported
-                      0x00, 0x00,  // Profile_Features_Supported
-                      0x00, 0x00,  // Profile_Ident_Number
-                      0x00, 0x02,  // S_Type 0, S_Len 2
-                      0x00, 0x02,  // D_Type 0, D_Len 2
-                      0x01, 0x02,  // S_Addr: API 1, SCL 2
-                      0x03, 0x04}; // D_Addr: API 3, SCL 4
+const Bytes kInitiate{0x57, 0x00, 0x00, 0x00, 0x00, 0x64,  // Send_Timeout 100 × 10 ms = 1 s
+                      0x01, 0x00,                          // Features_Supported
+                      0x00, 0x00,                          // Profile_Features_Supported
+                      0x00, 0x00,                          // Profile_Ident_Number
+                      0x00, 0x02,                          // S_Type 0, S_Len 2
+                      0x00, 0x02,                          // D_Type 0, D_Len 2
+                      0x01, 0x02,                          // S_Addr: API 1, SCL 2
+                      0x03, 0x04};                         // D_Addr: API 3, SCL 4
 const Bytes kRsToMaster1{0x10, 0x01, 0x05, 0x03, 0x09, 0x16};
 
 void connect(SlaveHarness& h, C2Master& m) {
-  // RM answers at once with `56 SAP Send_Timeout`: SAP 48, 100 × 10 ms (§3.7).
+  // RM answers at once with `56 SAP Send_Timeout`: SAP 48, 100 × 10 ms ([IEC 61158-6-3 MSAC_C2]).
   EXPECT_EQ(h.send(m.frame(0x31, kInitiate)), C2Master::reply(0x31, {0x56, 0x30, 0x00, 0x64}));
   EXPECT_EQ(h.send(m.frame(0x30, {})),
             C2Master::reply(0x30, {0x57,
                                    0xF4,        // Max_Len_Data_Unit 240 + 4
                                    0x01, 0x00,  // Features_Supported
-                                   0x00, 0x00, 0x00, 0x00,
-                                   0x00, 0x02, 0x00, 0x02,
-                                   0x03, 0x04,   // S_Addr = the request's D_Addr
+                                   0x00, 0x00, 0x00, 0x00, 0x00, 0x02, 0x00, 0x02, 0x03,
+                                   0x04,           // S_Addr = the request's D_Addr
                                    0x01, 0x02}));  // D_Addr = the request's S_Addr
   EXPECT_TRUE(h.slave.c2_connected());
 }
@@ -84,10 +82,10 @@ TEST(SlaveC2, DataTransportRoundTrip) {
   SlaveHarness h;
   C2Master m;
   connect(h, m);
-  const Bytes transport{0x51,        // Data_Transport
-                        0x00,        // slot 0
-                        0x05,        // index 5
-                        0x02,        // 2 data bytes
+  const Bytes transport{0x51,  // Data_Transport
+                        0x00,  // slot 0
+                        0x05,  // index 5
+                        0x02,  // 2 data bytes
                         0xAA, 0xBB};
   EXPECT_EQ(h.send(m.frame(0x30, transport)), kSc);
   ASSERT_EQ(h.app.acyclic.size(), 1U);
@@ -105,7 +103,8 @@ TEST(SlaveC2, SecondInitiateIsRefusedWithRs) {
   C2Master m;
   connect(h, m);
   C2Master other;  // master 3
-  EXPECT_EQ(h.send(other.frame(0x31, kInitiate, 0x83)), (Bytes{0x10, 0x03, 0x05, 0x03, 0x0B, 0x16}));
+  EXPECT_EQ(h.send(other.frame(0x31, kInitiate, 0x83)),
+            (Bytes{0x10, 0x03, 0x05, 0x03, 0x0B, 0x16}));
   EXPECT_EQ(h.send(other.frame(0x30, {0x5E, 0x00, 0x02, 0x04}, 0x83)),
             (Bytes{0x10, 0x03, 0x05, 0x03, 0x0B, 0x16}));  // not its connection
   EXPECT_EQ(h.app.c2_events.size(), 1U);

@@ -18,18 +18,31 @@ std::error_code check(void (*mutate)(Config&)) {
 TEST(Config, DefaultsAreValid) { EXPECT_FALSE(Config{}.validate()); }
 
 TEST(Config, EachRangeHasItsError) {
-  EXPECT_EQ(check([](Config& c) { c.address = 127; }), make_error_code(SlaveError::kInvalidAddress));
-  EXPECT_EQ(check([](Config& c) { c.max_diag_length = 5; }), make_error_code(SlaveError::kInvalidMaxDiagLength));
-  EXPECT_EQ(check([](Config& c) { c.max_diag_length = 245; }), make_error_code(SlaveError::kInvalidMaxDiagLength));
-  EXPECT_EQ(check([](Config& c) { c.min_tsdr_default = 10; }), make_error_code(SlaveError::kInvalidMinTsdr));
-  EXPECT_EQ(check([](Config& c) { c.alarm_capacity = 0; }), make_error_code(SlaveError::kInvalidAlarmCapacity));
-  EXPECT_EQ(check([](Config& c) { c.alarm_capacity = 9; c.alarm_sequence_numbers = 8; }),
+  EXPECT_EQ(check([](Config& c) { c.address = 127; }),
+            make_error_code(SlaveError::kInvalidAddress));
+  EXPECT_EQ(check([](Config& c) { c.max_diag_length = 5; }),
+            make_error_code(SlaveError::kInvalidMaxDiagLength));
+  EXPECT_EQ(check([](Config& c) { c.max_diag_length = 245; }),
+            make_error_code(SlaveError::kInvalidMaxDiagLength));
+  EXPECT_EQ(check([](Config& c) { c.min_tsdr_default = 10; }),
+            make_error_code(SlaveError::kInvalidMinTsdr));
+  EXPECT_EQ(check([](Config& c) { c.alarm_capacity = 0; }),
             make_error_code(SlaveError::kInvalidAlarmCapacity));
-  EXPECT_EQ(check([](Config& c) { c.alarm_sequence_numbers = 33; }), make_error_code(SlaveError::kInvalidAlarmCapacity));
-  EXPECT_EQ(check([](Config& c) { c.alarm_queue_capacity = 0; }), make_error_code(SlaveError::kInvalidAlarmQueue));
-  EXPECT_EQ(check([](Config& c) { c.c2_rm_send_timeout = 0; }), make_error_code(SlaveError::kInvalidC2Timeout));
-  EXPECT_EQ(check([](Config& c) { c.c1_max_data_length = 241; }), make_error_code(SlaveError::kInvalidAcyclicLength));
-  EXPECT_EQ(check([](Config& c) { c.c2_max_data_length = 0; }), make_error_code(SlaveError::kInvalidAcyclicLength));
+  EXPECT_EQ(check([](Config& c) {
+              c.alarm_capacity = 9;
+              c.alarm_sequence_numbers = 8;
+            }),
+            make_error_code(SlaveError::kInvalidAlarmCapacity));
+  EXPECT_EQ(check([](Config& c) { c.alarm_sequence_numbers = 33; }),
+            make_error_code(SlaveError::kInvalidAlarmCapacity));
+  EXPECT_EQ(check([](Config& c) { c.alarm_queue_capacity = 0; }),
+            make_error_code(SlaveError::kInvalidAlarmQueue));
+  EXPECT_EQ(check([](Config& c) { c.c2_rm_send_timeout = 0; }),
+            make_error_code(SlaveError::kInvalidC2Timeout));
+  EXPECT_EQ(check([](Config& c) { c.c1_max_data_length = 241; }),
+            make_error_code(SlaveError::kInvalidAcyclicLength));
+  EXPECT_EQ(check([](Config& c) { c.c2_max_data_length = 0; }),
+            make_error_code(SlaveError::kInvalidAcyclicLength));
   EXPECT_EQ(check([](Config& c) { c.c2_sap = 49; }), make_error_code(SlaveError::kInvalidC2Sap));
 }
 

@@ -1,4 +1,5 @@
-// Slave_Diag station-status bits, diag flag (DH) and extended diagnosis (§2.5, §2.9).
+// Slave_Diag station-status bits, diag flag (DH) and extended diagnosis
+// ([IEC 61158-6-3 Slave_Diag, Data_Exchange]).
 #include "dp/slave/slave_error.h"
 #include "tests/dp/slave/slave_harness.h"
 
@@ -6,8 +7,8 @@ namespace rs4sim::dp::testing {
 using namespace ::rs4sim::dp::slave;  // the slave under test
 namespace {
 
-// Bits the slave never sets (master-only, §2.5): Station_Non_Existent (S1 bit 0),
-// Invalid_Slave_Response (S1 bit 5), Master_Lock (S1 bit 7), Deactivated (S2 bit 7).
+// Bits the slave never sets (master-only, [IEC 61158-6-3 Slave_Diag]): Station_Non_Existent (S1
+// bit 0), Invalid_Slave_Response (S1 bit 5), Master_Lock (S1 bit 7), Deactivated (S2 bit 7).
 void expect_no_master_bits(const Bytes& d) {
   ASSERT_GE(d.size(), 6U);
   EXPECT_EQ(d[0] & 0xA1, 0) << "master-only bit in Station_Status_1";
@@ -30,7 +31,7 @@ TEST(SlaveDiag, MasterOnlyBitsNeverSetInAnyState) {
 TEST(SlaveDiag, DiagFlagUntilTheOwnerFetches) {
   SlaveHarness h;
   h.to_data_exchange();
-  EXPECT_EQ(h.send(h.dx({0x01}))[6], 0x08);  // DL
+  EXPECT_EQ(h.send(h.dx({0x01}))[6], 0x08);              // DL
   const Bytes status_pdu{0x05, 0x81, 0x00, 0x00, 0x42};  // RS4 PROFIsafe status PDU, error 66
   ASSERT_FALSE(h.app.control->set_device_diagnosis(status_pdu, true, false));
   EXPECT_EQ(h.send(h.dx({0x01}))[6], 0x0A);  // DH
@@ -39,8 +40,8 @@ TEST(SlaveDiag, DiagFlagUntilTheOwnerFetches) {
   EXPECT_EQ(h.send(sd2({0x85, 0x83, 0x6D, 0x3C, 0x3E})).size(), 22U);
   EXPECT_TRUE(h.slave.diag_flag());
   EXPECT_EQ(h.diag(), (Bytes{0x08,  // Ext_Diag
-                             0x0C, 0x00, 0x02, 0x12, 0x34,
-                             0x05, 0x81, 0x00, 0x00, 0x42}));  // bytes 7..11 (RS4 §8)
+                             0x0C, 0x00, 0x02, 0x12, 0x34, 0x05, 0x81, 0x00, 0x00,
+                             0x42}));        // bytes 7..11 ([RS4 manual §6.2, §6.3])
   EXPECT_EQ(h.send(h.dx({0x01}))[6], 0x08);  // fetched → DL
   // Setting the same diagnosis again is no news.
   ASSERT_FALSE(h.app.control->set_device_diagnosis(status_pdu, true, false));
@@ -51,7 +52,7 @@ TEST(SlaveDiag, StatDiagKeepsTheFlagSet) {
   SlaveHarness h;
   h.to_data_exchange();
   ASSERT_FALSE(h.app.control->set_device_diagnosis({}, false, true));
-  EXPECT_EQ(h.diag()[1], 0x0E);  // Stat_Diag + WD_On + bit 2
+  EXPECT_EQ(h.diag()[1], 0x0E);              // Stat_Diag + WD_On + bit 2
   EXPECT_EQ(h.send(h.dx({0x01}))[6], 0x0A);  // DH although fetched
   ASSERT_FALSE(h.app.control->set_device_diagnosis({}, false, false));
   h.diag();
@@ -71,8 +72,8 @@ TEST(SlaveDiag, OverflowDropsWholeBlocksAndSetsTheBit) {
   Config cfg = example_config();
   cfg.max_diag_length = 12;  // 6 standard + 6 bytes
   SlaveHarness h(cfg);
-  const Bytes blocks{0x04, 0x01, 0x02, 0x03,   // device block, 4 bytes
-                     0x43, 0x00, 0x01};        // identifier block, 3 bytes → does not fit
+  const Bytes blocks{0x04, 0x01, 0x02, 0x03,  // device block, 4 bytes
+                     0x43, 0x00, 0x01};       // identifier block, 3 bytes → does not fit
   ASSERT_FALSE(h.app.control->set_device_diagnosis(blocks, true, false));
   EXPECT_EQ(h.diag(), (Bytes{0x0A, 0x05,
                              0x80,  // Ext_Diag_Overflow

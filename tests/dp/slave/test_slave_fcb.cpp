@@ -1,5 +1,5 @@
-// FCB/FCV responder rule on the slave (spec/profibus-dp.md §1.8) and the address filter
-// (§1.10): a repeat gets the stored reply and is not executed again.
+// FCB/FCV responder rule on the slave ([IEC 61158-4-3 FCB/FCV]) and the address filter
+// ([IEC 61158-4-3 frame reception]): a repeat gets the stored reply and is not executed again.
 #include "tests/dp/slave/slave_harness.h"
 
 namespace rs4sim::dp::testing {
@@ -9,13 +9,12 @@ namespace {
 TEST(SlaveFcb, RepeatedDataExchangeIsAnsweredFromTheStoreNotExecuted) {
   SlaveHarness h;
   h.to_data_exchange();  // 6D Set_Prm, 5D Chk_Cfg
-  const Bytes dx{0x68, 0x04, 0x04, 0x68,
-                 0x05, 0x02,
+  const Bytes dx{0x68, 0x04, 0x04, 0x68, 0x05, 0x02,
                  0x7D,  // FCV=1, FCB=1: new (last was FCB=0)
                  0xA5, 0x29, 0x16};
   const Bytes reply{0x68, 0x04, 0x04, 0x68, 0x02, 0x05, 0x08, 0x3C, 0x4B, 0x16};
   EXPECT_EQ(h.send(dx), reply);
-  h.app.inputs = {0x77};  // a second execution would answer 77
+  h.app.inputs = {0x77};         // a second execution would answer 77
   EXPECT_EQ(h.send(dx), reply);  // same FCB from the same master: repeat
   EXPECT_EQ(h.app.outputs.size(), 1U);
   EXPECT_EQ(h.slave.counters().repeats_answered, 1U);
@@ -60,9 +59,9 @@ TEST(SlaveFcb, FdlStatusHasNoFcbAndDoesNotDisturbTheStore) {
 TEST(SlaveAddressFilter, OtherStationsTokensAndResponsesAreIgnored) {
   SlaveHarness h;
   EXPECT_TRUE(h.send(sd2({0x86, 0x82, 0x6D, 0x3C, 0x3E})).empty());  // DA 6
-  EXPECT_TRUE(h.send(Bytes{0xDC, 0x05, 0x02}).empty());                // token to 5
-  EXPECT_TRUE(h.send(Bytes{0xE5}).empty());                            // SC
-  EXPECT_TRUE(h.send(sd1(0x05, 0x02, 0x08)).empty());                  // a response FC
+  EXPECT_TRUE(h.send(Bytes{0xDC, 0x05, 0x02}).empty());              // token to 5
+  EXPECT_TRUE(h.send(Bytes{0xE5}).empty());                          // SC
+  EXPECT_TRUE(h.send(sd1(0x05, 0x02, 0x08)).empty());                // a response FC
   EXPECT_EQ(h.slave.counters().for_other_stations, 1U);
   EXPECT_EQ(h.slave.counters().ignored, 3U);
   EXPECT_EQ(h.slave.counters().telegrams_seen, 4U);
@@ -70,7 +69,7 @@ TEST(SlaveAddressFilter, OtherStationsTokensAndResponsesAreIgnored) {
 
 TEST(SlaveAddressFilter, BroadcastIsNeverAnswered) {
   SlaveHarness h;
-  // SRD to 127 with a Slave_Diag: must stay silent (§1.10).
+  // SRD to 127 with a Slave_Diag: must stay silent ([IEC 61158-4-3 frame reception]).
   EXPECT_TRUE(h.send(sd2({0xFF, 0x82, 0x4D, 0x3C, 0x3E})).empty());
   // SDN broadcast Data_Exchange: silent and not executed.
   EXPECT_TRUE(h.send(sd2({0x7F, 0x02, 0x46, 0xA5})).empty());

@@ -1,5 +1,7 @@
-// Set_Prm (§2.3, §3.1), Chk_Cfg/Get_Cfg (§2.4), Rd_Inp/Rd_Outp and Set_Slave_Add (§2.7),
-// wrong-state and wrong-master requests (§2.2).
+// Set_Prm ([IEC 61158-6-3 Set_Prm, DPV1_Status]), Chk_Cfg/Get_Cfg
+// ([IEC 61158-6-3 Chk_Cfg/Get_Cfg]), Rd_Inp/Rd_Outp and Set_Slave_Add
+// ([IEC 61158-6-3 Set_Slave_Add, Rd_Inp/Rd_Outp]), wrong-state and wrong-master requests
+// ([IEC 61158-6-3 slave state machine]).
 #include "tests/dp/slave/slave_harness.h"
 
 namespace rs4sim::dp::testing {
@@ -10,10 +12,10 @@ const Bytes kRsTo2{0x10, 0x02, 0x05, 0x03, 0x0A, 0x16};  // SD1 DA 2 SA 5 FC RS
 
 TEST(SlaveSetPrm, IdentMismatchGivesPrmFault) {
   SlaveHarness h;
-  const Bytes prm{0x88, 0x0A, 0x01, 0x0B,
-                  0x43, 0x21,  // Ident 0x4321 ≠ 0x1234
+  const Bytes prm{0x88, 0x0A, 0x01, 0x0B, 0x43, 0x21,  // Ident 0x4321 ≠ 0x1234
                   0x00, 0x80, 0x20, 0x00};
-  EXPECT_EQ(h.send(h.dp(0x3D, prm)), kSc);  // SC = received, not accepted (§1.6)
+  EXPECT_EQ(h.send(h.dp(0x3D, prm)), kSc);  // SC = received, not accepted
+                                            // ([IEC 61158-4-3 short acknowledgement])
   EXPECT_EQ(h.slave.state(), State::kWaitPrm);
   EXPECT_EQ(h.diag(), (Bytes{0x42,  // Prm_Fault + Station_Not_Ready
                              0x05,  // Prm_Req + bit 2
@@ -47,8 +49,8 @@ TEST(SlaveSetPrm, UnsupportedFeaturesGiveNotSupported) {
 TEST(SlaveSetPrm, UserParametersGoToTheApplicationWhichMayRefuse) {
   SlaveHarness h;
   h.app.prm_verdict = PrmVerdict::kPrmFault;
-  const Bytes prm{0x88, 0x0A, 0x01, 0x0B, 0x12, 0x34, 0x00, 0x80, 0x20, 0x00,
-                  0xAA, 0xBB};  // User_Prm_Data after the 3 DPV1 bytes
+  const Bytes prm{0x88, 0x0A, 0x01, 0x0B, 0x12, 0x34,
+                  0x00, 0x80, 0x20, 0x00, 0xAA, 0xBB};  // User_Prm_Data after the 3 DPV1 bytes
   EXPECT_EQ(h.send(h.dp(0x3D, prm)), kSc);
   ASSERT_EQ(h.app.user_prm.size(), 1U);
   EXPECT_EQ(h.app.user_prm[0], (Bytes{0xAA, 0xBB}));
@@ -75,7 +77,7 @@ TEST(SlaveSetPrm, NoLockTakesOnlyMinTsdrUnlockReleases) {
   SlaveHarness h;
   h.to_data_exchange();
   EXPECT_EQ(h.slave.min_tsdr(), 11);
-  // Station_Status 00: only min TSDR (here 20) is taken over (§2.3).
+  // Station_Status 00: only min TSDR (here 20) is taken over ([IEC 61158-6-3 Set_Prm]).
   EXPECT_EQ(h.send(h.dp(0x3D, {0x00, 0x01, 0x01, 0x14, 0x00, 0x00, 0x00})), kSc);
   EXPECT_EQ(h.slave.min_tsdr(), 20);
   EXPECT_EQ(h.slave.state(), State::kDataExch);

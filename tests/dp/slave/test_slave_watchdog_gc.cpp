@@ -1,4 +1,5 @@
-// Watchdog on the manual clock (§2.3, §2.8) and Global_Control (§2.6).
+// Watchdog on the manual clock ([IEC 61158-6-3 Set_Prm, watchdog]) and Global_Control
+// ([IEC 61158-6-3 Global_Control]).
 #include "tests/dp/slave/slave_harness.h"
 
 #include <chrono>
@@ -24,7 +25,7 @@ TEST(SlaveWatchdog, ExpiresAtExactlyFactorTimesBaseNotBefore) {
   ASSERT_EQ(h.app.clears.size(), 1U);
   EXPECT_EQ(h.app.clears[0], OutputClear::kLeftDataExchange);
   EXPECT_EQ(h.app.transitions.back().why, TransitionReason::kWatchdog);
-  // §2.8: Station_Not_Ready + Prm_Req; DECISION: the slave forgot its master.
+  // [IEC 61158-6-3 watchdog]: Station_Not_Ready + Prm_Req; DECISION: the slave forgot its master.
   EXPECT_EQ(h.diag(), (Bytes{0x02, 0x05, 0x00, 0xFF, 0x12, 0x34}));
   EXPECT_EQ(h.send(h.dx({0x01})), (Bytes{0x10, 0x02, 0x05, 0x03, 0x0A, 0x16}));  // RS
   EXPECT_FALSE(h.slave.next_deadline().has_value());
@@ -84,7 +85,7 @@ TEST(SlaveGlobalControl, SyncHoldsOutputsUntilTheNextSync) {
   h.to_data_exchange({0xA8, 0x0A, 0x01, 0x0B, 0x12, 0x34, 0x00, 0x80, 0x00, 0x00});
   h.send(h.dx({0x01}));
   EXPECT_TRUE(h.send(gc(0x20, 0x00)).empty());  // Sync
-  EXPECT_EQ(h.diag()[1], 0x2C);                  // Sync_Mode + WD_On + bit 2
+  EXPECT_EQ(h.diag()[1], 0x2C);                 // Sync_Mode + WD_On + bit 2
   h.send(h.dx({0x02}));
   h.send(h.dx({0x03}));
   EXPECT_EQ(h.app.outputs.size(), 1U);  // held
@@ -116,7 +117,7 @@ TEST(SlaveGlobalControl, SyncWithoutSyncReqIsNotSupported) {
   h.to_data_exchange();
   h.send(gc(0x20, 0x00));
   EXPECT_EQ(h.send(h.dx({0x01}))[6], 0x0A);  // DH: new diagnosis
-  EXPECT_EQ(h.diag()[0], 0x10);               // Not_Supported
+  EXPECT_EQ(h.diag()[0], 0x10);              // Not_Supported
 }
 
 TEST(SlaveGlobalControl, GroupSelectAndOwnerAreChecked) {

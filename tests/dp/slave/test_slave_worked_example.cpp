@@ -1,5 +1,5 @@
-// spec/profibus-dp.md §2.10 worked example (master 2, slave 5, ident 0x1234), byte for
-// byte: every request and every expected reply below is copied from the spec.
+// [docs/references.md#dp-worked-example] worked example (master 2, slave 5, ident 0x1234), byte for
+// byte: every request and every expected reply below is copied from there.
 #include "tests/dp/slave/slave_harness.h"
 
 #include <chrono>
@@ -72,17 +72,16 @@ TEST(SlaveWorkedExample, FullStartUpAndCycle) {
 
   const Bytes diag2{0x68, 0x05, 0x05, 0x68, 0x85, 0x82, 0x5D, 0x3C, 0x3E, 0xDE, 0x16};
   const Bytes diag2_reply{0x68, 0x0B, 0x0B, 0x68, 0x82, 0x85, 0x08, 0x3E, 0x3C,
-                          0x00,        // Station_Status_1: ready
-                          0x0C,        // Station_Status_2: WD_On + bit 2
+                          0x00,  // Station_Status_1: ready
+                          0x0C,  // Station_Status_2: WD_On + bit 2
                           0x00,
-                          0x02,        // Master_Add 2
+                          0x02,  // Master_Add 2
                           0x12, 0x34, 0xDD, 0x16};
   EXPECT_EQ(h.send(diag2), diag2_reply);
 
-  const Bytes dx{0x68, 0x04, 0x04, 0x68,
-                 0x05, 0x02,  // DA 5, SA 2, no extension = default SAP
-                 0x7D,        // FC SRD_HI FCV=1 FCB=1
-                 0xA5,        // output byte
+  const Bytes dx{0x68, 0x04, 0x04, 0x68, 0x05, 0x02,  // DA 5, SA 2, no extension = default SAP
+                 0x7D,                                // FC SRD_HI FCV=1 FCB=1
+                 0xA5,                                // output byte
                  0x29, 0x16};
   h.app.inputs = {0x3C};
   EXPECT_EQ(h.send(dx), (Bytes{0x68, 0x04, 0x04, 0x68, 0x02, 0x05,
@@ -92,12 +91,14 @@ TEST(SlaveWorkedExample, FullStartUpAndCycle) {
   ASSERT_EQ(h.app.outputs.size(), 1U);
   EXPECT_EQ(h.app.outputs[0], Bytes{0xA5});
 
-  // New device diagnosis pending → the same DX is answered DH (§2.9).
-  ASSERT_FALSE(h.app.control->set_device_diagnosis(Bytes{0x05, 0x81, 0x00, 0x00, 0x00}, false, false));
+  // New device diagnosis pending → the same DX is answered DH ([IEC 61158-6-3 Data_Exchange]).
+  ASSERT_FALSE(
+      h.app.control->set_device_diagnosis(Bytes{0x05, 0x81, 0x00, 0x00, 0x00}, false, false));
   const Bytes dx2{0x68, 0x04, 0x04, 0x68, 0x05, 0x02, 0x5D, 0xA5, 0x09, 0x16};  // FCB toggled
   EXPECT_EQ(h.send(dx2), (Bytes{0x68, 0x04, 0x04, 0x68, 0x02, 0x05, 0x0A, 0x3C, 0x4D, 0x16}));
 
-  // Global_Control Clear to all (DA 127, SDN): never answered, outputs cleared (§2.6).
+  // Global_Control Clear to all (DA 127, SDN): never answered, outputs cleared
+  // ([IEC 61158-6-3 Global_Control]).
   const Bytes gc_clear{0x68, 0x07, 0x07, 0x68,
                        0xFF,  // DA 127 + extension
                        0x82,  // SA 2 + extension
@@ -115,7 +116,7 @@ TEST(SlaveWorkedExample, FullStartUpAndCycle) {
 TEST(SlaveWorkedExample, DataExchangeOutsideDataExchIsRs) {
   SlaveHarness h;
   const Bytes dx{0x68, 0x04, 0x04, 0x68, 0x05, 0x02, 0x7D, 0xA5, 0x29, 0x16};
-  // §2.10 "RS (not in DX)": SD1, DA 2, SA 5, FC 03.
+  // [docs/references.md#dp-worked-example] "RS (not in DX)": SD1, DA 2, SA 5, FC 03.
   EXPECT_EQ(h.send(dx), (Bytes{0x10, 0x02, 0x05, 0x03, 0x0A, 0x16}));
   EXPECT_TRUE(h.app.outputs.empty());
   EXPECT_EQ(h.slave.counters().rs_replies, 1U);
@@ -134,7 +135,8 @@ TEST(SlaveWorkedExample, TransitionsAreReportedByStateName) {
 }
 
 TEST(SlaveWorkedExample, Et200sTraceSetPrmShape) {
-  // [TRACE #26] (§2.10): DPV0 Set_Prm `B8 1E 01 00 80 6A 01`, diag after it `02 0C 00 02`.
+  // [pyprofibus issue #26 trace] ([docs/references.md#dp-worked-example]): DPV0 Set_Prm `B8 1E 01
+  // 00 80 6A 01`, diag after it `02 0C 00 02`.
   Config cfg = example_config();
   cfg.dpv1 = false;
   cfg.ident_number = 0x806A;

@@ -1,4 +1,5 @@
-// Baud rates (§1.1) and bit-time arithmetic (§1.1/§1.7).
+// Baud rates ([IEC 61158-4-3 UART character] [IEC 61158-2 baud rates]) and bit-time arithmetic
+// ([IEC 61158-4-3 UART character, bus parameters, timing] [IEC 61158-2 baud rates]).
 #include "dp/time/baud_rate.h"
 
 #include <gtest/gtest.h>
@@ -40,14 +41,15 @@ TEST(BaudRate, NamesAndList) {
 }
 
 TEST(BaudRate, BitTimesFromTheSpec) {
-  // §1.1: 1 Tbit = 83.3 ns at 12M, 667 ns at 1.5M, 104.2 µs at 9.6k (rounded up to ns).
+  // [IEC 61158-4-3 UART character] [IEC 61158-2 baud rates]: 1 Tbit = 83.3 ns at 12M, 667 ns
+  // at 1.5M, 104.2 µs at 9.6k (rounded up to ns).
   EXPECT_EQ(bit_time(BaudRate::k12M, 1), 84ns);
   EXPECT_EQ(bit_time(BaudRate::k1M5, 1), 667ns);
   EXPECT_EQ(bit_time(BaudRate::k9k6, 1), 104'167ns);
   // TSYN (33 bit) at 12M is 2.75 µs exactly; one 11-bit character at 9.6k 1.1458 ms.
   EXPECT_EQ(bit_time(BaudRate::k12M, kTsynBits), 2750ns);
   EXPECT_EQ(bit_time(BaudRate::k9k6, telegram_bits(1)), 1'145'834ns);
-  EXPECT_EQ(telegram_bits(6), 66U);  // SD1 frame, §1.2
+  EXPECT_EQ(telegram_bits(6), 66U);  // SD1 frame, [IEC 61158-4-3 frame formats]
 }
 
 }  // namespace

@@ -1,8 +1,7 @@
-// Acyclic services of the adapter (spec/rs4-profisafe.md §5; manual §5.2): slot/index,
+// Acyclic services of the adapter ([RS4 manual §5.2]): slot/index,
 // block protocol, flow-control byte, adapter commands, RS4 commands, adapter errors.
-// Expected bytes are written from the spec tables, one field per line.
+// Expected bytes are written from the manual's tables, one field per line.
 #include "adapter_rig.h"
-
 #include "rs4/adapter/rs4_commands.h"
 
 namespace rs4sim::rs4::adapter::testing {
@@ -21,35 +20,41 @@ struct Acyclic : ::testing::Test {
 TEST_F(Acyclic, OnlySlot0Index2Or3) {
   auto r = rig.read(240, AcyclicChannel::kC1, 1, 3);
   ASSERT_EQ(r.kind, dp::slave::AcyclicResult::Kind::kError);
-  EXPECT_EQ(r.error, (dp::slave::AcyclicError{0x80, dp::pdu::ErrorCode1{0xB2}, 0x00}));  // invalid slot
+  EXPECT_EQ(r.error,
+            (dp::slave::AcyclicError{0x80, dp::pdu::ErrorCode1{0xB2}, 0x00}));  // invalid slot
   r = rig.read(240, AcyclicChannel::kC1, 0, 4);
-  EXPECT_EQ(r.error, (dp::slave::AcyclicError{0x80, dp::pdu::ErrorCode1{0xB0}, 0x00}));  // invalid index
-  EXPECT_EQ(rig.write(Rig::block({0x90}), 1).error, (dp::slave::AcyclicError{0x80, dp::pdu::ErrorCode1{0xB0}, 0x00}));
-  EXPECT_EQ(rig.write({0x00, 0x04, 0xFF, 0xFF}).error, (dp::slave::AcyclicError{0x80, dp::pdu::ErrorCode1{0xB1}, 0x00}));
-  EXPECT_EQ(rig.write(Rig::block({0x90}), 3).kind, dp::slave::AcyclicResult::Kind::kData);  // index 3 too
+  EXPECT_EQ(r.error,
+            (dp::slave::AcyclicError{0x80, dp::pdu::ErrorCode1{0xB0}, 0x00}));  // invalid index
+  EXPECT_EQ(rig.write(Rig::block({0x90}), 1).error,
+            (dp::slave::AcyclicError{0x80, dp::pdu::ErrorCode1{0xB0}, 0x00}));
+  EXPECT_EQ(rig.write({0x00, 0x04, 0xFF, 0xFF}).error,
+            (dp::slave::AcyclicError{0x80, dp::pdu::ErrorCode1{0xB1}, 0x00}));
+  EXPECT_EQ(rig.write(Rig::block({0x90}), 3).kind,
+            dp::slave::AcyclicResult::Kind::kData);  // index 3 too
 }
 
 TEST_F(Acyclic, EmptyReadIsTheHeaderAlone) {
-  EXPECT_EQ(data_of(rig.read()), (Bytes{
-      0x41,        // flow: bit0 ready, bit1 no payload, bits 6..4 = 100 normal
-      0x04,        // block length incl. header
-      0xFF, 0xFF,  // last block
-  }));
+  EXPECT_EQ(data_of(rig.read()),
+            (Bytes{
+                0x41,        // flow: bit0 ready, bit1 no payload, bits 6..4 = 100 normal
+                0x04,        // block length incl. header
+                0xFF, 0xFF,  // last block
+            }));
 }
 
 TEST_F(Acyclic, GetVersion0x90) {
   ASSERT_EQ(rig.write({0x00, 0x05, 0xFF, 0xFF, 0x90}).kind, dp::slave::AcyclicResult::Kind::kData);
   EXPECT_EQ(data_of(rig.read()), (Bytes{
-      0x43,        // flow: ready, payload, normal
-      0x0E,        // 14 bytes
-      0xFF, 0xFF,  // last block
-      0x90,        // PROFI_CMD_GET_VERSION
-      0x01, 0x00,  // PROFIsafe version 1.0
-      0x01, 0x00,  // PROFIBUS DP version 1.0
-      0x11,        // DPV1SL components high: C2 + DPC31
-      0x0D,        // DPV1SL components low: C2, SUB_AL, SUB_CH1
-      0x00, 0x00, 0x00,  // main interface, function, bugfix
-  }));
+                                     0x43,        // flow: ready, payload, normal
+                                     0x0E,        // 14 bytes
+                                     0xFF, 0xFF,  // last block
+                                     0x90,        // PROFI_CMD_GET_VERSION
+                                     0x01, 0x00,  // PROFIsafe version 1.0
+                                     0x01, 0x00,  // PROFIBUS DP version 1.0
+                                     0x11,        // DPV1SL components high: C2 + DPC31
+                                     0x0D,        // DPV1SL components low: C2, SUB_AL, SUB_CH1
+                                     0x00, 0x00, 0x00,  // main interface, function, bugfix
+                                 }));
 }
 
 TEST_F(Acyclic, LastError0x84AndErrorMemory0x91) {
@@ -62,29 +67,29 @@ TEST_F(Acyclic, LastError0x84AndErrorMemory0x91) {
   rig.run(40ms);
   rig.write(Rig::block({0x84}));
   EXPECT_EQ(rig.read_answer(), (Bytes{
-      0x84,        // PROFI_CMD_ERROR
-      0x26, 0x00,  // μC2 error 0x2600
-      0x00, 0x02,  // μC2 count 2
-      0x26, 0x00,  // μC1 error 0x2600
-      0x00, 0x02,  // μC1 count 2 (DECISION: high byte first)
-  }));
+                                   0x84,        // PROFI_CMD_ERROR
+                                   0x26, 0x00,  // μC2 error 0x2600
+                                   0x00, 0x02,  // μC2 count 2
+                                   0x26, 0x00,  // μC1 error 0x2600
+                                   0x00, 0x02,  // μC1 count 2 (DECISION: high byte first)
+                               }));
   rig.write(Rig::block({0x91}));
   const auto mem = rig.read_answer(40);  // 85 bytes in blocks of 36 payload bytes
   ASSERT_EQ(mem.size(), 85u);
   EXPECT_EQ(mem[0], 0x91);
-  EXPECT_EQ(mem[1], 1);                   // μC2 write index: 2nd entry
-  EXPECT_EQ(mem[3], 0x26);                // μC2 entry 0 hi
-  EXPECT_EQ(mem[4], 0x00);                // μC2 entry 0 lo
-  EXPECT_EQ(mem[5], 0x26);                // μC2 entry 1
-  EXPECT_EQ(mem[7], 0x00);                // μC2 entry 2 empty
-  EXPECT_EQ(mem[43], 1);                  // μC1 write index
-  EXPECT_EQ(mem[45], 0x26);               // μC1 entry 0 hi
+  EXPECT_EQ(mem[1], 1);      // μC2 write index: 2nd entry
+  EXPECT_EQ(mem[3], 0x26);   // μC2 entry 0 hi
+  EXPECT_EQ(mem[4], 0x00);   // μC2 entry 0 lo
+  EXPECT_EQ(mem[5], 0x26);   // μC2 entry 1
+  EXPECT_EQ(mem[7], 0x00);   // μC2 entry 2 empty
+  EXPECT_EQ(mem[43], 1);     // μC1 write index
+  EXPECT_EQ(mem[45], 0x26);  // μC1 entry 0 hi
 }
 
 TEST_F(Acyclic, ErrorMemorySurvivesResetButNotPowerOff) {
   rig.out_byte = 0x00;
   rig.run(40ms);
-  rig.write(Rig::block({0x94}));          // PROFI_CMD_RESET
+  rig.write(Rig::block({0x94}));  // PROFI_CMD_RESET
   ASSERT_TRUE(rig.adapter.wants_link_down_until());
   EXPECT_EQ(*rig.adapter.wants_link_down_until(), rig.now + 2s);
   EXPECT_EQ(rig.adapter.led(), LedState::kSteadyInit);
@@ -98,55 +103,59 @@ TEST_F(Acyclic, ErrorMemorySurvivesResetButNotPowerOff) {
 }
 
 TEST_F(Acyclic, BadAdapterCommandsGet0x93) {
-  rig.write(Rig::block({0x90, 0x00}));    // 0x90 takes no parameter
+  rig.write(Rig::block({0x90, 0x00}));  // 0x90 takes no parameter
   EXPECT_EQ(rig.read_answer(), (Bytes{
-      0x93,  // error in telegram
-      0x00,  // wrong length
-      0x90,  // the faulty command
-  }));
+                                   0x93,  // error in telegram
+                                   0x00,  // wrong length
+                                   0x90,  // the faulty command
+                               }));
   rig.write(Rig::block({0x92, 0x01, 0x02}));  // mode 2 invalid
   EXPECT_EQ(rig.read_answer(), (Bytes{0x93, 0x01 /* wrong parameter */, 0x92}));
 }
 
 TEST_F(Acyclic, Rs4CommandsAreAnsweredByTheRs4) {
   rig.run(31s);
-  rig.write(Rig::block({0x24, 0x01}));    // request one scan (§11)
+  rig.write(Rig::block({0x24, 0x01}));  // request one scan ([roboticslibrary/rl LeuzeRs4.cpp])
   const auto scan = rig.read_answer();
   ASSERT_FALSE(scan.empty());
-  EXPECT_EQ(scan[0], 0x23);               // COM_CMD_MESS_16_RT
+  EXPECT_EQ(scan[0], 0x23);  // COM_CMD_MESS_16_RT
   // options (1..3 bytes) + 8 scan number + 1 resolution + 2 start + 2 stop + 529 × 2
   const std::size_t options = scan[1] & 0x03;
   EXPECT_EQ(scan.size(), 1 + options + 8 + 1 + 2 + 2 + 529 * 2);
-  rig.write(Rig::block({0x55, 0x01}));    // unknown to the RS4
+  rig.write(Rig::block({0x55, 0x01}));  // unknown to the RS4
   const auto err = rig.read_answer();
   ASSERT_GE(err.size(), 8u);
-  EXPECT_EQ(err[0], 0x53);                // COM_CMD_ERROR_OCCURE
-  EXPECT_EQ(Bytes(err.end() - 6, err.end()), (Bytes{
-      0x05, 0x01,  // error number: unknown command (EXTENSION)
-      0x00, 0x55,  // parameter: the command byte
-      0x00, 0x05,  // function: command interpreter
-  }));
+  EXPECT_EQ(err[0], 0x53);  // COM_CMD_ERROR_OCCURE
+  EXPECT_EQ(Bytes(err.end() - 6, err.end()),
+            (Bytes{
+                0x05, 0x01,  // error number: unknown command (EXTENSION)
+                0x00, 0x55,  // parameter: the command byte
+                0x00, 0x05,  // function: command interpreter
+            }));
 }
 
 TEST_F(Acyclic, AliveTelegramCarriesTheOptionBytes) {
   rig.run(31s);
   rig.write(Rig::block({0x14, 0x01}));
-  EXPECT_EQ(rig.read_answer(), (Bytes{
-      0x14,  // COM_CMD_ALIVE
-      0x0B,  // option 1: 3 option bytes, state 010 measuring
-      0x90,  // option 2: bit 4 restart interlock (start interlock), bit 7 option 3 follows
-      0x81,  // option 3: field pair 1, bit 7
-  }));
+  EXPECT_EQ(
+      rig.read_answer(),
+      (Bytes{
+          0x14,  // COM_CMD_ALIVE
+          0x0B,  // option 1: 3 option bytes, state 010 measuring
+          0x90,  // option 2: bit 4 restart interlock (start interlock), bit 7 option 3 follows
+          0x81,  // option 3: field pair 1, bit 7
+      }));
   rig.restart_pulse();
   rig.write(Rig::block({0x14, 0x01}));
-  EXPECT_EQ(rig.read_answer(), (Bytes{0x14, 0x0B, 0x80, 0x81}));  // as in spec §11
+  // as in [roboticslibrary/rl LeuzeRs4.cpp]
+  EXPECT_EQ(rig.read_answer(), (Bytes{0x14, 0x0B, 0x80, 0x81}));
 }
 
 TEST_F(Acyclic, Class2MayNotUseAdapterCommands) {
   rig.write(Rig::block({0x90}), 2, AcyclicChannel::kC2, true);
   const auto a = rig.read_answer(240, AcyclicChannel::kC2);
   ASSERT_GE(a.size(), 8u);
-  EXPECT_EQ(a[0], 0x53);                  // the RS4 does not know 0x90
+  EXPECT_EQ(a[0], 0x53);  // the RS4 does not know 0x90
   EXPECT_EQ(Bytes(a.end() - 6, a.end()), (Bytes{0x05, 0x01, 0x00, 0x90, 0x00, 0x05}));
 }
 
@@ -159,20 +168,20 @@ TEST_F(Acyclic, CommandOf1100BytesGives2A06) {
   Bytes blk(240, 0x55);
   blk[0] = 0x00;
   blk[1] = 240;
-  for (std::uint16_t n = 0; n < 4; ++n) {      // 4 × 236 = 944 bytes
+  for (std::uint16_t n = 0; n < 4; ++n) {  // 4 × 236 = 944 bytes
     blk[2] = 0;
     blk[3] = static_cast<std::uint8_t>(n);
     rig.write(blk);
   }
   EXPECT_EQ(rig.adapter.error_memory().last_error().uc2_error, 0);
-  blk[2] = blk[3] = 0xFF;                      // last: 944 + 236 = 1180 ≥ 1100
+  blk[2] = blk[3] = 0xFF;  // last: 944 + 236 = 1180 ≥ 1100
   rig.write(blk);
   EXPECT_EQ(rig.adapter.error_memory().last_error().uc2_error, 0x2A06);
 }
 
 TEST_F(Acyclic, MultiBlockCommandIsReassembled) {
-  rig.write({0x00, 0x05, 0x00, 0x00, 0x24});   // block 0: CMD
-  rig.write({0x00, 0x05, 0xFF, 0xFF, 0x01});   // last block: option 1
+  rig.write({0x00, 0x05, 0x00, 0x00, 0x24});  // block 0: CMD
+  rig.write({0x00, 0x05, 0xFF, 0xFF, 0x01});  // last block: option 1
   const auto a = rig.read_answer();
   ASSERT_FALSE(a.empty());
   EXPECT_EQ(a[0], 0x53);  // RS4 still booting: "no scan" error telegram
@@ -218,7 +227,7 @@ TEST_F(Acyclic, WritesIgnoredWhilePcAdapterAttached) {
   EXPECT_EQ(rig.write(Rig::block({0x90})).kind, dp::slave::AcyclicResult::Kind::kData);
   EXPECT_EQ(rig.adapter.counters().writes_ignored, 1u);
   EXPECT_EQ(data_of(rig.read()), (Bytes{0x20, 0x04, 0xFF, 0xFF}));  // flow 010, nothing
-  EXPECT_EQ(rig.adapter.error_memory().last_error().uc2_error, 0);   // without error
+  EXPECT_EQ(rig.adapter.error_memory().last_error().uc2_error, 0);  // without error
 }
 
 TEST_F(Acyclic, GetRs4DataOneShotAndPermanent) {
@@ -248,12 +257,12 @@ TEST_F(Acyclic, ErrorTelegramsGoToTheSecondBuffer) {
   ASSERT_TRUE(rig.adapter.scanner().inject_fault(scanner::Fault::kMotorSpeed, rig.now));
   rig.run(100ms);
   EXPECT_EQ(rig.adapter.buffered_events(), 1u);
-  auto t = rig.read_answer();                  // the error first
+  auto t = rig.read_answer();  // the error first
   ASSERT_GE(t.size(), 8u);
   EXPECT_EQ(t[0], 0x53);
-  EXPECT_EQ(t[t.size() - 6], 0x02);            // RS4 fault 0x0201 motor speed
+  EXPECT_EQ(t[t.size() - 6], 0x02);  // RS4 fault 0x0201 motor speed
   EXPECT_EQ(t[t.size() - 5], 0x01);
-  t = rig.read_answer();                       // then the measurement
+  t = rig.read_answer();  // then the measurement
   ASSERT_FALSE(t.empty());
   EXPECT_EQ(t[0], 0x23);
 }

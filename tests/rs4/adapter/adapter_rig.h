@@ -5,8 +5,8 @@
 
 #include "profisafe/f_host.h"
 #include "rs4/adapter/adapter.h"
-#include "rs4/adapter/rs4_gsd.h"
 #include "rs4/adapter/cyclic_bytes.h"
+#include "rs4/adapter/rs4_gsd.h"
 #include "rs4/protocol/block.h"
 
 #include <gtest/gtest.h>
@@ -27,7 +27,8 @@ struct RecordedAlarm {
 
 class FakeControl final : public dp::slave::SlaveControl {
  public:
-  std::error_code complete_acyclic(dp::slave::AcyclicChannel, const dp::slave::AcyclicResult&) override {
+  std::error_code complete_acyclic(dp::slave::AcyclicChannel,
+                                   const dp::slave::AcyclicResult&) override {
     return {};
   }
   std::error_code submit_alarm(const dp::slave::AlarmRequest& a) override {
@@ -125,8 +126,8 @@ struct Rig {
 
   // ---- acyclic ----
   dp::slave::AcyclicResult write(std::vector<std::uint8_t> record, std::uint8_t index = 2,
-                          dp::slave::AcyclicChannel ch = dp::slave::AcyclicChannel::kC1,
-                          bool first_c2 = false) {
+                                 dp::slave::AcyclicChannel ch = dp::slave::AcyclicChannel::kC1,
+                                 bool first_c2 = false) {
     dp::slave::AcyclicRequest r;
     r.channel = ch;
     r.service = dp::slave::AcyclicService::kWrite;
@@ -136,8 +137,9 @@ struct Rig {
     r.first_write_after_initiate = first_c2;
     return adapter.on_acyclic(r, now);
   }
-  dp::slave::AcyclicResult read(std::uint8_t length = 240, dp::slave::AcyclicChannel ch = dp::slave::AcyclicChannel::kC1,
-                         std::uint8_t slot = 0, std::uint8_t index = 3) {
+  dp::slave::AcyclicResult read(std::uint8_t length = 240,
+                                dp::slave::AcyclicChannel ch = dp::slave::AcyclicChannel::kC1,
+                                std::uint8_t slot = 0, std::uint8_t index = 3) {
     dp::slave::AcyclicRequest r;
     r.channel = ch;
     r.service = dp::slave::AcyclicService::kRead;
@@ -158,8 +160,8 @@ struct Rig {
     return r;
   }
   // Reads all blocks of one answer; returns the payload, checks numbering.
-  std::vector<std::uint8_t> read_answer(std::uint8_t length = 240,
-                                        dp::slave::AcyclicChannel ch = dp::slave::AcyclicChannel::kC1) {
+  std::vector<std::uint8_t> read_answer(
+      std::uint8_t length = 240, dp::slave::AcyclicChannel ch = dp::slave::AcyclicChannel::kC1) {
     std::vector<std::uint8_t> payload;
     for (unsigned n = 0; n < 100; ++n) {
       const auto r = read(length, ch);

@@ -1,6 +1,7 @@
-// Cyclic process bytes and address switches (spec/rs4-profisafe.md §2, §3; manual §4.5,
-// §5.1.1, §5.1.2). Known answers written from the spec tables.
+// Cyclic process bytes and address switches ([RS4 manual §4.5, §5.1],
+// [RS4 manual §5.1.1, §5.1.2]). Known answers written from the manual's tables.
 #include "rs4/adapter/cyclic_bytes.h"
+
 #include "rs4/adapter/rs4_gsd.h"
 
 #include <gtest/gtest.h>
@@ -9,11 +10,11 @@ namespace rs4sim::rs4::adapter {
 namespace {
 
 TEST(InputByte, EachBitFromTheSpecTable) {
-  // §3.1: bit 7 OSSD, 6 warning output inverted, 5 error, 4 operating state,
+  // [RS4 manual §5.1.1]: bit 7 OSSD, 6 warning output inverted, 5 error, 4 operating state,
   //       3 RS232 active, 2 Proxy-Request, 1 protective field, 0 warning field.
-  InputBits b;                                   // warning output not active → bit 6 = 1
+  InputBits b;  // warning output not active → bit 6 = 1
   EXPECT_EQ(encode_input_byte(b), 0x40);
-  b.warning_output_active = true;                // inverted: active → 0
+  b.warning_output_active = true;  // inverted: active → 0
   EXPECT_EQ(encode_input_byte(b), 0x00);
   b.ossd = true;
   EXPECT_EQ(encode_input_byte(b), 0x80);
@@ -46,7 +47,8 @@ TEST(InputByte, DecodeFixedBytes) {
   EXPECT_TRUE(b.ossd);
   EXPECT_FALSE(b.warning_output_active);
   EXPECT_TRUE(b.proxy_request);
-  EXPECT_FALSE(b.error || b.not_operational || b.rs232_active || b.protective_field || b.warning_field);
+  EXPECT_FALSE(b.error || b.not_operational || b.rs232_active || b.protective_field ||
+               b.warning_field);
   for (unsigned v = 0; v < 256; ++v) {
     EXPECT_EQ(encode_input_byte(decode_input_byte(static_cast<std::uint8_t>(v))), v);
   }
@@ -94,7 +96,8 @@ TEST(AddressSwitches, Reserved127And255AndBadNibbles) {
   EXPECT_EQ(station_address({0xF, 0xF}).error(), AddressError::kReservedAddress);  // 255
   EXPECT_EQ(station_address({0x10, 0x0}).error(), AddressError::kNibbleOutOfRange);
   EXPECT_EQ(station_address({0x0, 0x10}).error(), AddressError::kNibbleOutOfRange);
-  EXPECT_NE(make_error_code(AddressError::kReservedAddress).message().find("127"), std::string::npos);
+  EXPECT_NE(make_error_code(AddressError::kReservedAddress).message().find("127"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -1,7 +1,6 @@
-// Cyclic bytes through the adapter with real FHost PDUs (spec/rs4-profisafe.md §3, §3.2;
-// manual §5.1): field pair errors and the 500 ms release, restart timing, field bits.
+// Cyclic bytes through the adapter with real FHost PDUs ([RS4 manual §5.1, §5.1.2];
+// [RS4 manual §5.1]): field pair errors and the 500 ms release, restart timing, field bits.
 #include "adapter_rig.h"
-
 #include "rs4/protocol/adapter_error.h"
 
 namespace rs4sim::rs4::adapter::testing {
@@ -27,12 +26,12 @@ TEST_F(Running, InvalidFieldPairGives2600AndOssd0ThenReleaseAfter500ms) {
   EXPECT_EQ(last.uc1_error, 0x2600);
   EXPECT_EQ(last.uc2_count, 1);
   EXPECT_EQ(rig.adapter.scanner().status().first_pair, 1);  // not forwarded to the RS4
-  rig.out_byte = 0x02;  // field pair 2 valid again
+  rig.out_byte = 0x02;                                      // field pair 2 valid again
   rig.run(400ms);
   EXPECT_FALSE(rig.ossd());  // < 500 ms
   EXPECT_FALSE(rig.host_input() & kInputError);
   rig.run(200ms);
-  EXPECT_TRUE(rig.ossd());   // ≥ 500 ms after the valid number
+  EXPECT_TRUE(rig.ossd());  // ≥ 500 ms after the valid number
   EXPECT_EQ(rig.adapter.scanner().status().first_pair, 2);
 }
 
@@ -69,12 +68,12 @@ TEST_F(Running, ProtectiveFieldViolationAndRestartPulseTiming) {
   ASSERT_TRUE(rig.adapter.scanner().edit_scene(rig.now).remove(id.value()));
   rig.run(200ms);
   EXPECT_FALSE(rig.host_input() & kInputProtectiveField);
-  EXPECT_FALSE(rig.ossd());          // restart interlock
-  rig.restart_pulse(100ms);          // < 0.12 s: ignored
+  EXPECT_FALSE(rig.ossd());  // restart interlock
+  rig.restart_pulse(100ms);  // < 0.12 s: ignored
   EXPECT_FALSE(rig.ossd());
-  rig.restart_pulse(5200ms);         // > 5 s: ignored
+  rig.restart_pulse(5200ms);  // > 5 s: ignored
   EXPECT_FALSE(rig.ossd());
-  rig.restart_pulse(120ms);          // 0.12 s: accepted
+  rig.restart_pulse(120ms);  // 0.12 s: accepted
   EXPECT_TRUE(rig.ossd());
 }
 
@@ -109,7 +108,7 @@ TEST_F(Running, ContaminationWarningClearsInvertedBit6) {
   EXPECT_TRUE(rig.host_input() & kInputWarningOutputN);  // not set → 1
   rig.adapter.scanner().set_contamination(60, rig.now);
   rig.run(200ms);
-  EXPECT_FALSE(rig.host_input() & kInputWarningOutputN);  // set → 0 (§3.1 inverted)
+  EXPECT_FALSE(rig.host_input() & kInputWarningOutputN);  // set → 0 ([RS4 manual §5.1.1] inverted)
   EXPECT_TRUE(rig.ossd());
 }
 

@@ -1,4 +1,4 @@
-// Error memory of the adapter (spec/rs4-profisafe.md §5.3 tables 5.2-7/5.2-8): ring of 20,
+// Error memory of the adapter ([RS4 manual §5.2.2] tables 5.2-7/5.2-8): ring of 20,
 // write index of the newest entry, age flag, counts since power-on.
 #include "rs4/adapter/error_memory.h"
 

@@ -1,7 +1,6 @@
 // The adapter accepts exactly what the project's GSD configuration produces (docs/gsd.md):
 // ident, Chk_Cfg and the User_Prm_Data after the DPV1 bytes.
 #include "adapter_rig.h"
-
 #include "gsd/config.h"
 #include "gsd/device_gsd.h"
 
@@ -22,8 +21,10 @@ gsd::SlaveSetup configure(std::int64_t dest) {
 dp::pdu::SetPrm from_gsd(const gsd::SlaveSetup& c) {
   dp::pdu::SetPrm prm;
   prm.ident_number = c.ident_number;
-  prm.dpv1 = dp::pdu::Dpv1Status::from_bytes(c.user_prm_data[0], c.user_prm_data[1], c.user_prm_data[2]);
-  for (std::size_t i = 3; i < c.user_prm_data.size(); ++i) prm.user_data.push_back(c.user_prm_data[i]);
+  prm.dpv1 =
+      dp::pdu::Dpv1Status::from_bytes(c.user_prm_data[0], c.user_prm_data[1], c.user_prm_data[2]);
+  for (std::size_t i = 3; i < c.user_prm_data.size(); ++i)
+    prm.user_data.push_back(c.user_prm_data[i]);
   return prm;
 }
 
@@ -38,7 +39,7 @@ TEST(GsdMatch, IdentCfgAndUserPrmOfTheShippedGsdAreAccepted) {
   rig.advance(3s);
   EXPECT_EQ(rig.adapter.check_parameters(from_gsd(c), rig.now), dp::slave::PrmVerdict::kAccept);
   EXPECT_EQ(rig.adapter.check_config(c.cfg, false, rig.now), dp::slave::CfgVerdict::kAccept);
-  // status PDU "no error" (§8: 05 81 00 00 00), Ext_Diag off
+  // status PDU "no error" ([RS4 manual §6.2, §6.3]: 05 81 00 00 00), Ext_Diag off
   EXPECT_EQ(rig.control.diagnosis, (std::vector<std::uint8_t>{0x05, 0x81, 0x00, 0x00, 0x00}));
   EXPECT_FALSE(rig.control.ext_diag);
 }
@@ -49,7 +50,7 @@ TEST(GsdMatch, GsdBlockForAnotherAddressIsRefusedWith66) {
   rig.adapter.power_on(rig.now);
   rig.advance(3s);
   EXPECT_EQ(rig.adapter.check_parameters(from_gsd(c), rig.now), dp::slave::PrmVerdict::kPrmFault);
-  // §8: 05 81 00 00 42 = wrong F_Dest_Add (66)
+  // [RS4 manual §6.2, §6.3]: 05 81 00 00 42 = wrong F_Dest_Add (66)
   EXPECT_EQ(rig.control.diagnosis, (std::vector<std::uint8_t>{0x05, 0x81, 0x00, 0x00, 66}));
   EXPECT_TRUE(rig.control.ext_diag);
   EXPECT_EQ(rig.adapter.led(), LedState::kSlowBlink);

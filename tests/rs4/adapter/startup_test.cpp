@@ -1,4 +1,4 @@
-// Start-up and operating scenarios of spec/rs4-profisafe.md §4 (manual §7.1, §7.2) on the
+// Start-up and operating scenarios of [RS4 manual §7.1, §7.2] ([RS4 manual §7.1, §7.2]) on the
 // manual clock: 30 s RS4 boot, Proxy-Enable / Proxy-Request / OSSD release, PC adapter.
 #include "adapter_rig.h"
 
@@ -16,9 +16,9 @@ TEST(Startup, ProxyEnable0_OssdReleasedAtOnceWhenRs4IsUp) {
   rig.run(26s);  // ≈30 s after power-on the RS4 is operational
   EXPECT_EQ(rig.adapter.proxy_phase(), ProxyPhase::kRequested);
   EXPECT_TRUE(rig.host_input() & kInputProxyRequest);
-  EXPECT_TRUE(rig.adapter.released());             // Proxy-Enable 0: no proxy needed
+  EXPECT_TRUE(rig.adapter.released());  // Proxy-Enable 0: no proxy needed
   EXPECT_FALSE(rig.host_input() & kInputOperatingState);
-  EXPECT_FALSE(rig.ossd());                         // start interlock: restart pulse first
+  EXPECT_FALSE(rig.ossd());  // start interlock: restart pulse first
   rig.restart_pulse(200ms);
   EXPECT_TRUE(rig.ossd());
   EXPECT_TRUE(rig.adapter.ossd_bit());
@@ -26,7 +26,7 @@ TEST(Startup, ProxyEnable0_OssdReleasedAtOnceWhenRs4IsUp) {
 
 TEST(Startup, BootTakes30Seconds) {
   Rig rig;
-  rig.start();  // 3 s after power-on
+  rig.start();   // 3 s after power-on
   rig.run(26s);  // 29 s
   EXPECT_NE(rig.adapter.view().rs4, scanner::ScannerState::kMeasuring);
   EXPECT_EQ(rig.adapter.proxy_phase(), ProxyPhase::kWaitRs4);
@@ -45,7 +45,7 @@ TEST(Startup, ProxyEnable1_ReleasedOnlyAfterSuccessfulSync) {
   EXPECT_FALSE(rig.ossd());
   ASSERT_FALSE(rig.adapter.proxy_sync_started(rig.now));
   rig.run(100ms);
-  EXPECT_FALSE(rig.host_input() & kInputProxyRequest);   // reset when the check begins
+  EXPECT_FALSE(rig.host_input() & kInputProxyRequest);  // reset when the check begins
   EXPECT_EQ(rig.adapter.proxy_phase(), ProxyPhase::kSyncRunning);
   EXPECT_FALSE(rig.ossd());
   ASSERT_FALSE(rig.adapter.proxy_sync_succeeded(rig.now));
@@ -123,11 +123,11 @@ TEST(Startup, LedStates) {
   rig.advance(2s);
   EXPECT_EQ(rig.adapter.led(), LedState::kSteadyInit);  // steady 2–3 s
   rig.advance(1s);
-  EXPECT_EQ(rig.adapter.led(), LedState::kFastBlink);   // ready for PROFIBUS
+  EXPECT_EQ(rig.adapter.led(), LedState::kFastBlink);  // ready for PROFIBUS
   rig.start(false);
   EXPECT_EQ(rig.adapter.led(), LedState::kOffConnected);
   rig.adapter.power_off(rig.now);
-  rig.adapter.set_address_switches({0x7, 0xF});          // 127: not usable
+  rig.adapter.set_address_switches({0x7, 0xF});  // 127: not usable
   rig.adapter.power_on(rig.now);
   EXPECT_FALSE(rig.adapter.station_address());
   rig.advance(5s);
@@ -138,7 +138,8 @@ TEST(Startup, SetPrmDuringAdapterInitIsRefusedWithoutStatusPdu) {
   Rig rig;
   rig.adapter.power_on(rig.now);
   rig.advance(1s);
-  EXPECT_EQ(rig.adapter.check_parameters(set_prm_for(rig.params), rig.now), dp::slave::PrmVerdict::kPrmFault);
+  EXPECT_EQ(rig.adapter.check_parameters(set_prm_for(rig.params), rig.now),
+            dp::slave::PrmVerdict::kPrmFault);
   EXPECT_TRUE(rig.control.diagnosis.empty());
 }
 

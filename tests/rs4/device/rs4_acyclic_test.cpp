@@ -1,5 +1,5 @@
-// Measurement telegram fetched with PROFI_CMD_GET_RS4_DATA 0x92 + READ (spec/rs4-profisafe.md
-// §5.3, §6.1) and decoded back to the scene's contour.
+// Measurement telegram fetched with PROFI_CMD_GET_RS4_DATA 0x92 + READ (
+// [RS4 manual §5.2.2, §5.2.3.4]) and decoded back to the scene's contour.
 #include "rs4/protocol/measurement.h"
 #include "rs4/protocol/telegram.h"
 #include "rs4_fixture.h"
@@ -50,7 +50,7 @@ TEST(Rs4Acyclic, UnknownAdapterChannelRecordIsRefusedWithADpv1Error) {
   Rs4Segment s(segment_config());
   s.power_on();
   ASSERT_TRUE(s.run_until([&] { return s.in_data_exchange(); }, 5s));
-  // Slot 0 index 2/3 only (§5): index 7 → negative response.
+  // Slot 0 index 2/3 only ([RS4 manual §5.2]): index 7 → negative response.
   const std::vector<std::uint8_t> rec{0x00, 0x05, 0xFF, 0xFF, 0x84};
   auto id = s.master().write(s.rs4_address(), 0, 7, rec);
   ASSERT_TRUE(id);

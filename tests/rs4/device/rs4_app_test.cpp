@@ -25,10 +25,10 @@ TEST(Rs4Demo, EveryStepHappensAndIsNarrated) {
   std::ostringstream out;
   EXPECT_EQ(run_rs4_demo(out), 0) << out.str();
   const std::string text = out.str();
-  for (const char* line : {"DP start-up done", "F-host in RUN", "RS4 operational", "OSSD bit 0",
-                           "restart interlock", "field pair 1 → 2", "0x2600", "COM_CMD_MESS_16_RT",
-                           "529/529 equal", "diagnosis alarm coming", "diagnosis alarm going", "ACK_REI",
-                           "demo complete"}) {
+  for (const char* line :
+       {"DP start-up done", "F-host in RUN", "RS4 operational", "OSSD bit 0", "restart interlock",
+        "field pair 1 → 2", "0x2600", "COM_CMD_MESS_16_RT", "529/529 equal",
+        "diagnosis alarm coming", "diagnosis alarm going", "ACK_REI", "demo complete"}) {
     EXPECT_NE(text.find(line), std::string::npos) << "missing: " << line << "\n" << text;
   }
   EXPECT_EQ(text.find("FAILED"), std::string::npos) << text;
@@ -53,13 +53,19 @@ TEST(Rs4Run, BadArgumentsAreUsageErrors) {
     std::ostringstream out;
     EXPECT_THROW(run_rs4_device(o, out), UsageError);
   };
-  bad([](Rs4RunOptions& o) { o.device.address = 127; });  // §2: must not be used
+  bad([](Rs4RunOptions& o) { o.device.address = 127; });  // [RS4 manual §4.5]: must not be used
   bad([](Rs4RunOptions& o) { o.device.address = -1; });
   bad([](Rs4RunOptions& o) { o.device.boot_time_ms = -5; });
   bad([](Rs4RunOptions& o) { o.link.link = "can"; });
   bad([](Rs4RunOptions& o) { o.link.link = "serial"; });  // no --port
-  bad([](Rs4RunOptions& o) { o.link.link = "udp"; o.link.listen = "127.0.0.1:5001"; });  // no --peer
-  bad([](Rs4RunOptions& o) { o.link.link = "pty"; o.link.baud = "1234"; });
+  bad([](Rs4RunOptions& o) {
+    o.link.link = "udp";
+    o.link.listen = "127.0.0.1:5001";
+  });  // no --peer
+  bad([](Rs4RunOptions& o) {
+    o.link.link = "pty";
+    o.link.baud = "1234";
+  });
   bad([](Rs4RunOptions& o) { o.link.duration = -1; });
 }
 

@@ -1,13 +1,15 @@
-// Rs4Device alone and on the bus: address switches (§2), power, adapter reset 0x94 (§5.3).
-#include "dp/master/master_error.h"
+// Rs4Device alone and on the bus: address switches ([RS4 manual §4.5]), power, adapter reset 0x94
+// ([RS4 manual §5.2.2]).
 #include "rs4/device/rs4_device.h"
+
+#include "dp/master/master_error.h"
 #include "rs4_fixture.h"
 
 namespace rs4sim::rs4::device::testing {
 namespace {
 
 TEST(Rs4DeviceSwitches, SwitchPositionsForAnAddress) {
-  EXPECT_EQ(switches_for(4), (adapter::AddressSwitches{0x0, 0x4}));    // factory setting
+  EXPECT_EQ(switches_for(4), (adapter::AddressSwitches{0x0, 0x4}));     // factory setting
   EXPECT_EQ(switches_for(0x7E), (adapter::AddressSwitches{0x7, 0xE}));  // 126
   EXPECT_EQ(switches_for(42), (adapter::AddressSwitches{0x2, 0xA}));
 }
@@ -22,7 +24,7 @@ TEST(Rs4DeviceSwitches, FactoryAddressIsFour) {
 
 TEST(Rs4DeviceSwitches, Bit7IsMasked) {
   Rs4DeviceConfig c;
-  c.switches = {0x8, 0xA};  // 0x8A → bit 7 ignored → 0x0A = 10 (§2)
+  c.switches = {0x8, 0xA};  // 0x8A → bit 7 ignored → 0x0A = 10 ([RS4 manual §4.5])
   Rs4Device d(c);
   d.power_on(dp::TimePoint{1h});
   EXPECT_EQ(d.address(), 10);
@@ -32,7 +34,7 @@ TEST(Rs4DeviceSwitches, Bit7IsMasked) {
 TEST(Rs4DeviceSwitches, ReservedAddressesKeepTheStationSilent) {
   for (const auto sw : {adapter::AddressSwitches{0x7, 0xF}, adapter::AddressSwitches{0xF, 0xF}}) {
     Rs4DeviceConfig c;
-    c.switches = sw;  // 127 / 255 must not be used (§2)
+    c.switches = sw;  // 127 / 255 must not be used ([RS4 manual §4.5])
     Rs4Device d(c);
     d.power_on(dp::TimePoint{1h});
     EXPECT_FALSE(d.on_bus(dp::TimePoint{1h}));
@@ -79,19 +81,21 @@ TEST(Rs4DeviceOnBus, PowerOffLosesTheSlaveAndPowerOnBringsItBack) {
 TEST(Rs4DeviceOnBus, AdapterInitTakesTwoToThreeSecondsBeforeDataExchange) {
   Rs4Segment s(segment_config());
   s.power_on();
-  const auto t = time_until(s, [&] { return s.in_data_exchange(); }, 5s);
+  const auto t = time_until(
+      s, [&] { return s.in_data_exchange(); }, 5s);
   ASSERT_TRUE(t.has_value());
-  EXPECT_GE(*t, 2500ms);  // §1: LED steady 2–3 s, Set_Prm refused meanwhile
+  EXPECT_GE(*t, 2500ms);  // [RS4 manual §4.4]: LED steady 2–3 s, Set_Prm refused meanwhile
   EXPECT_LE(*t, 3500ms);
 }
 
-// PROFI_CMD_RESET (§5.3): WRITE 94 → link down ≈2 s, then Wait_Prm and a new start-up.
+// PROFI_CMD_RESET ([RS4 manual §5.2.2]): WRITE 94 → link down ≈2 s, then Wait_Prm and a new
+// start-up.
 TEST(Rs4DeviceOnBus, AdapterResetDropsTheLinkForTwoSeconds) {
   Rs4Segment s(segment_config());
   s.power_on();
   ASSERT_TRUE(s.run_until([&] { return s.in_data_exchange(); }, 5s));
   const std::vector<std::uint8_t> record{
-      0x00,        // +0 flow-control byte: the master writes 0 (§5.2)
+      0x00,        // +0 flow-control byte: the master writes 0 ([RS4 manual §5.2.1])
       0x05,        // +1 block length incl. header
       0xFF, 0xFF,  // +2 block number 0xFFFF = last block
       0x94,        // +4 PROFI_CMD_RESET
@@ -100,11 +104,13 @@ TEST(Rs4DeviceOnBus, AdapterResetDropsTheLinkForTwoSeconds) {
   // The WRITE is accepted (short ack) and the adapter resets at once: the master sees
   // the slave leave data exchange before it can poll the Write response.
   ASSERT_TRUE(w.has_value());
-  EXPECT_EQ(w->error, dp::master::make_error_code(dp::master::MasterError::kAborted)) << w->error.message();
+  EXPECT_EQ(w->error, dp::master::make_error_code(dp::master::MasterError::kAborted))
+      << w->error.message();
   const auto reset_at = s.now();
   EXPECT_TRUE(s.device().link_down());
   ASSERT_TRUE(s.run_until([&] { return !s.in_data_exchange(); }, 1s));
-  const auto back = time_until(s, [&] { return s.in_data_exchange(); }, 10s);
+  const auto back = time_until(
+      s, [&] { return s.in_data_exchange(); }, 10s);
   ASSERT_TRUE(back.has_value());
   EXPECT_GE(s.now() - reset_at, 2000ms);
   EXPECT_EQ(s.device().counters().link_drops, 1U);

@@ -19,7 +19,8 @@ using adapter::kInputProtectiveField;
 using adapter::kInputProxyRequest;
 using adapter::kOutputRestart;
 
-// Boot time of the device (§1: ≈30 s) and adapter init (2–3 s) as configured below.
+// Boot time of the device ([RS4 manual §7.1.1]: ≈30 s) and adapter init (2–3 s) as configured
+// below.
 inline constexpr auto kBoot = 30s;
 
 inline Rs4SegmentConfig segment_config(std::uint8_t address = 4) {
@@ -42,7 +43,8 @@ inline void bring_to_ossd_on(Rs4Segment& s) {
   s.power_on();
   ASSERT_TRUE(s.run_until([&] { return s.in_data_exchange(); }, 5s));
   ASSERT_TRUE(s.run_until([&] { return (s.input_byte() & kInputProxyRequest) != 0; }, kBoot + 1s));
-  s.set_output_byte(kOutputRestart | 0x01);  // restart pulse 0.2 s (§1: 0.12–5 s)
+  s.set_output_byte(kOutputRestart | 0x01);  // restart pulse 0.2 s ([RS4 manual §2.3, §2.4]: 0.12–5
+                                             // s)
   s.run_for(200ms);
   s.set_output_byte(0x01);
   ASSERT_TRUE(s.run_until([&] { return (s.input_byte() & kInputOssd) != 0; }, 500ms));

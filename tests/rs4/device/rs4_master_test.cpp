@@ -1,5 +1,5 @@
 // The master side from the shipped GSD (issue 5): Set_Prm/Chk_Cfg bytes, data exchange,
-// and the PROFIsafe parameter diagnosis 66 / 72 (spec/rs4-profisafe.md §8).
+// and the PROFIsafe parameter diagnosis 66 / 72 ([RS4 manual §6.2, §6.3]).
 #include "profisafe/f_parameters.h"
 #include "rs4_fixture.h"
 
@@ -18,9 +18,9 @@ TEST(Rs4MasterEntry, SetPrmAndCfgFromTheShippedGsd) {
   EXPECT_TRUE(s.prm.station_status.lock_req);
   EXPECT_TRUE(s.prm.station_status.wd_on);
   ASSERT_TRUE(s.prm.dpv1.has_value());
-  EXPECT_TRUE(s.prm.dpv1->dpv1_enable);   // DPV1_Status_1 0x80
+  EXPECT_TRUE(s.prm.dpv1->dpv1_enable);  // DPV1_Status_1 0x80
   const std::vector<std::uint8_t> user(s.prm.user_data.begin(), s.prm.user_data.end());
-  // User_Prm_Data after DPV1_Status_1..3 (docs/gsd.md; profisafe-v1.md §1):
+  // User_Prm_Data after DPV1_Status_1..3 (docs/gsd.md; [IEC 61784-3-3 F-Parameters]):
   const std::vector<std::uint8_t> expected_head{
       0x0E,        // +0 F-block header: length 14
       0x05,        // +1 structure type
@@ -29,12 +29,12 @@ TEST(Rs4MasterEntry, SetPrmAndCfgFromTheShippedGsd) {
       0x14,        // +4 F_Prm_Flag1: SeqNr 0, iPar 0, SIL2 (b2-3 = 01), CRC length 1 (b4-5 = 01)
       0x00,        // +5 F_Prm_Flag2: F_Block_ID 0, F_Par_Version 0 (V1)
       0x00, 0x01,  // +6 F_Source_Add = 1 (GSD default)
-      0x01, 0xF8,  // +8 F_Dest_Add = 504 = 500 + address 4 (§2)
+      0x01, 0xF8,  // +8 F_Dest_Add = 504 = 500 + address 4 ([RS4 manual §4.5])
       0x00, 0x96,  // +10 F_WD_Time = 150 ms
   };
   ASSERT_EQ(user.size(), expected_head.size() + 2);
   EXPECT_EQ(std::vector<std::uint8_t>(user.begin(), user.begin() + 12), expected_head);
-  // +12 F_Par_CRC: CRC1 of those F-parameters (verified algorithm, profisafe-v1.md §2).
+  // +12 F_Par_CRC: CRC1 of those F-parameters (verified algorithm, [IEC 61784-3-3 CRC1]).
   profisafe::FParameters p;
   p.sil = profisafe::Sil::kSil2;
   p.crc_length = profisafe::CrcLength::k2Byte;
@@ -79,11 +79,11 @@ TEST(Rs4MasterOnBus, GsdConfiguredMasterReachesDataExchangeAndFHostRuns) {
   EXPECT_EQ(s.fhost().counters().crc_errors, before.crc_errors);
   EXPECT_EQ(s.fhost().counters().watchdog_timeouts, before.watchdog_timeouts);
   EXPECT_GE(s.fhost().counters().answers - before.answers, 90U);  // 10 ms cycles
-  // During boot the operating-state bit says "not protecting" and OSSD is 0 (§3.1).
+  // During boot the operating-state bit says "not protecting" and OSSD is 0 ([RS4 manual §5.1.1]).
   EXPECT_EQ(s.input_byte() & (kInputOssd | kInputOperatingState), kInputOperatingState);
 }
 
-// Bytes 7..11 of the Slave_Diag: status PDU 05 81 00 00 nn (§8).
+// Bytes 7..11 of the Slave_Diag: status PDU 05 81 00 00 nn ([RS4 manual §6.2, §6.3]).
 void expect_profisafe_diag(Rs4Segment& s, std::uint8_t code) {
   s.power_on();
   ASSERT_TRUE(s.run_until(
@@ -94,12 +94,12 @@ void expect_profisafe_diag(Rs4Segment& s, std::uint8_t code) {
       5s));
   const auto st = s.master().slave_status(s.rs4_address());
   const auto& d = st->last_diag;
-  EXPECT_EQ(d[6], 0x05);  // +6 header: length 5 (device-related)
-  EXPECT_EQ(d[7], 0x81);  // +7 type: status message
-  EXPECT_EQ(d[8], 0x00);  // +8 slot
-  EXPECT_EQ(d[9], 0x00);  // +9 specifier
-  EXPECT_EQ(d[10], code); // +10 PROFIsafe error number
-  EXPECT_NE(d[0] & 0x40, 0);  // +0 Station_Status_1 bit 6 Prm_Fault (§2.5)
+  EXPECT_EQ(d[6], 0x05);      // +6 header: length 5 (device-related)
+  EXPECT_EQ(d[7], 0x81);      // +7 type: status message
+  EXPECT_EQ(d[8], 0x00);      // +8 slot
+  EXPECT_EQ(d[9], 0x00);      // +9 specifier
+  EXPECT_EQ(d[10], code);     // +10 PROFIsafe error number
+  EXPECT_NE(d[0] & 0x40, 0);  // +0 Station_Status_1 bit 6 Prm_Fault ([IEC 61158-6-3 Slave_Diag])
   s.run_for(3s);
   EXPECT_FALSE(s.in_data_exchange());
   EXPECT_TRUE(events_of<dp::master::SlaveEnteredDataExchange>(s).empty());

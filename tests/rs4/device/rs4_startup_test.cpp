@@ -1,4 +1,4 @@
-// Boot → data exchange → OSSD on with a free field (spec/rs4-profisafe.md §1, §3, §4).
+// Boot → data exchange → OSSD on with a free field ([RS4 manual §2.3, §2.4, §5.1, §7.1, §7.2]).
 #include "rs4_fixture.h"
 
 namespace rs4sim::rs4::device::testing {
@@ -9,12 +9,15 @@ TEST(Rs4Startup, BootToOssdOnWithAFreeField) {
   const auto t0 = s.now();
   s.power_on();
   ASSERT_TRUE(s.run_until([&] { return s.in_data_exchange(); }, 5s));
-  // Cyclic exchange runs independently of the RS4: held at OSSD 0, "not operational" (§3).
+  // Cyclic exchange runs independently of the RS4: held at OSSD 0, "not operational"
+  // ([RS4 manual §5.1]).
   s.run_for(20s);
   EXPECT_EQ(s.input_byte() & kInputOssd, 0);
   EXPECT_NE(s.input_byte() & kInputOperatingState, 0);
-  // ≈30 s after power-on the RS4 is operational and the Proxy-Request is set (§4).
-  const auto up = time_until(s, [&] { return (s.input_byte() & kInputProxyRequest) != 0; }, 15s);
+  // ≈30 s after power-on the RS4 is operational and the Proxy-Request is set
+  // ([RS4 manual §7.1, §7.2]).
+  const auto up = time_until(
+      s, [&] { return (s.input_byte() & kInputProxyRequest) != 0; }, 15s);
   ASSERT_TRUE(up.has_value());
   EXPECT_GE(s.now() - t0, kBoot);
   EXPECT_LE(s.now() - t0, kBoot + 500ms);

@@ -1,4 +1,4 @@
-// READ answers of the adapter commands (spec/rs4-profisafe.md §5.3; manual tables 5.2-6,
+// READ answers of the adapter commands ([RS4 manual §5.2.2, tables 5.2-6],
 // 5.2-7, 5.2-8) and the error ring buffer.
 #include "rs4/protocol/adapter_answer.h"
 
@@ -46,7 +46,8 @@ TEST(Rs4AdapterAnswer, LastErrorAnswerAllValuesHighByteFirst) {
       0x2A, 0x0B,  // 6..7: μC2 error number hi, lo
       0x01, 0x02,  // 8..9: μC2 count hi, lo
       0x24, 0x18,  // 10..11: μC1 error number hi, lo
-      0x03, 0x04,  // 12..13: μC1 count hi, lo (DECISION §5.3, the table says lo, hi)
+      0x03, 0x04,  // 12..13: μC1 count hi, lo (DECISION
+                   // [docs/decisions.md#rs4-uc1-count-byte-order], the table says lo, hi)
   };
   EXPECT_EQ(encode_last_error_answer(a), expected);
   auto d = decode_last_error_answer(expected);

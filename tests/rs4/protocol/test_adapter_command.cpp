@@ -1,4 +1,4 @@
-// Adapter commands in a WRITE (spec/rs4-profisafe.md §5.3; manual tables 5.2-3 … 5.2-8).
+// Adapter commands in a WRITE ([RS4 manual §5.2.2, tables 5.2-3 … 5.2-8]).
 #include "rs4/protocol/adapter_command.h"
 
 #include <gtest/gtest.h>
@@ -63,8 +63,8 @@ TEST(Rs4AdapterCommand, GetRs4DataModeAbove1IsWrongParameter) {
   const auto r = rejected({0x92, 0x01, 0x02});  // mode 2: "> 1 nicht zulässig"
   EXPECT_EQ(r.kind, CommandErrorKind::kWrongParameter);
   EXPECT_EQ(r.command, 0x92);
-  EXPECT_EQ(encode_rejection(r), (Bytes{0x93,    // 5: error in telegram
-                                        0x01,    // 6: kind 1 = wrong parameter
+  EXPECT_EQ(encode_rejection(r), (Bytes{0x93,     // 5: error in telegram
+                                        0x01,     // 6: kind 1 = wrong parameter
                                         0x92}));  // 7: the faulty command byte
 }
 
@@ -77,8 +77,8 @@ TEST(Rs4AdapterCommand, GetRs4DataWrongLength) {
   for (const Bytes& p : {Bytes{0x92}, Bytes{0x92, 0x01}, Bytes{0x92, 0x01, 0x00, 0x00}}) {
     const auto r = rejected(p);
     EXPECT_EQ(r.kind, CommandErrorKind::kWrongLength);
-    EXPECT_EQ(encode_rejection(r), (Bytes{0x93,    // 5: error in telegram
-                                          0x00,    // 6: kind 0 = wrong length
+    EXPECT_EQ(encode_rejection(r), (Bytes{0x93,     // 5: error in telegram
+                                          0x00,     // 6: kind 0 = wrong length
                                           0x92}));  // 7: command byte
   }
 }
@@ -93,8 +93,8 @@ TEST(Rs4AdapterCommand, SingleByteCommands) {
 }
 
 TEST(Rs4AdapterCommand, SingleByteCommandsWithExtraBytesAreWrongLength) {
-  for (const std::uint8_t code : {std::uint8_t{0x94}, std::uint8_t{0x90}, std::uint8_t{0x84},
-                                 std::uint8_t{0x91}}) {
+  for (const std::uint8_t code :
+       {std::uint8_t{0x94}, std::uint8_t{0x90}, std::uint8_t{0x84}, std::uint8_t{0x91}}) {
     const auto r = rejected({code, 0x00});
     EXPECT_EQ(r.kind, CommandErrorKind::kWrongLength);
     EXPECT_EQ(r.command, code);

@@ -1,4 +1,4 @@
-// Adapter error codes, table 5.3-3 (spec/rs4-profisafe.md §7.3): one test per code.
+// Adapter error codes, table 5.3-3 ([RS4 manual §5.3.2, table 5.3-3]): one test per code.
 #include "rs4/protocol/adapter_error.h"
 
 #include <gtest/gtest.h>
@@ -66,8 +66,8 @@ TEST(Rs4AdapterError, Code2B2x) {
 }
 
 TEST(Rs4AdapterError, UnknownWireValuesAreRejected) {
-  for (const int value : {0x0000, 0x2417, 0x241A, 0x2601, 0x2A03, 0x2A07, 0x2A0A, 0x2A0C,
-                                0x2B00, 0x2B02, 0x2B08, 0x2B0A, 0x2B30, 0xFFFF}) {
+  for (const int value : {0x0000, 0x2417, 0x241A, 0x2601, 0x2A03, 0x2A07, 0x2A0A, 0x2A0C, 0x2B00,
+                          0x2B02, 0x2B08, 0x2B0A, 0x2B30, 0xFFFF}) {
     const auto v = static_cast<std::uint16_t>(value);
     EXPECT_FALSE(adapter_error_from_wire(v)) << std::hex << v;
   }

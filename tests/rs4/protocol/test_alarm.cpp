@@ -1,4 +1,4 @@
-// Alarm PDUs (spec/rs4-profisafe.md §7; manual tables 5.3-1, 5.3-2).
+// Alarm PDUs ([RS4 manual §5.3, tables 5.3-1, 5.3-2]).
 #include "rs4/protocol/alarm.h"
 
 #include <gtest/gtest.h>
@@ -34,7 +34,8 @@ TEST(Rs4Alarm, DiagnosisAlarmComing) {
       0x0D,        // 1: length 13 incl. header
       0x01,        // 2: type 1 = diagnosis alarm
       0x00,        // 3: slot 0
-      0x1D,        // 4: 00 011 1 01 = sequence 3, ack, appears (DECISION §7.2)
+      0x1D,        // 4: 00 011 1 01 = sequence 3, ack, appears (DECISION
+                   // [docs/decisions.md#rs4-alarm-specifier])
       0x84,        // 5: error from slave
       0x2A, 0x0B,  // 6..7: μC2 error number hi, lo
       0x00, 0x02,  // 8..9: μC2 count hi, lo
@@ -56,7 +57,7 @@ TEST(Rs4Alarm, DiagnosisAlarmGoing) {
 
 TEST(Rs4Alarm, SpecifierSequenceWrapsModulo8) {
   EXPECT_EQ(alarm_specifier(8, AlarmDifferentiation::kAppears), 0x05);  // 00 000 1 01
-  EXPECT_EQ(alarm_specifier(9, AlarmDifferentiation::kNone), 0x0C);      // 00 001 1 00
+  EXPECT_EQ(alarm_specifier(9, AlarmDifferentiation::kNone), 0x0C);     // 00 001 1 00
 }
 
 TEST(Rs4Alarm, TypedErrors) {

@@ -1,4 +1,4 @@
-// Block header and flow-control byte (spec/rs4-profisafe.md §5.1, §5.2; manual tables
+// Block header and flow-control byte ([RS4 manual §5.2.1]; manual tables
 // 5.2-1, 5.2-2). Known answers written from the tables, not from the encoder.
 #include "rs4/protocol/block.h"
 
@@ -55,12 +55,12 @@ TEST(Rs4FlowControl, NotReadyWithPayloadIs0x42) {
 }
 
 TEST(Rs4FlowControl, RejectsReservedBitsAndUndefinedStates) {
-  for (const std::uint8_t bad : {std::uint8_t{0x45},    // bit 2 reserved
-                                 std::uint8_t{0x49},    // bit 3 reserved
-                                 std::uint8_t{0xC1},    // bit 7 reserved
-                                 std::uint8_t{0x01},    // state 000 undefined
-                                 std::uint8_t{0x00},    // the master's WRITE value: state 000
-                                 std::uint8_t{0x61},    // state 110 undefined
+  for (const std::uint8_t bad : {std::uint8_t{0x45},     // bit 2 reserved
+                                 std::uint8_t{0x49},     // bit 3 reserved
+                                 std::uint8_t{0xC1},     // bit 7 reserved
+                                 std::uint8_t{0x01},     // state 000 undefined
+                                 std::uint8_t{0x00},     // the master's WRITE value: state 000
+                                 std::uint8_t{0x61},     // state 110 undefined
                                  std::uint8_t{0x71}}) {  // state 111 undefined
     auto d = decode_flow_control(bad);
     ASSERT_FALSE(d) << int{bad};
@@ -109,7 +109,7 @@ TEST(Rs4BlockHeader, EvaluatesOnlyTheBytesTheHeaderDescribes) {
       0x07,              // 1 length 7: header + 3 payload bytes
       0xFF, 0xFF,        // 2..3 last block
       0x92, 0x01, 0x01,  // 4..6 payload: 92 mask=measurement mode=permanent
-      0xAA, 0xBB,        // 7..8 rest of a fixed-size record, not evaluated (§5)
+      0xAA, 0xBB,        // 7..8 rest of a fixed-size record, not evaluated ([RS4 manual §5.2])
   };
   auto b = decode_block(record, Direction::kWrite);
   ASSERT_TRUE(b);
@@ -117,13 +117,14 @@ TEST(Rs4BlockHeader, EvaluatesOnlyTheBytesTheHeaderDescribes) {
 }
 
 TEST(Rs4BlockHeader, ReadDirectionAcceptsHeaderOnlyBlock) {
-  const Bytes record{0x41,        // 0 flow: normal, ready, no payload
-                     0x04,        // 1 length 4: header only
+  const Bytes record{0x41,         // 0 flow: normal, ready, no payload
+                     0x04,         // 1 length 4: header only
                      0xFF, 0xFF};  // 2..3 last block
   auto b = decode_block(record, Direction::kRead);
   ASSERT_TRUE(b);
   EXPECT_TRUE(b.value().payload.empty());
-  auto w = decode_block(record, Direction::kWrite);  // WRITE records are ≥ 5 bytes (§5)
+  auto w = decode_block(record, Direction::kWrite);  // WRITE records are ≥ 5 bytes
+                                                     // ([RS4 manual §5.2])
   ASSERT_FALSE(w);
   EXPECT_EQ(w.error(), ProtocolError::kRecordTooShort);
 }
@@ -183,8 +184,8 @@ TEST(Rs4BlockHeader, EncodeBlockRejectsPayloadAbove236) {
 TEST(Rs4BlockSplitter, EmptyAnswerIsOneHeaderOnlyBlock) {
   auto blocks = split_into_blocks({}, {true, true, FlowState::kNormal});
   ASSERT_EQ(blocks.size(), 1U);
-  const Bytes expected{0x41,        // 0 flow: normal, ready, payload bit cleared
-                       0x04,        // 1 length: header only (DECISION §5.1)
+  const Bytes expected{0x41,         // 0 flow: normal, ready, payload bit cleared
+                       0x04,         // 1 length: header only (DECISION [RS4 manual §5.2.1])
                        0xFF, 0xFF};  // 2..3 last block
   EXPECT_EQ(blocks[0], expected);
 }
@@ -193,9 +194,9 @@ TEST(Rs4BlockSplitter, ShortAnswerIsOneLastBlock) {
   const Bytes answer{0x93, 0x00, 0x92};
   auto blocks = split_into_blocks(answer, {true, false, FlowState::kNormal});
   ASSERT_EQ(blocks.size(), 1U);
-  const Bytes expected{0x43,              // 0 flow: normal, payload, ready
-                       0x07,              // 1 length 7
-                       0xFF, 0xFF,        // 2..3 last block
+  const Bytes expected{0x43,               // 0 flow: normal, payload, ready
+                       0x07,               // 1 length 7
+                       0xFF, 0xFF,         // 2..3 last block
                        0x93, 0x00, 0x92};  // 4..6 payload
   EXPECT_EQ(blocks[0], expected);
 }
@@ -233,7 +234,7 @@ TEST(Rs4BlockSplitter, ExactMultipleOf236HasNoEmptyTrailingBlock) {
 TEST(Rs4BlockSplitter, SmallerBlockSizeForShortRecords) {
   const Bytes answer(10, 0x22);
   auto blocks = split_into_blocks(answer, {true, false, FlowState::kNormal}, 8);  // 4 payload
-  ASSERT_EQ(blocks.size(), 3U);  // 4 + 4 + 2
+  ASSERT_EQ(blocks.size(), 3U);                                                   // 4 + 4 + 2
   EXPECT_EQ(blocks[2].size(), 6U);
   EXPECT_EQ(blocks[2][2], 0xFF);
 }

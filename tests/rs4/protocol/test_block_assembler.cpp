@@ -1,4 +1,4 @@
-// Block assembler, WRITE side (spec/rs4-profisafe.md §5.1): blocks 0, 1, … and the last
+// Block assembler, WRITE side ([RS4 manual §5.2.1]): blocks 0, 1, … and the last
 // 0xFFFF; whole command ≥ 1100 bytes → 0x2A06; out-of-sequence → 0x2A0B.
 #include "rs4/protocol/adapter_error.h"
 #include "rs4/protocol/block.h"
@@ -27,9 +27,9 @@ Bytes record(std::uint16_t number, std::size_t size, std::uint8_t fill) {
 
 TEST(Rs4BlockAssembler, SingleBlockCommand) {
   BlockAssembler a;
-  const Bytes r{0x00,              // 0 flow (master writes 0)
-                0x07,              // 1 length 7
-                0xFF, 0xFF,        // 2..3 last block
+  const Bytes r{0x00,               // 0 flow (master writes 0)
+                0x07,               // 1 length 7
+                0xFF, 0xFF,         // 2..3 last block
                 0x92, 0x0F, 0x01};  // 4..6 PROFI_CMD_GET_RS4_DATA all, permanent
   auto p = a.push(r);
   ASSERT_TRUE(p);

@@ -1,4 +1,4 @@
-// COM_CMD_MESS_16_RT 0x23 (spec/rs4-profisafe.md §6.1; manual table 5.2-14).
+// COM_CMD_MESS_16_RT 0x23 ([RS4 manual §5.2.3.4, table 5.2-14]).
 #include "rs4/protocol/measurement.h"
 #include "rs4/protocol/telegram.h"
 
@@ -13,22 +13,23 @@ namespace {
 
 using Bytes = std::vector<std::uint8_t>;
 
-// The measurement of the §11 worked example, unstuffed (the body on PROFIBUS).
+// The measurement of the [roboticslibrary/rl LeuzeRs4.cpp] worked example, unstuffed (the body on
+// PROFIBUS).
 const Bytes kExampleBody{
-    0x23,                    // 5: COM_CMD_MESS_16_RT
-    0x0B,                    // 6: option 1: 3 option bytes, state measuring
-    0x80,                    // 7: option 2: option 3 follows
-    0x81,                    // 8: option 3: field pair 1
-    0x00, 0xFE,              // 9..10: scan b31..24 = 0, filler
-    0x00, 0xFE,              // 11..12: scan b23..16 = 0, filler
-    0x00, 0xFE,              // 13..14: scan b15..8 = 0, filler
-    0x01, 0xFE,              // 15..16: scan b7..0 = 1, filler
-    0x04,                    // 17: resolution 4
-    0x00, 0x00,              // 18..19: output start 0
-    0x00, 0x08,              // 20..21: output stop 8
-    0x03, 0xE8,              // 22..23: segment 0: 1000 mm
-    0x00, 0x00,              // 24..25: segment 4: 0 mm
-    0x01, 0x00,              // 26..27: segment 8: 256 mm
+    0x23,        // 5: COM_CMD_MESS_16_RT
+    0x0B,        // 6: option 1: 3 option bytes, state measuring
+    0x80,        // 7: option 2: option 3 follows
+    0x81,        // 8: option 3: field pair 1
+    0x00, 0xFE,  // 9..10: scan b31..24 = 0, filler
+    0x00, 0xFE,  // 11..12: scan b23..16 = 0, filler
+    0x00, 0xFE,  // 13..14: scan b15..8 = 0, filler
+    0x01, 0xFE,  // 15..16: scan b7..0 = 1, filler
+    0x04,        // 17: resolution 4
+    0x00, 0x00,  // 18..19: output start 0
+    0x00, 0x08,  // 20..21: output stop 8
+    0x03, 0xE8,  // 22..23: segment 0: 1000 mm
+    0x00, 0x00,  // 24..25: segment 4: 0 mm
+    0x01, 0x00,  // 26..27: segment 8: 256 mm
 };
 
 TEST(Rs4Measurement, DecodesWorkedExample) {
@@ -70,7 +71,8 @@ TEST(Rs4Measurement, ScanNumberHighByteFirstWithFillers) {
 }
 
 TEST(Rs4Measurement, ValueCountOfTheManualsExample) {
-  // start 0, stop 528, resolution 4 → segments 0, 4, …, 524, 528 = 133 values (§6.1).
+  // start 0, stop 528, resolution 4 → segments 0, 4, …, 524, 528 = 133 values
+  // ([RS4 manual §5.2.3.4]).
   EXPECT_EQ(measurement_value_count(0, 528, 4).value(), 133U);
   EXPECT_EQ(measurement_value_count(0, 528, 1).value(), 529U);
   EXPECT_EQ(measurement_value_count(10, 10, 7).value(), 1U);
@@ -85,9 +87,9 @@ TEST(Rs4Measurement, ContourEncodingPicksSegmentsAndAlwaysTheStop) {
   ASSERT_FALSE(encode_measurement_data(0, 4, 0, 10, contour, out));
   ASSERT_EQ(out.size(), 13U + 8U);
   const Bytes values(out.begin() + 13, out.end());
-  EXPECT_EQ(values, (Bytes{0x00, 0x00,    // segment 0
-                           0x00, 0x08,    // segment 4: 8
-                           0x00, 0x10,    // segment 8: 16
+  EXPECT_EQ(values, (Bytes{0x00, 0x00,     // segment 0
+                           0x00, 0x08,     // segment 4: 8
+                           0x00, 0x10,     // segment 8: 16
                            0x00, 0x14}));  // stop segment 10: 20
   Bytes full;
   ASSERT_FALSE(encode_measurement_data(7, 4, 0, 528, contour, full));
@@ -122,8 +124,8 @@ TEST(Rs4Measurement, DecoderTypedErrors) {
   };
   EXPECT_EQ(with(5, 0x00).error(), ProtocolError::kBadScanNumberFiller);  // filler not FE
   EXPECT_EQ(with(12, 0x00).error(), ProtocolError::kBadResolution);
-  EXPECT_EQ(with(14, 0x09).error(), ProtocolError::kStartAfterStop);      // start 9 > stop 8
-  EXPECT_EQ(with(15, 0x03).error(), ProtocolError::kSegmentOutOfRange);   // stop 0x0308 = 776
+  EXPECT_EQ(with(14, 0x09).error(), ProtocolError::kStartAfterStop);     // start 9 > stop 8
+  EXPECT_EQ(with(15, 0x03).error(), ProtocolError::kSegmentOutOfRange);  // stop 0x0308 = 776
   Bytes truncated(kExampleBody.begin(), kExampleBody.end() - 1);
   EXPECT_EQ(decode_telegram(truncated).error(), ProtocolError::kTruncated);
   Bytes longer = kExampleBody;

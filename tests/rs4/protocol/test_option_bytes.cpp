@@ -1,4 +1,4 @@
-// Option bytes 1–3 (spec/rs4-profisafe.md §6; manual table 5.2-9).
+// Option bytes 1–3 ([RS4 manual §5.2.3, table 5.2-9]).
 #include "rs4/protocol/option_bytes.h"
 
 #include <gtest/gtest.h>
@@ -31,10 +31,12 @@ TEST(Rs4OptionBytes, OnlyOption1WhenNoFlags) {
 TEST(Rs4OptionBytes, ToTheRs4WithAcknowledgeIs0x41) {
   OptionBytes o;  // state 000 "none" in messages to the RS4
   o.acknowledge = true;
-  EXPECT_EQ(encode(o), Bytes{0x41});  // 0 1 0 000 01: ack, 1 option byte (§11 set baud)
+  EXPECT_EQ(encode(o), Bytes{0x41});  // 0 1 0 000 01: ack, 1 option byte
+                                      // ([roboticslibrary/rl LeuzeRs4.cpp] set baud)
   o.acknowledge = false;
   o.password = true;
-  EXPECT_EQ(encode(o), Bytes{0x21});  // 0 0 1 000 01: password follows (§11 password frame)
+  EXPECT_EQ(encode(o), Bytes{0x21});  // 0 0 1 000 01: password follows
+                                      // ([roboticslibrary/rl LeuzeRs4.cpp] password frame)
 }
 
 TEST(Rs4OptionBytes, Option2WhenAFlagIsSet) {
@@ -68,7 +70,7 @@ TEST(Rs4OptionBytes, AllOption2FlagBits) {
 }
 
 TEST(Rs4OptionBytes, Option3ForcesOption2With0x80) {
-  // Worked example of §11: OPT1 = 0B, OPT2 = 80, OPT3 = 81.
+  // Worked example of [roboticslibrary/rl LeuzeRs4.cpp]: OPT1 = 0B, OPT2 = 80, OPT3 = 81.
   const Bytes expected{
       0x0B,  // option 1: 0 0 0 010 11 = 3 option bytes, state 010 measuring
       0x80,  // option 2: no flag, bit 7 = 1 because option 3 follows
@@ -110,16 +112,16 @@ TEST(Rs4OptionBytes, DecoderTypedErrors) {
   };
   const std::vector<Case> cases{
       {{}, ProtocolError::kTruncated},
-      {{0x08}, ProtocolError::kBadOptionCount},           // count 0 (and never 0x00)
+      {{0x08}, ProtocolError::kBadOptionCount},  // count 0 (and never 0x00)
       {{0x00}, ProtocolError::kBadOptionCount},
-      {{0x89}, ProtocolError::kReservedBitSet},           // bit 7 reserved
-      {{0x15}, ProtocolError::kBadOperatingState},        // state 101
-      {{0x1D}, ProtocolError::kBadOperatingState},        // state 111
-      {{0x0A}, ProtocolError::kTruncated},                // count 2, option 2 missing
-      {{0x0A, 0x00}, ProtocolError::kZeroOptionByte},     // option 2 = 0x00
-      {{0x0A, 0x81}, ProtocolError::kBadOptionCount},     // bit 7 but count 2
+      {{0x89}, ProtocolError::kReservedBitSet},              // bit 7 reserved
+      {{0x15}, ProtocolError::kBadOperatingState},           // state 101
+      {{0x1D}, ProtocolError::kBadOperatingState},           // state 111
+      {{0x0A}, ProtocolError::kTruncated},                   // count 2, option 2 missing
+      {{0x0A, 0x00}, ProtocolError::kZeroOptionByte},        // option 2 = 0x00
+      {{0x0A, 0x81}, ProtocolError::kBadOptionCount},        // bit 7 but count 2
       {{0x0B, 0x01, 0x81}, ProtocolError::kBadOptionCount},  // count 3, bit 7 clear
-      {{0x0B, 0x80}, ProtocolError::kTruncated},          // option 3 missing
+      {{0x0B, 0x80}, ProtocolError::kTruncated},             // option 3 missing
       {{0x0B, 0x80, 0x01}, ProtocolError::kOption3MarkerMissing},
       {{0x0B, 0x80, 0xC1}, ProtocolError::kReservedBitSet},  // option 3 bit 6
       {{0x0B, 0x80, 0x85}, ProtocolError::kBadFieldPair},    // first pair 5
@@ -138,10 +140,10 @@ TEST(Rs4OptionBytes, PrefixWithPassword) {
   p.password = {'R', 'O', 'D', '4', 'L', 'E', 0xFF, 0xFF};
   Bytes out;
   ASSERT_FALSE(encode_prefix(0x10, p, out));
-  const Bytes expected{0x10,                                      // command
-                       0x21,                                      // option 1: password
-                       0x52, 0x4F, 0x44, 0x34, 0x4C, 0x45,        // "ROD4LE"
-                       0xFF, 0xFF};                               // 0xFF padding
+  const Bytes expected{0x10,                                // command
+                       0x21,                                // option 1: password
+                       0x52, 0x4F, 0x44, 0x34, 0x4C, 0x45,  // "ROD4LE"
+                       0xFF, 0xFF};                         // 0xFF padding
   EXPECT_EQ(out, expected);
   auto d = decode_prefix(expected);
   ASSERT_TRUE(d);

@@ -1,5 +1,5 @@
-// RS232 framing of the RS4 (spec/rs4-profisafe.md §11): every worked example of the spec
-// as a known answer, framed and deframed, byte for byte.
+// RS232 framing of the RS4 ([roboticslibrary/rl LeuzeRs4.cpp]): every worked example of the framing
+// rules as a known answer, framed and deframed, byte for byte.
 #include "rs4/protocol/rs232.h"
 
 #include <gtest/gtest.h>
@@ -15,26 +15,26 @@ using Bytes = std::vector<std::uint8_t>;
 struct Example {
   const char* name;
   Bytes body;  // CMD, options, [password], data: unstuffed, without CHK
-  Bytes wire;  // the spec's frame
+  Bytes wire;  // the expected frame
 };
 
 const std::vector<Example>& examples() {
   static const std::vector<Example> kExamples{
       {"alive, no ack",
        {0x14, 0x01},
-       {0x00, 0x00,        // start mark
-        0x14,              // CMD COM_CMD_ALIVE
-        0x01,              // OPT1: one option byte
-        0x15,              // CHK = 14 ^ 01
+       {0x00, 0x00,          // start mark
+        0x14,                // CMD COM_CMD_ALIVE
+        0x01,                // OPT1: one option byte
+        0x15,                // CHK = 14 ^ 01
         0x00, 0x00, 0x00}},  // end mark
       {"set baud 4800",
        {0x19, 0x41, 0x00, 0x00},
-       {0x00, 0x00,        // start mark
-        0x19,              // CMD set baud rate
-        0x41,              // OPT1: ack requested, one option byte
-        0x00, 0x00,        // data 00 00 (4800 baud)
-        0xFF,              // stuffed after two zeros, counted in the check
-        0xA7,              // CHK = 19 ^ 41 ^ 00 ^ 00 ^ FF
+       {0x00, 0x00,          // start mark
+        0x19,                // CMD set baud rate
+        0x41,                // OPT1: ack requested, one option byte
+        0x00, 0x00,          // data 00 00 (4800 baud)
+        0xFF,                // stuffed after two zeros, counted in the check
+        0xA7,                // CHK = 19 ^ 41 ^ 00 ^ 00 ^ FF
         0x00, 0x00, 0x00}},  // end mark
       {"password frame",
        {0x10, 0x21, 0x52, 0x4F, 0x44, 0x34, 0x4C, 0x45, 0xFF, 0xFF},
@@ -49,19 +49,19 @@ const std::vector<Example>& examples() {
        {0x24, 0x01},
        {0x00, 0x00, 0x24, 0x01, 0x25, 0x00, 0x00, 0x00}},  // start, CMD, OPT1, CHK, end
       {"measurement",
-       {0x23, 0x0B, 0x80, 0x81, 0x00, 0xFE, 0x00, 0xFE, 0x00, 0xFE, 0x01, 0xFE, 0x04,
-        0x00, 0x00, 0x00, 0x08, 0x03, 0xE8, 0x00, 0x00, 0x01, 0x00},
-       {0x00, 0x00,              // start mark
-        0x23, 0x0B, 0x80, 0x81,  // CMD 0x23, OPT1 0B, OPT2 80, OPT3 81
+       {0x23, 0x0B, 0x80, 0x81, 0x00, 0xFE, 0x00, 0xFE, 0x00, 0xFE, 0x01, 0xFE,
+        0x04, 0x00, 0x00, 0x00, 0x08, 0x03, 0xE8, 0x00, 0x00, 0x01, 0x00},
+       {0x00, 0x00,                                      // start mark
+        0x23, 0x0B, 0x80, 0x81,                          // CMD 0x23, OPT1 0B, OPT2 80, OPT3 81
         0x00, 0xFE, 0x00, 0xFE, 0x00, 0xFE, 0x01, 0xFE,  // scan number 1 with fillers
-        0x04,                    // resolution 4
-        0x00, 0x00, 0xFF,        // start 0 + stuffed FF
-        0x00, 0x08,              // stop 8
-        0x03, 0xE8,              // 1000 mm
-        0x00, 0x00, 0xFF,        // 0 mm + stuffed FF
-        0x01, 0x00,              // 256 mm
-        0xCE,                    // CHK
-        0x00, 0x00, 0x00}},      // end mark
+        0x04,                                            // resolution 4
+        0x00, 0x00, 0xFF,                                // start 0 + stuffed FF
+        0x00, 0x08,                                      // stop 8
+        0x03, 0xE8,                                      // 1000 mm
+        0x00, 0x00, 0xFF,                                // 0 mm + stuffed FF
+        0x01, 0x00,                                      // 256 mm
+        0xCE,                                            // CHK
+        0x00, 0x00, 0x00}},                              // end mark
   };
   return kExamples;
 }
@@ -129,11 +129,10 @@ TEST(Rs4Rs232, BodyEndingInOneZero) {
 
 TEST(Rs4Rs232, StuffedZerosFollowedByARealFF) {
   // body 31 01 00 00 FF: 00 00 → stuff FF, then the body's own FF
-  const Bytes wire{0x00, 0x00,
-                   0x31, 0x01, 0x00, 0x00,
-                   0xFF,        // stuffed
-                   0xFF,        // data byte 0xFF
-                   0x30,        // CHK = 31 ^ 01 ^ FF ^ FF
+  const Bytes wire{0x00, 0x00, 0x31, 0x01, 0x00, 0x00,
+                   0xFF,  // stuffed
+                   0xFF,  // data byte 0xFF
+                   0x30,  // CHK = 31 ^ 01 ^ FF ^ FF
                    0x00, 0x00, 0x00};
   auto framed = frame_rs232(Bytes{0x31, 0x01, 0x00, 0x00, 0xFF});
   ASSERT_TRUE(framed);
@@ -158,7 +157,8 @@ TEST(Rs4Rs232, CheckZeroIsSentAsFF) {
 }
 
 TEST(Rs4Rs232, FourZerosStuffTwice) {
-  // body 01 01 00 00 00 00: 00 00 FF 00 00 FF (§11 "00 00 FF 00 00 FF is legal")
+  // body 01 01 00 00 00 00: 00 00 FF 00 00 FF ([roboticslibrary/rl LeuzeRs4.cpp] "00 00 FF 00 00 FF
+  // is legal")
   auto framed = frame_rs232(Bytes{0x01, 0x01, 0x00, 0x00, 0x00, 0x00});
   ASSERT_TRUE(framed);
   EXPECT_EQ(framed.value(), (Bytes{0x00, 0x00, 0x01, 0x01, 0x00, 0x00, 0xFF, 0x00, 0x00, 0xFF,
@@ -179,7 +179,7 @@ TEST(Rs4Rs232, FramerRejectsBadCommandAndEmpty) {
 
 TEST(Rs4Rs232, BadCheckIsReportedAndNextFrameIsFound) {
   Bytes stream{0x00, 0x00, 0x14, 0x01, 0x16, 0x00, 0x00, 0x00};  // CHK 16 instead of 15
-  const auto& good = examples()[3].wire;                          // request one scan
+  const auto& good = examples()[3].wire;                         // request one scan
   stream.insert(stream.end(), good.begin(), good.end());
   Rs232Deframer d;
   auto events = d.feed(stream);

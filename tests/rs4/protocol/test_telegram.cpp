@@ -1,4 +1,4 @@
-// RS4 telegrams 0x14, 0x53, 0x54 and the dispatch (spec/rs4-profisafe.md §6; manual
+// RS4 telegrams 0x14, 0x53, 0x54 and the dispatch ([RS4 manual §5.2.3]; manual
 // tables 5.2-10 … 5.2-12).
 #include "rs4/protocol/telegram.h"
 
@@ -33,7 +33,8 @@ TEST(Rs4Telegram, AliveInMeasuringWithFieldPair1) {
 
 TEST(Rs4Telegram, AliveMinimal) {
   const Bytes body{0x14,   // COM_CMD_ALIVE
-                   0x01};  // option 1: one option byte, state none (§11 "alive, no ack")
+                   0x01};  // option 1: one option byte, state none
+                           // ([roboticslibrary/rl LeuzeRs4.cpp] "alive, no ack")
   auto e = encode_telegram(AliveTelegram{});
   ASSERT_TRUE(e);
   EXPECT_EQ(e.value(), body);
@@ -94,7 +95,9 @@ TEST(Rs4Telegram, ErrorReportLengthErrors) {
 }
 
 TEST(Rs4Telegram, UnknownCodeAndEmpty) {
-  auto unknown = decode_telegram(Bytes{0x24, 0x01});  // "request one scan" of §11, not forwarded
+  auto unknown = decode_telegram(Bytes{0x24, 0x01});  // "request one scan" of
+                                                      // [roboticslibrary/rl LeuzeRs4.cpp], not
+                                                      // forwarded
   ASSERT_FALSE(unknown);
   EXPECT_EQ(unknown.error(), ProtocolError::kUnknownTelegram);
   auto empty = decode_telegram(Bytes{});

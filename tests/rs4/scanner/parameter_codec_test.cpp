@@ -2,14 +2,14 @@
 // layout table in docs/rs4-scanner.md "Encoding", not produced by the encoder.
 #include "rs4/scanner/parameter_codec.h"
 
+#include "rs4/scanner/crc32.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <vector>
-
-#include "rs4/scanner/crc32.h"
 
 namespace rs4sim::rs4::scanner {
 namespace {
@@ -26,36 +26,36 @@ ParameterSet sample() {
   s.passwords[0] = {'R', 'O', 'D', '4', 'L', 'E', 0xFF, 0xFF};
   s.passwords[1].fill(0xFF);
   s.pairs[0].protective_mm[0] = 0x0102;
-  s.pairs[0].warning_mm[528] = 0x3A98;                  // 15000 mm
-  s.pairs[3].warning_mm[528] = 0x0DAC;                  // 3500 mm (factory)
+  s.pairs[0].warning_mm[528] = 0x3A98;  // 15000 mm
+  s.pairs[3].warning_mm[528] = 0x0DAC;  // 3500 mm (factory)
   return s;
 }
 
 const std::vector<std::uint8_t> kHeader = {
-    0x52, 0x53, 0x34, 0x50,   // 0..3   magic "RS4P"
-    0x01,                     // 4      format version 1
-    0x00,                     // 5      reserved
-    0x0A, 0x0B, 0x0C, 0x0D,   // 6..9   serial number 0x0A0B0C0D, big-endian
-    0x00, 0x04,               // 10..11 device type 0x0004
-    0x02,                     // 12     firmware major 2
-    0x07,                     // 13     firmware minor 7
-    0x03,                     // 14     response steps n = 3 (T = 200 ms)
-    0x01,                     // 15     restart mode 1 = start interlock
-    0x02,                     // 16     start pair 2
-    0x03,                     // 17     permitted from pair 1: to 1, 2
-    0x0F,                     // 18     permitted from pair 2: to 1..4
-    0x04,                     // 19     permitted from pair 3: to 3
-    0x09,                     // 20     permitted from pair 4: to 1, 4
-    0x03,                     // 21     warning output: contamination | warning field
-    0x04,                     // 22     measurement resolution 4
-    0x00, 0x00,               // 23..24 measurement start 0
-    0x02, 0x10,               // 25..26 measurement stop 528
-    'R', 'O', 'D', '4', 'L', 'E', 0xFF, 0xFF,               // 27..34 password 1
-    0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF,         // 35..42 password 2 (none)
+    0x52, 0x53, 0x34, 0x50,  // 0..3   magic "RS4P"
+    0x01,                    // 4      format version 1
+    0x00,                    // 5      reserved
+    0x0A, 0x0B, 0x0C, 0x0D,  // 6..9   serial number 0x0A0B0C0D, big-endian
+    0x00, 0x04,              // 10..11 device type 0x0004
+    0x02,                    // 12     firmware major 2
+    0x07,                    // 13     firmware minor 7
+    0x03,                    // 14     response steps n = 3 (T = 200 ms)
+    0x01,                    // 15     restart mode 1 = start interlock
+    0x02,                    // 16     start pair 2
+    0x03,                    // 17     permitted from pair 1: to 1, 2
+    0x0F,                    // 18     permitted from pair 2: to 1..4
+    0x04,                    // 19     permitted from pair 3: to 3
+    0x09,                    // 20     permitted from pair 4: to 1, 4
+    0x03,                    // 21     warning output: contamination | warning field
+    0x04,                    // 22     measurement resolution 4
+    0x00, 0x00,              // 23..24 measurement start 0
+    0x02, 0x10,              // 25..26 measurement stop 528
+    'R',  'O',  'D',  '4',  'L',  'E',  0xFF, 0xFF,  // 27..34 password 1
+    0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF,  // 35..42 password 2 (none)
 };
 
 TEST(ScannerParameterCodec, SizeFromLayout) {
-  EXPECT_EQ(kParameterSetSize, 43U + 4U * 2U * 529U * 2U);   // 8507
+  EXPECT_EQ(kParameterSetSize, 43U + 4U * 2U * 529U * 2U);  // 8507
   EXPECT_EQ(encode(sample()).size(), kParameterSetSize);
 }
 
@@ -90,7 +90,7 @@ TEST(ScannerParameterCodec, FieldPairBytes) {
 TEST(ScannerParameterCodec, DecodeFixedBytes) {
   std::vector<std::uint8_t> b = kHeader;
   for (int p = 0; p < 4; ++p) {
-    for (int n = 0; n < 2 * 529; ++n) {       // every value 0x0100 + pair = (p+1)*256 + ...
+    for (int n = 0; n < 2 * 529; ++n) {  // every value 0x0100 + pair = (p+1)*256 + ...
       b.push_back(static_cast<std::uint8_t>(p + 1));
       b.push_back(static_cast<std::uint8_t>(n & 0x7F));
     }
@@ -107,7 +107,7 @@ TEST(ScannerParameterCodec, DecodeFixedBytes) {
   EXPECT_EQ(s.measurement.stop, 528);
   EXPECT_EQ(s.passwords[0][3], '4');
   EXPECT_EQ(s.pairs[0].protective_mm[1], 0x0101);
-  EXPECT_EQ(s.pairs[0].warning_mm[0], 0x0100 | (529 & 0x7F));   // n = 529 → warning seg 0
+  EXPECT_EQ(s.pairs[0].warning_mm[0], 0x0100 | (529 & 0x7F));  // n = 529 → warning seg 0
   EXPECT_EQ(s.pairs[3].protective_mm[5], 0x0405);
 }
 
@@ -147,12 +147,12 @@ TEST(ScannerParameterCodec, SyntaxErrors) {
 
 TEST(ScannerParameterCodec, SemanticErrorAfterSyntax) {
   auto b = encode(sample());
-  b[16] = 0x05;                                         // start pair 5
-  EXPECT_TRUE(decode(b));                               // syntax fine
+  b[16] = 0x05;            // start pair 5
+  EXPECT_TRUE(decode(b));  // syntax fine
   EXPECT_EQ(decode_and_validate(b).error(), ParameterError::kStartPair);
   b[16] = 0x02;
-  b[43] = 0x0F;                                         // pair 1 protective seg 0 = 0x0FA1
-  b[44] = 0xA1;                                         // = 4001 mm
+  b[43] = 0x0F;  // pair 1 protective seg 0 = 0x0FA1
+  b[44] = 0xA1;  // = 4001 mm
   EXPECT_EQ(decode_and_validate(b).error(), ParameterError::kProtectiveTooFar);
 }
 

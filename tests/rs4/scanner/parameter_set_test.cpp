@@ -12,7 +12,7 @@ TEST(ScannerParameterSet, FactoryDefaultIsValid) {
   EXPECT_FALSE(validate(s).has_value());
   EXPECT_EQ(s.start_pair, 1);
   EXPECT_EQ(s.restart_mode, RestartMode::kStartRestartInterlock);
-  EXPECT_EQ(s.warning_output, kWarnOnContamination);     // §5.1.1 recommendation
+  EXPECT_EQ(s.warning_output, kWarnOnContamination);  // [RS4 manual §5.1.1] recommendation
   EXPECT_EQ(s.pairs[0].protective_mm[0], 1000);
   EXPECT_EQ(s.pairs[3].warning_mm[528], 3500);
 }
@@ -38,7 +38,7 @@ TEST(ScannerParameterSet, ProtectiveBeyond4mNamesPairSegmentAndLimit) {
   EXPECT_EQ(issue->value, 4001U);
   EXPECT_EQ(issue->limit, 4000U);
   EXPECT_NE(issue->message().find("segment/byte 77"), std::string::npos);
-  s.pairs[2].protective_mm[77] = 4000;                    // the limit itself is valid
+  s.pairs[2].protective_mm[77] = 4000;  // the limit itself is valid
   EXPECT_FALSE(validate(s).has_value());
 }
 
@@ -61,27 +61,33 @@ struct Case {
 };
 
 const Case kCases[] = {
-    {"response_steps", [](ParameterSet& s) { s.response_steps = 15; }, ParameterError::kResponseTimeSteps,
-     "response_steps"},
+    {"response_steps", [](ParameterSet& s) { s.response_steps = 15; },
+     ParameterError::kResponseTimeSteps, "response_steps"},
     {"restart_mode", [](ParameterSet& s) { s.restart_mode = static_cast<RestartMode>(3); },
      ParameterError::kRestartMode, "restart_mode"},
-    {"start_pair_0", [](ParameterSet& s) { s.start_pair = 0; }, ParameterError::kStartPair, "start_pair"},
-    {"start_pair_5", [](ParameterSet& s) { s.start_pair = 5; }, ParameterError::kStartPair, "start_pair"},
-    {"diagonal", [](ParameterSet& s) { s.permitted[1] = 0x0D; }, ParameterError::kTransitionDiagonal,
-     "permitted"},
-    {"row_high_bits", [](ParameterSet& s) { s.permitted[0] = 0x1F; }, ParameterError::kTransitionDiagonal,
-     "permitted"},
-    {"warning_output", [](ParameterSet& s) { s.warning_output = 0x10; }, ParameterError::kWarningOutput,
-     "warning_output"},
+    {"start_pair_0", [](ParameterSet& s) { s.start_pair = 0; }, ParameterError::kStartPair,
+     "start_pair"},
+    {"start_pair_5", [](ParameterSet& s) { s.start_pair = 5; }, ParameterError::kStartPair,
+     "start_pair"},
+    {"diagonal", [](ParameterSet& s) { s.permitted[1] = 0x0D; },
+     ParameterError::kTransitionDiagonal, "permitted"},
+    {"row_high_bits", [](ParameterSet& s) { s.permitted[0] = 0x1F; },
+     ParameterError::kTransitionDiagonal, "permitted"},
+    {"warning_output", [](ParameterSet& s) { s.warning_output = 0x10; },
+     ParameterError::kWarningOutput, "warning_output"},
     {"resolution", [](ParameterSet& s) { s.measurement.resolution = 0; },
      ParameterError::kMeasurementResolution, "measurement.resolution"},
-    {"stop_529", [](ParameterSet& s) { s.measurement.stop = 529; }, ParameterError::kMeasurementRange,
-     "measurement.stop"},
-    {"start_after_stop", [](ParameterSet& s) { s.measurement = {4, 10, 9}; },
+    {"stop_529", [](ParameterSet& s) { s.measurement.stop = 529; },
+     ParameterError::kMeasurementRange, "measurement.stop"},
+    {"start_after_stop",
+     [](ParameterSet& s) {
+       s.measurement = {4, 10, 9};
+     },
      ParameterError::kMeasurementRange, "measurement.start"},
     {"password_ctrl", [](ParameterSet& s) { s.passwords[1][0] = 0x07; }, ParameterError::kPassword,
      "passwords[]"},
-    {"password_gap", [](ParameterSet& s) { s.passwords[0] = {'A', 0xFF, 'B', 0xFF, 0xFF, 0xFF, 0xFF, 0xFF}; },
+    {"password_gap",
+     [](ParameterSet& s) { s.passwords[0] = {'A', 0xFF, 'B', 0xFF, 0xFF, 0xFF, 0xFF, 0xFF}; },
      ParameterError::kPassword, "passwords[]"},
     {"empty_start", [](ParameterSet& s) { s.pairs[0].protective_mm.fill(0); },
      ParameterError::kEmptyStartField, "pairs[].protective_mm"},
@@ -101,7 +107,7 @@ TEST(ScannerParameterSet, EveryRuleRejectsWithItsError) {
 TEST(ScannerParameterSet, ValidPasswordAndTransitionsAccepted) {
   ParameterSet s = factory_default();
   s.passwords[0] = {'R', 'O', 'D', '4', 'L', 'E', 0xFF, 0xFF};  // ASCII then padding
-  s.permitted = {0x01, 0x03, 0x04, 0x0F};                         // diagonal always set
+  s.permitted = {0x01, 0x03, 0x04, 0x0F};                       // diagonal always set
   EXPECT_FALSE(validate(s).has_value());
   EXPECT_TRUE(permits(s, 2, 1));
   EXPECT_FALSE(permits(s, 1, 2));

@@ -1,8 +1,10 @@
 #pragma once
 // Shared fixture for the scanner tests: a manual "now" that only moves when told.
-#include <chrono>
-
 #include "rs4/scanner/scanner.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
 
 namespace rs4sim::rs4::scanner::testing {
 

@@ -1,14 +1,14 @@
 // Timing rules of the scanner model, all on a manual clock (docs/rs4-scanner.md).
-#include <gtest/gtest.h>
-
 #include "scanner_test_support.h"
+
+#include <gtest/gtest.h>
 
 namespace rs4sim::rs4::scanner {
 namespace {
 
 using namespace testing;
 
-// §7.1.1: the RS4 reaches operation after about 30 s (configurable, default 30 s).
+// [RS4 manual §7.1.1]: the RS4 reaches operation after about 30 s (configurable, default 30 s).
 TEST(ScannerTiming, BootTakes30SecondsNotLess) {
   ManualTime t;
   Scanner s;
@@ -22,8 +22,8 @@ TEST(ScannerTiming, BootTakes30SecondsNotLess) {
   EXPECT_EQ(s.status().scan_counter, 0U);
   s.advance(t.advance(std::chrono::nanoseconds(1)));
   EXPECT_EQ(s.status().state, ScannerState::kMeasuring);
-  EXPECT_TRUE(s.ossd());                              // automatic start, free field
-  EXPECT_EQ(s.status().scan_counter, 1U);             // first scan at the boot end
+  EXPECT_TRUE(s.ossd());                   // automatic start, free field
+  EXPECT_EQ(s.status().scan_counter, 1U);  // first scan at the boot end
   EXPECT_EQ(s.next_deadline(), kT0 + seconds(30) + milliseconds(40));
 }
 
@@ -49,7 +49,7 @@ TEST(ScannerTiming, NoStartOnAnOccupiedField) {
   s.advance(t.advance(seconds(30)));
   EXPECT_FALSE(s.ossd());
   EXPECT_TRUE(s.status().protective_violated);
-  s.advance(t.advance(milliseconds(120)));                      // still below k = 5 scans
+  s.advance(t.advance(milliseconds(120)));  // still below k = 5 scans
   EXPECT_FALSE(s.ossd());
   ASSERT_TRUE(s.edit_scene(t.now).remove(id.value()));
   s.advance(t.advance(milliseconds(40)));
@@ -71,7 +71,8 @@ TEST(ScannerTiming, StartInterlockWaitsForPulse) {
 // OSSD model: off at the k-th consecutive violated scan, k = T / 40 ms, T = 80 + n·40 ms.
 // The object appears 1 ns after a scan (the worst case): off within T, not before scan k.
 TEST(ScannerTiming, OssdOffWithinResponseTimeAndNotBeforeKScans) {
-  for (const std::uint8_t n : {std::uint8_t{0}, std::uint8_t{1}, std::uint8_t{3}, std::uint8_t{14}}) {
+  for (const std::uint8_t n :
+       {std::uint8_t{0}, std::uint8_t{1}, std::uint8_t{3}, std::uint8_t{14}}) {
     ManualTime t;
     Scanner s = booted(params(RestartMode::kAutomatic, n), t);
     ASSERT_TRUE(s.ossd());
@@ -97,7 +98,7 @@ TEST(ScannerTiming, ShortViolationBelowKScansKeepsOssdOn) {
   Scanner s = booted(params(RestartMode::kAutomatic, 1), t);  // k = 3
   const auto id = s.edit_scene(t.advance(milliseconds(1))).add(intruder());
   ASSERT_TRUE(id);
-  s.advance(kT0 + seconds(30) + milliseconds(80));              // 2 violated scans
+  s.advance(kT0 + seconds(30) + milliseconds(80));  // 2 violated scans
   EXPECT_TRUE(s.ossd());
   ASSERT_TRUE(s.edit_scene(kT0 + seconds(30) + milliseconds(81)).remove(id.value()));
   s.advance(kT0 + seconds(30) + milliseconds(400));
@@ -114,7 +115,7 @@ TEST(ScannerTiming, AutomaticRestartAfterFieldClears) {
   ASSERT_FALSE(s.ossd());
   ASSERT_TRUE(s.edit_scene(t.advance(milliseconds(1))).remove(id.value()));
   s.advance(t.advance(milliseconds(38)));
-  EXPECT_FALSE(s.ossd());                                       // no scan yet
+  EXPECT_FALSE(s.ossd());  // no scan yet
   s.advance(t.advance(milliseconds(1)));
   EXPECT_TRUE(s.ossd());
 }
@@ -130,13 +131,13 @@ TEST(ScannerTiming, RestartInterlockNeedsPulseOnFreeField) {
   s.advance(t.advance(milliseconds(120)));
   ASSERT_FALSE(s.ossd());
   EXPECT_TRUE(s.status().restart_interlock);
-  s.set_restart_input(true, t.now);                             // pulse on an occupied field
+  s.set_restart_input(true, t.now);  // pulse on an occupied field
   s.set_restart_input(false, t.advance(milliseconds(200)));
   EXPECT_FALSE(s.ossd());
   EXPECT_EQ(s.counters().restart_without_effect, 1U);
   ASSERT_TRUE(s.edit_scene(t.now).remove(id.value()));
   s.advance(t.advance(seconds(2)));
-  EXPECT_FALSE(s.ossd());                                       // free, still interlocked
+  EXPECT_FALSE(s.ossd());  // free, still interlocked
   s.set_restart_input(true, t.now);
   s.set_restart_input(false, t.advance(milliseconds(200)));
   EXPECT_TRUE(s.ossd());
@@ -156,14 +157,16 @@ TEST(ScannerTiming, StartInterlockModeRestartsAutomaticallyAfterViolation) {
   EXPECT_TRUE(s.ossd());
 }
 
-// §4.3: the pulse must last 0.12 … 5 s.
+// [RS4 manual §4.3]: the pulse must last 0.12 … 5 s.
 TEST(ScannerTiming, RestartPulseWindow) {
   struct Pulse {
     std::chrono::microseconds length;
     bool accepted;
   };
-  const Pulse pulses[] = {{milliseconds(119), false}, {milliseconds(120), true},
-                          {milliseconds(5000), true}, {milliseconds(5001), false},
+  const Pulse pulses[] = {{milliseconds(119), false},
+                          {milliseconds(120), true},
+                          {milliseconds(5000), true},
+                          {milliseconds(5001), false},
                           {std::chrono::microseconds(119999), false}};
   for (const Pulse& p : pulses) {
     ManualTime t;
@@ -176,7 +179,7 @@ TEST(ScannerTiming, RestartPulseWindow) {
   }
 }
 
-// §4.3: while the restart input is held the OSSDs are off, also in automatic mode.
+// [RS4 manual §4.3]: while the restart input is held the OSSDs are off, also in automatic mode.
 TEST(ScannerTiming, HeldRestartKeepsOssdOff) {
   ManualTime t;
   Scanner s = booted(params(RestartMode::kAutomatic), t);
@@ -187,7 +190,7 @@ TEST(ScannerTiming, HeldRestartKeepsOssdOff) {
     s.advance(t.advance(seconds(1)));
     EXPECT_FALSE(s.ossd());
   }
-  s.set_restart_input(false, t.now);                            // 10 s: refused, no effect needed
+  s.set_restart_input(false, t.now);  // 10 s: refused, no effect needed
   EXPECT_TRUE(s.ossd());
   EXPECT_EQ(s.counters().restart_too_long, 1U);
 }

@@ -1,14 +1,14 @@
 // Scene → contour, checked against geometry computed here from plain trigonometry
-// (segment n at −5.04° + n·0.36°, spec/rs4-profisafe.md §1; +x = 0°, +y = 90°).
+// (segment n at −5.04° + n·0.36°, [RS4 manual §2.3]; +x = 0°, +y = 90°).
 #include "rs4/scanner/scene.h"
+
+#include "rs4/scanner/errors.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-
-#include "rs4/scanner/errors.h"
 
 namespace rs4sim::rs4::scanner {
 namespace {
@@ -100,7 +100,7 @@ TEST(ScannerScene, RoomPolygonAroundTheScanner) {
     if (std::sin(t) < -1e-12) expected = std::min(expected, -1000.0 / std::sin(t));
     EXPECT_NEAR(c[n], expected, 0.5) << "segment " << n;
   }
-  EXPECT_EQ(c[0], 3012);    // 3000 / cos 5.04° = 3011.6
+  EXPECT_EQ(c[0], 3012);  // 3000 / cos 5.04° = 3011.6
 }
 
 // A concave U opening towards the scanner: the straight-ahead beam passes the gap
@@ -108,8 +108,14 @@ TEST(ScannerScene, RoomPolygonAroundTheScanner) {
 // the lower edge y = 2000 at x = 2000/tan 69.48° = 748 mm, i.e. at 2000 / sin 69.48°.
 TEST(ScannerScene, ConcavePolygon) {
   Scene s;
-  ASSERT_TRUE(s.add(Polygon{{{-1000, 2000}, {-500, 2000}, {-500, 3000}, {500, 3000},
-                             {500, 2000}, {1000, 2000}, {1000, 4000}, {-1000, 4000}}}));
+  ASSERT_TRUE(s.add(Polygon{{{-1000, 2000},
+                             {-500, 2000},
+                             {-500, 3000},
+                             {500, 3000},
+                             {500, 2000},
+                             {1000, 2000},
+                             {1000, 4000},
+                             {-1000, 4000}}}));
   const Contour c = render(s);
   EXPECT_EQ(c[264], 3000);
   EXPECT_NEAR(c[207], 2000.0 / std::sin(theta(207)), 0.5);
@@ -148,7 +154,7 @@ TEST(ScannerScene, RawContourMergesByMinimumAndRange) {
   ASSERT_TRUE(s.add(RawContour{raw}));
   ASSERT_TRUE(s.add(Circle{{0, 2000}, 100}));
   const Contour c = render(s);
-  EXPECT_EQ(c[264], 1500);             // raw is nearer than the circle (1900)
+  EXPECT_EQ(c[264], 1500);  // raw is nearer than the circle (1900)
   EXPECT_EQ(c[265], c[263]);
   EXPECT_EQ(c[100], 800);
   s.set_max_range_mm(700);
@@ -176,7 +182,8 @@ TEST(ScannerScene, EditsAndTheirErrors) {
   EXPECT_EQ(s.add(Circle{{NAN, 1}, 5}).error(), SceneError::kNotFinite);
   EXPECT_EQ(s.add(Polygon{{{0, 1}, {1, 1}}}).error(), SceneError::kTooFewVertices);
   EXPECT_EQ(s.add(Wall{{1, 1}, {1, 1}}).error(), SceneError::kDegenerateWall);
-  EXPECT_EQ(s.add(RawContour{std::vector<std::uint16_t>(528, 0)}).error(), SceneError::kRawContourSize);
+  EXPECT_EQ(s.add(RawContour{std::vector<std::uint16_t>(528, 0)}).error(),
+            SceneError::kRawContourSize);
   const auto raw = s.add(RawContour{std::vector<std::uint16_t>(kSegmentCount, kNoEchoMm)});
   ASSERT_TRUE(raw);
   EXPECT_EQ(s.move(raw.value(), 1, 1).error(), SceneError::kNotMovable);
@@ -190,7 +197,8 @@ TEST(ScannerScene, EditsAndTheirErrors) {
 
 TEST(ScannerScene, ObstacleLimit) {
   Scene s;
-  for (std::size_t i = 0; i < Scene::kMaxObstacles; ++i) ASSERT_TRUE(s.add(PointObstacle{{0, 100}}));
+  for (std::size_t i = 0; i < Scene::kMaxObstacles; ++i)
+    ASSERT_TRUE(s.add(PointObstacle{{0, 100}}));
   EXPECT_EQ(s.add(PointObstacle{{0, 100}}).error(), SceneError::kTooManyObstacles);
 }
 
