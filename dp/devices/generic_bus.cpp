@@ -45,19 +45,7 @@ void GenericBus::collect() {
 }
 
 bool GenericBus::run_until(const std::function<bool()>& done, Duration timeout) {
-  const TimePoint end = clock_.now() + timeout;
-  collect();
-  while (!done()) {
-    const auto next = bus_->next_event_time();
-    if (!next || *next > end) {
-      bus_->run_until(end);
-      collect();
-      return done();
-    }
-    bus_->step();
-    collect();
-  }
-  return true;
+  return bus_->run_until(done, clock_.now() + timeout, [this] { collect(); });
 }
 
 void GenericBus::run_for(Duration d) {

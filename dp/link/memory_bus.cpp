@@ -350,4 +350,20 @@ void MemoryBus::run_until(TimePoint until) {
   if (until > clock_.now()) clock_.set(until);
 }
 
+bool MemoryBus::run_until(const std::function<bool()>& done, TimePoint until,
+                          const std::function<void()>& after_step) {
+  after_step();
+  while (!done()) {
+    const auto next = next_event_time();
+    if (!next || *next > until) {
+      run_until(until);
+      after_step();
+      return done();
+    }
+    step();
+    after_step();
+  }
+  return true;
+}
+
 }  // namespace rs4sim::dp::link

@@ -99,6 +99,11 @@ class MemoryBus {
   // Processes every event up to `until`, then sets the clock to `until` (if later).
   void run_until(TimePoint until);
   void run_for(Duration d) { run_until(clock_.now() + d); }
+  // Steps until done() holds or the next event lies after `until` (then runs to `until`);
+  // after_step() runs before each check (a harness collects the master's events there).
+  // Returns done() at the end.
+  bool run_until(const std::function<bool()>& done, TimePoint until,
+                 const std::function<void()>& after_step);
   [[nodiscard]] std::optional<TimePoint> next_event_time() const;
 
   FaultId inject(const Fault& fault);

@@ -80,19 +80,7 @@ void Rs4Segment::collect() {
 }
 
 bool Rs4Segment::run_until(const std::function<bool()>& done, dp::Duration timeout) {
-  const auto end = clock_.now() + timeout;
-  collect();
-  while (!done()) {
-    const auto next = bus_->next_event_time();
-    if (!next || *next > end) {
-      bus_->run_until(end);
-      collect();
-      return done();
-    }
-    bus_->step();
-    collect();
-  }
-  return true;
+  return bus_->run_until(done, clock_.now() + timeout, [this] { collect(); });
 }
 
 void Rs4Segment::run_for(dp::Duration d) {
