@@ -8,7 +8,6 @@ namespace rs4sim::dp::pdu {
 namespace {
 
 constexpr std::uint8_t kMaxBlockLength = 63;  // 6-bit length incl. header
-constexpr std::size_t kDpv1BlockHead = 4;     // header, type, slot, specifier
 constexpr std::uint8_t kStatusBit = 0x80;
 
 // [IEC 61158-6-3 DPV1 alarms]: 1…6 and 32…126 are defined; 0, 7…31 and 127 are reserved.
