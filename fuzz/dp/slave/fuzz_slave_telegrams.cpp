@@ -77,8 +77,9 @@ void app_action(dp::slave::Slave& slave, rs4sim::dp::testing::FakeApplication& a
                                    dp::slave::AcyclicResult::ok(std::span(kData, arg % 9)));
       break;
     case 3:
-      (void)slave.complete_acyclic(dp::slave::AcyclicChannel::kC2,
-                                   dp::slave::AcyclicResult::fail({0x80, arg, 0}));
+      (void)slave.complete_acyclic(
+          dp::slave::AcyclicChannel::kC2,
+          dp::slave::AcyclicResult::fail({0x80, dp::pdu::ErrorCode1{arg}, 0}));
       break;
     default:
       app.acyclic_mode = static_cast<rs4sim::dp::testing::FakeApplication::AcyclicMode>(arg % 3);
