@@ -105,3 +105,44 @@ Result<ErrorMemoryAnswer> decode_error_memory_answer(std::span<const std::uint8_
 }
 
 }  // namespace rs4sim::rs4::protocol
+
+namespace rs4sim::rs4::protocol {
+
+std::vector<std::uint8_t> encode_proxy_begin_answer(const ProxyBeginAnswer& answer) {
+  return {static_cast<std::uint8_t>(AdapterCommandCode::kProxyBegin),
+          static_cast<std::uint8_t>(answer.reason), static_cast<std::uint8_t>(answer.direction),
+          static_cast<std::uint8_t>(answer.factory_default ? 1 : 0)};
+}
+
+Result<ProxyBeginAnswer> decode_proxy_begin_answer(std::span<const std::uint8_t> answer) {
+  if (const auto ec = check_frame(answer, AdapterCommandCode::kProxyBegin, kProxyBeginAnswerSize)) {
+    return ec;
+  }
+  const std::uint8_t reason = answer[1];
+  const std::uint8_t direction = answer[2];
+  const std::uint8_t flags = answer[3];
+  // Reason and direction come together: none with none, something with something.
+  if (reason > static_cast<std::uint8_t>(SyncReason::kRetry) ||
+      direction > static_cast<std::uint8_t>(SyncDirection::kDownload) || flags > 1 ||
+      (reason == 0) != (direction == 0)) {
+    return ProtocolError::kBadAnswerValue;
+  }
+  return ProxyBeginAnswer{static_cast<SyncReason>(reason), static_cast<SyncDirection>(direction),
+                          flags == 1};
+}
+
+std::vector<std::uint8_t> encode_proxy_end_answer(const ProxyEndAnswer& answer) {
+  return {static_cast<std::uint8_t>(AdapterCommandCode::kProxyEnd),
+          static_cast<std::uint8_t>(answer.accepted ? 1 : 0),
+          static_cast<std::uint8_t>(answer.factory_default ? 1 : 0)};
+}
+
+Result<ProxyEndAnswer> decode_proxy_end_answer(std::span<const std::uint8_t> answer) {
+  if (const auto ec = check_frame(answer, AdapterCommandCode::kProxyEnd, kProxyEndAnswerSize)) {
+    return ec;
+  }
+  if (answer[1] > 1 || answer[2] > 1) return ProtocolError::kBadAnswerValue;
+  return ProxyEndAnswer{answer[1] == 1, answer[2] == 1};
+}
+
+}  // namespace rs4sim::rs4::protocol

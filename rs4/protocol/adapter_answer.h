@@ -75,4 +75,42 @@ inline constexpr std::size_t kErrorMemoryAnswerSize = 85;
 std::vector<std::uint8_t> encode_error_memory_answer(const ErrorMemoryAnswer& answer);
 Result<ErrorMemoryAnswer> decode_error_memory_answer(std::span<const std::uint8_t> answer);
 
+// ---- EXTENSION: the proxy's adapter commands ([docs/proxy-protocol.md]) --------------------
+// Why the adapter set Proxy-Request ([RS4 manual §7.1, §7.2]).
+enum class SyncReason : std::uint8_t {
+  kNone = 0,              // no sync requested: nothing was started
+  kPowerUp = 1,           // the RS4 became operational after power-on / adapter start
+  kPcAdapterRemoved = 2,  // the PC adapter was removed: the set may have changed
+  kRetry = 3,             // Proxy-Request again after a failed sync
+};
+// The direction the device wants (it decides, as an IO-Link Data Storage device does).
+enum class SyncDirection : std::uint8_t {
+  kNone = 0,
+  kVerify = 1,    // the device has a set: the proxy compares identity and checksum, then
+                  // releases at once or downloads its stored set (device exchange)
+  kUpload = 2,    // the device's set is new (parametrised through the PC adapter): store it
+  kDownload = 3,  // the device holds factory settings: download the stored set, if any
+};
+// PROFI_CMD_PROXY_BEGIN answer: 98 reason direction flags (4 bytes).
+struct ProxyBeginAnswer {
+  SyncReason reason = SyncReason::kNone;
+  SyncDirection direction = SyncDirection::kNone;
+  bool factory_default = false;  // flags bit 0: the RS4 holds its factory setting
+  friend bool operator==(const ProxyBeginAnswer&, const ProxyBeginAnswer&) = default;
+};
+inline constexpr std::size_t kProxyBeginAnswerSize = 4;
+std::vector<std::uint8_t> encode_proxy_begin_answer(const ProxyBeginAnswer& answer);
+Result<ProxyBeginAnswer> decode_proxy_begin_answer(std::span<const std::uint8_t> answer);
+
+// PROFI_CMD_PROXY_END answer: 99 accepted flags (3 bytes). accepted = 0 when no sync was
+// running (nothing changed); flags bit 0 = the RS4 now holds its factory setting.
+struct ProxyEndAnswer {
+  bool accepted = false;
+  bool factory_default = false;
+  friend bool operator==(const ProxyEndAnswer&, const ProxyEndAnswer&) = default;
+};
+inline constexpr std::size_t kProxyEndAnswerSize = 3;
+std::vector<std::uint8_t> encode_proxy_end_answer(const ProxyEndAnswer& answer);
+Result<ProxyEndAnswer> decode_proxy_end_answer(std::span<const std::uint8_t> answer);
+
 }  // namespace rs4sim::rs4::protocol

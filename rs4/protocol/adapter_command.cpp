@@ -22,6 +22,20 @@ WriteCommand parse_get_rs4_data(std::span<const std::uint8_t> payload) {
   return GetRs4DataCommand{mask, static_cast<ForwardMode>(mode)};
 }
 
+WriteCommand parse_proxy_end(std::span<const std::uint8_t> payload) {
+  // EXTENSION ([docs/proxy-protocol.md]): 99 outcome error_hi error_lo, exactly four bytes.
+  if (payload.size() != 4) return wrong_length(payload[0]);
+  const std::uint8_t outcome = payload[1];
+  const auto error = static_cast<std::uint16_t>((payload[2] << 8U) | payload[3]);
+  const bool succeeded = outcome == static_cast<std::uint8_t>(ProxyOutcome::kSucceeded);
+  const bool failed = outcome == static_cast<std::uint8_t>(ProxyOutcome::kFailed);
+  if ((succeeded && error != 0) || (failed && !is_proxy_end_error(error)) ||
+      (!succeeded && !failed)) {
+    return RejectedCommand{CommandErrorKind::kWrongParameter, payload[0]};
+  }
+  return ProxyEndCommand{succeeded ? ProxyOutcome::kSucceeded : ProxyOutcome::kFailed, error};
+}
+
 template <typename Command>
 WriteCommand single_byte(std::span<const std::uint8_t> payload) {
   if (payload.size() != 1) return wrong_length(payload[0]);
@@ -40,6 +54,12 @@ std::uint8_t forward_mask_bit(std::uint8_t telegram_code) noexcept {
   }
 }
 
+bool is_proxy_end_error(std::uint16_t error) noexcept {
+  // 0x2B01 unknown proxy state, 0x2B09 CRC comparison, 0x2B1x echo CRC, 0x2B2x read repetition
+  const unsigned family = error & 0xFFF0U;
+  return error == 0 || error == 0x2B01 || error == 0x2B09 || family == 0x2B10U || family == 0x2B20U;
+}
+
 Result<WriteCommand> parse_write_command(std::span<const std::uint8_t> payload) {
   if (payload.empty()) return ProtocolError::kEmptyCommand;
   switch (static_cast<AdapterCommandCode>(payload[0])) {
@@ -48,6 +68,8 @@ Result<WriteCommand> parse_write_command(std::span<const std::uint8_t> payload) 
     case AdapterCommandCode::kGetVersion: return single_byte<GetVersionCommand>(payload);
     case AdapterCommandCode::kError: return single_byte<GetLastErrorCommand>(payload);
     case AdapterCommandCode::kGetError: return single_byte<GetErrorMemoryCommand>(payload);
+    case AdapterCommandCode::kProxyBegin: return single_byte<ProxyBeginCommand>(payload);
+    case AdapterCommandCode::kProxyEnd: return parse_proxy_end(payload);
     case AdapterCommandCode::kErrorInTelegram:  // an answer code, not a command
     default: return WriteCommand{Rs4Command{payload}};
   }
@@ -68,6 +90,15 @@ std::vector<std::uint8_t> encode_command(const GetLastErrorCommand&) {
 }
 std::vector<std::uint8_t> encode_command(const GetErrorMemoryCommand&) {
   return {code(AdapterCommandCode::kGetError)};
+}
+
+std::vector<std::uint8_t> encode_command(const ProxyBeginCommand&) {
+  return {code(AdapterCommandCode::kProxyBegin)};
+}
+std::vector<std::uint8_t> encode_command(const ProxyEndCommand& command) {
+  return {code(AdapterCommandCode::kProxyEnd), static_cast<std::uint8_t>(command.outcome),
+          static_cast<std::uint8_t>(command.error >> 8U),
+          static_cast<std::uint8_t>(command.error & 0xFFU)};
 }
 
 std::vector<std::uint8_t> encode_rejection(const RejectedCommand& rejected) {

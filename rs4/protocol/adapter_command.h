@@ -22,6 +22,9 @@ enum class AdapterCommandCode : std::uint8_t {
                             // ([RS4 manual §5.2.2.2])
   kErrorInTelegram = 0x93,  // answer only: "error in telegram" (table 5.2-3)
   kReset = 0x94,            // PROFI_CMD_RESET ([RS4 manual §5.2.2.1])
+  // EXTENSION ([docs/proxy-protocol.md]): the proxy's two adapter commands.
+  kProxyBegin = 0x98,  // PROFI_CMD_PROXY_BEGIN: why a sync is requested, which direction
+  kProxyEnd = 0x99,    // PROFI_CMD_PROXY_END: sync done (OSSD release) or failed
 };
 
 // PROFI_CMD_GET_RS4_DATA byte 6 (table 5.2-5); 0 stops all forwarding.
@@ -56,6 +59,23 @@ struct GetErrorMemoryCommand {  // 91
   friend bool operator==(const GetErrorMemoryCommand&, const GetErrorMemoryCommand&) = default;
 };
 
+// EXTENSION ([docs/proxy-protocol.md]). `98`: the proxy starts the sync the adapter asked for
+// (Proxy-Request → 0); the answer says why and in which direction (adapter_answer.h).
+struct ProxyBeginCommand {
+  friend bool operator==(const ProxyBeginCommand&, const ProxyBeginCommand&) = default;
+};
+enum class ProxyOutcome : std::uint8_t { kSucceeded = 0, kFailed = 1 };
+// `99 outcome error_hi error_lo`: kSucceeded (error 0) releases the OSSD bit; kFailed rolls
+// the RS4 back to factory settings and enters `error` (0, or one of the proxy errors
+// 0x2B01..0x2B2F of [RS4 manual §5.3] table 5.3-3) in the error memory with a diagnosis alarm.
+struct ProxyEndCommand {
+  ProxyOutcome outcome = ProxyOutcome::kSucceeded;
+  std::uint16_t error = 0;
+  friend bool operator==(const ProxyEndCommand&, const ProxyEndCommand&) = default;
+};
+// The adapter error numbers a kFailed PROFI_CMD_PROXY_END may carry (0 = none).
+[[nodiscard]] bool is_proxy_end_error(std::uint16_t error) noexcept;
+
 // Table 5.2-3 byte 6.
 enum class CommandErrorKind : std::uint8_t { kWrongLength = 0, kWrongParameter = 1 };
 
@@ -72,7 +92,8 @@ struct Rs4Command {
 };
 
 using WriteCommand = std::variant<Rs4Command, ResetCommand, GetRs4DataCommand, GetVersionCommand,
-                                  GetLastErrorCommand, GetErrorMemoryCommand, RejectedCommand>;
+                                  GetLastErrorCommand, GetErrorMemoryCommand, ProxyBeginCommand,
+                                  ProxyEndCommand, RejectedCommand>;
 
 // Classifies a reassembled WRITE payload. The only error is kEmptyCommand; a bad
 // adapter command is a RejectedCommand value (it has a prescribed answer).
@@ -84,6 +105,8 @@ std::vector<std::uint8_t> encode_command(const GetRs4DataCommand& command);
 std::vector<std::uint8_t> encode_command(const GetVersionCommand&);
 std::vector<std::uint8_t> encode_command(const GetLastErrorCommand&);
 std::vector<std::uint8_t> encode_command(const GetErrorMemoryCommand&);
+std::vector<std::uint8_t> encode_command(const ProxyBeginCommand&);
+std::vector<std::uint8_t> encode_command(const ProxyEndCommand& command);
 
 // The 0x93 answer (table 5.2-3): 93 kind command.
 std::vector<std::uint8_t> encode_rejection(const RejectedCommand& rejected);
