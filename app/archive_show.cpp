@@ -95,9 +95,12 @@ int run_show(const ArchiveOptions& o) {
     write_version(w, v.version);
     w.field("current", is_current).key("set").begin_object();
     w.field("id", v.set.id).field("size", v.set.blob.size()).field("crc32", crc_hex(v.set.crc32));
-    w.field("stored_summary", v.set.summary).end_object().key("parameters");
+    // The stored summary only when it says something the decoded parameters do not.
+    const std::string summary = decoded.set ? rs4::report::summary_json(*decoded.set) : "";
+    if (v.set.summary != summary) w.field("stored_summary", v.set.summary);
+    w.end_object().key("parameters");
     if (decoded.set) {
-      w.raw(rs4::report::summary_json(*decoded.set));
+      w.raw(summary);
     } else {
       w.null().field("decode_error", decoded.error);
     }

@@ -2,9 +2,9 @@
 // SVG pictures of the RS4 field pairs, for an engineer who compares fields by looking at
 // them: one panel per pair in polar view around the scanner, the protective contour
 // filled red, the warning contour as an orange outline, distance rings with labels. In a
-// diff picture the old set is drawn dashed grey under the new one, with a legend.
+// diff picture the old set is drawn over the new one as dashed grey outlines, with a legend.
 //
-// Geometry [RS4 manual §2.3] (docs/rs4-scanner.md §1): segment n of 529 lies at
+// Geometry [RS4 manual §2.3] [docs/rs4-scanner.md §1]: segment n of 529 lies at
 // −5.04° + n·0.36° (segment 0 = −5.04°, segment 264 = 90° = straight ahead, segment 528 =
 // 185.04°); angles counter-clockwise from +x. The picture puts 90° up, so +x points right.
 // A segment's value is its distance in mm; 0 ("no field") is drawn at the origin.

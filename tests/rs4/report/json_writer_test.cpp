@@ -20,7 +20,7 @@ TEST(JsonWriter, PrettyPrinted) {
 }
 
 TEST(JsonWriter, EscapesStrings) {
-  // Quote, backslash, newline, tab and a control byte (RFC 8259 §7).
+  // Quote, backslash, newline, tab and a control byte (RFC 8259, "Strings").
   EXPECT_EQ(json_quote("a\"b\\c\nd\te\x01"), R"("a\"b\\c\nd\te\u0001")");
 }
 
