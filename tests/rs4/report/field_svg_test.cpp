@@ -78,6 +78,23 @@ TEST(FieldSvg, DiffOverlaysOldDashedWithLegend) {
   EXPECT_NE(svg.find("diff 3 -&gt; 7"), std::string::npos);
 }
 
+TEST(FieldSvg, ExtremeSetsScaleAndStayWellFormed) {
+  // Every warning segment at the 15 m limit: rings every 5 m, 3 of them.
+  auto far = factory_default();
+  for (auto& pair : far.pairs) pair.warning_mm.fill(scanner::kMaxWarningMm);
+  const std::string svg = field_svg(far, "far");
+  ASSERT_NO_THROW(parse(svg));
+  EXPECT_EQ(count(svg, "class=\"ring\""), 4U * 3U);
+  EXPECT_NE(svg.find(">15.0 m</text>"), std::string::npos);
+  // No field at all: one 0.5 m ring, every contour point at the scanner.
+  auto empty = factory_default();
+  for (auto& pair : empty.pairs) pair = {};
+  const std::string none = field_diff_svg(far, empty, {"", "", ""});
+  ASSERT_NO_THROW(parse(none));
+  EXPECT_EQ(count(field_svg(empty, ""), "class=\"ring\""), 4U * 1U);
+  EXPECT_NE(field_svg(empty, "").find(">0.5 m</text>"), std::string::npos);
+}
+
 TEST(FieldSvg, XmlEscape) { EXPECT_EQ(xml_escape("a&<>\"'b"), "a&amp;&lt;&gt;&quot;&apos;b"); }
 
 }  // namespace
