@@ -1,6 +1,7 @@
 #include "rpc/rs4_services.h"
 
 #include "rpc/rs4_state.h"
+#include "rpc/service_support.h"
 #include "rpc/status.h"
 #include "rs4/adapter/cyclic_bytes.h"
 
@@ -17,33 +18,6 @@ namespace scanner = rs4::scanner;
 
 constexpr std::uint64_t kMaxSimulatedMs = 24ULL * 3600 * 1000;  // one call advances ≤ 24 h
 constexpr std::uint32_t kMaxPressMs = 60'000;
-
-using DeviceFn = std::function<grpc::Status(Rs4Device&, dp::TimePoint)>;
-
-std::string station_list(const Rs4Target& target) {
-  std::string out;
-  for (const auto a : target.addresses()) out += (out.empty() ? "" : ", ") + std::to_string(a);
-  return out;
-}
-
-// Checks the address, then runs `fn` with the device on the loop.
-grpc::Status on_device(const Rs4Context& c, std::uint32_t address, const DeviceFn& fn) {
-  if (address > 126) {
-    return invalid_argument("address",
-                            "station address " + std::to_string(address) + " outside 0..126");
-  }
-  grpc::Status result;
-  c.executor.run([&] {
-    auto* device = c.target.device(static_cast<std::uint8_t>(address));
-    if (device == nullptr) {
-      result = not_found("no RS4 at station " + std::to_string(address) +
-                         " (stations: " + station_list(c.target) + ")");
-      return;
-    }
-    result = fn(*device, c.target.now());
-  });
-  return result;
-}
 
 scanner::Point point(const v1::PointMm& p) { return {p.x(), p.y()}; }
 
@@ -129,16 +103,6 @@ std::optional<scanner::RawContour> field_violation(const scanner::FieldPair& pai
     if (!warning && p > 10) raw.mm[s] = static_cast<std::uint16_t>(p / 2);
   }
   return raw;
-}
-
-std::int64_t ns(dp::TimePoint t) {
-  return std::chrono::duration_cast<std::chrono::nanoseconds>(t.time_since_epoch()).count();
-}
-
-grpc::Status needs_simulated_clock() {
-  return failed_precondition("CLOCK", "simulated time",
-                             "this run is on the real-time clock; start it with the manual "
-                             "clock (rs4sim demo, or --clock sim) to control time");
 }
 
 }  // namespace
@@ -340,7 +304,7 @@ grpc::Status ObservationService::GetContour(grpc::ServerContext*, const v1::Stat
 
 grpc::Status SimTimeService::Now(grpc::ServerContext*, const v1::Empty*, v1::TimeResponse* out) {
   c_.executor.run([&] {
-    out->set_now_ns(ns(c_.target.now()));
+    out->set_now_ns(to_ns(c_.target.now()));
     out->set_simulated(c_.target.simulated());
   });
   return grpc::Status::OK;
@@ -359,7 +323,7 @@ grpc::Status SimTimeService::Advance(grpc::ServerContext*, const v1::AdvanceRequ
       return;
     }
     c_.target.run_until([] { return false; }, std::chrono::milliseconds(in->duration_ms()));
-    out->set_now_ns(ns(c_.target.now()));
+    out->set_now_ns(to_ns(c_.target.now()));
     out->set_simulated(true);
   });
   return result;
@@ -391,7 +355,7 @@ grpc::Status SimTimeService::RunUntil(grpc::ServerContext*, const v1::RunUntilRe
     };
     out->set_reached(holds() ||
                      c_.target.run_until(holds, std::chrono::milliseconds(in->timeout_ms())));
-    out->set_now_ns(ns(c_.target.now()));
+    out->set_now_ns(to_ns(c_.target.now()));
     return grpc::Status::OK;
   });
 }

@@ -56,6 +56,23 @@ class ObservationService final : public v1::Observation::Service {
   Rs4Context c_;
 };
 
+class FaultsService final : public v1::Faults::Service {
+ public:
+  explicit FaultsService(Rs4Context context) : c_(context) {}
+  grpc::Status InjectBusFault(grpc::ServerContext*, const v1::BusFaultRequest* in,
+                              v1::BusFaultResponse* out) override;
+  grpc::Status ClearBusFaults(grpc::ServerContext*, const v1::Empty*, v1::Empty*) override;
+  grpc::Status SetSilenced(grpc::ServerContext*, const v1::SetSilencedRequest* in,
+                           v1::Empty*) override;
+  grpc::Status InjectSafetyFault(grpc::ServerContext*, const v1::SafetyFaultRequest* in,
+                                 v1::Empty*) override;
+  grpc::Status ClearSafetyFaults(grpc::ServerContext*, const v1::StationRequest* in,
+                                 v1::Empty*) override;
+
+ private:
+  Rs4Context c_;
+};
+
 class SimTimeService final : public v1::SimTime::Service {
  public:
   explicit SimTimeService(Rs4Context context) : c_(context) {}

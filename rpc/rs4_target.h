@@ -3,6 +3,7 @@
 // devices by station address and the clock. Every call is made on the loop thread
 // (through rpc::Executor), so the cores see one thread only.
 
+#include "dp/link/memory_bus.h"
 #include "dp/time/clock.h"
 #include "rs4/device/rs4_device.h"
 
@@ -24,6 +25,8 @@ class Rs4Target {
   // Simulated runs: advances time, checking `done` after every bus event, until it holds
   // or `limit` passed; returns done().
   virtual bool run_until(const std::function<bool()>& done, dp::Duration limit) = 0;
+  // The simulated bus for bus faults; nullptr on a real link.
+  virtual dp::link::MemoryBus* bus() = 0;
   // Runs `f` on the loop after `delay` (simulated runs: advances time by `delay` first).
   virtual void after(dp::Duration delay, std::function<void()> f) = 0;
 

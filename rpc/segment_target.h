@@ -17,6 +17,7 @@ class SegmentTarget final : public Rs4Target {
   [[nodiscard]] bool simulated() const override { return true; }
   bool run_until(const std::function<bool()>& done, dp::Duration limit) override;
   void after(dp::Duration delay, std::function<void()> f) override;
+  dp::link::MemoryBus* bus() override { return &segment_.bus(); }
 
  private:
   rs4::device::Rs4Segment& segment_;

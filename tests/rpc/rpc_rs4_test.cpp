@@ -35,11 +35,12 @@ class RpcRs4Test : public ::testing::Test {
     segment_.power_on();
     loop_ = std::thread([this] { io_.run(); });
     server_ = std::make_unique<RpcServer>(
-        ServerOptions{}, std::vector<grpc::Service*>{&device_, &observation_, &time_});
+        ServerOptions{}, std::vector<grpc::Service*>{&device_, &observation_, &time_, &faults_});
     channel_ = grpc::CreateChannel(server_->address(), grpc::InsecureChannelCredentials());
     device_stub_ = v1::Device::NewStub(channel_);
     observation_stub_ = v1::Observation::NewStub(channel_);
     time_stub_ = v1::SimTime::NewStub(channel_);
+    faults_stub_ = v1::Faults::NewStub(channel_);
   }
   void TearDown() override {
     server_->shutdown();
@@ -65,6 +66,13 @@ class RpcRs4Test : public ::testing::Test {
     v1::DeviceState out;
     EXPECT_TRUE(observation_stub_->GetState(&ctx, req, &out).ok());
     return out;
+  }
+  void advance(std::uint64_t ms) {
+    grpc::ClientContext ctx;
+    v1::AdvanceRequest req;
+    req.set_duration_ms(ms);
+    v1::TimeResponse t;
+    ASSERT_TRUE(time_stub_->Advance(&ctx, req, &t).ok());
   }
   void press_restart(std::uint32_t ms) {
     grpc::ClientContext ctx;
@@ -94,11 +102,13 @@ class RpcRs4Test : public ::testing::Test {
   DeviceService device_{{target_, executor_}};
   ObservationService observation_{{target_, executor_}};
   SimTimeService time_{{target_, executor_}};
+  FaultsService faults_{{target_, executor_}};
   std::unique_ptr<RpcServer> server_;
   std::shared_ptr<grpc::Channel> channel_;
   std::unique_ptr<v1::Device::Stub> device_stub_;
   std::unique_ptr<v1::Observation::Stub> observation_stub_;
   std::unique_ptr<v1::SimTime::Stub> time_stub_;
+  std::unique_ptr<v1::Faults::Stub> faults_stub_;
 };
 
 TEST_F(RpcRs4Test, ListensOnLoopbackOnly) {
@@ -259,6 +269,47 @@ TEST_F(RpcRs4Test, InjectedFaultSwitchesTheOssdOff) {
   const auto s = state();
   EXPECT_TRUE(s.input().error());
   ASSERT_EQ(s.faults_present_size(), 1);
+}
+
+TEST_F(RpcRs4Test, SafetyFaultPassivatesTheHostAndSilenceDropsTheConnection) {
+  boot();
+  const auto passivations = [this] {
+    std::uint64_t n = 0;
+    executor_.run([&] { n = segment_.fhost().counters().passivations; });
+    return n;
+  };
+  const auto before = passivations();
+  v1::Empty e;
+  {
+    grpc::ClientContext ctx;
+    v1::SafetyFaultRequest req;
+    req.set_address(4);
+    req.set_fault(v1::SAFETY_FAULT_CORRUPT_CRC2);
+    req.set_count(1);
+    ASSERT_TRUE(faults_stub_->InjectSafetyFault(&ctx, req, &e).ok());
+  }
+  advance(200);
+  EXPECT_EQ(passivations(), before + 1);  // a CRC2 error passivates [IEC 61784-3-3 CRC]
+  {
+    grpc::ClientContext ctx;
+    v1::SetSilencedRequest req;
+    req.set_address(4);
+    req.set_silenced(true);
+    ASSERT_TRUE(faults_stub_->SetSilenced(&ctx, req, &e).ok());
+  }
+  advance(2000);  // beyond the 200 ms DP watchdog of the segment's master
+  EXPECT_FALSE(state().connected());
+  {
+    grpc::ClientContext c2;
+    v1::BusFaultRequest req;
+    req.set_address(4);
+    req.set_kind(v1::BUS_FAULT_KIND_DELAY);
+    req.set_direction(v1::DIRECTION_TO_STATION);
+    req.set_count(1);
+    v1::BusFaultResponse r;
+    const auto s = faults_stub_->InjectBusFault(&c2, req, &r);
+    EXPECT_EQ(bad_field(s), "delay_ms");
+  }
 }
 
 TEST_F(RpcRs4Test, StandardHealthServiceAnswersServing) {
