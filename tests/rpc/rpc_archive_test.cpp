@@ -1,0 +1,183 @@
+// The Archive service on a real gRPC server on loopback in front of a real SQLite archive.
+// Known answers: the factory set's pair 2 protective field is 1500 mm (docs/rs4-scanner.md),
+// so raising segments 100..140 to 1850 mm is "+350 mm" on exactly that range.
+#include "google/rpc/error_details.pb.h"
+#include "google/rpc/status.pb.h"
+#include "rpc/archive_service.h"
+#include "rpc/server.h"
+#include "rs4/scanner/parameter_codec.h"
+#include "rs4sim/v1/archive_service.grpc.pb.h"
+#include "storage/crc32.h"
+#include "storage/sqlite_archive.h"
+#include "tests/storage/archive_test_support.h"
+
+#include <boost/asio/executor_work_guard.hpp>
+#include <boost/asio/io_context.hpp>
+#include <gtest/gtest.h>
+
+#include <grpcpp/create_channel.h>
+#include <grpcpp/security/credentials.h>
+
+#include <thread>
+
+namespace rs4sim::rpc {
+namespace {
+
+const storage::StationKey kStation{"default", 4};
+
+class RpcArchiveTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    archive_ = storage::SqliteArchive::open(dir_.file("archive.sqlite3")).value();
+    service_ = std::make_unique<ArchiveService>(*archive_, executor_,
+                                                [] { return storage::testing::at_ms(5000); });
+    loop_ = std::thread([this] { io_.run(); });
+    server_ =
+        std::make_unique<RpcServer>(ServerOptions{}, std::vector<grpc::Service*>{service_.get()});
+    stub_ = v1::Archive::NewStub(
+        grpc::CreateChannel(server_->address(), grpc::InsecureChannelCredentials()));
+  }
+  void TearDown() override {
+    server_->shutdown();
+    work_.reset();
+    loop_.join();
+  }
+  storage::VersionId store(const rs4::scanner::ParameterSet& set, std::int64_t at) {
+    const auto blob = rs4::scanner::encode(set);
+    storage::StoreRequest r;
+    r.station = kStation;
+    r.device_type = "RS4/PROFIsafe";
+    r.serial_number = "74565";
+    r.blob = blob;
+    r.crc32 = storage::crc32(blob);
+    r.at = storage::testing::at_ms(at);
+    return archive_->store(r).value().id;
+  }
+
+  storage::testing::TempDir dir_;
+  std::unique_ptr<storage::SqliteArchive> archive_;
+  boost::asio::io_context io_;
+  std::optional<boost::asio::executor_work_guard<boost::asio::io_context::executor_type>> work_{
+      io_.get_executor()};
+  AsioExecutor executor_{io_};
+  std::unique_ptr<ArchiveService> service_;
+  std::thread loop_;
+  std::unique_ptr<RpcServer> server_;
+  std::unique_ptr<v1::Archive::Stub> stub_;
+};
+
+std::string bad_field(const grpc::Status& status) {
+  google::rpc::Status rich;
+  google::rpc::BadRequest bad;
+  if (!rich.ParseFromString(status.error_details()) || rich.details_size() != 1 ||
+      !rich.details(0).UnpackTo(&bad) || bad.field_violations_size() != 1) {
+    return "?";
+  }
+  return bad.field_violations(0).field();
+}
+
+TEST_F(RpcArchiveTest, HistoryDiffRestoreAndVerify) {
+  const auto first = store(rs4::scanner::factory_default(), 1000);
+  auto changed = rs4::scanner::factory_default();
+  for (std::size_t n = 100; n <= 140; ++n) changed.pairs[1].protective_mm[n] = 1850;
+  const auto second = store(changed, 2000);
+
+  grpc::ClientContext c1;
+  v1::ListStationsResponse stations;
+  ASSERT_TRUE(stub_->ListStations(&c1, v1::ListStationsRequest{}, &stations).ok());
+  ASSERT_EQ(stations.stations_size(), 1);
+  EXPECT_EQ(stations.stations(0).key().address(), 4U);
+  EXPECT_EQ(stations.stations(0).current_version_id(), static_cast<std::uint64_t>(second));
+
+  grpc::ClientContext c2;
+  v1::StationKey key;
+  key.set_address(4);  // bus "" = "default"
+  v1::HistoryResponse history;
+  ASSERT_TRUE(stub_->History(&c2, key, &history).ok());
+  ASSERT_EQ(history.versions_size(), 2);
+  EXPECT_EQ(history.versions(0).number(), 1U);
+  EXPECT_EQ(history.versions(1).source(), "upload");
+  EXPECT_EQ(history.versions(1).size(), 8507U);
+
+  grpc::ClientContext c3;
+  v1::DiffRequest d;
+  d.set_old_version_id(static_cast<std::uint64_t>(first));
+  d.set_new_version_id(static_cast<std::uint64_t>(second));
+  v1::DiffResponse diff;
+  ASSERT_TRUE(stub_->Diff(&c3, d, &diff).ok());
+  EXPECT_FALSE(diff.identical());
+  EXPECT_EQ(diff.text(), "pair 2 protective: segments 100-140 changed, max +350 mm\n");
+
+  grpc::ClientContext c4;
+  v1::VersionRequest g;
+  g.set_version_id(static_cast<std::uint64_t>(first));
+  v1::VersionDetail detail;
+  ASSERT_TRUE(stub_->GetVersion(&c4, g, &detail).ok());
+  EXPECT_EQ(detail.blob().size(), 8507U);
+  EXPECT_EQ(detail.summary_json().find("password"), std::string::npos);
+
+  grpc::ClientContext c5;
+  v1::RestoreRequest r;
+  r.set_version_id(static_cast<std::uint64_t>(first));
+  r.set_note("back to factory");
+  v1::VersionInfo restored;
+  ASSERT_TRUE(stub_->Restore(&c5, r, &restored).ok());
+  EXPECT_EQ(restored.number(), 3U);
+  EXPECT_EQ(restored.source(), "restore");
+  EXPECT_TRUE(restored.pending_download());
+  EXPECT_EQ(restored.restored_from(), static_cast<std::uint64_t>(first));
+  EXPECT_EQ(restored.stored_at_ms(), 5000);
+
+  grpc::ClientContext c6;
+  v1::VerifyResponse verify;
+  ASSERT_TRUE(stub_->Verify(&c6, v1::VerifyRequest{}, &verify).ok());
+  EXPECT_TRUE(verify.ok());
+}
+
+TEST_F(RpcArchiveTest, ExportImportRoundTripAndRefusals) {
+  store(rs4::scanner::factory_default(), 1000);
+  grpc::ClientContext c1;
+  v1::ExportRequest e;
+  e.set_format(v1::EXPORT_FORMAT_JSON);
+  v1::ExportResponse file;
+  ASSERT_TRUE(stub_->Export(&c1, e, &file).ok());
+  EXPECT_NE(file.file().find("\"stations\""), std::string::npos);
+
+  grpc::ClientContext c2;
+  v1::ImportRequest i;
+  i.set_format(v1::EXPORT_FORMAT_JSON);
+  i.set_file(file.file());
+  v1::ImportResponse imported;
+  ASSERT_TRUE(stub_->Import(&c2, i, &imported).ok());
+  EXPECT_EQ(imported.stations(), 1U);
+  EXPECT_EQ(imported.versions(), 1U);
+  EXPECT_EQ(imported.new_parameter_sets(), 0U);  // deduplicated by content
+
+  grpc::ClientContext c3;
+  i.set_file("{ not json");
+  const auto corrupt = stub_->Import(&c3, i, &imported);
+  EXPECT_EQ(corrupt.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad_field(corrupt), "file");
+
+  grpc::ClientContext c4;
+  v1::VersionRequest g;
+  g.set_version_id(999);
+  v1::VersionDetail detail;
+  EXPECT_EQ(stub_->GetVersion(&c4, g, &detail).error_code(), grpc::StatusCode::NOT_FOUND);
+  grpc::ClientContext c5;
+  g.set_version_id(0);
+  EXPECT_EQ(bad_field(stub_->GetVersion(&c5, g, &detail)), "version_id");
+  grpc::ClientContext c6;
+  v1::StationKey key;
+  key.set_address(200);
+  v1::HistoryResponse history;
+  EXPECT_EQ(bad_field(stub_->History(&c6, key, &history)), "address");
+  grpc::ClientContext c7;
+  key.set_address(9);
+  EXPECT_EQ(stub_->History(&c7, key, &history).error_code(), grpc::StatusCode::NOT_FOUND);
+  // The archive is unchanged by the refusals: two versions (the store and the import).
+  EXPECT_EQ(archive_->history(kStation).value().size(), 2U);
+}
+
+}  // namespace
+}  // namespace rs4sim::rpc
