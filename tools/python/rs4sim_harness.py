@@ -1,0 +1,143 @@
+"""A Python test harness for a running rs4sim (docs/rpc.md).
+
+    from rs4sim_harness import Rs4
+    rs4 = Rs4("127.0.0.1:50051", station=4)
+    rs4.boot()                       # data exchange, RS4 measuring, restart pulse, OSSD on
+    obstacle = rs4.violate_field()   # the protective field
+    assert rs4.run_until("OSSD_OFF", 0.5)
+
+Needs python3-grpcio and python3-grpc-tools (Debian 12): the stubs are compiled from the
+repository's .proto files into a temporary directory at import, nothing is downloaded.
+Simulated time (advance, run_until) works where rs4sim runs on the manual clock
+(`rs4sim run --link memory --clock sim --grpc ...`).
+"""
+
+import os
+import sys
+import tempfile
+
+import grpc
+from grpc_tools import protoc
+
+_REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+_PROTO_ROOT = os.path.join(_REPO, "rpc", "proto")
+_PROTOS = [
+    "rs4sim/v1/rs4.proto",
+    "rs4sim/v1/archive_service.proto",
+    "google/rpc/status.proto",
+    "google/rpc/error_details.proto",
+]
+
+
+def _compile_stubs():
+    out = tempfile.mkdtemp(prefix="rs4sim_stubs_")
+    well_known = os.path.join(os.path.dirname(protoc.__file__), "_proto")
+    args = ["protoc", f"-I{_PROTO_ROOT}", f"-I{well_known}", "-I/usr/include",
+            f"--python_out={out}", f"--grpc_python_out={out}"] + _PROTOS
+    if protoc.main(args) != 0:
+        raise RuntimeError("protoc failed on " + _PROTO_ROOT)
+    for package in ("rs4sim", "rs4sim/v1", "google", "google/rpc"):
+        open(os.path.join(out, package, "__init__.py"), "a").close()
+    sys.path.insert(0, out)
+
+
+_compile_stubs()
+# google.rpc must come from the compiled stubs, not an installed googleapis package.
+sys.modules.pop("google.rpc", None)
+from rs4sim.v1 import rs4_pb2 as pb  # noqa: E402
+from rs4sim.v1 import rs4_pb2_grpc as pb_grpc  # noqa: E402
+from rs4sim.v1 import archive_service_pb2 as archive_pb  # noqa: E402,F401
+from rs4sim.v1 import archive_service_pb2_grpc as archive_grpc  # noqa: E402
+from google.rpc import status_pb2, error_details_pb2  # noqa: E402
+
+
+def error_details(error):
+    """(code name, [(field, description)], [(type, subject, description)]) of a failed call."""
+    violations, preconditions = [], []
+    for key, value in error.trailing_metadata() or ():
+        if key != "grpc-status-details-bin":
+            continue
+        status = status_pb2.Status.FromString(value)
+        for any_detail in status.details:
+            bad = error_details_pb2.BadRequest()
+            failure = error_details_pb2.PreconditionFailure()
+            if any_detail.Unpack(bad):
+                violations += [(v.field, v.description) for v in bad.field_violations]
+            elif any_detail.Unpack(failure):
+                preconditions += [(v.type, v.subject, v.description) for v in failure.violations]
+    return error.code().name, violations, preconditions
+
+
+class Rs4:
+    """One RS4 of a running rs4sim, by station address."""
+
+    def __init__(self, address, station=4, timeout=10.0):
+        self.channel = grpc.insecure_channel(address)
+        grpc.channel_ready_future(self.channel).result(timeout=timeout)
+        self.station = station
+        self.device = pb_grpc.DeviceStub(self.channel)
+        self.observation = pb_grpc.ObservationStub(self.channel)
+        self.time = pb_grpc.SimTimeStub(self.channel)
+        self.faults = pb_grpc.FaultsStub(self.channel)
+        self.archive = archive_grpc.ArchiveStub(self.channel)
+
+    # ---- time ----------------------------------------------------------------------------
+    def now(self):
+        return self.time.Now(pb.Empty()).now_ns / 1e9
+
+    def advance(self, seconds):
+        return self.time.Advance(pb.AdvanceRequest(duration_ms=int(seconds * 1000))).now_ns / 1e9
+
+    def run_until(self, condition, timeout_s):
+        """condition: DATA_EXCHANGE, OSSD_ON, OSSD_OFF, PROXY_REQUEST, RS4_MEASURING."""
+        req = pb.RunUntilRequest(address=self.station, timeout_ms=int(timeout_s * 1000),
+                                 condition=pb.Condition.Value("CONDITION_" + condition))
+        return self.time.RunUntil(req).reached
+
+    # ---- observation -----------------------------------------------------------------------
+    def state(self):
+        return self.observation.GetState(pb.StationRequest(address=self.station))
+
+    def ossd(self):
+        return self.state().input.ossd
+
+    # ---- the world and the user's hands ----------------------------------------------------
+    def violate_field(self, field="protective"):
+        kind = pb.FieldKind.Value("FIELD_KIND_" + field.upper())
+        return self.device.ViolateField(
+            pb.ViolateFieldRequest(address=self.station, field=kind)).obstacle_id
+
+    def add_circle(self, x_mm, y_mm, radius_mm):
+        shape = pb.CircleShape(centre=pb.PointMm(x=x_mm, y=y_mm), radius=radius_mm)
+        return self.device.AddObstacle(
+            pb.AddObstacleRequest(address=self.station, circle=shape)).obstacle_id
+
+    def remove(self, obstacle_id):
+        self.device.RemoveObstacle(
+            pb.RemoveObstacleRequest(address=self.station, obstacle_id=obstacle_id))
+
+    def press_restart(self, ms=200):
+        self.device.PressRestart(pb.PressRestartRequest(address=self.station, duration_ms=ms))
+
+    def set_contamination(self, percent):
+        self.device.SetContamination(
+            pb.SetContaminationRequest(address=self.station, percent=percent))
+
+    def inject_fault(self, name):
+        """name: OSSD_CROSS_CIRCUIT, MOTOR_SPEED, INTERNAL_HARDWARE, DAZZLED."""
+        self.device.InjectFault(
+            pb.FaultRequest(address=self.station, fault=pb.Fault.Value("FAULT_" + name)))
+
+    def set_pc_adapter(self, attached):
+        self.device.SetPcAdapter(pb.SetPcAdapterRequest(address=self.station, attached=attached))
+
+    def boot(self, timeout_s=60):
+        """Power-up to OSSD on: data exchange, RS4 measuring, the start-interlock restart pulse."""
+        if not self.run_until("DATA_EXCHANGE", timeout_s):
+            raise AssertionError("no data exchange")
+        if not self.run_until("RS4_MEASURING", timeout_s):
+            raise AssertionError("the RS4 did not reach measuring")
+        if not self.run_until("OSSD_ON", 0.5):
+            self.press_restart(200)
+        if not self.run_until("OSSD_ON", 2):
+            raise AssertionError("OSSD stays off after the restart pulse")
