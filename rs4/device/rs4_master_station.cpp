@@ -40,7 +40,8 @@ struct Rs4MasterStation::Slave {
   profisafe::FHost fhost;
   std::uint8_t output = 0;
   Rs4SlaveView published;  // what the last events said
-  std::error_code reason;  // the last fault reported by the master, for DpStateChanged
+  std::error_code reason;  // the last fault reported by the master, cleared in data exchange
+  std::error_code published_reason;
   std::uint8_t f_diagnosis = 0;
 
   Slave(Rs4MasterEntry e, std::uint8_t out)
@@ -132,8 +133,8 @@ std::optional<Rs4SlaveView> Rs4MasterStation::view(std::uint8_t address) const {
   v.address = address;
   if (const auto st = master_->slave_status(address)) {
     v.dp_state = st->state;
-    v.dp_error = st->last_error;
   }
+  v.dp_error = s->reason;
   v.safety = s->fhost.state();
   v.f_diagnosis = s->f_diagnosis;
   v.input_byte = input_byte(address);
@@ -165,8 +166,8 @@ bool Rs4MasterStation::set_proxy_enable(std::uint8_t address, bool on) {
   const Slave* s = find(address);
   if (s == nullptr) return false;
   const auto bit = adapter::kOutputProxyEnable;
-  return set_output_byte(address, static_cast<std::uint8_t>(on ? (s->output | bit)
-                                                                : (s->output & ~bit)));
+  return set_output_byte(address,
+                         static_cast<std::uint8_t>(on ? (s->output | bit) : (s->output & ~bit)));
 }
 
 bool Rs4MasterStation::ack_rei(std::uint8_t address) {
@@ -251,9 +252,10 @@ void Rs4MasterStation::publish_changes(Slave& s) {
   if (!now_view) return;
   const Rs4SlaveView& v = *now_view;
   Rs4SlaveView& old = s.published;
-  if (v.dp_state != old.dp_state) {
-    events_.push_back(DpStateChanged{v.address, v.dp_state, v.data_exchange() ? std::error_code{}
-                                                                              : s.reason});
+  // Data exchange entered/left, or a new start-up fault: not every start-up step.
+  if (v.data_exchange() != old.data_exchange() || s.reason != s.published_reason) {
+    events_.push_back(DpStateChanged{v.address, v.dp_state, s.reason});
+    s.published_reason = s.reason;
   }
   if (v.safety != old.safety) events_.push_back(SafetyStateChanged{v.address, v.safety});
   if (v.f_diagnosis != old.f_diagnosis) {

@@ -45,7 +45,7 @@ struct Rs4MasterStationConfig {
 struct Rs4SlaveView {
   std::uint8_t address = 0;
   dp::master::PollState dp_state = dp::master::PollState::kStatusRequest;
-  std::error_code dp_error;  // the last start-up / supervision fault (kept after recovery)
+  std::error_code dp_error;  // the current start-up / supervision fault, empty in data exchange
   profisafe::FHostState safety = profisafe::FHostState::kStartup;
   std::uint8_t f_diagnosis = 0;  // RS4 PROFIsafe diagnosis number, 0 = none ([RS4 manual §6.3])
   std::uint8_t input_byte = 0;   // unwrapped, 0 while passivated ([RS4 manual §5.1.1])
@@ -56,10 +56,13 @@ struct Rs4SlaveView {
 };
 
 // ---- events (drained with take_events) ---------------------------------------------------
+// Data exchange entered or left, or the start-up failed for a new reason (not every
+// start-up step: those repeat every cycle while an RS4 is not ready).
 struct DpStateChanged {
   std::uint8_t address = 0;
   dp::master::PollState state = dp::master::PollState::kStatusRequest;
   std::error_code reason;  // why it left data exchange / why the start-up failed; may be empty
+  [[nodiscard]] bool data_exchange() const { return state == dp::master::PollState::kDataExchange; }
 };
 struct SafetyStateChanged {
   std::uint8_t address = 0;

@@ -2,10 +2,11 @@
 // addresses 4 and 5 on the memory bus, on the manual clock: data exchange, F-hosts in RUN,
 // Proxy-Request after the RS4's boot, the proxy seam (Proxy-Enable, record write/read), and
 // the RS4's PROFIsafe diagnosis read from the Slave_Diag ([RS4 manual §5.1, §5.2, §6.3, §7.1]).
+#include "rs4/device/rs4_master_station.h"
+
 #include "dp/link/memory_bus.h"
 #include "rs4/adapter/cyclic_bytes.h"
 #include "rs4/device/rs4_device.h"
-#include "rs4/device/rs4_master_station.h"
 #include "rs4/protocol/block.h"
 
 #include <gtest/gtest.h>
@@ -153,11 +154,11 @@ TEST(Rs4MasterStation, WrongFDestAddShowsDiagnosis66AndNoDataExchange) {
 
 TEST(Rs4MasterStation, LostRs4PassivatesItsFHost) {
   Segment s(station_config({4, 5}));
-  ASSERT_TRUE(s.run_until([&] { return s.station.view(5)->safety == profisafe::FHostState::kRun; },
-                          5s));
+  ASSERT_TRUE(
+      s.run_until([&] { return s.station.view(5)->safety == profisafe::FHostState::kRun; }, 5s));
   s.devices[1]->power_off(s.clock.now());
-  ASSERT_TRUE(s.run_until([&] { return s.station.view(5)->safety != profisafe::FHostState::kRun; },
-                          1s));
+  ASSERT_TRUE(
+      s.run_until([&] { return s.station.view(5)->safety != profisafe::FHostState::kRun; }, 1s));
   ASSERT_TRUE(s.run_until([&] { return !s.station.in_data_exchange(5); }, 2s));
   EXPECT_EQ(s.station.view(4)->safety, profisafe::FHostState::kRun);  // the other one runs on
   const auto dp = s.events_of<DpStateChanged>(5);
