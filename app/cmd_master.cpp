@@ -91,6 +91,10 @@ rs4::device::Rs4MasterStationConfig station_config(const MasterCliOptions& o) {
     rs4::device::Rs4MasterOptions r;
     // [RS4 manual §4.5]: 0..126 on the switches; the master polls 0..125.
     r.address = checked(s, 0, 125, "--slave");
+    for (const auto& earlier : c.slaves) {
+      if (earlier.address == r.address)
+        throw UsageError("--slave " + std::to_string(s) + " given twice");
+    }
     if (r.address == c.master_address) {
       throw UsageError("--slave " + std::to_string(s) + ": that is the master's --address");
     }
