@@ -6,6 +6,7 @@
 //   rs4sim master --slave 4 --link udp --listen 127.0.0.1:5000 --peer 127.0.0.1:5001
 //   rs4sim master --slave 4 --slave 5 --link memory --json        (simulated RS4s, simulated time)
 #include "app/command.h"
+#include "app/link_cli.h"
 #include "app/master_service.h"
 #include "dp/master/master_config.h"
 #include "rs4/adapter/cyclic_bytes.h"
@@ -145,14 +146,7 @@ Action setup(CLI::App& cmd) {
                  "memory: boot time of the simulated RS4s in ms (default 30000)")
       ->check(CLI::Range(0, 600000));
   cmd.add_flag("--json", o->service.json, "one JSON object per line for every event");
-  cmd.add_option("--link", l.link, "memory | pty | serial | udp")
-      ->check(CLI::IsMember({"memory", "pty", "serial", "udp"}));
-  cmd.add_option("--port", l.port, "serial device (--link serial), e.g. a pty path");
-  cmd.add_option("--baud", l.baud, "9.6k … 12M (bus timing; serial/pty line rate)");
-  cmd.add_option("--listen", l.listen, "HOST:PORT to receive on (--link udp)");
-  cmd.add_option("--peer", l.peer, "HOST:PORT of the RS4's process (--link udp)");
-  cmd.add_option("--duration", l.duration, "seconds to run (0 = until Ctrl-C; memory: simulated)")
-      ->check(CLI::NonNegativeNumber);
+  add_link_options(cmd, l, "the RS4's process");
   return [o]() -> int { return run(*o); };
 }
 
