@@ -8,7 +8,13 @@ trap 'rm -rf "$dir"' EXIT
 for sig in TERM INT; do
   "$rs4sim" master --slave 4 --slave 5 --link pty >"$dir/out" 2>"$dir/err" &
   pid=$!
-  sleep 1
+  # the banner (second line) is printed just before the signal handlers are installed
+  i=0
+  while [ "$(wc -l <"$dir/out")" -lt 2 ] && [ $i -lt 100 ]; do
+    sleep 0.1
+    i=$((i + 1))
+  done
+  sleep 0.5
   kill -s "$sig" "$pid"
   wait "$pid"
   rc=$?

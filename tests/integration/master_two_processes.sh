@@ -1,10 +1,12 @@
 #!/bin/sh
-# `rs4sim run --device rs4 --link pty` and `rs4sim master --link serial --port <its pty>` as
-# two processes on the wall clock: the master reaches data exchange, PROFIsafe RUN and sees
-# Proxy-Request after the RS4's (shortened) boot; checked on its --json lines (docs/master.md).
-# Usage: master_two_processes.sh RS4SIM
+# `rs4sim run --device rs4` and `rs4sim master` as two processes on the wall clock, over a
+# pty pair (`run --link pty` prints its path, `master --link serial --port <path>`) or UDP on
+# localhost: the master reaches data exchange, PROFIsafe RUN and sees Proxy-Request after the
+# RS4's (shortened) boot; checked on its --json lines (docs/master.md).
+# Usage: master_two_processes.sh RS4SIM [pty|udp]
 set -u
 rs4sim=$1
+link=${2:-pty}
 dir=$(mktemp -d)
 run_pid=
 cleanup() {
@@ -13,22 +15,33 @@ cleanup() {
 }
 trap cleanup EXIT
 
-"$rs4sim" run --device rs4 --address 4 --link pty --boot-time 1000 --duration 60 \
-  >"$dir/run.out" 2>"$dir/run.err" &
-run_pid=$!
-i=0
-while [ ! -s "$dir/run.out" ] && [ $i -lt 100 ]; do
-  sleep 0.1
-  i=$((i + 1))
-done
-path=$(head -n 1 "$dir/run.out")
-case "$path" in
-  /dev/*) ;;
-  *) echo "rs4sim run printed no pty path"; cat "$dir/run.err"; exit 1 ;;
-esac
+if [ "$link" = udp ]; then
+  # ports from the process id, in the dynamic range
+  a=$((49152 + ($$ * 2) % 16000))
+  b=$((a + 1))
+  "$rs4sim" run --device rs4 --address 4 --link udp --listen 127.0.0.1:$a --peer 127.0.0.1:$b \
+    --boot-time 1000 --duration 60 >"$dir/run.out" 2>"$dir/run.err" &
+  run_pid=$!
+  set -- --link udp --listen 127.0.0.1:$b --peer 127.0.0.1:$a
+else
+  "$rs4sim" run --device rs4 --address 4 --link pty --boot-time 1000 --duration 60 \
+    >"$dir/run.out" 2>"$dir/run.err" &
+  run_pid=$!
+  i=0
+  while [ ! -s "$dir/run.out" ] && [ $i -lt 100 ]; do
+    sleep 0.1
+    i=$((i + 1))
+  done
+  path=$(head -n 1 "$dir/run.out")
+  case "$path" in
+    /dev/*) ;;
+    *) echo "rs4sim run printed no pty path"; cat "$dir/run.err"; exit 1 ;;
+  esac
+  set -- --link serial --port "$path"
+fi
 
 # Generous watchdogs: the machine running the tests may be loaded.
-"$rs4sim" master --slave 4 --link serial --port "$path" --json --duration 8 \
+"$rs4sim" master --slave 4 "$@" --json --duration 8 \
   --f-wd-time 500 --dp-watchdog 1000 >"$dir/master.out" 2>"$dir/master.err"
 rc=$?
 cat "$dir/master.out"
@@ -44,7 +57,7 @@ expect() {
     fail=1
   fi
 }
-expect '"event":"start","link":"serial","rs4":\[4\]'
+expect '"event":"start","link":"[a-z]*","rs4":\[4\]'
 expect '"station":4,"event":"dp","state":"DataExchange","data_exchange":true'
 expect '"station":4,"event":"profisafe","state":"run"'
 expect '"station":4,"event":"input",.*"proxy_request":true'
