@@ -69,7 +69,7 @@ dp::master::MasterConfig master_config(const Rs4MasterStationConfig& c,
 }  // namespace
 
 Rs4MasterStation::Rs4MasterStation(const Rs4MasterStationConfig& config)
-    : auto_ack_rei_(config.auto_ack_rei) {
+    : auto_ack_rei_(config.auto_ack_rei), keep_master_events_(config.keep_master_events) {
   if (config.slaves.empty()) throw std::invalid_argument("no RS4 configured");
   std::vector<dp::master::SlaveEntry> entries;
   for (const auto& options : config.slaves) {
@@ -203,11 +203,19 @@ void Rs4MasterStation::take_events(std::vector<Rs4MasterEvent>& out) {
   events_.clear();
 }
 
+void Rs4MasterStation::take_master_events(std::vector<dp::master::MasterEvent>& out) {
+  out.insert(out.end(), std::make_move_iterator(master_events_.begin()),
+             std::make_move_iterator(master_events_.end()));
+  master_events_.clear();
+}
+
 // ---- per call: the master's events, the safety cycle, the changes --------------------------
 
 void Rs4MasterStation::after_call(dp::TimePoint now) {
   scratch_.clear();
   master_->take_events(scratch_);
+  if (keep_master_events_)
+    master_events_.insert(master_events_.end(), scratch_.begin(), scratch_.end());
   for (auto& e : scratch_) on_master_event(e, now);
   for (auto& s : slaves_) publish_changes(*s);
 }
@@ -215,7 +223,14 @@ void Rs4MasterStation::after_call(dp::TimePoint now) {
 void Rs4MasterStation::on_master_event(dp::master::MasterEvent& e, dp::TimePoint now) {
   if (const auto* cycle = std::get_if<dp::master::CycleCompleted>(&e)) {
     for (auto& s : slaves_) safety_cycle(*s, now);
-    events_.push_back(MasterCycle{cycle->cycle, now});
+    // Ticks not drained yet collapse into the newest: the queue does not grow by one per
+    // cycle for an owner that drains rarely.
+    auto* last = events_.empty() ? nullptr : std::get_if<MasterCycle>(&events_.back());
+    if (last != nullptr) {
+      *last = MasterCycle{cycle->cycle, now};
+    } else {
+      events_.push_back(MasterCycle{cycle->cycle, now});
+    }
   } else if (auto* result = std::get_if<dp::master::Dpv1Result>(&e)) {
     events_.push_back(std::move(*result));
   } else if (const auto* left = std::get_if<dp::master::SlaveLeftDataExchange>(&e)) {

@@ -39,6 +39,9 @@ struct Rs4MasterStationConfig {
   std::vector<Rs4MasterOptions> slaves;  // one per RS4, polled in this order
   std::uint8_t output_byte = 0x01;       // initial process output of every RS4: field pair 1
   bool auto_ack_rei = false;             // acknowledge every ACK_REQ at once
+  // Keep a copy of every dp::master event (alarms, diagnosis, …) for take_master_events(),
+  // for an owner that needs more than the Rs4MasterEvents (e.g. a test harness, Rs4Segment).
+  bool keep_master_events = false;
 };
 
 // What the master side knows of one RS4.
@@ -81,6 +84,7 @@ struct InputByteChanged {
 // Completion of write_record()/read_record() (or of any DPV1 request made on master()).
 using RecordResult = dp::master::Dpv1Result;
 // One master cycle ended at `now`: the clock tick of everything driven by the master side.
+// Consecutive ticks not drained yet collapse into the newest one.
 struct MasterCycle {
   std::uint64_t cycle = 0;
   dp::TimePoint now{};
@@ -135,6 +139,8 @@ class Rs4MasterStation final : public dp::Station {
 
   // Moves all queued events to `out` (appends).
   void take_events(std::vector<Rs4MasterEvent>& out);
+  // With keep_master_events: the master's own events since the last call (appends).
+  void take_master_events(std::vector<dp::master::MasterEvent>& out);
 
  private:
   struct Slave;
@@ -148,7 +154,9 @@ class Rs4MasterStation final : public dp::Station {
   std::unique_ptr<dp::master::Master> master_;
   std::vector<std::unique_ptr<Slave>> slaves_;
   bool auto_ack_rei_ = false;
+  bool keep_master_events_ = false;
   std::vector<dp::master::MasterEvent> scratch_;
+  std::vector<dp::master::MasterEvent> master_events_;
   std::vector<Rs4MasterEvent> events_;
 };
 

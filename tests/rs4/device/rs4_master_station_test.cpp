@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 
@@ -102,6 +103,22 @@ TEST(Rs4MasterStation, TwoRs4sReachDataExchangeRunAndAskForTheProxyAfterBoot) {
   // restart interlock still holds it ([RS4 manual §5.1.2, §7.1]).
   EXPECT_EQ(s.station.input_byte(4) & adapter::kInputOssd, 0);
   EXPECT_EQ(s.devices[0]->adapter().view().proxy_enable, false);
+}
+
+TEST(Rs4MasterStation, KeepsTheMastersOwnEventsOnRequest) {
+  auto config = station_config({4});
+  config.keep_master_events = true;
+  Segment s(config);
+  ASSERT_TRUE(s.run_until([&] { return s.station.in_data_exchange(4); }, 5s));
+  std::vector<dp::master::MasterEvent> raw;
+  s.station.take_master_events(raw);
+  const auto entered = std::count_if(raw.begin(), raw.end(), [](const auto& e) {
+    return std::holds_alternative<dp::master::SlaveEnteredDataExchange>(e);
+  });
+  EXPECT_EQ(entered, 1);
+  raw.clear();
+  s.station.take_master_events(raw);
+  EXPECT_TRUE(raw.empty());
 }
 
 TEST(Rs4MasterStation, ProxyEnableReachesTheRs4AtItsStartup) {
