@@ -121,6 +121,23 @@ TEST(Rs4MasterStation, KeepsTheMastersOwnEventsOnRequest) {
   EXPECT_TRUE(raw.empty());
 }
 
+TEST(Rs4MasterStation, UndrainedCycleTicksCollapseIntoTheNewest) {
+  Segment s(station_config({4}));
+  ASSERT_TRUE(
+      s.run_until([&] { return s.station.view(4)->safety == profisafe::FHostState::kRun; }, 5s));
+  s.bus.run_for(100ms);  // input byte settles
+  s.events.clear();
+  s.station.take_events(s.events);
+  s.events.clear();
+  s.bus.run_for(500ms);  // ≈50 cycles, nothing else changes
+  s.station.take_events(s.events);
+  ASSERT_EQ(s.events.size(), 1U);
+  const auto* tick = std::get_if<MasterCycle>(&s.events.front());
+  ASSERT_NE(tick, nullptr);
+  EXPECT_GE(s.clock.now() - tick->now, 0ms);
+  EXPECT_LE(s.clock.now() - tick->now, 10ms);
+}
+
 TEST(Rs4MasterStation, ProxyEnableReachesTheRs4AtItsStartup) {
   Segment s(station_config({4}));
   ASSERT_TRUE(s.station.set_proxy_enable(4, true));
