@@ -1,6 +1,7 @@
 #include "app/master_report.h"
 
 #include "rs4/adapter/cyclic_bytes.h"
+#include "rs4/report/json_writer.h"
 #include "rs4/safety/diagnosis.h"
 
 #include <cstdio>
@@ -11,6 +12,7 @@ namespace rs4sim::app {
 namespace {
 
 namespace device = rs4::device;
+using rs4::report::json_quote;
 using Fields = std::vector<ReportField>;
 
 const char* diagnosis_text(std::uint8_t number) {
@@ -82,24 +84,6 @@ std::string console_text(const device::Rs4SlaveView& v) {
 
 }  // namespace
 
-std::string json_string(std::string_view s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    const auto u = static_cast<unsigned char>(c);
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (u < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", u);
-      out += buf;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
-
 MasterReport::MasterReport(std::ostream& out, bool json, dp::TimePoint start)
     : out_(out), json_(json), start_(start) {}
 
@@ -114,16 +98,16 @@ std::string MasterReport::seconds(dp::TimePoint now) const {
 void MasterReport::json_line(dp::TimePoint now, std::uint8_t address, std::string_view event,
                              const Fields& fields) const {
   out_ << "{\"t\":" << seconds(now) << ",\"station\":" << int(address)
-       << ",\"event\":" << json_string(event);
+       << ",\"event\":" << json_quote(event);
   for (const auto& f : fields) {
-    out_ << "," << json_string(f.name) << ":";
+    out_ << "," << json_quote(f.name) << ":";
     std::visit(
         [this](const auto& v) {
           using V = std::decay_t<decltype(v)>;
           if constexpr (std::is_same_v<V, bool>) {
             out_ << (v ? "true" : "false");
           } else if constexpr (std::is_same_v<V, std::string>) {
-            out_ << json_string(v);
+            out_ << json_quote(v);
           } else if constexpr (std::is_same_v<V, std::vector<std::int64_t>>) {
             out_ << "[";
             for (std::size_t i = 0; i < v.size(); ++i) out_ << (i == 0 ? "" : ",") << v[i];

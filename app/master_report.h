@@ -52,7 +52,4 @@ class MasterReport {
   std::map<std::uint8_t, std::string> shown_;  // the last console line per RS4 (without time)
 };
 
-// JSON string literal with the escapes of RFC 8259.
-[[nodiscard]] std::string json_string(std::string_view s);
-
 }  // namespace rs4sim::app

@@ -125,9 +125,5 @@ TEST(MasterService, PluginSeesEventsActsOnTheStationAndReports) {
   }
 }
 
-TEST(MasterService, JsonStringsAreEscaped) {
-  EXPECT_EQ(json_string("a\"b\\c\n"), "\"a\\\"b\\\\c\\u000a\"");
-}
-
 }  // namespace
 }  // namespace rs4sim::app
