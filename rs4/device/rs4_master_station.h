@@ -7,7 +7,9 @@
 // Every master cycle (CycleCompleted), right inside the link's call, each F-host sees its
 // RS4's last F-input PDU and builds the next F-output PDU around the process output byte
 // (field pair, restart, Proxy-Enable bit 6, [RS4 manual §5.1.2]); the unwrapped input byte
-// ([RS4 manual §5.1.1]) is 0 while the F-host is passivated. Changes are queued as
+// ([RS4 manual §5.1.1]) is 0 while the F-host is passivated. The F-host's watchdog keeps
+// running while an RS4 is out of data exchange, so a lost RS4 passivates it; once the RS4
+// answers again the F-host waits for ack_rei() (or auto_ack_rei). Changes are queued as
 // Rs4MasterEvents and drained with take_events() after each link call, like
 // dp::master::Master's own events.
 //
