@@ -9,6 +9,7 @@
 //                                                   simulated time)
 // With --link pty the first line on stdout is the pty's slave path for the DP master.
 #include "app/command.h"
+#include "app/link_cli.h"
 #include "app/shell.h"
 
 #include <iostream>
@@ -42,14 +43,7 @@ Action setup(CLI::App& cmd) {
   cmd.add_option("--cfg", d.cfg, "generic: configuration identifiers in hex, e.g. \"10 20\"");
   cmd.add_option("--boot-time", d.boot_time_ms,
                  "rs4: boot time until operational in ms (default 30000)");
-  cmd.add_option("--link", l.link, "memory | pty | serial | udp")
-      ->check(CLI::IsMember({"memory", "pty", "serial", "udp"}));
-  cmd.add_option("--port", l.port, "serial device (--link serial)");
-  cmd.add_option("--baud", l.baud, "9.6k … 12M (serial/pty)");
-  cmd.add_option("--listen", l.listen, "HOST:PORT to receive on (--link udp)");
-  cmd.add_option("--peer", l.peer, "HOST:PORT of the master (--link udp)");
-  cmd.add_option("--duration", l.duration, "seconds to run (0 = until Ctrl-C; memory: simulated)")
-      ->check(CLI::NonNegativeNumber);
+  add_link_options(cmd, l, "the master");
   return [o]() -> int {
     DeviceOptions& dev = o->device_options;
     if (o->address >= 0) dev.address = o->address;

@@ -49,8 +49,9 @@ std::unique_ptr<link::Transport> make_transport(const LinkOptions& l, asio::io_c
                                               link::resolve_udp_endpoint(io, l.peer));
 }
 
-int run_realtime(const DeviceEntry& device, const DeviceOptions& o, const LinkOptions& l,
-                 std::ostream& out) {
+}  // namespace
+
+int run_on_link(DeviceInstance& instance, const LinkOptions& l, std::ostream& out) {
   asio::io_context io;
   std::unique_ptr<link::PseudoTerminal> pty;
   std::unique_ptr<link::Transport> transport;
@@ -62,10 +63,9 @@ int run_realtime(const DeviceEntry& device, const DeviceOptions& o, const LinkOp
     return 1;
   }
   dp::RealClock clock;
-  const auto instance = device.build(o);
-  instance->start(clock.now());
+  instance.start(clock.now());
   link::StationRunner runner(io, clock, *transport);
-  for (dp::Station* s : instance->stations()) runner.add(*s);
+  for (dp::Station* s : instance.stations()) runner.add(*s);
   asio::signal_set signals(io, SIGINT, SIGTERM);
   asio::steady_timer limit(io);
   const auto stop = [&] {
@@ -82,15 +82,13 @@ int run_realtime(const DeviceEntry& device, const DeviceOptions& o, const LinkOp
       if (!ec) stop();
     });
   }
-  std::cerr << "rs4sim: " << instance->describe() << " on " << l.link << "; Ctrl-C to stop"
+  std::cerr << "rs4sim: " << instance.describe() << " on " << l.link << "; Ctrl-C to stop"
             << std::endl;
   runner.start();
   io.run();
-  instance->print_status(out, runner.counters());
+  instance.print_status(out, runner.counters());
   return 0;
 }
-
-}  // namespace
 
 void validate(const LinkOptions& l) {
   if (l.duration < 0) throw UsageError("--duration must not be negative");
@@ -114,7 +112,8 @@ int run_device(const DeviceEntry& device, DeviceOptions options, const LinkOptio
   device.validate(options);
   validate(link);
   if (link.link == "memory") return run_memory(device, options, link, out);
-  return run_realtime(device, options, link, out);
+  const auto instance = device.build(options);
+  return run_on_link(*instance, link, out);
 }
 
 }  // namespace rs4sim::app

@@ -32,4 +32,9 @@ void validate(const LinkOptions& link);
 int run_device(const DeviceEntry& device, DeviceOptions options, const LinkOptions& link,
                std::ostream& out);
 
+// Runs a built instance (a device, or the master side of `rs4sim master`) on a real-time
+// link (pty, serial, udp; `link` validated) until Ctrl-C/SIGTERM or --duration; returns the
+// exit code (1 for a link error, reported on stderr).
+int run_on_link(DeviceInstance& instance, const LinkOptions& link, std::ostream& out);
+
 }  // namespace rs4sim::app
