@@ -44,6 +44,9 @@ Action setup(CLI::App& cmd) {
   cmd.add_option("--boot-time", d.boot_time_ms,
                  "rs4: boot time until operational in ms (default 30000)");
   add_link_options(cmd, l, "the master");
+  cmd.add_option("--grpc", l.grpc,
+                 "serve the control API on HOST:PORT (loopback only; port 0 = any free port); "
+                 "with --link memory the simulated clock moves only through the API");
   return [o]() -> int {
     DeviceOptions& dev = o->device_options;
     if (o->address >= 0) dev.address = o->address;

@@ -14,6 +14,7 @@
 #include "app/demos.h"
 #include "dp/link/counters.h"
 #include "dp/station.h"
+#include "dp/time/clock.h"
 
 #include <functional>
 #include <iosfwd>
@@ -22,6 +23,16 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+namespace grpc {
+class Service;
+}
+namespace rs4sim::rpc {
+class Executor;
+}
+namespace boost::asio {
+class io_context;
+}
 
 namespace rs4sim::app {
 
@@ -33,6 +44,15 @@ struct DeviceOptions {
   std::string cfg;             // generic: configuration identifiers in hex, e.g. "10 20"
   int boot_time_ms = 30000;    // rs4: boot until operational [RS4 manual §1]
 };
+
+// What a device needs to offer its gRPC services (docs/rpc.md): they reach its cores only
+// through `executor` (the run's loop); `io` and `clock` are the loop's, for timers.
+struct ServiceContext {
+  rpc::Executor& executor;
+  boost::asio::io_context& io;
+  const dp::Clock& clock;
+};
+using ServiceList = std::vector<std::shared_ptr<grpc::Service>>;
 
 // One device built for a real-time link.
 class DeviceInstance {
@@ -46,6 +66,11 @@ class DeviceInstance {
   [[nodiscard]] virtual std::string describe() const = 0;
   // The status line(s) at the end of a run; `link` = the link's counters.
   virtual void print_status(std::ostream& out, const dp::link::StationCounters& link) const = 0;
+  // The device's gRPC services (empty: the device has none yet); they live as long as this.
+  virtual ServiceList services(const ServiceContext& context) {
+    (void)context;
+    return {};
+  }
 };
 
 // One device with our master on the in-memory bus (simulated time).
@@ -59,6 +84,11 @@ class SimulatedSegment {
   virtual void print_summary(std::ostream& out) const = 0;
   // Exit code 0 when the device reached data exchange.
   [[nodiscard]] virtual bool healthy() const = 0;
+  // The gRPC services, with SimTime moving this segment's manual clock (empty: none yet).
+  virtual ServiceList services(const ServiceContext& context) {
+    (void)context;
+    return {};
+  }
 };
 
 struct DeviceEntry {

@@ -3,6 +3,9 @@
 #include "app/demos.h"
 #include "app/device_registry.h"
 #include "app/run_options.h"
+#include "rpc/device_target.h"
+#include "rpc/rs4_services.h"
+#include "rpc/segment_target.h"
 #include "rs4/adapter/rs4_gsd.h"
 #include "rs4/device/rs4_segment.h"
 
@@ -22,6 +25,13 @@ Rs4DeviceConfig device_config(const DeviceOptions& o) {
   c.switches = rs4::device::switches_for(static_cast<std::uint8_t>(*o.address));
   c.boot_time = std::chrono::milliseconds(o.boot_time_ms);
   return c;
+}
+
+// The RS4's services of rs4sim.v1 over `target` (docs/rpc.md).
+ServiceList rs4_services(rpc::Rs4Target& target, rpc::Executor& executor) {
+  const rpc::Rs4Context c{target, executor};
+  return {std::make_shared<rpc::DeviceService>(c), std::make_shared<rpc::ObservationService>(c),
+          std::make_shared<rpc::FaultsService>(c), std::make_shared<rpc::SimTimeService>(c)};
 }
 
 void print_state(std::ostream& out, const Rs4Device& d) {
@@ -51,9 +61,14 @@ class Rs4Instance final : public DeviceInstance {
     (void)link;
     print_state(out, device_);
   }
+  ServiceList services(const ServiceContext& c) override {
+    target_ = std::make_unique<rpc::DeviceTarget>(device_, address_, c.clock, c.io);
+    return rs4_services(*target_, c.executor);
+  }
 
  private:
   Rs4Device device_;
+  std::unique_ptr<rpc::DeviceTarget> target_;
   std::uint8_t address_;
   int boot_time_ms_;
 };
@@ -73,6 +88,10 @@ class Rs4Simulation final : public SimulatedSegment {
     print_state(out, segment_.device());
   }
   [[nodiscard]] bool healthy() const override { return segment_.in_data_exchange(); }
+  ServiceList services(const ServiceContext& c) override {
+    target_ = std::make_unique<rpc::SegmentTarget>(segment_);
+    return rs4_services(*target_, c.executor);
+  }
 
  private:
   static rs4::device::Rs4SegmentConfig segment_config(const DeviceOptions& o) {
@@ -85,6 +104,7 @@ class Rs4Simulation final : public SimulatedSegment {
   }
 
   rs4::device::Rs4Segment segment_;
+  std::unique_ptr<rpc::SegmentTarget> target_;
 };
 
 void validate(DeviceOptions& o) {

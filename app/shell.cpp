@@ -1,11 +1,14 @@
 #include "app/shell.h"
 
 #include "app/command.h"
+#include "app/grpc_serving.h"
 #include "dp/link/pty.h"
 #include "dp/link/serial_transport.h"
 #include "dp/link/station_runner.h"
 #include "dp/link/udp_transport.h"
+#include "rpc/executor.h"
 
+#include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/signal_set.hpp>
 #include <boost/asio/steady_timer.hpp>
 
@@ -30,6 +33,42 @@ int run_memory(const DeviceEntry& device, const DeviceOptions& o, const LinkOpti
   out << "in-memory bus, " << secs << " s simulated, master " << int(segment->master_address());
   segment->print_summary(out);
   return segment->healthy() ? 0 : 1;
+}
+
+// --link memory --grpc: the segment stays on its manual clock and is driven by the API
+// (SimTime) until Ctrl-C/SIGTERM or --duration wall seconds.
+int run_memory_served(const DeviceEntry& device, const DeviceOptions& o, const LinkOptions& l,
+                      std::ostream& out) {
+  asio::io_context io;
+  auto work = asio::make_work_guard(io);
+  const auto segment = device.simulate(o);
+  const dp::RealClock wall;
+  rpc::AsioExecutor executor(io);
+  GrpcServing serving(l.grpc, segment->services({executor, io, wall}), out);
+  asio::signal_set signals(io, SIGINT, SIGTERM);
+  asio::steady_timer limit(io);
+  const auto stop = [&] {
+    serving.stop_then(io, [&] {
+      work.reset();
+      signals.cancel();
+      limit.cancel();
+    });
+  };
+  signals.async_wait([&](const boost::system::error_code& ec, int) {
+    if (!ec) stop();
+  });
+  if (l.duration > 0) {
+    limit.expires_after(seconds(l.duration));
+    limit.async_wait([&](const boost::system::error_code& ec) {
+      if (!ec) stop();
+    });
+  }
+  std::cerr << "rs4sim: simulated bus on the manual clock, driven through the API; Ctrl-C to stop"
+            << std::endl;
+  io.run();
+  out << "in-memory bus, served, master " << int(segment->master_address());
+  segment->print_summary(out);
+  return 0;
 }
 
 std::unique_ptr<link::Transport> make_transport(const LinkOptions& l, asio::io_context& io,
@@ -66,12 +105,24 @@ int run_on_link(DeviceInstance& instance, const LinkOptions& l, std::ostream& ou
   instance.start(clock.now());
   link::StationRunner runner(io, clock, *transport);
   for (dp::Station* s : instance.stations()) runner.add(*s);
+  rpc::AsioExecutor executor(io);
+  std::unique_ptr<GrpcServing> serving;
+  if (!l.grpc.empty()) {
+    serving = std::make_unique<GrpcServing>(l.grpc, instance.services({executor, io, clock}), out);
+  }
   asio::signal_set signals(io, SIGINT, SIGTERM);
   asio::steady_timer limit(io);
-  const auto stop = [&] {
+  const auto halt = [&] {
     runner.stop();
     signals.cancel();
     limit.cancel();
+  };
+  const auto stop = [&] {
+    if (serving) {
+      serving->stop_then(io, halt);
+    } else {
+      halt();
+    }
   };
   signals.async_wait([&](const boost::system::error_code& ec, int) {
     if (!ec) stop();
@@ -105,12 +156,20 @@ void validate(const LinkOptions& l) {
   if (l.link == "udp" && (l.listen.empty() || l.peer.empty())) {
     throw UsageError("--link udp needs --listen HOST:PORT and --peer HOST:PORT");
   }
+  if (!l.grpc.empty()) {
+    if (const auto why = rpc::check_listen_address(l.grpc); !why.empty()) {
+      throw UsageError("--grpc: " + why);
+    }
+  }
 }
 
 int run_device(const DeviceEntry& device, DeviceOptions options, const LinkOptions& link,
                std::ostream& out) {
   device.validate(options);
   validate(link);
+  if (link.link == "memory" && !link.grpc.empty()) {
+    return run_memory_served(device, options, link, out);
+  }
   if (link.link == "memory") return run_memory(device, options, link, out);
   const auto instance = device.build(options);
   return run_on_link(*instance, link, out);

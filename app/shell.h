@@ -22,6 +22,10 @@ struct LinkOptions {
   std::string baud = "1.5M";    // serial / pty
   std::string listen, peer;     // udp
   double duration = 0;          // seconds; 0 = until Ctrl-C (memory: the device's default)
+  // HOST:PORT of the gRPC API (docs/rpc.md); empty = none. With --link memory the run then
+  // stays on the manual clock and serves until Ctrl-C (--duration: wall seconds): time moves
+  // only through the SimTime service.
+  std::string grpc;
 };
 
 // Throws UsageError with the reason for a bad combination.

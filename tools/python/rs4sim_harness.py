@@ -36,14 +36,16 @@ def _compile_stubs():
             f"--python_out={out}", f"--grpc_python_out={out}"] + _PROTOS
     if protoc.main(args) != 0:
         raise RuntimeError("protoc failed on " + _PROTO_ROOT)
-    for package in ("rs4sim", "rs4sim/v1", "google", "google/rpc"):
+    for package in ("rs4sim", "rs4sim/v1", "google/rpc"):
         open(os.path.join(out, package, "__init__.py"), "a").close()
     sys.path.insert(0, out)
+    # `google` is the protobuf runtime's package: add the compiled google/rpc beside it.
+    import google.protobuf  # noqa: F401
+    import google
+    google.__path__.append(os.path.join(out, "google"))
 
 
 _compile_stubs()
-# google.rpc must come from the compiled stubs, not an installed googleapis package.
-sys.modules.pop("google.rpc", None)
 from rs4sim.v1 import rs4_pb2 as pb  # noqa: E402
 from rs4sim.v1 import rs4_pb2_grpc as pb_grpc  # noqa: E402
 from rs4sim.v1 import archive_service_pb2 as archive_pb  # noqa: E402,F401

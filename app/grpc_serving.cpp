@@ -1,0 +1,37 @@
+#include "app/grpc_serving.h"
+
+#include "app/command.h"
+
+#include <boost/asio/post.hpp>
+
+#include <ostream>
+#include <stdexcept>
+
+namespace rs4sim::app {
+
+GrpcServing::GrpcServing(const std::string& address, ServiceList services, std::ostream& out)
+    : services_(std::move(services)) {
+  if (services_.empty()) throw UsageError("--grpc: this device has no gRPC API yet");
+  std::vector<grpc::Service*> raw;
+  for (const auto& s : services_) raw.push_back(s.get());
+  try {
+    server_ = std::make_unique<rpc::RpcServer>(rpc::ServerOptions{address}, raw);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  out << "grpc: listening on " << server_->address() << std::endl;
+}
+
+GrpcServing::~GrpcServing() {
+  if (stopper_.joinable()) stopper_.join();
+}
+
+void GrpcServing::stop_then(boost::asio::io_context& io, std::function<void()> then) {
+  if (stopper_.joinable()) return;  // already stopping
+  stopper_ = std::thread([this, &io, then = std::move(then)] {
+    server_->shutdown();
+    boost::asio::post(io, then);
+  });
+}
+
+}  // namespace rs4sim::app

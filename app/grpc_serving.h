@@ -1,0 +1,36 @@
+#pragma once
+// The gRPC server of a run (`--grpc HOST:PORT`, docs/rpc.md) on the run's Asio loop: prints
+// "grpc: listening on ADDRESS" and stops in the order that cannot deadlock — the server shuts
+// down on a helper thread while the loop still runs the calls it is waiting for, then the
+// loop stops.
+
+#include "app/device_registry.h"
+#include "rpc/server.h"
+
+#include <boost/asio/io_context.hpp>
+
+#include <functional>
+#include <iosfwd>
+#include <memory>
+#include <string>
+#include <thread>
+
+namespace rs4sim::app {
+
+class GrpcServing {
+ public:
+  // Throws UsageError for a refused address, std::runtime_error when it cannot listen.
+  GrpcServing(const std::string& address, ServiceList services, std::ostream& out);
+  GrpcServing(const GrpcServing&) = delete;
+  GrpcServing& operator=(const GrpcServing&) = delete;
+  ~GrpcServing();
+  // Shuts the server down, then runs `then` on `io` (which must keep running meanwhile).
+  void stop_then(boost::asio::io_context& io, std::function<void()> then);
+
+ private:
+  ServiceList services_;
+  std::unique_ptr<rpc::RpcServer> server_;
+  std::thread stopper_;
+};
+
+}  // namespace rs4sim::app

@@ -1,0 +1,34 @@
+#pragma once
+// Rs4Target for an RS4 on a real-time link (rs4sim run --link pty|serial|udp --grpc): the
+// wall clock, timers on the run's io_context; no simulated time and no simulated bus, so
+// SimTime and the bus faults answer FAILED_PRECONDITION.
+
+#include "rpc/rs4_target.h"
+
+#include <boost/asio/io_context.hpp>
+
+namespace rs4sim::rpc {
+
+class DeviceTarget final : public Rs4Target {
+ public:
+  DeviceTarget(rs4::device::Rs4Device& device, std::uint8_t address, const dp::Clock& clock,
+               boost::asio::io_context& io)
+      : device_(device), address_(address), clock_(clock), io_(io) {}
+  [[nodiscard]] std::vector<std::uint8_t> addresses() const override { return {address_}; }
+  rs4::device::Rs4Device* device(std::uint8_t address) override {
+    return address == address_ ? &device_ : nullptr;
+  }
+  [[nodiscard]] dp::TimePoint now() const override { return clock_.now(); }
+  [[nodiscard]] bool simulated() const override { return false; }
+  bool run_until(const std::function<bool()>& done, dp::Duration) override { return done(); }
+  void after(dp::Duration delay, std::function<void()> f) override;
+  dp::link::MemoryBus* bus() override { return nullptr; }
+
+ private:
+  rs4::device::Rs4Device& device_;
+  std::uint8_t address_;
+  const dp::Clock& clock_;
+  boost::asio::io_context& io_;
+};
+
+}  // namespace rs4sim::rpc
