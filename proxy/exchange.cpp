@@ -10,10 +10,12 @@ namespace rs4sim::proxy {
 namespace protocol = rs4::protocol;
 
 namespace {
-// RS4 telegrams the adapter forwards unasked ([RS4 manual §5.2.3]): alive, measurement, warning.
-bool is_forwarded_telegram(std::span<const std::uint8_t> answer) {
-  if (answer.empty()) return false;
-  return answer[0] == 0x14 || answer[0] == 0x23 || answer[0] == 0x54;
+constexpr std::uint8_t kRs4ErrorTelegram = 0x53;  // COM_CMD_ERROR_OCCURE ([RS4 manual §5.2.3])
+constexpr std::uint8_t kErrorInTelegram = 0x93;  // adapter: error in telegram ([RS4 manual §5.2.2])
+
+bool is_foreign(std::span<const std::uint8_t> answer, std::uint8_t expected) {
+  return !answer.empty() && answer[0] != expected && answer[0] != kRs4ErrorTelegram &&
+         answer[0] != kErrorInTelegram;
 }
 }  // namespace
 
@@ -27,6 +29,7 @@ void Exchange::start(std::span<const std::uint8_t> command, dp::TimePoint now,
     status_ = Status::kBadRecord;
     return;
   }
+  expected_ = command[0];
   for (std::size_t offset = 0; offset < command.size(); offset += protocol::kMaxBlockPayload) {
     const std::size_t n = std::min(protocol::kMaxBlockPayload, command.size() - offset);
     const bool last = offset + n == command.size();
@@ -45,6 +48,7 @@ void Exchange::reset() noexcept {
   outstanding_ = false;
   answer_.clear();
   next_block_ = 0;
+  expected_ = 0;
   sfc_ = 0;
 }
 
@@ -109,7 +113,7 @@ void Exchange::on_read_result(const RecordResult& result, dp::TimePoint now) {
     ++next_block_;
     return;
   }
-  if (is_forwarded_telegram(answer_)) {  // not our answer: keep reading
+  if (is_foreign(answer_, expected_)) {  // not our answer: keep reading
     answer_.clear();
     next_block_ = 0;
     return;

@@ -3,8 +3,11 @@
 // command as WRITE records of at most 240 bytes (block numbers 0, 1, …, the last 0xFFFF,
 // flow-control byte 0 from the master), then READ records until the answer's last block.
 // A READ that carries only the header while nothing was received means "answer not ready":
-// the next READ is due after the poll interval. RS4 telegrams the adapter forwards on its
-// own (0x14, 0x23, 0x54 after PROFI_CMD_GET_RS4_DATA, [RS4 manual §5.2.2.2]) are skipped.
+// the next READ is due after the poll interval. A whole answer whose first byte is neither
+// the command's code, an RS4 error telegram 0x53 nor the adapter's 0x93 "error in telegram"
+// ([RS4 manual §5.2.2]) is skipped and the READs go on: an RS4 telegram the adapter forwards
+// on its own (PROFI_CMD_GET_RS4_DATA, [RS4 manual §5.2.2.2]) or a stale answer of an earlier
+// command whose READ failed.
 
 #include "dp/time/clock.h"
 #include "proxy/record.h"
@@ -35,6 +38,7 @@ class Exchange {
 
   // Splits the command into WRITE records; an empty or too long command ends kBadRecord
   // at once (the caller's error: never happens with the codecs' commands).
+  // The answer is expected to start with command[0].
   void start(std::span<const std::uint8_t> command, dp::TimePoint now, ExchangeTiming timing);
   void reset() noexcept;
 
@@ -64,6 +68,7 @@ class Exchange {
   dp::TimePoint deadline_{};
   std::vector<std::uint8_t> answer_;
   std::uint16_t next_block_ = 0;
+  std::uint8_t expected_ = 0;
   std::uint16_t sfc_ = 0;
 };
 

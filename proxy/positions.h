@@ -12,28 +12,28 @@ namespace rs4sim::proxy {
 
 enum class Step : std::uint8_t {
   kIdle = 0,
-  kLoadCurrent,       // archive: the station's current set (copy load → work memory)
-  kBegin,             // 98 PROFI_CMD_PROXY_BEGIN
-  kIdentify1,         // 60 IDENTIFY
-  kIdentify2,         // 60 IDENTIFY repeated and compared
-  kUpload1,           // 61 UPLOAD_CHUNK x
-  kUpload2,           // 61 UPLOAD_CHUNK x repeated and compared (0x2B2x)
-  kStoreUpload,       // archive: store the uploaded set (copy work → load memory)
-  kLoadDownload,      // archive: the set to download (copy load → work memory)
-  kDownloadBegin,     // 62 DOWNLOAD_BEGIN
-  kDownloadChunk,     // 63 DOWNLOAD_CHUNK x (echo CRC compared, 0x2B1x)
-  kDownloadCommit,    // 64 DOWNLOAD_COMMIT (active CRC compared, 0x2B09)
-  kReidentify1,       // 60 IDENTIFY after the download (checksum re-read)
-  kReidentify2,       // 60 IDENTIFY after the download repeated and compared
-  kStoreSerial,       // archive: new serial number / restore done (copy work → load memory)
-  kEnd,               // 99 PROFI_CMD_PROXY_END success: OSSD release
-  kVerifyIdentify1,   // background verify after the release: 60 IDENTIFY
-  kVerifyIdentify2,   // background verify: 60 IDENTIFY repeated and compared
-  kVerifyUpload1,     // background verify: 61 UPLOAD_CHUNK x
-  kVerifyUpload2,     // background verify: 61 UPLOAD_CHUNK x repeated, compared with archive
-  kBreak,             // 65 DOWNLOAD_BREAK after a failed download (failure report)
-  kEndFailed,         // 99 PROFI_CMD_PROXY_END failed (failure report)
-  kRetryWait,         // after a failure: wait for the retry delay and the next request
+  kLoadCurrent,      // archive: the station's current set (copy load → work memory)
+  kBegin,            // 98 PROFI_CMD_PROXY_BEGIN
+  kIdentify1,        // 60 IDENTIFY
+  kIdentify2,        // 60 IDENTIFY repeated and compared
+  kUpload1,          // 61 UPLOAD_CHUNK x
+  kUpload2,          // 61 UPLOAD_CHUNK x repeated and compared (0x2B2x)
+  kStoreUpload,      // archive: store the uploaded set (copy work → load memory)
+  kLoadDownload,     // archive: the set to download (copy load → work memory)
+  kDownloadBegin,    // 62 DOWNLOAD_BEGIN
+  kDownloadChunk,    // 63 DOWNLOAD_CHUNK x (echo CRC compared, 0x2B1x)
+  kDownloadCommit,   // 64 DOWNLOAD_COMMIT (active CRC compared, 0x2B09)
+  kReidentify1,      // 60 IDENTIFY after the download (checksum re-read)
+  kReidentify2,      // 60 IDENTIFY after the download repeated and compared
+  kStoreSerial,      // archive: new serial number / restore done (copy work → load memory)
+  kEnd,              // 99 PROFI_CMD_PROXY_END success: OSSD release
+  kVerifyIdentify1,  // background verify after the release: 60 IDENTIFY
+  kVerifyIdentify2,  // background verify: 60 IDENTIFY repeated and compared
+  kVerifyUpload1,    // background verify: 61 UPLOAD_CHUNK x
+  kVerifyUpload2,    // background verify: 61 UPLOAD_CHUNK x repeated, compared with archive
+  kBreak,            // 65 DOWNLOAD_BREAK after a failed download (failure report)
+  kEndFailed,        // 99 PROFI_CMD_PROXY_END failed (failure report)
+  kRetryWait,        // after a failure: wait for the retry delay and the next request
 };
 inline constexpr std::size_t kStepCount = 23;
 

@@ -61,6 +61,7 @@ void ProxySync::start(dp::TimePoint now) {
   ident_.reset();
   first_.reset();
   current_.reset();
+  known_serial_.clear();
   set_.clear();
   restore_version_.reset();
   sync_open_ = download_open_ = downloaded_ = verify_after_end_ = background_ = false;

@@ -99,6 +99,7 @@ class ProxySync {
   // proxy_sync_steps.cpp
   void on_answer(std::span<const std::uint8_t> answer, dp::TimePoint now);
   void load_current(dp::TimePoint now);
+  bool load_known_serial();
   void on_begin(std::span<const std::uint8_t> answer, dp::TimePoint now);
   void on_identify(std::span<const std::uint8_t> answer, dp::TimePoint now);
   void decide(dp::TimePoint now);
@@ -112,8 +113,9 @@ class ProxySync {
   void store_serial(dp::TimePoint now);
   void send_end(dp::TimePoint now);
   void on_end(std::span<const std::uint8_t> answer, dp::TimePoint now);
-  std::optional<rs4::protocol::TransferAnswer> transfer_answer(
-      std::span<const std::uint8_t> answer, rs4::protocol::TransferCode code, dp::TimePoint now);
+  std::optional<rs4::protocol::TransferAnswer> transfer_answer(std::span<const std::uint8_t> answer,
+                                                               rs4::protocol::TransferCode code,
+                                                               dp::TimePoint now);
 
   ProxySyncConfig config_;
   storage::ParameterArchive& archive_;
@@ -129,13 +131,14 @@ class ProxySync {
 
   // The sync's facts.
   rs4::protocol::ProxyBeginAnswer begin_;
-  std::optional<Identification> ident_;   // agreed by both reads
-  std::optional<Identification> first_;   // the first read of a repeated IDENTIFY
+  std::optional<Identification> ident_;  // agreed by both reads
+  std::optional<Identification> first_;  // the first read of a repeated IDENTIFY
   std::optional<storage::VersionWithSet> current_;
+  std::string known_serial_;       // the serial number the archive last saw on this station
   std::vector<std::uint8_t> set_;  // uploaded so far / to download
   std::uint32_t set_crc_ = 0;
   std::optional<storage::VersionId> restore_version_;  // pending restore being downloaded
-  std::vector<std::uint8_t> first_chunk_;  // first read of a repeated UPLOAD_CHUNK
+  std::vector<std::uint8_t> first_chunk_;              // first read of a repeated UPLOAD_CHUNK
   std::size_t chunk_ = 0;
   std::size_t chunk_count_ = 0;
   std::size_t chunk_size_ = 0;
@@ -143,7 +146,7 @@ class ProxySync {
   bool download_open_ = false;
   bool downloaded_ = false;
   bool verify_after_end_ = false;
-  bool background_ = false;  // the upload is the background verify
+  bool background_ = false;          // the upload is the background verify
   std::uint16_t adapter_error_ = 0;  // sent in 99 failed
 };
 

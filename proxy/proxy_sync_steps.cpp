@@ -2,7 +2,6 @@
 // sequence in docs/proxy-protocol.md, position map in docs/proxy.md).
 #include "proxy/proxy_sync.h"
 #include "proxy/set_summary.h"
-
 #include "rs4/protocol/adapter_command.h"
 #include "rs4/protocol/telegram.h"
 #include "storage/crc32.h"
@@ -43,6 +42,11 @@ void ProxySync::load_current(dp::TimePoint now) {
   auto current = archive_.current(config_.station);
   if (current) {
     current_ = std::move(current).value();
+    known_serial_ = current_->version.serial_number;
+    if (known_serial_.empty() && !load_known_serial()) {  // a restore carries no serial
+      fail(FailureKind::kCopy, now);
+      return;
+    }
   } else if (current.error().code != storage::ArchiveError::kNotFound &&
              current.error().code != storage::ArchiveError::kUnknownStation) {
     fail(FailureKind::kCopy, now);
@@ -50,6 +54,20 @@ void ProxySync::load_current(dp::TimePoint now) {
   }
   sync_open_ = true;  // from the 98 WRITE on the device may run a sync
   begin_exchange(Step::kBegin, protocol::encode_command(protocol::ProxyBeginCommand{}), now);
+}
+
+// The serial number seen last on the station (storage/types.h StationInfo::serials).
+bool ProxySync::load_known_serial() {
+  const auto stations = archive_.stations();
+  if (!stations) return false;
+  for (const auto& s : stations.value()) {
+    if (s.key != config_.station) continue;
+    const auto last =
+        std::max_element(s.serials.begin(), s.serials.end(),
+                         [](const auto& a, const auto& b) { return a.last_seen < b.last_seen; });
+    if (last != s.serials.end()) known_serial_ = last->serial_number;
+  }
+  return true;
 }
 
 void ProxySync::on_answer(std::span<const std::uint8_t> answer, dp::TimePoint now) {
@@ -159,7 +177,7 @@ void ProxySync::decide(dp::TimePoint now) {
   if (dir == protocol::SyncDirection::kVerify) {
     if (!has_set) {
       start_upload(false, now);  // the proxy learns the set
-    } else if (current_->version.serial_number != std::to_string(ident_->serial_number) ||
+    } else if (known_serial_ != std::to_string(ident_->serial_number) ||
                current_->set.crc32 != ident_->set_crc32) {
       start_download(now);  // device exchange (or a set that is not the stored one)
     } else {
@@ -328,7 +346,7 @@ void ProxySync::store_serial(dp::TimePoint now) {
     return;
   }
   const auto serial = std::to_string(ident_->serial_number);
-  if (current_ && current_->version.serial_number != serial) {
+  if (current_ && known_serial_ != serial) {
     storage::StoreRequest req;
     req.station = config_.station;
     req.device_type = device_type_text(ident_->device_type);

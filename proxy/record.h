@@ -9,8 +9,8 @@
 
 namespace rs4sim::proxy {
 
-inline constexpr std::uint8_t kRecordSlot = 0;   // [RS4 manual §5.2]: slot 0 only
-inline constexpr std::uint8_t kRecordIndex = 2;  // index 2 (3 is treated identically)
+inline constexpr std::uint8_t kRecordSlot = 0;    // [RS4 manual §5.2]: slot 0 only
+inline constexpr std::uint8_t kRecordIndex = 2;   // index 2 (3 is treated identically)
 inline constexpr std::uint8_t kReadLength = 240;  // the longest record ([RS4 manual §5.2])
 
 // DPV1 WRITE of these bytes (one block: header + payload).
@@ -37,8 +37,7 @@ struct RecordResult {
     return RecordResult{true, std::move(bytes), 0};
   }
   static RecordResult negative(std::uint8_t error_code_1, std::uint8_t error_code_2) {
-    return RecordResult{false, {},
-                        static_cast<std::uint16_t>((error_code_1 << 8) | error_code_2)};
+    return RecordResult{false, {}, static_cast<std::uint16_t>((error_code_1 << 8) | error_code_2)};
   }
   static RecordResult no_response() { return RecordResult{false, {}, 0}; }
 };
