@@ -12,7 +12,7 @@ struct Entry {
 };
 // Indexed by Step. The manual's lists ([RS4 manual §6.5]): write failures 02 04 08 10 11 21
 // 24 26 27 29 32 33 40 45; read failures 03 05 06 07 12 22 23 28 30 31 34 41 50; bad records
-// 03 05 06 09 12 22 23 28 30 31 34 41; copies 01 13 25 (load → work) and 42 (work → load).
+// 03 05 06 09 12 22 23 28 30 31 34 41; copies 01 25 (load → work) and 13 42 (work → load).
 constexpr std::array<Entry, kStepCount> kMap{{
     {"idle", {}},
     {"load current set", {0, 0, 0, 0x01}},

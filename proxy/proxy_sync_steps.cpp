@@ -98,10 +98,12 @@ void ProxySync::on_begin(std::span<const std::uint8_t> answer, dp::TimePoint now
     fail(FailureKind::kBadRecord, now);
     return;
   }
-  if (a.value().reason == protocol::SyncReason::kNone) {  // nothing started: back to idle
+  if (a.value().reason == protocol::SyncReason::kNone) {
+    // Nothing started (a stale Proxy-Request bit): no error, but wait the retry delay.
     sync_open_ = false;
     out_.fb_busy = false;
-    step_ = Step::kIdle;
+    step_ = Step::kRetryWait;
+    retry_until_ = now + config_.retry_delay;
     return;
   }
   begin_ = a.value();

@@ -75,7 +75,7 @@ const Case kCases[] = {
     {0x3102, Scenario::kDownload, Step::kReidentify2, FailureKind::kBadRecord},
     {0x3402, Scenario::kVerify, Step::kVerifyIdentify2, FailureKind::kBadRecord},
     {0x4102, Scenario::kVerify, Step::kEnd, FailureKind::kBadRecord},
-    // copies 01 13 25 (load → work) 42 (work → load)
+    // copies 01 25 (load → work) 13 42 (work → load)
     {0x0101, Scenario::kVerify, Step::kLoadCurrent, FailureKind::kCopy, Op::kCurrent},
     {0x1301, Scenario::kUpload, Step::kStoreUpload, FailureKind::kCopy, Op::kStore},
     {0x2501, Scenario::kDownload, Step::kLoadDownload, FailureKind::kCopy, Op::kGet},

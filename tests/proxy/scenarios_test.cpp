@@ -279,6 +279,26 @@ TEST(Enable, NoSyncWithoutProxyRequest) {
   EXPECT_FALSE(h.run_sync());
 }
 
+TEST(Enable, StaleRequestStartsNothingAndWaits) {
+  SyncHarness h;
+  h.device.request = false;
+  h.sync->set_input_byte(0x04);  // the master still sees the bit
+  h.sync->set_proxy_enable(true);
+  ASSERT_TRUE(h.sync->ready(h.now));
+  h.sync->start(h.now);
+  for (int i = 0; i < 20; ++i) {
+    if (auto r = h.sync->take_request(h.now)) {
+      const auto* w = std::get_if<RecordWrite>(&*r);
+      h.sync->on_record_result(w != nullptr ? h.device.write(w->data) : h.device.read(240), h.now);
+    }
+  }
+  EXPECT_FALSE(h.sync->active());
+  EXPECT_EQ(h.sync->outputs(), FbOutputs{});
+  EXPECT_FALSE(h.device.sync_running);
+  EXPECT_FALSE(h.sync->ready(h.now));
+  EXPECT_TRUE(h.sync->ready(h.now + h.config.retry_delay));
+}
+
 TEST(Retry, FailedSyncIsRetriedAfterTheDelayAndSucceeds) {
   SyncHarness h;
   const auto set = SyncHarness::custom_set(3);
