@@ -8,16 +8,19 @@
 //     holds exactly that set (never a release with an unverified set).
 #include "proxy/proxy_sync.h"
 #include "proxy/retentive.h"
+#include "rs4/scanner/parameter_codec.h"
 #include "storage/crc32.h"
 #include "storage/sqlite_archive.h"
 #include "tests/proxy/device_double.h"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <memory>
 #include <span>
+#include <string>
 
 namespace {
 
@@ -50,10 +53,18 @@ bool listed(std::uint16_t code) {
   return code == 0 || std::find(std::begin(kListed), std::end(kListed), code) != std::end(kListed);
 }
 
-std::vector<std::uint8_t> variant_set(std::uint8_t steps) {
-  auto set = rs4::scanner::factory_default();
-  set.response_steps = steps;
-  return rs4::scanner::encode(set);
+// Sets differing in their response time steps 0..3, encoded once.
+const std::vector<std::uint8_t>& variant_set(std::uint8_t steps) {
+  static const auto kSets = [] {
+    std::array<std::vector<std::uint8_t>, 4> sets;
+    for (std::uint8_t i = 0; i < sets.size(); ++i) {
+      auto set = rs4::scanner::factory_default();
+      set.response_steps = i;
+      sets[i] = rs4::scanner::encode(set);
+    }
+    return sets;
+  }();
+  return kSets[steps % kSets.size()];
 }
 
 void set_up(Input& in, DeviceDouble& dev, storage::ParameterArchive& archive,
@@ -64,7 +75,7 @@ void set_up(Input& in, DeviceDouble& dev, storage::ParameterArchive& archive,
   dev.set = variant_set(static_cast<std::uint8_t>((setup >> 3) & 0x03));
   dev.not_ready_reads = (setup >> 5) & 0x01;
   if ((setup & 0x40) != 0) {
-    const auto blob = variant_set(static_cast<std::uint8_t>((setup >> 7) + 1));
+    const auto& blob = variant_set(static_cast<std::uint8_t>((setup >> 7) + 1));
     storage::StoreRequest r;
     r.station = station;
     r.serial_number = (setup & 0x80) != 0 ? "999" : "1001";
@@ -109,8 +120,12 @@ void check(const proxy::ProxySync& sync, const DeviceDouble& dev, bool released_
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   Input in({data, size});
-  auto archive = storage::SqliteArchive::open(":memory:").value();
-  const storage::StationKey station{"bus", 4};
+  // Opening an archive costs more than a run: one archive serves 1000 runs, each on a
+  // station of its own.
+  static std::unique_ptr<storage::SqliteArchive> archive;
+  static std::uint64_t runs = 0;
+  if (runs++ % 1000 == 0) archive = storage::SqliteArchive::open(":memory:").value();
+  const storage::StationKey station{"bus" + std::to_string(runs), 4};
   DeviceDouble dev;
   set_up(in, dev, *archive, station);
   proxy::ProxySyncConfig config;

@@ -13,7 +13,8 @@ namespace protocol = rs4::protocol;
 DeviceDouble::DeviceDouble() : set(factory_set()) {}
 
 std::vector<std::uint8_t> DeviceDouble::factory_set() {
-  return rs4::scanner::encode(rs4::scanner::factory_default());
+  static const auto kSet = rs4::scanner::encode(rs4::scanner::factory_default());
+  return kSet;
 }
 
 RecordResult DeviceDouble::write(std::span<const std::uint8_t> record) {
