@@ -107,6 +107,8 @@ class ProxySync {
   void request_chunk(dp::TimePoint now);
   void on_upload(std::span<const std::uint8_t> answer, dp::TimePoint now);
   void upload_complete(dp::TimePoint now);
+  bool store_set(storage::VersionSource source, std::string summary, std::string note,
+                 dp::TimePoint now);
   void start_download(dp::TimePoint now);
   void send_download_chunk(dp::TimePoint now);
   void on_download(std::span<const std::uint8_t> answer, dp::TimePoint now);

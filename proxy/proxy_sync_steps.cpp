@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 namespace rs4sim::proxy {
 
@@ -258,21 +259,28 @@ void ProxySync::upload_complete(dp::TimePoint now) {
     return;
   }
   step_ = Step::kStoreUpload;
+  if (!store_set(storage::VersionSource::kUpload, set_summary(set_), "uploaded by the proxy",
+                 now)) {
+    fail(FailureKind::kCopy, now);
+    return;
+  }
+  send_end(now);
+}
+
+// The synchronised set as a new current version of the station, with the device's serial.
+bool ProxySync::store_set(storage::VersionSource source, std::string summary, std::string note,
+                          dp::TimePoint now) {
   storage::StoreRequest req;
   req.station = config_.station;
   req.device_type = device_type_text(ident_->device_type);
   req.serial_number = std::to_string(ident_->serial_number);
   req.blob = set_;
   req.crc32 = set_crc_;
-  req.summary = set_summary(set_);
-  req.source = storage::VersionSource::kUpload;
+  req.summary = std::move(summary);
+  req.source = source;
   req.at = stamp(now);
-  req.note = "uploaded by the proxy";
-  if (!archive_.store(req)) {
-    fail(FailureKind::kCopy, now);
-    return;
-  }
-  send_end(now);
+  req.note = std::move(note);
+  return archive_.store(req).has_value();
 }
 
 void ProxySync::start_download(dp::TimePoint now) {
@@ -348,21 +356,11 @@ void ProxySync::store_serial(dp::TimePoint now) {
     return;
   }
   const auto serial = std::to_string(ident_->serial_number);
-  if (current_ && known_serial_ != serial) {
-    storage::StoreRequest req;
-    req.station = config_.station;
-    req.device_type = device_type_text(ident_->device_type);
-    req.serial_number = serial;
-    req.blob = set_;
-    req.crc32 = set_crc_;
-    req.summary = current_->set.summary;
-    req.source = storage::VersionSource::kDownload;
-    req.at = stamp(now);
-    req.note = "downloaded to a new device";
-    if (!archive_.store(req)) {
-      fail(FailureKind::kCopy, now);
-      return;
-    }
+  if (current_ && known_serial_ != serial &&
+      !store_set(storage::VersionSource::kDownload, current_->set.summary,
+                 "downloaded to a new device", now)) {
+    fail(FailureKind::kCopy, now);
+    return;
   }
   send_end(now);
 }
