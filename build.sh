@@ -28,7 +28,8 @@ RS4SIM_WERROR=${RS4SIM_WERROR:-ON}
 packages=(build-essential cmake ninja-build pkg-config libboost-dev libsqlite3-dev
           libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev)
 packages+=(libprotobuf-dev protobuf-compiler zlib1g-dev)   # storage/: archive export format, CRC-32
-[ "$mode" = test ] && packages+=(clang libclang-rt-14-dev)
+packages+=(libgrpc++-dev protobuf-compiler-grpc)           # rpc/: the control API
+[ "$mode" = test ] && packages+=(clang libclang-rt-14-dev tshark python3-grpcio python3-grpc-tools)  # fuzzing, dissector, RPC clients
 
 missing=()
 for p in "${packages[@]}"; do

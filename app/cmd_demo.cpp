@@ -16,7 +16,9 @@ const CommandRegistration kDemo(
       auto device = std::make_shared<std::string>("rs4");
       cmd.add_option("--device", *device, "rs4 (default) | generic")
           ->check(CLI::IsMember(device_names()));
-      return [device]() { return find_device(*device)->demo(std::cout); };
+      auto options = std::make_shared<DemoOptions>();
+      add_capture_options(cmd, options->capture);
+      return [device, options]() { return find_device(*device)->demo(std::cout, *options); };
     });
 
 }  // namespace

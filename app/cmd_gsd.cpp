@@ -5,6 +5,7 @@
 #include "gsd/config.h"
 #include "gsd/device_gsd.h"
 #include "gsd/interp.h"
+#include "rs4/report/json_writer.h"
 #include "rs4/safety/profile.h"
 
 #include <cstdio>
@@ -43,21 +44,6 @@ std::string hex16(unsigned v) {
   char b[8];
   std::snprintf(b, sizeof b, "0x%04X", v & 0xFFFFU);
   return b;
-}
-
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (static_cast<unsigned char>(c) < 0x20) {
-      char b[8];
-      std::snprintf(b, sizeof b, "\\u%04X", static_cast<unsigned>(c));
-      out += b;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
 }
 
 gsd::ParamOverride parse_set(const std::string& text) {
@@ -111,23 +97,23 @@ void print_text(const gsd::SlaveSetup& c, const std::string& source, std::ostrea
 }
 
 void print_json(const gsd::SlaveSetup& c, const std::string& source, std::ostream& out) {
-  out << "{\n  \"gsd\": " << json_string(source) << ",\n";
-  out << "  \"ident_number\": " << json_string(hex16(c.ident_number)) << ",\n";
+  out << "{\n  \"gsd\": " << rs4::report::json_quote(source) << ",\n";
+  out << "  \"ident_number\": " << rs4::report::json_quote(hex16(c.ident_number)) << ",\n";
   out << "  \"modules\": [";
   for (std::size_t i = 0; i < c.modules.size(); ++i)
-    out << (i ? ", " : "") << json_string(c.modules[i]);
-  out << "],\n  \"chk_cfg\": " << json_string(hex_bytes(c.cfg)) << ",\n";
+    out << (i ? ", " : "") << rs4::report::json_quote(c.modules[i]);
+  out << "],\n  \"chk_cfg\": " << rs4::report::json_quote(hex_bytes(c.cfg)) << ",\n";
   out << "  \"input_len\": " << c.input_len << ",\n  \"output_len\": " << c.output_len << ",\n";
-  out << "  \"user_prm_data\": " << json_string(hex_bytes(c.user_prm_data)) << ",\n";
+  out << "  \"user_prm_data\": " << rs4::report::json_quote(hex_bytes(c.user_prm_data)) << ",\n";
   out << "  \"parameters\": [";
   for (std::size_t i = 0; i < c.fields.size(); ++i) {
     const auto& f = c.fields[i];
-    out << (i ? ",\n    " : "\n    ") << "{\"name\": " << json_string(f.name)
+    out << (i ? ",\n    " : "\n    ") << "{\"name\": " << rs4::report::json_quote(f.name)
         << ", \"offset\": " << f.offset << ", \"value\": " << f.value << "}";
   }
   out << "\n  ],\n  \"f_par_crc\": [";
   for (std::size_t i = 0; i < c.f_parameters.size(); ++i) {
-    out << (i ? ", " : "") << json_string(hex16(c.f_parameters[i].parameters.par_crc));
+    out << (i ? ", " : "") << rs4::report::json_quote(hex16(c.f_parameters[i].parameters.par_crc));
   }
   out << "]\n}\n";
 }

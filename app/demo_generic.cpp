@@ -27,7 +27,7 @@ class Demo {
               return bus_.run_until(done, limit);
             },
             Narration::Stamp::kMilliseconds) {
-    bus_.bus().set_observer([this](const dp::link::BusEvent& e) { on_wire(e); });
+    bus_.bus().add_observer([this](const dp::link::BusEvent& e) { on_wire(e); });
     for (std::uint8_t a : {std::uint8_t{5}, std::uint8_t{6}}) {
       bus_.slave(a).slave().set_trace([this, a](const dp::slave::Transition& t) {
         say("slave " + std::to_string(a) + " " + dp::slave::to_string(t.from) + " -> " +
@@ -35,6 +35,7 @@ class Demo {
       });
     }
   }
+  dp::link::MemoryBus& bus() { return bus_.bus(); }
   int run() {
     const bool ok = run_steps({[this] { return start_up(); }, [this] { return data_exchange(); },
                                [this] { return dpv1(); }, [this] { return alarm(); },
@@ -173,6 +174,11 @@ bool Demo::watchdog() {
 
 }  // namespace
 
-int run_generic_demo(std::ostream& out) { return Demo(out).run(); }
+int run_generic_demo(std::ostream& out, const DemoOptions& options) {
+  Demo demo(out);
+  const auto capture = open_capture(options.capture);
+  attach_capture(capture.get(), demo.bus());
+  return demo.run();
+}
 
 }  // namespace rs4sim::app

@@ -208,14 +208,20 @@ bool passivation(Demo& d) {
 
 }  // namespace
 
-int run_rs4_demo(std::ostream& out) {
+int run_rs4_demo(std::ostream& out, const DemoOptions& options) {
   rs4::device::Rs4SegmentConfig c;
   Rs4Segment s(c);
+  const auto capture = open_capture(options.capture);
+  attach_capture(capture.get(), s.bus());
   Demo d(s, out);
   const bool ok = run_steps({[&] { return startup(d); }, [&] { return protective_field(d); },
                              [&] { return field_pairs(d); }, [&] { return measurement(d); },
                              [&] { return rs4_error(d); }, [&] { return passivation(d); }});
   d.say(ok ? "demo complete: every step as the manual prescribes" : "demo FAILED");
+  if (capture) {
+    d.say("capture: " + std::to_string(capture->records()) + " telegrams in " +
+          options.capture.file);
+  }
   out.flush();
   return ok ? 0 : 1;
 }

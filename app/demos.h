@@ -3,19 +3,25 @@
 // Each returns 0 when every step happened as the manual or the spec says, 1 otherwise
 // (the failing step is named on `out`).
 
+#include "app/capture_option.h"
+
 #include <iosfwd>
 
 namespace rs4sim::app {
+
+struct DemoOptions {
+  CaptureOptions capture;
+};
 
 // RS4 scenario: one RS4/PROFIsafe, our GSD-configured class 1 master and a PROFIsafe
 // F-host: boot, DP and PROFIsafe start-up, OSSD, protective-field violation, restart
 // interlock, field-pair switching, a measurement telegram (0x92 + READ), an RS4 error as
 // diagnosis alarm coming/going and a passivation with ACK_REI.
-int run_rs4_demo(std::ostream& out);
+int run_rs4_demo(std::ostream& out, const DemoOptions& options);
 
 // Generic scenario: our master and two generic slaves with the 1.5 Mbit/s wire modelled:
 // start-up, data exchange, a DPV1 write/read, an alarm round trip and a watchdog fault
 // with recovery.
-int run_generic_demo(std::ostream& out);
+int run_generic_demo(std::ostream& out, const DemoOptions& options);
 
 }  // namespace rs4sim::app

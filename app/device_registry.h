@@ -11,6 +11,7 @@
 //     manual clock (SimulatedSegment);
 // and prints its status at the end of a run. Its narrated demo uses app/narration.h.
 
+#include "app/demos.h"
 #include "dp/link/counters.h"
 #include "dp/station.h"
 
@@ -68,7 +69,7 @@ struct DeviceEntry {
   std::function<std::unique_ptr<DeviceInstance>(const DeviceOptions&)> build;
   std::function<std::unique_ptr<SimulatedSegment>(const DeviceOptions&)> simulate;
   // The narrated demo on the simulated bus; returns the exit code.
-  std::function<int(std::ostream&)> demo;
+  std::function<int(std::ostream&, const DemoOptions&)> demo;
 };
 
 std::vector<DeviceEntry>& device_registry();

@@ -16,9 +16,13 @@
 #include "storage/types.h"
 
 #include <cstddef>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 namespace rs4sim::storage {
+
+inline constexpr std::size_t kMaxProxyStateSize = 256;
 
 class ParameterArchive {
  public:
@@ -40,6 +44,14 @@ class ParameterArchive {
   // The station's newest `limit` entries, oldest first.
   virtual Result<std::vector<SyncLogEntry>> sync_log(const StationKey& station,
                                                      std::size_t limit) = 0;
+
+  // The proxy's retentive state of the station at `station` (the Proxy-FB keeps 34 retentive
+  // bytes, [RS4 manual §6.5]): an opaque record of at most kMaxProxyStateSize bytes, replaced
+  // on every save, so a restarted proxy resumes or fails safely. Not part of an export.
+  virtual Result<void> save_proxy_state(const StationKey& station,
+                                        std::span<const std::uint8_t> state, Timestamp at) = 0;
+  // kNotFound when nothing was saved for that address.
+  virtual Result<std::vector<std::uint8_t>> load_proxy_state(const StationKey& station) = 0;
 
   // Structural checks of the backend plus every stored blob's CRC-32 re-computed.
   virtual Result<IntegrityReport> check_integrity() = 0;

@@ -54,6 +54,9 @@ class SqliteArchive final : public ParameterArchive {
   Result<std::vector<StationInfo>> stations() override;
   Result<void> log_sync(const SyncLogEntry& entry) override;
   Result<std::vector<SyncLogEntry>> sync_log(const StationKey& station, std::size_t limit) override;
+  Result<void> save_proxy_state(const StationKey& station, std::span<const std::uint8_t> state,
+                                Timestamp at) override;
+  Result<std::vector<std::uint8_t>> load_proxy_state(const StationKey& station) override;
   Result<IntegrityReport> check_integrity() override;
   Result<Snapshot> export_snapshot(Timestamp exported_at) override;
   Result<ImportSummary> import_snapshot(const Snapshot& snapshot) override;

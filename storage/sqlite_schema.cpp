@@ -64,6 +64,16 @@ CREATE TABLE sync_log (
 CREATE INDEX sync_log_by_station ON sync_log (station_id, id);
 CREATE INDEX versions_pending ON versions (station_id) WHERE pending_download <> 0;
 )sql",
+    // 2 -> 3: the proxy's retentive state per bus address (kept apart from stations: a sync
+    // can start before the station has a set).
+    R"sql(
+CREATE TABLE proxy_state (
+  bus         TEXT    NOT NULL,
+  address     INTEGER NOT NULL CHECK (address BETWEEN 0 AND 126),
+  state       BLOB    NOT NULL,
+  saved_at_ms INTEGER NOT NULL,
+  PRIMARY KEY (bus, address));
+)sql",
 };
 
 // Runs a script of several statements (DDL of one migration step), each prepared in turn.

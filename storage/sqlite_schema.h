@@ -11,7 +11,7 @@
 namespace rs4sim::storage::sqlite {
 
 inline constexpr std::int64_t kApplicationId = 0x52533441;  // "RS4A"
-inline constexpr std::int64_t kSchemaVersion = 2;
+inline constexpr std::int64_t kSchemaVersion = 3;
 
 // Checks that the file is ours and not newer, then migrates it to kSchemaVersion (an
 // empty file is created). A read-only connection must already be at kSchemaVersion.

@@ -215,7 +215,7 @@ void MemoryBus::transmit(Port& from, const fdl::Telegram& t) {
       ev.fate = schedule(from, *to, ev.arrival, encode_buf_);
     }
   }
-  if (observer_) observer_(ev);
+  for (const auto& observer : observers_) observer(ev);
 }
 
 Fate MemoryBus::schedule(Port& from, std::uint8_t to, TimePoint arrival,

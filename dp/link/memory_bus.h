@@ -115,7 +115,8 @@ class MemoryBus {
   // frame. For tests and fuzzing. Unknown `to`: ignored.
   void send_raw(std::uint8_t to, std::span<const std::uint8_t> bytes);
 
-  void set_observer(BusObserver observer) { observer_ = std::move(observer); }
+  // Observers see every transmitted telegram, in the order they were added.
+  void add_observer(BusObserver observer) { observers_.push_back(std::move(observer)); }
 
   // Counters of an attached station; throws std::out_of_range for an unknown address.
   [[nodiscard]] const StationCounters& counters(std::uint8_t address) const;
@@ -163,7 +164,7 @@ class MemoryBus {
   std::vector<Port*> woken_;  // woke during a bus call: drained when the call returns
   bool in_call_ = false;
   std::shared_ptr<char> alive_;  // wake handlers hold a weak_ptr to it
-  BusObserver observer_;
+  std::vector<BusObserver> observers_;
 };
 
 }  // namespace rs4sim::dp::link

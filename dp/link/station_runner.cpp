@@ -67,6 +67,11 @@ void StationRunner::on_bytes(std::span<const std::uint8_t> bytes) {
 
 void StationRunner::on_telegram(const fdl::Telegram& t) {
   ++counters_.received;
+  if (tap_) {
+    tap_buf_.clear();
+    fdl::encode(t, tap_buf_);
+    tap_(tap_buf_, now_, FrameDirection::kReceived);
+  }
   for (Station* s : stations_) s->on_telegram(t, now_);
 }
 
@@ -86,6 +91,7 @@ void StationRunner::drain_all() {
       ++counters_.sent;
       encode_buf_.clear();
       fdl::encode(*t, encode_buf_);
+      if (tap_) tap_(encode_buf_, now_, FrameDirection::kSent);
       transport_.send(encode_buf_);
     }
   }

@@ -27,6 +27,12 @@
 
 namespace rs4sim::dp::link {
 
+// Sees every telegram the runner received (re-encoded from the decoded telegram, so only
+// well-formed frames) and every telegram it sent, with the runner's `now` (e.g. a capture).
+enum class FrameDirection : std::uint8_t { kReceived, kSent };
+using FrameTap =
+    std::function<void(std::span<const std::uint8_t> frame, TimePoint now, FrameDirection dir)>;
+
 struct RunnerOptions {
   Duration idle_gap = std::chrono::milliseconds(30);
 };
@@ -42,6 +48,7 @@ class StationRunner final : private fdl::DecoderSink {
   // outside a runner call gets one drain + timer re-arm posted to the loop (coalesced).
   // The station must outlive the runner.
   void add(Station& station);
+  void set_frame_tap(FrameTap tap) { tap_ = std::move(tap); }
   // Starts receiving and calls on_time() once on every station.
   void start();
   // Stops the timers and closes the transport.
@@ -72,6 +79,8 @@ class StationRunner final : private fdl::DecoderSink {
   StationCounters counters_;
   std::error_code last_error_;
   std::vector<std::uint8_t> encode_buf_;
+  std::vector<std::uint8_t> tap_buf_;
+  FrameTap tap_;
   TimePoint now_{};
   std::uint64_t idle_generation_ = 0;
   bool running_ = false;

@@ -41,6 +41,15 @@ class FaultyArchive final : public storage::ParameterArchive {
                                                                std::size_t limit) override {
     return inner_.sync_log(s, limit);
   }
+  storage::Result<void> save_proxy_state(const storage::StationKey& s,
+                                         std::span<const std::uint8_t> state,
+                                         storage::Timestamp at) override {
+    return inner_.save_proxy_state(s, state, at);
+  }
+  storage::Result<std::vector<std::uint8_t>> load_proxy_state(
+      const storage::StationKey& s) override {
+    return inner_.load_proxy_state(s);
+  }
   storage::Result<storage::IntegrityReport> check_integrity() override {
     return inner_.check_integrity();
   }

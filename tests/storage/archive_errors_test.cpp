@@ -194,7 +194,7 @@ TEST_F(ArchiveErrorsTest, NewerSchema) {
   raw_exec(path_, "PRAGMA user_version = 99;");
   before_ = digest(path_);
   expect_error(SqliteArchive::open(path_), ArchiveError::kNewerSchema,
-               "schema version 99, this rs4sim knows up to 2");
+               "schema version 99, this rs4sim knows up to 3");
 }
 
 TEST_F(ArchiveErrorsTest, ImportOfACorruptFile) {

@@ -66,7 +66,7 @@ TEST(ArchiveMigration, Version1FileIsUpgradedAndKeepsItsRows) {
   write_v1_file(file);
   ASSERT_EQ(user_version(file), 1);
   auto archive = SqliteArchive::open(file).value();
-  EXPECT_EQ(user_version(file), 2);
+  EXPECT_EQ(user_version(file), 3);
   const StationKey station{"plant", 9};
   const auto cur = archive->current(station).value();
   EXPECT_EQ(cur.version.note, "from v1");
@@ -88,7 +88,7 @@ TEST(ArchiveMigration, EmptyFileIsVersion0AndGetsTheWholeSchema) {
   const auto file = dir.file("empty.sqlite3");
   std::ofstream{file};  // 0 bytes: SQLite treats it as an empty database
   auto archive = SqliteArchive::open(file).value();
-  EXPECT_EQ(user_version(file), 2);
+  EXPECT_EQ(user_version(file), 3);
   EXPECT_TRUE(archive->stations().value().empty());
 }
 

@@ -194,3 +194,50 @@ TEST_F(SqliteArchiveTest, CreatesTheParentDirectory) {
 
 }  // namespace
 }  // namespace rs4sim::storage
+
+namespace rs4sim::storage {
+namespace {
+
+class ProxyStateTest : public ::testing::Test {
+ protected:
+  void SetUp() override { archive_ = SqliteArchive::open(path_).value(); }
+  testing::TempDir dir_;
+  std::filesystem::path path_ = dir_.file("archive.sqlite3");
+  std::unique_ptr<SqliteArchive> archive_;
+};
+
+TEST_F(ProxyStateTest, SavedStateSurvivesReopenAndIsReplaced) {
+  const StationKey station{"bus1", 4};
+  EXPECT_EQ(archive_->load_proxy_state(station).error().code, ArchiveError::kNotFound);
+  const std::vector<std::uint8_t> first{0x01, 0x02, 0x03};
+  archive_->save_proxy_state(station, first, testing::at_ms(1000)).value();
+  const std::vector<std::uint8_t> second(34, 0xA5);  // the FB's 34 retentive bytes
+  archive_->save_proxy_state(station, second, testing::at_ms(2000)).value();
+  archive_.reset();
+  archive_ = SqliteArchive::open(path_).value();
+  EXPECT_EQ(archive_->load_proxy_state(station).value(), second);
+  // Per address and bus; no station row is needed, none is created.
+  EXPECT_EQ(archive_->load_proxy_state({"bus1", 5}).error().code, ArchiveError::kNotFound);
+  EXPECT_EQ(archive_->load_proxy_state({"bus2", 4}).error().code, ArchiveError::kNotFound);
+  EXPECT_TRUE(archive_->stations().value().empty());
+  EXPECT_TRUE(archive_->check_integrity().value().ok());
+}
+
+TEST_F(ProxyStateTest, BadStateIsRefusedAndNothingChanges) {
+  const StationKey station{"bus1", 4};
+  const std::vector<std::uint8_t> kept{0x07};
+  archive_->save_proxy_state(station, kept, testing::at_ms(1)).value();
+  const std::vector<std::uint8_t> too_big(kMaxProxyStateSize + 1, 0);
+  const auto big = archive_->save_proxy_state(station, too_big, testing::at_ms(2));
+  ASSERT_TRUE(big.has_error());
+  EXPECT_EQ(big.error().code, ArchiveError::kInvalidArgument);
+  EXPECT_NE(big.error().message.find("257 bytes"), std::string::npos) << big.error().message;
+  EXPECT_EQ(archive_->save_proxy_state(station, {}, testing::at_ms(2)).error().code,
+            ArchiveError::kInvalidArgument);
+  EXPECT_EQ(archive_->save_proxy_state({"bus1", 127}, kept, testing::at_ms(2)).error().code,
+            ArchiveError::kInvalidArgument);
+  EXPECT_EQ(archive_->load_proxy_state(station).value(), kept);
+}
+
+}  // namespace
+}  // namespace rs4sim::storage

@@ -35,7 +35,7 @@ void BM_MemoryBusCycle125(benchmark::State& state) {
   }
   b.run_for(50ms);  // steady state
   std::uint64_t wire_bits = 0, telegrams = 0;
-  b.bus().set_observer([&](const dp::link::BusEvent& e) {
+  b.bus().add_observer([&](const dp::link::BusEvent& e) {
     const auto& t = *e.telegram;
     const bool request = t.type == dp::fdl::FrameType::kToken ||
                          (t.type != dp::fdl::FrameType::kShortAck && t.fc.is_request());

@@ -18,7 +18,7 @@ using Bytes = std::vector<std::uint8_t>;
 class ScriptMaster final : public Station {
  public:
   ScriptMaster(link::MemoryBus& bus, std::uint8_t address) : bus_(bus), address_(address) {
-    bus_.set_observer([this](const link::BusEvent& e) {
+    bus_.add_observer([this](const link::BusEvent& e) {
       if (e.from != address_) last_reply_.assign(e.wire.begin(), e.wire.end());
     });
   }

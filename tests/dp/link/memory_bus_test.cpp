@@ -26,7 +26,7 @@ struct Wire {
 class MemoryBusTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    bus.set_observer([this](const BusEvent& e) {
+    bus.add_observer([this](const BusEvent& e) {
       log.push_back({e.from, e.to, Bytes(e.wire.begin(), e.wire.end()), e.fate, e.time, e.arrival});
     });
   }

@@ -23,7 +23,7 @@ int run_rs4_device(const Rs4RunOptions& o, std::ostream& out) {
 
 TEST(Rs4Demo, EveryStepHappensAndIsNarrated) {
   std::ostringstream out;
-  EXPECT_EQ(run_rs4_demo(out), 0) << out.str();
+  EXPECT_EQ(run_rs4_demo(out, DemoOptions{}), 0) << out.str();
   const std::string text = out.str();
   for (const char* line :
        {"DP start-up done", "F-host in RUN", "RS4 operational", "OSSD bit 0", "restart interlock",

@@ -1,0 +1,363 @@
+#include "rpc/rs4_services.h"
+
+#include "rpc/rs4_state.h"
+#include "rpc/service_support.h"
+#include "rpc/status.h"
+#include "rs4/adapter/cyclic_bytes.h"
+
+#include <algorithm>
+#include <optional>
+#include <string>
+#include <variant>
+
+namespace rs4sim::rpc {
+namespace {
+
+using rs4::device::Rs4Device;
+namespace scanner = rs4::scanner;
+
+constexpr std::uint64_t kMaxSimulatedMs = 24ULL * 3600 * 1000;  // one call advances ≤ 24 h
+constexpr std::uint32_t kMaxPressMs = 60'000;
+
+scanner::Point point(const v1::PointMm& p) { return {p.x(), p.y()}; }
+
+// The shape of the request, or the INVALID_ARGUMENT naming the field.
+std::variant<scanner::Shape, grpc::Status> to_shape(const v1::AddObstacleRequest& in) {
+  using v1::AddObstacleRequest;
+  switch (in.shape_case()) {
+    case AddObstacleRequest::kCircle:
+      return scanner::Shape{scanner::Circle{point(in.circle().centre()), in.circle().radius()}};
+    case AddObstacleRequest::kPolygon: {
+      scanner::Polygon polygon;
+      for (const auto& v : in.polygon().vertices()) polygon.vertices.push_back(point(v));
+      return scanner::Shape{std::move(polygon)};
+    }
+    case AddObstacleRequest::kWall:
+      return scanner::Shape{scanner::Wall{point(in.wall().a()), point(in.wall().b())}};
+    case AddObstacleRequest::kPoint:
+      return scanner::Shape{scanner::PointObstacle{point(in.point())}};
+    case AddObstacleRequest::kContour: {
+      const auto& mm = in.contour().mm();
+      if (static_cast<std::size_t>(mm.size()) != scanner::kSegmentCount) {
+        return invalid_argument("contour.mm", std::to_string(mm.size()) + " values, the RS4 has " +
+                                                  std::to_string(scanner::kSegmentCount) +
+                                                  " segments");
+      }
+      scanner::RawContour raw;
+      for (int i = 0; i < mm.size(); ++i) {
+        if (mm[i] > 0xFFFF) {
+          return invalid_argument("contour.mm[" + std::to_string(i) + "]",
+                                  std::to_string(mm[i]) + " mm is above 65535");
+        }
+        raw.mm.push_back(static_cast<std::uint16_t>(mm[i]));
+      }
+      return scanner::Shape{std::move(raw)};
+    }
+    case AddObstacleRequest::SHAPE_NOT_SET: break;
+  }
+  return invalid_argument("shape", "one of circle, polygon, wall, point or contour is required");
+}
+
+const char* shape_field(const v1::AddObstacleRequest& in) {
+  switch (in.shape_case()) {
+    case v1::AddObstacleRequest::kCircle: return "circle";
+    case v1::AddObstacleRequest::kPolygon: return "polygon";
+    case v1::AddObstacleRequest::kWall: return "wall";
+    case v1::AddObstacleRequest::kPoint: return "point";
+    default: return "contour";
+  }
+}
+
+std::optional<scanner::Fault> to_fault(v1::Fault f) {
+  switch (f) {
+    case v1::FAULT_OSSD_CROSS_CIRCUIT: return scanner::Fault::kOssdCrossCircuit;
+    case v1::FAULT_MOTOR_SPEED: return scanner::Fault::kMotorSpeed;
+    case v1::FAULT_INTERNAL_HARDWARE: return scanner::Fault::kInternalHardware;
+    case v1::FAULT_DAZZLED: return scanner::Fault::kDazzled;
+    default: return std::nullopt;
+  }
+}
+
+// A narrow obstacle of three beams inside the field the request names, in the active pair
+// (docs/rpc.md "ViolateField"); nullopt when that pair has no such field.
+std::optional<scanner::RawContour> field_violation(const scanner::FieldPair& pair, bool warning) {
+  std::optional<std::size_t> best;
+  std::uint16_t best_mm = 0;
+  for (std::size_t s = 0; s < scanner::kSegmentCount; ++s) {
+    const std::uint16_t p = pair.protective_mm[s];
+    const std::uint16_t w = pair.warning_mm[s];
+    const std::uint16_t room = warning ? (w > p ? static_cast<std::uint16_t>(w - p) : 0) : p;
+    if (room > best_mm) {
+      best_mm = room;
+      best = s;
+    }
+  }
+  if (!best || best_mm < 20) return std::nullopt;
+  scanner::RawContour raw{std::vector<std::uint16_t>(scanner::kSegmentCount, scanner::kNoEchoMm)};
+  const std::size_t first = *best == 0 ? 0 : *best - 1;
+  const std::size_t last = std::min(*best + 1, scanner::kSegmentCount - 1);
+  for (std::size_t s = first; s <= last; ++s) {
+    const std::uint16_t p = pair.protective_mm[s];
+    const std::uint16_t w = pair.warning_mm[s];
+    if (warning && w > p + 10) raw.mm[s] = static_cast<std::uint16_t>(p + (w - p) / 2);
+    if (!warning && p > 10) raw.mm[s] = static_cast<std::uint16_t>(p / 2);
+  }
+  return raw;
+}
+
+}  // namespace
+
+grpc::Status DeviceService::ListDevices(grpc::ServerContext*, const v1::ListDevicesRequest*,
+                                        v1::ListDevicesResponse* out) {
+  c_.executor.run([&] {
+    for (const auto a : c_.target.addresses()) {
+      auto* d = out->add_devices();
+      d->set_address(a);
+      d->set_kind("rs4");
+      const auto* device = c_.target.device(a);
+      d->set_powered(device != nullptr && device->powered());
+    }
+  });
+  return grpc::Status::OK;
+}
+
+grpc::Status DeviceService::AddObstacle(grpc::ServerContext*, const v1::AddObstacleRequest* in,
+                                        v1::AddObstacleResponse* out) {
+  auto shape = to_shape(*in);
+  if (auto* bad = std::get_if<grpc::Status>(&shape)) return *bad;
+  if (auto ok = scanner::check_shape(std::get<scanner::Shape>(shape)); !ok) {
+    return invalid_argument(shape_field(*in), ok.error().message());
+  }
+  return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint now) {
+    auto id = d.scanner().edit_scene(now).add(std::move(std::get<scanner::Shape>(shape)));
+    if (!id) {
+      return failed_precondition("SCENE", "station " + std::to_string(in->address()),
+                                 id.error().message());
+    }
+    out->set_obstacle_id(id.value());
+    return grpc::Status::OK;
+  });
+}
+
+grpc::Status DeviceService::RemoveObstacle(grpc::ServerContext*,
+                                           const v1::RemoveObstacleRequest* in, v1::Empty*) {
+  return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint now) {
+    if (!d.scanner().edit_scene(now).remove(in->obstacle_id())) {
+      return not_found("no obstacle " + std::to_string(in->obstacle_id()) + " at station " +
+                       std::to_string(in->address()));
+    }
+    return grpc::Status::OK;
+  });
+}
+
+grpc::Status DeviceService::ClearScene(grpc::ServerContext*, const v1::StationRequest* in,
+                                       v1::Empty*) {
+  return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint now) {
+    d.scanner().edit_scene(now).clear();
+    return grpc::Status::OK;
+  });
+}
+
+grpc::Status DeviceService::ViolateField(grpc::ServerContext*, const v1::ViolateFieldRequest* in,
+                                         v1::AddObstacleResponse* out) {
+  if (in->field() != v1::FIELD_KIND_PROTECTIVE && in->field() != v1::FIELD_KIND_WARNING) {
+    return invalid_argument("field", "FIELD_KIND_PROTECTIVE or FIELD_KIND_WARNING");
+  }
+  const bool warning = in->field() == v1::FIELD_KIND_WARNING;
+  return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint now) {
+    const std::uint8_t pair = d.scanner().status().first_pair;
+    const std::string subject = "station " + std::to_string(in->address());
+    if (pair < 1 || pair > scanner::kFieldPairCount) {
+      return failed_precondition("STATE", subject, "no field pair is active (RS4 not measuring)");
+    }
+    auto raw = field_violation(d.scanner().parameters().pairs[pair - 1U], warning);
+    if (!raw) {
+      return failed_precondition(
+          "PARAMETERS", subject,
+          "field pair " + std::to_string(pair) + " has no " +
+              (warning ? "warning field beyond its protective field" : "protective field"));
+    }
+    auto id = d.scanner().edit_scene(now).add(std::move(*raw));
+    if (!id) return failed_precondition("SCENE", subject, id.error().message());
+    out->set_obstacle_id(id.value());
+    return grpc::Status::OK;
+  });
+}
+
+grpc::Status DeviceService::SetContamination(grpc::ServerContext*,
+                                             const v1::SetContaminationRequest* in, v1::Empty*) {
+  if (in->percent() > 100) {
+    return invalid_argument("percent", std::to_string(in->percent()) + " is above 100");
+  }
+  return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint now) {
+    d.scanner().set_contamination(static_cast<std::uint8_t>(in->percent()), now);
+    return grpc::Status::OK;
+  });
+}
+
+grpc::Status DeviceService::fault(std::uint32_t address, v1::Fault which, bool inject) {
+  const auto f = to_fault(which);
+  if (!f) {
+    return invalid_argument("fault",
+                            "one of FAULT_OSSD_CROSS_CIRCUIT, FAULT_MOTOR_SPEED, "
+                            "FAULT_INTERNAL_HARDWARE, FAULT_DAZZLED");
+  }
+  return on_device(c_, address, [&](Rs4Device& d, dp::TimePoint now) {
+    auto r = inject ? d.scanner().inject_fault(*f, now) : d.scanner().clear_fault(*f, now);
+    if (!r) {
+      return failed_precondition("FAULT", "station " + std::to_string(address),
+                                 r.error().message());
+    }
+    return grpc::Status::OK;
+  });
+}
+
+grpc::Status DeviceService::InjectFault(grpc::ServerContext*, const v1::FaultRequest* in,
+                                        v1::Empty*) {
+  return fault(in->address(), in->fault(), true);
+}
+
+grpc::Status DeviceService::ClearFault(grpc::ServerContext*, const v1::FaultRequest* in,
+                                       v1::Empty*) {
+  return fault(in->address(), in->fault(), false);
+}
+
+grpc::Status DeviceService::SetPcAdapter(grpc::ServerContext*, const v1::SetPcAdapterRequest* in,
+                                         v1::Empty*) {
+  return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint now) {
+    if (in->attached()) {
+      d.adapter().attach_pc_adapter(now);
+    } else {
+      d.adapter().detach_pc_adapter(now);
+    }
+    return grpc::Status::OK;
+  });
+}
+
+grpc::Status DeviceService::PressRestart(grpc::ServerContext*, const v1::PressRestartRequest* in,
+                                         v1::Empty*) {
+  if (in->duration_ms() == 0 || in->duration_ms() > kMaxPressMs) {
+    return invalid_argument("duration_ms", std::to_string(in->duration_ms()) +
+                                               " ms outside 1..60000 (the RS4 accepts 120..5000)");
+  }
+  const auto address = static_cast<std::uint8_t>(in->address());
+  return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint now) {
+    d.adapter().set_restart_button(true, now);
+    Rs4Target& target = c_.target;
+    target.after(std::chrono::milliseconds(in->duration_ms()), [&target, address] {
+      if (auto* device = target.device(address)) {
+        device->adapter().set_restart_button(false, target.now());
+      }
+    });
+    return grpc::Status::OK;
+  });
+}
+
+grpc::Status DeviceService::SetPower(grpc::ServerContext*, const v1::SetPowerRequest* in,
+                                     v1::Empty*) {
+  return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint now) {
+    if (in->on() && !d.powered()) d.power_on(now);
+    if (!in->on() && d.powered()) d.power_off(now);
+    return grpc::Status::OK;
+  });
+}
+
+grpc::Status DeviceService::PowerCycle(grpc::ServerContext*, const v1::StationRequest* in,
+                                       v1::Empty*) {
+  return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint now) {
+    d.power_cycle(now);
+    return grpc::Status::OK;
+  });
+}
+
+grpc::Status DeviceService::SetAddressSwitches(grpc::ServerContext*,
+                                               const v1::SetAddressSwitchesRequest* in,
+                                               v1::Empty*) {
+  if (in->high() > 0xF) return invalid_argument("high", "HexH switch takes 0..15");
+  if (in->low() > 0xF) return invalid_argument("low", "HexL switch takes 0..15");
+  const rs4::adapter::AddressSwitches s{static_cast<std::uint8_t>(in->high()),
+                                        static_cast<std::uint8_t>(in->low())};
+  if (auto a = rs4::adapter::station_address(s); !a) {
+    return invalid_argument("high", a.error().message());
+  }
+  return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint) {
+    d.set_address_switches(s);
+    return grpc::Status::OK;
+  });
+}
+
+grpc::Status ObservationService::GetState(grpc::ServerContext*, const v1::StationRequest* in,
+                                          v1::DeviceState* out) {
+  return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint now) {
+    fill_state(d, static_cast<std::uint8_t>(in->address()), now, *out);
+    return grpc::Status::OK;
+  });
+}
+
+grpc::Status ObservationService::GetContour(grpc::ServerContext*, const v1::StationRequest* in,
+                                            v1::Contour* out) {
+  return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint) {
+    fill_contour(d, *out);
+    return grpc::Status::OK;
+  });
+}
+
+grpc::Status SimTimeService::Now(grpc::ServerContext*, const v1::Empty*, v1::TimeResponse* out) {
+  c_.executor.run([&] {
+    out->set_now_ns(to_ns(c_.target.now()));
+    out->set_simulated(c_.target.simulated());
+  });
+  return grpc::Status::OK;
+}
+
+grpc::Status SimTimeService::Advance(grpc::ServerContext*, const v1::AdvanceRequest* in,
+                                     v1::TimeResponse* out) {
+  if (in->duration_ms() == 0 || in->duration_ms() > kMaxSimulatedMs) {
+    return invalid_argument("duration_ms",
+                            std::to_string(in->duration_ms()) + " ms outside 1..86400000 (24 h)");
+  }
+  grpc::Status result;
+  c_.executor.run([&] {
+    if (!c_.target.simulated()) {
+      result = needs_simulated_clock();
+      return;
+    }
+    c_.target.run_until([] { return false; }, std::chrono::milliseconds(in->duration_ms()));
+    out->set_now_ns(to_ns(c_.target.now()));
+    out->set_simulated(true);
+  });
+  return result;
+}
+
+grpc::Status SimTimeService::RunUntil(grpc::ServerContext*, const v1::RunUntilRequest* in,
+                                      v1::RunUntilResponse* out) {
+  if (in->timeout_ms() == 0 || in->timeout_ms() > kMaxSimulatedMs) {
+    return invalid_argument("timeout_ms",
+                            std::to_string(in->timeout_ms()) + " ms outside 1..86400000 (24 h)");
+  }
+  const auto condition = in->condition();
+  if (condition == v1::CONDITION_UNSPECIFIED || !v1::Condition_IsValid(condition)) {
+    return invalid_argument("condition", "a CONDITION_* value is required");
+  }
+  return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint) {
+    if (!c_.target.simulated()) return needs_simulated_clock();
+    const auto holds = [&d, condition] {
+      const std::uint8_t in_byte = d.adapter().input_byte();
+      switch (condition) {
+        case v1::CONDITION_DATA_EXCHANGE: return d.adapter().view().connected;
+        case v1::CONDITION_OSSD_ON: return (in_byte & rs4::adapter::kInputOssd) != 0;
+        case v1::CONDITION_OSSD_OFF: return (in_byte & rs4::adapter::kInputOssd) == 0;
+        case v1::CONDITION_PROXY_REQUEST: return (in_byte & rs4::adapter::kInputProxyRequest) != 0;
+        case v1::CONDITION_RS4_MEASURING:
+          return d.scanner().status().state == scanner::ScannerState::kMeasuring;
+        default: return false;
+      }
+    };
+    out->set_reached(holds() ||
+                     c_.target.run_until(holds, std::chrono::milliseconds(in->timeout_ms())));
+    out->set_now_ns(to_ns(c_.target.now()));
+    return grpc::Status::OK;
+  });
+}
+
+}  // namespace rs4sim::rpc

@@ -1,0 +1,89 @@
+#pragma once
+// The rs4sim.v1 services of an RS4 run (docs/rpc.md): Device, Observation, SimTime.
+// Requests are checked on the gRPC thread (INVALID_ARGUMENT with the field), then run on
+// the loop through the Executor; no core is touched from a gRPC thread.
+
+#include "rpc/executor.h"
+#include "rpc/rs4_target.h"
+#include "rs4sim/v1/rs4.grpc.pb.h"
+
+namespace rs4sim::rpc {
+
+struct Rs4Context {
+  Rs4Target& target;
+  Executor& executor;
+};
+
+class DeviceService final : public v1::Device::Service {
+ public:
+  explicit DeviceService(Rs4Context context) : c_(context) {}
+  grpc::Status ListDevices(grpc::ServerContext*, const v1::ListDevicesRequest*,
+                           v1::ListDevicesResponse* out) override;
+  grpc::Status AddObstacle(grpc::ServerContext*, const v1::AddObstacleRequest* in,
+                           v1::AddObstacleResponse* out) override;
+  grpc::Status RemoveObstacle(grpc::ServerContext*, const v1::RemoveObstacleRequest* in,
+                              v1::Empty*) override;
+  grpc::Status ClearScene(grpc::ServerContext*, const v1::StationRequest* in, v1::Empty*) override;
+  grpc::Status ViolateField(grpc::ServerContext*, const v1::ViolateFieldRequest* in,
+                            v1::AddObstacleResponse* out) override;
+  grpc::Status SetContamination(grpc::ServerContext*, const v1::SetContaminationRequest* in,
+                                v1::Empty*) override;
+  grpc::Status InjectFault(grpc::ServerContext*, const v1::FaultRequest* in, v1::Empty*) override;
+  grpc::Status ClearFault(grpc::ServerContext*, const v1::FaultRequest* in, v1::Empty*) override;
+  grpc::Status SetPcAdapter(grpc::ServerContext*, const v1::SetPcAdapterRequest* in,
+                            v1::Empty*) override;
+  grpc::Status PressRestart(grpc::ServerContext*, const v1::PressRestartRequest* in,
+                            v1::Empty*) override;
+  grpc::Status SetPower(grpc::ServerContext*, const v1::SetPowerRequest* in, v1::Empty*) override;
+  grpc::Status PowerCycle(grpc::ServerContext*, const v1::StationRequest* in, v1::Empty*) override;
+  grpc::Status SetAddressSwitches(grpc::ServerContext*, const v1::SetAddressSwitchesRequest* in,
+                                  v1::Empty*) override;
+
+ private:
+  grpc::Status fault(std::uint32_t address, v1::Fault fault, bool inject);
+  Rs4Context c_;
+};
+
+class ObservationService final : public v1::Observation::Service {
+ public:
+  explicit ObservationService(Rs4Context context) : c_(context) {}
+  grpc::Status GetState(grpc::ServerContext*, const v1::StationRequest* in,
+                        v1::DeviceState* out) override;
+  grpc::Status GetContour(grpc::ServerContext*, const v1::StationRequest* in,
+                          v1::Contour* out) override;
+
+ private:
+  Rs4Context c_;
+};
+
+class FaultsService final : public v1::Faults::Service {
+ public:
+  explicit FaultsService(Rs4Context context) : c_(context) {}
+  grpc::Status InjectBusFault(grpc::ServerContext*, const v1::BusFaultRequest* in,
+                              v1::BusFaultResponse* out) override;
+  grpc::Status ClearBusFaults(grpc::ServerContext*, const v1::Empty*, v1::Empty*) override;
+  grpc::Status SetSilenced(grpc::ServerContext*, const v1::SetSilencedRequest* in,
+                           v1::Empty*) override;
+  grpc::Status InjectSafetyFault(grpc::ServerContext*, const v1::SafetyFaultRequest* in,
+                                 v1::Empty*) override;
+  grpc::Status ClearSafetyFaults(grpc::ServerContext*, const v1::StationRequest* in,
+                                 v1::Empty*) override;
+
+ private:
+  Rs4Context c_;
+};
+
+class SimTimeService final : public v1::SimTime::Service {
+ public:
+  explicit SimTimeService(Rs4Context context) : c_(context) {}
+  grpc::Status Now(grpc::ServerContext*, const v1::Empty*, v1::TimeResponse* out) override;
+  grpc::Status Advance(grpc::ServerContext*, const v1::AdvanceRequest* in,
+                       v1::TimeResponse* out) override;
+  grpc::Status RunUntil(grpc::ServerContext*, const v1::RunUntilRequest* in,
+                        v1::RunUntilResponse* out) override;
+
+ private:
+  Rs4Context c_;
+};
+
+}  // namespace rs4sim::rpc

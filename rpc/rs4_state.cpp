@@ -1,0 +1,98 @@
+#include "rpc/rs4_state.h"
+
+#include <string>
+
+namespace rs4sim::rpc {
+namespace {
+
+// "steady-init" from kSteadyInit and the like: the names the API documents.
+std::string kebab(std::string_view name) {
+  std::string out;
+  for (const char c : name) {
+    if (c == '_' || c == ' ') {
+      out += '-';
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+const char* led_name(rs4::adapter::LedState s) {
+  using rs4::adapter::LedState;
+  switch (s) {
+    case LedState::kDark: return "dark";
+    case LedState::kSteadyInit: return "steady-init";
+    case LedState::kFastBlink: return "fast-blink";
+    case LedState::kOffConnected: return "off-connected";
+    case LedState::kSteadyFault: return "steady-fault";
+    case LedState::kSlowBlink: return "slow-blink";
+  }
+  return "unknown";
+}
+
+const char* phase_name(rs4::adapter::ProxyPhase p) {
+  using rs4::adapter::ProxyPhase;
+  switch (p) {
+    case ProxyPhase::kWaitRs4: return "wait-rs4";
+    case ProxyPhase::kRequested: return "requested";
+    case ProxyPhase::kSyncRunning: return "sync-running";
+    case ProxyPhase::kDone: return "done";
+  }
+  return "unknown";
+}
+
+}  // namespace
+
+void fill_state(const rs4::device::Rs4Device& device, std::uint8_t address, dp::TimePoint now,
+                v1::DeviceState& out) {
+  const auto view = device.adapter().view();
+  const auto status = device.scanner().status();
+  out.set_address(address);
+  out.set_powered(device.powered());
+  out.set_led(led_name(view.led));
+  out.set_rs4_state(rs4::scanner::to_string(status.state));
+  out.set_fdevice_state(kebab(profisafe::to_string(view.fdevice)));
+  out.set_proxy_phase(phase_name(view.proxy));
+  out.set_connected(view.connected);
+  out.set_pc_adapter_attached(view.pc_adapter_attached);
+  out.set_input_byte(view.input_byte);
+  auto* in = out.mutable_input();
+  in->set_warning_field_violated(view.input.warning_field);
+  in->set_protective_field_violated(view.input.protective_field);
+  in->set_proxy_request(view.input.proxy_request);
+  in->set_rs232_active(view.input.rs232_active);
+  in->set_not_operational(view.input.not_operational);
+  in->set_error(view.input.error);
+  in->set_warning_output_active(view.input.warning_output_active);
+  in->set_ossd(view.input.ossd);
+  out.set_output_byte(view.output_byte);
+  auto* o = out.mutable_output();
+  o->set_field_pair(view.output.field_pair);
+  o->set_restart(view.output.restart);
+  o->set_proxy_enable(view.output.proxy_enable);
+  out.set_input_pdu(std::string(view.input_pdu.begin(), view.input_pdu.end()));
+  out.set_output_pdu(std::string(view.output_pdu.begin(), view.output_pdu.end()));
+  out.set_ossd(status.ossd);
+  out.set_contamination_percent(status.contamination_percent);
+  out.set_active_field_pair(status.first_pair);
+  const auto& faults = device.scanner().faults();
+  for (std::size_t i = 0; i < faults.size(); ++i) {
+    if (faults[i].present) {
+      out.add_faults_present(
+          std::string(rs4::scanner::fault_info(static_cast<rs4::scanner::Fault>(i)).name));
+    }
+  }
+  out.set_scan_counter(status.scan_counter);
+  out.set_f_dest_add(view.f_dest_add);
+  out.set_now_ns(
+      std::chrono::duration_cast<std::chrono::nanoseconds>(now.time_since_epoch()).count());
+}
+
+void fill_contour(const rs4::device::Rs4Device& device, v1::Contour& out) {
+  const auto& scan = device.scanner().last_scan();
+  out.set_scan_number(scan.scan_number);
+  for (const auto mm : scan.contour) out.add_mm(mm);
+}
+
+}  // namespace rs4sim::rpc

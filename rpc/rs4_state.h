@@ -1,0 +1,15 @@
+#pragma once
+// The observation messages of rs4sim.v1 from an RS4 device (docs/rpc.md).
+
+#include "rs4/device/rs4_device.h"
+#include "rs4sim/v1/rs4.pb.h"
+
+#include <cstdint>
+
+namespace rs4sim::rpc {
+
+void fill_state(const rs4::device::Rs4Device& device, std::uint8_t address, dp::TimePoint now,
+                v1::DeviceState& out);
+void fill_contour(const rs4::device::Rs4Device& device, v1::Contour& out);
+
+}  // namespace rs4sim::rpc

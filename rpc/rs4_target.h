@@ -1,0 +1,39 @@
+#pragma once
+// What the RS4 services need from the running process (rs4sim run / demo / a test): the
+// devices by station address and the clock. Every call is made on the loop thread
+// (through rpc::Executor), so the cores see one thread only.
+
+#include "dp/link/memory_bus.h"
+#include "dp/time/clock.h"
+#include "rs4/device/rs4_device.h"
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace rs4sim::rpc {
+
+class Rs4Target {
+ public:
+  virtual ~Rs4Target() = default;
+  [[nodiscard]] virtual std::vector<std::uint8_t> addresses() const = 0;
+  // nullptr for an unknown station.
+  virtual rs4::device::Rs4Device* device(std::uint8_t address) = 0;
+  [[nodiscard]] virtual dp::TimePoint now() const = 0;
+  // True when the run is on the manual clock: time moves only through run_until.
+  [[nodiscard]] virtual bool simulated() const = 0;
+  // Simulated runs: advances time, checking `done` after every bus event, until it holds
+  // or `limit` passed; returns done().
+  virtual bool run_until(const std::function<bool()>& done, dp::Duration limit) = 0;
+  // The simulated bus for bus faults; nullptr on a real link.
+  virtual dp::link::MemoryBus* bus() = 0;
+  // Runs `f` on the loop after `delay` (simulated runs: advances time by `delay` first).
+  virtual void after(dp::Duration delay, std::function<void()> f) = 0;
+
+ protected:
+  Rs4Target() = default;
+  Rs4Target(const Rs4Target&) = default;
+  Rs4Target& operator=(const Rs4Target&) = default;
+};
+
+}  // namespace rs4sim::rpc

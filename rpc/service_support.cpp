@@ -1,0 +1,52 @@
+#include "rpc/service_support.h"
+
+#include "rpc/status.h"
+
+#include <string>
+
+namespace rs4sim::rpc {
+namespace {
+
+std::string station_list(const Rs4Target& target) {
+  std::string out;
+  for (const auto a : target.addresses()) out += (out.empty() ? "" : ", ") + std::to_string(a);
+  return out;
+}
+
+}  // namespace
+
+grpc::Status on_device(const Rs4Context& c, std::uint32_t address, const DeviceFn& fn) {
+  if (address > 126) {
+    return invalid_argument("address",
+                            "station address " + std::to_string(address) + " outside 0..126");
+  }
+  grpc::Status result;
+  c.executor.run([&] {
+    auto* device = c.target.device(static_cast<std::uint8_t>(address));
+    if (device == nullptr) {
+      result = not_found("no RS4 at station " + std::to_string(address) +
+                         " (stations: " + station_list(c.target) + ")");
+      return;
+    }
+    result = fn(*device, c.target.now());
+  });
+  return result;
+}
+
+grpc::Status needs_simulated_clock() {
+  return failed_precondition("CLOCK", "simulated time",
+                             "this run is on the real-time clock; start it with the manual "
+                             "clock (rs4sim demo, or --clock sim) to control time");
+}
+
+grpc::Status needs_simulated_bus() {
+  return failed_precondition("LINK", "bus faults",
+                             "this run is on a real link; bus faults need the simulated bus "
+                             "(--link memory)");
+}
+
+std::int64_t to_ns(dp::TimePoint t) {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(t.time_since_epoch()).count();
+}
+
+}  // namespace rs4sim::rpc

@@ -1,0 +1,333 @@
+// The rs4sim.v1 API on a real gRPC server on loopback, in front of a simulated RS4 segment
+// (rpc/segment_target.h) whose loop runs on its own thread, as in a run. Known answers: the
+// RS4 manual's behaviour (boot ≈30 s, OSSD off on a protective-field violation, restart
+// interlock) and the public wire formats of grpc.health.v1 (HealthCheckResponse{status =
+// SERVING} = 08 01) and google.rpc.Status/BadRequest.
+#include "google/rpc/error_details.pb.h"
+#include "google/rpc/status.pb.h"
+#include "rpc/executor.h"
+#include "rpc/rs4_services.h"
+#include "rpc/segment_target.h"
+#include "rpc/server.h"
+#include "rs4sim/v1/rs4.grpc.pb.h"
+
+#include <boost/asio/executor_work_guard.hpp>
+#include <boost/asio/io_context.hpp>
+#include <gtest/gtest.h>
+
+#include <grpcpp/create_channel.h>
+#include <grpcpp/generic/generic_stub.h>
+#include <grpcpp/security/credentials.h>
+#include <grpcpp/support/byte_buffer.h>
+
+#include <future>
+#include <memory>
+#include <thread>
+
+namespace rs4sim::rpc {
+namespace {
+
+using namespace std::chrono_literals;
+
+class RpcRs4Test : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    segment_.power_on();
+    loop_ = std::thread([this] { io_.run(); });
+    server_ = std::make_unique<RpcServer>(
+        ServerOptions{}, std::vector<grpc::Service*>{&device_, &observation_, &time_, &faults_});
+    channel_ = grpc::CreateChannel(server_->address(), grpc::InsecureChannelCredentials());
+    device_stub_ = v1::Device::NewStub(channel_);
+    observation_stub_ = v1::Observation::NewStub(channel_);
+    time_stub_ = v1::SimTime::NewStub(channel_);
+    faults_stub_ = v1::Faults::NewStub(channel_);
+  }
+  void TearDown() override {
+    server_->shutdown();
+    work_.reset();
+    loop_.join();
+  }
+
+  bool run_until(v1::Condition condition, std::uint64_t timeout_ms) {
+    grpc::ClientContext ctx;
+    v1::RunUntilRequest req;
+    req.set_address(4);
+    req.set_condition(condition);
+    req.set_timeout_ms(timeout_ms);
+    v1::RunUntilResponse res;
+    const auto status = time_stub_->RunUntil(&ctx, req, &res);
+    EXPECT_TRUE(status.ok()) << status.error_message();
+    return res.reached();
+  }
+  v1::DeviceState state() {
+    grpc::ClientContext ctx;
+    v1::StationRequest req;
+    req.set_address(4);
+    v1::DeviceState out;
+    EXPECT_TRUE(observation_stub_->GetState(&ctx, req, &out).ok());
+    return out;
+  }
+  void advance(std::uint64_t ms) {
+    grpc::ClientContext ctx;
+    v1::AdvanceRequest req;
+    req.set_duration_ms(ms);
+    v1::TimeResponse t;
+    ASSERT_TRUE(time_stub_->Advance(&ctx, req, &t).ok());
+  }
+  void press_restart(std::uint32_t ms) {
+    grpc::ClientContext ctx;
+    v1::PressRestartRequest req;
+    req.set_address(4);
+    req.set_duration_ms(ms);
+    v1::Empty e;
+    ASSERT_TRUE(device_stub_->PressRestart(&ctx, req, &e).ok());
+  }
+  // Power-up with the factory start/restart interlock: the OSSD waits for a restart pulse
+  // once the RS4 measures [RS4 manual §4.3].
+  void boot() {
+    ASSERT_TRUE(run_until(v1::CONDITION_DATA_EXCHANGE, 10'000));
+    ASSERT_TRUE(run_until(v1::CONDITION_RS4_MEASURING, 60'000));
+    ASSERT_FALSE(run_until(v1::CONDITION_OSSD_ON, 500));
+    press_restart(200);
+    ASSERT_TRUE(run_until(v1::CONDITION_OSSD_ON, 1000));
+  }
+
+  rs4::device::Rs4Segment segment_{rs4::device::Rs4SegmentConfig{}};
+  boost::asio::io_context io_;
+  std::optional<boost::asio::executor_work_guard<boost::asio::io_context::executor_type>> work_{
+      io_.get_executor()};
+  std::thread loop_;
+  SegmentTarget target_{segment_};
+  AsioExecutor executor_{io_};
+  DeviceService device_{{target_, executor_}};
+  ObservationService observation_{{target_, executor_}};
+  SimTimeService time_{{target_, executor_}};
+  FaultsService faults_{{target_, executor_}};
+  std::unique_ptr<RpcServer> server_;
+  std::shared_ptr<grpc::Channel> channel_;
+  std::unique_ptr<v1::Device::Stub> device_stub_;
+  std::unique_ptr<v1::Observation::Stub> observation_stub_;
+  std::unique_ptr<v1::SimTime::Stub> time_stub_;
+  std::unique_ptr<v1::Faults::Stub> faults_stub_;
+};
+
+TEST_F(RpcRs4Test, ListensOnLoopbackOnly) {
+  EXPECT_EQ(server_->address().rfind("127.0.0.1:", 0), 0U) << server_->address();
+  EXPECT_GT(server_->port(), 0);
+  EXPECT_NE(check_listen_address("0.0.0.0:50051").find("TLS"), std::string::npos);
+  EXPECT_NE(check_listen_address("localhost").find("HOST:PORT"), std::string::npos);
+  EXPECT_EQ(check_listen_address("[::1]:0"), "");
+  EXPECT_THROW(RpcServer(ServerOptions{"192.168.1.2:50051"}, {}), std::invalid_argument);
+}
+
+TEST_F(RpcRs4Test, BootsInSimulatedTimeAndReportsTheState) {
+  boot();
+  const auto s = state();
+  EXPECT_TRUE(s.powered());
+  EXPECT_TRUE(s.connected());
+  EXPECT_EQ(s.rs4_state(), "measuring");
+  EXPECT_EQ(s.led(), "off-connected");  // [RS4 manual §4.4]: LED off in data exchange
+  EXPECT_TRUE(s.input().ossd());
+  EXPECT_TRUE(s.ossd());
+  EXPECT_EQ(s.input_byte() & 0x80U, 0x80U);
+  EXPECT_EQ(s.f_dest_add(), 504U);  // 500 + address 4 [RS4 manual §6.2]
+  EXPECT_EQ(s.output().field_pair(), 1U);
+  EXPECT_EQ(s.input_pdu().size(), 5U);
+  EXPECT_GE(s.now_ns(), 30'000'000'000);  // the RS4 boots in ≈30 s [RS4 manual §7.1.1]
+  grpc::ClientContext ctx;
+  v1::TimeResponse now;
+  ASSERT_TRUE(time_stub_->Now(&ctx, v1::Empty{}, &now).ok());
+  EXPECT_TRUE(now.simulated());
+}
+
+TEST_F(RpcRs4Test, ProtectiveFieldViolationAndRestart) {
+  boot();
+  v1::AddObstacleResponse obstacle;
+  {
+    grpc::ClientContext ctx;
+    v1::ViolateFieldRequest req;
+    req.set_address(4);
+    req.set_field(v1::FIELD_KIND_PROTECTIVE);
+    ASSERT_TRUE(device_stub_->ViolateField(&ctx, req, &obstacle).ok());
+  }
+  ASSERT_TRUE(run_until(v1::CONDITION_OSSD_OFF, 1000));
+  EXPECT_TRUE(state().input().protective_field_violated());
+  {
+    grpc::ClientContext ctx;
+    v1::RemoveObstacleRequest req;
+    req.set_address(4);
+    req.set_obstacle_id(obstacle.obstacle_id());
+    v1::Empty e;
+    ASSERT_TRUE(device_stub_->RemoveObstacle(&ctx, req, &e).ok());
+  }
+  // Restart interlock: the field is free, but the OSSD stays off until a restart pulse.
+  EXPECT_FALSE(run_until(v1::CONDITION_OSSD_ON, 1000));
+  press_restart(300);
+  EXPECT_TRUE(run_until(v1::CONDITION_OSSD_ON, 1000));
+}
+
+// The BadRequest field of an INVALID_ARGUMENT status.
+std::string bad_field(const grpc::Status& status) {
+  google::rpc::Status rich;
+  if (!rich.ParseFromString(status.error_details()) || rich.details_size() != 1) return "?";
+  google::rpc::BadRequest bad;
+  if (!rich.details(0).UnpackTo(&bad) || bad.field_violations_size() != 1) return "?";
+  return bad.field_violations(0).field();
+}
+
+TEST_F(RpcRs4Test, BadInputGetsASpecificStatus) {
+  v1::Empty e;
+  {
+    grpc::ClientContext ctx;
+    v1::SetContaminationRequest req;
+    req.set_address(9);
+    const auto s = device_stub_->SetContamination(&ctx, req, &e);
+    EXPECT_EQ(s.error_code(), grpc::StatusCode::NOT_FOUND);
+    EXPECT_EQ(s.error_message(), "no RS4 at station 9 (stations: 4)");
+  }
+  {
+    grpc::ClientContext ctx;
+    v1::SetContaminationRequest req;
+    req.set_address(200);
+    const auto s = device_stub_->SetContamination(&ctx, req, &e);
+    EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+    EXPECT_EQ(bad_field(s), "address");
+  }
+  {
+    grpc::ClientContext ctx;
+    v1::SetContaminationRequest req;
+    req.set_address(4);
+    req.set_percent(101);
+    const auto s = device_stub_->SetContamination(&ctx, req, &e);
+    EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+    EXPECT_EQ(bad_field(s), "percent");
+  }
+  v1::AddObstacleResponse id;
+  {
+    grpc::ClientContext ctx;
+    v1::AddObstacleRequest req;
+    req.set_address(4);
+    req.mutable_circle()->set_radius(-1);
+    const auto s = device_stub_->AddObstacle(&ctx, req, &id);
+    EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+    EXPECT_EQ(bad_field(s), "circle");
+  }
+  {
+    grpc::ClientContext ctx;
+    v1::AddObstacleRequest req;
+    req.set_address(4);
+    for (int i = 0; i < 10; ++i) req.mutable_contour()->add_mm(1000);
+    const auto s = device_stub_->AddObstacle(&ctx, req, &id);
+    EXPECT_EQ(bad_field(s), "contour.mm");
+    EXPECT_NE(s.error_message().find("529 segments"), std::string::npos);
+  }
+  {
+    grpc::ClientContext ctx;
+    v1::AddObstacleRequest req;
+    req.set_address(4);
+    EXPECT_EQ(bad_field(device_stub_->AddObstacle(&ctx, req, &id)), "shape");
+  }
+  {
+    grpc::ClientContext ctx;
+    v1::RunUntilRequest req;
+    req.set_address(4);
+    req.set_timeout_ms(10);
+    v1::RunUntilResponse r;
+    EXPECT_EQ(bad_field(time_stub_->RunUntil(&ctx, req, &r)), "condition");
+  }
+  {
+    grpc::ClientContext ctx;
+    v1::FaultRequest req;
+    req.set_address(4);
+    EXPECT_EQ(bad_field(device_stub_->InjectFault(&ctx, req, &e)), "fault");
+  }
+  {
+    // Before the boot no field pair is active: the shortcut has nothing to violate.
+    grpc::ClientContext ctx;
+    v1::ViolateFieldRequest req;
+    req.set_address(4);
+    req.set_field(v1::FIELD_KIND_PROTECTIVE);
+    const auto s = device_stub_->ViolateField(&ctx, req, &id);
+    EXPECT_EQ(s.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+    google::rpc::Status rich;
+    ASSERT_TRUE(rich.ParseFromString(s.error_details()));
+    google::rpc::PreconditionFailure failure;
+    ASSERT_TRUE(rich.details(0).UnpackTo(&failure));
+    EXPECT_EQ(failure.violations(0).type(), "STATE");
+  }
+}
+
+TEST_F(RpcRs4Test, InjectedFaultSwitchesTheOssdOff) {
+  boot();
+  grpc::ClientContext ctx;
+  v1::FaultRequest req;
+  req.set_address(4);
+  req.set_fault(v1::FAULT_MOTOR_SPEED);
+  v1::Empty e;
+  ASSERT_TRUE(device_stub_->InjectFault(&ctx, req, &e).ok());
+  ASSERT_TRUE(run_until(v1::CONDITION_OSSD_OFF, 1000));
+  const auto s = state();
+  EXPECT_TRUE(s.input().error());
+  ASSERT_EQ(s.faults_present_size(), 1);
+}
+
+TEST_F(RpcRs4Test, SafetyFaultPassivatesTheHostAndSilenceDropsTheConnection) {
+  boot();
+  const auto passivations = [this] {
+    std::uint64_t n = 0;
+    executor_.run([&] { n = segment_.fhost().counters().passivations; });
+    return n;
+  };
+  const auto before = passivations();
+  v1::Empty e;
+  {
+    grpc::ClientContext ctx;
+    v1::SafetyFaultRequest req;
+    req.set_address(4);
+    req.set_fault(v1::SAFETY_FAULT_CORRUPT_CRC2);
+    req.set_count(1);
+    ASSERT_TRUE(faults_stub_->InjectSafetyFault(&ctx, req, &e).ok());
+  }
+  advance(200);
+  EXPECT_EQ(passivations(), before + 1);  // a CRC2 error passivates [IEC 61784-3-3 CRC]
+  {
+    grpc::ClientContext ctx;
+    v1::SetSilencedRequest req;
+    req.set_address(4);
+    req.set_silenced(true);
+    ASSERT_TRUE(faults_stub_->SetSilenced(&ctx, req, &e).ok());
+  }
+  advance(2000);  // beyond the 200 ms DP watchdog of the segment's master
+  EXPECT_FALSE(state().connected());
+  {
+    grpc::ClientContext c2;
+    v1::BusFaultRequest req;
+    req.set_address(4);
+    req.set_kind(v1::BUS_FAULT_KIND_DELAY);
+    req.set_direction(v1::DIRECTION_TO_STATION);
+    req.set_count(1);
+    v1::BusFaultResponse r;
+    const auto s = faults_stub_->InjectBusFault(&c2, req, &r);
+    EXPECT_EQ(bad_field(s), "delay_ms");
+  }
+}
+
+TEST_F(RpcRs4Test, StandardHealthServiceAnswersServing) {
+  grpc::GenericStub stub(channel_);
+  grpc::ClientContext ctx;
+  const grpc::Slice empty;
+  grpc::ByteBuffer request(&empty, 1);  // HealthCheckRequest{service = ""}: no bytes
+  grpc::ByteBuffer response;
+  std::promise<grpc::Status> done;
+  stub.UnaryCall(&ctx, "/grpc.health.v1.Health/Check", grpc::StubOptions(), &request, &response,
+                 [&done](const grpc::Status& s) { done.set_value(s); });
+  ASSERT_TRUE(done.get_future().get().ok());
+  std::vector<grpc::Slice> slices;
+  ASSERT_TRUE(response.Dump(&slices).ok());
+  std::string bytes;
+  for (const auto& s : slices) bytes.append(reinterpret_cast<const char*>(s.begin()), s.size());
+  EXPECT_EQ(bytes, std::string("\x08\x01", 2));  // status = SERVING
+}
+
+}  // namespace
+}  // namespace rs4sim::rpc

@@ -1,0 +1,236 @@
+-- Wireshark/tshark dissector for rs4sim captures (docs/capture.md).
+--
+-- Layers: FDL telegrams [IEC 61158-4-3 frame formats]; the DP services by SAP and Data_Exchange
+-- [IEC 61158-6-3]; DPV1 MSAC_C1/C2 Read/Write/Initiate/Abort and their error responses
+-- [IEC 61158-6-3 MSAC_C1]; the PROFIsafe V1 5-byte PDU of an RS4/PROFIsafe (F-data byte, status
+-- or control byte, consecutive number, CRC2) [RS4 manual §5.1]; and the RS4 block protocol of
+-- slot 0, index 2/3 (flow-control byte, block length, block number, command code)
+-- [RS4 manual §5.2.1], including the project's proxy commands (docs/proxy-protocol.md).
+--
+-- Bound to LINKTYPE_USER0 (147), rs4sim's default capture link type, and registered for
+-- LINKTYPE_PROFIBUS_DL (257) where the Wireshark build maps that type.
+-- Use:  wireshark -X lua_script:tools/wireshark/rs4sim.lua capture.pcap
+--       tshark -X lua_script:tools/wireshark/rs4sim.lua -r capture.pcap -V
+
+local p = Proto("rs4sim", "rs4sim PROFIBUS-DP / PROFIsafe / RS4")
+
+local SD = { [0x10] = "SD1", [0x68] = "SD2", [0xA2] = "SD3", [0xDC] = "SD4 (token)",
+             [0xE5] = "SC (short acknowledge)" }
+local REQ_FN = { [0x0] = "Time Event", [0x3] = "SDA low", [0x4] = "SDN low", [0x5] = "SDA high",
+                 [0x6] = "SDN high", [0x7] = "MSRD", [0x9] = "Request FDL Status",
+                 [0xC] = "SRD low", [0xD] = "SRD high", [0xE] = "Request Ident",
+                 [0xF] = "Request LSAP Status" }
+local RSP_FN = { [0x0] = "OK", [0x1] = "UE (user error)", [0x2] = "RR (no resources)",
+                 [0x3] = "RS (SAP not activated)", [0x8] = "DL (data low)",
+                 [0x9] = "NR (no response data)", [0xA] = "DH (data high)",
+                 [0xC] = "RDL", [0xD] = "RDH" }
+local SAP = { [49] = "MSAC_C2 Initiate", [50] = "Alarm_Ack", [51] = "MSAC_C1", [53] = "Ext_User_Prm",
+              [54] = "Master-Master", [55] = "Set_Slave_Add", [56] = "Rd_Inp", [57] = "Rd_Outp",
+              [58] = "Global_Control", [59] = "Get_Cfg", [60] = "Slave_Diag", [61] = "Set_Prm",
+              [62] = "Chk_Cfg" }
+local DPV1_FN = { [0x51] = "Data_Transport", [0x57] = "Initiate", [0x58] = "Abort",
+                  [0x5C] = "Alarm_Ack", [0x5E] = "Read", [0x5F] = "Write" }
+local FLOW_STATE = { [1] = "no communication path", [2] = "PC adapter attached",
+                     [3] = "proxy executing", [4] = "normal operation", [5] = "no connection" }
+local RS4_CMD = { [0x84] = "PROFI_CMD_ERROR", [0x90] = "PROFI_CMD_GET_VERSION",
+                  [0x91] = "PROFI_CMD_GET_ERROR", [0x92] = "PROFI_CMD_GET_RS4_DATA",
+                  [0x93] = "error in telegram", [0x94] = "PROFI_CMD_RESET",
+                  [0x98] = "PROFI_CMD_PROXY_BEGIN (rs4sim)", [0x99] = "PROFI_CMD_PROXY_END (rs4sim)",
+                  [0x14] = "COM_CMD_ALIVE", [0x23] = "COM_CMD_MESS_16_RT",
+                  [0x24] = "request one scan", [0x53] = "COM_CMD_ERROR_OCCURE",
+                  [0x54] = "COM_CMD_WARNING_OCCURE", [0x60] = "IDENTIFY (rs4sim)",
+                  [0x61] = "UPLOAD_CHUNK (rs4sim)", [0x62] = "DOWNLOAD_BEGIN (rs4sim)",
+                  [0x63] = "DOWNLOAD_CHUNK (rs4sim)", [0x64] = "DOWNLOAD_COMMIT (rs4sim)",
+                  [0x65] = "DOWNLOAD_BREAK (rs4sim)" }
+
+local f = {
+  sd = ProtoField.uint8("rs4sim.fdl.sd", "Start delimiter", base.HEX, SD),
+  le = ProtoField.uint8("rs4sim.fdl.le", "Length", base.DEC),
+  da = ProtoField.uint8("rs4sim.fdl.da", "Destination", base.DEC),
+  sa = ProtoField.uint8("rs4sim.fdl.sa", "Source", base.DEC),
+  fc = ProtoField.uint8("rs4sim.fdl.fc", "Frame control", base.HEX),
+  request = ProtoField.bool("rs4sim.fdl.request", "Request"),
+  fcb = ProtoField.uint8("rs4sim.fdl.fcb", "FCB", base.DEC),
+  fcv = ProtoField.uint8("rs4sim.fdl.fcv", "FCV", base.DEC),
+  fn = ProtoField.string("rs4sim.fdl.function", "Function"),
+  dsap = ProtoField.uint8("rs4sim.fdl.dsap", "DSAP", base.DEC, SAP),
+  ssap = ProtoField.uint8("rs4sim.fdl.ssap", "SSAP", base.DEC),
+  fcs = ProtoField.uint8("rs4sim.fdl.fcs", "FCS", base.HEX),
+  fcs_ok = ProtoField.bool("rs4sim.fdl.fcs_ok", "FCS correct"),
+  du = ProtoField.bytes("rs4sim.fdl.du", "Data unit"),
+  service = ProtoField.string("rs4sim.dp.service", "DP service"),
+  dpv1_fn = ProtoField.uint8("rs4sim.dpv1.function", "DPV1 function", base.HEX),
+  slot = ProtoField.uint8("rs4sim.dpv1.slot", "Slot", base.DEC),
+  index = ProtoField.uint8("rs4sim.dpv1.index", "Index", base.DEC),
+  length = ProtoField.uint8("rs4sim.dpv1.length", "Length", base.DEC),
+  err_decode = ProtoField.uint8("rs4sim.dpv1.error_decode", "Error_Decode", base.HEX),
+  err1 = ProtoField.uint8("rs4sim.dpv1.error_code_1", "Error_Code_1", base.HEX),
+  err2 = ProtoField.uint8("rs4sim.dpv1.error_code_2", "Error_Code_2", base.HEX),
+  flow = ProtoField.uint8("rs4sim.rs4.flow", "Flow-control byte", base.HEX),
+  flow_state = ProtoField.uint8("rs4sim.rs4.flow_state", "Flow state", base.DEC, FLOW_STATE),
+  flow_ready = ProtoField.bool("rs4sim.rs4.flow_ready", "Ready for WRITE"),
+  flow_payload = ProtoField.bool("rs4sim.rs4.flow_payload", "Carries payload"),
+  block_len = ProtoField.uint8("rs4sim.rs4.block_length", "Block length", base.DEC),
+  block_no = ProtoField.uint16("rs4sim.rs4.block_number", "Block number", base.HEX),
+  command = ProtoField.uint8("rs4sim.rs4.command", "Command", base.HEX, RS4_CMD),
+  payload = ProtoField.bytes("rs4sim.rs4.payload", "Payload"),
+  ps_data = ProtoField.uint8("rs4sim.ps.data", "F-data byte", base.HEX),
+  ps_status = ProtoField.uint8("rs4sim.ps.status", "Status byte", base.HEX),
+  ps_control = ProtoField.uint8("rs4sim.ps.control", "Control byte", base.HEX),
+  ps_counter = ProtoField.uint8("rs4sim.ps.counter", "Consecutive number", base.DEC),
+  ps_crc2 = ProtoField.uint16("rs4sim.ps.crc2", "CRC2", base.HEX),
+}
+p.fields = f
+
+local function name(t, v, fallback) return t[v] or fallback or string.format("0x%02X", v) end
+
+-- Whether a block continues a multi-block command: the last block is always 0xFFFF, also
+-- when it is the only one [RS4 manual §5.2.1], so it is a continuation only after a block
+-- 0..0xFFFE in the same direction. Computed on the first pass, kept per frame.
+local open_commands = {}
+local continuation = {}
+local function is_continuation(pinfo, key, number)
+  if not pinfo.visited then
+    continuation[pinfo.number] = number ~= 0 and (number ~= 0xFFFF or open_commands[key] == true)
+    open_commands[key] = number ~= 0xFFFF
+  end
+  return continuation[pinfo.number]
+end
+
+-- RS4 block protocol inside a DPV1 record of slot 0, index 2/3 [RS4 manual §5.2.1].
+local function rs4_block(buf, tree, from_slave, pinfo, key)
+  if buf:len() < 4 then return nil end
+  local t = tree:add(p, buf, "RS4 block")
+  local flow = buf(0, 1):uint()
+  local ft = t:add(f.flow, buf(0, 1))
+  if from_slave then
+    ft:add(f.flow_ready, buf(0, 1), bit.band(flow, 1) ~= 0)
+    ft:add(f.flow_payload, buf(0, 1), bit.band(flow, 2) ~= 0)
+    ft:add(f.flow_state, buf(0, 1), bit.band(bit.rshift(flow, 4), 7))
+  end
+  t:add(f.block_len, buf(1, 1))
+  local number = buf(2, 2):uint()
+  t:add(f.block_no, buf(2, 2)):append_text(number == 0xFFFF and " (last)" or "")
+  if buf:len() > 4 then
+    local payload = buf(4)
+    t:add(f.payload, payload)
+    if not is_continuation(pinfo, key, number) then
+      t:add(f.command, buf(4, 1))
+      return name(RS4_CMD, buf(4, 1):uint())
+    end
+    return number == 0xFFFF and "last block" or ("block " .. number)
+  end
+  return "no payload"
+end
+
+-- DPV1 PDU [IEC 61158-6-3 MSAC_C1]. `request` is the FDL request direction.
+local function dpv1(buf, tree, request, pinfo, key)
+  if buf:len() < 1 then return "poll" end
+  local fn = buf(0, 1):uint()
+  local t = tree:add(p, buf, "DPV1")
+  t:add(f.dpv1_fn, buf(0, 1)):append_text(" (" .. name(DPV1_FN, bit.band(fn, 0x7F)) ..
+                                           (fn >= 0x80 and ", error)" or ")"))
+  local text = name(DPV1_FN, bit.band(fn, 0x7F)) .. (request and ".req" or ".res")
+  if fn >= 0x80 then
+    if buf:len() >= 4 then
+      t:add(f.err_decode, buf(1, 1)); t:add(f.err1, buf(2, 1)); t:add(f.err2, buf(3, 1))
+      return text .. string.format(" error %02X %02X", buf(2, 1):uint(), buf(3, 1):uint())
+    end
+    return text .. " error"
+  end
+  if (fn == 0x5E or fn == 0x5F) and buf:len() >= 4 then
+    t:add(f.slot, buf(1, 1)); t:add(f.index, buf(2, 1)); t:add(f.length, buf(3, 1))
+    local slot, index = buf(1, 1):uint(), buf(2, 1):uint()
+    text = text .. string.format(" slot %d index %d len %d", slot, index, buf(3, 1):uint())
+    local has_data = (fn == 0x5F and request) or (fn == 0x5E and not request)
+    if has_data and buf:len() > 4 and slot == 0 and (index == 2 or index == 3) then
+      local b = rs4_block(buf(4):tvb(), tree, not request, pinfo, key)
+      if b then text = text .. " [" .. b .. "]" end
+    end
+  end
+  return text
+end
+
+-- PROFIsafe V1 PDU of the RS4 in Data_Exchange [RS4 manual §5.1].
+local function profisafe(buf, tree, request)
+  local t = tree:add(p, buf, "PROFIsafe V1")
+  t:add(f.ps_data, buf(0, 1))
+  t:add(request and f.ps_control or f.ps_status, buf(1, 1))
+  t:add(f.ps_counter, buf(2, 1))
+  t:add(f.ps_crc2, buf(3, 2))
+  return string.format("F %02X %s %02X #%d", buf(0, 1):uint(), request and "ctrl" or "stat",
+                       buf(1, 1):uint(), buf(2, 1):uint())
+end
+
+local function dp_service(buf, tree, request, dsap, ssap, pinfo, key)
+  local sap = request and dsap or ssap
+  if sap == nil then
+    if buf:len() == 5 then return "Data_Exchange " .. profisafe(buf, tree, request) end
+    return "Data_Exchange"
+  end
+  if sap == 51 or sap < 49 then return dpv1(buf, tree, request, pinfo, key) end
+  return name(SAP, sap, "SAP " .. sap)
+end
+
+function p.dissector(tvb, pinfo, tree)
+  local n = tvb:len()
+  if n < 1 then return 0 end
+  pinfo.cols.protocol = "rs4sim"
+  local root = tree:add(p, tvb(), "rs4sim telegram")
+  local sd = tvb(0, 1):uint()
+  root:add(f.sd, tvb(0, 1))
+  if sd == 0xE5 then pinfo.cols.info = "SC"; return n end
+  if sd == 0xDC and n >= 3 then
+    root:add(f.da, tvb(1, 1)); root:add(f.sa, tvb(2, 1))
+    pinfo.cols.info = string.format("Token %d → %d", tvb(2, 1):uint(), tvb(1, 1):uint())
+    return n
+  end
+  local h
+  if sd == 0x68 and n >= 9 then root:add(f.le, tvb(1, 1)); h = 4
+  elseif (sd == 0x10 or sd == 0xA2) and n >= 6 then h = 1
+  else pinfo.cols.info = "malformed"; return n end
+  local body_end = n - 2  -- FCS, ED
+  local da, sa, fc = tvb(h, 1):uint(), tvb(h + 1, 1):uint(), tvb(h + 2, 1):uint()
+  root:add(f.da, tvb(h, 1), bit.band(da, 0x7F))
+  root:add(f.sa, tvb(h + 1, 1), bit.band(sa, 0x7F))
+  local fct = root:add(f.fc, tvb(h + 2, 1))
+  local request = bit.band(fc, 0x40) ~= 0
+  fct:add(f.request, tvb(h + 2, 1), request)
+  local fname
+  if request then
+    fct:add(f.fcb, tvb(h + 2, 1), bit.band(bit.rshift(fc, 5), 1))
+    fct:add(f.fcv, tvb(h + 2, 1), bit.band(bit.rshift(fc, 4), 1))
+    fname = name(REQ_FN, bit.band(fc, 0x0F))
+  else
+    fname = name(RSP_FN, bit.band(fc, 0x0F))
+  end
+  fct:add(f.fn, tvb(h + 2, 1), fname)
+  local sum = 0
+  for i = h, body_end - 1 do sum = (sum + tvb(i, 1):uint()) % 256 end
+  root:add(f.fcs, tvb(body_end, 1))
+  root:add(f.fcs_ok, tvb(body_end, 1), sum == tvb(body_end, 1):uint())
+  local pos = h + 3
+  local dsap, ssap
+  if bit.band(da, 0x80) ~= 0 and pos < body_end then
+    dsap = tvb(pos, 1):uint(); root:add(f.dsap, tvb(pos, 1)); pos = pos + 1
+  end
+  if bit.band(sa, 0x80) ~= 0 and pos < body_end then
+    ssap = tvb(pos, 1):uint(); root:add(f.ssap, tvb(pos, 1)); pos = pos + 1
+  end
+  local info = string.format("%d → %d %s", bit.band(sa, 0x7F), bit.band(da, 0x7F), fname)
+  local du_len = body_end - pos
+  if du_len > 0 then root:add(f.du, tvb(pos, du_len)) end
+  local carries_service = dsap ~= nil or ssap ~= nil or du_len > 0
+  if carries_service then
+    local du = du_len > 0 and tvb(pos, du_len):tvb() or ByteArray.new(""):tvb("empty")
+    local key = string.format("%d>%d", bit.band(sa, 0x7F), bit.band(da, 0x7F))
+    local svc = dp_service(du, root, request, dsap, ssap, pinfo, key)
+    root:add(f.service, svc)
+    info = info .. "  " .. svc
+  end
+  pinfo.cols.info = info
+  return n
+end
+
+DissectorTable.get("wtap_encap"):add(wtap.USER0, p)
+if wtap.PROFIBUS_DL ~= nil then DissectorTable.get("wtap_encap"):add(wtap.PROFIBUS_DL, p) end
