@@ -29,6 +29,9 @@ void ProxyDriver::poll(dp::TimePoint now) {
 
 void ProxyDriver::pump(std::uint8_t address, ProxySync& sync, dp::TimePoint now) {
   auto request = sync.take_request(now);
+  // The retentive record is saved before the record goes out: a restart after a 98 WRITE
+  // finds the sync open (docs/proxy.md "Retentive record").
+  (void)scheduler_.persist(address, now);
   if (!request) return;
   if (const auto* write = std::get_if<RecordWrite>(&*request)) {
     channel_.submit_write(address, write->data);

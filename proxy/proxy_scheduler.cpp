@@ -12,10 +12,34 @@ ProxyScheduler::ProxyScheduler(storage::ParameterArchive& archive, SchedulerConf
 
 ProxySync& ProxyScheduler::add(std::uint8_t address, ProxySyncConfig config) {
   config.station = storage::StationKey{config_.bus, address};
+  config.wall_at_zero = config_.wall_at_zero;
   std::erase(queue_, address);
+  saved_.erase(address);
   auto& slot = syncs_[address];
   slot = std::make_unique<ProxySync>(std::move(config), archive_);
+  if (config_.persist) {
+    const auto bytes = archive_.load_proxy_state(slot->station());
+    if (bytes) {
+      const auto record = decode_retentive(bytes.value());
+      slot->restore(record ? *record : RetentiveRecord{RetentiveState::kSyncOpen});
+    } else if (bytes.error().code != storage::ArchiveError::kNotFound) {
+      slot->restore(RetentiveRecord{RetentiveState::kSyncOpen});
+    }
+  }
   return *slot;
+}
+
+bool ProxyScheduler::persist(std::uint8_t address, dp::TimePoint now) {
+  const auto* sync = find(address);
+  if (!config_.persist || sync == nullptr) return true;
+  const auto bytes = encode_retentive(sync->snapshot());
+  const auto it = saved_.find(address);
+  if (it != saved_.end() && it->second == bytes) return true;
+  if (!archive_.save_proxy_state(sync->station(), bytes, wall_time(sync->config(), now))) {
+    return false;
+  }
+  saved_[address] = bytes;
+  return true;
 }
 
 ProxySync* ProxyScheduler::find(std::uint8_t address) noexcept {

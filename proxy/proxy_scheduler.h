@@ -6,6 +6,7 @@
 
 #include "proxy/proxy_sync.h"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <deque>
@@ -18,8 +19,12 @@
 namespace rs4sim::proxy {
 
 struct SchedulerConfig {
-  std::string bus = "bus";       // the archive's StationKey::bus
-  std::size_t max_parallel = 1;  // N; 0 is taken as 1
+  std::string bus = "bus";            // the archive's StationKey::bus
+  std::size_t max_parallel = 1;       // N; 0 is taken as 1
+  storage::Timestamp wall_at_zero{};  // ProxySyncConfig::wall_at_zero for every slave
+  // Keep each slave's retentive record in the archive (save_proxy_state): loaded by add(),
+  // saved by persist() whenever it changed (docs/proxy.md "Retentive record").
+  bool persist = true;
 };
 
 struct StationStatus {
@@ -34,8 +39,13 @@ class ProxyScheduler {
  public:
   ProxyScheduler(storage::ParameterArchive& archive, SchedulerConfig config = {});
 
-  // The station key (bus, address) is set by the scheduler. Replaces an existing one.
+  // The station key (bus, address) and wall_at_zero are set by the scheduler. Replaces an
+  // existing one. With `persist`, the retentive record saved for the station is restored; one
+  // that cannot be read or decoded is restored as an open sync (the safe side).
   ProxySync& add(std::uint8_t address, ProxySyncConfig config = {});
+  // Saves the slave's retentive record if it changed since the last save. False when the
+  // archive refused it (it is tried again at the next call).
+  bool persist(std::uint8_t address, dp::TimePoint now);
   [[nodiscard]] ProxySync* find(std::uint8_t address) noexcept;
   [[nodiscard]] std::vector<std::uint8_t> addresses() const;
 
@@ -53,6 +63,7 @@ class ProxyScheduler {
   SchedulerConfig config_;
   std::map<std::uint8_t, std::unique_ptr<ProxySync>> syncs_;
   std::deque<std::uint8_t> queue_;
+  std::map<std::uint8_t, std::array<std::uint8_t, kRetentiveSize>> saved_;
 };
 
 }  // namespace rs4sim::proxy

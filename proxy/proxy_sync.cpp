@@ -30,6 +30,11 @@ std::string reason_text(protocol::SyncReason r) {
 }
 }  // namespace
 
+storage::Timestamp wall_time(const ProxySyncConfig& config, dp::TimePoint now) noexcept {
+  return config.wall_at_zero +
+         std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch());
+}
+
 ProxySync::ProxySync(ProxySyncConfig config, storage::ParameterArchive& archive)
     : config_(std::move(config)), archive_(archive) {}
 
@@ -41,7 +46,7 @@ bool ProxySync::ready(dp::TimePoint now) const noexcept {
 }
 
 bool ProxySync::active() const noexcept {
-  return abort_pending_ || (step_ != Step::kIdle && step_ != Step::kRetryWait);
+  return step_ != Step::kIdle && step_ != Step::kRetryWait;
 }
 
 void ProxySync::start(dp::TimePoint now) {
@@ -177,8 +182,7 @@ void ProxySync::finish(storage::SyncOutcome outcome, dp::TimePoint now) {
 void ProxySync::log_sync(storage::SyncOutcome outcome, dp::TimePoint now) {
   storage::SyncLogEntry e;
   e.station = config_.station;
-  e.at = storage::Timestamp(
-      std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()));
+  e.at = wall_time(config_, now);
   e.reason = background_ ? "background-verify" : reason_text(begin_.reason);
   e.direction = archive_direction(begin_.direction);
   e.outcome = outcome;
@@ -248,7 +252,6 @@ void ProxySync::restore(const RetentiveRecord& record) noexcept {
     const auto at = positions(step);
     const std::uint8_t pp = at.write != 0 ? at.write : (at.copy != 0 ? at.copy : at.read);
     out_.error_number_fb = pp != 0 ? static_cast<std::uint16_t>((pp << 8) | 0x01) : 0;
-    out_.fb_busy = true;
   }
 }
 

@@ -32,7 +32,13 @@ struct ProxySyncConfig {
   // than this, so a persistent fault does not loop hot.
   dp::Duration retry_delay = std::chrono::seconds(5);
   bool background_verify = true;  // upload after an immediate release and compare
+  // The wall-clock time of dp::TimePoint{} (the owner: system_clock::now() minus the steady
+  // clock's now at start), for the archive's timestamps; the machine reads no clock.
+  storage::Timestamp wall_at_zero{};
 };
+
+// The archive timestamp of a machine time point.
+storage::Timestamp wall_time(const ProxySyncConfig& config, dp::TimePoint now) noexcept;
 
 // The FB outputs ([RS4 manual §6.5]).
 struct FbOutputs {
@@ -77,6 +83,7 @@ class ProxySync {
   [[nodiscard]] const FbOutputs& outputs() const noexcept { return out_; }
   [[nodiscard]] SyncProgress progress() const noexcept;
   [[nodiscard]] const storage::StationKey& station() const noexcept { return config_.station; }
+  [[nodiscard]] const ProxySyncConfig& config() const noexcept { return config_; }
 
   // ---- retentive state (retentive.h)
   [[nodiscard]] RetentiveRecord snapshot() const noexcept;

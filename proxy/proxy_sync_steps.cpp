@@ -22,10 +22,6 @@ constexpr std::uint16_t kAdapterReadRepeat = 0x2B20;  // + chunk: read repetitio
 std::uint16_t with_chunk(std::uint16_t base, std::size_t chunk) {
   return static_cast<std::uint16_t>(base | (chunk & 0x0F));
 }
-storage::Timestamp stamp(dp::TimePoint now) {
-  return storage::Timestamp(
-      std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()));
-}
 std::vector<std::uint8_t> identify_command() {
   return protocol::encode_request(protocol::IdentifyRequest{}).value();
 }
@@ -278,7 +274,7 @@ bool ProxySync::store_set(storage::VersionSource source, std::string summary, st
   req.crc32 = set_crc_;
   req.summary = std::move(summary);
   req.source = source;
-  req.at = stamp(now);
+  req.at = wall_time(config_, now);
   req.note = std::move(note);
   return archive_.store(req).has_value();
 }

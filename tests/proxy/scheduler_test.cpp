@@ -150,5 +150,53 @@ TEST_F(SchedulerTest, ProgressCountsTheDownloadedBytes) {
   EXPECT_EQ(bus_.devices[4].set, set);
 }
 
+// The retentive record lives in the archive: a scheduler created after a "restart" mid-
+// download finds the sync open and fails it safely; the retry then restores the set.
+TEST_F(SchedulerTest, RetentiveRecordSurvivesARestartInTheArchive) {
+  const auto set = rs4::scanner::encode(rs4::scanner::factory_default());
+  storage::StoreRequest r;
+  r.station = {"bus1", 4};
+  r.serial_number = "1004";
+  r.blob = set;
+  r.crc32 = storage::crc32(set);
+  ASSERT_TRUE(archive_->store(r));
+  add(4);
+  bus_.devices[4].set = {0x01, 0x02, 0x03};  // whatever the factory state holds
+  for (int i = 0; i < 200; ++i) {
+    for (auto& [address, dev] : bus_.devices) driver_.on_input_byte(address, dev.input_byte());
+    driver_.poll(now_);
+    bool stop = false;
+    while (!stop && bus_.step(driver_, now_)) {
+      stop = scheduler_.status()[0].progress.step == Step::kDownloadChunk;
+    }
+    if (stop) break;
+    now_ += std::chrono::milliseconds(10);
+  }
+  const auto saved = archive_->load_proxy_state({"bus1", 4});
+  ASSERT_TRUE(saved);
+  EXPECT_EQ(saved.value()[1], 0x01);  // sync open
+
+  ASSERT_FALSE(bus_.devices[4].released);
+  ASSERT_TRUE(bus_.devices[4].sync_running);
+  ProxyScheduler restarted{*archive_, {"bus1", 1}};
+  Bus bus;
+  bus.devices[4] = bus_.devices[4];  // the device kept running
+  ProxyDriver driver{restarted, bus};
+  auto& sync = restarted.add(4);
+  driver.set_proxy_enable(4, true);
+  EXPECT_TRUE(sync.ready(now_));
+  for (int i = 0; i < 2000 && !bus.devices[4].released; ++i) {
+    driver.on_input_byte(4, bus.devices[4].input_byte());
+    driver.poll(now_);
+    while (bus.step(driver, now_)) now_ += std::chrono::microseconds(500);
+    now_ += std::chrono::milliseconds(10);
+  }
+  ASSERT_TRUE(bus.devices[4].last_end);
+  EXPECT_EQ(bus.devices[4].set, set);  // the retry after the safe abort downloaded it
+  EXPECT_TRUE(bus.devices[4].released);
+  EXPECT_EQ(sync.outputs(), FbOutputs{});
+  EXPECT_EQ(archive_->load_proxy_state({"bus1", 4}).value()[1], 0x00);  // idle again
+}
+
 }  // namespace
 }  // namespace rs4sim::proxy::testing
