@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <deque>
 #include <map>
+#include <string>
 #include <utility>
 
 namespace rs4sim::proxy::testing {
@@ -58,6 +59,17 @@ class SchedulerTest : public ::testing::Test {
     bus_.devices[address].direction = rs4::protocol::SyncDirection::kDownload;
     scheduler_.add(address);
     driver_.set_proxy_enable(address, true);
+  }
+  // Stores the factory setting as the station's set; returns it.
+  std::vector<std::uint8_t> store_factory_set(std::uint8_t address) {
+    const auto set = rs4::scanner::encode(rs4::scanner::factory_default());
+    storage::StoreRequest r;
+    r.station = {"bus1", address};
+    r.serial_number = std::to_string(1000 + address);
+    r.blob = set;
+    r.crc32 = storage::crc32(set);
+    EXPECT_TRUE(archive_->store(r));
+    return set;
   }
   // One bus cycle: inputs, grants, then every queued record served.
   void cycle() {
@@ -119,13 +131,7 @@ TEST_F(SchedulerTest, LimitNAllowsNAtOnce) {
 }
 
 TEST_F(SchedulerTest, ProgressCountsTheDownloadedBytes) {
-  const auto set = rs4::scanner::encode(rs4::scanner::factory_default());
-  storage::StoreRequest r;
-  r.station = {"bus1", 4};
-  r.serial_number = "1004";
-  r.blob = set;
-  r.crc32 = storage::crc32(set);
-  ASSERT_TRUE(archive_->store(r));
+  const auto set = store_factory_set(4);
   add(4);
   std::size_t last_done = 0;
   bool saw_total = false;
@@ -153,13 +159,7 @@ TEST_F(SchedulerTest, ProgressCountsTheDownloadedBytes) {
 // The retentive record lives in the archive: a scheduler created after a "restart" mid-
 // download finds the sync open and fails it safely; the retry then restores the set.
 TEST_F(SchedulerTest, RetentiveRecordSurvivesARestartInTheArchive) {
-  const auto set = rs4::scanner::encode(rs4::scanner::factory_default());
-  storage::StoreRequest r;
-  r.station = {"bus1", 4};
-  r.serial_number = "1004";
-  r.blob = set;
-  r.crc32 = storage::crc32(set);
-  ASSERT_TRUE(archive_->store(r));
+  const auto set = store_factory_set(4);
   add(4);
   bus_.devices[4].set = {0x01, 0x02, 0x03};  // whatever the factory state holds
   for (int i = 0; i < 200; ++i) {
