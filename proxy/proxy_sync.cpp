@@ -220,7 +220,7 @@ RetentiveRecord ProxySync::snapshot() const noexcept {
   } else if (background_) {
     r.state = RetentiveState::kBackgroundVerify;
   }
-  r.step = static_cast<std::uint8_t>(step_);
+  r.step = static_cast<std::uint8_t>(abort_pending_ ? abort_step_ : step_);
   r.config_set_to_default = out_.config_set_to_default;
   r.fb_busy = out_.fb_busy;
   r.download_open = download_open_;
@@ -249,6 +249,7 @@ void ProxySync::restore(const RetentiveRecord& record) noexcept {
   if (abort_pending_) {
     // The interrupted step is the failure's position; KK 01: its record exchange was cut.
     const auto step = record.step < kStepCount ? static_cast<Step>(record.step) : Step::kIdle;
+    abort_step_ = step;
     const auto at = positions(step);
     const std::uint8_t pp = at.write != 0 ? at.write : (at.copy != 0 ? at.copy : at.read);
     out_.error_number_fb = pp != 0 ? static_cast<std::uint16_t>((pp << 8) | 0x01) : 0;

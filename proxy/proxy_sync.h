@@ -136,7 +136,8 @@ class ProxySync {
   FbOutputs out_;
   dp::TimePoint retry_until_{};
   dp::TimePoint started_at_{};
-  bool abort_pending_ = false;  // restore() found an open sync
+  bool abort_pending_ = false;     // restore() found an open sync
+  Step abort_step_ = Step::kIdle;  // the step it was in
 
   // The sync's facts.
   rs4::protocol::ProxyBeginAnswer begin_;

@@ -75,6 +75,7 @@ TEST(Restart, MidDownloadFailsSafelyAndTheRetryRestoresTheSet) {
   h.sync->restore(*record);
   h.device.request = false;  // a sync is still open on the device: no Proxy-Request
   ASSERT_TRUE(h.sync->ready(h.now));
+  EXPECT_EQ(encode_retentive(h.sync->snapshot())[2], saved[2]);  // a second restart: same step
   const auto issued_before = h.issued.size();
   ASSERT_TRUE(h.run_sync());
   EXPECT_EQ(h.sync->outputs().error_number_fb, 0x2601);  // where it was cut: before COMMIT
