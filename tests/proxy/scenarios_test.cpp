@@ -1,0 +1,320 @@
+// The four start-up scenarios of [RS4 manual §7.1, §7.2] and the proxy's other decisions
+// (docs/proxy.md "Decisions"), against the device double and a real SqliteArchive.
+#include "rs4/protocol/telegram.h"
+#include "storage/crc32.h"
+#include "tests/proxy/sync_harness.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace rs4sim::proxy::testing {
+namespace {
+
+using rs4::protocol::ProxyOutcome;
+using rs4::protocol::SyncDirection;
+using rs4::protocol::SyncReason;
+
+// The commands written, in order (first block of each).
+std::vector<std::uint8_t> commands(const std::vector<IssuedRecord>& issued) {
+  std::vector<std::uint8_t> out;
+  bool in_command = false;
+  for (const auto& r : issued) {
+    const auto* w = std::get_if<RecordWrite>(&r.request);
+    if (w == nullptr) {
+      in_command = false;
+      continue;
+    }
+    if (!in_command && w->data.size() > 4) out.push_back(w->data[4]);
+    in_command = true;
+  }
+  return out;
+}
+
+TEST(Scenario, FirstCommissioningLeavesFactorySettingsAndSaysSo) {
+  SyncHarness h;
+  h.device.factory = true;
+  h.device.direction = SyncDirection::kDownload;
+  ASSERT_TRUE(h.run_sync());
+  const auto& out = h.sync->outputs();
+  EXPECT_TRUE(out.config_set_to_default);
+  EXPECT_EQ(out.error_number_fb, 0);
+  EXPECT_FALSE(out.fb_busy);
+  EXPECT_TRUE(h.device.released);
+  EXPECT_EQ(h.device.set, DeviceDouble::factory_set());
+  EXPECT_FALSE(h.real->current(SyncHarness::kStation));  // nothing learnt
+  EXPECT_EQ(commands(h.issued), (std::vector<std::uint8_t>{0x98, 0x60, 0x60, 0x99}));
+}
+
+TEST(Scenario, ParameterChangeReplacesTheCurrentSetAndHistoryKeepsTheOld) {
+  SyncHarness h;
+  const auto old_set = SyncHarness::custom_set(3);
+  const auto v1 = h.store(old_set, "1001");
+  h.device.set = SyncHarness::custom_set(5);
+  h.device.reason = SyncReason::kPcAdapterRemoved;
+  h.device.direction = SyncDirection::kUpload;
+  ASSERT_TRUE(h.run_sync());
+  EXPECT_EQ(h.sync->outputs(), FbOutputs{});
+  EXPECT_TRUE(h.device.released);
+  const auto current = h.real->current(SyncHarness::kStation).value();
+  EXPECT_EQ(current.set.blob, h.device.set);
+  EXPECT_EQ(current.version.source, storage::VersionSource::kUpload);
+  EXPECT_EQ(current.version.serial_number, "1001");
+  const auto history = h.real->history(SyncHarness::kStation).value();
+  ASSERT_EQ(history.size(), 2u);
+  EXPECT_EQ(history[0].id, v1.id);
+  EXPECT_EQ(h.real->get(v1.id).value().set.blob, old_set);
+  // Every chunk read twice.
+  const auto cmds = commands(h.issued);
+  EXPECT_EQ(std::count(cmds.begin(), cmds.end(), 0x61), 2 * 9);
+}
+
+TEST(Scenario, NormalStartReleasesAtOnceThenVerifiesInTheBackground) {
+  SyncHarness h;
+  const auto set = SyncHarness::custom_set(3);
+  h.store(set, "1001");
+  h.device.set = set;
+  ASSERT_TRUE(h.run_sync());
+  EXPECT_EQ(h.sync->outputs(), FbOutputs{});
+  EXPECT_TRUE(h.device.released);
+  const auto cmds = commands(h.issued);
+  const auto end = std::find(cmds.begin(), cmds.end(), 0x99);
+  const auto first_upload = std::find(cmds.begin(), cmds.end(), 0x61);
+  ASSERT_NE(end, cmds.end());
+  ASSERT_NE(first_upload, cmds.end());
+  EXPECT_LT(end, first_upload);  // released before anything was uploaded
+  EXPECT_EQ(std::vector<std::uint8_t>(cmds.begin(), end + 1),
+            (std::vector<std::uint8_t>{0x98, 0x60, 0x60, 0x99}));
+  EXPECT_EQ(std::count(cmds.begin(), cmds.end(), 0x61), 2 * 9);
+  EXPECT_EQ(h.real->history(SyncHarness::kStation).value().size(), 1u);
+  const auto log = h.real->sync_log(SyncHarness::kStation, 10).value();
+  ASSERT_EQ(log.size(), 2u);
+  EXPECT_EQ(log[0].outcome, storage::SyncOutcome::kSucceeded);
+  EXPECT_EQ(log[0].reason, "power-up");
+  EXPECT_EQ(log[1].reason, "background-verify");
+}
+
+TEST(Scenario, DeviceExchangeDownloadsTheStoredSetAndStoresTheNewSerial) {
+  SyncHarness h;
+  const auto set = SyncHarness::custom_set(3);
+  h.store(set, "999");
+  h.device.set = SyncHarness::custom_set(7);  // the new device's own set
+  ASSERT_TRUE(h.run_sync());
+  EXPECT_EQ(h.sync->outputs(), FbOutputs{});
+  EXPECT_TRUE(h.device.released);
+  EXPECT_EQ(h.device.set, set);
+  const auto current = h.real->current(SyncHarness::kStation).value();
+  EXPECT_EQ(current.version.serial_number, "1001");
+  EXPECT_EQ(current.version.source, storage::VersionSource::kDownload);
+  EXPECT_EQ(current.set.blob, set);
+  const auto cmds = commands(h.issued);
+  EXPECT_EQ(std::count(cmds.begin(), cmds.end(), 0x63), 9);
+  EXPECT_EQ(cmds.back(), 0x99);
+}
+
+TEST(Scenario, FactoryDeviceWithAStoredSetGetsItBack) {
+  SyncHarness h;
+  const auto set = SyncHarness::custom_set(3);
+  h.store(set, "1001");
+  h.device.factory = true;
+  h.device.direction = SyncDirection::kDownload;
+  ASSERT_TRUE(h.run_sync());
+  EXPECT_EQ(h.sync->outputs(), FbOutputs{});
+  EXPECT_EQ(h.device.set, set);
+  EXPECT_EQ(h.real->history(SyncHarness::kStation).value().size(), 1u);  // same serial
+}
+
+TEST(Scenario, NoStoredSetOnVerifyLearnsTheDevicesSet) {
+  SyncHarness h;
+  h.device.set = SyncHarness::custom_set(4);
+  ASSERT_TRUE(h.run_sync());
+  EXPECT_EQ(h.real->current(SyncHarness::kStation).value().set.blob, h.device.set);
+}
+
+TEST(Scenario, PendingRestoreIsDownloadedAndMarkedDone) {
+  SyncHarness h;
+  const auto a = SyncHarness::custom_set(3);
+  const auto b = SyncHarness::custom_set(4);
+  const auto v1 = h.store(a, "1001");
+  h.store(b, "1001");
+  const auto restored = h.real->restore(v1.id, {}, "back to A").value();
+  h.device.set = b;
+  ASSERT_TRUE(h.run_sync());
+  EXPECT_EQ(h.sync->outputs(), FbOutputs{});
+  EXPECT_EQ(h.device.set, a);
+  const auto current = h.real->current(SyncHarness::kStation).value();
+  EXPECT_EQ(current.version.id, restored.id);
+  EXPECT_FALSE(current.version.pending_download);
+}
+
+// ---- comparisons: the adapter error sent with 99 failed
+TEST(Comparison, EchoCrcOfAChunkWrongBreaksTheDownload) {
+  SyncHarness h;
+  h.store(SyncHarness::custom_set(3), "1001");
+  h.device.factory = true;
+  h.device.direction = SyncDirection::kDownload;
+  int chunks = 0;
+  h.device.answer_hook = [&](std::uint8_t cmd, std::vector<std::uint8_t>& answer) {
+    if (cmd == 0x63 && ++chunks == 3) answer.back() ^= 0x01;  // echo CRC of chunk 2
+  };
+  ASSERT_TRUE(h.run_sync());
+  EXPECT_EQ(h.sync->outputs().error_number_fb, 0x2302);
+  EXPECT_TRUE(h.device.download_broken);
+  ASSERT_TRUE(h.device.last_end);
+  EXPECT_EQ(h.device.last_end->outcome, ProxyOutcome::kFailed);
+  EXPECT_EQ(h.device.last_end->error, 0x2B12);
+  EXPECT_TRUE(h.sync->outputs().config_set_to_default);
+}
+
+TEST(Comparison, ChunkDiffersOnReadRepetition) {
+  SyncHarness h;
+  h.device.set = SyncHarness::custom_set(5);
+  h.device.direction = SyncDirection::kUpload;
+  int uploads = 0;
+  h.device.answer_hook = [&](std::uint8_t cmd, std::vector<std::uint8_t>& answer) {
+    // chunk 4, second read: data and its CRC changed consistently
+    if (cmd != 0x61 || ++uploads != 10) return;
+    // 61 opt status chunk count len(2) crc(4) data: flip a data byte, fix the chunk's CRC
+    answer[11] ^= 0xFF;
+    const auto crc = storage::crc32(std::span(answer).subspan(11));
+    for (int i = 0; i < 4; ++i)
+      answer[7 + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(crc >> (24 - 8 * i));
+  };
+  ASSERT_TRUE(h.run_sync());
+  EXPECT_EQ(h.sync->outputs().error_number_fb, 0x1202);
+  ASSERT_TRUE(h.device.last_end);
+  EXPECT_EQ(h.device.last_end->error, 0x2B24);
+  EXPECT_FALSE(h.real->current(SyncHarness::kStation));  // nothing stored
+}
+
+TEST(Comparison, ActiveCrcAfterCommitWrong) {
+  SyncHarness h;
+  h.store(SyncHarness::custom_set(3), "1001");
+  h.device.factory = true;
+  h.device.direction = SyncDirection::kDownload;
+  h.device.answer_hook = [](std::uint8_t cmd, std::vector<std::uint8_t>& answer) {
+    if (cmd == 0x64) answer.back() ^= 0x01;
+  };
+  ASSERT_TRUE(h.run_sync());
+  EXPECT_EQ(h.sync->outputs().error_number_fb, 0x2802);
+  EXPECT_EQ(h.device.last_end->error, 0x2B09);
+}
+
+TEST(Comparison, IdentifyDiffersOnRepetition) {
+  SyncHarness h;
+  int identifies = 0;
+  h.device.answer_hook = [&](std::uint8_t cmd, std::vector<std::uint8_t>& answer) {
+    if (cmd == 0x60 && ++identifies == 2) answer.back() ^= 0x01;  // change counter
+  };
+  ASSERT_TRUE(h.run_sync());
+  EXPECT_EQ(h.sync->outputs().error_number_fb, 0x0602);
+  EXPECT_EQ(h.device.last_end->error, 0x2B09);
+}
+
+// ---- device refusals: ERROR_NUMBER_RS4
+TEST(DeviceRefusal, StatusByteIsErrorNumberRs4) {
+  SyncHarness h;
+  h.store(SyncHarness::custom_set(3), "1001");
+  h.device.factory = true;
+  h.device.direction = SyncDirection::kDownload;
+  // A user command aborted the sync on the device side ([RS4 manual §5.2]).
+  h.device.answer_hook = [&](std::uint8_t cmd, std::vector<std::uint8_t>&) {
+    if (cmd == 0x60) h.device.sync_running = false;
+  };
+  ASSERT_TRUE(h.run_sync());
+  const auto& out = h.sync->outputs();
+  EXPECT_EQ(out.error_number_fb, 0x2202);
+  EXPECT_EQ(out.error_number_rs4, 8);  // TransferStatus::kNoSyncRunning
+}
+
+TEST(DeviceRefusal, Rs4ErrorTelegramNumberIsErrorNumberRs4) {
+  SyncHarness h;
+  h.device.answer_hook = [](std::uint8_t cmd, std::vector<std::uint8_t>& answer) {
+    if (cmd != 0x60) return;
+    rs4::protocol::ErrorTelegram e;
+    e.prefix.options.state = rs4::protocol::Option1State::kFault;
+    e.report.number = 0x0123;
+    answer = rs4::protocol::encode_telegram(e).value();
+  };
+  ASSERT_TRUE(h.run_sync());
+  EXPECT_EQ(h.sync->outputs().error_number_fb, 0x0502);
+  EXPECT_EQ(h.sync->outputs().error_number_rs4, 0x0123);
+}
+
+// ---- timing and enable
+TEST(Timing, AnswerNotReadyIsPolled) {
+  SyncHarness h;
+  h.device.factory = true;
+  h.device.direction = SyncDirection::kDownload;
+  h.device.not_ready_reads = 3;
+  const auto start = h.now;
+  ASSERT_TRUE(h.run_sync());
+  EXPECT_EQ(h.sync->outputs().error_number_fb, 0);
+  EXPECT_TRUE(h.device.released);
+  EXPECT_GE(h.now - start, 4 * 3 * h.config.timing.poll_interval);
+}
+
+TEST(Timing, NoAnswerInTimeIsAReadFailure) {
+  SyncHarness h;
+  h.device.answer_hook = [](std::uint8_t cmd, std::vector<std::uint8_t>& answer) {
+    if (cmd == 0x60) answer.clear();
+  };
+  const auto start = h.now;
+  ASSERT_TRUE(h.run_sync());
+  EXPECT_EQ(h.sync->outputs().error_number_fb, 0x0501);
+  EXPECT_EQ(h.sync->outputs().error_code_sfc, 0);
+  EXPECT_GE(h.now - start, h.config.timing.answer_timeout);
+}
+
+TEST(Enable, NoSyncWithoutProxyEnable) {
+  SyncHarness h;
+  h.enable = false;
+  EXPECT_FALSE(h.run_sync());
+  EXPECT_EQ(h.device.commands, 0u);
+}
+
+TEST(Enable, NoSyncWithoutProxyRequest) {
+  SyncHarness h;
+  h.device.request = false;
+  EXPECT_FALSE(h.run_sync());
+}
+
+TEST(Enable, StaleRequestStartsNothingAndWaits) {
+  SyncHarness h;
+  h.device.request = false;
+  h.sync->set_input_byte(0x04);  // the master still sees the bit
+  h.sync->set_proxy_enable(true);
+  ASSERT_TRUE(h.sync->ready(h.now));
+  h.sync->start(h.now);
+  for (int i = 0; i < 20; ++i) {
+    if (auto r = h.sync->take_request(h.now)) {
+      const auto* w = std::get_if<RecordWrite>(&*r);
+      h.sync->on_record_result(w != nullptr ? h.device.write(w->data) : h.device.read(240), h.now);
+    }
+  }
+  EXPECT_FALSE(h.sync->active());
+  EXPECT_EQ(h.sync->outputs(), FbOutputs{});
+  EXPECT_FALSE(h.device.sync_running);
+  EXPECT_FALSE(h.sync->ready(h.now));
+  EXPECT_TRUE(h.sync->ready(h.now + h.config.retry_delay));
+}
+
+TEST(Retry, FailedSyncIsRetriedAfterTheDelayAndSucceeds) {
+  SyncHarness h;
+  const auto set = SyncHarness::custom_set(3);
+  h.store(set, "1001");
+  h.device.set = set;
+  h.inject = Injection{Step::kIdentify1, FailureKind::kRead};
+  ASSERT_TRUE(h.run_sync());
+  EXPECT_EQ(h.sync->outputs().error_number_fb, 0x0501);
+  EXPECT_TRUE(h.device.request);  // the device asks again (reason retry)
+  EXPECT_FALSE(h.run_sync());     // too early
+  h.advance(h.config.retry_delay);
+  ASSERT_TRUE(h.run_sync());  // outputs reset, the stored set goes back
+  EXPECT_EQ(h.sync->outputs(), FbOutputs{});
+  EXPECT_EQ(h.device.set, set);
+  EXPECT_TRUE(h.device.released);
+}
+
+}  // namespace
+}  // namespace rs4sim::proxy::testing
