@@ -7,9 +7,11 @@
 //   rs4sim master --slave 4 --slave 5 --link memory --json        (simulated RS4s, simulated time)
 #include "app/command.h"
 #include "app/link_cli.h"
+#include "app/master_proxy.h"
 #include "app/master_service.h"
 #include "dp/master/master_config.h"
 #include "rs4/adapter/cyclic_bytes.h"
+#include "storage/sqlite_archive.h"
 
 #include <charconv>
 #include <iostream>
@@ -29,6 +31,9 @@ struct MasterCliOptions {
   int cycle_ms = 10;
   int field_pair = 1;
   bool proxy_enable = false;
+  bool no_proxy = false;
+  std::string archive;  // empty: storage::default_archive_path()
+  ProxyPluginOptions proxy;
   bool manual_ack = false;
   MasterServiceOptions service;
   LinkOptions link;
@@ -86,7 +91,7 @@ rs4::device::Rs4MasterStationConfig station_config(const MasterCliOptions& o) {
   c.cycle_target = std::chrono::milliseconds(checked(o.cycle_ms, 1, 255, "--cycle"));
   c.auto_ack_rei = !o.manual_ack;
   c.output_byte = checked(o.field_pair, 1, 4, "--field-pair");
-  if (o.proxy_enable) c.output_byte |= rs4::adapter::kOutputProxyEnable;
+  if (o.proxy_enable && o.no_proxy) c.output_byte |= rs4::adapter::kOutputProxyEnable;
   const std::vector<int> slaves = o.slaves.empty() ? std::vector<int>{4} : o.slaves;
   for (const int s : slaves) {
     rs4::device::Rs4MasterOptions r;
@@ -111,8 +116,27 @@ rs4::device::Rs4MasterStationConfig station_config(const MasterCliOptions& o) {
 int run(MasterCliOptions& o) {
   validate(o.link);
   o.service.station = station_config(o);
+  if (o.proxy_enable && !o.no_proxy) {
+    throw UsageError("--proxy-enable is for --no-proxy runs; the proxy sets Proxy-Enable itself");
+  }
+  if (o.proxy.max_parallel == 0) throw UsageError("--max-syncs must be at least 1");
+  std::unique_ptr<storage::SqliteArchive> archive;
+  std::unique_ptr<ProxyPlugin> proxy;
+  std::vector<MasterPlugin*> plugins;
+  if (!o.no_proxy) {
+    const std::string path =
+        o.archive.empty() ? storage::default_archive_path().string() : o.archive;
+    auto opened = storage::SqliteArchive::open(path);
+    if (!opened) {
+      std::cerr << "rs4sim: archive " << path << ": " << opened.error().message << std::endl;
+      return 1;
+    }
+    archive = std::move(opened).value();
+    proxy = std::make_unique<ProxyPlugin>(*archive, o.proxy);
+    plugins.push_back(proxy.get());
+  }
   try {
-    return run_master(o.service, o.link, std::cout);
+    return run_master(o.service, o.link, std::cout, plugins);
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());  // a GSD override the GSD refuses, a duplicate --slave
   } catch (const std::system_error& e) {
@@ -138,8 +162,17 @@ Action setup(CLI::App& cmd) {
                  "16383 on real-time links)");
   cmd.add_option("--cycle", o->cycle_ms, "target master cycle in ms (default 10)");
   cmd.add_option("--field-pair", o->field_pair, "field pair 1..4 in the output byte (default 1)");
+  cmd.add_flag("--no-proxy", o->no_proxy,
+               "run without the parameter proxy (default: the proxy syncs every RS4's set with "
+               "the archive and sets Proxy-Enable)");
   cmd.add_flag("--proxy-enable", o->proxy_enable,
-               "set Proxy-Enable (output bit 6): the RS4s wait for the parameter proxy");
+               "with --no-proxy: set Proxy-Enable anyway (the RS4s then wait for a proxy)");
+  cmd.add_option("--archive", o->archive,
+                 "the parameter archive (default $XDG_DATA_HOME/rs4sim/archive.sqlite3)");
+  cmd.add_option("--bus", o->proxy.bus, "the bus name under which the archive keeps the RS4s")
+      ->capture_default_str();
+  cmd.add_option("--max-syncs", o->proxy.max_parallel,
+                 "syncs at a time on this bus (default 1, as the manual advises)");
   cmd.add_flag("--manual-ack", o->manual_ack,
                "keep ACK_REQ standing after a PROFIsafe fault (default: acknowledge at once)");
   cmd.add_option("--boot-time", o->service.simulated_boot_ms,
