@@ -21,6 +21,17 @@ struct ProxyCommands : ::testing::Test {
   Rig rig;
   void SetUp() override { boot_with_proxy(rig); }
   void begin_sync() { ASSERT_EQ(command(rig, {0x98}), (Bytes{0x98, 0x01, 0x03, 0x01})); }
+  // A sync with a whole download of the RS4's set with `steps` committed, then a second
+  // download opened (and left open).
+  void sync_with_committed_download(std::uint8_t steps) {
+    begin_sync();
+    auto set = rig.adapter.scanner().parameters();
+    set.response_steps = steps;
+    const auto blob = scanner::encode_for_transfer(set);
+    ASSERT_EQ(download(rig, blob, scanner::crc32_iso_hdlc(blob)).status, TransferStatus::kOk);
+    ASSERT_FALSE(rig.adapter.scanner().factory_settings());
+    ASSERT_EQ(transfer(rig, protocol::DownloadBeginRequest{8507, 0}).status, TransferStatus::kOk);
+  }
 };
 
 TEST(ProxyCommandsBeforeBoot, BeginWithoutRequestStartsNothingAndTransferIsRefused) {
@@ -180,12 +191,7 @@ TEST_F(ProxyCommands, ProxyEndOkReleasesTheOssd) {
 }
 
 TEST_F(ProxyCommands, ProxyEndFailedResetsToFactoryAndRequestsARetry) {
-  begin_sync();
-  auto set = rig.adapter.scanner().parameters();
-  set.response_steps = 5;
-  const auto blob = scanner::encode_for_transfer(set);
-  ASSERT_EQ(download(rig, blob, scanner::crc32_iso_hdlc(blob)).status, TransferStatus::kOk);
-  ASSERT_FALSE(rig.adapter.scanner().factory_settings());
+  sync_with_committed_download(5);
   const auto alarms = rig.control.alarms.size();
   EXPECT_EQ(command(rig, {0x99, 0x01, 0x2B, 0x09}), (Bytes{
                                                         0x99,  // PROFI_CMD_PROXY_END
@@ -206,12 +212,7 @@ TEST_F(ProxyCommands, ProxyEndFailedResetsToFactoryAndRequestsARetry) {
 }
 
 TEST_F(ProxyCommands, BreakRollsBackToFactorySettings) {
-  begin_sync();
-  auto set = rig.adapter.scanner().parameters();
-  set.response_steps = 1;
-  const auto blob = scanner::encode_for_transfer(set);
-  ASSERT_EQ(download(rig, blob, scanner::crc32_iso_hdlc(blob)).status, TransferStatus::kOk);
-  ASSERT_EQ(transfer(rig, protocol::DownloadBeginRequest{8507, 0}).status, TransferStatus::kOk);
+  sync_with_committed_download(1);
   const auto a = command(rig, {0x65, 0x01});
   ASSERT_EQ(a.size(), 6U);
   EXPECT_EQ(a[0], 0x65);  // DOWNLOAD_BREAK
@@ -223,7 +224,10 @@ TEST_F(ProxyCommands, BreakRollsBackToFactorySettings) {
 
 TEST_F(ProxyCommands, UserCommandDuringASyncAbortsIt) {
   begin_sync();
+  const auto alarms = rig.control.alarms.size();
   EXPECT_EQ(command(rig, {0x90}).at(0), 0x90);  // the user's command is still served
+  ASSERT_EQ(rig.control.alarms.size(), alarms + 1);
+  EXPECT_EQ(rig.control.alarms.back().type, protocol::kAlarmTypeDiagnosis);
   EXPECT_EQ(rig.adapter.proxy_phase(), ProxyPhase::kRequested);
   EXPECT_EQ(rig.adapter.error_memory().last_error().uc1_error, 0x2B01);
   EXPECT_EQ(rig.adapter.proxy_session().reason(), protocol::SyncReason::kRetry);
@@ -245,12 +249,7 @@ TEST_F(ProxyCommands, ProxyCommandsAreClass1Only) {
 }
 
 TEST_F(ProxyCommands, LinkLossDuringADownloadResetsToFactorySettings) {
-  begin_sync();
-  auto set = rig.adapter.scanner().parameters();
-  set.response_steps = 3;
-  const auto blob = scanner::encode_for_transfer(set);
-  ASSERT_EQ(download(rig, blob, scanner::crc32_iso_hdlc(blob)).status, TransferStatus::kOk);
-  ASSERT_EQ(transfer(rig, protocol::DownloadBeginRequest{8507, 0}).status, TransferStatus::kOk);
+  sync_with_committed_download(3);
   rig.adapter.on_state_change(dp::slave::State::kDataExch, dp::slave::State::kWaitPrm,
                               dp::slave::TransitionReason::kWatchdog, rig.now);
   EXPECT_TRUE(rig.adapter.scanner().factory_settings());

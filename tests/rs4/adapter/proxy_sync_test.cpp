@@ -119,6 +119,15 @@ struct ProxySync : ::testing::Test {
     seg.set_output_byte(kEnable);
     return seg.run_until([&] { return (seg.input_byte() & adapter::kInputOssd) != 0; }, 500ms);
   }
+  // Boot at factory settings, start the sync; the transfer form of the factory set after `edit`.
+  template <class Edit>
+  Bytes start_with_factory_and_stored(Edit edit) {
+    boot();
+    begin();
+    auto stored = scanner::factory_default();
+    edit(stored);
+    return scanner::encode_for_transfer(stored);
+  }
   std::uint16_t last_adapter_error() {
     const auto a = protocol::decode_last_error_answer(command({0x84}));
     return a ? a.value().uc2_error : 0;
@@ -174,11 +183,7 @@ TEST_F(ProxySync, FullDownloadChangesTheSetAndKeepsThePasswords) {
 }
 
 TEST_F(ProxySync, CrcMismatchAtCommitLeavesTheSetUnchanged) {
-  boot();
-  begin();
-  auto stored = scanner::factory_default();
-  stored.response_steps = 2;
-  const auto blob = scanner::encode_for_transfer(stored);
+  const auto blob = start_with_factory_and_stored([](auto& s) { s.response_steps = 2; });
   EXPECT_EQ(download(blob, scanner::crc32_iso_hdlc(blob) ^ 1U).status,
             TransferStatus::kCrcMismatch);
   EXPECT_TRUE(rs4().factory_settings());
@@ -186,11 +191,7 @@ TEST_F(ProxySync, CrcMismatchAtCommitLeavesTheSetUnchanged) {
 }
 
 TEST_F(ProxySync, InvalidSetAtCommitLeavesTheSetUnchanged) {
-  boot();
-  begin();
-  auto stored = scanner::factory_default();
-  stored.start_pair = 7;
-  const auto blob = scanner::encode_for_transfer(stored);
+  const auto blob = start_with_factory_and_stored([](auto& s) { s.start_pair = 7; });
   EXPECT_EQ(download(blob, scanner::crc32_iso_hdlc(blob)).status, TransferStatus::kInvalidSet);
   EXPECT_TRUE(rs4().factory_settings());
 }
