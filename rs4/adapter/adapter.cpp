@@ -71,6 +71,7 @@ void Adapter::power_on(TimePoint now) {
   rs4_up_ = false;
   released_ = false;
   proxy_request_ = false;
+  proxy_.reset();
   scanner_.power_on(now);
   start_adapter(now, /*keep_errors=*/false);
 }
@@ -83,7 +84,7 @@ void Adapter::power_off(TimePoint now) {
   fdevice_ = profisafe::FDevice(fdevice_config(std::nullopt));
   link_down_until_.reset();
   connected_ = false;
-  sync_running_ = false;
+  proxy_.reset();
   rs4_up_ = false;
   released_ = false;
   proxy_request_ = false;
@@ -112,11 +113,13 @@ void Adapter::start_adapter(TimePoint now, bool keep_errors) {
   }
   connected_ = false;
   prm_refused_ = false;
-  sync_running_ = false;
+  proxy_.stop();
   proxy_enable_ = false;
   proxy_enable_known_ = false;
   rs232_through_ = pc_attached_;
-  if (rs4_up_ && !pc_attached_) proxy_request_ = true;  // a restarted adapter checks again
+  if (rs4_up_ && !pc_attached_) {  // a restarted adapter checks again
+    request_sync(proxy_request_ ? proxy_.reason() : protocol::SyncReason::kPowerUp);
+  }
   released_ = rs4_up_ && pc_attached_;
   restart_bus_ = false;
   drive_restart_input(now);
@@ -191,6 +194,8 @@ void Adapter::on_state_change(dp::slave::State from, dp::slave::State to,
     restart_bus_ = false;
     drive_restart_input(now);
     c1_.clear();
+    // [docs/proxy-protocol.md] step 6: the class 1 connection lost during a sync ends it.
+    if (proxy_.running()) fail_sync(0, now);
     refresh_input(now);
   }
 }
@@ -255,7 +260,7 @@ LedState Adapter::led() const noexcept {
 
 ProxyPhase Adapter::proxy_phase() const noexcept {
   if (!rs4_up_) return ProxyPhase::kWaitRs4;
-  if (sync_running_) return ProxyPhase::kSyncRunning;
+  if (proxy_.running()) return ProxyPhase::kSyncRunning;
   if (proxy_request_) return ProxyPhase::kRequested;
   return ProxyPhase::kDone;
 }

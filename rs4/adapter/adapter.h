@@ -24,7 +24,9 @@
 #include "profisafe/f_device.h"
 #include "rs4/adapter/cyclic_bytes.h"
 #include "rs4/adapter/error_memory.h"
+#include "rs4/adapter/proxy_session.h"
 #include "rs4/protocol/adapter_answer.h"
+#include "rs4/protocol/adapter_command.h"
 #include "rs4/protocol/adapter_error.h"
 #include "rs4/protocol/alarm.h"
 #include "rs4/protocol/block.h"
@@ -155,12 +157,15 @@ class Adapter final : public dp::slave::SlaveApplication {
                                                          // ([RS4 manual §7.1, §7.2])
   void detach_pc_adapter(TimePoint now);
 
-  // ---- proxy hooks (EXTENSION, [RS4 manual §7.1, §7.2] [docs/decisions.md#rs4-extensions]) ------
-  // The adapter side of the Proxy-FB sync. The wire commands that drive these entry points
-  // come with the proxy issue; until then the harness and tests call them directly.
-  std::error_code proxy_sync_started(TimePoint now);    // Proxy-Request → 0
+  // ---- proxy hooks (EXTENSION, [RS4 manual §7.1, §7.2] [docs/proxy-protocol.md]) ----------------
+  // The adapter side of the Proxy-FB sync. PROFI_CMD_PROXY_BEGIN (0x98) and _END (0x99) from
+  // the class 1 master drive them; the harness and tests may call them directly.
+  std::error_code proxy_sync_started(TimePoint now);    // Proxy-Request → 0, flow state 011
   std::error_code proxy_sync_succeeded(TimePoint now);  // check done → OSSD release
-  std::error_code proxy_sync_failed(TimePoint now);     // Proxy-Request → 1 again
+  // The sync failed: `error` (0 or a table 5.3-3 proxy error) into the error memory with a
+  // diagnosis alarm, the RS4 back to factory settings, Proxy-Request → 1 (reason retry).
+  std::error_code proxy_sync_failed(TimePoint now, std::uint16_t error = 0);
+  [[nodiscard]] const ProxySession& proxy_session() const noexcept { return proxy_; }
 
   // ---- observation ------------------------------------------------------------------------
   [[nodiscard]] AdapterView view() const;
@@ -229,11 +234,20 @@ class Adapter final : public dp::slave::SlaveApplication {
   void execute(std::span<const std::uint8_t> command, dp::slave::AcyclicChannel which, Channel& ch,
                TimePoint now);
   void execute_adapter_command(std::span<const std::uint8_t> command, Channel& ch, TimePoint now);
-  [[nodiscard]] std::vector<std::uint8_t> execute_rs4_command(
-      std::span<const std::uint8_t> command) const;
+  [[nodiscard]] std::vector<std::uint8_t> execute_rs4_command(std::span<const std::uint8_t> command,
+                                                              TimePoint now);
   [[nodiscard]] bool ready_for_write(dp::slave::AcyclicChannel which) const noexcept;
   [[nodiscard]] Channel& channel(dp::slave::AcyclicChannel which) noexcept;
   [[nodiscard]] const Channel& channel(dp::slave::AcyclicChannel which) const noexcept;
+  // adapter_proxy.cpp: the device side of the proxy sync ([docs/proxy-protocol.md])
+  void request_sync(protocol::SyncReason why);
+  void fail_sync(std::uint16_t error, TimePoint now);
+  void proxy_begin(Channel& ch, TimePoint now);
+  void proxy_end(const protocol::ProxyEndCommand& end, Channel& ch, TimePoint now);
+  void abort_on_user_command(std::span<const std::uint8_t> command, dp::slave::AcyclicChannel which,
+                             TimePoint now);
+  [[nodiscard]] std::vector<std::uint8_t> transfer(std::span<const std::uint8_t> command,
+                                                   TimePoint now);
   // adapter_events.cpp: RS4 events, forwarding, error memory, alarms
   void collect_rs4(TimePoint now);
   void capture_forwarding();
@@ -257,8 +271,8 @@ class Adapter final : public dp::slave::SlaveApplication {
   bool prm_refused_ = false;  // F-parameters refused (LED slow blink)
 
   // [RS4 manual §7.1, §7.2] proxy logic
-  bool rs4_up_ = false;  // RS4 reached operation since power-on
-  bool sync_running_ = false;
+  bool rs4_up_ = false;    // RS4 reached operation since power-on
+  ProxySession proxy_;     // sync running, reason, direction, the open download
   bool released_ = false;  // parameter check passed or not needed
   bool proxy_request_ = false;
   bool proxy_enable_ = false;

@@ -3,6 +3,7 @@
 #include "rs4/adapter/adapter.h"
 #include "rs4/adapter/rs4_commands.h"
 #include "rs4/protocol/adapter_command.h"
+#include "rs4/protocol/parameter_transfer.h"
 
 #include <algorithm>
 #include <variant>
@@ -38,7 +39,7 @@ std::size_t Adapter::pending_answers(AcyclicChannel which) const noexcept {
 protocol::FlowState Adapter::flow_state(AcyclicChannel which) const noexcept {
   if (!powered_ || init_end_ || link_down_until_) return protocol::FlowState::kNoCommunicationPath;
   if (rs232_through_) return protocol::FlowState::kPcAdapterAttached;
-  if (sync_running_) return protocol::FlowState::kProxyBusy;
+  if (proxy_.running()) return protocol::FlowState::kProxyBusy;
   if (which == AcyclicChannel::kC2 && !connected_) return protocol::FlowState::kNoConnection;
   return protocol::FlowState::kNormal;
 }
@@ -61,6 +62,8 @@ std::uint8_t Adapter::flow_byte(AcyclicChannel which, bool payload) const noexce
 dp::slave::AcyclicResult Adapter::on_acyclic(const dp::slave::AcyclicRequest& req, TimePoint now) {
   if (!powered_) return AcyclicResult::fail(kNotSupported);
   collect_rs4(now);
+  // [docs/proxy-protocol.md] step 6: any class 2 READ/WRITE during a sync is a user command.
+  if (req.channel == AcyclicChannel::kC2) abort_on_user_command({}, req.channel, now);
   if (req.service == dp::slave::AcyclicService::kDataTransport) {
     ++counters_.dpv1_rejected;
     return AcyclicResult::fail(kNotSupported);
@@ -163,9 +166,10 @@ dp::slave::AcyclicResult Adapter::on_read(const dp::slave::AcyclicRequest& req, 
 // as an unknown command (error telegram 0x53), as for any other unknown first byte.
 void Adapter::execute(std::span<const std::uint8_t> command, AcyclicChannel which, Channel& ch,
                       TimePoint now) {
+  abort_on_user_command(command, which, now);
   if (which == AcyclicChannel::kC2) {
     ++counters_.rs4_commands;
-    ch.answers.push_back(execute_rs4_command(command));
+    ch.answers.push_back(execute_rs4_command(command, now));
     return;
   }
   execute_adapter_command(command, ch, now);
@@ -181,7 +185,7 @@ void Adapter::execute_adapter_command(std::span<const std::uint8_t> command, Cha
   const auto& cmd = parsed.value();
   if (const auto* rs4 = std::get_if<protocol::Rs4Command>(&cmd)) {
     ++counters_.rs4_commands;
-    ch.answers.push_back(execute_rs4_command(rs4->bytes));
+    ch.answers.push_back(execute_rs4_command(rs4->bytes, now));
     return;
   }
   ++counters_.adapter_commands;
@@ -205,14 +209,20 @@ void Adapter::execute_adapter_command(std::span<const std::uint8_t> command, Cha
     ch.answers.push_back(protocol::encode_last_error_answer(errors_.last_error()));
   } else if (std::holds_alternative<protocol::GetErrorMemoryCommand>(cmd)) {
     ch.answers.push_back(protocol::encode_error_memory_answer(errors_.memory()));
+  } else if (std::holds_alternative<protocol::ProxyBeginCommand>(cmd)) {
+    proxy_begin(ch, now);
+  } else if (const auto* end = std::get_if<protocol::ProxyEndCommand>(&cmd)) {
+    proxy_end(*end, ch, now);
   } else if (const auto* bad = std::get_if<protocol::RejectedCommand>(&cmd)) {
     ++counters_.rejected_commands;
     ch.answers.push_back(protocol::encode_rejection(*bad));  // 93 kind command
   }
 }
 
-std::vector<std::uint8_t> Adapter::execute_rs4_command(
-    std::span<const std::uint8_t> command) const {
+// The transfer commands 0x60..0x65 go to the proxy session, every other one to the RS4 model.
+std::vector<std::uint8_t> Adapter::execute_rs4_command(std::span<const std::uint8_t> command,
+                                                       TimePoint now) {
+  if (!command.empty() && protocol::is_transfer_code(command[0])) return transfer(command, now);
   return answer_rs4_command(scanner_, command);
 }
 

@@ -67,7 +67,7 @@ void Adapter::apply_output_byte(std::uint8_t out, TimePoint now) {
     proxy_enable_known_ = true;
     proxy_enable_ = bits.proxy_enable;
     // Proxy-Enable 0: the OSSD bit is released without the proxy ([RS4 manual §5.1.2, §7.1, §7.2]).
-    if (!proxy_enable_ && rs4_up_ && !sync_running_) released_ = true;
+    if (!proxy_enable_ && rs4_up_ && !proxy_.running()) released_ = true;
   }
   restart_bus_ = bits.restart;
   drive_restart_input(now);
@@ -121,7 +121,7 @@ void Adapter::update_rs4_phase(TimePoint now) {
     released_ = true;  // PC adapter at start-up: no Proxy-Request, OSSD follows the RS4
     return;
   }
-  proxy_request_ = true;
+  request_sync(protocol::SyncReason::kPowerUp);
   if (proxy_enable_known_ && !proxy_enable_) released_ = true;
 }
 
@@ -129,7 +129,7 @@ void Adapter::attach_pc_adapter(TimePoint now) {
   pc_attached_ = true;
   // [RS4 manual §5.1.1] bit 3: during a sync the RS232 is switched through only after the sync
   // ends.
-  if (!sync_running_) rs232_through_ = true;
+  if (!proxy_.running()) rs232_through_ = true;
   if (powered_) refresh_input(now);
 }
 
@@ -140,42 +140,9 @@ void Adapter::detach_pc_adapter(TimePoint now) {
   if (!powered_ || !was) return;
   // [RS4 manual §5.1.1] bit 3: on 1→0 the Proxy-Request bit is always set; Proxy-Enable is read
   // again.
-  if (rs4_up_ && !sync_running_) proxy_request_ = true;
+  if (rs4_up_ && !proxy_.running()) request_sync(protocol::SyncReason::kPcAdapterRemoved);
   proxy_enable_known_ = false;
   refresh_input(now);
-}
-
-std::error_code Adapter::proxy_sync_started(TimePoint now) {
-  if (!powered_) return AdapterApiError::kPoweredOff;
-  if (!proxy_request_) return AdapterApiError::kNoSyncRequested;
-  proxy_request_ = false;  // [RS4 manual §5.1.1] bit 2: reset when the check begins
-  sync_running_ = true;
-  refresh_input(now);
-  return {};
-}
-
-std::error_code Adapter::proxy_sync_succeeded(TimePoint now) {
-  if (!powered_) return AdapterApiError::kPoweredOff;
-  if (!sync_running_) return AdapterApiError::kNoSyncRunning;
-  sync_running_ = false;
-  released_ = true;  // [RS4 manual §7.1, §7.2]: Proxy-Enable 1 → OSSD released after a successful
-                     // sync
-  rs232_through_ = pc_attached_;
-  refresh_input(now);
-  return {};
-}
-
-std::error_code Adapter::proxy_sync_failed(TimePoint now) {
-  if (!powered_) return AdapterApiError::kPoweredOff;
-  if (!sync_running_) return AdapterApiError::kNoSyncRunning;
-  sync_running_ = false;
-  proxy_request_ = true;  // [RS4 manual §5.1.1] bit 2: set again if the check fails
-  if (proxy_enable_)
-    released_ = false;  // [RS4 manual §7.1, §7.2]: OSSD unaffected unless the sync
-                        // fails
-  rs232_through_ = pc_attached_;
-  refresh_input(now);
-  return {};
 }
 
 // ---- the input byte ----------------------------------------------------------------------

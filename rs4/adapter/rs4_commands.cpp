@@ -7,9 +7,7 @@
 
 namespace rs4sim::rs4::adapter {
 
-namespace {
-
-protocol::TelegramPrefix prefix_of(const scanner::Scanner& rs4) {
+protocol::TelegramPrefix rs4_prefix(const scanner::Scanner& rs4) {
   const auto st = rs4.status();
   protocol::TelegramPrefix p;
   auto& o = p.options;
@@ -27,14 +25,16 @@ protocol::TelegramPrefix prefix_of(const scanner::Scanner& rs4) {
   return p;
 }
 
+namespace {
+
 std::vector<std::uint8_t> report_telegram(protocol::TelegramCode code, const scanner::Scanner& rs4,
                                           const protocol::ErrorReport& report) {
   std::vector<std::uint8_t> out;
   if (code == protocol::TelegramCode::kErrorOccure) {
-    auto r = protocol::encode_telegram(protocol::ErrorTelegram{prefix_of(rs4), report});
+    auto r = protocol::encode_telegram(protocol::ErrorTelegram{rs4_prefix(rs4), report});
     if (r) out = std::move(r.value());
   } else {
-    auto r = protocol::encode_telegram(protocol::WarningTelegram{prefix_of(rs4), report});
+    auto r = protocol::encode_telegram(protocol::WarningTelegram{rs4_prefix(rs4), report});
     if (r) out = std::move(r.value());
   }
   return out;
@@ -61,7 +61,7 @@ std::vector<std::uint8_t> event_telegram(const scanner::Scanner& rs4, const scan
 }
 
 std::vector<std::uint8_t> alive_telegram(const scanner::Scanner& rs4) {
-  auto r = protocol::encode_telegram(protocol::AliveTelegram{prefix_of(rs4)});
+  auto r = protocol::encode_telegram(protocol::AliveTelegram{rs4_prefix(rs4)});
   return r ? std::move(r.value()) : std::vector<std::uint8_t>{};
 }
 
@@ -70,7 +70,7 @@ std::vector<std::uint8_t> measurement_telegram(const scanner::Scanner& rs4) {
   const auto flagged = scanner::measurement_contour(rs4.last_scan(), window);
   std::vector<std::uint8_t> out;
   if (protocol::encode_prefix(static_cast<std::uint8_t>(protocol::TelegramCode::kMess16Rt),
-                              prefix_of(rs4), out)) {
+                              rs4_prefix(rs4), out)) {
     return {};
   }
   if (protocol::encode_measurement_data(rs4.last_scan().scan_number, window.resolution,

@@ -9,9 +9,10 @@
 //                                   the parameter set; 0x53 "no scan" while not scanning
 //   0x14 COM_CMD_ALIVE           → 0x14 with the current option bytes
 //   anything else / malformed    → 0x53 COM_CMD_ERROR_OCCURE "unknown command"
-// The identification and parameter-set commands of [docs/decisions.md#rs4-extensions] come with the
-// proxy issue.
+// The transfer commands 0x60..0x65 of the proxy ([docs/proxy-protocol.md]) have state; the
+// Adapter routes them to its ProxySession (proxy_session.h) before this function.
 
+#include "rs4/protocol/option_bytes.h"
 #include "rs4/scanner/scanner.h"
 
 #include <cstdint>
@@ -31,6 +32,9 @@ inline constexpr std::uint16_t kRs4ErrorFunctionCommands = 0x0005;
 // The RS4's answer to one command body (CMD first).
 std::vector<std::uint8_t> answer_rs4_command(const scanner::Scanner& rs4,
                                              std::span<const std::uint8_t> command);
+
+// Option 1..3 of the RS4's telegrams, taken from the scanner state ([RS4 manual §5.2.3]).
+protocol::TelegramPrefix rs4_prefix(const scanner::Scanner& rs4);
 
 // Telegram bodies with option 1..3 taken from the scanner state ([RS4 manual §5.2.3]).
 std::vector<std::uint8_t> alive_telegram(const scanner::Scanner& rs4);

@@ -13,6 +13,9 @@ template <typename... Ts>
 struct Overloaded : Ts... {
   using Ts::operator()...;
 };
+// clang 14 has no class template argument deduction for aggregates (P1816): spelled out.
+template <typename... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;
 
 // A reader over the fields after CMD and the option bytes; checks the end.
 template <typename T>

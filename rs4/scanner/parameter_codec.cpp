@@ -93,4 +93,15 @@ boost::outcome_v2::std_result<ParameterSet> decode_and_validate(
 
 std::uint32_t checksum(const ParameterSet& set) { return crc32_iso_hdlc(encode(set)); }
 
+std::vector<std::uint8_t> encode_for_transfer(const ParameterSet& set) {
+  ParameterSet blank = set;
+  blank.identity = Identity{};
+  for (auto& pw : blank.passwords) pw.fill(0x00);
+  return encode(blank);
+}
+
+std::uint32_t transfer_checksum(const ParameterSet& set) {
+  return crc32_iso_hdlc(encode_for_transfer(set));
+}
+
 }  // namespace rs4sim::rs4::scanner

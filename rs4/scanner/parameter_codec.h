@@ -30,7 +30,18 @@ boost::outcome_v2::std_result<ParameterSet> decode(std::span<const std::uint8_t>
 boost::outcome_v2::std_result<ParameterSet> decode_and_validate(
     std::span<const std::uint8_t> bytes);
 
-// CRC-32/ISO-HDLC over encode(set): the parameter checksum the proxy compares.
+// CRC-32/ISO-HDLC over encode(set).
 std::uint32_t checksum(const ParameterSet& set);
+
+// The transfer form ([docs/proxy-protocol.md]): encode() of the set with the identity and the
+// user passwords zeroed. It is what the proxy uploads, archives and downloads: identity
+// belongs to the device and a download never overwrites the passwords ([RS4 manual §6.4]),
+// so neither travels. (Zeroed passwords do not validate: a received transfer form is
+// merged with the device's set, merge_download(), before validate().)
+std::vector<std::uint8_t> encode_for_transfer(const ParameterSet& set);
+// CRC-32/ISO-HDLC over encode_for_transfer(set): the set CRC-32 of IDENTIFY, the upload and
+// the download; after a download it equals the downloaded blob's CRC although the device
+// kept its own passwords.
+std::uint32_t transfer_checksum(const ParameterSet& set);
 
 }  // namespace rs4sim::rs4::scanner

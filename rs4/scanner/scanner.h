@@ -125,12 +125,19 @@ class Scanner {
   boost::outcome_v2::std_result<void> set_parameters(const ParameterSet& set, TimePoint now);
   boost::outcome_v2::std_result<void> leave_configuration(TimePoint now);
   // [RS4 manual §7.1, §7.2]: when a proxy upload/download fails the device falls back to factory
-  // settings. Keeps identity and user passwords; a running scanner makes a new start.
+  // settings. Keeps identity and user passwords; a running scanner (also one in
+  // configuration: the reset ends it) makes a new start.
   void reset_to_factory_default(TimePoint now);
   // True while the set equals the factory default apart from identity and passwords
   // (what the proxy reports as CONFIG_SET_TO_DEFAULT, [RS4 manual §7.1, §7.2] scenario 1).
   [[nodiscard]] bool factory_settings() const;
   [[nodiscard]] std::uint32_t parameter_checksum() const;  // CRC-32 of encode(parameters())
+  // CRC-32 of encode_for_transfer(parameters()): the set CRC the proxy compares.
+  [[nodiscard]] std::uint32_t transfer_checksum() const;
+  // Counts every write of the set (set_parameters, reset_to_factory_default) since the
+  // device was made; kept over power cycles, wraps at 0xFFFF (reported by the proxy's
+  // IDENTIFY, [docs/proxy-protocol.md]).
+  [[nodiscard]] std::uint16_t change_counter() const noexcept { return change_counter_; }
 
   // Observation.
   [[nodiscard]] bool ossd() const noexcept { return ossd_; }
@@ -167,6 +174,7 @@ class Scanner {
 
   ScannerConfig config_;
   ParameterSet params_;
+  std::uint16_t change_counter_ = 0;
   Scene scene_;
   std::uint64_t rendered_revision_ = ~std::uint64_t{0};
 

@@ -165,6 +165,7 @@ boost::outcome_v2::std_result<void> Scanner::set_parameters(const ParameterSet& 
   if (validate(set)) return ScannerError::kInvalidParameterSet;
   params_ = set;
   params_.identity = config_.identity;  // the serial number belongs to the device
+  ++change_counter_;                    // wraps like a 16-bit device counter
   return boost::outcome_v2::success();
 }
 
@@ -179,8 +180,9 @@ void Scanner::reset_to_factory_default(TimePoint now) {
   advance(now);
   steady_ = false;
   ParameterSet fresh = merge_download(params_, factory_default());
-  const bool running = scanning();
+  const bool running = scanning() || state_ == ScannerState::kConfiguration;
   params_ = fresh;
+  ++change_counter_;
   if (running) start_measuring(now);
   apply_ossd();
 }
@@ -190,6 +192,7 @@ bool Scanner::factory_settings() const {
 }
 
 std::uint32_t Scanner::parameter_checksum() const { return checksum(params_); }
+std::uint32_t Scanner::transfer_checksum() const { return scanner::transfer_checksum(params_); }
 
 Scene& Scanner::edit_scene(TimePoint now) {
   advance(now);

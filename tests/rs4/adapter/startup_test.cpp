@@ -65,10 +65,12 @@ TEST(Startup, ProxyEnable1_FailedSyncSetsRequestAgainAndKeepsOssd0) {
   rig.run(100ms);
   EXPECT_TRUE(rig.host_input() & kInputProxyRequest);
   EXPECT_FALSE(rig.ossd());
-  // a second, successful attempt releases
+  EXPECT_TRUE(rig.adapter.scanner().factory_settings());  // the failure reset the RS4
+  // a second, successful attempt releases (after the start interlock's restart pulse: the
+  // factory reset restarted the RS4)
   ASSERT_FALSE(rig.adapter.proxy_sync_started(rig.now));
   ASSERT_FALSE(rig.adapter.proxy_sync_succeeded(rig.now));
-  rig.run(100ms);
+  rig.restart_pulse();
   EXPECT_TRUE(rig.ossd());
 }
 

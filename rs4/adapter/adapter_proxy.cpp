@@ -1,0 +1,114 @@
+// Adapter: the device side of the proxy sync — EXTENSION ([docs/proxy-protocol.md],
+// [RS4 manual §7.1, §7.2, §5.1.1] bit 2, [RS4 manual §5.2.1] flow state 011): Proxy-Request and
+// its reason, PROFI_CMD_PROXY_BEGIN / _END, the transfer commands, and the failure path
+// (factory settings, error memory, Proxy-Request again).
+#include "rs4/adapter/adapter.h"
+#include "rs4/protocol/parameter_transfer.h"
+
+namespace rs4sim::rs4::adapter {
+
+namespace {
+// The proxy's own commands: they never abort a sync.
+bool proxy_command(std::span<const std::uint8_t> command) noexcept {
+  if (command.empty()) return true;  // not a command at all (kTelegramNotProcessed)
+  const auto code = command[0];
+  return protocol::is_transfer_code(code) ||
+         code == static_cast<std::uint8_t>(protocol::AdapterCommandCode::kProxyBegin) ||
+         code == static_cast<std::uint8_t>(protocol::AdapterCommandCode::kProxyEnd);
+}
+}  // namespace
+
+// [RS4 manual §5.1.1] bit 2 = 1, remembering why for PROFI_CMD_PROXY_BEGIN.
+void Adapter::request_sync(protocol::SyncReason why) {
+  proxy_request_ = true;
+  proxy_.request(why);
+}
+
+std::error_code Adapter::proxy_sync_started(TimePoint now) {
+  if (!powered_) return AdapterApiError::kPoweredOff;
+  if (!proxy_request_) return AdapterApiError::kNoSyncRequested;
+  proxy_request_ = false;  // [RS4 manual §5.1.1] bit 2: reset when the check begins
+  proxy_.start(scanner_);  // flow state 011 on both channels from now on
+  refresh_input(now);
+  return {};
+}
+
+std::error_code Adapter::proxy_sync_succeeded(TimePoint now) {
+  if (!powered_) return AdapterApiError::kPoweredOff;
+  if (!proxy_.running()) return AdapterApiError::kNoSyncRunning;
+  proxy_.stop();
+  // [RS4 manual §7.1, §7.2]: Proxy-Enable 1 → OSSD released after a successful sync. The only
+  // place besides Proxy-Enable 0 that grants the release.
+  released_ = true;
+  rs232_through_ = pc_attached_;
+  refresh_input(now);
+  return {};
+}
+
+std::error_code Adapter::proxy_sync_failed(TimePoint now, std::uint16_t error) {
+  if (!powered_) return AdapterApiError::kPoweredOff;
+  if (!proxy_.running()) return AdapterApiError::kNoSyncRunning;
+  fail_sync(error, now);
+  return {};
+}
+
+// Every failure of a running sync ([RS4 manual §7.1, §7.2]: "if an upload or download fails, the
+// device is reset to factory settings"): the error (if any) into the error memory with a
+// diagnosis alarm ([RS4 manual §5.3.2]), the RS4 at factory settings, the sync over and
+// Proxy-Request set again (reason retry; seen by the master in its next data exchange).
+void Adapter::fail_sync(std::uint16_t error, TimePoint now) {
+  proxy_.stop();
+  if (error != 0) report_error(error, error, now);
+  scanner_.reset_to_factory_default(now);
+  request_sync(protocol::SyncReason::kRetry);
+  if (proxy_enable_) released_ = false;  // OSSD unaffected unless the sync fails
+  rs232_through_ = pc_attached_;
+  refresh_input(now);
+}
+
+// PROFI_CMD_PROXY_BEGIN: `98 reason direction flags`; without a pending Proxy-Request
+// `98 00 00 flags` and nothing starts.
+void Adapter::proxy_begin(Channel& ch, TimePoint now) {
+  protocol::ProxyBeginAnswer a;
+  if (rs4_up_ && !proxy_sync_started(now)) {
+    a.reason = proxy_.reason();
+    a.direction = proxy_.direction();
+  }
+  a.factory_default = scanner_.factory_settings();
+  ch.answers.push_back(protocol::encode_proxy_begin_answer(a));
+}
+
+// PROFI_CMD_PROXY_END: `99 accepted flags`; accepted 0 when no sync was running.
+void Adapter::proxy_end(const protocol::ProxyEndCommand& end, Channel& ch, TimePoint now) {
+  const bool running = proxy_.running();
+  if (running && end.outcome == protocol::ProxyOutcome::kSucceeded) {
+    (void)proxy_sync_succeeded(now);
+  } else if (running) {
+    (void)proxy_sync_failed(now, end.error);
+  }
+  ch.answers.push_back(protocol::encode_proxy_end_answer({running, scanner_.factory_settings()}));
+}
+
+// [RS4 manual §5.2] "a user command while the proxy is still syncing aborts the proxy with an
+// error": any class 2 request, any class 1 command but the proxy's own → 0x2B01, failure path.
+// The command itself is then served as usual.
+void Adapter::abort_on_user_command(std::span<const std::uint8_t> command,
+                                    dp::slave::AcyclicChannel which, TimePoint now) {
+  if (!proxy_.running()) return;
+  if (which == dp::slave::AcyclicChannel::kC1 && proxy_command(command)) return;
+  fail_sync(protocol::to_wire(protocol::AdapterError::kProxyStateUnknown), now);
+}
+
+// A transfer command for the RS4. A set written during the sync (commit, break) is not yet
+// confirmed by the proxy: with Proxy-Enable 1 the release waits for PROFI_CMD_PROXY_END ok.
+std::vector<std::uint8_t> Adapter::transfer(std::span<const std::uint8_t> command, TimePoint now) {
+  const auto before = scanner_.change_counter();
+  auto answer = proxy_.answer(command, scanner_, now);
+  if (scanner_.change_counter() != before) {
+    if (proxy_enable_) released_ = false;
+    refresh_input(now);
+  }
+  return answer;
+}
+
+}  // namespace rs4sim::rs4::adapter
