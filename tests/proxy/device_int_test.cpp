@@ -1,6 +1,7 @@
 // ProxySync against the real device: our class 1 master + F-host + Rs4Device on the memory bus
 // (Rs4Segment), the archive on a real SQLite file, on the manual clock ([RS4 manual §7.1, §7.2]).
 #include "proxy/proxy_sync.h"
+#include "proxy/retentive.h"
 #include "rs4/adapter/cyclic_bytes.h"
 #include "rs4/device/rs4_segment.h"
 #include "rs4/scanner/parameter_codec.h"
@@ -43,7 +44,7 @@ struct DeviceSync : ::testing::Test {
     return RecordResult::success({r->data.begin(), r->data.end()});
   }
   // One sync to its end (failure report and background verify included).
-  bool run_sync(dp::Duration timeout = 200s) {
+  bool run_sync(dp::Duration timeout = 200s, std::optional<Step> stop_at = std::nullopt) {
     sync.set_proxy_enable(true);
     sync.set_input_byte(seg.input_byte());
     if (!sync.ready(seg.now())) return false;
@@ -52,6 +53,7 @@ struct DeviceSync : ::testing::Test {
     while (seg.now() < end) {
       sync.set_input_byte(seg.input_byte());
       if (!sync.active()) return true;
+      if (stop_at && sync.progress().step == *stop_at) return true;
       if (auto req = sync.take_request(seg.now())) {
         ++records;
         sync.on_record_result(exchange(*req), seg.now());
@@ -150,6 +152,53 @@ TEST_F(DeviceSync, ExchangeDownloadsTheStoredSet) {
   const auto current = archive->current({"bus", 4}).value();
   EXPECT_EQ(current.version.serial_number,
             std::to_string(seg.device().scanner().parameters().identity.serial_number));
+}
+
+// rs4sim restarts in the middle of a download: the restored machine fails the sync safely
+// (the device rolls back to factory settings and asks again), the retry downloads the set.
+TEST_F(DeviceSync, RestartMidDownloadFailsSafelyThenTheRetryDownloads) {
+  auto stored = rs4::scanner::factory_default();
+  stored.response_steps = 6;
+  ASSERT_TRUE(store(stored, "999"));
+  boot(rs4::scanner::factory_default());
+  ASSERT_TRUE(run_sync(200s, Step::kDownloadCommit));  // every chunk written, no commit
+  const auto saved = encode_retentive(sync.snapshot());
+  ProxySync restarted{sync_config(), *archive};
+  restarted.restore(decode_retentive(saved).value());
+  restarted.set_proxy_enable(true);
+  ASSERT_TRUE(restarted.ready(seg.now()));
+  restarted.start(seg.now());
+  for (int i = 0; i < 2000 && restarted.active(); ++i) {
+    if (auto req = restarted.take_request(seg.now())) {
+      restarted.on_record_result(exchange(*req), seg.now());
+    } else {
+      seg.run_for(10ms);
+      restarted.tick(seg.now());
+    }
+  }
+  EXPECT_EQ(restarted.outputs().error_number_fb, 0x2601);
+  EXPECT_TRUE(restarted.outputs().config_set_to_default);
+  EXPECT_FALSE(ossd_after_restart());
+  EXPECT_NE(seg.device().scanner().transfer_checksum(), rs4::scanner::transfer_checksum(stored));
+  // The device asks again (reason retry); after the retry delay the set goes back.
+  ASSERT_TRUE(seg.run_until(
+      [&] { return (seg.input_byte() & rs4::adapter::kInputProxyRequest) != 0; }, 10s));
+  seg.run_for(6s);
+  restarted.set_input_byte(seg.input_byte());
+  ASSERT_TRUE(restarted.ready(seg.now()));
+  restarted.start(seg.now());
+  for (int i = 0; i < 20000 && restarted.active(); ++i) {
+    restarted.set_input_byte(seg.input_byte());
+    if (auto req = restarted.take_request(seg.now())) {
+      restarted.on_record_result(exchange(*req), seg.now());
+    } else {
+      seg.run_for(10ms);
+      restarted.tick(seg.now());
+    }
+  }
+  EXPECT_EQ(restarted.outputs(), FbOutputs{}) << std::hex << restarted.outputs().error_number_fb;
+  EXPECT_EQ(seg.device().scanner().transfer_checksum(), rs4::scanner::transfer_checksum(stored));
+  EXPECT_TRUE(ossd_after_restart());
 }
 
 }  // namespace
