@@ -2,7 +2,9 @@
 # `rs4sim run --device rs4` and `rs4sim master` as two processes on the wall clock, over a
 # pty pair (`run --link pty` prints its path, `master --link serial --port <path>`) or UDP on
 # localhost: the master reaches data exchange, PROFIsafe RUN and sees Proxy-Request after the
-# RS4's (shortened) boot; checked on its --json lines (docs/master.md).
+# RS4's (shortened) boot, and the parameter proxy completes the first-commissioning sync
+# (the RS4 holds its factory set, the archive is empty: CONFIG_SET_TO_DEFAULT, [RS4 manual §7.1,
+# §7.2] scenario 1) over the real link; checked on its --json lines (docs/master.md).
 # Usage: master_two_processes.sh RS4SIM [pty|udp]
 set -u
 rs4sim=$1
@@ -42,7 +44,8 @@ fi
 
 # Generous watchdogs: the machine running the tests may be loaded.
 "$rs4sim" master --slave 4 "$@" --json --duration 8 \
-  --f-wd-time 500 --dp-watchdog 1000 >"$dir/master.out" 2>"$dir/master.err"
+  --f-wd-time 500 --dp-watchdog 1000 --archive "$dir/archive.sqlite3" \
+  >"$dir/master.out" 2>"$dir/master.err"
 rc=$?
 cat "$dir/master.out"
 if [ $rc -ne 0 ]; then
@@ -62,4 +65,6 @@ expect '"station":4,"event":"dp","state":"DataExchange","data_exchange":true'
 expect '"station":4,"event":"profisafe","state":"run"'
 expect '"station":4,"event":"input",.*"proxy_request":true'
 expect '"station":4,"event":"stop","dp":"DataExchange","data_exchange":true,"profisafe":"run"'
+expect '"station":4,"event":"proxy",.*"step":"identify"'
+expect '"station":4,"event":"proxy",.*"step":"idle",.*"fb_busy":false,"config_set_to_default":true,"error_number_fb":0'
 exit $fail
