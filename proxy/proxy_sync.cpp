@@ -117,6 +117,11 @@ void ProxySync::exchange_finished(dp::TimePoint now) {
     return;
   }
   if (step_ == Step::kEndFailed) {
+    // DECISION (docs/proxy.md "Failures"): without a readable answer (the link is gone) the
+    // device has rolled back by itself ([RS4 manual §7.1, §7.2]: a failed sync resets it to
+    // factory settings; docs/proxy-protocol.md: so does a lost connection), so the FB reports
+    // CONFIG_SET_TO_DEFAULT rather than leave the user believing the old set is active.
+    out_.config_set_to_default = true;
     if (status == S::kDone) {
       if (auto a = protocol::decode_proxy_end_answer(answer))
         out_.config_set_to_default = a.value().factory_default;

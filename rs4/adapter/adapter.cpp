@@ -117,6 +117,7 @@ void Adapter::start_adapter(TimePoint now, bool keep_errors) {
   proxy_enable_ = false;
   proxy_enable_known_ = false;
   rs232_through_ = pc_attached_;
+  through_pending_ = false;
   if (rs4_up_ && !pc_attached_) {  // a restarted adapter checks again
     request_sync(proxy_request_ ? proxy_.reason() : protocol::SyncReason::kPowerUp);
   }
@@ -246,7 +247,7 @@ void Adapter::on_time(TimePoint now) {
   collect_rs4(now);
   if (field_pair_release_at_ && now >= *field_pair_release_at_) field_pair_release_at_.reset();
   check_going_alarm(now);
-  refresh_input(now);
+  switch_through_after_sync(now);  // refreshes the input byte
 }
 
 // ---- observation ---------------------------------------------------------------------------

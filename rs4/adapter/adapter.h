@@ -241,6 +241,7 @@ class Adapter final : public dp::slave::SlaveApplication {
   [[nodiscard]] const Channel& channel(dp::slave::AcyclicChannel which) const noexcept;
   // adapter_proxy.cpp: the device side of the proxy sync ([docs/proxy-protocol.md])
   void request_sync(protocol::SyncReason why);
+  void switch_through_after_sync(TimePoint now);
   void fail_sync(std::uint16_t error, TimePoint now);
   void proxy_begin(Channel& ch, TimePoint now);
   void proxy_end(const protocol::ProxyEndCommand& end, Channel& ch, TimePoint now);
@@ -279,6 +280,7 @@ class Adapter final : public dp::slave::SlaveApplication {
   bool proxy_enable_known_ = false;  // evaluated since DP start-up / PC removal
   bool pc_attached_ = false;         // reed contact
   bool rs232_through_ = false;       // bit 3: switched through (not during a sync)
+  bool through_pending_ = false;     // switch through once the sync's last answer was read
 
   // [RS4 manual §5.1] cyclic
   std::uint8_t input_byte_ = 0;

@@ -130,7 +130,6 @@ dp::slave::AcyclicResult Adapter::on_write(const dp::slave::AcyclicRequest& req,
 
 dp::slave::AcyclicResult Adapter::on_read(const dp::slave::AcyclicRequest& req, Channel& ch,
                                           TimePoint now) {
-  (void)now;
   ++counters_.reads;
   if (req.length < protocol::kMinWriteRecordSize) {
     ++counters_.dpv1_rejected;
@@ -158,6 +157,7 @@ dp::slave::AcyclicResult Adapter::on_read(const dp::slave::AcyclicRequest& req, 
     (void)protocol::encode_block(flow_byte(req.channel, false), protocol::kLastBlockNumber, {},
                                  block);
   }
+  if (through_pending_) switch_through_after_sync(now);
   return AcyclicResult::ok(block);
 }
 

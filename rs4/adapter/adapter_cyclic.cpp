@@ -137,6 +137,7 @@ void Adapter::detach_pc_adapter(TimePoint now) {
   const bool was = pc_attached_;
   pc_attached_ = false;
   rs232_through_ = false;
+  through_pending_ = false;
   if (!powered_ || !was) return;
   // [RS4 manual §5.1.1] bit 3: on 1→0 the Proxy-Request bit is always set; Proxy-Enable is read
   // again.

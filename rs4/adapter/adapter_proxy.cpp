@@ -40,9 +40,20 @@ std::error_code Adapter::proxy_sync_succeeded(TimePoint now) {
   // [RS4 manual §7.1, §7.2]: Proxy-Enable 1 → OSSD released after a successful sync. The only
   // place besides Proxy-Enable 0 that grants the release.
   released_ = true;
-  rs232_through_ = pc_attached_;
+  through_pending_ = pc_attached_;  // switched through at the next on_time/READ
   refresh_input(now);
   return {};
+}
+
+// [RS4 manual §5.1.1] bit 3: a PC adapter attached during a sync is switched through once the
+// sync has ended — DECISION: and the proxy has fetched the answer of its last command (99), which
+// a switched-through adapter would no longer hand out (flow state 010).
+void Adapter::switch_through_after_sync(TimePoint now) {
+  if (through_pending_ && c1_.answers.empty() && c1_.reading.done()) {
+    through_pending_ = false;
+    rs232_through_ = pc_attached_;
+  }
+  refresh_input(now);
 }
 
 std::error_code Adapter::proxy_sync_failed(TimePoint now, std::uint16_t error) {
@@ -62,7 +73,7 @@ void Adapter::fail_sync(std::uint16_t error, TimePoint now) {
   scanner_.reset_to_factory_default(now);
   request_sync(protocol::SyncReason::kRetry);
   if (proxy_enable_) released_ = false;  // OSSD unaffected unless the sync fails
-  rs232_through_ = pc_attached_;
+  through_pending_ = pc_attached_;  // switched through at the next on_time/READ
   refresh_input(now);
 }
 

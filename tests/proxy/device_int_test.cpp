@@ -49,6 +49,10 @@ struct DeviceSync : ::testing::Test {
     sync.set_input_byte(seg.input_byte());
     if (!sync.ready(seg.now())) return false;
     sync.start(seg.now());
+    return drive(timeout, stop_at);
+  }
+  // Runs the started sync on until it is over (or has reached `stop_at`).
+  bool drive(dp::Duration timeout = 200s, std::optional<Step> stop_at = std::nullopt) {
     const auto end = seg.now() + timeout;
     while (seg.now() < end) {
       sync.set_input_byte(seg.input_byte());
@@ -73,6 +77,27 @@ struct DeviceSync : ::testing::Test {
     r.blob = blob;
     r.crc32 = rs4::scanner::transfer_checksum(set);
     return archive->store(r);
+  }
+  // Waits for Proxy-Request (acknowledging a passivation on the way, as the PLC would).
+  bool await_request(dp::Duration timeout = 40s) {
+    return seg.run_until(
+        [&] {
+          seg.ack_rei();
+          return (seg.input_byte() & rs4::adapter::kInputProxyRequest) != 0;
+        },
+        timeout);
+  }
+  // Parametrises through the PC adapter: attach, new set, remove ([RS4 manual §7.1, §7.2]).
+  void parametrise_on_site(const rs4::scanner::ParameterSet& set) {
+    auto& adapter = seg.device().adapter();
+    adapter.attach_pc_adapter(seg.now());
+    seg.run_for(100ms);
+    auto& rs4 = seg.device().scanner();
+    ASSERT_TRUE(rs4.enter_configuration(seg.now()));
+    ASSERT_TRUE(rs4.set_parameters(set, seg.now()));
+    ASSERT_TRUE(rs4.leave_configuration(seg.now()));
+    seg.run_for(100ms);
+    adapter.detach_pc_adapter(seg.now());
   }
   bool ossd_after_restart() {
     seg.set_output_byte(rs4::adapter::kOutputRestart | kEnable);
@@ -199,6 +224,140 @@ TEST_F(DeviceSync, RestartMidDownloadFailsSafelyThenTheRetryDownloads) {
   EXPECT_EQ(restarted.outputs(), FbOutputs{}) << std::hex << restarted.outputs().error_number_fb;
   EXPECT_EQ(seg.device().scanner().transfer_checksum(), rs4::scanner::transfer_checksum(stored));
   EXPECT_TRUE(ossd_after_restart());
+}
+
+}  // namespace
+}  // namespace rs4sim::proxy
+
+namespace rs4sim::proxy {
+namespace {
+
+rs4::scanner::ParameterSet set_with_response_steps(std::uint8_t steps) {
+  auto set = rs4::scanner::factory_default();
+  set.response_steps = steps;
+  return set;
+}
+
+// Scenario 2 [RS4 manual §7.1, §7.2]: a set changed through the PC adapter is uploaded when the
+// adapter is removed; it replaces the current set, the history keeps the old one.
+TEST_F(DeviceSync, ParameterChangeThroughThePcAdapterIsUploaded) {
+  const auto a = set_with_response_steps(2);
+  boot(a);
+  ASSERT_TRUE(run_sync());  // the proxy learns A
+  const auto b = set_with_response_steps(5);
+  parametrise_on_site(b);
+  ASSERT_TRUE(await_request(5s));
+  ASSERT_TRUE(run_sync());
+  EXPECT_EQ(sync.outputs(), FbOutputs{}) << std::hex << sync.outputs().error_number_fb;
+  const auto history = archive->history({"bus", 4}).value();
+  ASSERT_EQ(history.size(), 2U);
+  EXPECT_EQ(history[0].crc32, rs4::scanner::transfer_checksum(a));
+  EXPECT_EQ(history[1].crc32, rs4::scanner::transfer_checksum(b));
+  EXPECT_EQ(archive->current({"bus", 4}).value().set.blob, rs4::scanner::encode_for_transfer(b));
+  const auto log = archive->sync_log({"bus", 4}, 10).value();
+  EXPECT_EQ(log.back().direction, storage::SyncDirection::kUpload);
+  EXPECT_EQ(log.back().reason, "pc-adapter-removed");
+}
+
+// The class 1 link is lost in the middle of a download: the device rolls back to factory
+// settings by itself, the FB stops with the write position of the chunk and reports
+// CONFIG_SET_TO_DEFAULT; once the link is back the retry downloads the set.
+TEST_F(DeviceSync, LinkLossMidDownloadLeavesFactorySettingsAndTheRetryRestores) {
+  auto stored = set_with_response_steps(6);
+  ASSERT_TRUE(store(stored, "999"));
+  boot(rs4::scanner::factory_default());
+  ASSERT_TRUE(run_sync(200s, Step::kDownloadChunk));
+  ASSERT_TRUE(sync.active());
+  dp::link::Fault lost;
+  lost.kind = dp::link::FaultKind::kDrop;
+  lost.count = 0;  // until cleared
+  lost.to = 4;
+  seg.bus().inject(lost);
+  lost.to.reset();
+  lost.from = 4;
+  seg.bus().inject(lost);
+  ASSERT_TRUE(drive(120s));
+  EXPECT_EQ(sync.outputs().error_number_fb, 0x2401) << std::hex << sync.outputs().error_number_fb;
+  EXPECT_EQ(sync.outputs().error_code_sfc, 0);  // no negative response: nothing came back
+  EXPECT_TRUE(sync.outputs().config_set_to_default);
+  EXPECT_FALSE(sync.outputs().fb_busy);
+  EXPECT_TRUE(seg.device().scanner().factory_settings());
+  seg.bus().clear_faults();
+  ASSERT_TRUE(seg.run_until([&] { return seg.in_data_exchange(); }, 10s));
+  ASSERT_TRUE(await_request());
+  seg.run_for(6s);  // the retry delay
+  ASSERT_TRUE(run_sync());
+  EXPECT_EQ(sync.outputs(), FbOutputs{}) << std::hex << sync.outputs().error_number_fb;
+  EXPECT_EQ(seg.device().scanner().transfer_checksum(), rs4::scanner::transfer_checksum(stored));
+}
+
+// A user command while the proxy syncs aborts the sync ([RS4 manual §5.2]: the user must watch
+// FB_BUSY): the device enters 0x2B01 and rolls back; the proxy's next command is refused.
+TEST_F(DeviceSync, UserCommandDuringASyncAbortsIt) {
+  ASSERT_TRUE(store(set_with_response_steps(6), "999"));
+  boot(rs4::scanner::factory_default());
+  ASSERT_TRUE(run_sync(200s, Step::kDownloadChunk));
+  const std::vector<std::uint8_t> get_version{0x90};  // PROFI_CMD_GET_VERSION
+  (void)seg.command(get_version);
+  ASSERT_TRUE(drive());
+  const auto& out = sync.outputs();
+  EXPECT_EQ(out.error_number_fb & 0xFFU, 0x02U) << std::hex << out.error_number_fb;
+  EXPECT_EQ(out.error_number_rs4, 8);  // kNoSyncRunning: the device ended the sync
+  EXPECT_TRUE(out.config_set_to_default);
+  const auto& errors = seg.device().adapter().error_memory();
+  EXPECT_EQ(errors.count(rs4::adapter::Processor::kUc2, 0x2B01), 1);
+  EXPECT_TRUE(seg.device().scanner().factory_settings());
+}
+
+// The PC adapter is attached while the proxy uploads: the sync completes; the RS232 (input
+// bit 3) is switched through only after it ends ([RS4 manual §5.1.1]).
+TEST_F(DeviceSync, PcAdapterAttachedDuringASyncSwitchesThroughAfterwards) {
+  boot(set_with_response_steps(3));
+  ASSERT_TRUE(run_sync(200s, Step::kUpload1));
+  seg.device().adapter().attach_pc_adapter(seg.now());
+  seg.run_for(50ms);
+  EXPECT_EQ(seg.input_byte() & rs4::adapter::kInputRs232Active, 0);
+  ASSERT_TRUE(drive());
+  EXPECT_EQ(sync.outputs(), FbOutputs{}) << std::hex << sync.outputs().error_number_fb;
+  seg.run_for(50ms);
+  EXPECT_NE(seg.input_byte() & rs4::adapter::kInputRs232Active, 0);
+  EXPECT_EQ(archive->history({"bus", 4}).value().size(), 1U);
+}
+
+// [RS4 manual §6.4]: user passwords are never overwritten by a proxy download.
+TEST_F(DeviceSync, UserPasswordsSurviveADownload) {
+  ASSERT_TRUE(store(set_with_response_steps(6), "999"));
+  auto own = rs4::scanner::factory_default();
+  own.passwords[0] = {'S', 'E', 'C', 'R', 'E', 'T', 0xFF, 0xFF};
+  own.passwords[1] = {'S', 'E', 'R', 'V', 'I', 'C', 'E', 0xFF};
+  boot(own);
+  ASSERT_TRUE(run_sync());
+  EXPECT_EQ(sync.outputs(), FbOutputs{}) << std::hex << sync.outputs().error_number_fb;
+  const auto& now_active = seg.device().scanner().parameters();
+  EXPECT_EQ(now_active.response_steps, 6);
+  EXPECT_EQ(now_active.passwords, own.passwords);
+}
+
+// An older version restored in the archive reaches the device at the next sync.
+TEST_F(DeviceSync, RestoreOfAnOlderVersionReachesTheDevice) {
+  const auto a = set_with_response_steps(2);
+  boot(a);
+  ASSERT_TRUE(run_sync());
+  const auto first = archive->current({"bus", 4}).value().version.id;
+  parametrise_on_site(set_with_response_steps(7));
+  ASSERT_TRUE(await_request(5s));
+  ASSERT_TRUE(run_sync());
+  ASSERT_EQ(archive->history({"bus", 4}).value().size(), 2U);
+  const auto restored = archive->restore(first, storage::testing::at_ms(1), "back to A").value();
+  EXPECT_TRUE(restored.pending_download);
+  seg.power_off();
+  seg.run_for(1s);
+  seg.power_on();
+  ASSERT_TRUE(await_request());
+  ASSERT_TRUE(run_sync());
+  EXPECT_EQ(sync.outputs(), FbOutputs{}) << std::hex << sync.outputs().error_number_fb;
+  EXPECT_EQ(seg.device().scanner().transfer_checksum(), rs4::scanner::transfer_checksum(a));
+  EXPECT_FALSE(archive->get(restored.id).value().version.pending_download);
 }
 
 }  // namespace
