@@ -3,8 +3,9 @@
 # pty pair (`run --link pty` prints its path, `master --link serial --port <path>`) or UDP on
 # localhost: the master reaches data exchange, PROFIsafe RUN and sees Proxy-Request after the
 # RS4's (shortened) boot, and the parameter proxy completes the first-commissioning sync
-# (the RS4 holds its factory set, the archive is empty: CONFIG_SET_TO_DEFAULT, [RS4 manual §7.1,
-# §7.2] scenario 1) over the real link; checked on its --json lines (docs/master.md).
+# over the real link (the RS4 holds its factory set, the archive is empty:
+# CONFIG_SET_TO_DEFAULT, scenario 1 of [RS4 manual §7.1, §7.2]); checked on its --json lines
+# (docs/master.md).
 # Usage: master_two_processes.sh RS4SIM [pty|udp]
 set -u
 rs4sim=$1
