@@ -127,3 +127,55 @@ TEST(MasterService, PluginSeesEventsActsOnTheStationAndReports) {
 
 }  // namespace
 }  // namespace rs4sim::app
+
+#include "app/master_proxy.h"
+#include "storage/sqlite_archive.h"
+
+#include <filesystem>
+
+namespace rs4sim::app {
+namespace {
+
+// Where each RS4's sync began and ended in the console text.
+struct SyncSpan {
+  std::size_t begin = std::string::npos;
+  std::size_t end = std::string::npos;
+};
+SyncSpan span_of(const std::string& text, const std::string& rs4) {
+  return {text.find(rs4 + ": proxy begin"), text.find(rs4 + ": idle, CONFIG_SET_TO_DEFAULT")};
+}
+
+std::string run_two_with_proxy(std::size_t max_parallel) {
+  const auto file = std::filesystem::temp_directory_path() /
+                    ("rs4sim_proxy_" + std::to_string(max_parallel) + ".sqlite3");
+  std::filesystem::remove(file);
+  auto archive = storage::SqliteArchive::open(file).value();
+  ProxyPluginOptions o;
+  o.max_parallel = max_parallel;
+  ProxyPlugin proxy(*archive, o);
+  std::ostringstream out;
+  EXPECT_EQ(run_master(options({4, 5}, false), memory(10), out, {&proxy}), 0) << out.str();
+  archive.reset();
+  std::filesystem::remove(file);
+  return out.str();
+}
+
+// Two RS4s ask at once (both boot together): with one sync at a time per bus ([RS4 manual §6.5]
+// advice, the default) the second starts only after the first ended; with two they overlap.
+TEST(MasterService, ProxySerialisesTwoScannersAskingAtOnce) {
+  const auto serial = run_two_with_proxy(1);
+  const auto a = span_of(serial, "RS4 4");
+  const auto b = span_of(serial, "RS4 5");
+  ASSERT_NE(a.end, std::string::npos) << serial;
+  ASSERT_NE(b.end, std::string::npos) << serial;
+  EXPECT_LT(a.end, b.begin) << serial;
+
+  const auto parallel = run_two_with_proxy(2);
+  const auto c = span_of(parallel, "RS4 4");
+  const auto d = span_of(parallel, "RS4 5");
+  ASSERT_NE(d.begin, std::string::npos) << parallel;
+  EXPECT_LT(d.begin, c.end) << parallel;
+}
+
+}  // namespace
+}  // namespace rs4sim::app
