@@ -55,7 +55,7 @@ std::unique_ptr<storage::SqliteArchive> open_archive(const CommonOptions& o, Ope
 }
 
 DecodedSet decode_set(const storage::ParameterSetRecord& record) {
-  auto decoded = rs4::scanner::decode_and_validate(record.blob);
+  auto decoded = rs4::scanner::decode_transfer_form(record.blob);
   if (decoded.has_error()) {
     return {std::nullopt, "not a valid RS4 parameter set: " + decoded.error().message()};
   }

@@ -18,6 +18,8 @@ const CommandRegistration kDemo(
           ->check(CLI::IsMember(device_names()));
       auto options = std::make_shared<DemoOptions>();
       add_capture_options(cmd, options->capture);
+      cmd.add_option("--archive", options->archive,
+                     "rs4: keep the sets the demo's proxy archives in this SQLite file");
       return [device, options]() { return find_device(*device)->demo(std::cout, *options); };
     });
 

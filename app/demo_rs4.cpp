@@ -1,5 +1,6 @@
 // `rs4sim demo`, RS4 scenario (app/demos.h). Each step waits on the manual clock for what
 // the manual prescribes and fails the demo if it does not happen (app/narration.h).
+#include "app/demo_proxy.h"
 #include "app/demos.h"
 #include "app/narration.h"
 #include "app/run_options.h"
@@ -7,6 +8,7 @@
 #include "rs4/device/rs4_segment.h"
 #include "rs4/protocol/telegram.h"
 #include "rs4/scanner/faults.h"
+#include "storage/sqlite_archive.h"
 
 #include <cstdio>
 #include <functional>
@@ -206,6 +208,47 @@ bool passivation(Demo& d) {
                 "ACK_REI: reintegrated, OSSD bit 1 again");
 }
 
+// Scenario 2 of [RS4 manual §7.1, §7.2]: a set changed on site through the PC adapter goes to the
+// proxy when the adapter is removed; the proxy archives it (docs/proxy.md).
+bool parameter_proxy(Demo& d, storage::ParameterArchive& archive) {
+  Rs4Segment& s = d.s_;
+  auto& adapter = s.device().adapter();
+  auto& rs4 = s.device().scanner();
+  auto set = rs4.parameters();
+  set.response_steps = 2;  // T = 80 ms + 2·40 ms [RS4 manual §7.3]
+  adapter.attach_pc_adapter(s.now());
+  s.run_for(100ms);
+  if (!rs4.enter_configuration(s.now()) || !rs4.set_parameters(set, s.now()) ||
+      !rs4.leave_configuration(s.now())) {
+    d.say("FAILED: the RS4 refused the new set");
+    return false;
+  }
+  s.run_for(100ms);
+  adapter.detach_pc_adapter(s.now());
+  d.say("PC adapter attached, response time set to 160 ms through it, adapter removed");
+  if (!d.wait([&] { return (s.input_byte() & kInputProxyRequest) != 0; }, 5s,
+              "Proxy-Request: the set changed on site")) {
+    return false;
+  }
+  DemoProxy proxy(s, archive);
+  const auto at = s.now();
+  if (!d.n_.check(proxy.run_sync(60s) && proxy.outputs() == proxy::FbOutputs{},
+                  "proxy sync: the new set uploaded, compared and archived")) {
+    return false;
+  }
+  auto station = DemoProxy::station();
+  station.address = s.rs4_address();
+  const auto current = archive.current(station);
+  if (!current) return d.n_.check(false, "archive: " + current.error().message);
+  char crc[12];
+  std::snprintf(crc, sizeof crc, "0x%08X", current.value().version.crc32);
+  d.say("  " + std::to_string(current.value().version.size) + " bytes in " +
+        std::to_string(proxy.records()) + " DPV1 records, " + std::to_string(d.n_.ms_since(at)) +
+        " ms; archive version " + std::to_string(current.value().version.number) + ", CRC-32 " +
+        crc);
+  return d.ossd() || d.restart_pulse(1);
+}
+
 }  // namespace
 
 int run_rs4_demo(std::ostream& out, const DemoOptions& options) {
@@ -213,15 +256,23 @@ int run_rs4_demo(std::ostream& out, const DemoOptions& options) {
   Rs4Segment s(c);
   const auto capture = open_capture(options.capture);
   attach_capture(capture.get(), s.bus());
+  const std::string path = options.archive.empty() ? ":memory:" : options.archive;
+  auto archive = storage::SqliteArchive::open(path);
+  if (!archive) {
+    out << "rs4sim: archive " << path << ": " << archive.error().message << std::endl;
+    return 1;
+  }
   Demo d(s, out);
   const bool ok = run_steps({[&] { return startup(d); }, [&] { return protective_field(d); },
                              [&] { return field_pairs(d); }, [&] { return measurement(d); },
-                             [&] { return rs4_error(d); }, [&] { return passivation(d); }});
+                             [&] { return rs4_error(d); }, [&] { return passivation(d); },
+                             [&] { return parameter_proxy(d, *archive.value()); }});
   d.say(ok ? "demo complete: every step as the manual prescribes" : "demo FAILED");
   if (capture) {
     d.say("capture: " + std::to_string(capture->records()) + " telegrams in " +
           options.capture.file);
   }
+  if (!options.archive.empty()) d.say("archive: the demo's sets are in " + options.archive);
   out.flush();
   return ok ? 0 : 1;
 }

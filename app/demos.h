@@ -6,11 +6,13 @@
 #include "app/capture_option.h"
 
 #include <iosfwd>
+#include <string>
 
 namespace rs4sim::app {
 
 struct DemoOptions {
   CaptureOptions capture;
+  std::string archive;  // the RS4 demo's parameter archive; empty: in memory only
 };
 
 // RS4 scenario: one RS4/PROFIsafe, our GSD-configured class 1 master and a PROFIsafe

@@ -60,7 +60,7 @@ grpc::Status to_id(std::uint64_t id, const std::string& field, storage::VersionI
 
 // The decoded set of a version, or DATA_LOSS naming the version.
 grpc::Status decode(const storage::VersionWithSet& v, rs4::scanner::ParameterSet& out) {
-  auto set = rs4::scanner::decode(v.set.blob);
+  auto set = rs4::scanner::decode_transfer_form(v.set.blob);
   if (!set) {
     return {grpc::StatusCode::DATA_LOSS,
             "version " + std::to_string(v.version.id) +

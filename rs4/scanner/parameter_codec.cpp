@@ -104,4 +104,14 @@ std::uint32_t transfer_checksum(const ParameterSet& set) {
   return crc32_iso_hdlc(encode_for_transfer(set));
 }
 
+boost::outcome_v2::std_result<ParameterSet> decode_transfer_form(
+    std::span<const std::uint8_t> bytes) {
+  auto set = decode(bytes);
+  if (!set) return set.error();
+  ParameterSet check = set.value();
+  for (auto& pw : check.passwords) pw.fill(0xFF);  // an empty password
+  if (const auto issue = validate(check)) return make_error_code(issue->error);
+  return set;
+}
+
 }  // namespace rs4sim::rs4::scanner

@@ -43,5 +43,10 @@ std::vector<std::uint8_t> encode_for_transfer(const ParameterSet& set);
 // the download; after a download it equals the downloaded blob's CRC although the device
 // kept its own passwords.
 std::uint32_t transfer_checksum(const ParameterSet& set);
+// A set in the transfer form (as the proxy archives it): syntax, then meaning, where the blank
+// passwords count as empty (they are the device's, never transferred). The set is returned as
+// decoded, passwords zero. A semantic failure returns the ParameterError of the first issue.
+boost::outcome_v2::std_result<ParameterSet> decode_transfer_form(
+    std::span<const std::uint8_t> bytes);
 
 }  // namespace rs4sim::rs4::scanner

@@ -101,3 +101,24 @@ TEST(FactoryReset, EndsAConfiguration) {
 
 }  // namespace
 }  // namespace rs4sim::rs4::scanner::testing
+
+namespace rs4sim::rs4::scanner {
+namespace {
+
+TEST(TransferForm, DecodeTransferFormValidatesAllButThePasswords) {
+  auto set = factory_default();
+  set.response_steps = 3;
+  const auto decoded = decode_transfer_form(encode_for_transfer(set));
+  ASSERT_TRUE(decoded) << decoded.error().message();
+  EXPECT_EQ(decoded.value().response_steps, 3);
+  EXPECT_EQ(decoded.value().passwords[0], Password{});  // as transferred: blank
+  // decode_and_validate refuses the same bytes: zero bytes are no password.
+  EXPECT_FALSE(decode_and_validate(encode_for_transfer(set)));
+  auto bad = set;
+  bad.response_steps = kMaxResponseSteps + 1;
+  EXPECT_EQ(decode_transfer_form(encode_for_transfer(bad)).error(),
+            make_error_code(validate(bad)->error));
+}
+
+}  // namespace
+}  // namespace rs4sim::rs4::scanner
