@@ -70,15 +70,7 @@ rs4::scanner::ParameterSet require_set(const storage::VersionWithSet& v) {
   return *decoded.set;
 }
 
-std::string source_name(storage::VersionSource s) {
-  switch (s) {
-    case storage::VersionSource::kUpload: return "upload";
-    case storage::VersionSource::kDownload: return "download";
-    case storage::VersionSource::kImport: return "import";
-    case storage::VersionSource::kRestore: return "restore";
-  }
-  return "unknown";
-}
+std::string source_name(storage::VersionSource s) { return storage::to_string(s); }
 
 std::string direction_name(storage::SyncDirection d) {
   switch (d) {

@@ -13,6 +13,7 @@
 #include <boost/asio/steady_timer.hpp>
 
 #include <csignal>
+#include <functional>
 #include <iostream>
 
 namespace rs4sim::app {
@@ -35,6 +36,20 @@ int run_memory(const DeviceEntry& device, const DeviceOptions& o, const LinkOpti
   return segment->healthy() ? 0 : 1;
 }
 
+// SIGINT/SIGTERM, and --duration seconds when positive, call `stop` on the loop.
+void arm_stop(asio::signal_set& signals, asio::steady_timer& limit, double duration,
+              const std::function<void()>& stop) {
+  signals.async_wait([stop](const boost::system::error_code& ec, int) {
+    if (!ec) stop();
+  });
+  if (duration > 0) {
+    limit.expires_after(seconds(duration));
+    limit.async_wait([stop](const boost::system::error_code& ec) {
+      if (!ec) stop();
+    });
+  }
+}
+
 // --link memory --grpc: the segment stays on its manual clock and is driven by the API
 // (SimTime) until Ctrl-C/SIGTERM or --duration wall seconds.
 int run_memory_served(const DeviceEntry& device, const DeviceOptions& o, const LinkOptions& l,
@@ -54,15 +69,7 @@ int run_memory_served(const DeviceEntry& device, const DeviceOptions& o, const L
       limit.cancel();
     });
   };
-  signals.async_wait([&](const boost::system::error_code& ec, int) {
-    if (!ec) stop();
-  });
-  if (l.duration > 0) {
-    limit.expires_after(seconds(l.duration));
-    limit.async_wait([&](const boost::system::error_code& ec) {
-      if (!ec) stop();
-    });
-  }
+  arm_stop(signals, limit, l.duration, stop);
   std::cerr << "rs4sim: simulated bus on the manual clock, driven through the API; Ctrl-C to stop"
             << std::endl;
   io.run();
@@ -124,15 +131,7 @@ int run_on_link(DeviceInstance& instance, const LinkOptions& l, std::ostream& ou
       halt();
     }
   };
-  signals.async_wait([&](const boost::system::error_code& ec, int) {
-    if (!ec) stop();
-  });
-  if (l.duration > 0) {
-    limit.expires_after(seconds(l.duration));
-    limit.async_wait([&](const boost::system::error_code& ec) {
-      if (!ec) stop();
-    });
-  }
+  arm_stop(signals, limit, l.duration, stop);
   std::cerr << "rs4sim: " << instance.describe() << " on " << l.link << "; Ctrl-C to stop"
             << std::endl;
   runner.start();

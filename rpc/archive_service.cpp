@@ -11,16 +11,6 @@
 namespace rs4sim::rpc {
 namespace {
 
-const char* source_name(storage::VersionSource s) {
-  switch (s) {
-    case storage::VersionSource::kUpload: return "upload";
-    case storage::VersionSource::kDownload: return "download";
-    case storage::VersionSource::kImport: return "import";
-    case storage::VersionSource::kRestore: return "restore";
-  }
-  return "unknown";
-}
-
 void fill_key(const storage::StationKey& key, v1::StationKey& out) {
   out.set_bus(key.bus);
   out.set_address(key.address);
@@ -32,7 +22,7 @@ void fill_version(const storage::VersionInfo& v, v1::VersionInfo& out) {
   out.set_number(v.number);
   out.set_crc32(v.crc32);
   out.set_size(v.size);
-  out.set_source(source_name(v.source));
+  out.set_source(storage::to_string(v.source));
   out.set_stored_at_ms(v.at.time_since_epoch().count());
   out.set_note(v.note);
   out.set_restored_from(v.restored_from ? static_cast<std::uint64_t>(*v.restored_from) : 0U);

@@ -25,6 +25,8 @@ struct StationKey {
 };
 
 enum class VersionSource : std::uint8_t { kUpload = 1, kDownload, kImport, kRestore };
+// "upload", "download", "import", "restore" ("unknown" for a value outside the enum).
+[[nodiscard]] const char* to_string(VersionSource s) noexcept;
 enum class SyncDirection : std::uint8_t { kNone = 1, kUpload, kDownload, kVerify };
 enum class SyncOutcome : std::uint8_t { kSucceeded = 1, kFailed, kAborted };
 
