@@ -35,8 +35,8 @@ grpc::Status on_device(const Rs4Context& c, std::uint32_t address, const DeviceF
 
 grpc::Status needs_simulated_clock() {
   return failed_precondition("CLOCK", "simulated time",
-                             "this run is on the real-time clock; start it with the manual "
-                             "clock (rs4sim demo, or --clock sim) to control time");
+                             "this run is on the real-time clock; run the RS4 on the simulated "
+                             "bus (rs4sim run --link memory --grpc ...) to control time");
 }
 
 grpc::Status needs_simulated_bus() {

@@ -9,7 +9,7 @@
 Needs python3-grpcio and python3-grpc-tools (Debian 12): the stubs are compiled from the
 repository's .proto files into a temporary directory at import, nothing is downloaded.
 Simulated time (advance, run_until) works where rs4sim runs on the manual clock
-(`rs4sim run --link memory --clock sim --grpc ...`).
+(`rs4sim run --link memory --grpc 127.0.0.1:0`).
 """
 
 import os

@@ -1,0 +1,66 @@
+"""`rs4sim run --link memory --grpc` driven by the Python harness (tools/python/rs4sim_harness.py)
+through python3-grpcio, a third-party gRPC client: boot in simulated time, a protective-field
+violation and restart, the rich error details, the standard health service (its response
+HealthCheckResponse{status = SERVING} is the fixed bytes 08 01) and server reflection
+(ServerReflectionRequest{list_services = ""} is 3A 00; the answer names our services).
+Usage: python_harness_test.py RS4SIM REPO   (exit 77 = skipped: no python3-grpcio)"""
+import os
+import signal
+import subprocess
+import sys
+
+try:
+    import grpc
+except ImportError:
+    print("python3-grpcio is not installed: skipped")
+    sys.exit(77)
+
+rs4sim, repo = sys.argv[1], sys.argv[2]
+sys.path.insert(0, os.path.join(repo, "tools", "python"))
+from rs4sim_harness import Rs4, error_details  # noqa: E402
+
+proc = subprocess.Popen([rs4sim, "run", "--link", "memory", "--grpc", "127.0.0.1:0"],
+                        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+try:
+    line = proc.stdout.readline()
+    assert line.startswith("grpc: listening on 127.0.0.1:"), line
+    address = line.split()[-1]
+    rs4 = Rs4(address)
+
+    rs4.boot()
+    assert rs4.ossd(), "OSSD on after boot and restart pulse"
+    assert rs4.now() >= 30, "the boot took the RS4's ≈30 s of simulated time"
+    obstacle = rs4.violate_field("protective")
+    assert rs4.run_until("OSSD_OFF", 0.5)
+    assert rs4.state().input.protective_field_violated
+    rs4.remove(obstacle)
+    assert not rs4.run_until("OSSD_ON", 1), "restart interlock holds the OSSD off"
+    rs4.press_restart(300)
+    assert rs4.run_until("OSSD_ON", 1)
+
+    try:
+        rs4.set_contamination(150)
+        raise AssertionError("contamination 150 % accepted")
+    except grpc.RpcError as e:
+        code, violations, _ = error_details(e)
+        assert code == "INVALID_ARGUMENT" and violations[0][0] == "percent", (code, violations)
+    try:
+        Rs4(address, station=9).state()
+        raise AssertionError("station 9 answered")
+    except grpc.RpcError as e:
+        assert e.code() == grpc.StatusCode.NOT_FOUND, e.code()
+
+    health = rs4.channel.unary_unary("/grpc.health.v1.Health/Check")(b"")
+    assert health == b"\x08\x01", health.hex()
+    call = rs4.channel.stream_stream(
+        "/grpc.reflection.v1alpha.ServerReflection/ServerReflectionInfo")
+    answer = b"".join(call(iter([b"\x3a\x00"])))
+    for service in (b"rs4sim.v1.Device", b"rs4sim.v1.Observation", b"rs4sim.v1.Faults",
+                    b"rs4sim.v1.SimTime", b"grpc.health.v1.Health"):
+        assert service in answer, (service, answer)
+    print("ok: harness drove the RS4 to", round(rs4.now(), 1), "s of simulated time")
+finally:
+    proc.send_signal(signal.SIGINT)
+    out, err = proc.communicate(timeout=20)
+    assert proc.returncode == 0, (proc.returncode, err)
+    assert "served" in out, out
