@@ -2,6 +2,7 @@
 
 #include "app/master_report.h"
 
+#include <algorithm>
 #include <chrono>
 #include <variant>
 
@@ -32,6 +33,13 @@ std::string hex4(std::uint16_t v) {
   std::string s = "0x";
   for (int shift = 12; shift >= 0; shift -= 4) s += kDigits[(v >> shift) & 0xFU];
   return s;
+}
+
+// "[########------------]": 20 cells, one per 5 % of the set transferred.
+std::string progress_bar(std::size_t done, std::size_t total) {
+  constexpr std::size_t kCells = 20;
+  const std::size_t filled = total == 0 ? 0 : std::min(kCells, done * kCells / total);
+  return "[" + std::string(filled, '#') + std::string(kCells - filled, '-') + "]";
 }
 
 }  // namespace
@@ -88,8 +96,9 @@ void ProxyPlugin::report_changes(MasterReport& report, dp::TimePoint now) {
     const auto& o = s.outputs;
     std::string text = std::string(proxy::to_string(s.progress.step));
     if (s.progress.bytes_total > 0) {
-      text += " " + std::to_string(s.progress.bytes_done) + "/" +
-              std::to_string(s.progress.bytes_total) + " bytes";
+      text += " " + progress_bar(s.progress.bytes_done, s.progress.bytes_total) + " " +
+              std::to_string(s.progress.bytes_done) + "/" + std::to_string(s.progress.bytes_total) +
+              " bytes";
     }
     text += std::string(o.fb_busy ? ", FB_BUSY" : "") +
             (o.config_set_to_default ? ", CONFIG_SET_TO_DEFAULT" : "");
