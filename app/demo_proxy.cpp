@@ -1,5 +1,7 @@
 #include "app/demo_proxy.h"
 
+#include "app/master_proxy.h"
+
 #include <chrono>
 
 namespace rs4sim::app {
@@ -28,12 +30,7 @@ proxy::RecordResult DemoProxy::exchange(const proxy::RecordRequest& request) {
   const auto* w = std::get_if<proxy::RecordWrite>(&request);
   const auto r = w != nullptr ? segment_.write_record(w->data)
                               : segment_.read_record(std::get<proxy::RecordRead>(request).length);
-  if (!r || (r->error && !r->negative)) return proxy::RecordResult::no_response();
-  if (r->error) {
-    return proxy::RecordResult::negative(dp::pdu::to_wire(r->negative->error_code_1),
-                                         r->negative->error_code_2);
-  }
-  return proxy::RecordResult::success({r->data.begin(), r->data.end()});
+  return r ? to_record_result(*r) : proxy::RecordResult::no_response();
 }
 
 bool DemoProxy::run_sync(dp::Duration timeout) {

@@ -7,8 +7,6 @@
 #include <variant>
 
 namespace rs4sim::app {
-namespace {
-
 // The wall-clock time of dp::TimePoint{} for the archive's timestamps (the cores read no clock).
 storage::Timestamp wall_at_zero(dp::TimePoint now) {
   const auto wall =
@@ -18,7 +16,6 @@ storage::Timestamp wall_at_zero(dp::TimePoint now) {
       std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch())};
 }
 
-// A DPV1 outcome as the proxy sees it: ERROR_CODE_SFC from the negative response.
 proxy::RecordResult to_record_result(const dp::master::Dpv1Result& r) {
   if (!r.error) return proxy::RecordResult::success({r.data.begin(), r.data.end()});
   if (r.negative) {
@@ -27,6 +24,8 @@ proxy::RecordResult to_record_result(const dp::master::Dpv1Result& r) {
   }
   return proxy::RecordResult::no_response();
 }
+
+namespace {
 
 std::string hex4(std::uint16_t v) {
   static constexpr char kDigits[] = "0123456789ABCDEF";
