@@ -1,39 +1,16 @@
 #pragma once
-// Injected time ([docs/design.md#injected-time]). Protocol cores never read a clock: they receive
-// `now` and report their next deadline. Only the event loop (and tests) own a Clock.
+// dp's names for the injected clock, which lives in the byte-stream layer below
+// (stream/clock.h, [docs/design.md#injected-time]).
 
-#include <chrono>
+#include "stream/clock.h"
 
 namespace rs4sim::dp {
 
-using SteadyClock = std::chrono::steady_clock;
-using TimePoint = SteadyClock::time_point;
-using Duration = SteadyClock::duration;
-
-// Where "now" comes from. The real clock for running, the manual clock for tests and
-// faster-than-real-time runs.
-class Clock {
- public:
-  virtual ~Clock() = default;
-  [[nodiscard]] virtual TimePoint now() const = 0;
-};
-
-class RealClock final : public Clock {
- public:
-  [[nodiscard]] TimePoint now() const override { return SteadyClock::now(); }
-};
-
-// A clock that moves only when told to. Starts at an arbitrary fixed epoch so that
-// tests are deterministic.
-class ManualClock final : public Clock {
- public:
-  explicit ManualClock(TimePoint start = TimePoint{std::chrono::hours(1)}) : now_(start) {}
-  [[nodiscard]] TimePoint now() const override { return now_; }
-  void advance(Duration d) { now_ += d; }
-  void set(TimePoint t) { now_ = t; }
-
- private:
-  TimePoint now_;
-};
+using ::rs4sim::stream::Clock;
+using ::rs4sim::stream::Duration;
+using ::rs4sim::stream::ManualClock;
+using ::rs4sim::stream::RealClock;
+using ::rs4sim::stream::SteadyClock;
+using ::rs4sim::stream::TimePoint;
 
 }  // namespace rs4sim::dp
