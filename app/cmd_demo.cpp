@@ -4,6 +4,8 @@
 #include "app/command.h"
 #include "app/device_registry.h"
 
+#include <unistd.h>
+
 #include <iostream>
 #include <memory>
 
@@ -20,7 +22,12 @@ const CommandRegistration kDemo(
       add_capture_options(cmd, options->capture);
       cmd.add_option("--archive", options->archive,
                      "rs4: keep the sets the demo's proxy archives in this SQLite file");
-      return [device, options]() { return find_device(*device)->demo(std::cout, *options); };
+      cmd.add_flag("--realtime", options->realtime,
+                   "run at the device's real timing (the RS4 demo takes about a minute)");
+      return [device, options]() {
+        options->live_progress = isatty(STDOUT_FILENO) != 0;
+        return find_device(*device)->demo(std::cout, *options);
+      };
     });
 
 }  // namespace

@@ -19,14 +19,9 @@ using dp::devices::GenericBus;
 
 class Demo {
  public:
-  explicit Demo(std::ostream& out)
+  Demo(std::ostream& out, bool realtime)
       : bus_(config()),
-        n_(
-            out, bus_.clock(),
-            [this](const std::function<bool()>& done, dp::Duration limit) {
-              return bus_.run_until(done, limit);
-            },
-            Narration::Stamp::kMilliseconds) {
+        n_(out, bus_.clock(), run_until(realtime), Narration::Stamp::kMilliseconds) {
     bus_.bus().add_observer([this](const dp::link::BusEvent& e) { on_wire(e); });
     for (std::uint8_t a : {std::uint8_t{5}, std::uint8_t{6}}) {
       bus_.slave(a).slave().set_trace([this, a](const dp::slave::Transition& t) {
@@ -36,6 +31,12 @@ class Demo {
     }
   }
   dp::link::MemoryBus& bus() { return bus_.bus(); }
+  RunUntil run_until(bool realtime) {
+    RunUntil run = [this](const std::function<bool()>& done, dp::Duration limit) {
+      return bus_.run_until(done, limit);
+    };
+    return realtime ? paced_to_wall_clock(std::move(run), bus_.clock()) : run;
+  }
   int run() {
     const bool ok = run_steps({[this] { return start_up(); }, [this] { return data_exchange(); },
                                [this] { return dpv1(); }, [this] { return alarm(); },
@@ -175,7 +176,7 @@ bool Demo::watchdog() {
 }  // namespace
 
 int run_generic_demo(std::ostream& out, const DemoOptions& options) {
-  Demo demo(out);
+  Demo demo(out, options.realtime);
   const auto capture = open_capture(options.capture);
   attach_capture(capture.get(), demo.bus());
   return demo.run();

@@ -2,28 +2,21 @@
 
 #include "app/master_proxy.h"
 
-#include <chrono>
-
 namespace rs4sim::app {
 namespace {
 
 proxy::ProxySyncConfig config(const rs4::device::Rs4Segment& segment) {
   proxy::ProxySyncConfig c;
-  c.station = DemoProxy::station();
-  c.station.address = segment.rs4_address();
-  // Archive timestamps: the wall clock at the demo's simulated instant 0.
-  const auto wall =
-      std::chrono::time_point_cast<std::chrono::milliseconds>(std::chrono::system_clock::now());
-  c.wall_at_zero = storage::Timestamp{
-      wall.time_since_epoch() -
-      std::chrono::duration_cast<std::chrono::milliseconds>(segment.now().time_since_epoch())};
+  c.station = {"demo", segment.rs4_address()};
+  c.wall_at_zero = wall_at_zero(segment.now());
   return c;
 }
 
 }  // namespace
 
-DemoProxy::DemoProxy(rs4::device::Rs4Segment& segment, storage::ParameterArchive& archive)
-    : segment_(segment), sync_(config(segment), archive) {}
+DemoProxy::DemoProxy(rs4::device::Rs4Segment& segment, storage::ParameterArchive& archive,
+                     RunFor run_for)
+    : segment_(segment), run_for_(std::move(run_for)), sync_(config(segment), archive) {}
 
 proxy::RecordResult DemoProxy::exchange(const proxy::RecordRequest& request) {
   ++records_;
@@ -33,7 +26,8 @@ proxy::RecordResult DemoProxy::exchange(const proxy::RecordRequest& request) {
   return r ? to_record_result(*r) : proxy::RecordResult::no_response();
 }
 
-bool DemoProxy::run_sync(dp::Duration timeout) {
+bool DemoProxy::run_sync(dp::Duration timeout, const OnProgress& on_progress) {
+  records_ = 0;
   sync_.set_proxy_enable(true);
   sync_.set_input_byte(segment_.input_byte());
   if (!sync_.ready(segment_.now())) return false;
@@ -44,8 +38,9 @@ bool DemoProxy::run_sync(dp::Duration timeout) {
     if (!sync_.active()) return true;
     if (auto req = sync_.take_request(segment_.now())) {
       sync_.on_record_result(exchange(*req), segment_.now());
+      if (on_progress) on_progress(sync_.progress());
     } else {
-      segment_.run_for(std::chrono::milliseconds(10));
+      run_for_(std::chrono::milliseconds(10));
       sync_.tick(segment_.now());
     }
   }

@@ -3,6 +3,7 @@
 #include "app/demo_proxy.h"
 #include "app/demos.h"
 #include "app/narration.h"
+#include "app/progress_bar.h"
 #include "app/run_options.h"
 #include "rs4/adapter/cyclic_bytes.h"
 #include "rs4/device/rs4_segment.h"
@@ -21,56 +22,105 @@ namespace {
 using namespace std::chrono_literals;
 using rs4::adapter::kInputOssd;
 using rs4::adapter::kInputProxyRequest;
+using rs4::adapter::kOutputProxyEnable;
 using rs4::adapter::kOutputRestart;
 using rs4::device::Rs4Segment;
 
+// The process output byte of the demo's PLC: Proxy-Enable set (automatic parameter sync,
+// [RS4 manual §5.1.2]) and the selected field pair.
+constexpr std::uint8_t out_byte(std::uint8_t pair) {
+  return static_cast<std::uint8_t>(kOutputProxyEnable | pair);
+}
+
 class Demo {
  public:
-  Demo(Rs4Segment& s, std::ostream& out)
+  Demo(Rs4Segment& s, storage::ParameterArchive& archive, std::ostream& out,
+       const DemoOptions& options)
       : s_(s),
-        n_(
-            out, s.clock(),
-            [&s](const std::function<bool()>& done, dp::Duration limit) {
-              return s.run_until(done, limit);
-            },
-            Narration::Stamp::kSeconds) {}
+        n_(out, s.clock(), run_until(s, options.realtime), Narration::Stamp::kSeconds),
+        proxy_(s, archive, [this](dp::Duration d) { n_.run_for(d); }) {
+    n_.set_live(options.live_progress);
+  }
 
+  void chapter(const std::string& title) const { n_.print("\n" + title + "\n"); }
   void say(const std::string& text) const { n_.say(text); }
   bool wait(const std::function<bool()>& done, dp::Duration limit, const std::string& text) const {
     return n_.wait(done, limit, text);
   }
+  void run_for(dp::Duration d) const { n_.run_for(d); }
   bool ossd() const { return (s_.input_byte() & kInputOssd) != 0; }
   std::string input() const {
     const std::uint8_t b = s_.input_byte();
     return "input byte " + hex(std::span(&b, 1));
   }
   bool restart_pulse(std::uint8_t pair) {
-    s_.set_output_byte(static_cast<std::uint8_t>(kOutputRestart | pair));
-    s_.run_for(200ms);
-    s_.set_output_byte(pair);
-    if (!wait([&] { return ossd(); }, 500ms,
-              "restart pulse 200 ms (output 8" + std::to_string(pair) + " → 0" +
-                  std::to_string(pair) + "): OSSD bit 1")) {
+    const auto pulse = static_cast<std::uint8_t>(kOutputRestart | out_byte(pair));
+    s_.set_output_byte(pulse);
+    run_for(200ms);
+    s_.set_output_byte(out_byte(pair));
+    if (!wait(
+            [&] { return ossd(); }, 500ms,
+            "restart pulse 200 ms (output " + hex(std::span(&pulse, 1)) + " for 200 ms): OSSD 1")) {
       return false;
     }
     say("  " + input());
     return true;
   }
+  // One proxy sync from the current Proxy-Request, with a progress line; true when it ended.
+  bool sync(const std::string& what) {
+    const auto at = s_.now();
+    proxy::SyncProgress last;
+    const bool ended = proxy_.run_sync(120s, [&](const proxy::SyncProgress& p) {
+      if (p.bytes_total > 0) last = p;
+      if (p.bytes_total > 0) n_.progress(line(what, p), false);
+    });
+    if (last.bytes_total > 0) {
+      if (ended && proxy_.outputs().error_number_fb == 0) last.bytes_done = last.bytes_total;
+      n_.progress(line(what, last), true);
+    }
+    if (!ended) return n_.check(false, what + ": the sync did not end within 120 s");
+    say("  " + std::to_string(proxy_.records()) + " DPV1 records in " +
+        std::to_string(n_.ms_since(at)) + " ms; FB outputs: " + fb_outputs());
+    return true;
+  }
+  std::string fb_outputs() const {
+    const auto& o = proxy_.outputs();
+    char text[96];
+    std::snprintf(text, sizeof text, "DONE, CONFIG_SET_TO_DEFAULT %d, ERROR_NUMBER_FB 0x%04X",
+                  o.config_set_to_default ? 1 : 0, o.error_number_fb);
+    return text;
+  }
+
   Rs4Segment& s_;
   Narration n_;
+  DemoProxy proxy_;
+
+ private:
+  static RunUntil run_until(Rs4Segment& s, bool realtime) {
+    RunUntil run = [&s](const std::function<bool()>& done, dp::Duration limit) {
+      return s.run_until(done, limit);
+    };
+    return realtime ? paced_to_wall_clock(std::move(run), s.clock()) : run;
+  }
+  static std::string line(const std::string& what, const proxy::SyncProgress& p) {
+    return "  " + what + " " + progress_bar(p.bytes_done, p.bytes_total) + " " +
+           std::to_string(p.bytes_done) + "/" + std::to_string(p.bytes_total) + " bytes";
+  }
 };
 
 bool startup(Demo& d) {
   Rs4Segment& s = d.s_;
   const auto& e = s.entry();
+  d.chapter("1. Power-up: PROFIBUS-DP and PROFIsafe start-up [RS4 manual §7.1.1]");
   d.say("RS4/PROFIsafe at address " + std::to_string(s.rs4_address()) +
-        ", master from RSIM5234.gsd: Set_Prm user data " +
+        ", our master configured from RSIM5234.gsd: Set_Prm user data " +
         hex(std::span(e.gsd.user_prm_data.data(), e.gsd.user_prm_data.size())) + ", Chk_Cfg " +
         hex(std::span(e.gsd.cfg.data(), e.gsd.cfg.size())));
+  s.set_output_byte(out_byte(1));
   s.power_on();
-  d.say("power on: adapter LED steady (init 2–3 s), RS4 boots (≈30 s)");
-  if (!d.wait([&] { return s.in_data_exchange(); }, 5s,
-              "DP start-up done: data exchange (LED off)"))
+  d.say(
+      "power on; the PLC sends output byte 41 (Proxy-Enable, field pair 1); the RS4 boots (≈30 s)");
+  if (!d.wait([&] { return s.in_data_exchange(); }, 5s, "DP start-up done: data exchange"))
     return false;
   if (!d.wait(
           [&] { return s.fhost().state() == profisafe::FHostState::kRun && s.input_byte() != 0; },
@@ -81,15 +131,30 @@ bool startup(Demo& d) {
   }
   d.say("  " + d.input() + " (bit 4: RS4 not yet operational, so OSSD 0)");
   if (!d.wait([&] { return (s.input_byte() & kInputProxyRequest) != 0; }, 31s,
-              "RS4 operational: Proxy-Request set, OSSD still 0 (start interlock)")) {
+              "RS4 operational: Proxy-Request (bit 2), OSSD held at 0 until the proxy answers")) {
     return false;
   }
   d.say("  " + d.input());
+  return true;
+}
+
+// Scenario 1 of [RS4 manual §7.1, §7.2]: the archive has no set for this station, the RS4 runs
+// on factory settings and the proxy says so with CONFIG_SET_TO_DEFAULT.
+bool commissioning(Demo& d) {
+  d.chapter("2. First commissioning: the parameter proxy [RS4 manual §7.1, §7.2]");
+  if (!d.sync("identify")) return false;
+  if (!d.n_.check(
+          d.proxy_.outputs().config_set_to_default && d.proxy_.outputs().error_number_fb == 0,
+          "first commissioning: expected CONFIG_SET_TO_DEFAULT 1 and no error")) {
+    return false;
+  }
+  d.say("  the archive has no set for this RS4 and the RS4 has factory settings (scenario 1)");
   return d.restart_pulse(1);
 }
 
 bool protective_field(Demo& d) {
   Rs4Segment& s = d.s_;
+  d.chapter("3. Protective field violation and the restart interlock [RS4 manual §5.1.1]");
   auto id = s.device().scanner().edit_scene(s.now()).add(rs4::scanner::Circle{{0, 600}, 50});
   if (!id) return false;
   const auto at = s.now();
@@ -104,25 +169,26 @@ bool protective_field(Demo& d) {
               "object left: field free, OSSD stays 0 (restart interlock)")) {
     return false;
   }
-  s.run_for(1s);
-  if (d.ossd()) return false;
+  d.run_for(1s);
+  if (!d.n_.check(!d.ossd(), "OSSD must stay 0 without a restart pulse")) return false;
   return d.restart_pulse(1);
 }
 
 bool field_pairs(Demo& d) {
   Rs4Segment& s = d.s_;
-  s.set_output_byte(0x02);
+  d.chapter("4. Field-pair switching [RS4 manual §5.1.2]");
+  s.set_output_byte(out_byte(2));
   if (!d.wait([&] { return s.device().scanner().status().first_pair == 2 && d.ossd(); }, 500ms,
-              "field pair 1 → 2 (output 02): RS4 monitors pair 2, OSSD stays 1")) {
+              "field pair 1 → 2 (output 42): RS4 monitors pair 2, OSSD stays 1")) {
     return false;
   }
-  s.set_output_byte(0x00);
+  s.set_output_byte(out_byte(0));
   if (!d.wait([&] { return !d.ossd(); }, 200ms,
-              "invalid field pair 0 (output 00): adapter error 0x2600, OSSD 0")) {
+              "invalid field pair 0 (output 40): adapter error 0x2600, OSSD 0")) {
     return false;
   }
-  s.run_for(300ms);
-  s.set_output_byte(0x01);
+  d.run_for(300ms);
+  s.set_output_byte(out_byte(1));
   const auto at = s.now();
   if (!d.wait([&] { return d.ossd(); }, 1s, "valid pair 1 again: OSSD released")) return false;
   d.say("  after " + std::to_string(d.n_.ms_since(at)) + " ms (manual: ≈500 ms)");
@@ -131,8 +197,9 @@ bool field_pairs(Demo& d) {
 
 bool measurement(Demo& d) {
   Rs4Segment& s = d.s_;
+  d.chapter("5. A measurement through the acyclic channel [RS4 manual §5.2]");
   (void)s.device().scanner().edit_scene(s.now()).add(rs4::scanner::Circle{{0, 1500}, 100});
-  s.run_for(100ms);
+  d.run_for(100ms);
   const std::uint8_t cmd[] = {0x92, 0x01, 0x00};
   d.say(
       "DPV1 WRITE slot 0 index 2: 00 07 FF FF 92 01 00 (PROFI_CMD_GET_RS4_DATA, measurement, "
@@ -171,6 +238,7 @@ bool alarm_of(Rs4Segment& s, std::uint8_t bits, std::size_t from) {
 
 bool rs4_error(Demo& d) {
   Rs4Segment& s = d.s_;
+  d.chapter("6. An RS4 error as a diagnosis alarm [RS4 manual §5.3]");
   const auto from = s.events().size();
   (void)s.device().scanner().inject_fault(rs4::scanner::Fault::kDazzled, s.now());
   d.say("RS4 error: receiver dazzled (error " +
@@ -180,10 +248,10 @@ bool rs4_error(Demo& d) {
     return false;
   }
   (void)s.device().scanner().clear_fault(rs4::scanner::Fault::kDazzled, s.now());
-  s.run_for(100ms);
-  s.set_output_byte(kOutputRestart | 0x01);
-  s.run_for(200ms);
-  s.set_output_byte(0x01);
+  d.run_for(100ms);
+  s.set_output_byte(kOutputRestart | out_byte(1));
+  d.run_for(200ms);
+  s.set_output_byte(out_byte(1));
   if (!d.wait([&] { return !s.device().scanner().status().fault; }, 500ms,
               "cause gone; a restart pulse acknowledges the latched fault")) {
     return false;
@@ -197,6 +265,7 @@ bool rs4_error(Demo& d) {
 
 bool passivation(Demo& d) {
   Rs4Segment& s = d.s_;
+  d.chapter("7. PROFIsafe passivation and reintegration [PROFIsafe V1.30 F-host]");
   s.device().adapter().safety_faults().corrupt_crc2 = 1;
   d.say("one F-input PDU with a wrong CRC2 (fault injection on the device)");
   if (!d.wait([&] { return s.fhost().ack_req(); }, 500ms,
@@ -210,49 +279,91 @@ bool passivation(Demo& d) {
 
 // Scenario 2 of [RS4 manual §7.1, §7.2]: a set changed on site through the PC adapter goes to the
 // proxy when the adapter is removed; the proxy archives it (docs/proxy.md).
-bool parameter_proxy(Demo& d, storage::ParameterArchive& archive) {
+bool parameter_change(Demo& d, storage::ParameterArchive& archive) {
   Rs4Segment& s = d.s_;
+  d.chapter("8. Parameters changed on site: the proxy archives the new set [RS4 manual §7.2]");
   auto& adapter = s.device().adapter();
   auto& rs4 = s.device().scanner();
   auto set = rs4.parameters();
   set.response_steps = 2;  // T = 80 ms + 2·40 ms [RS4 manual §7.3]
   adapter.attach_pc_adapter(s.now());
-  s.run_for(100ms);
+  d.run_for(100ms);
   if (!rs4.enter_configuration(s.now()) || !rs4.set_parameters(set, s.now()) ||
       !rs4.leave_configuration(s.now())) {
-    d.say("FAILED: the RS4 refused the new set");
-    return false;
+    return d.n_.check(false, "the RS4 refused the new set");
   }
-  s.run_for(100ms);
+  d.run_for(100ms);
   adapter.detach_pc_adapter(s.now());
   d.say("PC adapter attached, response time set to 160 ms through it, adapter removed");
   if (!d.wait([&] { return (s.input_byte() & kInputProxyRequest) != 0; }, 5s,
               "Proxy-Request: the set changed on site")) {
     return false;
   }
-  DemoProxy proxy(s, archive);
-  const auto at = s.now();
-  if (!d.n_.check(proxy.run_sync(60s) && proxy.outputs() == proxy::FbOutputs{},
-                  "proxy sync: the new set uploaded, compared and archived")) {
+  if (!d.sync("upload")) return false;
+  if (!d.n_.check(d.proxy_.outputs() == proxy::FbOutputs{}, "the upload reported an error")) {
     return false;
   }
-  auto station = DemoProxy::station();
-  station.address = s.rs4_address();
-  const auto current = archive.current(station);
+  const auto current = archive.current(d.proxy_.station());
   if (!current) return d.n_.check(false, "archive: " + current.error().message);
   char crc[12];
   std::snprintf(crc, sizeof crc, "0x%08X", current.value().version.crc32);
-  d.say("  " + std::to_string(current.value().version.size) + " bytes in " +
-        std::to_string(proxy.records()) + " DPV1 records, " + std::to_string(d.n_.ms_since(at)) +
-        " ms; archive version " + std::to_string(current.value().version.number) + ", CRC-32 " +
-        crc);
+  d.say("  archived: version " + std::to_string(current.value().version.number) + ", " +
+        std::to_string(current.value().version.size) + " bytes, CRC-32 " + crc +
+        ", RS4 serial number " + current.value().version.serial_number);
   return d.ossd() || d.restart_pulse(1);
+}
+
+// Scenario 4 of [RS4 manual §7.1, §7.2]: a new RS4 with factory settings takes the old one's
+// place; the proxy sees another serial number and downloads the archived set.
+bool device_exchange(Demo& d, storage::ParameterArchive& archive) {
+  Rs4Segment& s = d.s_;
+  d.chapter("9. Device exchange: the archived set goes to the new RS4 [RS4 manual §7.1]");
+  const auto archived = archive.current(d.proxy_.station());
+  if (!archived) return d.n_.check(false, "archive: " + archived.error().message);
+  s.power_off();
+  d.run_for(2s);
+  rs4::scanner::ScannerConfig unit;
+  unit.identity.serial_number = 0x00054321;
+  if (!d.n_.check(s.device().exchange_scanner(unit), "the RS4 could not be exchanged")) {
+    return false;
+  }
+  s.power_on();
+  d.say("power off, the RS4 replaced by a new unit (serial number " +
+        std::to_string(unit.identity.serial_number) + ", factory settings), power on");
+  if (!d.wait([&] { return s.in_data_exchange(); }, 5s, "DP start-up done: data exchange")) {
+    return false;
+  }
+  if (!d.wait([&] { return s.fhost().ack_req(); }, 1s,
+              "PROFIsafe: the F-host passivated on the communication loss: ACK_REQ")) {
+    return false;
+  }
+  s.ack_rei();
+  d.say("  the PLC acknowledges (ACK_REI)");
+  if (!d.wait([&] { return (s.input_byte() & kInputProxyRequest) != 0; }, 35s,
+              "the new RS4 is operational: Proxy-Request, OSSD 0")) {
+    return false;
+  }
+  if (!d.sync("download")) return false;
+  auto& rs4 = s.device().scanner();
+  const bool restored = rs4.transfer_checksum() == archived.value().version.crc32 &&
+                        rs4.parameters().response_steps == 2;
+  if (!d.n_.check(d.proxy_.outputs() == proxy::FbOutputs{} && restored,
+                  "the new RS4 did not get the archived set")) {
+    return false;
+  }
+  const auto now_current = archive.current(d.proxy_.station());
+  d.say(
+      "  the new RS4 runs the archived set (response time 160 ms); the archive now names "
+      "serial number " +
+      (now_current ? now_current.value().version.serial_number : std::string("?")));
+  return d.restart_pulse(1);
 }
 
 }  // namespace
 
 int run_rs4_demo(std::ostream& out, const DemoOptions& options) {
   rs4::device::Rs4SegmentConfig c;
+  c.output_byte = out_byte(1);
   Rs4Segment s(c);
   const auto capture = open_capture(options.capture);
   attach_capture(capture.get(), s.bus());
@@ -262,17 +373,20 @@ int run_rs4_demo(std::ostream& out, const DemoOptions& options) {
     out << "rs4sim: archive " << path << ": " << archive.error().message << std::endl;
     return 1;
   }
-  Demo d(s, out);
-  const bool ok = run_steps({[&] { return startup(d); }, [&] { return protective_field(d); },
-                             [&] { return field_pairs(d); }, [&] { return measurement(d); },
-                             [&] { return rs4_error(d); }, [&] { return passivation(d); },
-                             [&] { return parameter_proxy(d, *archive.value()); }});
-  d.say(ok ? "demo complete: every step as the manual prescribes" : "demo FAILED");
+  storage::ParameterArchive& store = *archive.value();
+  Demo d(s, store, out, options);
+  const bool ok = run_steps(
+      {[&] { return startup(d); }, [&] { return commissioning(d); },
+       [&] { return protective_field(d); }, [&] { return field_pairs(d); },
+       [&] { return measurement(d); }, [&] { return rs4_error(d); }, [&] { return passivation(d); },
+       [&] { return parameter_change(d, store); }, [&] { return device_exchange(d, store); }});
+  d.chapter(ok ? "demo complete: every step behaved as the manual prescribes"
+               : "demo FAILED (the step above)");
   if (capture) {
-    d.say("capture: " + std::to_string(capture->records()) + " telegrams in " +
-          options.capture.file);
+    out << "capture: " << capture->records() << " telegrams in " << options.capture.file << "\n";
   }
-  if (!options.archive.empty()) d.say("archive: the demo's sets are in " + options.archive);
+  if (!options.archive.empty())
+    out << "archive: the demo's sets are in " << options.archive << "\n";
   out.flush();
   return ok ? 0 : 1;
 }

@@ -12,13 +12,16 @@ namespace rs4sim::app {
 
 struct DemoOptions {
   CaptureOptions capture;
-  std::string archive;  // the RS4 demo's parameter archive; empty: in memory only
+  std::string archive;         // the RS4 demo's parameter archive; empty: in memory only
+  bool realtime = false;       // pace the simulated clock to the wall clock
+  bool live_progress = false;  // redraw progress lines in place (stdout is a terminal)
 };
 
 // RS4 scenario: one RS4/PROFIsafe, our GSD-configured class 1 master and a PROFIsafe
 // F-host: boot, DP and PROFIsafe start-up, OSSD, protective-field violation, restart
 // interlock, field-pair switching, a measurement telegram (0x92 + READ), an RS4 error as
-// diagnosis alarm coming/going and a passivation with ACK_REI.
+// diagnosis alarm coming/going, a passivation with ACK_REI, and the parameter proxy with
+// its archive: first commissioning, a set changed on site, a device exchange.
 int run_rs4_demo(std::ostream& out, const DemoOptions& options);
 
 // Generic scenario: our master and two generic slaves with the 1.5 Mbit/s wire modelled:

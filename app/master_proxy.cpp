@@ -1,6 +1,7 @@
 #include "app/master_proxy.h"
 
 #include "app/master_report.h"
+#include "app/progress_bar.h"
 
 #include <algorithm>
 #include <chrono>
@@ -32,13 +33,6 @@ std::string hex4(std::uint16_t v) {
   std::string s = "0x";
   for (int shift = 12; shift >= 0; shift -= 4) s += kDigits[(v >> shift) & 0xFU];
   return s;
-}
-
-// "[########------------]": 20 cells, one per 5 % of the set transferred.
-std::string progress_bar(std::size_t done, std::size_t total) {
-  constexpr std::size_t kCells = 20;
-  const std::size_t filled = total == 0 ? 0 : std::min(kCells, done * kCells / total);
-  return "[" + std::string(filled, '#') + std::string(kCells - filled, '-') + "]";
 }
 
 }  // namespace

@@ -2,13 +2,16 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <memory>
+#include <optional>
+#include <thread>
 
 namespace rs4sim::app {
 
 Narration::Narration(std::ostream& out, const dp::Clock& clock, RunUntil run_until, Stamp stamp)
     : out_(out), clock_(clock), run_until_(std::move(run_until)), stamp_(stamp), t0_(clock.now()) {}
 
-void Narration::say(const std::string& text) const {
+std::string Narration::stamp() const {
   const dp::Duration since = clock_.now() - t0_;
   char t[32];
   if (stamp_ == Stamp::kMilliseconds) {
@@ -17,7 +20,21 @@ void Narration::say(const std::string& text) const {
   } else {
     std::snprintf(t, sizeof t, "[%8.3f s] ", std::chrono::duration<double>(since).count());
   }
-  out_ << t << text << '\n';
+  return t;
+}
+
+void Narration::say(const std::string& text) const { out_ << stamp() << text << '\n'; }
+
+void Narration::run_for(dp::Duration d) const {
+  (void)run_until_([] { return false; }, d);
+}
+
+void Narration::progress(const std::string& text, bool final) const {
+  if (live_) {
+    out_ << '\r' << stamp() << text << (final ? "\n" : "") << std::flush;
+  } else if (final) {
+    say(text);
+  }
 }
 
 void Narration::print(const std::string& text) const { out_ << text; }
@@ -40,6 +57,29 @@ bool Narration::wait(const std::function<bool()>& done, dp::Duration limit,
 
 long long Narration::ms_since(dp::TimePoint since) const {
   return std::chrono::duration_cast<std::chrono::milliseconds>(clock_.now() - since).count();
+}
+
+RunUntil paced_to_wall_clock(RunUntil run, const dp::Clock& clock) {
+  struct Anchor {
+    std::optional<std::chrono::steady_clock::time_point> wall;
+    dp::TimePoint sim{};
+  };
+  auto anchor = std::make_shared<Anchor>();
+  return [run = std::move(run), &clock, anchor](const std::function<bool()>& done,
+                                                dp::Duration limit) {
+    if (!anchor->wall) {
+      anchor->wall = std::chrono::steady_clock::now();
+      anchor->sim = clock.now();
+    }
+    const auto end = clock.now() + limit;
+    while (true) {
+      const auto slice = std::min<dp::Duration>(std::chrono::milliseconds(10), end - clock.now());
+      const bool ok = run(done, slice);
+      std::this_thread::sleep_until(*anchor->wall + (clock.now() - anchor->sim));
+      if (ok) return true;
+      if (clock.now() >= end) return done();
+    }
+  };
 }
 
 bool run_steps(const std::vector<std::function<bool()>>& steps) {

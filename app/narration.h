@@ -34,6 +34,12 @@ class Narration {
   bool check(bool ok, const std::string& what) const;
   // Runs until `done` (≤ limit); says `text` when it happened, the failure otherwise.
   bool wait(const std::function<bool()>& done, dp::Duration limit, const std::string& text) const;
+  // Runs simulated time for `d` (through the same RunUntil as every wait).
+  void run_for(dp::Duration d) const;
+  // A progress line: on a terminal (`live`) it is redrawn in place on every call and ends
+  // with `final`; elsewhere (a log, a pipe) only the final state is printed.
+  void progress(const std::string& text, bool final) const;
+  void set_live(bool live) { live_ = live; }
   // The simulated time since `since`, in whole milliseconds (for "after N ms").
   [[nodiscard]] long long ms_since(dp::TimePoint since) const;
 
@@ -43,9 +49,17 @@ class Narration {
   std::ostream& out_;
   const dp::Clock& clock_;
   RunUntil run_until_;
+  [[nodiscard]] std::string stamp() const;
+
   Stamp stamp_;
   dp::TimePoint t0_;
+  bool live_ = false;
 };
+
+// `run` paced to the wall clock (`rs4sim demo --realtime`): simulated time moves in slices
+// of at most 10 ms and the wall clock waits for it, so every duration of the story takes
+// as long as on the device.
+RunUntil paced_to_wall_clock(RunUntil run, const dp::Clock& clock);
 
 // Runs the steps in order until one fails; returns true when all passed.
 bool run_steps(const std::vector<std::function<bool()>>& steps);

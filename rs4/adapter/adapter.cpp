@@ -76,6 +76,14 @@ void Adapter::power_on(TimePoint now) {
   start_adapter(now, /*keep_errors=*/false);
 }
 
+bool Adapter::exchange_scanner(const scanner::ScannerConfig& unit) {
+  if (powered_) return false;
+  scanner::ScannerConfig c = unit;
+  c.boot_duration = config_.scanner.boot_duration;  // the simulation's setting, not the unit's
+  scanner_ = scanner::Scanner(c);
+  return true;
+}
+
 void Adapter::power_off(TimePoint now) {
   powered_ = false;
   scanner_.power_off(now);

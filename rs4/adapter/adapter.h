@@ -152,6 +152,10 @@ class Adapter final : public dp::slave::SlaveApplication {
   // so that the input byte follows; the byte on the wire is composed fresh in read_inputs.
   scanner::Scanner& scanner() noexcept { return scanner_; }
   [[nodiscard]] const scanner::Scanner& scanner() const noexcept { return scanner_; }
+  // Device exchange ([RS4 manual §7.1, §7.2] scenario 4): another RS4 unit, with its own identity
+  // and factory settings, is mounted on this adapter (the boot duration stays the
+  // simulation's). Only while powered off, as on site; false (nothing changed) while powered.
+  bool exchange_scanner(const scanner::ScannerConfig& unit);
   void set_restart_button(bool pressed, TimePoint now);  // button on X1 ([RS4 manual §2.3, §2.4])
   void attach_pc_adapter(TimePoint now);                 // reed contact of X5
                                                          // ([RS4 manual §7.1, §7.2])

@@ -74,6 +74,12 @@ class Rs4Device final : public dp::Station {
   [[nodiscard]] bool on_bus(TimePoint now) const noexcept;
   [[nodiscard]] bool link_down() const noexcept { return link_down_; }
 
+  // Device exchange: another RS4 unit on this adapter (Adapter::exchange_scanner). Only while
+  // powered off; false while powered.
+  bool exchange_scanner(const scanner::ScannerConfig& unit) {
+    return !powered_ && adapter_.exchange_scanner(unit);
+  }
+
   // ---- control / observation ------------------------------------------------------------
   adapter::Adapter& adapter() noexcept { return adapter_; }
   [[nodiscard]] const adapter::Adapter& adapter() const noexcept { return adapter_; }

@@ -28,7 +28,13 @@ TEST(Rs4Demo, EveryStepHappensAndIsNarrated) {
   for (const char* line :
        {"DP start-up done", "F-host in RUN", "RS4 operational", "OSSD bit 0", "restart interlock",
         "field pair 1 → 2", "0x2600", "COM_CMD_MESS_16_RT", "529/529 equal",
-        "diagnosis alarm coming", "diagnosis alarm going", "ACK_REI", "demo complete"}) {
+        "diagnosis alarm coming", "diagnosis alarm going", "ACK_REI",
+        "CONFIG_SET_TO_DEFAULT 1, ERROR_NUMBER_FB 0x0000",
+        "upload [####################] 8507/8507 bytes", "archived: version 1, 8507 bytes",
+        "download [####################] 8507/8507 bytes",
+        "the new RS4 runs the archived set (response time 160 ms); the archive now names serial "
+        "number 344865",
+        "demo complete"}) {
     EXPECT_NE(text.find(line), std::string::npos) << "missing: " << line << "\n" << text;
   }
   EXPECT_EQ(text.find("FAILED"), std::string::npos) << text;

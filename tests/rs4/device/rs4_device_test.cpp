@@ -118,5 +118,24 @@ TEST(Rs4DeviceOnBus, AdapterResetDropsTheLinkForTwoSeconds) {
   EXPECT_EQ(s.device().adapter().counters().resets, 1U);
 }
 
+// Device exchange ([RS4 manual §7.1, §7.2] scenario 4): another unit on the adapter, only while
+// off.
+TEST(Rs4DeviceExchange, ANewUnitBringsItsIdentityAndFactorySettings) {
+  Rs4Device d;
+  const dp::TimePoint t{1h};
+  d.power_on(t);
+  scanner::ScannerConfig unit;
+  unit.identity.serial_number = 0x00054321;
+  EXPECT_FALSE(d.exchange_scanner(unit)) << "refused while powered";
+  EXPECT_EQ(d.scanner().parameters().identity.serial_number, 0x00012345U);
+
+  d.power_off(t);
+  ASSERT_TRUE(d.exchange_scanner(unit));
+  d.power_on(t + 1s);
+  EXPECT_EQ(d.scanner().parameters().identity.serial_number, 0x00054321U);
+  EXPECT_TRUE(d.scanner().factory_settings());
+  EXPECT_EQ(d.address(), 4) << "the adapter and its switches stay";
+}
+
 }  // namespace
 }  // namespace rs4sim::rs4::device::testing
