@@ -46,6 +46,26 @@ const char* to_string(LedState s) noexcept {
   return "unknown";
 }
 
+LedPattern led_pattern(LedState s) noexcept {
+  using std::chrono::milliseconds;
+  switch (s) {
+    case LedState::kSteadyInit:
+    case LedState::kSteadyFault: return {milliseconds(1), milliseconds(0)};
+    case LedState::kFastBlink: return {milliseconds(100), milliseconds(200)};
+    case LedState::kSlowBlink: return {milliseconds(500), milliseconds(1000)};
+    case LedState::kDark:
+    case LedState::kOffConnected: break;
+  }
+  return {};
+}
+
+bool led_lit(LedState s, Duration in_state) noexcept {
+  const auto p = led_pattern(s);
+  if (p.period.count() == 0) return p.on.count() != 0;
+  if (in_state < Duration::zero()) return false;
+  return in_state % p.period < p.on;
+}
+
 const char* to_string(ProxyPhase p) noexcept {
   switch (p) {
     case ProxyPhase::kWaitRs4: return "wait for RS4";
@@ -97,6 +117,8 @@ void Adapter::power_off(TimePoint now) {
   released_ = false;
   proxy_request_ = false;
   error_active_ = false;
+  adapter_error_active_ = false;
+  inconsistent_output_.reset();
   input_byte_ = output_byte_ = 0;
   c1_.clear();
   c2_.clear();
@@ -130,12 +152,17 @@ void Adapter::start_adapter(TimePoint now, bool keep_errors) {
     request_sync(proxy_request_ ? proxy_.reason() : protocol::SyncReason::kPowerUp);
   }
   released_ = rs4_up_ && pc_attached_;
-  restart_bus_ = false;
-  drive_restart_input(now);
   field_pair_error_ = false;
   field_pair_release_at_.reset();
-  field_pair_ = 1;  // [RS4 manual §5.1.2]: field pair 1 during PROFIBUS start-up
-  scanner_.select_field_pair(1, now);
+  if (!keep_errors) {
+    // Power-on: restart input low, field pair 1 ([RS4 manual §5.1.2]). PROFI_CMD_RESET leaves the
+    // RS4 untouched ([RS4 manual §5.2.2]): its inputs change only when the link goes down (the
+    // restart input drops with the connection) and at the next PROFIBUS start-up (pair 1).
+    restart_bus_ = false;
+    drive_restart_input(now);
+    field_pair_ = 1;
+    scanner_.select_field_pair(1, now);
+  }
   output_byte_ = 0;
   output_pdu_.fill(0);
   input_pdu_.fill(0);

@@ -44,6 +44,7 @@
 namespace rs4sim::rs4::adapter {
 
 using TimePoint = dp::TimePoint;
+using Duration = dp::Duration;
 using std::chrono::milliseconds;
 
 // ---- configuration constants of the project's GSD (docs/gsd.md, gsd/device_gsd.h) -----
@@ -64,8 +65,9 @@ struct AdapterConfig {
   milliseconds going_alarm_delay{500};   // ≥500 ms without error → going alarm
                                          // ([RS4 manual §5.3.2])
   std::size_t read_buffers = 4;          // answers awaiting a READ per channel (0x2A05)
-  std::size_t event_buffer = 8;          // second buffer: 0x53/0x54 for 0x92 ([RS4 manual §5.2.2])
-  protocol::VersionAnswer version{};     // PROFI_CMD_GET_VERSION bytes
+  bool check_reserved_output_bits = true;  // output bits 5..3 ≠ 0 → 0x2419, byte not applied
+  std::size_t event_buffer = 8;       // second buffer: 0x53/0x54 for 0x92 ([RS4 manual §5.2.2])
+  protocol::VersionAnswer version{};  // PROFI_CMD_GET_VERSION bytes
 };
 
 // Status LED of the adapter ([RS4 manual §4.4]).
@@ -78,6 +80,18 @@ enum class LedState : std::uint8_t {
   kSlowBlink,     // fault: blinking slower than 5 Hz (F-parameters refused)
 };
 [[nodiscard]] const char* to_string(LedState s) noexcept;
+
+// How the LED shows a state: lit for `on` of every `period`; period 0 = steady (lit when `on`
+// is non-zero). Fast blink ≈5 Hz as the manual says; the fault blink is "slower than ≈5 Hz"
+// [RS4 manual §4.4], modelled at 1 Hz [docs/decisions.md#rs4-led-blink].
+struct LedPattern {
+  milliseconds on{0};
+  milliseconds period{0};
+  friend bool operator==(const LedPattern&, const LedPattern&) = default;
+};
+[[nodiscard]] LedPattern led_pattern(LedState s) noexcept;
+// Whether the LED is lit `in_state` after the state began (a blink starts lit).
+[[nodiscard]] bool led_lit(LedState s, Duration in_state) noexcept;
 
 // Where the Proxy-Enable / Proxy-Request / OSSD-release logic of [RS4 manual §7.1, §7.2] stands.
 enum class ProxyPhase : std::uint8_t {
@@ -305,6 +319,8 @@ class Adapter final : public dp::slave::SlaveApplication {
 
   // [RS4 manual §5.3] alarms
   bool error_active_ = false;
+  bool adapter_error_active_ = false;  // a one-shot adapter error not yet gone: input bit 5
+  std::optional<std::uint8_t> inconsistent_output_;  // the output byte that gave 0x2419
   TimePoint last_error_at_{};
   std::uint16_t last_uc2_error_ = 0, last_uc1_error_ = 0;
   std::vector<std::uint16_t> reported_;  // errors reported coming since going/connect

@@ -4,6 +4,7 @@
 #include "rs4/adapter/rs4_commands.h"
 #include "rs4/protocol/adapter_command.h"
 #include "rs4/protocol/parameter_transfer.h"
+#include "rs4/protocol/telegram.h"
 
 #include <algorithm>
 #include <variant>
@@ -223,7 +224,16 @@ void Adapter::execute_adapter_command(std::span<const std::uint8_t> command, Cha
 std::vector<std::uint8_t> Adapter::execute_rs4_command(std::span<const std::uint8_t> command,
                                                        TimePoint now) {
   if (!command.empty() && protocol::is_transfer_code(command[0])) return transfer(command, now);
-  return answer_rs4_command(scanner_, command);
+  auto answer = answer_rs4_command(scanner_, command);
+  // [RS4 manual §5.2.3.2, §5.3.2]: the 0x53 the RS4 answers with is an error of the RS4 like those
+  // it reports by itself: error memory and a diagnosis alarm; the RS4 keeps protecting
+  // [docs/decisions.md#rs4-rejected-command].
+  if (const auto t = protocol::decode_telegram(answer)) {
+    if (const auto* e = std::get_if<protocol::ErrorTelegram>(&t.value())) {
+      report_error(e->report.number, 0, now);
+    }
+  }
+  return answer;
 }
 
 }  // namespace rs4sim::rs4::adapter

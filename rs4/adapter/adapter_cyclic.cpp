@@ -63,6 +63,19 @@ void Adapter::read_inputs(std::span<std::uint8_t> inputs, TimePoint now) {
 void Adapter::apply_output_byte(std::uint8_t out, TimePoint now) {
   output_byte_ = out;
   const auto bits = decode_output_byte(out);
+  if (bits.reserved != 0 && config_.check_reserved_output_bits) {
+    // Table 5.3-3 0x2419 "processing the output data gives no consistent result": bits 5..3 must
+    // be 0 [RS4 manual §5.1.2]. The byte is not applied (restart low, field pair kept), reported
+    // once while it persists [docs/decisions.md#rs4-inconsistent-outputs].
+    restart_bus_ = false;
+    drive_restart_input(now);
+    if (inconsistent_output_ != out) {
+      inconsistent_output_ = out;
+      adapter_error(protocol::AdapterError::kOutputsInconsistent, now);
+    }
+    return;
+  }
+  inconsistent_output_.reset();
   if (!proxy_enable_known_) {
     proxy_enable_known_ = true;
     proxy_enable_ = bits.proxy_enable;
@@ -174,7 +187,8 @@ std::uint8_t Adapter::compose_input_byte(TimePoint now) const noexcept {
   InputBits bits;
   bits.ossd = ossd_release_allowed(now);
   bits.warning_output_active = st.warning_output;
-  bits.error = st.fault || st.state == scanner::ScannerState::kError || field_pair_error_;
+  bits.error = st.fault || st.state == scanner::ScannerState::kError || field_pair_error_ ||
+               inconsistent_output_.has_value() || adapter_error_active_;
   bits.not_operational = !rs4_up_ || !released_ || !rs4_operational(st.state);
   bits.rs232_active = rs232_through_;
   bits.proxy_request = proxy_request_;

@@ -26,8 +26,12 @@ void Adapter::collect_rs4(TimePoint now) {
     // (or of the RS4)") and the μC2 ring; μC1 reports 0 for it.
     report_error(e->number, 0, e->at);
   }
-  // A fault that is still present keeps the error "coming" (no going alarm, [RS4 manual §5.3.2]).
-  if (scanner_.status().fault || field_pair_error_) last_error_at_ = now;
+  // A fault or warning that is still present keeps the error "coming" (no going alarm,
+  // [RS4 manual §5.3.2]: the going alarm follows ≥500 ms *without* the error).
+  const auto st = scanner_.status();
+  if (st.fault || st.contamination_warning || field_pair_error_ || inconsistent_output_) {
+    last_error_at_ = now;
+  }
   capture_forwarding();
   refresh_input(now);  // the RS4 state may have changed: the input byte follows at once
 }
@@ -70,8 +74,16 @@ std::optional<std::vector<std::uint8_t>> Adapter::take_forwarded() {
 
 // DECISION: an adapter error (table 5.3-3) is seen by both processors; it is entered in
 // both rings and reported in both fields of the diagnosis alarm.
+// Input bit 5 ([RS4 manual §5.1.1] "an error in the RS4 or in the adapter"): an error with a
+// state (a wrong field pair, inconsistent outputs) sets it while present; a one-shot error
+// (an acyclic telegram, a PROFIsafe PDU, a proxy step) until its going alarm
+// [docs/decisions.md#rs4-error-bit].
 void Adapter::adapter_error(protocol::AdapterError e, TimePoint now) {
   const auto wire = protocol::to_wire(e);
+  if (e != protocol::AdapterError::kWrongFieldPair &&
+      e != protocol::AdapterError::kOutputsInconsistent) {
+    adapter_error_active_ = true;
+  }
   report_error(wire, wire, now);
 }
 
@@ -117,6 +129,8 @@ void Adapter::submit_diagnosis_alarm(protocol::AlarmDifferentiation d) {
 void Adapter::check_going_alarm(TimePoint now) {
   if (!error_active_ || now - last_error_at_ < config_.going_alarm_delay) return;
   error_active_ = false;
+  adapter_error_active_ = false;
+  refresh_input(now);
   reported_.clear();
   if (connected_) submit_diagnosis_alarm(protocol::AlarmDifferentiation::kDisappears);
 }

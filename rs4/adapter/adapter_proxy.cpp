@@ -73,7 +73,7 @@ void Adapter::fail_sync(std::uint16_t error, TimePoint now) {
   scanner_.reset_to_factory_default(now);
   request_sync(protocol::SyncReason::kRetry);
   if (proxy_enable_) released_ = false;  // OSSD unaffected unless the sync fails
-  through_pending_ = pc_attached_;  // switched through at the next on_time/READ
+  through_pending_ = pc_attached_;       // switched through at the next on_time/READ
   refresh_input(now);
 }
 

@@ -16,7 +16,9 @@ struct Alarms : ::testing::Test {
 };
 
 TEST_F(Alarms, UpdateAlarmOnFirstClass2Write) {
-  rig.write(Rig::block({0x24, 0x01}), 2, dp::slave::AcyclicChannel::kC2, /*first=*/true);
+  // COM_CMD_ALIVE (14, option 1): answered in any RS4 state, so no error alarm joins in (a
+  // 0x24 before the RS4 scans would be answered with a 0x53 and its diagnosis alarm).
+  rig.write(Rig::block({0x14, 0x01}), 2, dp::slave::AcyclicChannel::kC2, /*first=*/true);
   ASSERT_EQ(rig.control.alarms.size(), 1u);
   const auto& a = rig.control.alarms[0];
   EXPECT_EQ(a.type, 6);  // update alarm: 04 06 00 spec
@@ -24,7 +26,7 @@ TEST_F(Alarms, UpdateAlarmOnFirstClass2Write) {
   EXPECT_EQ(a.specifier, 0);
   EXPECT_TRUE(a.add_ack);  // specifier bit 2
   EXPECT_TRUE(a.user_data.empty());
-  rig.write(Rig::block({0x24, 0x01}), 2, dp::slave::AcyclicChannel::kC2, false);
+  rig.write(Rig::block({0x14, 0x01}), 2, dp::slave::AcyclicChannel::kC2, false);
   EXPECT_EQ(rig.control.alarms.size(), 1u);
 }
 
