@@ -42,7 +42,7 @@ void GridScanDevice::power_off() {
 
 // [GridScan manual §10.1.1] "Power-up sequence": Info: Get version as soon as the
 // communication is up; SeqCnt 0 and 1 for the two power-up messages (DECISION: the only
-// start that reproduces the §10.3 exchange, docs/gridscan.md).
+// start that reproduces the exchange of [GridScan manual §10.3], docs/gridscan.md).
 void GridScanDevice::power_up(TimePoint now) {
   power_ = PowerState::kStarting;
   power_up_at_ = now;

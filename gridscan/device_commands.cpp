@@ -128,8 +128,8 @@ GridScanDevice::Reaction GridScanDevice::set_configuration(Configuration target,
   return {std::nullopt, true};
 }
 
-// [GridScan manual §10.1.1] stand-by reports every element interrupted; [GridScan manual
-// §10.1.2] the first state message after a test too (DECISION, docs/gridscan.md).
+// [GridScan manual §10.1.1] stand-by reports every element interrupted;
+// [GridScan manual §10.1.2] the first state message after a test too (DECISION, docs/gridscan.md).
 Payload GridScanDevice::state_payload(bool full) {
   StateReport r = current_report();
   if (test_pending_) {

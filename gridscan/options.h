@@ -1,6 +1,7 @@
 #pragma once
-// The options of one emulated GridScan/Pro SI, RC type ([GridScan manual §4.3, §9.1, §11,
-// §17]); validated once, before the device is built. Defaults: a 22-element edge
+// The options of one emulated GridScan/Pro SI, RC type
+// ([GridScan manual §4.3, §9.1, §11, §17]); validated once, before the device is built. Defaults: a
+// 22-element edge
 // ("GRS/Pro SY-2500-22, RC"), blanking mode, door open, polling after power-up.
 
 #include "gridscan/payload.h"

@@ -37,8 +37,9 @@ struct Scene {
 // The state bytes in normal operation.
 [[nodiscard]] StateReport report_of(const Scene& s, unsigned elements, Configuration c);
 
-// The state bytes when every element shows interrupted: stand-by ([GridScan manual
-// §10.1.1]) and the first message after a test ([GridScan manual §10.1.2]).
+// The state bytes when every element shows interrupted: stand-by
+// ([GridScan manual §10.1.1]) and the first message after a test
+// ([GridScan manual §10.1.2]).
 [[nodiscard]] StateReport all_interrupted_report(const Scene& s, unsigned elements,
                                                  Configuration c);
 

@@ -1,5 +1,5 @@
-// State bytes, the door-blanking scene, LEDs and options ([GridScan manual §9.2.4, §6.1,
-// §13, §4.3]).
+// State bytes, the door-blanking scene, LEDs and options
+// ([GridScan manual §9.2.4, §6.1, §13, §4.3]).
 #include "gridscan/payload.h"
 
 #include "gridscan/leds.h"
