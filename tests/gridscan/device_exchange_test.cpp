@@ -26,9 +26,11 @@ TEST(GridScanExchange, PowerUpThenTheManualsCommunicationTest) {
   h.run_for(1700ms);  // ready: Data: Reduced state, SeqCnt 1
   ASSERT_EQ(h.sent.size(), 1U);
   EXPECT_EQ(h.sent[0].at, t0 + 1700ms);
-  const auto b0 = decode_response(h.sent[0].bytes, 22);
-  ASSERT_TRUE(b0);
-  EXPECT_EQ(b0.value(), (Frame{0x01, 0xB0, {0x16, 0x00}}));  // door open, clear, clean
+  EXPECT_EQ(h.sent[0].bytes, (Bytes{0x43, 0x45, 0x44, 0x45,     // sync
+                                    0x01,                       // SeqCnt 1 (DECISION)
+                                    0xB0,                       // Data: Reduced state
+                                    0x16, 0x00,                 // door 22 open, clear, clean
+                                    0x69, 0x78, 0x27, 0x24}));  // CRC (COMPUTED)
   const auto ready = t0 + 1700ms;
 
   struct Step {
