@@ -1,0 +1,106 @@
+// Benchmarks of the virtual GridScan/Pro SI (issue 11): decode + handle + encode per
+// request (the whole device path: idle-gap framing, checks, command, answer frame with
+// CRC-32) and the memory of one device instance (sizeof + heap). Figures are reported,
+// never asserted.
+#include "gridscan/device.h"
+
+#include <benchmark/benchmark.h>
+
+#include <malloc.h>
+
+#include <memory>
+#include <vector>
+
+namespace {
+
+// Heap bytes in use (glibc): the difference around a construction is its heap share.
+std::size_t heap_in_use() { return mallinfo2().uordblks; }
+
+}  // namespace
+
+namespace rs4sim::gridscan {
+namespace {
+
+using namespace std::chrono_literals;
+
+// One request → answer through the device: on_bytes, the idle gap, the cycle end, the
+// answer taken. The clock jumps a cycle per request (no real waiting).
+void run_requests(benchmark::State& state, CommandId id, unsigned elements) {
+  Options o;
+  o.elements = elements;
+  GridScanDevice d(o);
+  stream::TimePoint t{1h};
+  d.on_time(t);
+  t += 2s;
+  d.on_time(t);
+  while (d.take_transmit()) {
+  }
+  std::uint8_t seq = 2;
+  std::size_t bytes = 0;
+  for (auto _ : state) {
+    const auto request = encode(Frame{seq, request_id(id), {}});
+    d.on_bytes(request, t);
+    t += o.cycle_time();
+    d.on_time(t);
+    auto answer = d.take_transmit();
+    bytes += answer ? answer->size() : 0;
+    benchmark::DoNotOptimize(answer);
+    seq = static_cast<std::uint8_t>(seq + 2);
+  }
+  state.counters["answered"] = static_cast<double>(d.counters().answered);
+  state.SetItemsProcessed(state.iterations());
+  state.SetBytesProcessed(static_cast<std::int64_t>(bytes));
+}
+
+void BM_RequestFullState60(benchmark::State& s) { run_requests(s, CommandId::kDataFullState, 60); }
+void BM_RequestReducedState22(benchmark::State& s) {
+  run_requests(s, CommandId::kDataReducedState, 22);
+}
+void BM_RequestCommTest(benchmark::State& s) {
+  run_requests(s, CommandId::kInfoCommunicationTest, 22);
+}
+BENCHMARK(BM_RequestFullState60);
+BENCHMARK(BM_RequestReducedState22);
+BENCHMARK(BM_RequestCommTest);
+
+// The codec alone: encode a 20-byte frame, then decode it strictly.
+void BM_FrameEncodeDecode(benchmark::State& state) {
+  const Frame f{3, 0xA0, {0x30, 0x31, 0x2E, 0x30, 0x32, 0x30, 0x33, 0x2E, 0x30, 0x34}};
+  for (auto _ : state) {
+    const auto bytes = encode(f);
+    auto back = decode_response(bytes, 22);
+    benchmark::DoNotOptimize(back);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_FrameEncodeDecode);
+
+// Memory of N booted devices, per device.
+void BM_MemoryPerDevice(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  double per_device = 0;
+  for (auto _ : state) {
+    std::vector<std::unique_ptr<GridScanDevice>> devices;
+    devices.reserve(n);
+    const std::size_t after_reserve = heap_in_use();
+    stream::TimePoint t{1h};
+    for (std::size_t i = 0; i < n; ++i) {
+      devices.push_back(std::make_unique<GridScanDevice>(Options{}));
+      devices.back()->on_time(t);
+      devices.back()->on_time(t + 2s);  // ready
+      while (devices.back()->take_transmit()) {
+      }
+    }
+    const std::size_t heap = heap_in_use() - after_reserve;  // the vector's array excluded
+    per_device = static_cast<double>(heap) / static_cast<double>(n);
+    benchmark::DoNotOptimize(devices.data());
+  }
+  state.counters["sizeof_GridScanDevice_B"] = static_cast<double>(sizeof(GridScanDevice));
+  state.counters["heap_per_device_B"] = per_device;  // incl. the object itself
+}
+BENCHMARK(BM_MemoryPerDevice)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace rs4sim::gridscan
+
+BENCHMARK_MAIN();

@@ -1,0 +1,46 @@
+#pragma once
+// The door-blanking model of the curtain ([GridScan manual §6.1, §9.2.4]): what the
+// elements see and what the state bytes report.
+//
+// A closing door cuts the beams from the top element downwards; the door position is the
+// number of elements below its lower edge, i.e. the elements left active (N = fully open,
+// 0 = closed; DECISION, docs/gridscan.md). In blanking mode only elements 1..door position
+// count for the "interrupted" bit 8; in static mode there is no door (position 255) and
+// every element counts. The element bitmap of Full state is the raw per-element state:
+// elements covered by the door show interrupted (DECISION).
+
+#include "gridscan/payload.h"
+
+#include <cstdint>
+
+namespace rs4sim::gridscan {
+
+struct Scene {
+  unsigned door_position = 0;     // 0..N; N = door open
+  std::uint64_t blocked = 0;      // bit e-1 = element e interrupted by an object
+  std::uint8_t soiling = 0;       // maintenance level 0..3
+  bool internal_failure = false;  // bit 9 ([GridScan manual §10.2.3])
+  std::uint16_t alignment_value = 0;
+};
+
+// Bits of elements 1..n.
+[[nodiscard]] constexpr std::uint64_t element_mask(unsigned n) noexcept {
+  return n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1U;
+}
+
+// What the elements see: the objects, plus the door's cover in blanking mode.
+[[nodiscard]] std::uint64_t raw_elements(const Scene& s, unsigned elements, Configuration c);
+
+// Bit 8: an element below the door edge (any element in static mode) is interrupted.
+[[nodiscard]] bool interrupted_below_edge(const Scene& s, unsigned elements, Configuration c);
+
+// The state bytes in normal operation.
+[[nodiscard]] StateReport report_of(const Scene& s, unsigned elements, Configuration c);
+
+// The state bytes when every element shows interrupted: stand-by
+// ([GridScan manual §10.1.1]) and the first message after a test
+// ([GridScan manual §10.1.2]).
+[[nodiscard]] StateReport all_interrupted_report(const Scene& s, unsigned elements,
+                                                 Configuration c);
+
+}  // namespace rs4sim::gridscan
