@@ -10,8 +10,8 @@ namespace rs4sim::rs4::rs232::testing {
 namespace {
 
 // The scanner of the measurement example: automatic restart (no interlock flag), a tiny
-// protective field where the scene is empty (no violation flags), window resolution 4, segments 0..8, and a raw contour with
-// 1000 mm at segment 0, 0 mm at 4 and 256 mm at 8.
+// protective field where the scene is empty (no violation flags), window resolution 4, segments
+// 0..8, and a raw contour with 1000 mm at segment 0, 0 mm at 4 and 256 mm at 8.
 void example_scene(PortFixture& f) {
   auto set = scanner::factory_default();
   set.restart_mode = scanner::RestartMode::kAutomatic;
@@ -116,9 +116,10 @@ TEST(Rs232KnownAnswers, ClientEncodesTheWorkedExamples) {
             (Bytes{0x00, 0x00, 0x14, 0x01, 0x15, 0x00, 0x00, 0x00}));
   EXPECT_EQ(encode_set_baud(4800, {.acknowledge = true, .password = std::nullopt}).value(),
             (Bytes{0x00, 0x00, 0x19, 0x41, 0x00, 0x00, 0xFF, 0xA7, 0x00, 0x00, 0x00}));
-  EXPECT_EQ(encode_command(0x10, {}, {.acknowledge = false, .password = make_password("ROD4LE")}).value(),
-            (Bytes{0x00, 0x00, 0x10, 0x21, 0x52, 0x4F, 0x44, 0x34, 0x4C, 0x45, 0xFF, 0xFF, 0x55,
-                   0x00, 0x00, 0x00}));
+  EXPECT_EQ(
+      encode_command(0x10, {}, {.acknowledge = false, .password = make_password("ROD4LE")}).value(),
+      (Bytes{0x00, 0x00, 0x10, 0x21, 0x52, 0x4F, 0x44, 0x34, 0x4C, 0x45, 0xFF, 0xFF, 0x55, 0x00,
+             0x00, 0x00}));
   EXPECT_EQ(encode_command(0x24, {}).value(),
             (Bytes{0x00, 0x00, 0x24, 0x01, 0x25, 0x00, 0x00, 0x00}));
   EXPECT_FALSE(make_password("TOOLONGPW"));
