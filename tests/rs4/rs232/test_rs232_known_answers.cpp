@@ -126,5 +126,46 @@ TEST(Rs232KnownAnswers, ClientEncodesTheWorkedExamples) {
   EXPECT_FALSE(encode_set_baud(1234));
 }
 
+// The annotated frames of docs/rs232.md "Parameter set over RS232".
+TEST(Rs232KnownAnswers, DocumentedTransferFrames) {
+  const CommandOptions pw{.acknowledge = false, .password = make_password("ROD4LE")};
+  EXPECT_EQ(encode_transfer(protocol::IdentifyRequest{}).value(),
+            (Bytes{0x00, 0x00, 0x60, 0x01, 0x61, 0x00, 0x00, 0x00}));
+  EXPECT_EQ(encode_transfer(protocol::UploadChunkRequest{0}).value(),
+            (Bytes{0x00, 0x00, 0x61, 0x01, 0x00, 0x60, 0x00, 0x00, 0x00}));
+  EXPECT_EQ(encode_transfer(protocol::DownloadBeginRequest{8507, 0x12345678}, pw).value(),
+            (Bytes{0x00, 0x00, 0x62, 0x21, 0x52, 0x4F, 0x44, 0x34, 0x4C, 0x45, 0xFF,
+                   0xFF, 0x21, 0x3B, 0x12, 0x34, 0x56, 0x78, 0x35, 0x00, 0x00, 0x00}));
+  EXPECT_EQ(encode_transfer(protocol::DownloadCommitRequest{}, pw).value(),
+            (Bytes{0x00, 0x00, 0x64, 0x21, 0x52, 0x4F, 0x44, 0x34, 0x4C, 0x45, 0xFF, 0xFF, 0x21,
+                   0x00, 0x00, 0x00}));
+  EXPECT_EQ(
+      encode_measurement_window(4, 0, 528, {.acknowledge = true, .password = pw.password}).value(),
+      (Bytes{0x00, 0x00, 0x20, 0x61, 0x52, 0x4F, 0x44, 0x34, 0x4C, 0x45, 0xFF,
+             0xFF, 0x04, 0x00, 0x00, 0xFF, 0x02, 0x10, 0xCC, 0x00, 0x00, 0x00}));
+  // The PROFIBUS form of the same request is the unframed body with option 1 = 01.
+  EXPECT_EQ(protocol::encode_request(protocol::UploadChunkRequest{0}).value(),
+            (Bytes{0x61, 0x01, 0x00}));
+}
+
+// The device's answers of docs/rs232.md "Reactions" (options 0B 80 81 of the example scene).
+TEST(Rs232KnownAnswers, DocumentedReactions) {
+  PortFixture f;
+  example_scene(f);
+  f.boot();
+  f.port.attach(f.clock.now());
+  (void)f.feed({0x00, 0x00, 0x22, 0x01, 0x00, 0x23, 0x00, 0x00, 0x00});  // stream off
+  const CommandOptions no_pw_ack{.acknowledge = true, .password = std::nullopt};
+  EXPECT_EQ(
+      f.feed(encode_set_baud(57600, no_pw_ack).value()),
+      (std::vector<Bytes>{{0x00, 0x00, 0x16, 0x0B, 0x80, 0x81, 0x19, 0x05, 0x00, 0x00, 0x00}}));
+  EXPECT_EQ(f.feed(encode_measurement_window(4, 0, 528, no_pw_ack).value()),
+            (std::vector<Bytes>{
+                {0x00, 0x00, 0x17, 0x0B, 0x80, 0x81, 0x20, 0x05, 0x03, 0x3B, 0x00, 0x00, 0x00}}));
+  EXPECT_EQ(f.feed(encode_measurement_window(4, 0, 528, {}).value()),
+            (std::vector<Bytes>{{0x00, 0x00, 0x53, 0x0B, 0x80, 0x81, 0x05, 0x03, 0x00, 0x20, 0x00,
+                                 0x05, 0x7A, 0x00, 0x00, 0x00}}));
+}
+
 }  // namespace
 }  // namespace rs4sim::rs4::rs232::testing
