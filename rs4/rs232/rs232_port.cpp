@@ -76,20 +76,22 @@ void Rs232Port::close_session() {
 }
 
 void Rs232Port::on_bytes(std::span<const std::uint8_t> bytes, stream::TimePoint now) {
+  in_call_ = true;
   sync_adapter(now);
   if (!open_) {
     counters_.ignored_while_detached += bytes.size();
-    return;
-  }
-  events_.clear();
-  deframer_.feed(bytes, events_);
-  for (const auto& event : events_) {
-    if (event) {
-      interpret(event.value(), now);
-    } else {
-      ++counters_.framing_errors;  // DECISION: a frame that cannot be trusted gets silence
+  } else {
+    events_.clear();
+    deframer_.feed(bytes, events_);
+    for (const auto& event : events_) {
+      if (event) {
+        interpret(event.value(), now);
+      } else {
+        ++counters_.framing_errors;  // DECISION: a frame that cannot be trusted gets silence
+      }
     }
   }
+  in_call_ = false;
 }
 
 void Rs232Port::on_time(stream::TimePoint now) {
@@ -98,8 +100,10 @@ void Rs232Port::on_time(stream::TimePoint now) {
     pending_line_.reset();
     ++counters_.baud_changes;
   }
+  in_call_ = true;
   sync_adapter(now);
   if (open_ && streaming_) stream_scan(now);
+  in_call_ = false;
 }
 
 std::optional<stream::TimePoint> Rs232Port::next_deadline() const {
@@ -153,7 +157,7 @@ void Rs232Port::on_rs4_event(const scanner::Rs4Event& e) {
   if (!open_) return;
   ++counters_.events;
   send(adapter::event_telegram(adapter_.scanner(), e), std::max(e.at, now_));
-  wake();
+  if (!in_call_) wake();  // collected by the PROFIBUS side's loop: tell the link
 }
 
 }  // namespace rs4sim::rs4::rs232

@@ -108,6 +108,7 @@ class Rs232Port final : public stream::ByteDevice {
   std::optional<std::vector<std::uint8_t>> answer_;     // of the command being executed
   std::vector<protocol::Rs232Deframer::Event> events_;  // scratch
   stream::TimePoint now_{};  // time of the call in progress (for the event listener)
+  bool in_call_ = false;     // inside on_bytes/on_time: the link drains afterwards anyway
   PortCounters counters_;
 };
 

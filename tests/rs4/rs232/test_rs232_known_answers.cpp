@@ -27,6 +27,15 @@ void example_scene(PortFixture& f) {
   ASSERT_TRUE(f.adapter.scanner().edit_scene(f.clock.now()).add(raw));
 }
 
+// The example scene, booted, the PC adapter attached and the stream switched off
+// (22 01 00: no acknowledge asked, so no answer).
+void open_quiet_example(PortFixture& f) {
+  example_scene(f);
+  f.boot();
+  f.port.attach(f.clock.now());
+  (void)f.feed({0x00, 0x00, 0x22, 0x01, 0x00, 0x23, 0x00, 0x00, 0x00});
+}
+
 TEST(Rs232KnownAnswers, FirstStreamedScanIsTheMeasurementExample) {
   PortFixture f;
   example_scene(f);
@@ -45,11 +54,7 @@ TEST(Rs232KnownAnswers, FirstStreamedScanIsTheMeasurementExample) {
 
 TEST(Rs232KnownAnswers, AliveIsAnsweredWithTheDevicesOptions) {
   PortFixture f;
-  example_scene(f);
-  f.boot();
-  f.port.attach(f.clock.now());
-  f.port.on_bytes(Bytes{0x00, 0x00, 0x22, 0x01, 0x00, 0x23, 0x00, 0x00, 0x00}, f.clock.now());
-  (void)f.drain();  // 22 01 00: stream off (silent, no acknowledge asked)
+  open_quiet_example(f);
   // alive, no ack: 00 00 | 14 | 01 | CHK 15 | 00 00 00
   const auto frames = f.feed({0x00, 0x00, 0x14, 0x01, 0x15, 0x00, 0x00, 0x00});
   ASSERT_EQ(frames.size(), 1U);
@@ -59,10 +64,7 @@ TEST(Rs232KnownAnswers, AliveIsAnsweredWithTheDevicesOptions) {
 
 TEST(Rs232KnownAnswers, RequestOneScan) {
   PortFixture f;
-  example_scene(f);
-  f.boot();
-  f.port.attach(f.clock.now());
-  (void)f.feed({0x00, 0x00, 0x22, 0x01, 0x00, 0x23, 0x00, 0x00, 0x00});  // stream off
+  open_quiet_example(f);
   // request one scan: 00 00 | 24 | 01 | CHK 25 | 00 00 00
   const auto frames = f.feed({0x00, 0x00, 0x24, 0x01, 0x25, 0x00, 0x00, 0x00});
   ASSERT_EQ(frames.size(), 1U);
@@ -151,10 +153,7 @@ TEST(Rs232KnownAnswers, DocumentedTransferFrames) {
 // The device's answers of docs/rs232.md "Reactions" (options 0B 80 81 of the example scene).
 TEST(Rs232KnownAnswers, DocumentedReactions) {
   PortFixture f;
-  example_scene(f);
-  f.boot();
-  f.port.attach(f.clock.now());
-  (void)f.feed({0x00, 0x00, 0x22, 0x01, 0x00, 0x23, 0x00, 0x00, 0x00});  // stream off
+  open_quiet_example(f);
   const CommandOptions no_pw_ack{.acknowledge = true, .password = std::nullopt};
   EXPECT_EQ(
       f.feed(encode_set_baud(57600, no_pw_ack).value()),
