@@ -8,7 +8,6 @@
 namespace rs4sim::rs4::rs232::testing {
 namespace {
 
-const CommandOptions kWithPassword{.acknowledge = false, .password = make_password("ROD4LE")};
 const CommandOptions kAckWithPassword{.acknowledge = true, .password = make_password("ROD4LE")};
 
 std::vector<std::uint32_t> scan_numbers(const std::vector<Bytes>& frames) {
