@@ -22,8 +22,8 @@ struct Counters {
   // slave line mode
   std::uint64_t messages = 0;  // delimited messages, good or bad
   std::uint64_t executed = 0;
-  std::uint64_t replies = 0;
-  std::uint64_t errors[5] = {};  // answers (or broadcast drops) per E1..E5
+  std::uint64_t frames_sent = 0;  // replies and reports that went out
+  std::uint64_t errors[5] = {};   // answers (or broadcast drops) per E1..E5
   std::uint64_t parity_rejected = 0;
   std::uint64_t not_for_us = 0;
   std::uint64_t broadcast_ignored = 0;

@@ -122,7 +122,7 @@ void MetronDevice::release(stream::TimePoint now) {
   while (!pending_.empty() && pending_.front().at <= now) {
     transmit_.push_back(std::move(pending_.front().bytes));
     pending_.pop_front();
-    ++counters_.replies;
+    ++counters_.frames_sent;
   }
 }
 

@@ -2,6 +2,7 @@
 // measurements and beam packing.
 #include "metron/options.h"
 
+#include "metron/mode_spec.h"
 #include "metron/scene.h"
 
 #include <gtest/gtest.h>
@@ -69,6 +70,51 @@ TEST(MetronScene, PackingBitOrder) {
   s.set_interrupted(10, true);
   EXPECT_EQ(s.packed(true), (std::vector<std::uint8_t>{0x01, 0x02}));
   EXPECT_EQ(s.packed(false), (std::vector<std::uint8_t>{0x80, 0x40}));
+}
+
+}  // namespace
+}  // namespace rs4sim::metron
+
+namespace rs4sim::metron {
+namespace {
+
+TEST(MetronModeSpec, Slave) {
+  Options o;
+  o.line_mode = LineMode::kStandard;
+  EXPECT_EQ(apply_mode_spec("slave", o), "");
+  EXPECT_EQ(o.line_mode, LineMode::kSlave);
+  EXPECT_EQ(apply_mode_spec("slave,hex", o),
+            "slave mode takes no options (19200 8E1 binary, fixed)");
+}
+
+TEST(MetronModeSpec, StandardWithOptions) {
+  Options o;
+  EXPECT_EQ(apply_mode_spec("periodical,hex,separator,checksum,period=250,report=count+run", o),
+            "");
+  EXPECT_EQ(o.line_mode, LineMode::kStandard);
+  EXPECT_EQ(o.reporting_mode, ReportingMode::kPeriodical);
+  EXPECT_EQ(o.format, Format::kHex);
+  EXPECT_TRUE(o.separator);
+  EXPECT_TRUE(o.checksum);
+  EXPECT_EQ(o.period, std::chrono::milliseconds(250));
+  EXPECT_EQ(o.report,
+            (std::vector<Measurement>{Measurement::kInterruptedCount, Measurement::kLongestRun}));
+  EXPECT_EQ(o.validate(), "");
+  EXPECT_EQ(apply_mode_spec("input-related,input=line-standby", o), "");
+  EXPECT_EQ(o.input_type, InputType::kLineStandby);
+}
+
+TEST(MetronModeSpec, Errors) {
+  Options o;
+  EXPECT_EQ(apply_mode_spec("sometimes", o),
+            "mode must be slave, continuous, periodical, on-request, status-change or "
+            "input-related, not 'sometimes'");
+  EXPECT_EQ(apply_mode_spec("continuous,octal", o), "unknown mode option 'octal'");
+  EXPECT_EQ(apply_mode_spec("continuous,period=x", o),
+            "period= takes milliseconds, e.g. period=250");
+  EXPECT_EQ(apply_mode_spec("continuous,report=first+tallest", o),
+            "unknown measurement 'tallest' in report=");
+  EXPECT_EQ(apply_mode_spec("continuous,input=maybe", o), "unknown input type 'maybe'");
 }
 
 }  // namespace
