@@ -7,11 +7,10 @@
 //
 // Script: op byte, then its arguments
 //   0 t      advance t ms (0..255)         3 b     set beam b interrupted, 4 b: free
-//   1 n ...  n bytes to the device         5       toggle synchronism
-//   2 b      byte b with a parity error    6       toggle the input
+//   1 n ...  n bytes to the device         5 x     toggle synchronism
+//   2 b      byte b with a parity error    6 x     toggle the input (x ignored)
+#include "fuzz/metron/metron_harness.h"
 #include "metron/checksum.h"
-#include "metron/metron_device.h"
-#include "stream/clock.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -20,7 +19,6 @@
 namespace {
 
 using namespace rs4sim;
-using namespace std::chrono_literals;
 
 void check_frame(const std::vector<std::uint8_t>& f, const metron::Options& o) {
   const std::size_t header = o.node_enabled ? 3 : 2;
@@ -31,64 +29,37 @@ void check_frame(const std::vector<std::uint8_t>& f, const metron::Options& o) {
   if (metron::checksum(body, o.checksum_reading) != f.back()) std::abort();
 }
 
-struct Harness {
-  metron::Options options;
-  stream::ManualClock clock;
-  std::optional<metron::MetronDevice> device;
-  std::uint64_t replies = 0;
-
-  void drain() {
-    while (auto f = device->take_transmit()) {
-      check_frame(*f, options);
-      ++replies;
-    }
-  }
-  void advance(stream::Duration d) {
-    const auto target = clock.now() + d;
-    for (int guard = 0; guard < 10000; ++guard) {
-      const auto dl = device->next_deadline();
-      if (!dl || *dl > target) break;
-      if (*dl > clock.now()) clock.set(*dl);
-      device->on_time(clock.now());
-      drain();
-    }
-    clock.set(target);
-  }
-};
-
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
-  Harness h;
-  h.options.node_enabled = (data[0] & 1U) != 0;
-  h.options.node = 5;
-  h.options.checksum_reading = (data[0] & 2U) != 0 ? metron::ChecksumReading::kEndAroundCarry
-                                                   : metron::ChecksumReading::kModulo256;
-  h.device.emplace(h.options);
-  h.advance(0ms);
+  metron::Options o;
+  o.node_enabled = (data[0] & 1U) != 0;
+  o.node = 5;
+  o.checksum_reading = (data[0] & 2U) != 0 ? metron::ChecksumReading::kEndAroundCarry
+                                           : metron::ChecksumReading::kModulo256;
+  std::uint64_t replies = 0;
+  metron::fuzzing::Harness h(o, [&](const std::vector<std::uint8_t>& f, stream::TimePoint) {
+    check_frame(f, o);
+    ++replies;
+  });
+  auto& d = h.device();
   const std::uint8_t* p = data + 1;
   const std::uint8_t* end = data + size;
-  const auto arg = [&]() -> std::uint8_t { return p < end ? *p++ : 0; };
   while (p < end) {
-    const std::uint8_t op = *p++;
-    switch (op % 7) {
-      case 0: h.advance(std::chrono::milliseconds(arg())); break;
-      case 1: {
-        const std::size_t n = std::min<std::size_t>(arg(), static_cast<std::size_t>(end - p));
-        h.device->on_bytes(std::span<const std::uint8_t>(p, n), h.clock.now());
-        p += n;
-        break;
-      }
-      case 2: h.device->on_byte_with_parity_error(arg(), h.clock.now()); break;
-      case 3: h.device->set_beam(arg(), true); break;
-      case 4: h.device->set_beam(arg(), false); break;
-      case 5: h.device->set_synchronised(!h.device->scene().synchronised()); break;
-      case 6: h.device->set_input(!h.device->scene().input_high()); break;
+    const auto op = static_cast<std::uint8_t>(*p++ % 7);
+    if (metron::fuzzing::common_op(h, op, p, end)) continue;
+    const std::uint8_t arg = p < end ? *p++ : 0;
+    switch (op) {
+      case 2: d.on_byte_with_parity_error(arg, h.now()); break;
+      case 3: d.set_beam(arg, true); break;
+      case 4: d.set_beam(arg, false); break;
+      case 5: d.set_synchronised(!d.scene().synchronised()); break;
+      default: d.set_input(!d.scene().input_high()); break;
     }
     h.drain();
   }
-  h.advance(1s);
-  if (h.replies > h.device->counters().messages) std::abort();
+  h.advance(std::chrono::seconds(1));
+  if (replies > d.counters().messages) std::abort();
   return 0;
 }

@@ -7,10 +7,9 @@
 //
 // Script: op byte, then its arguments
 //   0 t      advance t ms      1 n ...  n bytes to the device (requests and garbage)
-//   2 b      beam b on         3 b      beam b off      4  toggle the input
-#include "metron/metron_device.h"
+//   2 b      beam b on         3 b      beam b off      4 x  toggle the input (x ignored)
+#include "fuzz/metron/metron_harness.h"
 #include "metron/standard_report.h"
-#include "stream/clock.h"
 
 #include <array>
 #include <cstddef>
@@ -20,7 +19,6 @@
 namespace {
 
 using namespace rs4sim;
-using namespace std::chrono_literals;
 
 metron::Options options_from(std::uint8_t a, std::uint8_t b) {
   metron::Options o;
@@ -39,66 +37,35 @@ metron::Options options_from(std::uint8_t a, std::uint8_t b) {
   return o;
 }
 
-struct Harness {
-  metron::Options options;
-  stream::ManualClock clock;
-  std::optional<metron::MetronDevice> device;
-  std::optional<stream::TimePoint> last_report;
-
-  void drain() {
-    const metron::ReportFormat f{options.format, options.separator, options.checksum};
-    while (auto r = device->take_transmit()) {
-      const auto n = options.report.size();
-      if (r->size() != metron::report_length(n, f)) std::abort();
-      if (r->front() != options.wire.report_start || r->back() != options.wire.report_end)
-        std::abort();
-      if (last_report &&
-          clock.now() - *last_report < metron::send_time(r->size(), device->line_settings()))
-        std::abort();
-      last_report = clock.now();
-    }
-  }
-  void advance(stream::Duration d) {
-    const auto target = clock.now() + d;
-    for (int guard = 0; guard < 10000; ++guard) {
-      const auto dl = device->next_deadline();
-      if (!dl || *dl > target) break;
-      if (*dl > clock.now()) clock.set(*dl);
-      device->on_time(clock.now());
-      drain();
-    }
-    clock.set(target);
-  }
-};
-
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 2) return 0;
-  Harness h;
-  h.options = options_from(data[0], data[1]);
-  if (!h.options.validate().empty()) return 0;
-  h.device.emplace(h.options);
-  h.advance(0ms);
+  const auto o = options_from(data[0], data[1]);
+  if (!o.validate().empty()) return 0;
+  const metron::ReportFormat f{o.format, o.separator, o.checksum};
+  const auto line = metron::line_settings(o);
+  std::optional<stream::TimePoint> last;
+  metron::fuzzing::Harness h(o, [&](const std::vector<std::uint8_t>& r, stream::TimePoint now) {
+    if (r.size() != metron::report_length(o.report.size(), f)) std::abort();
+    if (r.front() != o.wire.report_start || r.back() != o.wire.report_end) std::abort();
+    if (last && now - *last < metron::send_time(r.size(), line)) std::abort();
+    last = now;
+  });
+  auto& d = h.device();
   const std::uint8_t* p = data + 2;
   const std::uint8_t* end = data + size;
-  const auto arg = [&]() -> std::uint8_t { return p < end ? *p++ : 0; };
   while (p < end) {
-    const std::uint8_t op = *p++;
-    switch (op % 5) {
-      case 0: h.advance(std::chrono::milliseconds(arg())); break;
-      case 1: {
-        const std::size_t n = std::min<std::size_t>(arg(), static_cast<std::size_t>(end - p));
-        h.device->on_bytes(std::span<const std::uint8_t>(p, n), h.clock.now());
-        p += n;
-        break;
-      }
-      case 2: h.device->set_beam(arg(), true); break;
-      case 3: h.device->set_beam(arg(), false); break;
-      case 4: h.device->set_input(!h.device->scene().input_high()); break;
+    const auto op = static_cast<std::uint8_t>(*p++ % 5);
+    if (metron::fuzzing::common_op(h, op, p, end)) continue;
+    const std::uint8_t arg = p < end ? *p++ : 0;
+    switch (op) {
+      case 2: d.set_beam(arg, true); break;
+      case 3: d.set_beam(arg, false); break;
+      default: d.set_input(!d.scene().input_high()); break;
     }
     h.drain();
   }
-  h.advance(500ms);
+  h.advance(std::chrono::milliseconds(500));
   return 0;
 }

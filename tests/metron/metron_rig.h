@@ -5,6 +5,8 @@
 #include "metron/metron_device.h"
 #include "stream/clock.h"
 
+#include <gtest/gtest.h>
+
 #include <cstdint>
 #include <initializer_list>
 #include <vector>
@@ -46,6 +48,12 @@ class Rig {
     send(request);
     advance(window);
     return sent_;
+  }
+  // The one frame answering `request` (a test failure if there is not exactly one).
+  Bytes only_reply(const Bytes& request) {
+    const auto s = exchange(request);
+    EXPECT_EQ(s.size(), 1U) << "frames answering the request";
+    return s.empty() ? Bytes{} : s.front().bytes;
   }
   std::vector<Sent> take() {
     auto s = std::move(sent_);

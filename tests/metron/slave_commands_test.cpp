@@ -10,24 +10,18 @@ namespace {
 
 using namespace std::chrono_literals;
 
-Bytes only_reply(Rig& rig, const Bytes& request) {
-  const auto s = rig.exchange(request);
-  EXPECT_EQ(s.size(), 1U);
-  return s.empty() ? Bytes{} : s.front().bytes;
-}
-
 TEST(MetronSlave, RequestOssdStatus) {
   Rig rig(slave_options());
-  EXPECT_EQ(only_reply(rig, {0x02,    // frame start
-                             0x01,    // length: command only
-                             0x0C,    // #12 Request OSSD status
-                             0xF3}),  // checksum ~0x0C
-            (Bytes{0x02, 0x03,        // start, length 3
-                   0x0C,              // reply code = command
-                   0x01, 0x01,        // OSSD1 ON, OSSD2 ON (free curtain)
-                   0xF1}));           // ~(0x0C+1+1)
+  EXPECT_EQ(rig.only_reply({0x02,    // frame start
+                            0x01,    // length: command only
+                            0x0C,    // #12 Request OSSD status
+                            0xF3}),  // checksum ~0x0C
+            (Bytes{0x02, 0x03,       // start, length 3
+                   0x0C,             // reply code = command
+                   0x01, 0x01,       // OSSD1 ON, OSSD2 ON (free curtain)
+                   0xF1}));          // ~(0x0C+1+1)
   rig.device().set_beam(3, true);
-  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x0C, 0xF3}),
+  EXPECT_EQ(rig.only_reply({0x02, 0x01, 0x0C, 0xF3}),
             (Bytes{0x02, 0x03, 0x0C, 0x00, 0x00, 0xF3}));  // both OFF
 }
 
@@ -35,9 +29,9 @@ TEST(MetronSlave, RequestActiveBeamStatusAllBeams24) {
   Rig rig(slave_options());
   const std::uint16_t blocked[] = {9, 10, 11, 12, 13};
   rig.device().set_interrupted(blocked);
-  EXPECT_EQ(only_reply(rig, {0x02, 0x02, 0x09,  // start, length 2, #9
-                             0x00,              // all beams (EXTENSION)
-                             0xF6}),
+  EXPECT_EQ(rig.only_reply({0x02, 0x02, 0x09,  // start, length 2, #9
+                            0x00,              // all beams (EXTENSION)
+                            0xF6}),
             (Bytes{0x02, 0x04, 0x09,
                    0x00,  // beams 1..8
                    0x1F,  // beams 9..13 in bits 0..4 (beam 9 = bit 0, LSB first)
@@ -52,14 +46,14 @@ TEST(MetronSlave, RequestActiveBeamStatusAllBeams30UsesFourBytes) {
   const std::uint16_t blocked[] = {25, 26, 27, 28, 29, 30};
   rig.device().set_interrupted(blocked);
   // "a 30-beam light curtain will send 4 bytes, the last two bits as X" (sent as 0)
-  EXPECT_EQ(only_reply(rig, {0x02, 0x02, 0x09, 0x00, 0xF6}),
+  EXPECT_EQ(rig.only_reply({0x02, 0x02, 0x09, 0x00, 0xF6}),
             (Bytes{0x02, 0x05, 0x09, 0x00, 0x00, 0x00, 0x3F, 0xB7}));
 }
 
 TEST(MetronSlave, RequestActiveBeamStatusOneBeam) {
   Rig rig(slave_options());
   rig.device().set_beam(10, true);
-  EXPECT_EQ(only_reply(rig, {0x02, 0x02, 0x09, 0x0A /* beam 10 */, 0xEC}),
+  EXPECT_EQ(rig.only_reply({0x02, 0x02, 0x09, 0x0A /* beam 10 */, 0xEC}),
             (Bytes{0x02, 0x02, 0x09, 0x01 /* interrupted */, 0xF5}));
 }
 
@@ -67,55 +61,55 @@ TEST(MetronSlave, RequestInstantaneousMeasurements) {
   Rig rig(slave_options());
   const std::uint16_t blocked[] = {9, 10, 11, 12, 13};
   rig.device().set_interrupted(blocked);
-  EXPECT_EQ(only_reply(rig, {0x02, 0x04, 0x0A,  // #10, three fields
-                             0x01, 0x02, 0x03,  // first, last, count
-                             0xEF}),
+  EXPECT_EQ(rig.only_reply({0x02, 0x04, 0x0A,  // #10, three fields
+                            0x01, 0x02, 0x03,  // first, last, count
+                            0xEF}),
             (Bytes{0x02, 0x04, 0x0A, 0x09, 0x0D, 0x05,  // 9, 13, 5
                    0xDA}));
 }
 
 TEST(MetronSlave, RequestConfiguration) {
   Rig rig(slave_options());
-  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x0B, 0xF4}), (Bytes{0x02, 0x06, 0x0B,
-                                                              0x18,  // 24 beams
-                                                              0x00,  // input type: no function
-                                                              0x00,  // node: none
-                                                              0x0A,  // scan cycle 10 ms
-                                                              0x14,  // t_response 20 ms
-                                                              0xBE}));
+  EXPECT_EQ(rig.only_reply({0x02, 0x01, 0x0B, 0xF4}), (Bytes{0x02, 0x06, 0x0B,
+                                                             0x18,  // 24 beams
+                                                             0x00,  // input type: no function
+                                                             0x00,  // node: none
+                                                             0x0A,  // scan cycle 10 ms
+                                                             0x14,  // t_response 20 ms
+                                                             0xBE}));
 }
 
 TEST(MetronSlave, RequestLightCurtainStatus) {
   Rig rig(slave_options());
-  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x0D, 0xF2}),
+  EXPECT_EQ(rig.only_reply({0x02, 0x01, 0x0D, 0xF2}),
             (Bytes{0x02, 0x02, 0x0D, 0x03 /* synchronised, OSSD enabled */, 0xEF}));
 }
 
 TEST(MetronSlave, OssdFunctionCommands) {
   Rig rig(slave_options());
-  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x03, 0xFC}), (Bytes{0x02, 0x01, 0x03, 0xFC}));
+  EXPECT_EQ(rig.only_reply({0x02, 0x01, 0x03, 0xFC}), (Bytes{0x02, 0x01, 0x03, 0xFC}));
   EXPECT_EQ(rig.device().slave_state().ossd, OssdFunction::kDisabled);
   EXPECT_FALSE(rig.device().ossd_on());
-  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x02, 0xFD}), (Bytes{0x02, 0x01, 0x02, 0xFD}));
+  EXPECT_EQ(rig.only_reply({0x02, 0x01, 0x02, 0xFD}), (Bytes{0x02, 0x01, 0x02, 0xFD}));
   EXPECT_TRUE(rig.device().ossd_on());
-  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x04, 0xFB}), (Bytes{0x02, 0x01, 0x04, 0xFB}));
+  EXPECT_EQ(rig.only_reply({0x02, 0x01, 0x04, 0xFB}), (Bytes{0x02, 0x01, 0x04, 0xFB}));
   EXPECT_EQ(rig.device().slave_state().ossd, OssdFunction::kStandby);
-  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x02, 0xFD}), (Bytes{0x02, 0x01, 0x02, 0xFD}));
-  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x05, 0xFA}), (Bytes{0x02, 0x01, 0x05, 0xFA}));
+  EXPECT_EQ(rig.only_reply({0x02, 0x01, 0x02, 0xFD}), (Bytes{0x02, 0x01, 0x02, 0xFD}));
+  EXPECT_EQ(rig.only_reply({0x02, 0x01, 0x05, 0xFA}), (Bytes{0x02, 0x01, 0x05, 0xFA}));
   EXPECT_TRUE(rig.device().slave_state().ossd_measuring);
-  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x06, 0xF9}), (Bytes{0x02, 0x01, 0x06, 0xF9}));
+  EXPECT_EQ(rig.only_reply({0x02, 0x01, 0x06, 0xF9}), (Bytes{0x02, 0x01, 0x06, 0xF9}));
   EXPECT_FALSE(rig.device().slave_state().ossd_measuring);
 }
 
 TEST(MetronSlave, StartStopMeasurementReturnsTheMaximum) {
   Rig rig(slave_options());
   rig.device().set_beam(3, true);
-  EXPECT_EQ(only_reply(rig, {0x02, 0x02, 0x07, 0x01 /* first interrupted */, 0xF7}),
+  EXPECT_EQ(rig.only_reply({0x02, 0x02, 0x07, 0x01 /* first interrupted */, 0xF7}),
             (Bytes{0x02, 0x01, 0x07, 0xF8}));
   rig.device().set_beam(9, true);
   rig.device().set_beam(3, false);  // first = 9: the maximum
   rig.device().set_beam(4, true);   // first = 4
-  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x08, 0xF7}),
+  EXPECT_EQ(rig.only_reply({0x02, 0x01, 0x08, 0xF7}),
             (Bytes{0x02, 0x02, 0x08, 0x09 /* maximum */, 0xEE}));
 }
 
