@@ -66,6 +66,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     h.drain();
   }
-  h.advance(std::chrono::milliseconds(500));
+  h.advance(std::chrono::milliseconds(100));
   return 0;
 }
