@@ -1,0 +1,115 @@
+// Benchmarks of the virtual METRON (issue 11): one slave-mode request decoded, handled and
+// its reply encoded (on_bytes + on_time + take_transmit on a manual clock), one
+// standard-mode report composed and sent, and memory per device instance (sizeof + heap).
+// Figures are reported, never asserted.
+#include "metron/metron_device.h"
+#include "metron/standard_report.h"
+
+#include <benchmark/benchmark.h>
+
+#include <malloc.h>
+
+#include <memory>
+#include <vector>
+
+namespace {
+
+// Heap bytes in use (glibc): the difference around a construction is its heap share.
+std::size_t heap_in_use() { return mallinfo2().uordblks; }
+
+}  // namespace
+
+namespace rs4sim::metron {
+namespace {
+
+using namespace std::chrono_literals;
+using Bytes = std::vector<std::uint8_t>;
+
+// One request/reply: the reply is due 12.3 ms after the request (Equation 3).
+void run_requests(benchmark::State& state, Options o, const Bytes& request) {
+  MetronDevice d(o);
+  stream::TimePoint t{1h};
+  d.on_time(t);
+  std::size_t reply_bytes = 0;
+  for (auto _ : state) {
+    d.on_bytes(request, t);
+    t += 30ms;
+    d.on_time(t);
+    auto reply = d.take_transmit();
+    reply_bytes = reply ? reply->size() : 0;
+    benchmark::DoNotOptimize(reply);
+  }
+  if (reply_bytes == 0) state.SkipWithError("no reply");
+  state.counters["reply_bytes"] = static_cast<double>(reply_bytes);
+  state.SetItemsProcessed(state.iterations());
+}
+
+void BM_SlaveRequestOssdStatus(benchmark::State& state) {
+  run_requests(state, Options{}, {0x02, 0x01, 0x0C, 0xF3});
+}
+BENCHMARK(BM_SlaveRequestOssdStatus);
+
+void BM_SlaveRequestMeasurements(benchmark::State& state) {
+  run_requests(state, Options{}, {0x02, 0x04, 0x0A, 0x01, 0x02, 0x03, 0xEF});
+}
+BENCHMARK(BM_SlaveRequestMeasurements);
+
+// 255 beams, all-beam status: 32 data bytes packed per request.
+void BM_SlaveRequestAllBeams255(benchmark::State& state) {
+  Options o;
+  o.beams = 255;
+  o.node_enabled = true;
+  o.node = 5;
+  run_requests(state, o, {0x02, 0x05, 0x02, 0x09, 0x00, 0xF6});
+}
+BENCHMARK(BM_SlaveRequestAllBeams255);
+
+// Standard mode, continuous: one scan cycle composes and sends one report.
+void BM_StandardReportPerCycle(benchmark::State& state) {
+  Options o;
+  o.line_mode = LineMode::kStandard;
+  o.format = Format::kDecimal;
+  o.separator = true;
+  o.checksum = true;
+  o.baud = 115200;
+  MetronDevice d(o);
+  stream::TimePoint t{1h};
+  d.on_time(t);
+  for (auto _ : state) {
+    t += o.scan_cycle;
+    d.on_time(t);
+    auto r = d.take_transmit();
+    benchmark::DoNotOptimize(r);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_StandardReportPerCycle);
+
+void BM_MemoryPerMetron(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  double per_device = 0;
+  for (auto _ : state) {
+    const std::size_t before = heap_in_use();
+    std::vector<std::unique_ptr<MetronDevice>> devices;
+    stream::TimePoint t{1h};
+    for (std::size_t i = 0; i < n; ++i) {
+      Options o;
+      o.beams = 255;
+      devices.push_back(std::make_unique<MetronDevice>(o));
+      devices.back()->on_time(t);
+      devices.back()->on_bytes(Bytes{0x02, 0x02, 0x09, 0x00, 0xF6}, t);
+      devices.back()->on_time(t + 30ms);
+      (void)devices.back()->take_transmit();
+    }
+    per_device = static_cast<double>(heap_in_use() - before) / static_cast<double>(n);
+    benchmark::DoNotOptimize(devices.data());
+  }
+  state.counters["sizeof_MetronDevice_B"] = static_cast<double>(sizeof(MetronDevice));
+  state.counters["heap_per_device_B"] = per_device;  // incl. the object itself
+}
+BENCHMARK(BM_MemoryPerMetron)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace rs4sim::metron
+
+BENCHMARK_MAIN();

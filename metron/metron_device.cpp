@@ -1,0 +1,193 @@
+#include "metron/metron_device.h"
+
+#include "metron/slave_reply.h"
+
+#include <algorithm>
+
+namespace rs4sim::metron {
+namespace {
+
+ReceiverConfig receiver_config(const Options& o) {
+  // DECISION: the rest of an over-long message is the bytes that follow within 10
+  // character times (5.7 ms at 19200 baud) of each other.
+  return {o.node_enabled, o.wire.frame_start, o.checksum_reading, o.receive_timeout,
+          stream::character_time(line_settings(o), 10.0)};
+}
+
+}  // namespace
+
+MetronDevice::MetronDevice(Options options)
+    : options_(std::move(options)),
+      scene_(options_.beams),
+      receiver_(receiver_config(options_)),
+      standard_(options_) {}
+
+stream::LineSettings MetronDevice::line_settings() const { return metron::line_settings(options_); }
+
+void MetronDevice::on_bytes(std::span<const std::uint8_t> bytes, stream::TimePoint now) {
+  if (resetting(now)) {
+    counters_.ignored_in_reset += bytes.size();
+    return;
+  }
+  if (options_.line_mode == LineMode::kStandard) {
+    standard_.on_bytes(bytes);
+    return;
+  }
+  receiver_.feed(bytes, now);
+  process_messages(now);
+}
+
+void MetronDevice::on_byte_with_parity_error(std::uint8_t byte, stream::TimePoint now) {
+  if (resetting(now) || options_.line_mode == LineMode::kStandard) {
+    on_bytes(std::span<const std::uint8_t>(&byte, 1), now);
+    return;
+  }
+  receiver_.feed(std::span<const std::uint8_t>(&byte, 1), now);
+  receiver_.mark_parity_error();
+  process_messages(now);
+}
+
+void MetronDevice::on_time(stream::TimePoint now) {
+  if (!started_) {
+    started_ = true;
+    if (options_.line_mode == LineMode::kStandard) standard_.start(now);
+  }
+  if (options_.line_mode == LineMode::kSlave) {
+    process_messages(now);
+  } else if (!resetting(now)) {
+    scratch_.clear();
+    standard_.advance(now, scene_, scratch_);
+    for (auto& f : scratch_) queue({f.at + faults_.extra_delay, std::move(f.bytes)});
+  }
+  release(now);
+}
+
+void MetronDevice::process_messages(stream::TimePoint now) {
+  while (auto m = receiver_.poll(now)) {
+    const auto r = handle(*m, options_, scene_, state_);
+    count(r);
+    react(*m, r, now);
+  }
+}
+
+void MetronDevice::react(const SlaveMessage& m, const Reaction& r, stream::TimePoint now) {
+  if (r.reset) {
+    ++counters_.resets;
+    reset_until_ = now + options_.reset_time;
+    receiver_.reset();
+    pending_.clear();
+    return;
+  }
+  if (!r.reply_code) return;
+  std::optional<std::uint8_t> node;
+  if (options_.node_enabled)
+    node = static_cast<std::uint8_t>(options_.node + (faults_.wrong_node ? 1 : 0));
+  auto bytes =
+      encode_reply(options_.wire, node, *r.reply_code, r.reply_data, options_.checksum_reading);
+  const auto due = std::max(now, m.first_byte + reply_delay(m.wire_bytes, options_.t_response));
+  queue({due + faults_.extra_delay, std::move(bytes)});
+}
+
+void MetronDevice::count(const Reaction& r) {
+  switch (r.disposition) {
+    case Disposition::kExecuted: ++counters_.executed; break;
+    case Disposition::kErrorAnswer: break;
+    case Disposition::kParityRejected: ++counters_.parity_rejected; break;
+    case Disposition::kNotForUs: ++counters_.not_for_us; break;
+    case Disposition::kBroadcastIgnored: ++counters_.broadcast_ignored; break;
+  }
+  if (r.error) ++counters_.errors[static_cast<std::size_t>(*r.error)];
+}
+
+void MetronDevice::queue(Outgoing frame) {
+  if (faults_.silent) {
+    ++counters_.suppressed;
+    return;
+  }
+  auto& b = frame.bytes;
+  if (faults_.bad_checksum && b.size() >= 2) {
+    // slave reply: the last byte; standard report: the byte before End, if a checksum is sent
+    const bool standard = options_.line_mode == LineMode::kStandard;
+    if (!standard) b.back() = static_cast<std::uint8_t>(~b.back());
+    if (standard && options_.checksum)
+      b[b.size() - 2] = static_cast<std::uint8_t>(~b[b.size() - 2]);
+  }
+  if (faults_.truncate && !b.empty()) b.pop_back();
+  const auto at = std::upper_bound(pending_.begin(), pending_.end(), frame.at,
+                                   [](stream::TimePoint t, const Outgoing& o) { return t < o.at; });
+  pending_.insert(at, std::move(frame));
+}
+
+void MetronDevice::release(stream::TimePoint now) {
+  while (!pending_.empty() && pending_.front().at <= now) {
+    transmit_.push_back(std::move(pending_.front().bytes));
+    pending_.pop_front();
+    ++counters_.frames_sent;
+  }
+}
+
+std::optional<stream::TimePoint> MetronDevice::next_deadline() const {
+  if (!started_) return stream::TimePoint{};
+  std::optional<stream::TimePoint> d;
+  const auto take = [&](std::optional<stream::TimePoint> t) {
+    if (t && (!d || *t < *d)) d = t;
+  };
+  if (!pending_.empty()) take(pending_.front().at);
+  take(receiver_.deadline());
+  if (options_.line_mode == LineMode::kStandard) take(standard_.deadline());
+  return d;
+}
+
+std::optional<std::vector<std::uint8_t>> MetronDevice::take_transmit() {
+  if (transmit_.empty()) return std::nullopt;
+  auto f = std::move(transmit_.front());
+  transmit_.pop_front();
+  return f;
+}
+
+void MetronDevice::set_interrupted(std::span<const std::uint16_t> beams) {
+  scene_.clear();
+  for (const auto b : beams) scene_.set_interrupted(b, true);
+  scene_changed();
+}
+
+void MetronDevice::set_beam(std::uint16_t beam, bool interrupted) {
+  scene_.set_interrupted(beam, interrupted);
+  scene_changed();
+}
+
+void MetronDevice::set_input(bool high) {
+  scene_.set_input(high);
+  standard_.on_input(high, scene_);
+  scene_changed();
+}
+
+void MetronDevice::set_synchronised(bool synchronised) {
+  scene_.set_synchronised(synchronised);
+  scene_changed();
+}
+
+void MetronDevice::scene_changed() {
+  state_.track(scene_);
+  standard_.on_scene(scene_);
+}
+
+bool MetronDevice::ossd_on() const { return metron::ossd_on(state_, scene_); }
+
+Counters MetronDevice::counters() const {
+  Counters c = counters_;
+  const auto& r = receiver_.stats();
+  c.messages = r.messages;
+  c.noise_bytes = r.noise_bytes;
+  c.truncated = r.truncated;
+  c.too_long = r.too_long;
+  c.resync_bytes = r.resync_bytes;
+  const auto& s = standard_.stats();
+  c.reports = s.reports;
+  c.reports_dropped = s.dropped;
+  c.report_requests = s.requests;
+  c.other_bytes = s.other_bytes;
+  return c;
+}
+
+}  // namespace rs4sim::metron

@@ -1,0 +1,76 @@
+#pragma once
+// The virtual ReeR METRON Receiver on its RS-485 line, as a stream::ByteDevice: slave line
+// mode (answers the host's 13 commands, Equation 3's reply delay) or standard line mode
+// (sends reports by its reporting mode) [METRON manual "Serial line management"]. Sans-I/O:
+// time comes in with every call, frames leave through take_transmit() when due.
+
+#include "metron/faults.h"
+#include "metron/options.h"
+#include "metron/scene.h"
+#include "metron/slave_handler.h"
+#include "metron/slave_receiver.h"
+#include "metron/slave_state.h"
+#include "metron/standard_line.h"
+#include "stream/byte_device.h"
+
+#include <deque>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace rs4sim::metron {
+
+class MetronDevice final : public stream::ByteDevice {
+ public:
+  // `options` must have passed validate().
+  explicit MetronDevice(Options options);
+  MetronDevice(const MetronDevice&) = delete;
+  MetronDevice& operator=(const MetronDevice&) = delete;
+
+  [[nodiscard]] stream::LineSettings line_settings() const override;
+  void on_bytes(std::span<const std::uint8_t> bytes, stream::TimePoint now) override;
+  void on_time(stream::TimePoint now) override;
+  [[nodiscard]] std::optional<stream::TimePoint> next_deadline() const override;
+  std::optional<std::vector<std::uint8_t>> take_transmit() override;
+
+  // A byte that failed its parity check (a serial link that sees parity errors passes such
+  // bytes here): the whole message it belongs to gets no reply [METRON manual "No node"].
+  void on_byte_with_parity_error(std::uint8_t byte, stream::TimePoint now);
+
+  // The scene. Beam numbers from 1; the input drives input-related reporting.
+  [[nodiscard]] const Scene& scene() const { return scene_; }
+  void set_interrupted(std::span<const std::uint16_t> beams);  // the others become free
+  void set_beam(std::uint16_t beam, bool interrupted);
+  void set_input(bool high);
+  void set_synchronised(bool synchronised);
+
+  [[nodiscard]] Faults& faults() { return faults_; }
+  [[nodiscard]] const Options& options() const { return options_; }
+  [[nodiscard]] const SlaveState& slave_state() const { return state_; }
+  [[nodiscard]] bool ossd_on() const;
+  [[nodiscard]] bool resetting(stream::TimePoint now) const { return now < reset_until_; }
+  [[nodiscard]] Counters counters() const;
+
+ private:
+  void process_messages(stream::TimePoint now);
+  void react(const SlaveMessage& m, const Reaction& r, stream::TimePoint now);
+  void count(const Reaction& r);
+  void queue(Outgoing frame);
+  void release(stream::TimePoint now);
+  void scene_changed();
+
+  Options options_;
+  Scene scene_;
+  SlaveState state_;
+  SlaveReceiver receiver_;
+  StandardLine standard_;
+  Faults faults_;
+  Counters counters_;
+  bool started_ = false;
+  stream::TimePoint reset_until_{};
+  std::deque<Outgoing> pending_;  // due in time order
+  std::deque<std::vector<std::uint8_t>> transmit_;
+  std::vector<Outgoing> scratch_;
+};
+
+}  // namespace rs4sim::metron

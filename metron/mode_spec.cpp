@@ -1,0 +1,82 @@
+#include "metron/mode_spec.h"
+
+#include <charconv>
+#include <vector>
+
+namespace rs4sim::metron {
+namespace {
+
+std::vector<std::string_view> split(std::string_view s, char sep) {
+  std::vector<std::string_view> out;
+  while (true) {
+    const auto at = s.find(sep);
+    out.push_back(s.substr(0, at));
+    if (at == std::string_view::npos) return out;
+    s.remove_prefix(at + 1);
+  }
+}
+
+std::string apply_report(std::string_view list, Options& o) {
+  o.report.clear();
+  for (const auto name : split(list, '+')) {
+    const auto m = parse_measurement(name);
+    if (!m) return "unknown measurement '" + std::string(name) + "' in report=";
+    o.report.push_back(*m);
+  }
+  return {};
+}
+
+std::string apply_option(std::string_view word, Options& o) {
+  if (const auto f = parse_format(word)) {
+    o.format = *f;
+    return {};
+  }
+  if (word == "separator") {
+    o.separator = true;
+    return {};
+  }
+  if (word == "checksum") {
+    o.checksum = true;
+    return {};
+  }
+  if (word.starts_with("period=")) {
+    const auto v = word.substr(7);
+    int ms = 0;
+    const auto r = std::from_chars(v.data(), v.data() + v.size(), ms);
+    if (r.ec != std::errc{} || r.ptr != v.data() + v.size())
+      return "period= takes milliseconds, e.g. period=250";
+    o.period = std::chrono::milliseconds(ms);
+    return {};
+  }
+  if (word.starts_with("input=")) {
+    const auto t = parse_input_type(word.substr(6));
+    if (!t) return "unknown input type '" + std::string(word.substr(6)) + "'";
+    o.input_type = *t;
+    return {};
+  }
+  if (word.starts_with("report=")) return apply_report(word.substr(7), o);
+  return "unknown mode option '" + std::string(word) + "'";
+}
+
+}  // namespace
+
+std::string apply_mode_spec(std::string_view spec, Options& o) {
+  const auto words = split(spec, ',');
+  if (words.front() == "slave") {
+    if (words.size() > 1) return "slave mode takes no options (19200 8E1 binary, fixed)";
+    o.line_mode = LineMode::kSlave;
+    return {};
+  }
+  const auto mode = parse_reporting_mode(words.front());
+  if (!mode)
+    return "mode must be slave, continuous, periodical, on-request, status-change or "
+           "input-related, not '" +
+           std::string(words.front()) + "'";
+  o.line_mode = LineMode::kStandard;
+  o.reporting_mode = *mode;
+  for (std::size_t i = 1; i < words.size(); ++i)
+    if (auto e = apply_option(words[i], o); !e.empty()) return e;
+  return {};
+}
+
+}  // namespace rs4sim::metron

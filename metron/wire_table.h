@@ -1,0 +1,95 @@
+#pragma once
+// The METRON's byte values. The manual's message figures were lost, so NONE of the values
+// below are ReeR's: they are the project's EXTENSION ([docs/metron.md#extension]), kept in
+// this one table so that a trace of a real curtain can replace them through the options.
+// What the manual does give — the field order, the rules, the error cases — is in
+// slave_receiver.h, slave_handler.h and standard_report.h.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace rs4sim::metron {
+
+// The 13 slave commands in the manual's order [METRON manual "Slave line mode"].
+enum class Command : std::uint8_t {
+  kResetSoftware,
+  kEnableOssd,
+  kDisableOssd,
+  kOssdStandby,
+  kStartOssdMeasurement,
+  kStopOssdMeasurement,
+  kStartMeasurement,
+  kStopMeasurement,
+  kRequestBeamStatus,
+  kRequestMeasurements,
+  kRequestConfiguration,
+  kRequestOssdStatus,
+  kRequestCurtainStatus,
+};
+inline constexpr std::size_t kCommandCount = 13;
+
+// The error answers of the manual's "ERROR HANDLING" paragraphs, numbered as the project
+// numbers them: E1 checksum or length > 6, E2 wrong length or bad argument, E3 OSSD state,
+// E4 synchronism missing, E5 no Start measurement before Stop measurement.
+enum class ErrorCase : std::uint8_t { kE1, kE2, kE3, kE4, kE5 };
+inline constexpr std::size_t kErrorCaseCount = 5;
+
+// The measurements a report or command #7/#10 can name. The list is in handbook 8540639,
+// not in the seed; these six are the project's EXTENSION. Every value is one byte.
+enum class Measurement : std::uint8_t {
+  kFirstInterrupted,    // number of the first interrupted beam, 0 when none
+  kLastInterrupted,     // number of the last interrupted beam, 0 when none
+  kInterruptedCount,    // how many beams are interrupted
+  kFreeCount,           // how many beams are free
+  kCentralInterrupted,  // (first + last) / 2, 0 when none
+  kLongestRun,          // the most consecutive interrupted beams
+};
+inline constexpr std::size_t kMeasurementCount = 6;
+
+// EXTENSION: every byte value the lost figures held.
+struct WireTable {
+  // slave line mode
+  std::uint8_t frame_start = 0x02;
+  std::array<std::uint8_t, kCommandCount> commands{0x01, 0x02, 0x03, 0x04, 0x05, 0x06, 0x07,
+                                                   0x08, 0x09, 0x0A, 0x0B, 0x0C, 0x0D};
+  std::array<std::uint8_t, kErrorCaseCount> errors{0xE1, 0xE2, 0xE3, 0xE4, 0xE5};
+  std::uint8_t all_beams = 0x00;    // #9 data byte asking for all beams; 1..N = one beam
+  bool beam_bits_lsb_first = true;  // beam 1 in bit 0 of the first byte
+  std::array<std::uint8_t, kMeasurementCount> measurements{0x01, 0x02, 0x03, 0x04, 0x05, 0x06};
+  // standard line mode
+  std::uint8_t report_start = 0x02;  // STX
+  std::uint8_t report_end = 0x03;    // ETX
+  std::uint8_t separator = 0x2C;     // ','
+  std::uint8_t request_char = 0x3F;  // '?', reporting on request
+
+  friend bool operator==(const WireTable&, const WireTable&) = default;
+};
+
+// The reply code of a successful command: the command's own code.
+[[nodiscard]] inline std::uint8_t code_of(const WireTable& t, Command c) {
+  return t.commands[static_cast<std::size_t>(c)];
+}
+[[nodiscard]] inline std::uint8_t code_of(const WireTable& t, ErrorCase e) {
+  return t.errors[static_cast<std::size_t>(e)];
+}
+[[nodiscard]] inline std::uint8_t code_of(const WireTable& t, Measurement m) {
+  return t.measurements[static_cast<std::size_t>(m)];
+}
+[[nodiscard]] std::optional<Command> command_from_code(const WireTable& t, std::uint8_t code);
+[[nodiscard]] std::optional<Measurement> measurement_from_code(const WireTable& t,
+                                                               std::uint8_t code);
+
+[[nodiscard]] std::string_view to_string(Command c);
+[[nodiscard]] std::string_view to_string(ErrorCase e);
+[[nodiscard]] std::string_view to_string(Measurement m);
+// "first", "last", "count", "free", "central", "run".
+[[nodiscard]] std::optional<Measurement> parse_measurement(std::string_view name);
+
+// Empty when every code is distinct where it must be; otherwise what clashes.
+[[nodiscard]] std::string validate(const WireTable& t);
+
+}  // namespace rs4sim::metron

@@ -1,0 +1,68 @@
+// Fault injection: the faults a controller must catch (metron/faults.h).
+#include "tests/metron/metron_rig.h"
+
+#include <gtest/gtest.h>
+
+namespace rs4sim::metron::testing {
+namespace {
+
+using namespace std::chrono_literals;
+
+const Bytes kRequest{0x02, 0x01, 0x0C, 0xF3};
+
+TEST(MetronFaults, Silent) {
+  Rig rig(slave_options());
+  rig.device().faults().silent = true;
+  EXPECT_TRUE(rig.exchange(kRequest).empty());
+  EXPECT_EQ(rig.device().counters().suppressed, 1U);
+  EXPECT_EQ(rig.device().counters().executed, 1U);  // the command still ran
+}
+
+TEST(MetronFaults, LateAnswer) {
+  Rig rig(slave_options());
+  rig.device().faults().extra_delay = 50ms;
+  const auto t0 = rig.clock().now();
+  const auto s = rig.exchange(kRequest);
+  ASSERT_EQ(s.size(), 1U);
+  EXPECT_EQ(s[0].at, t0 + 62'291'667ns);
+}
+
+TEST(MetronFaults, BadChecksum) {
+  Rig rig(slave_options());
+  rig.device().faults().bad_checksum = true;
+  const auto s = rig.exchange(kRequest);
+  ASSERT_EQ(s.size(), 1U);
+  EXPECT_EQ(s[0].bytes, (Bytes{0x02, 0x03, 0x0C, 0x01, 0x01, 0x0E /* ~0xF1 */}));
+}
+
+TEST(MetronFaults, WrongNode) {
+  Rig rig(node_options(5));
+  rig.device().faults().wrong_node = true;
+  const auto s = rig.exchange({0x02, 0x05, 0x01, 0x0C, 0xF3});
+  ASSERT_EQ(s.size(), 1U);
+  EXPECT_EQ(s[0].bytes[1], 0x06);
+}
+
+TEST(MetronFaults, Truncated) {
+  Rig rig(slave_options());
+  rig.device().faults().truncate = true;
+  const auto s = rig.exchange(kRequest);
+  ASSERT_EQ(s.size(), 1U);
+  EXPECT_EQ(s[0].bytes, (Bytes{0x02, 0x03, 0x0C, 0x01, 0x01}));
+}
+
+TEST(MetronFaults, StandardReportBadChecksum) {
+  Options o;
+  o.line_mode = LineMode::kStandard;
+  o.checksum = true;
+  Rig rig(o);
+  rig.device().faults().bad_checksum = true;
+  rig.advance(10ms);
+  const auto s = rig.take();
+  ASSERT_EQ(s.size(), 1U);
+  // STX, 0, 0, 0 (free curtain), checksum ~0 = 0xFF inverted -> 0x00, ETX
+  EXPECT_EQ(s[0].bytes, (Bytes{0x02, 0x00, 0x00, 0x00, 0x00, 0x03}));
+}
+
+}  // namespace
+}  // namespace rs4sim::metron::testing
