@@ -36,6 +36,7 @@
 #include <chrono>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <optional>
 #include <span>
 #include <system_error>
@@ -156,6 +157,14 @@ class Adapter final : public dp::slave::SlaveApplication {
   void attach_pc_adapter(TimePoint now);                 // reed contact of X5
                                                          // ([RS4 manual §7.1, §7.2])
   void detach_pc_adapter(TimePoint now);
+  // Input bit 3 ([RS4 manual §5.1.1]): the RS4's RS232 is switched through to the PC adapter
+  // (attached and no sync running); rs4/rs232 answers only then.
+  [[nodiscard]] bool rs232_switched_through() const noexcept { return rs232_through_; }
+  // Called with every 0x53/0x54 event the RS4 emits, as the adapter collects it (the RS232
+  // port behind the PC adapter sends them too); an empty function removes the listener.
+  void set_rs4_event_listener(std::function<void(const scanner::Rs4Event&)> listener) {
+    event_listener_ = std::move(listener);
+  }
 
   // ---- proxy hooks (EXTENSION, [RS4 manual §7.1, §7.2] [docs/proxy-protocol.md]) ----------------
   // The adapter side of the Proxy-FB sync. PROFI_CMD_PROXY_BEGIN (0x98) and _END (0x99) from
@@ -306,6 +315,7 @@ class Adapter final : public dp::slave::SlaveApplication {
   std::vector<std::uint16_t> reported_;  // errors reported coming since going/connect
 
   AdapterCounters counters_;
+  std::function<void(const scanner::Rs4Event&)> event_listener_;
 };
 
 }  // namespace rs4sim::rs4::adapter

@@ -15,6 +15,7 @@ void Adapter::collect_rs4(TimePoint now) {
   scanner_.advance(now);
   update_rs4_phase(now);
   while (auto e = scanner_.pop_event()) {
+    if (event_listener_) event_listener_(*e);
     const bool error = e->kind == scanner::Rs4Event::Kind::kError;
     const auto bit = error ? protocol::kForwardError : protocol::kForwardWarning;
     if ((forwarding_.mask & bit) != 0) {

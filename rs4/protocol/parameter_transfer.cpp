@@ -195,7 +195,13 @@ TransferCode request_code(const TransferRequest& request) noexcept {
 }
 
 Result<std::vector<std::uint8_t>> encode_request(const TransferRequest& request) {
-  std::vector<std::uint8_t> out{byte(request_code(request)), kRequestOption1};
+  return encode_request(request, TelegramPrefix{});
+}
+
+Result<std::vector<std::uint8_t>> encode_request(const TransferRequest& request,
+                                                 const TelegramPrefix& prefix) {
+  std::vector<std::uint8_t> out;
+  if (const auto ec = encode_prefix(byte(request_code(request)), prefix, out)) return ec;
   codec::Appender w(out);
   if (const auto* up = std::get_if<UploadChunkRequest>(&request)) {
     w.u8(up->chunk);

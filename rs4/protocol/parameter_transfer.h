@@ -99,7 +99,15 @@ using TransferRequest =
                  DownloadCommitRequest, DownloadBreakRequest>;
 
 [[nodiscard]] TransferCode request_code(const TransferRequest& request) noexcept;
-// kBadAnswerValue (used for "bad argument") for a chunk larger than kMaxChunkSize.
+// The one encoder of a request body, for both framings: behind the block header on
+// PROFIBUS (option 1 = kRequestOption1, no password) and inside the RS232 frame behind the
+// optical PC adapter, where `prefix` may carry option 1 bit 5 with the 8-byte password and
+// bit 6 "acknowledge" ([roboticslibrary/rl LeuzeRs4.cpp], docs/rs232.md).
+// kBadAnswerValue (used for "bad argument") for a chunk larger than kMaxChunkSize;
+// kBadFieldPair from the prefix's options.
+Result<std::vector<std::uint8_t>> encode_request(const TransferRequest& request,
+                                                 const TelegramPrefix& prefix);
+// The PROFIBUS form: option 1 = kRequestOption1.
 Result<std::vector<std::uint8_t>> encode_request(const TransferRequest& request);
 
 // Device side. Errors: kBadCommandByte (not a transfer code), the prefix errors of
