@@ -2,6 +2,7 @@
 
 #include "app/archive_support.h"
 #include "rs4/param_doc/parameter_document.h"
+#include "rs4/rs232/rs232_codes.h"
 #include "rs4/scanner/parameter_codec.h"
 
 #include <algorithm>
@@ -128,7 +129,9 @@ Password password_from_text(std::string_view text) {
 bool password_accepted(const SetFile& file, const Password& password) {
   if (file.transfer_form) return true;
   const auto& pws = file.set.passwords;
-  if (std::all_of(pws.begin(), pws.end(), is_empty)) return true;
+  if (std::all_of(pws.begin(), pws.end(), is_empty)) {
+    return password == rs4::rs232::kFactoryPassword;  // the RS232 port's rule [docs/rs232.md]
+  }
   return std::any_of(pws.begin(), pws.end(),
                      [&](const Password& pw) { return !is_empty(pw) && pw == password; });
 }

@@ -56,8 +56,9 @@ void align_unknown(Operand& a, Operand& b);
 // --password: up to 8 printable ASCII characters, padded with 0xFF ([RS4 manual §6.4]);
 // UsageError otherwise.
 rs4::scanner::Password password_from_text(std::string_view text);
-// A set file accepts the write when the password is one of its user passwords, or when it
-// has none set (all 0xFF) — the transfer form carries no passwords and accepts any.
+// A set file accepts the write as the RS4's RS232 port does ([docs/rs232.md] "Password"): a
+// non-empty user password of the set, or while both are empty the service password "ROD4LE".
+// The transfer form carries no passwords and accepts any.
 bool password_accepted(const SetFile& file, const rs4::scanner::Password& password);
 
 }  // namespace rs4sim::app::param

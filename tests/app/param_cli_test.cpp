@@ -94,7 +94,8 @@ TEST_F(ParamCli, InvalidDocumentNamesThePathAndChangesNothing) {
 TEST_F(ParamCli, DryRunAndUsageErrors) {
   const auto file = write_set("set.bin", rs4::scanner::factory_default());
   const auto doc = write_doc("doc.json", R"({"format": 1, "start_pair": 2})");
-  const auto r = param("set " + doc + " --file " + file + " --dry-run --json");
+  EXPECT_EQ(param("set " + doc + " --file " + file).exit_code, 1);  // factory: "ROD4LE"
+  const auto r = param("set " + doc + " --file " + file + " --password ROD4LE --dry-run --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto tree = parse_json(r.out);
   EXPECT_EQ(tree.get<std::string>("written"), "false");
