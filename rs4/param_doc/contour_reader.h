@@ -15,7 +15,7 @@ namespace rs4sim::rs4::param_doc {
 
 struct ContourLimit {
   std::uint16_t max_mm = 0;
-  std::string_view what;  // "protective field limit (RS4 manual §2.3)"
+  std::string_view what;  // "protective field limit ([RS4 manual §2.3])"
 };
 
 scanner::Contour read_contour(const json::Value& v, const std::string& path,

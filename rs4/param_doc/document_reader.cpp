@@ -16,17 +16,17 @@ constexpr std::int64_t kResponseStepMs = 40;
 constexpr std::int64_t kMaxResponseMs =
     kMinResponseMs + kResponseStepMs * scanner::kMaxResponseSteps;
 constexpr ContourLimit kProtectiveLimit{scanner::kMaxProtectiveMm,
-                                        "(protective field limit, RS4 manual §2.3)"};
+                                        "(protective field limit [RS4 manual §2.3])"};
 constexpr ContourLimit kWarningLimit{scanner::kMaxWarningMm,
                                      "(warning field limit, docs/rs4-scanner.md)"};
 
 void read_response_time(const Value& v, ParameterSet& set) {
   const std::string path = "$.response_time_ms";
   const auto ms = json::integer(v, path, kMinResponseMs, kMaxResponseMs,
-                                "ms (80 ms + n·40 ms, RS4 manual §7.3)");
+                                "ms (80 ms + n·40 ms [RS4 manual §7.3])");
   if ((ms - kMinResponseMs) % kResponseStepMs != 0) {
     json::refuse(DocumentError::kOutOfRange, path,
-                 std::to_string(ms) + " is not 80 + n·40 ms (80, 120, ..., 640; RS4 manual §7.3)");
+                 std::to_string(ms) + " is not 80 + n·40 ms (80, 120, ..., 640) [RS4 manual §7.3]");
   }
   set.response_steps = static_cast<std::uint8_t>((ms - kMinResponseMs) / kResponseStepMs);
 }
@@ -46,7 +46,7 @@ void read_restart_mode(const Value& v, ParameterSet& set) {
   json::refuse(DocumentError::kOutOfRange, path,
                "\"" + name +
                    "\" is not automatic, start_interlock or start_restart_interlock "
-                   "(RS4 manual §4.3)");
+                   "([RS4 manual §4.3])");
 }
 
 std::uint8_t read_pair_number(const Value& v, const std::string& path) {
@@ -92,7 +92,7 @@ void read_warning_output(const Value& v, ParameterSet& set) {
       json::refuse(DocumentError::kOutOfRange, at,
                    "\"" + name +
                        "\" is not contamination, warning_field, fault or restart_interlock "
-                       "(RS4 manual §5.1.1)");
+                       "([RS4 manual §5.1.1])");
     }
     mask = static_cast<std::uint8_t>(mask | (1U << bit));
   }
@@ -103,7 +103,7 @@ void read_measurement(const Value& v, ParameterSet& set) {
   const std::string path = "$.measurement";
   const auto& o = json::object(v, path);
   json::check_keys(o, path, {"resolution", "start", "stop"});
-  const std::string_view what = "(RS4 manual §5.2.3.4)";
+  const std::string_view what = "([RS4 manual §5.2.3.4])";
   if (const Value* r = json::find(o, "resolution")) {
     set.measurement.resolution = static_cast<std::uint8_t>(
         json::integer(*r, json::key_path(path, "resolution"), 1, 255, what));

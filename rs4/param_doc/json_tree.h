@@ -34,7 +34,7 @@ const List& list(const Value& v, const std::string& path);
 const std::string& text(const Value& v, const std::string& path);
 double number(const Value& v, const std::string& path);  // finite
 // An integral number in min..max; `what` completes the reason ("mm (protective field
-// limit, RS4 manual §2.3)").
+// limit, [RS4 manual §2.3])").
 std::int64_t integer(const Value& v, const std::string& path, std::int64_t min, std::int64_t max,
                      std::string_view what);
 
