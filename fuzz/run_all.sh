@@ -11,6 +11,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 extra_seeds() {  # target -> a folder of more seed files, or nothing
   case "$1" in
     fuzz_gsd_parse) echo "$here/../gsd/files" ;;
+    fuzz_param_document) echo "$here/../tests/rs4/param_doc/data" ;;
   esac
 }
 found=0

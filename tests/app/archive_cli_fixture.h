@@ -116,10 +116,14 @@ class ArchiveCli : public ::testing::Test {
 
   // rs4sim archive <args> --archive <the file unless `archive` says otherwise>.
   CliResult run(const std::string& args, const std::string& archive = "") const {
+    return run_rs4sim("archive " + args + " --archive '" +
+                      (archive.empty() ? archive_.string() : archive) + "'");
+  }
+
+  // rs4sim <args>, stdout and stderr captured.
+  CliResult run_rs4sim(const std::string& args) const {
     const auto err = dir_ / "stderr.txt";
-    const std::string command = std::string(RS4SIM_EXE) + " archive " + args + " --archive '" +
-                                (archive.empty() ? archive_.string() : archive) + "' 2>'" +
-                                err.string() + "'";
+    const std::string command = std::string(RS4SIM_EXE) + " " + args + " 2>'" + err.string() + "'";
     CliResult r;
     FILE* pipe = ::popen(command.c_str(), "r");
     if (pipe == nullptr) return r;
