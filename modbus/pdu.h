@@ -1,7 +1,8 @@
 #pragma once
-// The PDUs the Polaris barrier speaks [Modbus application protocol V1.1b3 §6.3, §6.4,
-// §6.12, §7]: read holding/input registers (FC 0x03/0x04), write multiple registers
-// (FC 0x10) and exception responses (function | 0x80, code).
+// The PDUs the Polaris barrier speaks [Modbus application protocol V1.1b3 §6.3]
+// [Modbus application protocol V1.1b3 §6.4] [Modbus application protocol V1.1b3 §6.12]
+// [Modbus application protocol V1.1b3 §7]: read holding/input registers (FC 0x03/0x04), write
+// multiple registers (FC 0x10) and exception responses (function | 0x80, code).
 
 #include "modbus/rtu_frame.h"
 

@@ -1,5 +1,5 @@
-// The barrier as Modbus slave against the manual's frames P1-P8 [Polaris manual §7.4,
-// §8.2.3], and its answer timing on the manual clock.
+// The barrier as Modbus slave against the manual's frames P1-P8 [Polaris manual §7.4]
+// [Polaris manual §8.2.3], and its answer timing on the manual clock.
 #include "device_harness.h"
 
 #include <gtest/gtest.h>
@@ -73,7 +73,7 @@ TEST(PolarisSlave, P3AnsweredWithP4) {
 }
 
 TEST(PolarisSlave, P3AnsweredWithP5) {
-  // The §7.4.3 FL4 screenshot: 2.5 mm barrier, objects 68-71 and 85-93.
+  // The FL4 screenshot [Polaris manual §7.4.3]: 2.5 mm barrier, objects 68-71 and 85-93.
   Harness h(options(Family::kPli02, 127, DataMode::kFl4, 1));
   ASSERT_FALSE(h.device.set_interrupted(join(range(68, 71), range(85, 93)), h.clock.now()));
   const Bytes p5{0x01, 0x03, 0x14, 0x00, 0x44, 0x00, 0x47,  // object 1: 68..71

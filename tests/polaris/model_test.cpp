@@ -32,7 +32,7 @@ TEST(Model, StepsOfTheBodyHeights) {
 }
 
 TEST(Model, HeightForBeams) {
-  EXPECT_EQ(height_for_beams(Family::kPli02, 127), 340);   // the §7.4 screenshot's 127 beams
+  EXPECT_EQ(height_for_beams(Family::kPli02, 127), 340);   // 127 beams [Polaris manual §7.4]
   EXPECT_EQ(height_for_beams(Family::kPli12, 127), 1556);  // 2(1556-20)/24-1
   EXPECT_FALSE(height_for_beams(Family::kPl10, 17));
   EXPECT_EQ(beam_range(Family::kPl24).max, 144);
