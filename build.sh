@@ -30,6 +30,7 @@ packages=(build-essential cmake ninja-build pkg-config libboost-dev libsqlite3-d
 packages+=(libprotobuf-dev protobuf-compiler zlib1g-dev)   # storage/: archive export format, CRC-32
 packages+=(libgrpc++-dev protobuf-compiler-grpc)           # rpc/: the control API
 [ "$mode" = test ] && packages+=(clang libclang-rt-14-dev tshark python3-grpcio python3-grpc-tools)  # fuzzing, dissector, RPC clients
+[ "$mode" = test ] && packages+=(python3-pymodbus mbpoll)  # Polaris: real Modbus RTU clients
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,125 @@
+// Benchmarks of the Polaris barrier (figures in docs/polaris.md, reported, not asserted):
+// one Modbus request decoded, handled and its answer encoded (on_bytes, on_time at the
+// deadlines, take_transmit) per data mode; a master push; memory per device instance
+// (sizeof + the heap it holds, from glibc's allocator statistics, as counters).
+#include "modbus/crc16.h"
+#include "modbus/pdu.h"
+#include "modbus/rtu_frame.h"
+#include "polaris/device.h"
+
+#include <benchmark/benchmark.h>
+
+#include <malloc.h>
+
+#include <chrono>
+#include <memory>
+
+namespace {
+
+using namespace rs4sim;
+using std::chrono::milliseconds;
+
+polaris::Options options(polaris::DataMode mode, std::uint16_t beams) {
+  polaris::Options o;
+  o.family = polaris::Family::kPli02;
+  o.beams = beams;
+  o.mode = mode;
+  o.response_time = std::chrono::microseconds(500);
+  return o;
+}
+
+std::vector<std::uint16_t> typical_scene() { return {9, 10, 11, 12, 13, 25, 26, 27, 34, 90}; }
+
+std::vector<std::uint8_t> request(polaris::DataMode mode, std::uint16_t beams) {
+  const auto words = mode == polaris::DataMode::k485Mb
+                         ? static_cast<std::uint16_t>((beams + 15) / 16)
+                         : std::uint16_t{10};
+  return modbus::encode(
+      modbus::make_read_request(1, {modbus::kReadHoldingRegisters, 0x2000, words}));
+}
+
+void BM_SlaveRequest(benchmark::State& state) {
+  const auto mode = static_cast<polaris::DataMode>(state.range(0));
+  const auto beams = static_cast<std::uint16_t>(state.range(1));
+  polaris::Device device(options(mode, beams));
+  stream::TimePoint now{std::chrono::hours(1)};
+  device.on_time(now);
+  (void)device.set_interrupted(typical_scene(), now);
+  const std::vector<std::uint8_t> req = request(mode, beams);
+  std::size_t answer_bytes = 0;
+  for (auto _ : state) {
+    device.on_bytes(req, now);
+    while (auto next = device.next_deadline()) {
+      now = *next;
+      device.on_time(now);
+    }
+    auto answer = device.take_transmit();
+    answer_bytes = answer ? answer->size() : 0;
+    benchmark::DoNotOptimize(answer);
+    now += milliseconds(1);
+  }
+  state.counters["answer_bytes"] = static_cast<double>(answer_bytes);
+  state.counters["requests/s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_SlaveRequest)
+    ->ArgNames({"mode", "beams"})
+    ->Args({static_cast<int>(polaris::DataMode::k485Mb), 127})
+    ->Args({static_cast<int>(polaris::DataMode::k485Mb), 1375})
+    ->Args({static_cast<int>(polaris::DataMode::kFl1), 127})
+    ->Args({static_cast<int>(polaris::DataMode::kFl4), 127})
+    ->Args({static_cast<int>(polaris::DataMode::kFl10), 1375});
+
+void BM_MasterPush(benchmark::State& state) {
+  polaris::Options o = options(polaris::DataMode::kFl4, 127);
+  o.role = polaris::Role::kMaster;
+  o.scan_time = milliseconds(5);
+  polaris::Device device(o);
+  stream::TimePoint now{std::chrono::hours(1)};
+  device.on_time(now);
+  (void)device.set_interrupted(typical_scene(), now);
+  for (auto _ : state) {
+    now = *device.next_deadline();
+    device.on_time(now);
+    benchmark::DoNotOptimize(device.take_transmit());
+  }
+}
+BENCHMARK(BM_MasterPush);
+
+void BM_Crc16(benchmark::State& state) {
+  const std::vector<std::uint8_t> bytes(254, 0xA5);
+  for (auto _ : state) benchmark::DoNotOptimize(modbus::crc16(bytes));
+  state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(bytes.size()));
+}
+BENCHMARK(BM_Crc16);
+
+// Memory of one device: sizeof + the heap it holds after a scene and a request. The heap
+// is glibc's in-use total over kLive devices kept alive at once, divided by kLive (freed
+// chunks parked in the thread cache would skew a single allocation's delta).
+void BM_DeviceMemory(benchmark::State& state) {
+  constexpr std::size_t kLive = 512;
+  const auto beams = static_cast<std::uint16_t>(state.range(0));
+  double per_device = 0;
+  for (auto _ : state) {
+    std::vector<std::unique_ptr<polaris::Device>> devices;
+    devices.reserve(kLive);
+    const std::size_t before = mallinfo2().uordblks;
+    for (std::size_t i = 0; i < kLive; ++i) {
+      auto& d = devices.emplace_back(
+          std::make_unique<polaris::Device>(options(polaris::DataMode::k485Mb, beams)));
+      stream::TimePoint now{std::chrono::hours(1)};
+      d->on_time(now);
+      (void)d->set_interrupted(typical_scene(), now);
+      d->on_bytes(request(polaris::DataMode::k485Mb, beams), now);
+    }
+    per_device = static_cast<double>(mallinfo2().uordblks - before) / kLive;
+    benchmark::DoNotOptimize(devices);
+  }
+  const double heap = per_device - static_cast<double>(sizeof(polaris::Device));
+  state.counters["sizeof_bytes"] = static_cast<double>(sizeof(polaris::Device));
+  state.counters["heap_bytes"] = heap;
+  state.counters["total_KiB"] = per_device / 1024.0;
+}
+BENCHMARK(BM_DeviceMemory)->Arg(127)->Arg(1375);
+
+}  // namespace

@@ -1,0 +1,215 @@
+#include "polaris/device.h"
+
+#include "codec/endian.h"
+#include "modbus/error.h"
+#include "modbus/pdu.h"
+#include "modbus/timing.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace rs4sim::polaris {
+
+namespace {
+
+constexpr std::uint16_t kPadWord = 0xFFFF;  // 485MB beyond the beams: "not interrupted"
+
+// The words a read of `r` gets from `block` at `offset` (inside the block): 485MB the
+// asked count, padded with free beams (DECISION); FL the rest of the block, the count
+// being ignored [Polaris manual §8.2.2].
+std::vector<std::uint16_t> read_words(DataMode mode, const std::vector<std::uint16_t>& block,
+                                      std::size_t offset, std::uint16_t quantity) {
+  if (mode != DataMode::k485Mb) {
+    return {block.begin() + static_cast<std::ptrdiff_t>(offset), block.end()};
+  }
+  std::vector<std::uint16_t> words(quantity, kPadWord);
+  for (std::size_t i = 0; i < words.size() && offset + i < block.size(); ++i) {
+    words[i] = block[offset + i];
+  }
+  return words;
+}
+
+}  // namespace
+
+Device::Device(Options options)
+    : options_(options),
+      scan_(scan_duration(options_)),
+      framer_(modbus::t3_5(polaris::line_settings(options_)), modbus::kMaxFrameSize),
+      interrupted_(options_.beams, 0) {}
+
+stream::LineSettings Device::line_settings() const { return polaris::line_settings(options_); }
+
+void Device::on_bytes(std::span<const std::uint8_t> bytes, stream::TimePoint now) {
+  start(now);
+  framer_.feed(bytes, now);
+  advance(now);
+}
+
+void Device::on_time(stream::TimePoint now) {
+  start(now);
+  advance(now);
+}
+
+std::optional<stream::TimePoint> Device::next_deadline() const {
+  std::optional<stream::TimePoint> next = framer_.deadline();
+  const auto earliest = [&next](stream::TimePoint t) {
+    if (!next || t < *next) next = t;
+  };
+  if (!pending_.empty()) earliest(pending_.front().due);
+  if (next_push_) earliest(*next_push_);
+  return next;
+}
+
+std::optional<std::vector<std::uint8_t>> Device::take_transmit() {
+  if (transmit_.empty()) return std::nullopt;
+  std::vector<std::uint8_t> frame = std::move(transmit_.front());
+  transmit_.pop_front();
+  return frame;
+}
+
+std::error_code Device::set_interrupted(std::span<const std::uint16_t> beams,
+                                        stream::TimePoint now) {
+  for (const std::uint16_t b : beams) {
+    if (b == 0 || b > options_.beams) return std::make_error_code(std::errc::invalid_argument);
+  }
+  std::fill(interrupted_.begin(), interrupted_.end(), std::uint8_t{0});
+  for (const std::uint16_t b : beams) interrupted_[b - 1U] = 1;
+  scene_since_ = now;
+  return {};
+}
+
+std::vector<std::uint16_t> Device::data_block() const { return data_words(options_, interrupted_); }
+
+std::vector<Object> Device::objects() const { return find_objects(options_, interrupted_); }
+
+bool Device::pn1() const {
+  return std::any_of(interrupted_.begin(), interrupted_.end(),
+                     [](std::uint8_t b) { return b != 0; });
+}
+
+bool Device::pn2(stream::TimePoint now) const {
+  const bool two_or_hole = objects().size() >= 2;  // a free run between interrupted beams
+  if (options_.detection == Detection::kObject) return two_or_hole;
+  return two_or_hole && now >= scene_since_ + scan_ * options_.pn2_filter;
+}
+
+void Device::start(stream::TimePoint now) {
+  if (epoch_) return;
+  epoch_ = now;
+  if (options_.role == Role::kMaster) next_push_ = now + options_.scan_time;
+}
+
+void Device::advance(stream::TimePoint now) {
+  while (std::optional<stream::GapFrame> frame = framer_.poll(now)) handle(*frame);
+  while (next_push_ && *next_push_ <= now) {
+    push_data(*next_push_);
+    *next_push_ += options_.scan_time;
+  }
+  while (!pending_.empty() && pending_.front().due <= now) {
+    transmit_.push_back(std::move(pending_.front().bytes));
+    pending_.pop_front();
+    ++counters_.frames_sent;
+  }
+}
+
+void Device::handle(const stream::GapFrame& frame) {
+  if (frame.oversized) {
+    ++counters_.oversized;
+    return;
+  }
+  if (options_.role == Role::kMaster) {
+    ++counters_.answers_ignored;  // [Polaris manual §8.1.1]: the answer is not checked
+    return;
+  }
+  const stream::TimePoint end = frame.last_byte + framer_.gap();
+  modbus::RtuFrame request;
+  const std::error_code ec = modbus::decode(frame.bytes, request);
+  if (ec == modbus::ModbusError::kBadCrc) {
+    ++counters_.crc_errors;
+    if (options_.nak_on_error && frame.bytes[0] == options_.address) {
+      answer(modbus::make_exception(options_.address, frame.bytes[1],
+                                    modbus::ExceptionCode::kNegativeAcknowledge),
+             end);
+    }
+    return;
+  }
+  if (ec) {
+    ++counters_.too_short;  // kTooLong cannot pass the framer
+    return;
+  }
+  if (request.address == modbus::kBroadcastAddress) {
+    ++counters_.broadcasts;
+  } else if (request.address != options_.address) {
+    ++counters_.foreign_address;
+  } else {
+    handle_request(request, end);
+  }
+}
+
+void Device::handle_request(const modbus::RtuFrame& request, stream::TimePoint end) {
+  using modbus::ExceptionCode;
+  const auto refuse = [&](ExceptionCode code) {
+    answer(modbus::make_exception(options_.address, request.function, code), end);
+  };
+  if (request.function != modbus::kReadHoldingRegisters &&
+      request.function != modbus::kReadInputRegisters) {
+    ++counters_.bad_function;
+    refuse(options_.nak_on_error ? ExceptionCode::kNegativeAcknowledge
+                                 : ExceptionCode::kIllegalFunction);
+    return;
+  }
+  modbus::ReadRequest read;
+  std::error_code ec = modbus::parse_read_request(request, read);
+  if (ec == modbus::ModbusError::kBadQuantity && options_.mode != DataMode::k485Mb) {
+    read = {request.function, codec::be16(request.data[0], request.data[1]), 0};
+    ec = {};
+  }
+  if (ec) {
+    ++counters_.bad_request;
+    refuse(ExceptionCode::kIllegalDataValue);
+    return;
+  }
+  const std::vector<std::uint16_t> block = data_block();
+  const std::uint16_t base = start_address(options_);
+  if (read.start < base || read.start - base >= static_cast<int>(block.size())) {
+    ++counters_.bad_start;
+    refuse(ExceptionCode::kIllegalDataAddress);
+    return;
+  }
+  ++counters_.requests;
+  const auto words = read_words(options_.mode, block, read.start - base, read.quantity);
+  answer(modbus::make_read_response(options_.address, request.function, words), end);
+}
+
+void Device::answer(const modbus::RtuFrame& reply, stream::TimePoint end) {
+  if (modbus::is_exception(reply)) ++counters_.exceptions_sent;
+  schedule(modbus::encode(reply), scan_end_after(end));
+}
+
+void Device::push_data(stream::TimePoint due) {
+  std::vector<std::uint16_t> words = data_block();
+  if (words.size() > modbus::kMaxWriteQuantity) words.resize(modbus::kMaxWriteQuantity);
+  schedule(
+      modbus::encode(modbus::make_write_multiple(options_.address, start_address(options_), words)),
+      due);
+}
+
+void Device::schedule(std::vector<std::uint8_t> bytes, stream::TimePoint due) {
+  if (faults_.no_answer) {
+    ++counters_.suppressed;
+    return;
+  }
+  if (faults_.bad_crc) bytes.back() = static_cast<std::uint8_t>(~bytes.back());
+  due += faults_.late_by;
+  const auto at = std::upper_bound(pending_.begin(), pending_.end(), due,
+                                   [](stream::TimePoint t, const Pending& p) { return t < p.due; });
+  pending_.insert(at, Pending{due, std::move(bytes)});
+}
+
+stream::TimePoint Device::scan_end_after(stream::TimePoint t) const {
+  const stream::Duration since = t - *epoch_;
+  const auto scans = (since + scan_ - stream::Duration{1}) / scan_;
+  return *epoch_ + scan_ * scans;
+}
+
+}  // namespace rs4sim::polaris

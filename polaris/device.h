@@ -1,0 +1,107 @@
+#pragma once
+// The virtual Optoscan Polaris barrier on RS485 Modbus RTU [Polaris manual §8], a
+// stream::ByteDevice on the injected clock.
+//   slave:  frames cut by t3.5 of silence; FC 3/4 read the data block from the configured
+//           start address; CRC error or another function -> exception 0x07 (the manual)
+//           or the standard reaction (silence / 0x01) with nak_on_error = false; other
+//           addresses and broadcasts are ignored. The answer leaves when the scan in
+//           progress at the end of the request ends.
+//   master: an FC 16 push of the data block every scan_time; the slave's answer is framed,
+//           counted and ignored [Polaris manual §8.1.1].
+// The scene (interrupted beams) and the fault controls are set from outside (API, tests).
+
+#include "modbus/rtu_frame.h"
+#include "polaris/measurement.h"
+#include "polaris/options.h"
+#include "stream/byte_device.h"
+#include "stream/idle_gap_framer.h"
+
+#include <cstdint>
+#include <deque>
+#include <optional>
+#include <span>
+#include <system_error>
+#include <vector>
+
+namespace rs4sim::polaris {
+
+// Every received frame lands in exactly one of the first ten counters.
+struct Counters {
+  std::uint64_t requests = 0;  // well-formed reads for us (answered with data)
+  std::uint64_t crc_errors = 0;
+  std::uint64_t too_short = 0;        // < 4 bytes
+  std::uint64_t oversized = 0;        // > 256 bytes
+  std::uint64_t broadcasts = 0;       // address 0: not supported, ignored
+  std::uint64_t foreign_address = 0;  // for another slave, ignored
+  std::uint64_t bad_function = 0;     // not FC 3/4
+  std::uint64_t bad_request = 0;      // wrong length or 485MB word count -> exception 0x03
+  std::uint64_t bad_start = 0;        // outside the data block -> exception 0x02
+  std::uint64_t answers_ignored = 0;  // master role: the slave's replies
+  std::uint64_t exceptions_sent = 0;
+  std::uint64_t frames_sent = 0;  // answers and pushes put on the line
+  std::uint64_t suppressed = 0;   // frames the no_answer fault swallowed
+};
+
+// Faults the controller must catch, applied to every frame sent while set.
+struct Faults {
+  bool bad_crc = false;        // the CRC's high byte inverted
+  bool no_answer = false;      // nothing sent (slave: no answer; master: no push)
+  stream::Duration late_by{};  // sent this much later than due
+  friend bool operator==(const Faults&, const Faults&) = default;
+};
+
+class Device final : public stream::ByteDevice {
+ public:
+  // `options` must pass validate().
+  explicit Device(Options options);
+
+  [[nodiscard]] stream::LineSettings line_settings() const override;
+  void on_bytes(std::span<const std::uint8_t> bytes, stream::TimePoint now) override;
+  void on_time(stream::TimePoint now) override;
+  [[nodiscard]] std::optional<stream::TimePoint> next_deadline() const override;
+  std::optional<std::vector<std::uint8_t>> take_transmit() override;
+
+  // The scene: physical beams (1 = next to the connector cap) interrupted from `now` on;
+  // an error (nothing changed) when a beam is 0 or beyond the barrier.
+  std::error_code set_interrupted(std::span<const std::uint16_t> beams, stream::TimePoint now);
+  void set_faults(const Faults& faults) { faults_ = faults; }
+
+  [[nodiscard]] const Options& options() const { return options_; }
+  [[nodiscard]] const Counters& counters() const { return counters_; }
+  [[nodiscard]] const Faults& faults() const { return faults_; }
+  [[nodiscard]] std::vector<std::uint16_t> data_block() const;
+  [[nodiscard]] std::vector<Object> objects() const;
+  // PN1: an object is detected. PN2: two objects (object detection), or a hole seen for
+  // pn2_filter scans (hole detection) [Polaris manual §3].
+  [[nodiscard]] bool pn1() const;
+  [[nodiscard]] bool pn2(stream::TimePoint now) const;
+
+ private:
+  struct Pending {
+    stream::TimePoint due;
+    std::vector<std::uint8_t> bytes;
+  };
+
+  void start(stream::TimePoint now);
+  void advance(stream::TimePoint now);
+  void handle(const stream::GapFrame& frame);
+  void handle_request(const modbus::RtuFrame& request, stream::TimePoint end);
+  void answer(const modbus::RtuFrame& reply, stream::TimePoint end);
+  void push_data(stream::TimePoint due);
+  void schedule(std::vector<std::uint8_t> bytes, stream::TimePoint due);
+  [[nodiscard]] stream::TimePoint scan_end_after(stream::TimePoint t) const;
+
+  Options options_;
+  stream::Duration scan_;
+  stream::IdleGapFramer framer_;
+  std::vector<std::uint8_t> interrupted_;  // per physical beam, 1 = interrupted
+  stream::TimePoint scene_since_{};
+  std::optional<stream::TimePoint> epoch_;
+  std::optional<stream::TimePoint> next_push_;
+  std::deque<Pending> pending_;
+  std::deque<std::vector<std::uint8_t>> transmit_;
+  Counters counters_;
+  Faults faults_;
+};
+
+}  // namespace rs4sim::polaris

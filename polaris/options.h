@@ -1,0 +1,64 @@
+#pragma once
+// The Polaris barrier's configuration, as the PC tool "Polaris Read & Config" sets it
+// [Polaris manual §7.4.2], plus the emulator's own switches (marked DECISION/EXTENSION in
+// docs/polaris.md). The app parses flags into it; validate() says what is wrong.
+
+#include "polaris/model.h"
+#include "stream/clock.h"
+#include "stream/line_settings.h"
+
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace rs4sim::polaris {
+
+// What the barrier transmits [Polaris manual §7.4.3, §8.2]: one bit per beam (485MB) or
+// (first, last) pairs of 1, 4 or 10 objects plus the overall pair (FL1/FL4/FL10).
+enum class DataMode : std::uint8_t { k485Mb, kFl1, kFl4, kFl10 };
+enum class Role : std::uint8_t { kSlave, kMaster };
+// Direct: beam 1 next to the connector cap; reverse: beam 1 at the far cap.
+enum class ScanDirection : std::uint8_t { kDirect, kReverse };
+// What PN2 reports: two objects at once, or a hole confirmed for pn2_filter scans.
+enum class Detection : std::uint8_t { kObject, kHole };
+// 485MB: which bit of a word is the lowest beam (the manual does not say; DECISION LSB).
+enum class BitOrder : std::uint8_t { kLsbFirst, kMsbFirst };
+
+[[nodiscard]] std::string_view to_string(DataMode m) noexcept;
+[[nodiscard]] std::optional<DataMode> parse_data_mode(std::string_view text) noexcept;
+
+struct Options {
+  Family family = Family::kPl10;
+  std::uint16_t beams = 16;  // a count the family makes (PL10-160: 16 beams)
+  std::uint8_t address = 1;  // own address (slave) or the target slave's (master), 1..247
+  std::uint32_t baud = 19200;
+  DataMode mode = DataMode::k485Mb;
+  Role role = Role::kSlave;
+  std::optional<std::uint16_t> start_address;  // default 0x2000 (slave), 0 (master)
+  ScanDirection direction = ScanDirection::kDirect;
+  Detection detection = Detection::kObject;
+  std::uint16_t pn2_filter = 1;              // scans that confirm a hole, 1..255
+  std::chrono::milliseconds scan_time{100};  // master send period, 5..5000 ms
+  // One scan of the barrier; a slave answers when the scan in progress ends. Zero: from
+  // the beam count (DECISION: 0.3 ms + 14 µs per beam, the manual's 0.3..19.6 ms column).
+  stream::Duration response_time{};
+  bool nak_on_error = true;  // exception 0x07 on CRC error/bad function; false: standard
+  BitOrder bit_order = BitOrder::kLsbFirst;
+};
+
+inline constexpr std::uint16_t kDefaultSlaveStart = 0x2000;
+inline constexpr std::uint16_t kMinSlaveStart = 500;
+inline constexpr std::uint16_t kMaxSlaveStart = 12287;
+
+// The first register of the data block.
+[[nodiscard]] std::uint16_t start_address(const Options& o) noexcept;
+// The scan duration (response_time, or its default from the beam count).
+[[nodiscard]] stream::Duration scan_duration(const Options& o) noexcept;
+[[nodiscard]] stream::LineSettings line_settings(const Options& o) noexcept;
+
+// Empty when usable; otherwise one sentence naming the field, the value and the rule.
+[[nodiscard]] std::string validate(const Options& o);
+
+}  // namespace rs4sim::polaris
