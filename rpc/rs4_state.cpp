@@ -18,6 +18,8 @@ std::string kebab(std::string_view name) {
   return out;
 }
 
+}  // namespace
+
 const char* led_name(rs4::adapter::LedState s) {
   using rs4::adapter::LedState;
   switch (s) {
@@ -31,7 +33,7 @@ const char* led_name(rs4::adapter::LedState s) {
   return "unknown";
 }
 
-const char* phase_name(rs4::adapter::ProxyPhase p) {
+const char* proxy_phase_name(rs4::adapter::ProxyPhase p) {
   using rs4::adapter::ProxyPhase;
   switch (p) {
     case ProxyPhase::kWaitRs4: return "wait-rs4";
@@ -42,7 +44,7 @@ const char* phase_name(rs4::adapter::ProxyPhase p) {
   return "unknown";
 }
 
-}  // namespace
+std::string fdevice_name(profisafe::FDeviceState s) { return kebab(profisafe::to_string(s)); }
 
 void fill_state(const rs4::device::Rs4Device& device, std::uint8_t address, dp::TimePoint now,
                 v1::DeviceState& out) {
@@ -52,8 +54,8 @@ void fill_state(const rs4::device::Rs4Device& device, std::uint8_t address, dp::
   out.set_powered(device.powered());
   out.set_led(led_name(view.led));
   out.set_rs4_state(rs4::scanner::to_string(status.state));
-  out.set_fdevice_state(kebab(profisafe::to_string(view.fdevice)));
-  out.set_proxy_phase(phase_name(view.proxy));
+  out.set_fdevice_state(fdevice_name(view.fdevice));
+  out.set_proxy_phase(proxy_phase_name(view.proxy));
   out.set_connected(view.connected);
   out.set_pc_adapter_attached(view.pc_adapter_attached);
   out.set_input_byte(view.input_byte);

@@ -13,6 +13,8 @@
 
 namespace rs4sim::rpc {
 
+class EventHub;
+
 class Rs4Target {
  public:
   virtual ~Rs4Target() = default;
@@ -29,6 +31,8 @@ class Rs4Target {
   virtual dp::link::MemoryBus* bus() = 0;
   // Runs `f` on the loop after `delay` (simulated runs: advances time by `delay` first).
   virtual void after(dp::Duration delay, std::function<void()> f) = 0;
+  // The source of Observation.StreamEvents (rpc/event_hub.h); nullptr = no event stream.
+  virtual EventHub* events() { return nullptr; }
 
  protected:
   Rs4Target() = default;
