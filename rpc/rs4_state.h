@@ -13,6 +13,10 @@ void fill_state(const rs4::device::Rs4Device& device, std::uint8_t address, dp::
                 v1::DeviceState& out);
 void fill_contour(const rs4::device::Rs4Device& device, v1::Contour& out);
 
+// "steady-init" from kSteadyInit and the like.
+std::string kebab(std::string_view name);
+void fill_input_bits(const rs4::adapter::InputBits& bits, v1::InputBits& out);
+
 // The names the API documents: "steady-init", "sync-running", "wait-for-f-parameters" …
 const char* led_name(rs4::adapter::LedState s);
 const char* proxy_phase_name(rs4::adapter::ProxyPhase p);

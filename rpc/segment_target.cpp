@@ -1,5 +1,7 @@
 #include "rpc/segment_target.h"
 
+#include "rpc/rs4_state.h"
+
 namespace rs4sim::rpc {
 
 SegmentTarget::SegmentTarget(rs4::device::Rs4Segment& segment) : segment_(segment) {
@@ -32,6 +34,23 @@ void SegmentTarget::after(dp::Duration delay, std::function<void()> f) {
   segment_.run_for(delay);
   f();
   hub_->poll(segment_.now());
+}
+
+bool SegmentTarget::plc_view(std::uint8_t address, v1::PlcView& out) {
+  if (address != segment_.rs4_address()) return false;
+  const auto& host = segment_.fhost();
+  const auto& n = host.counters();
+  out.set_present(true);
+  out.set_fhost_state(kebab(profisafe::to_string(host.state())));
+  out.set_input_byte(segment_.input_byte());
+  fill_input_bits(rs4::adapter::decode_input_byte(segment_.input_byte()), *out.mutable_input());
+  out.set_data_exchange(segment_.in_data_exchange());
+  out.set_crc_errors(n.crc_errors);
+  out.set_number_errors(n.number_errors);
+  out.set_watchdog_timeouts(n.watchdog_timeouts);
+  out.set_passivations(n.passivations);
+  out.set_reintegrations(n.reintegrations);
+  return true;
 }
 
 }  // namespace rs4sim::rpc

@@ -21,6 +21,7 @@ class SegmentTarget final : public Rs4Target {
   void after(dp::Duration delay, std::function<void()> f) override;
   dp::link::MemoryBus* bus() override { return &segment_.bus(); }
   EventHub* events() override { return hub_.get(); }
+  bool plc_view(std::uint8_t address, v1::PlcView& out) override;
 
  private:
   rs4::device::Rs4Segment& segment_;

@@ -205,6 +205,61 @@ TEST_F(RpcRs4Test, SafetyFaultPassivatesTheHostAndSilenceDropsTheConnection) {
   }
 }
 
+// The PLC's view (DeviceState.plc): a CRC2 error counts and passivates; a muted F-device lets
+// F_WD_Time expire and the PLC reads fail-safe 0 (OSSD bit 0) while the scanner's OSSDs stay
+// on; with good PDUs again the F-host raises ACK_REQ and keeps the fail-safe values until the
+// operator acknowledges (this segment has no automatic ACK_REI) [RS4 manual §7.3.2].
+TEST_F(RpcRs4Test, ThePlcSeesFailSafeValuesWhileTheFHostIsPassivated) {
+  boot();
+  advance(50);  // the F-host unwraps the RS4's PDU one cycle later
+  auto plc = state().plc();
+  ASSERT_TRUE(plc.present());
+  EXPECT_EQ(plc.fhost_state(), "run");
+  EXPECT_TRUE(plc.input().ossd());
+  EXPECT_TRUE(plc.data_exchange());
+  const auto passivations = plc.passivations();
+  const auto safety_fault = [this](v1::SafetyFault fault, std::uint32_t count) {
+    grpc::ClientContext ctx;
+    v1::SafetyFaultRequest req;
+    req.set_address(4);
+    req.set_fault(fault);
+    req.set_count(count);
+    v1::Empty e;
+    ASSERT_TRUE(faults_stub_->InjectSafetyFault(&ctx, req, &e).ok());
+  };
+  safety_fault(v1::SAFETY_FAULT_CORRUPT_CRC2, 1);
+  advance(200);
+  plc = state().plc();
+  EXPECT_EQ(plc.crc_errors(), 1U);
+  EXPECT_EQ(plc.passivations(), passivations + 1);
+
+  safety_fault(v1::SAFETY_FAULT_MUTE, 1);
+  advance(1000);
+  const auto muted = state();
+  EXPECT_TRUE(muted.ossd());  // the scanner still has its OSSDs on …
+  EXPECT_FALSE(muted.plc().input().ossd());  // … the PLC reads the fail-safe 0
+  EXPECT_EQ(muted.plc().input_byte(), 0U);
+  EXPECT_NE(muted.plc().fhost_state(), "run");
+  EXPECT_GT(muted.plc().watchdog_timeouts(), 0U);
+  {
+    grpc::ClientContext ctx;
+    v1::StationRequest req;
+    req.set_address(4);
+    v1::Empty e;
+    ASSERT_TRUE(faults_stub_->ClearSafetyFaults(&ctx, req, &e).ok());
+  }
+  advance(1000);
+  plc = state().plc();
+  EXPECT_EQ(plc.fhost_state(), "ack-required");
+  EXPECT_FALSE(plc.input().ossd());
+  executor_.run([this] { segment_.ack_rei(); });  // the operator's acknowledgement
+  advance(200);
+  plc = state().plc();
+  EXPECT_EQ(plc.fhost_state(), "run");
+  EXPECT_TRUE(plc.input().ossd());
+  EXPECT_GT(plc.reintegrations(), 0U);
+}
+
 TEST_F(RpcRs4Test, StandardHealthServiceAnswersServing) {
   grpc::GenericStub stub(channel_);
   grpc::ClientContext ctx;
