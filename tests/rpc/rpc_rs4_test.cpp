@@ -236,7 +236,7 @@ TEST_F(RpcRs4Test, ThePlcSeesFailSafeValuesWhileTheFHostIsPassivated) {
   safety_fault(v1::SAFETY_FAULT_MUTE, 1);
   advance(1000);
   const auto muted = state();
-  EXPECT_TRUE(muted.ossd());  // the scanner still has its OSSDs on …
+  EXPECT_TRUE(muted.ossd());                 // the scanner still has its OSSDs on …
   EXPECT_FALSE(muted.plc().input().ossd());  // … the PLC reads the fail-safe 0
   EXPECT_EQ(muted.plc().input_byte(), 0U);
   EXPECT_NE(muted.plc().fhost_state(), "run");
