@@ -6,6 +6,7 @@
 #include "rpc/device_target.h"
 #include "rpc/rs4_services.h"
 #include "rpc/segment_target.h"
+#include "rpc/tapped_station.h"
 #include "rs4/adapter/rs4_gsd.h"
 #include "rs4/device/rs4_segment.h"
 
@@ -48,7 +49,7 @@ class Rs4Instance final : public DeviceInstance {
       : device_(device_config(o)),
         address_(static_cast<std::uint8_t>(*o.address)),
         boot_time_ms_(o.boot_time_ms) {}
-  std::vector<dp::Station*> stations() override { return {&device_}; }
+  std::vector<dp::Station*> stations() override { return {&tap_}; }
   void start(dp::TimePoint now) override { device_.power_on(now); }
   [[nodiscard]] std::string describe() const override {
     char ident[8];
@@ -63,11 +64,13 @@ class Rs4Instance final : public DeviceInstance {
   }
   ServiceList services(const ServiceContext& c) override {
     target_ = std::make_unique<rpc::DeviceTarget>(device_, address_, c.clock, c.io);
+    tap_.set_hub(target_->events());
     return rs4_services(*target_, c.executor);
   }
 
  private:
   Rs4Device device_;
+  rpc::TappedStation tap_{device_};  // telegrams for the event stream
   std::unique_ptr<rpc::DeviceTarget> target_;
   std::uint8_t address_;
   int boot_time_ms_;

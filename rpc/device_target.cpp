@@ -5,6 +5,27 @@
 #include <memory>
 
 namespace rs4sim::rpc {
+namespace {
+
+// Polls the hub every period until the loop stops (the timer lives in its own handler).
+void poll_every(const std::shared_ptr<boost::asio::steady_timer>& timer,
+                std::shared_ptr<EventHub> hub, const dp::Clock& clock) {
+  timer->expires_after(DeviceTarget::kPollPeriod);
+  timer->async_wait([timer, hub = std::move(hub), &clock](const boost::system::error_code& ec) {
+    if (ec) return;
+    hub->poll(clock.now());
+    poll_every(timer, hub, clock);
+  });
+}
+
+}  // namespace
+
+DeviceTarget::DeviceTarget(rs4::device::Rs4Device& device, std::uint8_t address,
+                           const dp::Clock& clock, boost::asio::io_context& io)
+    : device_(device), address_(address), clock_(clock), io_(io) {
+  hub_->watch(address, device);
+  poll_every(std::make_shared<boost::asio::steady_timer>(io), hub_, clock);
+}
 
 void DeviceTarget::after(dp::Duration delay, std::function<void()> f) {
   auto timer = std::make_shared<boost::asio::steady_timer>(io_, delay);

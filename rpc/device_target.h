@@ -1,19 +1,25 @@
 #pragma once
 // Rs4Target for an RS4 on a real-time link (rs4sim run --link pty|serial|udp --grpc): the
 // wall clock, timers on the run's io_context; no simulated time and no simulated bus, so
-// SimTime and the bus faults answer FAILED_PRECONDITION.
+// SimTime and the bus faults answer FAILED_PRECONDITION. Events: a timer polls the device
+// every kPollPeriod on the loop; telegrams come through a TappedStation (rpc/tapped_station.h).
 
+#include "rpc/event_hub.h"
 #include "rpc/rs4_target.h"
 
 #include <boost/asio/io_context.hpp>
+
+#include <memory>
 
 namespace rs4sim::rpc {
 
 class DeviceTarget final : public Rs4Target {
  public:
+  static constexpr dp::Duration kPollPeriod = std::chrono::milliseconds(5);
+
+  // Starts the poll timer on `io` (its handler holds the hub, not this target).
   DeviceTarget(rs4::device::Rs4Device& device, std::uint8_t address, const dp::Clock& clock,
-               boost::asio::io_context& io)
-      : device_(device), address_(address), clock_(clock), io_(io) {}
+               boost::asio::io_context& io);
   [[nodiscard]] std::vector<std::uint8_t> addresses() const override { return {address_}; }
   rs4::device::Rs4Device* device(std::uint8_t address) override {
     return address == address_ ? &device_ : nullptr;
@@ -23,12 +29,14 @@ class DeviceTarget final : public Rs4Target {
   bool run_until(const std::function<bool()>& done, dp::Duration) override { return done(); }
   void after(dp::Duration delay, std::function<void()> f) override;
   dp::link::MemoryBus* bus() override { return nullptr; }
+  EventHub* events() override { return hub_.get(); }
 
  private:
   rs4::device::Rs4Device& device_;
   std::uint8_t address_;
   const dp::Clock& clock_;
   boost::asio::io_context& io_;
+  std::shared_ptr<EventHub> hub_ = std::make_shared<EventHub>();
 };
 
 }  // namespace rs4sim::rpc

@@ -290,6 +290,9 @@ grpc::Status ObservationService::GetState(grpc::ServerContext*, const v1::Statio
                                           v1::DeviceState* out) {
   return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint now) {
     fill_state(d, static_cast<std::uint8_t>(in->address()), now, *out);
+    if (!c_.target.plc_view(static_cast<std::uint8_t>(in->address()), *out->mutable_plc())) {
+      out->clear_plc();
+    }
     return grpc::Status::OK;
   });
 }

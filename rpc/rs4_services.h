@@ -51,6 +51,9 @@ class ObservationService final : public v1::Observation::Service {
                         v1::DeviceState* out) override;
   grpc::Status GetContour(grpc::ServerContext*, const v1::StationRequest* in,
                           v1::Contour* out) override;
+  // rpc/event_stream.cpp
+  grpc::Status StreamEvents(grpc::ServerContext* context, const v1::StreamEventsRequest* in,
+                            grpc::ServerWriter<v1::Event>* out) override;
 
  private:
   Rs4Context c_;

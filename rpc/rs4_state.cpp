@@ -3,9 +3,7 @@
 #include <string>
 
 namespace rs4sim::rpc {
-namespace {
 
-// "steady-init" from kSteadyInit and the like: the names the API documents.
 std::string kebab(std::string_view name) {
   std::string out;
   for (const char c : name) {
@@ -16,6 +14,17 @@ std::string kebab(std::string_view name) {
     }
   }
   return out;
+}
+
+void fill_input_bits(const rs4::adapter::InputBits& bits, v1::InputBits& out) {
+  out.set_warning_field_violated(bits.warning_field);
+  out.set_protective_field_violated(bits.protective_field);
+  out.set_proxy_request(bits.proxy_request);
+  out.set_rs232_active(bits.rs232_active);
+  out.set_not_operational(bits.not_operational);
+  out.set_error(bits.error);
+  out.set_warning_output_active(bits.warning_output_active);
+  out.set_ossd(bits.ossd);
 }
 
 const char* led_name(rs4::adapter::LedState s) {
@@ -31,7 +40,7 @@ const char* led_name(rs4::adapter::LedState s) {
   return "unknown";
 }
 
-const char* phase_name(rs4::adapter::ProxyPhase p) {
+const char* proxy_phase_name(rs4::adapter::ProxyPhase p) {
   using rs4::adapter::ProxyPhase;
   switch (p) {
     case ProxyPhase::kWaitRs4: return "wait-rs4";
@@ -42,7 +51,7 @@ const char* phase_name(rs4::adapter::ProxyPhase p) {
   return "unknown";
 }
 
-}  // namespace
+std::string fdevice_name(profisafe::FDeviceState s) { return kebab(profisafe::to_string(s)); }
 
 void fill_state(const rs4::device::Rs4Device& device, std::uint8_t address, dp::TimePoint now,
                 v1::DeviceState& out) {
@@ -52,20 +61,12 @@ void fill_state(const rs4::device::Rs4Device& device, std::uint8_t address, dp::
   out.set_powered(device.powered());
   out.set_led(led_name(view.led));
   out.set_rs4_state(rs4::scanner::to_string(status.state));
-  out.set_fdevice_state(kebab(profisafe::to_string(view.fdevice)));
-  out.set_proxy_phase(phase_name(view.proxy));
+  out.set_fdevice_state(fdevice_name(view.fdevice));
+  out.set_proxy_phase(proxy_phase_name(view.proxy));
   out.set_connected(view.connected);
   out.set_pc_adapter_attached(view.pc_adapter_attached);
   out.set_input_byte(view.input_byte);
-  auto* in = out.mutable_input();
-  in->set_warning_field_violated(view.input.warning_field);
-  in->set_protective_field_violated(view.input.protective_field);
-  in->set_proxy_request(view.input.proxy_request);
-  in->set_rs232_active(view.input.rs232_active);
-  in->set_not_operational(view.input.not_operational);
-  in->set_error(view.input.error);
-  in->set_warning_output_active(view.input.warning_output_active);
-  in->set_ossd(view.input.ossd);
+  fill_input_bits(view.input, *out.mutable_input());
   out.set_output_byte(view.output_byte);
   auto* o = out.mutable_output();
   o->set_field_pair(view.output.field_pair);

@@ -6,12 +6,15 @@
 #include "dp/link/memory_bus.h"
 #include "dp/time/clock.h"
 #include "rs4/device/rs4_device.h"
+#include "rs4sim/v1/rs4.pb.h"
 
 #include <cstdint>
 #include <functional>
 #include <vector>
 
 namespace rs4sim::rpc {
+
+class EventHub;
 
 class Rs4Target {
  public:
@@ -29,6 +32,14 @@ class Rs4Target {
   virtual dp::link::MemoryBus* bus() = 0;
   // Runs `f` on the loop after `delay` (simulated runs: advances time by `delay` first).
   virtual void after(dp::Duration delay, std::function<void()> f) = 0;
+  // The source of Observation.StreamEvents (rpc/event_hub.h); nullptr = no event stream.
+  virtual EventHub* events() { return nullptr; }
+  // The PLC side of the station (the simulated bus's F-host) into `out`; false = none.
+  virtual bool plc_view(std::uint8_t address, v1::PlcView& out) {
+    (void)address;
+    (void)out;
+    return false;
+  }
 
  protected:
   Rs4Target() = default;

@@ -1,6 +1,22 @@
 #include "rpc/segment_target.h"
 
+#include "rpc/rs4_state.h"
+
 namespace rs4sim::rpc {
+
+SegmentTarget::SegmentTarget(rs4::device::Rs4Segment& segment) : segment_(segment) {
+  const auto address = segment.rs4_address();
+  hub_->watch(address, segment.device());
+  // The bus outlives nothing it calls: the observer holds the hub, not this target.
+  segment.bus().add_observer([hub = hub_, address, &segment](const dp::link::BusEvent& e) {
+    if (hub->wants_telegrams() && (e.from == address || e.to == address)) {
+      const auto direction =
+          e.from == address ? v1::DIRECTION_FROM_STATION : v1::DIRECTION_TO_STATION;
+      hub->telegram(address, direction, e.wire, dp::link::to_string(e.fate), e.time);
+    }
+    hub->poll(segment.now());
+  });
+}
 
 std::vector<std::uint8_t> SegmentTarget::addresses() const { return {segment_.rs4_address()}; }
 
@@ -9,12 +25,32 @@ rs4::device::Rs4Device* SegmentTarget::device(std::uint8_t address) {
 }
 
 bool SegmentTarget::run_until(const std::function<bool()>& done, dp::Duration limit) {
-  return segment_.run_until(done, limit);
+  const bool reached = segment_.run_until(done, limit);
+  hub_->poll(segment_.now());
+  return reached;
 }
 
 void SegmentTarget::after(dp::Duration delay, std::function<void()> f) {
   segment_.run_for(delay);
   f();
+  hub_->poll(segment_.now());
+}
+
+bool SegmentTarget::plc_view(std::uint8_t address, v1::PlcView& out) {
+  if (address != segment_.rs4_address()) return false;
+  const auto& host = segment_.fhost();
+  const auto& n = host.counters();
+  out.set_present(true);
+  out.set_fhost_state(kebab(profisafe::to_string(host.state())));
+  out.set_input_byte(segment_.input_byte());
+  fill_input_bits(rs4::adapter::decode_input_byte(segment_.input_byte()), *out.mutable_input());
+  out.set_data_exchange(segment_.in_data_exchange());
+  out.set_crc_errors(n.crc_errors);
+  out.set_number_errors(n.number_errors);
+  out.set_watchdog_timeouts(n.watchdog_timeouts);
+  out.set_passivations(n.passivations);
+  out.set_reintegrations(n.reintegrations);
+  return true;
 }
 
 }  // namespace rs4sim::rpc

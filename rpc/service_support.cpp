@@ -1,5 +1,6 @@
 #include "rpc/service_support.h"
 
+#include "rpc/event_hub.h"
 #include "rpc/status.h"
 
 #include <string>
@@ -15,6 +16,11 @@ std::string station_list(const Rs4Target& target) {
 
 }  // namespace
 
+grpc::Status unknown_station(const Rs4Target& target, std::uint32_t address) {
+  return not_found("no RS4 at station " + std::to_string(address) +
+                   " (stations: " + station_list(target) + ")");
+}
+
 grpc::Status on_device(const Rs4Context& c, std::uint32_t address, const DeviceFn& fn) {
   if (address > 126) {
     return invalid_argument("address",
@@ -24,11 +30,11 @@ grpc::Status on_device(const Rs4Context& c, std::uint32_t address, const DeviceF
   c.executor.run([&] {
     auto* device = c.target.device(static_cast<std::uint8_t>(address));
     if (device == nullptr) {
-      result = not_found("no RS4 at station " + std::to_string(address) +
-                         " (stations: " + station_list(c.target) + ")");
+      result = unknown_station(c.target, address);
       return;
     }
     result = fn(*device, c.target.now());
+    if (auto* hub = c.target.events()) hub->poll(c.target.now());  // the change, at once
   });
   return result;
 }

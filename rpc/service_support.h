@@ -15,6 +15,9 @@ using DeviceFn = std::function<grpc::Status(rs4::device::Rs4Device&, dp::TimePoi
 
 // Checks the address (INVALID_ARGUMENT), then runs `fn` with the device on the loop
 // (NOT_FOUND for an unknown station).
+// NOT_FOUND naming the stations there are.
+grpc::Status unknown_station(const Rs4Target& target, std::uint32_t address);
+
 grpc::Status on_device(const Rs4Context& c, std::uint32_t address, const DeviceFn& fn);
 
 // FAILED_PRECONDITION: the call needs the manual clock (SimTime) or the simulated bus.

@@ -27,16 +27,62 @@ try:
     address = line.split()[-1]
     rs4 = Rs4(address)
 
+    # The issue's scenario: violate the field, check OSSD, restart, check OSSD, inject a CRC
+    # fault, check the PLC-relevant bits; the event stream watches all of it.
+    events = rs4.events()
     rs4.boot()
     assert rs4.ossd(), "OSSD on after boot and restart pulse"
     assert rs4.now() >= 30, "the boot took the RS4's ≈30 s of simulated time"
     obstacle = rs4.violate_field("protective")
     assert rs4.run_until("OSSD_OFF", 0.5)
     assert rs4.state().input.protective_field_violated
+    rs4.advance(0.05)
+    assert not rs4.plc().input.ossd, "the PLC reads the OSSD bit 0"
     rs4.remove(obstacle)
     assert not rs4.run_until("OSSD_ON", 1), "restart interlock holds the OSSD off"
     rs4.press_restart(300)
     assert rs4.run_until("OSSD_ON", 1)
+    rs4.advance(0.05)
+    plc = rs4.plc()
+    assert plc.present and plc.fhost_state == "run" and plc.input.ossd, plc
+
+    rs4.safety_fault("CORRUPT_CRC2")
+    rs4.advance(0.2)
+    after = rs4.plc()
+    assert after.crc_errors == plc.crc_errors + 1, after
+    assert after.passivations == plc.passivations + 1, after
+    rs4.safety_fault("MUTE")  # no fresh PDU: F_WD_Time expires
+    rs4.advance(1)
+    muted = rs4.state()
+    assert muted.ossd and not muted.plc.input.ossd and muted.plc.input_byte == 0, muted.plc
+    rs4.clear_safety_faults()
+    rs4.advance(1)  # `run` acknowledges (ACK_REI) by itself
+    assert rs4.plc().input.ossd and rs4.plc().fhost_state == "run", rs4.plc()
+
+    ossd = []
+    for event in events:
+        if event.HasField("state") and event.state.what == "ossd":
+            ossd.append((getattr(event.state, "from"), event.state.to))
+            if len(ossd) == 4:
+                break
+    assert ossd == [("", "off"), ("off", "on"), ("on", "off"), ("off", "on")], ossd
+    events.cancel()
+
+    telegrams = rs4.events(telegrams=True)
+    rs4.advance(0.1)
+    directions = set()
+    for event in telegrams:
+        if event.HasField("telegram"):
+            directions.add(event.telegram.direction)
+            if len(directions) == 2:
+                break
+    telegrams.cancel()
+    try:
+        next(iter(rs4.events(queue_capacity=5)))
+        raise AssertionError("queue_capacity 5 accepted")
+    except grpc.RpcError as e:
+        code, violations, _ = error_details(e)
+        assert code == "INVALID_ARGUMENT" and violations[0][0] == "queue_capacity", violations
 
     try:
         rs4.set_contamination(150)

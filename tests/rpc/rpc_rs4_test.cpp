@@ -3,113 +3,15 @@
 // RS4 manual's behaviour (boot ≈30 s, OSSD off on a protective-field violation, restart
 // interlock) and the public wire formats of grpc.health.v1 (HealthCheckResponse{status =
 // SERVING} = 08 01) and google.rpc.Status/BadRequest.
-#include "google/rpc/error_details.pb.h"
-#include "google/rpc/status.pb.h"
-#include "rpc/executor.h"
-#include "rpc/rs4_services.h"
-#include "rpc/segment_target.h"
-#include "rpc/server.h"
-#include "rs4sim/v1/rs4.grpc.pb.h"
+#include "rs4_fixture.h"
 
-#include <boost/asio/executor_work_guard.hpp>
-#include <boost/asio/io_context.hpp>
-#include <gtest/gtest.h>
-
-#include <grpcpp/create_channel.h>
 #include <grpcpp/generic/generic_stub.h>
-#include <grpcpp/security/credentials.h>
 #include <grpcpp/support/byte_buffer.h>
 
 #include <future>
-#include <memory>
-#include <thread>
 
 namespace rs4sim::rpc {
 namespace {
-
-using namespace std::chrono_literals;
-
-class RpcRs4Test : public ::testing::Test {
- protected:
-  void SetUp() override {
-    segment_.power_on();
-    loop_ = std::thread([this] { io_.run(); });
-    server_ = std::make_unique<RpcServer>(
-        ServerOptions{}, std::vector<grpc::Service*>{&device_, &observation_, &time_, &faults_});
-    channel_ = grpc::CreateChannel(server_->address(), grpc::InsecureChannelCredentials());
-    device_stub_ = v1::Device::NewStub(channel_);
-    observation_stub_ = v1::Observation::NewStub(channel_);
-    time_stub_ = v1::SimTime::NewStub(channel_);
-    faults_stub_ = v1::Faults::NewStub(channel_);
-  }
-  void TearDown() override {
-    server_->shutdown();
-    work_.reset();
-    loop_.join();
-  }
-
-  bool run_until(v1::Condition condition, std::uint64_t timeout_ms) {
-    grpc::ClientContext ctx;
-    v1::RunUntilRequest req;
-    req.set_address(4);
-    req.set_condition(condition);
-    req.set_timeout_ms(timeout_ms);
-    v1::RunUntilResponse res;
-    const auto status = time_stub_->RunUntil(&ctx, req, &res);
-    EXPECT_TRUE(status.ok()) << status.error_message();
-    return res.reached();
-  }
-  v1::DeviceState state() {
-    grpc::ClientContext ctx;
-    v1::StationRequest req;
-    req.set_address(4);
-    v1::DeviceState out;
-    EXPECT_TRUE(observation_stub_->GetState(&ctx, req, &out).ok());
-    return out;
-  }
-  void advance(std::uint64_t ms) {
-    grpc::ClientContext ctx;
-    v1::AdvanceRequest req;
-    req.set_duration_ms(ms);
-    v1::TimeResponse t;
-    ASSERT_TRUE(time_stub_->Advance(&ctx, req, &t).ok());
-  }
-  void press_restart(std::uint32_t ms) {
-    grpc::ClientContext ctx;
-    v1::PressRestartRequest req;
-    req.set_address(4);
-    req.set_duration_ms(ms);
-    v1::Empty e;
-    ASSERT_TRUE(device_stub_->PressRestart(&ctx, req, &e).ok());
-  }
-  // Power-up with the factory start/restart interlock: the OSSD waits for a restart pulse
-  // once the RS4 measures [RS4 manual §4.3].
-  void boot() {
-    ASSERT_TRUE(run_until(v1::CONDITION_DATA_EXCHANGE, 10'000));
-    ASSERT_TRUE(run_until(v1::CONDITION_RS4_MEASURING, 60'000));
-    ASSERT_FALSE(run_until(v1::CONDITION_OSSD_ON, 500));
-    press_restart(200);
-    ASSERT_TRUE(run_until(v1::CONDITION_OSSD_ON, 1000));
-  }
-
-  rs4::device::Rs4Segment segment_{rs4::device::Rs4SegmentConfig{}};
-  boost::asio::io_context io_;
-  std::optional<boost::asio::executor_work_guard<boost::asio::io_context::executor_type>> work_{
-      io_.get_executor()};
-  std::thread loop_;
-  SegmentTarget target_{segment_};
-  AsioExecutor executor_{io_};
-  DeviceService device_{{target_, executor_}};
-  ObservationService observation_{{target_, executor_}};
-  SimTimeService time_{{target_, executor_}};
-  FaultsService faults_{{target_, executor_}};
-  std::unique_ptr<RpcServer> server_;
-  std::shared_ptr<grpc::Channel> channel_;
-  std::unique_ptr<v1::Device::Stub> device_stub_;
-  std::unique_ptr<v1::Observation::Stub> observation_stub_;
-  std::unique_ptr<v1::SimTime::Stub> time_stub_;
-  std::unique_ptr<v1::Faults::Stub> faults_stub_;
-};
 
 TEST_F(RpcRs4Test, ListensOnLoopbackOnly) {
   EXPECT_EQ(server_->address().rfind("127.0.0.1:", 0), 0U) << server_->address();
@@ -164,15 +66,6 @@ TEST_F(RpcRs4Test, ProtectiveFieldViolationAndRestart) {
   EXPECT_FALSE(run_until(v1::CONDITION_OSSD_ON, 1000));
   press_restart(300);
   EXPECT_TRUE(run_until(v1::CONDITION_OSSD_ON, 1000));
-}
-
-// The BadRequest field of an INVALID_ARGUMENT status.
-std::string bad_field(const grpc::Status& status) {
-  google::rpc::Status rich;
-  if (!rich.ParseFromString(status.error_details()) || rich.details_size() != 1) return "?";
-  google::rpc::BadRequest bad;
-  if (!rich.details(0).UnpackTo(&bad) || bad.field_violations_size() != 1) return "?";
-  return bad.field_violations(0).field();
 }
 
 TEST_F(RpcRs4Test, BadInputGetsASpecificStatus) {
@@ -310,6 +203,61 @@ TEST_F(RpcRs4Test, SafetyFaultPassivatesTheHostAndSilenceDropsTheConnection) {
     const auto s = faults_stub_->InjectBusFault(&c2, req, &r);
     EXPECT_EQ(bad_field(s), "delay_ms");
   }
+}
+
+// The PLC's view (DeviceState.plc): a CRC2 error counts and passivates; a muted F-device lets
+// F_WD_Time expire and the PLC reads fail-safe 0 (OSSD bit 0) while the scanner's OSSDs stay
+// on; with good PDUs again the F-host raises ACK_REQ and keeps the fail-safe values until the
+// operator acknowledges (this segment has no automatic ACK_REI) [RS4 manual §7.3.2].
+TEST_F(RpcRs4Test, ThePlcSeesFailSafeValuesWhileTheFHostIsPassivated) {
+  boot();
+  advance(50);  // the F-host unwraps the RS4's PDU one cycle later
+  auto plc = state().plc();
+  ASSERT_TRUE(plc.present());
+  EXPECT_EQ(plc.fhost_state(), "run");
+  EXPECT_TRUE(plc.input().ossd());
+  EXPECT_TRUE(plc.data_exchange());
+  const auto passivations = plc.passivations();
+  const auto safety_fault = [this](v1::SafetyFault fault, std::uint32_t count) {
+    grpc::ClientContext ctx;
+    v1::SafetyFaultRequest req;
+    req.set_address(4);
+    req.set_fault(fault);
+    req.set_count(count);
+    v1::Empty e;
+    ASSERT_TRUE(faults_stub_->InjectSafetyFault(&ctx, req, &e).ok());
+  };
+  safety_fault(v1::SAFETY_FAULT_CORRUPT_CRC2, 1);
+  advance(200);
+  plc = state().plc();
+  EXPECT_EQ(plc.crc_errors(), 1U);
+  EXPECT_EQ(plc.passivations(), passivations + 1);
+
+  safety_fault(v1::SAFETY_FAULT_MUTE, 1);
+  advance(1000);
+  const auto muted = state();
+  EXPECT_TRUE(muted.ossd());                 // the scanner still has its OSSDs on …
+  EXPECT_FALSE(muted.plc().input().ossd());  // … the PLC reads the fail-safe 0
+  EXPECT_EQ(muted.plc().input_byte(), 0U);
+  EXPECT_NE(muted.plc().fhost_state(), "run");
+  EXPECT_GT(muted.plc().watchdog_timeouts(), 0U);
+  {
+    grpc::ClientContext ctx;
+    v1::StationRequest req;
+    req.set_address(4);
+    v1::Empty e;
+    ASSERT_TRUE(faults_stub_->ClearSafetyFaults(&ctx, req, &e).ok());
+  }
+  advance(1000);
+  plc = state().plc();
+  EXPECT_EQ(plc.fhost_state(), "ack-required");
+  EXPECT_FALSE(plc.input().ossd());
+  executor_.run([this] { segment_.ack_rei(); });  // the operator's acknowledgement
+  advance(200);
+  plc = state().plc();
+  EXPECT_EQ(plc.fhost_state(), "run");
+  EXPECT_TRUE(plc.input().ossd());
+  EXPECT_GT(plc.reintegrations(), 0U);
 }
 
 TEST_F(RpcRs4Test, StandardHealthServiceAnswersServing) {

@@ -103,6 +103,27 @@ class Rs4:
     def ossd(self):
         return self.state().input.ossd
 
+    def plc(self):
+        """What the PLC reads (simulated bus): F-host state, input byte and bits, counters."""
+        return self.state().plc
+
+    def events(self, telegrams=False, queue_capacity=0, stations=None):
+        """The event stream (an iterator of Event; .cancel() ends it): the current state
+        first (StateChange with from = ""), then every change, alarm, diagnosis change and,
+        with telegrams=True, every telegram. A slow reader gets Event.dropped with the count."""
+        addresses = [self.station] if stations is None else stations
+        return self.observation.StreamEvents(pb.StreamEventsRequest(
+            addresses=addresses, telegrams=telegrams, queue_capacity=queue_capacity))
+
+    # ---- faults on the bus and in the safety layer -------------------------------------------
+    def safety_fault(self, name, count=1):
+        """name: CORRUPT_CRC2, REPEAT_NUMBER, SKIP_NUMBER, MUTE."""
+        self.faults.InjectSafetyFault(pb.SafetyFaultRequest(
+            address=self.station, fault=pb.SafetyFault.Value("SAFETY_FAULT_" + name), count=count))
+
+    def clear_safety_faults(self):
+        self.faults.ClearSafetyFaults(pb.StationRequest(address=self.station))
+
     # ---- the world and the user's hands ----------------------------------------------------
     def violate_field(self, field="protective"):
         kind = pb.FieldKind.Value("FIELD_KIND_" + field.upper())

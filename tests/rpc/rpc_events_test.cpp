@@ -1,0 +1,161 @@
+// Observation.StreamEvents end to end on a real server on loopback (docs/rpc.md "Event
+// stream"): the snapshot, the state changes of a boot and a protective-field violation in
+// the manual's order [RS4 manual §4.3], every telegram with its direction and wire bytes,
+// a slow client's EventsDropped, and the bad-input statuses.
+#include "rs4_fixture.h"
+
+#include <chrono>
+#include <map>
+#include <string>
+
+namespace rs4sim::rpc {
+namespace {
+
+class RpcEventsTest : public RpcRs4Test {
+ protected:
+  std::unique_ptr<grpc::ClientReader<v1::Event>> open(grpc::ClientContext& ctx,
+                                                      const v1::StreamEventsRequest& req) {
+    ctx.set_deadline(std::chrono::system_clock::now() + 20s);
+    return observation_stub_->StreamEvents(&ctx, req);
+  }
+  // Reads until a StateChange `what` → `to` arrived; the StateChanges read on the way.
+  static std::vector<v1::StateChange> read_until(grpc::ClientReader<v1::Event>& reader,
+                                                 const std::string& what, const std::string& to) {
+    std::vector<v1::StateChange> seen;
+    v1::Event e;
+    while (reader.Read(&e)) {
+      if (!e.has_state()) continue;
+      seen.push_back(e.state());
+      if (e.state().what() == what && e.state().to() == to) return seen;
+    }
+    ADD_FAILURE() << "stream ended before " << what << " → " << to << ": "
+                  << reader.Finish().error_message();
+    return seen;
+  }
+  grpc::Status stream_status(const v1::StreamEventsRequest& req) {
+    grpc::ClientContext ctx;
+    auto reader = open(ctx, req);
+    v1::Event e;
+    EXPECT_FALSE(reader->Read(&e));
+    return reader->Finish();
+  }
+};
+
+TEST_F(RpcEventsTest, SnapshotThenTheBootAndAViolationInOrder) {
+  grpc::ClientContext ctx;
+  v1::StreamEventsRequest req;
+  auto reader = open(ctx, req);
+  // The snapshot: every item with from = "" (the server subscribes before the first Read).
+  std::map<std::string, std::string> snapshot;
+  v1::Event e;
+  std::uint64_t sequence = 0;
+  while (snapshot.size() < 10 && reader->Read(&e)) {
+    EXPECT_EQ(e.sequence(), ++sequence);
+    EXPECT_EQ(e.address(), 4U);
+    if (e.has_state()) {
+      EXPECT_EQ(e.state().from(), "");
+      snapshot[e.state().what()] = e.state().to();
+    }
+  }
+  EXPECT_EQ(snapshot["powered"], "on");
+  EXPECT_EQ(snapshot["ossd"], "off");
+  EXPECT_EQ(snapshot["dp-state"], "Wait_Prm");
+
+  boot();
+  const auto to_exchange = read_until(*reader, "dp-state", "Data_Exch");
+  EXPECT_FALSE(to_exchange.empty());
+  const auto to_ossd = read_until(*reader, "ossd", "on");
+  EXPECT_EQ(to_ossd.back().from(), "off");
+
+  grpc::ClientContext c2;
+  v1::ViolateFieldRequest violate;
+  violate.set_address(4);
+  violate.set_field(v1::FIELD_KIND_PROTECTIVE);
+  v1::AddObstacleResponse obstacle;
+  ASSERT_TRUE(device_stub_->ViolateField(&c2, violate, &obstacle).ok());
+  ASSERT_TRUE(run_until(v1::CONDITION_OSSD_OFF, 500));
+  const auto off = read_until(*reader, "ossd", "off");
+  EXPECT_EQ(off.back().from(), "on");
+  ctx.TryCancel();
+  EXPECT_EQ(reader->Finish().error_code(), grpc::StatusCode::CANCELLED);
+}
+
+TEST_F(RpcEventsTest, EveryTelegramWithDirectionTimeAndWireBytes) {
+  boot();
+  grpc::ClientContext ctx;
+  v1::StreamEventsRequest req;
+  req.add_addresses(4);
+  req.set_telegrams(true);
+  auto reader = open(ctx, req);
+  advance(100);
+  int to_station = 0;
+  int from_station = 0;
+  std::int64_t last_ns = 0;
+  v1::Event e;
+  while (to_station < 5 || from_station < 5) {
+    ASSERT_TRUE(reader->Read(&e));
+    if (!e.has_telegram()) continue;
+    const auto& t = e.telegram();
+    ASSERT_FALSE(t.frame().empty());
+    // SD1 10, SD2 68, SD3 A2, SD4 DC, short acknowledgement E5 [IEC 61158-4-3 frame formats].
+    const auto sd = static_cast<std::uint8_t>(t.frame()[0]);
+    EXPECT_TRUE(sd == 0x10 || sd == 0x68 || sd == 0xA2 || sd == 0xDC || sd == 0xE5) << int(sd);
+    EXPECT_EQ(t.fate(), "delivered");
+    EXPECT_GE(e.now_ns(), last_ns);
+    last_ns = e.now_ns();
+    if (t.direction() == v1::DIRECTION_TO_STATION) {
+      ++to_station;
+      if (sd == 0x68) {
+        EXPECT_EQ(static_cast<std::uint8_t>(t.frame()[4]) & 0x7F, 4);  // DA (bit 7: SAPs)
+      }
+    } else {
+      ASSERT_EQ(t.direction(), v1::DIRECTION_FROM_STATION);
+      ++from_station;
+    }
+  }
+  ctx.TryCancel();
+  (void)reader->Finish();
+}
+
+TEST_F(RpcEventsTest, ASlowClientGetsEventsDroppedNotUnboundedMemory) {
+  grpc::ClientContext ctx;
+  v1::StreamEventsRequest req;
+  req.set_telegrams(true);
+  req.set_queue_capacity(16);
+  auto reader = open(ctx, req);
+  v1::Event e;
+  ASSERT_TRUE(reader->Read(&e));  // subscribed: the snapshot is on its way
+  // ≈6000 cycles of telegrams while nobody reads: more than the 16 queued plus what the
+  // transport buffers (HTTP/2 flow-control window, socket buffers) hold.
+  advance(60'000);
+  std::uint64_t dropped = 0;
+  std::uint64_t sequence = e.sequence();
+  while (dropped == 0 && reader->Read(&e)) {
+    EXPECT_EQ(e.sequence(), ++sequence);  // the gap is an event, not a hole
+    if (e.has_dropped()) dropped = e.dropped().count();
+  }
+  EXPECT_GT(dropped, 100U);
+  ctx.TryCancel();
+  (void)reader->Finish();
+}
+
+TEST_F(RpcEventsTest, BadInputGetsASpecificStatus) {
+  v1::StreamEventsRequest req;
+  req.set_queue_capacity(5);
+  auto s = stream_status(req);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad_field(s), "queue_capacity");
+  req.set_queue_capacity(0);
+  req.add_addresses(4);
+  req.add_addresses(200);
+  s = stream_status(req);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad_field(s), "addresses[1]");
+  req.set_addresses(1, 9);
+  s = stream_status(req);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::NOT_FOUND);
+  EXPECT_NE(s.error_message().find("station 9"), std::string::npos) << s.error_message();
+}
+
+}  // namespace
+}  // namespace rs4sim::rpc
