@@ -20,7 +20,11 @@ const CommandRegistration kDemo(
       add_capture_options(cmd, options->capture);
       cmd.add_option("--archive", options->archive,
                      "rs4: keep the sets the demo's proxy archives in this SQLite file");
-      return [device, options]() { return find_device(*device)->demo(std::cout, *options); };
+      return [device, options]() {
+        const DeviceEntry& entry = *find_device(*device);
+        if (!entry.demo) throw UsageError("--device " + *device + " has no demo yet");
+        return entry.demo(std::cout, *options);
+      };
     });
 
 }  // namespace

@@ -33,8 +33,11 @@ struct LineFrame {
 };
 
 enum class Pacing : std::uint8_t {
-  kWhole,         // the device gets the frame in one chunk when its last byte has arrived
-  kPerCharacter,  // the device gets each byte when it has arrived (inter-character timing)
+  // The device gets the write in one chunk when its last byte has arrived. Two writes back
+  // to back then arrive one wire time apart: a framer cutting by silence sees two frames.
+  kWhole,
+  // The device gets each byte when it has arrived: inter-character timing as on the wire.
+  kPerCharacter,
 };
 
 class MemoryLine {

@@ -1,7 +1,7 @@
 #pragma once
 // Puts a tty file descriptor into a stream::LineSettings character format: raw bytes, 5..8
 // data bits, no/even/odd parity, 1 or 2 stop bits, at any rate (e.g. PROFIBUS's 8E1
-// [IEC 61158-4-3 UART character], GridScan's 115200 8N1 [GridScan manual §9.2.3], METRON's
+// [IEC 61158-4-3 UART character], GridScan's 115200 8N1 [GridScan manual §9.1], METRON's
 // 19200 8E1 [METRON manual "Slave line mode"]).
 //
 // Standard termios speeds (B9600 … B4000000) are set with cfsetspeed; any other rate (45.45k,

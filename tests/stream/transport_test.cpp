@@ -37,7 +37,7 @@ class PtyFormatTest : public ::testing::Test {
 // note, never an error, and every note went to the log.
 TEST_F(PtyFormatTest, EveryFormatAndRateIsSetOrNoted) {
   const LineSettings lines[] = {
-      {115200, 8, Parity::kNone, 1},  // GridScan [GridScan manual §9.2.3]
+      {115200, 8, Parity::kNone, 1},  // GridScan [GridScan manual §9.1]
       {19200, 8, Parity::kEven, 1},   // METRON slave line mode [METRON manual "Slave line mode"]
       {9600, 7, Parity::kOdd, 2},      {1500000, 8, Parity::kEven, 1},
       {93750, 8, Parity::kEven, 1},  // no B-constant: termios2/BOTHER
