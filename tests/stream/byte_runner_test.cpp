@@ -7,6 +7,7 @@
 #include "stream/pty.h"
 #include "stream/serial_transport.h"
 #include "stream/udp_transport.h"
+#include "tests/stream/run_until.h"
 
 #include <gtest/gtest.h>
 
@@ -25,14 +26,7 @@ namespace asio = boost::asio;
 
 constexpr LineSettings k115200{115200, 8, Parity::kNone, 1};
 
-bool run_until(asio::io_context& io, const std::function<bool()>& done, Duration timeout = 10s) {
-  const auto end = SteadyClock::now() + timeout;
-  while (!done() && SteadyClock::now() < end) {
-    io.run_for(5ms);
-    if (io.stopped()) io.restart();
-  }
-  return done();
-}
+using testing::run_until;
 
 // The client side of the pty: raw writes, and reads of whatever has arrived.
 class PtyClient {
@@ -62,6 +56,16 @@ class PtyClient {
   int fd_;
 };
 
+// Runs the loop until `client` has read at least `n` bytes; returns them.
+Bytes read_at_least(asio::io_context& io, const PtyClient& client, std::size_t n) {
+  Bytes got;
+  (void)run_until(io, [&] {
+    client.read_into(got);
+    return got.size() >= n;
+  });
+  return got;
+}
+
 class BytePtyTest : public ::testing::Test {
  protected:
   asio::io_context io;
@@ -79,11 +83,7 @@ TEST_F(BytePtyTest, AFrameIsEchoedAfterTheIdleGap) {
   ASSERT_TRUE(client.ok());
   const Bytes frame = {0x02, 0x10, 0x20, 0x30, 0x03};
   client.write(frame);
-  Bytes got;
-  ASSERT_TRUE(run_until(io, [&] {
-    client.read_into(got);
-    return got.size() >= frame.size();
-  }));
+  const Bytes got = read_at_least(io, client, frame.size());
   EXPECT_EQ(got, frame);
   EXPECT_EQ(runner.counters().bytes_received, frame.size());
   EXPECT_EQ(runner.counters().frames_sent, 1U);
@@ -103,11 +103,7 @@ TEST_F(BytePtyTest, APartialFrameAcrossReadsIsCompletedWithinTheGap) {
   client.write({0x01, 0x02});
   ASSERT_TRUE(run_until(io, [&] { return runner.counters().bytes_received == 2; }));
   client.write({0x03});
-  Bytes got;
-  ASSERT_TRUE(run_until(io, [&] {
-    client.read_into(got);
-    return got.size() >= 3;
-  }));
+  const Bytes got = read_at_least(io, client, 3);
   EXPECT_EQ(got, (Bytes{0x01, 0x02, 0x03}));
   EXPECT_GE(runner.counters().chunks_received, 2U);
   EXPECT_EQ(slow.framer_stats().frames, 1U);
@@ -126,11 +122,7 @@ TEST_F(BytePtyTest, DeadlinesFireOnTheRunnersTimer) {
   runner.start();
   PtyClient client(pty.slave_path());
   client.write({0x7E});
-  Bytes got;
-  ASSERT_TRUE(run_until(io, [&] {
-    client.read_into(got);
-    return !got.empty();
-  }));
+  const Bytes got = read_at_least(io, client, 1);
   ASSERT_EQ(tapped.size(), 2U);
   EXPECT_EQ(tapped[0].first, FrameDirection::kReceived);
   EXPECT_EQ(tapped[1].first, FrameDirection::kSent);
@@ -146,11 +138,7 @@ TEST_F(BytePtyTest, AWakeFromOutsideSendsAtOnce) {
   PtyClient client(pty.slave_path());
   echo.say({0xCA, 0xFE});  // as a scene change from the API would
   echo.say({0xBE});        // coalesced into the same posted drain
-  Bytes got;
-  ASSERT_TRUE(run_until(io, [&] {
-    client.read_into(got);
-    return got.size() >= 3;
-  }));
+  const Bytes got = read_at_least(io, client, 3);
   EXPECT_EQ(got, (Bytes{0xCA, 0xFE, 0xBE}));
   EXPECT_EQ(runner.counters().frames_sent, 2U);
   runner.stop();

@@ -8,6 +8,7 @@
 #include "stream/serial_transport.h"
 #include "stream/udp_transport.h"
 #include "tests/dp/link/fake_station.h"
+#include "tests/stream/run_until.h"
 
 #include <gtest/gtest.h>
 
@@ -28,15 +29,7 @@ using stream::SerialTransport;
 using stream::UdpTransport;
 namespace asio = boost::asio;
 
-// Runs the io_context until `done()` or `timeout`; returns done().
-bool run_until(asio::io_context& io, const std::function<bool()>& done, Duration timeout = 10s) {
-  const auto end = SteadyClock::now() + timeout;
-  while (!done() && SteadyClock::now() < end) {
-    io.run_for(5ms);
-    if (io.stopped()) io.restart();
-  }
-  return done();
-}
+using stream::testing::run_until;
 
 class PtyLinkTest : public ::testing::Test {
  protected:
