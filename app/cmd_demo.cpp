@@ -25,8 +25,10 @@ const CommandRegistration kDemo(
       cmd.add_flag("--realtime", options->realtime,
                    "run at the device's real timing (the RS4 demo takes about a minute)");
       return [device, options]() {
+        const DeviceEntry& entry = *find_device(*device);
+        if (!entry.demo) throw UsageError("--device " + *device + " has no demo yet");
         options->live_progress = isatty(STDOUT_FILENO) != 0;
-        return find_device(*device)->demo(std::cout, *options);
+        return entry.demo(std::cout, *options);
       };
     });
 

@@ -7,8 +7,12 @@
 //   rs4sim run ... --link udp --listen 127.0.0.1:5001 --peer 127.0.0.1:5000
 //   rs4sim run ... --link memory --duration 10     (our master on the in-memory bus,
 //                                                   simulated time)
-// With --link pty the first line on stdout is the pty's slave path for the DP master.
+//   rs4sim run --device <byte device> --link pty --baud 19200 --blocked 9-13,25-34
+//                                                  (the RS-485 devices: pty, serial, udp)
+// With --link pty the first line on stdout is the pty's slave path for the DP master (or
+// the byte device's client).
 #include "app/command.h"
+#include "app/device_options.h"
 #include "app/link_cli.h"
 #include "app/shell.h"
 
@@ -21,6 +25,7 @@ namespace {
 struct RunOptions {
   std::string device;  // empty: rs4, or generic when --ident/--cfg describe a generic slave
   int address = -1;
+  std::optional<std::string> blocked;
   DeviceOptions device_options;
   LinkOptions link;
 };
@@ -29,6 +34,21 @@ std::string joined(const std::vector<std::string>& names) {
   std::string s;
   for (const auto& n : names) s += (s.empty() ? "" : " | ") + n;
   return s;
+}
+
+// The byte devices' options (app/device_options.h; each entry refuses those it does not use).
+void add_byte_device_options(CLI::App& cmd, RunOptions& o) {
+  DeviceOptions& d = o.device_options;
+  cmd.add_option("--elements", d.elements, "byte devices: element count");
+  cmd.add_option("--beams", d.beams, "byte devices: beam count");
+  cmd.add_option("--model", d.model, "byte devices: model");
+  cmd.add_option("--mode", d.mode, "byte devices: operating/reporting mode");
+  cmd.add_option("--blocked", o.blocked,
+                 "byte devices: interrupted elements/beams at start, 1-based, e.g. 9-13,25-34");
+  cmd.add_option("--door", d.door, "byte devices: door position at start");
+  cmd.add_option("--node", d.node, "byte devices: node number");
+  cmd.add_option("--format", d.format,
+                 "byte devices: character format override, e.g. 8E1 (--baud: the bit rate)");
 }
 
 Action setup(CLI::App& cmd) {
@@ -43,6 +63,7 @@ Action setup(CLI::App& cmd) {
   cmd.add_option("--cfg", d.cfg, "generic: configuration identifiers in hex, e.g. \"10 20\"");
   cmd.add_option("--boot-time", d.boot_time_ms,
                  "rs4: boot time until operational in ms (default 30000)");
+  add_byte_device_options(cmd, *o);
   add_link_options(cmd, l, "the master");
   cmd.add_option("--grpc", l.grpc,
                  "serve the control API on HOST:PORT (loopback only; port 0 = any free port); "
@@ -50,6 +71,7 @@ Action setup(CLI::App& cmd) {
   return [o]() -> int {
     DeviceOptions& dev = o->device_options;
     if (o->address >= 0) dev.address = o->address;
+    if (o->blocked) dev.blocked = parse_blocked(*o->blocked);
     if (o->device.empty()) o->device = dev.ident.empty() && dev.cfg.empty() ? "rs4" : "generic";
     return run_device(*find_device(o->device), dev, o->link, std::cout);
   };

@@ -1,6 +1,7 @@
 // Device entry `generic`: a generic DP-V1 slave (dp/devices) with the Ident_Number and
 // configuration identifiers given on the command line.
 #include "app/demos.h"
+#include "app/device_options.h"
 #include "app/device_registry.h"
 #include "app/run_options.h"
 #include "dp/devices/generic_bus.h"
@@ -80,6 +81,7 @@ void validate(DeviceOptions& o) {
   if (!o.address || o.ident.empty() || o.cfg.empty()) {
     throw UsageError("--device generic needs --address, --ident and --cfg");
   }
+  refuse_unused(o, "generic", {DeviceFlag::kAddress, DeviceFlag::kIdent, DeviceFlag::kCfg});
   (void)slave_config(o);  // throws UsageError for a bad address, ident or cfg
 }
 

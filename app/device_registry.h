@@ -10,11 +10,18 @@
 //   * for the in-memory link: the device with our class 1 master on a MemoryBus on the
 //     manual clock (SimulatedSegment);
 // and prints its status at the end of a run. Its narrated demo uses app/narration.h.
+//
+// A byte device (GridScan, METRON, Polaris: DeviceEntry::byte_device) instead builds
+// stream::ByteDevice cores (DeviceInstance::byte_devices()); the shell runs them with a
+// stream::ByteRunner on pty/serial/UDP in their own LineSettings (serial: the port gets the
+// device's format), and `--baud` reaches the entry as a plain bit rate (DeviceOptions::baud).
 
 #include "app/demos.h"
 #include "dp/link/counters.h"
 #include "dp/station.h"
 #include "dp/time/clock.h"
+#include "stream/byte_counters.h"
+#include "stream/byte_device.h"
 
 #include <functional>
 #include <iosfwd>
@@ -38,11 +45,22 @@ namespace rs4sim::app {
 
 // The device options of `rs4sim run`, by name; an entry's validate() checks the ones it
 // uses, refuses the others and fills its defaults.
+// Unset options are nullopt/empty; app/device_options.h refuses the ones an entry does not use.
 struct DeviceOptions {
-  std::optional<int> address;  // station address (rs4: the hex switches, default 4)
-  std::string ident;           // generic: Ident_Number, e.g. "0x1234"
-  std::string cfg;             // generic: configuration identifiers in hex, e.g. "10 20"
-  int boot_time_ms = 30000;    // rs4: boot until operational [RS4 manual §1]
+  std::optional<int> address;       // station address (rs4: the hex switches, default 4)
+  std::string ident;                // generic: Ident_Number, e.g. "0x1234"
+  std::string cfg;                  // generic: configuration identifiers in hex, e.g. "10 20"
+  std::optional<int> boot_time_ms;  // rs4: boot until operational (default 30000)
+  // Byte devices:
+  std::optional<std::uint32_t> baud;        // --baud as bit/s (only for byte devices)
+  std::string format;                       // --format, e.g. "8E1" (checked: stream::parse_format)
+  std::optional<int> elements;              // --elements: element count (GridScan)
+  std::optional<int> beams;                 // --beams: beam count (METRON, Polaris)
+  std::string model;                        // --model
+  std::string mode;                         // --mode
+  std::optional<std::vector<int>> blocked;  // --blocked 9-13,25-34: sorted 1-based numbers
+  std::optional<int> door;                  // --door N (GridScan: door position)
+  std::optional<int> node;                  // --node N (METRON node)
 };
 
 // What a device needs to offer its gRPC services (docs/rpc.md): they reach its cores only
@@ -59,13 +77,24 @@ class DeviceInstance {
  public:
   virtual ~DeviceInstance() = default;
   // The stations the link runs (they live as long as this object).
-  [[nodiscard]] virtual std::vector<dp::Station*> stations() = 0;
+  [[nodiscard]] virtual std::vector<dp::Station*> stations() { return {}; }
+  // A byte device's cores (non-empty: the shell runs a stream::ByteRunner with them instead
+  // of a StationRunner, in the first one's LineSettings); they live as long as this object.
+  [[nodiscard]] virtual std::vector<stream::ByteDevice*> byte_devices() { return {}; }
   // Called once before the link starts (e.g. the RS4's power-on).
   virtual void start(dp::TimePoint now) { (void)now; }
   // "generic slave 5 (ident 0x1234, cfg 10 20)": the banner line names the device.
   [[nodiscard]] virtual std::string describe() const = 0;
-  // The status line(s) at the end of a run; `link` = the link's counters.
-  virtual void print_status(std::ostream& out, const dp::link::StationCounters& link) const = 0;
+  // The status line(s) at the end of a run; `link` = the link's counters (a station
+  // device's, then a byte device's).
+  virtual void print_status(std::ostream& out, const dp::link::StationCounters& link) const {
+    (void)out;
+    (void)link;
+  }
+  virtual void print_byte_status(std::ostream& out, const stream::ByteCounters& link) const {
+    (void)out;
+    (void)link;
+  }
   // The device's gRPC services (empty: the device has none yet); they live as long as this.
   virtual ServiceList services(const ServiceContext& context) {
     (void)context;
@@ -97,9 +126,12 @@ struct DeviceEntry {
   // Checks the options (UsageError with the reason) and fills the defaults.
   std::function<void(DeviceOptions&)> validate;
   std::function<std::unique_ptr<DeviceInstance>(const DeviceOptions&)> build;
+  // Empty: no in-memory link (`--link memory` is refused).
   std::function<std::unique_ptr<SimulatedSegment>(const DeviceOptions&)> simulate;
-  // The narrated demo on the simulated bus; returns the exit code.
+  // The narrated demo on the simulated bus; returns the exit code. Empty: no demo.
   std::function<int(std::ostream&, const DemoOptions&)> demo;
+  // A byte device: build() gives byte_devices(); --baud is a plain bit rate.
+  bool byte_device = false;
 };
 
 std::vector<DeviceEntry>& device_registry();

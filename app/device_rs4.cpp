@@ -1,6 +1,7 @@
 // Device entry `rs4` (the default): one emulated RS4/PROFIsafe (rs4/device), its ident,
 // F_Dest_Add rule and slave settings from the built-in GSD (rs4/adapter/rs4_gsd.h).
 #include "app/demos.h"
+#include "app/device_options.h"
 #include "app/device_registry.h"
 #include "app/run_options.h"
 #include "rpc/device_target.h"
@@ -20,11 +21,12 @@ using rs4::device::Rs4Device;
 using rs4::device::Rs4DeviceConfig;
 
 constexpr int kDefaultAddress = 4;  // factory setting of the hex switches [RS4 manual §2]
+constexpr int kDefaultBootTimeMs = 30000;  // boot until operational [RS4 manual §1]
 
 Rs4DeviceConfig device_config(const DeviceOptions& o) {
   Rs4DeviceConfig c;
   c.switches = rs4::device::switches_for(static_cast<std::uint8_t>(*o.address));
-  c.boot_time = std::chrono::milliseconds(o.boot_time_ms);
+  c.boot_time = std::chrono::milliseconds(*o.boot_time_ms);
   return c;
 }
 
@@ -48,7 +50,7 @@ class Rs4Instance final : public DeviceInstance {
   explicit Rs4Instance(const DeviceOptions& o)
       : device_(device_config(o)),
         address_(static_cast<std::uint8_t>(*o.address)),
-        boot_time_ms_(o.boot_time_ms) {}
+        boot_time_ms_(*o.boot_time_ms) {}
   std::vector<dp::Station*> stations() override { return {&tap_}; }
   void start(dp::TimePoint now) override { device_.power_on(now); }
   [[nodiscard]] std::string describe() const override {
@@ -114,14 +116,17 @@ void validate(DeviceOptions& o) {
   if (!o.ident.empty() || !o.cfg.empty()) {
     throw UsageError("--ident/--cfg are for --device generic; the RS4's come from its GSD");
   }
+  refuse_unused(o, "rs4", {DeviceFlag::kAddress, DeviceFlag::kBootTime});
   if (!o.address) o.address = kDefaultAddress;
+  if (!o.boot_time_ms) o.boot_time_ms = kDefaultBootTimeMs;
   if (*o.address < 0 || *o.address > 126) {
     throw UsageError("--address: " + std::to_string(*o.address) +
                      " is outside 0..126 (the RS4's switches; 127 and 255 must not be used, "
                      "[RS4 manual §4.5])");
   }
-  if (o.boot_time_ms < 0 || o.boot_time_ms > 600000) {
-    throw UsageError("--boot-time: " + std::to_string(o.boot_time_ms) + " ms is outside 0..600000");
+  if (*o.boot_time_ms < 0 || *o.boot_time_ms > 600000) {
+    throw UsageError("--boot-time: " + std::to_string(*o.boot_time_ms) +
+                     " ms is outside 0..600000");
   }
 }
 

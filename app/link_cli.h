@@ -14,7 +14,9 @@ inline void add_link_options(CLI::App& cmd, LinkOptions& l, const std::string& p
   cmd.add_option("--link", l.link, "memory | pty | serial | udp")
       ->check(CLI::IsMember({"memory", "pty", "serial", "udp"}));
   cmd.add_option("--port", l.port, "serial device (--link serial), e.g. a pty path");
-  cmd.add_option("--baud", l.baud, "9.6k … 12M (serial/pty)");
+  cmd.add_option("--baud", l.baud,
+                 "9.6k … 12M (serial/pty; a byte device: its bit rate, e.g. 19200)")
+      ->each([&l](const std::string&) { l.baud_given = true; });
   cmd.add_option("--listen", l.listen, "HOST:PORT to receive on (--link udp)");
   cmd.add_option("--peer", l.peer, "HOST:PORT of " + peer + " (--link udp)");
   cmd.add_option("--duration", l.duration, "seconds to run (0 = until Ctrl-C; memory: simulated)")

@@ -33,7 +33,9 @@ int main(int argc, char** argv) {
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return cli.exit(e);
+    // --help/--version exit 0; every parse error (unknown option, bad or missing value) is
+    // a usage error: CLI11's message, exit 2 like every other usage error.
+    return cli.exit(e) == 0 ? 0 : 2;
   }
   try {
     for (auto& [sub, action] : actions) {

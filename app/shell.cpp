@@ -1,12 +1,15 @@
 #include "app/shell.h"
 
 #include "app/command.h"
+#include "app/device_options.h"
 #include "app/grpc_serving.h"
-#include "dp/link/pty.h"
-#include "dp/link/serial_transport.h"
+#include "dp/link/profibus_line.h"
 #include "dp/link/station_runner.h"
-#include "dp/link/udp_transport.h"
 #include "rpc/executor.h"
+#include "stream/byte_runner.h"
+#include "stream/pty.h"
+#include "stream/serial_transport.h"
+#include "stream/udp_transport.h"
 
 #include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/signal_set.hpp>
@@ -78,40 +81,78 @@ int run_memory_served(const DeviceEntry& device, const DeviceOptions& o, const L
   return 0;
 }
 
-std::unique_ptr<link::Transport> make_transport(const LinkOptions& l, asio::io_context& io,
-                                                std::unique_ptr<link::PseudoTerminal>& pty,
-                                                std::ostream& out) {
-  const auto baud = dp::parse_baud_rate(l.baud);
-  const link::LogFn note = [](const std::string& s) {
+// The character format of the line: a byte device's own, else PROFIBUS 8E1 at --baud.
+stream::LineSettings line_format(DeviceInstance& instance, const LinkOptions& l) {
+  const auto bytes = instance.byte_devices();
+  if (!bytes.empty()) return bytes.front()->line_settings();
+  return link::profibus_line(*dp::parse_baud_rate(l.baud));
+}
+
+std::unique_ptr<stream::Transport> make_transport(const LinkOptions& l,
+                                                  const stream::LineSettings& line,
+                                                  asio::io_context& io,
+                                                  std::unique_ptr<stream::PseudoTerminal>& pty,
+                                                  std::ostream& out) {
+  const stream::LogFn note = [](const std::string& s) {
     std::cerr << "rs4sim: note: " << s << std::endl;
   };
   if (l.link == "pty") {
-    pty = std::make_unique<link::PseudoTerminal>();
-    out << pty->slave_path() << std::endl;  // first line: where the DP master connects
-    return std::make_unique<link::SerialTransport>(io, pty->release_master(), *baud, "pty", note);
+    pty = std::make_unique<stream::PseudoTerminal>();
+    out << pty->slave_path() << std::endl;  // first line: where the master/client connects
+    return std::make_unique<stream::SerialTransport>(io, pty->release_master(), line, "pty", note);
   }
-  if (l.link == "serial") return std::make_unique<link::SerialTransport>(io, l.port, *baud, note);
-  return std::make_unique<link::UdpTransport>(io, link::resolve_udp_endpoint(io, l.listen),
-                                              link::resolve_udp_endpoint(io, l.peer));
+  if (l.link == "serial") return std::make_unique<stream::SerialTransport>(io, l.port, line, note);
+  return std::make_unique<stream::UdpTransport>(io, stream::resolve_udp_endpoint(io, l.listen),
+                                                stream::resolve_udp_endpoint(io, l.peer));
 }
+
+// The runner of an instance: a ByteRunner for byte devices, else a StationRunner.
+class LinkRunner {
+ public:
+  LinkRunner(asio::io_context& io, const dp::Clock& clock, stream::Transport& transport,
+             DeviceInstance& instance)
+      : instance_(instance), bytes_(instance.byte_devices()) {
+    if (bytes_.empty()) {
+      stations_.emplace(io, clock, transport);
+      for (dp::Station* s : instance.stations()) stations_->add(*s);
+    } else {
+      byte_runner_.emplace(io, clock, transport);
+      for (stream::ByteDevice* d : bytes_) byte_runner_->add(*d);
+    }
+  }
+  void start() { stations_ ? stations_->start() : byte_runner_->start(); }
+  void stop() { stations_ ? stations_->stop() : byte_runner_->stop(); }
+  void print_status(std::ostream& out) const {
+    if (stations_) {
+      instance_.print_status(out, stations_->counters());
+    } else {
+      instance_.print_byte_status(out, byte_runner_->counters());
+    }
+  }
+
+ private:
+  DeviceInstance& instance_;
+  std::vector<stream::ByteDevice*> bytes_;
+  std::optional<link::StationRunner> stations_;
+  std::optional<stream::ByteRunner> byte_runner_;
+};
 
 }  // namespace
 
 int run_on_link(DeviceInstance& instance, const LinkOptions& l, std::ostream& out) {
   asio::io_context io;
-  std::unique_ptr<link::PseudoTerminal> pty;
-  std::unique_ptr<link::Transport> transport;
+  std::unique_ptr<stream::PseudoTerminal> pty;
+  std::unique_ptr<stream::Transport> transport;
   try {
-    transport = make_transport(l, io, pty, out);
-  } catch (const link::LinkException& e) {
+    transport = make_transport(l, line_format(instance, l), io, pty, out);
+  } catch (const stream::LinkException& e) {
     std::cerr << "rs4sim: " << e.what() << " [" << e.code().category().name() << ":"
               << e.code().value() << "]" << std::endl;
     return 1;
   }
   dp::RealClock clock;
   instance.start(clock.now());
-  link::StationRunner runner(io, clock, *transport);
-  for (dp::Station* s : instance.stations()) runner.add(*s);
+  LinkRunner runner(io, clock, *transport, instance);
   rpc::AsioExecutor executor(io);
   std::unique_ptr<GrpcServing> serving;
   if (!l.grpc.empty()) {
@@ -136,16 +177,16 @@ int run_on_link(DeviceInstance& instance, const LinkOptions& l, std::ostream& ou
             << std::endl;
   runner.start();
   io.run();
-  instance.print_status(out, runner.counters());
+  runner.print_status(out);
   return 0;
 }
 
-void validate(const LinkOptions& l) {
+void validate(const LinkOptions& l, bool byte_device) {
   if (l.duration < 0) throw UsageError("--duration must not be negative");
   if (l.link != "memory" && l.link != "pty" && l.link != "serial" && l.link != "udp") {
     throw UsageError("--link " + l.link + ": use memory, pty, serial or udp");
   }
-  if ((l.link == "pty" || l.link == "serial") && !dp::parse_baud_rate(l.baud)) {
+  if (!byte_device && (l.link == "pty" || l.link == "serial") && !dp::parse_baud_rate(l.baud)) {
     throw UsageError("--baud " + l.baud + ": not a PROFIBUS rate; use one of " +
                      dp::standard_baud_rate_list());
   }
@@ -162,10 +203,27 @@ void validate(const LinkOptions& l) {
   }
 }
 
+namespace {
+
+// A byte device: no in-memory link; --baud is its plain bit rate.
+void prepare_byte_device(const DeviceEntry& device, DeviceOptions& options,
+                         const LinkOptions& link) {
+  if (link.link == "memory") {
+    throw UsageError("--device " + device.name +
+                     " has no in-memory link (no master or client of ours for it yet): run it "
+                     "with --link pty and connect the client to the printed path (or use "
+                     "--link serial/udp)");
+  }
+  if (link.baud_given) options.baud = parse_bit_rate(link.baud);
+}
+
+}  // namespace
+
 int run_device(const DeviceEntry& device, DeviceOptions options, const LinkOptions& link,
                std::ostream& out) {
+  if (device.byte_device) prepare_byte_device(device, options, link);
   device.validate(options);
-  validate(link);
+  validate(link, device.byte_device);
   if (link.link == "memory" && !link.grpc.empty()) {
     return run_memory_served(device, options, link, out);
   }

@@ -8,6 +8,8 @@
 //   pty     a pseudo-terminal pair; the first stdout line is the slave side's path
 //   serial  --port DEVICE at --baud
 //   udp     one telegram per datagram, --listen HOST:PORT, --peer HOST:PORT
+// A byte device (DeviceEntry::byte_device) runs on pty, serial and udp only, with a
+// stream::ByteRunner, in its own LineSettings (its default rate, or --baud as bit/s).
 
 #include "app/device_registry.h"
 
@@ -19,7 +21,8 @@ namespace rs4sim::app {
 struct LinkOptions {
   std::string link = "memory";  // memory | pty | serial | udp
   std::string port;             // serial
-  std::string baud = "1.5M";    // serial / pty
+  std::string baud = "1.5M";    // serial / pty (a byte device: plain bit/s, its default rate)
+  bool baud_given = false;      // --baud was on the command line
   std::string listen, peer;     // udp
   double duration = 0;          // seconds; 0 = until Ctrl-C (memory: the device's default)
   // HOST:PORT of the gRPC API (docs/rpc.md); empty = none. With --link memory the run then
@@ -28,8 +31,9 @@ struct LinkOptions {
   std::string grpc;
 };
 
-// Throws UsageError with the reason for a bad combination.
-void validate(const LinkOptions& link);
+// Throws UsageError with the reason for a bad combination. `byte_device`: --baud is the
+// device's plain bit rate (checked by the device entry), not a PROFIBUS rate.
+void validate(const LinkOptions& link, bool byte_device = false);
 
 // Validates both option sets, builds the device and runs it; returns the exit code
 // (1 for a link error, reported on stderr).

@@ -1,27 +1,32 @@
 #include "dp/link/station_runner.h"
 
 #include <boost/asio/error.hpp>
-#include <boost/asio/post.hpp>
 
 namespace rs4sim::dp::link {
 
 StationRunner::StationRunner(boost::asio::io_context& io, const Clock& clock, Transport& transport,
                              RunnerOptions options)
-    : clock_(clock), transport_(transport), options_(options), timer_(io), idle_timer_(io) {
+    : clock_(clock),
+      transport_(transport),
+      options_(options),
+      timer_(io),
+      idle_timer_(io),
+      wake_(io.get_executor(), [this] {
+        now_ = clock_.now();
+        drain_all();
+        arm_timer();
+      }) {
   encode_buf_.reserve(fdl::kMaxTelegramSize);
-  self_ = std::make_shared<StationRunner*>(this);
 }
 
 void StationRunner::add(Station& station) {
   stations_.push_back(&station);
-  // A station may outlive the runner: a wake after it is gone does nothing.
-  station.set_wake_handler([alive = std::weak_ptr(self_), this] {
-    if (!alive.expired()) on_wake();
-  });
+  station.set_wake_handler(wake_.handler());  // a no-op once the runner is gone
 }
 
 void StationRunner::start() {
   running_ = true;
+  wake_.set_enabled(true);
   transport_.start([this](std::span<const std::uint8_t> b) { on_bytes(b); },
                    [this](std::error_code e) { on_transport_error(e); });
   now_ = clock_.now();
@@ -32,24 +37,10 @@ void StationRunner::start() {
 
 void StationRunner::stop() {
   running_ = false;
+  wake_.set_enabled(false);
   timer_.cancel();
   idle_timer_.cancel();
   transport_.close();
-}
-
-void StationRunner::on_wake() {
-  if (!running_ || wake_posted_) return;
-  wake_posted_ = true;
-  boost::asio::post(timer_.get_executor(), [weak = std::weak_ptr(self_)] {
-    const auto self = weak.lock();
-    if (!self) return;
-    StationRunner& r = **self;
-    r.wake_posted_ = false;
-    if (!r.running_) return;
-    r.now_ = r.clock_.now();
-    r.drain_all();
-    r.arm_timer();
-  });
 }
 
 void StationRunner::on_bytes(std::span<const std::uint8_t> bytes) {
@@ -98,23 +89,8 @@ void StationRunner::drain_all() {
 }
 
 void StationRunner::arm_timer() {
-  std::optional<TimePoint> earliest;
-  for (const Station* s : stations_) {
-    const auto d = s->next_deadline();
-    if (d && (!earliest || *d < *earliest)) earliest = d;
-  }
-  if (earliest == armed_for_) return;
-  armed_for_ = earliest;
-  if (!earliest) {
-    timer_.cancel();
-    return;
-  }
-  const Duration delay = std::max(Duration::zero(), *earliest - clock_.now());
-  timer_.expires_after(delay);
-  timer_.async_wait([this](const boost::system::error_code& ec) {
-    if (ec == boost::asio::error::operation_aborted || !running_) return;
-    armed_for_.reset();
-    on_timer();
+  timer_.arm(stream::earliest_deadline(stations_), clock_, [this] {
+    if (running_) on_timer();
   });
 }
 

@@ -15,23 +15,25 @@
 
 #include "dp/fdl/decoder.h"
 #include "dp/link/counters.h"
-#include "dp/link/transport.h"
 #include "dp/station.h"
+#include "stream/coalesced_wake.h"
+#include "stream/deadline_timer.h"
+#include "stream/frame_tap.h"
+#include "stream/transport.h"
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/steady_timer.hpp>
 
 #include <functional>
-#include <memory>
 #include <vector>
 
 namespace rs4sim::dp::link {
 
-// Sees every telegram the runner received (re-encoded from the decoded telegram, so only
-// well-formed frames) and every telegram it sent, with the runner's `now` (e.g. a capture).
-enum class FrameDirection : std::uint8_t { kReceived, kSent };
-using FrameTap =
-    std::function<void(std::span<const std::uint8_t> frame, TimePoint now, FrameDirection dir)>;
+// The tap sees every telegram the runner received (re-encoded from the decoded telegram, so
+// only well-formed frames) and every telegram it sent, with the runner's `now` (e.g. a capture).
+using stream::FrameDirection;
+using stream::FrameTap;
+using stream::Transport;
 
 struct RunnerOptions {
   Duration idle_gap = std::chrono::milliseconds(30);
@@ -66,16 +68,15 @@ class StationRunner final : private fdl::DecoderSink {
   void drain_all();
   void arm_timer();
   void arm_idle_timer();
-  void on_wake();
 
   const Clock& clock_;
   Transport& transport_;
   RunnerOptions options_;
   std::vector<Station*> stations_;
   fdl::Decoder decoder_;
-  boost::asio::steady_timer timer_;
+  stream::DeadlineTimer timer_;
   boost::asio::steady_timer idle_timer_;
-  std::optional<TimePoint> armed_for_;
+  stream::CoalescedWake wake_;
   StationCounters counters_;
   std::error_code last_error_;
   std::vector<std::uint8_t> encode_buf_;
@@ -84,8 +85,6 @@ class StationRunner final : private fdl::DecoderSink {
   TimePoint now_{};
   std::uint64_t idle_generation_ = 0;
   bool running_ = false;
-  bool wake_posted_ = false;
-  std::shared_ptr<StationRunner*> self_;  // posted wake-ups check it is still alive
 };
 
 }  // namespace rs4sim::dp::link

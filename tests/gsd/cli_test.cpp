@@ -115,7 +115,7 @@ TEST(GsdCli, RefusesOutOfRangeValues) {
   EXPECT_NE(r.output.find("F_Source_Add = 65535 is out of range 1..65534"), std::string::npos)
       << r.output;
   r = run("gsd --prm --address 127");
-  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(r.exit_code, 2);  // the parser's range check: a usage error
   EXPECT_NE(r.output.find("--address"), std::string::npos) << r.output;
   r = run("gsd --prm --set F_SIL=2");
   EXPECT_EQ(r.exit_code, 1);

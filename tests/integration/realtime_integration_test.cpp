@@ -3,11 +3,12 @@
 // looped-back data, DPV1 write/read and an alarm round trip. Waits are bounded and end as
 // soon as the condition holds.
 #include "dp/devices/generic_master_config.h"
-#include "dp/link/pty.h"
-#include "dp/link/serial_transport.h"
+#include "dp/link/profibus_line.h"
 #include "dp/link/station_runner.h"
-#include "dp/link/udp_transport.h"
 #include "dp/master/master.h"
+#include "stream/pty.h"
+#include "stream/serial_transport.h"
+#include "stream/udp_transport.h"
 #include "tests/integration/bus_helpers.h"
 
 #include <gtest/gtest.h>
@@ -32,7 +33,8 @@ dp::master::MasterConfig realtime_master(const GenericSlaveConfig& s) {
   return m;
 }
 
-using TransportPair = std::pair<std::unique_ptr<link::Transport>, std::unique_ptr<link::Transport>>;
+using TransportPair =
+    std::pair<std::unique_ptr<stream::Transport>, std::unique_ptr<stream::Transport>>;
 
 class RealtimeScenario {
  public:
@@ -107,12 +109,13 @@ class RealtimeScenario {
 };
 
 TEST(RealtimeIntegration, MasterAndSlaveOverAPtyPair) {
-  link::PseudoTerminal pty;
+  stream::PseudoTerminal pty;
   RealtimeScenario scenario([&](asio::io_context& io) {
     TransportPair p;
-    p.second = std::make_unique<link::SerialTransport>(io, pty.release_master(), dp::BaudRate::k9k6,
-                                                       "pty");
-    p.first = std::make_unique<link::SerialTransport>(io, pty.slave_path(), dp::BaudRate::k9k6);
+    p.second = std::make_unique<stream::SerialTransport>(
+        io, pty.release_master(), link::profibus_line(dp::BaudRate::k9k6), "pty");
+    p.first = std::make_unique<stream::SerialTransport>(io, pty.slave_path(),
+                                                        link::profibus_line(dp::BaudRate::k9k6));
     return p;
   });
   scenario.run();
@@ -121,8 +124,8 @@ TEST(RealtimeIntegration, MasterAndSlaveOverAPtyPair) {
 TEST(RealtimeIntegration, MasterAndSlaveOverUdpOnLocalhost) {
   RealtimeScenario scenario([](asio::io_context& io) {
     const asio::ip::udp::endpoint any{asio::ip::make_address("127.0.0.1"), 0};
-    auto m = std::make_unique<link::UdpTransport>(io, any, any);
-    auto s = std::make_unique<link::UdpTransport>(io, any, m->local_endpoint());
+    auto m = std::make_unique<stream::UdpTransport>(io, any, any);
+    auto s = std::make_unique<stream::UdpTransport>(io, any, m->local_endpoint());
     m->set_peer(s->local_endpoint());
     return TransportPair{std::move(m), std::move(s)};
   });

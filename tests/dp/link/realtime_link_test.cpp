@@ -1,11 +1,14 @@
-// StationRunner over a pseudo-terminal pair and over UDP on localhost, with fake stations.
+// StationRunner over a pseudo-terminal pair and over UDP on localhost, with fake stations
+// (the transports' own tests: tests/stream/transport_test.cpp).
 // Real time: every wait is bounded (generous timeout) and ends as soon as the condition
 // holds; no fixed sleep decides a result.
-#include "dp/link/pty.h"
-#include "dp/link/serial_transport.h"
+#include "dp/link/profibus_line.h"
 #include "dp/link/station_runner.h"
-#include "dp/link/udp_transport.h"
+#include "stream/pty.h"
+#include "stream/serial_transport.h"
+#include "stream/udp_transport.h"
 #include "tests/dp/link/fake_station.h"
+#include "tests/stream/run_until.h"
 
 #include <gtest/gtest.h>
 
@@ -20,17 +23,13 @@ using namespace std::chrono_literals;
 using testing::FakeStation;
 using testing::srd_request;
 using Bytes = std::vector<std::uint8_t>;
+using stream::LogFn;
+using stream::PseudoTerminal;
+using stream::SerialTransport;
+using stream::UdpTransport;
 namespace asio = boost::asio;
 
-// Runs the io_context until `done()` or `timeout`; returns done().
-bool run_until(asio::io_context& io, const std::function<bool()>& done, Duration timeout = 10s) {
-  const auto end = SteadyClock::now() + timeout;
-  while (!done() && SteadyClock::now() < end) {
-    io.run_for(5ms);
-    if (io.stopped()) io.restart();
-  }
-  return done();
-}
+using stream::testing::run_until;
 
 class PtyLinkTest : public ::testing::Test {
  protected:
@@ -42,8 +41,9 @@ class PtyLinkTest : public ::testing::Test {
 };
 
 TEST_F(PtyLinkTest, MasterAndSlaveExchangeOverThePtyPair) {
-  SerialTransport slave_side(io, pty.release_master(), BaudRate::k12M, "pty master", log);
-  SerialTransport master_side(io, pty.slave_path(), BaudRate::k19k2, log);
+  SerialTransport slave_side(io, pty.release_master(), profibus_line(BaudRate::k12M), "pty master",
+                             log);
+  SerialTransport master_side(io, pty.slave_path(), profibus_line(BaudRate::k19k2), log);
   EXPECT_TRUE(slave_side.setup().is_pty);
   EXPECT_TRUE(master_side.setup().is_pty);
   FakeStation slave(5, FakeStation::Reply::kEchoData), master(2);
@@ -66,7 +66,8 @@ TEST_F(PtyLinkTest, MasterAndSlaveExchangeOverThePtyPair) {
 }
 
 TEST_F(PtyLinkTest, GarbageAndATruncatedFrameAreDroppedAndCountedThenFramingRecovers) {
-  SerialTransport slave_side(io, pty.release_master(), BaudRate::k1M5, "pty master", log);
+  SerialTransport slave_side(io, pty.release_master(), profibus_line(BaudRate::k1M5), "pty master",
+                             log);
   FakeStation slave(5);
   StationRunner runner(io, clock, slave_side, RunnerOptions{20ms});
   runner.add(slave);
@@ -94,28 +95,11 @@ TEST_F(PtyLinkTest, EveryStandardRateIsSetOrNotedOnAPty) {
     notes.clear();
     const int fd = ::open(pty.slave_path().c_str(), O_RDWR | O_NOCTTY);
     ASSERT_GE(fd, 0);
-    SerialSetup setup;
-    EXPECT_NO_THROW(setup = configure_serial(fd, b, "pty", log)) << to_string(b);
+    stream::SerialSetup setup;
+    EXPECT_NO_THROW(setup = configure_profibus_serial(fd, b, "pty", log)) << to_string(b);
     EXPECT_TRUE(setup.is_pty);
     EXPECT_EQ(setup.notes, notes);  // every refusal was logged
     ::close(fd);
-  }
-}
-
-TEST(SerialTransportErrors, MissingDeviceAndNonTerminalAreTypedErrors) {
-  asio::io_context io;
-  try {
-    SerialTransport t(io, "/nonexistent/ttyRS485", BaudRate::k1M5);
-    FAIL() << "opened a missing device";
-  } catch (const LinkException& e) {
-    EXPECT_EQ(e.code(), LinkError::kOpenFailed);
-    EXPECT_NE(std::string(e.what()).find("/nonexistent/ttyRS485"), std::string::npos);
-  }
-  try {
-    SerialTransport t(io, "/dev/null", BaudRate::k1M5);
-    FAIL() << "/dev/null taken as a serial port";
-  } catch (const LinkException& e) {
-    EXPECT_EQ(e.code(), LinkError::kNotATerminal);
   }
 }
 
@@ -182,35 +166,6 @@ TEST_F(UdpLinkTest, RunnerFiresStationDeadlines) {
   ASSERT_TRUE(run_until(io, [&] { return s.timer_fires >= 3; }));
   EXPECT_GE(s.last_on_time, clock.now() - 10s);
   r.stop();
-}
-
-TEST(UdpEndpoint, BadEndpointsAreTypedErrors) {
-  asio::io_context io;
-  for (const char* bad : {"127.0.0.1", ":5000", "127.0.0.1:", "127.0.0.1:99999", "127.0.0.1:x1",
-                          "no-such-host.invalid:5000"}) {
-    try {
-      (void)resolve_udp_endpoint(io, bad);
-      ADD_FAILURE() << bad;
-    } catch (const LinkException& e) {
-      EXPECT_EQ(e.code(), LinkError::kBadEndpoint) << bad;
-    }
-  }
-  const auto ep = resolve_udp_endpoint(io, "localhost:5000");
-  EXPECT_EQ(ep.port(), 5000);
-  EXPECT_TRUE(ep.address().is_loopback());
-  EXPECT_EQ(resolve_udp_endpoint(io, "[::1]:7").address().to_string(), "::1");
-}
-
-TEST(UdpEndpoint, PortInUseIsABindError) {
-  asio::io_context io;
-  const asio::ip::udp::endpoint any{asio::ip::make_address("127.0.0.1"), 0};
-  UdpTransport first(io, any, any);
-  try {
-    UdpTransport second(io, first.local_endpoint(), any);
-    FAIL() << "bound the same port twice";
-  } catch (const LinkException& e) {
-    EXPECT_EQ(e.code(), LinkError::kBindFailed);
-  }
 }
 
 }  // namespace

@@ -1,9 +1,10 @@
 #pragma once
-// UDP link for processes on one host: one datagram = one telegram (SD…ED, or E5, or SD4),
-// sent to a fixed peer. Datagrams from any other sender are dropped and counted.
+// UDP link for processes on one host: one datagram = one frame (PROFIBUS: SD…ED, or E5, or
+// SD4; a byte device: one frame of its protocol), sent to a fixed peer. Datagrams from any other
+// sender are dropped and counted.
 
-#include "dp/link/link_error.h"
-#include "dp/link/transport.h"
+#include "stream/link_error.h"
+#include "stream/transport.h"
 
 #include <boost/asio/ip/udp.hpp>
 
@@ -12,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace rs4sim::dp::link {
+namespace rs4sim::stream {
 
 // Parses and resolves "HOST:PORT" ("127.0.0.1:5000", "localhost:5000", "[::1]:5000").
 // Throws LinkException(kBadEndpoint) with the reason.
@@ -50,4 +51,4 @@ class UdpTransport final : public Transport {
   std::uint64_t foreign_ = 0;
 };
 
-}  // namespace rs4sim::dp::link
+}  // namespace rs4sim::stream

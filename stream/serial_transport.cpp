@@ -1,4 +1,4 @@
-#include "dp/link/serial_transport.h"
+#include "stream/serial_transport.h"
 
 #include <boost/asio/error.hpp>
 #include <boost/asio/write.hpp>
@@ -9,7 +9,7 @@
 #include <cerrno>
 #include <cstring>
 
-namespace rs4sim::dp::link {
+namespace rs4sim::stream {
 
 namespace asio = boost::asio;
 
@@ -21,15 +21,15 @@ int open_device(const std::string& path) {
 }
 }  // namespace
 
-SerialTransport::SerialTransport(asio::io_context& io, const std::string& path, BaudRate baud,
-                                 const LogFn& log)
-    : SerialTransport(io, open_device(path), baud, path, log) {}
+SerialTransport::SerialTransport(asio::io_context& io, const std::string& path,
+                                 const LineSettings& line, const LogFn& log)
+    : SerialTransport(io, open_device(path), line, path, log) {}
 
-SerialTransport::SerialTransport(asio::io_context& io, int fd, BaudRate baud,
+SerialTransport::SerialTransport(asio::io_context& io, int fd, const LineSettings& line,
                                  const std::string& name, const LogFn& log)
     : port_(io), retry_timer_(io) {
   try {
-    setup_ = configure_serial(fd, baud, name, log);
+    setup_ = configure_serial(fd, line, name, log);
   } catch (...) {
     ::close(fd);
     throw;
@@ -95,4 +95,4 @@ void SerialTransport::close() {
   writing_ = false;
 }
 
-}  // namespace rs4sim::dp::link
+}  // namespace rs4sim::stream

@@ -1,12 +1,11 @@
-#include "dp/link/link_error.h"
+#include "stream/link_error.h"
 
-namespace rs4sim::dp::link {
+namespace rs4sim::stream {
 
 std::string_view to_string(LinkError e) noexcept {
   switch (e) {
-    case LinkError::kUnsupportedBaudRate: return "not a standard PROFIBUS baud rate";
     case LinkError::kAdapterRefusedBaudRate: return "the serial adapter refused the baud rate";
-    case LinkError::kAdapterRefusedFormat: return "the serial adapter refused 8E1 framing";
+    case LinkError::kAdapterRefusedFormat: return "the serial adapter refused the character format";
     case LinkError::kNotATerminal: return "not a serial device (no termios)";
     case LinkError::kOpenFailed: return "cannot open the serial device";
     case LinkError::kPtyFailed: return "cannot create a pseudo-terminal";
@@ -16,4 +15,4 @@ std::string_view to_string(LinkError e) noexcept {
   return "unknown link error";
 }
 
-}  // namespace rs4sim::dp::link
+}  // namespace rs4sim::stream

@@ -1,11 +1,11 @@
 #pragma once
-// Serial link: a tty (RS-485 adapter, or either side of a pseudo-terminal) carried by
-// asio::serial_port, in PROFIBUS character format 8E1 at a standard rate
-// ([IEC 61158-4-3 UART character] [IEC 61158-2 baud rates]; see serial_settings.h for how refused
-// settings are handled).
+// Serial link: a tty (RS-485/RS-232 adapter, or either side of a pseudo-terminal) carried by
+// asio::serial_port, in the character format of a stream::LineSettings (PROFIBUS: 8E1 at a
+// standard rate, dp/link/profibus_line.h; see serial_settings.h for how refused settings are
+// handled).
 
-#include "dp/link/serial_settings.h"
-#include "dp/link/transport.h"
+#include "stream/serial_settings.h"
+#include "stream/transport.h"
 
 #include <boost/asio/serial_port.hpp>
 #include <boost/asio/steady_timer.hpp>
@@ -15,17 +15,17 @@
 #include <string>
 #include <vector>
 
-namespace rs4sim::dp::link {
+namespace rs4sim::stream {
 
 class SerialTransport final : public Transport {
  public:
   // Opens `path` and configures it; throws LinkException (kOpenFailed, kNotATerminal,
   // kAdapterRefusedBaudRate, kAdapterRefusedFormat).
-  SerialTransport(boost::asio::io_context& io, const std::string& path, BaudRate baud,
+  SerialTransport(boost::asio::io_context& io, const std::string& path, const LineSettings& line,
                   const LogFn& log = {});
   // Takes ownership of an open tty descriptor (e.g. PseudoTerminal::release_master()).
-  SerialTransport(boost::asio::io_context& io, int fd, BaudRate baud, const std::string& name,
-                  const LogFn& log = {});
+  SerialTransport(boost::asio::io_context& io, int fd, const LineSettings& line,
+                  const std::string& name, const LogFn& log = {});
   ~SerialTransport() override;
 
   [[nodiscard]] bool datagram() const override { return false; }
@@ -49,4 +49,4 @@ class SerialTransport final : public Transport {
   bool writing_ = false;
 };
 
-}  // namespace rs4sim::dp::link
+}  // namespace rs4sim::stream

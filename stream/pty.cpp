@@ -1,6 +1,6 @@
-#include "dp/link/pty.h"
+#include "stream/pty.h"
 
-#include "dp/link/link_error.h"
+#include "stream/link_error.h"
 
 #include <fcntl.h>
 #include <termios.h>
@@ -10,7 +10,7 @@
 #include <cstdlib>
 #include <cstring>
 
-namespace rs4sim::dp::link {
+namespace rs4sim::stream {
 
 namespace {
 [[noreturn]] void fail(const char* step) {
@@ -55,4 +55,4 @@ int PseudoTerminal::release_master() {
   return fd;
 }
 
-}  // namespace rs4sim::dp::link
+}  // namespace rs4sim::stream

@@ -1,13 +1,14 @@
 #pragma once
 // The byte side of a real-time link: a serial/pty stream or UDP datagrams, on an
-// asio::io_context. StationRunner (station_runner.h) sits on top and drives the cores.
+// asio::io_context. A runner sits on top and drives the cores: dp/link/station_runner.h
+// (PROFIBUS stations), stream/byte_runner.h (byte devices).
 
 #include <cstdint>
 #include <functional>
 #include <span>
 #include <system_error>
 
-namespace rs4sim::dp::link {
+namespace rs4sim::stream {
 
 class Transport {
  public:
@@ -15,13 +16,13 @@ class Transport {
   using ErrorFn = std::function<void(std::error_code)>;
 
   virtual ~Transport() = default;
-  // true: every receive is exactly one telegram (UDP); false: a byte stream (serial/pty).
+  // true: every receive is exactly one frame (UDP); false: a byte stream (serial/pty).
   [[nodiscard]] virtual bool datagram() const = 0;
   // Starts the receive loop; handlers run on the io_context thread.
   virtual void start(BytesFn on_bytes, ErrorFn on_error) = 0;
-  // Queues one encoded telegram; frames go out whole and in order.
+  // Queues one encoded frame; frames go out whole and in order.
   virtual void send(std::span<const std::uint8_t> frame) = 0;
   virtual void close() = 0;
 };
 
-}  // namespace rs4sim::dp::link
+}  // namespace rs4sim::stream

@@ -1,13 +1,14 @@
 #pragma once
 // A pseudo-terminal pair for `rs4sim run --link pty` and for tests: the simulator keeps
-// the master side; a software DP master opens slave_path() like a serial port.
+// the master side; the external program (a DP master, a Modbus client, a script) opens
+// slave_path() like a serial port.
 //
 // The slave side is put into raw mode and kept open by this object as well, so that the
 // master side never sees EIO/hang-up while the external program reconnects.
 
 #include <string>
 
-namespace rs4sim::dp::link {
+namespace rs4sim::stream {
 
 class PseudoTerminal {
  public:
@@ -28,4 +29,4 @@ class PseudoTerminal {
   std::string slave_path_;
 };
 
-}  // namespace rs4sim::dp::link
+}  // namespace rs4sim::stream

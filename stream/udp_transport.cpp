@@ -1,10 +1,10 @@
-#include "dp/link/udp_transport.h"
+#include "stream/udp_transport.h"
 
 #include <boost/asio/error.hpp>
 
 #include <charconv>
 
-namespace rs4sim::dp::link {
+namespace rs4sim::stream {
 
 namespace asio = boost::asio;
 using asio::ip::udp;
@@ -105,4 +105,4 @@ void UdpTransport::close() {
   sending_ = false;
 }
 
-}  // namespace rs4sim::dp::link
+}  // namespace rs4sim::stream

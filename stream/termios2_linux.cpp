@@ -8,7 +8,7 @@
 
 extern "C" int ioctl(int fd, unsigned long request, ...) noexcept;
 
-namespace rs4sim::dp::link::detail {
+namespace rs4sim::stream::detail {
 
 int set_custom_baud(int fd, std::uint32_t bps) {
   struct termios2 tio {};
@@ -27,4 +27,4 @@ std::uint32_t read_baud(int fd) {
   return tio.c_ospeed;
 }
 
-}  // namespace rs4sim::dp::link::detail
+}  // namespace rs4sim::stream::detail

@@ -1,0 +1,128 @@
+#include "stream/serial_settings.h"
+
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <termios.h>
+
+#include <array>
+#include <cerrno>
+#include <cstring>
+#include <optional>
+#include <utility>
+
+namespace rs4sim::stream {
+
+namespace {
+
+std::optional<speed_t> standard_speed(std::uint32_t bps) {
+  static constexpr std::array<std::pair<std::uint32_t, speed_t>, 22> kSpeeds = {{
+      {300, B300},         {1200, B1200},       {2400, B2400},       {4800, B4800},
+      {9600, B9600},       {19200, B19200},     {38400, B38400},     {57600, B57600},
+      {115200, B115200},   {230400, B230400},   {460800, B460800},   {500000, B500000},
+      {576000, B576000},   {921600, B921600},   {1000000, B1000000}, {1152000, B1152000},
+      {1500000, B1500000}, {2000000, B2000000}, {2500000, B2500000}, {3000000, B3000000},
+      {3500000, B3500000}, {4000000, B4000000},
+  }};
+  for (const auto& [rate, speed] : kSpeeds) {
+    if (rate == bps) return speed;
+  }
+  return std::nullopt;  // e.g. 45.45k, 93.75k, 187.5k, 6M, 12M: termios2
+}
+
+tcflag_t size_flag(std::uint8_t data_bits) {
+  switch (data_bits) {
+    case 5: return CS5;
+    case 6: return CS6;
+    case 7: return CS7;
+    default: return CS8;
+  }
+}
+
+void make_raw(termios& tio, const LineSettings& line) {
+  cfmakeraw(&tio);
+  tio.c_cflag &= ~static_cast<tcflag_t>(CSIZE | PARENB | PARODD | CSTOPB | CRTSCTS);
+  tio.c_cflag |= size_flag(line.data_bits) | CLOCAL | CREAD;
+  if (line.parity != Parity::kNone) {
+    tio.c_cflag |= PARENB;
+    if (line.parity == Parity::kOdd) tio.c_cflag |= PARODD;
+    tio.c_iflag |= INPCK | IGNPAR;  // a character with a parity error is dropped
+  }
+  if (line.stop_bits == 2) tio.c_cflag |= CSTOPB;
+  tio.c_cc[VMIN] = 1;
+  tio.c_cc[VTIME] = 0;
+}
+
+bool format_kept(const termios& back, const LineSettings& line) {
+  const bool parity = (back.c_cflag & PARENB) != 0;
+  const bool odd = (back.c_cflag & PARODD) != 0;
+  if (parity != (line.parity != Parity::kNone)) return false;
+  if (parity && odd != (line.parity == Parity::kOdd)) return false;
+  if ((back.c_cflag & CSIZE) != size_flag(line.data_bits)) return false;
+  return ((back.c_cflag & CSTOPB) != 0) == (line.stop_bits == 2);
+}
+
+// Real adapter: throw. Pseudo-terminal: note and carry on.
+void refuse(SerialSetup& setup, LinkError e, const std::string& text, const LogFn& log) {
+  if (!setup.is_pty) throw LinkException(e, text);
+  const std::string note = text + " (pseudo-terminal: no physical line, carrying on)";
+  setup.notes.push_back(note);
+  if (log) log(note);
+}
+
+std::string format_text(const LineSettings& line) {
+  const std::string full = to_string(line);
+  return full.substr(full.find(' ') + 1);  // "8E1"
+}
+
+}  // namespace
+
+bool is_pseudo_terminal(int fd) {
+  struct stat st {};
+  if (fstat(fd, &st) != 0 || !S_ISCHR(st.st_mode)) return false;
+  const unsigned maj = major(st.st_rdev);
+  const unsigned min = minor(st.st_rdev);
+  // Unix98 pty slaves: majors 136..143; /dev/ptmx (5,2); legacy BSD ptys: 2 and 3.
+  return (maj >= 136 && maj <= 143) || (maj == 5 && min == 2) || maj == 2 || maj == 3;
+}
+
+SerialSetup configure_serial(int fd, const LineSettings& line, const std::string& name,
+                             const LogFn& log) {
+  SerialSetup setup;
+  setup.is_pty = is_pseudo_terminal(fd);
+  termios tio{};
+  if (tcgetattr(fd, &tio) != 0) {
+    throw LinkException(LinkError::kNotATerminal, name + ": " + std::strerror(errno));
+  }
+  make_raw(tio, line);
+  const auto speed = standard_speed(line.baud);
+  if (speed) cfsetspeed(&tio, *speed);
+  const std::string format = format_text(line);
+  if (tcsetattr(fd, TCSANOW, &tio) != 0) {
+    refuse(setup, LinkError::kAdapterRefusedFormat,
+           name + ": tcsetattr " + format + " failed: " + std::strerror(errno), log);
+  }
+  if (!speed) {
+    if (const int err = detail::set_custom_baud(fd, line.baud); err != 0) {
+      refuse(setup, LinkError::kAdapterRefusedBaudRate,
+             name + ": " + std::to_string(line.baud) + " bit/s not accepted: " + std::strerror(err),
+             log);
+    }
+  }
+  termios back{};
+  if (tcgetattr(fd, &back) != 0) {
+    throw LinkException(LinkError::kNotATerminal, name + ": " + std::strerror(errno));
+  }
+  if (!format_kept(back, line)) {
+    refuse(setup, LinkError::kAdapterRefusedFormat, name + ": " + format + " not kept", log);
+  }
+  const std::uint32_t actual = detail::read_baud(fd);
+  if (actual != line.baud) {
+    refuse(setup, LinkError::kAdapterRefusedBaudRate,
+           name + ": asked for " + std::to_string(line.baud) + " bit/s, driver reports " +
+               std::to_string(actual) + " bit/s",
+           log);
+  }
+  return setup;
+}
+
+}  // namespace rs4sim::stream

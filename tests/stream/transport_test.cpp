@@ -1,0 +1,123 @@
+// The transports of the byte-stream layer: serial configuration of any character format on a
+// pseudo-terminal, typed errors of the serial port and of UDP endpoints.
+#include "stream/pty.h"
+#include "stream/serial_transport.h"
+#include "stream/udp_transport.h"
+
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <termios.h>
+#include <unistd.h>
+
+namespace rs4sim::stream {
+namespace {
+
+namespace asio = boost::asio;
+
+class PtyFormatTest : public ::testing::Test {
+ protected:
+  PseudoTerminal pty;
+  std::vector<std::string> notes;
+  LogFn log = [this](const std::string& s) { notes.push_back(s); };
+
+  // Configures a fresh descriptor of the pty's slave side and returns what it kept.
+  termios configure(const LineSettings& line, SerialSetup& setup) {
+    const int fd = ::open(pty.slave_path().c_str(), O_RDWR | O_NOCTTY);
+    EXPECT_GE(fd, 0);
+    EXPECT_NO_THROW(setup = configure_serial(fd, line, "pty", log)) << to_string(line);
+    termios back{};
+    EXPECT_EQ(tcgetattr(fd, &back), 0);
+    ::close(fd);
+    return back;
+  }
+};
+
+// A pty may not keep the parity or an exact rate (it has no line): whatever it refuses is a
+// note, never an error, and every note went to the log.
+TEST_F(PtyFormatTest, EveryFormatAndRateIsSetOrNoted) {
+  const LineSettings lines[] = {
+      {115200, 8, Parity::kNone, 1},  // GridScan [GridScan manual §9.1]
+      {19200, 8, Parity::kEven, 1},   // METRON slave line mode [METRON manual "Slave line mode"]
+      {9600, 7, Parity::kOdd, 2},      {1500000, 8, Parity::kEven, 1},
+      {93750, 8, Parity::kEven, 1},  // no B-constant: termios2/BOTHER
+      {12000000, 8, Parity::kEven, 1}, {250000, 8, Parity::kNone, 2},
+  };
+  for (const LineSettings& line : lines) {
+    notes.clear();
+    SerialSetup setup;
+    (void)configure(line, setup);
+    EXPECT_TRUE(setup.is_pty);
+    EXPECT_EQ(setup.notes, notes) << to_string(line);
+  }
+}
+
+TEST_F(PtyFormatTest, EightNoneOneAndEightEvenOneReachTheTermiosFlags) {
+  SerialSetup setup;
+  const termios n81 = configure({115200, 8, Parity::kNone, 1}, setup);
+  EXPECT_EQ(n81.c_cflag & CSIZE, static_cast<tcflag_t>(CS8));
+  EXPECT_EQ(n81.c_cflag & PARENB, 0U);
+  EXPECT_EQ(n81.c_cflag & CSTOPB, 0U);
+  EXPECT_EQ(cfgetospeed(&n81), static_cast<speed_t>(B115200));
+  const termios e81 = configure({19200, 8, Parity::kEven, 1}, setup);
+  EXPECT_EQ(e81.c_cflag & CSIZE, static_cast<tcflag_t>(CS8));
+  EXPECT_EQ(cfgetospeed(&e81), static_cast<speed_t>(B19200));
+  // Linux ptys keep PARENB; should one not, configure_serial noted it instead of failing.
+  if ((e81.c_cflag & PARENB) == 0) {
+    EXPECT_FALSE(setup.notes.empty());
+  } else {
+    EXPECT_EQ(e81.c_cflag & PARODD, 0U);
+    EXPECT_NE(e81.c_iflag & INPCK, 0U);
+  }
+}
+
+TEST(SerialTransportErrors, MissingDeviceAndNonTerminalAreTypedErrors) {
+  asio::io_context io;
+  const LineSettings line{19200, 8, Parity::kEven, 1};
+  try {
+    SerialTransport t(io, "/nonexistent/ttyRS485", line);
+    FAIL() << "opened a missing device";
+  } catch (const LinkException& e) {
+    EXPECT_EQ(e.code(), LinkError::kOpenFailed);
+    EXPECT_STREQ(e.code().category().name(), "stream.link");
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/ttyRS485"), std::string::npos);
+  }
+  try {
+    SerialTransport t(io, "/dev/null", line);
+    FAIL() << "/dev/null taken as a serial port";
+  } catch (const LinkException& e) {
+    EXPECT_EQ(e.code(), LinkError::kNotATerminal);
+  }
+}
+
+TEST(UdpEndpoint, BadEndpointsAreTypedErrors) {
+  asio::io_context io;
+  for (const char* bad : {"127.0.0.1", ":5000", "127.0.0.1:", "127.0.0.1:99999", "127.0.0.1:x1",
+                          "no-such-host.invalid:5000"}) {
+    try {
+      (void)resolve_udp_endpoint(io, bad);
+      ADD_FAILURE() << bad;
+    } catch (const LinkException& e) {
+      EXPECT_EQ(e.code(), LinkError::kBadEndpoint) << bad;
+    }
+  }
+  const auto ep = resolve_udp_endpoint(io, "localhost:5000");
+  EXPECT_EQ(ep.port(), 5000);
+  EXPECT_TRUE(ep.address().is_loopback());
+  EXPECT_EQ(resolve_udp_endpoint(io, "[::1]:7").address().to_string(), "::1");
+}
+
+TEST(UdpEndpoint, PortInUseIsABindError) {
+  asio::io_context io;
+  const asio::ip::udp::endpoint any{asio::ip::make_address("127.0.0.1"), 0};
+  UdpTransport first(io, any, any);
+  try {
+    UdpTransport second(io, first.local_endpoint(), any);
+    FAIL() << "bound the same port twice";
+  } catch (const LinkException& e) {
+    EXPECT_EQ(e.code(), LinkError::kBindFailed);
+  }
+}
+
+}  // namespace
+}  // namespace rs4sim::stream
