@@ -49,6 +49,11 @@ void add_byte_device_options(CLI::App& cmd, RunOptions& o) {
   cmd.add_option("--node", d.node, "byte devices: node number");
   cmd.add_option("--format", d.format,
                  "byte devices: character format override, e.g. 8E1 (--baud: the bit rate)");
+  cmd.add_option("--rs232", d.rs232,
+                 "rs4: serve the RS232 interface behind the PC adapter: pty | serial:DEVICE[@BAUD] "
+                 "(SIGUSR1 attaches the PC adapter, SIGUSR2 removes it)");
+  cmd.add_option("--pc-adapter", d.pc_adapter, "rs4: the PC adapter at start: attached | detached")
+      ->check(CLI::IsMember({"attached", "detached"}));
 }
 
 Action setup(CLI::App& cmd) {

@@ -94,6 +94,7 @@ class Demo {
   Rs4Segment& s_;
   Narration n_;
   DemoProxy proxy_;
+  int response_ms_ = 0;  // the response time chapter 8 sets through the PC adapter
 
  private:
   static RunUntil run_until(Rs4Segment& s, bool realtime) {
@@ -140,15 +141,25 @@ bool startup(Demo& d) {
 
 // Scenario 1 of [RS4 manual §7.1, §7.2]: the archive has no set for this station, the RS4 runs
 // on factory settings and the proxy says so with CONFIG_SET_TO_DEFAULT.
-bool commissioning(Demo& d) {
-  d.chapter("2. First commissioning: the parameter proxy [RS4 manual §7.1, §7.2]");
-  if (!d.sync("identify")) return false;
-  if (!d.n_.check(
-          d.proxy_.outputs().config_set_to_default && d.proxy_.outputs().error_number_fb == 0,
-          "first commissioning: expected CONFIG_SET_TO_DEFAULT 1 and no error")) {
-    return false;
+bool commissioning(Demo& d, storage::ParameterArchive& archive) {
+  d.chapter("2. Commissioning: the parameter proxy [RS4 manual §7.1, §7.2]");
+  // An archive kept from an earlier run (--archive FILE) already holds a set for this
+  // station: then the new RS4 is a replacement and gets it (scenario 4).
+  const bool known = archive.current(d.proxy_.station()).has_value();
+  if (!d.sync(known ? "download" : "identify")) return false;
+  if (known) {
+    if (!d.n_.check(d.proxy_.outputs() == proxy::FbOutputs{}, "the download reported an error")) {
+      return false;
+    }
+    d.say("  the archive already holds a set for this station: the RS4 got it (scenario 4)");
+  } else {
+    if (!d.n_.check(
+            d.proxy_.outputs().config_set_to_default && d.proxy_.outputs().error_number_fb == 0,
+            "first commissioning: expected CONFIG_SET_TO_DEFAULT 1 and no error")) {
+      return false;
+    }
+    d.say("  the archive has no set for this RS4 and the RS4 has factory settings (scenario 1)");
   }
-  d.say("  the archive has no set for this RS4 and the RS4 has factory settings (scenario 1)");
   return d.restart_pulse(1);
 }
 
@@ -285,7 +296,9 @@ bool parameter_change(Demo& d, storage::ParameterArchive& archive) {
   auto& adapter = s.device().adapter();
   auto& rs4 = s.device().scanner();
   auto set = rs4.parameters();
-  set.response_steps = 2;  // T = 80 ms + 2·40 ms [RS4 manual §7.3]
+  // T = 80 ms + n·40 ms [RS4 manual §7.3]: 160 ms, or 200 ms if an earlier run left 160 ms.
+  set.response_steps = set.response_steps == 2 ? 3 : 2;
+  d.response_ms_ = 80 + 40 * set.response_steps;
   adapter.attach_pc_adapter(s.now());
   d.run_for(100ms);
   if (!rs4.enter_configuration(s.now()) || !rs4.set_parameters(set, s.now()) ||
@@ -294,7 +307,8 @@ bool parameter_change(Demo& d, storage::ParameterArchive& archive) {
   }
   d.run_for(100ms);
   adapter.detach_pc_adapter(s.now());
-  d.say("PC adapter attached, response time set to 160 ms through it, adapter removed");
+  d.say("PC adapter attached, response time set to " + std::to_string(d.response_ms_) +
+        " ms through it, adapter removed");
   if (!d.wait([&] { return (s.input_byte() & kInputProxyRequest) != 0; }, 5s,
               "Proxy-Request: the set changed on site")) {
     return false;
@@ -346,16 +360,15 @@ bool device_exchange(Demo& d, storage::ParameterArchive& archive) {
   if (!d.sync("download")) return false;
   auto& rs4 = s.device().scanner();
   const bool restored = rs4.transfer_checksum() == archived.value().version.crc32 &&
-                        rs4.parameters().response_steps == 2;
+                        80 + 40 * rs4.parameters().response_steps == d.response_ms_;
   if (!d.n_.check(d.proxy_.outputs() == proxy::FbOutputs{} && restored,
                   "the new RS4 did not get the archived set")) {
     return false;
   }
   const auto now_current = archive.current(d.proxy_.station());
-  d.say(
-      "  the new RS4 runs the archived set (response time 160 ms); the archive now names "
-      "serial number " +
-      (now_current ? now_current.value().version.serial_number : std::string("?")));
+  d.say("  the new RS4 runs the archived set (response time " + std::to_string(d.response_ms_) +
+        " ms); the archive now names serial number " +
+        (now_current ? now_current.value().version.serial_number : std::string("?")));
   return d.restart_pulse(1);
 }
 
@@ -376,7 +389,7 @@ int run_rs4_demo(std::ostream& out, const DemoOptions& options) {
   storage::ParameterArchive& store = *archive.value();
   Demo d(s, store, out, options);
   const bool ok = run_steps(
-      {[&] { return startup(d); }, [&] { return commissioning(d); },
+      {[&] { return startup(d); }, [&] { return commissioning(d, store); },
        [&] { return protective_field(d); }, [&] { return field_pairs(d); },
        [&] { return measurement(d); }, [&] { return rs4_error(d); }, [&] { return passivation(d); },
        [&] { return parameter_change(d, store); }, [&] { return device_exchange(d, store); }});

@@ -28,15 +28,17 @@ bool given(const DeviceOptions& o, DeviceFlag f) {
     case DeviceFlag::kBlocked: return o.blocked.has_value();
     case DeviceFlag::kDoor: return o.door.has_value();
     case DeviceFlag::kNode: return o.node.has_value();
+    case DeviceFlag::kRs232: return !o.rs232.empty();
+    case DeviceFlag::kPcAdapter: return !o.pc_adapter.empty();
   }
   return false;
 }
 
 constexpr DeviceFlag kAllFlags[] = {
-    DeviceFlag::kAddress, DeviceFlag::kIdent,  DeviceFlag::kCfg,      DeviceFlag::kBootTime,
-    DeviceFlag::kBaud,    DeviceFlag::kFormat, DeviceFlag::kElements, DeviceFlag::kBeams,
-    DeviceFlag::kModel,   DeviceFlag::kMode,   DeviceFlag::kBlocked,  DeviceFlag::kDoor,
-    DeviceFlag::kNode,
+    DeviceFlag::kAddress, DeviceFlag::kIdent,  DeviceFlag::kCfg,       DeviceFlag::kBootTime,
+    DeviceFlag::kBaud,    DeviceFlag::kFormat, DeviceFlag::kElements,  DeviceFlag::kBeams,
+    DeviceFlag::kModel,   DeviceFlag::kMode,   DeviceFlag::kBlocked,   DeviceFlag::kDoor,
+    DeviceFlag::kNode,    DeviceFlag::kRs232,  DeviceFlag::kPcAdapter,
 };
 
 // A whole decimal number in `text`, or nullopt.
@@ -74,6 +76,8 @@ const char* flag_name(DeviceFlag f) {
     case DeviceFlag::kBlocked: return "--blocked";
     case DeviceFlag::kDoor: return "--door";
     case DeviceFlag::kNode: return "--node";
+    case DeviceFlag::kRs232: return "--rs232";
+    case DeviceFlag::kPcAdapter: return "--pc-adapter";
   }
   return "--?";
 }

@@ -28,6 +28,8 @@ enum class DeviceFlag : std::uint8_t {
   kBlocked,
   kDoor,
   kNode,
+  kRs232,
+  kPcAdapter,
 };
 
 // "--elements".

@@ -61,6 +61,18 @@ struct DeviceOptions {
   std::optional<std::vector<int>> blocked;  // --blocked 9-13,25-34: sorted 1-based numbers
   std::optional<int> door;                  // --door N (GridScan: door position)
   std::optional<int> node;                  // --node N (METRON node)
+  // The RS4's RS232 interface behind the optical PC adapter (docs/rs232.md):
+  std::string rs232;       // --rs232 pty | serial:DEVICE[@BAUD]
+  std::string pc_adapter;  // --pc-adapter attached | detached (at start)
+};
+
+// A device's second serial port beside its main link (the RS4's RS232 interface): the shell
+// opens it on a pseudo-terminal (the path goes out as "<name>: <path>", the second stdout
+// line) or a serial device, and runs it with its own ByteRunner on the same loop.
+struct SidePort {
+  std::string name;  // "rs232"
+  stream::ByteDevice* device = nullptr;
+  std::string path;  // empty: a pseudo-terminal; else the serial device
 };
 
 // What a device needs to offer its gRPC services (docs/rpc.md): they reach its cores only
@@ -81,6 +93,11 @@ class DeviceInstance {
   // A byte device's cores (non-empty: the shell runs a stream::ByteRunner with them instead
   // of a StationRunner, in the first one's LineSettings); they live as long as this object.
   [[nodiscard]] virtual std::vector<stream::ByteDevice*> byte_devices() { return {}; }
+  // The second port, if the options asked for one.
+  [[nodiscard]] virtual std::optional<SidePort> side_port() { return std::nullopt; }
+  // SIGUSR1 (`second` false) / SIGUSR2 while running (the RS4: the PC adapter attached /
+  // removed).
+  virtual void on_user_signal(bool second, dp::TimePoint now) { (void)second, (void)now; }
   // Called once before the link starts (e.g. the RS4's power-on).
   virtual void start(dp::TimePoint now) { (void)now; }
   // "generic slave 5 (ident 0x1234, cfg 10 20)": the banner line names the device.

@@ -10,8 +10,10 @@
 #include "rpc/tapped_station.h"
 #include "rs4/adapter/rs4_gsd.h"
 #include "rs4/device/rs4_segment.h"
+#include "rs4/rs232/rs232_port.h"
 
 #include <cstdio>
+#include <iostream>
 #include <ostream>
 
 namespace rs4sim::app {
@@ -20,7 +22,7 @@ namespace {
 using rs4::device::Rs4Device;
 using rs4::device::Rs4DeviceConfig;
 
-constexpr int kDefaultAddress = 4;  // factory setting of the hex switches [RS4 manual §2]
+constexpr int kDefaultAddress = 4;         // factory setting of the hex switches [RS4 manual §2]
 constexpr int kDefaultBootTimeMs = 30000;  // boot until operational [RS4 manual §1]
 
 Rs4DeviceConfig device_config(const DeviceOptions& o) {
@@ -37,6 +39,31 @@ ServiceList rs4_services(rpc::Rs4Target& target, rpc::Executor& executor) {
           std::make_shared<rpc::FaultsService>(c), std::make_shared<rpc::SimTimeService>(c)};
 }
 
+// --rs232 pty | serial:DEVICE[@BAUD] → the serial device ("" for a pty) and the port's options.
+struct Rs232Choice {
+  std::string path;
+  rs4::rs232::PortOptions options;
+};
+
+Rs232Choice rs232_choice(const std::string& spec) {
+  Rs232Choice c;
+  if (spec == "pty") return c;
+  constexpr std::string_view kSerial = "serial:";
+  if (spec.rfind(kSerial, 0) != 0 || spec.size() == kSerial.size()) {
+    throw UsageError("--rs232 " + spec +
+                     ": use pty or serial:DEVICE[@BAUD], e.g. serial:/dev/ttyUSB1@57600");
+  }
+  std::string rest = spec.substr(kSerial.size());
+  if (const auto at = rest.find('@'); at != std::string::npos) {
+    const std::string baud = rest.substr(at + 1);
+    c.options.baud = parse_bit_rate(baud);
+    rest = rest.substr(0, at);
+  }
+  c.path = rest;
+  if (const auto why = c.options.validate()) throw UsageError("--rs232 " + spec + ": " + *why);
+  return c;
+}
+
 void print_state(std::ostream& out, const Rs4Device& d) {
   const auto v = d.adapter().view();
   out << "rs4 " << int(d.address()) << ": LED " << rs4::adapter::to_string(v.led) << ", RS4 "
@@ -50,9 +77,27 @@ class Rs4Instance final : public DeviceInstance {
   explicit Rs4Instance(const DeviceOptions& o)
       : device_(device_config(o)),
         address_(static_cast<std::uint8_t>(*o.address)),
-        boot_time_ms_(*o.boot_time_ms) {}
+        boot_time_ms_(*o.boot_time_ms),
+        attached_at_start_(o.pc_adapter == "attached") {
+    if (!o.rs232.empty()) {
+      auto choice = rs232_choice(o.rs232);
+      rs232_path_ = choice.path;
+      port_.emplace(device_.adapter(), choice.options);
+    }
+  }
   std::vector<dp::Station*> stations() override { return {&tap_}; }
-  void start(dp::TimePoint now) override { device_.power_on(now); }
+  std::optional<SidePort> side_port() override {
+    if (!port_) return std::nullopt;
+    return SidePort{"rs232", &*port_, rs232_path_};
+  }
+  void start(dp::TimePoint now) override {
+    device_.power_on(now);
+    if (attached_at_start_) attach(true, now);
+  }
+  void on_user_signal(bool second, dp::TimePoint now) override {
+    attach(!second, now);
+    std::cerr << "rs4sim: PC adapter " << (second ? "removed" : "attached") << std::endl;
+  }
   [[nodiscard]] std::string describe() const override {
     char ident[8];
     std::snprintf(ident, sizeof ident, "%x", rs4::adapter::ident_number());
@@ -63,6 +108,13 @@ class Rs4Instance final : public DeviceInstance {
   void print_status(std::ostream& out, const dp::link::StationCounters& link) const override {
     (void)link;
     print_state(out, device_);
+    if (port_) {
+      const auto& k = port_->counters();
+      out << "rs4 " << int(address_) << " RS232: commands " << k.commands << ", 0x23 sent "
+          << k.measurements << ", refused (password) " << k.wrong_passwords << ", framing errors "
+          << k.framing_errors << ", ignored while detached " << k.ignored_while_detached
+          << std::endl;
+    }
   }
   ServiceList services(const ServiceContext& c) override {
     target_ = std::make_unique<rpc::DeviceTarget>(device_, address_, c.clock, c.io);
@@ -71,11 +123,25 @@ class Rs4Instance final : public DeviceInstance {
   }
 
  private:
+  // The reed contact of the optical window: through the RS232 port when it is served (it
+  // opens and closes with it), else the adapter alone.
+  void attach(bool attached, dp::TimePoint now) {
+    if (port_) {
+      attached ? port_->attach(now) : port_->detach(now);
+    } else {
+      attached ? device_.adapter().attach_pc_adapter(now)
+               : device_.adapter().detach_pc_adapter(now);
+    }
+  }
+
   Rs4Device device_;
   rpc::TappedStation tap_{device_};  // telegrams for the event stream
   std::unique_ptr<rpc::DeviceTarget> target_;
   std::uint8_t address_;
   int boot_time_ms_;
+  bool attached_at_start_;
+  std::string rs232_path_;
+  std::optional<rs4::rs232::Rs232Port> port_;
 };
 
 // Our master configured from the GSD and a PROFIsafe F-host that acknowledges every
@@ -116,7 +182,10 @@ void validate(DeviceOptions& o) {
   if (!o.ident.empty() || !o.cfg.empty()) {
     throw UsageError("--ident/--cfg are for --device generic; the RS4's come from its GSD");
   }
-  refuse_unused(o, "rs4", {DeviceFlag::kAddress, DeviceFlag::kBootTime});
+  refuse_unused(
+      o, "rs4",
+      {DeviceFlag::kAddress, DeviceFlag::kBootTime, DeviceFlag::kRs232, DeviceFlag::kPcAdapter});
+  if (!o.rs232.empty()) (void)rs232_choice(o.rs232);
   if (!o.address) o.address = kDefaultAddress;
   if (!o.boot_time_ms) o.boot_time_ms = kDefaultBootTimeMs;
   if (*o.address < 0 || *o.address > 126) {

@@ -98,8 +98,12 @@ std::unique_ptr<stream::Transport> make_transport(const LinkOptions& l,
   };
   if (l.link == "pty") {
     pty = std::make_unique<stream::PseudoTerminal>();
-    out << pty->slave_path() << std::endl;  // first line: where the master/client connects
-    return std::make_unique<stream::SerialTransport>(io, pty->release_master(), line, "pty", note);
+    auto transport =
+        std::make_unique<stream::SerialTransport>(io, pty->release_master(), line, "pty", note);
+    // First line: where the master/client connects; printed once the line is configured, so
+    // a client that sets its own side's termios after reading it is not overridden.
+    out << pty->slave_path() << std::endl;
+    return transport;
   }
   if (l.link == "serial") return std::make_unique<stream::SerialTransport>(io, l.port, line, note);
   return std::make_unique<stream::UdpTransport>(io, stream::resolve_udp_endpoint(io, l.listen),
@@ -150,9 +154,47 @@ int run_on_link(DeviceInstance& instance, const LinkOptions& l, std::ostream& ou
               << e.code().value() << "]" << std::endl;
     return 1;
   }
+  // The device's second port (the RS4's RS232 interface): its own transport and runner.
+  const auto side = instance.side_port();
+  std::unique_ptr<stream::PseudoTerminal> side_pty;
+  std::unique_ptr<stream::Transport> side_transport;
+  if (side) {
+    try {
+      const stream::LogFn note = [](const std::string& s) {
+        std::cerr << "rs4sim: note: " << s << std::endl;
+      };
+      const auto line = side->device->line_settings();
+      if (side->path.empty()) {
+        side_pty = std::make_unique<stream::PseudoTerminal>();
+        side_transport = std::make_unique<stream::SerialTransport>(io, side_pty->release_master(),
+                                                                   line, side->name, note);
+        out << side->name << ": " << side_pty->slave_path() << std::endl;
+      } else {
+        side_transport = std::make_unique<stream::SerialTransport>(io, side->path, line, note);
+      }
+    } catch (const stream::LinkException& e) {
+      std::cerr << "rs4sim: " << side->name << ": " << e.what() << std::endl;
+      return 1;
+    }
+  }
   dp::RealClock clock;
   instance.start(clock.now());
   LinkRunner runner(io, clock, *transport, instance);
+  std::optional<stream::ByteRunner> side_runner;
+  if (side) {
+    side_runner.emplace(io, clock, *side_transport);
+    side_runner->add(*side->device);
+  }
+  // SIGUSR1/SIGUSR2: the device's user actions (the RS4: PC adapter attached/removed).
+  asio::signal_set user_signals(io, SIGUSR1, SIGUSR2);
+  std::function<void()> await_user_signal = [&] {
+    user_signals.async_wait([&](const boost::system::error_code& ec, int signo) {
+      if (ec) return;
+      instance.on_user_signal(signo == SIGUSR2, clock.now());
+      await_user_signal();
+    });
+  };
+  await_user_signal();
   rpc::AsioExecutor executor(io);
   std::unique_ptr<GrpcServing> serving;
   if (!l.grpc.empty()) {
@@ -162,6 +204,8 @@ int run_on_link(DeviceInstance& instance, const LinkOptions& l, std::ostream& ou
   asio::steady_timer limit(io);
   const auto halt = [&] {
     runner.stop();
+    if (side_runner) side_runner->stop();
+    user_signals.cancel();
     signals.cancel();
     limit.cancel();
   };
@@ -176,6 +220,7 @@ int run_on_link(DeviceInstance& instance, const LinkOptions& l, std::ostream& ou
   std::cerr << "rs4sim: " << instance.describe() << " on " << l.link << "; Ctrl-C to stop"
             << std::endl;
   runner.start();
+  if (side_runner) side_runner->start();
   io.run();
   runner.print_status(out);
   return 0;

@@ -3,7 +3,7 @@
 // tests/rs4/rs232/rs232_fixture.h) whose clock follows the wall clock, as `rs4sim run --rs232
 // pty` will. get, set with the password, a wrong password changes nothing, diff against live.
 #include "archive_cli_fixture.h"
-#include "dp/link/pty.h"
+#include "stream/pty.h"
 #include "rs4/param_doc/parameter_document.h"
 #include "tests/rs4/rs232/rs232_fixture.h"
 
@@ -69,7 +69,7 @@ class ParamLive : public ArchiveCli {
     return run_rs4sim("param " + args + " --port " + pty_.slave_path());
   }
 
-  dp::link::PseudoTerminal pty_;
+  stream::PseudoTerminal pty_;
   PortFixture rs4;
   rs4::scanner::ParameterSet expected_;
   std::atomic<bool> stopping_{false};

@@ -125,7 +125,9 @@ TEST(Rs4MasterStation, UndrainedCycleTicksCollapseIntoTheNewest) {
   Segment s(station_config({4}));
   ASSERT_TRUE(
       s.run_until([&] { return s.station.view(4)->safety == profisafe::FHostState::kRun; }, 5s));
-  s.bus.run_for(100ms);  // input byte settles
+  // The input byte settles: the error bit of the F-host's start-up (0x2418) goes with its
+  // going alarm ≥500 ms later [docs/decisions.md#rs4-error-bit].
+  s.bus.run_for(1s);
   s.events.clear();
   s.station.take_events(s.events);
   s.events.clear();

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """`rs4sim run --device metron --link pty` end to end: raw bytes in, answers checked byte for
 byte (docs/metron.md "Example bytes"). Standard library only (os, termios); no code of the
-project on this side. Usage: metron_pty_test.py <path of rs4sim>"""
+project on this side. Usage: metron_pty.py <path of rs4sim>"""
 import os
 import subprocess
 import sys
@@ -16,7 +16,11 @@ def start(*flags):
     proc = subprocess.Popen([RS4SIM, "run", "--device", "metron", "--link", "pty",
                              "--duration", "20", *flags],
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
-    path = proc.stdout.readline().decode().strip()
+    path = ""
+    for _ in range(10):  # notes on stderr may come first
+        path = proc.stdout.readline().decode().strip()
+        if path.startswith("/dev/") or not path:
+            break
     if not path.startswith("/dev/"):
         rest = proc.stdout.read().decode() if proc.poll() is not None else ""
         sys.exit(f"no pty path from rs4sim run {' '.join(flags)}: {path!r} {rest}")

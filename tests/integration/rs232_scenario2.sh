@@ -1,0 +1,111 @@
+#!/bin/sh
+# The manual's scenario 2 the way a user performs it, over two real pseudo-terminals
+# ([RS4 manual §7.1, §7.2], docs/rs232.md, docs/param.md): `rs4sim run --device rs4` serves
+# PROFIBUS on one pty and the RS4's RS232 interface on another (--rs232 pty); `rs4sim master`
+# on the PROFIBUS side completes the first-commissioning sync; then the PC adapter is attached
+# (SIGUSR1), the RS232 port streams 0x23 measurement frames, `rs4sim param set` changes the
+# response time with the password, the adapter is removed (SIGUSR2), Proxy-Request comes and
+# the master's proxy uploads the new set into its archive.
+# Usage: rs232_scenario2.sh RS4SIM
+set -u
+rs4sim=$1
+dir=$(mktemp -d)
+run_pid=
+master_pid=
+cleanup() {
+  [ -n "$master_pid" ] && kill "$master_pid" 2>/dev/null
+  [ -n "$run_pid" ] && kill "$run_pid" 2>/dev/null && wait "$run_pid" 2>/dev/null
+  rm -rf "$dir"
+}
+trap cleanup EXIT
+fail() {
+  echo "FAIL: $1"
+  for f in run.out run.err master.out master.err; do echo "--- $f"; cat "$dir/$f" 2>/dev/null; done
+  exit 1
+}
+
+"$rs4sim" run --device rs4 --address 4 --link pty --boot-time 1000 --duration 60 \
+  --rs232 pty --pc-adapter detached >"$dir/run.out" 2>"$dir/run.err" &
+run_pid=$!
+i=0
+while [ "$(wc -l <"$dir/run.out")" -lt 2 ] && [ $i -lt 100 ]; do
+  sleep 0.1
+  i=$((i + 1))
+done
+bus=$(sed -n 1p "$dir/run.out")
+rs232=$(sed -n 2p "$dir/run.out" | sed 's/^rs232: //')
+case "$bus" in /dev/*) ;; *) fail "no PROFIBUS pty path" ;; esac
+case "$rs232" in /dev/*) ;; *) fail "no 'rs232: <path>' line" ;; esac
+
+"$rs4sim" master --slave 4 --link serial --port "$bus" --json --duration 20 \
+  --f-wd-time 500 --dp-watchdog 1000 --archive "$dir/archive.sqlite3" \
+  >"$dir/master.out" 2>"$dir/master.err" &
+master_pid=$!
+
+# First commissioning: factory set, empty archive (scenario 1).
+i=0
+until grep -q '"event":"proxy",.*"step":"idle",.*"config_set_to_default":true,"error_number_fb":0' \
+  "$dir/master.out"; do
+  [ $i -ge 100 ] && fail "no first-commissioning sync"
+  sleep 0.1
+  i=$((i + 1))
+done
+
+kill -USR1 "$run_pid"  # the PC adapter attached: the RS232 port opens, 0x23 streams
+sleep 0.5
+/usr/bin/python3 - "$rs232" <<'PY' || fail "no 0x23 measurement frames on the RS232 port"
+import os, sys, termios, time
+fd = os.open(sys.argv[1], os.O_RDWR | os.O_NOCTTY)
+attrs = termios.tcgetattr(fd)
+attrs[0] = attrs[1] = attrs[3] = 0          # raw
+attrs[2] = termios.CS8 | termios.CREAD | termios.CLOCAL
+termios.tcsetattr(fd, termios.TCSANOW, attrs)
+data = b""
+end = time.time() + 1.5
+while time.time() < end:
+    try:
+        os.set_blocking(fd, False)
+        data += os.read(fd, 65536)
+    except BlockingIOError:
+        time.sleep(0.01)
+os.close(fd)
+# Frames: 00 00 | body (zero-stuffed: FF after two 00) | CHK | 00 00 00; CHK = XOR of the sent
+# body bytes, 0x00 sent as 0xFF ([roboticslibrary/rl LeuzeRs4.cpp], docs/rs232.md).
+good = 0
+for raw in data.split(b"\x00\x00\x00"):
+    raw = raw.lstrip(b"\x00")
+    if len(raw) < 3 or raw[0] != 0x23:
+        continue
+    body, chk = raw[:-1], raw[-1]
+    x = 0
+    for b in body:
+        x ^= b
+    if (x or 0xFF) == chk:
+        good += 1
+print(f"0x23 frames with a good check byte: {good}")
+sys.exit(0 if good >= 2 else 1)
+PY
+
+"$rs4sim" param get --port "$rs232" >"$dir/site.json" 2>"$dir/param.err" || fail "param get: $(cat "$dir/param.err")"
+/usr/bin/python3 - "$dir/site.json" <<'PY' || fail "the document has no response_time_ms"
+import json, sys
+doc = json.load(open(sys.argv[1]))
+assert doc["response_time_ms"] == 80, doc["response_time_ms"]
+doc["response_time_ms"] = 160
+json.dump(doc, open(sys.argv[1], "w"))
+PY
+"$rs4sim" param set "$dir/site.json" --port "$rs232" >"$dir/param.out" 2>"$dir/param.err" &&
+  fail "param set without the password was accepted"
+"$rs4sim" param set "$dir/site.json" --port "$rs232" --password ROD4LE \
+  >"$dir/param.out" 2>"$dir/param.err" || fail "param set: $(cat "$dir/param.err")"
+
+kill -USR2 "$run_pid"  # the PC adapter removed: Proxy-Request, the proxy uploads the new set
+wait "$master_pid"
+rc=$?
+master_pid=
+[ $rc -eq 0 ] || fail "rs4sim master exited with $rc"
+grep -q '"event":"proxy",.*"step":"upload' "$dir/master.out" || fail "no upload step"
+"$rs4sim" param get --archive "$dir/archive.sqlite3" --address 4 >"$dir/archived.json" \
+  2>"$dir/param.err" || fail "param get --archive: $(cat "$dir/param.err")"
+grep -q '"response_time_ms": *160' "$dir/archived.json" || fail "the archive does not hold the new set"
+echo "scenario 2 over the RS232 port: set changed through the PC adapter, uploaded and archived"
