@@ -10,14 +10,13 @@ namespace {
 
 using archive::ArchiveOptions;
 
-struct SubCommand {
-  const char* name;
-  const char* description;
-  void (*options)(CLI::App& sub, ArchiveOptions& o);
-  int (*run)(const ArchiveOptions& o);
-};
-
 void no_options(CLI::App&, ArchiveOptions&) {}
+
+// Every archive sub-command: --archive FILE and --json.
+void common_options(CLI::App& sub, ArchiveOptions& o) {
+  archive::add_archive_option(sub, o.common);
+  archive::add_json_option(sub, o.common);
+}
 
 void history_options(CLI::App& sub, ArchiveOptions& o) {
   archive::add_station_options(sub, o.common);
@@ -49,7 +48,7 @@ void restore_options(CLI::App& sub, ArchiveOptions& o) {
   sub.add_option("--note", o.note, "note stored with the new version");
 }
 
-constexpr SubCommand kSubCommands[] = {
+constexpr SubCommand<ArchiveOptions> kSubCommands[] = {
     {"list", "Stations with their current version", no_options, archive::run_list},
     {"history", "Versions and sync log of one station", history_options, archive::run_history},
     {"show", "One version with its decoded parameters", show_options, archive::run_show},
@@ -64,24 +63,7 @@ constexpr SubCommand kSubCommands[] = {
 
 const CommandRegistration kRegistration{
     "archive", "The parameter archive: list, show, history, diff, export, import, restore, verify",
-    [](CLI::App& cmd) -> Action {
-      cmd.require_subcommand(1);
-      std::vector<std::pair<CLI::App*, std::shared_ptr<ArchiveOptions>>> subs;
-      for (const auto& sc : kSubCommands) {
-        auto o = std::make_shared<ArchiveOptions>();
-        CLI::App* sub = cmd.add_subcommand(sc.name, sc.description);
-        archive::add_archive_option(*sub, o->common);
-        archive::add_json_option(*sub, o->common);
-        sc.options(*sub, *o);
-        subs.emplace_back(sub, o);
-      }
-      return [subs]() -> int {
-        for (std::size_t i = 0; i < subs.size(); ++i) {
-          if (subs[i].first->parsed()) return kSubCommands[i].run(*subs[i].second);
-        }
-        return 2;
-      };
-    }};
+    [](CLI::App& cmd) -> Action { return sub_commands(cmd, kSubCommands, common_options); }};
 
 }  // namespace
 }  // namespace rs4sim::app

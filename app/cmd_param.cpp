@@ -196,14 +196,7 @@ void diff_options(CLI::App& sub, ParamOptions& o) {
   sub.add_option("--svg", o.svg, "also write an SVG picture of both sets' field pairs to FILE");
 }
 
-struct SubCommand {
-  const char* name;
-  const char* description;
-  void (*options)(CLI::App& sub, ParamOptions& o);
-  int (*run)(const ParamOptions& o);
-};
-
-constexpr SubCommand kSubCommands[] = {
+constexpr SubCommand<ParamOptions> kSubCommands[] = {
     {"get", "Print the parameter set as a JSON document", get_options, run_get},
     {"set", "Validate a JSON document and write it with the password", set_options, run_set},
     {"diff", "Field-level difference of two parameter sets", diff_options, run_diff},
@@ -211,22 +204,7 @@ constexpr SubCommand kSubCommands[] = {
 
 const CommandRegistration kRegistration{
     "param", "The RS4 parameter set as a JSON document: get, set, diff (docs/param.md)",
-    [](CLI::App& cmd) -> Action {
-      cmd.require_subcommand(1);
-      std::vector<std::pair<CLI::App*, std::shared_ptr<ParamOptions>>> subs;
-      for (const auto& sc : kSubCommands) {
-        auto o = std::make_shared<ParamOptions>();
-        CLI::App* sub = cmd.add_subcommand(sc.name, sc.description);
-        sc.options(*sub, *o);
-        subs.emplace_back(sub, o);
-      }
-      return [subs]() -> int {
-        for (std::size_t i = 0; i < subs.size(); ++i) {
-          if (subs[i].first->parsed()) return kSubCommands[i].run(*subs[i].second);
-        }
-        return 2;
-      };
-    }};
+    [](CLI::App& cmd) -> Action { return sub_commands(cmd, kSubCommands); }};
 
 }  // namespace
 }  // namespace rs4sim::app

@@ -7,8 +7,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstddef>
 #include <functional>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rs4sim::app {
@@ -38,5 +41,37 @@ struct CommandRegistration {
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+// One sub-command of a command with sub-commands (`rs4sim archive list`, `rs4sim param get`):
+// its options go into its own Options object.
+template <typename Options>
+struct SubCommand {
+  const char* name;
+  const char* description;
+  void (*options)(CLI::App& sub, Options& o);
+  int (*run)(const Options& o);
+};
+
+// Registers every sub-command of `table` on `cmd` (exactly one required), each with the
+// options `common` adds first (may be null) and its own; the action runs the one given.
+template <typename Options, std::size_t N>
+Action sub_commands(CLI::App& cmd, const SubCommand<Options> (&table)[N],
+                    void (*common)(CLI::App& sub, Options& o) = nullptr) {
+  cmd.require_subcommand(1);
+  std::vector<std::pair<CLI::App*, std::shared_ptr<Options>>> subs;
+  for (const auto& sc : table) {
+    auto o = std::make_shared<Options>();
+    CLI::App* sub = cmd.add_subcommand(sc.name, sc.description);
+    if (common != nullptr) common(*sub, *o);
+    sc.options(*sub, *o);
+    subs.emplace_back(sub, o);
+  }
+  return [subs, &table]() -> int {
+    for (std::size_t i = 0; i < subs.size(); ++i) {
+      if (subs[i].first->parsed()) return table[i].run(*subs[i].second);
+    }
+    return 2;
+  };
+}
 
 }  // namespace rs4sim::app
