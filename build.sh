@@ -65,11 +65,15 @@ case "$mode" in
       (cd build && ctest -L "^$tier\$" --output-on-failure -j "$JOBS")
     done
     echo "==> [2/3] ASan + UBSan build + ctest"
-    configure_and_build build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRS4SIM_SANITIZE=ON -DRS4SIM_BENCH=OFF
+    # -O1 -g1 (line tables only): the usual sanitizer setting; compiles about twice as fast as
+    # -O2 -g and still gives file:line in every report.
+    configure_and_build build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRS4SIM_SANITIZE=ON -DRS4SIM_BENCH=OFF \
+      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
     (cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
        UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j "$JOBS")
     echo "==> [3/3] libFuzzer targets, ${FUZZ_SECONDS}s each"
-    configure_and_build build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRS4SIM_FUZZ=ON
+    configure_and_build build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRS4SIM_FUZZ=ON \
+      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
     fuzz/run_all.sh build-fuzz/fuzz "$FUZZ_SECONDS"
     echo "==> all tests passed"
     ;;
