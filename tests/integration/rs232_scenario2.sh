@@ -24,11 +24,12 @@ fail() {
   exit 1
 }
 
+: >"$dir/run.out"  # exists before the background shell opens it
 "$rs4sim" run --device rs4 --address 4 --link pty --boot-time 1000 --duration 60 \
   --rs232 pty --pc-adapter detached >"$dir/run.out" 2>"$dir/run.err" &
 run_pid=$!
 i=0
-while [ "$(wc -l <"$dir/run.out")" -lt 2 ] && [ $i -lt 100 ]; do
+while [ "$(wc -l <"$dir/run.out" 2>/dev/null || echo 0)" -lt 2 ] && [ $i -lt 100 ]; do
   sleep 0.1
   i=$((i + 1))
 done

@@ -134,7 +134,9 @@ TEST_F(RpcEventsTest, ASlowClientGetsEventsDroppedNotUnboundedMemory) {
     EXPECT_EQ(e.sequence(), ++sequence);  // the gap is an event, not a hole
     if (e.has_dropped()) dropped = e.dropped().count();
   }
-  EXPECT_GT(dropped, 100U);
+  // How many are dropped depends on how fast the server's writer drains into the transport
+  // (an ASan build is slower): that some are, and are counted, is the behaviour.
+  EXPECT_GT(dropped, 0U);
   ctx.TryCancel();
   (void)reader->Finish();
 }
