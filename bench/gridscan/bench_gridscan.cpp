@@ -2,21 +2,15 @@
 // request (the whole device path: idle-gap framing, checks, command, answer frame with
 // CRC-32) and the memory of one device instance (sizeof + heap). Figures are reported,
 // never asserted.
+#include "bench/heap_in_use.h"
 #include "gridscan/device.h"
 
 #include <benchmark/benchmark.h>
 
-#include <malloc.h>
-
 #include <memory>
 #include <vector>
 
-namespace {
-
-// Heap bytes in use (glibc): the difference around a construction is its heap share.
-std::size_t heap_in_use() { return mallinfo2().uordblks; }
-
-}  // namespace
+using rs4sim::bench::heap_in_use;
 
 namespace rs4sim::gridscan {
 namespace {

@@ -2,22 +2,16 @@
 // its reply encoded (on_bytes + on_time + take_transmit on a manual clock), one
 // standard-mode report composed and sent, and memory per device instance (sizeof + heap).
 // Figures are reported, never asserted.
+#include "bench/heap_in_use.h"
 #include "metron/metron_device.h"
 #include "metron/standard_report.h"
 
 #include <benchmark/benchmark.h>
 
-#include <malloc.h>
-
 #include <memory>
 #include <vector>
 
-namespace {
-
-// Heap bytes in use (glibc): the difference around a construction is its heap share.
-std::size_t heap_in_use() { return mallinfo2().uordblks; }
-
-}  // namespace
+using rs4sim::bench::heap_in_use;
 
 namespace rs4sim::metron {
 namespace {

@@ -1,21 +1,15 @@
 // Benchmarks of the RS4 device assembly (issue 4): memory per emulated RS4 (target
 // ≤ 200 KiB: dp::slave::Slave + Adapter + Scanner, sizeof + heap) and one bus cycle master ↔ RS4
 // including the PROFIsafe F-host and F-device. Figures are reported, never asserted.
+#include "bench/heap_in_use.h"
 #include "rs4/device/rs4_segment.h"
 
 #include <benchmark/benchmark.h>
 
-#include <malloc.h>
-
 #include <memory>
 #include <vector>
 
-namespace {
-
-// Heap bytes in use (glibc): the difference around a construction is its heap share.
-std::size_t heap_in_use() { return mallinfo2().uordblks; }
-
-}  // namespace
+using rs4sim::bench::heap_in_use;
 
 namespace rs4sim::rs4::device {
 namespace {
