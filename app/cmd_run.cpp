@@ -68,6 +68,12 @@ Action setup(CLI::App& cmd) {
   cmd.add_option("--cfg", d.cfg, "generic: configuration identifiers in hex, e.g. \"10 20\"");
   cmd.add_option("--boot-time", d.boot_time_ms,
                  "rs4: boot time until operational in ms (default 30000)");
+  cmd.add_option("--command-time", d.command_time_ms,
+                 "rs4: how long the RS4 processes a command in ms, 0..120000 (default 40; the "
+                 "manual: up to 2 minutes)");
+  cmd.add_option("--adapter-response-time", d.response_time_ms,
+                 "rs4: the PROFIsafe adapter's response time in ms, 0..1000 (default 10, as "
+                 "the manual's technical data)");
   add_byte_device_options(cmd, *o);
   add_link_options(cmd, l, "the master");
   cmd.add_option("--grpc", l.grpc,

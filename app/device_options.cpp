@@ -19,6 +19,8 @@ bool given(const DeviceOptions& o, DeviceFlag f) {
     case DeviceFlag::kIdent: return !o.ident.empty();
     case DeviceFlag::kCfg: return !o.cfg.empty();
     case DeviceFlag::kBootTime: return o.boot_time_ms.has_value();
+    case DeviceFlag::kCommandTime: return o.command_time_ms.has_value();
+    case DeviceFlag::kResponseTime: return o.response_time_ms.has_value();
     case DeviceFlag::kBaud: return o.baud.has_value();
     case DeviceFlag::kFormat: return !o.format.empty();
     case DeviceFlag::kElements: return o.elements.has_value();
@@ -38,7 +40,8 @@ constexpr DeviceFlag kAllFlags[] = {
     DeviceFlag::kAddress, DeviceFlag::kIdent,  DeviceFlag::kCfg,       DeviceFlag::kBootTime,
     DeviceFlag::kBaud,    DeviceFlag::kFormat, DeviceFlag::kElements,  DeviceFlag::kBeams,
     DeviceFlag::kModel,   DeviceFlag::kMode,   DeviceFlag::kBlocked,   DeviceFlag::kDoor,
-    DeviceFlag::kNode,    DeviceFlag::kRs232,  DeviceFlag::kPcAdapter,
+    DeviceFlag::kNode,    DeviceFlag::kRs232,  DeviceFlag::kPcAdapter, DeviceFlag::kCommandTime,
+    DeviceFlag::kResponseTime,
 };
 
 // A whole decimal number in `text`, or nullopt.
@@ -67,6 +70,8 @@ const char* flag_name(DeviceFlag f) {
     case DeviceFlag::kIdent: return "--ident";
     case DeviceFlag::kCfg: return "--cfg";
     case DeviceFlag::kBootTime: return "--boot-time";
+    case DeviceFlag::kCommandTime: return "--command-time";
+    case DeviceFlag::kResponseTime: return "--adapter-response-time";
     case DeviceFlag::kBaud: return "--baud";
     case DeviceFlag::kFormat: return "--format";
     case DeviceFlag::kElements: return "--elements";

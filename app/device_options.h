@@ -19,6 +19,8 @@ enum class DeviceFlag : std::uint8_t {
   kIdent,
   kCfg,
   kBootTime,
+  kCommandTime,
+  kResponseTime,
   kBaud,
   kFormat,
   kElements,

@@ -51,6 +51,8 @@ struct DeviceOptions {
   std::string ident;                // generic: Ident_Number, e.g. "0x1234"
   std::string cfg;                  // generic: configuration identifiers in hex, e.g. "10 20"
   std::optional<int> boot_time_ms;  // rs4: boot until operational (default 30000)
+  std::optional<int> command_time_ms;   // rs4: RS4 command processing (default 40)
+  std::optional<int> response_time_ms;  // rs4: adapter response time (default 10)
   // Byte devices:
   std::optional<std::uint32_t> baud;        // --baud as bit/s (only for byte devices)
   std::string format;                       // --format, e.g. "8E1" (checked: stream::parse_format)

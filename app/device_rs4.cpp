@@ -24,11 +24,17 @@ using rs4::device::Rs4DeviceConfig;
 
 constexpr int kDefaultAddress = 4;         // factory setting of the hex switches [RS4 manual §2]
 constexpr int kDefaultBootTimeMs = 30000;  // boot until operational [RS4 manual §1]
+// One scan [docs/decisions.md#rs4-command-time]; 2 minutes at most [RS4 manual §5.2.1].
+constexpr int kDefaultCommandTimeMs = 40;
+constexpr int kMaxCommandTimeMs = 120000;
+constexpr int kDefaultResponseTimeMs = 10;  // "Reaktionszeit PROFIsafe-Adapter 10 ms" [RS4 manual]
 
 Rs4DeviceConfig device_config(const DeviceOptions& o) {
   Rs4DeviceConfig c;
   c.switches = rs4::device::switches_for(static_cast<std::uint8_t>(*o.address));
   c.boot_time = std::chrono::milliseconds(*o.boot_time_ms);
+  c.adapter.rs4_command_time = std::chrono::milliseconds(*o.command_time_ms);
+  c.adapter.response_time = std::chrono::milliseconds(*o.response_time_ms);
   return c;
 }
 
@@ -184,7 +190,8 @@ void validate(DeviceOptions& o) {
   }
   refuse_unused(
       o, "rs4",
-      {DeviceFlag::kAddress, DeviceFlag::kBootTime, DeviceFlag::kRs232, DeviceFlag::kPcAdapter});
+      {DeviceFlag::kAddress, DeviceFlag::kBootTime, DeviceFlag::kRs232, DeviceFlag::kPcAdapter,
+       DeviceFlag::kCommandTime, DeviceFlag::kResponseTime});
   if (!o.rs232.empty()) (void)rs232_choice(o.rs232);
   if (!o.address) o.address = kDefaultAddress;
   if (!o.boot_time_ms) o.boot_time_ms = kDefaultBootTimeMs;
@@ -196,6 +203,17 @@ void validate(DeviceOptions& o) {
   if (*o.boot_time_ms < 0 || *o.boot_time_ms > 600000) {
     throw UsageError("--boot-time: " + std::to_string(*o.boot_time_ms) +
                      " ms is outside 0..600000");
+  }
+  if (!o.command_time_ms) o.command_time_ms = kDefaultCommandTimeMs;
+  if (*o.command_time_ms < 0 || *o.command_time_ms > kMaxCommandTimeMs) {
+    throw UsageError("--command-time: " + std::to_string(*o.command_time_ms) +
+                     " ms is outside 0..120000 (the manual: the RS4 needs up to 2 minutes, "
+                     "[RS4 manual §5.2.1])");
+  }
+  if (!o.response_time_ms) o.response_time_ms = kDefaultResponseTimeMs;
+  if (*o.response_time_ms < 0 || *o.response_time_ms > 1000) {
+    throw UsageError("--adapter-response-time: " + std::to_string(*o.response_time_ms) +
+                     " ms is outside 0..1000");
   }
 }
 

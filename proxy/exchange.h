@@ -22,7 +22,9 @@ namespace rs4sim::proxy {
 
 struct ExchangeTiming {
   dp::Duration poll_interval = std::chrono::milliseconds(10);
-  dp::Duration answer_timeout = std::chrono::seconds(10);  // from the last WRITE
+  // From the last WRITE: the RS4 may take "bis zu 2 Minuten" to process a command
+  // [RS4 manual §5.2.1], so the proxy waits that long and 10 s more.
+  dp::Duration answer_timeout = std::chrono::seconds(130);
 };
 
 class Exchange {

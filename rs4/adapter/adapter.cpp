@@ -78,6 +78,7 @@ const char* to_string(ProxyPhase p) noexcept {
 
 void Adapter::Channel::clear() {
   assembler.reset();
+  processing.clear();
   answers.clear();
   reading = protocol::BlockSplitter{};
 }
@@ -93,6 +94,8 @@ void Adapter::power_on(TimePoint now) {
   proxy_request_ = false;
   proxy_.reset();
   scanner_.power_on(now);
+  signal_line_.clear();
+  seen_ = sample_rs4();
   start_adapter(now, /*keep_errors=*/false);
 }
 
@@ -107,6 +110,8 @@ bool Adapter::exchange_scanner(const scanner::ScannerConfig& unit) {
 void Adapter::power_off(TimePoint now) {
   powered_ = false;
   scanner_.power_off(now);
+  signal_line_.clear();
+  seen_ = {};
   errors_.clear();  // [RS4 manual §5.2.2]: the error memory does not survive power-off
   address_.reset();
   fdevice_ = profisafe::FDevice(fdevice_config(std::nullopt));
@@ -270,6 +275,10 @@ std::optional<TimePoint> Adapter::next_deadline() const {
   fold(init_end_);
   fold(link_down_until_);
   fold(field_pair_release_at_);
+  if (!signal_line_.empty()) fold(signal_line_.front().first);
+  for (const auto* ch : {&c1_, &c2_}) {
+    if (!ch->processing.empty()) fold(ch->processing.front().due);
+  }
   if (error_active_) fold(last_error_at_ + config_.going_alarm_delay);
   return next;
 }
@@ -280,6 +289,7 @@ void Adapter::on_time(TimePoint now) {
   if (link_down_until_ && now >= *link_down_until_) link_down_until_.reset();
   fdevice_.on_time(now);
   collect_rs4(now);
+  finish_processing(now);
   if (field_pair_release_at_ && now >= *field_pair_release_at_) field_pair_release_at_.reset();
   check_going_alarm(now);
   switch_through_after_sync(now);  // refreshes the input byte

@@ -65,6 +65,14 @@ struct AdapterConfig {
                                          // ([RS4 manual §5.1.2])
   milliseconds going_alarm_delay{500};   // ≥500 ms without error → going alarm
                                          // ([RS4 manual §5.3.2])
+  // "Reaktionszeit PROFIsafe-Adapter 10 ms" [RS4 manual, technical data; §6.6]: a change of the
+  // RS4's OSSDs and field bits reaches the cyclic input byte this much later. 0: at once.
+  milliseconds response_time{10};
+  // The RS4 takes time to process a command: "bis zu 2 Minuten" [RS4 manual §5.2.1]. Its answer
+  // (and its effect) comes this much after the command's last WRITE block; 0: at once. The
+  // manual gives only the bound; one scan (40 ms) is the default
+  // [docs/decisions.md#rs4-command-time].
+  milliseconds rs4_command_time{40};
   std::size_t read_buffers = 4;          // answers awaiting a READ per channel (0x2A05)
   bool check_reserved_output_bits = true;  // output bits 5..3 ≠ 0 → 0x2419, byte not applied
   std::size_t event_buffer = 8;       // second buffer: 0x53/0x54 for 0x92 ([RS4 manual §5.2.2])
@@ -231,6 +239,11 @@ class Adapter final : public dp::slave::SlaveApplication {
  private:
   struct Channel {  // one per acyclic channel (C1, C2)
     protocol::BlockAssembler assembler{protocol::Direction::kWrite};
+    struct Processing {  // an RS4 command the RS4 is still working on
+      TimePoint due;
+      std::vector<std::uint8_t> command;
+    };
+    std::deque<Processing> processing;              // in order of arrival
     std::deque<std::vector<std::uint8_t>> answers;  // results awaiting READ
     protocol::BlockSplitter reading;                // the answer being read out
     void clear();
@@ -242,6 +255,19 @@ class Adapter final : public dp::slave::SlaveApplication {
     std::optional<std::uint32_t> last_scan;  // scan captured last (nullopt: take the next)
   };
 
+  // The RS4 signals as the adapter sees them, `response_time` after the RS4
+  // ([RS4 manual, technical data]): sampled from the scanner.
+  struct Rs4Signals {
+    bool ossd = false;
+    bool warning_output = false;
+    bool protective = false;
+    bool warning = false;
+    friend bool operator==(const Rs4Signals&, const Rs4Signals&) = default;
+  };
+  Rs4Signals sample_rs4() const noexcept;
+  void follow_rs4_signals(TimePoint now);  // feeds and drains signal_line_
+  void finish_processing(TimePoint now);   // RS4 commands whose processing time is over
+  void submit_rs4_command(std::span<const std::uint8_t> command, Channel& ch, TimePoint now);
   // adapter.cpp: power, start-up, parameters
   void start_adapter(TimePoint now, bool keep_errors);
   void enter_data_exchange(TimePoint now);
@@ -317,6 +343,9 @@ class Adapter final : public dp::slave::SlaveApplication {
   bool restart_bus_ = false;
   bool restart_button_ = false;
   bool restart_driven_ = false;
+  // The RS4 signals as the adapter sees them: the delay line and the value in force.
+  std::deque<std::pair<TimePoint, Rs4Signals>> signal_line_;
+  Rs4Signals seen_;
   bool field_pair_error_ = false;
   std::optional<TimePoint> field_pair_release_at_;
   std::uint8_t field_pair_ = 1;

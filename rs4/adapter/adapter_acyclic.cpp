@@ -32,7 +32,7 @@ const Adapter::Channel& Adapter::channel(AcyclicChannel which) const noexcept {
 }
 std::size_t Adapter::pending_answers(AcyclicChannel which) const noexcept {
   const auto& ch = channel(which);
-  return ch.answers.size() + (ch.reading.done() ? 0 : 1);
+  return ch.processing.size() + ch.answers.size() + (ch.reading.done() ? 0 : 1);
 }
 
 // Table 5.2-2 bits 6..4. DECISION: 011 is shown to every master while a proxy sync runs
@@ -63,6 +63,7 @@ std::uint8_t Adapter::flow_byte(AcyclicChannel which, bool payload) const noexce
 dp::slave::AcyclicResult Adapter::on_acyclic(const dp::slave::AcyclicRequest& req, TimePoint now) {
   if (!powered_) return AcyclicResult::fail(kNotSupported);
   collect_rs4(now);
+  finish_processing(now);
   // [docs/proxy-protocol.md] step 6: any class 2 READ/WRITE during a sync is a user command.
   if (req.channel == AcyclicChannel::kC2) abort_on_user_command({}, req.channel, now);
   if (req.service == dp::slave::AcyclicService::kDataTransport) {
@@ -170,7 +171,7 @@ void Adapter::execute(std::span<const std::uint8_t> command, AcyclicChannel whic
   abort_on_user_command(command, which, now);
   if (which == AcyclicChannel::kC2) {
     ++counters_.rs4_commands;
-    ch.answers.push_back(execute_rs4_command(command, now));
+    submit_rs4_command(command, ch, now);
     return;
   }
   execute_adapter_command(command, ch, now);
@@ -186,7 +187,7 @@ void Adapter::execute_adapter_command(std::span<const std::uint8_t> command, Cha
   const auto& cmd = parsed.value();
   if (const auto* rs4 = std::get_if<protocol::Rs4Command>(&cmd)) {
     ++counters_.rs4_commands;
-    ch.answers.push_back(execute_rs4_command(rs4->bytes, now));
+    submit_rs4_command(rs4->bytes, ch, now);
     return;
   }
   ++counters_.adapter_commands;
@@ -221,6 +222,30 @@ void Adapter::execute_adapter_command(std::span<const std::uint8_t> command, Cha
 }
 
 // The transfer commands 0x60..0x65 go to the proxy session, every other one to the RS4 model.
+// The RS4 works on a command for `rs4_command_time` ("bis zu 2 Minuten", [RS4 manual §5.2.1]);
+// meanwhile a READ finds no answer and the master polls. Commands are processed in order.
+void Adapter::submit_rs4_command(std::span<const std::uint8_t> command, Channel& ch,
+                                 TimePoint now) {
+  if (config_.rs4_command_time <= milliseconds::zero()) {
+    ch.answers.push_back(execute_rs4_command(command, now));
+    return;
+  }
+  const TimePoint after = ch.processing.empty() ? now : ch.processing.back().due;
+  ch.processing.push_back(
+      {after + config_.rs4_command_time, std::vector<std::uint8_t>(command.begin(), command.end())});
+}
+
+void Adapter::finish_processing(TimePoint now) {
+  for (auto* ch : {&c1_, &c2_}) {
+    while (!ch->processing.empty() && ch->processing.front().due <= now) {
+      const auto command = std::move(ch->processing.front().command);
+      ch->processing.pop_front();
+      ch->answers.push_back(execute_rs4_command(command, now));
+    }
+  }
+  refresh_input(now);  // an executed command may have changed the RS4
+}
+
 std::vector<std::uint8_t> Adapter::execute_rs4_command(std::span<const std::uint8_t> command,
                                                        TimePoint now) {
   if (!command.empty() && protocol::is_transfer_code(command[0])) return transfer(command, now);

@@ -160,7 +160,32 @@ void Adapter::detach_pc_adapter(TimePoint now) {
 }
 
 // ---- the input byte ----------------------------------------------------------------------
+Adapter::Rs4Signals Adapter::sample_rs4() const noexcept {
+  const auto st = scanner_.status();
+  return {scanner_.ossd(), st.warning_output, st.protective_violated, st.warning_violated};
+}
+
+// [RS4 manual, technical data] "Reaktionszeit PROFIsafe-Adapter 10 ms": what the RS4 shows now
+// reaches the input byte `response_time` later; every change travels on its own.
+void Adapter::follow_rs4_signals(TimePoint now) {
+  const auto s = sample_rs4();
+  const auto& last = signal_line_.empty() ? seen_ : signal_line_.back().second;
+  if (s != last) {
+    if (config_.response_time <= milliseconds::zero()) {
+      signal_line_.clear();
+      seen_ = s;
+    } else {
+      signal_line_.emplace_back(now + config_.response_time, s);
+    }
+  }
+  while (!signal_line_.empty() && signal_line_.front().first <= now) {
+    seen_ = signal_line_.front().second;
+    signal_line_.pop_front();
+  }
+}
+
 void Adapter::refresh_input(TimePoint now) {
+  if (powered_) follow_rs4_signals(now);
   input_byte_ = powered_ ? compose_input_byte(now) : 0;
   fdevice_.set_input(std::span<const std::uint8_t>(&input_byte_, 1));
 }
@@ -172,13 +197,13 @@ void Adapter::refresh_input(TimePoint now) {
 //  - the RS4 is operational and the parameter check of [RS4 manual §7.1, §7.2] passed or is not
 //  needed,
 //  - no field pair error, and ≥500 ms passed since a valid number returned,
-//  - both OSSDs of the RS4 are on.
+//  - both OSSDs of the RS4 are on, as the adapter sees them (`response_time` after the RS4).
 bool Adapter::ossd_release_allowed(TimePoint now) const noexcept {
   if (!powered_ || !connected_ || !fdevice_.sends_process_values()) return false;
   if (!rs4_up_ || !released_) return false;
   if (field_pair_error_) return false;
   if (field_pair_release_at_ && now < *field_pair_release_at_) return false;
-  return scanner_.ossd();
+  return seen_.ossd;  // both OSSDs of the RS4 on, as the adapter sees them
 }
 
 // The only function that composes the input byte; bit 7 comes from the predicate above.
@@ -186,14 +211,14 @@ std::uint8_t Adapter::compose_input_byte(TimePoint now) const noexcept {
   const auto st = scanner_.status();
   InputBits bits;
   bits.ossd = ossd_release_allowed(now);
-  bits.warning_output_active = st.warning_output;
+  bits.warning_output_active = seen_.warning_output;
   bits.error = st.fault || st.state == scanner::ScannerState::kError || field_pair_error_ ||
                inconsistent_output_.has_value() || adapter_error_active_;
   bits.not_operational = !rs4_up_ || !released_ || !rs4_operational(st.state);
   bits.rs232_active = rs232_through_;
   bits.proxy_request = proxy_request_;
-  bits.protective_field = st.protective_violated;
-  bits.warning_field = st.warning_violated;
+  bits.protective_field = seen_.protective;
+  bits.warning_field = seen_.warning;
   return encode_input_byte(bits);
 }
 

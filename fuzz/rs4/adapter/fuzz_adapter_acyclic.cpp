@@ -3,7 +3,7 @@
 // time steps and user actions (PC adapter, proxy hooks, restart button, faults, obstacle).
 // Invariants: no crash, every answer ≤ 240 bytes, and the OSSD bit is 1 only when the
 // conditions of [RS4 manual §5.1.1, §5.1.2, §7.1, §7.2] hold (re-stated here independently of
-// the adapter's own predicate).
+// the adapter's own predicate; the RS4's OSSDs as the adapter sees them, 10 ms late).
 #include "profisafe/f_host.h"
 #include "rs4/adapter/adapter.h"
 
@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -26,20 +27,36 @@ struct Input {
   std::uint8_t byte() { return empty() ? 0 : d[i++]; }
 };
 
-void check_ossd_invariant(const rs4::adapter::Adapter& a) {
+// When the harness last saw the RS4's OSSDs go off: the adapter shows the RS4 10 ms late
+// ("Reaktionszeit PROFIsafe-Adapter 10 ms" [RS4 manual, technical data]).
+struct Rs4Watch {
+  bool was_on = false;
+  std::optional<dp::TimePoint> off_at;
+  void observe(const rs4::adapter::Adapter& a, dp::TimePoint now) {
+    const bool on = a.scanner().ossd();
+    if (was_on && !on) off_at = now;
+    was_on = on;
+  }
+  bool on_within(const rs4::adapter::Adapter& a, dp::TimePoint now, dp::Duration lag) const {
+    return a.scanner().ossd() || (off_at && now < *off_at + lag);
+  }
+};
+
+void check_ossd_invariant(const rs4::adapter::Adapter& a, const Rs4Watch& rs4, dp::TimePoint now,
+                          dp::Duration lag) {
   if (!a.ossd_bit()) return;
   const auto v = a.view();
   // An output byte with a reserved bit set is not applied: the pair applied before it stays in
   // force [docs/decisions.md#rs4-inconsistent-outputs], and an invalid one shows as fperr.
   const bool pair_ok = v.output.field_pair_valid() || v.output.reserved != 0;
   const bool allowed = v.powered && v.connected && a.fdevice().sends_process_values() &&
-                       a.released() && !v.field_pair_error && a.scanner().ossd() && pair_ok;
+                       a.released() && !v.field_pair_error && rs4.on_within(a, now, lag) && pair_ok;
   if (!allowed) {
     std::fprintf(
         stderr,
         "OSSD bit 1: powered %d connected %d fdev %d released %d fperr %d scanner %d pair %d\n",
         v.powered, v.connected, a.fdevice().sends_process_values(), a.released(),
-        v.field_pair_error, a.scanner().ossd(), pair_ok);
+        v.field_pair_error, rs4.on_within(a, now, lag), pair_ok);
     std::abort();
   }
 }
@@ -101,6 +118,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     a.on_state_change(dp::slave::State::kWaitCfg, dp::slave::State::kDataExch,
                       dp::slave::TransitionReason::kCfgAccepted, now);
   }
+  Rs4Watch rs4;
   for (unsigned steps = 0; steps < 256 && !in.empty(); ++steps) {
     const auto op = in.byte();
     switch (op % 12) {
@@ -144,7 +162,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
         break;
     }
-    check_ossd_invariant(a);
+    rs4.observe(a, now);
+    check_ossd_invariant(a, rs4, now, cfg.response_time);
   }
   return 0;
 }

@@ -137,5 +137,101 @@ TEST(LedPatterns, BlinkRates) {
   EXPECT_FALSE(led_lit(LedState::kDark, 0ms));
 }
 
+// Steps the adapter from deadline to deadline until `done` holds; returns false after 10 s.
+template <class Pred>
+bool step_until(Rig& rig, Pred done) {
+  const auto limit = rig.now + 10s;
+  while (!done()) {
+    const auto next = rig.adapter.next_deadline();
+    if (!next || *next > limit) return false;
+    rig.now = std::max(rig.now, *next);
+    rig.adapter.on_time(rig.now);
+  }
+  return true;
+}
+
+// "Reaktionszeit PROFIsafe-Adapter 10 ms" [RS4 manual, technical data]: what the RS4 shows reaches
+// the input byte 10 ms later, not 9: first the protective field bit (the RS4 sees the
+// obstacle), then the OSSD bit (the RS4 switches off after its own response time).
+TEST_F(Aligned, AdapterAddsItsTenMillisecondResponseTime) {
+  (void)rig.adapter.scanner().edit_scene(rig.now).add(scanner::Circle{{500, 0}, 100});
+  rig.adapter.on_time(rig.now);
+  ASSERT_TRUE(step_until(rig, [&] { return rig.adapter.scanner().status().protective_violated; }));
+  auto rs4_at = rig.now;
+  EXPECT_FALSE(rig.adapter.input_byte() & kInputProtectiveField) << "the RS4 just saw it";
+  rig.advance(9ms);
+  EXPECT_FALSE(rig.adapter.input_byte() & kInputProtectiveField) << "9 ms after the RS4";
+  rig.advance(1ms);
+  EXPECT_TRUE(rig.adapter.input_byte() & kInputProtectiveField) << "10 ms after the RS4";
+  EXPECT_EQ(rig.now - rs4_at, 10ms);
+
+  ASSERT_TRUE(step_until(rig, [&] { return !rig.adapter.scanner().ossd(); }));
+  rs4_at = rig.now;
+  EXPECT_TRUE(rig.adapter.input_byte() & kInputOssd) << "the RS4 just switched off";
+  rig.advance(9ms);
+  EXPECT_TRUE(rig.adapter.input_byte() & kInputOssd) << "9 ms after the RS4";
+  rig.advance(1ms);
+  EXPECT_FALSE(rig.adapter.input_byte() & kInputOssd) << "10 ms after the RS4";
+  EXPECT_EQ(rig.now - rs4_at, 10ms);
+}
+
+TEST(AdapterTiming, ResponseTimeZeroFollowsTheRs4AtOnce) {
+  AdapterConfig cfg;
+  cfg.response_time = 0ms;
+  Rig rig(cfg);
+  rig.start();
+  rig.run(31s);
+  rig.restart_pulse();
+  ASSERT_TRUE(rig.ossd());
+  (void)rig.adapter.scanner().edit_scene(rig.now).add(scanner::Circle{{500, 0}, 100});
+  rig.adapter.on_time(rig.now);
+  ASSERT_TRUE(step_until(rig, [&] { return !rig.adapter.scanner().ossd(); }));
+  EXPECT_FALSE(rig.adapter.input_byte() & kInputOssd);
+}
+
+// [RS4 manual §5.2.1] "Da der RS4 bis zu 2 Minuten braucht um Daten zu verarbeiten": the answer
+// to an RS4 command is there after the processing time (default one scan, 40 ms); a READ
+// before it carries the header only (flow byte: no payload), so the master polls.
+TEST_F(Aligned, Rs4CommandAnswerComesAfterItsProcessingTime) {
+  rig.write(Rig::block({0x14, 0x01}));  // COM_CMD_ALIVE
+  auto r = rig.read();
+  EXPECT_EQ(r.data.size(), 4u) << "header only";
+  EXPECT_EQ(r.data[0] & 0x02, 0) << "flow byte bit 1: no payload";
+  EXPECT_EQ(rig.adapter.pending_answers(dp::slave::AcyclicChannel::kC1), 1u);
+  rig.advance(39ms);
+  EXPECT_EQ(rig.read().data.size(), 4u) << "39 ms: still processing";
+  rig.advance(1ms);
+  r = rig.read();
+  ASSERT_GT(r.data.size(), 4u) << "40 ms: answered";
+  EXPECT_EQ(r.data[4], 0x14);
+}
+
+// Two commands in a row are processed one after the other: the second answer 80 ms after both.
+TEST_F(Aligned, Rs4CommandsAreProcessedInOrder) {
+  rig.write(Rig::block({0x14, 0x01}));
+  rig.write(Rig::block({0x7E}));  // unknown: 0x53
+  rig.advance(40ms);
+  auto first = rig.read();
+  ASSERT_GT(first.data.size(), 4u);
+  EXPECT_EQ(first.data[4], 0x14);
+  EXPECT_EQ(rig.read().data.size(), 4u) << "40 ms: the second still processing";
+  rig.advance(40ms);
+  const auto second = rig.read();
+  ASSERT_GT(second.data.size(), 4u);
+  EXPECT_EQ(second.data[4], 0x53);
+}
+
+TEST(AdapterTiming, CommandTimeZeroAnswersAtOnce) {
+  AdapterConfig cfg;
+  cfg.rs4_command_time = 0ms;
+  Rig rig(cfg);
+  rig.start();
+  rig.run(31s);
+  rig.write(Rig::block({0x14, 0x01}));
+  const auto r = rig.read();
+  ASSERT_GT(r.data.size(), 4u);
+  EXPECT_EQ(r.data[4], 0x14);
+}
+
 }  // namespace
 }  // namespace rs4sim::rs4::adapter::testing
