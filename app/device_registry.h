@@ -119,6 +119,9 @@ class DeviceInstance {
     (void)context;
     return {};
   }
+  // The server has shut down: the services end their timers on the loop, so that the loop
+  // can finish.
+  virtual void stop_services() {}
 };
 
 // One device with our master on the in-memory bus (simulated time).

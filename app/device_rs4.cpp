@@ -127,6 +127,9 @@ class Rs4Instance final : public DeviceInstance {
     tap_.set_hub(target_->events());
     return rs4_services(*target_, c.executor);
   }
+  void stop_services() override {
+    if (target_) target_->stop();
+  }
 
  private:
   // The reed contact of the optical window: through the RS232 port when it is served (it

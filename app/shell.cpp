@@ -203,6 +203,7 @@ int run_on_link(DeviceInstance& instance, const LinkOptions& l, std::ostream& ou
   asio::signal_set signals(io, SIGINT, SIGTERM);
   asio::steady_timer limit(io);
   const auto halt = [&] {
+    instance.stop_services();
     runner.stop();
     if (side_runner) side_runner->stop();
     user_signals.cancel();

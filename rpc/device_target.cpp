@@ -7,14 +7,16 @@
 namespace rs4sim::rpc {
 namespace {
 
-// Polls the hub every period until the loop stops (the timer lives in its own handler).
+// Polls the hub every period until `stopped` (the timer lives in its own handler).
 void poll_every(const std::shared_ptr<boost::asio::steady_timer>& timer,
-                std::shared_ptr<EventHub> hub, const dp::Clock& clock) {
+                std::shared_ptr<EventHub> hub, const dp::Clock& clock,
+                std::shared_ptr<bool> stopped) {
   timer->expires_after(DeviceTarget::kPollPeriod);
-  timer->async_wait([timer, hub = std::move(hub), &clock](const boost::system::error_code& ec) {
-    if (ec) return;
+  timer->async_wait([timer, hub = std::move(hub), &clock,
+                     stopped = std::move(stopped)](const boost::system::error_code& ec) {
+    if (ec || *stopped) return;
     hub->poll(clock.now());
-    poll_every(timer, hub, clock);
+    poll_every(timer, hub, clock, stopped);
   });
 }
 
@@ -24,7 +26,14 @@ DeviceTarget::DeviceTarget(rs4::device::Rs4Device& device, std::uint8_t address,
                            const dp::Clock& clock, boost::asio::io_context& io)
     : device_(device), address_(address), clock_(clock), io_(io) {
   hub_->watch(address, device);
-  poll_every(std::make_shared<boost::asio::steady_timer>(io), hub_, clock);
+  poll_timer_ = std::make_shared<boost::asio::steady_timer>(io);
+  poll_every(poll_timer_, hub_, clock, stopped_);
+}
+
+// On the loop's thread: a handler already queued sees the flag, a pending wait is cancelled.
+void DeviceTarget::stop() {
+  *stopped_ = true;
+  poll_timer_->cancel();
 }
 
 void DeviceTarget::after(dp::Duration delay, std::function<void()> f) {

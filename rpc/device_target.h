@@ -8,6 +8,7 @@
 #include "rpc/rs4_target.h"
 
 #include <boost/asio/io_context.hpp>
+#include <boost/asio/steady_timer.hpp>
 
 #include <memory>
 
@@ -17,7 +18,8 @@ class DeviceTarget final : public Rs4Target {
  public:
   static constexpr dp::Duration kPollPeriod = std::chrono::milliseconds(5);
 
-  // Starts the poll timer on `io` (its handler holds the hub, not this target).
+  // Starts the poll timer on `io` (its handler holds the hub, not this target); stop() ends it,
+  // and the loop cannot finish before.
   DeviceTarget(rs4::device::Rs4Device& device, std::uint8_t address, const dp::Clock& clock,
                boost::asio::io_context& io);
   [[nodiscard]] std::vector<std::uint8_t> addresses() const override { return {address_}; }
@@ -30,6 +32,7 @@ class DeviceTarget final : public Rs4Target {
   void after(dp::Duration delay, std::function<void()> f) override;
   dp::link::MemoryBus* bus() override { return nullptr; }
   EventHub* events() override { return hub_.get(); }
+  void stop();
 
  private:
   rs4::device::Rs4Device& device_;
@@ -37,6 +40,8 @@ class DeviceTarget final : public Rs4Target {
   const dp::Clock& clock_;
   boost::asio::io_context& io_;
   std::shared_ptr<EventHub> hub_ = std::make_shared<EventHub>();
+  std::shared_ptr<boost::asio::steady_timer> poll_timer_;
+  std::shared_ptr<bool> stopped_ = std::make_shared<bool>(false);
 };
 
 }  // namespace rs4sim::rpc
