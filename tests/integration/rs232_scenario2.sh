@@ -3,12 +3,15 @@
 # ([RS4 manual §7.1, §7.2], docs/rs232.md, docs/param.md): `rs4sim run --device rs4` serves
 # PROFIBUS on one pty and the RS4's RS232 interface on another (--rs232 pty); `rs4sim master`
 # on the PROFIBUS side completes the first-commissioning sync; then the PC adapter is attached
-# (SIGUSR1), the RS232 port streams 0x23 measurement frames, `rs4sim param set` changes the
+# (SIGUSR1), the RS232 port streams 0x23 measurement frames whose contour values match a known
+# scene (an obstacle placed through the gRPC API, the distances computed here from the
+# geometry alone), `rs4sim param set` changes the
 # response time with the password, the adapter is removed (SIGUSR2), Proxy-Request comes and
 # the master's proxy uploads the new set into its archive.
-# Usage: rs232_scenario2.sh RS4SIM
+# Usage: rs232_scenario2.sh RS4SIM SOURCE_DIR
 set -u
 rs4sim=$1
+source_dir=$2
 dir=$(mktemp -d)
 run_pid=
 master_pid=
@@ -26,10 +29,10 @@ fail() {
 
 : >"$dir/run.out"  # exists before the background shell opens it
 "$rs4sim" run --device rs4 --address 4 --link pty --boot-time 1000 --duration 60 \
-  --rs232 pty --pc-adapter detached >"$dir/run.out" 2>"$dir/run.err" &
+  --rs232 pty --pc-adapter detached --grpc 127.0.0.1:0 >"$dir/run.out" 2>"$dir/run.err" &
 run_pid=$!
 i=0
-while [ "$(wc -l <"$dir/run.out" 2>/dev/null || echo 0)" -lt 2 ] && [ $i -lt 100 ]; do
+while [ "$(wc -l <"$dir/run.out" 2>/dev/null || echo 0)" -lt 3 ] && [ $i -lt 100 ]; do
   sleep 0.1
   i=$((i + 1))
 done
@@ -37,6 +40,15 @@ bus=$(sed -n 1p "$dir/run.out")
 rs232=$(sed -n 2p "$dir/run.out" | sed 's/^rs232: //')
 case "$bus" in /dev/*) ;; *) fail "no PROFIBUS pty path" ;; esac
 case "$rs232" in /dev/*) ;; *) fail "no 'rs232: <path>' line" ;; esac
+api=$(sed -n 's/^grpc: listening on //p' "$dir/run.out")
+[ -n "$api" ] || fail "no 'grpc: listening on' line"
+
+# The known scene: a round post of radius 300 mm, 4 m straight ahead (segment 264 at 90°).
+PYTHONPATH="$source_dir/tools/python" /usr/bin/python3 - "$api" <<'PY' || fail "AddObstacle"
+import sys
+from rs4sim_harness import Rs4
+Rs4(sys.argv[1], station=4).add_circle(0, 4000, 300)
+PY
 
 "$rs4sim" master --slave 4 --link serial --port "$bus" --json --duration 20 \
   --f-wd-time 500 --dp-watchdog 1000 --archive "$dir/archive.sqlite3" \
@@ -84,7 +96,56 @@ for raw in data.split(b"\x00\x00\x00"):
     if (x or 0xFF) == chk:
         good += 1
 print(f"0x23 frames with a good check byte: {good}")
-sys.exit(0 if good >= 2 else 1)
+if good < 2:
+    sys.exit(1)
+
+# The contour of the last whole frame ([RS4 manual §5.2.3.4], docs/rs232.md): 0x23 | OPT1
+# (bits 1..0: the number of option bytes, OPT1 included) | scan number (8) | step | start u16 |
+# stop u16 |
+# one big-endian u16 in mm per segment start, start+step, ..., stop. On the line a 0x00 that
+# follows a 0x00 is followed by a stuffed 0xFF, which the receiver drops.
+import math
+def unstuff(raw):
+    out, zeros = bytearray(), 0
+    for b in raw:
+        if zeros >= 2 and b == 0xFF:
+            zeros = 0
+            continue
+        out.append(b)
+        zeros = zeros + 1 if b == 0 else 0
+    return bytes(out)
+frames = [f for f in (unstuff(r.lstrip(b"\x00")) for r in data.split(b"\x00\x00\x00"))
+          if len(f) > 20 and f[0] == 0x23]
+body = frames[-1][:-1]
+i = 1 + (body[1] & 0x03) + 8
+step = body[i]; start = body[i + 1] << 8 | body[i + 2]; stop = body[i + 3] << 8 | body[i + 4]
+values = body[i + 5:]
+contour = {start + k * step: values[2 * k] << 8 | values[2 * k + 1]
+           for k in range(len(values) // 2)}
+# Segment n looks along -5.04° + n·0.36°, counter-clockwise from +x; the post's edge along
+# that beam is the nearer root of |t·(cos, sin) - (0, 4000)| = 300.
+def expected(n):
+    a = math.radians(-5.04 + 0.36 * n)
+    b = 4000 * math.sin(a)
+    disc = b * b - (4000 * 4000 - 300 * 300)
+    return None if disc < 0 else round(b - math.sqrt(disc))
+checked = 0
+for n in range(240, 290):
+    if n not in contour:
+        continue
+    want = expected(n)
+    got = contour[n]
+    if want is None:
+        ok = got == 0xFFFE  # no echo within range (docs/rs4-scanner.md)
+    else:
+        ok = abs(got - want) <= 1
+    if not ok:
+        print(f"segment {n}: {got} mm, expected {want}")
+        sys.exit(1)
+    checked += 1
+print(f"contour: {checked} segments around the post as the geometry says "
+      f"(segment 264: {contour.get(264)} mm)")
+sys.exit(0 if checked >= 10 and contour.get(264) == 3700 else 1)
 PY
 
 "$rs4sim" param get --port "$rs232" >"$dir/site.json" 2>"$dir/param.err" || fail "param get: $(cat "$dir/param.err")"
