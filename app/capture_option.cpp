@@ -16,11 +16,16 @@ void add_capture_options(CLI::App& cmd, CaptureOptions& options) {
 }
 
 std::unique_ptr<dp::link::Capture> open_capture(const CaptureOptions& options) {
+  return open_capture(options, dp::TimePoint{});
+}
+
+std::unique_ptr<dp::link::Capture> open_capture(const CaptureOptions& options,
+                                                dp::TimePoint clock_now) {
   if (options.file.empty()) return nullptr;
   const auto type = options.linktype == "257" ? dp::link::PcapLinkType::kProfibusDl
                                               : dp::link::PcapLinkType::kUser0;
   const auto offset = std::chrono::duration_cast<std::chrono::nanoseconds>(
-      std::chrono::system_clock::now().time_since_epoch());
+      std::chrono::system_clock::now().time_since_epoch() - clock_now.time_since_epoch());
   auto capture = std::make_unique<dp::link::Capture>();
   if (const auto ec = capture->open(options.file, type, offset)) {
     throw std::runtime_error("--capture: cannot write '" + options.file + "': " + ec.message());

@@ -22,6 +22,10 @@ void add_capture_options(CLI::App& cmd, CaptureOptions& options);
 // at the call, so Wireshark shows today's date. Throws std::runtime_error when the file
 // cannot be written.
 std::unique_ptr<dp::link::Capture> open_capture(const CaptureOptions& options);
+// The same for a run whose clock reads `clock_now` at this moment: timestamps are wall-clock
+// time, whatever the clock's epoch.
+std::unique_ptr<dp::link::Capture> open_capture(const CaptureOptions& options,
+                                                dp::TimePoint clock_now);
 
 // Attaches an open capture to a simulated bus (no-op for nullptr).
 void attach_capture(dp::link::Capture* capture, dp::link::MemoryBus& bus);

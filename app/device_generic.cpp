@@ -65,6 +65,7 @@ class GenericSegment final : public SimulatedSegment {
     print_slave(out, bus_.slave(address_), bus_.bus().counters(address_));
   }
   [[nodiscard]] bool healthy() const override { return bus_.slaves_in_data_exchange() == 1; }
+  dp::link::MemoryBus* bus() override { return &bus_.bus(); }
 
  private:
   static dp::devices::GenericBusConfig bus_config(const GenericSlaveConfig& c) {

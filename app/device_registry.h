@@ -135,6 +135,8 @@ class SimulatedSegment {
   virtual void print_summary(std::ostream& out) const = 0;
   // Exit code 0 when the device reached data exchange.
   [[nodiscard]] virtual bool healthy() const = 0;
+  // The in-memory bus, for --capture (nullptr: none to observe).
+  virtual dp::link::MemoryBus* bus() { return nullptr; }
   // The gRPC services, with SimTime moving this segment's manual clock (empty: none yet).
   virtual ServiceList services(const ServiceContext& context) {
     (void)context;

@@ -168,6 +168,7 @@ class Rs4Simulation final : public SimulatedSegment {
     print_state(out, segment_.device());
   }
   [[nodiscard]] bool healthy() const override { return segment_.in_data_exchange(); }
+  dp::link::MemoryBus* bus() override { return &segment_.bus(); }
   ServiceList services(const ServiceContext& c) override {
     target_ = std::make_unique<rpc::SegmentTarget>(segment_);
     return rs4_services(*target_, c.executor);

@@ -21,6 +21,7 @@ inline void add_link_options(CLI::App& cmd, LinkOptions& l, const std::string& p
   cmd.add_option("--peer", l.peer, "HOST:PORT of " + peer + " (--link udp)");
   cmd.add_option("--duration", l.duration, "seconds to run (0 = until Ctrl-C; memory: simulated)")
       ->check(CLI::NonNegativeNumber);
+  add_capture_options(cmd, l.capture);
 }
 
 }  // namespace rs4sim::app

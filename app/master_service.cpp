@@ -117,6 +117,8 @@ int run_memory(const MasterServiceOptions& o, const LinkOptions& l, std::ostream
     devices.push_back(std::make_unique<device::Rs4Device>(c));
   }
   dp::link::MemoryBus bus(clock);
+  const auto capture = open_link_capture(l, clock.now());
+  attach_capture(capture.get(), bus);
   for (auto* s : service.stations()) bus.attach(*s);
   for (auto& d : devices) bus.attach(*d);
   service.start(clock.now());
@@ -124,7 +126,8 @@ int run_memory(const MasterServiceOptions& o, const LinkOptions& l, std::ostream
   for (auto& d : devices) d->power_on(clock.now());
   bus.run_for(seconds(l.duration > 0 ? l.duration : kDefaultSimulatedSeconds));
   service.print_status(out, {});
-  return service.healthy() ? 0 : 1;
+  const bool written = report_capture(capture.get(), l);
+  return service.healthy() && written ? 0 : 1;
 }
 
 }  // namespace

@@ -32,11 +32,14 @@ dp::Duration seconds(double s) {
 int run_memory(const DeviceEntry& device, const DeviceOptions& o, const LinkOptions& l,
                std::ostream& out) {
   const auto segment = device.simulate(o);
+  const auto capture = open_link_capture(l, dp::TimePoint{});
+  if (segment->bus() != nullptr) attach_capture(capture.get(), *segment->bus());
   const double secs = l.duration > 0 ? l.duration : device.simulated_seconds;
   segment->run_for(seconds(secs));
   out << "in-memory bus, " << secs << " s simulated, master " << int(segment->master_address());
   segment->print_summary(out);
-  return segment->healthy() ? 0 : 1;
+  const bool written = report_capture(capture.get(), l);
+  return segment->healthy() && written ? 0 : 1;
 }
 
 // SIGINT/SIGTERM, and --duration seconds when positive, call `stop` on the loop.
@@ -60,6 +63,8 @@ int run_memory_served(const DeviceEntry& device, const DeviceOptions& o, const L
   asio::io_context io;
   auto work = asio::make_work_guard(io);
   const auto segment = device.simulate(o);
+  const auto capture = open_link_capture(l, dp::TimePoint{});
+  if (segment->bus() != nullptr) attach_capture(capture.get(), *segment->bus());
   const dp::RealClock wall;
   rpc::AsioExecutor executor(io);
   GrpcServing serving(l.grpc, segment->services({executor, io, wall}), out);
@@ -78,7 +83,7 @@ int run_memory_served(const DeviceEntry& device, const DeviceOptions& o, const L
   io.run();
   out << "in-memory bus, served, master " << int(segment->master_address());
   segment->print_summary(out);
-  return 0;
+  return report_capture(capture.get(), l) ? 0 : 1;
 }
 
 // The character format of the line: a byte device's own, else PROFIBUS 8E1 at --baud.
@@ -125,6 +130,13 @@ class LinkRunner {
     }
   }
   void start() { stations_ ? stations_->start() : byte_runner_->start(); }
+  // Every PROFIBUS telegram on the line (validate() keeps --capture off byte devices).
+  void tap(dp::link::Capture* capture) {
+    if (capture == nullptr || !stations_) return;
+    stations_->set_frame_tap(
+        [capture](std::span<const std::uint8_t> frame, dp::TimePoint at,
+                  stream::FrameDirection dir) { capture->on_frame(frame, at, dir); });
+  }
   void stop() { stations_ ? stations_->stop() : byte_runner_->stop(); }
   void print_status(std::ostream& out) const {
     if (stations_) {
@@ -178,8 +190,16 @@ int run_on_link(DeviceInstance& instance, const LinkOptions& l, std::ostream& ou
     }
   }
   dp::RealClock clock;
+  std::unique_ptr<dp::link::Capture> capture;
+  try {
+    capture = open_link_capture(l, clock.now());
+  } catch (const std::runtime_error& e) {
+    std::cerr << "rs4sim: " << e.what() << std::endl;
+    return 1;
+  }
   instance.start(clock.now());
   LinkRunner runner(io, clock, *transport, instance);
+  runner.tap(capture.get());
   std::optional<stream::ByteRunner> side_runner;
   if (side) {
     side_runner.emplace(io, clock, *side_transport);
@@ -224,7 +244,24 @@ int run_on_link(DeviceInstance& instance, const LinkOptions& l, std::ostream& ou
   if (side_runner) side_runner->start();
   io.run();
   runner.print_status(out);
-  return 0;
+  return report_capture(capture.get(), l) ? 0 : 1;
+}
+
+std::unique_ptr<dp::link::Capture> open_link_capture(const LinkOptions& link,
+                                                     dp::TimePoint clock_now) {
+  return open_capture(link.capture, clock_now);
+}
+
+bool report_capture(const dp::link::Capture* capture, const LinkOptions& link) {
+  if (capture == nullptr) return true;
+  if (capture->error()) {
+    std::cerr << "rs4sim: --capture " << link.capture.file
+              << ": writing stopped: " << capture->error().message() << std::endl;
+    return false;
+  }
+  std::cerr << "rs4sim: capture: " << capture->records() << " telegrams in " << link.capture.file
+            << std::endl;
+  return true;
 }
 
 void validate(const LinkOptions& l, bool byte_device) {
@@ -235,6 +272,10 @@ void validate(const LinkOptions& l, bool byte_device) {
   if (!byte_device && (l.link == "pty" || l.link == "serial") && !dp::parse_baud_rate(l.baud)) {
     throw UsageError("--baud " + l.baud + ": not a PROFIBUS rate; use one of " +
                      dp::standard_baud_rate_list());
+  }
+  if (byte_device && !l.capture.file.empty()) {
+    throw UsageError("--capture writes PROFIBUS telegrams; this device's line carries none "
+                     "(record its bytes with e.g. socat -x or a serial sniffer)");
   }
   if (l.link == "serial" && l.port.empty()) {
     throw UsageError("--link serial needs --port DEVICE (e.g. /dev/ttyUSB0)");

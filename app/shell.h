@@ -11,6 +11,7 @@
 // A byte device (DeviceEntry::byte_device) runs on pty, serial and udp only, with a
 // stream::ByteRunner, in its own LineSettings (its default rate, or --baud as bit/s).
 
+#include "app/capture_option.h"
 #include "app/device_registry.h"
 
 #include <iosfwd>
@@ -29,7 +30,19 @@ struct LinkOptions {
   // stays on the manual clock and serves until Ctrl-C (--duration: wall seconds): time moves
   // only through the SimTime service.
   std::string grpc;
+  // --capture FILE / --capture-linktype: every PROFIBUS telegram of the run into a pcap file
+  // (docs/capture.md); not for byte devices.
+  CaptureOptions capture;
 };
+
+// The file of --capture, opened for a run whose clock reads `clock_now` now (timestamps are
+// then wall-clock time); nullptr without --capture. Throws std::runtime_error when it cannot
+// be written.
+std::unique_ptr<dp::link::Capture> open_link_capture(const LinkOptions& link,
+                                                     dp::TimePoint clock_now);
+// After the run: "rs4sim: capture: N telegrams in FILE" on stderr (stdout may carry --json
+// lines), or the write error; returns false after a write error.
+bool report_capture(const dp::link::Capture* capture, const LinkOptions& link);
 
 // Throws UsageError with the reason for a bad combination. `byte_device`: --baud is the
 // device's plain bit rate (checked by the device entry), not a PROFIBUS rate.
