@@ -2,6 +2,8 @@
 
 #include "codec/writer.h"
 
+#include <cerrno>
+
 namespace rs4sim::dp::link {
 namespace {
 
@@ -38,8 +40,11 @@ void append_pcap_record(std::vector<std::uint8_t>& out, std::span<const std::uin
 
 std::error_code PcapFile::open(const std::filesystem::path& path, PcapLinkType type,
                                PcapFile& out) {
+  errno = 0;
   out.file_.open(path, std::ios::binary | std::ios::trunc);
-  if (!out.file_) return std::make_error_code(std::errc::io_error);
+  // The OS's reason when the library left it (e.g. "No such file or directory").
+  if (!out.file_) return {errno != 0 ? errno : EIO, std::generic_category()};
+  out.flushed_at_.reset();
   const auto header = pcap_file_header(type);
   out.file_.write(reinterpret_cast<const char*>(header.data()),
                   static_cast<std::streamsize>(header.size()));
@@ -56,10 +61,22 @@ std::error_code PcapFile::write(std::span<const std::uint8_t> frame,
   append_pcap_record(buffer_, frame, since_epoch);
   file_.write(reinterpret_cast<const char*>(buffer_.data()),
               static_cast<std::streamsize>(buffer_.size()));
-  file_.flush();
+  // The file follows the link within kFlushInterval of record time (a viewer reading the
+  // growing file, a process killed hard) without a system call per telegram.
+  if (!flushed_at_ || since_epoch - *flushed_at_ >= kFlushInterval ||
+      since_epoch < *flushed_at_) {
+    file_.flush();
+    flushed_at_ = since_epoch;
+  }
   if (!file_) return std::make_error_code(std::errc::io_error);
   ++records_;
   return {};
+}
+
+std::error_code PcapFile::flush() {
+  if (!file_.is_open()) return std::make_error_code(std::errc::bad_file_descriptor);
+  file_.flush();
+  return file_ ? std::error_code{} : std::make_error_code(std::errc::io_error);
 }
 
 }  // namespace rs4sim::dp::link

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <span>
 #include <system_error>
 #include <vector>
@@ -42,7 +43,11 @@ class PcapFile {
  public:
   // Errors: the open/write error of the file (std::errc from the stream).
   static std::error_code open(const std::filesystem::path& path, PcapLinkType type, PcapFile& out);
+  // Buffered: the file is flushed at the first record and then whenever kFlushInterval of
+  // record time has passed, and when this object is destroyed.
   std::error_code write(std::span<const std::uint8_t> frame, std::chrono::nanoseconds since_epoch);
+  std::error_code flush();
+  static constexpr std::chrono::nanoseconds kFlushInterval = std::chrono::milliseconds(100);
   [[nodiscard]] std::uint64_t records() const noexcept { return records_; }
   [[nodiscard]] bool is_open() const noexcept { return file_.is_open(); }
 
@@ -50,6 +55,7 @@ class PcapFile {
   std::ofstream file_;
   std::vector<std::uint8_t> buffer_;
   std::uint64_t records_ = 0;
+  std::optional<std::chrono::nanoseconds> flushed_at_;
 };
 
 }  // namespace rs4sim::dp::link

@@ -5,13 +5,18 @@
 // time the same telegrams would take at 12 Mbit/s
 // ([IEC 61158-4-3 UART character, bus parameters, timing] [IEC 61158-2 baud rates]: 11 bit per
 // character, TSYN 33 bit before each request, min TSDR 11 bit before each reply) and the ratio wire
-// time / simulation time (target ≥ 20). BM_MemoryPerSlave: heap bytes one generic slave costs
+// time / simulation time (target ≥ 20). Argument 1: the same with a --capture attached
+// (dp/link/capture.h writing every telegram to a pcap file in the temporary directory): the
+// cost of capture on a 125-slave cycle. BM_MemoryPerSlave: heap bytes one generic slave costs
 // (object + its allocations + its bus port incl. decoder), measured with glibc mallinfo2().
 #include "dp/devices/generic_bus.h"
+#include "dp/link/capture.h"
 
 #include <benchmark/benchmark.h>
 
 #include <malloc.h>
+
+#include <filesystem>
 
 namespace {
 
@@ -34,6 +39,16 @@ void BM_MemoryBusCycle125(benchmark::State& state) {
     return;
   }
   b.run_for(50ms);  // steady state
+  const bool captured = state.range(0) != 0;
+  const auto file = std::filesystem::temp_directory_path() / "bench_dp_link_capture.pcap";
+  dp::link::Capture capture;
+  if (captured) {
+    if (capture.open(file, dp::link::PcapLinkType::kUser0)) {
+      state.SkipWithError("cannot write the capture file");
+      return;
+    }
+    b.bus().add_observer([&capture](const dp::link::BusEvent& e) { capture.on_bus_event(e); });
+  }
   std::uint64_t wire_bits = 0, telegrams = 0;
   b.bus().add_observer([&](const dp::link::BusEvent& e) {
     const auto& t = *e.telegram;
@@ -56,8 +71,13 @@ void BM_MemoryBusCycle125(benchmark::State& state) {
   // Ratio: wire time of a cycle / simulation time of a cycle (s per iteration, inverted rate).
   state.counters["x_faster_than_wire"] =
       benchmark::Counter(wire_s_per_cycle, benchmark::Counter::kIsIterationInvariantRate);
+  if (captured) {
+    state.counters["captured_records"] = static_cast<double>(capture.records());
+    std::error_code ec;
+    std::filesystem::remove(file, ec);
+  }
 }
-BENCHMARK(BM_MemoryBusCycle125)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_MemoryBusCycle125)->ArgName("capture")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 void BM_MemoryPerSlave(benchmark::State& state) {
   std::size_t per_slave = 0;

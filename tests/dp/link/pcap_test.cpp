@@ -71,8 +71,36 @@ TEST(Pcap, FileIsHeaderThenRecordsAndReportsOpenErrors) {
   std::filesystem::remove(path);
 
   PcapFile bad;
-  EXPECT_TRUE(PcapFile::open("/nonexistent-dir/x.pcap", PcapLinkType::kUser0, bad));
+  EXPECT_EQ(PcapFile::open("/nonexistent-dir/x.pcap", PcapLinkType::kUser0, bad),
+            std::errc::no_such_file_or_directory);
   EXPECT_TRUE(bad.write(Bytes{0xE5}, std::chrono::seconds(0)));
+}
+
+// Records reach the file at the first record, then whenever 100 ms of record time passed, on
+// flush() and when the file is closed: a viewer of the growing file lags at most 100 ms of
+// link time.
+TEST(Pcap, RecordsReachTheFileWithin100MsOfRecordTime) {
+  const auto path = std::filesystem::temp_directory_path() / "rs4sim_pcap_flush_test.pcap";
+  const auto on_disk = [&] { return std::filesystem::file_size(path); };
+  constexpr auto kOne = kPcapRecordHeaderSize + 1;
+  const Bytes sc{0xE5};
+  {
+    PcapFile file;
+    ASSERT_FALSE(PcapFile::open(path, PcapLinkType::kUser0, file));
+    EXPECT_EQ(on_disk(), kPcapFileHeaderSize);
+    ASSERT_FALSE(file.write(sc, std::chrono::milliseconds(0)));
+    EXPECT_EQ(on_disk(), kPcapFileHeaderSize + kOne) << "the first record";
+    ASSERT_FALSE(file.write(sc, std::chrono::milliseconds(99)));
+    EXPECT_EQ(on_disk(), kPcapFileHeaderSize + kOne) << "99 ms later: buffered";
+    ASSERT_FALSE(file.write(sc, std::chrono::milliseconds(100)));
+    EXPECT_EQ(on_disk(), kPcapFileHeaderSize + 3 * kOne) << "100 ms later: written";
+    ASSERT_FALSE(file.write(sc, std::chrono::milliseconds(101)));
+    ASSERT_FALSE(file.flush());
+    EXPECT_EQ(on_disk(), kPcapFileHeaderSize + 4 * kOne) << "flush()";
+    ASSERT_FALSE(file.write(sc, std::chrono::milliseconds(102)));
+  }
+  EXPECT_EQ(on_disk(), kPcapFileHeaderSize + 5 * kOne) << "closed";
+  std::filesystem::remove(path);
 }
 
 }  // namespace
