@@ -154,25 +154,23 @@ bool step_until(Rig& rig, Pred done) {
 // the input byte 10 ms later, not 9: first the protective field bit (the RS4 sees the
 // obstacle), then the OSSD bit (the RS4 switches off after its own response time).
 TEST_F(Aligned, AdapterAddsItsTenMillisecondResponseTime) {
+  // Steps to the moment `rs4_shows` holds, then checks `bit` keeps its old value `before` for
+  // 9 ms and takes the new one at 10 ms.
+  const auto follows_10ms_later = [&](auto rs4_shows, std::uint8_t bit, bool before) {
+    ASSERT_TRUE(step_until(rig, rs4_shows));
+    const auto rs4_at = rig.now;
+    EXPECT_EQ((rig.adapter.input_byte() & bit) != 0, before) << "the RS4 just changed";
+    rig.advance(9ms);
+    EXPECT_EQ((rig.adapter.input_byte() & bit) != 0, before) << "9 ms after the RS4";
+    rig.advance(1ms);
+    EXPECT_EQ((rig.adapter.input_byte() & bit) != 0, !before) << "10 ms after the RS4";
+    EXPECT_EQ(rig.now - rs4_at, 10ms);
+  };
   (void)rig.adapter.scanner().edit_scene(rig.now).add(scanner::Circle{{500, 0}, 100});
   rig.adapter.on_time(rig.now);
-  ASSERT_TRUE(step_until(rig, [&] { return rig.adapter.scanner().status().protective_violated; }));
-  auto rs4_at = rig.now;
-  EXPECT_FALSE(rig.adapter.input_byte() & kInputProtectiveField) << "the RS4 just saw it";
-  rig.advance(9ms);
-  EXPECT_FALSE(rig.adapter.input_byte() & kInputProtectiveField) << "9 ms after the RS4";
-  rig.advance(1ms);
-  EXPECT_TRUE(rig.adapter.input_byte() & kInputProtectiveField) << "10 ms after the RS4";
-  EXPECT_EQ(rig.now - rs4_at, 10ms);
-
-  ASSERT_TRUE(step_until(rig, [&] { return !rig.adapter.scanner().ossd(); }));
-  rs4_at = rig.now;
-  EXPECT_TRUE(rig.adapter.input_byte() & kInputOssd) << "the RS4 just switched off";
-  rig.advance(9ms);
-  EXPECT_TRUE(rig.adapter.input_byte() & kInputOssd) << "9 ms after the RS4";
-  rig.advance(1ms);
-  EXPECT_FALSE(rig.adapter.input_byte() & kInputOssd) << "10 ms after the RS4";
-  EXPECT_EQ(rig.now - rs4_at, 10ms);
+  follows_10ms_later([&] { return rig.adapter.scanner().status().protective_violated; },
+                     kInputProtectiveField, false);
+  follows_10ms_later([&] { return !rig.adapter.scanner().ossd(); }, kInputOssd, true);
 }
 
 TEST(AdapterTiming, ResponseTimeZeroFollowsTheRs4AtOnce) {
