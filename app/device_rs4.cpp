@@ -124,6 +124,7 @@ class Rs4Instance final : public DeviceInstance {
   }
   ServiceList services(const ServiceContext& c) override {
     target_ = std::make_unique<rpc::DeviceTarget>(device_, address_, c.clock, c.io);
+    target_->route_pc_adapter([this](bool attached, dp::TimePoint now) { attach(attached, now); });
     tap_.set_hub(target_->events());
     return rs4_services(*target_, c.executor);
   }

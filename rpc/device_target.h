@@ -33,6 +33,17 @@ class DeviceTarget final : public Rs4Target {
   dp::link::MemoryBus* bus() override { return nullptr; }
   EventHub* events() override { return hub_.get(); }
   void stop();
+  // With the RS4's RS232 port served: attach/detach go through it (rs4sim run --rs232).
+  void route_pc_adapter(std::function<void(bool attached, dp::TimePoint now)> hook) {
+    pc_adapter_hook_ = std::move(hook);
+  }
+  void set_pc_adapter(rs4::device::Rs4Device& device, bool attached, dp::TimePoint now) override {
+    if (pc_adapter_hook_) {
+      pc_adapter_hook_(attached, now);
+    } else {
+      Rs4Target::set_pc_adapter(device, attached, now);
+    }
+  }
 
  private:
   rs4::device::Rs4Device& device_;
@@ -42,6 +53,7 @@ class DeviceTarget final : public Rs4Target {
   std::shared_ptr<EventHub> hub_ = std::make_shared<EventHub>();
   std::shared_ptr<boost::asio::steady_timer> poll_timer_;
   std::shared_ptr<bool> stopped_ = std::make_shared<bool>(false);
+  std::function<void(bool, dp::TimePoint)> pc_adapter_hook_;
 };
 
 }  // namespace rs4sim::rpc

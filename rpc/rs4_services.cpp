@@ -225,11 +225,7 @@ grpc::Status DeviceService::ClearFault(grpc::ServerContext*, const v1::FaultRequ
 grpc::Status DeviceService::SetPcAdapter(grpc::ServerContext*, const v1::SetPcAdapterRequest* in,
                                          v1::Empty*) {
   return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint now) {
-    if (in->attached()) {
-      d.adapter().attach_pc_adapter(now);
-    } else {
-      d.adapter().detach_pc_adapter(now);
-    }
+    c_.target.set_pc_adapter(d, in->attached(), now);
     return grpc::Status::OK;
   });
 }

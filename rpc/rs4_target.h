@@ -34,6 +34,11 @@ class Rs4Target {
   virtual void after(dp::Duration delay, std::function<void()> f) = 0;
   // The source of Observation.StreamEvents (rpc/event_hub.h); nullptr = no event stream.
   virtual EventHub* events() { return nullptr; }
+  // The reed contact of the PC adapter (Device.SetPcAdapter). A process that serves the RS4's
+  // RS232 port routes it through the port, which opens and closes with it.
+  virtual void set_pc_adapter(rs4::device::Rs4Device& device, bool attached, dp::TimePoint now) {
+    attached ? device.adapter().attach_pc_adapter(now) : device.adapter().detach_pc_adapter(now);
+  }
   // The PLC side of the station (the simulated bus's F-host) into `out`; false = none.
   virtual bool plc_view(std::uint8_t address, v1::PlcView& out) {
     (void)address;

@@ -3,7 +3,7 @@
 # ([RS4 manual §7.1, §7.2], docs/rs232.md, docs/param.md): `rs4sim run --device rs4` serves
 # PROFIBUS on one pty and the RS4's RS232 interface on another (--rs232 pty); `rs4sim master`
 # on the PROFIBUS side completes the first-commissioning sync; then the PC adapter is attached
-# (SIGUSR1), the RS232 port streams 0x23 measurement frames whose contour values match a known
+# (through the gRPC API), the RS232 port streams 0x23 measurement frames whose contour values match a known
 # scene (an obstacle placed through the gRPC API, the distances computed here from the
 # geometry alone), `rs4sim param set` changes the
 # response time with the password, the adapter is removed (SIGUSR2), Proxy-Request comes and
@@ -64,7 +64,13 @@ until grep -q '"event":"proxy",.*"step":"idle",.*"config_set_to_default":true,"e
   i=$((i + 1))
 done
 
-kill -USR1 "$run_pid"  # the PC adapter attached: the RS232 port opens, 0x23 streams
+# The PC adapter attached through the API (Device.SetPcAdapter goes through the RS232 port,
+# which opens with it); removed below with SIGUSR2, the command-line way.
+PYTHONPATH="$source_dir/tools/python" /usr/bin/python3 - "$api" <<'PY' || fail "SetPcAdapter"
+import sys
+from rs4sim_harness import Rs4
+Rs4(sys.argv[1], station=4).set_pc_adapter(True)
+PY
 sleep 0.5
 /usr/bin/python3 - "$rs232" <<'PY' || fail "no 0x23 measurement frames on the RS232 port"
 import os, sys, termios, time
