@@ -26,14 +26,15 @@ DeviceTarget::DeviceTarget(rs4::device::Rs4Device& device, std::uint8_t address,
                            const dp::Clock& clock, boost::asio::io_context& io)
     : device_(device), address_(address), clock_(clock), io_(io) {
   hub_->watch(address, device);
-  poll_timer_ = std::make_shared<boost::asio::steady_timer>(io);
-  poll_every(poll_timer_, hub_, clock, stopped_);
+  const auto timer = std::make_shared<boost::asio::steady_timer>(io);
+  poll_timer_ = timer;
+  poll_every(timer, hub_, clock, stopped_);
 }
 
 // On the loop's thread: a handler already queued sees the flag, a pending wait is cancelled.
 void DeviceTarget::stop() {
   *stopped_ = true;
-  poll_timer_->cancel();
+  if (const auto timer = poll_timer_.lock()) timer->cancel();
 }
 
 void DeviceTarget::after(dp::Duration delay, std::function<void()> f) {

@@ -51,7 +51,9 @@ class DeviceTarget final : public Rs4Target {
   const dp::Clock& clock_;
   boost::asio::io_context& io_;
   std::shared_ptr<EventHub> hub_ = std::make_shared<EventHub>();
-  std::shared_ptr<boost::asio::steady_timer> poll_timer_;
+  // Weak: the timer lives in its own handler and dies with the loop, which may end before
+  // this target (a timer must not outlive its io_context).
+  std::weak_ptr<boost::asio::steady_timer> poll_timer_;
   std::shared_ptr<bool> stopped_ = std::make_shared<bool>(false);
   std::function<void(bool, dp::TimePoint)> pc_adapter_hook_;
 };
