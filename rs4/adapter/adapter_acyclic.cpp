@@ -236,14 +236,16 @@ void Adapter::submit_rs4_command(std::span<const std::uint8_t> command, Channel&
 }
 
 void Adapter::finish_processing(TimePoint now) {
+  bool executed = false;
   for (auto* ch : {&c1_, &c2_}) {
     while (!ch->processing.empty() && ch->processing.front().due <= now) {
       const auto command = std::move(ch->processing.front().command);
       ch->processing.pop_front();
       ch->answers.push_back(execute_rs4_command(command, now));
+      executed = true;
     }
   }
-  refresh_input(now);  // an executed command may have changed the RS4
+  if (executed) refresh_input(now);  // an executed command may have changed the RS4
 }
 
 std::vector<std::uint8_t> Adapter::execute_rs4_command(std::span<const std::uint8_t> command,

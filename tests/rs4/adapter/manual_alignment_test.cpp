@@ -173,12 +173,17 @@ TEST_F(Aligned, AdapterAddsItsTenMillisecondResponseTime) {
   follows_10ms_later([&] { return !rig.adapter.scanner().ossd(); }, kInputOssd, true);
 }
 
+// Starts the rig and runs it past the RS4's boot.
+void boot(Rig& rig) {
+  rig.start();
+  rig.run(31s);
+}
+
 TEST(AdapterTiming, ResponseTimeZeroFollowsTheRs4AtOnce) {
   AdapterConfig cfg;
   cfg.response_time = 0ms;
   Rig rig(cfg);
-  rig.start();
-  rig.run(31s);
+  boot(rig);
   rig.restart_pulse();
   ASSERT_TRUE(rig.ossd());
   (void)rig.adapter.scanner().edit_scene(rig.now).add(scanner::Circle{{500, 0}, 100});
@@ -223,8 +228,7 @@ TEST(AdapterTiming, CommandTimeZeroAnswersAtOnce) {
   AdapterConfig cfg;
   cfg.rs4_command_time = 0ms;
   Rig rig(cfg);
-  rig.start();
-  rig.run(31s);
+  boot(rig);
   rig.write(Rig::block({0x14, 0x01}));
   const auto r = rig.read();
   ASSERT_GT(r.data.size(), 4u);
