@@ -70,6 +70,25 @@ def error_details(error):
     return error.code().name, violations, preconditions
 
 
+class _Subscribed:
+    """A server stream whose first event has been received: a gRPC call returns before the
+    server has run its handler, and on the simulated clock a change made by the next RPC
+    (an advance) would come before the subscription and never be seen."""
+
+    def __init__(self, call):
+        self._call = call
+        self._first = [next(call)]
+
+    def __iter__(self):
+        return self
+
+    def __next__(self):
+        return self._first.pop() if self._first else next(self._call)
+
+    def cancel(self):
+        self._call.cancel()
+
+
 class Rs4:
     """One RS4 of a running rs4sim, by station address."""
 
@@ -110,10 +129,12 @@ class Rs4:
     def events(self, telegrams=False, queue_capacity=0, stations=None):
         """The event stream (an iterator of Event; .cancel() ends it): the current state
         first (StateChange with from = ""), then every change, alarm, diagnosis change and,
-        with telegrams=True, every telegram. A slow reader gets Event.dropped with the count."""
+        with telegrams=True, every telegram. A slow reader gets Event.dropped with the count.
+        Returns once the server has subscribed (its snapshot has arrived), so nothing that
+        the next call causes is missed; a bad request raises grpc.RpcError here."""
         addresses = [self.station] if stations is None else stations
-        return self.observation.StreamEvents(pb.StreamEventsRequest(
-            addresses=addresses, telegrams=telegrams, queue_capacity=queue_capacity))
+        return _Subscribed(self.observation.StreamEvents(pb.StreamEventsRequest(
+            addresses=addresses, telegrams=telegrams, queue_capacity=queue_capacity)))
 
     # ---- faults on the bus and in the safety layer -------------------------------------------
     def safety_fault(self, name, count=1):
