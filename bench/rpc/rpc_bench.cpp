@@ -125,6 +125,8 @@ void BM_EventStreamTelegrams(benchmark::State& state) {
       last_ns.store(e.now_ns(), std::memory_order_relaxed);
     }
   });
+  // The call returns before the server has subscribed: wait for the snapshot's first event.
+  while (events.load() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(1));
   const auto t0 = Clock::now();
   for (auto _ : state) rig.advance(10'000);
   std::int64_t end_ns = 0;

@@ -45,7 +45,7 @@ TEST_F(RpcEventsTest, SnapshotThenTheBootAndAViolationInOrder) {
   grpc::ClientContext ctx;
   v1::StreamEventsRequest req;
   auto reader = open(ctx, req);
-  // The snapshot: every item with from = "" (the server subscribes before the first Read).
+  // The snapshot: every item with from = "" (nothing is advanced before it has arrived).
   std::map<std::string, std::string> snapshot;
   v1::Event e;
   std::uint64_t sequence = 0;
@@ -87,11 +87,14 @@ TEST_F(RpcEventsTest, EveryTelegramWithDirectionTimeAndWireBytes) {
   req.add_addresses(4);
   req.set_telegrams(true);
   auto reader = open(ctx, req);
+  v1::Event e;
+  // The call returns before the server has subscribed; the first event (the snapshot) says it
+  // has. Advancing before that could run the 100 ms before the subscription: no telegrams.
+  ASSERT_TRUE(reader->Read(&e));
   advance(100);
   int to_station = 0;
   int from_station = 0;
   std::int64_t last_ns = 0;
-  v1::Event e;
   while (to_station < 5 || from_station < 5) {
     ASSERT_TRUE(reader->Read(&e));
     if (!e.has_telegram()) continue;
