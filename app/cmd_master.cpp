@@ -5,6 +5,7 @@
 //   rs4sim master --slave 4 --slave 5 --link pty                  (prints its pty path first)
 //   rs4sim master --slave 4 --link udp --listen 127.0.0.1:5000 --peer 127.0.0.1:5001
 //   rs4sim master --slave 4 --slave 5 --link memory --json        (simulated RS4s, simulated time)
+//   rs4sim master --slave 4 --link serial --port /dev/pts/3 --grpc 127.0.0.1:0  (Proxy, Archive)
 #include "app/command.h"
 #include "app/link_cli.h"
 #include "app/master_proxy.h"
@@ -120,6 +121,15 @@ int run(MasterCliOptions& o) {
     throw UsageError("--proxy-enable is for --no-proxy runs; the proxy sets Proxy-Enable itself");
   }
   if (o.proxy.max_parallel == 0) throw UsageError("--max-syncs must be at least 1");
+  if (!o.link.grpc.empty() && o.link.link == "memory") {
+    throw UsageError(
+        "--grpc: the master serves its API on a real-time link (pty, serial, "
+        "udp); for a simulated bus under API control use `rs4sim run --link "
+        "memory --grpc`");
+  }
+  if (!o.link.grpc.empty() && o.no_proxy) {
+    throw UsageError("--grpc serves the proxy and its archive, which --no-proxy turns off");
+  }
   std::unique_ptr<storage::SqliteArchive> archive;
   std::unique_ptr<ProxyPlugin> proxy;
   std::vector<MasterPlugin*> plugins;
@@ -180,6 +190,9 @@ Action setup(CLI::App& cmd) {
       ->check(CLI::Range(0, 600000));
   cmd.add_flag("--json", o->service.json, "one JSON object per line for every event");
   add_link_options(cmd, l, "the RS4's process");
+  cmd.add_option("--grpc", l.grpc,
+                 "serve the Proxy and Archive API on HOST:PORT (loopback only; port 0 = any "
+                 "free port; real-time links)");
   return [o]() -> int { return run(*o); };
 }
 

@@ -2,6 +2,7 @@
 
 #include "app/master_report.h"
 #include "app/progress_bar.h"
+#include "rpc/archive_service.h"
 
 #include <algorithm>
 #include <chrono>
@@ -38,8 +39,48 @@ std::string hex4(std::uint16_t v) {
 }  // namespace
 
 ProxyPlugin::ProxyPlugin(storage::ParameterArchive& archive, const ProxyPluginOptions& options)
-    : scheduler_(archive, proxy::SchedulerConfig{options.bus, options.max_parallel, {}, true}),
+    : archive_(archive),
+      options_(options),
+      scheduler_(archive, proxy::SchedulerConfig{options.bus, options.max_parallel, {}, true}),
       driver_(scheduler_, *this) {}
+
+ServiceList ProxyPlugin::services(const ServiceContext& context) {
+  feed_ = std::make_unique<rpc::ProxyFeed>();
+  const dp::Clock& clock = context.clock;
+  rpc::ProxySource source;
+  source.bus = options_.bus;
+  source.max_parallel = options_.max_parallel;
+  source.status = [this] { return scheduler_.status(); };
+  source.queue = [this] {
+    return std::vector<std::uint8_t>(scheduler_.queue().begin(), scheduler_.queue().end());
+  };
+  source.now_ns = [&clock] {
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(clock.now().time_since_epoch())
+        .count();
+  };
+  const auto wall = [] {
+    return std::chrono::time_point_cast<std::chrono::milliseconds>(
+        std::chrono::system_clock::now());
+  };
+  return {std::make_shared<rpc::ProxyService>(std::move(source), *feed_, context.executor),
+          std::make_shared<rpc::ArchiveService>(archive_, context.executor, wall)};
+}
+
+void ProxyPlugin::stop_services() {
+  if (feed_) feed_->close();
+}
+
+void ProxyPlugin::publish_changes(dp::TimePoint now) {
+  if (!feed_) return;
+  const auto now_ns =
+      std::chrono::duration_cast<std::chrono::nanoseconds>(now.time_since_epoch()).count();
+  for (const auto& s : scheduler_.status()) {
+    auto& last = published_[s.address];
+    if (last == s) continue;
+    feed_->publish(s, options_.bus, now_ns);
+    last = s;
+  }
+}
 
 void ProxyPlugin::start(rs4::device::Rs4MasterStation& station, dp::TimePoint now) {
   station_ = &station;
@@ -78,6 +119,7 @@ void ProxyPlugin::on_cycle(MasterReport& report, dp::TimePoint now) {
   driver_.poll(now);
   for (const auto a : scheduler_.addresses()) scheduler_.persist(a, now);
   report_changes(report, now);
+  publish_changes(now);
 }
 
 void ProxyPlugin::report_changes(MasterReport& report, dp::TimePoint now) {

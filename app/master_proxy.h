@@ -7,11 +7,13 @@
 #include "app/master_service.h"
 #include "proxy/proxy_driver.h"
 #include "proxy/proxy_scheduler.h"
+#include "rpc/proxy_service.h"
 #include "storage/parameter_archive.h"
 
 #include <cstdint>
 #include <deque>
 #include <map>
+#include <memory>
 #include <string>
 
 namespace rs4sim::app {
@@ -35,6 +37,9 @@ class ProxyPlugin final : public MasterPlugin, private proxy::RecordChannel {
   void on_event(const rs4::device::Rs4MasterEvent& e, rs4::device::Rs4MasterStation& station,
                 MasterReport& report, dp::TimePoint now) override;
   [[nodiscard]] const proxy::ProxyScheduler& scheduler() const noexcept { return scheduler_; }
+  // Proxy (the FB outputs, the progress stream) and Archive over the archive it writes.
+  ServiceList services(const ServiceContext& context) override;
+  void stop_services() override;
 
  private:
   // proxy::RecordChannel
@@ -44,13 +49,19 @@ class ProxyPlugin final : public MasterPlugin, private proxy::RecordChannel {
                  const boost::outcome_v2::std_result<dp::master::Dpv1RequestId>& id);
   void on_cycle(MasterReport& report, dp::TimePoint now);
   void report_changes(MasterReport& report, dp::TimePoint now);
+  void publish_changes(dp::TimePoint now);
 
+  storage::ParameterArchive& archive_;
+  ProxyPluginOptions options_;
   proxy::ProxyScheduler scheduler_;
   proxy::ProxyDriver driver_;
   rs4::device::Rs4MasterStation* station_ = nullptr;
   std::map<dp::master::Dpv1RequestId, std::uint8_t> pending_;  // request id → RS4
   std::deque<std::uint8_t> refused_;  // requests the master refused at once, answered next cycle
   std::map<std::uint8_t, proxy::StationStatus> last_;
+  // The API (services()): the feed of the Proxy service's streams, what it saw last.
+  std::unique_ptr<rpc::ProxyFeed> feed_;
+  std::map<std::uint8_t, proxy::StationStatus> published_;
 };
 
 }  // namespace rs4sim::app

@@ -132,6 +132,19 @@ int run_memory(const MasterServiceOptions& o, const LinkOptions& l, std::ostream
 
 }  // namespace
 
+ServiceList MasterService::services(const ServiceContext& context) {
+  ServiceList all;
+  for (auto* p : plugins_) {
+    auto some = p->services(context);
+    all.insert(all.end(), some.begin(), some.end());
+  }
+  return all;
+}
+
+void MasterService::stop_services() {
+  for (auto* p : plugins_) p->stop_services();
+}
+
 int run_master(const MasterServiceOptions& options, const LinkOptions& link, std::ostream& out,
                const std::vector<MasterPlugin*>& plugins) {
   validate(link);

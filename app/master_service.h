@@ -39,6 +39,13 @@ class MasterPlugin {
   virtual void on_event(const rs4::device::Rs4MasterEvent& e,
                         rs4::device::Rs4MasterStation& station, MasterReport& report,
                         dp::TimePoint now) = 0;
+  // The plugin's gRPC services (`rs4sim master --grpc`, docs/rpc.md); they live as long as
+  // the plugin. stop_services(): the server has shut down, end what streams still wait for.
+  virtual ServiceList services(const ServiceContext& context) {
+    (void)context;
+    return {};
+  }
+  virtual void stop_services() {}
 };
 
 class MasterService final : public DeviceInstance {
@@ -55,6 +62,9 @@ class MasterService final : public DeviceInstance {
   void start(dp::TimePoint now) override;
   [[nodiscard]] std::string describe() const override;
   void print_status(std::ostream& out, const dp::link::StationCounters& link) const override;
+  // The plugins' services (the proxy: Proxy and Archive).
+  ServiceList services(const ServiceContext& context) override;
+  void stop_services() override;
 
   [[nodiscard]] rs4::device::Rs4MasterStation& station() { return station_; }
   [[nodiscard]] const rs4::device::Rs4MasterStation& station() const { return station_; }

@@ -33,6 +33,7 @@ struct StationStatus {
   std::optional<std::size_t> queue_position;  // 0 = next
   SyncProgress progress;
   FbOutputs outputs;
+  friend bool operator==(const StationStatus&, const StationStatus&) = default;
 };
 
 class ProxyScheduler {

@@ -24,6 +24,7 @@ _PROTO_ROOT = os.path.join(_REPO, "rpc", "proto")
 _PROTOS = [
     "rs4sim/v1/rs4.proto",
     "rs4sim/v1/archive_service.proto",
+    "rs4sim/v1/proxy_service.proto",
     "google/rpc/status.proto",
     "google/rpc/error_details.proto",
 ]
@@ -50,6 +51,8 @@ from rs4sim.v1 import rs4_pb2 as pb  # noqa: E402
 from rs4sim.v1 import rs4_pb2_grpc as pb_grpc  # noqa: E402
 from rs4sim.v1 import archive_service_pb2 as archive_pb  # noqa: E402,F401
 from rs4sim.v1 import archive_service_pb2_grpc as archive_grpc  # noqa: E402
+from rs4sim.v1 import proxy_service_pb2 as proxy_pb  # noqa: E402
+from rs4sim.v1 import proxy_service_pb2_grpc as proxy_grpc  # noqa: E402
 from google.rpc import status_pb2, error_details_pb2  # noqa: E402
 
 
@@ -185,3 +188,29 @@ class Rs4:
             self.press_restart(200)
         if not self.run_until("OSSD_ON", 2):
             raise AssertionError("OSSD stays off after the restart pulse")
+
+
+class Master:
+    """A running `rs4sim master --grpc`: its parameter proxy and the archive it writes."""
+
+    def __init__(self, address, timeout=10.0):
+        self.channel = grpc.insecure_channel(address)
+        grpc.channel_ready_future(self.channel).result(timeout=timeout)
+        self.proxy = proxy_grpc.ProxyStub(self.channel)
+        self.archive = archive_grpc.ArchiveStub(self.channel)
+
+    def proxy_status(self, addresses=()):
+        """ProxyStatusResponse: bus, max_parallel, running, queue, stations (FB outputs)."""
+        return self.proxy.GetStatus(proxy_pb.ProxyStatusRequest(addresses=list(addresses)))
+
+    def watch_sync(self, addresses=(), until_done=True, timeout=None):
+        """The progress stream (ProxyStationStatus items): the current status first, then
+        each change; with until_done it ends once a sync seen running has ended. Returns
+        once the current status has arrived (the server has subscribed)."""
+        return _Subscribed(self.proxy.WatchSync(
+            proxy_pb.WatchSyncRequest(addresses=list(addresses), until_sync_done=until_done),
+            timeout=timeout))
+
+    def history(self, address, bus="default"):
+        """The archive's versions of one RS4, newest first."""
+        return self.archive.History(archive_pb.StationKey(bus=bus, address=address)).versions
