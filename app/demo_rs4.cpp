@@ -2,29 +2,42 @@
 // the manual prescribes and fails the demo if it does not happen (app/narration.h).
 #include "app/demo_proxy.h"
 #include "app/demos.h"
+#include "app/grpc_serving.h"
 #include "app/narration.h"
 #include "app/progress_bar.h"
 #include "app/run_options.h"
+#include "rpc/rs4_services.h"
+#include "rpc/segment_target.h"
 #include "rs4/adapter/cyclic_bytes.h"
 #include "rs4/device/rs4_segment.h"
 #include "rs4/protocol/telegram.h"
 #include "rs4/scanner/faults.h"
 #include "storage/sqlite_archive.h"
 
+#include <boost/asio/executor_work_guard.hpp>
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/signal_set.hpp>
+
 #include <cstdio>
 #include <functional>
+#include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 
 namespace rs4sim::app {
 namespace {
 
+namespace asio = boost::asio;
 using namespace std::chrono_literals;
 using rs4::adapter::kInputOssd;
 using rs4::adapter::kInputProxyRequest;
 using rs4::adapter::kOutputProxyEnable;
 using rs4::adapter::kOutputRestart;
 using rs4::device::Rs4Segment;
+
+// `demo --grpc`: SIGINT/SIGTERM arrived; unwinds the story from the next wait.
+struct Interrupted {};
 
 // The process output byte of the demo's PLC: Proxy-Enable set (automatic parameter sync,
 // [RS4 manual §5.1.2]) and the selected field pair.
@@ -35,9 +48,10 @@ constexpr std::uint8_t out_byte(std::uint8_t pair) {
 class Demo {
  public:
   Demo(Rs4Segment& s, storage::ParameterArchive& archive, std::ostream& out,
-       const DemoOptions& options)
+       const DemoOptions& options, WaitUntil wait)
       : s_(s),
-        n_(out, s.clock(), run_until(s, options.realtime), Narration::Stamp::kSeconds),
+        n_(out, s.clock(), run_until(s, options.realtime, std::move(wait)),
+           Narration::Stamp::kSeconds),
         proxy_(s, archive, [this](dp::Duration d) { n_.run_for(d); }) {
     n_.set_live(options.live_progress);
   }
@@ -97,11 +111,11 @@ class Demo {
   int response_ms_ = 0;  // the response time chapter 8 sets through the PC adapter
 
  private:
-  static RunUntil run_until(Rs4Segment& s, bool realtime) {
+  static RunUntil run_until(Rs4Segment& s, bool realtime, WaitUntil wait) {
     RunUntil run = [&s](const std::function<bool()>& done, dp::Duration limit) {
       return s.run_until(done, limit);
     };
-    return realtime ? paced_to_wall_clock(std::move(run), s.clock()) : run;
+    return realtime ? paced_to_wall_clock(std::move(run), s.clock(), std::move(wait)) : run;
   }
   static std::string line(const std::string& what, const proxy::SyncProgress& p) {
     return "  " + what + " " + progress_bar(p.bytes_done, p.bytes_total) + " " +
@@ -387,20 +401,62 @@ int run_rs4_demo(std::ostream& out, const DemoOptions& options) {
     return 1;
   }
   storage::ParameterArchive& store = *archive.value();
-  Demo d(s, store, out, options);
-  const bool ok = run_steps(
-      {[&] { return startup(d); }, [&] { return commissioning(d, store); },
-       [&] { return protective_field(d); }, [&] { return field_pairs(d); },
-       [&] { return measurement(d); }, [&] { return rs4_error(d); }, [&] { return passivation(d); },
-       [&] { return parameter_change(d, store); }, [&] { return device_exchange(d, store); }});
-  d.chapter(ok ? "demo complete: every step behaved as the manual prescribes"
-               : "demo FAILED (the step above)");
+  // --grpc: the API's calls run on this thread while the paced demo waits for the wall clock
+  // (its loop runs in the waits), so they see the segment between two slices of the story.
+  asio::io_context io;
+  auto work = asio::make_work_guard(io);
+  rpc::AsioExecutor executor(io);
+  std::optional<rpc::SegmentTarget> target;
+  std::unique_ptr<GrpcServing> serving;
+  WaitUntil wait;
+  // SIGINT/SIGTERM end the demo between two slices (the loop sees them in its waits).
+  // (Only with --grpc: a signal set without a running loop would swallow Ctrl-C.)
+  std::optional<asio::signal_set> signals;
+  bool interrupted = false;
+  if (!options.grpc.empty()) {
+    target.emplace(s);
+    serving = std::make_unique<GrpcServing>(
+        options.grpc,
+        ServiceList{std::make_shared<rpc::ObservationService>(rpc::Rs4Context{*target, executor})},
+        out);
+    wait = [&io, &interrupted](std::chrono::steady_clock::time_point t) {
+      io.run_until(t);
+      if (interrupted) throw Interrupted{};
+    };
+    signals.emplace(io, SIGINT, SIGTERM);
+    signals->async_wait([&interrupted](const boost::system::error_code& ec, int) {
+      if (!ec) interrupted = true;
+    });
+  }
+  Demo d(s, store, out, options, wait);
+  bool ok = false;
+  try {
+    ok = run_steps({[&] { return startup(d); }, [&] { return commissioning(d, store); },
+                    [&] { return protective_field(d); }, [&] { return field_pairs(d); },
+                    [&] { return measurement(d); }, [&] { return rs4_error(d); },
+                    [&] { return passivation(d); }, [&] { return parameter_change(d, store); },
+                    [&] { return device_exchange(d, store); }});
+    d.chapter(ok ? "demo complete: every step behaved as the manual prescribes"
+                 : "demo FAILED (the step above)");
+  } catch (const Interrupted&) {
+    d.chapter("demo interrupted");
+  }
   if (capture) {
     out << "capture: " << capture->records() << " telegrams in " << options.capture.file << "\n";
   }
   if (!options.archive.empty())
     out << "archive: the demo's sets are in " << options.archive << "\n";
+  if (serving) {  // the clients' streams end with the demo
+    if (auto* hub = target->events()) hub->close();
+    serving->stop_then(io, [&work, &signals] {
+      signals->cancel();
+      work.reset();
+    });
+    io.restart();
+    io.run();
+  }
   out.flush();
+  if (interrupted) return 130;  // 128 + SIGINT, as a shell reports an interrupted command
   return ok ? 0 : 1;
 }
 

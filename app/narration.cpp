@@ -59,14 +59,16 @@ long long Narration::ms_since(dp::TimePoint since) const {
   return std::chrono::duration_cast<std::chrono::milliseconds>(clock_.now() - since).count();
 }
 
-RunUntil paced_to_wall_clock(RunUntil run, const dp::Clock& clock) {
+RunUntil paced_to_wall_clock(RunUntil run, const dp::Clock& clock, WaitUntil wait) {
+  if (!wait)
+    wait = [](std::chrono::steady_clock::time_point t) { std::this_thread::sleep_until(t); };
   struct Anchor {
     std::optional<std::chrono::steady_clock::time_point> wall;
     dp::TimePoint sim{};
   };
   auto anchor = std::make_shared<Anchor>();
-  return [run = std::move(run), &clock, anchor](const std::function<bool()>& done,
-                                                dp::Duration limit) {
+  return [run = std::move(run), &clock, anchor, wait = std::move(wait)](
+             const std::function<bool()>& done, dp::Duration limit) {
     if (!anchor->wall) {
       anchor->wall = std::chrono::steady_clock::now();
       anchor->sim = clock.now();
@@ -75,7 +77,8 @@ RunUntil paced_to_wall_clock(RunUntil run, const dp::Clock& clock) {
     while (true) {
       const auto slice = std::min<dp::Duration>(std::chrono::milliseconds(10), end - clock.now());
       const bool ok = run(done, slice);
-      std::this_thread::sleep_until(*anchor->wall + (clock.now() - anchor->sim));
+      wait(*anchor->wall + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                               clock.now() - anchor->sim));
       if (ok) return true;
       if (clock.now() >= end) return done();
     }

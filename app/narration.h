@@ -6,6 +6,7 @@
 
 #include "dp/time/clock.h"
 
+#include <chrono>
 #include <functional>
 #include <ostream>
 #include <string>
@@ -56,10 +57,13 @@ class Narration {
   bool live_ = false;
 };
 
+// Waits until a wall-clock instant (default: sleeps; `demo --grpc`: runs the API's loop).
+using WaitUntil = std::function<void(std::chrono::steady_clock::time_point)>;
+
 // `run` paced to the wall clock (`rs4sim demo --realtime`): simulated time moves in slices
-// of at most 10 ms and the wall clock waits for it, so every duration of the story takes
-// as long as on the device.
-RunUntil paced_to_wall_clock(RunUntil run, const dp::Clock& clock);
+// of at most 10 ms and the wall clock waits for it (through `wait`), so every duration of the
+// story takes as long as on the device.
+RunUntil paced_to_wall_clock(RunUntil run, const dp::Clock& clock, WaitUntil wait = {});
 
 // Runs the steps in order until one fails; returns true when all passed.
 bool run_steps(const std::vector<std::function<bool()>>& steps);
