@@ -47,29 +47,8 @@ std::string check_tls(const ServerOptions& o) {
   if (!o.tls()) return {};
   if (o.tls_cert_chain.empty()) return "TLS needs a certificate chain besides the private key";
   if (o.tls_private_key.empty()) return "TLS needs a private key besides the certificate chain";
-  if (!contains(o.tls_cert_chain, "-----BEGIN CERTIFICATE-----") ||
-      !contains(o.tls_cert_chain, "-----END CERTIFICATE-----")) {
-    return "the TLS certificate chain is not PEM (no '-----BEGIN CERTIFICATE-----' block)";
-  }
-  const auto begin = o.tls_private_key.find("-----BEGIN ");
-  if (begin == std::string::npos || !contains(o.tls_private_key, "PRIVATE KEY-----") ||
-      !contains(o.tls_private_key, "-----END ")) {
-    return "the TLS private key is not a PEM private key (no '-----BEGIN ... PRIVATE KEY-----' "
-           "block)";
-  }
-  return {};
-}
-
-std::string check_token(const std::string& token) {
-  for (std::size_t i = 0; i < token.size(); ++i) {
-    const auto c = static_cast<unsigned char>(token[i]);
-    if (c <= 0x20 || c >= 0x7F) {
-      return "the bearer token has a character that is not printable ASCII (a space, control or "
-             "non-ASCII character) at position " +
-             std::to_string(i + 1);
-    }
-  }
-  return {};
+  if (auto why = check_tls_cert_chain(o.tls_cert_chain); !why.empty()) return why;
+  return check_tls_private_key(o.tls_private_key);
 }
 
 // Requires `authorization: Bearer <token>` on every call. Runs in the call's path (not
@@ -128,6 +107,35 @@ std::shared_ptr<grpc::ServerCredentials> credentials(const ServerOptions& o) {
 
 }  // namespace
 
+std::string check_tls_cert_chain(const std::string& pem) {
+  if (!contains(pem, "-----BEGIN CERTIFICATE-----") ||
+      !contains(pem, "-----END CERTIFICATE-----")) {
+    return "the TLS certificate chain is not PEM (no '-----BEGIN CERTIFICATE-----' block)";
+  }
+  return {};
+}
+
+std::string check_tls_private_key(const std::string& pem) {
+  if (!contains(pem, "-----BEGIN ") || !contains(pem, "PRIVATE KEY-----") ||
+      !contains(pem, "-----END ")) {
+    return "the TLS private key is not a PEM private key (no '-----BEGIN ... PRIVATE KEY-----' "
+           "block)";
+  }
+  return {};
+}
+
+std::string check_bearer_token(const std::string& token) {
+  for (std::size_t i = 0; i < token.size(); ++i) {
+    const auto c = static_cast<unsigned char>(token[i]);
+    if (c <= 0x20 || c >= 0x7F) {
+      return "the bearer token has a character that is not printable ASCII (a space, control or "
+             "non-ASCII character) at position " +
+             std::to_string(i + 1);
+    }
+  }
+  return {};
+}
+
 bool is_loopback_address(const std::string& address) { return loopback(split(address).first); }
 
 bool constant_time_equal(const std::string& given, const std::string& expected) {
@@ -146,7 +154,7 @@ std::string check_listen_address(const std::string& address) {
 std::string check_server_options(const ServerOptions& options) {
   if (auto why = check_syntax(options.address); !why.empty()) return why;
   if (auto why = check_tls(options); !why.empty()) return why;
-  if (auto why = check_token(options.bearer_token); !why.empty()) return why;
+  if (auto why = check_bearer_token(options.bearer_token); !why.empty()) return why;
   const std::string host = split(options.address).first;
   if (!loopback(host) && (!options.tls() || options.bearer_token.empty())) {
     const char* missing = !options.tls() && options.bearer_token.empty() ? "TLS and a bearer token"

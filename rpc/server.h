@@ -38,6 +38,12 @@ std::string check_listen_address(const std::string& address);
 // reason (what is missing).
 std::string check_server_options(const ServerOptions& options);
 
+// The parts of check_server_options, each empty or the reason: a PEM certificate chain, a
+// PEM private key, a bearer token (printable ASCII, no spaces; empty = none).
+std::string check_tls_cert_chain(const std::string& pem);
+std::string check_tls_private_key(const std::string& pem);
+std::string check_bearer_token(const std::string& token);
+
 // True for a loopback host in HOST:PORT ([::1]:PORT for IPv6).
 bool is_loopback_address(const std::string& address);
 
