@@ -105,8 +105,7 @@ rpc::ServerOptions grpc_server_options(const GrpcCliOptions& o, const char* env_
   }
   s.bearer_token = token_of(o, env_token);
   if (const auto why = rpc::check_server_options(s); !why.empty()) {
-    const bool remote =
-        rpc::check_listen_address(s.address).find("is not a loopback address") != std::string::npos;
+    const bool remote = why.find("is not a loopback address") != std::string::npos;
     throw UsageError("--grpc: " + why +
                      (remote
                           ? std::string(" (TLS: --grpc-tls-cert FILE --grpc-tls-key FILE; token: "

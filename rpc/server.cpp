@@ -11,6 +11,7 @@
 #include <cctype>
 #include <chrono>
 #include <stdexcept>
+#include <string_view>
 
 namespace rs4sim::rpc {
 namespace {
@@ -136,8 +137,6 @@ std::string check_bearer_token(const std::string& token) {
   return {};
 }
 
-bool is_loopback_address(const std::string& address) { return loopback(split(address).first); }
-
 bool constant_time_equal(const std::string& given, const std::string& expected) {
   unsigned diff = given.size() == expected.size() ? 0U : 1U;
   for (std::size_t i = 0; i < expected.size(); ++i) {
@@ -148,7 +147,7 @@ bool constant_time_equal(const std::string& given, const std::string& expected) 
 }
 
 std::string check_listen_address(const std::string& address) {
-  return check_server_options(ServerOptions{address, {}, {}, {}});
+  return check_server_options(ServerOptions{address});
 }
 
 std::string check_server_options(const ServerOptions& options) {

@@ -17,12 +17,13 @@ struct ServerOptions {
   // localhost), 0.0.0.0 and :: included, needs both TLS and a bearer token.
   std::string address = "127.0.0.1:0";
   // TLS: the server's PEM certificate chain and its PEM private key (both or neither);
-  // both empty = plaintext.
-  std::string tls_cert_chain;
-  std::string tls_private_key;
+  // both empty = plaintext. (The {} keep ServerOptions{address} free of
+  // -Wmissing-field-initializers.)
+  std::string tls_cert_chain{};
+  std::string tls_private_key{};
   // Not empty: every call (health and reflection included) must carry the metadata
   // `authorization: Bearer <token>`, else UNAUTHENTICATED. Printable ASCII, no spaces.
-  std::string bearer_token;
+  std::string bearer_token{};
 
   [[nodiscard]] bool tls() const noexcept {
     return !tls_cert_chain.empty() || !tls_private_key.empty();
@@ -43,9 +44,6 @@ std::string check_server_options(const ServerOptions& options);
 std::string check_tls_cert_chain(const std::string& pem);
 std::string check_tls_private_key(const std::string& pem);
 std::string check_bearer_token(const std::string& token);
-
-// True for a loopback host in HOST:PORT ([::1]:PORT for IPv6).
-bool is_loopback_address(const std::string& address);
 
 // `given == expected` in a time that does not depend on where they differ.
 bool constant_time_equal(const std::string& given, const std::string& expected);
