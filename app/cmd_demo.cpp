@@ -3,6 +3,7 @@
 // the spec says and 1 otherwise (CI runs it).
 #include "app/command.h"
 #include "app/device_registry.h"
+#include "app/grpc_cli.h"
 #include "rpc/server.h"
 
 #include <unistd.h>
@@ -25,17 +26,15 @@ const CommandRegistration kDemo(
                      "rs4: keep the sets the demo's proxy archives in this SQLite file");
       cmd.add_flag("--realtime", options->realtime,
                    "run at the device's real timing (the RS4 demo takes about a minute)");
-      cmd.add_option("--grpc", options->grpc,
-                     "rs4: serve the read-only Observation API on HOST:PORT while the demo "
-                     "runs (loopback only; port 0 = any free port); implies --realtime");
+      add_grpc_options(cmd, options->grpc,
+                       "rs4: the read-only Observation service while the demo runs; implies "
+                       "--realtime");
       return [device, options]() {
         const DeviceEntry& entry = *find_device(*device);
         if (!entry.demo) throw UsageError("--device " + *device + " has no demo yet");
         if (!options->grpc.empty()) {
           if (*device != "rs4") throw UsageError("--grpc: only the RS4 demo serves the API");
-          if (const auto why = rpc::check_listen_address(options->grpc); !why.empty()) {
-            throw UsageError("--grpc: " + why);
-          }
+          (void)grpc_server_options(options->grpc);  // unreadable files, missing TLS/token
           options->realtime = true;  // on the simulated clock the demo is over at once
         }
         options->live_progress = isatty(STDOUT_FILENO) != 0;

@@ -7,6 +7,7 @@
 //   rs4sim master --slave 4 --slave 5 --link memory --json        (simulated RS4s, simulated time)
 //   rs4sim master --slave 4 --link serial --port /dev/pts/3 --grpc 127.0.0.1:0  (Proxy, Archive)
 #include "app/command.h"
+#include "app/grpc_cli.h"
 #include "app/link_cli.h"
 #include "app/master_proxy.h"
 #include "app/master_service.h"
@@ -190,9 +191,7 @@ Action setup(CLI::App& cmd) {
       ->check(CLI::Range(0, 600000));
   cmd.add_flag("--json", o->service.json, "one JSON object per line for every event");
   add_link_options(cmd, l, "the RS4's process");
-  cmd.add_option("--grpc", l.grpc,
-                 "serve the Proxy and Archive API on HOST:PORT (loopback only; port 0 = any "
-                 "free port; real-time links)");
+  add_grpc_options(cmd, l.grpc, "the Proxy and Archive services (real-time links)");
   return [o]() -> int { return run(*o); };
 }
 

@@ -13,6 +13,7 @@
 // the byte device's client).
 #include "app/command.h"
 #include "app/device_options.h"
+#include "app/grpc_cli.h"
 #include "app/link_cli.h"
 #include "app/shell.h"
 
@@ -76,9 +77,8 @@ Action setup(CLI::App& cmd) {
                  "the manual's technical data)");
   add_byte_device_options(cmd, *o);
   add_link_options(cmd, l, "the master");
-  cmd.add_option("--grpc", l.grpc,
-                 "serve the control API on HOST:PORT (loopback only; port 0 = any free port); "
-                 "with --link memory the simulated clock moves only through the API");
+  add_grpc_options(cmd, l.grpc,
+                   "with --link memory the simulated clock moves only through the API");
   return [o]() -> int {
     DeviceOptions& dev = o->device_options;
     if (o->address >= 0) dev.address = o->address;

@@ -416,7 +416,7 @@ int run_rs4_demo(std::ostream& out, const DemoOptions& options) {
   if (!options.grpc.empty()) {
     target.emplace(s);
     serving = std::make_unique<GrpcServing>(
-        options.grpc,
+        grpc_server_options(options.grpc),
         ServiceList{std::make_shared<rpc::ObservationService>(rpc::Rs4Context{*target, executor})},
         out);
     wait = [&io, &interrupted](std::chrono::steady_clock::time_point t) {

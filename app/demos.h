@@ -4,6 +4,7 @@
 // (the failing step is named on `out`).
 
 #include "app/capture_option.h"
+#include "app/grpc_cli.h"
 
 #include <iosfwd>
 #include <string>
@@ -15,9 +16,8 @@ struct DemoOptions {
   std::string archive;         // the RS4 demo's parameter archive; empty: in memory only
   bool realtime = false;       // pace the simulated clock to the wall clock
   bool live_progress = false;  // redraw progress lines in place (stdout is a terminal)
-  // HOST:PORT: the RS4 demo serves the read-only Observation API while it runs (real time);
-  // empty = none.
-  std::string grpc;
+  // --grpc …: the RS4 demo serves the read-only Observation API while it runs (real time).
+  GrpcCliOptions grpc;
 };
 
 // RS4 scenario: one RS4/PROFIsafe, our GSD-configured class 1 master and a PROFIsafe

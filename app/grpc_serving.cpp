@@ -1,25 +1,32 @@
 #include "app/grpc_serving.h"
 
 #include "app/command.h"
+#include "app/grpc_cli.h"
 
 #include <boost/asio/post.hpp>
 
+#include <iostream>
 #include <ostream>
 #include <stdexcept>
 
 namespace rs4sim::app {
 
-GrpcServing::GrpcServing(const std::string& address, ServiceList services, std::ostream& out)
+GrpcServing::GrpcServing(const rpc::ServerOptions& options, ServiceList services, std::ostream& out)
     : services_(std::move(services)) {
   if (services_.empty()) throw UsageError("--grpc: this device has no gRPC API yet");
   std::vector<grpc::Service*> raw;
   for (const auto& s : services_) raw.push_back(s.get());
   try {
-    server_ = std::make_unique<rpc::RpcServer>(rpc::ServerOptions{address}, raw);
+    server_ = std::make_unique<rpc::RpcServer>(options, raw);
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
   out << "grpc: listening on " << server_->address() << std::endl;
+  if (const auto protection = grpc_protection(options); !protection.empty()) {
+    std::cerr << "rs4sim: grpc: " << protection
+              << (options.bearer_token.empty() ? "" : " (every call, health and reflection too)")
+              << std::endl;
+  }
 }
 
 GrpcServing::~GrpcServing() {

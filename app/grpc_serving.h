@@ -1,8 +1,9 @@
 #pragma once
 // The gRPC server of a run (`--grpc HOST:PORT`, docs/rpc.md) on the run's Asio loop: prints
-// "grpc: listening on ADDRESS" and stops in the order that cannot deadlock — the server shuts
-// down on a helper thread while the loop still runs the calls it is waiting for, then the
-// loop stops.
+// "grpc: listening on ADDRESS" (unchanged with TLS or a token: scripts parse it; a second
+// line on stderr says how the API is protected) and stops in the order that cannot deadlock — the
+// server shuts down on a helper thread while the loop still runs the calls it is waiting for, then
+// the loop stops.
 
 #include "app/device_registry.h"
 #include "rpc/server.h"
@@ -19,8 +20,9 @@ namespace rs4sim::app {
 
 class GrpcServing {
  public:
-  // Throws UsageError for a refused address, std::runtime_error when it cannot listen.
-  GrpcServing(const std::string& address, ServiceList services, std::ostream& out);
+  // `options`: app/grpc_cli.h's grpc_server_options. Throws UsageError for refused options,
+  // std::runtime_error when it cannot listen.
+  GrpcServing(const rpc::ServerOptions& options, ServiceList services, std::ostream& out);
   GrpcServing(const GrpcServing&) = delete;
   GrpcServing& operator=(const GrpcServing&) = delete;
   ~GrpcServing();

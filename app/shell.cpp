@@ -67,7 +67,7 @@ int run_memory_served(const DeviceEntry& device, const DeviceOptions& o, const L
   if (segment->bus() != nullptr) attach_capture(capture.get(), *segment->bus());
   const dp::RealClock wall;
   rpc::AsioExecutor executor(io);
-  GrpcServing serving(l.grpc, segment->services({executor, io, wall}), out);
+  GrpcServing serving(grpc_server_options(l.grpc), segment->services({executor, io, wall}), out);
   asio::signal_set signals(io, SIGINT, SIGTERM);
   asio::steady_timer limit(io);
   const auto stop = [&] {
@@ -218,7 +218,8 @@ int run_on_link(DeviceInstance& instance, const LinkOptions& l, std::ostream& ou
   rpc::AsioExecutor executor(io);
   std::unique_ptr<GrpcServing> serving;
   if (!l.grpc.empty()) {
-    serving = std::make_unique<GrpcServing>(l.grpc, instance.services({executor, io, clock}), out);
+    serving = std::make_unique<GrpcServing>(grpc_server_options(l.grpc),
+                                            instance.services({executor, io, clock}), out);
   }
   asio::signal_set signals(io, SIGINT, SIGTERM);
   asio::steady_timer limit(io);
@@ -274,8 +275,9 @@ void validate(const LinkOptions& l, bool byte_device) {
                      dp::standard_baud_rate_list());
   }
   if (byte_device && !l.capture.file.empty()) {
-    throw UsageError("--capture writes PROFIBUS telegrams; this device's line carries none "
-                     "(record its bytes with e.g. socat -x or a serial sniffer)");
+    throw UsageError(
+        "--capture writes PROFIBUS telegrams; this device's line carries none "
+        "(record its bytes with e.g. socat -x or a serial sniffer)");
   }
   if (l.link == "serial" && l.port.empty()) {
     throw UsageError("--link serial needs --port DEVICE (e.g. /dev/ttyUSB0)");
@@ -283,11 +285,7 @@ void validate(const LinkOptions& l, bool byte_device) {
   if (l.link == "udp" && (l.listen.empty() || l.peer.empty())) {
     throw UsageError("--link udp needs --listen HOST:PORT and --peer HOST:PORT");
   }
-  if (!l.grpc.empty()) {
-    if (const auto why = rpc::check_listen_address(l.grpc); !why.empty()) {
-      throw UsageError("--grpc: " + why);
-    }
-  }
+  if (!l.grpc.empty()) grpc_server_options(l.grpc);  // unreadable files, missing TLS/token
 }
 
 namespace {

@@ -13,6 +13,7 @@
 
 #include "app/capture_option.h"
 #include "app/device_registry.h"
+#include "app/grpc_cli.h"
 
 #include <iosfwd>
 #include <string>
@@ -26,10 +27,10 @@ struct LinkOptions {
   bool baud_given = false;      // --baud was on the command line
   std::string listen, peer;     // udp
   double duration = 0;          // seconds; 0 = until Ctrl-C (memory: the device's default)
-  // HOST:PORT of the gRPC API (docs/rpc.md); empty = none. With --link memory the run then
-  // stays on the manual clock and serves until Ctrl-C (--duration: wall seconds): time moves
-  // only through the SimTime service.
-  std::string grpc;
+  // The gRPC API (--grpc HOST:PORT and its TLS/token options, app/grpc_cli.h, docs/rpc.md);
+  // empty = none. With --link memory the run then stays on the manual clock and serves until
+  // Ctrl-C (--duration: wall seconds): time moves only through the SimTime service.
+  GrpcCliOptions grpc;
   // --capture FILE / --capture-linktype: every PROFIBUS telegram of the run into a pcap file
   // (docs/capture.md); not for byte devices.
   CaptureOptions capture;

@@ -10,6 +10,11 @@ Needs python3-grpcio and python3-grpc-tools (Debian 12): the stubs are compiled 
 repository's .proto files into a temporary directory at import, nothing is downloaded.
 Simulated time (advance, run_until) works where rs4sim runs on the manual clock
 (`rs4sim run --link memory --grpc 127.0.0.1:0`).
+
+With TLS and a bearer token (`--grpc-tls-cert`, `--grpc-tls-key`, `--grpc-token-file`):
+
+    rs4 = Rs4("scanner-host:50051", root_certificates=open("ca.crt", "rb").read(),
+              token=open("token.txt").readline().strip())
 """
 
 import os
@@ -92,12 +97,29 @@ class _Subscribed:
         self._call.cancel()
 
 
+def open_channel(address, root_certificates=None, token=None, timeout=10.0):
+    """A ready channel to rs4sim's API (docs/rpc.md "Remote access"). root_certificates: the
+    PEM bytes the server's certificate must chain to (TLS; the address's host must be in its
+    names); token: sent as `authorization: Bearer <token>` on every call. A token without TLS
+    goes over gRPC's local credentials (loopback only, plaintext on the wire)."""
+    if root_certificates is None and token is None:
+        channel = grpc.insecure_channel(address)
+    else:
+        creds = (grpc.ssl_channel_credentials(root_certificates=root_certificates)
+                 if root_certificates is not None else grpc.local_channel_credentials())
+        if token is not None:
+            creds = grpc.composite_channel_credentials(
+                creds, grpc.access_token_call_credentials(token))
+        channel = grpc.secure_channel(address, creds)
+    grpc.channel_ready_future(channel).result(timeout=timeout)
+    return channel
+
+
 class Rs4:
     """One RS4 of a running rs4sim, by station address."""
 
-    def __init__(self, address, station=4, timeout=10.0):
-        self.channel = grpc.insecure_channel(address)
-        grpc.channel_ready_future(self.channel).result(timeout=timeout)
+    def __init__(self, address, station=4, timeout=10.0, root_certificates=None, token=None):
+        self.channel = open_channel(address, root_certificates, token, timeout)
         self.station = station
         self.device = pb_grpc.DeviceStub(self.channel)
         self.observation = pb_grpc.ObservationStub(self.channel)

@@ -1,0 +1,150 @@
+// app/grpc_cli.h: the gRPC options of the runtime commands into rpc::ServerOptions — the token
+// file's first line trimmed, RS4SIM_GRPC_TOKEN, the TLS files, and each refusal's message.
+#include "app/grpc_cli.h"
+
+#include "app/command.h"
+#include "rpc/server.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace rs4sim::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kData = RS4SIM_RPC_TEST_DATA;
+
+class GrpcCliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("rs4sim_grpc_cli_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+            "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string file(const std::string& name, const std::string& text) {
+    const auto path = (dir_ / name).string();
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+  }
+  // The UsageError's message of grpc_server_options, or "" when it accepts.
+  static std::string refusal(const GrpcCliOptions& o, const char* env = nullptr) {
+    try {
+      grpc_server_options(o, env);
+    } catch (const UsageError& e) {
+      return e.what();
+    }
+    return {};
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(GrpcCliTest, TokenIsTheFilesFirstLineTrimmed) {
+  GrpcCliOptions o{"127.0.0.1:0", "", "", file("token", "  \tabc-123\r\nsecond line\n")};
+  const auto s = grpc_server_options(o, nullptr);
+  EXPECT_EQ(s.bearer_token, "abc-123");
+  EXPECT_FALSE(s.tls());
+  EXPECT_EQ(grpc_protection(s), "bearer token");
+}
+
+TEST_F(GrpcCliTest, TokenFromTheEnvironment) {
+  const auto s = grpc_server_options({"127.0.0.1:0", "", "", ""}, " from-env \n");
+  EXPECT_EQ(s.bearer_token, "from-env");
+  EXPECT_EQ(grpc_server_options({"127.0.0.1:0", "", "", ""}, nullptr).bearer_token, "");
+}
+
+TEST_F(GrpcCliTest, TlsFilesAreRead) {
+  const auto s = grpc_server_options(
+      {"0.0.0.0:0", kData + "/localhost.crt", kData + "/localhost.key", kData + "/token.txt"},
+      nullptr);
+  EXPECT_NE(s.tls_cert_chain.find("-----BEGIN CERTIFICATE-----"), std::string::npos);
+  EXPECT_NE(s.tls_private_key.find("PRIVATE KEY-----"), std::string::npos);
+  EXPECT_EQ(s.bearer_token, "rs4sim-test-token-0123456789");
+  EXPECT_EQ(grpc_protection(s), "TLS, bearer token");
+}
+
+TEST_F(GrpcCliTest, BadTokenSourcesAreRefusedWithTheReason) {
+  const std::string lo = "127.0.0.1:0";
+  EXPECT_EQ(refusal({lo, "", "", file("empty", "")}),
+            "--grpc-token-file " + (dir_ / "empty").string() + ": the file is empty");
+  EXPECT_EQ(
+      refusal({lo, "", "", file("blank", "  \nsecond\n")}),
+      "--grpc-token-file " + (dir_ / "blank").string() + ": the first line (the token) is empty");
+  EXPECT_NE(refusal({lo, "", "", (dir_ / "none").string()}).find("cannot read: No such file"),
+            std::string::npos);
+  EXPECT_EQ(refusal({lo, "", "", dir_.string()}),
+            "--grpc-token-file " + dir_.string() + ": is a directory, not a file");
+  EXPECT_EQ(refusal({lo, "", "", ""}, "  "),
+            "RS4SIM_GRPC_TOKEN is set but empty: unset it or give a token");
+  EXPECT_EQ(refusal({lo, "", "", file("t", "x\n")}, "y"),
+            "--grpc-token-file and RS4SIM_GRPC_TOKEN both give a bearer token: use one");
+  EXPECT_NE(refusal({lo, "", "", ""}, "two words")
+                .find("RS4SIM_GRPC_TOKEN: the bearer token has "
+                      "a character that is not printable ASCII"),
+            std::string::npos);
+}
+
+TEST_F(GrpcCliTest, BadTlsFilesAreRefusedWithTheReason) {
+  const std::string lo = "127.0.0.1:0";
+  const std::string crt = kData + "/localhost.crt";
+  const std::string key = kData + "/localhost.key";
+  EXPECT_EQ(refusal({lo, crt, "", ""}), "--grpc-tls-cert needs --grpc-tls-key FILE");
+  EXPECT_EQ(refusal({lo, "", key, ""}), "--grpc-tls-key needs --grpc-tls-cert FILE");
+  EXPECT_EQ(refusal({lo, key, key, ""}),
+            "--grpc-tls-cert " + key +
+                ": the TLS certificate chain is not PEM (no '-----BEGIN CERTIFICATE-----' block)");
+  EXPECT_NE(refusal({lo, crt, crt, ""})
+                .find("--grpc-tls-key " + crt +
+                      ": the TLS private key is "
+                      "not a PEM private key"),
+            std::string::npos);
+  EXPECT_NE(refusal({lo, crt, (dir_ / "none").string(), ""}).find("cannot read"),
+            std::string::npos);
+}
+
+TEST_F(GrpcCliTest, NonLoopbackSaysWhatIsMissingAndWhichOptionsGiveIt) {
+  const std::string crt = kData + "/localhost.crt";
+  const std::string key = kData + "/localhost.key";
+  const std::string token = kData + "/token.txt";
+  const auto none = refusal({"0.0.0.0:0", "", "", ""});
+  EXPECT_NE(none.find("--grpc: '0.0.0.0' is not a loopback address"), std::string::npos) << none;
+  EXPECT_NE(none.find("missing: TLS and a bearer token (TLS: --grpc-tls-cert FILE "
+                      "--grpc-tls-key FILE; token: --grpc-token-file FILE or RS4SIM_GRPC_TOKEN"),
+            std::string::npos)
+      << none;
+  EXPECT_NE(refusal({"[::]:0", crt, key, ""}).find("missing: a bearer token"), std::string::npos);
+  EXPECT_NE(refusal({"10.1.2.3:50051", "", "", ""}, "tok").find("missing: TLS ("),
+            std::string::npos);
+  EXPECT_EQ(refusal({"0.0.0.0:0", crt, key, token}), "");
+  EXPECT_EQ(refusal({"127.0.0.1", "", "", ""}),
+            "--grpc: '127.0.0.1' is not HOST:PORT (e.g. 127.0.0.1:50051, port 0 = any free port)");
+}
+
+TEST(GrpcCliOptionsTest, TlsFilesComeInPairsAndNeedGrpc) {
+  const auto parse = [](std::vector<std::string> args) {
+    CLI::App app;
+    GrpcCliOptions o;
+    add_grpc_options(app, o, "a note");
+    std::reverse(args.begin(), args.end());
+    app.parse(args);
+    return o;
+  };
+  const auto o = parse({"--grpc", "0.0.0.0:1", "--grpc-tls-cert", "c", "--grpc-tls-key", "k",
+                        "--grpc-token-file", "t"});
+  EXPECT_EQ(o.address, "0.0.0.0:1");
+  EXPECT_EQ(o.tls_cert, "c");
+  EXPECT_EQ(o.tls_key, "k");
+  EXPECT_EQ(o.token_file, "t");
+  EXPECT_THROW(parse({"--grpc", "x:1", "--grpc-tls-cert", "c"}), CLI::RequiresError);
+  EXPECT_THROW(parse({"--grpc", "x:1", "--grpc-tls-key", "k"}), CLI::RequiresError);
+  EXPECT_THROW(parse({"--grpc-token-file", "t"}), CLI::RequiresError);
+  EXPECT_TRUE(parse({}).empty());
+}
+
+}  // namespace
+}  // namespace rs4sim::app

@@ -1,0 +1,95 @@
+"""`rs4sim run --grpc 0.0.0.0:0` with TLS and a bearer token, driven by the Python harness through
+python3-grpcio (tools/python/rs4sim_harness.py): the test certificate of tests/rpc/data as the
+client's root, the token of its token.txt; the right token answers (a service, health,
+reflection), a wrong or missing one is UNAUTHENTICATED with its message, a plaintext client
+fails; then `--grpc 127.0.0.1:0` with only RS4SIM_GRPC_TOKEN (no TLS, local credentials).
+Usage: python_tls_test.py RS4SIM REPO   (exit 77 = skipped: no python3-grpcio)"""
+import os
+import signal
+import subprocess
+import sys
+
+try:
+    import grpc
+except ImportError:
+    print("python3-grpcio is not installed: skipped")
+    sys.exit(77)
+
+rs4sim, repo = sys.argv[1], sys.argv[2]
+sys.path.insert(0, os.path.join(repo, "tools", "python"))
+from rs4sim_harness import Rs4, open_channel  # noqa: E402
+
+data = os.path.join(repo, "tests", "rpc", "data")
+root = open(os.path.join(data, "localhost.crt"), "rb").read()
+token = open(os.path.join(data, "token.txt")).readline().strip()
+
+
+def serve(args, env=None):
+    proc = subprocess.Popen([rs4sim, "run", "--link", "memory"] + args, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, env=env)
+    line = proc.stdout.readline()
+    assert line.startswith("grpc: listening on "), (line, proc.stderr.read() if not line else "")
+    return proc, int(line.split(":")[-1])
+
+
+def stop(proc):
+    proc.send_signal(signal.SIGINT)
+    out, err = proc.communicate(timeout=20)
+    assert proc.returncode == 0, (proc.returncode, err)
+    return err
+
+
+def unauthenticated(call, message):
+    try:
+        call()
+    except grpc.RpcError as e:
+        assert e.code() == grpc.StatusCode.UNAUTHENTICATED, e.code()
+        assert message in e.details(), e.details()
+        return
+    raise AssertionError("answered without the right token")
+
+
+env = {k: v for k, v in os.environ.items() if k != "RS4SIM_GRPC_TOKEN"}
+proc, port = serve(["--grpc", "0.0.0.0:0", "--grpc-tls-cert", os.path.join(data, "localhost.crt"),
+                    "--grpc-tls-key", os.path.join(data, "localhost.key"),
+                    "--grpc-token-file", os.path.join(data, "token.txt")], env)
+try:
+    address = f"127.0.0.1:{port}"
+    rs4 = Rs4(address, root_certificates=root, token=token)
+    assert rs4.now() > 0
+    assert rs4.state().address == 4
+    health = rs4.channel.unary_unary("/grpc.health.v1.Health/Check")(b"")
+    assert health == b"\x08\x01", health.hex()
+    call = rs4.channel.stream_stream(
+        "/grpc.reflection.v1alpha.ServerReflection/ServerReflectionInfo")
+    assert b"rs4sim.v1.Device" in b"".join(call(iter([b"\x3a\x00"])))
+
+    unauthenticated(Rs4(address, root_certificates=root, token=token + "x").now,
+                    "wrong bearer token")
+    anonymous = open_channel(address, root_certificates=root)
+    unauthenticated(lambda: anonymous.unary_unary("/grpc.health.v1.Health/Check")(b""),
+                    "missing authorization metadata")
+    plain = grpc.insecure_channel(address)
+    try:
+        plain.unary_unary("/grpc.health.v1.Health/Check")(
+            b"", timeout=10, metadata=[("authorization", "Bearer " + token)])
+        raise AssertionError("a plaintext client was answered by the TLS server")
+    except grpc.RpcError as e:
+        assert e.code() == grpc.StatusCode.UNAVAILABLE, e.code()
+finally:
+    err = stop(proc)
+assert "rs4sim: grpc: TLS, bearer token" in err, err
+
+proc, port = serve(["--grpc", "127.0.0.1:0"], dict(env, RS4SIM_GRPC_TOKEN=token))
+try:
+    address = f"127.0.0.1:{port}"
+    assert Rs4(address, token=token).now() > 0
+    plain = grpc.insecure_channel(address)
+    ok = plain.unary_unary("/grpc.health.v1.Health/Check")(
+        b"", metadata=[("authorization", "Bearer " + token)])
+    assert ok == b"\x08\x01", ok.hex()
+    unauthenticated(lambda: plain.unary_unary("/grpc.health.v1.Health/Check")(b""),
+                    "missing authorization metadata")
+finally:
+    stop(proc)
+print("ok: TLS + bearer token through python3-grpcio")
