@@ -407,6 +407,37 @@ TEST_F(RpcGridScanTest, EveryFaultIsInjectedAndCleared) {
   EXPECT_FALSE(s.report_internal_failure());
 }
 
+// The power-up Reduced state (ID 0xB0, SeqCnt 1) of door 10 with element 3 interrupted:
+// payload 0A 01 [GridScan manual §9.2.4], CRC-32/MPEG-2 over SeqCnt, ID and payload, least
+// significant byte first [GridScan manual §9.2]; the CRCs were computed by that rule outside
+// the project. Each fault changes the frame as the controller must notice
+// [GridScan manual §10.2.2]; after ClearFault the frame is right again.
+TEST_F(RpcGridScanTest, FaultsReachThePowerUpStateFrame) {
+  ASSERT_TRUE(door(10).ok());
+  ASSERT_TRUE(block({3}).ok());
+  const auto frame = [](const Bytes& rest) {
+    Bytes f = {0x43, 0x45, 0x44, 0x45};  // sync "CEDE"
+    f.insert(f.end(), rest.begin(), rest.end());
+    return std::string(f.begin(), f.end());
+  };
+  const auto cycle = [this] {
+    executor_.run([this] { device_.power_off(); });
+    power_up();
+    return state().last_frame().frame();
+  };
+  EXPECT_EQ(cycle(), frame({0x01, 0xB0, 0x0A, 0x01, 0x36, 0x9C, 0xDB, 0xFF}));
+  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_BAD_CRC, true).ok());  // bit 0 of the CRC's first byte
+  EXPECT_EQ(cycle(), frame({0x01, 0xB0, 0x0A, 0x01, 0x37, 0x9C, 0xDB, 0xFF}));
+  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_BAD_CRC, false).ok());
+  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_WRONG_SEQ, true).ok());  // SeqCnt 2, not 1
+  EXPECT_EQ(cycle(), frame({0x02, 0xB0, 0x0A, 0x01, 0x58, 0x2E, 0xAC, 0x9F}));
+  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_WRONG_SEQ, false).ok());
+  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_DIRECTION_BIT, true).ok());  // ID 0x30
+  EXPECT_EQ(cycle(), frame({0x01, 0x30, 0x0A, 0x01, 0xB6, 0xDF, 0x8D, 0x13}));
+  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_DIRECTION_BIT, false).ok());
+  EXPECT_EQ(cycle(), frame({0x01, 0xB0, 0x0A, 0x01, 0x36, 0x9C, 0xDB, 0xFF}));
+}
+
 TEST_F(RpcGridScanTest, SilentFaultKeepsThePowerUpMessagesOffTheLine) {
   ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_SILENT, true).ok());
   power_up();
