@@ -8,6 +8,9 @@
 #include "app/device_options.h"
 #include "app/device_registry.h"
 #include "gridscan/device.h"
+#include "rpc/device_target.h"
+#include "rpc/line_services.h"
+#include "rpc/rs4_services.h"
 
 #include <chrono>
 #include <ostream>
@@ -53,7 +56,7 @@ std::string mode_name(gridscan::Configuration c) {
 class GridScanInstance final : public DeviceInstance {
  public:
   explicit GridScanInstance(const gridscan::Options& o) : options_(o), device_(o) {}
-  std::vector<stream::ByteDevice*> byte_devices() override { return {&device_}; }
+  std::vector<stream::ByteDevice*> byte_devices() override { return {&tap_}; }
   void start(dp::TimePoint now) override { device_.power_on(now); }
   [[nodiscard]] std::string describe() const override {
     const auto cycle_us =
@@ -75,9 +78,26 @@ class GridScanInstance final : public DeviceInstance {
         << std::endl;
   }
 
+  // rs4sim.v1.GridScan at address 0 (no bus address: the RS485 link is point-to-point,
+  // [GridScan manual §9]), and Observation for the event stream.
+  ServiceList services(const ServiceContext& c) override {
+    target_ = std::make_unique<rpc::LineDeviceTarget>(
+        "gridscan", rpc::gridscan_watcher(kAddress, device_), c.clock, c.io);
+    tap_.set_hub(target_->events(), kAddress);
+    const rpc::LineContext line{c.executor, c.clock, kAddress, tap_, target_->events()};
+    return {std::make_shared<rpc::GridScanService>(line, device_),
+            std::make_shared<rpc::ObservationService>(rpc::Rs4Context{*target_, c.executor})};
+  }
+  void stop_services() override {
+    if (target_) target_->stop();
+  }
+
  private:
+  static constexpr std::uint8_t kAddress = 0;
   gridscan::Options options_;
   gridscan::GridScanDevice device_;
+  rpc::TappedByteDevice tap_{device_};
+  std::unique_ptr<rpc::LineDeviceTarget> target_;
 };
 
 void validate(DeviceOptions& o) {

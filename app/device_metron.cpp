@@ -11,6 +11,9 @@
 #include "app/device_registry.h"
 #include "metron/metron_device.h"
 #include "metron/mode_spec.h"
+#include "rpc/device_target.h"
+#include "rpc/line_services.h"
+#include "rpc/rs4_services.h"
 
 #include <ostream>
 
@@ -63,7 +66,7 @@ class MetronInstance final : public DeviceInstance {
       device_.set_interrupted(beams);
     }
   }
-  std::vector<stream::ByteDevice*> byte_devices() override { return {&device_}; }
+  std::vector<stream::ByteDevice*> byte_devices() override { return {&tap_}; }
   [[nodiscard]] std::string describe() const override {
     return "METRON measuring light curtain (" + stream::to_string(device_.line_settings()) + ")";
   }
@@ -77,8 +80,25 @@ class MetronInstance final : public DeviceInstance {
         << ", sent " << c.bytes_sent << ", link errors " << c.link_errors << std::endl;
   }
 
+  // rs4sim.v1.Metron at the node number (node mode), else 0, and Observation for the events.
+  ServiceList services(const ServiceContext& c) override {
+    const auto& o = device_.options();
+    const std::uint8_t address = o.node_enabled ? o.node : 0;
+    target_ = std::make_unique<rpc::LineDeviceTarget>(
+        "metron", rpc::metron_watcher(address, device_), c.clock, c.io);
+    tap_.set_hub(target_->events(), address);
+    const rpc::LineContext line{c.executor, c.clock, address, tap_, target_->events()};
+    return {std::make_shared<rpc::MetronService>(line, device_),
+            std::make_shared<rpc::ObservationService>(rpc::Rs4Context{*target_, c.executor})};
+  }
+  void stop_services() override {
+    if (target_) target_->stop();
+  }
+
  private:
   metron::MetronDevice device_;
+  rpc::TappedByteDevice tap_{device_};
+  std::unique_ptr<rpc::LineDeviceTarget> target_;
 };
 
 void validate(DeviceOptions& o) {

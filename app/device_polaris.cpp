@@ -11,6 +11,9 @@
 #include "app/device_options.h"
 #include "app/device_registry.h"
 #include "polaris/device.h"
+#include "rpc/device_target.h"
+#include "rpc/line_services.h"
+#include "rpc/rs4_services.h"
 
 #include <ostream>
 #include <sstream>
@@ -76,7 +79,7 @@ class PolarisInstance final : public DeviceInstance {
   explicit PolarisInstance(const DeviceOptions& o) : device_(polaris_options(o)) {
     if (o.blocked) blocked_.assign(o.blocked->begin(), o.blocked->end());
   }
-  std::vector<stream::ByteDevice*> byte_devices() override { return {&device_}; }
+  std::vector<stream::ByteDevice*> byte_devices() override { return {&tap_}; }
   void start(dp::TimePoint now) override {
     std::vector<std::uint16_t> beams;
     for (const int b : blocked_) beams.push_back(static_cast<std::uint16_t>(b));
@@ -100,8 +103,24 @@ class PolarisInstance final : public DeviceInstance {
         << c.link_errors << std::endl;
   }
 
+  // rs4sim.v1.Polaris at its Modbus address, and Observation for the event stream.
+  ServiceList services(const ServiceContext& c) override {
+    const std::uint8_t address = device_.options().address;
+    target_ = std::make_unique<rpc::LineDeviceTarget>(
+        "polaris", rpc::polaris_watcher(address, device_), c.clock, c.io);
+    tap_.set_hub(target_->events(), address);
+    const rpc::LineContext line{c.executor, c.clock, address, tap_, target_->events()};
+    return {std::make_shared<rpc::PolarisService>(line, device_),
+            std::make_shared<rpc::ObservationService>(rpc::Rs4Context{*target_, c.executor})};
+  }
+  void stop_services() override {
+    if (target_) target_->stop();
+  }
+
  private:
   polaris::Device device_;
+  rpc::TappedByteDevice tap_{device_};
+  std::unique_ptr<rpc::LineDeviceTarget> target_;
   std::vector<int> blocked_;
 };
 

@@ -82,6 +82,14 @@ std::vector<std::uint16_t> Device::data_block() const { return data_words(option
 
 std::vector<Object> Device::objects() const { return find_objects(options_, interrupted_); }
 
+std::vector<std::uint16_t> Device::interrupted() const {
+  std::vector<std::uint16_t> beams;
+  for (std::size_t i = 0; i < interrupted_.size(); ++i) {
+    if (interrupted_[i] != 0) beams.push_back(static_cast<std::uint16_t>(i + 1U));
+  }
+  return beams;
+}
+
 bool Device::pn1() const {
   return std::any_of(interrupted_.begin(), interrupted_.end(),
                      [](std::uint8_t b) { return b != 0; });

@@ -71,6 +71,8 @@ class Device final : public stream::ByteDevice {
   [[nodiscard]] const Faults& faults() const { return faults_; }
   [[nodiscard]] std::vector<std::uint16_t> data_block() const;
   [[nodiscard]] std::vector<Object> objects() const;
+  // The interrupted physical beams, ascending.
+  [[nodiscard]] std::vector<std::uint16_t> interrupted() const;
   // PN1: an object is detected. PN2: two objects (object detection), or a hole seen for
   // pn2_filter scans (hole detection) [Polaris manual §3].
   [[nodiscard]] bool pn1() const;

@@ -37,6 +37,20 @@ void DeviceTarget::stop() {
   if (const auto timer = poll_timer_.lock()) timer->cancel();
 }
 
+LineDeviceTarget::LineDeviceTarget(std::string kind, std::unique_ptr<Watcher> watcher,
+                                   const dp::Clock& clock, boost::asio::io_context& io)
+    : kind_(std::move(kind)), address_(watcher->address()), clock_(clock) {
+  hub_->watch(std::move(watcher));
+  const auto timer = std::make_shared<boost::asio::steady_timer>(io);
+  poll_timer_ = timer;
+  poll_every(timer, hub_, clock, stopped_);
+}
+
+void LineDeviceTarget::stop() {
+  *stopped_ = true;
+  if (const auto timer = poll_timer_.lock()) timer->cancel();
+}
+
 void DeviceTarget::after(dp::Duration delay, std::function<void()> f) {
   auto timer = std::make_shared<boost::asio::steady_timer>(io_, delay);
   timer->async_wait([timer, f = std::move(f)](const boost::system::error_code& ec) {

@@ -11,6 +11,7 @@
 #include <boost/asio/steady_timer.hpp>
 
 #include <memory>
+#include <string>
 
 namespace rs4sim::rpc {
 
@@ -56,6 +57,35 @@ class DeviceTarget final : public Rs4Target {
   std::weak_ptr<boost::asio::steady_timer> poll_timer_;
   std::shared_ptr<bool> stopped_ = std::make_shared<bool>(false);
   std::function<void(bool, dp::TimePoint)> pc_adapter_hook_;
+};
+
+// Rs4Target for an RS-485 device's run (rs4sim run --device gridscan|metron|polaris --grpc):
+// no RS4, only the event source, so that Observation.StreamEvents carries the device's
+// changes (its watcher, rpc/items_watcher.h) with the same timer as DeviceTarget; the
+// Observation RPCs for an RS4 answer FAILED_PRECONDITION naming the device's own service.
+class LineDeviceTarget final : public Rs4Target {
+ public:
+  // `kind`: "gridscan", "metron", "polaris". Starts the poll timer as DeviceTarget does.
+  LineDeviceTarget(std::string kind, std::unique_ptr<Watcher> watcher, const dp::Clock& clock,
+                   boost::asio::io_context& io);
+  [[nodiscard]] std::vector<std::uint8_t> addresses() const override { return {address_}; }
+  rs4::device::Rs4Device* device(std::uint8_t) override { return nullptr; }
+  [[nodiscard]] dp::TimePoint now() const override { return clock_.now(); }
+  [[nodiscard]] bool simulated() const override { return false; }
+  bool run_until(const std::function<bool()>& done, dp::Duration) override { return done(); }
+  void after(dp::Duration, std::function<void()>) override {}
+  dp::link::MemoryBus* bus() override { return nullptr; }
+  EventHub* events() override { return hub_.get(); }
+  [[nodiscard]] std::string kind() const override { return kind_; }
+  void stop();
+
+ private:
+  std::string kind_;
+  std::uint8_t address_;
+  const dp::Clock& clock_;
+  std::shared_ptr<EventHub> hub_ = std::make_shared<EventHub>();
+  std::weak_ptr<boost::asio::steady_timer> poll_timer_;
+  std::shared_ptr<bool> stopped_ = std::make_shared<bool>(false);
 };
 
 }  // namespace rs4sim::rpc

@@ -1,5 +1,9 @@
 #pragma once
-// Watches one RS4 for the event stream (docs/rpc.md "Event stream"): on the loop thread,
+// A watched device of the event stream (docs/rpc.md "Event stream"): on the loop thread, it
+// reports what changed since its last poll, and its whole state for a new stream.
+// DeviceWatcher watches an RS4, ItemsWatcher (rpc/items_watcher.h) the RS-485 devices.
+//
+// Watches one RS4 for the event stream: on the loop thread,
 // after bus activity or a timer tick, compares what the device shows now with what it
 // showed last time and reports the differences as events. Reading the device's public
 // views is all it does: no core is changed, locked or called from another thread.
@@ -15,19 +19,30 @@
 
 namespace rs4sim::rpc {
 
-class DeviceWatcher {
+class Watcher {
  public:
   using Sink = std::function<void(v1::Event&&)>;
+  virtual ~Watcher() = default;
+  [[nodiscard]] virtual std::uint8_t address() const noexcept = 0;
+  // Reports every change since the last call to `sink`.
+  virtual void poll(std::int64_t now_ns, const Sink& sink) = 0;
+  // Reports the state as of the last poll() whole (StateChange with from = "", and for the
+  // RS4 the alarm counts and the diagnosis) to `sink`: a new stream's first events.
+  virtual void snapshot(std::int64_t now_ns, const Sink& sink) const = 0;
 
+ protected:
+  Watcher() = default;
+  Watcher(const Watcher&) = default;
+  Watcher& operator=(const Watcher&) = default;
+};
+
+class DeviceWatcher final : public Watcher {
+ public:
   DeviceWatcher(std::uint8_t address, const rs4::device::Rs4Device& device)
       : address_(address), device_(device) {}
-  [[nodiscard]] std::uint8_t address() const noexcept { return address_; }
-
-  // Reports every change since the last call to `sink`.
-  void poll(std::int64_t now_ns, const Sink& sink);
-  // Reports the state as of the last poll() whole (StateChange with from = "", the alarm
-  // counts, the diagnosis) to `sink`: a new stream's first events.
-  void snapshot(std::int64_t now_ns, const Sink& sink) const;
+  [[nodiscard]] std::uint8_t address() const noexcept override { return address_; }
+  void poll(std::int64_t now_ns, const Sink& sink) override;
+  void snapshot(std::int64_t now_ns, const Sink& sink) const override;
 
  private:
   static constexpr std::size_t kItems = 10;

@@ -9,18 +9,20 @@ namespace rs4sim::rpc {
 EventHub::~EventHub() { close(); }
 
 void EventHub::watch(std::uint8_t address, const rs4::device::Rs4Device& device) {
-  watchers_.emplace_back(address, device);
+  watchers_.push_back(std::make_unique<DeviceWatcher>(address, device));
 }
+
+void EventHub::watch(std::unique_ptr<Watcher> watcher) { watchers_.push_back(std::move(watcher)); }
 
 bool EventHub::watches(std::uint8_t address) const {
   return std::any_of(watchers_.begin(), watchers_.end(),
-                     [address](const DeviceWatcher& w) { return w.address() == address; });
+                     [address](const auto& w) { return w->address() == address; });
 }
 
 void EventHub::poll(dp::TimePoint now) {
   if (streams_.load() == 0) return;  // nobody listens: the next subscribe() looks afresh
   const auto ns = to_ns(now);
-  for (auto& w : watchers_) w.poll(ns, [this](v1::Event&& e) { publish(std::move(e), false); });
+  for (auto& w : watchers_) w->poll(ns, [this](v1::Event&& e) { publish(std::move(e), false); });
 }
 
 void EventHub::telegram(std::uint8_t address, v1::Direction direction,
@@ -38,10 +40,10 @@ void EventHub::telegram(std::uint8_t address, v1::Direction direction,
 void EventHub::subscribe(const std::shared_ptr<EventQueue>& queue, dp::TimePoint now) {
   const auto ns = to_ns(now);
   // Bring the look up to date for the streams already there, then snapshot it for this one.
-  for (auto& w : watchers_) w.poll(ns, [this](v1::Event&& e) { publish(std::move(e), false); });
+  for (auto& w : watchers_) w->poll(ns, [this](v1::Event&& e) { publish(std::move(e), false); });
   for (const auto& w : watchers_) {
-    if (!queue->watches(w.address())) continue;
-    w.snapshot(ns, [&queue](v1::Event&& e) { queue->push(std::move(e)); });
+    if (!queue->watches(w->address())) continue;
+    w->snapshot(ns, [&queue](v1::Event&& e) { queue->push(std::move(e)); });
   }
   const std::lock_guard lock(mutex_);
   queues_.push_back(queue);

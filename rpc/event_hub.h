@@ -27,6 +27,7 @@ class EventHub {
 
   // Setup, before the run: a device to watch.
   void watch(std::uint8_t address, const rs4::device::Rs4Device& device);
+  void watch(std::unique_ptr<Watcher> watcher);
   [[nodiscard]] bool watches(std::uint8_t address) const;
 
   // ---- loop thread ------------------------------------------------------------------------
@@ -46,7 +47,7 @@ class EventHub {
  private:
   void publish(v1::Event&& e, bool is_telegram);
 
-  std::vector<DeviceWatcher> watchers_;
+  std::vector<std::unique_ptr<Watcher>> watchers_;
   std::mutex mutex_;  // guards queues_ (unsubscribe comes from a stream's thread)
   std::vector<std::shared_ptr<EventQueue>> queues_;
   std::atomic<int> telegram_streams_{0};

@@ -24,10 +24,10 @@ grpc::Status check(const v1::StreamEventsRequest& in) {
                                 " (0 = " + std::to_string(EventQueue::kDefaultCapacity) + ")");
   }
   for (int i = 0; i < in.addresses_size(); ++i) {
-    if (in.addresses(i) > 126) {
-      return invalid_argument(
-          "addresses[" + std::to_string(i) + "]",
-          "station address " + std::to_string(in.addresses(i)) + " outside 0..126");
+    if (in.addresses(i) > 255) {
+      return invalid_argument("addresses[" + std::to_string(i) + "]",
+                              "address " + std::to_string(in.addresses(i)) +
+                                  " outside 0..255 (RS4: 0..126, Polaris: 1..247)");
     }
   }
   return grpc::Status::OK;
@@ -50,7 +50,7 @@ grpc::Status ObservationService::StreamEvents(grpc::ServerContext* context,
   grpc::Status status;
   c_.executor.run([&] {
     for (const auto a : addresses) {
-      if (c_.target.device(a) == nullptr) {
+      if (!hub->watches(a)) {
         status = unknown_station(c_.target, a);
         return;
       }

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace rs4sim::rpc {
@@ -32,6 +33,8 @@ class Rs4Target {
   virtual dp::link::MemoryBus* bus() = 0;
   // Runs `f` on the loop after `delay` (simulated runs: advances time by `delay` first).
   virtual void after(dp::Duration delay, std::function<void()> f) = 0;
+  // What the run's devices are: "rs4", or the RS-485 device of a LineDeviceTarget.
+  [[nodiscard]] virtual std::string kind() const { return "rs4"; }
   // The source of Observation.StreamEvents (rpc/event_hub.h); nullptr = no event stream.
   virtual EventHub* events() { return nullptr; }
   // The reed contact of the PC adapter (Device.SetPcAdapter). A process that serves the RS4's

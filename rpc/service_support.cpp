@@ -3,6 +3,7 @@
 #include "rpc/event_hub.h"
 #include "rpc/status.h"
 
+#include <algorithm>
 #include <string>
 
 namespace rs4sim::rpc {
@@ -17,6 +18,17 @@ std::string station_list(const Rs4Target& target) {
 }  // namespace
 
 grpc::Status unknown_station(const Rs4Target& target, std::uint32_t address) {
+  if (target.kind() != "rs4") {
+    const auto kind = target.kind();
+    const auto here = target.addresses();
+    if (std::find(here.begin(), here.end(), address) == here.end()) {
+      return not_found("no " + kind + " at address " + std::to_string(address) + " (this run's " +
+                       kind + ": " + station_list(target) + ")");
+    }
+    return failed_precondition("DEVICE_KIND", "address " + std::to_string(address),
+                               "this run serves a " + kind + ", not an RS4 (stations: " +
+                                   station_list(target) + "); use its own service");
+  }
   return not_found("no RS4 at station " + std::to_string(address) +
                    " (stations: " + station_list(target) + ")");
 }

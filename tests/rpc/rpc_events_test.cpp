@@ -152,7 +152,7 @@ TEST_F(RpcEventsTest, BadInputGetsASpecificStatus) {
   EXPECT_EQ(bad_field(s), "queue_capacity");
   req.set_queue_capacity(0);
   req.add_addresses(4);
-  req.add_addresses(200);
+  req.add_addresses(300);
   s = stream_status(req);
   EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
   EXPECT_EQ(bad_field(s), "addresses[1]");

@@ -1,6 +1,6 @@
 """A Python test harness for a running rs4sim (docs/rpc.md).
 
-    from rs4sim_harness import Rs4
+    from rs4sim_harness import Rs4, GridScan, Metron, Polaris
     rs4 = Rs4("127.0.0.1:50051", station=4)
     rs4.boot()                       # data exchange, RS4 measuring, restart pulse, OSSD on
     obstacle = rs4.violate_field()   # the protective field
@@ -30,6 +30,7 @@ _PROTOS = [
     "rs4sim/v1/rs4.proto",
     "rs4sim/v1/archive_service.proto",
     "rs4sim/v1/proxy_service.proto",
+    "rs4sim/v1/devices.proto",
     "google/rpc/status.proto",
     "google/rpc/error_details.proto",
 ]
@@ -58,6 +59,8 @@ from rs4sim.v1 import archive_service_pb2 as archive_pb  # noqa: E402,F401
 from rs4sim.v1 import archive_service_pb2_grpc as archive_grpc  # noqa: E402
 from rs4sim.v1 import proxy_service_pb2 as proxy_pb  # noqa: E402
 from rs4sim.v1 import proxy_service_pb2_grpc as proxy_grpc  # noqa: E402
+from rs4sim.v1 import devices_pb2 as dev_pb  # noqa: E402
+from rs4sim.v1 import devices_pb2_grpc as dev_grpc  # noqa: E402
 from google.rpc import status_pb2, error_details_pb2  # noqa: E402
 
 
@@ -236,3 +239,91 @@ class Master:
     def history(self, address, bus="default"):
         """The archive's versions of one RS4, newest first."""
         return self.archive.History(archive_pb.StationKey(bus=bus, address=address)).versions
+
+
+class _LineDevice:
+    """One RS-485 device of a running `rs4sim run --device gridscan|metron|polaris --grpc`
+    (devices.proto), by its address on its line: GridScan 0, METRON its node (0 without
+    node mode), Polaris its Modbus address."""
+
+    _stub = None      # the generated stub class
+    _fault_enum = ""  # e.g. "POLARIS_FAULT_"
+    _fault_request = None
+    _delay_field = ""
+
+    def __init__(self, address, device_address, timeout=10.0):
+        self.channel = grpc.insecure_channel(address)
+        grpc.channel_ready_future(self.channel).result(timeout=timeout)
+        self.address = device_address
+        self.service = self._stub(self.channel)
+        self.observation = pb_grpc.ObservationStub(self.channel)
+
+    def state(self):
+        return self.service.GetState(dev_pb.LineDeviceRequest(address=self.address))
+
+    def set_blocked(self, numbers):
+        """The interrupted elements/beams (1-based); all others free."""
+        self.service.SetBlocked(dev_pb.SetBlockedRequest(address=self.address,
+                                                         blocked=list(numbers)))
+
+    def _fault(self, call, name, delay_ms):
+        fields = {"address": self.address,
+                  "fault": getattr(dev_pb, self._fault_enum + name)}
+        if delay_ms:
+            fields[self._delay_field] = delay_ms
+        call(self._fault_request(**fields))
+
+    def inject_fault(self, name, delay_ms=0):
+        self._fault(self.service.InjectFault, name, delay_ms)
+
+    def clear_fault(self, name):
+        self._fault(self.service.ClearFault, name, 0)
+
+    def events(self, telegrams=False, queue_capacity=0):
+        """The shared event stream of this device (see Rs4.events): StateChange items."""
+        return _Subscribed(self.observation.StreamEvents(pb.StreamEventsRequest(
+            addresses=[self.address], telegrams=telegrams, queue_capacity=queue_capacity)))
+
+
+class GridScan(_LineDevice):
+    """faults: LATE_ANSWER (delay_ms), WRONG_SEQ, DIRECTION_BIT, BAD_CRC, INTERNAL_FAILURE,
+    SILENT, CONFIG_NOT_SET."""
+    _stub = dev_grpc.GridScanStub
+    _fault_enum = "GRID_SCAN_FAULT_"
+    _fault_request = dev_pb.GridScanFaultRequest
+    _delay_field = "late_ms"
+
+    def __init__(self, address, device_address=0, timeout=10.0):
+        super().__init__(address, device_address, timeout)
+
+    def set_door(self, position):
+        self.service.SetDoor(dev_pb.SetDoorRequest(address=self.address, position=position))
+
+    def set_soiling(self, level):
+        self.service.SetSoiling(dev_pb.SetSoilingRequest(address=self.address, level=level))
+
+
+class Metron(_LineDevice):
+    """faults: SILENT, LATE (delay_ms), BAD_CHECKSUM, WRONG_NODE, TRUNCATE."""
+    _stub = dev_grpc.MetronStub
+    _fault_enum = "METRON_FAULT_"
+    _fault_request = dev_pb.MetronFaultRequest
+    _delay_field = "delay_ms"
+
+    def __init__(self, address, device_address=0, timeout=10.0):
+        super().__init__(address, device_address, timeout)
+
+    def set_synchronised(self, synchronised):
+        self.service.SetSynchronised(dev_pb.SetSynchronisedRequest(
+            address=self.address, synchronised=synchronised))
+
+
+class Polaris(_LineDevice):
+    """faults: BAD_CRC, NO_ANSWER, LATE (delay_ms)."""
+    _stub = dev_grpc.PolarisStub
+    _fault_enum = "POLARIS_FAULT_"
+    _fault_request = dev_pb.PolarisFaultRequest
+    _delay_field = "late_ms"
+
+    def __init__(self, address, device_address=1, timeout=10.0):
+        super().__init__(address, device_address, timeout)

@@ -1,0 +1,625 @@
+#include "rpc/line_services.h"
+
+#include "rpc/service_support.h"
+#include "rpc/status.h"
+
+#include <chrono>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace rs4sim::rpc {
+namespace {
+
+using LineFn = std::function<grpc::Status(dp::TimePoint)>;
+
+constexpr std::uint32_t kMaxFaultDelayMs = 10'000;
+
+// Checks the address (INVALID_ARGUMENT beyond a byte, NOT_FOUND for another device), then
+// runs `fn` on the loop; after a change the link and the event hub look at the device again.
+grpc::Status on_line(const LineContext& c, const std::string& kind, std::uint32_t address,
+                     const LineFn& fn, bool changes) {
+  if (address > 255) {
+    return invalid_argument("address", std::to_string(address) + " is not a one-byte address");
+  }
+  if (address != c.address) {
+    return not_found("no " + kind + " at address " + std::to_string(address) + " (this run's " +
+                     kind + " answers to " + std::to_string(c.address) + ")");
+  }
+  grpc::Status result;
+  c.executor.run([&] {
+    const auto now = c.clock.now();
+    result = fn(now);
+    if (!changes) return;
+    c.tap.poke();
+    if (c.hub != nullptr) c.hub->poll(now);
+  });
+  return result;
+}
+
+// SetBlockedRequest.blocked as numbers 1..count, or the INVALID_ARGUMENT naming the entry.
+std::variant<std::vector<std::uint16_t>, grpc::Status> numbers(const v1::SetBlockedRequest& in,
+                                                               unsigned count, const char* what) {
+  std::vector<std::uint16_t> out;
+  for (int i = 0; i < in.blocked_size(); ++i) {
+    const auto n = in.blocked(i);
+    if (n == 0 || n > count) {
+      return invalid_argument(
+          "blocked[" + std::to_string(i) + "]",
+          std::string(what) + " " + std::to_string(n) + " outside 1.." + std::to_string(count));
+    }
+    out.push_back(static_cast<std::uint16_t>(n));
+  }
+  return out;
+}
+
+grpc::Status check_delay(std::uint32_t ms, const char* field) {
+  if (ms == 0 || ms > kMaxFaultDelayMs) {
+    return invalid_argument(field, std::to_string(ms) + " ms outside 1..10000");
+  }
+  return grpc::Status::OK;
+}
+
+// "9-13,25-34" (the --blocked syntax), "none" when empty.
+std::string ranges(const std::vector<std::uint16_t>& sorted) {
+  std::string out;
+  for (std::size_t i = 0; i < sorted.size();) {
+    std::size_t j = i;
+    while (j + 1 < sorted.size() && sorted[j + 1] == sorted[j] + 1) ++j;
+    out += (out.empty() ? "" : ",") + std::to_string(sorted[i]);
+    if (j > i) out += "-" + std::to_string(sorted[j]);
+    i = j + 1;
+  }
+  return out.empty() ? "none" : out;
+}
+
+const char* on_off(bool b) { return b ? "on" : "off"; }
+
+void set_last_frame(const TappedByteDevice& tap, v1::LastFrame& out) {
+  const auto& f = tap.last_frame();
+  out.set_frame(std::string(f.begin(), f.end()));
+  if (const auto at = tap.last_sent()) out.set_sent_ns(to_ns(*at));
+}
+
+std::uint32_t whole_ms(stream::Duration d) {
+  return static_cast<std::uint32_t>(
+      std::chrono::duration_cast<std::chrono::milliseconds>(d).count());
+}
+
+// ---- GridScan ------------------------------------------------------------------------------
+
+const char* power_name(gridscan::PowerState p) {
+  switch (p) {
+    case gridscan::PowerState::kOff: return "off";
+    case gridscan::PowerState::kStarting: return "starting";
+    case gridscan::PowerState::kReady: return "ready";
+  }
+  return "?";
+}
+
+const char* mode_name(gridscan::CommMode m) {
+  switch (m) {
+    case gridscan::CommMode::kPolling: return "polling";
+    case gridscan::CommMode::kFullStreaming: return "full-streaming";
+    case gridscan::CommMode::kReducedStreaming: return "reduced-streaming";
+    case gridscan::CommMode::kStandBy: return "stand-by";
+  }
+  return "?";
+}
+
+const char* configuration_name(gridscan::Configuration c) {
+  return c == gridscan::Configuration::kStatic ? "static" : "blanking";
+}
+
+const char* led_name(gridscan::Led l) {
+  switch (l) {
+    case gridscan::Led::kOff: return "off";
+    case gridscan::Led::kOn: return "on";
+    case gridscan::Led::kBlinkSlow: return "blink-slow";
+    case gridscan::Led::kBlinkFast: return "blink-fast";
+    case gridscan::Led::kBlink1Hz: return "blink-1hz";
+  }
+  return "?";
+}
+
+std::vector<std::uint16_t> elements_of(std::uint64_t mask, unsigned count) {
+  std::vector<std::uint16_t> out;
+  for (unsigned e = 1; e <= count && e <= 64; ++e) {
+    if ((mask >> (e - 1U)) & 1U) out.push_back(static_cast<std::uint16_t>(e));
+  }
+  return out;
+}
+
+std::vector<std::string> gridscan_faults(const gridscan::GridScanDevice& d) {
+  const auto& f = d.faults();
+  std::vector<std::string> out;
+  if (f.late_by.count() > 0) out.emplace_back("late-answer");
+  if (f.wrong_seq) out.emplace_back("wrong-seq");
+  if (f.direction_bit) out.emplace_back("direction-bit");
+  if (f.bad_crc) out.emplace_back("bad-crc");
+  if (d.scene().internal_failure) out.emplace_back("internal-failure");
+  if (f.silent) out.emplace_back("silent");
+  if (f.config_not_set) out.emplace_back("config-not-set");
+  return out;
+}
+
+// ---- METRON --------------------------------------------------------------------------------
+
+const char* ossd_function_name(metron::OssdFunction f) {
+  switch (f) {
+    case metron::OssdFunction::kEnabled: return "enabled";
+    case metron::OssdFunction::kDisabled: return "disabled";
+    case metron::OssdFunction::kStandby: return "standby";
+  }
+  return "?";
+}
+
+std::vector<std::uint16_t> metron_blocked(const metron::Scene& s) {
+  std::vector<std::uint16_t> out;
+  for (std::uint16_t b = 1; b <= s.beams(); ++b) {
+    if (s.interrupted(b)) out.push_back(b);
+  }
+  return out;
+}
+
+std::vector<std::string> metron_faults(const metron::Faults& f) {
+  std::vector<std::string> out;
+  if (f.silent) out.emplace_back("silent");
+  if (f.extra_delay.count() > 0) out.emplace_back("late");
+  if (f.bad_checksum) out.emplace_back("bad-checksum");
+  if (f.wrong_node) out.emplace_back("wrong-node");
+  if (f.truncate) out.emplace_back("truncate");
+  return out;
+}
+
+// ---- Polaris -------------------------------------------------------------------------------
+
+std::vector<std::string> polaris_faults(const polaris::Faults& f) {
+  std::vector<std::string> out;
+  if (f.bad_crc) out.emplace_back("bad-crc");
+  if (f.no_answer) out.emplace_back("no-answer");
+  if (f.late_by.count() > 0) out.emplace_back("late");
+  return out;
+}
+
+}  // namespace
+
+// ==== GridScan ==============================================================================
+
+grpc::Status GridScanService::GetState(grpc::ServerContext*, const v1::LineDeviceRequest* in,
+                                       v1::GridScanState* out) {
+  return on_line(
+      c_, "GridScan", in->address(),
+      [&](dp::TimePoint now) {
+        out->set_address(c_.address);
+        out->set_power(power_name(d_.power()));
+        out->set_mode(mode_name(d_.mode()));
+        out->set_configuration(configuration_name(d_.configuration()));
+        out->set_elements(d_.elements());
+        out->set_alignment_active(d_.alignment_active());
+        const auto leds = d_.leds(now);
+        out->set_led_rx_green(led_name(leds.rx_green));
+        out->set_led_rx_red(led_name(leds.rx_red));
+        out->set_led_tx_green(led_name(leds.tx_green));
+        const auto& scene = d_.scene();
+        out->set_door_position(scene.door_position);
+        for (const auto e : elements_of(scene.blocked, d_.elements())) out->add_blocked(e);
+        out->set_soiling(scene.soiling);
+        const auto report = d_.current_report();
+        out->set_report_door_position(report.door_position);
+        out->set_report_interrupted(report.interrupted);
+        out->set_report_internal_failure(report.internal_failure);
+        out->set_report_maintenance(report.maintenance);
+        for (const auto e : elements_of(report.elements, d_.elements())) {
+          out->add_report_interrupted_elements(e);
+        }
+        for (const auto& f : gridscan_faults(d_)) out->add_faults_present(f);
+        out->set_late_ms(whole_ms(d_.faults().late_by));
+        const auto& k = d_.counters();
+        auto* o = out->mutable_counters();
+        o->set_frames(k.frames);
+        o->set_answered(k.answered);
+        o->set_comm_tests(k.comm_tests);
+        o->set_streamed(k.streamed);
+        o->set_dropped(k.dropped());
+        o->set_truncated(k.truncated);
+        o->set_oversized(k.oversized);
+        o->set_bad_sync(k.bad_sync);
+        o->set_bad_crc(k.bad_crc);
+        o->set_bad_seq(k.bad_seq);
+        o->set_unknown_id(k.unknown_id);
+        o->set_direction_bit(k.direction_bit);
+        o->set_busy(k.busy);
+        o->set_not_ready(k.not_ready);
+        o->set_restarts(k.restarts);
+        set_last_frame(c_.tap, *out->mutable_last_frame());
+        out->set_now_ns(to_ns(now));
+        return grpc::Status::OK;
+      },
+      false);
+}
+
+grpc::Status GridScanService::SetDoor(grpc::ServerContext*, const v1::SetDoorRequest* in,
+                                      v1::Empty*) {
+  return on_line(
+      c_, "GridScan", in->address(),
+      [&](dp::TimePoint) {
+        if (in->position() > d_.elements()) {
+          return invalid_argument("position",
+                                  std::to_string(in->position()) + " outside 0.." +
+                                      std::to_string(d_.elements()) +
+                                      " (elements below the door edge; elements = open)");
+        }
+        d_.set_door_position(in->position());
+        return grpc::Status::OK;
+      },
+      true);
+}
+
+grpc::Status GridScanService::SetBlocked(grpc::ServerContext*, const v1::SetBlockedRequest* in,
+                                         v1::Empty*) {
+  return on_line(
+      c_, "GridScan", in->address(),
+      [&](dp::TimePoint) {
+        auto elements = numbers(*in, d_.elements(), "element");
+        if (auto* bad = std::get_if<grpc::Status>(&elements)) return *bad;
+        std::uint64_t mask = 0;
+        for (const auto e : std::get<std::vector<std::uint16_t>>(elements)) {
+          mask |= std::uint64_t{1} << (e - 1U);
+        }
+        d_.set_blocked(mask);
+        return grpc::Status::OK;
+      },
+      true);
+}
+
+grpc::Status GridScanService::SetSoiling(grpc::ServerContext*, const v1::SetSoilingRequest* in,
+                                         v1::Empty*) {
+  if (in->level() > 3) {
+    return invalid_argument(
+        "level",
+        std::to_string(in->level()) + " outside 0..3 (clean .. heavy soiling, state bits 14..15)");
+  }
+  return on_line(
+      c_, "GridScan", in->address(),
+      [&](dp::TimePoint) {
+        d_.set_soiling(static_cast<std::uint8_t>(in->level()));
+        return grpc::Status::OK;
+      },
+      true);
+}
+
+grpc::Status GridScanService::fault(const v1::GridScanFaultRequest& in, bool inject) {
+  const auto which = in.fault();
+  if (which == v1::GRID_SCAN_FAULT_UNSPECIFIED || !v1::GridScanFault_IsValid(which)) {
+    return invalid_argument("fault", "a GRID_SCAN_FAULT_* value is required");
+  }
+  if (inject && which == v1::GRID_SCAN_FAULT_LATE_ANSWER) {
+    if (auto bad = check_delay(in.late_ms(), "late_ms"); !bad.ok()) return bad;
+  }
+  return on_line(
+      c_, "GridScan", in.address(),
+      [&](dp::TimePoint) {
+        if (which == v1::GRID_SCAN_FAULT_INTERNAL_FAILURE) {
+          d_.set_internal_failure(inject);
+          return grpc::Status::OK;
+        }
+        auto f = d_.faults();
+        switch (which) {
+          case v1::GRID_SCAN_FAULT_LATE_ANSWER:
+            f.late_by = inject ? stream::Duration(std::chrono::milliseconds(in.late_ms()))
+                               : stream::Duration{};
+            break;
+          case v1::GRID_SCAN_FAULT_WRONG_SEQ: f.wrong_seq = inject; break;
+          case v1::GRID_SCAN_FAULT_DIRECTION_BIT: f.direction_bit = inject; break;
+          case v1::GRID_SCAN_FAULT_BAD_CRC: f.bad_crc = inject; break;
+          case v1::GRID_SCAN_FAULT_SILENT: f.silent = inject; break;
+          case v1::GRID_SCAN_FAULT_CONFIG_NOT_SET: f.config_not_set = inject; break;
+          default: break;
+        }
+        d_.set_faults(f);
+        return grpc::Status::OK;
+      },
+      true);
+}
+
+grpc::Status GridScanService::InjectFault(grpc::ServerContext*, const v1::GridScanFaultRequest* in,
+                                          v1::Empty*) {
+  return fault(*in, true);
+}
+
+grpc::Status GridScanService::ClearFault(grpc::ServerContext*, const v1::GridScanFaultRequest* in,
+                                         v1::Empty*) {
+  return fault(*in, false);
+}
+
+// ==== METRON ================================================================================
+
+namespace {
+
+grpc::Status check_metron_address(std::uint32_t address) {
+  if (address == metron::kBroadcast) {
+    return invalid_argument("address",
+                            "255 is the broadcast address [METRON manual \"With node\"]; the "
+                            "curtain's is its node (0..254), or 0 without node mode");
+  }
+  return grpc::Status::OK;
+}
+
+}  // namespace
+
+grpc::Status MetronService::GetState(grpc::ServerContext*, const v1::LineDeviceRequest* in,
+                                     v1::MetronState* out) {
+  if (auto bad = check_metron_address(in->address()); !bad.ok()) return bad;
+  return on_line(
+      c_, "METRON", in->address(),
+      [&](dp::TimePoint now) {
+        const auto& o = d_.options();
+        const auto& scene = d_.scene();
+        out->set_address(c_.address);
+        out->set_line_mode(std::string(metron::to_string(o.line_mode)));
+        out->set_node_enabled(o.node_enabled);
+        out->set_beams(scene.beams());
+        for (const auto b : metron_blocked(scene)) out->add_blocked(b);
+        out->set_synchronised(scene.synchronised());
+        out->set_input_high(scene.input_high());
+        out->set_ossd(d_.ossd_on());
+        out->set_ossd_function(ossd_function_name(d_.slave_state().ossd));
+        out->set_first_interrupted(scene.measure(metron::Measurement::kFirstInterrupted));
+        out->set_last_interrupted(scene.measure(metron::Measurement::kLastInterrupted));
+        out->set_interrupted_count(scene.measure(metron::Measurement::kInterruptedCount));
+        for (const auto& f : metron_faults(d_.faults())) out->add_faults_present(f);
+        out->set_delay_ms(whole_ms(d_.faults().extra_delay));
+        const auto k = d_.counters();
+        auto* c = out->mutable_counters();
+        c->set_messages(k.messages);
+        c->set_executed(k.executed);
+        c->set_frames_sent(k.frames_sent);
+        for (const auto e : k.errors) c->add_errors(e);
+        c->set_parity_rejected(k.parity_rejected);
+        c->set_not_for_us(k.not_for_us);
+        c->set_broadcast_ignored(k.broadcast_ignored);
+        c->set_truncated(k.truncated);
+        c->set_too_long(k.too_long);
+        c->set_resets(k.resets);
+        c->set_reports(k.reports);
+        c->set_reports_dropped(k.reports_dropped);
+        c->set_suppressed(k.suppressed);
+        set_last_frame(c_.tap, *out->mutable_last_frame());
+        out->set_now_ns(to_ns(now));
+        return grpc::Status::OK;
+      },
+      false);
+}
+
+grpc::Status MetronService::SetBlocked(grpc::ServerContext*, const v1::SetBlockedRequest* in,
+                                       v1::Empty*) {
+  if (auto bad = check_metron_address(in->address()); !bad.ok()) return bad;
+  return on_line(
+      c_, "METRON", in->address(),
+      [&](dp::TimePoint) {
+        auto beams = numbers(*in, d_.scene().beams(), "beam");
+        if (auto* bad = std::get_if<grpc::Status>(&beams)) return *bad;
+        d_.set_interrupted(std::get<std::vector<std::uint16_t>>(beams));
+        return grpc::Status::OK;
+      },
+      true);
+}
+
+grpc::Status MetronService::SetSynchronised(grpc::ServerContext*,
+                                            const v1::SetSynchronisedRequest* in, v1::Empty*) {
+  if (auto bad = check_metron_address(in->address()); !bad.ok()) return bad;
+  return on_line(
+      c_, "METRON", in->address(),
+      [&](dp::TimePoint) {
+        d_.set_synchronised(in->synchronised());
+        return grpc::Status::OK;
+      },
+      true);
+}
+
+grpc::Status MetronService::fault(const v1::MetronFaultRequest& in, bool inject) {
+  if (auto bad = check_metron_address(in.address()); !bad.ok()) return bad;
+  const auto which = in.fault();
+  if (which == v1::METRON_FAULT_UNSPECIFIED || !v1::MetronFault_IsValid(which)) {
+    return invalid_argument("fault", "a METRON_FAULT_* value is required");
+  }
+  if (inject && which == v1::METRON_FAULT_LATE) {
+    if (auto bad = check_delay(in.delay_ms(), "delay_ms"); !bad.ok()) return bad;
+  }
+  return on_line(
+      c_, "METRON", in.address(),
+      [&](dp::TimePoint) {
+        auto& f = d_.faults();
+        switch (which) {
+          case v1::METRON_FAULT_SILENT: f.silent = inject; break;
+          case v1::METRON_FAULT_LATE:
+            f.extra_delay = inject ? stream::Duration(std::chrono::milliseconds(in.delay_ms()))
+                                   : stream::Duration{};
+            break;
+          case v1::METRON_FAULT_BAD_CHECKSUM: f.bad_checksum = inject; break;
+          case v1::METRON_FAULT_WRONG_NODE:
+            if (inject && !d_.options().node_enabled) {
+              return failed_precondition("MODE", "METRON " + std::to_string(c_.address),
+                                         "a wrong node needs node mode (rs4sim run --node N)");
+            }
+            f.wrong_node = inject;
+            break;
+          case v1::METRON_FAULT_TRUNCATE: f.truncate = inject; break;
+          default: break;
+        }
+        return grpc::Status::OK;
+      },
+      true);
+}
+
+grpc::Status MetronService::InjectFault(grpc::ServerContext*, const v1::MetronFaultRequest* in,
+                                        v1::Empty*) {
+  return fault(*in, true);
+}
+
+grpc::Status MetronService::ClearFault(grpc::ServerContext*, const v1::MetronFaultRequest* in,
+                                       v1::Empty*) {
+  return fault(*in, false);
+}
+
+// ==== Polaris ===============================================================================
+
+namespace {
+
+grpc::Status check_modbus_address(std::uint32_t address) {
+  if (address == 0 || address > 247) {
+    return invalid_argument("address", std::to_string(address) +
+                                           " outside 1..247, the Modbus slave addresses "
+                                           "[Modbus serial line V1.02 §2.2]");
+  }
+  return grpc::Status::OK;
+}
+
+}  // namespace
+
+grpc::Status PolarisService::GetState(grpc::ServerContext*, const v1::LineDeviceRequest* in,
+                                      v1::PolarisState* out) {
+  if (auto bad = check_modbus_address(in->address()); !bad.ok()) return bad;
+  return on_line(
+      c_, "Polaris", in->address(),
+      [&](dp::TimePoint now) {
+        const auto& o = d_.options();
+        out->set_address(c_.address);
+        out->set_family(std::string(polaris::to_string(o.family)));
+        out->set_beams(o.beams);
+        out->set_data_mode(std::string(polaris::to_string(o.mode)));
+        out->set_role(o.role == polaris::Role::kSlave ? "slave" : "master");
+        for (const auto b : d_.interrupted()) out->add_blocked(b);
+        out->set_pn1(d_.pn1());
+        out->set_pn2(d_.pn2(now));
+        out->set_start_address(polaris::start_address(o));
+        for (const auto w : d_.data_block()) out->add_data_block(w);
+        for (const auto& obj : d_.objects()) {
+          auto* p = out->add_objects();
+          p->set_first(obj.first);
+          p->set_last(obj.last);
+        }
+        for (const auto& f : polaris_faults(d_.faults())) out->add_faults_present(f);
+        out->set_late_ms(whole_ms(d_.faults().late_by));
+        const auto& k = d_.counters();
+        auto* c = out->mutable_counters();
+        c->set_requests(k.requests);
+        c->set_crc_errors(k.crc_errors);
+        c->set_too_short(k.too_short);
+        c->set_oversized(k.oversized);
+        c->set_broadcasts(k.broadcasts);
+        c->set_foreign_address(k.foreign_address);
+        c->set_bad_function(k.bad_function);
+        c->set_bad_request(k.bad_request);
+        c->set_bad_start(k.bad_start);
+        c->set_answers_ignored(k.answers_ignored);
+        c->set_exceptions_sent(k.exceptions_sent);
+        c->set_frames_sent(k.frames_sent);
+        c->set_suppressed(k.suppressed);
+        set_last_frame(c_.tap, *out->mutable_last_frame());
+        out->set_now_ns(to_ns(now));
+        return grpc::Status::OK;
+      },
+      false);
+}
+
+grpc::Status PolarisService::SetBlocked(grpc::ServerContext*, const v1::SetBlockedRequest* in,
+                                        v1::Empty*) {
+  if (auto bad = check_modbus_address(in->address()); !bad.ok()) return bad;
+  return on_line(
+      c_, "Polaris", in->address(),
+      [&](dp::TimePoint now) {
+        auto beams = numbers(*in, d_.options().beams, "beam");
+        if (auto* bad = std::get_if<grpc::Status>(&beams)) return *bad;
+        if (const auto ec = d_.set_interrupted(std::get<std::vector<std::uint16_t>>(beams), now)) {
+          return invalid_argument("blocked", ec.message());
+        }
+        return grpc::Status::OK;
+      },
+      true);
+}
+
+grpc::Status PolarisService::fault(const v1::PolarisFaultRequest& in, bool inject) {
+  if (auto bad = check_modbus_address(in.address()); !bad.ok()) return bad;
+  const auto which = in.fault();
+  if (which == v1::POLARIS_FAULT_UNSPECIFIED || !v1::PolarisFault_IsValid(which)) {
+    return invalid_argument("fault", "a POLARIS_FAULT_* value is required");
+  }
+  if (inject && which == v1::POLARIS_FAULT_LATE) {
+    if (auto bad = check_delay(in.late_ms(), "late_ms"); !bad.ok()) return bad;
+  }
+  return on_line(
+      c_, "Polaris", in.address(),
+      [&](dp::TimePoint) {
+        auto f = d_.faults();
+        switch (which) {
+          case v1::POLARIS_FAULT_BAD_CRC: f.bad_crc = inject; break;
+          case v1::POLARIS_FAULT_NO_ANSWER: f.no_answer = inject; break;
+          case v1::POLARIS_FAULT_LATE:
+            f.late_by = inject ? stream::Duration(std::chrono::milliseconds(in.late_ms()))
+                               : stream::Duration{};
+            break;
+          default: break;
+        }
+        d_.set_faults(f);
+        return grpc::Status::OK;
+      },
+      true);
+}
+
+grpc::Status PolarisService::InjectFault(grpc::ServerContext*, const v1::PolarisFaultRequest* in,
+                                         v1::Empty*) {
+  return fault(*in, true);
+}
+
+grpc::Status PolarisService::ClearFault(grpc::ServerContext*, const v1::PolarisFaultRequest* in,
+                                        v1::Empty*) {
+  return fault(*in, false);
+}
+
+// ==== Watchers ==============================================================================
+
+std::unique_ptr<Watcher> gridscan_watcher(std::uint8_t address, const gridscan::GridScanDevice& d) {
+  return std::make_unique<ItemsWatcher>(address, [&d](dp::TimePoint now) {
+    const auto leds = d.leds(now);
+    const auto report = d.current_report();
+    return ItemsWatcher::Items{
+        {"power", power_name(d.power())},
+        {"mode", mode_name(d.mode())},
+        {"configuration", configuration_name(d.configuration())},
+        {"led-rx-green", led_name(leds.rx_green)},
+        {"led-rx-red", led_name(leds.rx_red)},
+        {"led-tx-green", led_name(leds.tx_green)},
+        {"door-position", std::to_string(report.door_position)},
+        {"interrupted", on_off(report.interrupted)},
+        {"internal-failure", on_off(report.internal_failure)},
+        {"maintenance", std::to_string(report.maintenance)},
+        {"elements", ranges(elements_of(report.elements, d.elements()))},
+    };
+  });
+}
+
+std::unique_ptr<Watcher> metron_watcher(std::uint8_t address, const metron::MetronDevice& d) {
+  return std::make_unique<ItemsWatcher>(address, [&d](dp::TimePoint) {
+    return ItemsWatcher::Items{
+        {"ossd", on_off(d.ossd_on())},
+        {"ossd-function", ossd_function_name(d.slave_state().ossd)},
+        {"synchronised", on_off(d.scene().synchronised())},
+        {"beams", ranges(metron_blocked(d.scene()))},
+    };
+  });
+}
+
+std::unique_ptr<Watcher> polaris_watcher(std::uint8_t address, const polaris::Device& d) {
+  return std::make_unique<ItemsWatcher>(address, [&d](dp::TimePoint now) {
+    return ItemsWatcher::Items{
+        {"pn1", on_off(d.pn1())},
+        {"pn2", on_off(d.pn2(now))},
+        {"beams", ranges(d.interrupted())},
+    };
+  });
+}
+
+}  // namespace rs4sim::rpc

@@ -1,0 +1,617 @@
+// rs4sim.v1.GridScan, Metron and Polaris (devices.proto) end to end: a real gRPC server on
+// loopback in front of each device's core, whose loop runs on its own thread as in
+// `rs4sim run --device X --grpc`. The link is this test: it hands the core bytes and time on
+// the loop (the manual clock) and takes what it sends, through the same tap as the run.
+#include "google/rpc/error_details.pb.h"
+#include "google/rpc/status.pb.h"
+#include "rpc/device_target.h"
+#include "rpc/executor.h"
+#include "rpc/line_services.h"
+#include "rpc/rs4_services.h"
+#include "rpc/server.h"
+#include "rs4sim/v1/devices.grpc.pb.h"
+
+#include <boost/asio/executor_work_guard.hpp>
+#include <boost/asio/io_context.hpp>
+#include <gtest/gtest.h>
+
+#include <grpcpp/create_channel.h>
+#include <grpcpp/security/credentials.h>
+
+#include <algorithm>
+#include <memory>
+#include <optional>
+#include <thread>
+#include <vector>
+
+namespace rs4sim::rpc {
+namespace {
+
+using namespace std::chrono_literals;
+using Bytes = std::vector<std::uint8_t>;
+
+std::string bad_field(const grpc::Status& status) {
+  google::rpc::Status rich;
+  if (!rich.ParseFromString(status.error_details()) || rich.details_size() != 1) return "?";
+  google::rpc::BadRequest bad;
+  if (!rich.details(0).UnpackTo(&bad) || bad.field_violations_size() != 1) return "?";
+  return bad.field_violations(0).field();
+}
+
+std::vector<std::uint32_t> list(const google::protobuf::RepeatedField<std::uint32_t>& r) {
+  return {r.begin(), r.end()};
+}
+
+// The loop, the manual clock, the event target and the server of one device.
+class LineFixture : public ::testing::Test {
+ protected:
+  // The event target first (the services take its hub), as the run builds them.
+  void watch(const std::string& kind, std::unique_ptr<Watcher> watcher) {
+    target_ = std::make_unique<LineDeviceTarget>(kind, std::move(watcher), clock_, io_);
+  }
+  // Starts the loop and serves `service` beside the device's Observation service.
+  void serve(grpc::Service& service) {
+    observation_ = std::make_unique<ObservationService>(Rs4Context{*target_, executor_});
+    loop_ = std::thread([this] { io_.run(); });
+    server_ = std::make_unique<RpcServer>(
+        ServerOptions{}, std::vector<grpc::Service*>{&service, observation_.get()});
+    channel_ = grpc::CreateChannel(server_->address(), grpc::InsecureChannelCredentials());
+    observation_stub_ = v1::Observation::NewStub(channel_);
+  }
+  void TearDown() override {
+    if (server_) server_->shutdown();
+    if (target_) executor_.run([this] { target_->stop(); });
+    work_.reset();
+    if (loop_.joinable()) loop_.join();
+  }
+  // As a link: bytes at now, then the clock from deadline to deadline for `span`; returns
+  // what the device sent meanwhile.
+  std::vector<Bytes> exchange(stream::ByteDevice& d, const Bytes& request,
+                              stream::Duration span = 50ms) {
+    std::vector<Bytes> sent;
+    executor_.run([&] {
+      if (!request.empty()) d.on_bytes(request, clock_.now());
+      const auto until = clock_.now() + span;
+      for (;;) {
+        while (auto f = d.take_transmit()) sent.push_back(*f);
+        const auto next = d.next_deadline();
+        if (!next || *next > until) break;
+        clock_.set(std::max(*next, clock_.now()));
+        d.on_time(clock_.now());
+      }
+      clock_.set(until);
+      d.on_time(until);
+      while (auto f = d.take_transmit()) sent.push_back(*f);
+    });
+    return sent;
+  }
+  LineContext context(TappedByteDevice& tap, std::uint8_t address) {
+    return {executor_, clock_, address, tap, target_->events()};
+  }
+
+  stream::ManualClock clock_;
+  boost::asio::io_context io_;
+  std::optional<boost::asio::executor_work_guard<boost::asio::io_context::executor_type>> work_{
+      io_.get_executor()};
+  AsioExecutor executor_{io_};
+  std::thread loop_;
+  std::unique_ptr<LineDeviceTarget> target_;
+  std::unique_ptr<ObservationService> observation_;
+  std::unique_ptr<RpcServer> server_;
+  std::shared_ptr<grpc::Channel> channel_;
+  std::unique_ptr<v1::Observation::Stub> observation_stub_;
+};
+
+// ==== Polaris ==============================================================================
+
+// The Modbus CRC-16 of a frame [Modbus serial line V1.02 §6.2.2], appended low byte first;
+// the expected frames below were computed by hand from this rule, not by our encoder.
+class RpcPolarisTest : public LineFixture {
+ protected:
+  void SetUp() override {
+    device_.on_time(clock_.now());  // (the loop does not run yet)
+    watch("polaris", polaris_watcher(1, device_));
+    service_ = std::make_unique<PolarisService>(context(tap_, 1), device_);
+    serve(*service_);
+    stub_ = v1::Polaris::NewStub(channel_);
+  }
+  v1::PolarisState state() {
+    grpc::ClientContext ctx;
+    v1::LineDeviceRequest req;
+    req.set_address(1);
+    v1::PolarisState out;
+    const auto s = stub_->GetState(&ctx, req, &out);
+    EXPECT_TRUE(s.ok()) << s.error_message();
+    return out;
+  }
+  grpc::Status block(const std::vector<std::uint32_t>& beams, std::uint32_t address = 1) {
+    grpc::ClientContext ctx;
+    v1::SetBlockedRequest req;
+    req.set_address(address);
+    for (const auto b : beams) req.add_blocked(b);
+    v1::Empty e;
+    return stub_->SetBlocked(&ctx, req, &e);
+  }
+  grpc::Status fault(v1::PolarisFault f, bool inject, std::uint32_t late_ms = 0) {
+    grpc::ClientContext ctx;
+    v1::PolarisFaultRequest req;
+    req.set_address(1);
+    req.set_fault(f);
+    req.set_late_ms(late_ms);
+    v1::Empty e;
+    return inject ? stub_->InjectFault(&ctx, req, &e) : stub_->ClearFault(&ctx, req, &e);
+  }
+
+  // PL10, 16 beams, 485MB, slave 1, data block at 0x2000 (the defaults).
+  polaris::Device device_{polaris::Options{}};
+  TappedByteDevice tap_{device_};
+  std::unique_ptr<PolarisService> service_;
+  std::unique_ptr<v1::Polaris::Stub> stub_;
+  // FC 04, register 0x2000, 1 word, CRC 0A3A.
+  const Bytes read_ = {0x01, 0x04, 0x20, 0x00, 0x00, 0x01, 0x3A, 0x0A};
+};
+
+TEST_F(RpcPolarisTest, BlockedBeamsReachTheModbusAnswer) {
+  auto s = state();
+  EXPECT_EQ(s.address(), 1U);
+  EXPECT_EQ(s.beams(), 16U);
+  EXPECT_EQ(s.data_mode(), "485MB");
+  EXPECT_FALSE(s.pn1());
+  EXPECT_EQ(list(s.data_block()), (std::vector<std::uint32_t>{0xFFFF}));
+  EXPECT_TRUE(s.last_frame().frame().empty());
+
+  ASSERT_TRUE(block({9, 10, 11, 12, 13}).ok());
+  s = state();
+  EXPECT_EQ(list(s.blocked()), (std::vector<std::uint32_t>{9, 10, 11, 12, 13}));
+  EXPECT_TRUE(s.pn1());
+  EXPECT_FALSE(s.pn2());
+  ASSERT_EQ(s.objects_size(), 1);
+  EXPECT_EQ(s.objects(0).first(), 9U);
+  EXPECT_EQ(s.objects(0).last(), 13U);
+  EXPECT_EQ(s.start_address(), 0x2000U);
+  // 1 = beam free, beam 1 in bit 0: beams 9..13 clear bits 8..12.
+  EXPECT_EQ(list(s.data_block()), (std::vector<std::uint32_t>{0xE0FF}));
+
+  const auto sent = exchange(tap_, read_);
+  const Bytes answer = {0x01, 0x04, 0x02, 0xE0, 0xFF, 0xB0, 0xB0};
+  ASSERT_EQ(sent.size(), 1U);
+  EXPECT_EQ(sent[0], answer);
+  s = state();
+  EXPECT_EQ(s.counters().requests(), 1U);
+  EXPECT_EQ(s.counters().frames_sent(), 1U);
+  EXPECT_EQ(s.last_frame().frame(), std::string(answer.begin(), answer.end()));
+  EXPECT_GT(s.last_frame().sent_ns(), 0);
+
+  ASSERT_TRUE(block({}).ok());  // all free again
+  EXPECT_EQ(list(state().data_block()), (std::vector<std::uint32_t>{0xFFFF}));
+}
+
+TEST_F(RpcPolarisTest, FaultsActOnTheWireUntilCleared) {
+  ASSERT_TRUE(fault(v1::POLARIS_FAULT_BAD_CRC, true).ok());
+  EXPECT_EQ(list(state().data_block()), (std::vector<std::uint32_t>{0xFFFF}));
+  auto sent = exchange(tap_, read_);
+  ASSERT_EQ(sent.size(), 1U);
+  // 01 04 02 FF FF, CRC 80B8 with its high byte inverted.
+  EXPECT_EQ(sent[0], (Bytes{0x01, 0x04, 0x02, 0xFF, 0xFF, 0xB8, 0x7F}));
+  const auto faulty = state();
+  EXPECT_EQ(
+      std::vector<std::string>(faulty.faults_present().begin(), faulty.faults_present().end()),
+      (std::vector<std::string>{"bad-crc"}));
+  ASSERT_TRUE(fault(v1::POLARIS_FAULT_BAD_CRC, false).ok());
+
+  ASSERT_TRUE(fault(v1::POLARIS_FAULT_NO_ANSWER, true).ok());
+  EXPECT_TRUE(exchange(tap_, read_).empty());
+  EXPECT_EQ(state().counters().suppressed(), 1U);
+  ASSERT_TRUE(fault(v1::POLARIS_FAULT_NO_ANSWER, false).ok());
+
+  ASSERT_TRUE(fault(v1::POLARIS_FAULT_LATE, true, 30).ok());
+  EXPECT_EQ(state().late_ms(), 30U);
+  EXPECT_TRUE(exchange(tap_, read_, 20ms).empty());  // not within 20 ms ...
+  EXPECT_EQ(exchange(tap_, {}, 40ms).size(), 1U);    // ... but later
+  ASSERT_TRUE(fault(v1::POLARIS_FAULT_LATE, false).ok());
+  EXPECT_TRUE(state().faults_present().empty());
+  EXPECT_EQ(exchange(tap_, read_).size(), 1U);
+}
+
+TEST_F(RpcPolarisTest, BadInputGetsASpecificStatus) {
+  auto s = block({3, 17});
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad_field(s), "blocked[1]");
+  s = block({0});
+  EXPECT_EQ(bad_field(s), "blocked[0]");
+  s = block({3}, 0);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad_field(s), "address");
+  s = block({3}, 248);
+  EXPECT_EQ(bad_field(s), "address");
+  s = block({3}, 2);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::NOT_FOUND);
+  EXPECT_NE(s.error_message().find("answers to 1"), std::string::npos) << s.error_message();
+  s = fault(v1::POLARIS_FAULT_UNSPECIFIED, true);
+  EXPECT_EQ(bad_field(s), "fault");
+  s = fault(static_cast<v1::PolarisFault>(42), false);
+  EXPECT_EQ(bad_field(s), "fault");
+  s = fault(v1::POLARIS_FAULT_LATE, true, 0);
+  EXPECT_EQ(bad_field(s), "late_ms");
+  s = fault(v1::POLARIS_FAULT_LATE, true, 10'001);
+  EXPECT_EQ(bad_field(s), "late_ms");
+  EXPECT_TRUE(state().blocked().empty());  // nothing changed
+  EXPECT_TRUE(state().faults_present().empty());
+  {
+    grpc::ClientContext ctx;
+    v1::LineDeviceRequest req;
+    req.set_address(7);
+    v1::PolarisState out;
+    EXPECT_EQ(stub_->GetState(&ctx, req, &out).error_code(), grpc::StatusCode::NOT_FOUND);
+  }
+  // The RS4's Observation.GetState on a Polaris run names the mistake.
+  grpc::ClientContext ctx;
+  v1::StationRequest req;
+  req.set_address(1);
+  v1::DeviceState out;
+  const auto rs4 = observation_stub_->GetState(&ctx, req, &out);
+  EXPECT_EQ(rs4.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+  EXPECT_NE(rs4.error_message().find("polaris"), std::string::npos) << rs4.error_message();
+}
+
+// The shared event stream: the snapshot, then the changes SetBlocked makes.
+TEST_F(RpcPolarisTest, StateChangesReachTheSharedEventStream) {
+  grpc::ClientContext ctx;
+  v1::StreamEventsRequest req;
+  req.add_addresses(1);
+  auto reader = observation_stub_->StreamEvents(&ctx, req);
+  std::vector<std::string> seen;
+  v1::Event e;
+  // The snapshot first (the stream has subscribed once it arrived).
+  for (int i = 0; i < 3 && reader->Read(&e); ++i) {
+    ASSERT_TRUE(e.has_state());
+    EXPECT_EQ(e.address(), 1U);
+    seen.push_back(e.state().what() + ":" + e.state().from() + ">" + e.state().to());
+  }
+  EXPECT_EQ(seen, (std::vector<std::string>{"pn1:>off", "pn2:>off", "beams:>none"}));
+  ASSERT_TRUE(block({2, 3, 7}).ok());
+  seen.clear();
+  for (int i = 0; i < 3 && reader->Read(&e); ++i) {
+    seen.push_back(e.state().what() + ":" + e.state().from() + ">" + e.state().to());
+  }
+  // Beams 2-3 and 7: two objects, so PN2 too [Polaris manual §3].
+  EXPECT_EQ(seen, (std::vector<std::string>{"pn1:off>on", "pn2:off>on", "beams:none>2-3,7"}));
+  ctx.TryCancel();
+  (void)reader->Finish();
+
+  grpc::ClientContext bad_ctx;
+  v1::StreamEventsRequest bad;
+  bad.add_addresses(4);
+  auto refused = observation_stub_->StreamEvents(&bad_ctx, bad);
+  EXPECT_FALSE(refused->Read(&e));
+  EXPECT_EQ(refused->Finish().error_code(), grpc::StatusCode::NOT_FOUND);
+}
+
+// ==== GridScan =============================================================================
+
+class RpcGridScanTest : public LineFixture {
+ protected:
+  void SetUp() override {
+    watch("gridscan", gridscan_watcher(0, device_));
+    service_ = std::make_unique<GridScanService>(context(tap_, 0), device_);
+    serve(*service_);
+    stub_ = v1::GridScan::NewStub(channel_);
+  }
+  void power_up() {
+    executor_.run([this] { device_.power_on(clock_.now()); });
+    (void)exchange(tap_, {}, 2s);  // ready after at most 1.7 s [GridScan manual §11]
+  }
+  v1::GridScanState state() {
+    grpc::ClientContext ctx;
+    v1::LineDeviceRequest req;
+    v1::GridScanState out;
+    const auto s = stub_->GetState(&ctx, req, &out);
+    EXPECT_TRUE(s.ok()) << s.error_message();
+    return out;
+  }
+  grpc::Status door(std::uint32_t position) {
+    grpc::ClientContext ctx;
+    v1::SetDoorRequest req;
+    req.set_position(position);
+    v1::Empty e;
+    return stub_->SetDoor(&ctx, req, &e);
+  }
+  grpc::Status block(const std::vector<std::uint32_t>& elements) {
+    grpc::ClientContext ctx;
+    v1::SetBlockedRequest req;
+    for (const auto b : elements) req.add_blocked(b);
+    v1::Empty e;
+    return stub_->SetBlocked(&ctx, req, &e);
+  }
+  grpc::Status soiling(std::uint32_t level) {
+    grpc::ClientContext ctx;
+    v1::SetSoilingRequest req;
+    req.set_level(level);
+    v1::Empty e;
+    return stub_->SetSoiling(&ctx, req, &e);
+  }
+  grpc::Status fault(v1::GridScanFault f, bool inject, std::uint32_t late_ms = 0,
+                     std::uint32_t address = 0) {
+    grpc::ClientContext ctx;
+    v1::GridScanFaultRequest req;
+    req.set_address(address);
+    req.set_fault(f);
+    req.set_late_ms(late_ms);
+    v1::Empty e;
+    return inject ? stub_->InjectFault(&ctx, req, &e) : stub_->ClearFault(&ctx, req, &e);
+  }
+
+  // 22 elements, blanking mode, door open.
+  gridscan::GridScanDevice device_{gridscan::Options{}};
+  TappedByteDevice tap_{device_};
+  std::unique_ptr<GridScanService> service_;
+  std::unique_ptr<v1::GridScan::Stub> stub_;
+};
+
+TEST_F(RpcGridScanTest, SceneReachesTheStateBytes) {
+  EXPECT_EQ(state().power(), "off");
+  power_up();
+  auto s = state();
+  EXPECT_EQ(s.power(), "ready");
+  EXPECT_EQ(s.mode(), "polling");
+  EXPECT_EQ(s.configuration(), "blanking");
+  EXPECT_EQ(s.elements(), 22U);
+  EXPECT_EQ(s.led_tx_green(), "on");
+  EXPECT_EQ(s.door_position(), 22U);
+  EXPECT_FALSE(s.report_interrupted());
+  // The power-up messages went out (Get version, then Reduced state [GridScan manual §9]).
+  EXPECT_FALSE(s.last_frame().frame().empty());
+
+  ASSERT_TRUE(door(10).ok());
+  ASSERT_TRUE(block({3, 15}).ok());
+  ASSERT_TRUE(soiling(2).ok());
+  s = state();
+  EXPECT_EQ(s.door_position(), 10U);
+  EXPECT_EQ(s.report_door_position(), 10U);
+  EXPECT_EQ(list(s.blocked()), (std::vector<std::uint32_t>{3, 15}));
+  // Element 3 is below the door edge (bit 8); 15 is covered by the door anyway.
+  EXPECT_TRUE(s.report_interrupted());
+  EXPECT_EQ(s.soiling(), 2U);
+  EXPECT_EQ(s.report_maintenance(), 2U);
+  ASSERT_FALSE(s.report_interrupted_elements().empty());
+  EXPECT_EQ(s.report_interrupted_elements(0), 3U);
+  ASSERT_TRUE(block({15}).ok());
+  EXPECT_FALSE(state().report_interrupted());  // above the door edge: blanked
+}
+
+TEST_F(RpcGridScanTest, EveryFaultIsInjectedAndCleared) {
+  power_up();
+  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_LATE_ANSWER, true, 25).ok());
+  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_WRONG_SEQ, true).ok());
+  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_DIRECTION_BIT, true).ok());
+  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_BAD_CRC, true).ok());
+  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_INTERNAL_FAILURE, true).ok());
+  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_SILENT, true).ok());
+  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_CONFIG_NOT_SET, true).ok());
+  auto s = state();
+  EXPECT_EQ(std::vector<std::string>(s.faults_present().begin(), s.faults_present().end()),
+            (std::vector<std::string>{"late-answer", "wrong-seq", "direction-bit", "bad-crc",
+                                      "internal-failure", "silent", "config-not-set"}));
+  EXPECT_EQ(s.late_ms(), 25U);
+  EXPECT_TRUE(s.report_internal_failure());       // bit 9 [GridScan manual §10.2.3]
+  EXPECT_EQ(state().led_rx_red(), "blink-fast");  // [GridScan manual §13]
+  for (const auto f : {v1::GRID_SCAN_FAULT_LATE_ANSWER, v1::GRID_SCAN_FAULT_WRONG_SEQ,
+                       v1::GRID_SCAN_FAULT_DIRECTION_BIT, v1::GRID_SCAN_FAULT_BAD_CRC,
+                       v1::GRID_SCAN_FAULT_INTERNAL_FAILURE, v1::GRID_SCAN_FAULT_SILENT,
+                       v1::GRID_SCAN_FAULT_CONFIG_NOT_SET}) {
+    ASSERT_TRUE(fault(f, false).ok()) << f;
+  }
+  s = state();
+  EXPECT_TRUE(s.faults_present().empty());
+  EXPECT_EQ(s.late_ms(), 0U);
+  EXPECT_FALSE(s.report_internal_failure());
+}
+
+// The power-up Reduced state (ID 0xB0, SeqCnt 1) of door 10 with element 3 interrupted:
+// payload 0A 01 [GridScan manual §9.2.4], CRC-32/MPEG-2 over SeqCnt, ID and payload, least
+// significant byte first [GridScan manual §9.2]; the CRCs were computed by that rule outside
+// the project. Each fault changes the frame as the controller must notice
+// [GridScan manual §10.2.2]; after ClearFault the frame is right again.
+TEST_F(RpcGridScanTest, FaultsReachThePowerUpStateFrame) {
+  ASSERT_TRUE(door(10).ok());
+  ASSERT_TRUE(block({3}).ok());
+  const auto frame = [](const Bytes& rest) {
+    Bytes f = {0x43, 0x45, 0x44, 0x45};  // sync "CEDE"
+    f.insert(f.end(), rest.begin(), rest.end());
+    return std::string(f.begin(), f.end());
+  };
+  const auto cycle = [this] {
+    executor_.run([this] { device_.power_off(); });
+    power_up();
+    return state().last_frame().frame();
+  };
+  EXPECT_EQ(cycle(), frame({0x01, 0xB0, 0x0A, 0x01, 0x36, 0x9C, 0xDB, 0xFF}));
+  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_BAD_CRC, true).ok());  // bit 0 of the CRC's first byte
+  EXPECT_EQ(cycle(), frame({0x01, 0xB0, 0x0A, 0x01, 0x37, 0x9C, 0xDB, 0xFF}));
+  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_BAD_CRC, false).ok());
+  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_WRONG_SEQ, true).ok());  // SeqCnt 2, not 1
+  EXPECT_EQ(cycle(), frame({0x02, 0xB0, 0x0A, 0x01, 0x58, 0x2E, 0xAC, 0x9F}));
+  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_WRONG_SEQ, false).ok());
+  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_DIRECTION_BIT, true).ok());  // ID 0x30
+  EXPECT_EQ(cycle(), frame({0x01, 0x30, 0x0A, 0x01, 0xB6, 0xDF, 0x8D, 0x13}));
+  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_DIRECTION_BIT, false).ok());
+  EXPECT_EQ(cycle(), frame({0x01, 0xB0, 0x0A, 0x01, 0x36, 0x9C, 0xDB, 0xFF}));
+}
+
+TEST_F(RpcGridScanTest, SilentFaultKeepsThePowerUpMessagesOffTheLine) {
+  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_SILENT, true).ok());
+  power_up();
+  EXPECT_TRUE(state().last_frame().frame().empty());
+  EXPECT_EQ(state().last_frame().sent_ns(), 0);
+}
+
+TEST_F(RpcGridScanTest, BadInputGetsASpecificStatus) {
+  auto s = door(23);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad_field(s), "position");
+  s = block({1, 23});
+  EXPECT_EQ(bad_field(s), "blocked[1]");
+  s = soiling(4);
+  EXPECT_EQ(bad_field(s), "level");
+  s = fault(v1::GRID_SCAN_FAULT_UNSPECIFIED, true);
+  EXPECT_EQ(bad_field(s), "fault");
+  s = fault(v1::GRID_SCAN_FAULT_LATE_ANSWER, true, 0);
+  EXPECT_EQ(bad_field(s), "late_ms");
+  s = fault(v1::GRID_SCAN_FAULT_BAD_CRC, true, 0, 1);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::NOT_FOUND);
+  s = fault(v1::GRID_SCAN_FAULT_BAD_CRC, true, 0, 256);
+  EXPECT_EQ(bad_field(s), "address");
+  const auto st = state();
+  EXPECT_TRUE(st.faults_present().empty());
+  EXPECT_TRUE(st.blocked().empty());
+  EXPECT_EQ(st.soiling(), 0U);
+}
+
+// ==== METRON ===============================================================================
+
+class RpcMetronTest : public LineFixture {
+ protected:
+  void SetUp() override {
+    watch("metron", metron_watcher(5, device_));
+    service_ = std::make_unique<MetronService>(context(tap_, 5), device_);
+    serve(*service_);
+    stub_ = v1::Metron::NewStub(channel_);
+  }
+  static metron::Options options() {
+    metron::Options o;  // 24 beams, slave line mode
+    o.node_enabled = true;
+    o.node = 5;
+    return o;
+  }
+  v1::MetronState state() {
+    grpc::ClientContext ctx;
+    v1::LineDeviceRequest req;
+    req.set_address(5);
+    v1::MetronState out;
+    const auto s = stub_->GetState(&ctx, req, &out);
+    EXPECT_TRUE(s.ok()) << s.error_message();
+    return out;
+  }
+  grpc::Status block(const std::vector<std::uint32_t>& beams, std::uint32_t address = 5) {
+    grpc::ClientContext ctx;
+    v1::SetBlockedRequest req;
+    req.set_address(address);
+    for (const auto b : beams) req.add_blocked(b);
+    v1::Empty e;
+    return stub_->SetBlocked(&ctx, req, &e);
+  }
+  grpc::Status synchronised(bool on) {
+    grpc::ClientContext ctx;
+    v1::SetSynchronisedRequest req;
+    req.set_address(5);
+    req.set_synchronised(on);
+    v1::Empty e;
+    return stub_->SetSynchronised(&ctx, req, &e);
+  }
+  grpc::Status fault(v1::MetronFault f, bool inject, std::uint32_t delay_ms = 0) {
+    grpc::ClientContext ctx;
+    v1::MetronFaultRequest req;
+    req.set_address(5);
+    req.set_fault(f);
+    req.set_delay_ms(delay_ms);
+    v1::Empty e;
+    return inject ? stub_->InjectFault(&ctx, req, &e) : stub_->ClearFault(&ctx, req, &e);
+  }
+
+  metron::MetronDevice device_{options()};
+  TappedByteDevice tap_{device_};
+  std::unique_ptr<MetronService> service_;
+  std::unique_ptr<v1::Metron::Stub> stub_;
+};
+
+TEST_F(RpcMetronTest, BeamsAndSynchronisationDriveTheOssds) {
+  auto s = state();
+  EXPECT_EQ(s.address(), 5U);
+  EXPECT_EQ(s.line_mode(), "slave");
+  EXPECT_TRUE(s.node_enabled());
+  EXPECT_EQ(s.beams(), 24U);
+  EXPECT_TRUE(s.ossd());
+  EXPECT_EQ(s.ossd_function(), "enabled");
+  EXPECT_EQ(s.counters().errors_size(), 5);
+
+  ASSERT_TRUE(block({9, 10, 11, 12, 13}).ok());
+  s = state();
+  EXPECT_EQ(list(s.blocked()), (std::vector<std::uint32_t>{9, 10, 11, 12, 13}));
+  EXPECT_FALSE(s.ossd());
+  EXPECT_EQ(s.first_interrupted(), 9U);
+  EXPECT_EQ(s.last_interrupted(), 13U);
+  EXPECT_EQ(s.interrupted_count(), 5U);
+  ASSERT_TRUE(block({}).ok());
+  EXPECT_TRUE(state().ossd());
+
+  ASSERT_TRUE(synchronised(false).ok());
+  s = state();
+  EXPECT_FALSE(s.synchronised());
+  EXPECT_FALSE(s.ossd());
+  ASSERT_TRUE(synchronised(true).ok());
+  EXPECT_TRUE(state().ossd());
+}
+
+TEST_F(RpcMetronTest, EveryFaultIsInjectedAndCleared) {
+  ASSERT_TRUE(fault(v1::METRON_FAULT_SILENT, true).ok());
+  ASSERT_TRUE(fault(v1::METRON_FAULT_LATE, true, 40).ok());
+  ASSERT_TRUE(fault(v1::METRON_FAULT_BAD_CHECKSUM, true).ok());
+  ASSERT_TRUE(fault(v1::METRON_FAULT_WRONG_NODE, true).ok());
+  ASSERT_TRUE(fault(v1::METRON_FAULT_TRUNCATE, true).ok());
+  auto s = state();
+  EXPECT_EQ(std::vector<std::string>(s.faults_present().begin(), s.faults_present().end()),
+            (std::vector<std::string>{"silent", "late", "bad-checksum", "wrong-node", "truncate"}));
+  EXPECT_EQ(s.delay_ms(), 40U);
+  for (const auto f :
+       {v1::METRON_FAULT_SILENT, v1::METRON_FAULT_LATE, v1::METRON_FAULT_BAD_CHECKSUM,
+        v1::METRON_FAULT_WRONG_NODE, v1::METRON_FAULT_TRUNCATE}) {
+    ASSERT_TRUE(fault(f, false).ok()) << f;
+  }
+  s = state();
+  EXPECT_TRUE(s.faults_present().empty());
+  EXPECT_EQ(s.delay_ms(), 0U);
+}
+
+TEST_F(RpcMetronTest, BadInputGetsASpecificStatus) {
+  auto s = block({25});
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad_field(s), "blocked[0]");
+  s = block({1}, 255);
+  EXPECT_EQ(bad_field(s), "address");
+  s = block({1}, 0);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::NOT_FOUND);
+  s = fault(v1::METRON_FAULT_UNSPECIFIED, true);
+  EXPECT_EQ(bad_field(s), "fault");
+  s = fault(v1::METRON_FAULT_LATE, true);
+  EXPECT_EQ(bad_field(s), "delay_ms");
+  EXPECT_TRUE(state().blocked().empty());
+  EXPECT_TRUE(state().faults_present().empty());
+}
+
+// Without node mode the curtain answers to 0, and a wrong node cannot be provoked.
+TEST(RpcMetronNoNodeTest, WrongNodeNeedsNodeMode) {
+  stream::ManualClock clock;
+  boost::asio::io_context io;
+  auto work = boost::asio::make_work_guard(io);
+  std::thread loop([&io] { io.run(); });
+  AsioExecutor executor(io);
+  metron::MetronDevice device{metron::Options{}};
+  TappedByteDevice tap(device);
+  MetronService service(LineContext{executor, clock, 0, tap, nullptr}, device);
+  RpcServer server(ServerOptions{}, {&service});
+  auto stub = v1::Metron::NewStub(
+      grpc::CreateChannel(server.address(), grpc::InsecureChannelCredentials()));
+  grpc::ClientContext ctx;
+  v1::MetronFaultRequest req;
+  req.set_fault(v1::METRON_FAULT_WRONG_NODE);
+  v1::Empty e;
+  const auto s = stub->InjectFault(&ctx, req, &e);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+  EXPECT_NE(s.error_message().find("node mode"), std::string::npos) << s.error_message();
+  server.shutdown();
+  work.reset();
+  loop.join();
+}
+
+}  // namespace
+}  // namespace rs4sim::rpc
