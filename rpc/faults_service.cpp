@@ -111,4 +111,13 @@ grpc::Status FaultsService::ClearSafetyFaults(grpc::ServerContext*, const v1::St
   });
 }
 
+grpc::Status FaultsService::AcknowledgeReintegration(grpc::ServerContext*,
+                                                     const v1::StationRequest* in, v1::Empty*) {
+  return on_device(c_, in->address(), [&](rs4::device::Rs4Device&, dp::TimePoint) {
+    const auto why = c_.target.ack_rei(static_cast<std::uint8_t>(in->address()));
+    if (why.empty()) return grpc::Status::OK;
+    return failed_precondition("STATE", "station " + std::to_string(in->address()), why);
+  });
+}
+
 }  // namespace rs4sim::rpc

@@ -69,6 +69,8 @@ class FaultsService final : public v1::Faults::Service {
                            v1::Empty*) override;
   grpc::Status InjectSafetyFault(grpc::ServerContext*, const v1::SafetyFaultRequest* in,
                                  v1::Empty*) override;
+  grpc::Status AcknowledgeReintegration(grpc::ServerContext*, const v1::StationRequest* in,
+                                        v1::Empty*) override;
   grpc::Status ClearSafetyFaults(grpc::ServerContext*, const v1::StationRequest* in,
                                  v1::Empty*) override;
 

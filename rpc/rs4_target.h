@@ -48,6 +48,12 @@ class Rs4Target {
     (void)out;
     return false;
   }
+  // The PLC's ACK_REI to the station's F-host: empty when given, else why not ("this run has
+  // no PLC side", "the F-host is in run, not ack-required").
+  virtual std::string ack_rei(std::uint8_t address) {
+    (void)address;
+    return "this run has no PLC side (no F-host of ours on the link)";
+  }
 
  protected:
   Rs4Target() = default;

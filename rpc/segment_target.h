@@ -22,6 +22,7 @@ class SegmentTarget final : public Rs4Target {
   dp::link::MemoryBus* bus() override { return &segment_.bus(); }
   EventHub* events() override { return hub_.get(); }
   bool plc_view(std::uint8_t address, v1::PlcView& out) override;
+  std::string ack_rei(std::uint8_t address) override;
 
  private:
   rs4::device::Rs4Segment& segment_;

@@ -93,6 +93,13 @@ try:
         code, violations, _ = error_details(e)
         assert code == "INVALID_ARGUMENT" and violations[0][0] == "percent", (code, violations)
     try:
+        rs4.acknowledge()  # `run` acknowledged by itself: nothing is waiting
+        raise AssertionError("an ACK_REI with nothing to acknowledge was accepted")
+    except grpc.RpcError as e:
+        code, _, preconditions = error_details(e)
+        assert code == "FAILED_PRECONDITION" and preconditions[0][0] == "STATE", preconditions
+        assert "not ack-required" in preconditions[0][2], preconditions
+    try:
         Rs4(address, station=9).state()
         raise AssertionError("station 9 answered")
     except grpc.RpcError as e:

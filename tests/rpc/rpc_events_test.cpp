@@ -4,7 +4,9 @@
 // a slow client's EventsDropped, and the bad-input statuses.
 #include "rs4_fixture.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <map>
 #include <string>
 
@@ -78,6 +80,77 @@ TEST_F(RpcEventsTest, SnapshotThenTheBootAndAViolationInOrder) {
   EXPECT_EQ(off.back().from(), "on");
   ctx.TryCancel();
   EXPECT_EQ(reader->Finish().error_code(), grpc::StatusCode::CANCELLED);
+}
+
+// The PLC's side of the simulated bus: a CRC2 error passivates the F-host, the PLC program
+// reads the fail-safe value 0 instead of the RS4's input byte, after good PDUs it waits for
+// the operator (ACK_REQ), and Faults.AcknowledgeReintegration (ACK_REI) brings it back to RUN
+// [RS4 manual §7.3.2, IEC 61784-3-3 CRC].
+TEST_F(RpcEventsTest, TheFHostsStateAndThePlcInputByteFollowAPassivation) {
+  grpc::ClientContext ctx;
+  v1::StreamEventsRequest req;
+  auto reader = open(ctx, req);
+  std::map<std::string, std::string> snapshot;
+  v1::Event e;
+  while (snapshot.size() < 12 && reader->Read(&e)) {
+    if (e.has_state()) snapshot[e.state().what()] = e.state().to();
+  }
+  EXPECT_EQ(snapshot["plc-input-byte"], "00");  // no data exchange yet
+  EXPECT_NE(snapshot["fhost-state"], "run");
+  boot();
+  read_until(*reader, "fhost-state", "run");
+  advance(50);  // the PLC sees the RS4's byte a master cycle later
+  // In RUN the PLC reads the RS4's own input byte (with the OSSD bit 7 set after the boot).
+  const auto rs4 = state();
+  ASSERT_TRUE(rs4.ossd());
+  char sent[3];
+  std::snprintf(sent, sizeof sent, "%02x", rs4.input_byte());
+  EXPECT_FALSE(read_until(*reader, "plc-input-byte", sent).empty());
+  EXPECT_EQ(rs4.plc().input_byte(), rs4.input_byte());
+
+  grpc::ClientContext c2;
+  v1::SafetyFaultRequest fault;
+  fault.set_address(4);
+  fault.set_fault(v1::SAFETY_FAULT_CORRUPT_CRC2);
+  fault.set_count(1);
+  v1::Empty empty;
+  ASSERT_TRUE(faults_stub_->InjectSafetyFault(&c2, fault, &empty).ok());
+  advance(500);
+  const auto acknowledge = [&] {
+    grpc::ClientContext c3;
+    v1::StationRequest station;
+    station.set_address(4);
+    return faults_stub_->AcknowledgeReintegration(&c3, station, &empty);
+  };
+  std::vector<std::pair<std::string, std::string>> after;  // (what, to) of the F-host items
+  bool acknowledged = false;
+  while (reader->Read(&e)) {
+    if (!e.has_state()) continue;
+    const auto& c = e.state();
+    if (c.what() != "fhost-state" && c.what() != "plc-input-byte") continue;
+    after.emplace_back(c.what(), c.to());
+    if (c.what() == "fhost-state" && c.to() == "ack-required" && !acknowledged) {
+      // This segment does not acknowledge by itself: the operator does, through the API.
+      ASSERT_TRUE(acknowledge().ok());
+      acknowledged = true;
+      advance(100);
+    }
+    if (c.what() == "fhost-state" && c.to() == "run") break;
+  }
+  using Item = std::pair<std::string, std::string>;
+  ASSERT_GE(after.size(), 4U);
+  EXPECT_EQ(after.front(), (Item{"fhost-state", "passivated"}));
+  EXPECT_NE(std::find(after.begin(), after.end(), Item{"plc-input-byte", "00"}), after.end());
+  EXPECT_NE(std::find(after.begin(), after.end(), Item{"fhost-state", "ack-required"}),
+            after.end());
+  EXPECT_EQ(after.back(), (Item{"fhost-state", "run"}));
+  // Nothing to acknowledge in RUN: a specific refusal.
+  const auto again = acknowledge();
+  EXPECT_EQ(again.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+  EXPECT_NE(again.error_message().find("not ack-required"), std::string::npos)
+      << again.error_message();
+  ctx.TryCancel();
+  (void)reader->Finish();
 }
 
 TEST_F(RpcEventsTest, EveryTelegramWithDirectionTimeAndWireBytes) {

@@ -173,6 +173,10 @@ class Rs4:
     def clear_safety_faults(self):
         self.faults.ClearSafetyFaults(pb.StationRequest(address=self.station))
 
+    def acknowledge(self):
+        """The PLC operator's ACK_REI after a passivation (the simulated bus's F-host)."""
+        self.faults.AcknowledgeReintegration(pb.StationRequest(address=self.station))
+
     # ---- the world and the user's hands ----------------------------------------------------
     def violate_field(self, field="protective"):
         kind = pb.FieldKind.Value("FIELD_KIND_" + field.upper())
