@@ -1,0 +1,237 @@
+// The Device calls the scenario tests do not reach, end to end on a real server on loopback
+// in front of the simulated segment (docs/rpc.md): the run's device list, power off/on and
+// a power cycle with the RS4's boot time [RS4 manual §1], the contour of a known scene and
+// ClearScene, the PC adapter's switched-through bit and the Proxy-Request on its removal
+// [RS4 manual §7.1, §7.2], an RS4 fault cleared, the address switches taking effect at the
+// next power-on with F_Dest_Add = 500 + address [RS4 manual §4.5], bus faults cleared
+// [IEC 61158-4-3 FCB/FCV], and each call's bad-input status.
+#include "rs4_fixture.h"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace rs4sim::rpc {
+namespace {
+
+class RpcDeviceTest : public RpcRs4Test {
+ protected:
+  v1::Empty empty_;
+
+  grpc::Status set_power(std::uint32_t address, bool on) {
+    grpc::ClientContext ctx;
+    v1::SetPowerRequest req;
+    req.set_address(address);
+    req.set_on(on);
+    return device_stub_->SetPower(&ctx, req, &empty_);
+  }
+  grpc::Status power_cycle(std::uint32_t address) {
+    grpc::ClientContext ctx;
+    v1::StationRequest req;
+    req.set_address(address);
+    return device_stub_->PowerCycle(&ctx, req, &empty_);
+  }
+  grpc::Status contour(std::uint32_t address, v1::Contour& out) {
+    grpc::ClientContext ctx;
+    v1::StationRequest req;
+    req.set_address(address);
+    return observation_stub_->GetContour(&ctx, req, &out);
+  }
+  grpc::Status clear_scene(std::uint32_t address) {
+    grpc::ClientContext ctx;
+    v1::StationRequest req;
+    req.set_address(address);
+    return device_stub_->ClearScene(&ctx, req, &empty_);
+  }
+  grpc::Status pc_adapter(bool attached) {
+    grpc::ClientContext ctx;
+    v1::SetPcAdapterRequest req;
+    req.set_address(4);
+    req.set_attached(attached);
+    return device_stub_->SetPcAdapter(&ctx, req, &empty_);
+  }
+  grpc::Status switches(std::uint32_t address, std::uint32_t high, std::uint32_t low) {
+    grpc::ClientContext ctx;
+    v1::SetAddressSwitchesRequest req;
+    req.set_address(address);
+    req.set_high(high);
+    req.set_low(low);
+    return device_stub_->SetAddressSwitches(&ctx, req, &empty_);
+  }
+  grpc::Status fault(bool inject, v1::Fault which) {
+    grpc::ClientContext ctx;
+    v1::FaultRequest req;
+    req.set_address(4);
+    req.set_fault(which);
+    return inject ? device_stub_->InjectFault(&ctx, req, &empty_)
+                  : device_stub_->ClearFault(&ctx, req, &empty_);
+  }
+  v1::ListDevicesResponse devices() {
+    grpc::ClientContext ctx;
+    v1::ListDevicesResponse out;
+    EXPECT_TRUE(device_stub_->ListDevices(&ctx, v1::ListDevicesRequest{}, &out).ok());
+    return out;
+  }
+  double now_s() {
+    grpc::ClientContext ctx;
+    v1::TimeResponse t;
+    EXPECT_TRUE(time_stub_->Now(&ctx, v1::Empty{}, &t).ok());
+    return static_cast<double>(t.now_ns()) / 1e9;
+  }
+};
+
+TEST_F(RpcDeviceTest, ListDevicesNamesTheRunsRs4AndItsPower) {
+  auto list = devices();
+  ASSERT_EQ(list.devices_size(), 1);
+  EXPECT_EQ(list.devices(0).address(), 4U);
+  EXPECT_EQ(list.devices(0).kind(), "rs4");
+  EXPECT_TRUE(list.devices(0).powered());
+  ASSERT_TRUE(set_power(4, false).ok());
+  EXPECT_FALSE(devices().devices(0).powered());
+}
+
+TEST_F(RpcDeviceTest, PowerOffDarkensTheRs4AndPowerOnBootsItAgain) {
+  boot();
+  ASSERT_TRUE(set_power(4, false).ok());
+  auto s = state();
+  EXPECT_FALSE(s.powered());
+  EXPECT_EQ(s.rs4_state(), "off");
+  EXPECT_EQ(s.led(), "dark");
+  EXPECT_FALSE(s.ossd());
+  advance(1000);  // beyond the segment master's DP watchdog: the slave is lost
+  EXPECT_FALSE(state().connected());
+  ASSERT_TRUE(set_power(4, true).ok());
+  EXPECT_EQ(state().rs4_state(), "initialisation");
+  const double on_at = now_s();
+  ASSERT_TRUE(run_until(v1::CONDITION_RS4_MEASURING, 40'000));
+  EXPECT_GE(now_s() - on_at, 29.9);  // the boot until operational [RS4 manual §1]
+  EXPECT_TRUE(state().connected());
+}
+
+TEST_F(RpcDeviceTest, PowerCycleRestartsTheBootAndDropsTheOssds) {
+  boot();
+  ASSERT_TRUE(state().ossd());
+  ASSERT_TRUE(power_cycle(4).ok());
+  const auto s = state();
+  EXPECT_TRUE(s.powered());
+  EXPECT_EQ(s.rs4_state(), "initialisation");
+  EXPECT_FALSE(s.ossd());
+  const double at = now_s();
+  ASSERT_TRUE(run_until(v1::CONDITION_RS4_MEASURING, 40'000));
+  EXPECT_GE(now_s() - at, 29.9);
+}
+
+// A round post of radius 300 mm, 4 m straight ahead: the beam at 90° (segment 264 of 529
+// over 190°, [RS4 manual §5.2.3.4]) meets it at 4000 − 300 = 3700 mm.
+TEST_F(RpcDeviceTest, TheContourShowsTheSceneAndClearSceneRestoresTheEmptyOne) {
+  boot();
+  advance(100);
+  v1::Contour empty;
+  ASSERT_TRUE(contour(4, empty).ok());
+  ASSERT_EQ(empty.mm_size(), 529);
+  grpc::ClientContext ctx;
+  v1::AddObstacleRequest add;
+  add.set_address(4);
+  add.mutable_circle()->mutable_centre()->set_x(0);
+  add.mutable_circle()->mutable_centre()->set_y(4000);
+  add.mutable_circle()->set_radius(300);
+  v1::AddObstacleResponse id;
+  ASSERT_TRUE(device_stub_->AddObstacle(&ctx, add, &id).ok());
+  advance(100);  // two scans of 40 ms
+  v1::Contour post;
+  ASSERT_TRUE(contour(4, post).ok());
+  ASSERT_EQ(post.mm_size(), 529);
+  EXPECT_EQ(post.mm(264), 3700U);
+  EXPECT_GT(post.scan_number(), empty.scan_number());
+  EXPECT_NE(post.mm(264), empty.mm(264));
+  ASSERT_TRUE(clear_scene(4).ok());
+  advance(100);
+  v1::Contour cleared;
+  ASSERT_TRUE(contour(4, cleared).ok());
+  EXPECT_TRUE(
+      std::equal(cleared.mm().begin(), cleared.mm().end(), empty.mm().begin(), empty.mm().end()));
+}
+
+TEST_F(RpcDeviceTest, ThePcAdapterSwitchesTheRs232ThroughAndItsRemovalRequestsTheProxy) {
+  boot();
+  ASSERT_TRUE(pc_adapter(true).ok());
+  advance(100);
+  auto s = state();
+  EXPECT_TRUE(s.pc_adapter_attached());
+  EXPECT_TRUE(s.input().rs232_active());  // bit 3: switched through [RS4 manual §5.1.1]
+  ASSERT_TRUE(pc_adapter(false).ok());
+  advance(100);
+  s = state();
+  EXPECT_FALSE(s.pc_adapter_attached());
+  EXPECT_FALSE(s.input().rs232_active());
+  EXPECT_TRUE(s.input().proxy_request());  // the set may have changed [RS4 manual §7.2]
+}
+
+TEST_F(RpcDeviceTest, AnRs4FaultIsPresentUntilCleared) {
+  boot();
+  ASSERT_TRUE(fault(true, v1::FAULT_DAZZLED).ok());
+  advance(100);
+  auto faults = state().faults_present();
+  EXPECT_EQ(faults.size(), 1);
+  EXPECT_FALSE(state().ossd());
+  ASSERT_TRUE(fault(false, v1::FAULT_DAZZLED).ok());
+  advance(100);
+  EXPECT_EQ(state().faults_present_size(), 0);
+  const auto unspecified = fault(true, v1::FAULT_UNSPECIFIED);
+  EXPECT_EQ(unspecified.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad_field(unspecified), "fault");
+}
+
+TEST_F(RpcDeviceTest, AddressSwitchesTakeEffectAtTheNextPowerOn) {
+  boot();
+  EXPECT_EQ(state().f_dest_add(), 504U);  // 500 + the DP address [RS4 manual §4.5]
+  ASSERT_TRUE(switches(4, 0, 5).ok());
+  advance(100);
+  EXPECT_EQ(state().f_dest_add(), 504U);  // read at power-on only
+  ASSERT_TRUE(power_cycle(4).ok());
+  advance(100);
+  EXPECT_EQ(state().f_dest_add(), 505U);
+}
+
+TEST_F(RpcDeviceTest, ClearedBusFaultsLetTheMasterReachTheStationAgain) {
+  ASSERT_TRUE(run_until(v1::CONDITION_DATA_EXCHANGE, 10'000));
+  grpc::ClientContext ctx;
+  v1::BusFaultRequest drop;
+  drop.set_address(4);
+  drop.set_kind(v1::BUS_FAULT_KIND_DROP);
+  drop.set_direction(v1::DIRECTION_FROM_STATION);
+  drop.set_count(1'000'000);
+  v1::BusFaultResponse id;
+  ASSERT_TRUE(faults_stub_->InjectBusFault(&ctx, drop, &id).ok());
+  advance(1000);  // every reply lost: retries, then the master counts the slave as lost
+  // (The slave still hears the master's requests: only the master's view changes.)
+  EXPECT_FALSE(state().plc().data_exchange());
+  grpc::ClientContext c2;
+  ASSERT_TRUE(faults_stub_->ClearBusFaults(&c2, v1::Empty{}, &empty_).ok());
+  advance(2000);  // the master's restart: diagnosis, Set_Prm, Chk_Cfg, data exchange
+  EXPECT_TRUE(state().plc().data_exchange());
+}
+
+TEST_F(RpcDeviceTest, BadInputGetsASpecificStatus) {
+  auto s = switches(4, 16, 0);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad_field(s), "high");
+  s = switches(4, 0, 16);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad_field(s), "low");
+  s = switches(4, 7, 15);  // 127 must not be used [RS4 manual §4.5]
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad_field(s), "high");
+  v1::Contour c;
+  s = contour(9, c);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::NOT_FOUND);
+  EXPECT_NE(s.error_message().find("station 9"), std::string::npos) << s.error_message();
+  s = set_power(200, true);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad_field(s), "address");
+  EXPECT_EQ(power_cycle(9).error_code(), grpc::StatusCode::NOT_FOUND);
+  EXPECT_EQ(clear_scene(127).error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+}
+
+}  // namespace
+}  // namespace rs4sim::rpc
