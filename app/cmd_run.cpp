@@ -2,6 +2,8 @@
 // --duration), through the runtime's Asio shell (app/shell.h).
 //
 //   rs4sim run --address 4 --link pty                      (the RS4/PROFIsafe, the default)
+//   rs4sim run --address 4 --address 5 --link pty          (two RS4s, two stations on one
+//                                                           link: pty, serial, udp)
 //   rs4sim run --device generic --address 5 --ident 0x1234 --cfg "10 20" --link pty
 //   rs4sim run ... --link serial --port /dev/ttyUSB0 --baud 1.5M
 //   rs4sim run ... --link udp --listen 127.0.0.1:5001 --peer 127.0.0.1:5000
@@ -19,13 +21,14 @@
 
 #include <iostream>
 #include <memory>
+#include <vector>
 
 namespace rs4sim::app {
 namespace {
 
 struct RunOptions {
-  std::string device;  // empty: rs4, or generic when --ident/--cfg describe a generic slave
-  int address = -1;
+  std::string device;          // empty: rs4, or generic when --ident/--cfg describe a generic slave
+  std::vector<int> addresses;  // --address, repeatable (rs4: one RS4 each)
   std::optional<std::string> blocked;
   DeviceOptions device_options;
   LinkOptions link;
@@ -64,7 +67,9 @@ Action setup(CLI::App& cmd) {
   cmd.add_option("--device", o->device,
                  joined(device_names()) + " (default rs4; generic when --ident/--cfg are given)")
       ->check(CLI::IsMember(device_names()));
-  cmd.add_option("--address", o->address, "FDL address 0..125 (rs4: 0..126, default 4)");
+  cmd.add_option("--address", o->addresses,
+                 "FDL address 0..125 (rs4: 0..126, default 4; repeat it for several RS4s on "
+                 "one real-time link)");
   cmd.add_option("--ident", d.ident, "generic: Ident_Number, e.g. 0x1234");
   cmd.add_option("--cfg", d.cfg, "generic: configuration identifiers in hex, e.g. \"10 20\"");
   cmd.add_option("--boot-time", d.boot_time_ms,
@@ -81,7 +86,10 @@ Action setup(CLI::App& cmd) {
                    "with --link memory the simulated clock moves only through the API");
   return [o]() -> int {
     DeviceOptions& dev = o->device_options;
-    if (o->address >= 0) dev.address = o->address;
+    if (!o->addresses.empty()) {
+      dev.address = o->addresses.front();
+      dev.more_addresses.assign(o->addresses.begin() + 1, o->addresses.end());
+    }
     if (o->blocked) dev.blocked = parse_blocked(*o->blocked);
     if (o->device.empty()) o->device = dev.ident.empty() && dev.cfg.empty() ? "rs4" : "generic";
     return run_device(*find_device(o->device), dev, o->link, std::cout);

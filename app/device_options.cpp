@@ -16,6 +16,7 @@ constexpr std::uint32_t kMaxBitRate = 12000000;
 bool given(const DeviceOptions& o, DeviceFlag f) {
   switch (f) {
     case DeviceFlag::kAddress: return o.address.has_value();
+    case DeviceFlag::kAddresses: return !o.more_addresses.empty();
     case DeviceFlag::kIdent: return !o.ident.empty();
     case DeviceFlag::kCfg: return !o.cfg.empty();
     case DeviceFlag::kBootTime: return o.boot_time_ms.has_value();
@@ -37,11 +38,12 @@ bool given(const DeviceOptions& o, DeviceFlag f) {
 }
 
 constexpr DeviceFlag kAllFlags[] = {
-    DeviceFlag::kAddress, DeviceFlag::kIdent,  DeviceFlag::kCfg,       DeviceFlag::kBootTime,
-    DeviceFlag::kBaud,    DeviceFlag::kFormat, DeviceFlag::kElements,  DeviceFlag::kBeams,
-    DeviceFlag::kModel,   DeviceFlag::kMode,   DeviceFlag::kBlocked,   DeviceFlag::kDoor,
-    DeviceFlag::kNode,    DeviceFlag::kRs232,  DeviceFlag::kPcAdapter, DeviceFlag::kCommandTime,
-    DeviceFlag::kResponseTime,
+    DeviceFlag::kAddress,     DeviceFlag::kIdent,        DeviceFlag::kCfg,
+    DeviceFlag::kBootTime,    DeviceFlag::kBaud,         DeviceFlag::kFormat,
+    DeviceFlag::kElements,    DeviceFlag::kBeams,        DeviceFlag::kModel,
+    DeviceFlag::kMode,        DeviceFlag::kBlocked,      DeviceFlag::kDoor,
+    DeviceFlag::kNode,        DeviceFlag::kRs232,        DeviceFlag::kPcAdapter,
+    DeviceFlag::kCommandTime, DeviceFlag::kResponseTime, DeviceFlag::kAddresses,
 };
 
 // A whole decimal number in `text`, or nullopt.
@@ -67,6 +69,7 @@ int blocked_number(std::string_view item, std::string_view number) {
 const char* flag_name(DeviceFlag f) {
   switch (f) {
     case DeviceFlag::kAddress: return "--address";
+    case DeviceFlag::kAddresses: return "--address (repeated)";
     case DeviceFlag::kIdent: return "--ident";
     case DeviceFlag::kCfg: return "--cfg";
     case DeviceFlag::kBootTime: return "--boot-time";
@@ -91,6 +94,11 @@ void refuse_unused(const DeviceOptions& o, const std::string& device,
                    std::initializer_list<DeviceFlag> used) {
   for (const DeviceFlag f : kAllFlags) {
     if (given(o, f) && std::find(used.begin(), used.end(), f) == used.end()) {
+      if (f == DeviceFlag::kAddresses) {
+        throw UsageError("--address given " + std::to_string(o.more_addresses.size() + 1) +
+                         " times: --device " + device +
+                         " is one station; only --device rs4 runs several on one link");
+      }
       throw UsageError(std::string(flag_name(f)) + " is not an option of --device " + device);
     }
   }

@@ -16,6 +16,7 @@ namespace rs4sim::app {
 
 enum class DeviceFlag : std::uint8_t {
   kAddress,
+  kAddresses,  // --address given more than once (DeviceOptions::more_addresses)
   kIdent,
   kCfg,
   kBootTime,
@@ -38,7 +39,8 @@ enum class DeviceFlag : std::uint8_t {
 [[nodiscard]] const char* flag_name(DeviceFlag f);
 
 // Throws UsageError for the first option given that `device` does not use:
-// "--door is not an option of --device polaris".
+// "--door is not an option of --device polaris"; a repeated --address that `device` does not
+// take (kAddresses): "--address given 2 times: --device generic is one station ...".
 void refuse_unused(const DeviceOptions& o, const std::string& device,
                    std::initializer_list<DeviceFlag> used);
 

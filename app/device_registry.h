@@ -47,10 +47,13 @@ namespace rs4sim::app {
 // uses, refuses the others and fills its defaults.
 // Unset options are nullopt/empty; app/device_options.h refuses the ones an entry does not use.
 struct DeviceOptions {
-  std::optional<int> address;       // station address (rs4: the hex switches, default 4)
-  std::string ident;                // generic: Ident_Number, e.g. "0x1234"
-  std::string cfg;                  // generic: configuration identifiers in hex, e.g. "10 20"
-  std::optional<int> boot_time_ms;  // rs4: boot until operational (default 30000)
+  std::optional<int> address;  // station address (rs4: the hex switches, default 4)
+  // rs4: the second and further --address, each one more RS4 on the same link (DeviceFlag::
+  // kAddresses; the other devices are one station and refuse it).
+  std::vector<int> more_addresses;
+  std::string ident;                    // generic: Ident_Number, e.g. "0x1234"
+  std::string cfg;                      // generic: configuration identifiers in hex, e.g. "10 20"
+  std::optional<int> boot_time_ms;      // rs4: boot until operational (default 30000)
   std::optional<int> command_time_ms;   // rs4: RS4 command processing (default 40)
   std::optional<int> response_time_ms;  // rs4: adapter response time (default 10)
   // Byte devices:

@@ -1,5 +1,7 @@
 // Device entry `rs4` (the default): one emulated RS4/PROFIsafe (rs4/device), its ident,
-// F_Dest_Add rule and slave settings from the built-in GSD (rs4/adapter/rs4_gsd.h).
+// F_Dest_Add rule and slave settings from the built-in GSD (rs4/adapter/rs4_gsd.h). On a
+// real-time link `--address` may repeat: one RS4 per address, each its own station on the
+// same line (a machine's 2..4 scanners on one PROFIBUS), served by one gRPC target.
 #include "app/demos.h"
 #include "app/device_options.h"
 #include "app/device_registry.h"
@@ -12,9 +14,11 @@
 #include "rs4/device/rs4_segment.h"
 #include "rs4/rs232/rs232_port.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <ostream>
+#include <vector>
 
 namespace rs4sim::app {
 namespace {
@@ -29,13 +33,26 @@ constexpr int kDefaultCommandTimeMs = 40;
 constexpr int kMaxCommandTimeMs = 120000;
 constexpr int kDefaultResponseTimeMs = 10;  // "Reaktionszeit PROFIsafe-Adapter 10 ms" [RS4 manual]
 
-Rs4DeviceConfig device_config(const DeviceOptions& o) {
+Rs4DeviceConfig device_config(const DeviceOptions& o, int address) {
   Rs4DeviceConfig c;
-  c.switches = rs4::device::switches_for(static_cast<std::uint8_t>(*o.address));
+  c.switches = rs4::device::switches_for(static_cast<std::uint8_t>(address));
   c.boot_time = std::chrono::milliseconds(*o.boot_time_ms);
   c.adapter.rs4_command_time = std::chrono::milliseconds(*o.command_time_ms);
   c.adapter.response_time = std::chrono::milliseconds(*o.response_time_ms);
   return c;
+}
+
+// Every --address of the run, in the order given.
+std::vector<int> all_addresses(const DeviceOptions& o) {
+  std::vector<int> all{*o.address};
+  all.insert(all.end(), o.more_addresses.begin(), o.more_addresses.end());
+  return all;
+}
+
+std::string joined_numbers(const std::vector<int>& numbers) {
+  std::string s;
+  for (const int n : numbers) s += (s.empty() ? "" : ", ") + std::to_string(n);
+  return s;
 }
 
 // The RS4's services of rs4sim.v1 over `target` (docs/rpc.md).
@@ -78,54 +95,75 @@ void print_state(std::ostream& out, const Rs4Device& d) {
       << profisafe::to_string(v.fdevice) << std::endl;
 }
 
+// The RS4s of a real-time run: one Rs4Device and TappedStation per --address. The RS232
+// port (--rs232) is the only RS4's (validate() refuses it with several).
 class Rs4Instance final : public DeviceInstance {
  public:
   explicit Rs4Instance(const DeviceOptions& o)
-      : device_(device_config(o)),
-        address_(static_cast<std::uint8_t>(*o.address)),
-        boot_time_ms_(*o.boot_time_ms),
-        attached_at_start_(o.pc_adapter == "attached") {
+      : boot_time_ms_(*o.boot_time_ms), attached_at_start_(o.pc_adapter == "attached") {
+    for (const int a : all_addresses(o)) {
+      rs4s_.push_back(std::make_unique<Rs4>(device_config(o, a), static_cast<std::uint8_t>(a)));
+    }
     if (!o.rs232.empty()) {
       auto choice = rs232_choice(o.rs232);
       rs232_path_ = choice.path;
-      port_.emplace(device_.adapter(), choice.options);
+      port_.emplace(rs4s_.front()->device.adapter(), choice.options);
     }
   }
-  std::vector<dp::Station*> stations() override { return {&tap_}; }
+  std::vector<dp::Station*> stations() override {
+    std::vector<dp::Station*> out;
+    for (const auto& r : rs4s_) out.push_back(&r->tap);
+    return out;
+  }
   std::optional<SidePort> side_port() override {
     if (!port_) return std::nullopt;
     return SidePort{"rs232", &*port_, rs232_path_};
   }
   void start(dp::TimePoint now) override {
-    device_.power_on(now);
-    if (attached_at_start_) attach(true, now);
+    for (const auto& r : rs4s_) {
+      r->device.power_on(now);
+      if (attached_at_start_) attach(r->device, true, now);
+    }
   }
+  // SIGUSR1/SIGUSR2: the PC adapter at every RS4 of the run (Device.SetPcAdapter: one).
   void on_user_signal(bool second, dp::TimePoint now) override {
-    attach(!second, now);
-    std::cerr << "rs4sim: PC adapter " << (second ? "removed" : "attached") << std::endl;
+    for (const auto& r : rs4s_) attach(r->device, !second, now);
+    std::cerr << "rs4sim: PC adapter " << (second ? "removed" : "attached")
+              << (rs4s_.size() > 1 ? " (every RS4: " + joined_numbers(addresses()) + ")" : "")
+              << std::endl;
   }
   [[nodiscard]] std::string describe() const override {
     char ident[8];
     std::snprintf(ident, sizeof ident, "%x", rs4::adapter::ident_number());
-    return "RS4/PROFIsafe at address " + std::to_string(address_) + " (ident 0x" + ident +
-           ", F_Dest_Add " + std::to_string(rs4::adapter::f_dest_add(address_)) + ", boot " +
-           std::to_string(boot_time_ms_) + " ms)";
+    std::string f_dest;
+    for (const auto& r : rs4s_) {
+      f_dest += (f_dest.empty() ? "" : ", ") + std::to_string(rs4::adapter::f_dest_add(r->address));
+    }
+    const bool one = rs4s_.size() == 1;
+    return (one ? "RS4/PROFIsafe at address "
+                : std::to_string(rs4s_.size()) + " RS4/PROFIsafe at addresses ") +
+           joined_numbers(addresses()) + " (ident 0x" + ident + ", F_Dest_Add " + f_dest +
+           ", boot " + std::to_string(boot_time_ms_) + " ms)";
   }
   void print_status(std::ostream& out, const dp::link::StationCounters& link) const override {
     (void)link;
-    print_state(out, device_);
+    for (const auto& r : rs4s_) print_state(out, r->device);
     if (port_) {
       const auto& k = port_->counters();
-      out << "rs4 " << int(address_) << " RS232: commands " << k.commands << ", 0x23 sent "
-          << k.measurements << ", refused (password) " << k.wrong_passwords << ", framing errors "
-          << k.framing_errors << ", ignored while detached " << k.ignored_while_detached
-          << std::endl;
+      out << "rs4 " << int(rs4s_.front()->address) << " RS232: commands " << k.commands
+          << ", 0x23 sent " << k.measurements << ", refused (password) " << k.wrong_passwords
+          << ", framing errors " << k.framing_errors << ", ignored while detached "
+          << k.ignored_while_detached << std::endl;
     }
   }
   ServiceList services(const ServiceContext& c) override {
-    target_ = std::make_unique<rpc::DeviceTarget>(device_, address_, c.clock, c.io);
-    target_->route_pc_adapter([this](bool attached, dp::TimePoint now) { attach(attached, now); });
-    tap_.set_hub(target_->events());
+    std::vector<rpc::DeviceTarget::Station> stations;
+    for (const auto& r : rs4s_) stations.push_back({r->address, &r->device});
+    target_ = std::make_unique<rpc::DeviceTarget>(std::move(stations), c.clock, c.io);
+    target_->route_pc_adapter([this](Rs4Device& device, bool attached, dp::TimePoint now) {
+      attach(device, attached, now);
+    });
+    for (const auto& r : rs4s_) r->tap.set_hub(target_->events());
     return rs4_services(*target_, c.executor);
   }
   void stop_services() override {
@@ -133,21 +171,31 @@ class Rs4Instance final : public DeviceInstance {
   }
 
  private:
+  struct Rs4 {
+    Rs4(const Rs4DeviceConfig& config, std::uint8_t a) : device(config), address(a) {}
+    Rs4Device device;
+    rpc::TappedStation tap{device};  // telegrams for the event stream
+    std::uint8_t address;
+  };
+
+  [[nodiscard]] std::vector<int> addresses() const {
+    std::vector<int> out;
+    for (const auto& r : rs4s_) out.push_back(r->address);
+    return out;
+  }
+
   // The reed contact of the optical window: through the RS232 port when it is served (it
-  // opens and closes with it), else the adapter alone.
-  void attach(bool attached, dp::TimePoint now) {
-    if (port_) {
+  // opens and closes with it; the port is the first RS4's), else the adapter alone.
+  void attach(Rs4Device& device, bool attached, dp::TimePoint now) {
+    if (port_ && &device == &rs4s_.front()->device) {
       attached ? port_->attach(now) : port_->detach(now);
     } else {
-      attached ? device_.adapter().attach_pc_adapter(now)
-               : device_.adapter().detach_pc_adapter(now);
+      attached ? device.adapter().attach_pc_adapter(now) : device.adapter().detach_pc_adapter(now);
     }
   }
 
-  Rs4Device device_;
-  rpc::TappedStation tap_{device_};  // telegrams for the event stream
+  std::vector<std::unique_ptr<Rs4>> rs4s_;  // stable addresses: the stations point into them
   std::unique_ptr<rpc::DeviceTarget> target_;
-  std::uint8_t address_;
   int boot_time_ms_;
   bool attached_at_start_;
   std::string rs232_path_;
@@ -178,7 +226,7 @@ class Rs4Simulation final : public SimulatedSegment {
  private:
   static rs4::device::Rs4SegmentConfig segment_config(const DeviceOptions& o) {
     rs4::device::Rs4SegmentConfig c;
-    c.device = device_config(o);
+    c.device = device_config(o, *o.address);
     c.master.address = static_cast<std::uint8_t>(*o.address);
     c.master_address = *o.address == 1 ? 2 : 1;
     c.auto_ack_rei = true;
@@ -195,15 +243,26 @@ void validate(DeviceOptions& o) {
   }
   refuse_unused(
       o, "rs4",
-      {DeviceFlag::kAddress, DeviceFlag::kBootTime, DeviceFlag::kRs232, DeviceFlag::kPcAdapter,
-       DeviceFlag::kCommandTime, DeviceFlag::kResponseTime});
+      {DeviceFlag::kAddress, DeviceFlag::kAddresses, DeviceFlag::kBootTime, DeviceFlag::kRs232,
+       DeviceFlag::kPcAdapter, DeviceFlag::kCommandTime, DeviceFlag::kResponseTime});
   if (!o.rs232.empty()) (void)rs232_choice(o.rs232);
   if (!o.address) o.address = kDefaultAddress;
   if (!o.boot_time_ms) o.boot_time_ms = kDefaultBootTimeMs;
-  if (*o.address < 0 || *o.address > 126) {
-    throw UsageError("--address: " + std::to_string(*o.address) +
-                     " is outside 0..126 (the RS4's switches; 127 and 255 must not be used, "
-                     "[RS4 manual §4.5])");
+  std::vector<int> seen;
+  for (const int a : all_addresses(o)) {
+    if (a < 0 || a > 126) {
+      throw UsageError("--address: " + std::to_string(a) +
+                       " is outside 0..126 (the RS4's switches; 127 and 255 must not be used, "
+                       "[RS4 manual §4.5])");
+    }
+    if (std::find(seen.begin(), seen.end(), a) != seen.end()) {
+      throw UsageError("--address " + std::to_string(a) +
+                       " given twice (each RS4 is a station of its own on the link)");
+    }
+    seen.push_back(a);
+  }
+  if (!o.rs232.empty() && !o.more_addresses.empty()) {
+    throw UsageError("--rs232 serves one RS4; run it with one --address");
   }
   if (*o.boot_time_ms < 0 || *o.boot_time_ms > 600000) {
     throw UsageError("--boot-time: " + std::to_string(*o.boot_time_ms) +
@@ -227,7 +286,17 @@ const DeviceRegistration kRs4({
     40.0,
     validate,
     [](const DeviceOptions& o) { return std::make_unique<Rs4Instance>(o); },
-    [](const DeviceOptions& o) { return std::make_unique<Rs4Simulation>(o); },
+    [](const DeviceOptions& o) {
+      if (!o.more_addresses.empty()) {
+        std::string slaves;
+        for (const int a : all_addresses(o)) slaves += " --slave " + std::to_string(a);
+        throw UsageError(
+            "--link memory simulates one RS4 with our master; for several RS4s "
+            "on the simulated bus use rs4sim master" +
+            slaves + " --link memory (or run these on --link pty|serial|udp)");
+      }
+      return std::make_unique<Rs4Simulation>(o);
+    },
     run_rs4_demo,
 });
 

@@ -22,13 +22,27 @@ void poll_every(const std::shared_ptr<boost::asio::steady_timer>& timer,
 
 }  // namespace
 
-DeviceTarget::DeviceTarget(rs4::device::Rs4Device& device, std::uint8_t address,
-                           const dp::Clock& clock, boost::asio::io_context& io)
-    : device_(device), address_(address), clock_(clock), io_(io) {
-  hub_->watch(address, device);
+DeviceTarget::DeviceTarget(std::vector<Station> stations, const dp::Clock& clock,
+                           boost::asio::io_context& io)
+    : stations_(std::move(stations)), clock_(clock), io_(io) {
+  for (const Station& s : stations_) hub_->watch(s.address, *s.device);
   const auto timer = std::make_shared<boost::asio::steady_timer>(io);
   poll_timer_ = timer;
   poll_every(timer, hub_, clock, stopped_);
+}
+
+std::vector<std::uint8_t> DeviceTarget::addresses() const {
+  std::vector<std::uint8_t> out;
+  out.reserve(stations_.size());
+  for (const Station& s : stations_) out.push_back(s.address);
+  return out;
+}
+
+rs4::device::Rs4Device* DeviceTarget::device(std::uint8_t address) {
+  for (const Station& s : stations_) {
+    if (s.address == address) return s.device;
+  }
+  return nullptr;
 }
 
 // On the loop's thread: a handler already queued sees the flag, a pending wait is cancelled.

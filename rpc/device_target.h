@@ -1,8 +1,9 @@
 #pragma once
-// Rs4Target for an RS4 on a real-time link (rs4sim run --link pty|serial|udp --grpc): the
-// wall clock, timers on the run's io_context; no simulated time and no simulated bus, so
-// SimTime and the bus faults answer FAILED_PRECONDITION. Events: a timer polls the device
-// every kPollPeriod on the loop; telegrams come through a TappedStation (rpc/tapped_station.h).
+// Rs4Target for the RS4s on a real-time link (rs4sim run --link pty|serial|udp --grpc; one
+// or more, `--address` repeated: each a station of its own on the same line): the wall clock,
+// timers on the run's io_context; no simulated time and no simulated bus, so SimTime and the bus
+// faults answer FAILED_PRECONDITION. Events: a timer polls the device every kPollPeriod on the loop
+// (each RS4 watched); telegrams come through each RS4's own TappedStation (rpc/tapped_station.h).
 
 #include "rpc/event_hub.h"
 #include "rpc/rs4_target.h"
@@ -12,6 +13,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace rs4sim::rpc {
 
@@ -19,14 +21,17 @@ class DeviceTarget final : public Rs4Target {
  public:
   static constexpr dp::Duration kPollPeriod = std::chrono::milliseconds(5);
 
+  // One RS4 of the run, by its station address.
+  struct Station {
+    std::uint8_t address;
+    rs4::device::Rs4Device* device;
+  };
+
   // Starts the poll timer on `io` (its handler holds the hub, not this target); stop() ends it,
-  // and the loop cannot finish before.
-  DeviceTarget(rs4::device::Rs4Device& device, std::uint8_t address, const dp::Clock& clock,
-               boost::asio::io_context& io);
-  [[nodiscard]] std::vector<std::uint8_t> addresses() const override { return {address_}; }
-  rs4::device::Rs4Device* device(std::uint8_t address) override {
-    return address == address_ ? &device_ : nullptr;
-  }
+  // and the loop cannot finish before. `stations`: distinct addresses, in the run's order.
+  DeviceTarget(std::vector<Station> stations, const dp::Clock& clock, boost::asio::io_context& io);
+  [[nodiscard]] std::vector<std::uint8_t> addresses() const override;
+  rs4::device::Rs4Device* device(std::uint8_t address) override;
   [[nodiscard]] dp::TimePoint now() const override { return clock_.now(); }
   [[nodiscard]] bool simulated() const override { return false; }
   bool run_until(const std::function<bool()>& done, dp::Duration) override { return done(); }
@@ -34,21 +39,21 @@ class DeviceTarget final : public Rs4Target {
   dp::link::MemoryBus* bus() override { return nullptr; }
   EventHub* events() override { return hub_.get(); }
   void stop();
-  // With the RS4's RS232 port served: attach/detach go through it (rs4sim run --rs232).
-  void route_pc_adapter(std::function<void(bool attached, dp::TimePoint now)> hook) {
-    pc_adapter_hook_ = std::move(hook);
-  }
+  // With the RS4's RS232 port served: attach/detach go through it (rs4sim run --rs232); the
+  // hook gets the RS4 that Device.SetPcAdapter addressed.
+  using PcAdapterHook =
+      std::function<void(rs4::device::Rs4Device& device, bool attached, dp::TimePoint now)>;
+  void route_pc_adapter(PcAdapterHook hook) { pc_adapter_hook_ = std::move(hook); }
   void set_pc_adapter(rs4::device::Rs4Device& device, bool attached, dp::TimePoint now) override {
     if (pc_adapter_hook_) {
-      pc_adapter_hook_(attached, now);
+      pc_adapter_hook_(device, attached, now);
     } else {
       Rs4Target::set_pc_adapter(device, attached, now);
     }
   }
 
  private:
-  rs4::device::Rs4Device& device_;
-  std::uint8_t address_;
+  std::vector<Station> stations_;
   const dp::Clock& clock_;
   boost::asio::io_context& io_;
   std::shared_ptr<EventHub> hub_ = std::make_shared<EventHub>();
@@ -56,7 +61,7 @@ class DeviceTarget final : public Rs4Target {
   // this target (a timer must not outlive its io_context).
   std::weak_ptr<boost::asio::steady_timer> poll_timer_;
   std::shared_ptr<bool> stopped_ = std::make_shared<bool>(false);
-  std::function<void(bool, dp::TimePoint)> pc_adapter_hook_;
+  PcAdapterHook pc_adapter_hook_;
 };
 
 // Rs4Target for an RS-485 device's run (rs4sim run --device gridscan|metron|polaris --grpc):

@@ -73,6 +73,27 @@ TEST(Rs4Run, BadArgumentsAreUsageErrors) {
     o.link.baud = "1234";
   });
   bad([](Rs4RunOptions& o) { o.link.duration = -1; });
+  // Several RS4s (--address repeated): each address checked, none twice, --rs232 with one
+  // only, no in-memory link (rs4sim master --slave ... simulates several).
+  bad([](Rs4RunOptions& o) {
+    o.link.link = "pty";
+    o.device.more_addresses = {5, 127};
+  });
+  bad([](Rs4RunOptions& o) {
+    o.link.link = "pty";
+    o.device.address = 5;
+    o.device.more_addresses = {6, 5};
+  });
+  bad([](Rs4RunOptions& o) {
+    o.link.link = "pty";
+    o.device.more_addresses = {4};  // the default address 4, given again
+  });
+  bad([](Rs4RunOptions& o) {
+    o.link.link = "pty";
+    o.device.more_addresses = {5};
+    o.device.rs232 = "pty";
+  });
+  bad([](Rs4RunOptions& o) { o.device.more_addresses = {5}; });  // --link memory
 }
 
 }  // namespace
