@@ -6,8 +6,9 @@
 #                        1. ctest (RelWithDebInfo), fastest tier first: unit (one library,
 #                           manual clock), integration (master + slaves, CLI), realtime
 #                           (wall clock: pty, UDP, benchmark smoke runs)
-#                        2. the same under AddressSanitizer + UndefinedBehaviorSanitizer
-#                        3. every libFuzzer target, briefly, from its seed corpus (clang)
+#                        2. clang, AddressSanitizer + UndefinedBehaviorSanitizer: unit and
+#                           integration again (one build, the fuzz targets in it too)
+#                        3. every libFuzzer target, briefly, from its seed corpus
 #   ./build.sh build   install + build only
 #
 # Environment: JOBS (parallel build jobs, default: nproc), FUZZ_SECONDS (per fuzz target
@@ -58,23 +59,32 @@ case "$mode" in
     exec build/app/rs4sim demo
     ;;
   test)
+    # Where the time goes is printed per stage (CI's breakdown: docs/ci.md).
+    stage_start=$SECONDS
+    stage_done() { echo "==> $1: $((SECONDS - stage_start)) s"; stage_start=$SECONDS; }
     echo "==> [1/3] build + ctest: unit, integration, realtime"
-    configure_and_build build
+    # -g1 (line tables): every backtrace still has file:line; full -g costs a third of the
+    # build time here for nothing a test run reads.
+    configure_and_build build -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG"
+    stage_done "build"
     for tier in unit integration realtime; do
       echo "--- ctest -L $tier"
       (cd build && ctest -L "^$tier\$" --output-on-failure -j "$JOBS")
+      stage_done "ctest -L $tier"
     done
-    echo "==> [2/3] ASan + UBSan build + ctest"
-    # -O1 -g1 (line tables only): the usual sanitizer setting; compiles about twice as fast as
-    # -O2 -g and still gives file:line in every report.
-    configure_and_build build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRS4SIM_SANITIZE=ON -DRS4SIM_BENCH=OFF \
-      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
+    echo "==> [2/3] clang: ASan + UBSan build (with the libFuzzer targets) + ctest unit, integration"
+    # One clang build serves the sanitizers and the fuzzers. The realtime tier (wall clock:
+    # pty, UDP, processes) ran in stage 1; every unit and integration test runs again here.
+    configure_and_build build-asan -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DRS4SIM_FUZZ=ON -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
+    stage_done "sanitizer build"
     (cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
-       UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j "$JOBS")
-    echo "==> [3/3] libFuzzer targets, ${FUZZ_SECONDS}s each"
-    configure_and_build build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRS4SIM_FUZZ=ON \
-      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
-    fuzz/run_all.sh build-fuzz/fuzz "$FUZZ_SECONDS"
+       UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+       ctest -L '^(unit|integration)$' --output-on-failure -j "$JOBS")
+    stage_done "sanitizer ctest"
+    echo "==> [3/3] libFuzzer targets, ${FUZZ_SECONDS}s each, $JOBS at a time"
+    JOBS=$JOBS fuzz/run_all.sh build-asan/fuzz "$FUZZ_SECONDS"
+    stage_done "fuzz"
     echo "==> all tests passed"
     ;;
 esac

@@ -1,10 +1,12 @@
-// rs4sim — the command-line entry point. See app/command.h for how sub-commands plug in.
-#include "app/command.h"
+// rs4sim — the command-line entry point. See app/cli/command.h for how sub-commands plug in.
+#include "app/cli/command.h"
+#include "app/runtime/run_session.h"
 
 #include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <string>
 
 namespace rs4sim::app {
 std::vector<CommandInfo>& command_registry() {
@@ -15,6 +17,9 @@ std::vector<CommandInfo>& command_registry() {
 
 int main(int argc, char** argv) {
   using namespace rs4sim::app;
+  // Before anything else: a SIGINT/SIGTERM that arrives while a run is still starting waits
+  // for its RunSession's handlers instead of killing the process half set up.
+  block_stop_signals();
   CLI::App cli{
       "rs4sim — virtual PROFIBUS-DP/PROFIsafe slave behaving like a Leuze ROTOSCAN "
       "RS4/PROFIsafe, with a class 1 master and tools"};
@@ -24,12 +29,30 @@ int main(int argc, char** argv) {
   auto& registry = command_registry();
   std::sort(registry.begin(), registry.end(),
             [](const CommandInfo& a, const CommandInfo& b) { return a.name < b.name; });
-  std::vector<std::pair<CLI::App*, Action>> actions;
+  struct Parsed {
+    CLI::App* sub;
+    Action action;
+    Signals signals;
+  };
+  std::vector<Parsed> actions;
   for (auto& info : registry) {
     CLI::App* sub = cli.add_subcommand(info.name, info.description);
-    actions.emplace_back(sub, info.setup(*sub));
+    actions.push_back({sub, info.setup(*sub), info.signals});
   }
 
+  // An unknown first word is named (CLI11 alone would only say that a subcommand is required).
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string word = argv[1];
+    const bool known = std::any_of(registry.begin(), registry.end(),
+                                   [&](const CommandInfo& c) { return c.name == word; });
+    if (!known) {
+      std::string names;
+      for (const auto& c : registry) names += (names.empty() ? "" : ", ") + c.name;
+      std::cerr << "rs4sim: unknown command '" << word << "'; the commands are " << names
+                << " (rs4sim --help)\n";
+      return 2;
+    }
+  }
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -38,8 +61,10 @@ int main(int argc, char** argv) {
     return cli.exit(e) == 0 ? 0 : 2;
   }
   try {
-    for (auto& [sub, action] : actions) {
-      if (sub->parsed()) return action();
+    for (auto& [sub, action, signals] : actions) {
+      if (!sub->parsed()) continue;
+      if (signals == Signals::kDefault) unblock_stop_signals();
+      return action();
     }
   } catch (const UsageError& e) {
     std::cerr << "rs4sim: " << e.what() << "\n";

@@ -56,8 +56,28 @@ Result<std::int64_t> SqliteArchive::station_id(const StationKey& key) {
   s->bind(2, std::int64_t{key.address});
   const int rc = s->step();
   if (rc == SQLITE_ROW) return s->int64(0);
-  if (rc == SQLITE_DONE) return archive_error(ArchiveError::kUnknownStation, label(key));
+  if (rc == SQLITE_DONE) {
+    auto failure = archive_error(ArchiveError::kUnknownStation, label(key));
+    failure.message += " (" + known_stations() + ")";
+    return failure;
+  }
   return db_->error(rc, label(key));
+}
+
+// "the archive has bus demo: 4, 5; bus line2: 7" (or that it has none): what an unknown
+// station's error names, so that a wrong --bus is seen at once.
+std::string SqliteArchive::known_stations() {
+  auto s = db_->statement(
+      "SELECT bus, group_concat(address, ', ') FROM "
+      "(SELECT bus, address FROM stations ORDER BY bus, address) GROUP BY bus ORDER BY bus");
+  if (s.has_error()) return "the archive's stations could not be read";
+  const sqlite::StatementUse& rows = s.value();
+  std::string text;
+  while (rows->step() == SQLITE_ROW) {
+    text += (text.empty() ? "the archive has bus " : "; bus ") + rows->text(0) + ": " +
+            rows->text(1);
+  }
+  return text.empty() ? "the archive holds no stations yet" : text;
 }
 
 Result<std::int64_t> SqliteArchive::upsert_station(const StationKey& key,

@@ -76,6 +76,7 @@ class SqliteArchive final : public ParameterArchive {
   explicit SqliteArchive(std::unique_ptr<sqlite::Database> db) : db_(std::move(db)) {}
 
   Result<std::int64_t> station_id(const StationKey& key);  // kUnknownStation
+  std::string known_stations();
   Result<std::int64_t> upsert_station(const StationKey& key, std::string_view device_type);
   Result<void> see_serial(std::int64_t station, std::string_view serial, Timestamp first,
                           Timestamp last);

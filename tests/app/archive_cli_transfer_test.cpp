@@ -93,6 +93,9 @@ TEST_F(ArchiveCli, UnknownStationAndVersion) {
   r = run("history --bus nowhere --address 4");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("unknown station"), std::string::npos) << r.err;
+  // … and names what the archive has (the fixture's default/4 and line2/5).
+  EXPECT_NE(r.err.find("(the archive has bus default: 4; bus line2: 5)"), std::string::npos)
+      << r.err;
   r = run("diff --bus line2 --address 5");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("has no version before"), std::string::npos) << r.err;

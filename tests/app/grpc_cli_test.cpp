@@ -1,8 +1,8 @@
-// app/grpc_cli.h: the gRPC options of the runtime commands into rpc::ServerOptions — the token
+// app/runtime/grpc_cli.h: the gRPC options of the runtime commands into rpc::ServerOptions — the token
 // file's first line trimmed, RS4SIM_GRPC_TOKEN, the TLS files, and each refusal's message.
-#include "app/grpc_cli.h"
+#include "app/runtime/grpc_cli.h"
 
-#include "app/command.h"
+#include "app/cli/command.h"
 #include "rpc/server.h"
 
 #include <gtest/gtest.h>

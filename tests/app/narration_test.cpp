@@ -1,5 +1,5 @@
-// app/narration.h: the progress line and the --realtime pacing of the narrated demos.
-#include "app/narration.h"
+// app/demos/narration.h: the progress line and the --realtime pacing of the narrated demos.
+#include "app/demos/narration.h"
 
 #include <gtest/gtest.h>
 

@@ -59,6 +59,14 @@ TEST_F(ArchiveErrorsTest, UnknownStation) {
                "current: station bus9/9: unknown station");
   expect_error(archive_->history(nobody), ArchiveError::kUnknownStation, "station bus9/9");
   expect_error(archive_->sync_log(nobody, 10), ArchiveError::kUnknownStation, "bus9/9");
+  // The error names the stations the archive has, so that a wrong --bus shows at once.
+  expect_error(archive_->current(nobody), ArchiveError::kUnknownStation,
+               "unknown station (the archive has bus bus1: 4)");
+  archive_->store(request({"bus1", 12}, make_blob(2))).value();
+  archive_->store(request({"line2", 7}, make_blob(3))).value();
+  before_ = digest(path_);
+  expect_error(archive_->history(nobody), ArchiveError::kUnknownStation,
+               "(the archive has bus bus1: 4, 12; bus line2: 7)");
 }
 
 TEST_F(ArchiveErrorsTest, StationWithoutCurrentSet) {

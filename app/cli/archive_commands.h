@@ -1,0 +1,37 @@
+#pragma once
+// The `rs4sim archive` sub-commands (docs/archive-cli.md). Each returns the exit code;
+// usage errors throw UsageError (exit 2), archive and file errors ArchiveCommandError
+// (exit 1). Nothing is written to the archive unless the command succeeds.
+
+#include "app/cli/archive_support.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace rs4sim::app::archive {
+
+struct ArchiveOptions {
+  CommonOptions common;
+  std::vector<storage::VersionId> ids;  // positional version ids
+  std::string svg;                      // show/diff: --svg FILE
+  std::string file;                     // export/import: the file
+  std::string format;                   // export/import: "binary", "json" or "" (by extension)
+  std::string note;                     // restore: --note
+  std::size_t sync_entries = 20;        // history: --sync-log N
+};
+
+int run_list(const ArchiveOptions& o);
+int run_history(const ArchiveOptions& o);
+int run_show(const ArchiveOptions& o);
+int run_diff(const ArchiveOptions& o);
+int run_export(const ArchiveOptions& o);
+int run_import(const ArchiveOptions& o);
+int run_restore(const ArchiveOptions& o);
+int run_verify(const ArchiveOptions& o);
+
+// The station's current version id, if it has one.
+std::optional<storage::VersionId> current_of(storage::ParameterArchive& archive,
+                                             const storage::StationKey& station);
+
+}  // namespace rs4sim::app::archive

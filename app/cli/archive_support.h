@@ -1,0 +1,78 @@
+#pragma once
+// Shared by the `rs4sim archive` sub-commands (docs/archive-cli.md): the common options
+// (--archive, --json, the station), opening the archive, turning a storage failure into
+// an exception main() reports (exit 1), decoding a stored set, and the JSON/text spelling
+// of the archive's values.
+
+#include "app/cli/command.h"
+#include "rs4/report/json_writer.h"
+#include "rs4/scanner/parameter_set.h"
+#include "storage/sqlite_archive.h"
+
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace rs4sim::app::archive {
+
+// Options every sub-command has. The station is --bus NAME (default "default") and
+// --address N; versions are addressed by their archive-wide id (the ID column).
+struct CommonOptions {
+  std::string archive;  // --archive FILE; empty: storage::default_archive_path()
+  bool json = false;
+  std::string bus = "default";
+  std::optional<int> address;
+};
+
+void add_archive_option(CLI::App& cmd, CommonOptions& o);
+void add_json_option(CLI::App& cmd, CommonOptions& o);
+void add_station_options(CLI::App& cmd, CommonOptions& o);
+
+std::string archive_path(const CommonOptions& o);
+// The station from --bus/--address; UsageError when --address is missing or not 0..126.
+storage::StationKey station_of(const CommonOptions& o, const char* command);
+
+enum class OpenMode : std::uint8_t {
+  kReadOnly,       // the file must exist; nothing is written
+  kWrite,          // the file must exist
+  kCreateOrWrite,  // created when missing (import)
+};
+std::unique_ptr<storage::SqliteArchive> open_archive(const CommonOptions& o, OpenMode mode);
+
+// A storage failure as an exception main() prints ("rs4sim: error: ...", exit 1).
+struct ArchiveCommandError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+template <class T>
+T unwrap(storage::Result<T> result) {
+  if (result.has_error()) throw ArchiveCommandError(result.error().message);
+  if constexpr (!std::is_void_v<T>) return std::move(result).value();
+}
+
+// The stored blob decoded and validated as an RS4 parameter set; the error text otherwise.
+struct DecodedSet {
+  std::optional<rs4::scanner::ParameterSet> set;
+  std::string error;
+};
+DecodedSet decode_set(const storage::ParameterSetRecord& record);
+// Same, but an undecodable set is an error (needed for a diff or a picture).
+rs4::scanner::ParameterSet require_set(const storage::VersionWithSet& v);
+
+std::string source_name(storage::VersionSource s);       // "upload", "download", ...
+std::string direction_name(storage::SyncDirection d);    // "none", "upload", ...
+std::string outcome_name(storage::SyncOutcome o);        // "succeeded", "failed", "aborted"
+std::string iso_time(storage::Timestamp t);              // "2026-12-01T20:43:12.345Z"
+std::string table_time(storage::Timestamp t);            // "2026-12-01 20:43:12"
+std::string crc_hex(std::uint32_t crc);                  // "0x1A2B3C4D"
+std::string station_text(const storage::StationKey& s);  // "default/4"
+storage::Timestamp now();
+
+void write_version(rs4::report::JsonWriter& w, const storage::VersionInfo& v);
+void write_station_key(rs4::report::JsonWriter& w, const storage::StationKey& s);
+
+// Writes `text` to `path` through a temporary file in the same directory and a rename,
+// so a reader never sees half a file; ArchiveCommandError on failure.
+void write_file_atomically(const std::string& path, std::string_view text);
+
+}  // namespace rs4sim::app::archive

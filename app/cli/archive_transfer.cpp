@@ -1,0 +1,136 @@
+// `rs4sim archive export|import|restore|verify` (docs/archive-cli.md). The export file is
+// storage/archive_file.h's: protobuf binary, or protobuf's JSON mapping.
+#include "app/cli/archive_commands.h"
+#include "storage/archive_file.h"
+
+#include <fstream>
+#include <iostream>
+#include <iterator>
+
+namespace rs4sim::app::archive {
+namespace {
+
+using rs4::report::JsonWriter;
+
+bool is_json_format(const ArchiveOptions& o, const char* command) {
+  if (o.file.empty()) throw UsageError(std::string(command) + ": needs FILE");
+  if (o.format == "json") return true;
+  if (o.format == "binary") return false;
+  if (!o.format.empty()) {
+    throw UsageError(std::string(command) + ": --format must be binary or json, got '" + o.format +
+                     "'");
+  }
+  const auto dot = o.file.rfind('.');
+  return dot != std::string::npos && o.file.substr(dot) == ".json";
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ArchiveCommandError("cannot read " + path);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw ArchiveCommandError("cannot read " + path);
+  return text;
+}
+
+std::size_t version_count(const storage::Snapshot& s) {
+  std::size_t n = 0;
+  for (const auto& station : s.stations) n += station.versions.size();
+  return n;
+}
+
+}  // namespace
+
+int run_export(const ArchiveOptions& o) {
+  const bool json = is_json_format(o, "archive export");
+  auto a = open_archive(o.common, OpenMode::kReadOnly);
+  const auto snapshot = unwrap(a->export_snapshot(now()));
+  if (json) {
+    write_file_atomically(o.file, storage::encode_json(snapshot));
+  } else {
+    const auto bytes = storage::encode_binary(snapshot);
+    write_file_atomically(o.file, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
+  }
+  const char* format = json ? "json" : "binary";
+  if (o.common.json) {
+    JsonWriter w(2);
+    w.begin_object().field("archive", archive_path(o.common)).field("file", o.file);
+    w.field("format", format).field("stations", snapshot.stations.size());
+    w.field("versions", version_count(snapshot)).field("sets", snapshot.sets.size());
+    std::cout << w.end_object().str() << "\n";
+  } else {
+    std::cout << "exported " << snapshot.stations.size() << " stations, " << version_count(snapshot)
+              << " versions, " << snapshot.sets.size() << " sets to " << o.file << " (" << format
+              << ")\n";
+  }
+  return 0;
+}
+
+int run_import(const ArchiveOptions& o) {
+  const bool json = is_json_format(o, "archive import");
+  const std::string content = read_file(o.file);
+  // Decode (and so validate) before the archive is opened: a bad file creates nothing.
+  auto decoded = json
+                     ? storage::decode_json(content)
+                     : storage::decode_binary(
+                           {reinterpret_cast<const std::uint8_t*>(content.data()), content.size()});
+  if (decoded.has_error()) {
+    throw ArchiveCommandError("import " + o.file + ": " + decoded.error().message);
+  }
+  auto a = open_archive(o.common, OpenMode::kCreateOrWrite);
+  auto imported = a->import_snapshot(decoded.value());
+  if (imported.has_error()) {
+    throw ArchiveCommandError("import " + o.file + ": " + imported.error().message);
+  }
+  const auto& s = imported.value();
+  if (o.common.json) {
+    JsonWriter w(2);
+    w.begin_object().field("archive", archive_path(o.common)).field("file", o.file);
+    w.field("stations", s.stations).field("versions", s.versions).field("new_sets", s.new_sets);
+    w.field("sync_log_entries", s.sync_log_entries);
+    std::cout << w.end_object().str() << "\n";
+  } else {
+    std::cout << "imported " << s.stations << " stations, " << s.versions << " versions ("
+              << s.new_sets << " new sets), " << s.sync_log_entries << " sync log entries from "
+              << o.file << "\n";
+  }
+  return 0;
+}
+
+int run_restore(const ArchiveOptions& o) {
+  if (o.ids.size() != 1) throw UsageError("archive restore: needs exactly one version id");
+  auto a = open_archive(o.common, OpenMode::kWrite);
+  const auto v = unwrap(a->restore(o.ids[0], now(), o.note));
+  if (o.common.json) {
+    JsonWriter w(2);
+    w.begin_object().field("archive", archive_path(o.common)).key("version");
+    write_version(w, v);
+    std::cout << w.end_object().str() << "\n";
+  } else {
+    std::cout << "version " << v.id << " (" << station_text(v.station) << " #" << v.number
+              << ") restores version " << o.ids[0] << ": current, pending download at the "
+              << "station's next sync\n";
+  }
+  return 0;
+}
+
+int run_verify(const ArchiveOptions& o) {
+  auto a = open_archive(o.common, OpenMode::kReadOnly);
+  const auto report = unwrap(a->check_integrity());
+  const auto stations = unwrap(a->stations()).size();
+  if (o.common.json) {
+    JsonWriter w(2);
+    w.begin_object().field("archive", archive_path(o.common)).field("ok", report.ok());
+    w.field("stations", stations).key("problems").begin_array();
+    for (const auto& p : report.problems) w.value(p);
+    std::cout << w.end_array().end_object().str() << "\n";
+  } else if (report.ok()) {
+    std::cout << "archive " << archive_path(o.common) << ": ok (" << stations << " stations)\n";
+  } else {
+    std::cerr << "archive " << archive_path(o.common) << ": " << report.problems.size()
+              << " problem(s)\n";
+    for (const auto& p : report.problems) std::cerr << "  " << p << "\n";
+  }
+  return report.ok() ? 0 : 1;
+}
+
+}  // namespace rs4sim::app::archive

@@ -1,0 +1,69 @@
+// `rs4sim archive list|show|history|diff|export|import|restore|verify`: the parameter
+// archive (docs/storage.md) for people and scripts (docs/archive-cli.md).
+#include "app/cli/archive_commands.h"
+#include "app/cli/command.h"
+
+#include <memory>
+
+namespace rs4sim::app {
+namespace {
+
+using archive::ArchiveOptions;
+
+void no_options(CLI::App&, ArchiveOptions&) {}
+
+// Every archive sub-command: --archive FILE and --json.
+void common_options(CLI::App& sub, ArchiveOptions& o) {
+  archive::add_archive_option(sub, o.common);
+  archive::add_json_option(sub, o.common);
+}
+
+void history_options(CLI::App& sub, ArchiveOptions& o) {
+  archive::add_station_options(sub, o.common);
+  sub.add_option("--sync-log", o.sync_entries, "newest sync log entries shown")
+      ->capture_default_str();
+}
+
+void show_options(CLI::App& sub, ArchiveOptions& o) {
+  sub.add_option("ID", o.ids, "version id (the ID column); without it: the station's current");
+  archive::add_station_options(sub, o.common);
+  sub.add_option("--svg", o.svg, "also write an SVG picture of the field pairs to FILE");
+}
+
+void diff_options(CLI::App& sub, ArchiveOptions& o) {
+  sub.add_option("ID", o.ids,
+                 "OLD NEW: two version ids; OLD alone: against its station's current; none: "
+                 "the station's current against its previous version (--address)");
+  archive::add_station_options(sub, o.common);
+  sub.add_option("--svg", o.svg, "also write an SVG picture of both versions to FILE");
+}
+
+void file_options(CLI::App& sub, ArchiveOptions& o) {
+  sub.add_option("FILE", o.file, "the export file (.json: protobuf JSON; else binary)");
+  sub.add_option("--format", o.format, "binary or json (default: by the file's extension)");
+}
+
+void restore_options(CLI::App& sub, ArchiveOptions& o) {
+  sub.add_option("ID", o.ids, "the version id to restore (the ID column)");
+  sub.add_option("--note", o.note, "note stored with the new version");
+}
+
+constexpr SubCommand<ArchiveOptions> kSubCommands[] = {
+    {"list", "Stations with their current version", no_options, archive::run_list},
+    {"history", "Versions and sync log of one station", history_options, archive::run_history},
+    {"show", "One version with its decoded parameters", show_options, archive::run_show},
+    {"diff", "Field-level difference of two versions", diff_options, archive::run_diff},
+    {"export", "Write the whole archive to a file", file_options, archive::run_export},
+    {"import", "Add the contents of an export file", file_options, archive::run_import},
+    {"restore", "Make an old version current again (pending download)", restore_options,
+     archive::run_restore},
+    {"verify", "Integrity check of the archive (exit 1 on problems)", no_options,
+     archive::run_verify},
+};
+
+const CommandRegistration kRegistration{
+    "archive", "The parameter archive: list, show, history, diff, export, import, restore, verify",
+    [](CLI::App& cmd) -> Action { return sub_commands(cmd, kSubCommands, common_options); }};
+
+}  // namespace
+}  // namespace rs4sim::app

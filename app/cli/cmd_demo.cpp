@@ -1,0 +1,51 @@
+// `rs4sim demo`: the narrated scenario of a registered device (app/devices/device_registry.h) on
+// the simulated bus; the RS4's by default. Exits 0 when every step did what the manual or
+// the spec says and 1 otherwise (CI runs it).
+#include "app/cli/command.h"
+#include "app/runtime/archive_path.h"
+#include "app/devices/device_registry.h"
+#include "app/runtime/grpc_cli.h"
+#include "app/runtime/run_session.h"
+#include "rpc/server.h"
+
+#include <unistd.h>
+
+#include <iostream>
+#include <memory>
+
+namespace rs4sim::app {
+namespace {
+
+const CommandRegistration kDemo(
+    "demo", "narrated RS4/PROFIsafe scenario (or --device generic) on the simulated bus",
+    [](CLI::App& cmd) {
+      auto device = std::make_shared<std::string>("rs4");
+      cmd.add_option("--device", *device, "rs4 (default) | generic")
+          ->check(CLI::IsMember(device_names()));
+      auto options = std::make_shared<DemoOptions>();
+      add_capture_options(cmd, options->capture);
+      cmd.add_option("--archive", options->archive,
+                     "rs4: keep the sets the demo's proxy archives in this SQLite file");
+      cmd.add_flag("--realtime", options->realtime,
+                   "run at the device's real timing (the RS4 demo takes about a minute)");
+      add_grpc_options(cmd, options->grpc,
+                       "rs4: the read-only Observation service while the demo runs; implies "
+                       "--realtime");
+      return [device, options]() {
+        const DeviceEntry& entry = *find_device(*device);
+        if (!entry.demo) throw UsageError("--device " + *device + " has no demo yet");
+        checked_archive_path(options->archive);
+        if (!options->grpc.empty()) {
+          if (*device != "rs4") throw UsageError("--grpc: only the RS4 demo serves the API");
+          (void)grpc_server_options(options->grpc);  // unreadable files, missing TLS/token
+          options->realtime = true;  // on the simulated clock the demo is over at once
+        }
+        options->live_progress = isatty(STDOUT_FILENO) != 0;
+        RunSession session(std::cout);
+        return entry.demo(session, std::cout, *options);
+      };
+    },
+    Signals::kSession);
+
+}  // namespace
+}  // namespace rs4sim::app

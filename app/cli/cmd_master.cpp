@@ -1,0 +1,207 @@
+// `rs4sim master`: the master side users deploy — our class 1 master and a PROFIsafe
+// F-host per RS4, configured from the GSD, on any link (app/runtime/master_service.h, docs/master.md).
+//
+//   rs4sim master --slave 4 --link serial --port /dev/pts/3       (an `rs4sim run --link pty`)
+//   rs4sim master --slave 4 --slave 5 --link pty                  (prints its pty path first)
+//   rs4sim master --slave 4 --link udp --listen 127.0.0.1:5000 --peer 127.0.0.1:5001
+//   rs4sim master --slave 4 --slave 5 --link memory --json        (simulated RS4s, simulated time)
+//   rs4sim master --slave 4 --link serial --port /dev/pts/3 --grpc 127.0.0.1:0  (Proxy, Archive)
+#include "app/cli/command.h"
+#include "app/runtime/archive_path.h"
+#include "app/runtime/grpc_cli.h"
+#include "app/cli/link_cli.h"
+#include "app/runtime/master_proxy.h"
+#include "app/runtime/master_service.h"
+#include "dp/master/master_config.h"
+#include "rs4/adapter/cyclic_bytes.h"
+#include "storage/sqlite_archive.h"
+
+#include <charconv>
+#include <iostream>
+#include <memory>
+
+namespace rs4sim::app {
+namespace {
+
+struct MasterCliOptions {
+  std::vector<int> slaves;
+  int address = 1;
+  std::optional<int> f_wd_time_ms;
+  std::optional<int> f_source_add;
+  std::vector<std::string> params;  // NAME=VALUE
+  int dp_watchdog_ms = 200;
+  std::optional<int> slot_time_bits;
+  int cycle_ms = 10;
+  int field_pair = 1;
+  bool proxy_enable = false;
+  bool no_proxy = false;
+  std::string archive;  // empty: storage::default_archive_path()
+  ProxyPluginOptions proxy;
+  bool manual_ack = false;
+  MasterServiceOptions service;
+  LinkOptions link;
+};
+
+gsd::ParamOverride parse_param(const std::string& text) {
+  const auto eq = text.find('=');
+  const std::string name = text.substr(0, eq);
+  std::int64_t value = 0;
+  const char* first = eq == std::string::npos ? nullptr : text.data() + eq + 1;
+  const char* last = text.data() + text.size();
+  const auto [p, ec] = first == nullptr
+                           ? std::from_chars_result{nullptr, std::errc::invalid_argument}
+                           : std::from_chars(first, last, value);
+  if (name.empty() || ec != std::errc{} || p != last || first == last) {
+    throw UsageError("--param " + text +
+                     ": use NAME=VALUE with a decimal value, e.g. F_WD_Time=200");
+  }
+  return {name, value};
+}
+
+std::uint8_t checked(int value, int low, int high, const std::string& what) {
+  if (value < low || value > high) {
+    throw UsageError(what + ": " + std::to_string(value) + " is outside " + std::to_string(low) +
+                     ".." + std::to_string(high));
+  }
+  return static_cast<std::uint8_t>(value);
+}
+
+// Slot time (bit times) of a real-time link: the OS's latency, not the wire's, decides
+// there, so the longest slot time [IEC 61158-4-3 bus parameters, timing] allows.
+constexpr std::uint32_t kRealtimeSlotBits = 16383;
+
+dp::master::BusParameters bus_parameters(const MasterCliOptions& o) {
+  const auto baud = dp::parse_baud_rate(o.link.baud);
+  if (!baud) {
+    throw UsageError("--baud " + o.link.baud + ": not a PROFIBUS rate; use one of " +
+                     dp::standard_baud_rate_list());
+  }
+  auto bus = dp::master::BusParameters::defaults_for(*baud);
+  if (is_realtime(o.link.link)) bus.tsl = kRealtimeSlotBits;
+  if (o.slot_time_bits) bus.tsl = static_cast<std::uint32_t>(*o.slot_time_bits);
+  if (dp::master::validate(bus)) {
+    throw UsageError(
+        "--slot-time " + std::to_string(bus.tsl) +
+        ": outside max TSDR + 15 .. 16383 bit ([IEC 61158-4-3 bus parameters, timing])");
+  }
+  return bus;
+}
+
+rs4::device::Rs4MasterStationConfig station_config(const MasterCliOptions& o) {
+  rs4::device::Rs4MasterStationConfig c;
+  c.master_address = checked(o.address, 0, 126, "--address");
+  c.bus = bus_parameters(o);
+  c.cycle_target = std::chrono::milliseconds(checked(o.cycle_ms, 1, 255, "--cycle"));
+  c.auto_ack_rei = !o.manual_ack;
+  c.output_byte = checked(o.field_pair, 1, 4, "--field-pair");
+  if (o.proxy_enable && o.no_proxy) c.output_byte |= rs4::adapter::kOutputProxyEnable;
+  const std::vector<int> slaves = o.slaves.empty() ? std::vector<int>{4} : o.slaves;
+  for (const int s : slaves) {
+    rs4::device::Rs4MasterOptions r;
+    // [RS4 manual §4.5]: 0..126 on the switches; the master polls 0..125.
+    r.address = checked(s, 0, 125, "--slave");
+    for (const auto& earlier : c.slaves) {
+      if (earlier.address == r.address)
+        throw UsageError("--slave " + std::to_string(s) + " given twice");
+    }
+    if (r.address == c.master_address) {
+      throw UsageError("--slave " + std::to_string(s) + ": that is the master's --address");
+    }
+    r.dp_watchdog = std::chrono::milliseconds(o.dp_watchdog_ms);
+    if (o.f_wd_time_ms) r.f_wd_time_ms = static_cast<std::uint16_t>(*o.f_wd_time_ms);
+    if (o.f_source_add) r.overrides.push_back({"F_Source_Add", *o.f_source_add});
+    for (const auto& p : o.params) r.overrides.push_back(parse_param(p));
+    c.slaves.push_back(r);
+  }
+  return c;
+}
+
+int run(MasterCliOptions& o) {
+  validate(o.link);
+  o.service.station = station_config(o);
+  if (o.proxy_enable && !o.no_proxy) {
+    throw UsageError("--proxy-enable is for --no-proxy runs; the proxy sets Proxy-Enable itself");
+  }
+  if (o.proxy.max_parallel == 0) throw UsageError("--max-syncs must be at least 1");
+  if (!o.link.grpc.empty() && o.link.link == LinkKind::kMemory) {
+    throw UsageError(
+        "--grpc: the master serves its API on a real-time link (pty, serial, "
+        "udp); for a simulated bus under API control use `rs4sim run --link "
+        "memory --grpc`");
+  }
+  if (!o.link.grpc.empty() && o.no_proxy) {
+    throw UsageError("--grpc serves the proxy and its archive, which --no-proxy turns off");
+  }
+  std::unique_ptr<storage::SqliteArchive> archive;
+  std::unique_ptr<ProxyPlugin> proxy;
+  std::vector<MasterPlugin*> plugins;
+  if (!o.no_proxy) {
+    const std::string path =
+        o.archive.empty() ? storage::default_archive_path().string()
+                          : checked_archive_path(o.archive);
+    auto opened = storage::SqliteArchive::open(path);
+    if (!opened) {
+      std::cerr << "rs4sim: archive " << path << ": " << opened.error().message << std::endl;
+      return 1;
+    }
+    archive = std::move(opened).value();
+    proxy = std::make_unique<ProxyPlugin>(*archive, o.proxy);
+    plugins.push_back(proxy.get());
+  }
+  try {
+    return run_master(o.service, o.link, std::cout, plugins);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());  // a GSD override the GSD refuses, a duplicate --slave
+  } catch (const std::system_error& e) {
+    throw UsageError(std::string("master configuration: ") + e.what());
+  }
+}
+
+Action setup(CLI::App& cmd) {
+  auto o = std::make_shared<MasterCliOptions>();
+  LinkOptions& l = o->link;
+  cmd.add_option("--slave", o->slaves, "an RS4's DP address; repeat for more (default 4)");
+  cmd.add_option("--address", o->address, "the master's own FDL address (default 1)");
+  cmd.add_option("--f-wd-time", o->f_wd_time_ms, "F_WD_Time in ms for every RS4 (default 150)")
+      ->check(CLI::Range(1, 65535));
+  cmd.add_option("--f-source-add", o->f_source_add, "F_Source_Add (GSD default otherwise)")
+      ->check(CLI::Range(1, 65534));
+  cmd.add_option("--param", o->params,
+                 "GSD parameter override NAME=VALUE for every RS4, e.g. F_SIL=2; repeatable");
+  cmd.add_option("--dp-watchdog", o->dp_watchdog_ms, "DP watchdog in ms (Set_Prm, default 200)")
+      ->check(CLI::Range(10, 650250));
+  cmd.add_option("--slot-time", o->slot_time_bits,
+                 "slot time TSL in bit times (default: the baud's table value on memory, "
+                 "16383 on real-time links)");
+  cmd.add_option("--cycle", o->cycle_ms, "target master cycle in ms (default 10)");
+  cmd.add_option("--field-pair", o->field_pair, "field pair 1..4 in the output byte (default 1)");
+  cmd.add_flag("--no-proxy", o->no_proxy,
+               "run without the parameter proxy (default: the proxy syncs every RS4's set with "
+               "the archive and sets Proxy-Enable)");
+  cmd.add_flag("--proxy-enable", o->proxy_enable,
+               "with --no-proxy: set Proxy-Enable anyway (the RS4s then wait for a proxy)");
+  cmd.add_option("--archive", o->archive,
+                 "the parameter archive (default $XDG_DATA_HOME/rs4sim/archive.sqlite3)");
+  cmd.add_option("--bus", o->proxy.bus, "the bus name under which the archive keeps the RS4s")
+      ->capture_default_str();
+  cmd.add_option("--max-syncs", o->proxy.max_parallel,
+                 "syncs at a time on this bus (default 1, as the manual advises)");
+  cmd.add_flag("--manual-ack", o->manual_ack,
+               "keep ACK_REQ standing after a PROFIsafe fault (default: acknowledge at once)");
+  cmd.add_option("--boot-time", o->service.simulated_boot_ms,
+                 "memory: boot time of the simulated RS4s in ms (default 30000)")
+      ->check(CLI::Range(0, 600000));
+  cmd.add_flag("--json", o->service.json, "one JSON object per line for every event");
+  add_link_options(cmd, l, "the RS4's process");
+  add_grpc_options(cmd, l.grpc, "the Proxy and Archive services (real-time links)");
+  return [o]() -> int { return run(*o); };
+}
+
+const CommandRegistration kMaster(
+    "master",
+    "run our class 1 master + PROFIsafe F-host for RS4s on a link (memory, pty, serial, udp)",
+    setup,
+    Signals::kSession);
+
+}  // namespace
+}  // namespace rs4sim::app

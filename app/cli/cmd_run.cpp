@@ -1,0 +1,104 @@
+// `rs4sim run`: one registered device (app/devices/device_registry.h) on a link, until Ctrl-C (or
+// --duration), through the runtime's Asio shell (app/runtime/shell.h).
+//
+//   rs4sim run --address 4 --link pty                      (the RS4/PROFIsafe, the default)
+//   rs4sim run --address 4 --address 5 --link pty          (two RS4s, two stations on one
+//                                                           link: pty, serial, udp)
+//   rs4sim run --device generic --address 5 --ident 0x1234 --cfg "10 20" --link pty
+//   rs4sim run ... --link serial --port /dev/ttyUSB0 --baud 1.5M
+//   rs4sim run ... --link udp --listen 127.0.0.1:5001 --peer 127.0.0.1:5000
+//   rs4sim run ... --link memory --duration 10     (our master on the in-memory bus,
+//                                                   simulated time)
+//   rs4sim run --device <byte device> --link pty --baud 19200 --blocked 9-13,25-34
+//                                                  (the RS-485 devices: pty, serial, udp)
+// With --link pty the first line on stdout is the pty's slave path for the DP master (or
+// the byte device's client).
+#include "app/cli/command.h"
+#include "app/devices/device_options.h"
+#include "app/runtime/grpc_cli.h"
+#include "app/cli/link_cli.h"
+#include "app/runtime/shell.h"
+
+#include <iostream>
+#include <memory>
+#include <vector>
+
+namespace rs4sim::app {
+namespace {
+
+struct RunOptions {
+  std::string device;          // empty: rs4, or generic when --ident/--cfg describe a generic slave
+  std::vector<int> addresses;  // --address, repeatable (rs4: one RS4 each)
+  std::optional<std::string> blocked;
+  DeviceOptions device_options;
+  LinkOptions link;
+};
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string s;
+  for (const auto& n : names) s += (s.empty() ? "" : " | ") + n;
+  return s;
+}
+
+// The byte devices' options (app/devices/device_options.h; each entry refuses those it does not use).
+void add_byte_device_options(CLI::App& cmd, RunOptions& o) {
+  DeviceOptions& d = o.device_options;
+  cmd.add_option("--elements", d.elements, "byte devices: element count");
+  cmd.add_option("--beams", d.beams, "byte devices: beam count");
+  cmd.add_option("--model", d.model, "byte devices: model");
+  cmd.add_option("--mode", d.mode, "byte devices: operating/reporting mode");
+  cmd.add_option("--blocked", o.blocked,
+                 "byte devices: interrupted elements/beams at start, 1-based, e.g. 9-13,25-34");
+  cmd.add_option("--door", d.door, "byte devices: door position at start");
+  cmd.add_option("--node", d.node, "byte devices: node number");
+  cmd.add_option("--format", d.format,
+                 "byte devices: character format override, e.g. 8E1 (--baud: the bit rate)");
+  cmd.add_option("--rs232", d.rs232,
+                 "rs4: serve the RS232 interface behind the PC adapter: pty | serial:DEVICE[@BAUD] "
+                 "(SIGUSR1 attaches the PC adapter, SIGUSR2 removes it)");
+  cmd.add_option("--pc-adapter", d.pc_adapter, "rs4: the PC adapter at start: attached | detached")
+      ->check(CLI::IsMember({"attached", "detached"}));
+}
+
+Action setup(CLI::App& cmd) {
+  auto o = std::make_shared<RunOptions>();
+  DeviceOptions& d = o->device_options;
+  LinkOptions& l = o->link;
+  cmd.add_option("--device", o->device,
+                 joined(device_names()) + " (default rs4; generic when --ident/--cfg are given)")
+      ->check(CLI::IsMember(device_names()));
+  cmd.add_option("--address", o->addresses,
+                 "FDL address 0..125 (rs4: 0..126, default 4; repeat it for several RS4s on "
+                 "one real-time link)");
+  cmd.add_option("--ident", d.ident, "generic: Ident_Number, e.g. 0x1234");
+  cmd.add_option("--cfg", d.cfg, "generic: configuration identifiers in hex, e.g. \"10 20\"");
+  cmd.add_option("--boot-time", d.boot_time_ms,
+                 "rs4: boot time until operational in ms (default 30000)");
+  cmd.add_option("--command-time", d.command_time_ms,
+                 "rs4: how long the RS4 processes a command in ms, 0..120000 (default 40; the "
+                 "manual: up to 2 minutes)");
+  cmd.add_option("--adapter-response-time", d.response_time_ms,
+                 "rs4: the PROFIsafe adapter's response time in ms, 0..1000 (default 10, as "
+                 "the manual's technical data)");
+  add_byte_device_options(cmd, *o);
+  add_link_options(cmd, l, "the master");
+  add_grpc_options(cmd, l.grpc,
+                   "with --link memory the simulated clock moves only through the API");
+  return [o]() -> int {
+    DeviceOptions& dev = o->device_options;
+    if (!o->addresses.empty()) {
+      dev.address = o->addresses.front();
+      dev.more_addresses.assign(o->addresses.begin() + 1, o->addresses.end());
+    }
+    if (o->blocked) dev.blocked = parse_blocked(*o->blocked);
+    if (o->device.empty()) o->device = dev.ident.empty() && dev.cfg.empty() ? "rs4" : "generic";
+    return run_device(*find_device(o->device), dev, o->link, std::cout);
+  };
+}
+
+const CommandRegistration kRun("run", "run a virtual DP slave on a link (memory, pty, serial, udp)",
+                               setup,
+    Signals::kSession);
+
+}  // namespace
+}  // namespace rs4sim::app

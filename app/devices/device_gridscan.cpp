@@ -1,0 +1,126 @@
+// Device entry `gridscan`: the virtual CEDES GridScan/Pro SI with RS485 interface, type
+// suffix RC (gridscan/device.h, docs/gridscan.md), on pty, serial or UDP at the fixed
+// 115200 8N1 ([GridScan manual §9.1]). The options fill a gridscan::Options; its validate()
+// has the last word.
+//
+//   rs4sim run --device gridscan --link pty --elements 22 --mode blanking --door 10 --blocked 3
+#include "app/runtime/usage_error.h"
+#include "app/devices/device_options.h"
+#include "app/devices/device_registry.h"
+#include "gridscan/device.h"
+#include "rpc/device_target.h"
+#include "rpc/line_services.h"
+#include "rpc/rs4_services.h"
+
+#include <chrono>
+#include <ostream>
+
+namespace rs4sim::app {
+namespace {
+
+gridscan::Configuration configuration_of(const std::string& mode) {
+  if (mode.empty() || mode == "blanking") return gridscan::Configuration::kBlanking;
+  if (mode == "static") return gridscan::Configuration::kStatic;
+  throw UsageError("--mode " + mode + ": use blanking or static");
+}
+
+gridscan::Options gridscan_options(const DeviceOptions& o) {
+  gridscan::Options g;
+  if (o.elements) {
+    if (*o.elements < 12 || *o.elements > 60) {
+      throw UsageError("--elements " + std::to_string(*o.elements) +
+                       ": a GridScan edge has 12..60");
+    }
+    g.elements = static_cast<unsigned>(*o.elements);
+  }
+  g.configuration = configuration_of(o.mode);
+  if (o.door) {
+    if (*o.door < 0 || *o.door > static_cast<int>(g.elements)) {
+      throw UsageError("--door " + std::to_string(*o.door) + ": the door position is 0.." +
+                       std::to_string(g.elements) + " (elements below the door edge)");
+    }
+    g.door_position = static_cast<unsigned>(*o.door);
+  }
+  check_blocked(o, static_cast<int>(g.elements), "elements");
+  if (o.blocked) {
+    for (const int e : *o.blocked) g.blocked |= std::uint64_t{1} << static_cast<unsigned>(e - 1);
+  }
+  if (const auto why = g.validate()) throw UsageError("gridscan: " + *why);
+  return g;
+}
+
+std::string mode_name(gridscan::Configuration c) {
+  return c == gridscan::Configuration::kStatic ? "static" : "blanking";
+}
+
+class GridScanInstance final : public DeviceInstance {
+ public:
+  explicit GridScanInstance(const gridscan::Options& o) : options_(o), device_(o) {}
+  std::vector<stream::ByteDevice*> byte_devices() override { return {&tap_}; }
+  void start(dp::TimePoint now) override { device_.power_on(now); }
+  [[nodiscard]] std::string describe() const override {
+    const auto cycle_us =
+        std::chrono::duration_cast<std::chrono::microseconds>(options_.cycle_time()).count();
+    return "GridScan/Pro SI, RC (" + std::to_string(options_.elements) + " elements, " +
+           mode_name(device_.configuration()) + " mode, " +
+           stream::to_string(device_.line_settings()) + ", t_CYCLE " +
+           std::to_string(cycle_us / 1000) + "." + std::to_string(cycle_us % 1000 / 100) + " ms)";
+  }
+  void print_byte_status(std::ostream& out, const stream::ByteCounters& c) const override {
+    const auto& k = device_.counters();
+    out << "gridscan: frames " << k.frames << ", answered " << k.answered
+        << " (communication tests " << k.comm_tests << "), streamed " << k.streamed << ", dropped "
+        << k.dropped() << " (truncated " << k.truncated << ", oversized " << k.oversized
+        << ", sync " << k.bad_sync << ", CRC " << k.bad_crc << ", SeqCnt " << k.bad_seq << ", ID "
+        << k.unknown_id << ", direction " << k.direction_bit << ", busy " << k.busy
+        << ", not ready " << k.not_ready << "), restarts " << k.restarts << ", bytes received "
+        << c.bytes_received << ", sent " << c.bytes_sent << ", link errors " << c.link_errors
+        << std::endl;
+  }
+
+  // rs4sim.v1.GridScan at address 0 (no bus address: the RS485 link is point-to-point,
+  // [GridScan manual §9]), and Observation for the event stream.
+  ServiceList services(const ServiceContext& c) override {
+    target_ = std::make_unique<rpc::LineDeviceTarget>(
+        "gridscan", rpc::gridscan_watcher(kAddress, device_), c.clock, c.io);
+    tap_.set_hub(target_->events(), kAddress);
+    const rpc::LineContext line{c.executor, c.clock, kAddress, tap_, target_->events()};
+    return {std::make_shared<rpc::GridScanService>(line, device_),
+            std::make_shared<rpc::ObservationService>(rpc::Rs4Context{*target_, c.executor})};
+  }
+  void stop_services() override {
+    if (target_) target_->stop();
+  }
+
+ private:
+  static constexpr std::uint8_t kAddress = 0;
+  gridscan::Options options_;
+  gridscan::GridScanDevice device_;
+  rpc::TappedByteDevice tap_{device_};
+  std::unique_ptr<rpc::LineDeviceTarget> target_;
+};
+
+void validate(DeviceOptions& o) {
+  refuse_unused(
+      o, "gridscan",
+      {DeviceFlag::kElements, DeviceFlag::kMode, DeviceFlag::kDoor, DeviceFlag::kBlocked});
+  (void)gridscan_options(o);  // throws UsageError with the reason
+}
+
+}  // namespace
+
+DeviceEntry gridscan_device_entry() {
+  return {
+      .name = "gridscan",
+      .validate = validate,
+      .build =
+          [](const DeviceOptions& o) {
+            return std::make_unique<GridScanInstance>(gridscan_options(o));
+          },
+      .simulate = {},  // no in-memory link yet
+      .demo = {},
+      .byte_device = true,
+  };
+}
+
+}  // namespace rs4sim::app

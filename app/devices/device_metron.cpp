@@ -1,0 +1,124 @@
+// Device entry `metron`: the virtual ReeR METRON measuring light curtain on RS-485
+// (metron/metron_device.h, docs/metron.md), on pty, serial or UDP. Slave line mode at
+// 19200 8E1 by default; `--mode` switches to standard line mode with its reporting mode
+// ([METRON manual "Serial line management"], metron/mode_spec.h).
+//
+//   rs4sim run --device metron --link pty --beams 24 --blocked 9-13
+//   rs4sim run --device metron --link pty --node 5
+//   rs4sim run --device metron --link pty --mode periodical,hex,separator,checksum,period=250
+#include "app/runtime/usage_error.h"
+#include "app/devices/device_options.h"
+#include "app/devices/device_registry.h"
+#include "metron/metron_device.h"
+#include "metron/mode_spec.h"
+#include "rpc/device_target.h"
+#include "rpc/line_services.h"
+#include "rpc/rs4_services.h"
+
+#include <ostream>
+
+namespace rs4sim::app {
+namespace {
+
+metron::Options metron_options(const DeviceOptions& o) {
+  metron::Options m;
+  if (o.beams) {
+    if (*o.beams < 1 || *o.beams > metron::kMaxBeams) {
+      throw UsageError("--beams " + std::to_string(*o.beams) + ": the METRON has 1.." +
+                       std::to_string(metron::kMaxBeams) + " beams here");
+    }
+    m.beams = static_cast<std::uint16_t>(*o.beams);
+  }
+  if (o.node) {
+    if (*o.node < 0 || *o.node > 254) {
+      throw UsageError("--node " + std::to_string(*o.node) +
+                       ": a node is 0..254 (255 is the broadcast address)");
+    }
+    m.node_enabled = true;
+    m.node = static_cast<std::uint8_t>(*o.node);
+  }
+  if (!o.mode.empty()) {
+    if (const auto why = metron::apply_mode_spec(o.mode, m); !why.empty()) {
+      throw UsageError("--mode " + o.mode + ": " + why);
+    }
+  }
+  if (o.baud || !o.format.empty()) {
+    if (m.line_mode == metron::LineMode::kSlave) {
+      throw UsageError(
+          "--baud/--format: slave line mode is fixed at 19200 8E1 "
+          "[METRON manual \"Slave line mode\"]");
+    }
+    const auto line = line_settings(o, metron::line_settings(m));
+    m.baud = line.baud;
+    m.parity = line.parity;
+  }
+  if (const auto why = m.validate(); !why.empty()) throw UsageError("metron: " + why);
+  check_blocked(o, m.beams, "beams");
+  return m;
+}
+
+class MetronInstance final : public DeviceInstance {
+ public:
+  explicit MetronInstance(const DeviceOptions& o) : device_(metron_options(o)) {
+    if (o.blocked) {
+      std::vector<std::uint16_t> beams;
+      for (const int b : *o.blocked) beams.push_back(static_cast<std::uint16_t>(b));
+      device_.set_interrupted(beams);
+    }
+  }
+  std::vector<stream::ByteDevice*> byte_devices() override { return {&tap_}; }
+  [[nodiscard]] std::string describe() const override {
+    return "METRON measuring light curtain (" + stream::to_string(device_.line_settings()) + ")";
+  }
+  void print_byte_status(std::ostream& out, const stream::ByteCounters& c) const override {
+    const auto k = device_.counters();
+    out << "metron: messages " << k.messages << ", executed " << k.executed << ", frames sent "
+        << k.frames_sent << ", E1..E5 " << k.errors[0] << "/" << k.errors[1] << "/" << k.errors[2]
+        << "/" << k.errors[3] << "/" << k.errors[4] << ", parity rejected " << k.parity_rejected
+        << ", not for us " << k.not_for_us << ", truncated " << k.truncated << ", too long "
+        << k.too_long << ", reports " << k.reports << ", bytes received " << c.bytes_received
+        << ", sent " << c.bytes_sent << ", link errors " << c.link_errors << std::endl;
+  }
+
+  // rs4sim.v1.Metron at the node number (node mode), else 0, and Observation for the events.
+  ServiceList services(const ServiceContext& c) override {
+    const auto& o = device_.options();
+    const std::uint8_t address = o.node_enabled ? o.node : 0;
+    target_ = std::make_unique<rpc::LineDeviceTarget>(
+        "metron", rpc::metron_watcher(address, device_), c.clock, c.io);
+    tap_.set_hub(target_->events(), address);
+    const rpc::LineContext line{c.executor, c.clock, address, tap_, target_->events()};
+    return {std::make_shared<rpc::MetronService>(line, device_),
+            std::make_shared<rpc::ObservationService>(rpc::Rs4Context{*target_, c.executor})};
+  }
+  void stop_services() override {
+    if (target_) target_->stop();
+  }
+
+ private:
+  metron::MetronDevice device_;
+  rpc::TappedByteDevice tap_{device_};
+  std::unique_ptr<rpc::LineDeviceTarget> target_;
+};
+
+void validate(DeviceOptions& o) {
+  refuse_unused(o, "metron",
+                {DeviceFlag::kBaud, DeviceFlag::kFormat, DeviceFlag::kBeams, DeviceFlag::kMode,
+                 DeviceFlag::kBlocked, DeviceFlag::kNode});
+  (void)metron_options(o);  // throws UsageError with the reason
+}
+
+}  // namespace
+
+DeviceEntry metron_device_entry() {
+  return {
+      .name = "metron",
+      .validate = validate,
+      .build = [](const DeviceOptions& o) { return std::make_unique<MetronInstance>(o); },
+      .simulate = {},  // no in-memory link yet
+      .demo = {},
+      .byte_device = true,
+  };
+}
+
+}  // namespace rs4sim::app

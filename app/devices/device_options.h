@@ -1,0 +1,62 @@
+#pragma once
+// The device options of `rs4sim run` (app/devices/device_registry.h DeviceOptions) beyond parsing:
+// which flag is which, refusing the ones a device entry does not use, and the parsers of
+// the byte devices' values (--blocked ranges, --baud as a plain bit rate, --format).
+// Errors are UsageError with the reason (exit 2).
+
+#include "app/devices/device_registry.h"
+#include "stream/line_settings.h"
+
+#include <cstdint>
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+namespace rs4sim::app {
+
+enum class DeviceFlag : std::uint8_t {
+  kAddress,
+  kAddresses,  // --address given more than once (DeviceOptions::more_addresses)
+  kIdent,
+  kCfg,
+  kBootTime,
+  kCommandTime,
+  kResponseTime,
+  kBaud,
+  kFormat,
+  kElements,
+  kBeams,
+  kModel,
+  kMode,
+  kBlocked,
+  kDoor,
+  kNode,
+  kRs232,
+  kPcAdapter,
+};
+
+// "--elements".
+[[nodiscard]] const char* flag_name(DeviceFlag f);
+
+// Throws UsageError for the first option given that `device` does not use:
+// "--door is not an option of --device polaris"; a repeated --address that `device` does not
+// take (kAddresses): "--address given 2 times: --device generic is one station ...".
+void refuse_unused(const DeviceOptions& o, const std::string& device,
+                   std::initializer_list<DeviceFlag> used);
+
+// "9-13,25-34" → 9..13, 25..34: sorted, each number once (overlapping ranges merge);
+// numbers are 1-based. Throws UsageError naming the bad item.
+[[nodiscard]] std::vector<int> parse_blocked(const std::string& text);
+
+// Throws UsageError when a --blocked number is above `count` ("elements", "beams").
+void check_blocked(const DeviceOptions& o, int count, const std::string& what);
+
+// "19200" → 19200 bit/s (a plain number, 50 … 12000000). Throws UsageError.
+[[nodiscard]] std::uint32_t parse_bit_rate(const std::string& text);
+
+// The line format a byte device runs with: `defaults` with --baud and --format applied.
+// Throws UsageError for a malformed --format. The entry checks what its device allows.
+[[nodiscard]] stream::LineSettings line_settings(const DeviceOptions& o,
+                                                 stream::LineSettings defaults);
+
+}  // namespace rs4sim::app

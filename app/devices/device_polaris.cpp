@@ -1,0 +1,147 @@
+// Device entry `polaris`: the virtual Optoscan Polaris measuring barrier with the RS485
+// Modbus RTU output (polaris/device.h, docs/polaris.md), on pty, serial or UDP, 8N1 at
+// 19200..115200 ([Polaris manual §8.1]). The flags fill a polaris::Options; its validate()
+// has the last word.
+//
+//   rs4sim run --device polaris --link pty --model PL10 --beams 40 --mode FL4 --address 1
+//              --baud 19200 --blocked 9-13,25-34
+//   --mode: a data mode (485MB | FL1 | FL4 | FL10), optionally followed by comma-separated
+//           words: slave | master, direct | reverse, object | hole
+#include "app/runtime/usage_error.h"
+#include "app/devices/device_options.h"
+#include "app/devices/device_registry.h"
+#include "polaris/device.h"
+#include "rpc/device_target.h"
+#include "rpc/line_services.h"
+#include "rpc/rs4_services.h"
+
+#include <ostream>
+#include <sstream>
+
+namespace rs4sim::app {
+namespace {
+
+void apply_mode(const std::string& mode, polaris::Options& p) {
+  std::istringstream words(mode);
+  std::string word;
+  bool first = true;
+  while (std::getline(words, word, ',')) {
+    if (first) {
+      const auto m = polaris::parse_data_mode(word);
+      if (!m)
+        throw UsageError("--mode " + mode + ": '" + word + "' is not 485MB, FL1, FL4 or FL10");
+      p.mode = *m;
+      first = false;
+    } else if (word == "slave" || word == "master") {
+      p.role = word == "slave" ? polaris::Role::kSlave : polaris::Role::kMaster;
+    } else if (word == "direct" || word == "reverse") {
+      p.direction =
+          word == "direct" ? polaris::ScanDirection::kDirect : polaris::ScanDirection::kReverse;
+    } else if (word == "object" || word == "hole") {
+      p.detection = word == "object" ? polaris::Detection::kObject : polaris::Detection::kHole;
+    } else {
+      throw UsageError("--mode " + mode + ": '" + word +
+                       "' is none of slave, master, direct, reverse, object, hole");
+    }
+  }
+}
+
+polaris::Options polaris_options(const DeviceOptions& o) {
+  polaris::Options p;
+  if (!o.model.empty()) {
+    const auto f = polaris::parse_family(o.model);
+    if (!f)
+      throw UsageError("--model " + o.model + ": use PLi02, PLi05, PLi12, PL10, PL24 or PL48");
+    p.family = *f;
+  }
+  if (o.beams) {
+    if (*o.beams < 1 || *o.beams > 0xFFFF) {
+      throw UsageError("--beams " + std::to_string(*o.beams) + ": out of range");
+    }
+    p.beams = static_cast<std::uint16_t>(*o.beams);
+  }
+  if (o.address) {
+    if (*o.address < 1 || *o.address > 247) {
+      throw UsageError("--address " + std::to_string(*o.address) +
+                       ": a Modbus address is 1..247 [Modbus serial line V1.02 §2.2]");
+    }
+    p.address = static_cast<std::uint8_t>(*o.address);
+  }
+  if (o.baud) p.baud = *o.baud;
+  if (!o.mode.empty()) apply_mode(o.mode, p);
+  if (const auto why = polaris::validate(p); !why.empty()) throw UsageError("polaris: " + why);
+  check_blocked(o, p.beams, "beams");
+  return p;
+}
+
+class PolarisInstance final : public DeviceInstance {
+ public:
+  explicit PolarisInstance(const DeviceOptions& o) : device_(polaris_options(o)) {
+    if (o.blocked) blocked_.assign(o.blocked->begin(), o.blocked->end());
+  }
+  std::vector<stream::ByteDevice*> byte_devices() override { return {&tap_}; }
+  void start(dp::TimePoint now) override {
+    std::vector<std::uint16_t> beams;
+    for (const int b : blocked_) beams.push_back(static_cast<std::uint16_t>(b));
+    (void)device_.set_interrupted(beams, now);  // checked against the beam count in validate
+  }
+  [[nodiscard]] std::string describe() const override {
+    const auto& p = device_.options();
+    return "Polaris " + std::string(polaris::to_string(p.family)) + " (" + std::to_string(p.beams) +
+           " beams, " + std::string(polaris::to_string(p.mode)) + ", " +
+           (p.role == polaris::Role::kSlave ? "Modbus slave " : "Modbus master to slave ") +
+           std::to_string(p.address) + ", " + stream::to_string(device_.line_settings()) + ")";
+  }
+  void print_byte_status(std::ostream& out, const stream::ByteCounters& c) const override {
+    const auto& k = device_.counters();
+    out << "polaris: requests " << k.requests << ", CRC errors " << k.crc_errors << ", too short "
+        << k.too_short << ", oversized " << k.oversized << ", broadcasts " << k.broadcasts
+        << ", other addresses " << k.foreign_address << ", bad function " << k.bad_function
+        << ", bad request " << k.bad_request << ", bad start " << k.bad_start
+        << ", exceptions sent " << k.exceptions_sent << ", frames sent " << k.frames_sent
+        << ", bytes received " << c.bytes_received << ", sent " << c.bytes_sent << ", link errors "
+        << c.link_errors << std::endl;
+  }
+
+  // rs4sim.v1.Polaris at its Modbus address, and Observation for the event stream.
+  ServiceList services(const ServiceContext& c) override {
+    const std::uint8_t address = device_.options().address;
+    target_ = std::make_unique<rpc::LineDeviceTarget>(
+        "polaris", rpc::polaris_watcher(address, device_), c.clock, c.io);
+    tap_.set_hub(target_->events(), address);
+    const rpc::LineContext line{c.executor, c.clock, address, tap_, target_->events()};
+    return {std::make_shared<rpc::PolarisService>(line, device_),
+            std::make_shared<rpc::ObservationService>(rpc::Rs4Context{*target_, c.executor})};
+  }
+  void stop_services() override {
+    if (target_) target_->stop();
+  }
+
+ private:
+  polaris::Device device_;
+  rpc::TappedByteDevice tap_{device_};
+  std::unique_ptr<rpc::LineDeviceTarget> target_;
+  std::vector<int> blocked_;
+};
+
+void validate(DeviceOptions& o) {
+  refuse_unused(o, "polaris",
+                {DeviceFlag::kAddress, DeviceFlag::kBaud, DeviceFlag::kBeams, DeviceFlag::kModel,
+                 DeviceFlag::kMode, DeviceFlag::kBlocked});
+  (void)polaris_options(o);  // throws UsageError with the reason
+}
+
+}  // namespace
+
+DeviceEntry polaris_device_entry() {
+  return {
+      .name = "polaris",
+      .validate = validate,
+      .build = [](const DeviceOptions& o) { return std::make_unique<PolarisInstance>(o); },
+      .simulate = {},  // no in-memory link yet
+      .demo = {},
+      .byte_device = true,
+  };
+}
+
+}  // namespace rs4sim::app

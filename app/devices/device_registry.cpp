@@ -1,0 +1,29 @@
+#include "app/devices/device_registry.h"
+
+#include <algorithm>
+
+namespace rs4sim::app {
+
+const std::vector<DeviceEntry>& device_registry() {
+  static const std::vector<DeviceEntry> registry{
+      rs4_device_entry(),     generic_device_entry(), echo_device_entry(),
+      gridscan_device_entry(), metron_device_entry(), polaris_device_entry(),
+  };
+  return registry;
+}
+
+const DeviceEntry* find_device(std::string_view name) {
+  const auto& r = device_registry();
+  const auto it =
+      std::find_if(r.begin(), r.end(), [name](const DeviceEntry& e) { return e.name == name; });
+  return it == r.end() ? nullptr : &*it;
+}
+
+std::vector<std::string> device_names() {
+  std::vector<std::string> names;
+  for (const DeviceEntry& e : device_registry()) names.push_back(e.name);
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+}  // namespace rs4sim::app

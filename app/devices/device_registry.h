@@ -1,0 +1,179 @@
+#pragma once
+// The device registry of the runtime: every device rs4sim emulates (`rs4`, `generic`, and
+// later ones) registers one DeviceEntry (app/device_<name>.cpp, a static
+// DeviceRegistration like the sub-commands). `rs4sim run` and `rs4sim demo` look devices
+// up here and never name one: the Asio shell (app/runtime/shell.h) runs any entry on any link.
+//
+// An entry builds its station(s) from one validated DeviceOptions:
+//   * for a real-time link (pty, serial, UDP): the device's own stations, talking to an
+//     external master (DeviceInstance);
+//   * for the in-memory link: the device with our class 1 master on a MemoryBus on the
+//     manual clock (SimulatedSegment);
+// and prints its status at the end of a run. Its narrated demo uses app/demos/narration.h.
+//
+// A byte device (GridScan, METRON, Polaris: DeviceEntry::byte_device) instead builds
+// stream::ByteDevice cores (DeviceInstance::byte_devices()); the shell runs them with a
+// stream::ByteRunner on pty/serial/UDP in their own LineSettings (serial: the port gets the
+// device's format), and `--baud` reaches the entry as a plain bit rate (DeviceOptions::baud).
+
+#include "app/demos/demos.h"
+#include "dp/link/counters.h"
+#include "dp/station.h"
+#include "dp/time/clock.h"
+#include "stream/byte_counters.h"
+#include "stream/byte_device.h"
+
+#include <functional>
+#include <iosfwd>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace grpc {
+class Service;
+}
+namespace rs4sim::rpc {
+class Executor;
+}
+namespace boost::asio {
+class io_context;
+}
+
+namespace rs4sim::app {
+
+// The device options of `rs4sim run`, by name; an entry's validate() checks the ones it
+// uses, refuses the others and fills its defaults.
+// Unset options are nullopt/empty; app/devices/device_options.h refuses the ones an entry does not use.
+struct DeviceOptions {
+  std::optional<int> address;  // station address (rs4: the hex switches, default 4)
+  // rs4: the second and further --address, each one more RS4 on the same link (DeviceFlag::
+  // kAddresses; the other devices are one station and refuse it).
+  std::vector<int> more_addresses;
+  std::string ident;                    // generic: Ident_Number, e.g. "0x1234"
+  std::string cfg;                      // generic: configuration identifiers in hex, e.g. "10 20"
+  std::optional<int> boot_time_ms;      // rs4: boot until operational (default 30000)
+  std::optional<int> command_time_ms;   // rs4: RS4 command processing (default 40)
+  std::optional<int> response_time_ms;  // rs4: adapter response time (default 10)
+  // Byte devices:
+  std::optional<std::uint32_t> baud;        // --baud as bit/s (only for byte devices)
+  std::string format;                       // --format, e.g. "8E1" (checked: stream::parse_format)
+  std::optional<int> elements;              // --elements: element count (GridScan)
+  std::optional<int> beams;                 // --beams: beam count (METRON, Polaris)
+  std::string model;                        // --model
+  std::string mode;                         // --mode
+  std::optional<std::vector<int>> blocked;  // --blocked 9-13,25-34: sorted 1-based numbers
+  std::optional<int> door;                  // --door N (GridScan: door position)
+  std::optional<int> node;                  // --node N (METRON node)
+  // The RS4's RS232 interface behind the optical PC adapter (docs/rs232.md):
+  std::string rs232;       // --rs232 pty | serial:DEVICE[@BAUD]
+  std::string pc_adapter;  // --pc-adapter attached | detached (at start)
+};
+
+// A device's second serial port beside its main link (the RS4's RS232 interface): the shell
+// opens it on a pseudo-terminal (the path goes out as "<name>: <path>", the second stdout
+// line) or a serial device, and runs it with its own ByteRunner on the same loop.
+struct SidePort {
+  std::string name;  // "rs232"
+  stream::ByteDevice* device = nullptr;
+  std::string path;  // empty: a pseudo-terminal; else the serial device
+};
+
+// What a device needs to offer its gRPC services (docs/rpc.md): they reach its cores only
+// through `executor` (the run's loop); `io` and `clock` are the loop's, for timers.
+struct ServiceContext {
+  rpc::Executor& executor;
+  boost::asio::io_context& io;
+  const dp::Clock& clock;
+};
+using ServiceList = std::vector<std::shared_ptr<grpc::Service>>;
+
+// One device built for a real-time link.
+class DeviceInstance {
+ public:
+  virtual ~DeviceInstance() = default;
+  // The stations the link runs (they live as long as this object).
+  [[nodiscard]] virtual std::vector<dp::Station*> stations() { return {}; }
+  // A byte device's cores (non-empty: the shell runs a stream::ByteRunner with them instead
+  // of a StationRunner, in the first one's LineSettings); they live as long as this object.
+  [[nodiscard]] virtual std::vector<stream::ByteDevice*> byte_devices() { return {}; }
+  // The second port, if the options asked for one.
+  [[nodiscard]] virtual std::optional<SidePort> side_port() { return std::nullopt; }
+  // SIGUSR1 (`second` false) / SIGUSR2 while running (the RS4: the PC adapter attached /
+  // removed).
+  virtual void on_user_signal(bool second, dp::TimePoint now) { (void)second, (void)now; }
+  // Called once before the link starts (e.g. the RS4's power-on).
+  virtual void start(dp::TimePoint now) { (void)now; }
+  // "generic slave 5 (ident 0x1234, cfg 10 20)": the banner line names the device.
+  [[nodiscard]] virtual std::string describe() const = 0;
+  // The status line(s) at the end of a run; `link` = the link's counters (a station
+  // device's, then a byte device's).
+  virtual void print_status(std::ostream& out, const dp::link::StationCounters& link) const {
+    (void)out;
+    (void)link;
+  }
+  virtual void print_byte_status(std::ostream& out, const stream::ByteCounters& link) const {
+    (void)out;
+    (void)link;
+  }
+  // The device's gRPC services (empty: the device has none yet); they live as long as this.
+  virtual ServiceList services(const ServiceContext& context) {
+    (void)context;
+    return {};
+  }
+  // The server has shut down: the services end their timers on the loop, so that the loop
+  // can finish.
+  virtual void stop_services() {}
+};
+
+// One device with our master on the in-memory bus (simulated time).
+class SimulatedSegment {
+ public:
+  virtual ~SimulatedSegment() = default;
+  virtual void run_for(dp::Duration d) = 0;
+  [[nodiscard]] virtual std::uint8_t master_address() const = 0;
+  // The rest of the summary line after "in-memory bus, N s simulated, master M", then
+  // the device's status.
+  virtual void print_summary(std::ostream& out) const = 0;
+  // Exit code 0 when the device reached data exchange.
+  [[nodiscard]] virtual bool healthy() const = 0;
+  // The in-memory bus, for --capture (nullptr: none to observe).
+  virtual dp::link::MemoryBus* bus() { return nullptr; }
+  // The gRPC services, with SimTime moving this segment's manual clock (empty: none yet).
+  virtual ServiceList services(const ServiceContext& context) {
+    (void)context;
+    return {};
+  }
+};
+
+struct DeviceEntry {
+  std::string name;
+  double simulated_seconds = 10;  // --link memory without --duration
+  // Checks the options (UsageError with the reason) and fills the defaults.
+  std::function<void(DeviceOptions&)> validate;
+  std::function<std::unique_ptr<DeviceInstance>(const DeviceOptions&)> build;
+  // Empty: no in-memory link (`--link memory` is refused).
+  std::function<std::unique_ptr<SimulatedSegment>(const DeviceOptions&)> simulate;
+  // The narrated demo on the simulated bus; returns the exit code. Empty: no demo.
+  std::function<int(RunSession&, std::ostream&, const DemoOptions&)> demo;
+  // A byte device: build() gives byte_devices(); --baud is a plain bit rate.
+  bool byte_device = false;
+};
+
+// Every device, in the order of device_registry.cpp.
+const std::vector<DeviceEntry>& device_registry();
+// nullptr for an unknown name.
+const DeviceEntry* find_device(std::string_view name);
+// "generic | rs4", for help texts.
+std::vector<std::string> device_names();
+
+// The entries (app/devices/device_<name>.cpp).
+DeviceEntry rs4_device_entry();
+DeviceEntry generic_device_entry();
+DeviceEntry echo_device_entry();
+DeviceEntry gridscan_device_entry();
+DeviceEntry metron_device_entry();
+DeviceEntry polaris_device_entry();
+
+}  // namespace rs4sim::app

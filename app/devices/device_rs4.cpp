@@ -1,0 +1,307 @@
+// Device entry `rs4` (the default): one emulated RS4/PROFIsafe (rs4/device), its ident,
+// F_Dest_Add rule and slave settings from the built-in GSD (rs4/adapter/rs4_gsd.h). On a
+// real-time link `--address` may repeat: one RS4 per address, each its own station on the
+// same line (a machine's 2..4 scanners on one PROFIBUS), served by one gRPC target.
+#include "app/demos/demos.h"
+#include "app/devices/device_options.h"
+#include "app/devices/device_registry.h"
+#include "app/runtime/run_options.h"
+#include "rpc/device_target.h"
+#include "rpc/rs4_services.h"
+#include "rpc/segment_target.h"
+#include "rpc/tapped_station.h"
+#include "rs4/adapter/rs4_gsd.h"
+#include "rs4/device/rs4_segment.h"
+#include "rs4/rs232/rs232_port.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <ostream>
+#include <vector>
+
+namespace rs4sim::app {
+namespace {
+
+using rs4::device::Rs4Device;
+using rs4::device::Rs4DeviceConfig;
+
+constexpr int kDefaultAddress = 4;         // factory setting of the hex switches [RS4 manual §2]
+constexpr int kDefaultBootTimeMs = 30000;  // boot until operational [RS4 manual §1]
+// One scan [docs/decisions.md#rs4-command-time]; 2 minutes at most [RS4 manual §5.2.1].
+constexpr int kDefaultCommandTimeMs = 40;
+constexpr int kMaxCommandTimeMs = 120000;
+constexpr int kDefaultResponseTimeMs = 10;  // "Reaktionszeit PROFIsafe-Adapter 10 ms" [RS4 manual]
+
+Rs4DeviceConfig device_config(const DeviceOptions& o, int address) {
+  Rs4DeviceConfig c;
+  c.switches = rs4::device::switches_for(static_cast<std::uint8_t>(address));
+  c.boot_time = std::chrono::milliseconds(*o.boot_time_ms);
+  c.adapter.rs4_command_time = std::chrono::milliseconds(*o.command_time_ms);
+  c.adapter.response_time = std::chrono::milliseconds(*o.response_time_ms);
+  return c;
+}
+
+// Every --address of the run, in the order given.
+std::vector<int> all_addresses(const DeviceOptions& o) {
+  std::vector<int> all{*o.address};
+  all.insert(all.end(), o.more_addresses.begin(), o.more_addresses.end());
+  return all;
+}
+
+std::string joined_numbers(const std::vector<int>& numbers) {
+  std::string s;
+  for (const int n : numbers) s += (s.empty() ? "" : ", ") + std::to_string(n);
+  return s;
+}
+
+// The RS4's services of rs4sim.v1 over `target` (docs/rpc.md).
+ServiceList rs4_services(rpc::Rs4Target& target, rpc::Executor& executor) {
+  const rpc::Rs4Context c{target, executor};
+  return {std::make_shared<rpc::DeviceService>(c), std::make_shared<rpc::ObservationService>(c),
+          std::make_shared<rpc::FaultsService>(c), std::make_shared<rpc::SimTimeService>(c)};
+}
+
+// --rs232 pty | serial:DEVICE[@BAUD] → the serial device ("" for a pty) and the port's options.
+struct Rs232Choice {
+  std::string path;
+  rs4::rs232::PortOptions options;
+};
+
+Rs232Choice rs232_choice(const std::string& spec) {
+  Rs232Choice c;
+  if (spec == "pty") return c;
+  constexpr std::string_view kSerial = "serial:";
+  if (spec.rfind(kSerial, 0) != 0 || spec.size() == kSerial.size()) {
+    throw UsageError("--rs232 " + spec +
+                     ": use pty or serial:DEVICE[@BAUD], e.g. serial:/dev/ttyUSB1@57600");
+  }
+  std::string rest = spec.substr(kSerial.size());
+  if (const auto at = rest.find('@'); at != std::string::npos) {
+    const std::string baud = rest.substr(at + 1);
+    c.options.baud = parse_bit_rate(baud);
+    rest = rest.substr(0, at);
+  }
+  c.path = rest;
+  if (const auto why = c.options.validate()) throw UsageError("--rs232 " + spec + ": " + *why);
+  return c;
+}
+
+void print_state(std::ostream& out, const Rs4Device& d) {
+  const auto v = d.adapter().view();
+  out << "rs4 " << int(d.address()) << ": LED " << rs4::adapter::to_string(v.led) << ", RS4 "
+      << rs4::scanner::to_string(v.rs4) << ", input byte " << hex(std::span(&v.input_byte, 1))
+      << ", output byte " << hex(std::span(&v.output_byte, 1)) << ", PROFIsafe "
+      << profisafe::to_string(v.fdevice) << std::endl;
+}
+
+// The RS4s of a real-time run: one Rs4Device and TappedStation per --address. The RS232
+// port (--rs232) is the only RS4's (validate() refuses it with several).
+class Rs4Instance final : public DeviceInstance {
+ public:
+  explicit Rs4Instance(const DeviceOptions& o)
+      : boot_time_ms_(*o.boot_time_ms), attached_at_start_(o.pc_adapter == "attached") {
+    for (const int a : all_addresses(o)) {
+      rs4s_.push_back(std::make_unique<Rs4>(device_config(o, a), static_cast<std::uint8_t>(a)));
+    }
+    if (!o.rs232.empty()) {
+      auto choice = rs232_choice(o.rs232);
+      rs232_path_ = choice.path;
+      port_.emplace(rs4s_.front()->device.adapter(), choice.options);
+    }
+  }
+  std::vector<dp::Station*> stations() override {
+    std::vector<dp::Station*> out;
+    for (const auto& r : rs4s_) out.push_back(&r->tap);
+    return out;
+  }
+  std::optional<SidePort> side_port() override {
+    if (!port_) return std::nullopt;
+    return SidePort{"rs232", &*port_, rs232_path_};
+  }
+  void start(dp::TimePoint now) override {
+    for (const auto& r : rs4s_) {
+      r->device.power_on(now);
+      if (attached_at_start_) attach(r->device, true, now);
+    }
+  }
+  // SIGUSR1/SIGUSR2: the PC adapter at every RS4 of the run (Device.SetPcAdapter: one).
+  void on_user_signal(bool second, dp::TimePoint now) override {
+    for (const auto& r : rs4s_) attach(r->device, !second, now);
+    std::cerr << "rs4sim: PC adapter " << (second ? "removed" : "attached")
+              << (rs4s_.size() > 1 ? " (every RS4: " + joined_numbers(addresses()) + ")" : "")
+              << std::endl;
+  }
+  [[nodiscard]] std::string describe() const override {
+    char ident[8];
+    std::snprintf(ident, sizeof ident, "%x", rs4::adapter::ident_number());
+    std::string f_dest;
+    for (const auto& r : rs4s_) {
+      f_dest += (f_dest.empty() ? "" : ", ") + std::to_string(rs4::adapter::f_dest_add(r->address));
+    }
+    const bool one = rs4s_.size() == 1;
+    return (one ? "RS4/PROFIsafe at address "
+                : std::to_string(rs4s_.size()) + " RS4/PROFIsafe at addresses ") +
+           joined_numbers(addresses()) + " (ident 0x" + ident + ", F_Dest_Add " + f_dest +
+           ", boot " + std::to_string(boot_time_ms_) + " ms)";
+  }
+  void print_status(std::ostream& out, const dp::link::StationCounters& link) const override {
+    (void)link;
+    for (const auto& r : rs4s_) print_state(out, r->device);
+    if (port_) {
+      const auto& k = port_->counters();
+      out << "rs4 " << int(rs4s_.front()->address) << " RS232: commands " << k.commands
+          << ", 0x23 sent " << k.measurements << ", refused (password) " << k.wrong_passwords
+          << ", framing errors " << k.framing_errors << ", ignored while detached "
+          << k.ignored_while_detached << std::endl;
+    }
+  }
+  ServiceList services(const ServiceContext& c) override {
+    std::vector<rpc::DeviceTarget::Station> stations;
+    for (const auto& r : rs4s_) stations.push_back({r->address, &r->device});
+    target_ = std::make_unique<rpc::DeviceTarget>(std::move(stations), c.clock, c.io);
+    target_->route_pc_adapter([this](Rs4Device& device, bool attached, dp::TimePoint now) {
+      attach(device, attached, now);
+    });
+    for (const auto& r : rs4s_) r->tap.set_hub(target_->events());
+    return rs4_services(*target_, c.executor);
+  }
+  void stop_services() override {
+    if (target_) target_->stop();
+  }
+
+ private:
+  struct Rs4 {
+    Rs4(const Rs4DeviceConfig& config, std::uint8_t a) : device(config), address(a) {}
+    Rs4Device device;
+    rpc::TappedStation tap{device};  // telegrams for the event stream
+    std::uint8_t address;
+  };
+
+  [[nodiscard]] std::vector<int> addresses() const {
+    std::vector<int> out;
+    for (const auto& r : rs4s_) out.push_back(r->address);
+    return out;
+  }
+
+  // The reed contact of the optical window: through the RS232 port when it is served (it
+  // opens and closes with it; the port is the first RS4's), else the adapter alone.
+  void attach(Rs4Device& device, bool attached, dp::TimePoint now) {
+    if (port_ && &device == &rs4s_.front()->device) {
+      attached ? port_->attach(now) : port_->detach(now);
+    } else {
+      attached ? device.adapter().attach_pc_adapter(now) : device.adapter().detach_pc_adapter(now);
+    }
+  }
+
+  std::vector<std::unique_ptr<Rs4>> rs4s_;  // stable addresses: the stations point into them
+  std::unique_ptr<rpc::DeviceTarget> target_;
+  int boot_time_ms_;
+  bool attached_at_start_;
+  std::string rs232_path_;
+  std::optional<rs4::rs232::Rs232Port> port_;
+};
+
+// Our master configured from the GSD and a PROFIsafe F-host that acknowledges every
+// ACK_REQ, on the in-memory bus.
+class Rs4Simulation final : public SimulatedSegment {
+ public:
+  explicit Rs4Simulation(const DeviceOptions& o) : segment_(segment_config(o)) {
+    segment_.power_on();
+  }
+  void run_for(dp::Duration d) override { segment_.run_for(d); }
+  [[nodiscard]] std::uint8_t master_address() const override { return segment_.master().address(); }
+  void print_summary(std::ostream& out) const override {
+    out << " (from the GSD), F-host " << profisafe::to_string(segment_.fhost().state()) << ", "
+        << segment_.master().counters().cycles << " cycles" << std::endl;
+    print_state(out, segment_.device());
+  }
+  [[nodiscard]] bool healthy() const override { return segment_.in_data_exchange(); }
+  dp::link::MemoryBus* bus() override { return &segment_.bus(); }
+  ServiceList services(const ServiceContext& c) override {
+    target_ = std::make_unique<rpc::SegmentTarget>(segment_);
+    return rs4_services(*target_, c.executor);
+  }
+
+ private:
+  static rs4::device::Rs4SegmentConfig segment_config(const DeviceOptions& o) {
+    rs4::device::Rs4SegmentConfig c;
+    c.device = device_config(o, *o.address);
+    c.master.address = static_cast<std::uint8_t>(*o.address);
+    c.master_address = *o.address == 1 ? 2 : 1;
+    c.auto_ack_rei = true;
+    return c;
+  }
+
+  rs4::device::Rs4Segment segment_;
+  std::unique_ptr<rpc::SegmentTarget> target_;
+};
+
+void validate(DeviceOptions& o) {
+  if (!o.ident.empty() || !o.cfg.empty()) {
+    throw UsageError("--ident/--cfg are for --device generic; the RS4's come from its GSD");
+  }
+  refuse_unused(
+      o, "rs4",
+      {DeviceFlag::kAddress, DeviceFlag::kAddresses, DeviceFlag::kBootTime, DeviceFlag::kRs232,
+       DeviceFlag::kPcAdapter, DeviceFlag::kCommandTime, DeviceFlag::kResponseTime});
+  if (!o.rs232.empty()) (void)rs232_choice(o.rs232);
+  if (!o.address) o.address = kDefaultAddress;
+  if (!o.boot_time_ms) o.boot_time_ms = kDefaultBootTimeMs;
+  std::vector<int> seen;
+  for (const int a : all_addresses(o)) {
+    if (a < 0 || a > 126) {
+      throw UsageError("--address: " + std::to_string(a) +
+                       " is outside 0..126 (the RS4's switches; 127 and 255 must not be used, "
+                       "[RS4 manual §4.5])");
+    }
+    if (std::find(seen.begin(), seen.end(), a) != seen.end()) {
+      throw UsageError("--address " + std::to_string(a) +
+                       " given twice (each RS4 is a station of its own on the link)");
+    }
+    seen.push_back(a);
+  }
+  if (!o.rs232.empty() && !o.more_addresses.empty()) {
+    throw UsageError("--rs232 serves one RS4; run it with one --address");
+  }
+  if (*o.boot_time_ms < 0 || *o.boot_time_ms > 600000) {
+    throw UsageError("--boot-time: " + std::to_string(*o.boot_time_ms) +
+                     " ms is outside 0..600000");
+  }
+  if (!o.command_time_ms) o.command_time_ms = kDefaultCommandTimeMs;
+  if (*o.command_time_ms < 0 || *o.command_time_ms > kMaxCommandTimeMs) {
+    throw UsageError("--command-time: " + std::to_string(*o.command_time_ms) +
+                     " ms is outside 0..120000 (the manual: the RS4 needs up to 2 minutes, "
+                     "[RS4 manual §5.2.1])");
+  }
+  if (!o.response_time_ms) o.response_time_ms = kDefaultResponseTimeMs;
+  if (*o.response_time_ms < 0 || *o.response_time_ms > 1000) {
+    throw UsageError("--adapter-response-time: " + std::to_string(*o.response_time_ms) +
+                     " ms is outside 0..1000");
+  }
+}
+
+}  // namespace
+
+DeviceEntry rs4_device_entry() {
+  return {
+      "rs4",
+      40.0,
+      validate,
+      [](const DeviceOptions& o) { return std::make_unique<Rs4Instance>(o); },
+      [](const DeviceOptions& o) {
+        if (!o.more_addresses.empty()) {
+          std::string slaves;
+          for (const int a : all_addresses(o)) slaves += " --slave " + std::to_string(a);
+          throw UsageError(
+              "--link memory simulates one RS4 with our master; for several RS4s "
+              "on the simulated bus use rs4sim master" +
+              slaves + " --link memory (or run these on --link pty|serial|udp)");
+        }
+        return std::make_unique<Rs4Simulation>(o);
+      },
+      run_rs4_demo,
+  };
+}
+
+}  // namespace rs4sim::app

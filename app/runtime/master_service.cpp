@@ -1,0 +1,157 @@
+#include "app/runtime/master_service.h"
+
+#include "app/runtime/run_session.h"
+#include "dp/link/memory_bus.h"
+#include "rs4/device/rs4_device.h"
+
+#include <ostream>
+
+namespace rs4sim::app {
+
+namespace device = rs4::device;
+
+// The station the link runs: the master side, then the events of that call to the plugins
+// and the report. Wake-ups of the master side (a plugin's record request) pass through.
+class MasterService::Forwarder final : public dp::Station {
+ public:
+  explicit Forwarder(MasterService& service) : service_(service) {
+    service_.station_.set_wake_handler([this] { wake(); });
+  }
+  ~Forwarder() override { service_.station_.set_wake_handler({}); }
+  Forwarder(const Forwarder&) = delete;
+  Forwarder& operator=(const Forwarder&) = delete;
+
+  [[nodiscard]] std::uint8_t address() const override { return service_.station_.address(); }
+  void on_telegram(const dp::fdl::Telegram& t, dp::TimePoint now) override {
+    service_.station_.on_telegram(t, now);
+    service_.dispatch(now);
+  }
+  void on_time(dp::TimePoint now) override {
+    service_.station_.on_time(now);
+    service_.dispatch(now);
+  }
+  [[nodiscard]] std::optional<dp::TimePoint> next_deadline() const override {
+    return service_.station_.next_deadline();
+  }
+  std::optional<dp::fdl::Telegram> take_transmit() override {
+    return service_.station_.take_transmit();
+  }
+  void on_malformed_frame(std::error_code why) override {
+    service_.station_.on_malformed_frame(why);
+  }
+
+ private:
+  MasterService& service_;
+};
+
+MasterService::MasterService(const MasterServiceOptions& options, LinkKind link,
+                             std::ostream& out)
+    : station_(options.station),
+      forwarder_(std::make_unique<Forwarder>(*this)),
+      link_(link),
+      json_(options.json),
+      out_(out) {}
+
+MasterService::~MasterService() = default;
+
+std::vector<dp::Station*> MasterService::stations() { return {forwarder_.get()}; }
+
+void MasterService::start(dp::TimePoint now) {
+  last_now_ = now;
+  report_.emplace(out_, json_, now);
+  report_->started(station_, link_name(link_));
+  for (auto* p : plugins_) p->start(station_, now);
+}
+
+std::string MasterService::describe() const {
+  std::string list;
+  for (const auto a : station_.slave_addresses()) {
+    list += (list.empty() ? "" : ", ") + std::to_string(a);
+  }
+  return "class 1 master " + std::to_string(station_.address()) +
+         " with PROFIsafe F-host for RS4 " + list + " (from the GSD)";
+}
+
+void MasterService::print_status(std::ostream& out, const dp::link::StationCounters& link) const {
+  (void)out, (void)link;  // the report writes to the service's stream
+  if (report_) report_->stopped(station_, last_now_);
+}
+
+bool MasterService::healthy() const {
+  for (const auto a : station_.slave_addresses()) {
+    const auto v = station_.view(a);
+    if (!v || !v->data_exchange() || v->safety != profisafe::FHostState::kRun) return false;
+  }
+  return true;
+}
+
+void MasterService::dispatch(dp::TimePoint now) {
+  last_now_ = now;
+  events_.clear();
+  station_.take_events(events_);
+  if (events_.empty() || !report_) return;
+  for (auto* p : plugins_) {
+    for (const auto& e : events_) p->on_event(e, station_, *report_, now);
+  }
+  report_->events(events_, station_, now);
+}
+
+namespace {
+
+constexpr double kDefaultSimulatedSeconds = 40;  // past the RS4's ≈30 s boot [RS4 manual §7.1.1]
+
+// The RS4s simulated beside the master on the in-memory bus, on the manual clock.
+int run_memory(const MasterServiceOptions& o, const LinkOptions& l, std::ostream& out,
+               const std::vector<MasterPlugin*>& plugins) {
+  RunSession session(out);
+  dp::ManualClock clock;
+  MasterService service(o, LinkKind::kMemory, out);
+  for (auto* p : plugins) service.add_plugin(*p);
+  std::vector<std::unique_ptr<device::Rs4Device>> devices;
+  for (const auto& s : o.station.slaves) {
+    device::Rs4DeviceConfig c;
+    c.switches = device::switches_for(s.address);
+    c.boot_time = std::chrono::milliseconds(o.simulated_boot_ms);
+    devices.push_back(std::make_unique<device::Rs4Device>(c));
+  }
+  dp::link::MemoryBus bus(clock);
+  const auto capture = open_link_capture(l, clock.now());
+  attach_capture(capture.get(), bus);
+  for (auto* s : service.stations()) bus.attach(*s);
+  for (auto& d : devices) bus.attach(*d);
+  service.start(clock.now());
+  bus.start();
+  for (auto& d : devices) d->power_on(clock.now());
+  run_simulated(session, l.duration > 0 ? l.duration : kDefaultSimulatedSeconds,
+                [&](dp::Duration d) { bus.run_for(d); });
+  service.print_status(out, {});
+  const bool written = report_capture(capture.get(), l);
+  return service.healthy() && written ? 0 : 1;
+}
+
+}  // namespace
+
+ServiceList MasterService::services(const ServiceContext& context) {
+  ServiceList all;
+  for (auto* p : plugins_) {
+    auto some = p->services(context);
+    all.insert(all.end(), some.begin(), some.end());
+  }
+  return all;
+}
+
+void MasterService::stop_services() {
+  for (auto* p : plugins_) p->stop_services();
+}
+
+int run_master(const MasterServiceOptions& options, const LinkOptions& link, std::ostream& out,
+               const std::vector<MasterPlugin*>& plugins) {
+  validate(link);
+  if (link.link == LinkKind::kMemory) return run_memory(options, link, out, plugins);
+  RunSession session(out);
+  MasterService service(options, link.link, out);
+  for (auto* p : plugins) service.add_plugin(*p);
+  return run_on_link(session, service, link, out);
+}
+
+}  // namespace rs4sim::app

@@ -1,0 +1,118 @@
+#include "app/runtime/run_session.h"
+
+#include "app/runtime/grpc_serving.h"
+
+#include <boost/asio/post.hpp>
+
+#include <pthread.h>
+
+#include <csignal>
+#include <ostream>
+
+namespace rs4sim::app {
+
+namespace {
+
+void mask_stop_signals(int how) {
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  pthread_sigmask(how, &set, nullptr);
+}
+
+}  // namespace
+
+void block_stop_signals() { mask_stop_signals(SIG_BLOCK); }
+void unblock_stop_signals() { mask_stop_signals(SIG_UNBLOCK); }
+
+RunSession::RunSession(std::ostream& out)
+    : out_(out),
+      work_(boost::asio::make_work_guard(io_)),
+      executor_(io_),
+      signals_(io_, SIGINT, SIGTERM),
+      limit_(io_) {
+  signals_.async_wait([this](const boost::system::error_code& ec, int) {
+    if (!ec) request_stop(StopReason::kSignal);
+  });
+  // The handlers are installed: a signal pending since main() blocked it is delivered now
+  // and waits in the signal set for the loop.
+  unblock_stop_signals();
+}
+
+RunSession::~RunSession() {
+  // A session left without finish() (an exception on the way out) must not leave the server's
+  // threads calling into a loop that no longer runs.
+  if (grpc_ && !halted_) {
+    request_stop();
+    try {
+      io_.restart();
+      io_.run();
+    } catch (...) {  // nothing to report on the way out
+    }
+  }
+}
+
+void RunSession::serve_grpc(const GrpcCliOptions& options, ServiceList services) {
+  grpc_ = std::make_unique<GrpcServing>(grpc_server_options(options), std::move(services), out_);
+}
+
+void RunSession::on_stop(std::function<void()> step) { stop_steps_.push_back(std::move(step)); }
+
+void RunSession::on_stop_begin(std::function<void()> step) {
+  begin_steps_.push_back(std::move(step));
+}
+
+void RunSession::stop_after(double seconds) {
+  if (seconds <= 0) return;
+  limit_.expires_after(
+      std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+          std::chrono::duration<double>(seconds)));
+  limit_.async_wait([this](const boost::system::error_code& ec) {
+    if (!ec) request_stop(StopReason::kDuration);
+  });
+}
+
+void RunSession::request_stop(StopReason why) {
+  if (stopping()) return;
+  why_ = why;
+  for (auto& step : begin_steps_) step();  // 0.
+  if (grpc_) {
+    grpc_->stop_then(io_, [this] { halt(); });  // 1. the server, while the loop runs its calls
+  } else {
+    boost::asio::post(io_, [this] { halt(); });
+  }
+}
+
+void RunSession::halt() {
+  if (halted_) return;
+  halted_ = true;
+  for (auto& step : stop_steps_) step();  // 2.
+  boost::system::error_code ignored;
+  signals_.cancel(ignored);  // 3.
+  limit_.cancel();
+  work_.reset();
+}
+
+RunSession::StopReason RunSession::run() {
+  io_.run();
+  return why_;
+}
+
+bool RunSession::run_until(std::chrono::steady_clock::time_point deadline) {
+  io_.run_until(deadline);
+  return !stopping();
+}
+
+bool RunSession::poll() {
+  io_.poll();
+  return !stopping();
+}
+
+void RunSession::finish() {
+  request_stop();
+  io_.restart();
+  io_.run();
+}
+
+}  // namespace rs4sim::app

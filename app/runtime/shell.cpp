@@ -1,0 +1,274 @@
+#include "app/runtime/shell.h"
+
+#include "app/runtime/usage_error.h"
+#include "app/devices/device_options.h"
+#include "app/runtime/run_session.h"
+#include "dp/link/profibus_line.h"
+#include "dp/link/station_runner.h"
+#include "rpc/executor.h"
+#include "stream/byte_runner.h"
+#include "stream/pty.h"
+#include "stream/serial_transport.h"
+#include "stream/udp_transport.h"
+
+#include <boost/asio/signal_set.hpp>
+
+#include <algorithm>
+#include <csignal>
+#include <functional>
+#include <iostream>
+
+namespace rs4sim::app {
+namespace {
+
+namespace asio = boost::asio;
+namespace link = dp::link;
+
+dp::Duration seconds(double s) {
+  return std::chrono::duration_cast<dp::Duration>(std::chrono::duration<double>(s));
+}
+
+int run_memory(const DeviceEntry& device, const DeviceOptions& o, const LinkOptions& l,
+               std::ostream& out) {
+  RunSession session(out);
+  const auto segment = device.simulate(o);
+  const auto capture = open_link_capture(l, dp::TimePoint{});
+  if (segment->bus() != nullptr) attach_capture(capture.get(), *segment->bus());
+  const double secs = l.duration > 0 ? l.duration : device.simulated_seconds;
+  const bool whole = run_simulated(session, secs, [&](dp::Duration d) { segment->run_for(d); });
+  out << "in-memory bus, " << secs << " s simulated" << (whole ? "" : " (interrupted)")
+      << ", master " << int(segment->master_address());
+  segment->print_summary(out);
+  const bool written = report_capture(capture.get(), l);
+  return segment->healthy() && written ? 0 : 1;
+}
+
+// --link memory --grpc: the segment stays on its manual clock and is driven by the API
+// (SimTime) until Ctrl-C/SIGTERM or --duration wall seconds.
+int run_memory_served(const DeviceEntry& device, const DeviceOptions& o, const LinkOptions& l,
+                      std::ostream& out) {
+  RunSession session(out);
+  const auto segment = device.simulate(o);
+  const auto capture = open_link_capture(l, dp::TimePoint{});
+  if (segment->bus() != nullptr) attach_capture(capture.get(), *segment->bus());
+  session.serve_grpc(l.grpc, segment->services(session.service_context(session.wall_clock())));
+  session.stop_after(l.duration);
+  std::cerr << "rs4sim: simulated bus on the manual clock, driven through the API; Ctrl-C to stop"
+            << std::endl;
+  session.run();
+  out << "in-memory bus, served, master " << int(segment->master_address());
+  segment->print_summary(out);
+  return report_capture(capture.get(), l) ? 0 : 1;
+}
+
+// The character format of the line: a byte device's own, else PROFIBUS 8E1 at --baud.
+stream::LineSettings line_format(DeviceInstance& instance, const LinkOptions& l) {
+  const auto bytes = instance.byte_devices();
+  if (!bytes.empty()) return bytes.front()->line_settings();
+  return link::profibus_line(*dp::parse_baud_rate(l.baud));
+}
+
+std::unique_ptr<stream::Transport> make_transport(const LinkOptions& l,
+                                                  const stream::LineSettings& line,
+                                                  asio::io_context& io,
+                                                  std::unique_ptr<stream::PseudoTerminal>& pty,
+                                                  std::ostream& out) {
+  const stream::LogFn note = [](const std::string& s) {
+    std::cerr << "rs4sim: note: " << s << std::endl;
+  };
+  if (l.link == LinkKind::kPty) {
+    pty = std::make_unique<stream::PseudoTerminal>();
+    auto transport =
+        std::make_unique<stream::SerialTransport>(io, pty->release_master(), line, "pty", note);
+    // First line: where the master/client connects; printed once the line is configured, so
+    // a client that sets its own side's termios after reading it is not overridden.
+    out << pty->slave_path() << std::endl;
+    return transport;
+  }
+  if (l.link == LinkKind::kSerial) return std::make_unique<stream::SerialTransport>(io, l.port, line, note);
+  return std::make_unique<stream::UdpTransport>(io, stream::resolve_udp_endpoint(io, l.listen),
+                                                stream::resolve_udp_endpoint(io, l.peer));
+}
+
+// The runner of an instance: a ByteRunner for byte devices, else a StationRunner.
+class LinkRunner {
+ public:
+  LinkRunner(asio::io_context& io, const dp::Clock& clock, stream::Transport& transport,
+             DeviceInstance& instance)
+      : instance_(instance), bytes_(instance.byte_devices()) {
+    if (bytes_.empty()) {
+      stations_.emplace(io, clock, transport);
+      for (dp::Station* s : instance.stations()) stations_->add(*s);
+    } else {
+      byte_runner_.emplace(io, clock, transport);
+      for (stream::ByteDevice* d : bytes_) byte_runner_->add(*d);
+    }
+  }
+  void start() { stations_ ? stations_->start() : byte_runner_->start(); }
+  // Every PROFIBUS telegram on the line (validate() keeps --capture off byte devices).
+  void tap(dp::link::Capture* capture) {
+    if (capture == nullptr || !stations_) return;
+    stations_->set_frame_tap(
+        [capture](std::span<const std::uint8_t> frame, dp::TimePoint at,
+                  stream::FrameDirection dir) { capture->on_frame(frame, at, dir); });
+  }
+  void stop() { stations_ ? stations_->stop() : byte_runner_->stop(); }
+  void print_status(std::ostream& out) const {
+    if (stations_) {
+      instance_.print_status(out, stations_->counters());
+    } else {
+      instance_.print_byte_status(out, byte_runner_->counters());
+    }
+  }
+
+ private:
+  DeviceInstance& instance_;
+  std::vector<stream::ByteDevice*> bytes_;
+  std::optional<link::StationRunner> stations_;
+  std::optional<stream::ByteRunner> byte_runner_;
+};
+
+}  // namespace
+
+int run_on_link(RunSession& session, DeviceInstance& instance, const LinkOptions& l,
+                std::ostream& out) {
+  asio::io_context& io = session.io();
+  std::unique_ptr<stream::PseudoTerminal> pty;
+  std::unique_ptr<stream::Transport> transport;
+  try {
+    transport = make_transport(l, line_format(instance, l), io, pty, out);
+  } catch (const stream::LinkException& e) {
+    std::cerr << "rs4sim: " << e.what() << " [" << e.code().category().name() << ":"
+              << e.code().value() << "]" << std::endl;
+    return 1;
+  }
+  // The device's second port (the RS4's RS232 interface): its own transport and runner.
+  const auto side = instance.side_port();
+  std::unique_ptr<stream::PseudoTerminal> side_pty;
+  std::unique_ptr<stream::Transport> side_transport;
+  if (side) {
+    try {
+      const stream::LogFn note = [](const std::string& s) {
+        std::cerr << "rs4sim: note: " << s << std::endl;
+      };
+      const auto line = side->device->line_settings();
+      if (side->path.empty()) {
+        side_pty = std::make_unique<stream::PseudoTerminal>();
+        side_transport = std::make_unique<stream::SerialTransport>(io, side_pty->release_master(),
+                                                                   line, side->name, note);
+        out << side->name << ": " << side_pty->slave_path() << std::endl;
+      } else {
+        side_transport = std::make_unique<stream::SerialTransport>(io, side->path, line, note);
+      }
+    } catch (const stream::LinkException& e) {
+      std::cerr << "rs4sim: " << side->name << ": " << e.what() << std::endl;
+      return 1;
+    }
+  }
+  dp::RealClock clock;
+  std::unique_ptr<dp::link::Capture> capture;
+  try {
+    capture = open_link_capture(l, clock.now());
+  } catch (const std::runtime_error& e) {
+    std::cerr << "rs4sim: " << e.what() << std::endl;
+    return 1;
+  }
+  instance.start(clock.now());
+  LinkRunner runner(io, clock, *transport, instance);
+  runner.tap(capture.get());
+  std::optional<stream::ByteRunner> side_runner;
+  if (side) {
+    side_runner.emplace(io, clock, *side_transport);
+    side_runner->add(*side->device);
+  }
+  // SIGUSR1/SIGUSR2: the device's user actions (the RS4: PC adapter attached/removed).
+  asio::signal_set user_signals(io, SIGUSR1, SIGUSR2);
+  std::function<void()> await_user_signal = [&] {
+    user_signals.async_wait([&](const boost::system::error_code& ec, int signo) {
+      if (ec) return;
+      instance.on_user_signal(signo == SIGUSR2, clock.now());
+      await_user_signal();
+    });
+  };
+  await_user_signal();
+  if (!l.grpc.empty()) {
+    session.serve_grpc(l.grpc, instance.services(session.service_context(clock)));
+  }
+  session.on_stop([&] {
+    instance.stop_services();
+    runner.stop();
+    if (side_runner) side_runner->stop();
+    user_signals.cancel();
+  });
+  session.stop_after(l.duration);
+  std::cerr << "rs4sim: " << instance.describe() << " on " << link_name(l.link)
+            << "; Ctrl-C to stop" << std::endl;
+  runner.start();
+  if (side_runner) side_runner->start();
+  session.run();
+  runner.print_status(out);
+  return report_capture(capture.get(), l) ? 0 : 1;
+}
+
+std::unique_ptr<dp::link::Capture> open_link_capture(const LinkOptions& link,
+                                                     dp::TimePoint clock_now) {
+  return open_capture(link.capture, clock_now);
+}
+
+bool report_capture(const dp::link::Capture* capture, const LinkOptions& link) {
+  if (capture == nullptr) return true;
+  if (capture->error()) {
+    std::cerr << "rs4sim: --capture " << link.capture.file
+              << ": writing stopped: " << capture->error().message() << std::endl;
+    return false;
+  }
+  std::cerr << "rs4sim: capture: " << capture->records() << " telegrams in " << link.capture.file
+            << std::endl;
+  return true;
+}
+
+bool run_simulated(RunSession& session, double simulated,
+                   const std::function<void(dp::Duration)>& run_for) {
+  // Slices of one simulated second: the loop sees a signal between two of them.
+  constexpr double kSlice = 1.0;
+  double done = 0;
+  while (done < simulated) {
+    if (!session.poll()) return false;
+    const double step = std::min(kSlice, simulated - done);
+    run_for(seconds(step));
+    done += step;
+  }
+  return session.poll();
+}
+
+namespace {
+
+// A byte device: no in-memory link; --baud is its plain bit rate.
+void prepare_byte_device(const DeviceEntry& device, DeviceOptions& options,
+                         const LinkOptions& link) {
+  if (link.link == LinkKind::kMemory) {
+    throw UsageError("--device " + device.name +
+                     " has no in-memory link (no master or client of ours for it yet): run it "
+                     "with --link pty and connect the client to the printed path (or use "
+                     "--link serial/udp)");
+  }
+  if (link.baud_given) options.baud = parse_bit_rate(link.baud);
+}
+
+}  // namespace
+
+int run_device(const DeviceEntry& device, DeviceOptions options, const LinkOptions& link,
+               std::ostream& out) {
+  if (device.byte_device) prepare_byte_device(device, options, link);
+  device.validate(options);
+  validate(link, device.byte_device);
+  if (link.link == LinkKind::kMemory && !link.grpc.empty()) {
+    return run_memory_served(device, options, link, out);
+  }
+  if (link.link == LinkKind::kMemory) return run_memory(device, options, link, out);
+  RunSession session(out);
+  const auto instance = device.build(options);
+  return run_on_link(session, *instance, link, out);
+}
+
+}  // namespace rs4sim::app
