@@ -137,7 +137,8 @@ class Master final : public Station {
   std::array<std::int16_t, 128> index_{};  // address → slaves_ index, -1 if none
   fdl::FcbInitiator fcb_;
   EventQueue events_;
-  std::deque<fdl::Telegram> tx_;
+  std::vector<fdl::Telegram> tx_;  // tx_[tx_head_..] wait for take_transmit(); reused
+  std::size_t tx_head_ = 0;
   MasterPhase phase_;
   OperatingMode mode_ = OperatingMode::kOperate;
   bool started_ = false;
