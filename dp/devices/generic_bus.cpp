@@ -60,8 +60,7 @@ std::vector<master::MasterEvent> GenericBus::take_events() {
 std::size_t GenericBus::slaves_in_data_exchange() const {
   std::size_t n = 0;
   for (const auto& s : slaves_) {
-    const auto st = master_->slave_status(s->address());
-    if (st && st->state == master::PollState::kDataExchange) ++n;
+    if (master_->poll_state(s->address()) == master::PollState::kDataExchange) ++n;
   }
   return n;
 }

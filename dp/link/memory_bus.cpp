@@ -1,8 +1,7 @@
 #include "dp/link/memory_bus.h"
 
-#include <boost/container/static_vector.hpp>
-
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -62,7 +61,7 @@ struct MemoryBus::Pending {
   TimePoint arrival;
   std::uint64_t sequence = 0;
   std::uint8_t to = 0;
-  boost::container::static_vector<std::uint8_t, fdl::kMaxTelegramSize> bytes;
+  std::uint32_t frame = 0;  // index into frames_
 
   // Min-heap on (arrival, sequence): FIFO among simultaneous arrivals.
   friend bool operator<(const Pending& a, const Pending& b) {
@@ -71,9 +70,7 @@ struct MemoryBus::Pending {
 };
 
 MemoryBus::MemoryBus(ManualClock& clock, MemoryBusConfig config)
-    : clock_(clock), config_(config), line_free_(clock.now()), alive_(std::make_shared<char>()) {
-  encode_buf_.reserve(fdl::kMaxTelegramSize);
-}
+    : clock_(clock), config_(config), line_free_(clock.now()), alive_(std::make_shared<char>()) {}
 
 MemoryBus::~MemoryBus() = default;
 
@@ -194,10 +191,9 @@ TimePoint MemoryBus::arrival_time(const Port& from, const fdl::Telegram& t, std:
 
 void MemoryBus::transmit(Port& from, const fdl::Telegram& t) {
   ++from.counters.sent;
-  encode_buf_.clear();
-  fdl::encode(t, encode_buf_);
+  const std::span<const std::uint8_t> wire(encode_buf_.data(), fdl::encode(t, encode_buf_));
   BusEvent ev{clock_.now(), clock_.now(), from.station->address(), std::nullopt,
-              &t,           encode_buf_,  Fate::kDelivered};
+              &t,           wire,         Fate::kDelivered};
   if (from.silenced) {
     ++from.counters.silenced;
     ev.fate = Fate::kSilenced;
@@ -206,13 +202,13 @@ void MemoryBus::transmit(Port& from, const fdl::Telegram& t) {
     ev.fate = Fate::kUnroutable;
   } else {
     ev.to = to;
-    ev.arrival = arrival_time(from, t, encode_buf_.size());
+    ev.arrival = arrival_time(from, t, wire.size());
     if (*to == fdl::kBroadcastAddress) {
       for (Port* p : order_) {
-        if (p != &from) schedule(from, p->station->address(), ev.arrival, encode_buf_);
+        if (p != &from) schedule(from, p->station->address(), ev.arrival, wire);
       }
     } else {
-      ev.fate = schedule(from, *to, ev.arrival, encode_buf_);
+      ev.fate = schedule(from, *to, ev.arrival, wire);
     }
   }
   for (const auto& observer : observers_) observer(ev);
@@ -222,26 +218,43 @@ Fate MemoryBus::schedule(Port& from, std::uint8_t to, TimePoint arrival,
                          std::span<const std::uint8_t> wire) {
   const std::uint8_t sa = from.station->address();
   if (to >= kMaxStations || !ports_[to]) return Fate::kDelivered;  // nobody listens there
-  if (match_fault(FaultKind::kDrop, sa, to)) {
+  if (!faults_.empty() && match_fault(FaultKind::kDrop, sa, to)) {
     ++from.counters.dropped;
     return Fate::kDropped;
   }
   Fate fate = Fate::kDelivered;
-  Pending p{arrival, sequence_++, to, {wire.begin(), wire.end()}};
-  if (const auto f = match_fault(FaultKind::kCorrupt, sa, to)) {
-    const std::uint32_t bit = f->bit % static_cast<std::uint32_t>(p.bytes.size() * 8);
-    p.bytes[bit / 8] = static_cast<std::uint8_t>(p.bytes[bit / 8] ^ (1U << (bit % 8)));
+  Pending p{arrival, sequence_++, to, new_frame(wire)};
+  if (const auto f = faults_.empty() ? std::nullopt : match_fault(FaultKind::kCorrupt, sa, to)) {
+    Frame& frame = frames_[p.frame];
+    const std::uint32_t bit = f->bit % static_cast<std::uint32_t>(frame.size * 8);
+    auto& byte = frame.bytes[bit / 8];
+    byte = static_cast<std::uint8_t>(byte ^ (1U << (bit % 8)));
     ++from.counters.corrupted;
     fate = Fate::kCorrupted;
   }
-  if (const auto f = match_fault(FaultKind::kDelay, sa, to)) {
+  if (const auto f = faults_.empty() ? std::nullopt : match_fault(FaultKind::kDelay, sa, to)) {
     p.arrival += f->delay;
     ++from.counters.delayed;
     if (fate == Fate::kDelivered) fate = Fate::kDelayed;
   }
-  queue_.push_back(std::move(p));
+  queue_.push_back(p);
   std::push_heap(queue_.begin(), queue_.end());
   return fate;
+}
+
+std::uint32_t MemoryBus::new_frame(std::span<const std::uint8_t> bytes) {
+  std::uint32_t i = 0;
+  if (free_frames_.empty()) {
+    i = static_cast<std::uint32_t>(frames_.size());
+    frames_.emplace_back();
+  } else {
+    i = free_frames_.back();
+    free_frames_.pop_back();
+  }
+  Frame& frame = frames_[i];
+  frame.size = std::min(bytes.size(), frame.bytes.size());
+  std::memcpy(frame.bytes.data(), bytes.data(), frame.size);
+  return i;
 }
 
 std::optional<Fault> MemoryBus::match_fault(FaultKind kind, std::uint8_t from, std::uint8_t to) {
@@ -271,21 +284,21 @@ void MemoryBus::set_silenced(std::uint8_t address, bool silenced) {
 
 void MemoryBus::send_raw(std::uint8_t to, std::span<const std::uint8_t> bytes) {
   if (to >= kMaxStations || !ports_[to]) return;
-  Pending p{clock_.now(), sequence_++, to, {}};
-  const std::size_t n = std::min(bytes.size(), p.bytes.capacity());
-  p.bytes.assign(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(n));
-  queue_.push_back(std::move(p));
+  queue_.push_back(Pending{clock_.now(), sequence_++, to, new_frame(bytes)});
   std::push_heap(queue_.begin(), queue_.end());
 }
 
-void MemoryBus::deliver(Pending& pending) {
+// The frame's slot is given back by the caller after this returns: frames_ keeps its
+// elements in place while the receiver's reply schedules new ones.
+void MemoryBus::deliver(const Pending& pending) {
   Port& to = *ports_[pending.to];
   if (to.silenced) {
     ++to.counters.silenced;
     return;
   }
   to.now = clock_.now();
-  to.decoder.feed(std::span<const std::uint8_t>(pending.bytes.data(), pending.bytes.size()), to);
+  const Frame& frame = frames_[pending.frame];
+  to.decoder.feed(std::span<const std::uint8_t>(frame.bytes.data(), frame.size), to);
   to.decoder.idle(to);  // TSYN of idle line follows every frame on this bus
                         // ([IEC 61158-4-3 bus parameters, timing])
   drain(to);
@@ -333,10 +346,11 @@ bool MemoryBus::step_once() {
   const auto deadline = earliest_deadline();
   if (!queue_.empty() && (!deadline || queue_.front().arrival <= deadline->first)) {
     std::pop_heap(queue_.begin(), queue_.end());
-    Pending p = std::move(queue_.back());
+    const Pending p = queue_.back();
     queue_.pop_back();
     if (p.arrival > clock_.now()) clock_.set(p.arrival);
     deliver(p);
+    free_frames_.push_back(p.frame);
     return true;
   }
   if (!deadline) return false;

@@ -26,6 +26,7 @@
 
 #include <array>
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -145,7 +146,8 @@ class MemoryBus {
   TimePoint arrival_time(const Port& from, const fdl::Telegram& t, std::size_t bytes);
   Fate schedule(Port& from, std::uint8_t to, TimePoint arrival, std::span<const std::uint8_t> wire);
   std::optional<Fault> match_fault(FaultKind kind, std::uint8_t from, std::uint8_t to);
-  void deliver(Pending& p);
+  std::uint32_t new_frame(std::span<const std::uint8_t> bytes);
+  void deliver(const Pending& p);
   void fire_deadline(Port& p);
   void refresh_deadline(Port& p);
   [[nodiscard]] std::optional<std::pair<TimePoint, Port*>> earliest_deadline() const;
@@ -154,13 +156,20 @@ class MemoryBus {
   MemoryBusConfig config_;
   std::array<std::unique_ptr<Port>, kMaxStations> ports_;
   std::vector<Port*> order_;    // attach order = deterministic tie-break for deadlines
-  std::vector<Pending> queue_;  // binary heap on (arrival, sequence)
+  std::vector<Pending> queue_;  // binary heap on (arrival, sequence), small records
+  // The frames in flight, by index (stable: a delivery may schedule new ones); reused.
+  struct Frame {
+    std::array<std::uint8_t, fdl::kMaxTelegramSize> bytes;
+    std::size_t size = 0;
+  };
+  std::deque<Frame> frames_;
+  std::vector<std::uint32_t> free_frames_;
   std::vector<ActiveFault> faults_;
   FaultId next_fault_id_ = 1;
   std::uint64_t sequence_ = 0;
   TimePoint line_free_{};
   DeadlineTree deadlines_;  // slot = attach order
-  std::vector<std::uint8_t> encode_buf_;
+  std::array<std::uint8_t, fdl::kMaxTelegramSize> encode_buf_{};
   std::vector<Port*> woken_;  // woke during a bus call: drained when the call returns
   bool in_call_ = false;
   std::shared_ptr<char> alive_;  // wake handlers hold a weak_ptr to it

@@ -22,6 +22,7 @@ class EventQueue {
     events_.push_back(std::move(e));
   }
   void take(std::vector<MasterEvent>& out) {
+    if (events_.empty()) return;  // the common case: drained after every link call
     for (auto& e : events_) out.push_back(std::move(e));
     events_.clear();
   }

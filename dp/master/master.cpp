@@ -49,9 +49,12 @@ void Master::transmit(fdl::Telegram t) {
 }
 
 std::optional<fdl::Telegram> Master::take_transmit() {
-  if (tx_.empty()) return std::nullopt;
-  fdl::Telegram t = std::move(tx_.front());
-  tx_.pop_front();
+  if (tx_head_ == tx_.size()) return std::nullopt;
+  std::optional<fdl::Telegram> t(std::move(tx_[tx_head_++]));
+  if (tx_head_ == tx_.size()) {  // all taken: the storage is reused
+    tx_.clear();
+    tx_head_ = 0;
+  }
   return t;
 }
 

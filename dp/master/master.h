@@ -80,7 +80,10 @@ class Master final : public Station {
   std::error_code set_outputs(std::uint8_t slave, std::span<const std::uint8_t> outputs);
   // Inputs of the last Data_Exchange; empty if unknown or not in data exchange.
   [[nodiscard]] std::span<const std::uint8_t> inputs(std::uint8_t slave) const;
+  // A copy of the slave's status with its buffers; poll_state() for the state alone.
   [[nodiscard]] std::optional<SlaveStatus> slave_status(std::uint8_t slave) const;
+  // The slave's start-up / data exchange state without copying anything; nullopt if unknown.
+  [[nodiscard]] std::optional<PollState> poll_state(std::uint8_t slave) const;
   [[nodiscard]] std::vector<std::uint8_t> slave_addresses() const;
   // Queues a Global_Control broadcast ([IEC 61158-6-3 Global_Control]) for the start of the next
   // cycle. kBadArgument for reserved command bits, kQueueFull beyond 8 pending.
@@ -134,7 +137,8 @@ class Master final : public Station {
   std::array<std::int16_t, 128> index_{};  // address → slaves_ index, -1 if none
   fdl::FcbInitiator fcb_;
   EventQueue events_;
-  std::deque<fdl::Telegram> tx_;
+  std::vector<fdl::Telegram> tx_;  // tx_[tx_head_..] wait for take_transmit(); reused
+  std::size_t tx_head_ = 0;
   MasterPhase phase_;
   OperatingMode mode_ = OperatingMode::kOperate;
   bool started_ = false;

@@ -22,6 +22,12 @@ std::optional<SlaveStatus> Master::slave_status(std::uint8_t slave) const {
   return s->status();
 }
 
+std::optional<PollState> Master::poll_state(std::uint8_t slave) const {
+  const SlaveHandler* s = find(slave);
+  if (s == nullptr) return std::nullopt;
+  return s->state();
+}
+
 std::vector<std::uint8_t> Master::slave_addresses() const {
   std::vector<std::uint8_t> out;
   out.reserve(slaves_.size());

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace rs4sim::rs4::device {
 
@@ -43,9 +44,11 @@ struct Rs4MasterStation::Slave {
   std::error_code reason;  // the last fault reported by the master, cleared in data exchange
   std::error_code published_reason;
   std::uint8_t f_diagnosis = 0;
+  std::size_t index = 0;  // in slaves_ (configuration order)
+  bool changed = false;   // listed in changed_
 
-  Slave(Rs4MasterEntry e, std::uint8_t out)
-      : entry(std::move(e)), fhost(rs4_fhost_config(entry)), output(out) {
+  Slave(Rs4MasterEntry e, std::uint8_t out, std::size_t i)
+      : entry(std::move(e)), fhost(rs4_fhost_config(entry)), output(out), index(i) {
     fhost.set_output(std::span<const std::uint8_t>(&output, 1));
     published.address = entry.slave.address;
     published.output_byte = out;
@@ -73,10 +76,14 @@ Rs4MasterStation::Rs4MasterStation(const Rs4MasterStationConfig& config)
   if (config.slaves.empty()) throw std::invalid_argument("no RS4 configured");
   std::vector<dp::master::SlaveEntry> entries;
   for (const auto& options : config.slaves) {
-    slaves_.push_back(std::make_unique<Slave>(make_entry(options), config.output_byte));
+    slaves_.push_back(
+        std::make_unique<Slave>(make_entry(options), config.output_byte, slaves_.size()));
     entries.push_back(slaves_.back()->entry.slave);
   }
   master_ = std::make_unique<dp::master::Master>(master_config(config, entries));
+  // After the master: its configuration check names a duplicate or out-of-range address.
+  index_.fill(-1);
+  for (const auto& s : slaves_) index_[s->address()] = static_cast<std::int16_t>(s->index);
   master_->set_wake_handler([this] { wake(); });
 }
 
@@ -106,40 +113,32 @@ std::vector<std::uint8_t> Rs4MasterStation::slave_addresses() const {
   return master_->slave_addresses();
 }
 
-namespace {
-
-template <class Slaves>
-auto find_in(Slaves& slaves, std::uint8_t address) -> decltype(slaves.front().get()) {
-  const auto it = std::find_if(slaves.begin(), slaves.end(),
-                               [address](const auto& s) { return s->address() == address; });
-  return it == slaves.end() ? nullptr : it->get();
-}
-
-}  // namespace
-
 Rs4MasterStation::Slave* Rs4MasterStation::find(std::uint8_t address) {
-  return find_in(slaves_, address);
+  return const_cast<Slave*>(std::as_const(*this).find(address));
 }
 
 const Rs4MasterStation::Slave* Rs4MasterStation::find(std::uint8_t address) const {
-  const Slave* s = find_in(slaves_, address);
-  return s;
+  if (address >= index_.size() || index_[address] < 0) return nullptr;
+  return slaves_[static_cast<std::size_t>(index_[address])].get();
+}
+
+Rs4SlaveView Rs4MasterStation::view_of(const Slave& s) const {
+  Rs4SlaveView v;
+  v.address = s.address();
+  v.dp_state = master_->poll_state(v.address).value_or(dp::master::PollState::kStatusRequest);
+  v.dp_error = s.reason;
+  v.safety = s.fhost.state();
+  v.f_diagnosis = s.f_diagnosis;
+  const auto in = s.fhost.input();
+  v.input_byte = in.empty() ? 0 : in[0];
+  v.output_byte = s.output;
+  return v;
 }
 
 std::optional<Rs4SlaveView> Rs4MasterStation::view(std::uint8_t address) const {
   const Slave* s = find(address);
   if (s == nullptr) return std::nullopt;
-  Rs4SlaveView v;
-  v.address = address;
-  if (const auto st = master_->slave_status(address)) {
-    v.dp_state = st->state;
-  }
-  v.dp_error = s->reason;
-  v.safety = s->fhost.state();
-  v.f_diagnosis = s->f_diagnosis;
-  v.input_byte = input_byte(address);
-  v.output_byte = s->output;
-  return v;
+  return view_of(*s);
 }
 
 std::uint8_t Rs4MasterStation::input_byte(std::uint8_t address) const {
@@ -150,8 +149,7 @@ std::uint8_t Rs4MasterStation::input_byte(std::uint8_t address) const {
 }
 
 bool Rs4MasterStation::in_data_exchange(std::uint8_t address) const {
-  const auto st = master_->slave_status(address);
-  return st && st->state == dp::master::PollState::kDataExchange;
+  return master_->poll_state(address) == dp::master::PollState::kDataExchange;
 }
 
 bool Rs4MasterStation::set_output_byte(std::uint8_t address, std::uint8_t out) {
@@ -159,6 +157,7 @@ bool Rs4MasterStation::set_output_byte(std::uint8_t address, std::uint8_t out) {
   if (s == nullptr) return false;
   s->output = out;
   s->fhost.set_output(std::span<const std::uint8_t>(&s->output, 1));
+  mark_changed(s);
   return true;
 }
 
@@ -174,6 +173,7 @@ bool Rs4MasterStation::ack_rei(std::uint8_t address) {
   Slave* s = find(address);
   if (s == nullptr) return false;
   s->fhost.ack_rei();
+  mark_changed(s);  // published after the next link call, as before
   return true;
 }
 
@@ -211,18 +211,36 @@ void Rs4MasterStation::take_master_events(std::vector<dp::master::MasterEvent>& 
 
 // ---- per call: the master's events, the safety cycle, the changes --------------------------
 
+// Only a master event about an RS4, the safety cycle and the user calls change what its
+// view shows: those mark it, and after the call the marked ones are compared with what was
+// published, in configuration order (as one pass over all of them would).
+void Rs4MasterStation::mark_changed(Slave* s) {
+  if (s == nullptr || s->changed) return;
+  s->changed = true;
+  changed_.push_back(s->index);
+}
+
 void Rs4MasterStation::after_call(dp::TimePoint now) {
   scratch_.clear();
   master_->take_events(scratch_);
   if (keep_master_events_)
     master_events_.insert(master_events_.end(), scratch_.begin(), scratch_.end());
   for (auto& e : scratch_) on_master_event(e, now);
-  for (auto& s : slaves_) publish_changes(*s);
+  if (all_changed_) {
+    for (auto& s : slaves_) publish_changes(*s);
+  } else {
+    std::sort(changed_.begin(), changed_.end());
+    for (const std::size_t i : changed_) publish_changes(*slaves_[i]);
+  }
+  for (const std::size_t i : changed_) slaves_[i]->changed = false;
+  changed_.clear();
+  all_changed_ = false;
 }
 
 void Rs4MasterStation::on_master_event(dp::master::MasterEvent& e, dp::TimePoint now) {
   if (const auto* cycle = std::get_if<dp::master::CycleCompleted>(&e)) {
     for (auto& s : slaves_) safety_cycle(*s, now);
+    all_changed_ = true;
     // Ticks not drained yet collapse into the newest: the queue does not grow by one per
     // cycle for an owner that drains rarely.
     auto* last = events_.empty() ? nullptr : std::get_if<MasterCycle>(&events_.back());
@@ -234,15 +252,22 @@ void Rs4MasterStation::on_master_event(dp::master::MasterEvent& e, dp::TimePoint
   } else if (auto* result = std::get_if<dp::master::Dpv1Result>(&e)) {
     events_.push_back(std::move(*result));
   } else if (const auto* left = std::get_if<dp::master::SlaveLeftDataExchange>(&e)) {
-    if (Slave* s = find(left->address)) s->reason = left->reason;
+    Slave* s = find(left->address);
+    if (s != nullptr) s->reason = left->reason;
+    mark_changed(s);
   } else if (const auto* fault = std::get_if<dp::master::SlaveFault>(&e)) {
-    if (Slave* s = find(fault->address)) s->reason = fault->reason;
+    Slave* s = find(fault->address);
+    if (s != nullptr) s->reason = fault->reason;
+    mark_changed(s);
   } else if (const auto* diag = std::get_if<dp::master::DiagReceived>(&e)) {
     Slave* s = find(diag->address);
     const auto number = f_diagnosis_number(std::span(diag->diag.data(), diag->diag.size()));
     if (s != nullptr) s->f_diagnosis = number.value_or(0);
+    mark_changed(s);
   } else if (const auto* entered = std::get_if<dp::master::SlaveEnteredDataExchange>(&e)) {
-    if (Slave* s = find(entered->address)) s->reason = {};
+    Slave* s = find(entered->address);
+    if (s != nullptr) s->reason = {};
+    mark_changed(s);
   }
 }
 
@@ -263,9 +288,7 @@ void Rs4MasterStation::safety_cycle(Slave& s, dp::TimePoint now) {
 }
 
 void Rs4MasterStation::publish_changes(Slave& s) {
-  const auto now_view = view(s.address());
-  if (!now_view) return;
-  const Rs4SlaveView& v = *now_view;
+  const Rs4SlaveView v = view_of(s);
   Rs4SlaveView& old = s.published;
   // Data exchange entered/left, or a new start-up fault: not every start-up step.
   if (v.data_exchange() != old.data_exchange() || s.reason != s.published_reason) {

@@ -52,8 +52,7 @@ std::uint8_t Rs4Segment::input_byte() const {
 }
 
 bool Rs4Segment::in_data_exchange() const {
-  const auto st = master_->slave_status(rs4_address());
-  return st && st->state == dp::master::PollState::kDataExchange;
+  return master_->poll_state(rs4_address()) == dp::master::PollState::kDataExchange;
 }
 
 // One PROFIsafe step per master cycle: answer in, next request out
