@@ -5,7 +5,7 @@
 # in it and runs `./build.sh deps` there through chroot. It passes when the packages build.sh
 # installs (--no-install-recommends) give every module and command the tests use.
 #
-#   sudo tools/fresh_machine_check.sh           (about 10 minutes, 1.5 GB under TMPDIR)
+#   sudo tools/fresh_machine_check.sh           (about 8 minutes, 1.5 GB under TMPDIR)
 #   MODE=test tools/fresh_machine_check.sh      the whole `./build.sh test` in the root (hours)
 #
 # Environment: MIRROR (default http://deb.debian.org/debian), SECURITY_MIRROR (default
@@ -26,6 +26,7 @@ if ! command -v debootstrap >/dev/null 2>&1; then
 fi
 
 root=$(mktemp -d)
+chmod 755 "$root"  # apt downloads as _apt: it must reach the root
 mounted=
 cleanup() {
   for m in $mounted; do umount "$root/$m" 2>/dev/null || umount -l "$root/$m" 2>/dev/null || :; done
