@@ -23,6 +23,10 @@ bg_await run.err 'Ctrl-C to stop'
   --f-wd-time 500 --dp-watchdog 1000 --archive "$dir/archive.sqlite3" \
   >"$dir/master.out" 2>"$dir/master.err"
 rc=$?
+# The run ends at once: its RS4s still hold PROFIsafe run only until their F watchdog
+# (--f-wd-time 500) sees the master gone; the checks below come after.
+bg_stop run TERM
+run_rc=$bg_rc
 cat "$dir/master.out"
 if [ $rc -ne 0 ]; then
   echo "rs4sim master exited with $rc"
@@ -44,8 +48,6 @@ for s in 4 5; do
   expect "\"station\":$s,\"event\":\"stop\",\"dp\":\"DataExchange\",\"data_exchange\":true,\"profisafe\":\"run\"" "$m"
 done
 
-bg_stop run TERM
-run_rc=$bg_rc
 [ $run_rc -eq 0 ] || { echo "rs4sim run exited with $run_rc"; cat "$dir/run.err"; fail=1; }
 cat "$dir/run.err" "$dir/run.out"
 expect 'rs4sim: 2 RS4/PROFIsafe at addresses 4, 5 (ident 0x[0-9a-f]*, F_Dest_Add [0-9]*, [0-9]*, boot 1000 ms) on pty' "$dir/run.err"
