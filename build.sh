@@ -10,6 +10,12 @@
 #                           integration again (one build, the fuzz targets in it too)
 #                        3. every libFuzzer target, briefly, from its seed corpus
 #   ./build.sh build   install + build only
+#   ./build.sh deps    install what `test` needs, run the preflight; no build (a fresh
+#                      machine's check: tools/fresh_machine_check.sh)
+#
+# `test` and `deps` install the packages of tools/preflight.sh's table (what the tests import
+# or call, each beside the test that needs it, what a dependency only recommends included)
+# and run that preflight before anything is built: it names what is missing and its package.
 #
 # Environment: JOBS (parallel build jobs, default: nproc), FUZZ_SECONDS (per fuzz target
 # in `test`, default 10), RS4SIM_WERROR (warnings are errors, default ON here; a plain
@@ -18,8 +24,8 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 mode=${1:-}
-case "$mode" in demo|test|build) ;; *)
-  echo "usage: $0 demo|test|build" >&2; exit 2;;
+case "$mode" in demo|test|build|deps) ;; *)
+  echo "usage: $0 demo|test|build|deps" >&2; exit 2;;
 esac
 
 JOBS=${JOBS:-$(nproc)}
@@ -30,8 +36,13 @@ packages=(build-essential cmake ninja-build pkg-config libboost-dev libsqlite3-d
           libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev)
 packages+=(libprotobuf-dev protobuf-compiler zlib1g-dev)   # storage/: archive export format, CRC-32
 packages+=(libgrpc++-dev protobuf-compiler-grpc)           # rpc/: the control API
-[ "$mode" = test ] && packages+=(clang libclang-rt-14-dev tshark python3-grpcio python3-grpc-tools)  # fuzzing, dissector, RPC clients
-[ "$mode" = test ] && packages+=(python3-pymodbus mbpoll)  # Polaris: real Modbus RTU clients
+case "$mode" in test|deps) testing=true ;; *) testing=false ;; esac
+if $testing; then
+  # the tests' packages (fuzzing, dissector, gRPC and Modbus clients, ...): the preflight's table
+  test_packages=$(tools/preflight.sh --packages)
+  # shellcheck disable=SC2206  # one package name a line
+  packages+=($test_packages)
+fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -44,6 +55,10 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
+if $testing; then
+  tools/preflight.sh
+fi
+
 configure_and_build() {  # dir, extra cmake args...
   local dir=$1; shift
   cmake -S . -B "$dir" -G Ninja -DRS4SIM_WERROR="$RS4SIM_WERROR" "$@" >/dev/null
@@ -53,6 +68,8 @@ configure_and_build() {  # dir, extra cmake args...
 case "$mode" in
   build)
     configure_and_build build
+    ;;
+  deps)
     ;;
   demo)
     configure_and_build build -DRS4SIM_TESTS=OFF -DRS4SIM_BENCH=OFF

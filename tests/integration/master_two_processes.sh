@@ -13,38 +13,28 @@ set -u
 rs4sim=$1
 link=${2:-pty}
 lua=$(cd "$(dirname "$0")/../.." && pwd)/tools/wireshark/rs4sim.lua
-dir=$(mktemp -d)
-run_pid=
-cleanup() {
-  [ -n "$run_pid" ] && kill "$run_pid" 2>/dev/null && wait "$run_pid" 2>/dev/null
-  rm -rf "$dir"
-}
-trap cleanup EXIT
+. "$(dirname "$0")/lib.sh"
 
 if [ "$link" = udp ]; then
   # ports from the process id, in the dynamic range
   a=$((49152 + ($$ * 2) % 16000))
   b=$((a + 1))
-  "$rs4sim" run --device rs4 --address 4 --link udp --listen 127.0.0.1:$a --peer 127.0.0.1:$b \
-    --boot-time 1000 --duration 60 --capture "$dir/run.pcap" >"$dir/run.out" 2>"$dir/run.err" &
-  run_pid=$!
+  bg_start run "$rs4sim" run --device rs4 --address 4 --link udp --listen 127.0.0.1:$a \
+    --peer 127.0.0.1:$b --boot-time 1000 --duration 60 --capture "$dir/run.pcap"
   set -- --link udp --listen 127.0.0.1:$b --peer 127.0.0.1:$a
 else
-  "$rs4sim" run --device rs4 --address 4 --link pty --boot-time 1000 --duration 60 \
-    --capture "$dir/run.pcap" >"$dir/run.out" 2>"$dir/run.err" &
-  run_pid=$!
-  i=0
-  while [ ! -s "$dir/run.out" ] && [ $i -lt 100 ]; do
-    sleep 0.1
-    i=$((i + 1))
-  done
+  bg_start run "$rs4sim" run --device rs4 --address 4 --link pty --boot-time 1000 --duration 60 \
+    --capture "$dir/run.pcap"
+  bg_await run.out '.'
   path=$(head -n 1 "$dir/run.out")
   case "$path" in
     /dev/*) ;;
-    *) echo "rs4sim run printed no pty path"; cat "$dir/run.err"; exit 1 ;;
+    *) bg_fail "rs4sim run printed no pty path" ;;
   esac
   set -- --link serial --port "$path"
 fi
+# The banner: the run serves its link, its SIGTERM handler is installed.
+bg_await run.err 'Ctrl-C to stop'
 
 # Generous watchdogs: the machine running the tests may be loaded.
 "$rs4sim" master --slave 4 "$@" --json --duration 8 \
@@ -73,10 +63,8 @@ expect '"station":4,"event":"proxy",.*"step":"identify"'
 expect '"station":4,"event":"proxy",.*"step":"idle",.*"fb_busy":false,"config_set_to_default":true,"error_number_fb":0'
 
 # The captures: the run ends on SIGTERM and reports its file.
-kill -TERM "$run_pid"
-wait "$run_pid"
-run_rc=$?
-run_pid=
+bg_stop run TERM
+run_rc=$bg_rc
 [ $run_rc -eq 0 ] || { echo "rs4sim run exited with $run_rc"; cat "$dir/run.err"; fail=1; }
 telegrams() { sed -n 's/^rs4sim: capture: \([0-9]*\) telegrams in .*/\1/p' "$1"; }
 n_run=$(telegrams "$dir/run.err")

@@ -8,21 +8,18 @@ set -euo pipefail
 rs4sim=$1
 fail() { echo "polaris_clients: $*" >&2; exit 1; }
 
-# start <mode>: runs the device in the background; sets pid and tty.
+. "$(dirname "$0")/lib.sh"
+
+# start <mode>: runs the device in the background; sets tty.
 start() {
-  out=$(mktemp)
-  "$rs4sim" run --device polaris --link pty --model PL10 --beams 40 --mode "$1" \
-    --address 1 --baud 19200 --blocked 9-13,25-34 >"$out" 2>&1 &
-  pid=$!
-  for _ in $(seq 50); do
-    tty=$(grep -m1 '^/dev/pts/' "$out" || true)
-    [ -n "$tty" ] && return 0
-    sleep 0.1
-  done
-  kill "$pid" 2>/dev/null || true
-  fail "no pty path from rs4sim: $(cat "$out")"
+  bg_start polaris "$rs4sim" run --device polaris --link pty --model PL10 --beams 40 --mode "$1" \
+    --address 1 --baud 19200 --blocked 9-13,25-34
+  bg_await polaris.out '^/dev/pts/'
+  tty=$(grep -m1 '^/dev/pts/' "$dir/polaris.out")
+  # the banner: the device serves its pty
+  bg_await polaris.err 'Ctrl-C to stop'
 }
-stop() { kill "$pid" 2>/dev/null || true; wait "$pid" 2>/dev/null || true; }
+stop() { bg_stop polaris TERM; }
 
 pymodbus_read() {  # <tty> <count> -> the words, space-separated
   /usr/bin/python3 - "$1" "$2" <<'PY'
@@ -51,7 +48,6 @@ expect() {  # <what> <got> <expected>
 }
 
 start FL4
-trap stop EXIT
 expect "pymodbus FL4" "$(pymodbus_read "$tty" 10)" "9 13 25 34 0 0 0 0 9 34"
 expect "mbpoll FL4" "$(mbpoll_read "$tty" 10)" \
   "0x0009 0x000D 0x0019 0x0022 0x0000 0x0000 0x0000 0x0000 0x0009 0x0022"

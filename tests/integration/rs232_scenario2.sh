@@ -12,30 +12,16 @@
 set -u
 rs4sim=$1
 source_dir=$2
-dir=$(mktemp -d)
-run_pid=
-master_pid=
-cleanup() {
-  [ -n "$master_pid" ] && kill "$master_pid" 2>/dev/null
-  [ -n "$run_pid" ] && kill "$run_pid" 2>/dev/null && wait "$run_pid" 2>/dev/null
-  rm -rf "$dir"
-}
-trap cleanup EXIT
-fail() {
-  echo "FAIL: $1"
-  for f in run.out run.err master.out master.err; do echo "--- $f"; cat "$dir/$f" 2>/dev/null; done
-  exit 1
-}
+. "$(dirname "$0")/lib.sh"
+fail() { bg_fail "$1"; }
 
-: >"$dir/run.out"  # exists before the background shell opens it
-"$rs4sim" run --device rs4 --address 4 --link pty --boot-time 1000 --duration 60 \
-  --rs232 pty --pc-adapter detached --grpc 127.0.0.1:0 >"$dir/run.out" 2>"$dir/run.err" &
-run_pid=$!
-i=0
-while [ "$(wc -l <"$dir/run.out" 2>/dev/null || echo 0)" -lt 3 ] && [ $i -lt 100 ]; do
-  sleep 0.1
-  i=$((i + 1))
-done
+bg_start run "$rs4sim" run --device rs4 --address 4 --link pty --boot-time 1000 --duration 60 \
+  --rs232 pty --pc-adapter detached --grpc 127.0.0.1:0
+# stdout: the PROFIBUS pty, then the RS232 pty, then the API; stderr: the banner once the
+# links are served and the signal handlers (SIGUSR2 below) are installed
+bg_await run.out '^rs232: '
+bg_await run.out '^grpc: listening on '
+bg_await run.err 'Ctrl-C to stop'
 bus=$(sed -n 1p "$dir/run.out")
 rs232=$(sed -n 2p "$dir/run.out" | sed 's/^rs232: //')
 case "$bus" in /dev/*) ;; *) fail "no PROFIBUS pty path" ;; esac
@@ -50,19 +36,11 @@ from rs4sim_harness import Rs4
 Rs4(sys.argv[1], station=4).add_circle(0, 4000, 300)
 PY
 
-"$rs4sim" master --slave 4 --link serial --port "$bus" --json --duration 20 \
-  --f-wd-time 500 --dp-watchdog 1000 --archive "$dir/archive.sqlite3" \
-  >"$dir/master.out" 2>"$dir/master.err" &
-master_pid=$!
+bg_start master "$rs4sim" master --slave 4 --link serial --port "$bus" --json --duration 20 \
+  --f-wd-time 500 --dp-watchdog 1000 --archive "$dir/archive.sqlite3"
 
 # First commissioning: factory set, empty archive (scenario 1).
-i=0
-until grep -q '"event":"proxy",.*"step":"idle",.*"config_set_to_default":true,"error_number_fb":0' \
-  "$dir/master.out"; do
-  [ $i -ge 100 ] && fail "no first-commissioning sync"
-  sleep 0.1
-  i=$((i + 1))
-done
+bg_await master.out '"event":"proxy",.*"step":"idle",.*"config_set_to_default":true,"error_number_fb":0'
 
 # The PC adapter attached through the API (Device.SetPcAdapter goes through the RS232 port,
 # which opens with it); removed below with SIGUSR2, the command-line way.
@@ -71,36 +49,42 @@ import sys
 from rs4sim_harness import Rs4
 Rs4(sys.argv[1], station=4).set_pc_adapter(True)
 PY
-sleep 0.5
 /usr/bin/python3 - "$rs232" <<'PY' || fail "no 0x23 measurement frames on the RS232 port"
-import os, sys, termios, time
+import os, select, sys, termios, time
 fd = os.open(sys.argv[1], os.O_RDWR | os.O_NOCTTY)
 attrs = termios.tcgetattr(fd)
 attrs[0] = attrs[1] = attrs[3] = 0          # raw
 attrs[2] = termios.CS8 | termios.CREAD | termios.CLOCAL
 termios.tcsetattr(fd, termios.TCSANOW, attrs)
-data = b""
-end = time.time() + 1.5
-while time.time() < end:
-    try:
-        os.set_blocking(fd, False)
-        data += os.read(fd, 65536)
-    except BlockingIOError:
-        time.sleep(0.01)
-os.close(fd)
+
+
 # Frames: 00 00 | body (zero-stuffed: FF after two 00) | CHK | 00 00 00; CHK = XOR of the sent
 # body bytes, 0x00 sent as 0xFF ([roboticslibrary/rl LeuzeRs4.cpp], docs/rs232.md).
-good = 0
-for raw in data.split(b"\x00\x00\x00"):
-    raw = raw.lstrip(b"\x00")
-    if len(raw) < 3 or raw[0] != 0x23:
-        continue
-    body, chk = raw[:-1], raw[-1]
-    x = 0
-    for b in body:
-        x ^= b
-    if (x or 0xFF) == chk:
-        good += 1
+def good_frames(data):
+    good = 0
+    for raw in data.split(b"\x00\x00\x00"):
+        raw = raw.lstrip(b"\x00")
+        if len(raw) < 3 or raw[0] != 0x23:
+            continue
+        body, chk = raw[:-1], raw[-1]
+        x = 0
+        for b in body:
+            x ^= b
+        if (x or 0xFF) == chk:
+            good += 1
+    return good
+
+
+# The stream runs from the moment the adapter is attached: read until three whole frames are
+# in (the deadline is for a loaded machine), then drop what follows the last frame's end.
+data = b""
+end = time.time() + 20
+while good_frames(data) < 3 and time.time() < end:
+    if select.select([fd], [], [], 0.1)[0]:
+        data += os.read(fd, 65536)
+os.close(fd)
+data = data[:data.rfind(b"\x00\x00\x00") + 3]
+good = good_frames(data)
 print(f"0x23 frames with a good check byte: {good}")
 if good < 2:
     sys.exit(1)
@@ -167,10 +151,9 @@ PY
 "$rs4sim" param set "$dir/site.json" --port "$rs232" --password ROD4LE \
   >"$dir/param.out" 2>"$dir/param.err" || fail "param set: $(cat "$dir/param.err")"
 
-kill -USR2 "$run_pid"  # the PC adapter removed: Proxy-Request, the proxy uploads the new set
-wait "$master_pid"
-rc=$?
-master_pid=
+bg_signal run USR2  # the PC adapter removed: Proxy-Request, the proxy uploads the new set
+bg_wait master
+rc=$bg_rc
 [ $rc -eq 0 ] || fail "rs4sim master exited with $rc"
 grep -q '"event":"proxy",.*"step":"upload' "$dir/master.out" || fail "no upload step"
 "$rs4sim" param get --archive "$dir/archive.sqlite3" --address 4 >"$dir/archived.json" \

@@ -6,33 +6,27 @@
 # Usage: run_two_rs4s.sh RS4SIM
 set -u
 rs4sim=$1
-dir=$(mktemp -d)
-run_pid=
-cleanup() {
-  [ -n "$run_pid" ] && kill "$run_pid" 2>/dev/null && wait "$run_pid" 2>/dev/null
-  rm -rf "$dir"
-}
-trap cleanup EXIT
+. "$(dirname "$0")/lib.sh"
 
-"$rs4sim" run --address 4 --address 5 --link pty --boot-time 1000 --duration 60 \
-  >"$dir/run.out" 2>"$dir/run.err" &
-run_pid=$!
-i=0
-while [ ! -s "$dir/run.out" ] && [ $i -lt 100 ]; do
-  sleep 0.1
-  i=$((i + 1))
-done
+bg_start run "$rs4sim" run --address 4 --address 5 --link pty --boot-time 1000 --duration 60
+bg_await run.out '.'
 path=$(head -n 1 "$dir/run.out")
 case "$path" in
   /dev/*) ;;
-  *) echo "rs4sim run printed no pty path"; cat "$dir/run.err"; exit 1 ;;
+  *) bg_fail "rs4sim run printed no pty path" ;;
 esac
+# The banner: the run serves its link, its SIGTERM handler is installed.
+bg_await run.err 'Ctrl-C to stop'
 
 # Generous watchdogs: the machine running the tests may be loaded.
 "$rs4sim" master --slave 4 --slave 5 --link serial --port "$path" --json --duration 8 \
   --f-wd-time 500 --dp-watchdog 1000 --archive "$dir/archive.sqlite3" \
   >"$dir/master.out" 2>"$dir/master.err"
 rc=$?
+# The run ends at once: its RS4s still hold PROFIsafe run only until their F watchdog
+# (--f-wd-time 500) sees the master gone; the checks below come after.
+bg_stop run TERM
+run_rc=$bg_rc
 cat "$dir/master.out"
 if [ $rc -ne 0 ]; then
   echo "rs4sim master exited with $rc"
@@ -54,10 +48,6 @@ for s in 4 5; do
   expect "\"station\":$s,\"event\":\"stop\",\"dp\":\"DataExchange\",\"data_exchange\":true,\"profisafe\":\"run\"" "$m"
 done
 
-kill -TERM "$run_pid"
-wait "$run_pid"
-run_rc=$?
-run_pid=
 [ $run_rc -eq 0 ] || { echo "rs4sim run exited with $run_rc"; cat "$dir/run.err"; fail=1; }
 cat "$dir/run.err" "$dir/run.out"
 expect 'rs4sim: 2 RS4/PROFIsafe at addresses 4, 5 (ident 0x[0-9a-f]*, F_Dest_Add [0-9]*, [0-9]*, boot 1000 ms) on pty' "$dir/run.err"
