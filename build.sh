@@ -31,6 +31,7 @@ packages+=(libprotobuf-dev protobuf-compiler zlib1g-dev)   # storage/: archive e
 packages+=(libgrpc++-dev protobuf-compiler-grpc)           # rpc/: the control API
 [ "$mode" = test ] && packages+=(clang libclang-rt-14-dev tshark python3-grpcio python3-grpc-tools)  # fuzzing, dissector, RPC clients
 [ "$mode" = test ] && packages+=(python3-pymodbus mbpoll)  # Polaris: real Modbus RTU clients
+[ "$mode" = test ] && packages+=(python3-venv python3-pip python3-setuptools python3-wheel python3-pytest)  # the rs4sim Python package: venv, offline pip install, pytest plugin (docs/rpc.md)
 
 missing=()
 for p in "${packages[@]}"; do
