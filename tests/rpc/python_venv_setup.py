@@ -36,7 +36,8 @@ if probe.returncode != 0 or probe.stdout.split():
     fail("the offline install needs Debian's python3-pip, python3-setuptools and python3-wheel; "
          f"missing: {probe.stdout.strip() or probe.stderr.strip()}")
 install = subprocess.run([python, "-m", "pip", "install", "--no-deps", "--no-build-isolation",
-                          "--no-index", "--disable-pip-version-check", "--quiet", package],
+                          "--no-index", "--no-cache-dir", "--disable-pip-version-check", "--quiet",
+                          package],
                          capture_output=True, text=True)
 if install.returncode != 0:
     fail(f"pip install {package}:\n{install.stdout}{install.stderr}")
