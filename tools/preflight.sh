@@ -20,21 +20,22 @@ python=${RS4SIM_PYTHON:-/usr/bin/python3}
 # package, who needs it. A package a dependency only recommends gets its own row (build.sh
 # installs with --no-install-recommends).
 table='
-python  grpc               python3-grpcio          rpc_python_*, cli_rs232_scenario2: the gRPC client (tools/python/rs4sim_harness.py)
-python  google.protobuf    python3-protobuf        the harness: the message classes of its stubs
-python  grpc_tools.protoc  python3-grpc-tools      the harness: compiles the stubs from rpc/proto at import
-python  pkg_resources      python3-pkg-resources   grpc_tools.protoc imports it; python3-grpc-tools does not declare it
+python  grpc               python3-grpcio          rpc_python_*, cli_rs232_scenario2: the gRPC client (the rs4sim package, python/)
+python  google.protobuf    python3-protobuf        the rs4sim package: the message classes of its stubs
 python  pymodbus.client    python3-pymodbus        cli_run_polaris_modbus_clients: a real Modbus RTU client
 python  serial             python3-serial          pymodbus serial client (python3-pymodbus only recommends it)
 python  serial_asyncio     python3-serial-asyncio  pymodbus serial client (python3-pymodbus only recommends it)
-python  pytest             python3-pytest          the Python package tests (tools/python)
+python  pytest             python3-pytest          rpc_python_pytest_*: the package's pytest plugin
 python  ensurepip          python3-venv            python3 -m venv for the Python package tests
+python  pip                python3-pip             python_package_venv: the offline install into the venv
 python  setuptools         python3-setuptools      the Python package build backend
+python  wheel              python3-wheel           pip's build of the package (bdist_wheel)
 command /usr/bin/python3   python3                 every Python test and script (ctest runs /usr/bin/python3)
 command mbpoll             mbpoll                  cli_run_polaris_modbus_clients: libmodbus client
 command tshark             tshark                  capture_dissector, cli_master_run_two_processes*: the Lua dissector
-command clang++            clang                   ./build.sh test stage 3: the libFuzzer targets
-file    /usr/lib/llvm-14/lib/clang/*/lib/linux/libclang_rt.fuzzer-*.a  libclang-rt-14-dev  stage 3: the libFuzzer runtime
+command clang++            clang                   ./build.sh test stage 2: the sanitizer build with the libFuzzer targets
+command grpc_python_plugin protobuf-compiler-grpc  python/package.cmake: the package's gRPC stubs
+file    /usr/lib/llvm-14/lib/clang/*/lib/linux/libclang_rt.fuzzer-*.a  libclang-rt-14-dev  stage 2: the libFuzzer runtime
 '
 
 rows() {  # the table without blank lines

@@ -8,10 +8,11 @@
 # geometry alone), `rs4sim param set` changes the
 # response time with the password, the adapter is removed (SIGUSR2), Proxy-Request comes and
 # the master's proxy uploads the new set into its archive.
-# Usage: rs232_scenario2.sh RS4SIM SOURCE_DIR
+# Usage: rs232_scenario2.sh RS4SIM PYTHON (a python with the rs4sim package installed: the
+# tests' venv, tests/rpc/python_venv_setup.py)
 set -u
 rs4sim=$1
-source_dir=$2
+python=$2
 . "$(dirname "$0")/lib.sh"
 fail() { bg_fail "$1"; }
 
@@ -30,9 +31,9 @@ api=$(sed -n 's/^grpc: listening on //p' "$dir/run.out")
 [ -n "$api" ] || fail "no 'grpc: listening on' line"
 
 # The known scene: a round post of radius 300 mm, 4 m straight ahead (segment 264 at 90°).
-PYTHONPATH="$source_dir/tools/python" /usr/bin/python3 - "$api" <<'PY' || fail "AddObstacle"
+"$python" - "$api" <<'PY' || fail "AddObstacle"
 import sys
-from rs4sim_harness import Rs4
+from rs4sim import Rs4
 Rs4(sys.argv[1], station=4).add_circle(0, 4000, 300)
 PY
 
@@ -44,9 +45,9 @@ bg_await master.out '"event":"proxy",.*"step":"idle",.*"config_set_to_default":t
 
 # The PC adapter attached through the API (Device.SetPcAdapter goes through the RS232 port,
 # which opens with it); removed below with SIGUSR2, the command-line way.
-PYTHONPATH="$source_dir/tools/python" /usr/bin/python3 - "$api" <<'PY' || fail "SetPcAdapter"
+"$python" - "$api" <<'PY' || fail "SetPcAdapter"
 import sys
-from rs4sim_harness import Rs4
+from rs4sim import Rs4
 Rs4(sys.argv[1], station=4).set_pc_adapter(True)
 PY
 /usr/bin/python3 - "$rs232" <<'PY' || fail "no 0x23 measurement frames on the RS232 port"

@@ -4,7 +4,6 @@ the RS4 at power-on (DP Wait_Prm, OSSD off, the RS4 initialising [RS4 manual §4
 DP start-up reaches data exchange; Device calls are not served (UNIMPLEMENTED: the story is
 not to be disturbed); SIGTERM ends the demo between two steps with exit 130.
 Usage: python_demo_grpc_test.py RS4SIM REPO   (exit 77 = skipped: no python3-grpcio)"""
-import os
 import signal
 import subprocess
 import sys
@@ -16,8 +15,7 @@ except ImportError:
     sys.exit(77)
 
 rs4sim, repo = sys.argv[1], sys.argv[2]
-sys.path.insert(0, os.path.join(repo, "tools", "python"))
-from rs4sim_harness import Rs4  # noqa: E402
+from rs4sim import Rs4  # noqa: E402
 
 demo = subprocess.Popen([rs4sim, "demo", "--grpc", "127.0.0.1:0"], stdout=subprocess.PIPE,
                         stderr=subprocess.PIPE, text=True)

@@ -1,10 +1,9 @@
-"""`rs4sim run --link memory --grpc` driven by the Python harness (tools/python/rs4sim_harness.py)
+"""`rs4sim run --link memory --grpc` driven by the Python harness (the rs4sim package, python/)
 through python3-grpcio, a third-party gRPC client: boot in simulated time, a protective-field
 violation and restart, the rich error details, the standard health service (its response
 HealthCheckResponse{status = SERVING} is the fixed bytes 08 01) and server reflection
 (ServerReflectionRequest{list_services = ""} is 3A 00; the answer names our services).
 Usage: python_harness_test.py RS4SIM REPO   (exit 77 = skipped: no python3-grpcio)"""
-import os
 import signal
 import subprocess
 import sys
@@ -16,8 +15,7 @@ except ImportError:
     sys.exit(77)
 
 rs4sim, repo = sys.argv[1], sys.argv[2]
-sys.path.insert(0, os.path.join(repo, "tools", "python"))
-from rs4sim_harness import Rs4, error_details  # noqa: E402
+from rs4sim import Rs4, error_details  # noqa: E402
 
 proc = subprocess.Popen([rs4sim, "run", "--link", "memory", "--grpc", "127.0.0.1:0"],
                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)

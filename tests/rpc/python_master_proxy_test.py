@@ -23,9 +23,8 @@ except ImportError:
     sys.exit(77)
 
 rs4sim, repo = sys.argv[1], sys.argv[2]
-sys.path.insert(0, os.path.join(repo, "tools", "python"))
-# Imported before the processes start: compiling the stubs takes a moment.
-from rs4sim_harness import Master, Rs4, archive_pb, error_details  # noqa: E402
+# Imported before the processes start: loading grpc and the stubs takes a moment.
+from rs4sim import Master, Rs4, archive_pb, error_details  # noqa: E402
 
 
 def free_udp_port():

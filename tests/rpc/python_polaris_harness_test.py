@@ -1,5 +1,5 @@
 """`rs4sim run --device polaris --link pty --grpc` driven by the Python harness
-(tools/python/rs4sim_harness.py, python3-grpcio), checked over Modbus RTU with raw bytes on the
+(the rs4sim package, python3-grpcio), checked over Modbus RTU with raw bytes on the
 pty (os/termios only, no code of the project on that side): the beams blocked through the API
 come back in the 485MB data block, the faults reach the wire, the event stream shows PN1, and
 server reflection lists the Polaris service.
@@ -22,8 +22,7 @@ except ImportError:
     sys.exit(77)
 
 rs4sim, repo = sys.argv[1], sys.argv[2]
-sys.path.insert(0, os.path.join(repo, "tools", "python"))
-from rs4sim_harness import Polaris, error_details  # noqa: E402
+from rs4sim import Polaris, error_details  # noqa: E402
 
 
 def crc16(frame):

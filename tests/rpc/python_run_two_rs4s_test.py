@@ -19,8 +19,7 @@ except ImportError:
     sys.exit(77)
 
 rs4sim, repo = sys.argv[1], sys.argv[2]
-sys.path.insert(0, os.path.join(repo, "tools", "python"))
-from rs4sim_harness import Rs4, error_details, pb  # noqa: E402
+from rs4sim import Rs4, error_details, pb  # noqa: E402
 
 
 def first_lines(proc, *prefixes):

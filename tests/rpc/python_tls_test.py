@@ -1,5 +1,5 @@
 """`rs4sim run --grpc 0.0.0.0:0` with TLS and a bearer token, driven by the Python harness through
-python3-grpcio (tools/python/rs4sim_harness.py): the test certificate of tests/rpc/data as the
+python3-grpcio (the rs4sim package): the test certificate of tests/rpc/data as the
 client's root, the token of its token.txt; the right token answers (a service, health,
 reflection), a wrong or missing one is UNAUTHENTICATED with its message, a plaintext client
 fails; then `--grpc 127.0.0.1:0` with only RS4SIM_GRPC_TOKEN (no TLS, local credentials).
@@ -16,8 +16,7 @@ except ImportError:
     sys.exit(77)
 
 rs4sim, repo = sys.argv[1], sys.argv[2]
-sys.path.insert(0, os.path.join(repo, "tools", "python"))
-from rs4sim_harness import Rs4, open_channel  # noqa: E402
+from rs4sim import Rs4, open_channel  # noqa: E402
 
 data = os.path.join(repo, "tests", "rpc", "data")
 root = open(os.path.join(data, "localhost.crt"), "rb").read()

@@ -1,15 +1,15 @@
-"""A Python test harness for a running rs4sim (docs/rpc.md).
+"""The harness over rs4sim's gRPC API (docs/rpc.md): one class per device kind, the RPCs
+in the words of the device's manual.
 
-    from rs4sim_harness import Rs4, GridScan, Metron, Polaris
+    from rs4sim import Rs4
     rs4 = Rs4("127.0.0.1:50051", station=4)
     rs4.boot()                       # data exchange, RS4 measuring, restart pulse, OSSD on
     obstacle = rs4.violate_field()   # the protective field
     assert rs4.run_until("OSSD_OFF", 0.5)
 
-Needs python3-grpcio and python3-grpc-tools (Debian 12): the stubs are compiled from the
-repository's .proto files into a temporary directory at import, nothing is downloaded.
 Simulated time (advance, run_until) works where rs4sim runs on the manual clock
-(`rs4sim run --link memory --grpc 127.0.0.1:0`).
+(`rs4sim run --link memory --grpc 127.0.0.1:0`; the pytest fixture `rs4sim_memory` starts
+one). The stubs are the package's own rs4sim.v1 modules, generated when rs4sim is built.
 
 With TLS and a bearer token (`--grpc-tls-cert`, `--grpc-tls-key`, `--grpc-token-file`):
 
@@ -17,51 +17,26 @@ With TLS and a bearer token (`--grpc-tls-cert`, `--grpc-tls-key`, `--grpc-token-
               token=open("token.txt").readline().strip())
 """
 
-import os
-import sys
-import tempfile
-
 import grpc
-from grpc_tools import protoc
 
-_REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-_PROTO_ROOT = os.path.join(_REPO, "rpc", "proto")
-_PROTOS = [
-    "rs4sim/v1/rs4.proto",
-    "rs4sim/v1/archive_service.proto",
-    "rs4sim/v1/proxy_service.proto",
-    "rs4sim/v1/devices.proto",
-    "google/rpc/status.proto",
-    "google/rpc/error_details.proto",
-]
-
-
-def _compile_stubs():
-    out = tempfile.mkdtemp(prefix="rs4sim_stubs_")
-    well_known = os.path.join(os.path.dirname(protoc.__file__), "_proto")
-    args = ["protoc", f"-I{_PROTO_ROOT}", f"-I{well_known}", "-I/usr/include",
-            f"--python_out={out}", f"--grpc_python_out={out}"] + _PROTOS
-    if protoc.main(args) != 0:
-        raise RuntimeError("protoc failed on " + _PROTO_ROOT)
-    for package in ("rs4sim", "rs4sim/v1", "google/rpc"):
-        open(os.path.join(out, package, "__init__.py"), "a").close()
-    sys.path.insert(0, out)
-    # `google` is the protobuf runtime's package: add the compiled google/rpc beside it.
-    import google.protobuf  # noqa: F401
-    import google
-    google.__path__.append(os.path.join(out, "google"))
-
-
-_compile_stubs()
-from rs4sim.v1 import rs4_pb2 as pb  # noqa: E402
-from rs4sim.v1 import rs4_pb2_grpc as pb_grpc  # noqa: E402
-from rs4sim.v1 import archive_service_pb2 as archive_pb  # noqa: E402,F401
-from rs4sim.v1 import archive_service_pb2_grpc as archive_grpc  # noqa: E402
-from rs4sim.v1 import proxy_service_pb2 as proxy_pb  # noqa: E402
-from rs4sim.v1 import proxy_service_pb2_grpc as proxy_grpc  # noqa: E402
-from rs4sim.v1 import devices_pb2 as dev_pb  # noqa: E402
-from rs4sim.v1 import devices_pb2_grpc as dev_grpc  # noqa: E402
-from google.rpc import status_pb2, error_details_pb2  # noqa: E402
+try:
+    from .v1 import rs4_pb2 as pb
+except ModuleNotFoundError as missing:  # python/ itself, not the tree CMake stages
+    if not (missing.name or "").startswith("rs4sim.v1"):
+        raise
+    raise ImportError(
+        "rs4sim's gRPC stubs (rs4sim.v1) are not in this installation: they are generated "
+        "when rs4sim is built; install the staged package, `pip install --no-deps "
+        "--no-build-isolation build/python`, not the source directory python/ "
+        "(docs/rpc.md, \"The Python package\")") from missing
+from .v1 import rs4_pb2_grpc as pb_grpc  # noqa: E402
+from .v1 import archive_service_pb2 as archive_pb  # noqa: E402,F401
+from .v1 import archive_service_pb2_grpc as archive_grpc  # noqa: E402
+from .v1 import proxy_service_pb2 as proxy_pb  # noqa: E402
+from .v1 import proxy_service_pb2_grpc as proxy_grpc  # noqa: E402
+from .v1 import devices_pb2 as dev_pb  # noqa: E402
+from .v1 import devices_pb2_grpc as dev_grpc  # noqa: E402
+from ._googleapis.google.rpc import status_pb2, error_details_pb2  # noqa: E402
 
 
 def error_details(error):
@@ -100,6 +75,24 @@ class _Subscribed:
         self._call.cancel()
 
 
+class _Client:
+    """What every device class has: its channel, close() (also as a `with` block) and the
+    rs4sim process it talks to when a fixture started it (rs4sim.process.Rs4simProcess)."""
+
+    channel = None
+    process = None
+
+    def close(self):
+        """Closes the channel; open event streams end with CANCELLED."""
+        self.channel.close()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+
 def open_channel(address, root_certificates=None, token=None, timeout=10.0):
     """A ready channel to rs4sim's API (docs/rpc.md "Remote access"). root_certificates: the
     PEM bytes the server's certificate must chain to (TLS; the address's host must be in its
@@ -118,7 +111,7 @@ def open_channel(address, root_certificates=None, token=None, timeout=10.0):
     return channel
 
 
-class Rs4:
+class Rs4(_Client):
     """One RS4 of a running rs4sim, by station address."""
 
     def __init__(self, address, station=4, timeout=10.0, root_certificates=None, token=None):
@@ -219,7 +212,7 @@ class Rs4:
             raise AssertionError("OSSD stays off after the restart pulse")
 
 
-class Master:
+class Master(_Client):
     """A running `rs4sim master --grpc`: its parameter proxy and the archive it writes."""
 
     def __init__(self, address, timeout=10.0):
@@ -245,7 +238,7 @@ class Master:
         return self.archive.History(archive_pb.StationKey(bus=bus, address=address)).versions
 
 
-class _LineDevice:
+class _LineDevice(_Client):
     """One RS-485 device of a running `rs4sim run --device gridscan|metron|polaris --grpc`
     (devices.proto), by its address on its line: GridScan 0, METRON its node (0 without
     node mode), Polaris its Modbus address."""
