@@ -25,16 +25,16 @@ python  google.protobuf    python3-protobuf        the rs4sim package: the messa
 python  pymodbus.client    python3-pymodbus        cli_run_polaris_modbus_clients: a real Modbus RTU client
 python  serial             python3-serial          pymodbus serial client (python3-pymodbus only recommends it)
 python  serial_asyncio     python3-serial-asyncio  pymodbus serial client (python3-pymodbus only recommends it)
-python  pytest             python3-pytest          rpc_python_pytest_*: the package's pytest plugin
+python  pytest             python3-pytest          rpc_python_pytest_*: the pytest plugin of the package
 python  ensurepip          python3-venv            python3 -m venv for the Python package tests
-python  pip                python3-pip             python_package_venv: the offline install into the venv
 python  setuptools         python3-setuptools      the Python package build backend
-python  wheel              python3-wheel           pip's build of the package (bdist_wheel)
+python  wheel              python3-wheel           the package build by pip (bdist_wheel)
+python  pip                python3-pip             python_package_venv: the offline install into the venv (after setuptools: importing pip first breaks it)
 command /usr/bin/python3   python3                 every Python test and script (ctest runs /usr/bin/python3)
 command mbpoll             mbpoll                  cli_run_polaris_modbus_clients: libmodbus client
 command tshark             tshark                  capture_dissector, cli_master_run_two_processes*: the Lua dissector
 command clang++            clang                   ./build.sh test stage 2: the sanitizer build with the libFuzzer targets
-command grpc_python_plugin protobuf-compiler-grpc  python/package.cmake: the package's gRPC stubs
+command grpc_python_plugin protobuf-compiler-grpc  python/package.cmake: the gRPC stubs of the package
 file    /usr/lib/llvm-14/lib/clang/*/lib/linux/libclang_rt.fuzzer-*.a  libclang-rt-14-dev  stage 2: the libFuzzer runtime
 '
 
