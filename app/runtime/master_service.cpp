@@ -148,8 +148,8 @@ int run_master(const MasterServiceOptions& options, const LinkOptions& link, std
                const std::vector<MasterPlugin*>& plugins) {
   validate(link);
   if (link.link == LinkKind::kMemory) return run_memory(options, link, out, plugins);
+  MasterService service(options, link.link, out);  // outlives the session's server
   RunSession session(out);
-  MasterService service(options, link.link, out);
   for (auto* p : plugins) service.add_plugin(*p);
   return run_on_link(session, service, link, out);
 }

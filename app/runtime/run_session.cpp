@@ -44,6 +44,9 @@ RunSession::~RunSession() {
   // A session left without finish() (an exception on the way out) must not leave the server's
   // threads calling into a loop that no longer runs.
   if (grpc_ && !halted_) {
+    // The steps may name objects of a caller's frame that has already gone.
+    begin_steps_.clear();
+    stop_steps_.clear();
     request_stop();
     try {
       io_.restart();
@@ -96,7 +99,14 @@ void RunSession::halt() {
 
 RunSession::StopReason RunSession::run() {
   io_.run();
+  release_servers();
   return why_;
+}
+
+void RunSession::release_servers() {
+  // The loop ran out, so the stop completed: the servers are down. Their services go now,
+  // before the devices and segments they serve (which the caller destroys after the run).
+  if (halted_) grpc_.reset();
 }
 
 bool RunSession::run_until(std::chrono::steady_clock::time_point deadline) {
@@ -113,6 +123,7 @@ void RunSession::finish() {
   request_stop();
   io_.restart();
   io_.run();
+  release_servers();
 }
 
 }  // namespace rs4sim::app

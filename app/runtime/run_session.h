@@ -76,14 +76,16 @@ class RunSession {
   // Starts the ordered stop from the loop's thread (once; later calls do nothing).
   void request_stop(StopReason why = StopReason::kRequested);
 
-  // Runs the loop until the stop has completed.
+  // Runs the loop until the stop has completed; the servers and their services are gone
+  // when it returns.
   StopReason run();
   // Runs the loop until `deadline` at most (a paced simulation's wait); false once a stop
   // has been asked for.
   bool run_until(std::chrono::steady_clock::time_point deadline);
   // Runs what is ready without waiting; false once a stop has been asked for.
   bool poll();
-  // Stops (if not yet) and runs the loop until the stop has completed.
+  // Stops (if not yet) and runs the loop until the stop has completed (the servers are gone
+  // then, as after run()).
   void finish();
 
   [[nodiscard]] bool stopping() const noexcept { return why_ != StopReason::kNone; }
@@ -91,6 +93,7 @@ class RunSession {
 
  private:
   void halt();
+  void release_servers();
 
   std::ostream& out_;
   boost::asio::io_context io_;

@@ -47,8 +47,8 @@ int run_memory(const DeviceEntry& device, const DeviceOptions& o, const LinkOpti
 // (SimTime) until Ctrl-C/SIGTERM or --duration wall seconds.
 int run_memory_served(const DeviceEntry& device, const DeviceOptions& o, const LinkOptions& l,
                       std::ostream& out) {
+  const auto segment = device.simulate(o);  // outlives the session's server
   RunSession session(out);
-  const auto segment = device.simulate(o);
   const auto capture = open_link_capture(l, dp::TimePoint{});
   if (segment->bus() != nullptr) attach_capture(capture.get(), *segment->bus());
   session.serve_grpc(l.grpc, segment->services(session.service_context(session.wall_clock())));
@@ -266,8 +266,9 @@ int run_device(const DeviceEntry& device, DeviceOptions options, const LinkOptio
     return run_memory_served(device, options, link, out);
   }
   if (link.link == LinkKind::kMemory) return run_memory(device, options, link, out);
-  RunSession session(out);
+  // The device before the session, so that it outlives the session's servers on every path.
   const auto instance = device.build(options);
+  RunSession session(out);
   return run_on_link(session, *instance, link, out);
 }
 
