@@ -54,16 +54,6 @@ TEST(RunSession, StopStepsRunOnceInTheirOrderBeginStepsFirst) {
   EXPECT_EQ(order, "a;b;c;");
 }
 
-TEST(RunSession, DurationEndsTheRun) {
-  std::ostringstream out;
-  RunSession session(out);
-  bool stopped = false;
-  session.on_stop([&] { stopped = true; });
-  session.stop_after(0.02);
-  EXPECT_EQ(session.run(), Reason::kDuration);
-  EXPECT_TRUE(stopped);
-}
-
 // A simulation run in slices (run_simulated, the demos' waits) polls the loop and sees the
 // stop between two slices.
 TEST(RunSession, PollTellsASimulationToStop) {
