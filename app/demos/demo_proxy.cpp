@@ -1,50 +1,96 @@
 #include "app/demos/demo_proxy.h"
 
 #include "app/runtime/master_proxy.h"
+#include "rs4/adapter/cyclic_bytes.h"
+
+#include <variant>
 
 namespace rs4sim::app {
 namespace {
 
-proxy::ProxySyncConfig config(const rs4::device::Rs4Segment& segment) {
-  proxy::ProxySyncConfig c;
-  c.station = {"demo", segment.rs4_address()};
-  c.wall_at_zero = wall_at_zero(segment.now());
-  return c;
+// The demo's RS4 and its proxy start new in every run, so the demo keeps the Proxy-FB's
+// retentive record in memory only (`persist` off); `rs4sim master` keeps it in the archive.
+proxy::SchedulerConfig scheduler_config(const rs4::device::Rs4Segment& segment) {
+  return proxy::SchedulerConfig{"demo", 1, wall_at_zero(segment.now()), false};
 }
 
 }  // namespace
 
-DemoProxy::DemoProxy(rs4::device::Rs4Segment& segment, storage::ParameterArchive& archive,
-                     RunFor run_for)
-    : segment_(segment), run_for_(std::move(run_for)), sync_(config(segment), archive) {}
-
-proxy::RecordResult DemoProxy::exchange(const proxy::RecordRequest& request) {
-  ++records_;
-  const auto* w = std::get_if<proxy::RecordWrite>(&request);
-  const auto r = w != nullptr ? segment_.write_record(w->data)
-                              : segment_.read_record(std::get<proxy::RecordRead>(request).length);
-  return r ? to_record_result(*r) : proxy::RecordResult::no_response();
+DemoProxy::DemoProxy(rs4::device::Rs4Segment& segment, storage::ParameterArchive& archive)
+    : segment_(segment),
+      scheduler_(archive, scheduler_config(segment)),
+      driver_(scheduler_, *this),
+      sync_(scheduler_.add(segment.rs4_address())) {
+  segment_.set_observer([this](const dp::master::MasterEvent& e) { on_event(e); });
 }
 
-bool DemoProxy::run_sync(dp::Duration timeout, const OnProgress& on_progress) {
-  records_ = 0;
-  sync_.set_proxy_enable(true);
-  sync_.set_input_byte(segment_.input_byte());
-  if (!sync_.ready(segment_.now())) return false;
-  sync_.start(segment_.now());
-  const auto end = segment_.now() + timeout;
-  while (segment_.now() < end) {
-    sync_.set_input_byte(segment_.input_byte());
-    if (!sync_.active()) return true;
-    if (auto req = sync_.take_request(segment_.now())) {
-      sync_.on_record_result(exchange(*req), segment_.now());
-      if (on_progress) on_progress(sync_.progress());
-    } else {
-      run_for_(std::chrono::milliseconds(10));
-      sync_.tick(segment_.now());
-    }
+DemoProxy::~DemoProxy() { segment_.set_observer({}); }
+
+const proxy::FbOutputs& DemoProxy::outputs() const { return sync_.outputs(); }
+
+const storage::StationKey& DemoProxy::station() const { return sync_.station(); }
+
+void DemoProxy::on_event(const dp::master::MasterEvent& e) {
+  const auto now = segment_.now();
+  if (const auto* r = std::get_if<dp::master::Dpv1Result>(&e)) {
+    const auto it = pending_.find(r->id);
+    if (it == pending_.end()) return;  // somebody else's DPV1 request
+    const std::uint8_t address = it->second;
+    pending_.erase(it);
+    driver_.on_record_result(address, to_record_result(*r), now);
+    if (on_progress_) on_progress_(sync_.progress());
+  } else if (std::holds_alternative<dp::master::CycleCompleted>(e)) {
+    on_cycle(now);
   }
-  return false;
+}
+
+void DemoProxy::on_cycle(dp::TimePoint now) {
+  for (const auto address : std::exchange(refused_, {})) {
+    driver_.on_record_result(address, proxy::RecordResult::no_response(), now);
+  }
+  // The demo's PLC gives the FB the Proxy-Enable it sends the RS4 (output bit 6, [RS4 manual
+  // §5.1.2]), as a PLC program would.
+  const std::uint8_t address = segment_.rs4_address();
+  driver_.set_proxy_enable(address,
+                           (segment_.output_byte() & rs4::adapter::kOutputProxyEnable) != 0);
+  driver_.on_input_byte(address, segment_.input_byte());
+  driver_.poll(now);
+  const bool running = sync_.active();
+  if (!running && running_) ++ended_;
+  running_ = running;
+}
+
+bool DemoProxy::wait_sync(const RunUntil& run_until, dp::Duration timeout,
+                          const OnProgress& on_progress) {
+  const std::size_t ended_before = ended_;
+  on_progress_ = on_progress;
+  struct Clear {
+    OnProgress& f;
+    ~Clear() { f = {}; }
+  } clear{on_progress_};
+  return run_until([&] { return ended_ > ended_before; }, timeout);
+}
+
+void DemoProxy::submit_write(std::uint8_t address, std::span<const std::uint8_t> record) {
+  submitted(address, segment_.master().write(address, 0, 2, record));
+}
+
+void DemoProxy::submit_read(std::uint8_t address, std::uint8_t length) {
+  submitted(address, segment_.master().read(address, 0, 2, length));
+}
+
+void DemoProxy::submitted(std::uint8_t address,
+                          const boost::outcome_v2::std_result<dp::master::Dpv1RequestId>& id) {
+  if (!running_) {  // the first record of a new sync
+    records_ = 0;
+    running_ = true;
+  }
+  ++records_;
+  if (id) {
+    pending_[id.value()] = address;
+  } else {
+    refused_.push_back(address);  // e.g. not in data exchange: a failed record next cycle
+  }
 }
 
 }  // namespace rs4sim::app

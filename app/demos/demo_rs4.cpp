@@ -42,8 +42,9 @@ class Demo {
   Demo(Rs4Segment& s, storage::ParameterArchive& archive, std::ostream& out,
        const DemoOptions& options, RunSession& session)
       : s_(s),
-        n_(out, s.clock(), run_until(s, options.realtime, session), Narration::Stamp::kSeconds),
-        proxy_(s, archive, [this](dp::Duration d) { n_.run_for(d); }) {
+        run_until_(run_until(s, options.realtime, session)),
+        n_(out, s.clock(), run_until_, Narration::Stamp::kSeconds),
+        proxy_(s, archive) {
     n_.set_live(options.live_progress);
   }
 
@@ -75,7 +76,7 @@ class Demo {
   bool sync(const std::string& what) {
     const auto at = s_.now();
     proxy::SyncProgress last;
-    const bool ended = proxy_.run_sync(120s, [&](const proxy::SyncProgress& p) {
+    const bool ended = proxy_.wait_sync(run_until_, 120s, [&](const proxy::SyncProgress& p) {
       if (p.bytes_total > 0) last = p;
       if (p.bytes_total > 0) n_.progress(line(what, p), false);
     });
@@ -97,6 +98,7 @@ class Demo {
   }
 
   Rs4Segment& s_;
+  RunUntil run_until_;  // the story's time: paced, interruptible (in_session)
   Narration n_;
   DemoProxy proxy_;
   int response_ms_ = 0;  // the response time chapter 8 sets through the PC adapter

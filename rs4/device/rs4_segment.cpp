@@ -74,6 +74,7 @@ void Rs4Segment::collect() {
   master_->take_events(scratch_);
   for (auto& e : scratch_) {
     if (std::holds_alternative<dp::master::CycleCompleted>(e)) safety_cycle();
+    if (observer_) observer_(e);
     events_.push_back(std::move(e));
   }
 }

@@ -85,6 +85,13 @@ class Rs4Segment {
   [[nodiscard]] const std::vector<dp::master::MasterEvent>& events() const { return events_; }
   std::vector<dp::master::MasterEvent> take_events();
 
+  // Called with every master event as it is collected, inside the bus's run (after the
+  // F-host's step for a CycleCompleted): the seam for a component that lives on the
+  // segment's cycles, such as the demo's parameter proxy (app/demos/demo_proxy.h). It may
+  // submit DPV1 requests to master(). One observer; an empty function removes it.
+  using Observer = std::function<void(const dp::master::MasterEvent&)>;
+  void set_observer(Observer observer) { observer_ = std::move(observer); }
+
  private:
   void collect();
   void safety_cycle();
@@ -100,6 +107,7 @@ class Rs4Segment {
   bool auto_ack_rei_ = false;
   std::vector<dp::master::MasterEvent> events_;
   std::vector<dp::master::MasterEvent> scratch_;
+  Observer observer_;
 };
 
 }  // namespace rs4sim::rs4::device
