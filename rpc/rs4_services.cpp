@@ -4,6 +4,7 @@
 #include "rpc/service_support.h"
 #include "rpc/status.h"
 #include "rs4/adapter/cyclic_bytes.h"
+#include "rs4/param_doc/parameter_document.h"
 
 #include <algorithm>
 #include <optional>
@@ -278,6 +279,84 @@ grpc::Status DeviceService::SetAddressSwitches(grpc::ServerContext*,
   }
   return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint) {
     d.set_address_switches(s);
+    return grpc::Status::OK;
+  });
+}
+
+grpc::Status DeviceService::ExchangeScanner(grpc::ServerContext*,
+                                            const v1::ExchangeScannerRequest* in, v1::Empty*) {
+  if (in->serial_number() == 0) {
+    return invalid_argument("serial_number", "0 is no serial number (1..4294967295)");
+  }
+  for (const auto a : c_.target.addresses()) {
+    const auto* other = c_.target.device(a);
+    if (a != in->address() && other != nullptr &&
+        other->scanner().parameters().identity.serial_number == in->serial_number()) {
+      return invalid_argument("serial_number", "the RS4 at station " + std::to_string(a) +
+                                                   " has serial number " +
+                                                   std::to_string(in->serial_number()));
+    }
+  }
+  return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint now) {
+    if (!d.exchange_unit(in->serial_number(), now)) {
+      return failed_precondition("EXCHANGE", "station " + std::to_string(in->address()),
+                                 "the RS4 could not be exchanged");
+    }
+    return grpc::Status::OK;
+  });
+}
+
+namespace {
+
+void fill_document(const Rs4Device& d, v1::ParameterSetDocument& out) {
+  const auto& set = d.scanner().parameters();
+  out.set_json(rs4::param_doc::to_document(set));
+  out.set_transfer_crc32(d.scanner().transfer_checksum());
+  out.set_serial_number(set.identity.serial_number);
+}
+
+}  // namespace
+
+grpc::Status DeviceService::GetParameterSet(grpc::ServerContext*, const v1::StationRequest* in,
+                                            v1::ParameterSetDocument* out) {
+  return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint) {
+    fill_document(d, *out);
+    return grpc::Status::OK;
+  });
+}
+
+grpc::Status DeviceService::SetParameterSet(grpc::ServerContext*,
+                                            const v1::SetParameterSetRequest* in,
+                                            v1::ParameterSetDocument* out) {
+  return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint now) {
+    const std::string station = "station " + std::to_string(in->address());
+    auto& rs4 = d.scanner();
+    const auto doc = rs4::param_doc::from_document(in->json(), rs4.parameters());
+    if (!doc) {
+      return invalid_argument("json", doc.issue.message());
+    }
+    if (!d.powered()) return failed_precondition("POWER", station, "the RS4 is powered off");
+    // Through the optical PC adapter [RS4 manual §7.2]; one the user attached stays on.
+    const bool attached_here = !d.adapter().view().pc_adapter_attached;
+    if (attached_here) c_.target.set_pc_adapter(d, true, now);
+    const auto detach = [&] {
+      if (attached_here) c_.target.set_pc_adapter(d, false, now);
+    };
+    if (!d.adapter().rs232_switched_through()) {
+      detach();
+      return failed_precondition("PC_ADAPTER", station,
+                                 "the RS232 is not switched through (a proxy sync is running, "
+                                 "[RS4 manual §5.1.1] bit 3)");
+    }
+    if (auto r = rs4.enter_configuration(now); !r) {
+      detach();
+      return failed_precondition("CONFIGURATION", station, r.error().message());
+    }
+    const auto written = rs4.set_parameters(*doc.set, now);
+    (void)rs4.leave_configuration(now);
+    detach();
+    if (!written) return failed_precondition("CONFIGURATION", station, written.error().message());
+    fill_document(d, *out);
     return grpc::Status::OK;
   });
 }

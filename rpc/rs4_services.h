@@ -38,6 +38,12 @@ class DeviceService final : public v1::Device::Service {
   grpc::Status PowerCycle(grpc::ServerContext*, const v1::StationRequest* in, v1::Empty*) override;
   grpc::Status SetAddressSwitches(grpc::ServerContext*, const v1::SetAddressSwitchesRequest* in,
                                   v1::Empty*) override;
+  grpc::Status ExchangeScanner(grpc::ServerContext*, const v1::ExchangeScannerRequest* in,
+                               v1::Empty*) override;
+  grpc::Status GetParameterSet(grpc::ServerContext*, const v1::StationRequest* in,
+                               v1::ParameterSetDocument* out) override;
+  grpc::Status SetParameterSet(grpc::ServerContext*, const v1::SetParameterSetRequest* in,
+                               v1::ParameterSetDocument* out) override;
 
  private:
   grpc::Status fault(std::uint32_t address, v1::Fault fault, bool inject);

@@ -20,7 +20,8 @@ adapter::AdapterConfig adapter_config(const Rs4DeviceConfig& c) {
 
 dp::slave::Config rs4_slave_config(std::uint8_t address) { return adapter::slave_config(address); }
 
-Rs4Device::Rs4Device(const Rs4DeviceConfig& config) : adapter_(adapter_config(config)) {
+Rs4Device::Rs4Device(const Rs4DeviceConfig& config)
+    : unit_(config.scanner), adapter_(adapter_config(config)) {
   const auto addr = adapter::station_address(config.switches);
   fresh_slave(addr ? addr.value() : std::uint8_t{126});
 }
@@ -55,6 +56,16 @@ void Rs4Device::power_off(TimePoint now) {
 void Rs4Device::power_cycle(TimePoint now) {
   power_off(now);
   power_on(now);
+}
+
+bool Rs4Device::exchange_unit(std::uint32_t serial_number, TimePoint now) {
+  if (serial_number == 0) return false;
+  power_off(now);
+  scanner::ScannerConfig unit = unit_;
+  unit.identity.serial_number = serial_number;
+  const bool exchanged = exchange_scanner(unit);
+  power_on(now);
+  return exchanged;
 }
 
 bool Rs4Device::on_bus(TimePoint now) const noexcept {

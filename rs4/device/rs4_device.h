@@ -79,6 +79,11 @@ class Rs4Device final : public dp::Station {
   bool exchange_scanner(const scanner::ScannerConfig& unit) {
     return !powered_ && adapter_.exchange_scanner(unit);
   }
+  // The whole device exchange of [RS4 manual §7.1] (scenario 4) at `now`: power off, a new
+  // unit with factory settings and `serial_number` (its other settings as this device was
+  // configured with), power on. Serial number 0 is refused (false): it is the transfer
+  // form's "none".
+  bool exchange_unit(std::uint32_t serial_number, TimePoint now);
 
   // ---- control / observation ------------------------------------------------------------
   adapter::Adapter& adapter() noexcept { return adapter_; }
@@ -103,6 +108,7 @@ class Rs4Device final : public dp::Station {
   void fresh_slave(std::uint8_t address);
   void after_core_call(TimePoint now);
 
+  scanner::ScannerConfig unit_;  // the configured unit, the template of exchange_unit()
   adapter::Adapter adapter_;
   std::optional<dp::slave::Slave> slave_;  // always engaged: the adapter keeps a SlaveControl*
   std::deque<dp::fdl::Telegram> pending_;  // replies the slave queued just before the link drop

@@ -8,6 +8,8 @@
 #include "rs4_fixture.h"
 
 #include <algorithm>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -65,6 +67,44 @@ class RpcDeviceTest : public RpcRs4Test {
     req.set_fault(which);
     return inject ? device_stub_->InjectFault(&ctx, req, &empty_)
                   : device_stub_->ClearFault(&ctx, req, &empty_);
+  }
+  grpc::Status exchange(std::uint32_t address, std::uint32_t serial) {
+    grpc::ClientContext ctx;
+    v1::ExchangeScannerRequest req;
+    req.set_address(address);
+    req.set_serial_number(serial);
+    return device_stub_->ExchangeScanner(&ctx, req, &empty_);
+  }
+  v1::ParameterSetDocument parameter_set() {
+    grpc::ClientContext ctx;
+    v1::StationRequest req;
+    req.set_address(4);
+    v1::ParameterSetDocument out;
+    const auto status = device_stub_->GetParameterSet(&ctx, req, &out);
+    EXPECT_TRUE(status.ok()) << status.error_message();
+    return out;
+  }
+  grpc::Status set_parameter_set(const std::string& json, v1::ParameterSetDocument& out) {
+    grpc::ClientContext ctx;
+    v1::SetParameterSetRequest req;
+    req.set_address(4);
+    req.set_json(json);
+    return device_stub_->SetParameterSet(&ctx, req, &out);
+  }
+  // The factory document, written by hand for rs4/param_doc's tests (docs/param.md), with
+  // the unit's serial number: the only key a unit's factory set differs in.
+  static std::string factory_document(std::uint32_t serial) {
+    std::ifstream in(std::string(RS4SIM_PARAM_DOC_DATA) + "/factory_default.json");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string doc = text.str();
+    const std::string key = "\"serial_number\": 0,";
+    const auto at = doc.find(key);
+    EXPECT_NE(at, std::string::npos);
+    if (at != std::string::npos) {
+      doc.replace(at, key.size(), "\"serial_number\": " + std::to_string(serial) + ",");
+    }
+    return doc;
   }
   v1::ListDevicesResponse devices() {
     grpc::ClientContext ctx;
@@ -231,6 +271,92 @@ TEST_F(RpcDeviceTest, BadInputGetsASpecificStatus) {
   EXPECT_EQ(bad_field(s), "address");
   EXPECT_EQ(power_cycle(9).error_code(), grpc::StatusCode::NOT_FOUND);
   EXPECT_EQ(clear_scene(127).error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+}
+
+}  // namespace
+}  // namespace rs4sim::rpc
+
+namespace rs4sim::rpc {
+namespace {
+
+TEST_F(RpcDeviceTest, GetParameterSetAnswersTheFactoryDocumentOfANewUnit) {
+  const auto set = parameter_set();
+  EXPECT_EQ(set.serial_number(), 0x00012345U);  // the simulated unit's default identity
+  EXPECT_EQ(set.json(), factory_document(0x00012345));
+  EXPECT_NE(set.transfer_crc32(), 0U);
+}
+
+// The parametrisation tool through the optical PC adapter [RS4 manual §7.2]: the response
+// time 80 + 2·40 = 160 ms [RS4 manual §7.3]; the PC adapter is put back as it was (its
+// removal raising Proxy-Request is ThePcAdapterSwitchesTheRs232Through…'s).
+TEST_F(RpcDeviceTest, SetParameterSetWritesTheDocumentOverTheSet) {
+  boot();
+  const auto before = parameter_set();
+  v1::ParameterSetDocument after;
+  const auto status = set_parameter_set(R"({"format": 1, "response_time_ms": 160})", after);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  EXPECT_NE(after.json().find("\"response_time_ms\": 160"), std::string::npos) << after.json();
+  EXPECT_NE(after.transfer_crc32(), before.transfer_crc32());
+  EXPECT_EQ(parameter_set().json(), after.json());
+  // Only the key the document names changed: the rest is the factory document's.
+  std::string expected = factory_document(0x00012345);
+  const std::string key = "\"response_time_ms\": 80";
+  expected.replace(expected.find(key), key.size(), "\"response_time_ms\": 160");
+  EXPECT_EQ(after.json(), expected);
+  advance(100);
+  EXPECT_FALSE(state().pc_adapter_attached());
+  // An adapter the user attached stays attached.
+  ASSERT_TRUE(pc_adapter(true).ok());
+  ASSERT_TRUE(set_parameter_set(R"({"format": 1, "response_time_ms": 200})", after).ok());
+  advance(100);
+  EXPECT_TRUE(state().pc_adapter_attached());
+}
+
+TEST_F(RpcDeviceTest, SetParameterSetRefusesABadDocumentAndKeepsTheSet) {
+  boot();
+  const auto before = parameter_set();
+  v1::ParameterSetDocument out;
+  // 100 ms is not 80 + n·40 ms [RS4 manual §7.3].
+  auto s = set_parameter_set(R"({"format": 1, "response_time_ms": 100})", out);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad_field(s), "json");
+  EXPECT_NE(s.error_message().find("$.response_time_ms"), std::string::npos) << s.error_message();
+  s = set_parameter_set(R"({"format": 1, "response_time_ms": )", out);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(parameter_set().json(), before.json());
+  ASSERT_TRUE(set_power(4, false).ok());
+  s = set_parameter_set(R"({"format": 1, "response_time_ms": 160})", out);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+  EXPECT_EQ(parameter_set().json(), before.json());
+}
+
+// [RS4 manual §7.1] scenario 4: a new unit with factory settings and its own serial number;
+// the RS4 boots again (≈30 s, [RS4 manual §1]).
+TEST_F(RpcDeviceTest, ExchangeScannerMountsAFactoryUnitWithItsSerialNumber) {
+  boot();
+  v1::ParameterSetDocument changed;
+  ASSERT_TRUE(set_parameter_set(R"({"format": 1, "response_time_ms": 200})", changed).ok());
+  ASSERT_TRUE(exchange(4, 344865).ok());
+  const auto s = state();
+  EXPECT_TRUE(s.powered());
+  EXPECT_EQ(s.rs4_state(), "initialisation");
+  EXPECT_FALSE(s.ossd());
+  const auto set = parameter_set();
+  EXPECT_EQ(set.serial_number(), 344865U);
+  EXPECT_EQ(set.json(), factory_document(344865));
+  const double at = now_s();
+  ASSERT_TRUE(run_until(v1::CONDITION_RS4_MEASURING, 40'000));
+  EXPECT_GE(now_s() - at, 29.9);
+  EXPECT_LE(now_s() - at, 32.0);
+}
+
+TEST_F(RpcDeviceTest, ExchangeScannerRefusesSerialZeroAndAnUnknownStation) {
+  auto s = exchange(4, 0);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad_field(s), "serial_number");
+  EXPECT_EQ(parameter_set().serial_number(), 0x00012345U);  // nothing happened
+  s = exchange(9, 1234);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::NOT_FOUND);
 }
 
 }  // namespace
