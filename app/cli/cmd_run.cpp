@@ -77,6 +77,10 @@ Action setup(CLI::App& cmd) {
   cmd.add_option("--command-time", d.command_time_ms,
                  "rs4: how long the RS4 processes a command in ms, 0..120000 (default 40; the "
                  "manual: up to 2 minutes)");
+  cmd.add_option("--serial-number", d.serial_numbers,
+                 "rs4: the unit's serial number 1..4294967295, one per --address in their order "
+                 "(default 74565); the proxy downloads the archived set to a unit it has not "
+                 "seen (device exchange)");
   cmd.add_option("--adapter-response-time", d.response_time_ms,
                  "rs4: the PROFIsafe adapter's response time in ms, 0..1000 (default 10, as "
                  "the manual's technical data)");

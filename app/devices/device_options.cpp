@@ -33,6 +33,7 @@ bool given(const DeviceOptions& o, DeviceFlag f) {
     case DeviceFlag::kNode: return o.node.has_value();
     case DeviceFlag::kRs232: return !o.rs232.empty();
     case DeviceFlag::kPcAdapter: return !o.pc_adapter.empty();
+    case DeviceFlag::kSerialNumber: return !o.serial_numbers.empty();
   }
   return false;
 }
@@ -44,6 +45,7 @@ constexpr DeviceFlag kAllFlags[] = {
     DeviceFlag::kMode,        DeviceFlag::kBlocked,      DeviceFlag::kDoor,
     DeviceFlag::kNode,        DeviceFlag::kRs232,        DeviceFlag::kPcAdapter,
     DeviceFlag::kCommandTime, DeviceFlag::kResponseTime, DeviceFlag::kAddresses,
+    DeviceFlag::kSerialNumber,
 };
 
 // A whole decimal number in `text`, or nullopt.
@@ -86,6 +88,7 @@ const char* flag_name(DeviceFlag f) {
     case DeviceFlag::kNode: return "--node";
     case DeviceFlag::kRs232: return "--rs232";
     case DeviceFlag::kPcAdapter: return "--pc-adapter";
+    case DeviceFlag::kSerialNumber: return "--serial-number";
   }
   return "--?";
 }

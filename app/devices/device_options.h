@@ -33,6 +33,7 @@ enum class DeviceFlag : std::uint8_t {
   kNode,
   kRs232,
   kPcAdapter,
+  kSerialNumber,
 };
 
 // "--elements".

@@ -69,6 +69,9 @@ struct DeviceOptions {
   // The RS4's RS232 interface behind the optical PC adapter (docs/rs232.md):
   std::string rs232;       // --rs232 pty | serial:DEVICE[@BAUD]
   std::string pc_adapter;  // --pc-adapter attached | detached (at start)
+  // rs4: --serial-number, one per --address in their order (the unit's identity; the
+  // proxy tells units apart by it, [RS4 manual §7.1]); unnamed ones keep the default.
+  std::vector<long long> serial_numbers;
 };
 
 // A device's second serial port beside its main link (the RS4's RS232 interface): the shell

@@ -33,8 +33,11 @@ constexpr int kDefaultCommandTimeMs = 40;
 constexpr int kMaxCommandTimeMs = 120000;
 constexpr int kDefaultResponseTimeMs = 10;  // "Reaktionszeit PROFIsafe-Adapter 10 ms" [RS4 manual]
 
-Rs4DeviceConfig device_config(const DeviceOptions& o, int address) {
+Rs4DeviceConfig device_config(const DeviceOptions& o, int address, std::size_t index) {
   Rs4DeviceConfig c;
+  if (index < o.serial_numbers.size()) {
+    c.scanner.identity.serial_number = static_cast<std::uint32_t>(o.serial_numbers[index]);
+  }
   c.switches = rs4::device::switches_for(static_cast<std::uint8_t>(address));
   c.boot_time = std::chrono::milliseconds(*o.boot_time_ms);
   c.adapter.rs4_command_time = std::chrono::milliseconds(*o.command_time_ms);
@@ -101,8 +104,10 @@ class Rs4Instance final : public DeviceInstance {
  public:
   explicit Rs4Instance(const DeviceOptions& o)
       : boot_time_ms_(*o.boot_time_ms), attached_at_start_(o.pc_adapter == "attached") {
-    for (const int a : all_addresses(o)) {
-      rs4s_.push_back(std::make_unique<Rs4>(device_config(o, a), static_cast<std::uint8_t>(a)));
+    const auto addresses = all_addresses(o);
+    for (std::size_t i = 0; i < addresses.size(); ++i) {
+      rs4s_.push_back(std::make_unique<Rs4>(device_config(o, addresses[i], i),
+                                            static_cast<std::uint8_t>(addresses[i])));
     }
     if (!o.rs232.empty()) {
       auto choice = rs232_choice(o.rs232);
@@ -226,7 +231,7 @@ class Rs4Simulation final : public SimulatedSegment {
  private:
   static rs4::device::Rs4SegmentConfig segment_config(const DeviceOptions& o) {
     rs4::device::Rs4SegmentConfig c;
-    c.device = device_config(o, *o.address);
+    c.device = device_config(o, *o.address, 0);
     c.master.address = static_cast<std::uint8_t>(*o.address);
     c.master_address = *o.address == 1 ? 2 : 1;
     c.auto_ack_rei = true;
@@ -244,7 +249,8 @@ void validate(DeviceOptions& o) {
   refuse_unused(
       o, "rs4",
       {DeviceFlag::kAddress, DeviceFlag::kAddresses, DeviceFlag::kBootTime, DeviceFlag::kRs232,
-       DeviceFlag::kPcAdapter, DeviceFlag::kCommandTime, DeviceFlag::kResponseTime});
+       DeviceFlag::kPcAdapter, DeviceFlag::kCommandTime, DeviceFlag::kResponseTime,
+       DeviceFlag::kSerialNumber});
   if (!o.rs232.empty()) (void)rs232_choice(o.rs232);
   if (!o.address) o.address = kDefaultAddress;
   if (!o.boot_time_ms) o.boot_time_ms = kDefaultBootTimeMs;
@@ -260,6 +266,24 @@ void validate(DeviceOptions& o) {
                        " given twice (each RS4 is a station of its own on the link)");
     }
     seen.push_back(a);
+  }
+  if (o.serial_numbers.size() > seen.size()) {
+    throw UsageError("--serial-number given " + std::to_string(o.serial_numbers.size()) +
+                     " times for " + std::to_string(seen.size()) +
+                     " --address (one serial number per RS4, in the order of --address)");
+  }
+  for (std::size_t i = 0; i < o.serial_numbers.size(); ++i) {
+    const long long n = o.serial_numbers[i];
+    if (n < 1 || n > 0xFFFFFFFFLL) {
+      throw UsageError("--serial-number: " + std::to_string(n) +
+                       " is outside 1..4294967295 (the RS4's identity holds 32 bits; 0 means "
+                       "none)");
+    }
+    if (std::find(o.serial_numbers.begin(), o.serial_numbers.begin() + static_cast<long>(i), n) !=
+        o.serial_numbers.begin() + static_cast<long>(i)) {
+      throw UsageError("--serial-number " + std::to_string(n) +
+                       " given twice (every unit has its own)");
+    }
   }
   if (!o.rs232.empty() && !o.more_addresses.empty()) {
     throw UsageError("--rs232 serves one RS4; run it with one --address");

@@ -17,6 +17,8 @@ With TLS and a bearer token (`--grpc-tls-cert`, `--grpc-tls-key`, `--grpc-token-
               token=open("token.txt").readline().strip())
 """
 
+import json
+
 import grpc
 
 try:
@@ -200,6 +202,31 @@ class Rs4(_Client):
     def set_pc_adapter(self, attached):
         self.device.SetPcAdapter(pb.SetPcAdapterRequest(address=self.station, attached=attached))
 
+    # ---- the unit and its parameter set ------------------------------------------------------
+    def exchange_scanner(self, serial_number):
+        """The manual's device exchange: power off, a new unit with factory settings and this
+        serial number, power on (the RS4 boots again; the proxy downloads the archived set)."""
+        self.device.ExchangeScanner(
+            pb.ExchangeScannerRequest(address=self.station, serial_number=serial_number))
+
+    def parameter_set(self):
+        """The RS4's set as the parameter document (docs/param.md), a dict; its
+        "device.serial_number" is the unit's."""
+        return json.loads(self.device.GetParameterSet(pb.StationRequest(address=self.station)).json)
+
+    def parameter_set_crc(self):
+        """CRC-32 of the set as the proxy carries it: the archive's version CRC."""
+        return self.device.GetParameterSet(
+            pb.StationRequest(address=self.station)).transfer_crc32
+
+    def set_parameter_set(self, document):
+        """Writes a document (a dict or JSON text; any subset of the keys, "format" required)
+        as the parametrisation tool does through the PC adapter; returns the set as it is now."""
+        text = document if isinstance(document, str) else json.dumps(document)
+        answer = self.device.SetParameterSet(
+            pb.SetParameterSetRequest(address=self.station, json=text))
+        return json.loads(answer.json)
+
     def boot(self, timeout_s=60):
         """Power-up to OSSD on: data exchange, RS4 measuring, the start-interlock restart pulse."""
         if not self.run_until("DATA_EXCHANGE", timeout_s):
@@ -234,7 +261,7 @@ class Master(_Client):
             timeout=timeout))
 
     def history(self, address, bus="default"):
-        """The archive's versions of one RS4, newest first."""
+        """The archive's versions of one RS4, oldest first (ascending version number)."""
         return self.archive.History(archive_pb.StationKey(bus=bus, address=address)).versions
 
 

@@ -103,6 +103,26 @@ try:
     except grpc.RpcError as e:
         assert e.code() == grpc.StatusCode.NOT_FOUND, e.code()
 
+    # The unit and its set: the document as `rs4sim param` shows it (docs/param.md), a write
+    # through the PC adapter, and the device exchange to a factory unit [RS4 manual §7.1].
+    doc = rs4.parameter_set()
+    assert doc["format"] == 1 and doc["response_time_ms"] == 80, doc
+    crc = rs4.parameter_set_crc()
+    doc = rs4.set_parameter_set({"format": 1, "response_time_ms": 160})
+    assert doc["response_time_ms"] == 160 and rs4.parameter_set_crc() != crc, doc
+    try:
+        rs4.set_parameter_set({"format": 1, "response_time_ms": 100})
+        raise AssertionError("a response time of 100 ms accepted")
+    except grpc.RpcError as e:
+        code, violations, _ = error_details(e)
+        assert code == "INVALID_ARGUMENT" and violations[0][0] == "json", violations
+        assert "$.response_time_ms" in violations[0][1], violations
+    rs4.exchange_scanner(344865)
+    doc = rs4.parameter_set()
+    assert doc["device"]["serial_number"] == 344865 and doc["response_time_ms"] == 80, doc
+    assert rs4.parameter_set_crc() == crc, "a new unit has the factory set"
+    rs4.boot()
+
     health = rs4.channel.unary_unary("/grpc.health.v1.Health/Check")(b"")
     assert health == b"\x08\x01", health.hex()
     call = rs4.channel.stream_stream(
