@@ -81,6 +81,10 @@ Action setup(CLI::App& cmd) {
                  "rs4: the unit's serial number 1..4294967295, one per --address in their order "
                  "(default 74565); the proxy downloads the archived set to a unit it has not "
                  "seen (device exchange)");
+  cmd.add_option("--state", d.state_files,
+                 "rs4: the unit's non-volatile memory (parameter set, passwords, serial number, "
+                 "address switches) in FILE, one per --address: loaded at start, written on "
+                 "every change, so a restart is the same unit with the same set");
   cmd.add_option("--adapter-response-time", d.response_time_ms,
                  "rs4: the PROFIsafe adapter's response time in ms, 0..1000 (default 10, as "
                  "the manual's technical data)");

@@ -48,8 +48,8 @@ void DemoProxy::on_cycle(dp::TimePoint now) {
   for (const auto address : std::exchange(refused_, {})) {
     driver_.on_record_result(address, proxy::RecordResult::no_response(), now);
   }
-  // The demo's PLC gives the FB the Proxy-Enable it sends the RS4 (output bit 6, [RS4 manual
-  // §5.1.2]), as a PLC program would.
+  // The demo's PLC gives the FB the Proxy-Enable it sends the RS4 (output bit 6,
+  // [RS4 manual §5.1.2]), as a PLC program would.
   const std::uint8_t address = segment_.rs4_address();
   driver_.set_proxy_enable(address,
                            (segment_.output_byte() & rs4::adapter::kOutputProxyEnable) != 0);

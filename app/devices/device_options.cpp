@@ -34,6 +34,7 @@ bool given(const DeviceOptions& o, DeviceFlag f) {
     case DeviceFlag::kRs232: return !o.rs232.empty();
     case DeviceFlag::kPcAdapter: return !o.pc_adapter.empty();
     case DeviceFlag::kSerialNumber: return !o.serial_numbers.empty();
+    case DeviceFlag::kState: return !o.state_files.empty();
   }
   return false;
 }
@@ -45,7 +46,7 @@ constexpr DeviceFlag kAllFlags[] = {
     DeviceFlag::kMode,        DeviceFlag::kBlocked,      DeviceFlag::kDoor,
     DeviceFlag::kNode,        DeviceFlag::kRs232,        DeviceFlag::kPcAdapter,
     DeviceFlag::kCommandTime, DeviceFlag::kResponseTime, DeviceFlag::kAddresses,
-    DeviceFlag::kSerialNumber,
+    DeviceFlag::kSerialNumber, DeviceFlag::kState,
 };
 
 // A whole decimal number in `text`, or nullopt.
@@ -89,6 +90,7 @@ const char* flag_name(DeviceFlag f) {
     case DeviceFlag::kRs232: return "--rs232";
     case DeviceFlag::kPcAdapter: return "--pc-adapter";
     case DeviceFlag::kSerialNumber: return "--serial-number";
+    case DeviceFlag::kState: return "--state";
   }
   return "--?";
 }

@@ -34,6 +34,7 @@ enum class DeviceFlag : std::uint8_t {
   kRs232,
   kPcAdapter,
   kSerialNumber,
+  kState,
 };
 
 // "--elements".

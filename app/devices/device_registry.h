@@ -72,6 +72,9 @@ struct DeviceOptions {
   // rs4: --serial-number, one per --address in their order (the unit's identity; the
   // proxy tells units apart by it, [RS4 manual §7.1]); unnamed ones keep the default.
   std::vector<long long> serial_numbers;
+  // rs4: --state FILE, one per --address in their order: the unit's non-volatile memory
+  // (app/devices/rs4_state_file.h).
+  std::vector<std::string> state_files;
 };
 
 // A device's second serial port beside its main link (the RS4's RS232 interface): the shell

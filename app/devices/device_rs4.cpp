@@ -5,6 +5,7 @@
 #include "app/demos/demos.h"
 #include "app/devices/device_options.h"
 #include "app/devices/device_registry.h"
+#include "app/devices/rs4_state_file.h"
 #include "app/runtime/run_options.h"
 #include "rpc/device_target.h"
 #include "rpc/rs4_services.h"
@@ -90,6 +91,39 @@ Rs232Choice rs232_choice(const std::string& spec) {
   return c;
 }
 
+// --state FILE of the RS4 at `address` (index `index` of --address), or nullptr. The unit it
+// describes must be the one the options name: its switches give `address`, its serial number
+// is --serial-number's when one is given.
+std::unique_ptr<Rs4StateFile> state_file(const DeviceOptions& o, int address, std::size_t index) {
+  if (index >= o.state_files.size()) return nullptr;
+  auto file = std::make_unique<Rs4StateFile>(o.state_files[index]);
+  if (const auto& s = file->loaded()) {
+    const auto at = rs4::adapter::station_address(s->switches);
+    if (!at || at.value() != address) {
+      throw std::runtime_error(
+          "state file " + file->path() + ": the unit's address switches are set to " +
+          (at ? "station " + std::to_string(at.value()) : std::string("an invalid address")) +
+          " (changed through SetAddressSwitches); run it with --address " +
+          (at ? std::to_string(at.value()) : std::string("after correcting the switches")));
+    }
+    if (index < o.serial_numbers.size() &&
+        static_cast<long long>(s->set.identity.serial_number) != o.serial_numbers[index]) {
+      throw std::runtime_error("state file " + file->path() + " is the memory of unit " +
+                               std::to_string(s->set.identity.serial_number) +
+                               "; --serial-number " + std::to_string(o.serial_numbers[index]) +
+                               " names another unit (a new unit starts with a new state file)");
+    }
+  }
+  return file;
+}
+
+Rs4DeviceConfig unit_config(const DeviceOptions& o, int address, std::size_t index,
+                            const Rs4StateFile* file) {
+  auto c = device_config(o, address, index);
+  if (file != nullptr && file->loaded()) c = rs4::device::with_state(c, *file->loaded());
+  return c;
+}
+
 void print_state(std::ostream& out, const Rs4Device& d) {
   const auto v = d.adapter().view();
   out << "rs4 " << int(d.address()) << ": LED " << rs4::adapter::to_string(v.led) << ", RS4 "
@@ -106,8 +140,10 @@ class Rs4Instance final : public DeviceInstance {
       : boot_time_ms_(*o.boot_time_ms), attached_at_start_(o.pc_adapter == "attached") {
     const auto addresses = all_addresses(o);
     for (std::size_t i = 0; i < addresses.size(); ++i) {
-      rs4s_.push_back(std::make_unique<Rs4>(device_config(o, addresses[i], i),
-                                            static_cast<std::uint8_t>(addresses[i])));
+      auto file = state_file(o, addresses[i], i);
+      rs4s_.push_back(std::make_unique<Rs4>(unit_config(o, addresses[i], i, file.get()),
+                                            static_cast<std::uint8_t>(addresses[i]),
+                                            std::move(file)));
     }
     if (!o.rs232.empty()) {
       auto choice = rs232_choice(o.rs232);
@@ -117,15 +153,29 @@ class Rs4Instance final : public DeviceInstance {
   }
   std::vector<dp::Station*> stations() override {
     std::vector<dp::Station*> out;
-    for (const auto& r : rs4s_) out.push_back(&r->tap);
+    for (const auto& r : rs4s_) {
+      out.push_back(r->kept ? static_cast<dp::Station*>(&*r->kept) : &r->tap);
+    }
     return out;
   }
   std::optional<SidePort> side_port() override {
     if (!port_) return std::nullopt;
     return SidePort{"rs232", &*port_, rs232_path_};
   }
+  Rs4Instance(const Rs4Instance&) = delete;
+  Rs4Instance& operator=(const Rs4Instance&) = delete;
+  ~Rs4Instance() override {
+    for (const auto& r : rs4s_) {
+      if (r->state) r->state->keep(r->device);  // what changed since the last link call
+    }
+  }
   void start(dp::TimePoint now) override {
     for (const auto& r : rs4s_) {
+      if (r->state && r->state->loaded() &&
+          !rs4::device::restore_state(r->device, *r->state->loaded(), now)) {
+        throw std::runtime_error("state file " + r->state->path() +
+                                 ": the RS4 refused the parameter set in it");
+      }
       r->device.power_on(now);
       if (attached_at_start_) attach(r->device, true, now);
     }
@@ -177,10 +227,15 @@ class Rs4Instance final : public DeviceInstance {
 
  private:
   struct Rs4 {
-    Rs4(const Rs4DeviceConfig& config, std::uint8_t a) : device(config), address(a) {}
+    Rs4(const Rs4DeviceConfig& config, std::uint8_t a, std::unique_ptr<Rs4StateFile> file)
+        : device(config), address(a), state(std::move(file)) {
+      if (state) kept.emplace(tap, device, *state);
+    }
     Rs4Device device;
     rpc::TappedStation tap{device};  // telegrams for the event stream
     std::uint8_t address;
+    std::unique_ptr<Rs4StateFile> state;  // --state
+    std::optional<KeptStation> kept;      // in front of `tap` with --state
   };
 
   [[nodiscard]] std::vector<int> addresses() const {
@@ -211,8 +266,25 @@ class Rs4Instance final : public DeviceInstance {
 // ACK_REQ, on the in-memory bus.
 class Rs4Simulation final : public SimulatedSegment {
  public:
-  explicit Rs4Simulation(const DeviceOptions& o) : segment_(segment_config(o)) {
+  explicit Rs4Simulation(const DeviceOptions& o)
+      : state_(state_file(o, *o.address, 0)), segment_(segment_config(o, state_.get())) {
+    if (state_) {
+      if (state_->loaded() &&
+          !rs4::device::restore_state(segment_.device(), *state_->loaded(), segment_.now())) {
+        throw std::runtime_error("state file " + state_->path() +
+                                 ": the RS4 refused the parameter set in it");
+      }
+      // Kept after every master cycle, whoever moves the time (run_for, the API's SimTime).
+      segment_.set_observer([this](const dp::master::MasterEvent& e) {
+        if (std::holds_alternative<dp::master::CycleCompleted>(e)) state_->keep(segment_.device());
+      });
+    }
     segment_.power_on();
+  }
+  Rs4Simulation(const Rs4Simulation&) = delete;
+  Rs4Simulation& operator=(const Rs4Simulation&) = delete;
+  ~Rs4Simulation() override {
+    if (state_) state_->keep(segment_.device());
   }
   void run_for(dp::Duration d) override { segment_.run_for(d); }
   [[nodiscard]] std::uint8_t master_address() const override { return segment_.master().address(); }
@@ -229,15 +301,17 @@ class Rs4Simulation final : public SimulatedSegment {
   }
 
  private:
-  static rs4::device::Rs4SegmentConfig segment_config(const DeviceOptions& o) {
+  static rs4::device::Rs4SegmentConfig segment_config(const DeviceOptions& o,
+                                                      const Rs4StateFile* file) {
     rs4::device::Rs4SegmentConfig c;
-    c.device = device_config(o, *o.address, 0);
+    c.device = unit_config(o, *o.address, 0, file);
     c.master.address = static_cast<std::uint8_t>(*o.address);
     c.master_address = *o.address == 1 ? 2 : 1;
     c.auto_ack_rei = true;
     return c;
   }
 
+  std::unique_ptr<Rs4StateFile> state_;  // --state
   rs4::device::Rs4Segment segment_;
   std::unique_ptr<rpc::SegmentTarget> target_;
 };
@@ -250,7 +324,7 @@ void validate(DeviceOptions& o) {
       o, "rs4",
       {DeviceFlag::kAddress, DeviceFlag::kAddresses, DeviceFlag::kBootTime, DeviceFlag::kRs232,
        DeviceFlag::kPcAdapter, DeviceFlag::kCommandTime, DeviceFlag::kResponseTime,
-       DeviceFlag::kSerialNumber});
+       DeviceFlag::kSerialNumber, DeviceFlag::kState});
   if (!o.rs232.empty()) (void)rs232_choice(o.rs232);
   if (!o.address) o.address = kDefaultAddress;
   if (!o.boot_time_ms) o.boot_time_ms = kDefaultBootTimeMs;
@@ -283,6 +357,20 @@ void validate(DeviceOptions& o) {
         o.serial_numbers.begin() + static_cast<long>(i)) {
       throw UsageError("--serial-number " + std::to_string(n) +
                        " given twice (every unit has its own)");
+    }
+  }
+  if (o.state_files.size() > seen.size()) {
+    throw UsageError("--state given " + std::to_string(o.state_files.size()) + " times for " +
+                     std::to_string(seen.size()) +
+                     " --address (one state file per RS4, in the order of --address)");
+  }
+  for (std::size_t i = 0; i < o.state_files.size(); ++i) {
+    if (o.state_files[i].empty()) throw UsageError("--state: an empty file name");
+    for (std::size_t j = 0; j < i; ++j) {
+      if (o.state_files[j] == o.state_files[i]) {
+        throw UsageError("--state " + o.state_files[i] +
+                         " given twice (every unit has its own memory)");
+      }
     }
   }
   if (!o.rs232.empty() && !o.more_addresses.empty()) {

@@ -8,8 +8,10 @@ master` with a real SQLite archive as two processes over UDP on loopback.
 3. Device.ExchangeScanner: a factory unit with another serial number → the proxy downloads
    the archived set; the RS4 then runs it (GetParameterSet) and the archive names the new
    serial number.
-4. The RS4 process restarted with a third --serial-number (another unit, factory settings):
-   the running master downloads the set again.
+4. The RS4 process restarted with a third --serial-number (another unit, factory settings)
+   and a --state file: the running master downloads the set again.
+5. The RS4 process restarted with that --state file (the same unit, its set kept): a normal
+   start, the proxy's check finds the set it archived and stores no new version.
 Usage: python_device_exchange_test.py RS4SIM REPO   (exit 77 = skipped: no python3-grpcio)"""
 import signal
 import socket
@@ -42,9 +44,9 @@ def first_line(proc, prefix):
             return line[len(prefix):].strip()
 
 
-def start_rs4(serial):
-    return subprocess.Popen([rs4sim, "run", "--device", "rs4", "--address", "4",
-                             "--serial-number", str(serial), "--link", "udp",
+def start_rs4(*unit):
+    return subprocess.Popen([rs4sim, "run", "--device", "rs4", "--address", "4", *unit,
+                             "--link", "udp",
                              "--listen", f"127.0.0.1:{a}", "--peer", f"127.0.0.1:{b}",
                              "--boot-time", "3000", "--duration", "120",
                              "--grpc", "127.0.0.1:0"],
@@ -74,7 +76,7 @@ def directions(statuses):
 work = tempfile.mkdtemp(prefix="rs4sim_exchange_")
 archive = os.path.join(work, "archive.sqlite3")
 a, b = free_udp_port(), free_udp_port()
-device = start_rs4(1001)
+device = start_rs4("--serial-number", "1001")
 master = subprocess.Popen([rs4sim, "master", "--slave", "4", "--link", "udp",
                            "--listen", f"127.0.0.1:{b}", "--peer", f"127.0.0.1:{a}",
                            "--f-wd-time", "500", "--dp-watchdog", "1000", "--archive", archive,
@@ -109,7 +111,8 @@ try:
     code, _, err = stop(device)
     assert code == 0, (code, err)
     watch = m.watch_sync([4], until_done=True, timeout=60)
-    device = start_rs4(3003)
+    state = os.path.join(work, "rs4.state")
+    device = start_rs4("--serial-number", "3003", "--state", state)
     rs4 = Rs4(first_line(device, "grpc: listening on "), station=4)
     again = list(watch)
     assert directions(again) == {"download"} and again[-1].outputs.error_number_fb == 0, again
@@ -118,8 +121,28 @@ try:
     assert rs4.parameter_set_crc() == site_crc
     v = m.history(4)[-1]
     assert v.source == "download" and v.serial_number == "3003" and v.crc32 == site_crc, v
+
+    # 5. The same unit again, from its state file.
+    versions = len(m.history(4))
+    code, _, err = stop(device)
+    assert code == 0, (code, err)
+    with open(state, "rb") as f:
+        assert f.read(8) == b"RS4SIMNV", "the state file was written"
+    watch = m.watch_sync([4], until_done=True, timeout=60)
+    device = start_rs4("--state", state)
+    rs4 = Rs4(first_line(device, "grpc: listening on "), station=4)
+    check = list(watch)
+    # The set is the archived one: nothing goes either way, only the background verify
+    # reads it back ([RS4 manual §7.2]); the first status is the last sync's, kept.
+    assert directions(check[1:]) <= {"verify"}, directions(check[1:])
+    assert check[-1].outputs.error_number_fb == 0, check[-1]
+    assert not check[-1].outputs.config_set_to_default, check[-1]
+    doc = rs4.parameter_set()
+    assert doc["device"]["serial_number"] == 3003 and doc["response_time_ms"] == 160, doc
+    assert len(m.history(4)) == versions, m.history(4)
     print(f"ok: commissioning, upload (CRC-32 {site_crc:08X}), exchange 1001 → 2002 on the "
-          f"bus and 2002 → 3003 by process, each downloaded; {len(m.history(4))} versions")
+          f"bus and 2002 → 3003 by process, each downloaded; the restart from --state stored nothing; "
+          f"{len(m.history(4))} versions")
 finally:
     code, _, err = stop(master, signal.SIGINT)
     if device.poll() is None:
