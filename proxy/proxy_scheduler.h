@@ -48,6 +48,9 @@ class ProxyScheduler {
   // archive refused it (it is tried again at the next call).
   bool persist(std::uint8_t address, dp::TimePoint now);
   [[nodiscard]] ProxySync* find(std::uint8_t address) noexcept;
+  // The wall-clock time of dp::TimePoint{} for the syncs added from now on (an owner that
+  // learns its clock only when the run starts, e.g. `rs4sim master`).
+  void set_wall_at_zero(storage::Timestamp at) noexcept { config_.wall_at_zero = at; }
   [[nodiscard]] std::vector<std::uint8_t> addresses() const;
 
   // Queues the slaves that became ready, drops the ones that no longer are, and starts

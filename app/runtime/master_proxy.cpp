@@ -84,10 +84,11 @@ void ProxyPlugin::publish_changes(dp::TimePoint now) {
 
 void ProxyPlugin::start(rs4::device::Rs4MasterStation& station, dp::TimePoint now) {
   station_ = &station;
-  proxy::ProxySyncConfig config;
-  config.wall_at_zero = wall_at_zero(now);
+  // The archive's dates: wall-clock UTC whatever clock the run's loop has (a real link's
+  // steady clock counts from boot, the simulated one from 1 h).
+  scheduler_.set_wall_at_zero(wall_at_zero(now));
   for (const auto a : station.slave_addresses()) {
-    scheduler_.add(a, config);
+    scheduler_.add(a);
     station.set_proxy_enable(a, true);
     driver_.set_proxy_enable(a, true);
   }

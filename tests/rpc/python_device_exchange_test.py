@@ -12,12 +12,15 @@ master` with a real SQLite archive as two processes over UDP on loopback.
    and a --state file: the running master downloads the set again.
 5. The RS4 process restarted with that --state file (the same unit, its set kept): a normal
    start, the proxy's check finds the set it archived and stores no new version.
+Every version carries today's UTC date (`archive history`), not the time since boot.
 Usage: python_device_exchange_test.py RS4SIM REPO   (exit 77 = skipped: no python3-grpcio)"""
+import datetime
 import signal
 import socket
 import subprocess
 import sys
 import tempfile
+import time
 import os
 
 try:
@@ -140,6 +143,16 @@ try:
     doc = rs4.parameter_set()
     assert doc["device"]["serial_number"] == 3003 and doc["response_time_ms"] == 160, doc
     assert len(m.history(4)) == versions, m.history(4)
+
+    # Dates that are dates: every version stored at the wall clock's UTC time, although the
+    # master's loop runs on the steady clock (time since boot); `archive history` shows today.
+    now_ms = time.time() * 1000
+    for v in m.history(4):
+        assert abs(v.stored_at_ms - now_ms) < 10 * 60 * 1000, (v.stored_at_ms, now_ms)
+    shown = subprocess.run([rs4sim, "archive", "history", "--address", "4", "--archive", archive],
+                           check=True, capture_output=True, text=True).stdout
+    today = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d")
+    assert today in shown and "1970-01-01" not in shown, shown
     print(f"ok: commissioning, upload (CRC-32 {site_crc:08X}), exchange 1001 → 2002 on the "
           f"bus and 2002 → 3003 by process, each downloaded; the restart from --state stored nothing; "
           f"{len(m.history(4))} versions")
