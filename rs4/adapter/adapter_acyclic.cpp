@@ -253,11 +253,18 @@ std::vector<std::uint8_t> Adapter::execute_rs4_command(std::span<const std::uint
   if (!command.empty() && protocol::is_transfer_code(command[0])) return transfer(command, now);
   auto answer = answer_rs4_command(scanner_, command);
   // [RS4 manual §5.2.3.2, §5.3.2]: the 0x53 the RS4 answers with is an error of the RS4 like those
-  // it reports by itself: error memory and a diagnosis alarm; the RS4 keeps protecting
-  // [docs/decisions.md#rs4-rejected-command].
+  // it reports by itself: error memory and a diagnosis alarm. A command the RS4 does not know
+  // puts it into its error state, OSSD off ([RS4 manual §5.2.2] "RS4 geht in Fehlerzustand"):
+  // the scanner raises that error itself; one it knows but cannot execute now leaves it
+  // protecting [docs/decisions.md#rs4-rejected-command].
   if (const auto t = protocol::decode_telegram(answer)) {
     if (const auto* e = std::get_if<protocol::ErrorTelegram>(&t.value())) {
-      report_error(e->report.number, 0, now);
+      if (e->report.number == kRs4ErrorUnknownCommand && !command.empty()) {
+        scanner_.unknown_command(command[0], now);
+        collect_rs4(now);
+      } else {
+        report_error(e->report.number, 0, now);
+      }
     }
   }
   return answer;

@@ -11,6 +11,7 @@ constexpr std::array<FaultInfo, kFaultCount> kInfo{{
     {0x0302, 0x0003, "window_contaminated"},
     {0x0401, 0x0004, "field_pair_sequence"},
     {0x0402, 0x0004, "field_pair_invalid"},
+    {0x0501, 0x0005, "unknown_command"},  // = rs4/adapter/rs4_commands.h kRs4ErrorUnknownCommand
 }};
 
 }  // namespace

@@ -20,8 +20,10 @@ enum class Fault : std::uint8_t {
   kWindowContaminated,    // contamination at or above the fault level
   kFieldPairSequence,     // field pair switched along a forbidden transition
   kFieldPairInvalid,      // field pair number not 1..4 reached the scanner
+  kUnknownCommand,        // a telegram the RS4 does not know ([RS4 manual §5.2.2]: "RS4
+                          // geht in Fehlerzustand"); parameter: the command byte
 };
-inline constexpr std::size_t kFaultCount = 7;
+inline constexpr std::size_t kFaultCount = 8;
 
 struct FaultInfo {
   std::uint16_t error_number;  // 0x53 "Fehler-Nummer"

@@ -117,6 +117,10 @@ class Scanner {
   void set_contamination(std::uint8_t percent, TimePoint now);  // clamped to 100 %
   boost::outcome_v2::std_result<void> inject_fault(Fault fault, TimePoint now);
   boost::outcome_v2::std_result<void> clear_fault(Fault fault, TimePoint now);
+  // A telegram the RS4 does not know: the RS4 goes into its error state ([RS4 manual §5.2.2]
+  // "(RS4 geht in Fehlerzustand)"): OSSD off, the error (0x0501, parameter `code`) as an
+  // event, latched until a restart pulse like any fault whose cause is gone.
+  void unknown_command(std::uint8_t code, TimePoint now);
   Scene& edit_scene(TimePoint now);  // edits take effect at the next scan
 
   // Parametrisation ([RS4 manual §5.3.2]: OSSD off while the set changes). The identity stays the

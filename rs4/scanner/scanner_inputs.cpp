@@ -86,6 +86,13 @@ boost::outcome_v2::std_result<void> Scanner::inject_fault(Fault fault, TimePoint
   return boost::outcome_v2::success();
 }
 
+void Scanner::unknown_command(std::uint8_t code, TimePoint now) {
+  advance(now);
+  steady_ = false;
+  raise_fault(Fault::kUnknownCommand, code, now);
+  apply_ossd();
+}
+
 boost::outcome_v2::std_result<void> Scanner::clear_fault(Fault fault, TimePoint now) {
   if (static_cast<std::size_t>(fault) >= kFaultCount) return ScannerError::kUnknownFault;
   advance(now);
@@ -99,7 +106,8 @@ boost::outcome_v2::std_result<void> Scanner::clear_fault(Fault fault, TimePoint 
 // per occurrence. Field-pair faults are events, not lasting causes.
 void Scanner::raise_fault(Fault fault, std::uint16_t parameter, TimePoint at) {
   FaultState& f = faults_[static_cast<std::size_t>(fault)];
-  const bool lasting = fault != Fault::kFieldPairInvalid && fault != Fault::kFieldPairSequence;
+  const bool lasting = fault != Fault::kFieldPairInvalid && fault != Fault::kFieldPairSequence &&
+                       fault != Fault::kUnknownCommand;
   f.present = lasting;
   if (f.latched) return;
   f.latched = true;

@@ -50,10 +50,12 @@ TEST_F(Aligned, PersistingWarningGetsNoGoingAlarm) {
   EXPECT_EQ(rig.alarms_of(1, 2), 1u);
 }
 
-// [docs/decisions.md#rs4-rejected-command]: the RS4 answers an unknown command with 0x53
-// (error 0x0501, parameter = the command byte); the adapter enters it like any RS4 error
-// (μC2 ring, diagnosis alarm); the RS4 keeps protecting.
-TEST_F(Aligned, UnknownCommandIsAnRs4ErrorWithAlarm) {
+// [RS4 manual §5.2.2]: a telegram the RS4 does not know is answered with 0x53 (error 0x0501,
+// parameter = the command byte) "(RS4 geht in Fehlerzustand)": OSSD off, the error in the μC2
+// ring and a diagnosis alarm, once; a restart pulse acknowledges it (no lasting cause)
+// [docs/decisions.md#rs4-rejected-command].
+TEST_F(Aligned, UnknownCommandPutsTheRs4IntoItsErrorState) {
+  ASSERT_TRUE(rig.ossd());
   rig.write(Rig::block({0x7E}));
   const auto answer = rig.read_answer();
   ASSERT_FALSE(answer.empty());
@@ -65,9 +67,18 @@ TEST_F(Aligned, UnknownCommandIsAnRs4ErrorWithAlarm) {
   ASSERT_EQ(rig.alarms_of(1, 1), 1u);
   EXPECT_EQ(rig.control.alarms[0].user_data, (Bytes{0x84, 0x05, 0x01, 0x00, 0x01,  // μC2 0x0501 ×1
                                                     0x00, 0x00, 0x00, 0x00}));     // μC1 none
-  EXPECT_TRUE(rig.ossd());
+  EXPECT_FALSE(rig.ossd());
+  EXPECT_EQ(rig.adapter.scanner().status().state, scanner::ScannerState::kError);
+  EXPECT_TRUE(rig.host_input() & kInputError);  // bit 5, with OSSD 0 [RS4 manual §5.1.1]
+  rig.run(1s);
+  EXPECT_FALSE(rig.ossd()) << "latched until acknowledged";
+  rig.restart_pulse();  // acknowledges the error: a new start, measuring again
   EXPECT_EQ(rig.adapter.scanner().status().state, scanner::ScannerState::kMeasuring);
+  EXPECT_FALSE(rig.ossd()) << "the start interlock of the new start";
+  rig.restart_pulse();  // releases the start interlock [RS4 manual §4.3]
+  EXPECT_TRUE(rig.ossd());
 }
+
 
 // [RS4 manual §5.2.2]: PROFI_CMD_RESET does not affect the RS4: the field pair it monitors stays
 // until the PROFIBUS start-up after the reset selects pair 1 ([RS4 manual §5.1.2]).

@@ -238,7 +238,7 @@ TEST(ScannerFaults, WarningOutputOnFaultAndInterlockWhenAssigned) {
 TEST(ScannerFaults, UnknownFaultValueIsATypedError) {
   ManualTime t;
   Scanner s = booted(params(RestartMode::kAutomatic), t);
-  EXPECT_EQ(s.inject_fault(static_cast<Fault>(7), t.now).error(), ScannerError::kUnknownFault);
+  EXPECT_EQ(s.inject_fault(static_cast<Fault>(kFaultCount), t.now).error(), ScannerError::kUnknownFault);
   EXPECT_EQ(s.clear_fault(static_cast<Fault>(255), t.now).error(), ScannerError::kUnknownFault);
   EXPECT_TRUE(s.ossd());
   EXPECT_EQ(fault_info(static_cast<Fault>(200)).error_number, 0);
