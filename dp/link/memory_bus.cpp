@@ -225,7 +225,7 @@ Fate MemoryBus::schedule(Port& from, std::uint8_t to, TimePoint arrival,
   Fate fate = Fate::kDelivered;
   Pending p{arrival, sequence_++, to, new_frame(wire)};
   if (const auto f = faults_.empty() ? std::nullopt : match_fault(FaultKind::kCorrupt, sa, to)) {
-    Frame& frame = frames_[p.frame];
+    Frame& frame = *frames_[p.frame];
     const std::uint32_t bit = f->bit % static_cast<std::uint32_t>(frame.size * 8);
     auto& byte = frame.bytes[bit / 8];
     byte = static_cast<std::uint8_t>(byte ^ (1U << (bit % 8)));
@@ -246,12 +246,12 @@ std::uint32_t MemoryBus::new_frame(std::span<const std::uint8_t> bytes) {
   std::uint32_t i = 0;
   if (free_frames_.empty()) {
     i = static_cast<std::uint32_t>(frames_.size());
-    frames_.emplace_back();
+    frames_.push_back(std::make_unique<Frame>());
   } else {
     i = free_frames_.back();
     free_frames_.pop_back();
   }
-  Frame& frame = frames_[i];
+  Frame& frame = *frames_[i];
   frame.size = std::min(bytes.size(), frame.bytes.size());
   std::memcpy(frame.bytes.data(), bytes.data(), frame.size);
   return i;
@@ -297,7 +297,7 @@ void MemoryBus::deliver(const Pending& pending) {
     return;
   }
   to.now = clock_.now();
-  const Frame& frame = frames_[pending.frame];
+  const Frame& frame = *frames_[pending.frame];
   to.decoder.feed(std::span<const std::uint8_t>(frame.bytes.data(), frame.size), to);
   to.decoder.idle(to);  // TSYN of idle line follows every frame on this bus
                         // ([IEC 61158-4-3 bus parameters, timing])

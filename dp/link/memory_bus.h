@@ -26,7 +26,6 @@
 
 #include <array>
 #include <cstdint>
-#include <deque>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -157,12 +156,13 @@ class MemoryBus {
   std::array<std::unique_ptr<Port>, kMaxStations> ports_;
   std::vector<Port*> order_;    // attach order = deterministic tie-break for deadlines
   std::vector<Pending> queue_;  // binary heap on (arrival, sequence), small records
-  // The frames in flight, by index (stable: a delivery may schedule new ones); reused.
+  // The frames in flight, by index, each on the heap once (stable while a delivery
+  // schedules new ones) and reused; indexing is one load (a deque's was a division).
   struct Frame {
     std::array<std::uint8_t, fdl::kMaxTelegramSize> bytes;
     std::size_t size = 0;
   };
-  std::deque<Frame> frames_;
+  std::vector<std::unique_ptr<Frame>> frames_;
   std::vector<std::uint32_t> free_frames_;
   std::vector<ActiveFault> faults_;
   FaultId next_fault_id_ = 1;

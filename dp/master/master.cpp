@@ -43,9 +43,9 @@ SlaveContext Master::context() {
       config_.ready_timeout};
 }
 
-void Master::transmit(fdl::Telegram t) {
+void Master::transmit(const fdl::Telegram& t) {
   ++counters_.telegrams_sent;
-  tx_.push_back(std::move(t));
+  tx_.push_back(t);
 }
 
 std::optional<fdl::Telegram> Master::take_transmit() {
@@ -119,13 +119,18 @@ void Master::on_telegram(const fdl::Telegram& t, TimePoint now) {
   next_send_ = now + config_.bus.bits(config_.bus.tid1);
 }
 
-void Master::send_request(std::size_t slave, Request r, TimePoint now) {
+void Master::send_request(std::size_t slave, Request&& r, TimePoint now) {
   cycle_sent_ = true;
   const BusParameters& b = config_.bus;
   const TimePoint deadline = now + b.characters(fdl::encoded_size(r.telegram)) + b.bits(b.tsl) +
                              b.characters(r.max_reply_bytes);
-  transmit(r.telegram);
-  outstanding_ = Outstanding{slave, std::move(r), deadline, 0};
+  // The request moves once, into the slot it is kept in for a retry; the transmit queue
+  // gets the one copy the link takes.
+  Outstanding& o = outstanding_.emplace();
+  o.slave = slave;
+  o.request = std::move(r);
+  o.deadline = deadline;
+  transmit(o.request.telegram);
 }
 
 void Master::on_slot_expired(TimePoint now) {

@@ -122,8 +122,8 @@ class Master final : public Station {
   SlaveHandler* find(std::uint8_t address);
   [[nodiscard]] const SlaveHandler* find(std::uint8_t address) const;
   SlaveContext context();
-  void transmit(fdl::Telegram t);
-  void send_request(std::size_t slave, Request r, TimePoint now);
+  void transmit(const fdl::Telegram& t);
+  void send_request(std::size_t slave, Request&& r, TimePoint now);
   void on_slot_expired(TimePoint now);
   void run_bus(TimePoint now);
   void start_cycle(TimePoint now);

@@ -53,17 +53,16 @@ Request SlaveHandler::make(SlaveContext& ctx, RequestKind kind, fdl::FrameContro
 
 std::optional<Request> SlaveHandler::next_request(SlaveContext& ctx, TimePoint now) {
   if (turn_.count >= kMaxRequestsPerTurn) return std::nullopt;
-  std::optional<Request> r;
-  if (state_ != PollState::kDataExchange) {
+  const bool startup = state_ != PollState::kDataExchange;
+  if (startup) {
     if (turn_.count > 0 && !continue_) return std::nullopt;
     continue_ = false;
     if (state_ == PollState::kWaitReady && now - wait_ready_since_ >= ctx.ready_timeout) {
       restart(ctx, make_error_code(MasterError::kStartupTimeout), PollState::kReadDiag);
     }
-    r = startup_request(ctx);
-  } else {
-    r = cyclic_request(ctx, now);
   }
+  // Initialised from the call (no second move of the telegram).
+  std::optional<Request> r = startup ? startup_request(ctx) : cyclic_request(ctx, now);
   if (r) {
     ++turn_.count;
     ++counters_.requests;
@@ -100,16 +99,17 @@ std::optional<Request> SlaveHandler::startup_request(SlaveContext& ctx) {
 Request SlaveHandler::data_exchange_request(SlaveContext& ctx) const {
   // [IEC 61158-6-3 Data_Exchange]: SRD_HI on the default SAP with the whole output image; in CLEAR
   // zeros, or an empty telegram for slaves parameterised with Fail_Safe.
-  fdl::DataUnit out;
-  if (!ctx.clear_mode) {
-    out = outputs_;
-  } else if (!config_.fail_safe()) {
-    out.resize(outputs_.size(), 0);
+  // The output image goes straight into the telegram (no intermediate copy).
+  fdl::DataUnit zeros;
+  std::span<const std::uint8_t> out = bytes(outputs_);
+  if (ctx.clear_mode) {
+    if (!config_.fail_safe()) zeros.resize(outputs_.size(), 0);
+    out = bytes(zeros);
   }
   const std::size_t reply = std::max<std::size_t>(6, 9 + config_.input_length);
   return make(ctx, RequestKind::kDataExchange,
-              ctx.fcb.next(config_.address, fdl::RequestFunction::kSrdHigh), std::nullopt,
-              bytes(out), reply);
+              ctx.fcb.next(config_.address, fdl::RequestFunction::kSrdHigh), std::nullopt, out,
+              reply);
 }
 
 std::optional<Request> SlaveHandler::cyclic_request(SlaveContext& ctx, TimePoint now) {

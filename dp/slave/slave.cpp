@@ -216,8 +216,9 @@ void Slave::on_malformed_frame(std::error_code why) {
 }
 
 std::optional<fdl::Telegram> Slave::take_transmit() {
-  std::optional<fdl::Telegram> out;
-  out.swap(tx_);
+  if (!tx_) return std::nullopt;  // the link's second call after each reply
+  std::optional<fdl::Telegram> out(std::move(*tx_));
+  tx_.reset();
   return out;
 }
 
