@@ -126,7 +126,7 @@ void Master::send_request(std::size_t slave, Request&& r, TimePoint now) {
                              b.characters(r.max_reply_bytes);
   // The request moves once, into the slot it is kept in for a retry; the transmit queue
   // gets the one copy the link takes.
-  Outstanding& o = outstanding_.emplace();
+  Outstanding& o = outstanding_.emplace(Outstanding{});  // empty: an empty telegram moves cheaply
   o.slave = slave;
   o.request = std::move(r);
   o.deadline = deadline;
