@@ -1,5 +1,6 @@
 // SqliteArchive: sync log and integrity check (sqlite_archive.h).
 #include "storage/crc32.h"
+#include "storage/request_check.h"
 #include "storage/sqlite_archive.h"
 #include "storage/time_ms.h"
 
@@ -28,9 +29,7 @@ Result<void> SqliteArchive::insert_sync(std::int64_t station, const SyncLogEntry
 
 Result<void> SqliteArchive::log_sync(const SyncLogEntry& entry) {
   return with_context("log sync " + label(entry.station), [&]() -> Result<void> {
-    if (entry.station.address > 126) {
-      return archive_error(ArchiveError::kInvalidArgument, "address above 126");
-    }
+    BOOST_OUTCOME_TRY(check_address(entry.station));
     BOOST_OUTCOME_TRY(tx, Transaction::begin(*db_));
     BOOST_OUTCOME_TRY(station, upsert_station(entry.station, ""));
     BOOST_OUTCOME_TRY(insert_sync(station, entry));

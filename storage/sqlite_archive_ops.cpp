@@ -1,41 +1,13 @@
 // SqliteArchive: store, read, restore, stations (sqlite_archive.h).
-#include "storage/crc32.h"
+#include "storage/request_check.h"
 #include "storage/sqlite_archive.h"
 #include "storage/sqlite_rows.h"
 #include "storage/time_ms.h"
-
-#include <cstdio>
 
 namespace rs4sim::storage {
 
 using boost::outcome_v2::success;
 using sqlite::Transaction;
-
-namespace {
-
-constexpr std::uint8_t kMaxAddress = 126;
-
-std::string hex32(std::uint32_t v) {
-  char text[11];
-  std::snprintf(text, sizeof text, "0x%08X", v);
-  return text;
-}
-
-Result<void> check_request(const StoreRequest& r) {
-  if (r.station.address > kMaxAddress) {
-    return archive_error(ArchiveError::kInvalidArgument,
-                         "address " + std::to_string(r.station.address) + " above 126");
-  }
-  if (r.blob.empty()) return archive_error(ArchiveError::kInvalidArgument, "empty blob");
-  const auto actual = crc32(r.blob);
-  if (actual != r.crc32) {
-    return archive_error(ArchiveError::kCrcMismatch,
-                         "claimed " + hex32(r.crc32) + ", blob has " + hex32(actual));
-  }
-  return success();
-}
-
-}  // namespace
 
 // A new current version supersedes a restore still waiting for its download.
 Result<void> SqliteArchive::clear_pending(std::int64_t station) {

@@ -1,4 +1,5 @@
 // The proxy's retentive state (ParameterArchive::save_proxy_state / load_proxy_state).
+#include "storage/request_check.h"
 #include "storage/sqlite_archive.h"
 #include "storage/time_ms.h"
 
@@ -13,9 +14,7 @@ using sqlite::Transaction;
 Result<void> SqliteArchive::save_proxy_state(const StationKey& station,
                                              std::span<const std::uint8_t> state, Timestamp at) {
   return with_context("save proxy state of " + label(station), [&]() -> Result<void> {
-    if (station.address > 126) {
-      return archive_error(ArchiveError::kInvalidArgument, "address above 126");
-    }
+    BOOST_OUTCOME_TRY(check_address(station));
     if (state.empty() || state.size() > kMaxProxyStateSize) {
       return archive_error(ArchiveError::kInvalidArgument,
                            "state of " + std::to_string(state.size()) + " bytes (1.." +

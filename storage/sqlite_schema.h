@@ -4,14 +4,15 @@
 // the schema version. Migrations run in one BEGIN IMMEDIATE transaction on open.
 
 #include "storage/errors.h"
+#include "storage/schema_version.h"
 #include "storage/sqlite_db.h"
 
 #include <cstdint>
 
 namespace rs4sim::storage::sqlite {
 
-inline constexpr std::int64_t kApplicationId = 0x52533441;  // "RS4A"
-inline constexpr std::int64_t kSchemaVersion = 3;
+inline constexpr std::int64_t kApplicationId = kArchiveApplicationId;
+inline constexpr std::int64_t kSchemaVersion = kArchiveSchemaVersion;
 
 // Checks that the file is ours and not newer, then migrates it to kSchemaVersion (an
 // empty file is created). A read-only connection must already be at kSchemaVersion.

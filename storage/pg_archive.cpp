@@ -1,0 +1,374 @@
+// PgArchive: open, the rows every call shares, store, read, restore (pg_archive.h).
+//
+// Why READ COMMITTED is enough for a change: every change that adds a version first takes the
+// station's row lock (the upsert of store(), SELECT ... FOR UPDATE of restore() and import),
+// and numbers the version with a statement that runs after the lock is granted, so it sees the
+// version a concurrent writer committed before it: two masters on one station cannot number a
+// version twice (the UNIQUE (station_id, number) constraint would refuse it anyway). A new set
+// is inserted with ON CONFLICT (sha256) DO NOTHING and read back otherwise: a concurrent insert
+// of the same bytes makes the second wait and then find the first's row, never a second copy.
+#include "storage/pg_archive.h"
+
+#include "storage/pg_rows.h"
+#include "storage/pg_schema.h"
+#include "storage/request_check.h"
+#include "storage/time_ms.h"
+
+namespace rs4sim::storage {
+
+using boost::outcome_v2::success;
+using pg::Params;
+using pg::Rows;
+using pg::Transaction;
+
+
+Result<std::unique_ptr<PgArchive>> PgArchive::open(const std::string& conninfo,
+                                                   const PgOptions& options) {
+  return with_context("open " + pg::redacted(conninfo), [&]() -> Result<std::unique_ptr<PgArchive>> {
+    BOOST_OUTCOME_TRY(c, pg::Connection::open(conninfo));
+    if (options.read_only) {
+      BOOST_OUTCOME_TRY(c->exec("SET default_transaction_read_only = on", "read-only session"));
+    }
+    BOOST_OUTCOME_TRY(pg::prepare_schema(*c, options.read_only));
+    return std::unique_ptr<PgArchive>(new PgArchive(std::move(c), options));
+  });
+}
+
+Result<std::int64_t> PgArchive::station_id(const StationKey& key, bool lock) {
+  Params p;
+  p.add(key.bus).add(std::int64_t{key.address});
+  BOOST_OUTCOME_TRY(r, c_->query(lock ? "SELECT id FROM stations WHERE bus = $1::text AND "
+                                        "address = $2::int2 FOR UPDATE"
+                                      : "SELECT id FROM stations WHERE bus = $1::text AND "
+                                        "address = $2::int2",
+                                 p, label(key)));
+  if (r.count() == 1) return r.int64(0, 0);
+  auto failure = archive_error(ArchiveError::kUnknownStation, label(key));
+  failure.message += " (" + known_stations() + ")";
+  return failure;
+}
+
+// "the archive has bus demo: 4, 5; bus line2: 7" (or that it has none), as SqliteArchive.
+std::string PgArchive::known_stations() {
+  auto r = c_->query(
+      "SELECT bus, string_agg(address::text, ', ' ORDER BY address) FROM stations "
+      "GROUP BY bus ORDER BY bus COLLATE \"C\"",
+      "list stations");
+  if (!r) return "the archive's stations could not be read";
+  std::string text;
+  for (int i = 0; i < r.value().count(); ++i) {
+    text += (text.empty() ? "the archive has bus " : "; bus ") + r.value().text(i, 0) + ": " +
+            r.value().text(i, 1);
+  }
+  return text.empty() ? "the archive holds no stations yet" : text;
+}
+
+Result<std::int64_t> PgArchive::upsert_station(const StationKey& key,
+                                               std::string_view device_type) {
+  Params p;
+  p.add(key.bus).add(std::int64_t{key.address}).add(device_type);
+  // DO UPDATE (not DO NOTHING) so that the row is locked for the rest of the transaction.
+  BOOST_OUTCOME_TRY(
+      r, c_->query("INSERT INTO stations (bus, address, device_type) "
+                   "VALUES ($1::text, $2::int2, $3::text) "
+                   "ON CONFLICT (bus, address) DO UPDATE SET device_type = CASE "
+                   "WHEN excluded.device_type <> '' THEN excluded.device_type "
+                   "ELSE stations.device_type END RETURNING id",
+                   p, "write " + label(key)));
+  return r.int64(0, 0);
+}
+
+Result<void> PgArchive::see_serial(std::int64_t station, std::string_view serial,
+                                   Timestamp first, Timestamp last) {
+  if (serial.empty()) return success();
+  Params p;
+  p.add(station).add(serial).add(to_ms(first)).add(to_ms(last));
+  BOOST_OUTCOME_TRY(c_->query(
+      "INSERT INTO station_serials VALUES ($1::int8, $2::text, to_timestamp($3::float8 / 1000), "
+      "to_timestamp($4::float8 / 1000)) ON CONFLICT (station_id, serial_number) DO UPDATE SET "
+      "first_seen = least(station_serials.first_seen, excluded.first_seen), "
+      "last_seen = greatest(station_serials.last_seen, excluded.last_seen)",
+      p, "record serial number " + std::string(serial)));
+  return success();
+}
+
+// Looked up first: a set stored again (the common case) costs one statement and no identity
+// value (an INSERT that meets a conflict still draws one).
+Result<SetId> PgArchive::intern_set(std::span<const std::uint8_t> blob, std::uint32_t crc,
+                                    std::string_view summary, bool& inserted) {
+  inserted = false;
+  Params q;
+  q.add(blob);
+  constexpr std::string_view kFind =
+      "SELECT id, blob = $1::bytea FROM parameter_sets WHERE sha256 = sha256($1::bytea)";
+  const auto found = [&](const Rows& r) -> Result<SetId> {
+    if (!r.boolean(0, 1)) {
+      return archive_error(ArchiveError::kCorruptArchive,
+                           "a stored parameter set has this set's SHA-256 but other bytes");
+    }
+    return r.int64(0, 0);
+  };
+  {
+    BOOST_OUTCOME_TRY(r, c_->query(kFind, q, "look up parameter set"));
+    if (r.count() == 1) return found(r);
+  }
+  Params p;
+  p.add(std::int64_t{crc}).add(static_cast<std::int64_t>(blob.size())).add(blob).add(summary);
+  BOOST_OUTCOME_TRY(r, c_->query("INSERT INTO parameter_sets (crc32, size, sha256, blob, summary) "
+                                 "VALUES ($1::int8, $2::int4, sha256($3::bytea), $3::bytea, "
+                                 "$4::text) ON CONFLICT (sha256) DO NOTHING RETURNING id",
+                                 p, "insert parameter set"));
+  if (r.count() == 1) {
+    inserted = true;
+    return r.int64(0, 0);
+  }
+  // A concurrent writer inserted the same bytes and committed while this insert waited.
+  BOOST_OUTCOME_TRY(again, c_->query(kFind, q, "look up parameter set"));
+  if (again.count() != 1) {
+    return archive_error(ArchiveError::kCorruptArchive, "a parameter set vanished while stored");
+  }
+  return found(again);
+}
+
+Result<VersionId> PgArchive::append_version(std::int64_t station, const NewVersion& v) {
+  Params p;
+  p.add(station).add(v.set_id).add(static_cast<std::int64_t>(v.source)).add(to_ms(v.at));
+  p.add(v.note).add(v.serial_number);
+  if (v.restored_from) {
+    p.add(*v.restored_from);
+  } else {
+    p.add_null();
+  }
+  p.add_bool(v.pending_download);
+  // Numbered under the station's row lock, which the caller holds.
+  BOOST_OUTCOME_TRY(
+      r, c_->query("INSERT INTO versions (station_id, number, set_id, source, stored_at, note, "
+                   "serial_number, restored_from, pending_download) "
+                   "SELECT $1::int8, coalesce(max(number), 0) + 1, $2::int8, $3::int2, "
+                   "to_timestamp($4::float8 / 1000), $5::text, $6::text, $7::int8, $8::bool "
+                   "FROM versions WHERE station_id = $1::int8 RETURNING id",
+                   p, "insert version"));
+  return r.int64(0, 0);
+}
+
+Result<void> PgArchive::make_current(std::int64_t station, VersionId version) {
+  Params p;
+  p.add(station).add(version);
+  BOOST_OUTCOME_TRY(c_->query("INSERT INTO current_versions (station_id, version_id) "
+                              "VALUES ($1::int8, $2::int8) ON CONFLICT (station_id) "
+                              "DO UPDATE SET version_id = excluded.version_id",
+                              p, "set current version"));
+  return success();
+}
+
+// A new current version supersedes a restore still waiting for its download.
+Result<void> PgArchive::clear_pending(std::int64_t station) {
+  Params p;
+  p.add(station);
+  BOOST_OUTCOME_TRY(c_->query("UPDATE versions SET pending_download = false "
+                              "WHERE station_id = $1::int8 AND pending_download",
+                              p, "clear pending download"));
+  return success();
+}
+
+Result<VersionInfo> PgArchive::version_info(VersionId version) {
+  Params p;
+  p.add(version);
+  const auto what = "version " + std::to_string(version);
+  BOOST_OUTCOME_TRY(r, c_->query(version_query("WHERE v.id = $1::int8"), p, what));
+  if (r.count() == 0) return archive_error(ArchiveError::kUnknownVersion, what);
+  return read_version(r, 0);
+}
+
+Result<VersionWithSet> PgArchive::version_with_set(VersionId version) {
+  Params p;
+  p.add(version);
+  const auto what = "version " + std::to_string(version);
+  BOOST_OUTCOME_TRY(r, c_->query(version_query("WHERE v.id = $1::int8", true), p, what));
+  if (r.count() == 0) return archive_error(ArchiveError::kUnknownVersion, what);
+  VersionWithSet out{read_version(r, 0), {}};
+  out.set = ParameterSetRecord{out.version.set_id, out.version.crc32, r.bytes(0, 14),
+                               r.text(0, 13)};
+  return out;
+}
+
+Result<VersionInfo> PgArchive::store(const StoreRequest& r) {
+  return with_context("store " + label(r.station), [&]() -> Result<VersionInfo> {
+    BOOST_OUTCOME_TRY(check_request(r));
+    return write<VersionInfo>([&]() -> Result<VersionInfo> {
+      BOOST_OUTCOME_TRY(station, upsert_station(r.station, r.device_type));
+      BOOST_OUTCOME_TRY(see_serial(station, r.serial_number, r.at, r.at));
+      bool inserted = false;
+      BOOST_OUTCOME_TRY(set, intern_set(r.blob, r.crc32, r.summary, inserted));
+      BOOST_OUTCOME_TRY(clear_pending(station));
+      NewVersion v;
+      v.set_id = set;
+      v.source = r.source;
+      v.at = r.at;
+      v.note = r.note;
+      v.serial_number = r.serial_number;
+      BOOST_OUTCOME_TRY(id, append_version(station, v));
+      BOOST_OUTCOME_TRY(make_current(station, id));
+      return version_info(id);
+    });
+  });
+}
+
+Result<VersionWithSet> PgArchive::current(const StationKey& key) {
+  return with_context("current", [&]() -> Result<VersionWithSet> {
+    return read<VersionWithSet>([&]() -> Result<VersionWithSet> {
+      BOOST_OUTCOME_TRY(station, station_id(key, false));
+      Params p;
+      p.add(station);
+      BOOST_OUTCOME_TRY(
+          r, c_->query("SELECT version_id FROM current_versions WHERE station_id = $1::int8", p,
+                       label(key)));
+      if (r.count() == 0) {
+        return archive_error(ArchiveError::kNotFound, label(key) + " has no current set");
+      }
+      return version_with_set(r.int64(0, 0));
+    });
+  });
+}
+
+Result<std::vector<VersionInfo>> PgArchive::history(const StationKey& key) {
+  return with_context("history", [&]() -> Result<std::vector<VersionInfo>> {
+    return read<std::vector<VersionInfo>>([&]() -> Result<std::vector<VersionInfo>> {
+      BOOST_OUTCOME_TRY(station, station_id(key, false));
+      Params p;
+      p.add(station);
+      BOOST_OUTCOME_TRY(
+          r, c_->query(version_query("WHERE v.station_id = $1::int8 ORDER BY v.number"), p,
+                       label(key)));
+      std::vector<VersionInfo> out;
+      out.reserve(static_cast<std::size_t>(r.count()));
+      for (int i = 0; i < r.count(); ++i) out.push_back(read_version(r, i));
+      return out;
+    });
+  });
+}
+
+Result<VersionWithSet> PgArchive::get(VersionId version) {
+  return with_context("get", [&]() -> Result<VersionWithSet> {
+    BOOST_OUTCOME_TRY(c_->reconnect_if_lost());
+    return version_with_set(version);  // one statement: one snapshot
+  });
+}
+
+Result<VersionInfo> PgArchive::restore(VersionId version, Timestamp at, std::string note) {
+  return with_context("restore", [&]() -> Result<VersionInfo> {
+    return write<VersionInfo>([&]() -> Result<VersionInfo> {
+      BOOST_OUTCOME_TRY(old, version_info(version));
+      BOOST_OUTCOME_TRY(station, station_id(old.station, true));
+      BOOST_OUTCOME_TRY(clear_pending(station));
+      NewVersion v;
+      v.set_id = old.set_id;
+      v.source = VersionSource::kRestore;
+      v.at = at;
+      v.note = note;
+      v.restored_from = version;
+      v.pending_download = true;
+      BOOST_OUTCOME_TRY(id, append_version(station, v));
+      BOOST_OUTCOME_TRY(make_current(station, id));
+      return version_info(id);
+    });
+  });
+}
+
+Result<void> PgArchive::mark_downloaded(VersionId version) {
+  return with_context("mark downloaded", [&]() -> Result<void> {
+    return write<void>([&]() -> Result<void> {
+      Params p;
+      p.add(version);
+      const auto what = "version " + std::to_string(version);
+      BOOST_OUTCOME_TRY(
+          r, c_->query("UPDATE versions SET pending_download = false WHERE id = $1::int8", p, what));
+      if (r.affected() == 0) return archive_error(ArchiveError::kUnknownVersion, what);
+      return success();
+    });
+  });
+}
+
+Result<std::vector<std::pair<std::int64_t, StationInfo>>> PgArchive::list_stations() {
+  BOOST_OUTCOME_TRY(
+      r, c_->query("SELECT s.id, s.bus, s.address, s.device_type, c.version_id FROM stations s "
+                   "LEFT JOIN current_versions c ON c.station_id = s.id "
+                   "ORDER BY s.bus COLLATE \"C\", s.address",
+                   "list"));
+  std::vector<std::pair<std::int64_t, StationInfo>> out;
+  std::unordered_map<std::int64_t, std::size_t> index;
+  for (int i = 0; i < r.count(); ++i) {
+    StationInfo info;
+    info.key = StationKey{r.text(i, 1), static_cast<std::uint8_t>(r.int64(i, 2))};
+    info.device_type = r.text(i, 3);
+    if (!r.is_null(i, 4)) info.current = r.int64(i, 4);
+    index[r.int64(i, 0)] = out.size();
+    out.emplace_back(r.int64(i, 0), std::move(info));
+  }
+  BOOST_OUTCOME_TRY(
+      s, c_->query("SELECT station_id, serial_number, "
+                   "(extract(epoch FROM first_seen) * 1000)::int8, "
+                   "(extract(epoch FROM last_seen) * 1000)::int8 FROM station_serials "
+                   "ORDER BY station_id, first_seen, serial_number COLLATE \"C\"",
+                   "serial numbers"));
+  for (int i = 0; i < s.count(); ++i) {
+    const auto it = index.find(s.int64(i, 0));
+    if (it == index.end()) continue;
+    out[it->second].second.serials.push_back(
+        {s.text(i, 1), from_ms(s.int64(i, 2)), from_ms(s.int64(i, 3))});
+  }
+  return out;
+}
+
+Result<std::vector<StationInfo>> PgArchive::stations() {
+  return with_context("stations", [&]() -> Result<std::vector<StationInfo>> {
+    return read<std::vector<StationInfo>>([&]() -> Result<std::vector<StationInfo>> {
+      BOOST_OUTCOME_TRY(list, list_stations());
+      std::vector<StationInfo> out;
+      out.reserve(list.size());
+      for (auto& entry : list) out.push_back(std::move(entry.second));
+      return out;
+    });
+  });
+}
+
+Result<void> PgArchive::save_proxy_state(const StationKey& station,
+                                         std::span<const std::uint8_t> state, Timestamp at) {
+  return with_context("save proxy state of " + label(station), [&]() -> Result<void> {
+    BOOST_OUTCOME_TRY(check_address(station));
+    if (state.empty() || state.size() > kMaxProxyStateSize) {
+      return archive_error(ArchiveError::kInvalidArgument,
+                           "state of " + std::to_string(state.size()) + " bytes (1.." +
+                               std::to_string(kMaxProxyStateSize) + " allowed)");
+    }
+    return write<void>([&]() -> Result<void> {
+      Params p;
+      p.add(station.bus).add(std::int64_t{station.address}).add(state).add(to_ms(at));
+      BOOST_OUTCOME_TRY(c_->query(
+          "INSERT INTO proxy_state (bus, address, state, saved_at) VALUES ($1::text, $2::int2, "
+          "$3::bytea, to_timestamp($4::float8 / 1000)) ON CONFLICT (bus, address) DO UPDATE "
+          "SET state = excluded.state, saved_at = excluded.saved_at",
+          p, label(station)));
+      return success();
+    });
+  });
+}
+
+Result<std::vector<std::uint8_t>> PgArchive::load_proxy_state(const StationKey& station) {
+  return with_context("load proxy state of " + label(station),
+                      [&]() -> Result<std::vector<std::uint8_t>> {
+                        BOOST_OUTCOME_TRY(c_->reconnect_if_lost());
+                        Params p;
+                        p.add(station.bus).add(std::int64_t{station.address});
+                        BOOST_OUTCOME_TRY(r, c_->query("SELECT state FROM proxy_state WHERE "
+                                                       "bus = $1::text AND address = $2::int2",
+                                                       p, label(station)));
+                        if (r.count() == 0) {
+                          return archive_error(ArchiveError::kNotFound,
+                                               label(station) + " has no saved proxy state");
+                        }
+                        return r.bytes(0, 0);
+                      });
+}
+
+}  // namespace rs4sim::storage
