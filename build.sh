@@ -80,6 +80,9 @@ case "$mode" in
     # Where the time goes is printed per stage (CI's breakdown: docs/ci.md).
     stage_start=$SECONDS
     stage_done() { echo "==> $1: $((SECONDS - stage_start)) s"; stage_start=$SECONDS; }
+    # ./build.sh test installed PostgreSQL's server programs: the PostgreSQL half of the
+    # archive tests must run, a server that does not start is a failure (never a skip).
+    export RS4SIM_REQUIRE_POSTGRES=1
     echo "==> [1/3] build + ctest: unit, integration, realtime"
     # -g1 (line tables): every backtrace still has file:line; full -g costs a third of the
     # build time here for nothing a test run reads.

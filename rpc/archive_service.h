@@ -1,7 +1,7 @@
 #pragma once
 // The Archive service of rs4sim.v1 (docs/rpc.md "Archive"): the parameter archive over
 // gRPC, as `rs4sim archive` offers it on the command line. The archive belongs to the
-// loop thread (SqliteArchive is one connection, not thread-safe): every call runs there.
+// loop thread (an archive is one connection, not thread-safe): every call runs there.
 
 #include "rpc/executor.h"
 #include "rs4sim/v1/archive_service.grpc.pb.h"

@@ -36,6 +36,8 @@ command tshark             tshark                  capture_dissector, cli_master
 command clang++            clang                   ./build.sh test stage 2: the sanitizer build with the libFuzzer targets
 command grpc_python_plugin protobuf-compiler-grpc  python/package.cmake: the gRPC stubs of the package
 file    /usr/lib/llvm-14/lib/clang/*/lib/linux/libclang_rt.fuzzer-*.a  libclang-rt-14-dev  stage 2: the libFuzzer runtime
+file    /usr/lib/postgresql/*/bin/initdb  postgresql   rs4sim_postgres fixture: the throw-away server of the PostgreSQL archive tests
+command psql               postgresql-client       cli_archive_postgres: reads the rows the commands reported
 '
 
 rows() {  # the table without blank lines

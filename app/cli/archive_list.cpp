@@ -68,7 +68,7 @@ int run_list(const ArchiveOptions& o) {
   auto a = open_archive(o.common, OpenMode::kReadOnly);
   const auto stations = unwrap(a->stations());
   JsonWriter w(2);
-  w.begin_object().field("archive", archive_path(o.common)).key("stations").begin_array();
+  w.begin_object().field("archive", archive_shown(o.common)).key("stations").begin_array();
   Table t({{"BUS"},
            {"ADDR", true},
            {"DEVICE"},
@@ -105,7 +105,7 @@ int run_list(const ArchiveOptions& o) {
   if (o.common.json) {
     std::cout << w.str() << "\n";
   } else if (stations.empty()) {
-    std::cout << "no stations in " << archive_path(o.common) << "\n";
+    std::cout << "no stations in " << archive_shown(o.common) << "\n";
   } else {
     std::cout << t.render();
   }
@@ -120,7 +120,7 @@ int run_history(const ArchiveOptions& o) {
   const auto log = unwrap(a->sync_log(station, o.sync_entries));
   if (o.common.json) {
     JsonWriter w(2);
-    w.begin_object().field("archive", archive_path(o.common)).key("station").begin_object();
+    w.begin_object().field("archive", archive_shown(o.common)).key("station").begin_object();
     write_station_key(w, station);
     w.end_object().key("current");
     if (current) {

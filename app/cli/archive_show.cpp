@@ -91,7 +91,7 @@ int run_show(const ArchiveOptions& o) {
   }
   if (o.common.json) {
     JsonWriter w(2);
-    w.begin_object().field("archive", archive_path(o.common)).key("version");
+    w.begin_object().field("archive", archive_shown(o.common)).key("version");
     write_version(w, v.version);
     w.field("current", is_current).key("set").begin_object();
     w.field("id", v.set.id).field("size", v.set.blob.size()).field("crc32", crc_hex(v.set.crc32));
@@ -133,7 +133,7 @@ int run_diff(const ArchiveOptions& o) {
   }
   if (o.common.json) {
     JsonWriter w(2);
-    w.begin_object().field("archive", archive_path(o.common)).key("old");
+    w.begin_object().field("archive", archive_shown(o.common)).key("old");
     write_version(w, old_v.version);
     w.key("new");
     write_version(w, new_v.version);

@@ -3,6 +3,8 @@
 #include "app/runtime/archive_path.h"
 
 #include "rs4/scanner/parameter_codec.h"
+#include "storage/open_archive.h"
+#include "storage/sqlite_archive.h"  // default_archive_path
 
 #include <unistd.h>
 
@@ -15,8 +17,9 @@ namespace rs4sim::app::archive {
 
 void add_archive_option(CLI::App& cmd, CommonOptions& o) {
   cmd.add_option("--archive", o.archive,
-                 "archive file (default: $XDG_DATA_HOME/rs4sim/archive.sqlite3, else "
-                 "~/.local/share/rs4sim/archive.sqlite3)");
+                 "archive: a SQLite file (default: $XDG_DATA_HOME/rs4sim/archive.sqlite3, else "
+                 "~/.local/share/rs4sim/archive.sqlite3) or a PostgreSQL URI "
+                 "(postgresql://user@host/db)");
 }
 
 void add_json_option(CLI::App& cmd, CommonOptions& o) {
@@ -33,6 +36,10 @@ std::string archive_path(const CommonOptions& o) {
                            : checked_archive_path(o.archive);
 }
 
+std::string archive_shown(const CommonOptions& o) {
+  return storage::display_location(archive_path(o));
+}
+
 storage::StationKey station_of(const CommonOptions& o, const char* command) {
   if (!o.address) throw UsageError(std::string(command) + ": needs --address N (the station)");
   if (*o.address < 0 || *o.address > 126) {
@@ -43,16 +50,19 @@ storage::StationKey station_of(const CommonOptions& o, const char* command) {
   return {o.bus, static_cast<std::uint8_t>(*o.address)};
 }
 
-std::unique_ptr<storage::SqliteArchive> open_archive(const CommonOptions& o, OpenMode mode) {
-  const std::string path = archive_path(o);
-  if (mode != OpenMode::kCreateOrWrite && path != ":memory:" && !std::filesystem::exists(path)) {
-    throw ArchiveCommandError("no archive at " + path + " (--archive FILE)");
+std::unique_ptr<storage::ParameterArchive> open_archive(const CommonOptions& o, OpenMode mode) {
+  const std::string location = archive_path(o);
+  const bool server = storage::is_server_location(location);
+  if (!server && mode != OpenMode::kCreateOrWrite && location != ":memory:" &&
+      !std::filesystem::exists(location)) {
+    throw ArchiveCommandError("no archive at " + location + " (--archive FILE or URI)");
   }
-  storage::SqliteOptions options;
+  storage::OpenOptions options;
   options.read_only = mode == OpenMode::kReadOnly;
-  auto opened = storage::SqliteArchive::open(path, options);
+  auto opened = storage::open_archive(location, options);
   if (opened.has_error()) {
-    throw ArchiveCommandError("archive " + path + ": " + opened.error().message);
+    // The message names the location already, a server without its password.
+    throw ArchiveCommandError("archive: " + opened.error().message);
   }
   return std::move(opened).value();
 }

@@ -7,7 +7,7 @@
 #include "app/cli/command.h"
 #include "rs4/report/json_writer.h"
 #include "rs4/scanner/parameter_set.h"
-#include "storage/sqlite_archive.h"
+#include "storage/parameter_archive.h"
 
 #include <memory>
 #include <optional>
@@ -19,7 +19,7 @@ namespace rs4sim::app::archive {
 // Options every sub-command has. The station is --bus NAME (default "default") and
 // --address N; versions are addressed by their archive-wide id (the ID column).
 struct CommonOptions {
-  std::string archive;  // --archive FILE; empty: storage::default_archive_path()
+  std::string archive;  // --archive FILE|URI; empty: storage::default_archive_path()
   bool json = false;
   std::string bus = "default";
   std::optional<int> address;
@@ -29,16 +29,17 @@ void add_archive_option(CLI::App& cmd, CommonOptions& o);
 void add_json_option(CLI::App& cmd, CommonOptions& o);
 void add_station_options(CLI::App& cmd, CommonOptions& o);
 
-std::string archive_path(const CommonOptions& o);
+std::string archive_path(const CommonOptions& o);   // what is opened: a file or a URI
+std::string archive_shown(const CommonOptions& o);  // what is printed: a URI without password
 // The station from --bus/--address; UsageError when --address is missing or not 0..126.
 storage::StationKey station_of(const CommonOptions& o, const char* command);
 
 enum class OpenMode : std::uint8_t {
-  kReadOnly,       // the file must exist; nothing is written
+  kReadOnly,       // the file (or the server's archive) must exist; nothing is written
   kWrite,          // the file must exist
   kCreateOrWrite,  // created when missing (import)
 };
-std::unique_ptr<storage::SqliteArchive> open_archive(const CommonOptions& o, OpenMode mode);
+std::unique_ptr<storage::ParameterArchive> open_archive(const CommonOptions& o, OpenMode mode);
 
 // A storage failure as an exception main() prints ("rs4sim: error: ...", exit 1).
 struct ArchiveCommandError : std::runtime_error {

@@ -53,7 +53,7 @@ int run_export(const ArchiveOptions& o) {
   const char* format = json ? "json" : "binary";
   if (o.common.json) {
     JsonWriter w(2);
-    w.begin_object().field("archive", archive_path(o.common)).field("file", o.file);
+    w.begin_object().field("archive", archive_shown(o.common)).field("file", o.file);
     w.field("format", format).field("stations", snapshot.stations.size());
     w.field("versions", version_count(snapshot)).field("sets", snapshot.sets.size());
     std::cout << w.end_object().str() << "\n";
@@ -84,7 +84,7 @@ int run_import(const ArchiveOptions& o) {
   const auto& s = imported.value();
   if (o.common.json) {
     JsonWriter w(2);
-    w.begin_object().field("archive", archive_path(o.common)).field("file", o.file);
+    w.begin_object().field("archive", archive_shown(o.common)).field("file", o.file);
     w.field("stations", s.stations).field("versions", s.versions).field("new_sets", s.new_sets);
     w.field("sync_log_entries", s.sync_log_entries);
     std::cout << w.end_object().str() << "\n";
@@ -102,7 +102,7 @@ int run_restore(const ArchiveOptions& o) {
   const auto v = unwrap(a->restore(o.ids[0], now(), o.note));
   if (o.common.json) {
     JsonWriter w(2);
-    w.begin_object().field("archive", archive_path(o.common)).key("version");
+    w.begin_object().field("archive", archive_shown(o.common)).key("version");
     write_version(w, v);
     std::cout << w.end_object().str() << "\n";
   } else {
@@ -119,14 +119,14 @@ int run_verify(const ArchiveOptions& o) {
   const auto stations = unwrap(a->stations()).size();
   if (o.common.json) {
     JsonWriter w(2);
-    w.begin_object().field("archive", archive_path(o.common)).field("ok", report.ok());
+    w.begin_object().field("archive", archive_shown(o.common)).field("ok", report.ok());
     w.field("stations", stations).key("problems").begin_array();
     for (const auto& p : report.problems) w.value(p);
     std::cout << w.end_array().end_object().str() << "\n";
   } else if (report.ok()) {
-    std::cout << "archive " << archive_path(o.common) << ": ok (" << stations << " stations)\n";
+    std::cout << "archive " << archive_shown(o.common) << ": ok (" << stations << " stations)\n";
   } else {
-    std::cerr << "archive " << archive_path(o.common) << ": " << report.problems.size()
+    std::cerr << "archive " << archive_shown(o.common) << ": " << report.problems.size()
               << " problem(s)\n";
     for (const auto& p : report.problems) std::cerr << "  " << p << "\n";
   }

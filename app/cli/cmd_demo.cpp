@@ -25,7 +25,8 @@ const CommandRegistration kDemo(
       auto options = std::make_shared<DemoOptions>();
       add_capture_options(cmd, options->capture);
       cmd.add_option("--archive", options->archive,
-                     "rs4: keep the sets the demo's proxy archives in this SQLite file");
+                     "rs4: keep the sets the demo's proxy archives in this SQLite file or PostgreSQL "
+                     "URI (postgresql://user@host/db)");
       cmd.add_flag("--realtime", options->realtime,
                    "run at the device's real timing (the RS4 demo takes about a minute)");
       add_grpc_options(cmd, options->grpc,

@@ -14,7 +14,8 @@
 #include "app/runtime/master_service.h"
 #include "dp/master/master_config.h"
 #include "rs4/adapter/cyclic_bytes.h"
-#include "storage/sqlite_archive.h"
+#include "storage/open_archive.h"
+#include "storage/sqlite_archive.h"  // default_archive_path
 
 #include <charconv>
 #include <iostream>
@@ -132,16 +133,16 @@ int run(MasterCliOptions& o) {
   if (!o.link.grpc.empty() && o.no_proxy) {
     throw UsageError("--grpc serves the proxy and its archive, which --no-proxy turns off");
   }
-  std::unique_ptr<storage::SqliteArchive> archive;
+  std::unique_ptr<storage::ParameterArchive> archive;
   std::unique_ptr<ProxyPlugin> proxy;
   std::vector<MasterPlugin*> plugins;
   if (!o.no_proxy) {
     const std::string path =
         o.archive.empty() ? storage::default_archive_path().string()
                           : checked_archive_path(o.archive);
-    auto opened = storage::SqliteArchive::open(path);
+    auto opened = storage::open_archive(path);
     if (!opened) {
-      std::cerr << "rs4sim: archive " << path << ": " << opened.error().message << std::endl;
+      std::cerr << "rs4sim: archive: " << opened.error().message << std::endl;
       return 1;
     }
     archive = std::move(opened).value();

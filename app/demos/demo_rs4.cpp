@@ -12,7 +12,7 @@
 #include "rs4/device/rs4_segment.h"
 #include "rs4/protocol/telegram.h"
 #include "rs4/scanner/faults.h"
-#include "storage/sqlite_archive.h"
+#include "storage/open_archive.h"
 
 #include <cstdio>
 #include <functional>
@@ -388,9 +388,9 @@ int run_rs4_demo(RunSession& session, std::ostream& out, const DemoOptions& opti
   const auto capture = open_capture(options.capture);
   attach_capture(capture.get(), s.bus());
   const std::string path = options.archive.empty() ? ":memory:" : options.archive;
-  auto archive = storage::SqliteArchive::open(path);
+  auto archive = storage::open_archive(path);
   if (!archive) {
-    out << "rs4sim: archive " << path << ": " << archive.error().message << std::endl;
+    out << "rs4sim: archive: " << archive.error().message << std::endl;
     return 1;
   }
   storage::ParameterArchive& store = *archive.value();
@@ -426,7 +426,8 @@ int run_rs4_demo(RunSession& session, std::ostream& out, const DemoOptions& opti
     out << "capture: " << capture->records() << " telegrams in " << options.capture.file << "\n";
   }
   if (!options.archive.empty())
-    out << "archive: the demo's sets are in " << options.archive << "\n";
+    out << "archive: the demo's sets are in " << storage::display_location(options.archive)
+        << "\n";
   session.finish();
   out.flush();
   if (interrupted) return kInterruptedExit;

@@ -1,9 +1,11 @@
 #pragma once
-// `--archive` of every command: a SQLite file path. A URL (postgresql://…, file://…) is
-// refused with the reason instead of becoming a directory tree of that name with a SQLite
-// file inside it; the PostgreSQL archive will give postgresql:// its meaning.
+// `--archive` of every command: a SQLite file path, or a PostgreSQL server as libpq's URI
+// (postgresql://user@host:port/db?sslmode=..., postgres://...; the PG* environment variables
+// fill in what it leaves out). Any other URL (file://, sqlite://, mysql://) is refused with
+// the reason instead of becoming a directory tree of that name with a SQLite file inside it.
 
 #include "app/runtime/usage_error.h"
+#include "storage/open_archive.h"
 
 #include <cctype>
 #include <string>
@@ -22,14 +24,14 @@ inline bool looks_like_url(const std::string& text) {
   return true;
 }
 
-// `path` as given; throws UsageError for a URL.
-inline const std::string& checked_archive_path(const std::string& path) {
-  if (looks_like_url(path)) {
-    throw UsageError("--archive " + path +
-                     ": not a file path; the archive is a SQLite file (e.g. --archive "
-                     "bench.sqlite3), a database server is not supported yet");
+// `location` as given; throws UsageError for a URL that names no PostgreSQL server.
+inline const std::string& checked_archive_path(const std::string& location) {
+  if (looks_like_url(location) && !storage::is_server_location(location)) {
+    throw UsageError("--archive " + location +
+                     ": not an archive location; give a SQLite file path (e.g. --archive "
+                     "bench.sqlite3) or a PostgreSQL URI (postgresql://user@host/db)");
   }
-  return path;
+  return location;
 }
 
 }  // namespace rs4sim::app

@@ -1,8 +1,8 @@
 // Helper process for the crash-safety test (archive_crash_test.cpp): stores distinct sets
 // into the archive given on the command line, forever, and after each committed store
 // writes "<version id> <crc32>\n" to stdout with one write(2). The test kills it.
-//   archive_writer FILE SEED
-#include "storage/sqlite_archive.h"
+//   archive_writer LOCATION SEED     (a SQLite file or a PostgreSQL URI)
+#include "storage/open_archive.h"
 #include "tests/storage/archive_test_support.h"
 
 #include <unistd.h>
@@ -14,11 +14,11 @@
 int main(int argc, char** argv) {
   using namespace rs4sim::storage;
   if (argc != 3) {
-    std::fprintf(stderr, "usage: archive_writer FILE SEED\n");
+    std::fprintf(stderr, "usage: archive_writer LOCATION SEED\n");
     return 2;
   }
   const auto seed = std::strtoull(argv[2], nullptr, 10);
-  auto archive = SqliteArchive::open(argv[1]);
+  auto archive = open_archive(argv[1]);
   if (!archive) {
     std::fprintf(stderr, "%s\n", archive.error().message.c_str());
     return 1;

@@ -1,0 +1,60 @@
+#!/bin/sh
+# rs4sim's commands on a PostgreSQL archive, as a maintenance engineer uses them: the demo's
+# proxy archives into a database of the fixture's server, `archive list/history/verify/export`
+# read it (the dates are today's, the password is never printed), the export imports into a
+# SQLite file with the same history, and psql shows the rows the commands reported.
+#   archive_postgres_cli.sh RS4SIM URI_FILE
+# Exit 77 (skipped) without a server, unless RS4SIM_REQUIRE_POSTGRES=1.
+set -eu
+rs4sim=$1
+uri_file=$2
+if [ ! -s "$uri_file" ]; then
+  echo "no PostgreSQL server (tests/storage/postgres_server.sh)"
+  [ "${RS4SIM_REQUIRE_POSTGRES:-0}" = 1 ] && exit 1
+  exit 77
+fi
+server=$(cat "$uri_file")                 # postgresql://rs4sim:PASSWORD@127.0.0.1:PORT/postgres
+password=${server#postgresql://rs4sim:}
+password=${password%%@*}
+db=rs4sim_cli_$$
+archive=${server%/postgres}/$db
+tmp=$(mktemp -d)
+cleanup() {
+  psql "$server" -qc "DROP DATABASE IF EXISTS $db WITH (FORCE)" >/dev/null 2>&1 || true
+  rm -rf "$tmp"
+}
+trap cleanup EXIT
+psql "$server" -qc "CREATE DATABASE $db"
+
+fail() { echo "FAIL: $*"; exit 1; }
+no_password() { if grep -q -- "$password" "$1"; then fail "$1 shows the password"; fi; }
+
+"$rs4sim" demo --archive "$archive" >"$tmp/demo.txt" 2>&1 || { cat "$tmp/demo.txt"; fail "demo"; }
+grep -q "demo complete" "$tmp/demo.txt" || fail "the demo did not complete"
+grep -q "the demo's sets are in postgresql://rs4sim@127.0.0.1:" "$tmp/demo.txt" || fail "demo's archive line"
+no_password "$tmp/demo.txt"
+
+"$rs4sim" archive list --archive "$archive" >"$tmp/list.txt" 2>&1
+cat "$tmp/list.txt"
+grep -q "^demo  *4 " "$tmp/list.txt" || fail "archive list has no station demo/4"
+"$rs4sim" archive history --archive "$archive" --bus demo --address 4 >"$tmp/history.txt"
+cat "$tmp/history.txt"
+today=$(date -u +%Y-%m-%d)
+grep -q "^ *1  *1  $today" "$tmp/history.txt" || fail "version 1 is not dated today ($today)"
+versions=$(grep -c "^ *[0-9][0-9]*  *[0-9][0-9]*  $today" "$tmp/history.txt")
+"$rs4sim" archive verify --archive "$archive" >"$tmp/verify.txt"
+grep -q ": ok (1 stations)" "$tmp/verify.txt" || fail "archive verify"
+for f in list history verify; do no_password "$tmp/$f.txt"; done
+
+# What the commands said is what the server holds.
+rows=$(psql "$archive" -tAc "SELECT count(*) FROM versions v JOIN stations s ON s.id = v.station_id WHERE s.bus = 'demo' AND s.address = 4")
+[ "$rows" = "$versions" ] || fail "psql counts $rows versions, archive history showed $versions"
+first=$(psql "$archive" -tAc "SELECT to_char(stored_at AT TIME ZONE 'UTC', 'YYYY-MM-DD') FROM versions WHERE number = 1")
+[ "$first" = "$today" ] || fail "psql dates version 1 $first"
+
+# Server -> file: the SQLite archive shows the same history.
+"$rs4sim" archive export --archive "$archive" "$tmp/demo.rs4a" >/dev/null
+"$rs4sim" archive import --archive "$tmp/copy.sqlite3" "$tmp/demo.rs4a" >/dev/null
+"$rs4sim" archive history --archive "$tmp/copy.sqlite3" --bus demo --address 4 >"$tmp/copy.txt"
+diff "$tmp/history.txt" "$tmp/copy.txt" || fail "the SQLite copy's history differs"
+echo "ok: $versions versions on the server, dated $today, the same in the SQLite copy"
