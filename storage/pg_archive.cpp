@@ -186,10 +186,7 @@ Result<VersionWithSet> PgArchive::version_with_set(VersionId version) {
   const auto what = "version " + std::to_string(version);
   BOOST_OUTCOME_TRY(r, c_->query(version_query("WHERE v.id = $1::int8", true), p, what));
   if (r.count() == 0) return archive_error(ArchiveError::kUnknownVersion, what);
-  VersionWithSet out{read_version(r, 0), {}};
-  out.set = ParameterSetRecord{out.version.set_id, out.version.crc32, r.bytes(0, 14),
-                               r.text(0, 13)};
-  return out;
+  return read_version_with_set(r, 0);
 }
 
 Result<VersionInfo> PgArchive::store(const StoreRequest& r) {
@@ -214,37 +211,40 @@ Result<VersionInfo> PgArchive::store(const StoreRequest& r) {
   });
 }
 
+// One statement, so one snapshot and one round trip; the station is looked up apart only to
+// tell an unknown station from one without a set.
 Result<VersionWithSet> PgArchive::current(const StationKey& key) {
   return with_context("current", [&]() -> Result<VersionWithSet> {
-    return read<VersionWithSet>([&]() -> Result<VersionWithSet> {
-      BOOST_OUTCOME_TRY(station, station_id(key, false));
-      Params p;
-      p.add(station);
-      BOOST_OUTCOME_TRY(
-          r, c_->query("SELECT version_id FROM current_versions WHERE station_id = $1::int8", p,
-                       label(key)));
-      if (r.count() == 0) {
-        return archive_error(ArchiveError::kNotFound, label(key) + " has no current set");
-      }
-      return version_with_set(r.int64(0, 0));
-    });
+    BOOST_OUTCOME_TRY(c_->reconnect_if_lost());
+    Params p;
+    p.add(key.bus).add(std::int64_t{key.address});
+    BOOST_OUTCOME_TRY(
+        r, c_->query(version_query("JOIN current_versions c ON c.version_id = v.id "
+                                   "WHERE s.bus = $1::text AND s.address = $2::int2",
+                                   true),
+                     p, label(key)));
+    if (r.count() == 1) return read_version_with_set(r, 0);
+    BOOST_OUTCOME_TRY(station_id(key, false));
+    return archive_error(ArchiveError::kNotFound, label(key) + " has no current set");
   });
 }
 
 Result<std::vector<VersionInfo>> PgArchive::history(const StationKey& key) {
   return with_context("history", [&]() -> Result<std::vector<VersionInfo>> {
-    return read<std::vector<VersionInfo>>([&]() -> Result<std::vector<VersionInfo>> {
-      BOOST_OUTCOME_TRY(station, station_id(key, false));
-      Params p;
-      p.add(station);
-      BOOST_OUTCOME_TRY(
-          r, c_->query(version_query("WHERE v.station_id = $1::int8 ORDER BY v.number"), p,
-                       label(key)));
-      std::vector<VersionInfo> out;
-      out.reserve(static_cast<std::size_t>(r.count()));
-      for (int i = 0; i < r.count(); ++i) out.push_back(read_version(r, i));
-      return out;
-    });
+    BOOST_OUTCOME_TRY(c_->reconnect_if_lost());
+    Params p;
+    p.add(key.bus).add(std::int64_t{key.address});
+    BOOST_OUTCOME_TRY(
+        r, c_->query(version_query("WHERE s.bus = $1::text AND s.address = $2::int2 "
+                                   "ORDER BY v.number"),
+                     p, label(key)));
+    if (r.count() == 0) {
+      BOOST_OUTCOME_TRY(station_id(key, false));  // unknown, or a station without sets
+    }
+    std::vector<VersionInfo> out;
+    out.reserve(static_cast<std::size_t>(r.count()));
+    for (int i = 0; i < r.count(); ++i) out.push_back(read_version(r, i));
+    return out;
   });
 }
 

@@ -2,9 +2,10 @@
 // ParameterArchive on a PostgreSQL server through libpq (docs/storage.md "PostgreSQL"): the
 // same schema meaning, migrations and error model as SqliteArchive, for a plant where several
 // masters and workstations share one archive. Every change is one transaction; a change that
-// loses a serialization race or a deadlock is retried; reads of several statements run in one
-// REPEATABLE READ READ ONLY transaction. One object per connection; not thread-safe (one owner,
-// as the event loop). A connection the server dropped is replaced before the next call.
+// loses a serialization race or a deadlock is retried; reads are one statement where they can
+// (current, history, get), else one REPEATABLE READ READ ONLY transaction. One object per
+// connection; not thread-safe (one owner, as the event loop). A connection the server dropped
+// is replaced before the next call.
 
 #include "storage/parameter_archive.h"
 #include "storage/pg_db.h"

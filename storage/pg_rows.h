@@ -47,6 +47,14 @@ inline VersionInfo read_version(const pg::Rows& r, int i) {
   return v;
 }
 
+// A row of version_query(..., true).
+inline VersionWithSet read_version_with_set(const pg::Rows& r, int i) {
+  VersionWithSet out{read_version(r, i), {}};
+  out.set = ParameterSetRecord{out.version.set_id, out.version.crc32, r.bytes(i, 14),
+                               r.text(i, 13)};
+  return out;
+}
+
 template <class T, class F>
 Result<T> PgArchive::write(F&& body) {
   for (int attempt = 1;; ++attempt) {
