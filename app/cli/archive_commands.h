@@ -19,6 +19,8 @@ struct ArchiveOptions {
   std::string format;                   // export/import: "binary", "json" or "" (by extension)
   std::string note;                     // restore: --note
   std::size_t sync_entries = 20;        // history: --sync-log N
+  std::string from;                     // copy: --from ARCHIVE
+  std::string to;                       // copy: --to ARCHIVE
 };
 
 int run_list(const ArchiveOptions& o);
@@ -29,6 +31,7 @@ int run_export(const ArchiveOptions& o);
 int run_import(const ArchiveOptions& o);
 int run_restore(const ArchiveOptions& o);
 int run_verify(const ArchiveOptions& o);
+int run_copy(const ArchiveOptions& o);
 
 // The station's current version id, if it has one.
 std::optional<storage::VersionId> current_of(storage::ParameterArchive& archive,

@@ -1,4 +1,4 @@
-// `rs4sim archive list|show|history|diff|export|import|restore|verify`: the parameter
+// `rs4sim archive list|show|history|diff|export|import|copy|restore|verify`: the parameter
 // archive (docs/storage.md) for people and scripts (docs/archive-cli.md).
 #include "app/cli/archive_commands.h"
 #include "app/cli/command.h"
@@ -43,6 +43,11 @@ void file_options(CLI::App& sub, ArchiveOptions& o) {
   sub.add_option("--format", o.format, "binary or json (default: by the file's extension)");
 }
 
+void copy_options(CLI::App& sub, ArchiveOptions& o) {
+  sub.add_option("--from", o.from, "the archive copied from (a SQLite file or PostgreSQL URI)");
+  sub.add_option("--to", o.to, "the archive copied into (created when it is a missing file)");
+}
+
 void restore_options(CLI::App& sub, ArchiveOptions& o) {
   sub.add_option("ID", o.ids, "the version id to restore (the ID column)");
   sub.add_option("--note", o.note, "note stored with the new version");
@@ -55,6 +60,8 @@ constexpr SubCommand<ArchiveOptions> kSubCommands[] = {
     {"diff", "Field-level difference of two versions", diff_options, archive::run_diff},
     {"export", "Write the whole archive to a file", file_options, archive::run_export},
     {"import", "Add the contents of an export file", file_options, archive::run_import},
+    {"copy", "Add one archive's whole history to another, verified (SQLite <-> PostgreSQL)",
+     copy_options, archive::run_copy},
     {"restore", "Make an old version current again (pending download)", restore_options,
      archive::run_restore},
     {"verify", "Integrity check of the archive (exit 1 on problems)", no_options,
@@ -62,7 +69,8 @@ constexpr SubCommand<ArchiveOptions> kSubCommands[] = {
 };
 
 const CommandRegistration kRegistration{
-    "archive", "The parameter archive: list, show, history, diff, export, import, restore, verify",
+    "archive", "The parameter archive: list, show, history, diff, export, import, copy, restore, "
+    "verify",
     [](CLI::App& cmd) -> Action { return sub_commands(cmd, kSubCommands, common_options); }};
 
 }  // namespace

@@ -4,8 +4,8 @@
 //
 // The PostgreSQL half needs a server: RS4SIM_BENCH_POSTGRES_URI=postgresql://… (each benchmark
 // works in a schema of its own, dropped afterwards); without it those benchmarks are skipped.
-//   tests/storage/postgres_server.sh start /tmp/pg
-//   RS4SIM_BENCH_POSTGRES_URI=$(cat /tmp/pg/uri) build/bench/storage/bench_storage_engines
+//   tests/storage/postgres_server.sh start pg-dir
+//   RS4SIM_BENCH_POSTGRES_URI=$(cat pg-dir/uri) build/bench/storage/bench_storage_engines
 #include "storage/crc32.h"
 #include "storage/open_archive.h"
 #include "tests/storage/archive_test_support.h"

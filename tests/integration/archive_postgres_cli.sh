@@ -18,13 +18,17 @@ password=${server#postgresql://rs4sim:}
 password=${password%%@*}
 db=rs4sim_cli_$$
 archive=${server%/postgres}/$db
+db2=rs4sim_cli_copy_$$
+archive2=${server%/postgres}/$db2
 tmp=$(mktemp -d)
 cleanup() {
   psql "$server" -qc "DROP DATABASE IF EXISTS $db WITH (FORCE)" >/dev/null 2>&1 || true
+  psql "$server" -qc "DROP DATABASE IF EXISTS $db2 WITH (FORCE)" >/dev/null 2>&1 || true
   rm -rf "$tmp"
 }
 trap cleanup EXIT
 psql "$server" -qc "CREATE DATABASE $db"
+psql "$server" -qc "CREATE DATABASE $db2"
 
 fail() { echo "FAIL: $*"; exit 1; }
 no_password() { if grep -q -- "$password" "$1"; then fail "$1 shows the password"; fi; }
@@ -57,4 +61,24 @@ first=$(psql "$archive" -tAc "SELECT to_char(stored_at AT TIME ZONE 'UTC', 'YYYY
 "$rs4sim" archive import --archive "$tmp/copy.sqlite3" "$tmp/demo.rs4a" >/dev/null
 "$rs4sim" archive history --archive "$tmp/copy.sqlite3" --bus demo --address 4 >"$tmp/copy.txt"
 diff "$tmp/history.txt" "$tmp/copy.txt" || fail "the SQLite copy's history differs"
-echo "ok: $versions versions on the server, dated $today, the same in the SQLite copy"
+# archive copy: server -> file -> another server, each verified by the command, each with the
+# same history; a second copy into the same archive appends (the history doubles).
+"$rs4sim" archive copy --from "$archive" --to "$tmp/copied.sqlite3" >"$tmp/copy1.txt"
+cat "$tmp/copy1.txt"
+grep -q "; verified" "$tmp/copy1.txt" || fail "copy to SQLite"
+"$rs4sim" archive history --archive "$tmp/copied.sqlite3" --bus demo --address 4 >"$tmp/h1.txt"
+diff "$tmp/history.txt" "$tmp/h1.txt" || fail "the copied SQLite history differs"
+"$rs4sim" archive copy --from "$tmp/copied.sqlite3" --to "$archive2" >"$tmp/copy2.txt"
+grep -q "to postgresql://rs4sim@127.0.0.1:.*/$db2; verified" "$tmp/copy2.txt" || fail "copy to PostgreSQL"
+no_password "$tmp/copy2.txt"
+"$rs4sim" archive history --archive "$archive2" --bus demo --address 4 >"$tmp/h2.txt"
+diff "$tmp/history.txt" "$tmp/h2.txt" || fail "the copied PostgreSQL history differs"
+"$rs4sim" archive copy --from "$tmp/copied.sqlite3" --to "$archive2" --json >"$tmp/copy3.txt"
+grep -q '"verified": true' "$tmp/copy3.txt" || fail "second copy"
+twice=$(psql "$archive2" -tAc "SELECT count(*) FROM versions")
+[ "$twice" = $((2 * versions)) ] || fail "after two copies psql counts $twice versions"
+set +e
+"$rs4sim" archive copy --from "$archive" >"$tmp/usage.txt" 2>&1; rc=$?
+set -e
+[ $rc -eq 2 ] && grep -q "needs --from ARCHIVE and --to ARCHIVE" "$tmp/usage.txt" || fail "copy without --to: rc $rc"
+echo "ok: $versions versions on the server, dated $today, the same in every copy"

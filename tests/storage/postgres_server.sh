@@ -35,7 +35,7 @@ case "$cmd" in
       [ "${RS4SIM_REQUIRE_POSTGRES:-0}" = 1 ] && exit 1
       exit 77
     fi
-    data=$(mktemp -d /tmp/rs4sim-pg-XXXXXX)
+    data=$(mktemp -d -t rs4sim-pg-XXXXXX)
     echo "$data" >"$dir/data_dir"
     password=$(od -An -N12 -tx1 /dev/urandom | tr -d ' \n')
     printf '%s\n' "$password" >"$data/pwfile"
