@@ -25,6 +25,7 @@ struct SchedulerConfig {
   // Keep each slave's retentive record in the archive (save_proxy_state): loaded by add(),
   // saved by persist() whenever it changed (docs/proxy.md "Retentive record").
   bool persist = true;
+  Recording recording{};  // ProxySyncConfig::recording for every slave
 };
 
 struct StationStatus {

@@ -25,8 +25,19 @@ namespace rs4sim::proxy {
 
 inline constexpr std::uint8_t kProxyRequestBit = 0x04;  // input byte bit 2 ([RS4 manual §5.1.1])
 
+// What the proxy records with every version it stores (docs/storage.md "What maintenance
+// records"): who runs it and where, the station's site and line, and whether an upload of the
+// set already current is stored again. The comment of each version names the scenario.
+struct Recording {
+  storage::Author author;
+  std::string site;
+  std::string line;
+  bool skip_identical = false;
+};
+
 struct ProxySyncConfig {
   storage::StationKey station;
+  Recording recording{};
   ExchangeTiming timing;
   // DECISION (docs/proxy.md "Failures"): after a failed sync the next one starts no earlier
   // than this, so a persistent fault does not loop hot.
@@ -116,6 +127,8 @@ class ProxySync {
   void upload_complete(dp::TimePoint now);
   bool store_set(storage::VersionSource source, std::string summary, std::string note,
                  dp::TimePoint now);
+  // The comment of the version an upload stores: the scenario that made it.
+  [[nodiscard]] std::string upload_note() const;
   void start_download(dp::TimePoint now);
   void send_download_chunk(dp::TimePoint now);
   void on_download(std::span<const std::uint8_t> answer, dp::TimePoint now);

@@ -255,12 +255,18 @@ void ProxySync::upload_complete(dp::TimePoint now) {
     return;
   }
   step_ = Step::kStoreUpload;
-  if (!store_set(storage::VersionSource::kUpload, set_summary(set_), "uploaded by the proxy",
-                 now)) {
+  if (!store_set(storage::VersionSource::kUpload, set_summary(set_), upload_note(), now)) {
     fail(FailureKind::kCopy, now);
     return;
   }
   send_end(now);
+}
+
+std::string ProxySync::upload_note() const {
+  if (begin_.direction == protocol::SyncDirection::kUpload) {
+    return "scenario 2, parameter change: the device's set uploaded by the proxy";
+  }
+  return "the proxy learnt the device's set (no set stored for the station)";
 }
 
 // The synchronised set as a new current version of the station, with the device's serial.
@@ -276,6 +282,11 @@ bool ProxySync::store_set(storage::VersionSource source, std::string summary, st
   req.source = source;
   req.at = wall_time(config_, now);
   req.note = std::move(note);
+  req.user = config_.recording.author.user;
+  req.host = config_.recording.author.host;
+  req.site = config_.recording.site;
+  req.line = config_.recording.line;
+  req.skip_identical = config_.recording.skip_identical;
   return archive_.store(req).has_value();
 }
 
@@ -354,7 +365,8 @@ void ProxySync::store_serial(dp::TimePoint now) {
   const auto serial = std::to_string(ident_->serial_number);
   if (current_ && known_serial_ != serial &&
       !store_set(storage::VersionSource::kDownload, current_->set.summary,
-                 "downloaded to a new device", now)) {
+                 "scenario 4, device exchange: the stored set downloaded to serial " + serial,
+                 now)) {
     fail(FailureKind::kCopy, now);
     return;
   }

@@ -44,6 +44,8 @@ void put_station(const SnapshotStation& in, pb::Station& out) {
   out.set_bus(in.key.bus);
   out.set_address(in.key.address);
   out.set_device_type(in.device_type);
+  out.set_site(in.site);
+  out.set_line(in.line);
   for (const auto& s : in.serials) {
     auto& o = *out.add_serial_numbers();
     o.set_serial_number(s.serial_number);
@@ -60,6 +62,8 @@ void put_station(const SnapshotStation& in, pb::Station& out) {
     o.set_restored_from(v.restored_from);
     o.set_pending_download(v.pending_download);
     o.set_serial_number(v.serial_number);
+    o.set_user(v.user);
+    o.set_host(v.host);
   }
   out.set_current_version(in.current_version);
   for (const auto& e : in.sync_log) {
@@ -104,6 +108,8 @@ Result<SnapshotVersion> get_version(const pb::Version& v) {
   out.restored_from = v.restored_from();
   out.pending_download = v.pending_download();
   out.serial_number = v.serial_number();
+  out.user = v.user();
+  out.host = v.host();
   return out;
 }
 
@@ -134,6 +140,8 @@ Result<SnapshotStation> get_station(const pb::Station& st) {
   SnapshotStation out;
   out.key = StationKey{st.bus(), static_cast<std::uint8_t>(st.address())};
   out.device_type = st.device_type();
+  out.site = st.site();
+  out.line = st.line();
   for (const auto& s : st.serial_numbers()) {
     BOOST_OUTCOME_TRY(first, get_time(s.first_seen(), "serial number"));
     BOOST_OUTCOME_TRY(last, get_time(s.last_seen(), "serial number"));

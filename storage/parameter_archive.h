@@ -36,8 +36,21 @@ class ParameterArchive {
   virtual Result<VersionWithSet> get(VersionId version) = 0;
   // New version (source kRestore) with the same set as `version`; becomes current and is
   // pending download until mark_downloaded().
-  virtual Result<VersionInfo> restore(VersionId version, Timestamp at, std::string note) = 0;
+  virtual Result<VersionInfo> restore(VersionId version, Timestamp at, std::string note,
+                                      const Author& by) = 0;
+  Result<VersionInfo> restore(VersionId version, Timestamp at, std::string note) {
+    return restore(version, at, std::move(note), Author{});
+  }
   virtual Result<void> mark_downloaded(VersionId version) = 0;
+  // Replaces the version's comment (`rs4sim archive note`); the set and its history stay.
+  virtual Result<VersionInfo> annotate(VersionId version, std::string note) = 0;
+  // The change feed: versions with an id above `after`, ascending by id, at most `limit`.
+  // Ids grow with every version stored; on SQLite they are committed in that order, so a
+  // reader that polls with the last id it saw misses none. PostgreSQL commits concurrent
+  // writers out of id order: its feed (change_feed.h) adds the notifications.
+  virtual Result<std::vector<VersionInfo>> versions_after(VersionId after, std::size_t limit) = 0;
+  // The highest version id stored (0: none): where a feed that wants only new versions starts.
+  virtual Result<VersionId> newest_version_id() = 0;
   virtual Result<std::vector<StationInfo>> stations() = 0;
 
   virtual Result<void> log_sync(const SyncLogEntry& entry) = 0;

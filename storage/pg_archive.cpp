@@ -64,16 +64,21 @@ std::string PgArchive::known_stations() {
 }
 
 Result<std::int64_t> PgArchive::upsert_station(const StationKey& key,
-                                               std::string_view device_type) {
+                                               std::string_view device_type,
+                                               std::string_view site, std::string_view line) {
   Params p;
-  p.add(key.bus).add(std::int64_t{key.address}).add(device_type);
+  p.add(key.bus).add(std::int64_t{key.address}).add(device_type).add(site).add(line);
   // DO UPDATE (not DO NOTHING) so that the row is locked for the rest of the transaction.
   BOOST_OUTCOME_TRY(
-      r, c_->query("INSERT INTO stations (bus, address, device_type) "
-                   "VALUES ($1::text, $2::int2, $3::text) "
-                   "ON CONFLICT (bus, address) DO UPDATE SET device_type = CASE "
-                   "WHEN excluded.device_type <> '' THEN excluded.device_type "
-                   "ELSE stations.device_type END RETURNING id",
+      r, c_->query("INSERT INTO stations (bus, address, device_type, site, line) "
+                   "VALUES ($1::text, $2::int2, $3::text, $4::text, $5::text) "
+                   "ON CONFLICT (bus, address) DO UPDATE SET "
+                   "device_type = CASE WHEN excluded.device_type <> '' "
+                   "THEN excluded.device_type ELSE stations.device_type END, "
+                   "site = CASE WHEN excluded.site <> '' THEN excluded.site "
+                   "ELSE stations.site END, "
+                   "line = CASE WHEN excluded.line <> '' THEN excluded.line "
+                   "ELSE stations.line END RETURNING id",
                    p, "write " + label(key)));
   return r.int64(0, 0);
 }
@@ -140,13 +145,20 @@ Result<VersionId> PgArchive::append_version(std::int64_t station, const NewVersi
     p.add_null();
   }
   p.add_bool(v.pending_download);
-  // Numbered under the station's row lock, which the caller holds.
+  p.add(v.user).add(v.host);
+  // Numbered under the station's row lock, which the caller holds. The change feed's
+  // notification (change_feed.h) is queued in the same transaction: PostgreSQL delivers it
+  // at the commit, never for a version rolled back.
   BOOST_OUTCOME_TRY(
-      r, c_->query("INSERT INTO versions (station_id, number, set_id, source, stored_at, note, "
-                   "serial_number, restored_from, pending_download) "
+      r, c_->query("WITH v AS (INSERT INTO versions (station_id, number, set_id, source, "
+                   "stored_at, note, serial_number, restored_from, pending_download, user_name, "
+                   "host_name) "
                    "SELECT $1::int8, coalesce(max(number), 0) + 1, $2::int8, $3::int2, "
-                   "to_timestamp($4::float8 / 1000), $5::text, $6::text, $7::int8, $8::bool "
-                   "FROM versions WHERE station_id = $1::int8 RETURNING id",
+                   "to_timestamp($4::float8 / 1000), $5::text, $6::text, $7::int8, $8::bool, "
+                   "$9::text, $10::text "
+                   "FROM versions WHERE station_id = $1::int8 RETURNING id) "
+                   "SELECT id, pg_notify('rs4sim_versions', current_schema() || ' ' || id) "
+                   "FROM v",
                    p, "insert version"));
   return r.int64(0, 0);
 }
@@ -193,10 +205,14 @@ Result<VersionInfo> PgArchive::store(const StoreRequest& r) {
   return with_context("store " + label(r.station), [&]() -> Result<VersionInfo> {
     BOOST_OUTCOME_TRY(check_request(r));
     return write<VersionInfo>([&]() -> Result<VersionInfo> {
-      BOOST_OUTCOME_TRY(station, upsert_station(r.station, r.device_type));
+      BOOST_OUTCOME_TRY(station, upsert_station(r.station, r.device_type, r.site, r.line));
       BOOST_OUTCOME_TRY(see_serial(station, r.serial_number, r.at, r.at));
       bool inserted = false;
       BOOST_OUTCOME_TRY(set, intern_set(r.blob, r.crc32, r.summary, inserted));
+      if (r.skip_identical && !inserted) {
+        BOOST_OUTCOME_TRY(same, current_with_set(station, set));
+        if (same) return version_info(*same);
+      }
       BOOST_OUTCOME_TRY(clear_pending(station));
       NewVersion v;
       v.set_id = set;
@@ -204,6 +220,8 @@ Result<VersionInfo> PgArchive::store(const StoreRequest& r) {
       v.at = r.at;
       v.note = r.note;
       v.serial_number = r.serial_number;
+      v.user = r.user;
+      v.host = r.host;
       BOOST_OUTCOME_TRY(id, append_version(station, v));
       BOOST_OUTCOME_TRY(make_current(station, id));
       return version_info(id);
@@ -255,8 +273,24 @@ Result<VersionWithSet> PgArchive::get(VersionId version) {
   });
 }
 
-Result<VersionInfo> PgArchive::restore(VersionId version, Timestamp at, std::string note) {
+// The station's current version when it holds `set`, else nothing.
+Result<std::optional<VersionId>> PgArchive::current_with_set(std::int64_t station, SetId set) {
+  Params p;
+  p.add(station).add(set);
+  BOOST_OUTCOME_TRY(r, c_->query("SELECT c.version_id FROM current_versions c "
+                                 "JOIN versions v ON v.id = c.version_id "
+                                 "WHERE c.station_id = $1::int8 AND v.set_id = $2::int8",
+                                 p, "read current version"));
+  if (r.count() == 1) return std::optional<VersionId>(r.int64(0, 0));
+  return std::optional<VersionId>();
+}
+
+Result<VersionInfo> PgArchive::restore(VersionId version, Timestamp at, std::string note,
+                                       const Author& by) {
   return with_context("restore", [&]() -> Result<VersionInfo> {
+    BOOST_OUTCOME_TRY(check_note(note));
+    BOOST_OUTCOME_TRY(check_text("user", by.user, kMaxNameSize));
+    BOOST_OUTCOME_TRY(check_text("host", by.host, kMaxNameSize));
     return write<VersionInfo>([&]() -> Result<VersionInfo> {
       BOOST_OUTCOME_TRY(old, version_info(version));
       BOOST_OUTCOME_TRY(station, station_id(old.station, true));
@@ -266,6 +300,8 @@ Result<VersionInfo> PgArchive::restore(VersionId version, Timestamp at, std::str
       v.source = VersionSource::kRestore;
       v.at = at;
       v.note = note;
+      v.user = by.user;
+      v.host = by.host;
       v.restored_from = version;
       v.pending_download = true;
       BOOST_OUTCOME_TRY(id, append_version(station, v));
@@ -289,9 +325,64 @@ Result<void> PgArchive::mark_downloaded(VersionId version) {
   });
 }
 
+Result<VersionInfo> PgArchive::annotate(VersionId version, std::string note) {
+  return with_context("note on version " + std::to_string(version), [&]() -> Result<VersionInfo> {
+    BOOST_OUTCOME_TRY(check_note(note));
+    return write<VersionInfo>([&]() -> Result<VersionInfo> {
+      Params p;
+      p.add(note).add(version);
+      const auto what = "version " + std::to_string(version);
+      BOOST_OUTCOME_TRY(
+          r, c_->query("UPDATE versions SET note = $1::text WHERE id = $2::int8", p, what));
+      if (r.affected() == 0) return archive_error(ArchiveError::kUnknownVersion, what);
+      return version_info(version);
+    });
+  });
+}
+
+Result<std::vector<VersionInfo>> PgArchive::versions_after(VersionId after, std::size_t limit) {
+  return with_context("versions after " + std::to_string(after),
+                      [&]() -> Result<std::vector<VersionInfo>> {
+    BOOST_OUTCOME_TRY(c_->reconnect_if_lost());
+    Params p;
+    p.add(after).add(static_cast<std::int64_t>(std::min<std::size_t>(limit, INT64_MAX)));
+    BOOST_OUTCOME_TRY(
+        r, c_->query(version_query("WHERE v.id > $1::int8 ORDER BY v.id LIMIT $2::int8"), p,
+                     "read versions"));
+    std::vector<VersionInfo> out;
+    out.reserve(static_cast<std::size_t>(r.count()));
+    for (int i = 0; i < r.count(); ++i) out.push_back(read_version(r, i));
+    return out;
+  });
+}
+
+Result<VersionId> PgArchive::newest_version_id() {
+  return with_context("newest version", [&]() -> Result<VersionId> {
+    BOOST_OUTCOME_TRY(c_->reconnect_if_lost());
+    BOOST_OUTCOME_TRY(r, c_->query("SELECT coalesce(max(id), 0)::int8 FROM versions", "read"));
+    return r.int64(0, 0);
+  });
+}
+
+// The given versions that exist, ascending by id (the change feed's notified ids).
+Result<std::vector<VersionInfo>> PgArchive::versions_by_id(std::span<const VersionId> ids) {
+  std::string list = "{";
+  for (const auto id : ids) list += (list.size() > 1 ? "," : "") + std::to_string(id);
+  list += "}";
+  Params p;
+  p.add(list);
+  BOOST_OUTCOME_TRY(r, c_->query(version_query("WHERE v.id = ANY($1::int8[]) ORDER BY v.id"), p,
+                                 "read versions"));
+  std::vector<VersionInfo> out;
+  out.reserve(static_cast<std::size_t>(r.count()));
+  for (int i = 0; i < r.count(); ++i) out.push_back(read_version(r, i));
+  return out;
+}
+
 Result<std::vector<std::pair<std::int64_t, StationInfo>>> PgArchive::list_stations() {
   BOOST_OUTCOME_TRY(
-      r, c_->query("SELECT s.id, s.bus, s.address, s.device_type, c.version_id FROM stations s "
+      r, c_->query("SELECT s.id, s.bus, s.address, s.device_type, c.version_id, s.site, s.line "
+                   "FROM stations s "
                    "LEFT JOIN current_versions c ON c.station_id = s.id "
                    "ORDER BY s.bus COLLATE \"C\", s.address",
                    "list"));
@@ -302,6 +393,8 @@ Result<std::vector<std::pair<std::int64_t, StationInfo>>> PgArchive::list_statio
     info.key = StationKey{r.text(i, 1), static_cast<std::uint8_t>(r.int64(i, 2))};
     info.device_type = r.text(i, 3);
     if (!r.is_null(i, 4)) info.current = r.int64(i, 4);
+    info.site = r.text(i, 5);
+    info.line = r.text(i, 6);
     index[r.int64(i, 0)] = out.size();
     out.emplace_back(r.int64(i, 0), std::move(info));
   }

@@ -13,11 +13,18 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <utility>
 
 namespace rs4sim::storage {
+
+// The channel of the change feed's notifications; the payload is "<schema> <version id>"
+// (one database can hold several archives, one per schema). pg_archive.cpp's version insert
+// spells the same name.
+inline constexpr std::string_view kVersionChannel = "rs4sim_versions";
 
 struct PgOptions {
   // Every transaction READ ONLY (the server refuses a write); the schema must be current.
@@ -37,8 +44,13 @@ class PgArchive final : public ParameterArchive {
   Result<VersionWithSet> current(const StationKey& station) override;
   Result<std::vector<VersionInfo>> history(const StationKey& station) override;
   Result<VersionWithSet> get(VersionId version) override;
-  Result<VersionInfo> restore(VersionId version, Timestamp at, std::string note) override;
+  using ParameterArchive::restore;
+  Result<VersionInfo> restore(VersionId version, Timestamp at, std::string note,
+                              const Author& by) override;
   Result<void> mark_downloaded(VersionId version) override;
+  Result<VersionInfo> annotate(VersionId version, std::string note) override;
+  Result<std::vector<VersionInfo>> versions_after(VersionId after, std::size_t limit) override;
+  Result<VersionId> newest_version_id() override;
   Result<std::vector<StationInfo>> stations() override;
   Result<void> log_sync(const SyncLogEntry& entry) override;
   Result<std::vector<SyncLogEntry>> sync_log(const StationKey& station, std::size_t limit) override;
@@ -48,6 +60,9 @@ class PgArchive final : public ParameterArchive {
   Result<IntegrityReport> check_integrity() override;
   Result<Snapshot> export_snapshot(Timestamp exported_at) override;
   Result<ImportSummary> import_snapshot(const Snapshot& snapshot) override;
+
+  // The given versions that exist, ascending by id (PgChangeFeed reads what it was notified of).
+  Result<std::vector<VersionInfo>> versions_by_id(std::span<const VersionId> ids);
 
   // The server and database, without the password ("postgresql://user@host:port/db").
   const std::string& display() const noexcept { return c_->display(); }
@@ -59,6 +74,8 @@ class PgArchive final : public ParameterArchive {
     Timestamp at{};
     std::string_view note;
     std::string_view serial_number;
+    std::string_view user;
+    std::string_view host;
     std::optional<VersionId> restored_from;
     bool pending_download{false};
   };
@@ -75,7 +92,10 @@ class PgArchive final : public ParameterArchive {
 
   Result<std::int64_t> station_id(const StationKey& key, bool lock);  // kUnknownStation
   std::string known_stations();
-  Result<std::int64_t> upsert_station(const StationKey& key, std::string_view device_type);
+  // Creates the station or locks its row; a non-empty device type, site or line replaces the
+  // stored one.
+  Result<std::int64_t> upsert_station(const StationKey& key, std::string_view device_type,
+                                      std::string_view site = {}, std::string_view line = {});
   Result<void> see_serial(std::int64_t station, std::string_view serial, Timestamp first,
                           Timestamp last);
   Result<SetId> intern_set(std::span<const std::uint8_t> blob, std::uint32_t crc,
@@ -83,6 +103,7 @@ class PgArchive final : public ParameterArchive {
   Result<VersionId> append_version(std::int64_t station, const NewVersion& v);
   Result<void> make_current(std::int64_t station, VersionId version);
   Result<void> clear_pending(std::int64_t station);
+  Result<std::optional<VersionId>> current_with_set(std::int64_t station, SetId set);
   Result<VersionInfo> version_info(VersionId version);  // kUnknownVersion
   Result<VersionWithSet> version_with_set(VersionId version);
   Result<std::vector<std::pair<std::int64_t, StationInfo>>> list_stations();

@@ -126,6 +126,8 @@ Result<SnapshotStation> PgArchive::export_station(std::int64_t id, StationInfo i
   SnapshotStation out;
   out.key = info.key;
   out.device_type = std::move(info.device_type);
+  out.site = std::move(info.site);
+  out.line = std::move(info.line);
   out.serials = std::move(info.serials);
   Params p;
   p.add(id);
@@ -136,7 +138,8 @@ Result<SnapshotStation> PgArchive::export_station(std::int64_t id, StationInfo i
     const auto v = read_version(r, i);
     numbers[v.id] = v.number;
     SnapshotVersion sv{v.number, v.set_id,           v.at,           v.source, v.note,
-                       0,        v.pending_download, v.serial_number};
+                       0,        v.pending_download, v.serial_number,
+                       v.user,   v.host};
     if (v.restored_from) sv.restored_from = numbers[*v.restored_from];
     if (info.current == v.id) out.current_version = v.number;
     out.versions.push_back(std::move(sv));
@@ -172,7 +175,7 @@ Result<Snapshot> PgArchive::export_snapshot(Timestamp exported_at) {
 Result<void> PgArchive::import_station(const SnapshotStation& in,
                                        const std::unordered_map<SetId, SetId>& set_ids,
                                        ImportSummary& summary) {
-  BOOST_OUTCOME_TRY(station, upsert_station(in.key, in.device_type));  // locks the station
+  BOOST_OUTCOME_TRY(station, upsert_station(in.key, in.device_type, in.site, in.line));  // locks the station
   for (const auto& serial : in.serials) {
     BOOST_OUTCOME_TRY(
         see_serial(station, serial.serial_number, serial.first_seen, serial.last_seen));
@@ -186,6 +189,8 @@ Result<void> PgArchive::import_station(const SnapshotStation& in,
     nv.at = v.at;
     nv.note = v.note;
     nv.serial_number = v.serial_number;
+    nv.user = v.user;
+    nv.host = v.host;
     nv.pending_download = v.pending_download;
     if (v.restored_from != 0) nv.restored_from = ids.at(v.restored_from);
     BOOST_OUTCOME_TRY(id, append_version(station, nv));

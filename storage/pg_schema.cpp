@@ -83,6 +83,14 @@ CREATE TABLE proxy_state (
   saved_at timestamptz NOT NULL,
   PRIMARY KEY (bus, address));
 )sql",
+    // 3 -> 4: who stored a version and from which computer, the station's site and line.
+    R"sql(
+ALTER TABLE versions ADD COLUMN user_name text NOT NULL DEFAULT '',
+                     ADD COLUMN host_name text NOT NULL DEFAULT '';
+ALTER TABLE stations ADD COLUMN site text NOT NULL DEFAULT '',
+                     ADD COLUMN line text NOT NULL DEFAULT '';
+CREATE INDEX stations_by_site ON stations (site, line);
+)sql",
 };
 
 struct SchemaState {

@@ -20,8 +20,66 @@ Result<void> check_address(const StationKey& station) {
   return boost::outcome_v2::success();
 }
 
+namespace {
+
+// Length of the UTF-8 sequence starting at s[i] (0 when it is not one: a stray continuation
+// byte, an overlong form, a surrogate, above U+10FFFF, or cut short).
+std::size_t utf8_sequence(std::string_view s, std::size_t i) {
+  const auto b = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+  const unsigned char c = b(i);
+  if (c < 0x80) return 1;
+  std::size_t n = 0;
+  unsigned char lo = 0x80, hi = 0xBF;  // the allowed range of the second byte
+  if (c >= 0xC2 && c <= 0xDF) {
+    n = 2;
+  } else if (c >= 0xE0 && c <= 0xEF) {
+    n = 3;
+    if (c == 0xE0) lo = 0xA0;
+    if (c == 0xED) hi = 0x9F;
+  } else if (c >= 0xF0 && c <= 0xF4) {
+    n = 4;
+    if (c == 0xF0) lo = 0x90;
+    if (c == 0xF4) hi = 0x8F;
+  } else {
+    return 0;
+  }
+  if (i + n > s.size()) return 0;
+  if (b(i + 1) < lo || b(i + 1) > hi) return 0;
+  for (std::size_t k = 2; k < n; ++k) {
+    if (b(i + k) < 0x80 || b(i + k) > 0xBF) return 0;
+  }
+  return n;
+}
+
+}  // namespace
+
+Result<void> check_text(std::string_view field, std::string_view value, std::size_t max) {
+  if (value.size() > max) {
+    return archive_error(ArchiveError::kInvalidArgument,
+                         std::string(field) + " of " + std::to_string(value.size()) +
+                             " bytes (at most " + std::to_string(max) + ")");
+  }
+  for (std::size_t i = 0; i < value.size();) {
+    const std::size_t n = value[i] == '\0' ? 0 : utf8_sequence(value, i);
+    if (n == 0) {
+      return archive_error(ArchiveError::kInvalidArgument,
+                           std::string(field) + ": byte " + std::to_string(i) +
+                               (value[i] == '\0' ? " is NUL" : " is not UTF-8"));
+    }
+    i += n;
+  }
+  return boost::outcome_v2::success();
+}
+
+Result<void> check_note(std::string_view note) { return check_text("note", note, kMaxNoteSize); }
+
 Result<void> check_request(const StoreRequest& r) {
   BOOST_OUTCOME_TRY(check_address(r.station));
+  BOOST_OUTCOME_TRY(check_note(r.note));
+  BOOST_OUTCOME_TRY(check_text("user", r.user, kMaxNameSize));
+  BOOST_OUTCOME_TRY(check_text("host", r.host, kMaxNameSize));
+  BOOST_OUTCOME_TRY(check_text("site", r.site, kMaxNameSize));
+  BOOST_OUTCOME_TRY(check_text("line", r.line, kMaxNameSize));
   if (r.blob.empty()) return archive_error(ArchiveError::kInvalidArgument, "empty blob");
   const auto actual = crc32(r.blob);
   if (actual != r.crc32) {

@@ -1,12 +1,14 @@
 #pragma once
-// What every backend refuses before it writes (internal to storage/): an address above 126,
-// an empty blob, a CRC-32 claim the blob does not bear out.
+// What every backend refuses before it writes: an address above 126, an empty blob, a CRC-32
+// claim the blob does not bear out, a recorded text it would not store alike. The CLI checks
+// its --user/--site/--line/--note with the same check_text() before it opens an archive.
 
 #include "storage/errors.h"
 #include "storage/types.h"
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 namespace rs4sim::storage {
 
@@ -15,5 +17,13 @@ inline constexpr std::uint8_t kMaxStationAddress = 126;
 std::string hex32(std::uint32_t v);  // "0x1A2B3C4D"
 Result<void> check_address(const StationKey& station);
 Result<void> check_request(const StoreRequest& request);
+
+// The recorded texts (docs/storage.md "What maintenance records"): UTF-8 without NUL (what
+// both engines store alike), a comment up to kMaxNoteSize bytes, a user, host, site or line
+// up to kMaxNameSize.
+inline constexpr std::size_t kMaxNoteSize = 4096;
+inline constexpr std::size_t kMaxNameSize = 256;
+Result<void> check_text(std::string_view field, std::string_view value, std::size_t max);
+Result<void> check_note(std::string_view note);
 
 }  // namespace rs4sim::storage

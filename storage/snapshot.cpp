@@ -1,6 +1,7 @@
 #include "storage/snapshot.h"
 
 #include "storage/crc32.h"
+#include "storage/request_check.h"
 
 #include <set>
 #include <unordered_set>
@@ -12,6 +13,15 @@ using boost::outcome_v2::success;
 
 ArchiveFailure corrupt(const std::string& what) {
   return archive_error(ArchiveError::kCorruptImport, what);
+}
+
+// A recorded text as check_text() accepts it (both engines store it alike), else a corrupt
+// import naming where it is.
+Result<void> text_ok(const std::string& where, std::string_view field, std::string_view value,
+                     std::size_t max) {
+  auto ok = check_text(field, value, max);
+  if (!ok) return corrupt(where + ": " + ok.error().message);
+  return success();
 }
 
 Result<void> validate_sets(const Snapshot& snap, std::unordered_set<SetId>& ids) {
@@ -38,6 +48,9 @@ Result<void> validate_versions(const SnapshotStation& st, const std::string& nam
     if (set_ids.count(v.set_id) == 0) return corrupt(vname + ": unknown parameter set");
     const auto source = static_cast<int>(v.source);
     if (source < 1 || source > 4) return corrupt(vname + ": unknown source");
+    BOOST_OUTCOME_TRY(text_ok(vname, "note", v.note, kMaxNoteSize));
+    BOOST_OUTCOME_TRY(text_ok(vname, "user", v.user, kMaxNameSize));
+    BOOST_OUTCOME_TRY(text_ok(vname, "host", v.host, kMaxNameSize));
     if (v.restored_from != 0 && numbers.count(v.restored_from) == 0) {
       return corrupt(vname + ": restored from a version that does not precede it");
     }
@@ -53,6 +66,8 @@ Result<void> validate_versions(const SnapshotStation& st, const std::string& nam
 Result<void> validate_station(const SnapshotStation& st, const std::unordered_set<SetId>& set_ids) {
   const auto name = "station " + st.key.bus + "/" + std::to_string(st.key.address);
   if (st.key.address > 126) return corrupt(name + ": address above 126");
+  BOOST_OUTCOME_TRY(text_ok(name, "site", st.site, kMaxNameSize));
+  BOOST_OUTCOME_TRY(text_ok(name, "line", st.line, kMaxNameSize));
   std::set<std::string> serials;
   for (const auto& s : st.serials) {
     if (s.serial_number.empty() || !serials.insert(s.serial_number).second) {

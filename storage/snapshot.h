@@ -22,12 +22,16 @@ struct SnapshotVersion {
   std::uint32_t restored_from{0};  // version number, 0 = none
   bool pending_download{false};
   std::string serial_number;
+  std::string user;
+  std::string host;
   bool operator==(const SnapshotVersion&) const = default;
 };
 
 struct SnapshotStation {
   StationKey key;
   std::string device_type;
+  std::string site;
+  std::string line;
   std::vector<SerialSeen> serials;
   std::vector<SnapshotVersion> versions;  // ascending by number
   std::uint32_t current_version{0};       // 0 = none

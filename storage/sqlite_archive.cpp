@@ -81,16 +81,22 @@ std::string SqliteArchive::known_stations() {
 }
 
 Result<std::int64_t> SqliteArchive::upsert_station(const StationKey& key,
-                                                   std::string_view device_type) {
+                                                   std::string_view device_type,
+                                                   std::string_view site, std::string_view line) {
   BOOST_OUTCOME_TRY(
       s, db_->statement(
-             "INSERT INTO stations (bus, address, device_type) VALUES (?, ?, ?) "
-             "ON CONFLICT (bus, address) DO UPDATE SET device_type = CASE "
-             "WHEN excluded.device_type <> '' THEN excluded.device_type ELSE device_type END "
+             "INSERT INTO stations (bus, address, device_type, site, line) VALUES (?, ?, ?, ?, ?) "
+             "ON CONFLICT (bus, address) DO UPDATE SET "
+             "device_type = CASE WHEN excluded.device_type <> '' THEN excluded.device_type "
+             "ELSE device_type END, "
+             "site = CASE WHEN excluded.site <> '' THEN excluded.site ELSE site END, "
+             "line = CASE WHEN excluded.line <> '' THEN excluded.line ELSE line END "
              "RETURNING id"));
   s->bind(1, key.bus);
   s->bind(2, std::int64_t{key.address});
   s->bind(3, device_type);
+  s->bind(4, site);
+  s->bind(5, line);
   const int rc = s->step();
   if (rc != SQLITE_ROW) return db_->error(rc, "write " + label(key));
   return s->int64(0);
@@ -152,7 +158,8 @@ Result<VersionId> SqliteArchive::append_version(std::int64_t station, const NewV
   BOOST_OUTCOME_TRY(
       s, db_->statement(
              "INSERT INTO versions (station_id, number, set_id, source, stored_at_ms, note, "
-             "serial_number, restored_from, pending_download) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)"));
+             "serial_number, restored_from, pending_download, user_name, host_name) "
+             "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"));
   s->bind(1, station);
   s->bind(2, number);
   s->bind(3, v.set_id);
@@ -166,6 +173,8 @@ Result<VersionId> SqliteArchive::append_version(std::int64_t station, const NewV
     s->bind_null(8);
   }
   s->bind(9, std::int64_t{v.pending_download ? 1 : 0});
+  s->bind(10, v.user);
+  s->bind(11, v.host);
   BOOST_OUTCOME_TRY(db_->run(*s, "insert version"));
   return sqlite3_last_insert_rowid(db_->handle());
 }

@@ -49,8 +49,13 @@ class SqliteArchive final : public ParameterArchive {
   Result<VersionWithSet> current(const StationKey& station) override;
   Result<std::vector<VersionInfo>> history(const StationKey& station) override;
   Result<VersionWithSet> get(VersionId version) override;
-  Result<VersionInfo> restore(VersionId version, Timestamp at, std::string note) override;
+  using ParameterArchive::restore;
+  Result<VersionInfo> restore(VersionId version, Timestamp at, std::string note,
+                              const Author& by) override;
   Result<void> mark_downloaded(VersionId version) override;
+  Result<VersionInfo> annotate(VersionId version, std::string note) override;
+  Result<std::vector<VersionInfo>> versions_after(VersionId after, std::size_t limit) override;
+  Result<VersionId> newest_version_id() override;
   Result<std::vector<StationInfo>> stations() override;
   Result<void> log_sync(const SyncLogEntry& entry) override;
   Result<std::vector<SyncLogEntry>> sync_log(const StationKey& station, std::size_t limit) override;
@@ -68,6 +73,8 @@ class SqliteArchive final : public ParameterArchive {
     Timestamp at{};
     std::string_view note;
     std::string_view serial_number;
+    std::string_view user;
+    std::string_view host;
     std::optional<VersionId> restored_from;
     bool pending_download{false};
     std::optional<std::uint32_t> number;  // default: the station's next number
@@ -77,7 +84,10 @@ class SqliteArchive final : public ParameterArchive {
 
   Result<std::int64_t> station_id(const StationKey& key);  // kUnknownStation
   std::string known_stations();
-  Result<std::int64_t> upsert_station(const StationKey& key, std::string_view device_type);
+  // Creates the station or locks its row; a non-empty device type, site or line replaces the
+  // stored one.
+  Result<std::int64_t> upsert_station(const StationKey& key, std::string_view device_type,
+                                      std::string_view site = {}, std::string_view line = {});
   Result<void> see_serial(std::int64_t station, std::string_view serial, Timestamp first,
                           Timestamp last);
   // The id of the set with exactly these bytes, inserted if new (`inserted` tells).
@@ -86,6 +96,7 @@ class SqliteArchive final : public ParameterArchive {
   Result<VersionId> append_version(std::int64_t station, const NewVersion& v);
   Result<void> make_current(std::int64_t station, VersionId version);
   Result<void> clear_pending(std::int64_t station);
+  Result<std::optional<VersionId>> current_with_set(std::int64_t station, SetId set);
   Result<VersionInfo> version_info(VersionId version);  // kUnknownVersion
   Result<ParameterSetRecord> set_record(SetId set);
   Result<VersionWithSet> version_with_set(VersionId version);

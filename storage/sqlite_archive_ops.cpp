@@ -21,10 +21,18 @@ Result<VersionInfo> SqliteArchive::store(const StoreRequest& r) {
   return with_context("store " + label(r.station), [&]() -> Result<VersionInfo> {
     BOOST_OUTCOME_TRY(check_request(r));
     BOOST_OUTCOME_TRY(tx, Transaction::begin(*db_));
-    BOOST_OUTCOME_TRY(station, upsert_station(r.station, r.device_type));
+    BOOST_OUTCOME_TRY(station, upsert_station(r.station, r.device_type, r.site, r.line));
     BOOST_OUTCOME_TRY(see_serial(station, r.serial_number, r.at, r.at));
     bool inserted = false;
     BOOST_OUTCOME_TRY(set, intern_set(r.blob, r.crc32, r.summary, inserted));
+    if (r.skip_identical && !inserted) {
+      BOOST_OUTCOME_TRY(same, current_with_set(station, set));
+      if (same) {
+        BOOST_OUTCOME_TRY(info, version_info(*same));
+        BOOST_OUTCOME_TRY(tx.commit());
+        return info;
+      }
+    }
     BOOST_OUTCOME_TRY(clear_pending(station));
     NewVersion v;
     v.set_id = set;
@@ -32,6 +40,8 @@ Result<VersionInfo> SqliteArchive::store(const StoreRequest& r) {
     v.at = r.at;
     v.note = r.note;
     v.serial_number = r.serial_number;
+    v.user = r.user;
+    v.host = r.host;
     BOOST_OUTCOME_TRY(id, append_version(station, v));
     BOOST_OUTCOME_TRY(make_current(station, id));
     BOOST_OUTCOME_TRY(info, version_info(id));
@@ -81,8 +91,25 @@ Result<VersionWithSet> SqliteArchive::get(VersionId version) {
   });
 }
 
-Result<VersionInfo> SqliteArchive::restore(VersionId version, Timestamp at, std::string note) {
+// The station's current version when it holds `set`, else nothing.
+Result<std::optional<VersionId>> SqliteArchive::current_with_set(std::int64_t station, SetId set) {
+  BOOST_OUTCOME_TRY(s, db_->statement("SELECT c.version_id FROM current_versions c "
+                                      "JOIN versions v ON v.id = c.version_id "
+                                      "WHERE c.station_id = ? AND v.set_id = ?"));
+  s->bind(1, station);
+  s->bind(2, set);
+  const int rc = s->step();
+  if (rc == SQLITE_ROW) return std::optional<VersionId>(s->int64(0));
+  if (rc != SQLITE_DONE) return db_->error(rc, "read current version");
+  return std::optional<VersionId>();
+}
+
+Result<VersionInfo> SqliteArchive::restore(VersionId version, Timestamp at, std::string note,
+                                           const Author& by) {
   return with_context("restore", [&]() -> Result<VersionInfo> {
+    BOOST_OUTCOME_TRY(check_note(note));
+    BOOST_OUTCOME_TRY(check_text("user", by.user, kMaxNameSize));
+    BOOST_OUTCOME_TRY(check_text("host", by.host, kMaxNameSize));
     BOOST_OUTCOME_TRY(tx, Transaction::begin(*db_));
     BOOST_OUTCOME_TRY(old, version_info(version));
     BOOST_OUTCOME_TRY(station, station_id(old.station));
@@ -92,6 +119,8 @@ Result<VersionInfo> SqliteArchive::restore(VersionId version, Timestamp at, std:
     v.source = VersionSource::kRestore;
     v.at = at;
     v.note = note;
+    v.user = by.user;
+    v.host = by.host;
     v.restored_from = version;
     v.pending_download = true;
     BOOST_OUTCOME_TRY(id, append_version(station, v));
@@ -113,6 +142,45 @@ Result<void> SqliteArchive::mark_downloaded(VersionId version) {
   });
 }
 
+Result<VersionInfo> SqliteArchive::annotate(VersionId version, std::string note) {
+  return with_context("note on version " + std::to_string(version), [&]() -> Result<VersionInfo> {
+    BOOST_OUTCOME_TRY(check_note(note));
+    BOOST_OUTCOME_TRY(tx, Transaction::begin(*db_));
+    BOOST_OUTCOME_TRY(version_info(version));
+    BOOST_OUTCOME_TRY(s, db_->statement("UPDATE versions SET note = ? WHERE id = ?"));
+    s->bind(1, note);
+    s->bind(2, version);
+    BOOST_OUTCOME_TRY(db_->run(*s, "write note"));
+    BOOST_OUTCOME_TRY(info, version_info(version));
+    BOOST_OUTCOME_TRY(tx.commit());
+    return info;
+  });
+}
+
+Result<std::vector<VersionInfo>> SqliteArchive::versions_after(VersionId after,
+                                                               std::size_t limit) {
+  return with_context("versions after " + std::to_string(after),
+                      [&]() -> Result<std::vector<VersionInfo>> {
+    auto read = Transaction::begin_read(*db_);
+    if (!read) return std::move(read).error();
+    BOOST_OUTCOME_TRY(s, db_->statement(std::string(kVersionColumns) +
+                                        "WHERE v.id > ? ORDER BY v.id LIMIT ?"));
+    s->bind(1, after);
+    s->bind(2, static_cast<std::int64_t>(std::min<std::size_t>(limit, INT64_MAX)));
+    std::vector<VersionInfo> out;
+    int rc = SQLITE_ROW;
+    while ((rc = s->step()) == SQLITE_ROW) out.push_back(read_version(*s));
+    if (rc != SQLITE_DONE) return db_->error(rc, "read versions");
+    return out;
+  });
+}
+
+Result<VersionId> SqliteArchive::newest_version_id() {
+  return with_context("newest version", [&]() -> Result<VersionId> {
+    return db_->query_int("SELECT coalesce(max(id), 0) FROM versions");
+  });
+}
+
 Result<std::vector<SerialSeen>> SqliteArchive::serials(std::int64_t station) {
   BOOST_OUTCOME_TRY(
       s, db_->statement("SELECT serial_number, first_seen_ms, last_seen_ms FROM station_serials "
@@ -130,7 +198,8 @@ Result<std::vector<SerialSeen>> SqliteArchive::serials(std::int64_t station) {
 Result<std::vector<std::pair<std::int64_t, StationInfo>>> SqliteArchive::list_stations() {
   BOOST_OUTCOME_TRY(
       s, db_->statement(
-             "SELECT s.id, s.bus, s.address, s.device_type, c.version_id FROM stations s "
+             "SELECT s.id, s.bus, s.address, s.device_type, c.version_id, s.site, s.line "
+             "FROM stations s "
              "LEFT JOIN current_versions c ON c.station_id = s.id ORDER BY s.bus, s.address"));
   std::vector<std::pair<std::int64_t, StationInfo>> out;
   int rc = SQLITE_ROW;
@@ -139,6 +208,8 @@ Result<std::vector<std::pair<std::int64_t, StationInfo>>> SqliteArchive::list_st
     info.key = StationKey{s->text(1), static_cast<std::uint8_t>(s->int64(2))};
     info.device_type = s->text(3);
     if (!s->is_null(4)) info.current = s->int64(4);
+    info.site = s->text(5);
+    info.line = s->text(6);
     out.emplace_back(s->int64(0), std::move(info));
   }
   if (rc != SQLITE_DONE) return db_->error(rc, "list");

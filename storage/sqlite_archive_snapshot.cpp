@@ -15,6 +15,8 @@ Result<SnapshotStation> SqliteArchive::export_station(std::int64_t id, StationIn
   SnapshotStation out;
   out.key = info.key;
   out.device_type = std::move(info.device_type);
+  out.site = std::move(info.site);
+  out.line = std::move(info.line);
   out.serials = std::move(info.serials);
   BOOST_OUTCOME_TRY(
       s, db_->statement(std::string(kVersionColumns) + "WHERE v.station_id = ? ORDER BY v.number"));
@@ -25,7 +27,8 @@ Result<SnapshotStation> SqliteArchive::export_station(std::int64_t id, StationIn
     const auto v = read_version(*s);
     numbers[v.id] = v.number;
     SnapshotVersion sv{v.number, v.set_id,           v.at,           v.source, v.note,
-                       0,        v.pending_download, v.serial_number};
+                       0,        v.pending_download, v.serial_number,
+                       v.user,   v.host};
     if (v.restored_from) sv.restored_from = numbers[*v.restored_from];
     if (info.current == v.id) out.current_version = v.number;
     out.versions.push_back(std::move(sv));
@@ -64,7 +67,7 @@ Result<Snapshot> SqliteArchive::export_snapshot(Timestamp exported_at) {
 Result<void> SqliteArchive::import_station(const SnapshotStation& in,
                                            const std::unordered_map<SetId, SetId>& set_ids,
                                            ImportSummary& summary) {
-  BOOST_OUTCOME_TRY(station, upsert_station(in.key, in.device_type));
+  BOOST_OUTCOME_TRY(station, upsert_station(in.key, in.device_type, in.site, in.line));
   for (const auto& serial : in.serials) {
     BOOST_OUTCOME_TRY(
         see_serial(station, serial.serial_number, serial.first_seen, serial.last_seen));
@@ -78,6 +81,8 @@ Result<void> SqliteArchive::import_station(const SnapshotStation& in,
     nv.at = v.at;
     nv.note = v.note;
     nv.serial_number = v.serial_number;
+    nv.user = v.user;
+    nv.host = v.host;
     nv.pending_download = v.pending_download;
     if (v.restored_from != 0) nv.restored_from = ids.at(v.restored_from);
     BOOST_OUTCOME_TRY(id, append_version(station, nv));

@@ -16,6 +16,8 @@ VersionInfo read_version(const sqlite::Statement& s) {
   if (!s.is_null(10)) v.restored_from = s.int64(10);
   v.pending_download = s.int64(11) != 0;
   v.serial_number = s.text(12);
+  v.user = s.text(13);
+  v.host = s.text(14);
   return v;
 }
 

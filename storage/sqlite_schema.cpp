@@ -74,6 +74,15 @@ CREATE TABLE proxy_state (
   saved_at_ms INTEGER NOT NULL,
   PRIMARY KEY (bus, address));
 )sql",
+    // 3 -> 4: what maintenance records: who stored a version and from which computer, the
+    // station's site and line above the bus.
+    R"sql(
+ALTER TABLE versions ADD COLUMN user_name TEXT NOT NULL DEFAULT '';
+ALTER TABLE versions ADD COLUMN host_name TEXT NOT NULL DEFAULT '';
+ALTER TABLE stations ADD COLUMN site TEXT NOT NULL DEFAULT '';
+ALTER TABLE stations ADD COLUMN line TEXT NOT NULL DEFAULT '';
+CREATE INDEX stations_by_site ON stations (site, line);
+)sql",
 };
 
 // Runs a script of several statements (DDL of one migration step), each prepared in turn.

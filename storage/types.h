@@ -30,6 +30,12 @@ enum class VersionSource : std::uint8_t { kUpload = 1, kDownload, kImport, kRest
 enum class SyncDirection : std::uint8_t { kNone = 1, kUpload, kDownload, kVerify };
 enum class SyncOutcome : std::uint8_t { kSucceeded = 1, kFailed, kAborted };
 
+// Who made a change, recorded with the version (docs/storage.md "What maintenance records").
+struct Author {
+  std::string user;
+  std::string host;
+};
+
 // One store() call: the set the caller has, for one station.
 struct StoreRequest {
   StationKey station;
@@ -40,7 +46,16 @@ struct StoreRequest {
   std::string summary;     // decoded summary (text or JSON), stored as given
   VersionSource source{VersionSource::kUpload};
   Timestamp at{};
-  std::string note;
+  std::string note;     // the comment: why this version exists (a user's words, the proxy's scenario)
+  std::string user;     // who stored it (the OS user unless given)
+  std::string host;     // from which computer
+  // The station's place in the plant, above the bus (docs/storage.md "What maintenance
+  // records"): recorded when not empty, kept otherwise.
+  std::string site;
+  std::string line;
+  // Store nothing when the station's current version has these bytes: store() then returns
+  // that version unchanged (the serial number is still recorded as seen).
+  bool skip_identical{false};
 };
 
 struct ParameterSetRecord {
@@ -64,6 +79,8 @@ struct VersionInfo {
   std::optional<VersionId> restored_from;
   bool pending_download{false};
   std::string serial_number;
+  std::string user;
+  std::string host;
   bool operator==(const VersionInfo&) const = default;
 };
 
@@ -82,6 +99,8 @@ struct SerialSeen {
 struct StationInfo {
   StationKey key;
   std::string device_type;
+  std::string site;  // "" when never given
+  std::string line;
   std::vector<SerialSeen> serials;  // in order of first appearance
   std::optional<VersionId> current;
 };

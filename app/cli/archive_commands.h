@@ -6,6 +6,7 @@
 #include "app/cli/archive_support.h"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,13 @@ struct ArchiveOptions {
   std::string svg;                      // show/diff: --svg FILE
   std::string file;                     // export/import: the file
   std::string format;                   // export/import: "binary", "json" or "" (by extension)
-  std::string note;                     // restore: --note
+  std::string note;                     // restore: --note; note: the TEXT
+  std::string user;                     // restore: --user (default: the OS user)
+  std::string site;                     // list: --site filter
+  std::string line;                     // list: --line filter
+  std::size_t count = 0;                // watch: --count N (0: until interrupted)
+  std::optional<storage::VersionId> after;  // watch: --after ID (default: the newest now)
+  double timeout_s = 0;                 // watch: --timeout SECONDS (0: none)
   std::size_t sync_entries = 20;        // history: --sync-log N
   std::string from;                     // copy: --from ARCHIVE
   std::string to;                       // copy: --to ARCHIVE
@@ -30,6 +37,8 @@ int run_diff(const ArchiveOptions& o);
 int run_export(const ArchiveOptions& o);
 int run_import(const ArchiveOptions& o);
 int run_restore(const ArchiveOptions& o);
+int run_note(const ArchiveOptions& o);
+int run_watch(const ArchiveOptions& o);
 int run_verify(const ArchiveOptions& o);
 int run_copy(const ArchiveOptions& o);
 

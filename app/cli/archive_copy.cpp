@@ -48,6 +48,10 @@ std::string check_copy(const storage::Snapshot& source, const storage::Snapshot&
     const std::size_t base = old == nullptr ? 0 : old->versions.size();
     const std::size_t logs = old == nullptr ? 0 : old->sync_log.size();
     if (t->versions.size() != base + s.versions.size()) return label + ": version count";
+    // An empty site or line in the source keeps the target's (as a store without them does).
+    if ((!s.site.empty() && t->site != s.site) || (!s.line.empty() && t->line != s.line)) {
+      return label + ": site or line";
+    }
     for (std::size_t i = 0; i < s.versions.size(); ++i) {
       const auto& sv = s.versions[i];
       const auto& tv = t->versions[base + i];
@@ -58,7 +62,8 @@ std::string check_copy(const storage::Snapshot& source, const storage::Snapshot&
         return what + ": parameter set";
       }
       if (sv.at != tv.at || sv.source != tv.source || sv.note != tv.note ||
-          sv.serial_number != tv.serial_number || sv.pending_download != tv.pending_download) {
+          sv.serial_number != tv.serial_number || sv.pending_download != tv.pending_download ||
+          sv.user != tv.user || sv.host != tv.host) {
         return what + ": metadata";
       }
       const long sr = sv.restored_from == 0 ? -1 : position_of(s.versions, sv.restored_from);

@@ -54,6 +54,11 @@ void write_sync_log(JsonWriter& w, const std::vector<storage::SyncLogEntry>& log
   w.end_array();
 }
 
+// "jdoe@ws-maint-03", "jdoe", "@ws-maint-03" or "".
+std::string author_text(const storage::VersionInfo& v) {
+  return v.host.empty() ? v.user : v.user + "@" + v.host;
+}
+
 }  // namespace
 
 std::optional<storage::VersionId> current_of(storage::ParameterArchive& archive,
@@ -66,7 +71,10 @@ std::optional<storage::VersionId> current_of(storage::ParameterArchive& archive,
 
 int run_list(const ArchiveOptions& o) {
   auto a = open_archive(o.common, OpenMode::kReadOnly);
-  const auto stations = unwrap(a->stations());
+  auto stations = unwrap(a->stations());
+  std::erase_if(stations, [&](const storage::StationInfo& s) {
+    return (!o.site.empty() && s.site != o.site) || (!o.line.empty() && s.line != o.line);
+  });
   JsonWriter w(2);
   w.begin_object().field("archive", archive_shown(o.common)).key("stations").begin_array();
   Table t({{"BUS"},
@@ -79,14 +87,17 @@ int run_list(const ArchiveOptions& o) {
            {"CRC32"},
            {"STORED (UTC)"},
            {"SOURCE"},
-           {"PENDING"}});
+           {"PENDING"},
+           {"SITE"},
+           {"LINE"}});
   for (const auto& s : stations) {
     const auto versions = unwrap(a->history(s.key)).size();
     std::optional<storage::VersionWithSet> cur;
     if (s.current) cur = unwrap(a->get(*s.current));
     w.begin_object();
     write_station_key(w, s.key);
-    w.field("device_type", s.device_type).key("serial_numbers").begin_array();
+    w.field("device_type", s.device_type).field("site", s.site).field("line", s.line);
+    w.key("serial_numbers").begin_array();
     for (const auto& serial : s.serials) w.value(serial.serial_number);
     w.end_array().field("versions", versions).key("current");
     if (cur) {
@@ -99,13 +110,14 @@ int run_list(const ArchiveOptions& o) {
            std::to_string(versions), cur ? std::to_string(cur->version.id) : "-",
            cur ? std::to_string(cur->version.number) : "-", cur ? crc_hex(cur->version.crc32) : "",
            cur ? table_time(cur->version.at) : "", cur ? source_name(cur->version.source) : "",
-           cur && cur->version.pending_download ? "yes" : ""});
+           cur && cur->version.pending_download ? "yes" : "", s.site, s.line});
   }
   w.end_array().end_object();
   if (o.common.json) {
     std::cout << w.str() << "\n";
   } else if (stations.empty()) {
-    std::cout << "no stations in " << archive_shown(o.common) << "\n";
+    std::cout << "no stations in " << archive_shown(o.common)
+              << (o.site.empty() && o.line.empty() ? "" : " with that site and line") << "\n";
   } else {
     std::cout << t.render();
   }
@@ -143,10 +155,12 @@ int run_history(const ArchiveOptions& o) {
            {"SIZE", true},
            {"SERIAL"},
            {"FLAGS"},
-           {"NOTE"}});
+           {"NOTE"},
+           {"BY"}});
   for (const auto& v : versions) {
     t.add({std::to_string(v.id), std::to_string(v.number), table_time(v.at), source_name(v.source),
-           crc_hex(v.crc32), std::to_string(v.size), v.serial_number, flags(v, current), v.note});
+           crc_hex(v.crc32), std::to_string(v.size), v.serial_number, flags(v, current), v.note,
+           author_text(v)});
   }
   std::cout << "station " << station_text(station) << ", " << versions.size() << " version"
             << (versions.size() == 1 ? "" : "s") << "\n"

@@ -150,6 +150,7 @@ void write_version(rs4::report::JsonWriter& w, const storage::VersionInfo& v) {
   w.field("number", v.number).field("set_id", v.set_id).field("crc32", crc_hex(v.crc32));
   w.field("size", v.size).field("source", source_name(v.source)).field("at", iso_time(v.at));
   w.field("serial_number", v.serial_number).field("note", v.note);
+  w.field("user", v.user).field("host", v.host);
   w.key("restored_from");
   if (v.restored_from) {
     w.value(static_cast<std::int64_t>(*v.restored_from));

@@ -1,7 +1,9 @@
 // `rs4sim archive export|import|restore|verify` (docs/archive-cli.md). The export file is
 // storage/archive_file.h's: protobuf binary, or protobuf's JSON mapping.
 #include "app/cli/archive_commands.h"
+#include "app/runtime/author.h"
 #include "storage/archive_file.h"
+#include "storage/request_check.h"
 
 #include <fstream>
 #include <iostream>
@@ -99,7 +101,7 @@ int run_import(const ArchiveOptions& o) {
 int run_restore(const ArchiveOptions& o) {
   if (o.ids.size() != 1) throw UsageError("archive restore: needs exactly one version id");
   auto a = open_archive(o.common, OpenMode::kWrite);
-  const auto v = unwrap(a->restore(o.ids[0], now(), o.note));
+  const auto v = unwrap(a->restore(o.ids[0], now(), o.note, local_author(o.user)));
   if (o.common.json) {
     JsonWriter w(2);
     w.begin_object().field("archive", archive_shown(o.common)).key("version");
@@ -109,6 +111,25 @@ int run_restore(const ArchiveOptions& o) {
     std::cout << "version " << v.id << " (" << station_text(v.station) << " #" << v.number
               << ") restores version " << o.ids[0] << ": current, pending download at the "
               << "station's next sync\n";
+  }
+  return 0;
+}
+
+int run_note(const ArchiveOptions& o) {
+  if (o.ids.size() != 1) throw UsageError("archive note: needs exactly one version id");
+  if (const auto ok = storage::check_note(o.note); !ok) {
+    throw UsageError("archive note: " + ok.error().message);
+  }
+  auto a = open_archive(o.common, OpenMode::kWrite);
+  const auto v = unwrap(a->annotate(o.ids[0], o.note));
+  if (o.common.json) {
+    JsonWriter w(2);
+    w.begin_object().field("archive", archive_shown(o.common)).key("version");
+    write_version(w, v);
+    std::cout << w.end_object().str() << "\n";
+  } else {
+    std::cout << "version " << v.id << " (" << station_text(v.station) << " #" << v.number
+              << "): note " << (v.note.empty() ? "cleared" : "\"" + v.note + "\"") << "\n";
   }
   return 0;
 }

@@ -1,4 +1,5 @@
-// `rs4sim archive list|show|history|diff|export|import|copy|restore|verify`: the parameter
+// `rs4sim archive list|show|history|diff|export|import|copy|restore|note|watch|verify`: the
+// parameter
 // archive (docs/storage.md) for people and scripts (docs/archive-cli.md).
 #include "app/cli/archive_commands.h"
 #include "app/cli/command.h"
@@ -51,10 +52,30 @@ void copy_options(CLI::App& sub, ArchiveOptions& o) {
 void restore_options(CLI::App& sub, ArchiveOptions& o) {
   sub.add_option("ID", o.ids, "the version id to restore (the ID column)");
   sub.add_option("--note", o.note, "note stored with the new version");
+  sub.add_option("--user", o.user, "the user the new version records (default: the OS user)");
+}
+
+void list_options(CLI::App& sub, ArchiveOptions& o) {
+  sub.add_option("--site", o.site, "only the stations of this site");
+  sub.add_option("--line", o.line, "only the stations of this line");
+}
+
+void note_options(CLI::App& sub, ArchiveOptions& o) {
+  sub.add_option("ID", o.ids, "the version id (the ID column)")->required();
+  sub.add_option("TEXT", o.note, "the comment; replaces the version's note (\"\" clears it)")
+      ->required();
+}
+
+void watch_options(CLI::App& sub, ArchiveOptions& o) {
+  sub.add_option("--after", o.after,
+                 "print the versions stored after this id first (default: only new ones)");
+  sub.add_option("--count", o.count, "exit after this many versions (default: until Ctrl-C)");
+  sub.add_option("--timeout", o.timeout_s,
+                 "exit 1 when --count versions have not come within SECONDS");
 }
 
 constexpr SubCommand<ArchiveOptions> kSubCommands[] = {
-    {"list", "Stations with their current version", no_options, archive::run_list},
+    {"list", "Stations with their current version", list_options, archive::run_list},
     {"history", "Versions and sync log of one station", history_options, archive::run_history},
     {"show", "One version with its decoded parameters", show_options, archive::run_show},
     {"diff", "Field-level difference of two versions", diff_options, archive::run_diff},
@@ -64,13 +85,16 @@ constexpr SubCommand<ArchiveOptions> kSubCommands[] = {
      copy_options, archive::run_copy},
     {"restore", "Make an old version current again (pending download)", restore_options,
      archive::run_restore},
+    {"note", "Replace a version's comment", note_options, archive::run_note},
+    {"watch", "Print every version as it is stored (from any master or workstation)",
+     watch_options, archive::run_watch},
     {"verify", "Integrity check of the archive (exit 1 on problems)", no_options,
      archive::run_verify},
 };
 
 const CommandRegistration kRegistration{
     "archive", "The parameter archive: list, show, history, diff, export, import, copy, restore, "
-    "verify",
+    "note, watch, verify",
     [](CLI::App& cmd) -> Action { return sub_commands(cmd, kSubCommands, common_options); }};
 
 }  // namespace

@@ -8,6 +8,7 @@
 //   rs4sim master --slave 4 --link serial --port /dev/pts/3 --grpc 127.0.0.1:0  (Proxy, Archive)
 #include "app/cli/command.h"
 #include "app/runtime/archive_path.h"
+#include "app/runtime/author.h"
 #include "app/runtime/grpc_cli.h"
 #include "app/cli/link_cli.h"
 #include "app/runtime/master_proxy.h"
@@ -15,6 +16,7 @@
 #include "dp/master/master_config.h"
 #include "rs4/adapter/cyclic_bytes.h"
 #include "storage/open_archive.h"
+#include "storage/request_check.h"
 #include "storage/sqlite_archive.h"  // default_archive_path
 
 #include <charconv>
@@ -38,6 +40,7 @@ struct MasterCliOptions {
   bool no_proxy = false;
   std::string archive;  // empty: storage::default_archive_path()
   ProxyPluginOptions proxy;
+  std::string user;  // --user; empty: the OS user
   bool manual_ack = false;
   MasterServiceOptions service;
   LinkOptions link;
@@ -124,6 +127,14 @@ int run(MasterCliOptions& o) {
     throw UsageError("--proxy-enable is for --no-proxy runs; the proxy sets Proxy-Enable itself");
   }
   if (o.proxy.max_parallel == 0) throw UsageError("--max-syncs must be at least 1");
+  auto& recording = o.proxy.recording;
+  recording.author = local_author(o.user);
+  const std::pair<const char*, const std::string*> texts[] = {
+      {"user", &recording.author.user}, {"site", &recording.site}, {"line", &recording.line}};
+  for (const auto& [name, value] : texts) {
+    const auto ok = storage::check_text(name, *value, storage::kMaxNameSize);
+    if (!ok) throw UsageError("--" + ok.error().message);
+  }
   if (!o.link.grpc.empty() && o.link.link == LinkKind::kMemory) {
     throw UsageError(
         "--grpc: the master serves its API on a real-time link (pty, serial, "
@@ -187,6 +198,14 @@ Action setup(CLI::App& cmd) {
       ->capture_default_str();
   cmd.add_option("--max-syncs", o->proxy.max_parallel,
                  "syncs at a time on this bus (default 1, as the manual advises)");
+  cmd.add_option("--user", o->user,
+                 "the user every archived version records (default: the OS user)");
+  cmd.add_option("--site", o->proxy.recording.site,
+                 "the plant site this bus belongs to, recorded with its stations");
+  cmd.add_option("--line", o->proxy.recording.line,
+                 "the production line within the site, recorded with its stations");
+  cmd.add_flag("--skip-identical", o->proxy.recording.skip_identical,
+               "store no new version when an uploaded set is the station's current one");
   cmd.add_flag("--manual-ack", o->manual_ack,
                "keep ACK_REQ standing after a PROFIsafe fault (default: acknowledge at once)");
   cmd.add_option("--boot-time", o->service.simulated_boot_ms,

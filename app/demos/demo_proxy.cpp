@@ -1,5 +1,6 @@
 #include "app/demos/demo_proxy.h"
 
+#include "app/runtime/author.h"
 #include "app/runtime/master_proxy.h"
 #include "rs4/adapter/cyclic_bytes.h"
 
@@ -10,8 +11,11 @@ namespace {
 
 // The demo's RS4 and its proxy start new in every run, so the demo keeps the Proxy-FB's
 // retentive record in memory only (`persist` off); `rs4sim master` keeps it in the archive.
+// Its versions record the OS user and this computer, as `rs4sim master`'s without --user.
 proxy::SchedulerConfig scheduler_config(const rs4::device::Rs4Segment& segment) {
-  return proxy::SchedulerConfig{"demo", 1, wall_at_zero(segment.now()), false};
+  proxy::Recording recording;
+  recording.author = local_author("");
+  return proxy::SchedulerConfig{"demo", 1, wall_at_zero(segment.now()), false, recording};
 }
 
 }  // namespace

@@ -41,7 +41,8 @@ std::string hex4(std::uint16_t v) {
 ProxyPlugin::ProxyPlugin(storage::ParameterArchive& archive, const ProxyPluginOptions& options)
     : archive_(archive),
       options_(options),
-      scheduler_(archive, proxy::SchedulerConfig{options.bus, options.max_parallel, {}, true}),
+      scheduler_(archive, proxy::SchedulerConfig{options.bus, options.max_parallel, {}, true,
+                                                 options.recording}),
       driver_(scheduler_, *this) {}
 
 ServiceList ProxyPlugin::services(const ServiceContext& context) {

@@ -28,6 +28,8 @@ proxy::RecordResult to_record_result(const dp::master::Dpv1Result& r);
 struct ProxyPluginOptions {
   std::string bus = "default";   // the archive's bus name (as `rs4sim archive --bus`)
   std::size_t max_parallel = 1;  // N syncs at a time per bus ([RS4 manual §6.5]: one)
+  // --user/--site/--line/--skip-identical: what every stored version records.
+  proxy::Recording recording{};
 };
 
 class ProxyPlugin final : public MasterPlugin, private proxy::RecordChannel {

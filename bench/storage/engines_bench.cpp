@@ -139,7 +139,7 @@ void populate(ParameterArchive& archive, std::int64_t sets) {
         const auto blob = make_blob(++seed);
         const auto id = static_cast<SetId>(snap.sets.size() + 1);
         snap.sets.push_back({id, crc32(blob), blob, "{}"});
-        st.versions.push_back({n, id, {}, VersionSource::kUpload, "", 0, false, "SN"});
+        st.versions.push_back({n, id, {}, VersionSource::kUpload, "", 0, false, "SN", "", ""});
         st.current_version = n;
       }
       snap.stations.push_back(std::move(st));

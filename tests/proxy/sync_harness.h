@@ -28,11 +28,23 @@ class FaultyArchive final : public storage::ParameterArchive {
     return inner_.history(s);
   }
   storage::Result<storage::VersionWithSet> get(storage::VersionId v) override;
+  using storage::ParameterArchive::restore;
   storage::Result<storage::VersionInfo> restore(storage::VersionId v, storage::Timestamp at,
-                                                std::string note) override {
-    return inner_.restore(v, at, std::move(note));
+                                                std::string note,
+                                                const storage::Author& by) override {
+    return inner_.restore(v, at, std::move(note), by);
   }
   storage::Result<void> mark_downloaded(storage::VersionId v) override;
+  storage::Result<storage::VersionInfo> annotate(storage::VersionId v, std::string note) override {
+    return inner_.annotate(v, std::move(note));
+  }
+  storage::Result<std::vector<storage::VersionInfo>> versions_after(storage::VersionId after,
+                                                                    std::size_t limit) override {
+    return inner_.versions_after(after, limit);
+  }
+  storage::Result<storage::VersionId> newest_version_id() override {
+    return inner_.newest_version_id();
+  }
   storage::Result<std::vector<storage::StationInfo>> stations() override {
     return inner_.stations();
   }

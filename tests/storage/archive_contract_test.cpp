@@ -261,11 +261,96 @@ TEST_P(ArchiveContract, ConcurrentWritersNumberEveryVersionOnceAndLoseNone) {
   EXPECT_TRUE(archive_->check_integrity().value().ok());
 }
 
+// Who stored a version, from where, and the station's site and line (docs/storage.md "What
+// maintenance records"): recorded as given, an empty site or line keeps the stored one.
+TEST_P(ArchiveContract, EveryVersionRecordsWhoAndWhereAndTheStationItsSite) {
+  const auto blob1 = make_blob(1);
+  const auto blob2 = make_blob(2);
+  auto r = request(kStation, blob1, 1000);
+  r.user = "jdoe";
+  r.host = "ws-maint-03";
+  r.site = "Hamburg";
+  r.line = "Press line 2";
+  r.note = "commissioning";
+  const auto v1 = archive_->store(r).value();
+  EXPECT_EQ(v1.user, "jdoe");
+  EXPECT_EQ(v1.host, "ws-maint-03");
+  EXPECT_EQ(v1.note, "commissioning");
+
+  auto later = request(kStation, blob2, 2000);  // no site, no line, no user given
+  const auto v2 = archive_->store(later).value();
+  EXPECT_EQ(v2.user, "");
+  const auto list = archive_->stations().value();
+  ASSERT_EQ(list.size(), 1u);
+  EXPECT_EQ(list[0].site, "Hamburg");
+  EXPECT_EQ(list[0].line, "Press line 2");
+
+  const auto back = archive_->restore(v1.id, at_ms(3000), "undo", Author{"asmith", "ws-07"}).value();
+  EXPECT_EQ(back.user, "asmith");
+  EXPECT_EQ(back.host, "ws-07");
+  EXPECT_EQ(archive_->history(kStation).value().back(), back);
+  EXPECT_EQ(archive_->get(v1.id).value().version, v1);
+}
+
+// The option to store nothing when the set is the current one: the current version comes back
+// unchanged; a set that is stored but not current is a new version.
+TEST_P(ArchiveContract, SkipIdenticalStoresNoVersionForTheCurrentSet) {
+  const auto a = make_blob(1);
+  const auto v1 = archive_->store(request(kStation, a, 1000)).value();
+  auto again = request(kStation, a, 2000);
+  again.skip_identical = true;
+  again.serial_number = "SN-2";
+  EXPECT_EQ(archive_->store(again).value(), v1);
+  EXPECT_EQ(archive_->history(kStation).value().size(), 1u);
+  const auto serials = archive_->stations().value().at(0).serials;  // still seen
+  ASSERT_EQ(serials.size(), 2u);
+  EXPECT_EQ(serials[1].serial_number, "SN-2");
+
+  const auto blob_b = make_blob(2);
+  auto b = request(kStation, blob_b, 3000);
+  b.skip_identical = true;
+  EXPECT_EQ(archive_->store(b).value().number, 2u);
+  again.at = at_ms(4000);
+  const auto v3 = archive_->store(again).value();  // `a` is stored, but no longer current
+  EXPECT_EQ(v3.number, 3u);
+  EXPECT_EQ(v3.set_id, v1.set_id);
+  // The same bytes current at another station do not count.
+  auto other = request(kOther, a, 5000);
+  other.skip_identical = true;
+  EXPECT_EQ(archive_->store(other).value().number, 1u);
+}
+
+TEST_P(ArchiveContract, ANoteReplacesTheCommentAndNothingElse) {
+  const auto v1 = archive_->store(request(kStation, make_blob(1), 1000)).value();
+  const auto noted = archive_->annotate(v1.id, "replaced after the crash on 2 Dec").value();
+  auto expected = v1;
+  expected.note = "replaced after the crash on 2 Dec";
+  EXPECT_EQ(noted, expected);
+  EXPECT_EQ(archive_->current(kStation).value().version, expected);
+  EXPECT_EQ(archive_->annotate(v1.id, "").value().note, "");
+}
+
+// The change feed's reads: every version above an id, ascending, at most `limit`.
+TEST_P(ArchiveContract, VersionsAfterAnIdAreTheChangeFeed) {
+  const auto a = archive_->store(request(kStation, make_blob(1), 1000)).value();
+  const auto b = archive_->store(request(kOther, make_blob(2), 2000)).value();
+  const auto c = archive_->restore(a.id, at_ms(3000), "r").value();
+  EXPECT_EQ(archive_->versions_after(0, 100).value(), (std::vector<VersionInfo>{a, b, c}));
+  EXPECT_EQ(archive_->versions_after(a.id, 1).value(), (std::vector<VersionInfo>{b}));
+  EXPECT_TRUE(archive_->versions_after(c.id, 100).value().empty());
+}
+
 // Either engine's export imports into the other unchanged (what `archive copy` builds on).
 TEST_P(ArchiveContract, AnExportOfOneEngineImportsIntoTheOther) {
-  const auto v1 = archive_->store(request(kStation, make_blob(1), 1000)).value();
+  const auto blob1 = make_blob(1);
+  auto first = request(kStation, blob1, 1000);
+  first.user = "jdoe";
+  first.host = "ws-1";
+  first.site = "Hamburg";
+  first.line = "L2";
+  const auto v1 = archive_->store(first).value();
   archive_->store(request(kOther, make_blob(1), 2000)).value();
-  archive_->restore(v1.id, at_ms(3000), "restore").value();
+  archive_->restore(v1.id, at_ms(3000), "restore", Author{"asmith", "ws-2"}).value();
   archive_
       ->log_sync({kStation, at_ms(4000), "PC adapter removed", SyncDirection::kDownload,
                   SyncOutcome::kSucceeded, 0, 0, 0, std::chrono::milliseconds{42}})
@@ -341,7 +426,8 @@ TEST_P(ArchiveContractErrors, UnknownVersion) {
 }
 
 TEST_P(ArchiveContractErrors, CrcClaimMismatch) {
-  auto r = request(kStation, make_blob(2));
+  const auto blob = make_blob(2);
+  auto r = request(kStation, blob);
   r.crc32 ^= 1;
   expect_error(archive_->store(r), ArchiveError::kCrcMismatch, "store station bus1/4: claimed 0x");
 }
@@ -355,6 +441,28 @@ TEST_P(ArchiveContractErrors, InvalidRequests) {
   expect_error(archive_->log_sync({{"bus1", 200}, at_ms(1), "r", SyncDirection::kNone,
                                    SyncOutcome::kFailed, 0, 0, 0, std::chrono::milliseconds{0}}),
                ArchiveError::kInvalidArgument, "address 200 above 126");
+}
+
+TEST_P(ArchiveContractErrors, TextsThatAreNotUtf8OrTooLongAreRefused) {
+  const auto blob = make_blob(2);
+  auto r = request(kStation, blob);
+  r.note = "bad \xFF byte";
+  expect_error(archive_->store(r), ArchiveError::kInvalidArgument, "note: byte 4 is not UTF-8");
+  r.note = "";
+  r.user = std::string("a\0b", 3);
+  expect_error(archive_->store(r), ArchiveError::kInvalidArgument, "user: byte 1 is NUL");
+  r.user = "";
+  r.site = std::string(257, 's');
+  expect_error(archive_->store(r), ArchiveError::kInvalidArgument,
+               "site of 257 bytes (at most 256)");
+  r.site = "Zürich";  // UTF-8 is fine
+  r.host = "\xC3\x28";  // a lead byte without its continuation
+  expect_error(archive_->store(r), ArchiveError::kInvalidArgument, "host: byte 0 is not UTF-8");
+  expect_error(archive_->annotate(first_.id, std::string(4097, 'n')),
+               ArchiveError::kInvalidArgument, "note of 4097 bytes (at most 4096)");
+  expect_error(archive_->annotate(999, "x"), ArchiveError::kUnknownVersion, "version 999");
+  expect_error(archive_->restore(first_.id, at_ms(5), "\xED\xA0\x80"),  // a UTF-16 surrogate
+               ArchiveError::kInvalidArgument, "note: byte 0 is not UTF-8");
 }
 
 TEST_P(ArchiveContractErrors, ImportWithACrcMismatchOrBadReferenceWritesNothing) {

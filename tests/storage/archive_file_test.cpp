@@ -51,7 +51,7 @@ TEST(ArchiveFile, AnnotatedBinaryDecodesToTheExpectedValues) {
   EXPECT_EQ(st.current_version, 1u);
   ASSERT_EQ(st.versions.size(), 1u);
   EXPECT_EQ(st.versions[0],
-            (SnapshotVersion{1, 1, at_ms(2000), VersionSource::kUpload, "", 0, false, ""}));
+            (SnapshotVersion{1, 1, at_ms(2000), VersionSource::kUpload, "", 0, false, "", "", ""}));
   // And our encoder writes exactly these bytes for it.
   EXPECT_EQ(encode_binary(snap), kAnnotatedBinary);
 }

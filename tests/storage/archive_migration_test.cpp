@@ -66,12 +66,15 @@ TEST(ArchiveMigration, Version1FileIsUpgradedAndKeepsItsRows) {
   write_v1_file(file);
   ASSERT_EQ(user_version(file), 1);
   auto archive = SqliteArchive::open(file).value();
-  EXPECT_EQ(user_version(file), 3);
+  EXPECT_EQ(user_version(file), 4);
   const StationKey station{"plant", 9};
   const auto cur = archive->current(station).value();
   EXPECT_EQ(cur.version.note, "from v1");
   EXPECT_EQ(cur.version.crc32, 0x352441C2u);
-  EXPECT_FALSE(cur.version.pending_download);  // the new column's default
+  EXPECT_FALSE(cur.version.pending_download);  // the new columns' defaults
+  EXPECT_EQ(cur.version.user, "");
+  EXPECT_EQ(cur.version.host, "");
+  EXPECT_EQ(archive->stations().value().at(0).site, "");
   EXPECT_EQ(cur.set.blob, (std::vector<std::uint8_t>{'a', 'b', 'c'}));
   EXPECT_TRUE(archive->check_integrity().value().ok());
   // The version-2 features work on the upgraded file.
@@ -81,6 +84,9 @@ TEST(ArchiveMigration, Version1FileIsUpgradedAndKeepsItsRows) {
       .value();
   EXPECT_EQ(archive->sync_log(station, 10).value().size(), 1u);
   EXPECT_TRUE(archive->restore(cur.version.id, at_ms(3000), "").value().pending_download);
+  // ... and the version-4 ones.
+  const auto noted = archive->annotate(cur.version.id, "checked in v4").value();
+  EXPECT_EQ(noted.note, "checked in v4");
 }
 
 TEST(ArchiveMigration, EmptyFileIsVersion0AndGetsTheWholeSchema) {
@@ -88,7 +94,7 @@ TEST(ArchiveMigration, EmptyFileIsVersion0AndGetsTheWholeSchema) {
   const auto file = dir.file("empty.sqlite3");
   std::ofstream{file};  // 0 bytes: SQLite treats it as an empty database
   auto archive = SqliteArchive::open(file).value();
-  EXPECT_EQ(user_version(file), 3);
+  EXPECT_EQ(user_version(file), 4);
   EXPECT_TRUE(archive->stations().value().empty());
 }
 
