@@ -79,8 +79,13 @@ class NotifiedFeed final : public ChangeFeed {
       out = std::move(found);
     }
     BOOST_OUTCOME_TRY(consume());
-    if (out.empty() && notified_.empty()) {
-      BOOST_OUTCOME_TRY(wait(timeout));
+    // The socket also wakes for what is not a notification (or another schema's): wait on
+    // until one of ours came or the time is up.
+    const auto deadline = Clock::now() + timeout;
+    while (out.empty() && notified_.empty()) {
+      const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now());
+      if (left.count() <= 0) break;
+      BOOST_OUTCOME_TRY(wait(left));
       BOOST_OUTCOME_TRY(consume());
     }
     if (!notified_.empty()) {
