@@ -15,6 +15,7 @@ namespace rs4sim::app::archive {
 struct ArchiveOptions {
   CommonOptions common;
   std::vector<storage::VersionId> ids;  // positional version ids
+  storage::VersionId version = 0;       // note: the one version id
   std::string svg;                      // show/diff: --svg FILE
   std::string file;                     // export/import: the file
   std::string format;                   // export/import: "binary", "json" or "" (by extension)

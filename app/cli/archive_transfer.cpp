@@ -116,12 +116,11 @@ int run_restore(const ArchiveOptions& o) {
 }
 
 int run_note(const ArchiveOptions& o) {
-  if (o.ids.size() != 1) throw UsageError("archive note: needs exactly one version id");
   if (const auto ok = storage::check_note(o.note); !ok) {
     throw UsageError("archive note: " + ok.error().message);
   }
   auto a = open_archive(o.common, OpenMode::kWrite);
-  const auto v = unwrap(a->annotate(o.ids[0], o.note));
+  const auto v = unwrap(a->annotate(o.version, o.note));
   if (o.common.json) {
     JsonWriter w(2);
     w.begin_object().field("archive", archive_shown(o.common)).key("version");

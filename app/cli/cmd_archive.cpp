@@ -61,7 +61,7 @@ void list_options(CLI::App& sub, ArchiveOptions& o) {
 }
 
 void note_options(CLI::App& sub, ArchiveOptions& o) {
-  sub.add_option("ID", o.ids, "the version id (the ID column)")->required();
+  sub.add_option("ID", o.version, "the version id (the ID column)")->required();
   sub.add_option("TEXT", o.note, "the comment; replaces the version's note (\"\" clears it)")
       ->required();
 }
