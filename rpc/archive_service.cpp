@@ -5,6 +5,7 @@
 #include "rs4/report/parameter_summary.h"
 #include "rs4/scanner/parameter_codec.h"
 #include "storage/archive_file.h"
+#include "storage/change_feed.h"
 
 #include <string>
 
@@ -28,6 +29,16 @@ void fill_version(const storage::VersionInfo& v, v1::VersionInfo& out) {
   out.set_restored_from(v.restored_from ? static_cast<std::uint64_t>(*v.restored_from) : 0U);
   out.set_pending_download(v.pending_download);
   out.set_serial_number(v.serial_number);
+  out.set_user(v.user);
+  out.set_host(v.host);
+}
+
+// "ipv4:127.0.0.1:51234" -> "127.0.0.1", "ipv6:[::1]:51234" -> "::1": the client's address.
+std::string peer_host(const std::string& peer) {
+  auto rest = peer.substr(peer.find(':') + 1);
+  if (!rest.empty() && rest.front() == '[') return rest.substr(1, rest.find(']') - 1);
+  const auto colon = rest.rfind(':');
+  return colon == std::string::npos ? rest : rest.substr(0, colon);
 }
 
 // The request's station, or INVALID_ARGUMENT for an address above 126.
@@ -100,6 +111,8 @@ grpc::Status ArchiveService::ListStations(grpc::ServerContext*, const v1::ListSt
       o->set_device_type(s.device_type);
       for (const auto& serial : s.serials) o->add_serial_numbers(serial.serial_number);
       o->set_current_version_id(s.current ? static_cast<std::uint64_t>(*s.current) : 0U);
+      o->set_site(s.site);
+      o->set_line(s.line);
     }
     return grpc::Status::OK;
   });
@@ -157,12 +170,14 @@ grpc::Status ArchiveService::Diff(grpc::ServerContext*, const v1::DiffRequest* i
   });
 }
 
-grpc::Status ArchiveService::Restore(grpc::ServerContext*, const v1::RestoreRequest* in,
+grpc::Status ArchiveService::Restore(grpc::ServerContext* context, const v1::RestoreRequest* in,
                                      v1::VersionInfo* out) {
   storage::VersionId id = 0;
   if (auto s = to_id(in->version_id(), "version_id", id); !s.ok()) return s;
+  const storage::Author by{in->user(),
+                           in->host().empty() ? peer_host(context->peer()) : in->host()};
   return on_loop([&] {
-    auto v = archive_.restore(id, clock_(), in->note());
+    auto v = archive_.restore(id, clock_(), in->note(), by);
     if (!v) return archive_status(v.error(), "version_id");
     fill_version(v.value(), *out);
     return grpc::Status::OK;
@@ -211,6 +226,47 @@ grpc::Status ArchiveService::Verify(grpc::ServerContext*, const v1::VerifyReques
     for (const auto& p : report.value().problems) out->add_problems(p);
     return grpc::Status::OK;
   });
+}
+
+grpc::Status ArchiveService::Note(grpc::ServerContext*, const v1::NoteRequest* in,
+                                  v1::VersionInfo* out) {
+  storage::VersionId id = 0;
+  if (auto s = to_id(in->version_id(), "version_id", id); !s.ok()) return s;
+  return on_loop([&] {
+    auto v = archive_.annotate(id, in->note());
+    if (!v) return archive_status(v.error(), v.error().code == storage::ArchiveError::kUnknownVersion
+                                                 ? "version_id"
+                                                 : "note");
+    fill_version(v.value(), *out);
+    return grpc::Status::OK;
+  });
+}
+
+grpc::Status ArchiveService::WatchVersions(grpc::ServerContext* context,
+                                           const v1::WatchVersionsRequest* in,
+                                           grpc::ServerWriter<v1::VersionInfo>* writer) {
+  if (location_.empty()) {
+    return failed_precondition("ARCHIVE", "archive", "this run serves no archive location to watch");
+  }
+  if (in->has_after_id() && in->after_id() > static_cast<std::uint64_t>(INT64_MAX)) {
+    return invalid_argument("after_id", "a version id (the ID column of `rs4sim archive history`)");
+  }
+  storage::FeedOptions options;
+  if (in->has_after_id()) options.after = static_cast<storage::VersionId>(in->after_id());
+  auto feed = storage::open_change_feed(location_, options);
+  if (!feed) return archive_status(feed.error(), "");
+  // Subscribed: the client may store now and see it (initial metadata marks the moment).
+  writer->SendInitialMetadata();
+  while (!closed_ && !context->IsCancelled()) {
+    auto got = feed.value()->next(std::chrono::milliseconds{200});
+    if (!got) return archive_status(got.error(), "");
+    for (const auto& v : got.value()) {
+      v1::VersionInfo item;
+      fill_version(v, item);
+      if (!writer->Write(item)) return grpc::Status::OK;  // the client has gone
+    }
+  }
+  return grpc::Status::OK;
 }
 
 }  // namespace rs4sim::rpc

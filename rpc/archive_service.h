@@ -7,7 +7,9 @@
 #include "rs4sim/v1/archive_service.grpc.pb.h"
 #include "storage/parameter_archive.h"
 
+#include <atomic>
 #include <functional>
+#include <string>
 
 namespace rs4sim::rpc {
 
@@ -20,8 +22,14 @@ grpc::Status archive_status(const storage::ArchiveFailure& failure, const std::s
 class ArchiveService final : public v1::Archive::Service {
  public:
   using Clock = std::function<storage::Timestamp()>;
-  ArchiveService(storage::ParameterArchive& archive, Executor& executor, Clock clock)
-      : archive_(archive), executor_(executor), clock_(std::move(clock)) {}
+  // `location` (what --archive named) lets WatchVersions open its own change feed (one per
+  // call, on the call's thread: the feed blocks, the loop must not); "" refuses it.
+  ArchiveService(storage::ParameterArchive& archive, Executor& executor, Clock clock,
+                 std::string location = {})
+      : archive_(archive),
+        executor_(executor),
+        clock_(std::move(clock)),
+        location_(std::move(location)) {}
 
   grpc::Status ListStations(grpc::ServerContext*, const v1::ListStationsRequest*,
                             v1::ListStationsResponse* out) override;
@@ -39,6 +47,13 @@ class ArchiveService final : public v1::Archive::Service {
                       v1::ImportResponse* out) override;
   grpc::Status Verify(grpc::ServerContext*, const v1::VerifyRequest*,
                       v1::VerifyResponse* out) override;
+  grpc::Status Note(grpc::ServerContext*, const v1::NoteRequest* in,
+                    v1::VersionInfo* out) override;
+  grpc::Status WatchVersions(grpc::ServerContext* context, const v1::WatchVersionsRequest* in,
+                             grpc::ServerWriter<v1::VersionInfo>* writer) override;
+  // Ends every WatchVersions call within one poll (the run's ordered stop, before the server's
+  // shutdown waits for its calls).
+  void close_streams() noexcept { closed_ = true; }
 
  private:
   // Runs `f` on the loop; its status is the call's.
@@ -47,6 +62,8 @@ class ArchiveService final : public v1::Archive::Service {
   storage::ParameterArchive& archive_;
   Executor& executor_;
   Clock clock_;
+  std::string location_;
+  std::atomic<bool> closed_{false};
 };
 
 }  // namespace rs4sim::rpc

@@ -157,6 +157,7 @@ int run(MasterCliOptions& o) {
       return 1;
     }
     archive = std::move(opened).value();
+    o.proxy.archive_location = path;
     proxy = std::make_unique<ProxyPlugin>(*archive, o.proxy);
     plugins.push_back(proxy.get());
   }

@@ -63,12 +63,15 @@ ServiceList ProxyPlugin::services(const ServiceContext& context) {
     return std::chrono::time_point_cast<std::chrono::milliseconds>(
         std::chrono::system_clock::now());
   };
+  archive_service_ = std::make_shared<rpc::ArchiveService>(archive_, context.executor, wall,
+                                                           options_.archive_location);
   return {std::make_shared<rpc::ProxyService>(std::move(source), *feed_, context.executor),
-          std::make_shared<rpc::ArchiveService>(archive_, context.executor, wall)};
+          archive_service_};
 }
 
 void ProxyPlugin::stop_services() {
   if (feed_) feed_->close();
+  if (archive_service_) archive_service_->close_streams();
 }
 
 void ProxyPlugin::publish_changes(dp::TimePoint now) {

@@ -7,6 +7,7 @@
 #include "app/runtime/master_service.h"
 #include "proxy/proxy_driver.h"
 #include "proxy/proxy_scheduler.h"
+#include "rpc/archive_service.h"
 #include "rpc/proxy_service.h"
 #include "storage/parameter_archive.h"
 
@@ -30,6 +31,8 @@ struct ProxyPluginOptions {
   std::size_t max_parallel = 1;  // N syncs at a time per bus ([RS4 manual §6.5]: one)
   // --user/--site/--line/--skip-identical: what every stored version records.
   proxy::Recording recording{};
+  // What --archive named: the Archive service's WatchVersions opens its own feed on it.
+  std::string archive_location;
 };
 
 class ProxyPlugin final : public MasterPlugin, private proxy::RecordChannel {
@@ -63,6 +66,7 @@ class ProxyPlugin final : public MasterPlugin, private proxy::RecordChannel {
   std::map<std::uint8_t, proxy::StationStatus> last_;
   // The API (services()): the feed of the Proxy service's streams, what it saw last.
   std::unique_ptr<rpc::ProxyFeed> feed_;
+  std::shared_ptr<rpc::ArchiveService> archive_service_;
   std::map<std::uint8_t, proxy::StationStatus> published_;
 };
 

@@ -264,6 +264,20 @@ class Master(_Client):
         """The archive's versions of one RS4, oldest first (ascending version number)."""
         return self.archive.History(archive_pb.StationKey(bus=bus, address=address)).versions
 
+    def note(self, version_id, text):
+        """Replaces a version's comment; returns the VersionInfo."""
+        return self.archive.Note(archive_pb.NoteRequest(version_id=version_id, note=text))
+
+    def watch_versions(self, after_id=None, timeout=None):
+        """The archive's change feed: every version as it is stored (by any master or
+        workstation on the same archive), in id order; first those after `after_id` when
+        given. Returns once the server has subscribed; cancel() ends it."""
+        request = (archive_pb.WatchVersionsRequest() if after_id is None
+                   else archive_pb.WatchVersionsRequest(after_id=after_id))
+        call = self.archive.WatchVersions(request, timeout=timeout)
+        call.initial_metadata()  # sent once the feed is open: what is stored now is seen
+        return call
+
 
 class _LineDevice(_Client):
     """One RS-485 device of a running `rs4sim run --device gridscan|metron|polaris --grpc`

@@ -137,6 +137,8 @@ try:
 
     # 1. Commissioning on the three lines (the first sync each master sees end).
     at_once(lambda bus: sync(m[bus], lambda: None))
+    # The same feed over gRPC: line2's master streams what all three store.
+    api_watch = m["line2"].watch_versions(timeout=120)
     # 2. Three parameter changes on site at once: three uploads, each a version 1.
     at_once(lambda bus: sync(m[bus], lambda: rs4[bus].set_parameter_set(
         {"format": 1, "response_time_ms": 160 if bus == "line1" else 200})))
@@ -158,6 +160,10 @@ try:
     assert {(v["bus"], v["number"]) for v in seen} == {(b, n) for b in LINES for n in (1, 2)}, seen
     assert all(v["user"] == "master-" + v["bus"] for v in seen), seen
     assert password not in out + err
+    streamed = [next(api_watch) for _ in range(6)]
+    api_watch.cancel()
+    assert [v.id for v in streamed] == ids, (streamed, ids)
+    assert {v.user for v in streamed} == {"master-" + bus for bus in LINES}, streamed
 
     # 4. Failover on line1: its master ends, a second one takes over the same bus.
     code, _, err = stop(masters["line1"], signal.SIGINT)

@@ -29,8 +29,9 @@ class RpcArchiveTest : public ::testing::Test {
  protected:
   void SetUp() override {
     archive_ = storage::SqliteArchive::open(dir_.file("archive.sqlite3")).value();
-    service_ = std::make_unique<ArchiveService>(*archive_, executor_,
-                                                [] { return storage::testing::at_ms(5000); });
+    service_ = std::make_unique<ArchiveService>(
+        *archive_, executor_, [] { return storage::testing::at_ms(5000); },
+        dir_.file("archive.sqlite3").string());
     loop_ = std::thread([this] { io_.run(); });
     server_ =
         std::make_unique<RpcServer>(ServerOptions{}, std::vector<grpc::Service*>{service_.get()});
@@ -177,6 +178,97 @@ TEST_F(RpcArchiveTest, ExportImportRoundTripAndRefusals) {
   EXPECT_EQ(stub_->History(&c7, key, &history).error_code(), grpc::StatusCode::NOT_FOUND);
   // The archive is unchanged by the refusals: two versions (the store and the import).
   EXPECT_EQ(archive_->history(kStation).value().size(), 2U);
+}
+
+TEST_F(RpcArchiveTest, NoteAndWhoRestored) {
+  const auto first = store(rs4::scanner::factory_default(), 1000);
+  grpc::ClientContext c1;
+  v1::NoteRequest note;
+  note.set_version_id(static_cast<std::uint64_t>(first));
+  note.set_note("checked by QA");
+  v1::VersionInfo out;
+  ASSERT_TRUE(stub_->Note(&c1, note, &out).ok());
+  EXPECT_EQ(out.note(), "checked by QA");
+  EXPECT_EQ(archive_->get(first).value().version.note, "checked by QA");
+
+  // (A proto3 string is UTF-8 by definition: the client library refuses to send another.)
+  grpc::ClientContext c2;
+  note.set_note(std::string(4097, 'n'));
+  const auto bad = stub_->Note(&c2, note, &out);
+  EXPECT_EQ(bad.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad_field(bad), "note");
+  EXPECT_NE(bad.error_message().find("note of 4097 bytes (at most 4096)"), std::string::npos);
+  grpc::ClientContext c3;
+  note.set_note("x");
+  note.set_version_id(99);
+  EXPECT_EQ(stub_->Note(&c3, note, &out).error_code(), grpc::StatusCode::NOT_FOUND);
+  EXPECT_EQ(archive_->get(first).value().version.note, "checked by QA");
+
+  // Restore records the user the client names and, without a host, the client's address.
+  grpc::ClientContext c4;
+  v1::RestoreRequest restore;
+  restore.set_version_id(static_cast<std::uint64_t>(first));
+  restore.set_user("qa-engineer");
+  ASSERT_TRUE(stub_->Restore(&c4, restore, &out).ok());
+  EXPECT_EQ(out.user(), "qa-engineer");
+  EXPECT_EQ(out.host(), "127.0.0.1");
+  grpc::ClientContext c5;
+  restore.set_host("ws-maint-03");
+  ASSERT_TRUE(stub_->Restore(&c5, restore, &out).ok());
+  EXPECT_EQ(out.host(), "ws-maint-03");
+}
+
+// The change feed over gRPC: what another writer stores arrives on the stream; a call from an
+// id replays the history first; the run's stop ends the call with OK, a client's cancel too.
+TEST_F(RpcArchiveTest, WatchVersionsStreamsWhatAnotherWriterStores) {
+  const auto first = store(rs4::scanner::factory_default(), 1000);
+  grpc::ClientContext live;
+  auto stream = stub_->WatchVersions(&live, v1::WatchVersionsRequest{});
+  stream->WaitForInitialMetadata();  // subscribed: a version stored from now is new to it
+  auto writer = storage::SqliteArchive::open(dir_.file("archive.sqlite3")).value();
+  const auto blob = rs4::scanner::encode(rs4::scanner::factory_default());
+  storage::StoreRequest r;
+  r.station = {"line2", 7};
+  r.blob = blob;
+  r.crc32 = storage::crc32(blob);
+  r.user = "master-2";
+  r.at = storage::testing::at_ms(2000);
+  const auto second = writer->store(r).value();
+  v1::VersionInfo item;
+  ASSERT_TRUE(stream->Read(&item));
+  EXPECT_EQ(item.id(), static_cast<std::uint64_t>(second.id));
+  EXPECT_EQ(item.station().bus(), "line2");
+  EXPECT_EQ(item.user(), "master-2");
+
+  grpc::ClientContext replay;
+  v1::WatchVersionsRequest from_start;
+  from_start.set_after_id(0);
+  auto all = stub_->WatchVersions(&replay, from_start);
+  ASSERT_TRUE(all->Read(&item));
+  EXPECT_EQ(item.id(), static_cast<std::uint64_t>(first));
+  ASSERT_TRUE(all->Read(&item));
+  EXPECT_EQ(item.id(), static_cast<std::uint64_t>(second.id));
+  replay.TryCancel();
+  EXPECT_EQ(all->Finish().error_code(), grpc::StatusCode::CANCELLED);
+
+  service_->close_streams();
+  EXPECT_FALSE(stream->Read(&item));
+  EXPECT_TRUE(stream->Finish().ok());
+}
+
+TEST_F(RpcArchiveTest, WatchVersionsWithoutALocationIsRefused) {
+  ArchiveService no_location(*archive_, executor_, [] { return storage::testing::at_ms(0); });
+  RpcServer server(ServerOptions{}, std::vector<grpc::Service*>{&no_location});
+  auto stub = v1::Archive::NewStub(
+      grpc::CreateChannel(server.address(), grpc::InsecureChannelCredentials()));
+  grpc::ClientContext c;
+  auto stream = stub->WatchVersions(&c, v1::WatchVersionsRequest{});
+  v1::VersionInfo item;
+  EXPECT_FALSE(stream->Read(&item));
+  const auto status = stream->Finish();
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+  EXPECT_NE(status.error_message().find("no archive location"), std::string::npos);
+  server.shutdown();
 }
 
 }  // namespace
