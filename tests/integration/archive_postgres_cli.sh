@@ -56,6 +56,15 @@ rows=$(psql "$archive" -tAc "SELECT count(*) FROM versions v JOIN stations s ON 
 first=$(psql "$archive" -tAc "SELECT to_char(stored_at AT TIME ZONE 'UTC', 'YYYY-MM-DD') FROM versions WHERE number = 1")
 [ "$first" = "$today" ] || fail "psql dates version 1 $first"
 
+# What maintenance records, on the server: a note, who restored, and the rows psql shows.
+"$rs4sim" archive note 1 "checked after commissioning" --archive "$archive" >"$tmp/note.txt"
+grep -q 'note "checked after commissioning"' "$tmp/note.txt" || fail "archive note"
+note=$(psql "$archive" -tAc "SELECT note FROM versions WHERE id = 1")
+[ "$note" = "checked after commissioning" ] || fail "psql shows the note '$note'"
+users=$(psql "$archive" -tAc "SELECT count(*) FROM versions WHERE user_name <> '' AND host_name <> ''")
+[ "$users" = "$versions" ] || fail "the demo's $versions versions record no user and host ($users do)"
+"$rs4sim" archive history --archive "$archive" --bus demo --address 4 >"$tmp/history.txt"
+
 # Server -> file: the SQLite archive shows the same history.
 "$rs4sim" archive export --archive "$archive" "$tmp/demo.rs4a" >/dev/null
 "$rs4sim" archive import --archive "$tmp/copy.sqlite3" "$tmp/demo.rs4a" >/dev/null
