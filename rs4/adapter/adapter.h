@@ -276,6 +276,8 @@ class Adapter final : public dp::slave::SlaveApplication {
   void apply_field_pair(std::uint8_t pair, TimePoint now);
   void update_rs4_phase(TimePoint now);
   void refresh_input(TimePoint now);
+  // Input bit 5: an error of the RS4 or of the adapter is present ([RS4 manual §5.1.1]).
+  [[nodiscard]] bool error_present() const noexcept;
   [[nodiscard]] bool ossd_release_allowed(TimePoint now) const noexcept;
   [[nodiscard]] std::uint8_t compose_input_byte(TimePoint now) const noexcept;
   void drive_restart_input(TimePoint now);

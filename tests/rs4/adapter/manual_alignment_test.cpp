@@ -21,19 +21,53 @@ struct Aligned : ::testing::Test {
   }
 };
 
-// [docs/decisions.md#rs4-error-bit]: a one-shot adapter error (here 0x2A0B, a block number out of
-// sequence) sets input bit 5 until its going alarm; the RS4 keeps protecting (OSSD 1).
-TEST_F(Aligned, AdapterErrorSetsTheErrorBitUntilTheGoingAlarm) {
+// [RS4 manual §5.1.1] bit 5 "(OSSD = 0 im Fehlerfall)" [docs/decisions.md#rs4-error-bit]: a
+// one-shot adapter error (here 0x2A0B, a block number out of sequence) sets bit 5 and clears
+// bit 7 until its going alarm, 500 ms after the error: both sides of the bound.
+TEST_F(Aligned, AdapterErrorSetsTheErrorBitAndOssd0UntilTheGoingAlarm) {
+  const auto at = rig.now;
   rig.write({0x00, 0x05, 0x00, 0x01, 0x90});  // block 1 without block 0: 0x2A0B
-  rig.run(40ms);
   EXPECT_EQ(rig.adapter.error_memory().last_error().uc2_error, 0x2A0B);
-  EXPECT_TRUE(rig.host_input() & kInputError);
-  EXPECT_TRUE(rig.ossd());
-  rig.run(400ms);
-  EXPECT_TRUE(rig.host_input() & kInputError) << "< 500 ms without error";
-  rig.run(200ms);
-  EXPECT_EQ(rig.alarms_of(1, 2), 1u) << "going";
-  EXPECT_FALSE(rig.host_input() & kInputError);
+  rig.advance(0ms);
+  EXPECT_EQ(rig.adapter.input_byte() & (kInputError | kInputOssd), kInputError) << "at once";
+  EXPECT_TRUE(rig.adapter.scanner().ossd()) << "the RS4 itself keeps protecting";
+  rig.advance(499ms);
+  EXPECT_EQ(rig.adapter.input_byte() & (kInputError | kInputOssd), kInputError) << "499 ms";
+  EXPECT_EQ(rig.alarms_of(1, 2), 0u);
+  rig.advance(1ms);
+  EXPECT_EQ(rig.now - at, 500ms);
+  EXPECT_EQ(rig.alarms_of(1, 2), 1u) << "going at 500 ms";
+  EXPECT_EQ(rig.adapter.input_byte() & (kInputError | kInputOssd), kInputOssd) << "500 ms";
+  rig.run(40ms);
+  EXPECT_TRUE(rig.ossd()) << "the F-host sees the OSSD bit again";
+}
+
+// The invariant of [RS4 manual §5.1.1] bit 5 for every source of the error bit: sampled every
+// millisecond, no input byte has bit 5 and bit 7 both set, and each source does set bit 5.
+TEST_F(Aligned, ErrorBitNeverShowsWithOssd1) {
+  const auto watch = [&](const char* what, auto provoke, auto clear) {
+    bool seen_error = false;
+    provoke();
+    for (int ms = 0; ms < 1500; ++ms) {
+      rig.advance(1ms);
+      if (ms % 20 == 0) rig.cycle();
+      const auto b = rig.adapter.input_byte();
+      seen_error |= (b & kInputError) != 0;
+      ASSERT_NE(b & (kInputError | kInputOssd), kInputError | kInputOssd) << what << " " << ms;
+    }
+    EXPECT_TRUE(seen_error) << what;
+    clear();
+    rig.run(1s);
+    rig.restart_pulse();
+    rig.restart_pulse();
+    ASSERT_TRUE(rig.ossd()) << "after " << what;
+  };
+  watch("RS4 fault", [&] {
+    ASSERT_TRUE(rig.adapter.scanner().inject_fault(scanner::Fault::kDazzled, rig.now));
+  }, [&] { ASSERT_TRUE(rig.adapter.scanner().clear_fault(scanner::Fault::kDazzled, rig.now)); });
+  watch("wrong field pair 0x2600", [&] { rig.out_byte = 0x05; }, [&] { rig.out_byte = 0x01; });
+  watch("inconsistent outputs 0x2419", [&] { rig.out_byte = 0x09; }, [&] { rig.out_byte = 0x01; });
+  watch("one-shot 0x2A0B", [&] { rig.write({0x00, 0x05, 0x00, 0x01, 0x90}); }, [] {});
 }
 
 // [RS4 manual §5.3.2]: the going alarm follows ≥500 ms *without* the error; a contamination
@@ -101,10 +135,13 @@ TEST_F(Aligned, ReservedOutputBitsGive2419AndTheByteIsNotApplied) {
   EXPECT_EQ(rig.adapter.error_memory().last_error().uc2_count, 1) << "reported once";
   EXPECT_EQ(rig.adapter.scanner().status().first_pair, 1);
   EXPECT_TRUE(rig.host_input() & kInputError);
+  EXPECT_FALSE(rig.ossd()) << "[RS4 manual §5.1.1] bit 5: OSSD = 0 while the error lasts";
+  EXPECT_TRUE(rig.adapter.scanner().ossd()) << "the RS4 itself keeps protecting";
   rig.out_byte = 0x02;
   rig.run(100ms);
   EXPECT_EQ(rig.adapter.scanner().status().first_pair, 2);
   EXPECT_FALSE(rig.host_input() & kInputError);
+  EXPECT_TRUE(rig.ossd()) << "the OSSD bit follows the RS4 again";
 }
 
 TEST(AlignedConfig, ReservedBitCheckCanBeSwitchedOff) {
