@@ -40,7 +40,7 @@ struct ProxySyncConfig {
 // The archive timestamp of a machine time point.
 storage::Timestamp wall_time(const ProxySyncConfig& config, dp::TimePoint now) noexcept;
 
-// The FB outputs ([RS4 manual §6.5]).
+// The FB outputs ([RS4 manual §6.4]).
 struct FbOutputs {
   bool fb_busy = false;
   bool config_set_to_default = false;

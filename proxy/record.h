@@ -25,7 +25,7 @@ struct RecordRead {
 };
 using RecordRequest = std::variant<RecordWrite, RecordRead>;
 
-// The outcome of one WRITE or READ. `sfc` is ERROR_CODE_SFC ([RS4 manual §6.5]) for a failed
+// The outcome of one WRITE or READ. `sfc` is ERROR_CODE_SFC ([RS4 manual §6.4]) for a failed
 // one: Error_Code_1 << 8 | Error_Code_2 of the DPV1 negative response ([IEC 61158-6-3 MSAC_C1]),
 // 0x0000 when no negative response arrived (timeout, slave not in data exchange).
 struct RecordResult {

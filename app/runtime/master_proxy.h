@@ -22,12 +22,12 @@ namespace rs4sim::app {
 // wall_at_zero: the archive's timestamps; the cores read no clock).
 storage::Timestamp wall_at_zero(dp::TimePoint now);
 // A DPV1 outcome as the proxy sees it: ERROR_CODE_SFC from the negative response, 0 when
-// none came ([RS4 manual §6.5], docs/proxy.md).
+// none came ([RS4 manual §6.4], docs/proxy.md).
 proxy::RecordResult to_record_result(const dp::master::Dpv1Result& r);
 
 struct ProxyPluginOptions {
   std::string bus = "default";   // the archive's bus name (as `rs4sim archive --bus`)
-  std::size_t max_parallel = 1;  // N syncs at a time per bus ([RS4 manual §6.5]: one)
+  std::size_t max_parallel = 1;  // N syncs at a time per bus ([RS4 manual §6.4, §6.5]: one)
 };
 
 class ProxyPlugin final : public MasterPlugin, private proxy::RecordChannel {

@@ -324,7 +324,7 @@ TEST_F(DeviceSync, PcAdapterAttachedDuringASyncSwitchesThroughAfterwards) {
   EXPECT_EQ(archive->history({"bus", 4}).value().size(), 1U);
 }
 
-// [RS4 manual §6.4]: user passwords are never overwritten by a proxy download.
+// [RS4 manual §7.2.4]: user passwords are never overwritten by a proxy download.
 TEST_F(DeviceSync, UserPasswordsSurviveADownload) {
   ASSERT_TRUE(store(set_with_response_steps(6), "999"));
   auto own = rs4::scanner::factory_default();

@@ -1,4 +1,4 @@
-// Every ERROR_NUMBER_FB the manual lists ([RS4 manual §6.5]) is reached by a failure
+// Every ERROR_NUMBER_FB the manual lists ([RS4 manual §6.4]) is reached by a failure
 // injected at the step docs/proxy.md "Position map" assigns it to.
 #include "proxy/positions.h"
 

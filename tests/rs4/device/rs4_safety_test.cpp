@@ -1,5 +1,5 @@
 // Protective field, restart interlock, field-pair switching and the diagnosis alarm
-// ([RS4 manual §2.3, §2.4, §5.1.2, §5.3.2, §6.2, §6.3] response time).
+// ([RS4 manual §2.3, §2.4, §5.1.2, §5.3.2]; response time [RS4 manual §6.6]).
 #include "rs4/protocol/adapter_error.h"
 #include "rs4/scanner/faults.h"
 #include "rs4_fixture.h"
@@ -17,7 +17,7 @@ TEST(Rs4Safety, ObjectInProtectiveFieldSwitchesOssdOffWithinResponseTime) {
   const auto t = time_until(
       s, [&] { return (s.input_byte() & kInputOssd) == 0; }, 1s);
   ASSERT_TRUE(t.has_value());
-  // [RS4 manual §6.2, §6.3]: T_R = T_scanner + T_WD; T_scanner = 80 ms (factory), T_WD = F_WD_Time
+  // [RS4 manual §6.6]: T_R = T_scanner + T_WD; T_scanner = 80 ms (factory), T_WD = F_WD_Time
   // 150 ms.
   EXPECT_LE(*t, 80ms + 150ms);
   EXPECT_NE(s.input_byte() & kInputProtectiveField, 0);
