@@ -102,7 +102,7 @@ std::optional<ValidationIssue> validate(const ParameterSet& set);
          (set.permitted[from - 1U] & (1U << (to - 1U))) != 0;
 }
 
-// Response time T = 80 ms + n·40 ms ([RS4 manual §7.3]) and the number of consecutive violated
+// Response time T = 80 ms + n·40 ms ([RS4 manual §6.6]) and the number of consecutive violated
 // 40 ms scans that switch the OSSDs off (T / 40 ms, docs/rs4-scanner.md "OSSD model").
 std::chrono::milliseconds response_time(const ParameterSet& set);
 std::uint32_t scans_to_switch_off(const ParameterSet& set);
