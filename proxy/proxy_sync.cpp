@@ -60,7 +60,11 @@ void ProxySync::start(dp::TimePoint now) {
     report_failure(now);
     return;
   }
-  out_ = FbOutputs{};  // [RS4 manual §6.5]: outputs reset when the proxy runs again
+  // [RS4 manual §6.4] "Bei erneutem Bearbeiten des Proxy-FB werden ERROR_NUMBER_FB,
+  // ERROR_CODE_SFC und ERROR_NUMBER_RS4 auf den Wert Null zurückgesetzt": those three only.
+  // CONFIG_SET_TO_DEFAULT "kommt direkt vom Scanner": it keeps the device's last word until
+  // the next answer to 98 or 99 brings a new one.
+  out_.error_number_fb = out_.error_code_sfc = out_.error_number_rs4 = 0;
   out_.fb_busy = true;
   begin_ = {};
   ident_.reset();
@@ -144,7 +148,7 @@ void ProxySync::exchange_finished(dp::TimePoint now) {
   }
 }
 
-// Stop on error ([RS4 manual §6.5]): the outputs show where, the device is told (DOWNLOAD_BREAK
+// Stop on error ([RS4 manual §6.4]): the outputs show where, the device is told (DOWNLOAD_BREAK
 // when a download is open, then 99 failed), then the machine waits for the next request.
 void ProxySync::fail(FailureKind kind, dp::TimePoint now, std::uint16_t adapter_error,
                      std::uint16_t rs4) {

@@ -316,5 +316,45 @@ TEST(Retry, FailedSyncIsRetriedAfterTheDelayAndSucceeds) {
   EXPECT_TRUE(h.device.released);
 }
 
+// [RS4 manual §6.4]: a new run of the FB resets ERROR_NUMBER_FB, ERROR_CODE_SFC and
+// ERROR_NUMBER_RS4, not CONFIG_SET_TO_DEFAULT, which "kommt direkt vom Scanner": a device that
+// rolled back after a failed download still reads 1 during the retry's download, and 0 once the
+// stored set is in (the flag of the 99 answer).
+TEST(Retry, ConfigSetToDefaultStaysOneThroughTheRetryDownload) {
+  SyncHarness h;
+  const auto set = SyncHarness::custom_set(3);
+  h.store(set, "1001");
+  h.device.set = SyncHarness::custom_set(7);  // another set: the stored one goes down
+  h.inject = Injection{Step::kDownloadChunk, FailureKind::kWrite};
+  ASSERT_TRUE(h.run_sync());
+  ASSERT_EQ(h.sync->outputs().error_number_fb, 0x2401);
+  ASSERT_TRUE(h.sync->outputs().config_set_to_default) << "the device rolled back";
+  ASSERT_TRUE(h.device.factory);
+  h.advance(h.config.retry_delay);
+  ASSERT_TRUE(h.run_sync(Step::kDownloadChunk));
+  const auto during = h.sync->outputs();
+  EXPECT_TRUE(during.fb_busy);
+  EXPECT_EQ(during.error_number_fb, 0) << "reset by the new run";
+  EXPECT_EQ(during.error_code_sfc, 0);
+  EXPECT_EQ(during.error_number_rs4, 0);
+  EXPECT_TRUE(during.config_set_to_default) << "the device still holds its factory setting";
+  ASSERT_TRUE(h.resume());
+  EXPECT_EQ(h.sync->outputs(), FbOutputs{}) << "the 99 answer: no longer factory settings";
+  EXPECT_EQ(h.device.set, set);
+}
+
+// A proxy that starts new (no earlier output) learns the flag from the device's 98 answer.
+TEST(Retry, ConfigSetToDefaultComesFromTheBeginAnswer) {
+  SyncHarness h;
+  h.store(SyncHarness::custom_set(3), "1001");
+  h.device.factory = true;
+  h.device.direction = SyncDirection::kDownload;
+  ASSERT_FALSE(h.sync->outputs().config_set_to_default);
+  ASSERT_TRUE(h.run_sync(Step::kDownloadBegin));
+  EXPECT_TRUE(h.sync->outputs().config_set_to_default);
+  ASSERT_TRUE(h.resume());
+  EXPECT_FALSE(h.sync->outputs().config_set_to_default);
+}
+
 }  // namespace
 }  // namespace rs4sim::proxy::testing
