@@ -125,10 +125,13 @@ void ProxySync::exchange_finished(dp::TimePoint now) {
     // device has rolled back by itself ([RS4 manual §7.1, §7.2]: a failed sync resets it to
     // factory settings; docs/proxy-protocol.md: so does a lost connection), so the FB reports
     // CONFIG_SET_TO_DEFAULT rather than leave the user believing the old set is active.
+    // A failure report the device accepted rolled it back ([docs/proxy-protocol.md]): its flag is
+    // 1 by contract, and a stale 99 answer left by an unreadable 99 success (position 41) must
+    // not say otherwise. Only "not accepted" (no sync was open) leaves the device's own flag.
     out_.config_set_to_default = true;
     if (status == S::kDone) {
       if (auto a = protocol::decode_proxy_end_answer(answer))
-        out_.config_set_to_default = a.value().factory_default;
+        out_.config_set_to_default = a.value().accepted || a.value().factory_default;
     }
     sync_open_ = false;
     finish(storage::SyncOutcome::kFailed, now);
@@ -155,10 +158,11 @@ void ProxySync::fail(FailureKind kind, dp::TimePoint now, std::uint16_t adapter_
   out_.error_number_fb = error_number_fb(step_, kind);
   if (rs4 != 0) out_.error_number_rs4 = rs4;
   adapter_error_ = adapter_error;
-  if (background_) {  // after the release: nothing to tell the device
-    finish(storage::SyncOutcome::kFailed, now);
-    return;
-  }
+  // After the release (background verify) the device is told too: [RS4 manual §5.1.1] bit 2 "Tritt
+  // während der Parameterkontrolle ein Fehler auf, wird es wieder auf 1 gesetzt". Its `99 01`
+  // rolls the device back like any failed sync (OSSD bit 0, Proxy-Request, reason retry), and the
+  // retry downloads the stored set [docs/proxy-protocol.md].
+  if (background_) sync_open_ = true;
   report_failure(now);
 }
 

@@ -121,6 +121,7 @@ void Adapter::power_off(TimePoint now) {
   rs4_up_ = false;
   released_ = false;
   proxy_request_ = false;
+  check_after_release_ = false;
   error_active_ = false;
   adapter_error_active_ = false;
   inconsistent_output_.reset();
@@ -153,6 +154,7 @@ void Adapter::start_adapter(TimePoint now, bool keep_errors) {
   proxy_enable_known_ = false;
   rs232_through_ = pc_attached_;
   through_pending_ = false;
+  check_after_release_ = false;
   if (rs4_up_ && !pc_attached_) {  // a restarted adapter checks again
     request_sync(proxy_request_ ? proxy_.reason() : protocol::SyncReason::kPowerUp);
   }

@@ -336,6 +336,9 @@ class Adapter final : public dp::slave::SlaveApplication {
   bool pc_attached_ = false;         // reed contact
   bool rs232_through_ = false;       // bit 3: switched through (not during a sync)
   bool through_pending_ = false;     // switch through once the sync's last answer was read
+  // The last sync ended with 99 success: the proxy's background verify may still fail it with
+  // `99 01` ([RS4 manual §5.1.1] bit 2, [docs/proxy-protocol.md] PROFI_CMD_PROXY_END).
+  bool check_after_release_ = false;
 
   // [RS4 manual §5.1] cyclic
   std::uint8_t input_byte_ = 0;

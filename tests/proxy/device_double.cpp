@@ -62,16 +62,21 @@ std::vector<std::uint8_t> DeviceDouble::execute(std::span<const std::uint8_t> co
     if (!request) return protocol::encode_proxy_begin_answer({{}, {}, factory});
     request = false;
     sync_running = true;
+    check_after_release = false;
     return protocol::encode_proxy_begin_answer({reason, direction, factory});
   }
   if (const auto* end = std::get_if<protocol::ProxyEndCommand>(&parsed.value())) {
-    const bool accepted = sync_running;
+    // After a release a failure report is still taken (the background verify failed).
+    const bool failed = end->outcome != protocol::ProxyOutcome::kSucceeded;
+    const bool accepted = sync_running || (failed && check_after_release);
     if (accepted) {
       last_end = *end;
       sync_running = false;
-      if (end->outcome == protocol::ProxyOutcome::kSucceeded) {
+      check_after_release = !failed;
+      if (!failed) {
         released = true;
       } else {  // failed: factory settings, ask again
+        released = false;
         rollback();
         request = true;
         reason = protocol::SyncReason::kRetry;

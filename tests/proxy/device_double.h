@@ -33,7 +33,8 @@ class DeviceDouble {
   rs4::protocol::SyncReason reason = rs4::protocol::SyncReason::kPowerUp;
   rs4::protocol::SyncDirection direction = rs4::protocol::SyncDirection::kVerify;
   bool sync_running = false;
-  bool released = false;  // 99 success accepted
+  bool released = false;  // 99 success accepted (until a failure report)
+  bool check_after_release = false;  // 99 success, no sync since: a 99 failed is still taken
   std::optional<rs4::protocol::ProxyEndCommand> last_end;
   bool download_broken = false;
   int not_ready_reads = 0;  // header-only READs before each answer

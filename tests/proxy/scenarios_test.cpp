@@ -147,6 +147,41 @@ TEST(Scenario, PendingRestoreIsDownloadedAndMarkedDone) {
   EXPECT_FALSE(current.version.pending_download);
 }
 
+// [RS4 manual §5.1.1] bit 2 "Tritt während der Parameterkontrolle ein Fehler auf, wird es wieder
+// auf 1 gesetzt": a failed background verify after the release is reported to the device with
+// 99 failed (it rolls back and asks again), FB_BUSY drops, the failure is logged, and the retry
+// downloads the stored set.
+TEST(Scenario, FailedBackgroundVerifyTellsTheDeviceAndTheRetryRestores) {
+  SyncHarness h;
+  const auto set = SyncHarness::custom_set(3);
+  h.store(set, "1001");
+  h.device.set = set;
+  h.inject = Injection{Step::kVerifyUpload1, FailureKind::kRead};
+  ASSERT_TRUE(h.run_sync());
+  const auto& out = h.sync->outputs();
+  EXPECT_EQ(out.error_number_fb, 0x5001);
+  EXPECT_FALSE(out.fb_busy);
+  EXPECT_TRUE(out.config_set_to_default) << "the device rolled back";
+  const auto cmds = commands(h.issued);
+  ASSERT_GE(cmds.size(), 6u);
+  EXPECT_EQ(std::count(cmds.begin(), cmds.end(), 0x99), 2) << "99 success, then 99 failed";
+  EXPECT_EQ(cmds.back(), 0x99);
+  ASSERT_TRUE(h.device.last_end);
+  EXPECT_EQ(h.device.last_end->outcome, ProxyOutcome::kFailed);
+  EXPECT_TRUE(h.device.request) << "Proxy-Request again";
+  EXPECT_FALSE(h.device.released);
+  EXPECT_EQ(h.device.reason, SyncReason::kRetry);
+  const auto log = h.real->sync_log(SyncHarness::kStation, 10).value();
+  ASSERT_EQ(log.size(), 2u);
+  EXPECT_EQ(log[1].reason, "background-verify");
+  EXPECT_EQ(log[1].outcome, storage::SyncOutcome::kFailed);
+  h.advance(h.config.retry_delay);
+  ASSERT_TRUE(h.run_sync());
+  EXPECT_EQ(h.sync->outputs(), FbOutputs{});
+  EXPECT_EQ(h.device.set, set);
+  EXPECT_TRUE(h.device.released);
+}
+
 // ---- comparisons: the adapter error sent with 99 failed
 TEST(Comparison, EchoCrcOfAChunkWrongBreaksTheDownload) {
   SyncHarness h;
