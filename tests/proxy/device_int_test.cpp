@@ -318,7 +318,7 @@ TEST_F(DeviceSync, LinkLossMidDownloadLeavesFactorySettingsAndTheRetryRestores) 
   seg.bus().inject(lost);
   ASSERT_TRUE(drive(120s));
   EXPECT_EQ(sync.outputs().error_number_fb, 0x2401) << std::hex << sync.outputs().error_number_fb;
-  EXPECT_EQ(sync.outputs().error_code_sfc, 0);  // no negative response: nothing came back
+  EXPECT_EQ(sync.outputs().error_code_sfc, 0x80C5);  // no response: W#16#80C5
   EXPECT_TRUE(sync.outputs().config_set_to_default);
   EXPECT_FALSE(sync.outputs().fb_busy);
   EXPECT_TRUE(seg.device().scanner().factory_settings());

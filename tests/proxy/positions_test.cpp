@@ -122,8 +122,10 @@ TEST_P(PositionTest, FailureGivesTheManualsErrorNumber) {
   EXPECT_EQ(out.error_number_fb, c.code);
   EXPECT_FALSE(out.fb_busy);
   EXPECT_FALSE(h_.device.sync_running);  // never left open on the device
-  const auto sfc = c.kind == FailureKind::kWrite  ? std::uint16_t{kWriteRefusedCode1 << 8}
-                   : c.kind == FailureKind::kRead ? std::uint16_t{kReadRefusedCode1 << 8}
+  // ERROR_CODE_SFC: the S7 RET_VAL W#16#80xx, xx = Error_Code_1 (0x80B5, 0x80A0)
+  // [docs/decisions.md#proxy-error-code-sfc].
+  const auto sfc = c.kind == FailureKind::kWrite  ? std::uint16_t{0x8000 | kWriteRefusedCode1}
+                   : c.kind == FailureKind::kRead ? std::uint16_t{0x8000 | kReadRefusedCode1}
                                                   : std::uint16_t{0};
   EXPECT_EQ(out.error_code_sfc, sfc);
   // Every failure once 98 was written is reported to the device and taken by it: the background
