@@ -185,6 +185,7 @@ void Adapter::follow_rs4_signals(TimePoint now) {
 }
 
 void Adapter::refresh_input(TimePoint now) {
+  track_led(now);
   if (powered_) follow_rs4_signals(now);
   input_byte_ = powered_ ? compose_input_byte(now) : 0;
   fdevice_.set_input(std::span<const std::uint8_t>(&input_byte_, 1));

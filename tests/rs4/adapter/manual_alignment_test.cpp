@@ -169,20 +169,59 @@ TEST_F(Aligned, BothChannelsSeeState010WhileThePcAdapterIsAttached) {
   EXPECT_EQ(rig.adapter.error_memory().last_error().uc2_error, 0);
 }
 
-// [RS4 manual §4.4]: fast blink ≈5 Hz; the fault blink is slower (1 Hz, a DECISION); steady
-// states are lit, "connected" and "dark" are not.
-TEST(LedPatterns, BlinkRates) {
-  using namespace std::chrono_literals;
-  EXPECT_EQ(led_pattern(LedState::kFastBlink), (LedPattern{100ms, 200ms}));
-  EXPECT_EQ(led_pattern(LedState::kSlowBlink), (LedPattern{500ms, 1000ms}));
-  EXPECT_TRUE(led_lit(LedState::kFastBlink, 0ms));
-  EXPECT_FALSE(led_lit(LedState::kFastBlink, 150ms));
-  EXPECT_TRUE(led_lit(LedState::kFastBlink, 1250ms));
-  EXPECT_FALSE(led_lit(LedState::kSlowBlink, 700ms));
-  EXPECT_TRUE(led_lit(LedState::kSteadyInit, 5s));
-  EXPECT_TRUE(led_lit(LedState::kSteadyFault, 5s));
-  EXPECT_FALSE(led_lit(LedState::kOffConnected, 0ms));
-  EXPECT_FALSE(led_lit(LedState::kDark, 0ms));
+// [RS4 manual §4.4] "Ein schnelles Blinken (ca. 5 Hz)": ready for PROFIBUS once the 2.5 s of
+// steady light are over; the adapter's LED, as `Adapter::led_lit` shows it (and the API's
+// DeviceState.led_lit), is lit 100 ms of every 200 ms from the moment the blink began — both
+// edges of each phase.
+TEST(LedPatterns, FastBlinkFollowsItsPatternFromItsStart) {
+  Rig rig;
+  rig.adapter.power_on(rig.now);
+  EXPECT_TRUE(rig.adapter.led_lit(rig.now));
+  rig.advance(2499ms);
+  EXPECT_EQ(rig.adapter.led(), LedState::kSteadyInit);
+  EXPECT_TRUE(rig.adapter.led_lit(rig.now)) << "steady";
+  rig.advance(1ms);
+  ASSERT_EQ(rig.adapter.led(), LedState::kFastBlink);
+  const auto start = rig.now;
+  const auto lit = [&](std::chrono::milliseconds at) { return rig.adapter.led_lit(start + at); };
+  EXPECT_TRUE(lit(0ms));
+  EXPECT_TRUE(lit(99ms));
+  EXPECT_FALSE(lit(100ms));
+  EXPECT_FALSE(lit(199ms));
+  EXPECT_TRUE(lit(200ms));
+  EXPECT_TRUE(lit(1299ms));
+  EXPECT_FALSE(lit(1300ms));
+  // Connected: off, whatever the phase.
+  rig.advance(150ms);
+  ASSERT_EQ(rig.adapter.check_parameters(set_prm_for(rig.params), rig.now),
+            dp::slave::PrmVerdict::kAccept);
+  ASSERT_EQ(rig.adapter.check_config(kRealConfig, false, rig.now), dp::slave::CfgVerdict::kAccept);
+  rig.adapter.on_state_change(dp::slave::State::kWaitCfg, dp::slave::State::kDataExch,
+                              dp::slave::TransitionReason::kCfgAccepted, rig.now);
+  EXPECT_EQ(rig.adapter.led(), LedState::kOffConnected);
+  EXPECT_FALSE(rig.adapter.led_lit(rig.now));
+  EXPECT_FALSE(rig.adapter.led_lit(rig.now + 50ms));
+}
+
+// The fault blink, "einen Blinktakt kleiner ca. 5Hz" [RS4 manual §4.4], is 500 ms on, 500 ms off
+// [docs/decisions.md#rs4-led-blink], starting lit when the F-parameters are refused (here a
+// wrong F_Dest_Add), not in the phase of an earlier blink.
+TEST(LedPatterns, SlowBlinkStartsLitWhenTheParametersAreRefused) {
+  Rig rig(AdapterConfig{}, rs4_fparams(505));
+  rig.adapter.power_on(rig.now);
+  rig.advance(2500ms + 130ms);  // fast blink, 130 ms in: dark in its own phase
+  ASSERT_EQ(rig.adapter.led(), LedState::kFastBlink);
+  ASSERT_FALSE(rig.adapter.led_lit(rig.now));
+  ASSERT_EQ(rig.adapter.check_parameters(set_prm_for(rig.params), rig.now),
+            dp::slave::PrmVerdict::kPrmFault);
+  ASSERT_EQ(rig.adapter.led(), LedState::kSlowBlink);
+  const auto start = rig.now;
+  const auto lit = [&](std::chrono::milliseconds at) { return rig.adapter.led_lit(start + at); };
+  EXPECT_TRUE(lit(0ms));
+  EXPECT_TRUE(lit(499ms));
+  EXPECT_FALSE(lit(500ms));
+  EXPECT_FALSE(lit(999ms));
+  EXPECT_TRUE(lit(1000ms));
 }
 
 // Steps the adapter from deadline to deadline until `done` holds; returns false after 10 s.
