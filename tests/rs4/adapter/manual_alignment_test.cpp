@@ -115,15 +115,24 @@ TEST_F(Aligned, UnknownCommandPutsTheRs4IntoItsErrorState) {
 
 
 // [RS4 manual §5.2.2]: PROFI_CMD_RESET does not affect the RS4: the field pair it monitors stays
-// until the PROFIBUS start-up after the reset selects pair 1 ([RS4 manual §5.1.2]).
+// until the PROFIBUS start-up after the reset selects pair 1 ([RS4 manual §5.1.2]). The test
+// first proves the reset took place (link down for 2 s, adapter initialising, counted), and ends
+// with the start-up that does change the pair.
 TEST_F(Aligned, AdapterResetLeavesTheRs4sFieldPair) {
   rig.out_byte = 0x03;
   rig.run(100ms);
   ASSERT_EQ(rig.adapter.scanner().status().first_pair, 3);
+  ASSERT_EQ(rig.adapter.counters().resets, 0u);
   rig.write(Rig::block({0x94}));
+  ASSERT_EQ(rig.adapter.counters().resets, 1u) << "the reset was executed";
+  ASSERT_EQ(rig.adapter.wants_link_down_until(), rig.now + 2s) << "ca. 2 s link down";
+  EXPECT_EQ(rig.adapter.led(), LedState::kSteadyInit) << "the adapter restarts";
+  EXPECT_FALSE(rig.adapter.view().connected);
   EXPECT_EQ(rig.adapter.scanner().status().first_pair, 3) << "the reset itself";
   rig.advance(100ms);
   EXPECT_EQ(rig.adapter.scanner().status().first_pair, 3) << "link down";
+  rig.start(/*power=*/false);  // the master's new start-up after the reset
+  EXPECT_EQ(rig.adapter.scanner().status().first_pair, 1) << "the start-up selects pair 1";
 }
 
 // [docs/decisions.md#rs4-inconsistent-outputs]: reserved output bits 5..3 set → 0x2419 once,
