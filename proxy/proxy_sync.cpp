@@ -39,6 +39,7 @@ ProxySync::ProxySync(ProxySyncConfig config, storage::ParameterArchive& archive)
     : config_(std::move(config)), archive_(archive) {}
 
 bool ProxySync::ready(dp::TimePoint now) const noexcept {
+  if (pc_adapter_) return false;  // nothing reaches the device while bit 3 is 1
   if (abort_pending_) return true;
   if (!enabled_ || !request_) return false;
   if (step_ == Step::kRetryWait) return now >= retry_until_;
@@ -114,7 +115,21 @@ void ProxySync::exchange_finished(dp::TimePoint now) {
   if (status == S::kIdle || status == S::kBusy) return;
   const std::vector<std::uint8_t> answer(exchange_.answer().begin(), exchange_.answer().end());
   const auto sfc = exchange_.sfc();
+  const bool pc_adapter = exchange_.pc_adapter_attached();
   exchange_.reset();
+  if (pc_adapter) {
+    // Flow state 010: the adapter ignored the WRITEs, so no sync is open on the device (one
+    // that runs defers the switch-through, [RS4 manual §5.1.1] bit 3) and nothing is reported
+    // to it; a failure report in progress ends here. The machine stops with the step's READ
+    // position (KK 01, sfc 0) and waits for bit 3 to drop.
+    if (step_ != Step::kBreak && step_ != Step::kEndFailed) {
+      out_.error_number_fb = error_number_fb(step_, FailureKind::kRead);
+      out_.error_code_sfc = 0;
+    }
+    sync_open_ = download_open_ = false;
+    finish(storage::SyncOutcome::kFailed, now);
+    return;
+  }
   if (step_ == Step::kBreak) {
     download_open_ = false;
     report_failure(now);

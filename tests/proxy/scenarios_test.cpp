@@ -334,6 +334,46 @@ TEST(Enable, StaleRequestStartsNothingAndWaits) {
   EXPECT_TRUE(h.sync->ready(h.now + h.config.retry_delay));
 }
 
+// [RS4 manual §6.5] "Es findet keine Kommunikation statt, solange der optische PC-Adapter am
+// RS4/PROFIsafe angebracht ist": with input bit 3 set the FB does not start, even with
+// Proxy-Request pending; it starts once bit 3 drops.
+TEST(Enable, NoSyncWhileThePcAdapterIsAttached) {
+  SyncHarness h;
+  h.device.pc_adapter = true;
+  ASSERT_TRUE(h.device.request);
+  EXPECT_FALSE(h.run_sync());
+  EXPECT_EQ(h.device.commands, 0u);
+  h.device.pc_adapter = false;
+  EXPECT_TRUE(h.run_sync());
+}
+
+// A PC adapter attached after the FB started (it saw Proxy-Request without bit 3): the READ shows
+// flow state 010, and the FB stops at once — not after 2 × 130 s of polling (its READ and the
+// failure report's) — with the READ position, sfc 0, no failure report and the flag kept.
+TEST(Timing, FlowState010EndsTheSyncAtOnce) {
+  SyncHarness h;
+  h.device.pc_adapter = true;
+  h.sync->set_input_byte(0x04);  // the byte of the cycle before bit 3 came
+  h.sync->set_proxy_enable(true);
+  ASSERT_TRUE(h.sync->ready(h.now));
+  const auto start = h.now;
+  h.sync->start(h.now);
+  ASSERT_TRUE(h.resume());
+  const auto& out = h.sync->outputs();
+  EXPECT_EQ(out.error_number_fb, 0x0301) << "98: READ failed";
+  EXPECT_EQ(out.error_code_sfc, 0);
+  EXPECT_FALSE(out.fb_busy);
+  EXPECT_FALSE(out.config_set_to_default);
+  EXPECT_EQ(h.device.commands, 0u) << "the adapter ignored every WRITE";
+  EXPECT_EQ(commands(h.issued), (std::vector<std::uint8_t>{0x98})) << "no failure report";
+  EXPECT_LT(h.now - start, h.config.timing.poll_interval) << "one WRITE and one READ";
+  EXPECT_FALSE(h.sync->ready(h.now + h.config.retry_delay)) << "bit 3 still set";
+  h.device.pc_adapter = false;
+  h.advance(h.config.retry_delay);
+  EXPECT_TRUE(h.run_sync());
+  EXPECT_EQ(h.sync->outputs().error_number_fb, 0);
+}
+
 TEST(Retry, FailedSyncIsRetriedAfterTheDelayAndSucceeds) {
   SyncHarness h;
   const auto set = SyncHarness::custom_set(3);
