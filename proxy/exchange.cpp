@@ -50,6 +50,7 @@ void Exchange::reset() noexcept {
   next_block_ = 0;
   expected_ = 0;
   sfc_ = 0;
+  pc_adapter_ = false;
 }
 
 std::optional<RecordRequest> Exchange::take_request(dp::TimePoint now) {
@@ -99,6 +100,13 @@ void Exchange::on_read_result(const RecordResult& result, dp::TimePoint now) {
     return;
   }
   const auto& view = block.value();
+  const auto flow = protocol::decode_flow_control(view.header.flow_control);
+  if (flow && flow.value().state == protocol::FlowState::kPcAdapterAttached) {
+    pc_adapter_ = true;  // no answer will come while the PC adapter is attached
+    sfc_ = 0;
+    status_ = Status::kReadFailed;
+    return;
+  }
   if (view.payload.empty() && view.header.is_last() && next_block_ == 0) {
     read_due_ = now + timing_.poll_interval;  // not ready yet
     return;

@@ -34,7 +34,8 @@ class Exchange {
     kBusy,
     kDone,         // answer() holds the whole answer
     kWriteFailed,  // a WRITE was refused (sfc())
-    kReadFailed,   // a READ was refused (sfc()) or the answer did not come in time (sfc 0)
+    kReadFailed,   // a READ was refused (sfc()), the answer did not come in time (sfc 0), or
+                   // the READ showed flow state 010 (pc_adapter_attached(), sfc 0)
     kBadRecord,    // a READ record that is no valid block, or blocks out of sequence
   };
 
@@ -56,6 +57,11 @@ class Exchange {
   bool outstanding() const noexcept { return outstanding_; }
   std::span<const std::uint8_t> answer() const noexcept { return answer_; }
   std::uint16_t sfc() const noexcept { return sfc_; }
+  // A READ answered with flow state 010, "PC adapter attached" ([RS4 manual §5.2.1], table
+  // 5.2-2): the adapter ignores WRITEs and answers nothing while it lasts ([RS4 manual §6.5] "Es
+  // findet keine Kommunikation statt, solange der optische PC-Adapter am RS4/PROFIsafe
+  // angebracht ist"), so the exchange ends at once instead of polling to the answer timeout.
+  bool pc_adapter_attached() const noexcept { return pc_adapter_; }
 
  private:
   void on_write_result(const RecordResult& result, dp::TimePoint now);
@@ -72,6 +78,7 @@ class Exchange {
   std::uint16_t next_block_ = 0;
   std::uint8_t expected_ = 0;
   std::uint16_t sfc_ = 0;
+  bool pc_adapter_ = false;
 };
 
 }  // namespace rs4sim::proxy

@@ -1,4 +1,4 @@
-// The position map of docs/proxy.md ([RS4 manual §6.5], ERROR_NUMBER_FB).
+// The position map of docs/proxy.md ([RS4 manual §6.4], ERROR_NUMBER_FB).
 #include "proxy/positions.h"
 
 #include <array>
@@ -10,7 +10,7 @@ struct Entry {
   std::string_view name;
   StepPositions at;
 };
-// Indexed by Step. The manual's lists ([RS4 manual §6.5]): write failures 02 04 08 10 11 21
+// Indexed by Step. The manual's lists ([RS4 manual §6.4]): write failures 02 04 08 10 11 21
 // 24 26 27 29 32 33 40 45; read failures 03 05 06 07 12 22 23 28 30 31 34 41 50; bad records
 // 03 05 06 09 12 22 23 28 30 31 34 41; copies 01 25 (load → work) and 13 42 (work → load).
 constexpr std::array<Entry, kStepCount> kMap{{

@@ -1,6 +1,6 @@
 #pragma once
 // The steps of a proxy sync and the manual's error positions they report
-// ([RS4 manual §6.5]: ERROR_NUMBER_FB = 0xPPKK, PP the position 01..50 where the Proxy-FB
+// ([RS4 manual §6.4]: ERROR_NUMBER_FB = 0xPPKK, PP the position 01..50 where the Proxy-FB
 // failed, KK 01 = a write/read/copy system function failed, 02 = bad record content).
 // Each step has the positions the manual lists for its kind of failure; the whole map is
 // the table in docs/proxy.md "Position map".

@@ -1,4 +1,4 @@
-// ProxyScheduler: N syncs at a time per bus, FIFO ([RS4 manual §6.5]).
+// ProxyScheduler: N syncs at a time per bus, FIFO ([RS4 manual §6.4, §6.5]).
 #include "proxy/proxy_scheduler.h"
 
 #include <algorithm>

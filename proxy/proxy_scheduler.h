@@ -1,6 +1,6 @@
 #pragma once
 // ProxyScheduler: the ProxySync machines of one bus, at most N syncs at a time (default 1:
-// [RS4 manual §6.5] advises serialising the proxies of one bus), granted in the order the
+// [RS4 manual §6.4, §6.5] advise serialising the proxies of one bus), granted in the order the
 // slaves asked (a fair FIFO queue; a slave that asks again queues behind the others).
 // Progress per slave for the CLI and the RPC (docs/proxy.md "Scheduler").
 

@@ -39,6 +39,7 @@ ProxySync::ProxySync(ProxySyncConfig config, storage::ParameterArchive& archive)
     : config_(std::move(config)), archive_(archive) {}
 
 bool ProxySync::ready(dp::TimePoint now) const noexcept {
+  if (pc_adapter_) return false;  // nothing reaches the device while bit 3 is 1
   if (abort_pending_) return true;
   if (!enabled_ || !request_) return false;
   if (step_ == Step::kRetryWait) return now >= retry_until_;
@@ -60,7 +61,11 @@ void ProxySync::start(dp::TimePoint now) {
     report_failure(now);
     return;
   }
-  out_ = FbOutputs{};  // [RS4 manual §6.5]: outputs reset when the proxy runs again
+  // [RS4 manual §6.4] "Bei erneutem Bearbeiten des Proxy-FB werden ERROR_NUMBER_FB,
+  // ERROR_CODE_SFC und ERROR_NUMBER_RS4 auf den Wert Null zurückgesetzt": those three only.
+  // CONFIG_SET_TO_DEFAULT "kommt direkt vom Scanner": it keeps the device's last word until
+  // the next answer to 98 or 99 brings a new one.
+  out_.error_number_fb = out_.error_code_sfc = out_.error_number_rs4 = 0;
   out_.fb_busy = true;
   begin_ = {};
   ident_.reset();
@@ -110,7 +115,21 @@ void ProxySync::exchange_finished(dp::TimePoint now) {
   if (status == S::kIdle || status == S::kBusy) return;
   const std::vector<std::uint8_t> answer(exchange_.answer().begin(), exchange_.answer().end());
   const auto sfc = exchange_.sfc();
+  const bool pc_adapter = exchange_.pc_adapter_attached();
   exchange_.reset();
+  if (pc_adapter) {
+    // Flow state 010: the adapter ignored the WRITEs, so no sync is open on the device (one
+    // that runs defers the switch-through, [RS4 manual §5.1.1] bit 3) and nothing is reported
+    // to it; a failure report in progress ends here. The machine stops with the step's READ
+    // position (KK 01, sfc 0) and waits for bit 3 to drop.
+    if (step_ != Step::kBreak && step_ != Step::kEndFailed) {
+      out_.error_number_fb = error_number_fb(step_, FailureKind::kRead);
+      out_.error_code_sfc = 0;
+    }
+    sync_open_ = download_open_ = false;
+    finish(storage::SyncOutcome::kFailed, now);
+    return;
+  }
   if (step_ == Step::kBreak) {
     download_open_ = false;
     report_failure(now);
@@ -121,10 +140,13 @@ void ProxySync::exchange_finished(dp::TimePoint now) {
     // device has rolled back by itself ([RS4 manual §7.1, §7.2]: a failed sync resets it to
     // factory settings; docs/proxy-protocol.md: so does a lost connection), so the FB reports
     // CONFIG_SET_TO_DEFAULT rather than leave the user believing the old set is active.
+    // A failure report the device accepted rolled it back ([docs/proxy-protocol.md]): its flag is
+    // 1 by contract, and a stale 99 answer left by an unreadable 99 success (position 41) must
+    // not say otherwise. Only "not accepted" (no sync was open) leaves the device's own flag.
     out_.config_set_to_default = true;
     if (status == S::kDone) {
       if (auto a = protocol::decode_proxy_end_answer(answer))
-        out_.config_set_to_default = a.value().factory_default;
+        out_.config_set_to_default = a.value().accepted || a.value().factory_default;
     }
     sync_open_ = false;
     finish(storage::SyncOutcome::kFailed, now);
@@ -144,17 +166,18 @@ void ProxySync::exchange_finished(dp::TimePoint now) {
   }
 }
 
-// Stop on error ([RS4 manual §6.5]): the outputs show where, the device is told (DOWNLOAD_BREAK
+// Stop on error ([RS4 manual §6.4]): the outputs show where, the device is told (DOWNLOAD_BREAK
 // when a download is open, then 99 failed), then the machine waits for the next request.
 void ProxySync::fail(FailureKind kind, dp::TimePoint now, std::uint16_t adapter_error,
                      std::uint16_t rs4) {
   out_.error_number_fb = error_number_fb(step_, kind);
   if (rs4 != 0) out_.error_number_rs4 = rs4;
   adapter_error_ = adapter_error;
-  if (background_) {  // after the release: nothing to tell the device
-    finish(storage::SyncOutcome::kFailed, now);
-    return;
-  }
+  // After the release (background verify) the device is told too: [RS4 manual §5.1.1] bit 2 "Tritt
+  // während der Parameterkontrolle ein Fehler auf, wird es wieder auf 1 gesetzt". Its `99 01`
+  // rolls the device back like any failed sync (OSSD bit 0, Proxy-Request, reason retry), and the
+  // retry downloads the stored set [docs/proxy-protocol.md].
+  if (background_) sync_open_ = true;
   report_failure(now);
 }
 

@@ -24,6 +24,7 @@
 namespace rs4sim::proxy {
 
 inline constexpr std::uint8_t kProxyRequestBit = 0x04;  // input byte bit 2 ([RS4 manual §5.1.1])
+inline constexpr std::uint8_t kRs232ActiveBit = 0x08;   // input byte bit 3 ([RS4 manual §5.1.1])
 
 // What the proxy records with every version it stores (docs/storage.md "What maintenance
 // records"): who runs it and where, the station's site and line, and whether an upload of the
@@ -51,7 +52,7 @@ struct ProxySyncConfig {
 // The archive timestamp of a machine time point.
 storage::Timestamp wall_time(const ProxySyncConfig& config, dp::TimePoint now) noexcept;
 
-// The FB outputs ([RS4 manual §6.5]).
+// The FB outputs ([RS4 manual §6.4]).
 struct FbOutputs {
   bool fb_busy = false;
   bool config_set_to_default = false;
@@ -75,7 +76,13 @@ class ProxySync {
   ProxySync(ProxySyncConfig config, storage::ParameterArchive& archive);
 
   // ---- inputs
-  void set_input_byte(std::uint8_t byte) noexcept { request_ = (byte & kProxyRequestBit) != 0; }
+  // Bit 2 Proxy-Request; bit 3 "RS232 aktiv": while the PC adapter is attached no sync starts
+  // ([RS4 manual §6.5] "Es findet keine Kommunikation statt, solange der optische PC-Adapter am
+  // RS4/PROFIsafe angebracht ist").
+  void set_input_byte(std::uint8_t byte) noexcept {
+    request_ = (byte & kProxyRequestBit) != 0;
+    pc_adapter_ = (byte & kRs232ActiveBit) != 0;
+  }
   // The FB runs only when enabled; a running sync is finished (docs/proxy.md).
   void set_proxy_enable(bool enabled) noexcept { enabled_ = enabled; }
   void on_record_result(const RecordResult& result, dp::TimePoint now);
@@ -166,6 +173,7 @@ class ProxySync {
   std::size_t chunk_count_ = 0;
   std::size_t chunk_size_ = 0;
   bool sync_open_ = false;
+  bool pc_adapter_ = false;  // input bit 3: the PC adapter is switched through
   bool download_open_ = false;
   bool downloaded_ = false;
   bool verify_after_end_ = false;

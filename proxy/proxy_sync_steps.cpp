@@ -95,6 +95,9 @@ void ProxySync::on_begin(std::span<const std::uint8_t> answer, dp::TimePoint now
     fail(FailureKind::kBadRecord, now);
     return;
   }
+  // [RS4 manual §6.4] CONFIG_SET_TO_DEFAULT "kommt direkt vom Scanner": the flag of every 98
+  // answer (during the retry download of a device that rolled back it reads 1).
+  out_.config_set_to_default = a.value().factory_default;
   if (a.value().reason == protocol::SyncReason::kNone) {
     // Nothing started (a stale Proxy-Request bit): no error, but wait the retry delay.
     sync_open_ = false;

@@ -25,9 +25,20 @@ struct RecordRead {
 };
 using RecordRequest = std::variant<RecordWrite, RecordRead>;
 
-// The outcome of one WRITE or READ. `sfc` is ERROR_CODE_SFC ([RS4 manual §6.5]) for a failed
-// one: Error_Code_1 << 8 | Error_Code_2 of the DPV1 negative response ([IEC 61158-6-3 MSAC_C1]),
-// 0x0000 when no negative response arrived (timeout, slave not in data exchange).
+// ERROR_CODE_SFC is what the FB's SFC returned ([RS4 manual §6.4] "Fehlermeldungen dieser SFCs
+// ... Die Entschlüsselung des SFC-Fehlercodes ist mit dem SIMATIC Referenzhandbuch
+// ‚Systemsoftware für S7-300/400 System- und Standardfunktionen' möglich"): the RET_VAL of SFC 58
+// WR_REC / SFC 59 RD_REC, W#16#80xx [docs/decisions.md#proxy-error-code-sfc].
+inline constexpr std::uint16_t kSfcDpv1 = 0x8000;  // | Error_Code_1 of a DPV1 negative response
+// No response at all: the slave did not answer, or is not in data exchange ("Dezentrale
+// Peripherie nicht verfügbar").
+inline constexpr std::uint16_t kSfcNoResponse = 0x80C5;
+
+// The outcome of one WRITE or READ. `sfc` is ERROR_CODE_SFC for a failed one: W#16#80 with
+// Error_Code_1 of the DPV1 negative response ([IEC 61158-6-3 MSAC_C1]), e.g. 0x80B5 for a state
+// conflict; kSfcNoResponse when no response came (the slave did not answer, or the master could
+// not send: the slave is not in data exchange). An answer the device does not deliver in time
+// is no SFC error (every READ succeeded): the Exchange reports sfc 0.
 struct RecordResult {
   bool ok = false;
   std::vector<std::uint8_t> data;  // READ: the record's bytes
@@ -36,10 +47,14 @@ struct RecordResult {
   static RecordResult success(std::vector<std::uint8_t> bytes = {}) {
     return RecordResult{true, std::move(bytes), 0};
   }
+  // Error_Code_2 is the device's own detail; the RET_VAL has no room for it.
   static RecordResult negative(std::uint8_t error_code_1, std::uint8_t error_code_2) {
-    return RecordResult{false, {}, static_cast<std::uint16_t>((error_code_1 << 8) | error_code_2)};
+    (void)error_code_2;
+    return RecordResult{false, {}, static_cast<std::uint16_t>(kSfcDpv1 | error_code_1)};
   }
-  static RecordResult no_response() { return RecordResult{false, {}, 0}; }
+  static RecordResult no_response(std::uint16_t sfc = kSfcNoResponse) {
+    return RecordResult{false, {}, sfc};
+  }
 };
 
 }  // namespace rs4sim::proxy

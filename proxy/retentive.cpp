@@ -1,4 +1,4 @@
-// The retentive record of docs/proxy.md ([RS4 manual §6.5] "34 retentive bytes").
+// The retentive record of docs/proxy.md ([RS4 manual §6.4] "34 retentive bytes").
 #include "proxy/retentive.h"
 
 #include "storage/crc32.h"

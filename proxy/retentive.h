@@ -1,5 +1,5 @@
 #pragma once
-// The Proxy-FB's retentive state ([RS4 manual §6.5]: "34 retentive bytes" behind
+// The Proxy-FB's retentive state ([RS4 manual §6.4]: "34 retentive bytes" behind
 // START_ADDRESS_REM_MARKER), rs4sim's version: a fixed 24-byte record the owner persists
 // (a file, the archive, …) whenever it changes, so that a restart mid-sync fails safely
 // (docs/proxy.md "Retentive record"). All values high byte first:

@@ -1,6 +1,6 @@
 #pragma once
 // The Proxy service of rs4sim.v1 (docs/rpc.md "Proxy"): the Proxy-FB of every RS4 a master
-// serves ([RS4 manual §6.5]) and a progress stream of its syncs. The scheduler belongs to
+// serves ([RS4 manual §6.4]) and a progress stream of its syncs. The scheduler belongs to
 // the loop thread: status is read there (through the Executor), and the loop publishes each
 // change into a ProxyFeed, which hands it to the streams.
 //

@@ -59,7 +59,7 @@ class ParameterArchive {
                                                      std::size_t limit) = 0;
 
   // The proxy's retentive state of the station at `station` (the Proxy-FB keeps 34 retentive
-  // bytes, [RS4 manual §6.5]): an opaque record of at most kMaxProxyStateSize bytes, replaced
+  // bytes, [RS4 manual §6.4]): an opaque record of at most kMaxProxyStateSize bytes, replaced
   // on every save, so a restarted proxy resumes or fails safely. Not part of an export.
   virtual Result<void> save_proxy_state(const StationKey& station,
                                         std::span<const std::uint8_t> state, Timestamp at) = 0;

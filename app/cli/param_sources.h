@@ -53,7 +53,8 @@ Operand read_operand(const std::string& operand, const std::string& archive);
 // What one side does not know is taken from the other, so that the diff shows only facts.
 void align_unknown(Operand& a, Operand& b);
 
-// --password: up to 8 printable ASCII characters, padded with 0xFF ([RS4 manual §6.4]);
+// --password: up to 8 printable ASCII characters, padded with 0xFF (the set layout of
+// docs/rs4-scanner.md; the manual leaves the password format to RS4soft, [RS4 manual §3]);
 // UsageError otherwise.
 rs4::scanner::Password password_from_text(std::string_view text);
 // A set file accepts the write as the RS4's RS232 port does ([docs/rs232.md] "Password"): a

@@ -303,7 +303,7 @@ bool parameter_change(Demo& d, storage::ParameterArchive& archive) {
   auto& adapter = s.device().adapter();
   auto& rs4 = s.device().scanner();
   auto set = rs4.parameters();
-  // T = 80 ms + n·40 ms [RS4 manual §7.3]: 160 ms, or 200 ms if an earlier run left 160 ms.
+  // T = 80 ms + n·40 ms [RS4 manual §6.6]: 160 ms, or 200 ms if an earlier run left 160 ms.
   set.response_steps = set.response_steps == 2 ? 3 : 2;
   d.response_ms_ = 80 + 40 * set.response_steps;
   adapter.attach_pc_adapter(s.now());

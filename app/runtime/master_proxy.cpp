@@ -24,6 +24,8 @@ proxy::RecordResult to_record_result(const dp::master::Dpv1Result& r) {
     return proxy::RecordResult::negative(dp::pdu::to_wire(r.negative->error_code_1),
                                          r.negative->error_code_2);
   }
+  // No response (a timeout, the slave not or no longer in data exchange): W#16#80C5
+  // [docs/decisions.md#proxy-error-code-sfc].
   return proxy::RecordResult::no_response();
 }
 
@@ -119,6 +121,7 @@ void ProxyPlugin::on_cycle(MasterReport& report, dp::TimePoint now) {
   while (!refused_.empty()) {
     const std::uint8_t address = refused_.front();
     refused_.pop_front();
+    // refused by the master at once (the slave is not in data exchange): W#16#80C5
     driver_.on_record_result(address, proxy::RecordResult::no_response(), now);
   }
   driver_.poll(now);

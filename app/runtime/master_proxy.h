@@ -22,13 +22,13 @@ namespace rs4sim::app {
 // The wall-clock time of dp::TimePoint{} when the clock reads `now` (ProxySyncConfig::
 // wall_at_zero: the archive's timestamps; the cores read no clock).
 storage::Timestamp wall_at_zero(dp::TimePoint now);
-// A DPV1 outcome as the proxy sees it: ERROR_CODE_SFC from the negative response, 0 when
-// none came ([RS4 manual §6.5], docs/proxy.md).
+// A DPV1 outcome as the proxy sees it, with ERROR_CODE_SFC as the S7 RET_VAL W#16#80xx
+// ([RS4 manual §6.4], proxy/record.h, [docs/decisions.md#proxy-error-code-sfc]).
 proxy::RecordResult to_record_result(const dp::master::Dpv1Result& r);
 
 struct ProxyPluginOptions {
   std::string bus = "default";   // the archive's bus name (as `rs4sim archive --bus`)
-  std::size_t max_parallel = 1;  // N syncs at a time per bus ([RS4 manual §6.5]: one)
+  std::size_t max_parallel = 1;  // N syncs at a time per bus ([RS4 manual §6.4, §6.5]: one)
   // --user/--site/--line/--skip-identical: what every stored version records.
   proxy::Recording recording{};
   // What --archive named: the Archive service's WatchVersions opens its own feed on it.

@@ -3,7 +3,7 @@
 // passes faithfully, is mutated, refused, lost or replaced by arbitrary bytes; sometimes the
 // machine is "restarted" through its retentive record. Must never crash, and:
 //   - FB_BUSY is set exactly while the machine is active;
-//   - ERROR_NUMBER_FB is 0 or one of the codes the manual lists ([RS4 manual §6.5]);
+//   - ERROR_NUMBER_FB is 0 or one of the codes the manual lists ([RS4 manual §6.4]);
 //   - when the device releases its OSSD (99 success) and the archive has a set, the device
 //     holds exactly that set (never a release with an unverified set).
 #include "proxy/proxy_sync.h"

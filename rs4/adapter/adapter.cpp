@@ -121,6 +121,7 @@ void Adapter::power_off(TimePoint now) {
   rs4_up_ = false;
   released_ = false;
   proxy_request_ = false;
+  check_after_release_ = false;
   error_active_ = false;
   adapter_error_active_ = false;
   inconsistent_output_.reset();
@@ -128,6 +129,7 @@ void Adapter::power_off(TimePoint now) {
   c1_.clear();
   c2_.clear();
   event_buffer_.clear();
+  track_led(now);
 }
 
 void Adapter::power_cycle(TimePoint now) {
@@ -153,6 +155,7 @@ void Adapter::start_adapter(TimePoint now, bool keep_errors) {
   proxy_enable_known_ = false;
   rs232_through_ = pc_attached_;
   through_pending_ = false;
+  check_after_release_ = false;
   if (rs4_up_ && !pc_attached_) {  // a restarted adapter checks again
     request_sync(proxy_request_ ? proxy_.reason() : protocol::SyncReason::kPowerUp);
   }
@@ -206,6 +209,7 @@ dp::slave::PrmVerdict Adapter::check_parameters(const dp::pdu::SetPrm& prm, Time
   const auto pdu = safety::status_pdu(safety::diagnosis(v.fault));
   if (control_) control_->set_device_diagnosis(pdu, !v.ok(), false);
   prm_refused_ = !v.ok();
+  track_led(now);  // a refused block: slow blink from now
   if (!v.ok()) {
     ++counters_.prm_refused;
     return dp::slave::PrmVerdict::kPrmFault;
@@ -302,6 +306,21 @@ LedState Adapter::led() const noexcept {
   if (init_end_ || link_down_until_) return LedState::kSteadyInit;
   if (prm_refused_) return LedState::kSlowBlink;
   return connected_ ? LedState::kOffConnected : LedState::kFastBlink;
+}
+
+// Called wherever a cause of led() changes (refresh_input follows every such path, Set_Prm and
+// power-off call it themselves).
+void Adapter::track_led(TimePoint now) noexcept {
+  const auto s = led();
+  if (s == led_state_) return;
+  led_state_ = s;
+  led_since_ = now;
+}
+
+bool Adapter::led_lit(TimePoint now) const noexcept {
+  const auto s = led();
+  // A state not yet tracked began now (cannot happen through the public calls; safe anyway).
+  return adapter::led_lit(s, s == led_state_ ? now - led_since_ : Duration::zero());
 }
 
 ProxyPhase Adapter::proxy_phase() const noexcept {

@@ -208,6 +208,9 @@ class Adapter final : public dp::slave::SlaveApplication {
   [[nodiscard]] std::uint8_t input_byte() const noexcept { return input_byte_; }
   [[nodiscard]] std::uint8_t output_byte() const noexcept { return output_byte_; }
   [[nodiscard]] LedState led() const noexcept;
+  // Whether the LED is lit at `now`: led_lit(led(), now - the moment the LED entered its state),
+  // so a blink follows led_pattern() from its start ([docs/decisions.md#rs4-led-blink]).
+  [[nodiscard]] bool led_lit(TimePoint now) const noexcept;
   [[nodiscard]] ProxyPhase proxy_phase() const noexcept;
   // The parameter-check gate of [RS4 manual §7.1, §7.2]: true once the OSSD bit may follow the RS4.
   [[nodiscard]] bool released() const noexcept { return released_; }
@@ -276,6 +279,8 @@ class Adapter final : public dp::slave::SlaveApplication {
   void apply_field_pair(std::uint8_t pair, TimePoint now);
   void update_rs4_phase(TimePoint now);
   void refresh_input(TimePoint now);
+  // Input bit 5: an error of the RS4 or of the adapter is present ([RS4 manual §5.1.1]).
+  [[nodiscard]] bool error_present() const noexcept;
   [[nodiscard]] bool ossd_release_allowed(TimePoint now) const noexcept;
   [[nodiscard]] std::uint8_t compose_input_byte(TimePoint now) const noexcept;
   void drive_restart_input(TimePoint now);
@@ -334,6 +339,12 @@ class Adapter final : public dp::slave::SlaveApplication {
   bool pc_attached_ = false;         // reed contact
   bool rs232_through_ = false;       // bit 3: switched through (not during a sync)
   bool through_pending_ = false;     // switch through once the sync's last answer was read
+  // The last sync ended with 99 success: the proxy's background verify may still fail it with
+  // `99 01` ([RS4 manual §5.1.1] bit 2, [docs/proxy-protocol.md] PROFI_CMD_PROXY_END).
+  bool check_after_release_ = false;
+  LedState led_state_ = LedState::kDark;  // the LED's state as last seen by track_led()
+  TimePoint led_since_{};                 // when it entered that state
+  void track_led(TimePoint now) noexcept;
 
   // [RS4 manual §5.1] cyclic
   std::uint8_t input_byte_ = 0;

@@ -185,6 +185,7 @@ void Adapter::follow_rs4_signals(TimePoint now) {
 }
 
 void Adapter::refresh_input(TimePoint now) {
+  track_led(now);
   if (powered_) follow_rs4_signals(now);
   input_byte_ = powered_ ? compose_input_byte(now) : 0;
   fdevice_.set_input(std::span<const std::uint8_t>(&input_byte_, 1));
@@ -196,14 +197,24 @@ void Adapter::refresh_input(TimePoint now) {
 //  - the safety layer exchanges process values (FDevice kRun, no activate_FV),
 //  - the RS4 is operational and the parameter check of [RS4 manual §7.1, §7.2] passed or is not
 //  needed,
-//  - no field pair error, and ≥500 ms passed since a valid number returned,
+//  - no error of bit 5 ([RS4 manual §5.1.1] bit 5 "(OSSD = 0 im Fehlerfall)"): an RS4 fault,
+//    a wrong field pair, inconsistent outputs or a one-shot adapter error until its going
+//    alarm [docs/decisions.md#rs4-error-bit],
+//  - ≥500 ms passed since a valid field pair number returned,
 //  - both OSSDs of the RS4 are on, as the adapter sees them (`response_time` after the RS4).
 bool Adapter::ossd_release_allowed(TimePoint now) const noexcept {
   if (!powered_ || !connected_ || !fdevice_.sends_process_values()) return false;
   if (!rs4_up_ || !released_) return false;
-  if (field_pair_error_) return false;
+  if (error_present()) return false;
   if (field_pair_release_at_ && now < *field_pair_release_at_) return false;
   return seen_.ossd;  // both OSSDs of the RS4 on, as the adapter sees them
+}
+
+// [RS4 manual §5.1.1] bit 5 "Es ist ein Fehler im RS4 oder im PROFIsafe-Adapter aufgetreten".
+bool Adapter::error_present() const noexcept {
+  const auto st = scanner_.status();
+  return st.fault || st.state == scanner::ScannerState::kError || field_pair_error_ ||
+         inconsistent_output_.has_value() || adapter_error_active_;
 }
 
 // The only function that composes the input byte; bit 7 comes from the predicate above.
@@ -212,8 +223,7 @@ std::uint8_t Adapter::compose_input_byte(TimePoint now) const noexcept {
   InputBits bits;
   bits.ossd = ossd_release_allowed(now);
   bits.warning_output_active = seen_.warning_output;
-  bits.error = st.fault || st.state == scanner::ScannerState::kError || field_pair_error_ ||
-               inconsistent_output_.has_value() || adapter_error_active_;
+  bits.error = error_present();
   bits.not_operational = !rs4_up_ || !released_ || !rs4_operational(st.state);
   bits.rs232_active = rs232_through_;
   bits.proxy_request = proxy_request_;

@@ -77,8 +77,8 @@ std::optional<std::vector<std::uint8_t>> Adapter::take_forwarded() {
 // both rings and reported in both fields of the diagnosis alarm.
 // Input bit 5 ([RS4 manual §5.1.1] "an error in the RS4 or in the adapter"): an error with a
 // state (a wrong field pair, inconsistent outputs) sets it while present; a one-shot error
-// (an acyclic telegram, a PROFIsafe PDU, a proxy step) until its going alarm
-// [docs/decisions.md#rs4-error-bit].
+// (an acyclic telegram, a PROFIsafe PDU, a proxy step) until its going alarm; the OSSD bit is 0
+// while bit 5 is 1 ("OSSD = 0 im Fehlerfall") [docs/decisions.md#rs4-error-bit].
 void Adapter::adapter_error(protocol::AdapterError e, TimePoint now) {
   const auto wire = protocol::to_wire(e);
   if (e != protocol::AdapterError::kWrongFieldPair &&

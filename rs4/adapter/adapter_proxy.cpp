@@ -28,6 +28,7 @@ std::error_code Adapter::proxy_sync_started(TimePoint now) {
   if (!powered_) return AdapterApiError::kPoweredOff;
   if (!proxy_request_) return AdapterApiError::kNoSyncRequested;
   proxy_request_ = false;  // [RS4 manual §5.1.1] bit 2: reset when the check begins
+  check_after_release_ = false;
   proxy_.start(scanner_);  // flow state 011 on both channels from now on
   refresh_input(now);
   return {};
@@ -40,6 +41,7 @@ std::error_code Adapter::proxy_sync_succeeded(TimePoint now) {
   // [RS4 manual §7.1, §7.2]: Proxy-Enable 1 → OSSD released after a successful sync. The only
   // place besides Proxy-Enable 0 that grants the release.
   released_ = true;
+  check_after_release_ = true;  // "Die Parameter werden im Hintergrund verifiziert" [RS4 manual §7.1.1]
   through_pending_ = pc_attached_;  // switched through at the next on_time/READ
   refresh_input(now);
   return {};
@@ -89,15 +91,25 @@ void Adapter::proxy_begin(Channel& ch, TimePoint now) {
   ch.answers.push_back(protocol::encode_proxy_begin_answer(a));
 }
 
-// PROFI_CMD_PROXY_END: `99 accepted flags`; accepted 0 when no sync was running.
+// PROFI_CMD_PROXY_END: `99 accepted flags`; accepted 0 when no sync was running. After a
+// release `99 01` is still accepted until the next sync starts: the proxy's background verify
+// failed, and [RS4 manual §5.1.1] bit 2 "Tritt während der Parameterkontrolle ein Fehler auf, wird
+// es wieder auf 1 gesetzt" — the same failure path as a sync (factory settings, Proxy-Request,
+// OSSD bit 0 with Proxy-Enable 1) [docs/proxy-protocol.md].
 void Adapter::proxy_end(const protocol::ProxyEndCommand& end, Channel& ch, TimePoint now) {
   const bool running = proxy_.running();
-  if (running && end.outcome == protocol::ProxyOutcome::kSucceeded) {
+  const bool failed = end.outcome != protocol::ProxyOutcome::kSucceeded;
+  const bool verify_failed = !running && failed && check_after_release_;
+  if (running && !failed) {
     (void)proxy_sync_succeeded(now);
   } else if (running) {
     (void)proxy_sync_failed(now, end.error);
+  } else if (verify_failed) {
+    check_after_release_ = false;
+    fail_sync(end.error, now);
   }
-  ch.answers.push_back(protocol::encode_proxy_end_answer({running, scanner_.factory_settings()}));
+  ch.answers.push_back(protocol::encode_proxy_end_answer(
+      {running || verify_failed, scanner_.factory_settings()}));
 }
 
 // [RS4 manual §5.2] "a user command while the proxy is still syncing aborts the proxy with an

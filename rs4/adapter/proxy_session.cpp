@@ -171,7 +171,7 @@ ProxySession::Answer ProxySession::download_commit(scanner::Scanner& rs4, scanne
   if (!decoded) return refused(TransferStatus::kInvalidSet);
   const auto merged = scanner::merge_download(rs4.parameters(), decoded.value());
   if (scanner::validate(merged)) return refused(TransferStatus::kInvalidSet);
-  // [RS4 manual §5.3.2]: the OSSDs are off while the set changes (configuration mode).
+  // [RS4 manual §7.1.2]: the OSSDs are off while the set changes (configuration mode).
   if (!rs4.enter_configuration(now)) return refused(TransferStatus::kNotOperational);
   const bool applied = static_cast<bool>(rs4.set_parameters(merged, now));
   (void)rs4.leave_configuration(now);

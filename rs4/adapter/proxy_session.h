@@ -12,7 +12,7 @@
 // the device's set size; chunks strictly in order 0..n-1, each of the chunk size (the last
 // one shorter); COMMIT checks size and whole CRC-32, decodes, merges with the device's
 // set (passwords and identity kept, scanner::merge_download), validates and applies it in
-// the scanner's configuration mode (OSSD off while the set changes, [RS4 manual §5.3.2]).
+// the scanner's configuration mode (OSSD off while the set changes, [RS4 manual §7.1.2]).
 // Any refusal leaves the RS4's set unchanged. BREAK rolls the RS4 back to factory settings.
 
 #include "rs4/protocol/adapter_answer.h"

@@ -21,7 +21,7 @@ namespace rs4sim::rs4::device {
 struct Rs4MasterOptions {
   std::uint8_t address = 4;                    // the RS4's station address
   std::chrono::milliseconds dp_watchdog{200};  // Set_Prm WD (base 10 ms)
-  // F_WD_Time unless overridden: the GSD default 10 ms is below the [RS4 manual §6.2, §6.3] sizing
+  // F_WD_Time unless overridden: the GSD default 10 ms is below the [RS4 manual §6.2, §6.6] sizing
   // 2·max(10 ms, t_scan_rec) + 4·Bus_Cycle_Time ([RS4 manual §7.3.1]: > 60 ms in practice).
   std::uint16_t f_wd_time_ms = 150;
   // GSD parameter overrides, e.g. {"F_WD_Time", 150}. F_Dest_Add defaults to

@@ -11,7 +11,7 @@ namespace {
 using json::Value;
 using scanner::ParameterSet;
 
-constexpr std::int64_t kMinResponseMs = 80;  // [RS4 manual §7.3] "minimal 80 ms"
+constexpr std::int64_t kMinResponseMs = 80;  // [RS4 manual §6.6] "minimal 80 ms"
 constexpr std::int64_t kResponseStepMs = 40;
 constexpr std::int64_t kMaxResponseMs =
     kMinResponseMs + kResponseStepMs * scanner::kMaxResponseSteps;
@@ -23,10 +23,10 @@ constexpr ContourLimit kWarningLimit{scanner::kMaxWarningMm,
 void read_response_time(const Value& v, ParameterSet& set) {
   const std::string path = "$.response_time_ms";
   const auto ms = json::integer(v, path, kMinResponseMs, kMaxResponseMs,
-                                "ms (80 ms + n·40 ms [RS4 manual §7.3])");
+                                "ms (80 ms + n·40 ms [RS4 manual §6.6])");
   if ((ms - kMinResponseMs) % kResponseStepMs != 0) {
     json::refuse(DocumentError::kOutOfRange, path,
-                 std::to_string(ms) + " is not 80 + n·40 ms (80, 120, ..., 640) [RS4 manual §7.3]");
+                 std::to_string(ms) + " is not 80 + n·40 ms (80, 120, ..., 640) [RS4 manual §6.6]");
   }
   set.response_steps = static_cast<std::uint8_t>((ms - kMinResponseMs) / kResponseStepMs);
 }

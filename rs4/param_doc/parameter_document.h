@@ -2,9 +2,9 @@
 // The RS4 parameter set as a human-editable JSON document (docs/param.md): the field pairs
 // with their contours (runs of equal distance, 529 values, or a simple shape, see
 // contour_shapes.h), response time, restart mode, permitted field switching, warning output
-// and measurement output ([RS4 manual §2.3, §4.3, §5.1.1, §5.1.2, §5.2.3.4, §7.3]). The
+// and measurement output ([RS4 manual §2.3, §4.3, §5.1.1, §5.1.2, §5.2.3.4, §6.6]). The
 // device identity is shown, read-only; passwords are never written and never read
-// ([RS4 manual §6.4]): a document that names one is refused.
+// ([RS4 manual §7.2.4]): a document that names one is refused.
 
 #include "rs4/param_doc/document_error.h"
 #include "rs4/scanner/parameter_set.h"

@@ -24,7 +24,7 @@ struct LiveSet {
 };
 
 // The device's set, uploaded in the transfer form (identity from IDENTIFY, user passwords
-// empty: they never leave the device, [RS4 manual §6.4]).
+// empty: they never leave the device, [RS4 manual §7.2.4]).
 LiveSet read_live_set(const Exchange& exchange);
 
 // Downloads `set` (transfer form: the device keeps its passwords and identity) and checks the

@@ -8,7 +8,7 @@
 //   CMD | option 1 (0x01: one option byte, state "none") | fields
 // and the RS4 answers with the same CMD, its current option bytes ([RS4 manual §5.2.3]),
 // a status byte and the fields. A status other than kOk is the RS4's error number the
-// proxy reports as ERROR_NUMBER_RS4 ([RS4 manual §6.5]).
+// proxy reports as ERROR_NUMBER_RS4 ([RS4 manual §6.4]).
 //
 //   60 IDENTIFY          → identification: device type, serial number, firmware, format
 //                          version, set size, chunk size, set CRC-32, flags, change counter

@@ -1,7 +1,7 @@
 #pragma once
 // The difference of two RS4 parameter sets in terms of their fields: which options
 // changed (old → new), which user passwords changed (never their values,
-// [RS4 manual §6.4]), the device identity apart, and per field pair and contour the
+// [RS4 manual §7.2.4]), the device identity apart, and per field pair and contour the
 // ranges of consecutive changed segments with the largest change in mm.
 
 #include "rs4/report/parameter_fields.h"

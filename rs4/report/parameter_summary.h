@@ -1,7 +1,7 @@
 #pragma once
 // A short decoded summary of an RS4 parameter set: what the archive stores in its
 // `summary` column (docs/storage.md) and what `rs4sim archive show` prints. Deterministic
-// (one set, one byte string) and without the user passwords ([RS4 manual §6.4]: they
+// (one set, one byte string) and without the user passwords ([RS4 manual §7.2.4]: they
 // belong to the device; the summary never shows them, not even whether they are set).
 
 #include "rs4/scanner/parameter_set.h"

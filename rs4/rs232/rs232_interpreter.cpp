@@ -131,7 +131,7 @@ Rs232Port::Verdict Rs232Port::set_baud(std::span<const std::uint8_t> data, strea
 }
 
 // 0x20: resolution u8, start u16, stop u16 ([RS4 manual §5.2.3.4]) into the parameter set, in the
-// scanner's configuration mode like every change of the set ([RS4 manual §5.3.2]).
+// scanner's configuration mode like every change of the set ([RS4 manual §7.1.2]).
 Rs232Port::Verdict Rs232Port::set_window(std::span<const std::uint8_t> data,
                                          stream::TimePoint now) {
   constexpr auto kCode = byte(Rs232Code::kMeasurementWindow);

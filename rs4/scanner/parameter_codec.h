@@ -35,7 +35,7 @@ std::uint32_t checksum(const ParameterSet& set);
 
 // The transfer form ([docs/proxy-protocol.md]): encode() of the set with the identity and the
 // user passwords zeroed. It is what the proxy uploads, archives and downloads: identity
-// belongs to the device and a download never overwrites the passwords ([RS4 manual §6.4]),
+// belongs to the device and a download never overwrites the passwords ([RS4 manual §7.2.4]),
 // so neither travels. (Zeroed passwords do not validate: a received transfer form is
 // merged with the device's set, merge_download(), before validate().)
 std::vector<std::uint8_t> encode_for_transfer(const ParameterSet& set);

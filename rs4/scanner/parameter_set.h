@@ -2,12 +2,12 @@
 // The RS4 parameter set — EXTENSION ([docs/decisions.md#rs4-extensions]: RS4soft's format is not
 // public; the project defines this set and documents it in docs/rs4-scanner.md).
 // Manual facts it follows: 4 field pairs of protective (≤4 m) + warning field
-// ([RS4 manual §2.3, §2.4]), response time 80 ms + n·40 ms ([RS4 manual §7.3], "minimal 80 ms,
+// ([RS4 manual §2.3, §2.4]), response time 80 ms + n·40 ms ([RS4 manual §6.6], "minimal 80 ms,
 // einstellbar in 40 ms Schritten"), start/restart interlock ([RS4 manual §4.3]), permitted
 // field-pair transitions and the pair allowed at switch-on ([RS4 manual §5.1.2]), warning output
 // assignment ([RS4 manual §5.1.1]), measurement output resolution/start/stop
 // ([RS4 manual §5.2.3.4]), user passwords that a proxy download never overwrites
-// ([RS4 manual §6.4]).
+// ([RS4 manual §7.2.4]).
 
 #include "rs4/scanner/errors.h"
 #include "rs4/scanner/geometry.h"
@@ -102,12 +102,12 @@ std::optional<ValidationIssue> validate(const ParameterSet& set);
          (set.permitted[from - 1U] & (1U << (to - 1U))) != 0;
 }
 
-// Response time T = 80 ms + n·40 ms ([RS4 manual §7.3]) and the number of consecutive violated
+// Response time T = 80 ms + n·40 ms ([RS4 manual §6.6]) and the number of consecutive violated
 // 40 ms scans that switch the OSSDs off (T / 40 ms, docs/rs4-scanner.md "OSSD model").
 std::chrono::milliseconds response_time(const ParameterSet& set);
 std::uint32_t scans_to_switch_off(const ParameterSet& set);
 
-// What a download keeps from the device ([RS4 manual §6.4]: user passwords are never overwritten
+// What a download keeps from the device ([RS4 manual §7.2.4]: user passwords are never overwritten
 // by a proxy download; identity belongs to the device): `incoming` with `device`'s
 // passwords and identity.
 ParameterSet merge_download(const ParameterSet& device, const ParameterSet& incoming);

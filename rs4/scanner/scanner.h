@@ -123,7 +123,7 @@ class Scanner {
   void unknown_command(std::uint8_t code, TimePoint now);
   Scene& edit_scene(TimePoint now);  // edits take effect at the next scan
 
-  // Parametrisation ([RS4 manual §5.3.2]: OSSD off while the set changes). The identity stays the
+  // Parametrisation ([RS4 manual §7.1.2]: OSSD off while the set changes). The identity stays the
   // device's; use merge_download() to keep passwords on a proxy download.
   boost::outcome_v2::std_result<void> enter_configuration(TimePoint now);
   boost::outcome_v2::std_result<void> set_parameters(const ParameterSet& set, TimePoint now);

@@ -153,7 +153,7 @@ void Scanner::update_contamination(TimePoint at) {
   }
 }
 
-// ----- configuration ([RS4 manual §5.3.2]: OSSD off while the RS4's set changes) -----------------
+// ----- configuration ([RS4 manual §7.1.2]: OSSD off while the RS4's set changes) -----------------
 
 boost::outcome_v2::std_result<void> Scanner::enter_configuration(TimePoint now) {
   advance(now);

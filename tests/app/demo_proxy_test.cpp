@@ -3,6 +3,8 @@
 // (Proxy-Request, input bit 2 [RS4 manual §5.1.1]) and the proxy answers on its own, with no
 // call from the story; wait_sync() waits for a sync, bounded on both sides.
 #include "app/demos/demo_proxy.h"
+#include "app/runtime/master_proxy.h"
+#include "dp/master/master_error.h"
 
 #include "rs4/adapter/cyclic_bytes.h"
 #include "storage/sqlite_archive.h"
@@ -87,6 +89,29 @@ TEST_F(DemoProxyTest, ProxyEnableOffLeavesTheRequestUnanswered) {
   seg.run_for(5s);
   EXPECT_EQ(proxy.records(), 0U);
   EXPECT_FALSE(proxy.outputs().config_set_to_default);
+}
+
+// ERROR_CODE_SFC as the S7 RET_VAL of RD_REC/WR_REC ([RS4 manual §6.4]: decoded with the SIMATIC
+// reference): W#16#80 + Error_Code_1 of a negative response, W#16#80C5 without a response
+// [docs/decisions.md#proxy-error-code-sfc].
+TEST(ToRecordResult, SfcIsTheS7ReturnValue) {
+  dp::master::Dpv1Result ok;
+  ok.data = {0x31, 0x04, 0xFF, 0xFF};
+  const auto good = to_record_result(ok);
+  EXPECT_TRUE(good.ok);
+  EXPECT_EQ(good.sfc, 0);
+  dp::master::Dpv1Result refused;
+  refused.error = dp::master::MasterError::kDpv1Negative;
+  refused.negative = dp::pdu::Dpv1Error{dp::pdu::Dpv1Function::kWrite, 0x80,
+                                        dp::pdu::ErrorCode1::kStateConflict, 0x07};
+  const auto neg = to_record_result(refused);
+  EXPECT_FALSE(neg.ok);
+  EXPECT_EQ(neg.sfc, 0x80B5);
+  dp::master::Dpv1Result lost;
+  lost.error = dp::master::MasterError::kDpv1Timeout;
+  EXPECT_EQ(to_record_result(lost).sfc, 0x80C5);
+  lost.error = dp::master::MasterError::kAborted;
+  EXPECT_EQ(to_record_result(lost).sfc, 0x80C5);
 }
 
 }  // namespace

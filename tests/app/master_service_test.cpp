@@ -160,7 +160,7 @@ std::string run_two_with_proxy(std::size_t max_parallel) {
   return out.str();
 }
 
-// Two RS4s ask at once (both boot together): with one sync at a time per bus ([RS4 manual §6.5]
+// Two RS4s ask at once (both boot together): with one sync at a time per bus ([RS4 manual §6.4, §6.5]
 // advice, the default) the second starts only after the first ended; with two they overlap.
 TEST(MasterService, ProxySerialisesTwoScannersAskingAtOnce) {
   const auto serial = run_two_with_proxy(1);

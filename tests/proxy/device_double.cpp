@@ -18,6 +18,7 @@ std::vector<std::uint8_t> DeviceDouble::factory_set() {
 }
 
 RecordResult DeviceDouble::write(std::span<const std::uint8_t> record) {
+  if (pc_adapter) return RecordResult::success();  // ignored without an error
   const auto progress = assembler_.push(record);
   if (!progress) return RecordResult::negative(0xB6, 0x00);  // access denied: a bad block
   if (progress.value().complete) {
@@ -33,6 +34,9 @@ RecordResult DeviceDouble::write(std::span<const std::uint8_t> record) {
 }
 
 RecordResult DeviceDouble::read(std::uint8_t length) {
+  if (pc_adapter) {  // 0 010 000 0: state 010, no payload, not ready
+    return RecordResult::success({0x20, 0x04, 0xFF, 0xFF});
+  }
   const protocol::FlowControl flow{
       true, false, sync_running ? protocol::FlowState::kProxyBusy : protocol::FlowState::kNormal};
   if (reading_.done() && !answers_.empty() && not_ready_left_ == 0) {
@@ -62,16 +66,21 @@ std::vector<std::uint8_t> DeviceDouble::execute(std::span<const std::uint8_t> co
     if (!request) return protocol::encode_proxy_begin_answer({{}, {}, factory});
     request = false;
     sync_running = true;
+    check_after_release = false;
     return protocol::encode_proxy_begin_answer({reason, direction, factory});
   }
   if (const auto* end = std::get_if<protocol::ProxyEndCommand>(&parsed.value())) {
-    const bool accepted = sync_running;
+    // After a release a failure report is still taken (the background verify failed).
+    const bool failed = end->outcome != protocol::ProxyOutcome::kSucceeded;
+    const bool accepted = sync_running || (failed && check_after_release);
     if (accepted) {
       last_end = *end;
       sync_running = false;
-      if (end->outcome == protocol::ProxyOutcome::kSucceeded) {
+      check_after_release = !failed;
+      if (!failed) {
         released = true;
       } else {  // failed: factory settings, ask again
+        released = false;
         rollback();
         request = true;
         reason = protocol::SyncReason::kRetry;

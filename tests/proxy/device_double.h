@@ -33,17 +33,21 @@ class DeviceDouble {
   rs4::protocol::SyncReason reason = rs4::protocol::SyncReason::kPowerUp;
   rs4::protocol::SyncDirection direction = rs4::protocol::SyncDirection::kVerify;
   bool sync_running = false;
-  bool released = false;  // 99 success accepted
+  bool released = false;  // 99 success accepted (until a failure report)
+  bool check_after_release = false;  // 99 success, no sync since: a 99 failed is still taken
   std::optional<rs4::protocol::ProxyEndCommand> last_end;
   bool download_broken = false;
   int not_ready_reads = 0;  // header-only READs before each answer
+  bool pc_adapter = false;  // switched through: WRITEs ignored, READs flow state 010, bit 3
   std::size_t commands = 0;
 
   // Called with each answer before it is queued; may change it.
   std::function<void(std::uint8_t command, std::vector<std::uint8_t>& answer)> answer_hook;
 
   static std::vector<std::uint8_t> factory_set();
-  std::uint8_t input_byte() const noexcept { return request ? 0x04 : 0x00; }
+  std::uint8_t input_byte() const noexcept {
+    return static_cast<std::uint8_t>((request ? 0x04 : 0x00) | (pc_adapter ? 0x08 : 0x00));
+  }
 
   RecordResult write(std::span<const std::uint8_t> record);
   RecordResult read(std::uint8_t length);

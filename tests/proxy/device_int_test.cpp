@@ -60,6 +60,12 @@ struct DeviceSync : ::testing::Test {
       if (stop_at && sync.progress().step == *stop_at) return true;
       if (auto req = sync.take_request(seg.now())) {
         ++records;
+        if (fail_read_at && sync.progress().step == *fail_read_at &&
+            std::holds_alternative<RecordRead>(*req)) {
+          fail_read_at.reset();  // once: the master's READ is refused (read error)
+          sync.on_record_result(RecordResult::negative(0xA0, 0x00), seg.now());
+          continue;
+        }
         sync.on_record_result(exchange(*req), seg.now());
       } else {
         seg.run_for(10ms);
@@ -117,6 +123,7 @@ struct DeviceSync : ::testing::Test {
   }
   ProxySync sync{sync_config(), *archive};
   int records = 0;
+  std::optional<Step> fail_read_at;  // the first READ of this step fails
 };
 
 TEST_F(DeviceSync, FirstCommissioning) {
@@ -157,6 +164,58 @@ TEST_F(DeviceSync, LearnThenNormalStart) {
   EXPECT_EQ(log[2].reason, "background-verify");
   EXPECT_EQ(log[2].outcome, storage::SyncOutcome::kSucceeded);
   EXPECT_TRUE(ossd_after_restart());
+}
+
+// [RS4 manual §5.1.1] bit 2 "Tritt während der Parameterkontrolle ein Fehler auf, wird es wieder
+// auf 1 gesetzt" and [RS4 manual §7.1.2] "Das OSSD-Bit wird davon nicht beeinflusst solange bei
+// dem Parameterabgleich keine Fehler auftreten": the normal start releases at once; when the
+// background verify fails, the device rolls back (OSSD bit 0, Proxy-Request 1) and the retry
+// downloads the stored set, after which the OSSD bit is released again.
+TEST_F(DeviceSync, FailedBackgroundVerifyWithdrawsTheReleaseAndTheRetryRestores) {
+  auto set = rs4::scanner::factory_default();
+  set.response_steps = 6;
+  boot(set);
+  const auto serial = seg.device().scanner().parameters().identity.serial_number;
+  ASSERT_TRUE(store(set, std::to_string(serial)));  // the set and serial the RS4 reports
+  ASSERT_TRUE(run_sync(200s, Step::kVerifyUpload1));
+  ASSERT_EQ(sync.outputs().error_number_fb, 0) << std::hex << sync.outputs().error_number_fb;
+  ASSERT_TRUE(sync.outputs().fb_busy) << "verifying in the background";
+  EXPECT_TRUE(ossd_after_restart()) << "released before the verify";
+  fail_read_at = Step::kVerifyUpload1;
+  ASSERT_TRUE(drive());
+  EXPECT_EQ(sync.outputs().error_number_fb, 0x5001);
+  EXPECT_TRUE(sync.outputs().config_set_to_default);
+  seg.run_for(100ms);
+  const auto in = seg.input_byte();
+  EXPECT_EQ(in & rs4::adapter::kInputOssd, 0) << "release withdrawn";
+  EXPECT_NE(in & rs4::adapter::kInputProxyRequest, 0) << "bit 2 set again";
+  EXPECT_TRUE(seg.device().scanner().factory_settings()) << "rolled back";
+  EXPECT_FALSE(ossd_after_restart());
+  seg.run_for(5s);  // the retry delay
+  ASSERT_TRUE(run_sync());
+  EXPECT_EQ(sync.outputs(), FbOutputs{}) << std::hex << sync.outputs().error_number_fb;
+  EXPECT_EQ(rs4::scanner::encode_for_transfer(seg.device().scanner().parameters()),
+            rs4::scanner::encode_for_transfer(set));
+  EXPECT_TRUE(ossd_after_restart());
+}
+
+// The real device: a PC adapter attached while Proxy-Request is pending sets bit 3 at once
+// ([RS4 manual §5.1.1]), and the FB does not start until it is removed
+// ([RS4 manual §6.5] "Es findet keine Kommunikation statt, solange der optische PC-Adapter ...
+// angebracht ist").
+TEST_F(DeviceSync, PcAdapterAttachedWhileRequestPendingHoldsTheStart) {
+  boot(rs4::scanner::factory_default());
+  seg.device().adapter().attach_pc_adapter(seg.now());
+  seg.run_for(100ms);
+  const auto in = seg.input_byte();
+  ASSERT_NE(in & rs4::adapter::kInputProxyRequest, 0);
+  ASSERT_NE(in & rs4::adapter::kInputRs232Active, 0);
+  EXPECT_FALSE(run_sync()) << "not started while bit 3 is 1";
+  EXPECT_EQ(records, 0);
+  seg.device().adapter().detach_pc_adapter(seg.now());
+  seg.run_for(100ms);
+  ASSERT_TRUE(run_sync());
+  EXPECT_EQ(sync.outputs().error_number_fb, 0) << std::hex << sync.outputs().error_number_fb;
 }
 
 TEST_F(DeviceSync, ExchangeDownloadsTheStoredSet) {
@@ -278,7 +337,7 @@ TEST_F(DeviceSync, LinkLossMidDownloadLeavesFactorySettingsAndTheRetryRestores) 
   seg.bus().inject(lost);
   ASSERT_TRUE(drive(120s));
   EXPECT_EQ(sync.outputs().error_number_fb, 0x2401) << std::hex << sync.outputs().error_number_fb;
-  EXPECT_EQ(sync.outputs().error_code_sfc, 0);  // no negative response: nothing came back
+  EXPECT_EQ(sync.outputs().error_code_sfc, 0x80C5);  // no response: W#16#80C5
   EXPECT_TRUE(sync.outputs().config_set_to_default);
   EXPECT_FALSE(sync.outputs().fb_busy);
   EXPECT_TRUE(seg.device().scanner().factory_settings());
@@ -324,7 +383,7 @@ TEST_F(DeviceSync, PcAdapterAttachedDuringASyncSwitchesThroughAfterwards) {
   EXPECT_EQ(archive->history({"bus", 4}).value().size(), 1U);
 }
 
-// [RS4 manual §6.4]: user passwords are never overwritten by a proxy download.
+// [RS4 manual §7.2.4]: user passwords are never overwritten by a proxy download.
 TEST_F(DeviceSync, UserPasswordsSurviveADownload) {
   ASSERT_TRUE(store(set_with_response_steps(6), "999"));
   auto own = rs4::scanner::factory_default();

@@ -140,11 +140,20 @@ TEST_F(ExchangeTest, ForwardedTelegramIsSkipped) {
   EXPECT_EQ(ex_.status(), Exchange::Status::kDone);
 }
 
+// ERROR_CODE_SFC is the S7 RET_VAL of the failed RD_REC: W#16#80 + Error_Code_1 (0xB5 state
+// conflict → 0x80B5); Error_Code_2 has no place in it [docs/decisions.md#proxy-error-code-sfc].
 TEST_F(ExchangeTest, RefusedReadCarriesTheDpv1ErrorAsSfc) {
   ASSERT_TRUE(ex_.take_request(now_));
   ex_.on_result(RecordResult::negative(0xB5, 0x07), now_);
   EXPECT_EQ(ex_.status(), Exchange::Status::kReadFailed);
-  EXPECT_EQ(ex_.sfc(), 0xB507);
+  EXPECT_EQ(ex_.sfc(), 0x80B5);
+}
+
+TEST_F(ExchangeTest, ReadWithoutResponseIs80C5) {
+  ASSERT_TRUE(ex_.take_request(now_));
+  ex_.on_result(RecordResult::no_response(), now_);
+  EXPECT_EQ(ex_.status(), Exchange::Status::kReadFailed);
+  EXPECT_EQ(ex_.sfc(), 0x80C5);
 }
 
 TEST_F(ExchangeTest, NoAnswerUntilTheDeadlineIsAReadFailure) {

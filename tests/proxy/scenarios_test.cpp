@@ -147,6 +147,41 @@ TEST(Scenario, PendingRestoreIsDownloadedAndMarkedDone) {
   EXPECT_FALSE(current.version.pending_download);
 }
 
+// [RS4 manual §5.1.1] bit 2 "Tritt während der Parameterkontrolle ein Fehler auf, wird es wieder
+// auf 1 gesetzt": a failed background verify after the release is reported to the device with
+// 99 failed (it rolls back and asks again), FB_BUSY drops, the failure is logged, and the retry
+// downloads the stored set.
+TEST(Scenario, FailedBackgroundVerifyTellsTheDeviceAndTheRetryRestores) {
+  SyncHarness h;
+  const auto set = SyncHarness::custom_set(3);
+  h.store(set, "1001");
+  h.device.set = set;
+  h.inject = Injection{Step::kVerifyUpload1, FailureKind::kRead};
+  ASSERT_TRUE(h.run_sync());
+  const auto& out = h.sync->outputs();
+  EXPECT_EQ(out.error_number_fb, 0x5001);
+  EXPECT_FALSE(out.fb_busy);
+  EXPECT_TRUE(out.config_set_to_default) << "the device rolled back";
+  const auto cmds = commands(h.issued);
+  ASSERT_GE(cmds.size(), 6u);
+  EXPECT_EQ(std::count(cmds.begin(), cmds.end(), 0x99), 2) << "99 success, then 99 failed";
+  EXPECT_EQ(cmds.back(), 0x99);
+  ASSERT_TRUE(h.device.last_end);
+  EXPECT_EQ(h.device.last_end->outcome, ProxyOutcome::kFailed);
+  EXPECT_TRUE(h.device.request) << "Proxy-Request again";
+  EXPECT_FALSE(h.device.released);
+  EXPECT_EQ(h.device.reason, SyncReason::kRetry);
+  const auto log = h.real->sync_log(SyncHarness::kStation, 10).value();
+  ASSERT_EQ(log.size(), 2u);
+  EXPECT_EQ(log[1].reason, "background-verify");
+  EXPECT_EQ(log[1].outcome, storage::SyncOutcome::kFailed);
+  h.advance(h.config.retry_delay);
+  ASSERT_TRUE(h.run_sync());
+  EXPECT_EQ(h.sync->outputs(), FbOutputs{});
+  EXPECT_EQ(h.device.set, set);
+  EXPECT_TRUE(h.device.released);
+}
+
 // ---- comparisons: the adapter error sent with 99 failed
 TEST(Comparison, EchoCrcOfAChunkWrongBreaksTheDownload) {
   SyncHarness h;
@@ -299,6 +334,46 @@ TEST(Enable, StaleRequestStartsNothingAndWaits) {
   EXPECT_TRUE(h.sync->ready(h.now + h.config.retry_delay));
 }
 
+// [RS4 manual §6.5] "Es findet keine Kommunikation statt, solange der optische PC-Adapter am
+// RS4/PROFIsafe angebracht ist": with input bit 3 set the FB does not start, even with
+// Proxy-Request pending; it starts once bit 3 drops.
+TEST(Enable, NoSyncWhileThePcAdapterIsAttached) {
+  SyncHarness h;
+  h.device.pc_adapter = true;
+  ASSERT_TRUE(h.device.request);
+  EXPECT_FALSE(h.run_sync());
+  EXPECT_EQ(h.device.commands, 0u);
+  h.device.pc_adapter = false;
+  EXPECT_TRUE(h.run_sync());
+}
+
+// A PC adapter attached after the FB started (it saw Proxy-Request without bit 3): the READ shows
+// flow state 010, and the FB stops at once — not after 2 × 130 s of polling (its READ and the
+// failure report's) — with the READ position, sfc 0, no failure report and the flag kept.
+TEST(Timing, FlowState010EndsTheSyncAtOnce) {
+  SyncHarness h;
+  h.device.pc_adapter = true;
+  h.sync->set_input_byte(0x04);  // the byte of the cycle before bit 3 came
+  h.sync->set_proxy_enable(true);
+  ASSERT_TRUE(h.sync->ready(h.now));
+  const auto start = h.now;
+  h.sync->start(h.now);
+  ASSERT_TRUE(h.resume());
+  const auto& out = h.sync->outputs();
+  EXPECT_EQ(out.error_number_fb, 0x0301) << "98: READ failed";
+  EXPECT_EQ(out.error_code_sfc, 0);
+  EXPECT_FALSE(out.fb_busy);
+  EXPECT_FALSE(out.config_set_to_default);
+  EXPECT_EQ(h.device.commands, 0u) << "the adapter ignored every WRITE";
+  EXPECT_EQ(commands(h.issued), (std::vector<std::uint8_t>{0x98})) << "no failure report";
+  EXPECT_LT(h.now - start, h.config.timing.poll_interval) << "one WRITE and one READ";
+  EXPECT_FALSE(h.sync->ready(h.now + h.config.retry_delay)) << "bit 3 still set";
+  h.device.pc_adapter = false;
+  h.advance(h.config.retry_delay);
+  EXPECT_TRUE(h.run_sync());
+  EXPECT_EQ(h.sync->outputs().error_number_fb, 0);
+}
+
 TEST(Retry, FailedSyncIsRetriedAfterTheDelayAndSucceeds) {
   SyncHarness h;
   const auto set = SyncHarness::custom_set(3);
@@ -314,6 +389,46 @@ TEST(Retry, FailedSyncIsRetriedAfterTheDelayAndSucceeds) {
   EXPECT_EQ(h.sync->outputs(), FbOutputs{});
   EXPECT_EQ(h.device.set, set);
   EXPECT_TRUE(h.device.released);
+}
+
+// [RS4 manual §6.4]: a new run of the FB resets ERROR_NUMBER_FB, ERROR_CODE_SFC and
+// ERROR_NUMBER_RS4, not CONFIG_SET_TO_DEFAULT, which "kommt direkt vom Scanner": a device that
+// rolled back after a failed download still reads 1 during the retry's download, and 0 once the
+// stored set is in (the flag of the 99 answer).
+TEST(Retry, ConfigSetToDefaultStaysOneThroughTheRetryDownload) {
+  SyncHarness h;
+  const auto set = SyncHarness::custom_set(3);
+  h.store(set, "1001");
+  h.device.set = SyncHarness::custom_set(7);  // another set: the stored one goes down
+  h.inject = Injection{Step::kDownloadChunk, FailureKind::kWrite};
+  ASSERT_TRUE(h.run_sync());
+  ASSERT_EQ(h.sync->outputs().error_number_fb, 0x2401);
+  ASSERT_TRUE(h.sync->outputs().config_set_to_default) << "the device rolled back";
+  ASSERT_TRUE(h.device.factory);
+  h.advance(h.config.retry_delay);
+  ASSERT_TRUE(h.run_sync(Step::kDownloadChunk));
+  const auto during = h.sync->outputs();
+  EXPECT_TRUE(during.fb_busy);
+  EXPECT_EQ(during.error_number_fb, 0) << "reset by the new run";
+  EXPECT_EQ(during.error_code_sfc, 0);
+  EXPECT_EQ(during.error_number_rs4, 0);
+  EXPECT_TRUE(during.config_set_to_default) << "the device still holds its factory setting";
+  ASSERT_TRUE(h.resume());
+  EXPECT_EQ(h.sync->outputs(), FbOutputs{}) << "the 99 answer: no longer factory settings";
+  EXPECT_EQ(h.device.set, set);
+}
+
+// A proxy that starts new (no earlier output) learns the flag from the device's 98 answer.
+TEST(Retry, ConfigSetToDefaultComesFromTheBeginAnswer) {
+  SyncHarness h;
+  h.store(SyncHarness::custom_set(3), "1001");
+  h.device.factory = true;
+  h.device.direction = SyncDirection::kDownload;
+  ASSERT_FALSE(h.sync->outputs().config_set_to_default);
+  ASSERT_TRUE(h.run_sync(Step::kDownloadBegin));
+  EXPECT_TRUE(h.sync->outputs().config_set_to_default);
+  ASSERT_TRUE(h.resume());
+  EXPECT_FALSE(h.sync->outputs().config_set_to_default);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // ProxyScheduler: N syncs at a time per bus, FIFO, progress; ProxyDriver glue
-// ([RS4 manual §6.5]: serialise the proxies of one bus).
+// ([RS4 manual §6.4, §6.5]: serialise the proxies of one bus).
 #include "proxy/proxy_driver.h"
 #include "proxy/proxy_scheduler.h"
 #include "rs4/scanner/parameter_codec.h"

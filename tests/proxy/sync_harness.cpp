@@ -64,6 +64,10 @@ bool SyncHarness::run_sync(std::optional<Step> stop_at) {
   sync->set_proxy_enable(enable);
   if (!sync->ready(now)) return false;
   sync->start(now);
+  return resume(stop_at);
+}
+
+bool SyncHarness::resume(std::optional<Step> stop_at) {
   for (int i = 0; i < 200000; ++i) {
     sync->set_input_byte(device.input_byte());
     if (stop_at && sync->progress().step == *stop_at) return true;

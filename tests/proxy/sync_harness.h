@@ -104,6 +104,8 @@ class SyncHarness {
   // Starts a sync when the machine is ready and runs it (and its failure report and
   // background verify) to the end. False when it did not start or got stuck.
   bool run_sync(std::optional<Step> stop_at = std::nullopt);
+  // Goes on with the sync run_sync(stop_at) stopped in (its first record not yet issued).
+  bool resume(std::optional<Step> stop_at = std::nullopt);
   // Advances the clock.
   void advance(dp::Duration d) { now += d; }
 

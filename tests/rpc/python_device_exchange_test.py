@@ -94,7 +94,7 @@ try:
     assert first[-1].outputs.config_set_to_default, first[-1]
     assert rs4.parameter_set()["device"]["serial_number"] == 1001
 
-    # 2. Scenario 2: the response time 80 + 2·40 = 160 ms [RS4 manual §7.3] set on site.
+    # 2. Scenario 2: the response time 80 + 2·40 = 160 ms [RS4 manual §6.6] set on site.
     upload = sync(m, lambda: rs4.set_parameter_set({"format": 1, "response_time_ms": 160}))
     assert directions(upload) == {"upload"}, upload
     site_crc = rs4.parameter_set_crc()

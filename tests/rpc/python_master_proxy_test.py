@@ -2,7 +2,7 @@
 (`rs4sim run`, shortened boot) and the master as two processes over UDP on loopback, a real
 SQLite archive. The Proxy service's progress stream shows the first-commissioning sync
 ([RS4 manual §7.1, §7.2] scenario 1: factory set, empty archive) from its first status to
-its end with CONFIG_SET_TO_DEFAULT; GetStatus shows the FB outputs ([RS4 manual §6.5]).
+its end with CONFIG_SET_TO_DEFAULT; GetStatus shows the FB outputs ([RS4 manual §6.4]).
 Then scenario 2: the PC adapter attached (through the RS4's API), the set changed over the
 RS232 port with `rs4sim param set` and the password, the adapter removed: the stream shows
 the upload byte by byte, and the Archive service on the master's server holds the new set.
@@ -83,7 +83,7 @@ try:
     for step in ("proxy begin", "identify", "identify (repeat)", "proxy end"):
         assert step in steps, (step, steps)
     assert any(s.running and s.outputs.fb_busy for s in statuses), statuses
-    # The end: FB_BUSY off, no error, the factory set reported ([RS4 manual §6.5]).
+    # The end: FB_BUSY off, no error, the factory set reported ([RS4 manual §6.4]).
     assert not last.running and last.step == "idle", last
     assert not last.outputs.fb_busy and last.outputs.config_set_to_default, last
     assert last.outputs.error_number_fb == 0 and last.outputs.error_code_sfc == 0, last

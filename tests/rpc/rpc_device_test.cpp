@@ -287,7 +287,7 @@ TEST_F(RpcDeviceTest, GetParameterSetAnswersTheFactoryDocumentOfANewUnit) {
 }
 
 // The parametrisation tool through the optical PC adapter [RS4 manual §7.2]: the response
-// time 80 + 2·40 = 160 ms [RS4 manual §7.3]; the PC adapter is put back as it was (its
+// time 80 + 2·40 = 160 ms [RS4 manual §6.6]; the PC adapter is put back as it was (its
 // removal raising Proxy-Request is ThePcAdapterSwitchesTheRs232Through…'s).
 TEST_F(RpcDeviceTest, SetParameterSetWritesTheDocumentOverTheSet) {
   boot();
@@ -316,7 +316,7 @@ TEST_F(RpcDeviceTest, SetParameterSetRefusesABadDocumentAndKeepsTheSet) {
   boot();
   const auto before = parameter_set();
   v1::ParameterSetDocument out;
-  // 100 ms is not 80 + n·40 ms [RS4 manual §7.3].
+  // 100 ms is not 80 + n·40 ms [RS4 manual §6.6].
   auto s = set_parameter_set(R"({"format": 1, "response_time_ms": 100})", out);
   EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
   EXPECT_EQ(bad_field(s), "json");

@@ -1,5 +1,5 @@
 // The Proxy service on a real gRPC server on loopback (docs/rpc.md "Proxy"): the FB outputs
-// of [RS4 manual §6.5] field by field, the progress stream's snapshot, changes and end, its
+// of [RS4 manual §6.4] field by field, the progress stream's snapshot, changes and end, its
 // bounded mailbox, and the bad-input statuses. The statuses come from a scheduler stand-in on
 // the loop thread, so every value the client sees is one the test set; the real scheduler
 // behind it is covered end to end by python_master_proxy_test.py (two processes, UDP).

@@ -21,19 +21,53 @@ struct Aligned : ::testing::Test {
   }
 };
 
-// [docs/decisions.md#rs4-error-bit]: a one-shot adapter error (here 0x2A0B, a block number out of
-// sequence) sets input bit 5 until its going alarm; the RS4 keeps protecting (OSSD 1).
-TEST_F(Aligned, AdapterErrorSetsTheErrorBitUntilTheGoingAlarm) {
+// [RS4 manual §5.1.1] bit 5 "(OSSD = 0 im Fehlerfall)" [docs/decisions.md#rs4-error-bit]: a
+// one-shot adapter error (here 0x2A0B, a block number out of sequence) sets bit 5 and clears
+// bit 7 until its going alarm, 500 ms after the error: both sides of the bound.
+TEST_F(Aligned, AdapterErrorSetsTheErrorBitAndOssd0UntilTheGoingAlarm) {
+  const auto at = rig.now;
   rig.write({0x00, 0x05, 0x00, 0x01, 0x90});  // block 1 without block 0: 0x2A0B
-  rig.run(40ms);
   EXPECT_EQ(rig.adapter.error_memory().last_error().uc2_error, 0x2A0B);
-  EXPECT_TRUE(rig.host_input() & kInputError);
-  EXPECT_TRUE(rig.ossd());
-  rig.run(400ms);
-  EXPECT_TRUE(rig.host_input() & kInputError) << "< 500 ms without error";
-  rig.run(200ms);
-  EXPECT_EQ(rig.alarms_of(1, 2), 1u) << "going";
-  EXPECT_FALSE(rig.host_input() & kInputError);
+  rig.advance(0ms);
+  EXPECT_EQ(rig.adapter.input_byte() & (kInputError | kInputOssd), kInputError) << "at once";
+  EXPECT_TRUE(rig.adapter.scanner().ossd()) << "the RS4 itself keeps protecting";
+  rig.advance(499ms);
+  EXPECT_EQ(rig.adapter.input_byte() & (kInputError | kInputOssd), kInputError) << "499 ms";
+  EXPECT_EQ(rig.alarms_of(1, 2), 0u);
+  rig.advance(1ms);
+  EXPECT_EQ(rig.now - at, 500ms);
+  EXPECT_EQ(rig.alarms_of(1, 2), 1u) << "going at 500 ms";
+  EXPECT_EQ(rig.adapter.input_byte() & (kInputError | kInputOssd), kInputOssd) << "500 ms";
+  rig.run(40ms);
+  EXPECT_TRUE(rig.ossd()) << "the F-host sees the OSSD bit again";
+}
+
+// The invariant of [RS4 manual §5.1.1] bit 5 for every source of the error bit: sampled every
+// millisecond, no input byte has bit 5 and bit 7 both set, and each source does set bit 5.
+TEST_F(Aligned, ErrorBitNeverShowsWithOssd1) {
+  const auto watch = [&](const char* what, auto provoke, auto clear) {
+    bool seen_error = false;
+    provoke();
+    for (int ms = 0; ms < 1500; ++ms) {
+      rig.advance(1ms);
+      if (ms % 20 == 0) rig.cycle();
+      const auto b = rig.adapter.input_byte();
+      seen_error |= (b & kInputError) != 0;
+      ASSERT_NE(b & (kInputError | kInputOssd), kInputError | kInputOssd) << what << " " << ms;
+    }
+    EXPECT_TRUE(seen_error) << what;
+    clear();
+    rig.run(1s);
+    rig.restart_pulse();
+    rig.restart_pulse();
+    ASSERT_TRUE(rig.ossd()) << "after " << what;
+  };
+  watch("RS4 fault", [&] {
+    ASSERT_TRUE(rig.adapter.scanner().inject_fault(scanner::Fault::kDazzled, rig.now));
+  }, [&] { ASSERT_TRUE(rig.adapter.scanner().clear_fault(scanner::Fault::kDazzled, rig.now)); });
+  watch("wrong field pair 0x2600", [&] { rig.out_byte = 0x05; }, [&] { rig.out_byte = 0x01; });
+  watch("inconsistent outputs 0x2419", [&] { rig.out_byte = 0x09; }, [&] { rig.out_byte = 0x01; });
+  watch("one-shot 0x2A0B", [&] { rig.write({0x00, 0x05, 0x00, 0x01, 0x90}); }, [] {});
 }
 
 // [RS4 manual §5.3.2]: the going alarm follows ≥500 ms *without* the error; a contamination
@@ -81,15 +115,24 @@ TEST_F(Aligned, UnknownCommandPutsTheRs4IntoItsErrorState) {
 
 
 // [RS4 manual §5.2.2]: PROFI_CMD_RESET does not affect the RS4: the field pair it monitors stays
-// until the PROFIBUS start-up after the reset selects pair 1 ([RS4 manual §5.1.2]).
+// until the PROFIBUS start-up after the reset selects pair 1 ([RS4 manual §5.1.2]). The test
+// first proves the reset took place (link down for 2 s, adapter initialising, counted), and ends
+// with the start-up that does change the pair.
 TEST_F(Aligned, AdapterResetLeavesTheRs4sFieldPair) {
   rig.out_byte = 0x03;
   rig.run(100ms);
   ASSERT_EQ(rig.adapter.scanner().status().first_pair, 3);
+  ASSERT_EQ(rig.adapter.counters().resets, 0u);
   rig.write(Rig::block({0x94}));
+  ASSERT_EQ(rig.adapter.counters().resets, 1u) << "the reset was executed";
+  ASSERT_EQ(rig.adapter.wants_link_down_until(), rig.now + 2s) << "ca. 2 s link down";
+  EXPECT_EQ(rig.adapter.led(), LedState::kSteadyInit) << "the adapter restarts";
+  EXPECT_FALSE(rig.adapter.view().connected);
   EXPECT_EQ(rig.adapter.scanner().status().first_pair, 3) << "the reset itself";
   rig.advance(100ms);
   EXPECT_EQ(rig.adapter.scanner().status().first_pair, 3) << "link down";
+  rig.start(/*power=*/false);  // the master's new start-up after the reset
+  EXPECT_EQ(rig.adapter.scanner().status().first_pair, 1) << "the start-up selects pair 1";
 }
 
 // [docs/decisions.md#rs4-inconsistent-outputs]: reserved output bits 5..3 set → 0x2419 once,
@@ -101,10 +144,13 @@ TEST_F(Aligned, ReservedOutputBitsGive2419AndTheByteIsNotApplied) {
   EXPECT_EQ(rig.adapter.error_memory().last_error().uc2_count, 1) << "reported once";
   EXPECT_EQ(rig.adapter.scanner().status().first_pair, 1);
   EXPECT_TRUE(rig.host_input() & kInputError);
+  EXPECT_FALSE(rig.ossd()) << "[RS4 manual §5.1.1] bit 5: OSSD = 0 while the error lasts";
+  EXPECT_TRUE(rig.adapter.scanner().ossd()) << "the RS4 itself keeps protecting";
   rig.out_byte = 0x02;
   rig.run(100ms);
   EXPECT_EQ(rig.adapter.scanner().status().first_pair, 2);
   EXPECT_FALSE(rig.host_input() & kInputError);
+  EXPECT_TRUE(rig.ossd()) << "the OSSD bit follows the RS4 again";
 }
 
 TEST(AlignedConfig, ReservedBitCheckCanBeSwitchedOff) {
@@ -132,20 +178,59 @@ TEST_F(Aligned, BothChannelsSeeState010WhileThePcAdapterIsAttached) {
   EXPECT_EQ(rig.adapter.error_memory().last_error().uc2_error, 0);
 }
 
-// [RS4 manual §4.4]: fast blink ≈5 Hz; the fault blink is slower (1 Hz, a DECISION); steady
-// states are lit, "connected" and "dark" are not.
-TEST(LedPatterns, BlinkRates) {
-  using namespace std::chrono_literals;
-  EXPECT_EQ(led_pattern(LedState::kFastBlink), (LedPattern{100ms, 200ms}));
-  EXPECT_EQ(led_pattern(LedState::kSlowBlink), (LedPattern{500ms, 1000ms}));
-  EXPECT_TRUE(led_lit(LedState::kFastBlink, 0ms));
-  EXPECT_FALSE(led_lit(LedState::kFastBlink, 150ms));
-  EXPECT_TRUE(led_lit(LedState::kFastBlink, 1250ms));
-  EXPECT_FALSE(led_lit(LedState::kSlowBlink, 700ms));
-  EXPECT_TRUE(led_lit(LedState::kSteadyInit, 5s));
-  EXPECT_TRUE(led_lit(LedState::kSteadyFault, 5s));
-  EXPECT_FALSE(led_lit(LedState::kOffConnected, 0ms));
-  EXPECT_FALSE(led_lit(LedState::kDark, 0ms));
+// [RS4 manual §4.4] "Ein schnelles Blinken (ca. 5 Hz)": ready for PROFIBUS once the 2.5 s of
+// steady light are over; the adapter's LED, as `Adapter::led_lit` shows it (and the API's
+// DeviceState.led_lit), is lit 100 ms of every 200 ms from the moment the blink began — both
+// edges of each phase.
+TEST(LedPatterns, FastBlinkFollowsItsPatternFromItsStart) {
+  Rig rig;
+  rig.adapter.power_on(rig.now);
+  EXPECT_TRUE(rig.adapter.led_lit(rig.now));
+  rig.advance(2499ms);
+  EXPECT_EQ(rig.adapter.led(), LedState::kSteadyInit);
+  EXPECT_TRUE(rig.adapter.led_lit(rig.now)) << "steady";
+  rig.advance(1ms);
+  ASSERT_EQ(rig.adapter.led(), LedState::kFastBlink);
+  const auto start = rig.now;
+  const auto lit = [&](std::chrono::milliseconds at) { return rig.adapter.led_lit(start + at); };
+  EXPECT_TRUE(lit(0ms));
+  EXPECT_TRUE(lit(99ms));
+  EXPECT_FALSE(lit(100ms));
+  EXPECT_FALSE(lit(199ms));
+  EXPECT_TRUE(lit(200ms));
+  EXPECT_TRUE(lit(1299ms));
+  EXPECT_FALSE(lit(1300ms));
+  // Connected: off, whatever the phase.
+  rig.advance(150ms);
+  ASSERT_EQ(rig.adapter.check_parameters(set_prm_for(rig.params), rig.now),
+            dp::slave::PrmVerdict::kAccept);
+  ASSERT_EQ(rig.adapter.check_config(kRealConfig, false, rig.now), dp::slave::CfgVerdict::kAccept);
+  rig.adapter.on_state_change(dp::slave::State::kWaitCfg, dp::slave::State::kDataExch,
+                              dp::slave::TransitionReason::kCfgAccepted, rig.now);
+  EXPECT_EQ(rig.adapter.led(), LedState::kOffConnected);
+  EXPECT_FALSE(rig.adapter.led_lit(rig.now));
+  EXPECT_FALSE(rig.adapter.led_lit(rig.now + 50ms));
+}
+
+// The fault blink, "einen Blinktakt kleiner ca. 5Hz" [RS4 manual §4.4], is 500 ms on, 500 ms off
+// [docs/decisions.md#rs4-led-blink], starting lit when the F-parameters are refused (here a
+// wrong F_Dest_Add), not in the phase of an earlier blink.
+TEST(LedPatterns, SlowBlinkStartsLitWhenTheParametersAreRefused) {
+  Rig rig(AdapterConfig{}, rs4_fparams(505));
+  rig.adapter.power_on(rig.now);
+  rig.advance(2500ms + 130ms);  // fast blink, 130 ms in: dark in its own phase
+  ASSERT_EQ(rig.adapter.led(), LedState::kFastBlink);
+  ASSERT_FALSE(rig.adapter.led_lit(rig.now));
+  ASSERT_EQ(rig.adapter.check_parameters(set_prm_for(rig.params), rig.now),
+            dp::slave::PrmVerdict::kPrmFault);
+  ASSERT_EQ(rig.adapter.led(), LedState::kSlowBlink);
+  const auto start = rig.now;
+  const auto lit = [&](std::chrono::milliseconds at) { return rig.adapter.led_lit(start + at); };
+  EXPECT_TRUE(lit(0ms));
+  EXPECT_TRUE(lit(499ms));
+  EXPECT_FALSE(lit(500ms));
+  EXPECT_FALSE(lit(999ms));
+  EXPECT_TRUE(lit(1000ms));
 }
 
 // Steps the adapter from deadline to deadline until `done` holds; returns false after 10 s.

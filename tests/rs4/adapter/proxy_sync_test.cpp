@@ -236,6 +236,32 @@ TEST_F(ProxySync, FailedEndResetsToFactoryLogsTheErrorAndRequestsAgain) {
                                                  protocol::SyncDirection::kDownload, true}));
 }
 
+// [RS4 manual §5.1.1] bit 2 "Tritt während der Parameterkontrolle ein Fehler auf, wird es wieder
+// auf 1 gesetzt": after 99 success the adapter still takes a failure report (the proxy's
+// background verify failed) — accepted, factory settings, Proxy-Request, OSSD bit 0 — but only
+// one, and only until the next sync starts; a second success is not accepted.
+TEST_F(ProxySync, FailureReportAfterTheReleaseWithdrawsItUntilTheNextSync) {
+  auto set = scanner::factory_default();
+  set.response_steps = 3;
+  boot(set);
+  begin();
+  EXPECT_EQ(end(true, 0), (protocol::ProxyEndAnswer{true, false}));
+  EXPECT_TRUE(ossd_after_restart());
+  EXPECT_EQ(end(true, 0), (protocol::ProxyEndAnswer{false, false})) << "no second success";
+  EXPECT_EQ(end(false, 0x2B09), (protocol::ProxyEndAnswer{true, true})) << "verify failed";
+  EXPECT_TRUE(rs4().factory_settings());
+  EXPECT_EQ(last_adapter_error(), 0x2B09);
+  ASSERT_TRUE(
+      seg.run_until([&] { return (seg.input_byte() & adapter::kInputProxyRequest) != 0; }, 100ms));
+  EXPECT_FALSE(ossd_after_restart());
+  EXPECT_EQ(end(false, 0), (protocol::ProxyEndAnswer{false, true})) << "taken once";
+  // A new sync closes the window: after its success one report is taken again, not before.
+  EXPECT_EQ(begin(), (protocol::ProxyBeginAnswer{protocol::SyncReason::kRetry,
+                                                 protocol::SyncDirection::kDownload, true}));
+  EXPECT_EQ(end(true, 0), (protocol::ProxyEndAnswer{true, true}));
+  EXPECT_TRUE(ossd_after_restart());
+}
+
 TEST_F(ProxySync, UserCommandDuringTheSyncAbortsItWith0x2B01) {
   boot();
   begin();

@@ -16,7 +16,7 @@ Rs4State site_state() {
   Rs4State s;
   s.set = scanner::factory_default();
   s.set.identity = {0x00054321, 0x0004, 1, 0};
-  s.set.response_steps = 2;  // 160 ms [RS4 manual §7.3]
+  s.set.response_steps = 2;  // 160 ms [RS4 manual §6.6]
   s.set.passwords[0] = {'L', 'E', 'U', 'Z', 'E', 0xFF, 0xFF, 0xFF};
   s.switches = {0x1, 0x2};  // station 18
   return s;

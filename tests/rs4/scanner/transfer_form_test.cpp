@@ -1,6 +1,6 @@
 // The transfer form of a parameter set ([docs/proxy-protocol.md]): encode() with identity and
 // user passwords zeroed, its CRC-32, the scanner's change counter and the factory reset that
-// keeps passwords and identity ([RS4 manual §6.4, §7.1, §7.2]).
+// keeps passwords and identity ([RS4 manual §7.1, §7.2, §7.2.4]).
 #include "rs4/scanner/crc32.h"
 #include "rs4/scanner/parameter_codec.h"
 #include "scanner_test_support.h"
