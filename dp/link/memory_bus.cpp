@@ -164,7 +164,7 @@ void MemoryBus::refresh_deadline(Port& p) {
 }
 
 void MemoryBus::drain(Port& p) {
-  while (auto t = p.station->take_transmit()) transmit(p, *t);
+  while (const fdl::Telegram* t = p.station->next_transmit(tx_scratch_)) transmit(p, *t);
   refresh_deadline(p);
 }
 

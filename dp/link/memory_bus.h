@@ -170,6 +170,7 @@ class MemoryBus {
   TimePoint line_free_{};
   DeadlineTree deadlines_;  // slot = attach order
   std::array<std::uint8_t, fdl::kMaxTelegramSize> encode_buf_{};
+  fdl::Telegram tx_scratch_;  // for stations that hand out copies (Station::next_transmit)
   std::vector<Port*> woken_;  // woke during a bus call: drained when the call returns
   bool in_call_ = false;
   std::shared_ptr<char> alive_;  // wake handlers hold a weak_ptr to it

@@ -45,17 +45,21 @@ SlaveContext Master::context() {
 
 void Master::transmit(const fdl::Telegram& t) {
   ++counters_.telegrams_sent;
+  if (tx_head_ == tx_.size()) {  // all taken: the storage is reused
+    tx_.clear();
+    tx_head_ = 0;
+  }
   tx_.push_back(t);
 }
 
 std::optional<fdl::Telegram> Master::take_transmit() {
   if (tx_head_ == tx_.size()) return std::nullopt;
-  std::optional<fdl::Telegram> t(std::move(tx_[tx_head_++]));
-  if (tx_head_ == tx_.size()) {  // all taken: the storage is reused
-    tx_.clear();
-    tx_head_ = 0;
-  }
-  return t;
+  return std::move(tx_[tx_head_++]);
+}
+
+const fdl::Telegram* Master::next_transmit(fdl::Telegram& /*scratch*/) {
+  if (tx_head_ == tx_.size()) return nullptr;
+  return &tx_[tx_head_++];
 }
 
 void Master::on_malformed_frame(std::error_code why) {

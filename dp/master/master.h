@@ -70,6 +70,7 @@ class Master final : public Station {
   void on_time(TimePoint now) override;
   [[nodiscard]] std::optional<TimePoint> next_deadline() const override;
   std::optional<fdl::Telegram> take_transmit() override;
+  const fdl::Telegram* next_transmit(fdl::Telegram& scratch) override;
   // A frame the link's decoder rejected ([IEC 61158-4-3 frame reception]): counted; a garbled reply
   // is handled like a missing one, by the slot time and a retry with the same FCB
   // ([IEC 61158-4-3 FCB/FCV]).
@@ -137,7 +138,9 @@ class Master final : public Station {
   std::array<std::int16_t, 128> index_{};  // address → slaves_ index, -1 if none
   fdl::FcbInitiator fcb_;
   EventQueue events_;
-  std::vector<fdl::Telegram> tx_;  // tx_[tx_head_..] wait for take_transmit(); reused
+  // tx_[tx_head_..] wait for the link; the storage is reused (cleared by the next transmit()
+  // once all were taken, so a view handed out stays valid until the next call).
+  std::vector<fdl::Telegram> tx_;
   std::size_t tx_head_ = 0;
   MasterPhase phase_;
   OperatingMode mode_ = OperatingMode::kOperate;

@@ -130,7 +130,7 @@ void Slave::handle_request(const fdl::Telegram& t, TimePoint now) {
     verdict = fcb_.on_request(t.sa, t.fc);
     if (verdict == fdl::FcbVerdict::kRepeat && fcb_.stored_reply() != nullptr) {
       ++counters_.repeats_answered;  // [IEC 61158-4-3 FCB/FCV]: resend, do not execute again
-      tx_ = *fcb_.stored_reply();
+      new_reply() = *fcb_.stored_reply();
       return;
     }
   }
@@ -216,10 +216,16 @@ void Slave::on_malformed_frame(std::error_code why) {
 }
 
 std::optional<fdl::Telegram> Slave::take_transmit() {
-  if (!tx_) return std::nullopt;  // the link's second call after each reply
+  if (!tx_ || tx_taken_) return std::nullopt;  // the link's second call after each reply
   std::optional<fdl::Telegram> out(std::move(*tx_));
   tx_.reset();
   return out;
+}
+
+const fdl::Telegram* Slave::next_transmit(fdl::Telegram& /*scratch*/) {
+  if (!tx_ || tx_taken_) return nullptr;  // the link's second call after each reply
+  tx_taken_ = true;
+  return &*tx_;
 }
 
 // ---- timers and transitions ------------------------------------------------------------
@@ -274,13 +280,15 @@ void Slave::enter(State to, TransitionReason why, TimePoint now) {
 
 // ---- replies -----------------------------------------------------------------------------
 
-void Slave::reply_short_ack() {
-  tx_.emplace();
-  tx_->type = FrameType::kShortAck;
+fdl::Telegram& Slave::new_reply() {
+  tx_taken_ = false;
+  return tx_.emplace();
 }
 
+void Slave::reply_short_ack() { new_reply().type = FrameType::kShortAck; }
+
 void Slave::reply_status(const fdl::Telegram& req, ResponseStatus st) {
-  tx_.emplace();
+  new_reply();
   tx_->type = FrameType::kSd1;
   tx_->da = req.sa;
   tx_->sa = address_;
