@@ -205,26 +205,40 @@ void MemoryBus::transmit(Port& from, const fdl::Telegram& t) {
     ev.arrival = arrival_time(from, t, wire.size());
     if (*to == fdl::kBroadcastAddress) {
       for (Port* p : order_) {
-        if (p != &from) schedule(from, p->station->address(), ev.arrival, wire);
+        if (p != &from) schedule(from, p->station->address(), ev.arrival, t, wire);
       }
     } else {
-      ev.fate = schedule(from, *to, ev.arrival, wire);
+      ev.fate = schedule(from, *to, ev.arrival, t, wire);
     }
   }
   for (const auto& observer : observers_) observer(ev);
 }
 
-Fate MemoryBus::schedule(Port& from, std::uint8_t to, TimePoint arrival,
+Fate MemoryBus::schedule(Port& from, std::uint8_t to, TimePoint arrival, const fdl::Telegram& t,
                          std::span<const std::uint8_t> wire) {
-  const std::uint8_t sa = from.station->address();
   if (to >= kMaxStations || !ports_[to]) return Fate::kDelivered;  // nobody listens there
-  if (!faults_.empty() && match_fault(FaultKind::kDrop, sa, to)) {
+  Pending p{arrival, 0, to, 0};
+  if (faults_.empty()) {  // untouched: the telegram travels, the receiver gets what its bytes
+                          // decode to (Decoder::feed_encoded)
+    p.sequence = sequence_++;
+    p.frame = new_frame();
+    Frame& frame = *frames_[p.frame];
+    frame.as_telegram = true;
+    frame.telegram = t;
+    queue_.push_back(p);
+    std::push_heap(queue_.begin(), queue_.end());
+    return Fate::kDelivered;
+  }
+  // With faults injected every frame travels as bytes and is parsed by the receiver.
+  const std::uint8_t sa = from.station->address();
+  if (match_fault(FaultKind::kDrop, sa, to)) {
     ++from.counters.dropped;
     return Fate::kDropped;
   }
   Fate fate = Fate::kDelivered;
-  Pending p{arrival, sequence_++, to, new_frame(wire)};
-  if (const auto f = faults_.empty() ? std::nullopt : match_fault(FaultKind::kCorrupt, sa, to)) {
+  p.sequence = sequence_++;
+  p.frame = new_frame(wire);
+  if (const auto f = match_fault(FaultKind::kCorrupt, sa, to)) {
     Frame& frame = *frames_[p.frame];
     const std::uint32_t bit = f->bit % static_cast<std::uint32_t>(frame.size * 8);
     auto& byte = frame.bytes[bit / 8];
@@ -232,7 +246,7 @@ Fate MemoryBus::schedule(Port& from, std::uint8_t to, TimePoint arrival,
     ++from.counters.corrupted;
     fate = Fate::kCorrupted;
   }
-  if (const auto f = faults_.empty() ? std::nullopt : match_fault(FaultKind::kDelay, sa, to)) {
+  if (const auto f = match_fault(FaultKind::kDelay, sa, to)) {
     p.arrival += f->delay;
     ++from.counters.delayed;
     if (fate == Fate::kDelivered) fate = Fate::kDelayed;
@@ -242,16 +256,20 @@ Fate MemoryBus::schedule(Port& from, std::uint8_t to, TimePoint arrival,
   return fate;
 }
 
-std::uint32_t MemoryBus::new_frame(std::span<const std::uint8_t> bytes) {
-  std::uint32_t i = 0;
+std::uint32_t MemoryBus::new_frame() {
   if (free_frames_.empty()) {
-    i = static_cast<std::uint32_t>(frames_.size());
     frames_.push_back(std::make_unique<Frame>());
-  } else {
-    i = free_frames_.back();
-    free_frames_.pop_back();
+    return static_cast<std::uint32_t>(frames_.size() - 1);
   }
+  const std::uint32_t i = free_frames_.back();
+  free_frames_.pop_back();
+  return i;
+}
+
+std::uint32_t MemoryBus::new_frame(std::span<const std::uint8_t> bytes) {
+  const std::uint32_t i = new_frame();
   Frame& frame = *frames_[i];
+  frame.as_telegram = false;
   frame.size = std::min(bytes.size(), frame.bytes.size());
   std::memcpy(frame.bytes.data(), bytes.data(), frame.size);
   return i;
@@ -298,7 +316,11 @@ void MemoryBus::deliver(const Pending& pending) {
   }
   to.now = clock_.now();
   const Frame& frame = *frames_[pending.frame];
-  to.decoder.feed(std::span<const std::uint8_t>(frame.bytes.data(), frame.size), to);
+  if (frame.as_telegram) {
+    to.decoder.feed_encoded(frame.telegram, to);
+  } else {
+    to.decoder.feed(std::span<const std::uint8_t>(frame.bytes.data(), frame.size), to);
+  }
   to.decoder.idle(to);  // TSYN of idle line follows every frame on this bus
                         // ([IEC 61158-4-3 bus parameters, timing])
   drain(to);
