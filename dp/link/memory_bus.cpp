@@ -354,19 +354,24 @@ void MemoryBus::fire_deadline(Port& p) {
   drain(p);
 }
 
-bool MemoryBus::step() {
+bool MemoryBus::step() { return step_until(TimePoint::max()); }
+
+bool MemoryBus::step_until(TimePoint until) {
   bool stepped = false;
   {
     const InCall call(*this);
-    stepped = step_once();
+    stepped = step_once(until);
   }
   drain_woken();
   return stepped;
 }
 
-bool MemoryBus::step_once() {
+// Processes the earliest event if it lies at or before `until` (one look at the queue and
+// the deadlines, for step() and both run_until()s).
+bool MemoryBus::step_once(TimePoint until) {
   const auto deadline = earliest_deadline();
   if (!queue_.empty() && (!deadline || queue_.front().arrival <= deadline->first)) {
+    if (queue_.front().arrival > until) return false;
     std::pop_heap(queue_.begin(), queue_.end());
     const Pending p = queue_.back();
     queue_.pop_back();
@@ -375,14 +380,15 @@ bool MemoryBus::step_once() {
     free_frames_.push_back(p.frame);
     return true;
   }
-  if (!deadline) return false;
+  if (!deadline || deadline->first > until) return false;
   if (deadline->first > clock_.now()) clock_.set(deadline->first);
   fire_deadline(*deadline->second);
   return true;
 }
 
 void MemoryBus::run_until(TimePoint until) {
-  for (auto t = next_event_time(); t && *t <= until; t = next_event_time()) step();
+  while (step_until(until)) {
+  }
   if (until > clock_.now()) clock_.set(until);
 }
 
@@ -390,13 +396,11 @@ bool MemoryBus::run_until(const std::function<bool()>& done, TimePoint until,
                           const std::function<void()>& after_step) {
   after_step();
   while (!done()) {
-    const auto next = next_event_time();
-    if (!next || *next > until) {
-      run_until(until);
+    if (!step_until(until)) {  // the next event lies after `until`
+      if (until > clock_.now()) clock_.set(until);
       after_step();
       return done();
     }
-    step();
     after_step();
   }
   return true;

@@ -141,7 +141,8 @@ class MemoryBus {
   const Port& port(std::uint8_t address) const;
   void drain(Port& p);
   void on_wake(Port& p);
-  bool step_once();
+  bool step_until(TimePoint until);  // step() if the next event lies at or before `until`
+  bool step_once(TimePoint until);
   void drain_woken();
   void transmit(Port& from, const fdl::Telegram& t);
   std::optional<std::uint8_t> route(Port& from, const fdl::Telegram& t);
