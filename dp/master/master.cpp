@@ -45,6 +45,11 @@ SlaveContext Master::context() {
 
 void Master::transmit(const fdl::Telegram& t) {
   ++counters_.telegrams_sent;
+  queue_copy(t);
+}
+
+void Master::queue_copy(const fdl::Telegram& t) {
+  keep_queued_request();  // stays ahead of `t`
   if (tx_head_ == tx_.size()) {  // all taken: the storage is reused
     tx_.clear();
     tx_head_ = 0;
@@ -52,14 +57,30 @@ void Master::transmit(const fdl::Telegram& t) {
   tx_.push_back(t);
 }
 
+void Master::transmit_request() {
+  ++counters_.telegrams_sent;
+  keep_queued_request();  // (a link that did not drain since the last one)
+  request_queued_ = true;
+}
+
+void Master::keep_queued_request() {
+  if (!request_queued_) return;
+  request_queued_ = false;
+  queue_copy(outstanding_->request.telegram);
+}
+
 std::optional<fdl::Telegram> Master::take_transmit() {
-  if (tx_head_ == tx_.size()) return std::nullopt;
-  return std::move(tx_[tx_head_++]);
+  if (tx_head_ != tx_.size()) return std::move(tx_[tx_head_++]);
+  if (!request_queued_) return std::nullopt;
+  request_queued_ = false;
+  return outstanding_->request.telegram;
 }
 
 const fdl::Telegram* Master::next_transmit(fdl::Telegram& /*scratch*/) {
-  if (tx_head_ == tx_.size()) return nullptr;
-  return &tx_[tx_head_++];
+  if (tx_head_ != tx_.size()) return &tx_[tx_head_++];
+  if (!request_queued_) return nullptr;
+  request_queued_ = false;
+  return &outstanding_->request.telegram;  // kept there until its reply or expiry
 }
 
 void Master::on_malformed_frame(std::error_code why) {
@@ -116,6 +137,7 @@ void Master::on_telegram(const fdl::Telegram& t, TimePoint now) {
     ++counters_.ignored_telegrams;
     return;
   }
+  keep_queued_request();
   outstanding_.reset();
   ++counters_.replies;
   SlaveContext ctx = context();
@@ -123,18 +145,15 @@ void Master::on_telegram(const fdl::Telegram& t, TimePoint now) {
   next_send_ = now + config_.bus.bits(config_.bus.tid1);
 }
 
-void Master::send_request(std::size_t slave, Request&& r, TimePoint now) {
+void Master::send_request(std::size_t slave, TimePoint now) {
   cycle_sent_ = true;
   const BusParameters& b = config_.bus;
-  const TimePoint deadline = now + b.characters(fdl::encoded_size(r.telegram)) + b.bits(b.tsl) +
-                             b.characters(r.max_reply_bytes);
-  // The request moves once, into the slot it is kept in for a retry; the transmit queue
-  // gets the one copy the link takes.
-  Outstanding& o = outstanding_.emplace(Outstanding{});  // empty: an empty telegram moves cheaply
+  Outstanding& o = *outstanding_;
   o.slave = slave;
-  o.request = std::move(r);
-  o.deadline = deadline;
-  transmit(o.request.telegram);
+  o.deadline = now + b.characters(fdl::encoded_size(o.request.telegram)) + b.bits(b.tsl) +
+               b.characters(o.request.max_reply_bytes);
+  o.retries = 0;
+  transmit_request();
 }
 
 void Master::on_slot_expired(TimePoint now) {
@@ -150,9 +169,10 @@ void Master::on_slot_expired(TimePoint now) {
     const BusParameters& b = config_.bus;
     o.deadline = now + b.characters(fdl::encoded_size(o.request.telegram)) + b.bits(b.tsl) +
                  b.characters(o.request.max_reply_bytes);
-    transmit(o.request.telegram);
+    transmit_request();
     return;
   }
+  keep_queued_request();
   outstanding_.reset();
   SlaveContext ctx = context();
   slave.on_no_answer(ctx);
@@ -187,10 +207,13 @@ void Master::run_bus(TimePoint now) {
       turn_open_ = true;
     }
     SlaveContext ctx = context();
-    if (auto r = slave.next_request(ctx, now)) {
-      send_request(cursor_, std::move(*r), now);
+    // The request is built in the slot it is kept in for a retry and sent from there.
+    keep_queued_request();
+    if (slave.next_request(ctx, now, outstanding_.emplace().request)) {
+      send_request(cursor_, now);
       return;
     }
+    outstanding_.reset();
     ++cursor_;
     turn_open_ = false;
   }

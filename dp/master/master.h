@@ -124,7 +124,13 @@ class Master final : public Station {
   [[nodiscard]] const SlaveHandler* find(std::uint8_t address) const;
   SlaveContext context();
   void transmit(const fdl::Telegram& t);
-  void send_request(std::size_t slave, Request&& r, TimePoint now);
+  void queue_copy(const fdl::Telegram& t);
+  // Queues outstanding_'s request itself (handed out from there, no copy).
+  void transmit_request();
+  // Before outstanding_ changes: a queued request not yet taken is copied into tx_.
+  void keep_queued_request();
+  // Sends the request built in outstanding_ to slaves_[slave].
+  void send_request(std::size_t slave, TimePoint now);
   void on_slot_expired(TimePoint now);
   void run_bus(TimePoint now);
   void start_cycle(TimePoint now);
@@ -142,6 +148,7 @@ class Master final : public Station {
   // once all were taken, so a view handed out stays valid until the next call).
   std::vector<fdl::Telegram> tx_;
   std::size_t tx_head_ = 0;
+  bool request_queued_ = false;  // after tx_: outstanding_->request.telegram
   MasterPhase phase_;
   OperatingMode mode_ = OperatingMode::kOperate;
   bool started_ = false;
