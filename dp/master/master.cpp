@@ -66,21 +66,26 @@ void Master::transmit_request() {
 void Master::keep_queued_request() {
   if (!request_queued_) return;
   request_queued_ = false;
-  queue_copy(outstanding_->request.telegram);
+  queue_copy(outstanding_.request.telegram);
+}
+
+Request& Master::begin_outstanding() {
+  outstanding_active_ = true;  // every field is set by next_request() and send_request()
+  return outstanding_.request;
 }
 
 std::optional<fdl::Telegram> Master::take_transmit() {
   if (tx_head_ != tx_.size()) return std::move(tx_[tx_head_++]);
   if (!request_queued_) return std::nullopt;
   request_queued_ = false;
-  return outstanding_->request.telegram;
+  return outstanding_.request.telegram;
 }
 
 const fdl::Telegram* Master::next_transmit(fdl::Telegram& /*scratch*/) {
   if (tx_head_ != tx_.size()) return &tx_[tx_head_++];
   if (!request_queued_) return nullptr;
   request_queued_ = false;
-  return &outstanding_->request.telegram;  // kept there until its reply or expiry
+  return &outstanding_.request.telegram;  // kept there until its reply or expiry
 }
 
 void Master::on_malformed_frame(std::error_code why) {
@@ -91,7 +96,7 @@ void Master::on_malformed_frame(std::error_code why) {
 std::optional<TimePoint> Master::next_deadline() const {
   if (!started_) return TimePoint{};  // run on_time() at once
   if (phase_ == MasterPhase::kListening) return listen_until_;
-  if (outstanding_) return outstanding_->deadline;
+  if (outstanding_active_) return outstanding_.deadline;
   return next_send_;
 }
 
@@ -127,18 +132,18 @@ void Master::on_telegram(const fdl::Telegram& t, TimePoint now) {
     if (started_) listen_until_ = now + config_.bus.token_lost_timeout(config_.address);
     return;  // another active station: keep listening ([IEC 61158-4-3 token, bus start])
   }
-  if (!outstanding_ || t.type == fdl::FrameType::kToken) {
+  if (!outstanding_active_ || t.type == fdl::FrameType::kToken) {
     ++counters_.ignored_telegrams;
     return;
   }
-  SlaveHandler& slave = slaves_[outstanding_->slave];
+  SlaveHandler& slave = slaves_[outstanding_.slave];
   if (t.type != fdl::FrameType::kShortAck &&
       (t.fc.is_request() || t.da != config_.address || t.sa != slave.address())) {
     ++counters_.ignored_telegrams;
     return;
   }
   keep_queued_request();
-  outstanding_.reset();
+  outstanding_active_ = false;
   ++counters_.replies;
   SlaveContext ctx = context();
   slave.on_reply(ctx, Reply::from(t), now);
@@ -148,7 +153,7 @@ void Master::on_telegram(const fdl::Telegram& t, TimePoint now) {
 void Master::send_request(std::size_t slave, TimePoint now) {
   cycle_sent_ = true;
   const BusParameters& b = config_.bus;
-  Outstanding& o = *outstanding_;
+  Outstanding& o = outstanding_;
   o.slave = slave;
   o.deadline = now + b.characters(fdl::encoded_size(o.request.telegram)) + b.bits(b.tsl) +
                b.characters(o.request.max_reply_bytes);
@@ -158,7 +163,7 @@ void Master::send_request(std::size_t slave, TimePoint now) {
 
 void Master::on_slot_expired(TimePoint now) {
   ++counters_.slot_timeouts;
-  Outstanding& o = *outstanding_;
+  Outstanding& o = outstanding_;
   SlaveHandler& slave = slaves_[o.slave];
   const fdl::FrameControl fc = o.request.telegram.fc;
   const bool first_frame = fc.fcb() && !fc.fcv();  // not retried ([IEC 61158-4-3 FCB/FCV])
@@ -173,17 +178,17 @@ void Master::on_slot_expired(TimePoint now) {
     return;
   }
   keep_queued_request();
-  outstanding_.reset();
+  outstanding_active_ = false;
   SlaveContext ctx = context();
   slave.on_no_answer(ctx);
   next_send_ = now;  // the line has been idle for TSL ≥ TSYN
 }
 
 void Master::run_bus(TimePoint now) {
-  if (outstanding_) {
-    if (now < outstanding_->deadline) return;
+  if (outstanding_active_) {
+    if (now < outstanding_.deadline) return;
     on_slot_expired(now);
-    if (outstanding_) return;
+    if (outstanding_active_) return;
   }
   if (now < next_send_) return;
   for (;;) {
@@ -209,11 +214,11 @@ void Master::run_bus(TimePoint now) {
     SlaveContext ctx = context();
     // The request is built in the slot it is kept in for a retry and sent from there.
     keep_queued_request();
-    if (slave.next_request(ctx, now, outstanding_.emplace().request)) {
+    if (slave.next_request(ctx, now, begin_outstanding())) {
       send_request(cursor_, now);
       return;
     }
-    outstanding_.reset();
+    outstanding_active_ = false;
     ++cursor_;
     turn_open_ = false;
   }

@@ -131,6 +131,7 @@ class Master final : public Station {
   void keep_queued_request();
   // Sends the request built in outstanding_ to slaves_[slave].
   void send_request(std::size_t slave, TimePoint now);
+  Request& begin_outstanding();  // marks the slot in use, for next_request() to fill
   void on_slot_expired(TimePoint now);
   void run_bus(TimePoint now);
   void start_cycle(TimePoint now);
@@ -154,7 +155,10 @@ class Master final : public Station {
   bool started_ = false;
   TimePoint listen_until_{};
   unsigned tokens_sent_ = 0;
-  std::optional<Outstanding> outstanding_;
+  // The request waiting for its reply (when outstanding_active_); the slot is reused, so a
+  // request is not constructed (zero-filled) afresh each time.
+  Outstanding outstanding_;
+  bool outstanding_active_ = false;
   TimePoint next_send_{};
   bool in_cycle_ = false;
   std::size_t cursor_ = 0;

@@ -189,7 +189,8 @@ class Slave final : public Station, public SlaveControl {
   std::function<void(const Transition&)> trace_;
   Counters counters_;
   fdl::FcbResponder fcb_;
-  std::optional<fdl::Telegram> tx_;
+  fdl::Telegram tx_;       // the reply, when has_tx_ (the buffer is reused)
+  bool has_tx_ = false;
   bool tx_taken_ = false;  // tx_ was handed out by next_transmit()
 
   // state and parameters
