@@ -42,21 +42,22 @@ std::uint8_t SlaveHandler::alarm_dsap() const {
 bool SlaveHandler::make(Request& out, SlaveContext& ctx, RequestKind kind, fdl::FrameControl fc,
                         std::optional<std::uint8_t> dsap, std::span<const std::uint8_t> data,
                         std::size_t max_reply) const {
-  // DP services: master SSAP 62 (MS0), DPV1 C1: 51 ([IEC 61158-6-3 SAP assignment]); DSAP and SSAP
-  // go together.
-  std::optional<std::uint8_t> ssap;
-  if (dsap) {
-    const bool c1 = kind == RequestKind::kDpv1 || kind == RequestKind::kAlarmAck;
-    ssap = c1 ? pdu::sap::kMasterMsac1 : pdu::sap::kMasterMs0;
-  }
   // Built in place, in the slot the master keeps it in (fdl::make_data_telegram's rules).
   if (data.size() > fdl::kMaxDataUnit) throw std::invalid_argument("fdl: DU longer than 246 bytes");
   fdl::Telegram& t = out.telegram;
   t.da = config_.address;
   t.sa = ctx.master_address;
   t.fc = fc;
-  t.dsap = dsap;
-  t.ssap = ssap;
+  // DP services: master SSAP 62 (MS0), DPV1 C1: 51 ([IEC 61158-6-3 SAP assignment]); DSAP and SSAP
+  // go together.
+  if (dsap) {
+    const bool c1 = kind == RequestKind::kDpv1 || kind == RequestKind::kAlarmAck;
+    t.dsap = *dsap;
+    t.ssap = c1 ? pdu::sap::kMasterMsac1 : pdu::sap::kMasterMs0;
+  } else {
+    t.dsap.reset();
+    t.ssap.reset();
+  }
   t.data.resize(data.size(), boost::container::default_init);
   if (!data.empty()) std::memcpy(t.data.data(), data.data(), data.size());
   t.type = (data.empty() && !dsap) ? fdl::FrameType::kSd1 : fdl::FrameType::kSd2;
