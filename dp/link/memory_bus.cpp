@@ -54,7 +54,11 @@ struct MemoryBus::Port final : fdl::DecoderSink {
   Station* station = nullptr;
   fdl::Decoder decoder;
   StationCounters counters;
-  std::optional<TimePoint> deadline;
+  std::optional<TimePoint> deadline;  // what next_deadline() said last
+  // The deadline tree holds an earlier time for this station than `deadline` (a later
+  // deadline waits until the earlier entry surfaces, earliest_deadline()).
+  bool tree_behind = false;
+  TimePoint::rep tree_key = 0;  // the time the tree holds, while tree_behind
   std::optional<std::uint8_t> last_requester;  // SA of the last request it received
   bool silenced = false;
   TimePoint now{};  // valid during a delivery
@@ -176,8 +180,35 @@ void MemoryBus::drain_woken() {
 void MemoryBus::refresh_deadline(Port& p) {
   const auto d = p.station->next_deadline();
   if (d == p.deadline) return;
+  // A deadline that moves later (a slave's watchdog after each telegram, or none) leaves the
+  // tree's earlier entry in place unless it is the tree's front: the entry is a lower bound,
+  // brought up to date only once it comes to the front, so a deadline that moves again
+  // first costs no tree update. The front entry is always exact, so earliest_deadline() and
+  // its tie-break (the lower slot) are as if every entry were.
+  const bool later = p.deadline && (!d || *d > *p.deadline);
+  if (later || p.tree_behind) {
+    if (!p.tree_behind) {
+      const auto front = deadlines_.earliest();
+      if (!front || front->second != p.slot) {
+        p.tree_behind = true;
+        p.tree_key = p.deadline->time_since_epoch().count();
+      }
+    }
+    if (p.tree_behind && (!d || d->time_since_epoch().count() > p.tree_key)) {
+      p.deadline = d;  // the tree's entry stays strictly earlier: a lower bound
+      return;
+    }
+  }
+  p.tree_behind = false;
   p.deadline = d;
   deadlines_.set(p.slot, d);
+  // The new front may be an entry that is behind: bring it up to date (and the next).
+  for (auto front = deadlines_.earliest(); front && order_[front->second]->tree_behind;
+       front = deadlines_.earliest()) {
+    Port& q = *order_[front->second];
+    q.tree_behind = false;
+    deadlines_.set(q.slot, q.deadline);
+  }
 }
 
 void MemoryBus::drain(Port& p) {
@@ -344,7 +375,7 @@ void MemoryBus::deliver(const Pending& pending) {
 }
 
 std::optional<std::pair<TimePoint, MemoryBus::Port*>> MemoryBus::earliest_deadline() const {
-  const auto e = deadlines_.earliest();
+  const auto e = deadlines_.earliest();  // exact: refresh_deadline() keeps the front up to date
   if (!e) return std::nullopt;
   return std::pair{e->first, order_[e->second]};
 }
