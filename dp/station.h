@@ -5,7 +5,8 @@
 // owns the protocol. The link:
 //   1. decodes received bytes into telegrams (fdl::Decoder) and calls on_telegram();
 //   2. calls on_time() when the station's next_deadline() has passed;
-//   3. after either call, drains take_transmit() and puts the telegrams on the wire;
+//   3. after either call, drains next_transmit() (or take_transmit()) and puts the telegrams
+//      on the wire;
 //   4. reports frames its decoder rejected through on_malformed_frame();
 //   5. installs a wake handler (set_wake_handler): a core whose transmit queue or
 //      next_deadline() changed outside on_telegram()/on_time() (an application request,
@@ -41,6 +42,18 @@ class Station {
 
   // The next telegram to send, if any. The link calls this until it returns nullopt.
   virtual std::optional<fdl::Telegram> take_transmit() = 0;
+
+  // The same sequence as take_transmit(), handed out as a view instead of a copy: the next
+  // telegram to send, nullptr when there is none (more). The telegram stays valid until the
+  // next call on this station. A core that keeps its telegrams overrides this and hands out
+  // its own storage (no copy per telegram on either side); the default moves take_transmit()
+  // into `scratch`, which the link owns. A link drains with one of the two, not both.
+  virtual const fdl::Telegram* next_transmit(fdl::Telegram& scratch) {
+    auto t = take_transmit();
+    if (!t) return nullptr;
+    scratch = std::move(*t);
+    return &scratch;
+  }
 
   // The link's decoder rejected a frame under the receiver checks
   // ([IEC 61158-4-3 frame reception]): the station counts it (a slave shows it in its counters).

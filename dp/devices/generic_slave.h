@@ -28,6 +28,9 @@ class GenericSlave final : public Station {
     return slave_.next_deadline();
   }
   std::optional<fdl::Telegram> take_transmit() override { return slave_.take_transmit(); }
+  const fdl::Telegram* next_transmit(fdl::Telegram& scratch) override {
+    return slave_.next_transmit(scratch);
+  }
   void on_malformed_frame(std::error_code why) override { slave_.on_malformed_frame(why); }
   [[nodiscard]] std::uint16_t min_tsdr_bits() const override { return slave_.min_tsdr_bits(); }
 

@@ -48,6 +48,16 @@ class Decoder {
   // Feeds received bytes; delivers every complete telegram and every error to `sink`.
   void feed(std::span<const std::uint8_t> bytes, DecoderSink& sink);
 
+  // Feeds the frame fdl::encode(t) would give, for a link that encoded `t` itself and knows
+  // nothing changed the bytes since (the memory bus, for a frame no fault touched): the sink
+  // gets exactly what feed() of those bytes would give, and the statistics count the same.
+  // When `t` decodes as itself (decodes_as_itself) and no partial frame is pending, that is
+  // `t`, delivered without parsing the bytes again; otherwise the bytes are encoded here and
+  // go through feed(), so every receiver check that encode() does not make (the FC code, a
+  // short acknowledgement or token carrying other fields) still runs. Precondition: `t`
+  // can be encoded (the link encoded it before; encode() throws otherwise).
+  void feed_encoded(const Telegram& t, DecoderSink& sink);
+
   // The line has been idle for ≥ TSYN ([IEC 61158-4-3 bus parameters, timing]): a partial frame is
   // reported as kTruncated and dropped. Links with idle detection call this; others never need to.
   void idle(DecoderSink& sink);
@@ -77,6 +87,12 @@ class Decoder {
   Telegram out_;
   DecoderStats stats_;
 };
+
+// True when decoding fdl::encode(t) gives one telegram equal to `t` (Decoder::feed_encoded's
+// fast path): the receiver checks of [IEC 61158-4-3 frame reception] that encode() does not
+// make pass (the FC is a defined request or response code), and a short acknowledgement or
+// token carries nothing the wire drops. Precondition: `t` can be encoded.
+bool decodes_as_itself(const Telegram& t);
 
 // Decodes one complete frame (exactly SD…ED, or E5, or SD4) into `out`. For tests, tools
 // and the fuzzer's round-trip check; links use Decoder.

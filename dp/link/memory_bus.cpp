@@ -15,6 +15,23 @@ namespace {
 // simulated time; after this many calls at one instant the bus reports the faulty station.
 constexpr std::uint32_t kMaxCallsPerInstant = 10'000;
 
+// `dst = src` without static_vector's library memmove for the DU: a cyclic DU is a few bytes.
+void copy_telegram(fdl::Telegram& dst, const fdl::Telegram& src) {
+  dst.type = src.type;
+  dst.da = src.da;
+  dst.sa = src.sa;
+  dst.fc = src.fc;
+  dst.dsap = src.dsap;
+  dst.ssap = src.ssap;
+  const std::size_t n = src.data.size();
+  dst.data.resize(n, boost::container::default_init);
+  if (n > 16) {
+    std::memcpy(dst.data.data(), src.data.data(), n);
+  } else {
+    for (std::size_t i = 0; i < n; ++i) dst.data[i] = src.data[i];
+  }
+}
+
 bool is_request(const fdl::Telegram& t) {
   return t.type == fdl::FrameType::kToken ||
          (t.type != fdl::FrameType::kShortAck && t.fc.is_request());
@@ -37,7 +54,11 @@ struct MemoryBus::Port final : fdl::DecoderSink {
   Station* station = nullptr;
   fdl::Decoder decoder;
   StationCounters counters;
-  std::optional<TimePoint> deadline;
+  std::optional<TimePoint> deadline;  // what next_deadline() said last
+  // The deadline tree holds an earlier time for this station than `deadline` (a later
+  // deadline waits until the earlier entry surfaces, earliest_deadline()).
+  bool tree_behind = false;
+  TimePoint::rep tree_key = 0;  // the time the tree holds, while tree_behind
   std::optional<std::uint8_t> last_requester;  // SA of the last request it received
   bool silenced = false;
   TimePoint now{};  // valid during a delivery
@@ -159,12 +180,39 @@ void MemoryBus::drain_woken() {
 void MemoryBus::refresh_deadline(Port& p) {
   const auto d = p.station->next_deadline();
   if (d == p.deadline) return;
+  // A deadline that moves later (a slave's watchdog after each telegram, or none) leaves the
+  // tree's earlier entry in place unless it is the tree's front: the entry is a lower bound,
+  // brought up to date only once it comes to the front, so a deadline that moves again
+  // first costs no tree update. The front entry is always exact, so earliest_deadline() and
+  // its tie-break (the lower slot) are as if every entry were.
+  const bool later = p.deadline && (!d || *d > *p.deadline);
+  if (later || p.tree_behind) {
+    if (!p.tree_behind) {
+      const auto front = deadlines_.earliest();
+      if (!front || front->second != p.slot) {
+        p.tree_behind = true;
+        p.tree_key = p.deadline->time_since_epoch().count();
+      }
+    }
+    if (p.tree_behind && (!d || d->time_since_epoch().count() > p.tree_key)) {
+      p.deadline = d;  // the tree's entry stays strictly earlier: a lower bound
+      return;
+    }
+  }
+  p.tree_behind = false;
   p.deadline = d;
   deadlines_.set(p.slot, d);
+  // The new front may be an entry that is behind: bring it up to date (and the next).
+  for (auto front = deadlines_.earliest(); front && order_[front->second]->tree_behind;
+       front = deadlines_.earliest()) {
+    Port& q = *order_[front->second];
+    q.tree_behind = false;
+    deadlines_.set(q.slot, q.deadline);
+  }
 }
 
 void MemoryBus::drain(Port& p) {
-  while (auto t = p.station->take_transmit()) transmit(p, *t);
+  while (const fdl::Telegram* t = p.station->next_transmit(tx_scratch_)) transmit(p, *t);
   refresh_deadline(p);
 }
 
@@ -205,26 +253,40 @@ void MemoryBus::transmit(Port& from, const fdl::Telegram& t) {
     ev.arrival = arrival_time(from, t, wire.size());
     if (*to == fdl::kBroadcastAddress) {
       for (Port* p : order_) {
-        if (p != &from) schedule(from, p->station->address(), ev.arrival, wire);
+        if (p != &from) schedule(from, p->station->address(), ev.arrival, t, wire);
       }
     } else {
-      ev.fate = schedule(from, *to, ev.arrival, wire);
+      ev.fate = schedule(from, *to, ev.arrival, t, wire);
     }
   }
   for (const auto& observer : observers_) observer(ev);
 }
 
-Fate MemoryBus::schedule(Port& from, std::uint8_t to, TimePoint arrival,
+Fate MemoryBus::schedule(Port& from, std::uint8_t to, TimePoint arrival, const fdl::Telegram& t,
                          std::span<const std::uint8_t> wire) {
-  const std::uint8_t sa = from.station->address();
   if (to >= kMaxStations || !ports_[to]) return Fate::kDelivered;  // nobody listens there
-  if (!faults_.empty() && match_fault(FaultKind::kDrop, sa, to)) {
+  Pending p{arrival, 0, to, 0};
+  if (faults_.empty()) {  // untouched: the telegram travels, the receiver gets what its bytes
+                          // decode to (Decoder::feed_encoded)
+    p.sequence = sequence_++;
+    p.frame = new_frame();
+    Frame& frame = *frames_[p.frame];
+    frame.as_telegram = true;
+    copy_telegram(frame.telegram, t);
+    queue_.push_back(p);
+    std::push_heap(queue_.begin(), queue_.end());
+    return Fate::kDelivered;
+  }
+  // With faults injected every frame travels as bytes and is parsed by the receiver.
+  const std::uint8_t sa = from.station->address();
+  if (match_fault(FaultKind::kDrop, sa, to)) {
     ++from.counters.dropped;
     return Fate::kDropped;
   }
   Fate fate = Fate::kDelivered;
-  Pending p{arrival, sequence_++, to, new_frame(wire)};
-  if (const auto f = faults_.empty() ? std::nullopt : match_fault(FaultKind::kCorrupt, sa, to)) {
+  p.sequence = sequence_++;
+  p.frame = new_frame(wire);
+  if (const auto f = match_fault(FaultKind::kCorrupt, sa, to)) {
     Frame& frame = *frames_[p.frame];
     const std::uint32_t bit = f->bit % static_cast<std::uint32_t>(frame.size * 8);
     auto& byte = frame.bytes[bit / 8];
@@ -232,7 +294,7 @@ Fate MemoryBus::schedule(Port& from, std::uint8_t to, TimePoint arrival,
     ++from.counters.corrupted;
     fate = Fate::kCorrupted;
   }
-  if (const auto f = faults_.empty() ? std::nullopt : match_fault(FaultKind::kDelay, sa, to)) {
+  if (const auto f = match_fault(FaultKind::kDelay, sa, to)) {
     p.arrival += f->delay;
     ++from.counters.delayed;
     if (fate == Fate::kDelivered) fate = Fate::kDelayed;
@@ -242,16 +304,20 @@ Fate MemoryBus::schedule(Port& from, std::uint8_t to, TimePoint arrival,
   return fate;
 }
 
-std::uint32_t MemoryBus::new_frame(std::span<const std::uint8_t> bytes) {
-  std::uint32_t i = 0;
+std::uint32_t MemoryBus::new_frame() {
   if (free_frames_.empty()) {
-    i = static_cast<std::uint32_t>(frames_.size());
     frames_.push_back(std::make_unique<Frame>());
-  } else {
-    i = free_frames_.back();
-    free_frames_.pop_back();
+    return static_cast<std::uint32_t>(frames_.size() - 1);
   }
+  const std::uint32_t i = free_frames_.back();
+  free_frames_.pop_back();
+  return i;
+}
+
+std::uint32_t MemoryBus::new_frame(std::span<const std::uint8_t> bytes) {
+  const std::uint32_t i = new_frame();
   Frame& frame = *frames_[i];
+  frame.as_telegram = false;
   frame.size = std::min(bytes.size(), frame.bytes.size());
   std::memcpy(frame.bytes.data(), bytes.data(), frame.size);
   return i;
@@ -298,14 +364,18 @@ void MemoryBus::deliver(const Pending& pending) {
   }
   to.now = clock_.now();
   const Frame& frame = *frames_[pending.frame];
-  to.decoder.feed(std::span<const std::uint8_t>(frame.bytes.data(), frame.size), to);
+  if (frame.as_telegram) {
+    to.decoder.feed_encoded(frame.telegram, to);
+  } else {
+    to.decoder.feed(std::span<const std::uint8_t>(frame.bytes.data(), frame.size), to);
+  }
   to.decoder.idle(to);  // TSYN of idle line follows every frame on this bus
                         // ([IEC 61158-4-3 bus parameters, timing])
   drain(to);
 }
 
 std::optional<std::pair<TimePoint, MemoryBus::Port*>> MemoryBus::earliest_deadline() const {
-  const auto e = deadlines_.earliest();
+  const auto e = deadlines_.earliest();  // exact: refresh_deadline() keeps the front up to date
   if (!e) return std::nullopt;
   return std::pair{e->first, order_[e->second]};
 }
@@ -332,19 +402,24 @@ void MemoryBus::fire_deadline(Port& p) {
   drain(p);
 }
 
-bool MemoryBus::step() {
+bool MemoryBus::step() { return step_until(TimePoint::max()); }
+
+bool MemoryBus::step_until(TimePoint until) {
   bool stepped = false;
   {
     const InCall call(*this);
-    stepped = step_once();
+    stepped = step_once(until);
   }
   drain_woken();
   return stepped;
 }
 
-bool MemoryBus::step_once() {
+// Processes the earliest event if it lies at or before `until` (one look at the queue and
+// the deadlines, for step() and both run_until()s).
+bool MemoryBus::step_once(TimePoint until) {
   const auto deadline = earliest_deadline();
   if (!queue_.empty() && (!deadline || queue_.front().arrival <= deadline->first)) {
+    if (queue_.front().arrival > until) return false;
     std::pop_heap(queue_.begin(), queue_.end());
     const Pending p = queue_.back();
     queue_.pop_back();
@@ -353,14 +428,15 @@ bool MemoryBus::step_once() {
     free_frames_.push_back(p.frame);
     return true;
   }
-  if (!deadline) return false;
+  if (!deadline || deadline->first > until) return false;
   if (deadline->first > clock_.now()) clock_.set(deadline->first);
   fire_deadline(*deadline->second);
   return true;
 }
 
 void MemoryBus::run_until(TimePoint until) {
-  for (auto t = next_event_time(); t && *t <= until; t = next_event_time()) step();
+  while (step_until(until)) {
+  }
   if (until > clock_.now()) clock_.set(until);
 }
 
@@ -368,13 +444,11 @@ bool MemoryBus::run_until(const std::function<bool()>& done, TimePoint until,
                           const std::function<void()>& after_step) {
   after_step();
   while (!done()) {
-    const auto next = next_event_time();
-    if (!next || *next > until) {
-      run_until(until);
+    if (!step_until(until)) {  // the next event lies after `until`
+      if (until > clock_.now()) clock_.set(until);
       after_step();
       return done();
     }
-    step();
     after_step();
   }
   return true;

@@ -2,8 +2,11 @@
 // In-memory PROFIBUS: one master and up to 125 slaves in one process, on a ManualClock.
 //
 // Every telegram a station transmits is encoded to wire bytes ([IEC 61158-4-3 frame formats]) and
-// fed, byte for byte, into the receiving station's own fdl::Decoder, so corrupted frames are
-// rejected exactly as on a real line. Routing: a request or token goes to the station with its DA
+// reaches the receiving station through its own fdl::Decoder, so corrupted frames are rejected
+// exactly as on a real line. While any fault is injected every frame is fed byte for byte; on a
+// bus without faults a frame travels as its telegram and the decoder's feed_encoded() delivers
+// what those bytes decode to (the same telegram, errors and statistics) without parsing them
+// again. Routing: a request or token goes to the station with its DA
 // (DA 127 = broadcast to every other station, [IEC 61158-4-3 addresses, SAPs]); a reply (FC bit 6
 // = 0) or a short acknowledgement E5 goes to the station whose request the sender received last
 // ([IEC 61158-4-3 short acknowledgement]).
@@ -138,13 +141,16 @@ class MemoryBus {
   const Port& port(std::uint8_t address) const;
   void drain(Port& p);
   void on_wake(Port& p);
-  bool step_once();
+  bool step_until(TimePoint until);  // step() if the next event lies at or before `until`
+  bool step_once(TimePoint until);
   void drain_woken();
   void transmit(Port& from, const fdl::Telegram& t);
   std::optional<std::uint8_t> route(Port& from, const fdl::Telegram& t);
   TimePoint arrival_time(const Port& from, const fdl::Telegram& t, std::size_t bytes);
-  Fate schedule(Port& from, std::uint8_t to, TimePoint arrival, std::span<const std::uint8_t> wire);
+  Fate schedule(Port& from, std::uint8_t to, TimePoint arrival, const fdl::Telegram& t,
+                std::span<const std::uint8_t> wire);
   std::optional<Fault> match_fault(FaultKind kind, std::uint8_t from, std::uint8_t to);
+  std::uint32_t new_frame();
   std::uint32_t new_frame(std::span<const std::uint8_t> bytes);
   void deliver(const Pending& p);
   void fire_deadline(Port& p);
@@ -158,9 +164,15 @@ class MemoryBus {
   std::vector<Pending> queue_;  // binary heap on (arrival, sequence), small records
   // The frames in flight, by index, each on the heap once (stable while a delivery
   // schedules new ones) and reused; indexing is one load (a deque's was a division).
+  // A frame no fault touched travels as the telegram it was encoded from and reaches the
+  // receiver through Decoder::feed_encoded (the same result as decoding its bytes, without
+  // parsing them again); a frame a fault touched (corrupted or delayed) and raw bytes
+  // (send_raw) travel as bytes and go through the receiver's full checks.
   struct Frame {
     std::array<std::uint8_t, fdl::kMaxTelegramSize> bytes;
     std::size_t size = 0;
+    bool as_telegram = false;  // `telegram` holds the frame, `bytes` are unused
+    fdl::Telegram telegram;
   };
   std::vector<std::unique_ptr<Frame>> frames_;
   std::vector<std::uint32_t> free_frames_;
@@ -170,6 +182,7 @@ class MemoryBus {
   TimePoint line_free_{};
   DeadlineTree deadlines_;  // slot = attach order
   std::array<std::uint8_t, fdl::kMaxTelegramSize> encode_buf_{};
+  fdl::Telegram tx_scratch_;  // for stations that hand out copies (Station::next_transmit)
   std::vector<Port*> woken_;  // woke during a bus call: drained when the call returns
   bool in_call_ = false;
   std::shared_ptr<char> alive_;  // wake handlers hold a weak_ptr to it

@@ -78,7 +78,7 @@ void StationRunner::on_transport_error(std::error_code e) {
 
 void StationRunner::drain_all() {
   for (Station* s : stations_) {
-    while (auto t = s->take_transmit()) {
+    while (const fdl::Telegram* t = s->next_transmit(tx_scratch_)) {
       ++counters_.sent;
       encode_buf_.clear();
       fdl::encode(*t, encode_buf_);

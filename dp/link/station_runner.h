@@ -2,7 +2,7 @@
 // Drives dp::Station cores over a real-time Transport from one asio::io_context thread
 // ([docs/design.md#one-event-loop], the Station contract in dp/station.h):
 //   received bytes → fdl::Decoder → on_telegram() of every station (the cores filter by
-//   address) → take_transmit() drained → fdl::encode → Transport::send();
+//   address) → next_transmit() drained → fdl::encode → Transport::send();
 //   one steady_timer armed for the earliest next_deadline() → on_time().
 // `now` always comes from the injected Clock (RealClock in production).
 //
@@ -80,6 +80,7 @@ class StationRunner final : private fdl::DecoderSink {
   StationCounters counters_;
   std::error_code last_error_;
   std::vector<std::uint8_t> encode_buf_;
+  fdl::Telegram tx_scratch_;  // for stations that hand out copies (Station::next_transmit)
   std::vector<std::uint8_t> tap_buf_;
   FrameTap tap_;
   TimePoint now_{};

@@ -45,17 +45,47 @@ SlaveContext Master::context() {
 
 void Master::transmit(const fdl::Telegram& t) {
   ++counters_.telegrams_sent;
-  tx_.push_back(t);
+  queue_copy(t);
 }
 
-std::optional<fdl::Telegram> Master::take_transmit() {
-  if (tx_head_ == tx_.size()) return std::nullopt;
-  std::optional<fdl::Telegram> t(std::move(tx_[tx_head_++]));
+void Master::queue_copy(const fdl::Telegram& t) {
+  keep_queued_request();  // stays ahead of `t`
   if (tx_head_ == tx_.size()) {  // all taken: the storage is reused
     tx_.clear();
     tx_head_ = 0;
   }
-  return t;
+  tx_.push_back(t);
+}
+
+void Master::transmit_request() {
+  ++counters_.telegrams_sent;
+  keep_queued_request();  // (a link that did not drain since the last one)
+  request_queued_ = true;
+}
+
+void Master::keep_queued_request() {
+  if (!request_queued_) return;
+  request_queued_ = false;
+  queue_copy(outstanding_.request.telegram);
+}
+
+Request& Master::begin_outstanding() {
+  outstanding_active_ = true;  // every field is set by next_request() and send_request()
+  return outstanding_.request;
+}
+
+std::optional<fdl::Telegram> Master::take_transmit() {
+  if (tx_head_ != tx_.size()) return std::move(tx_[tx_head_++]);
+  if (!request_queued_) return std::nullopt;
+  request_queued_ = false;
+  return outstanding_.request.telegram;
+}
+
+const fdl::Telegram* Master::next_transmit(fdl::Telegram& /*scratch*/) {
+  if (tx_head_ != tx_.size()) return &tx_[tx_head_++];
+  if (!request_queued_) return nullptr;
+  request_queued_ = false;
+  return &outstanding_.request.telegram;  // kept there until its reply or expiry
 }
 
 void Master::on_malformed_frame(std::error_code why) {
@@ -66,7 +96,7 @@ void Master::on_malformed_frame(std::error_code why) {
 std::optional<TimePoint> Master::next_deadline() const {
   if (!started_) return TimePoint{};  // run on_time() at once
   if (phase_ == MasterPhase::kListening) return listen_until_;
-  if (outstanding_) return outstanding_->deadline;
+  if (outstanding_active_) return outstanding_.deadline;
   return next_send_;
 }
 
@@ -102,40 +132,38 @@ void Master::on_telegram(const fdl::Telegram& t, TimePoint now) {
     if (started_) listen_until_ = now + config_.bus.token_lost_timeout(config_.address);
     return;  // another active station: keep listening ([IEC 61158-4-3 token, bus start])
   }
-  if (!outstanding_ || t.type == fdl::FrameType::kToken) {
+  if (!outstanding_active_ || t.type == fdl::FrameType::kToken) {
     ++counters_.ignored_telegrams;
     return;
   }
-  SlaveHandler& slave = slaves_[outstanding_->slave];
+  SlaveHandler& slave = slaves_[outstanding_.slave];
   if (t.type != fdl::FrameType::kShortAck &&
       (t.fc.is_request() || t.da != config_.address || t.sa != slave.address())) {
     ++counters_.ignored_telegrams;
     return;
   }
-  outstanding_.reset();
+  keep_queued_request();
+  outstanding_active_ = false;
   ++counters_.replies;
   SlaveContext ctx = context();
   slave.on_reply(ctx, Reply::from(t), now);
   next_send_ = now + config_.bus.bits(config_.bus.tid1);
 }
 
-void Master::send_request(std::size_t slave, Request&& r, TimePoint now) {
+void Master::send_request(std::size_t slave, TimePoint now) {
   cycle_sent_ = true;
   const BusParameters& b = config_.bus;
-  const TimePoint deadline = now + b.characters(fdl::encoded_size(r.telegram)) + b.bits(b.tsl) +
-                             b.characters(r.max_reply_bytes);
-  // The request moves once, into the slot it is kept in for a retry; the transmit queue
-  // gets the one copy the link takes.
-  Outstanding& o = outstanding_.emplace(Outstanding{});  // empty: an empty telegram moves cheaply
+  Outstanding& o = outstanding_;
   o.slave = slave;
-  o.request = std::move(r);
-  o.deadline = deadline;
-  transmit(o.request.telegram);
+  o.deadline = now + b.characters(fdl::encoded_size(o.request.telegram)) + b.bits(b.tsl) +
+               b.characters(o.request.max_reply_bytes);
+  o.retries = 0;
+  transmit_request();
 }
 
 void Master::on_slot_expired(TimePoint now) {
   ++counters_.slot_timeouts;
-  Outstanding& o = *outstanding_;
+  Outstanding& o = outstanding_;
   SlaveHandler& slave = slaves_[o.slave];
   const fdl::FrameControl fc = o.request.telegram.fc;
   const bool first_frame = fc.fcb() && !fc.fcv();  // not retried ([IEC 61158-4-3 FCB/FCV])
@@ -146,20 +174,21 @@ void Master::on_slot_expired(TimePoint now) {
     const BusParameters& b = config_.bus;
     o.deadline = now + b.characters(fdl::encoded_size(o.request.telegram)) + b.bits(b.tsl) +
                  b.characters(o.request.max_reply_bytes);
-    transmit(o.request.telegram);
+    transmit_request();
     return;
   }
-  outstanding_.reset();
+  keep_queued_request();
+  outstanding_active_ = false;
   SlaveContext ctx = context();
   slave.on_no_answer(ctx);
   next_send_ = now;  // the line has been idle for TSL ≥ TSYN
 }
 
 void Master::run_bus(TimePoint now) {
-  if (outstanding_) {
-    if (now < outstanding_->deadline) return;
+  if (outstanding_active_) {
+    if (now < outstanding_.deadline) return;
     on_slot_expired(now);
-    if (outstanding_) return;
+    if (outstanding_active_) return;
   }
   if (now < next_send_) return;
   for (;;) {
@@ -183,10 +212,13 @@ void Master::run_bus(TimePoint now) {
       turn_open_ = true;
     }
     SlaveContext ctx = context();
-    if (auto r = slave.next_request(ctx, now)) {
-      send_request(cursor_, std::move(*r), now);
+    // The request is built in the slot it is kept in for a retry and sent from there.
+    keep_queued_request();
+    if (slave.next_request(ctx, now, begin_outstanding())) {
+      send_request(cursor_, now);
       return;
     }
+    outstanding_active_ = false;
     ++cursor_;
     turn_open_ = false;
   }

@@ -70,6 +70,7 @@ class Master final : public Station {
   void on_time(TimePoint now) override;
   [[nodiscard]] std::optional<TimePoint> next_deadline() const override;
   std::optional<fdl::Telegram> take_transmit() override;
+  const fdl::Telegram* next_transmit(fdl::Telegram& scratch) override;
   // A frame the link's decoder rejected ([IEC 61158-4-3 frame reception]): counted; a garbled reply
   // is handled like a missing one, by the slot time and a retry with the same FCB
   // ([IEC 61158-4-3 FCB/FCV]).
@@ -123,7 +124,14 @@ class Master final : public Station {
   [[nodiscard]] const SlaveHandler* find(std::uint8_t address) const;
   SlaveContext context();
   void transmit(const fdl::Telegram& t);
-  void send_request(std::size_t slave, Request&& r, TimePoint now);
+  void queue_copy(const fdl::Telegram& t);
+  // Queues outstanding_'s request itself (handed out from there, no copy).
+  void transmit_request();
+  // Before outstanding_ changes: a queued request not yet taken is copied into tx_.
+  void keep_queued_request();
+  // Sends the request built in outstanding_ to slaves_[slave].
+  void send_request(std::size_t slave, TimePoint now);
+  Request& begin_outstanding();  // marks the slot in use, for next_request() to fill
   void on_slot_expired(TimePoint now);
   void run_bus(TimePoint now);
   void start_cycle(TimePoint now);
@@ -137,14 +145,20 @@ class Master final : public Station {
   std::array<std::int16_t, 128> index_{};  // address → slaves_ index, -1 if none
   fdl::FcbInitiator fcb_;
   EventQueue events_;
-  std::vector<fdl::Telegram> tx_;  // tx_[tx_head_..] wait for take_transmit(); reused
+  // tx_[tx_head_..] wait for the link; the storage is reused (cleared by the next transmit()
+  // once all were taken, so a view handed out stays valid until the next call).
+  std::vector<fdl::Telegram> tx_;
   std::size_t tx_head_ = 0;
+  bool request_queued_ = false;  // after tx_: outstanding_->request.telegram
   MasterPhase phase_;
   OperatingMode mode_ = OperatingMode::kOperate;
   bool started_ = false;
   TimePoint listen_until_{};
   unsigned tokens_sent_ = 0;
-  std::optional<Outstanding> outstanding_;
+  // The request waiting for its reply (when outstanding_active_); the slot is reused, so a
+  // request is not constructed (zero-filled) afresh each time.
+  Outstanding outstanding_;
+  bool outstanding_active_ = false;
   TimePoint next_send_{};
   bool in_cycle_ = false;
   std::size_t cursor_ = 0;

@@ -4,6 +4,8 @@
 #include "dp/pdu/sap.h"
 
 #include <algorithm>
+#include <cstring>
+#include <stdexcept>
 
 namespace rs4sim::dp::master {
 
@@ -37,41 +39,54 @@ std::uint8_t SlaveHandler::alarm_dsap() const {
   return config_.extra_alarm_sap ? pdu::sap::kAlarm : pdu::sap::kMsacC1;
 }
 
-Request SlaveHandler::make(SlaveContext& ctx, RequestKind kind, fdl::FrameControl fc,
-                           std::optional<std::uint8_t> dsap, std::span<const std::uint8_t> data,
-                           std::size_t max_reply) const {
+bool SlaveHandler::make(Request& out, SlaveContext& ctx, RequestKind kind, fdl::FrameControl fc,
+                        std::optional<std::uint8_t> dsap, std::span<const std::uint8_t> data,
+                        std::size_t max_reply) const {
+  // Built in place, in the slot the master keeps it in (fdl::make_data_telegram's rules).
+  if (data.size() > fdl::kMaxDataUnit) throw std::invalid_argument("fdl: DU longer than 246 bytes");
+  fdl::Telegram& t = out.telegram;
+  t.da = config_.address;
+  t.sa = ctx.master_address;
+  t.fc = fc;
   // DP services: master SSAP 62 (MS0), DPV1 C1: 51 ([IEC 61158-6-3 SAP assignment]); DSAP and SSAP
   // go together.
-  std::optional<std::uint8_t> ssap;
   if (dsap) {
     const bool c1 = kind == RequestKind::kDpv1 || kind == RequestKind::kAlarmAck;
-    ssap = c1 ? pdu::sap::kMasterMsac1 : pdu::sap::kMasterMs0;
+    t.dsap = *dsap;
+    t.ssap = c1 ? pdu::sap::kMasterMsac1 : pdu::sap::kMasterMs0;
+  } else {
+    t.dsap.reset();
+    t.ssap.reset();
   }
-  return Request{fdl::make_data_telegram(config_.address, ctx.master_address, fc, dsap, ssap, data),
-                 kind, max_reply};
+  t.data.resize(data.size(), boost::container::default_init);
+  if (!data.empty()) std::memcpy(t.data.data(), data.data(), data.size());
+  t.type = (data.empty() && !dsap) ? fdl::FrameType::kSd1 : fdl::FrameType::kSd2;
+  out.kind = kind;
+  out.max_reply_bytes = max_reply;
+  return true;
 }
 
-std::optional<Request> SlaveHandler::next_request(SlaveContext& ctx, TimePoint now) {
-  if (turn_.count >= kMaxRequestsPerTurn) return std::nullopt;
+bool SlaveHandler::next_request(SlaveContext& ctx, TimePoint now, Request& out) {
+  if (turn_.count >= kMaxRequestsPerTurn) return false;
   const bool startup = state_ != PollState::kDataExchange;
   if (startup) {
-    if (turn_.count > 0 && !continue_) return std::nullopt;
+    if (turn_.count > 0 && !continue_) return false;
     continue_ = false;
     if (state_ == PollState::kWaitReady && now - wait_ready_since_ >= ctx.ready_timeout) {
       restart(ctx, make_error_code(MasterError::kStartupTimeout), PollState::kReadDiag);
     }
   }
-  // Initialised from the call (no second move of the telegram).
-  std::optional<Request> r = startup ? startup_request(ctx) : cyclic_request(ctx, now);
+  // Built straight into `out` (no copy of the telegram).
+  const bool r = startup ? startup_request(ctx, out) : cyclic_request(ctx, now, out);
   if (r) {
     ++turn_.count;
     ++counters_.requests;
-    last_kind_ = r->kind;
+    last_kind_ = out.kind;
   }
   return r;
 }
 
-std::optional<Request> SlaveHandler::startup_request(SlaveContext& ctx) {
+bool SlaveHandler::startup_request(SlaveContext& ctx, Request& out) {
   namespace sap = pdu::sap;
   const std::uint8_t addr = config_.address;
   using F = fdl::RequestFunction;
@@ -79,49 +94,49 @@ std::optional<Request> SlaveHandler::startup_request(SlaveContext& ctx) {
     case PollState::kStatusRequest:  // `10 DA SA 49 FCS 16`, no FCB ([IEC 61158-4-3 FCB/FCV]
                                      // [IEC 61158-6-3 master start-up of a slave]
                                      // [pyprofibus dp_master.py] step 0)
-      return make(ctx, RequestKind::kFdlStatus, fdl::FcbInitiator::unsequenced(F::kFdlStatus),
+      return make(out, ctx, RequestKind::kFdlStatus, fdl::FcbInitiator::unsequenced(F::kFdlStatus),
                   std::nullopt, {}, 6);
     case PollState::kReadDiag:
     case PollState::kWaitReady:
-      return make(ctx, RequestKind::kDiag, ctx.fcb.next(addr, F::kSrdHigh), sap::kSlaveDiag, {},
+      return make(out, ctx, RequestKind::kDiag, ctx.fcb.next(addr, F::kSrdHigh), sap::kSlaveDiag, {},
                   fdl::kMaxTelegramSize);
     case PollState::kSetPrm:
-      return make(ctx, RequestKind::kSetPrm, ctx.fcb.next(addr, F::kSrdHigh), sap::kSetPrm,
+      return make(out, ctx, RequestKind::kSetPrm, ctx.fcb.next(addr, F::kSrdHigh), sap::kSetPrm,
                   bytes(prm_du_), 6);
     case PollState::kChkCfg:
-      return make(ctx, RequestKind::kChkCfg, ctx.fcb.next(addr, F::kSrdHigh), sap::kChkCfg,
+      return make(out, ctx, RequestKind::kChkCfg, ctx.fcb.next(addr, F::kSrdHigh), sap::kChkCfg,
                   bytes(config_.cfg), 6);
     case PollState::kDataExchange: break;
   }
-  return std::nullopt;
+  return false;
 }
 
-Request SlaveHandler::data_exchange_request(SlaveContext& ctx) const {
+bool SlaveHandler::data_exchange_request(SlaveContext& ctx, Request& out) const {
   // [IEC 61158-6-3 Data_Exchange]: SRD_HI on the default SAP with the whole output image; in CLEAR
   // zeros, or an empty telegram for slaves parameterised with Fail_Safe.
   // The output image goes straight into the telegram (no intermediate copy).
   fdl::DataUnit zeros;
-  std::span<const std::uint8_t> out = bytes(outputs_);
+  std::span<const std::uint8_t> image = bytes(outputs_);
   if (ctx.clear_mode) {
     if (!config_.fail_safe()) zeros.resize(outputs_.size(), 0);
-    out = bytes(zeros);
+    image = bytes(zeros);
   }
   const std::size_t reply = std::max<std::size_t>(6, 9 + config_.input_length);
-  return make(ctx, RequestKind::kDataExchange,
-              ctx.fcb.next(config_.address, fdl::RequestFunction::kSrdHigh), std::nullopt, out,
+  return make(out, ctx, RequestKind::kDataExchange,
+              ctx.fcb.next(config_.address, fdl::RequestFunction::kSrdHigh), std::nullopt, image,
               reply);
 }
 
-std::optional<Request> SlaveHandler::cyclic_request(SlaveContext& ctx, TimePoint now) {
+bool SlaveHandler::cyclic_request(SlaveContext& ctx, TimePoint now, Request& out) {
   using F = fdl::RequestFunction;
   if (!turn_.dx) {
     turn_.dx = true;
-    return data_exchange_request(ctx);
+    return data_exchange_request(ctx, out);
   }
   if (diag_needed_ && !turn_.diag) {  // DH → Slave_Diag in the next slot
                                       // ([IEC 61158-6-3 class 1 master cycle])
     turn_.diag = true;
-    return make(ctx, RequestKind::kDiag, ctx.fcb.next(config_.address, F::kSrdHigh),
+    return make(out, ctx, RequestKind::kDiag, ctx.fcb.next(config_.address, F::kSrdHigh),
                 pdu::sap::kSlaveDiag, {}, fdl::kMaxTelegramSize);
   }
   if (!turn_.alarm && (config_.extra_alarm_sap || !dpv1_.busy())) {
@@ -129,7 +144,7 @@ std::optional<Request> SlaveHandler::cyclic_request(SlaveContext& ctx, TimePoint
     if (auto ack = alarms_.next_ack()) {
       fdl::DataUnit du;
       (void)pdu::encode(*ack, du);
-      return make(ctx, RequestKind::kAlarmAck, ctx.fcb.next(config_.address, F::kSrdLow),
+      return make(out, ctx, RequestKind::kAlarmAck, ctx.fcb.next(config_.address, F::kSrdLow),
                   alarm_dsap(), bytes(du), fdl::kMaxTelegramSize);
     }
   }
@@ -137,11 +152,11 @@ std::optional<Request> SlaveHandler::cyclic_request(SlaveContext& ctx, TimePoint
     turn_.dpv1 = true;
     dpv1_.check_timeout(now, ctx.events);
     if (auto du = dpv1_.next_pdu(now)) {
-      return make(ctx, RequestKind::kDpv1, ctx.fcb.next(config_.address, F::kSrdLow),
+      return make(out, ctx, RequestKind::kDpv1, ctx.fcb.next(config_.address, F::kSrdLow),
                   pdu::sap::kMsacC1, bytes(*du), fdl::kMaxTelegramSize);
     }
   }
-  return std::nullopt;
+  return false;
 }
 
 void SlaveHandler::on_cycle_start(SlaveContext& ctx, TimePoint now) {

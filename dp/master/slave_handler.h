@@ -94,8 +94,9 @@ class SlaveHandler {
   SlaveHandler(const SlaveEntry& config, bool fdl_status_first);
 
   void begin_turn() { turn_ = {}; }
-  // The next request of this turn, nullopt when the turn is over.
-  std::optional<Request> next_request(SlaveContext& ctx, TimePoint now);
+  // The next request of this turn, built into `out` (the master's retry slot); false when
+  // the turn is over (`out` may then hold anything).
+  bool next_request(SlaveContext& ctx, TimePoint now, Request& out);
   // The reply to the last request (already checked to come from this slave).
   void on_reply(SlaveContext& ctx, const Reply& r, TimePoint now);
   // No reply after all retries ([IEC 61158-6-3 slave supervision]).
@@ -124,12 +125,12 @@ class SlaveHandler {
     unsigned count = 0;
     bool dx = false, diag = false, alarm = false, dpv1 = false;
   };
-  Request make(SlaveContext& ctx, RequestKind kind, fdl::FrameControl fc,
-               std::optional<std::uint8_t> dsap, std::span<const std::uint8_t> data,
-               std::size_t max_reply) const;
-  std::optional<Request> startup_request(SlaveContext& ctx);
-  std::optional<Request> cyclic_request(SlaveContext& ctx, TimePoint now);
-  Request data_exchange_request(SlaveContext& ctx) const;
+  bool make(Request& out, SlaveContext& ctx, RequestKind kind, fdl::FrameControl fc,
+            std::optional<std::uint8_t> dsap, std::span<const std::uint8_t> data,
+            std::size_t max_reply) const;
+  bool startup_request(SlaveContext& ctx, Request& out);
+  bool cyclic_request(SlaveContext& ctx, TimePoint now, Request& out);
+  bool data_exchange_request(SlaveContext& ctx, Request& out) const;
   [[nodiscard]] PollState initial_state() const;
   [[nodiscard]] std::uint8_t alarm_dsap() const;
 

@@ -98,7 +98,7 @@ void Slave::on_telegram(const fdl::Telegram& t, TimePoint now) {
     } else {
       ++counters_.ignored;
     }
-    tx_.reset();
+    has_tx_ = false;
     return;
   }
   if (t.da != address_) {
@@ -111,7 +111,7 @@ void Slave::on_telegram(const fdl::Telegram& t, TimePoint now) {
 void Slave::handle_request(const fdl::Telegram& t, TimePoint now) {
   const RequestFunction f = t.fc.function();
   retrigger_watchdog(t.sa, now);
-  tx_.reset();
+  has_tx_ = false;
   if (f == RequestFunction::kFdlStatus) {  // [docs/references.md#dp-worked-example]: reply SD1 FC
                                            // 00 (slave, OK)
     reply_status(t, ResponseStatus::kOk);
@@ -130,22 +130,22 @@ void Slave::handle_request(const fdl::Telegram& t, TimePoint now) {
     verdict = fcb_.on_request(t.sa, t.fc);
     if (verdict == fdl::FcbVerdict::kRepeat && fcb_.stored_reply() != nullptr) {
       ++counters_.repeats_answered;  // [IEC 61158-4-3 FCB/FCV]: resend, do not execute again
-      tx_ = *fcb_.stored_reply();
+      new_reply() = *fcb_.stored_reply();
       return;
     }
   }
   dispatch(t, now);
   if (is_sdn(f)) {
-    tx_.reset();  // [IEC 61158-4-3 frame reception]: never reply to SDN
+    has_tx_ = false;  // [IEC 61158-4-3 frame reception]: never reply to SDN
     return;
   }
-  if (!tx_) return;
-  if (tx_->type == FrameType::kSd2 && !tx_->dsap && tx_->data.empty()) tx_->type = FrameType::kSd1;
-  if (is_sda(f) && tx_->type != FrameType::kShortAck &&
-      tx_->fc.status() != ResponseStatus::kSapNotEnabled) {
+  if (!has_tx_) return;
+  if (tx_.type == FrameType::kSd2 && !tx_.dsap && tx_.data.empty()) tx_.type = FrameType::kSd1;
+  if (is_sda(f) && tx_.type != FrameType::kShortAck &&
+      tx_.fc.status() != ResponseStatus::kSapNotEnabled) {
     reply_short_ack();  // SDA is only acknowledged ([IEC 61158-4-3 short acknowledgement])
   }
-  if (verdict != fdl::FcbVerdict::kNotEvaluated) fcb_.store_reply(*tx_);
+  if (verdict != fdl::FcbVerdict::kNotEvaluated) fcb_.store_reply(tx_);
 }
 
 void Slave::dispatch(const fdl::Telegram& t, TimePoint now) {
@@ -216,10 +216,15 @@ void Slave::on_malformed_frame(std::error_code why) {
 }
 
 std::optional<fdl::Telegram> Slave::take_transmit() {
-  if (!tx_) return std::nullopt;  // the link's second call after each reply
-  std::optional<fdl::Telegram> out(std::move(*tx_));
-  tx_.reset();
-  return out;
+  if (!has_tx_ || tx_taken_) return std::nullopt;  // the link's second call after each reply
+  has_tx_ = false;
+  return std::move(tx_);
+}
+
+const fdl::Telegram* Slave::next_transmit(fdl::Telegram& /*scratch*/) {
+  if (!has_tx_ || tx_taken_) return nullptr;  // the link's second call after each reply
+  tx_taken_ = true;
+  return &tx_;
 }
 
 // ---- timers and transitions ------------------------------------------------------------
@@ -274,17 +279,28 @@ void Slave::enter(State to, TransitionReason why, TimePoint now) {
 
 // ---- replies -----------------------------------------------------------------------------
 
-void Slave::reply_short_ack() {
-  tx_.emplace();
-  tx_->type = FrameType::kShortAck;
+fdl::Telegram& Slave::new_reply() {
+  // As a fresh fdl::Telegram{}, field by field: the buffer is reused, not zero-filled again.
+  tx_taken_ = false;
+  has_tx_ = true;
+  tx_.type = FrameType::kSd2;
+  tx_.da = 0;
+  tx_.sa = 0;
+  tx_.fc = {};
+  tx_.dsap.reset();
+  tx_.ssap.reset();
+  tx_.data.clear();
+  return tx_;
 }
 
+void Slave::reply_short_ack() { new_reply().type = FrameType::kShortAck; }
+
 void Slave::reply_status(const fdl::Telegram& req, ResponseStatus st) {
-  tx_.emplace();
-  tx_->type = FrameType::kSd1;
-  tx_->da = req.sa;
-  tx_->sa = address_;
-  tx_->fc = fdl::FrameControl::response(st);
+  new_reply();
+  tx_.type = FrameType::kSd1;
+  tx_.da = req.sa;
+  tx_.sa = address_;
+  tx_.fc = fdl::FrameControl::response(st);
 }
 
 void Slave::reply_rs(const fdl::Telegram& req) {
@@ -294,10 +310,10 @@ void Slave::reply_rs(const fdl::Telegram& req) {
 
 fdl::DataUnit& Slave::reply_data(const fdl::Telegram& req, ResponseStatus st) {
   reply_status(req, st);
-  tx_->type = FrameType::kSd2;
-  tx_->dsap = req.ssap;  // reply frames swap the SAPs ([IEC 61158-6-3 SAP assignment])
-  tx_->ssap = req.dsap;
-  return tx_->data;
+  tx_.type = FrameType::kSd2;
+  tx_.dsap = req.ssap;  // reply frames swap the SAPs ([IEC 61158-6-3 SAP assignment])
+  tx_.ssap = req.dsap;
+  return tx_.data;
 }
 
 }  // namespace rs4sim::dp::slave

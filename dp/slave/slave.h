@@ -86,6 +86,8 @@ class Slave final : public Station, public SlaveControl {
   void on_time(TimePoint now) override;
   [[nodiscard]] std::optional<TimePoint> next_deadline() const override;
   std::optional<fdl::Telegram> take_transmit() override;
+  // The reply in place (no copy); it stays in tx_ until the next request replaces it.
+  const fdl::Telegram* next_transmit(fdl::Telegram& scratch) override;
   // The link dropped a frame that failed the [IEC 61158-4-3 frame reception] checks: counted
   // (malformed_dropped).
   void on_malformed_frame(std::error_code why) override;
@@ -148,6 +150,7 @@ class Slave final : public Station, public SlaveControl {
   void fault_to_wait_prm(TransitionReason why, bool keep_master, TimePoint now);
   [[nodiscard]] bool is_owner(std::uint8_t sa) const { return master_ == sa; }
   // replies
+  fdl::Telegram& new_reply();  // every reply is built here (tx_, not yet handed out)
   void reply_short_ack();
   void reply_status(const fdl::Telegram& req, fdl::ResponseStatus st);
   fdl::DataUnit& reply_data(const fdl::Telegram& req, fdl::ResponseStatus st);
@@ -186,7 +189,9 @@ class Slave final : public Station, public SlaveControl {
   std::function<void(const Transition&)> trace_;
   Counters counters_;
   fdl::FcbResponder fcb_;
-  std::optional<fdl::Telegram> tx_;
+  fdl::Telegram tx_;       // the reply, when has_tx_ (the buffer is reused)
+  bool has_tx_ = false;
+  bool tx_taken_ = false;  // tx_ was handed out by next_transmit()
 
   // state and parameters
   State state_ = State::kWaitPrm;

@@ -156,3 +156,98 @@ TEST(FdlDecoder, DecodeFrameRejectsTrailingBytesAndTruncation) {
 
 }  // namespace
 }  // namespace rs4sim::dp::fdl
+
+// Decoder::feed_encoded (the memory bus's path for a frame no fault touched) must give the
+// sink and the statistics exactly what feed() of the encoded bytes gives: for every FC byte
+// (undefined codes are rejected by the receiver check, [IEC 61158-4-3 frame reception]), every
+// frame shape, short acknowledgements and tokens carrying fields the wire drops, and with a
+// partial frame pending in the decoder.
+namespace rs4sim::dp::fdl {
+namespace {
+
+std::vector<Telegram> feed_encoded_cases() {
+  std::vector<Telegram> cases;
+  const std::vector<std::uint8_t> two{0x5A, 0xE5}, six{1, 2, 3, 4, 5, 6}, eight{1, 2, 3, 4, 5, 6, 7, 8};
+  for (unsigned fc = 0; fc < 256; ++fc) {
+    const FrameControl f{static_cast<std::uint8_t>(fc)};
+    cases.push_back(make_data_telegram(5, 2, f, std::nullopt, std::nullopt, {}));  // SD1
+    cases.push_back(make_data_telegram(5, 2, f, std::nullopt, std::nullopt, two));
+    cases.push_back(make_data_telegram(127, 2, f, 58, 62, two));
+    cases.push_back(make_data_telegram(2, 5, f, 62, 60, {}));  // SD2, SAPs only
+    Telegram sd3 = make_data_telegram(2, 5, f, 62, 60, six);
+    sd3.type = FrameType::kSd3;
+    cases.push_back(sd3);
+    Telegram sd3_plain = make_data_telegram(2, 5, f, std::nullopt, std::nullopt, eight);
+    sd3_plain.type = FrameType::kSd3;
+    cases.push_back(sd3_plain);
+    Telegram sc = make_short_ack();
+    sc.fc = f;  // dropped on the wire
+    cases.push_back(sc);
+    Telegram token = make_token(2, 2);
+    token.fc = f;
+    cases.push_back(token);
+  }
+  Telegram sc_addressed = make_short_ack();
+  sc_addressed.da = 5;
+  cases.push_back(sc_addressed);
+  Telegram token_with_data = make_token(3, 2);
+  token_with_data.data.push_back(1);
+  cases.push_back(token_with_data);
+  Telegram longest = make_data_telegram(5, 2, FrameControl{0x7D}, 1, 2,
+                                        std::vector<std::uint8_t>(kMaxDataUnit - 2, 0xE5));
+  cases.push_back(longest);
+  return cases;
+}
+
+void expect_same_as_feed(const Telegram& t, const Bytes& before) {
+  std::vector<std::uint8_t> wire;
+  encode(t, wire);
+  Decoder parsed, fast;
+  testing::CollectSink parsed_sink, fast_sink;
+  parsed.feed(before, parsed_sink);
+  fast.feed(before, fast_sink);
+  parsed.feed(wire, parsed_sink);
+  fast.feed_encoded(t, fast_sink);
+  ASSERT_EQ(fast_sink.telegrams(), parsed_sink.telegrams());
+  ASSERT_EQ(fast_sink.errors(), parsed_sink.errors());
+  ASSERT_EQ(fast_sink.events.size(), parsed_sink.events.size());
+  EXPECT_EQ(fast.stats().bytes, parsed.stats().bytes);
+  EXPECT_EQ(fast.stats().telegrams, parsed.stats().telegrams);
+  EXPECT_EQ(fast.stats().discarded_bytes, parsed.stats().discarded_bytes);
+  EXPECT_EQ(fast.stats().errors, parsed.stats().errors);
+  EXPECT_EQ(fast.pending_bytes(), parsed.pending_bytes());
+  // Whatever follows is treated alike, too (the garbage state after a rejected frame).
+  const Bytes garbage{0x00, 0x01};
+  parsed.feed(garbage, parsed_sink);
+  fast.feed(garbage, fast_sink);
+  EXPECT_EQ(fast_sink.errors(), parsed_sink.errors());
+  EXPECT_EQ(fast.stats().errors, parsed.stats().errors);
+}
+
+TEST(DecoderFeedEncoded, DeliversExactlyWhatDecodingTheEncodedBytesDelivers) {
+  std::size_t fast_path = 0;
+  for (const Telegram& t : feed_encoded_cases()) {
+    SCOPED_TRACE(::testing::Message() << "type " << static_cast<int>(t.type) << " fc 0x"
+                                      << std::hex << int{t.fc.raw});
+    expect_same_as_feed(t, {});
+    expect_same_as_feed(t, {0x00});                    // after garbage
+    expect_same_as_feed(t, {0x68, 0x05, 0x05, 0x68});  // a partial frame pending
+    if (decodes_as_itself(t)) ++fast_path;
+  }
+  EXPECT_GT(fast_path, 0U);
+}
+
+TEST(DecoderFeedEncoded, OnlyTelegramsTheWireKeepsWholeTakeTheFastPath) {
+  EXPECT_TRUE(decodes_as_itself(make_short_ack()));
+  EXPECT_TRUE(decodes_as_itself(make_token(2, 2)));
+  Telegram sc = make_short_ack();
+  sc.da = 5;
+  EXPECT_FALSE(decodes_as_itself(sc));
+  // Request code 1 and response code 4 are undefined ([IEC 61158-4-3 frame control]).
+  EXPECT_FALSE(decodes_as_itself(make_data_telegram(5, 2, FrameControl{0x41}, {}, {}, {})));
+  EXPECT_FALSE(decodes_as_itself(make_data_telegram(2, 5, FrameControl{0x04}, {}, {}, {})));
+  EXPECT_TRUE(decodes_as_itself(make_data_telegram(5, 2, FrameControl{0x7D}, {}, {}, {})));
+}
+
+}  // namespace
+}  // namespace rs4sim::dp::fdl

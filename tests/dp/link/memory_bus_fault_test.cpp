@@ -157,5 +157,36 @@ TEST_F(MemoryBusFaults, SilencedStationNeitherHearsNorSpeaks) {
   EXPECT_EQ(master.received.size(), 1U);
 }
 
+// Without faults a frame reaches the receiver as its telegram (Decoder::feed_encoded), but the
+// receiver checks that encode() does not make still reject what the bytes would fail
+// ([IEC 61158-4-3 frame reception]: an undefined FC code).
+TEST_F(MemoryBusFaults, WithoutFaultsTheReceiverStillRejectsWhatTheBytesWouldFail) {
+  fdl::Telegram bad_fc = srd_request(5, 2, {0x01});
+  bad_fc.fc = fdl::FrameControl{0x41};  // request code 1 is undefined
+  master.send(bad_fc);
+  bus.run_for(1ms);
+  EXPECT_TRUE(slave.received.empty());
+  EXPECT_EQ(bus.counters(5).malformed, 1U);
+  EXPECT_EQ(bus.decoder_stats(5).count(fdl::DecodeError::kBadFrameControl), 1U);
+  exchange({0x02});  // the bus and the receiver carry on
+  ASSERT_EQ(slave.received.size(), 1U);
+  EXPECT_EQ(slave.received[0].telegram.data[0], 0x02);
+  EXPECT_EQ(bus.decoder_stats(5).telegrams, 1U);
+  EXPECT_EQ(master.received.size(), 1U);
+}
+
+// While any fault is injected, every frame travels as bytes through the receiver's full
+// checks, also those the fault does not match; the outcome is the same as without faults.
+TEST_F(MemoryBusFaults, AnUnmatchedFaultChangesNothingForOtherFrames) {
+  bus.inject({FaultKind::kCorrupt, 9, 9, 0});  // permanent, matches no frame here
+  exchange({0x33});
+  ASSERT_EQ(slave.received.size(), 1U);
+  EXPECT_EQ(slave.received[0].telegram.data[0], 0x33);
+  ASSERT_EQ(master.received.size(), 1U);
+  EXPECT_EQ(bus.decoder_stats(5).bytes, 10U);
+  EXPECT_EQ(bus.decoder_stats(2).bytes, 10U);
+  EXPECT_EQ(bus.decoder_stats(5).total_errors(), 0U);
+}
+
 }  // namespace
 }  // namespace rs4sim::dp::link

@@ -152,6 +152,31 @@ TEST_F(MemoryBusTest, StepJumpsToTheEarliestDeadline) {
   EXPECT_EQ(bus.next_event_time(), t0 + 1250ms);
 }
 
+// A deadline that moves later while another station is at the front is written to the
+// deadline tree only when its old entry comes to the front (MemoryBus::refresh_deadline): the
+// order of the deadlines and the tie-break (the station attached first) stay exact.
+TEST_F(MemoryBusTest, DeadlinesThatMoveLaterFireInOrderAndTiesGoToTheFirstAttached) {
+  FakeStation a(1), b(2);
+  bus.attach(a);
+  bus.attach(b);
+  bus.start();
+  const TimePoint t0 = clock.now();
+  log.clear();
+  a.run_timer(t0 + 10ms, 10ms, fdl::make_token(1, 1));
+  b.run_timer(t0 + 5ms, 25ms, fdl::make_token(2, 2));  // b: 5, 30, 55 ms
+  a.run_timer(t0 + 30ms, 25ms, fdl::make_token(1, 1));  // later, b at the front: 30, 55 ms
+  EXPECT_EQ(bus.next_event_time(), t0 + 5ms);
+  bus.run_until(t0 + 60ms);
+  std::vector<std::pair<std::uint8_t, Duration>> sent;
+  for (const Wire& w : log) {
+    if (w.from == w.to) sent.emplace_back(w.from, w.time - t0);  // the timer tokens
+  }
+  const std::vector<std::pair<std::uint8_t, Duration>> expected = {
+      {2, 5ms}, {1, 30ms}, {2, 30ms}, {1, 55ms}, {2, 55ms}};
+  EXPECT_EQ(sent, expected);
+  EXPECT_EQ(bus.next_event_time(), t0 + 80ms);
+}
+
 TEST_F(MemoryBusTest, AStationThatNeverAdvancesItsDeadlineIsReported) {
   FakeStation a(4);
   a.stuck_deadline = clock.now();
