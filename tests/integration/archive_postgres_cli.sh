@@ -1,6 +1,6 @@
 #!/bin/sh
 # rs4sim's commands on a PostgreSQL archive, as a maintenance engineer uses them: the demo's
-# proxy archives into a database of the fixture's server, `archive list/history/verify/export`
+# proxy archives into a database of the fixture's server, `archive list/history/diff/verify/export`
 # read it (the dates are today's, the password is never printed), the export imports into a
 # SQLite file with the same history, and psql shows the rows the commands reported.
 #   archive_postgres_cli.sh RS4SIM URI_FILE
@@ -46,9 +46,13 @@ cat "$tmp/history.txt"
 today=$(date -u +%Y-%m-%d)
 grep -q "^ *1  *1  $today" "$tmp/history.txt" || fail "version 1 is not dated today ($today)"
 versions=$(grep -c "^ *[0-9][0-9]*  *[0-9][0-9]*  $today" "$tmp/history.txt")
+# diff on the server: the commissioning upload against the exchange's download (the same set).
+"$rs4sim" archive diff --archive "$archive" --bus demo --address 4 >"$tmp/diff.txt" ||
+  { cat "$tmp/diff.txt"; fail "archive diff"; }
+cat "$tmp/diff.txt"
 "$rs4sim" archive verify --archive "$archive" >"$tmp/verify.txt"
 grep -q ": ok (1 stations)" "$tmp/verify.txt" || fail "archive verify"
-for f in list history verify; do no_password "$tmp/$f.txt"; done
+for f in list history diff verify; do no_password "$tmp/$f.txt"; done
 
 # What the commands said is what the server holds.
 rows=$(psql "$archive" -tAc "SELECT count(*) FROM versions v JOIN stations s ON s.id = v.station_id WHERE s.bus = 'demo' AND s.address = 4")
