@@ -69,6 +69,48 @@ TEST(Scenario, ParameterChangeReplacesTheCurrentSetAndHistoryKeepsTheOld) {
   EXPECT_EQ(std::count(cmds.begin(), cmds.end(), 0x61), 2 * 9);
 }
 
+// What the proxy records with a version (docs/storage.md "What maintenance records"): the
+// scenario as the comment, the master's user and host, the station's site and line.
+TEST(Scenario, AnUploadRecordsItsScenarioWhoAndWhere) {
+  SyncHarness h;
+  h.config.recording = Recording{{"plc-team", "ws-maint-03"}, "Hamburg", "Press line 1", false};
+  h.sync = std::make_unique<ProxySync>(h.config, h.archive);
+  h.store(SyncHarness::custom_set(3), "1001");
+  h.device.set = SyncHarness::custom_set(5);
+  h.device.reason = SyncReason::kPcAdapterRemoved;
+  h.device.direction = SyncDirection::kUpload;
+  ASSERT_TRUE(h.run_sync());
+  const auto v = h.real->current(SyncHarness::kStation).value().version;
+  EXPECT_EQ(v.note, "scenario 2, parameter change: the device's set uploaded by the proxy");
+  EXPECT_EQ(v.user, "plc-team");
+  EXPECT_EQ(v.host, "ws-maint-03");
+  const auto stations = h.real->stations().value();
+  ASSERT_EQ(stations.size(), 1u);
+  EXPECT_EQ(stations[0].site, "Hamburg");
+  EXPECT_EQ(stations[0].line, "Press line 1");
+}
+
+// --skip-identical: an upload of the set the archive already holds as current stores nothing
+// (the sync itself succeeds and releases); without the option it is a new version.
+TEST(Scenario, SkipIdenticalStoresNoVersionForAnUploadOfTheCurrentSet) {
+  for (const bool skip : {true, false}) {
+    SCOPED_TRACE(skip ? "skip_identical" : "default");
+    SyncHarness h;
+    h.config.recording.skip_identical = skip;
+    h.sync = std::make_unique<ProxySync>(h.config, h.archive);
+    const auto v1 = h.store(SyncHarness::custom_set(3), "1001");
+    h.device.set = SyncHarness::custom_set(3);
+    h.device.reason = SyncReason::kPcAdapterRemoved;
+    h.device.direction = SyncDirection::kUpload;
+    ASSERT_TRUE(h.run_sync());
+    EXPECT_EQ(h.sync->outputs(), FbOutputs{});
+    EXPECT_TRUE(h.device.released);
+    const auto history = h.real->history(SyncHarness::kStation).value();
+    EXPECT_EQ(history.size(), skip ? 1u : 2u);
+    EXPECT_EQ(h.real->current(SyncHarness::kStation).value().version.id == v1.id, skip);
+  }
+}
+
 TEST(Scenario, NormalStartReleasesAtOnceThenVerifiesInTheBackground) {
   SyncHarness h;
   const auto set = SyncHarness::custom_set(3);
