@@ -9,7 +9,7 @@
 // (dp/link/capture.h writing every telegram to a pcap file in the temporary directory): the
 // cost of capture on a 125-slave cycle. BM_MemoryPerSlave: heap bytes one generic slave costs
 // (object + its allocations + its bus port incl. decoder), measured with glibc mallinfo2().
-#include "dp/devices/generic_bus.h"
+#include "bench/dp/link/bus_of_125.h"
 #include "dp/link/capture.h"
 
 #include <benchmark/benchmark.h>
@@ -22,31 +22,15 @@ namespace {
 
 using namespace rs4sim;
 using namespace std::chrono_literals;
-
-dp::devices::GenericBusConfig bus_of_125() {
-  dp::devices::GenericBusConfig c;
-  c.master_address = 0;
-  c.cycle_target = 1us;  // cycles back to back
-  for (std::uint8_t a = 1; a <= 125; ++a)
-    c.slaves.push_back({a, 0x1234, {0x31}, true});  // 2 B in/out
-  return c;
-}
-
-// One poll cycle; out of line so that callgrind can count it alone
-// (valgrind --tool=callgrind --toggle-collect='*one_bus_cycle*'; divide by the calls it
-// reports only for a run of ≥ 100 of them: each fresh bus starts with a part-cycle).
-[[gnu::noinline]] void one_bus_cycle(dp::devices::GenericBus& b) {
-  const auto target = b.master().counters().cycles + 1;
-  b.run_until([&] { return b.master().counters().cycles >= target; }, 1s);
-}
+using bench::bus_of_125;
+using bench::one_bus_cycle;
 
 void BM_MemoryBusCycle125(benchmark::State& state) {
   dp::devices::GenericBus b(bus_of_125());
-  if (!b.run_until([&] { return b.slaves_in_data_exchange() == 125; }, 5s)) {
+  if (!bench::reach_steady_state(b)) {
     state.SkipWithError("slaves did not reach Data_Exch");
     return;
   }
-  b.run_for(50ms);  // steady state
   const bool captured = state.range(0) != 0;
   const auto file = std::filesystem::temp_directory_path() / "bench_dp_link_capture.pcap";
   dp::link::Capture capture;
