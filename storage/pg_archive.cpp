@@ -259,10 +259,7 @@ Result<std::vector<VersionInfo>> PgArchive::history(const StationKey& key) {
     if (r.count() == 0) {
       BOOST_OUTCOME_TRY(station_id(key, false));  // unknown, or a station without sets
     }
-    std::vector<VersionInfo> out;
-    out.reserve(static_cast<std::size_t>(r.count()));
-    for (int i = 0; i < r.count(); ++i) out.push_back(read_version(r, i));
-    return out;
+    return read_versions(r);
   });
 }
 
@@ -289,8 +286,7 @@ Result<VersionInfo> PgArchive::restore(VersionId version, Timestamp at, std::str
                                        const Author& by) {
   return with_context("restore", [&]() -> Result<VersionInfo> {
     BOOST_OUTCOME_TRY(check_note(note));
-    BOOST_OUTCOME_TRY(check_text("user", by.user, kMaxNameSize));
-    BOOST_OUTCOME_TRY(check_text("host", by.host, kMaxNameSize));
+    BOOST_OUTCOME_TRY(check_author(by));
     return write<VersionInfo>([&]() -> Result<VersionInfo> {
       BOOST_OUTCOME_TRY(old, version_info(version));
       BOOST_OUTCOME_TRY(station, station_id(old.station, true));
@@ -349,10 +345,7 @@ Result<std::vector<VersionInfo>> PgArchive::versions_after(VersionId after, std:
     BOOST_OUTCOME_TRY(
         r, c_->query(version_query("WHERE v.id > $1::int8 ORDER BY v.id LIMIT $2::int8"), p,
                      "read versions"));
-    std::vector<VersionInfo> out;
-    out.reserve(static_cast<std::size_t>(r.count()));
-    for (int i = 0; i < r.count(); ++i) out.push_back(read_version(r, i));
-    return out;
+    return read_versions(r);
   });
 }
 
@@ -373,10 +366,7 @@ Result<std::vector<VersionInfo>> PgArchive::versions_by_id(std::span<const Versi
   p.add(list);
   BOOST_OUTCOME_TRY(r, c_->query(version_query("WHERE v.id = ANY($1::int8[]) ORDER BY v.id"), p,
                                  "read versions"));
-  std::vector<VersionInfo> out;
-  out.reserve(static_cast<std::size_t>(r.count()));
-  for (int i = 0; i < r.count(); ++i) out.push_back(read_version(r, i));
-  return out;
+  return read_versions(r);
 }
 
 Result<std::vector<std::pair<std::int64_t, StationInfo>>> PgArchive::list_stations() {

@@ -9,6 +9,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace rs4sim::storage {
 
@@ -47,6 +48,14 @@ inline VersionInfo read_version(const pg::Rows& r, int i) {
   v.user = r.text(i, 13);
   v.host = r.text(i, 14);
   return v;
+}
+
+// Every row of version_query(...), in order.
+inline std::vector<VersionInfo> read_versions(const pg::Rows& r) {
+  std::vector<VersionInfo> out;
+  out.reserve(static_cast<std::size_t>(r.count()));
+  for (int i = 0; i < r.count(); ++i) out.push_back(read_version(r, i));
+  return out;
 }
 
 // A row of version_query(..., true).

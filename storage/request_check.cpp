@@ -73,11 +73,15 @@ Result<void> check_text(std::string_view field, std::string_view value, std::siz
 
 Result<void> check_note(std::string_view note) { return check_text("note", note, kMaxNoteSize); }
 
+Result<void> check_author(const Author& by) {
+  BOOST_OUTCOME_TRY(check_text("user", by.user, kMaxNameSize));
+  return check_text("host", by.host, kMaxNameSize);
+}
+
 Result<void> check_request(const StoreRequest& r) {
   BOOST_OUTCOME_TRY(check_address(r.station));
   BOOST_OUTCOME_TRY(check_note(r.note));
-  BOOST_OUTCOME_TRY(check_text("user", r.user, kMaxNameSize));
-  BOOST_OUTCOME_TRY(check_text("host", r.host, kMaxNameSize));
+  BOOST_OUTCOME_TRY(check_author({r.user, r.host}));
   BOOST_OUTCOME_TRY(check_text("site", r.site, kMaxNameSize));
   BOOST_OUTCOME_TRY(check_text("line", r.line, kMaxNameSize));
   if (r.blob.empty()) return archive_error(ArchiveError::kInvalidArgument, "empty blob");

@@ -25,5 +25,6 @@ inline constexpr std::size_t kMaxNoteSize = 4096;
 inline constexpr std::size_t kMaxNameSize = 256;
 Result<void> check_text(std::string_view field, std::string_view value, std::size_t max);
 Result<void> check_note(std::string_view note);
+Result<void> check_author(const Author& by);  // its user and host
 
 }  // namespace rs4sim::storage

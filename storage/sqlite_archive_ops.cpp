@@ -108,8 +108,7 @@ Result<VersionInfo> SqliteArchive::restore(VersionId version, Timestamp at, std:
                                            const Author& by) {
   return with_context("restore", [&]() -> Result<VersionInfo> {
     BOOST_OUTCOME_TRY(check_note(note));
-    BOOST_OUTCOME_TRY(check_text("user", by.user, kMaxNameSize));
-    BOOST_OUTCOME_TRY(check_text("host", by.host, kMaxNameSize));
+    BOOST_OUTCOME_TRY(check_author(by));
     BOOST_OUTCOME_TRY(tx, Transaction::begin(*db_));
     BOOST_OUTCOME_TRY(old, version_info(version));
     BOOST_OUTCOME_TRY(station, station_id(old.station));

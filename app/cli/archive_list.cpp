@@ -54,10 +54,6 @@ void write_sync_log(JsonWriter& w, const std::vector<storage::SyncLogEntry>& log
   w.end_array();
 }
 
-// "jdoe@ws-maint-03", "jdoe", "@ws-maint-03" or "".
-std::string author_text(const storage::VersionInfo& v) {
-  return v.host.empty() ? v.user : v.user + "@" + v.host;
-}
 
 }  // namespace
 

@@ -33,9 +33,7 @@ void print_version(const storage::VersionWithSet& v, bool is_current) {
   row("set", "id " + std::to_string(v.set.id) + ", " + std::to_string(v.set.blob.size()) +
                  " bytes, CRC-32 " + crc_hex(v.set.crc32));
   if (!info.note.empty()) row("note", info.note);
-  if (!info.user.empty() || !info.host.empty()) {
-    row("by", info.host.empty() ? info.user : info.user + "@" + info.host);
-  }
+  if (const auto by = author_text(info); !by.empty()) row("by", by);
   if (info.restored_from) row("restores version", std::to_string(*info.restored_from));
   row("pending download", info.pending_download ? "yes" : "no");
 }

@@ -12,6 +12,7 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 
 namespace rs4sim::app::archive {
 
@@ -136,6 +137,10 @@ std::string station_text(const storage::StationKey& s) {
   return s.bus + "/" + std::to_string(s.address);
 }
 
+std::string author_text(const storage::VersionInfo& v) {
+  return v.host.empty() ? v.user : v.user + "@" + v.host;
+}
+
 storage::Timestamp now() {
   return std::chrono::time_point_cast<std::chrono::milliseconds>(std::chrono::system_clock::now());
 }
@@ -158,6 +163,18 @@ void write_version(rs4::report::JsonWriter& w, const storage::VersionInfo& v) {
     w.null();
   }
   w.field("pending_download", v.pending_download).end_object();
+}
+
+void print_changed_version(const CommonOptions& o, const storage::VersionInfo& v,
+                           const std::string& text) {
+  if (o.json) {
+    rs4::report::JsonWriter w(2);
+    w.begin_object().field("archive", archive_shown(o)).key("version");
+    write_version(w, v);
+    std::cout << w.end_object().str() << "\n";
+  } else {
+    std::cout << text << "\n";
+  }
 }
 
 void write_file_atomically(const std::string& path, std::string_view text) {

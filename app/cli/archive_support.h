@@ -67,9 +67,15 @@ std::string iso_time(storage::Timestamp t);              // "2026-12-01T20:43:12
 std::string table_time(storage::Timestamp t);            // "2026-12-01 20:43:12"
 std::string crc_hex(std::uint32_t crc);                  // "0x1A2B3C4D"
 std::string station_text(const storage::StationKey& s);  // "default/4"
+// Who stored a version: "jdoe@ws-maint-03", "jdoe", "@ws-maint-03" or "".
+std::string author_text(const storage::VersionInfo& v);
 storage::Timestamp now();
 
 void write_version(rs4::report::JsonWriter& w, const storage::VersionInfo& v);
+// What a command that changed one version prints: with --json `{archive, version}`, else
+// `text`.
+void print_changed_version(const CommonOptions& o, const storage::VersionInfo& v,
+                           const std::string& text);
 void write_station_key(rs4::report::JsonWriter& w, const storage::StationKey& s);
 
 // Writes `text` to `path` through a temporary file in the same directory and a rename,

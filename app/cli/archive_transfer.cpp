@@ -102,16 +102,11 @@ int run_restore(const ArchiveOptions& o) {
   if (o.ids.size() != 1) throw UsageError("archive restore: needs exactly one version id");
   auto a = open_archive(o.common, OpenMode::kWrite);
   const auto v = unwrap(a->restore(o.ids[0], now(), o.note, local_author(o.user)));
-  if (o.common.json) {
-    JsonWriter w(2);
-    w.begin_object().field("archive", archive_shown(o.common)).key("version");
-    write_version(w, v);
-    std::cout << w.end_object().str() << "\n";
-  } else {
-    std::cout << "version " << v.id << " (" << station_text(v.station) << " #" << v.number
-              << ") restores version " << o.ids[0] << ": current, pending download at the "
-              << "station's next sync\n";
-  }
+  print_changed_version(o.common, v,
+                        "version " + std::to_string(v.id) + " (" + station_text(v.station) +
+                            " #" + std::to_string(v.number) + ") restores version " +
+                            std::to_string(o.ids[0]) +
+                            ": current, pending download at the station's next sync");
   return 0;
 }
 
@@ -121,15 +116,10 @@ int run_note(const ArchiveOptions& o) {
   }
   auto a = open_archive(o.common, OpenMode::kWrite);
   const auto v = unwrap(a->annotate(o.version, o.note));
-  if (o.common.json) {
-    JsonWriter w(2);
-    w.begin_object().field("archive", archive_shown(o.common)).key("version");
-    write_version(w, v);
-    std::cout << w.end_object().str() << "\n";
-  } else {
-    std::cout << "version " << v.id << " (" << station_text(v.station) << " #" << v.number
-              << "): note " << (v.note.empty() ? "cleared" : "\"" + v.note + "\"") << "\n";
-  }
+  print_changed_version(o.common, v,
+                        "version " + std::to_string(v.id) + " (" + station_text(v.station) +
+                            " #" + std::to_string(v.number) + "): note " +
+                            (v.note.empty() ? "cleared" : "\"" + v.note + "\""));
   return 0;
 }
 

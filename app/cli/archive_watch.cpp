@@ -19,9 +19,7 @@ std::string version_line(const storage::VersionInfo& v) {
                      source_name(v.source) + "  " + crc_hex(v.crc32);
   if (!v.serial_number.empty()) line += "  SN " + v.serial_number;
   if (v.pending_download) line += "  pending download";
-  if (!v.user.empty() || !v.host.empty()) {
-    line += "  by " + (v.host.empty() ? v.user : v.user + "@" + v.host);
-  }
+  if (const auto by = author_text(v); !by.empty()) line += "  by " + by;
   if (!v.note.empty()) line += ": " + v.note;
   return line;
 }
