@@ -40,14 +40,6 @@ const GenericSlave& GenericBus::slave(std::uint8_t address) const {
   throw std::out_of_range("generic bus: no slave at address " + std::to_string(address));
 }
 
-void GenericBus::collect() {
-  master_->take_events(events_);  // appends
-}
-
-bool GenericBus::run_until(const std::function<bool()>& done, Duration timeout) {
-  return bus_->run_until(done, clock_.now() + timeout, [this] { collect(); });
-}
-
 void GenericBus::run_for(Duration d) {
   run_until([] { return false; }, d);
 }

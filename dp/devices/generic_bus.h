@@ -39,7 +39,10 @@ class GenericBus {
 
   // Simulated time runs until `done()` holds (checked after every bus event) or `timeout`
   // of simulated time has passed; returns done(). Master events are collected.
-  bool run_until(const std::function<bool()>& done, Duration timeout);
+  template <class Done>
+  bool run_until(Done&& done, Duration timeout) {
+    return bus_->run_until_with(done, clock_.now() + timeout, [this] { collect(); });
+  }
   void run_for(Duration d);
 
   // Master events collected so far; take_events() moves them out.
@@ -50,7 +53,7 @@ class GenericBus {
   [[nodiscard]] std::size_t slaves_in_data_exchange() const;
 
  private:
-  void collect();
+  void collect() { master_->take_events(events_); }  // appends
 
   ManualClock clock_;
   std::unique_ptr<link::MemoryBus> bus_;

@@ -33,7 +33,12 @@ class DeadlineTree {
     if (at_max_[slot]) --at_max_count_;
     at_max_[slot] = deadline == TimePoint::max();
     if (at_max_[slot]) ++at_max_count_;
-    key_[slot] = deadline ? deadline->time_since_epoch().count() : kNone;
+    const TimePoint::rep key = deadline ? deadline->time_since_epoch().count() : kNone;
+    // The front moving earlier (the master's reply in: its next send is sooner than the slot
+    // time it waited for) stays the winner on its whole path: nothing else changes.
+    const bool front_earlier = winner_[1] == slot && key <= key_[slot];
+    key_[slot] = key;
+    if (front_earlier) return;
     for (std::size_t p = (kSlots + slot) / 2; p >= 1; p /= 2) {
       const std::uint8_t l = winner_[2 * p];
       const std::uint8_t r = winner_[2 * p + 1];

@@ -239,7 +239,17 @@ TimePoint MemoryBus::arrival_time(const Port& from, const fdl::Telegram& t, std:
 
 void MemoryBus::transmit(Port& from, const fdl::Telegram& t) {
   ++from.counters.sent;
-  const std::span<const std::uint8_t> wire(encode_buf_.data(), fdl::encode(t, encode_buf_));
+  // The wire bytes are made only for those who look at them: an observer, or a fault that
+  // works on bytes. Otherwise the frame travels as its telegram and only its size counts
+  // (encoded_size() makes the same checks as encode(), so a bad telegram throws alike).
+  std::span<const std::uint8_t> wire;
+  std::size_t size = 0;
+  if (!observers_.empty() || !faults_.empty()) {
+    size = fdl::encode(t, encode_buf_);
+    wire = std::span<const std::uint8_t>(encode_buf_.data(), size);
+  } else {
+    size = fdl::encoded_size(t);
+  }
   BusEvent ev{clock_.now(), clock_.now(), from.station->address(), std::nullopt,
               &t,           wire,         Fate::kDelivered};
   if (from.silenced) {
@@ -250,7 +260,7 @@ void MemoryBus::transmit(Port& from, const fdl::Telegram& t) {
     ev.fate = Fate::kUnroutable;
   } else {
     ev.to = to;
-    ev.arrival = arrival_time(from, t, wire.size());
+    ev.arrival = arrival_time(from, t, size);
     if (*to == fdl::kBroadcastAddress) {
       for (Port* p : order_) {
         if (p != &from) schedule(from, p->station->address(), ev.arrival, t, wire);
@@ -438,20 +448,6 @@ void MemoryBus::run_until(TimePoint until) {
   while (step_until(until)) {
   }
   if (until > clock_.now()) clock_.set(until);
-}
-
-bool MemoryBus::run_until(const std::function<bool()>& done, TimePoint until,
-                          const std::function<void()>& after_step) {
-  after_step();
-  while (!done()) {
-    if (!step_until(until)) {  // the next event lies after `until`
-      if (until > clock_.now()) clock_.set(until);
-      after_step();
-      return done();
-    }
-    after_step();
-  }
-  return true;
 }
 
 }  // namespace rs4sim::dp::link
