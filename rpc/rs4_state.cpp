@@ -61,6 +61,9 @@ void fill_state(const rs4::device::Rs4Device& device, std::uint8_t address, dp::
   out.set_powered(device.powered());
   out.set_led(led_name(view.led));
   out.set_led_lit(device.adapter().led_lit(now));
+  const auto leds = device.scanner().leds();
+  out.set_led3_red(leds.led3_red);
+  out.set_led5_yellow_blinking(leds.led5_yellow_blinking);
   out.set_rs4_state(rs4::scanner::to_string(status.state));
   out.set_fdevice_state(fdevice_name(view.fdevice));
   out.set_proxy_phase(proxy_phase_name(view.proxy));

@@ -150,7 +150,7 @@ void Adapter::start_adapter(TimePoint now, bool keep_errors) {
   }
   connected_ = false;
   prm_refused_ = false;
-  proxy_.stop();
+  proxy_.stop(scanner_, now);
   proxy_enable_ = false;
   proxy_enable_known_ = false;
   rs232_through_ = pc_attached_;

@@ -25,6 +25,7 @@
 #include "rs4/adapter/cyclic_bytes.h"
 #include "rs4/adapter/error_memory.h"
 #include "rs4/adapter/proxy_session.h"
+#include "rs4/adapter/rs4_commands.h"
 #include "rs4/protocol/adapter_answer.h"
 #include "rs4/protocol/adapter_command.h"
 #include "rs4/protocol/adapter_error.h"
@@ -73,6 +74,9 @@ struct AdapterConfig {
   // manual gives only the bound; one scan (40 ms) is the default
   // [docs/decisions.md#rs4-command-time].
   milliseconds rs4_command_time{40};
+  // Accepted by the RS4's password rule while both user passwords are empty (the factory
+  // state): the same rule and default as on its RS232 (rs4_commands.h, docs/rs232.md).
+  std::array<std::uint8_t, 8> factory_password = kFactoryPassword;
   std::size_t read_buffers = 4;          // answers awaiting a READ per channel (0x2A05)
   bool check_reserved_output_bits = true;  // output bits 5..3 ≠ 0 → 0x2419, byte not applied
   std::size_t event_buffer = 8;       // second buffer: 0x53/0x54 for 0x92 ([RS4 manual §5.2.2])
@@ -306,7 +310,7 @@ class Adapter final : public dp::slave::SlaveApplication {
   void abort_on_user_command(std::span<const std::uint8_t> command, dp::slave::AcyclicChannel which,
                              TimePoint now);
   [[nodiscard]] std::vector<std::uint8_t> transfer(std::span<const std::uint8_t> command,
-                                                   TimePoint now);
+                                                   TimePoint now, bool authorised);
   // adapter_events.cpp: RS4 events, forwarding, error memory, alarms
   void collect_rs4(TimePoint now);
   void capture_forwarding();

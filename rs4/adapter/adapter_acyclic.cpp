@@ -248,10 +248,36 @@ void Adapter::finish_processing(TimePoint now) {
   if (executed) refresh_input(now);  // an executed command may have changed the RS4
 }
 
+// [RS4 manual §5.2.1] "Alle Kommandos werden transparent von und zur RS232 des RS4 übertragen":
+// the RS4 behind the tunnel answers the command set of its RS232 (rs4_commands.h) with the
+// same password rule. DECISION: the proxy's transfer inside a sync it was asked for needs no
+// password (the Proxy-FB holds none: "Die Benutzerkennwörter werden durch den Proxy-FB beim
+// Parameter-Download nicht überschrieben" [RS4 manual §7.2.4]); a setting command, which has
+// no answer of its own, is acknowledged with 0x16 so that the master's READ finds one
+// [docs/decisions.md#rs4-one-command-set].
 std::vector<std::uint8_t> Adapter::execute_rs4_command(std::span<const std::uint8_t> command,
                                                        TimePoint now) {
-  if (!command.empty() && protocol::is_transfer_code(command[0])) return transfer(command, now);
-  auto answer = answer_rs4_command(scanner_, command);
+  const std::uint8_t code = command.empty() ? 0 : command[0];
+  const auto prefix = protocol::decode_prefix(command);
+  const bool proxy_transfer = protocol::is_transfer_code(code) && proxy_.running();
+  std::vector<std::uint8_t> answer;
+  if (prefix && protected_command(code) && !proxy_transfer &&
+      !password_accepted(scanner_.parameters(), prefix.value().prefix, config_.factory_password)) {
+    answer = prefix.value().prefix.options.acknowledge
+                 ? nak_telegram(scanner_, code, kRs4ErrorWrongPassword)
+                 : error_telegram(scanner_, kRs4ErrorWrongPassword, code, kRs4ErrorFunctionCommands);
+  } else if (protocol::is_transfer_code(code)) {
+    return transfer(command, now, /*authorised=*/!proxy_transfer);
+  } else if (prefix && setting_command(code)) {
+    const auto v = execute_setting(scanner_, code, command.subspan(prefix.value().size), now);
+    collect_rs4(now);
+    if (v.ok()) return ack_telegram(scanner_, code);
+    answer = prefix.value().prefix.options.acknowledge
+                 ? nak_telegram(scanner_, code, v.error)
+                 : error_telegram(scanner_, v.error, v.parameter, kRs4ErrorFunctionCommands);
+  } else {
+    answer = answer_rs4_command(scanner_, command);
+  }
   // [RS4 manual §5.2.3.2, §5.3.2]: the 0x53 the RS4 answers with is an error of the RS4 like those
   // it reports by itself: error memory and a diagnosis alarm. A command the RS4 does not know
   // puts it into its error state, OSSD off ([RS4 manual §5.2.2] "RS4 geht in Fehlerzustand"):

@@ -29,7 +29,7 @@ std::error_code Adapter::proxy_sync_started(TimePoint now) {
   if (!proxy_request_) return AdapterApiError::kNoSyncRequested;
   proxy_request_ = false;  // [RS4 manual §5.1.1] bit 2: reset when the check begins
   check_after_release_ = false;
-  proxy_.start(scanner_);  // flow state 011 on both channels from now on
+  proxy_.start(scanner_, now);  // flow state 011 on both channels from now on
   refresh_input(now);
   return {};
 }
@@ -37,7 +37,7 @@ std::error_code Adapter::proxy_sync_started(TimePoint now) {
 std::error_code Adapter::proxy_sync_succeeded(TimePoint now) {
   if (!powered_) return AdapterApiError::kPoweredOff;
   if (!proxy_.running()) return AdapterApiError::kNoSyncRunning;
-  proxy_.stop();
+  proxy_.stop(scanner_, now);
   // [RS4 manual §7.1, §7.2]: Proxy-Enable 1 → OSSD released after a successful sync. The only
   // place besides Proxy-Enable 0 that grants the release.
   released_ = true;
@@ -70,7 +70,7 @@ std::error_code Adapter::proxy_sync_failed(TimePoint now, std::uint16_t error) {
 // diagnosis alarm ([RS4 manual §5.3.2]), the RS4 at factory settings, the sync over and
 // Proxy-Request set again (reason retry; seen by the master in its next data exchange).
 void Adapter::fail_sync(std::uint16_t error, TimePoint now) {
-  proxy_.stop();
+  proxy_.stop(scanner_, now);
   if (error != 0) report_error(error, error, now);
   scanner_.reset_to_factory_default(now);
   request_sync(protocol::SyncReason::kRetry);
@@ -124,11 +124,21 @@ void Adapter::abort_on_user_command(std::span<const std::uint8_t> command,
 
 // A transfer command for the RS4. A set written during the sync (commit, break) is not yet
 // confirmed by the proxy: with Proxy-Enable 1 the release waits for PROFI_CMD_PROXY_END ok.
-std::vector<std::uint8_t> Adapter::transfer(std::span<const std::uint8_t> command, TimePoint now) {
+// `authorised`: the command carried an accepted password (a user's download outside a sync).
+std::vector<std::uint8_t> Adapter::transfer(std::span<const std::uint8_t> command, TimePoint now,
+                                            bool authorised) {
   const auto before = scanner_.change_counter();
-  auto answer = proxy_.answer(command, scanner_, now);
+  auto answer = proxy_.answer(command, scanner_, now, authorised);
   if (scanner_.change_counter() != before) {
-    if (proxy_enable_) released_ = false;
+    if (!proxy_.running()) {
+      // DECISION: a user's parametrisation over PROFIBUS asks the proxy to take the new set,
+      // as the removal of the PC adapter does after one over RS232 ([RS4 manual §7.2.2]);
+      // the OSSD bit is not withdrawn for it ([RS4 manual §7.1.2] "Das OSSD-Bit wird davon
+      // nicht beeinflusst solange bei dem Parameterabgleich keine Fehler auftreten").
+      if (rs4_up_ && !pc_attached_) request_sync(protocol::SyncReason::kPcAdapterRemoved);
+    } else if (proxy_enable_) {
+      released_ = false;
+    }
     refresh_input(now);
   }
   return answer;

@@ -60,21 +60,30 @@ protocol::SyncDirection sync_direction(protocol::SyncReason why, bool factory_se
 
 void ProxySession::reset() noexcept { *this = ProxySession{}; }
 
-void ProxySession::start(const scanner::Scanner& rs4) {
+void ProxySession::start(scanner::Scanner& rs4, scanner::TimePoint now) {
+  close_download(rs4, now);
   running_ = true;
   direction_ = sync_direction(reason_, rs4.factory_settings());
-  download_ = Download{};
 }
 
-void ProxySession::stop() noexcept {
+void ProxySession::stop(scanner::Scanner& rs4, scanner::TimePoint now) {
   running_ = false;
-  download_ = Download{};
+  close_download(rs4, now);
+}
+
+void ProxySession::close_download(scanner::Scanner& rs4, scanner::TimePoint now) {
+  const bool was_open = std::exchange(download_, Download{}).open;
+  if (was_open && rs4.status().state == scanner::ScannerState::kConfiguration) {
+    (void)rs4.leave_configuration(now);
+  }
 }
 
 std::vector<std::uint8_t> ProxySession::answer(std::span<const std::uint8_t> command,
-                                               scanner::Scanner& rs4, scanner::TimePoint now) {
+                                               scanner::Scanner& rs4, scanner::TimePoint now,
+                                               bool authorised) {
   const auto request = protocol::decode_request(command);
-  Answer a = request ? dispatch(request.value(), rs4, now) : refused(status_of(request.error()));
+  Answer a = request ? dispatch(request.value(), rs4, now, authorised)
+                     : refused(status_of(request.error()));
   a.code = !command.empty() && protocol::is_transfer_code(command[0])
                ? static_cast<protocol::TransferCode>(command[0])
                : protocol::TransferCode::kIdentify;
@@ -89,16 +98,20 @@ std::vector<std::uint8_t> ProxySession::answer(std::span<const std::uint8_t> com
 }
 
 ProxySession::Answer ProxySession::dispatch(const protocol::TransferRequest& request,
-                                            scanner::Scanner& rs4, scanner::TimePoint now) {
+                                            scanner::Scanner& rs4, scanner::TimePoint now,
+                                            bool authorised) {
   if (!operational(rs4.status().state)) return refused(TransferStatus::kNotOperational);
-  // Only the proxy, in a sync it was asked for, may write a set ([RS4 manual §7.1, §7.2]).
-  if (is_download(request) && !running_) return refused(TransferStatus::kNoSyncRunning);
+  // The proxy in a sync it was asked for ([RS4 manual §7.1, §7.2]), or a user with the
+  // password, may write a set.
+  if (is_download(request) && !running_ && !authorised) {
+    return refused(TransferStatus::kNoSyncRunning);
+  }
   if (std::holds_alternative<protocol::IdentifyRequest>(request)) return identify(rs4);
   if (const auto* up = std::get_if<protocol::UploadChunkRequest>(&request)) {
     return upload_chunk(*up, rs4);
   }
   if (const auto* begin = std::get_if<protocol::DownloadBeginRequest>(&request)) {
-    return download_begin(*begin);
+    return download_begin(*begin, rs4, now);
   }
   if (const auto* chunk = std::get_if<protocol::DownloadChunkRequest>(&request)) {
     return download_chunk(*chunk);
@@ -141,8 +154,14 @@ ProxySession::Answer ProxySession::upload_chunk(const protocol::UploadChunkReque
   return ok(std::move(a));
 }
 
-ProxySession::Answer ProxySession::download_begin(const protocol::DownloadBeginRequest& r) {
+// [RS4 manual §7.1.2]: the OSSDs go off when the download starts, not at its commit: the RS4
+// enters its configuration mode here (a repeated BEGIN restarts the download inside it).
+ProxySession::Answer ProxySession::download_begin(const protocol::DownloadBeginRequest& r,
+                                                  scanner::Scanner& rs4, scanner::TimePoint now) {
   if (r.size != kSetSize) return refused(TransferStatus::kSizeMismatch);
+  if (!download_.open && !rs4.enter_configuration(now)) {
+    return refused(TransferStatus::kNotOperational);
+  }
   download_ = Download{true, r.size, r.crc32, 0, {}};
   download_.bytes.reserve(r.size);
   return ok(protocol::DownloadBeginAnswer{static_cast<std::uint8_t>(kChunkCount),
@@ -161,22 +180,26 @@ ProxySession::Answer ProxySession::download_chunk(const protocol::DownloadChunkR
   return ok(protocol::DownloadChunkAnswer{r.chunk, scanner::crc32_iso_hdlc(r.data)});
 }
 
-// Every refusal leaves the RS4's set as it was; the download is closed either way.
+// Every refusal leaves the RS4's set as it was; the download is closed either way and the RS4
+// leaves its configuration mode (the start interlock applies as at every start).
 ProxySession::Answer ProxySession::download_commit(scanner::Scanner& rs4, scanner::TimePoint now) {
   if (!download_.open) return refused(TransferStatus::kNoDownload);
-  const Download d = std::exchange(download_, Download{});
-  if (d.bytes.size() != d.size) return refused(TransferStatus::kSizeMismatch);
-  if (scanner::crc32_iso_hdlc(d.bytes) != d.crc32) return refused(TransferStatus::kCrcMismatch);
-  const auto decoded = scanner::decode(d.bytes);
-  if (!decoded) return refused(TransferStatus::kInvalidSet);
-  const auto merged = scanner::merge_download(rs4.parameters(), decoded.value());
-  if (scanner::validate(merged)) return refused(TransferStatus::kInvalidSet);
-  // [RS4 manual §7.1.2]: the OSSDs are off while the set changes (configuration mode).
-  if (!rs4.enter_configuration(now)) return refused(TransferStatus::kNotOperational);
-  const bool applied = static_cast<bool>(rs4.set_parameters(merged, now));
-  (void)rs4.leave_configuration(now);
-  if (!applied) return refused(TransferStatus::kInvalidSet);
-  return ok(protocol::DownloadCommitAnswer{rs4.transfer_checksum()});
+  const Download& d = download_;  // closed below, after the last use
+  const auto answer = [&]() -> Answer {
+    if (d.bytes.size() != d.size) return refused(TransferStatus::kSizeMismatch);
+    if (scanner::crc32_iso_hdlc(d.bytes) != d.crc32) return refused(TransferStatus::kCrcMismatch);
+    const auto decoded = scanner::decode(d.bytes);
+    if (!decoded) return refused(TransferStatus::kInvalidSet);
+    const auto merged = scanner::merge_download(rs4.parameters(), decoded.value());
+    if (scanner::validate(merged)) return refused(TransferStatus::kInvalidSet);
+    if (rs4.status().state != scanner::ScannerState::kConfiguration) {
+      return refused(TransferStatus::kNotOperational);  // left configuration meanwhile
+    }
+    if (!rs4.set_parameters(merged, now)) return refused(TransferStatus::kInvalidSet);
+    return ok(protocol::DownloadCommitAnswer{rs4.transfer_checksum()});
+  }();
+  close_download(rs4, now);
+  return answer;
 }
 
 // [docs/proxy-protocol.md]: an explicit break rolls the RS4 back to factory settings.

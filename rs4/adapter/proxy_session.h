@@ -11,9 +11,13 @@
 // Download rules: only while a sync runs (kNoSyncRunning otherwise); DOWNLOAD_BEGIN with
 // the device's set size; chunks strictly in order 0..n-1, each of the chunk size (the last
 // one shorter); COMMIT checks size and whole CRC-32, decodes, merges with the device's
-// set (passwords and identity kept, scanner::merge_download), validates and applies it in
-// the scanner's configuration mode (OSSD off while the set changes, [RS4 manual §7.1.2]).
-// Any refusal leaves the RS4's set unchanged. BREAK rolls the RS4 back to factory settings.
+// set (passwords and identity kept, scanner::merge_download), validates and applies it.
+// The RS4 is in its configuration mode for the whole download, not only at the commit:
+// DOWNLOAD_BEGIN enters it (OSSDs off, option 1 state 011, input bit 4 "RS4-
+// Parametrierzustand", [RS4 manual §7.1.2] "schaltet das OSSD-Signal während eines Downloads
+// … aus", [RS4 manual §5.1.1]), COMMIT, a refused COMMIT and stop() leave it (start
+// interlock as at every start), BREAK leaves it at factory settings. Any refusal leaves the
+// RS4's set unchanged.
 
 #include "rs4/protocol/adapter_answer.h"
 #include "rs4/protocol/parameter_transfer.h"
@@ -31,10 +35,12 @@ class ProxySession {
   void reset() noexcept;
   // Why the adapter sets Proxy-Request; reported by the next PROFI_CMD_PROXY_BEGIN.
   void request(protocol::SyncReason why) noexcept { reason_ = why; }
-  // The sync starts: the device decides the direction ([docs/proxy-protocol.md] step 2).
-  void start(const scanner::Scanner& rs4);
-  // The sync is over (END, abort, link loss): an open download is discarded.
-  void stop() noexcept;
+  // The sync starts: the device decides the direction ([docs/proxy-protocol.md] step 2); a
+  // user's download still open is discarded (the RS4 leaves configuration).
+  void start(scanner::Scanner& rs4, scanner::TimePoint now);
+  // The sync is over (END, abort, link loss): an open download is discarded and the RS4
+  // leaves its configuration mode with its set unchanged.
+  void stop(scanner::Scanner& rs4, scanner::TimePoint now);
 
   [[nodiscard]] bool running() const noexcept { return running_; }
   [[nodiscard]] protocol::SyncReason reason() const noexcept { return reason_; }
@@ -43,8 +49,11 @@ class ProxySession {
 
   // The RS4's answer body to one transfer command (CMD 0x60..0x65 first), with the RS4's
   // option bytes ([RS4 manual §5.2.3]). A malformed request is answered with a status.
+  // Downloads only while running(), or `authorised` (the command carried a password the RS4
+  // accepted: a user's parametrisation, [RS4 manual §5.1.1] bit 4 "Der RS4 kann sowohl über
+  // den PROFIBUS … als auch über die PC-Schnittstelle … parametriert werden").
   std::vector<std::uint8_t> answer(std::span<const std::uint8_t> command, scanner::Scanner& rs4,
-                                   scanner::TimePoint now);
+                                   scanner::TimePoint now, bool authorised = false);
 
  private:
   struct Download {
@@ -59,12 +68,15 @@ class ProxySession {
   // proxy_transfer.cpp: one handler per command.
   Answer identify(const scanner::Scanner& rs4) const;
   static Answer upload_chunk(const protocol::UploadChunkRequest& r, const scanner::Scanner& rs4);
-  Answer download_begin(const protocol::DownloadBeginRequest& r);
+  Answer download_begin(const protocol::DownloadBeginRequest& r, scanner::Scanner& rs4,
+                        scanner::TimePoint now);
+  // Ends an open download: the RS4 leaves configuration (set unchanged).
+  void close_download(scanner::Scanner& rs4, scanner::TimePoint now);
   Answer download_chunk(const protocol::DownloadChunkRequest& r);
   Answer download_commit(scanner::Scanner& rs4, scanner::TimePoint now);
   Answer download_break(scanner::Scanner& rs4, scanner::TimePoint now);
   Answer dispatch(const protocol::TransferRequest& request, scanner::Scanner& rs4,
-                  scanner::TimePoint now);
+                  scanner::TimePoint now, bool authorised);
 
   bool running_ = false;
   protocol::SyncReason reason_ = protocol::SyncReason::kNone;

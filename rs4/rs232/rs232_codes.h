@@ -7,6 +7,7 @@
 // parameter-set commands 0x60..0x65 that share their payloads with the PROFIBUS-side proxy
 // commands ([docs/proxy-protocol.md], rs4/protocol/parameter_transfer.h).
 
+#include "rs4/adapter/rs4_commands.h"
 #include "stream/line_settings.h"
 
 #include <array>
@@ -32,23 +33,18 @@ enum class Rs232Code : std::uint8_t {
   return static_cast<std::uint8_t>(c);
 }
 
-// Error numbers of the emulated RS4's RS232 interpreter (EXTENSION; function 0x0005 like
-// the adapter-side interpreter's 0x0501/0x0502 in rs4/adapter/rs4_commands.h). Carried by
-// 0x53 (command without acknowledge) or 0x17 (command with OPT1 bit 6).
-inline constexpr std::uint16_t kErrorWrongPassword = 0x0503;   // parameter: command byte
-inline constexpr std::uint16_t kErrorBadData = 0x0504;         // parameter: command byte
-inline constexpr std::uint16_t kErrorNotOperational = 0x0505;  // parameter: operating state
-
-// 0x19 data: u16 rate code, high byte first ([roboticslibrary/rl LeuzeRs4.cpp] "00 00" = 4800).
-inline constexpr std::array<std::uint32_t, 6> kBaudRates{4800, 9600, 19200, 38400, 57600, 115200};
+// Error numbers, rates and the factory password: the RS4 command set's, one for both paths
+// (rs4/adapter/rs4_commands.h). Carried by 0x53 (command without acknowledge) or 0x17
+// (command with OPT1 bit 6).
+inline constexpr std::uint16_t kErrorWrongPassword = adapter::kRs4ErrorWrongPassword;
+inline constexpr std::uint16_t kErrorBadData = adapter::kRs4ErrorBadData;
+inline constexpr std::uint16_t kErrorNotOperational = adapter::kRs4ErrorNotOperational;
+using adapter::baud_code;
+using adapter::baud_of_code;
+using adapter::kBaudRates;
+using adapter::kFactoryPassword;
 inline constexpr std::uint32_t kDefaultBaud = 57600;
-[[nodiscard]] std::optional<std::uint16_t> baud_code(std::uint32_t baud) noexcept;
-[[nodiscard]] std::optional<std::uint32_t> baud_of_code(std::uint16_t code) noexcept;
 // 8N1 at `baud`: the RS4's character format ([roboticslibrary/rl LeuzeRs4.cpp]).
 [[nodiscard]] stream::LineSettings line_8n1(std::uint32_t baud) noexcept;
-
-// The public drivers' service password "ROD4LE", 0xFF-padded ([roboticslibrary/rl LeuzeRs4.cpp]).
-inline constexpr std::array<std::uint8_t, 8> kFactoryPassword{0x52, 0x4F, 0x44, 0x34,
-                                                              0x4C, 0x45, 0xFF, 0xFF};
 
 }  // namespace rs4sim::rs4::rs232

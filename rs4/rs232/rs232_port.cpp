@@ -53,22 +53,24 @@ void Rs232Port::sync_adapter(stream::TimePoint now) {
   const bool reach = reachable();
   if (reach == open_) return;
   if (!reach) {
-    close_session();
+    close_session(now);
     return;
   }
   open_ = true;
   deframer_ = protocol::Rs232Deframer(options_.max_body);
-  session_.start(adapter_.scanner());  // the RS232 path may write the set (docs/rs232.md)
+  session_.start(adapter_.scanner(), now);  // the RS232 path may write the set (docs/rs232.md)
   streaming_ = options_.stream_on_attach;
   streamed_scan_.reset();
   if (scanning(adapter_.scanner())) streamed_scan_ = adapter_.scanner().last_scan().scan_number;
 }
 
 // DECISION (docs/rs232.md): removing the PC adapter ends the session: queued frames are
-// dropped, the stream stops and the line returns to its configured rate.
-void Rs232Port::close_session() {
+// dropped, the stream stops and the line returns to its configured rate; an open download is
+// discarded and the RS4 leaves its configuration mode with its set unchanged.
+void Rs232Port::close_session(stream::TimePoint now) {
   open_ = false;
-  session_.stop();
+  session_.stop(adapter_.scanner(), now);
+  adapter_.on_time(now);  // the adapter sees the RS4 leave configuration
   streaming_ = false;
   transmit_.clear();
   pending_line_.reset();

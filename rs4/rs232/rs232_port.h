@@ -77,7 +77,7 @@ class Rs232Port final : public stream::ByteDevice {
   void stream_scan(stream::TimePoint now);
   void send(std::vector<std::uint8_t> body, stream::TimePoint now);
   void on_rs4_event(const scanner::Rs4Event& e);
-  void close_session();
+  void close_session(stream::TimePoint now);
   // rs232_interpreter.cpp: one command
   void interpret(std::span<const std::uint8_t> body, stream::TimePoint now);
   struct Verdict {  // what a command did: nothing to add, or refused with an error number
@@ -87,7 +87,6 @@ class Rs232Port final : public stream::ByteDevice {
   Verdict execute(std::uint8_t code, std::span<const std::uint8_t> data,
                   std::span<const std::uint8_t> body, stream::TimePoint now);
   Verdict set_baud(std::span<const std::uint8_t> data, stream::TimePoint now);
-  Verdict set_window(std::span<const std::uint8_t> data, stream::TimePoint now);
   [[nodiscard]] bool password_ok(const protocol::TelegramPrefix& prefix) const;
   void refuse(std::uint8_t code, bool acknowledge, const Verdict& v, stream::TimePoint now);
   void acknowledge(std::uint8_t code, stream::TimePoint now);

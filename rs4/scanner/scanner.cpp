@@ -206,6 +206,12 @@ ScannerStatus Scanner::status() const noexcept {
   return s;
 }
 
+ScannerLeds Scanner::leds() const noexcept {
+  if (state_ == ScannerState::kOff) return {};
+  // LED5 from the contamination warning threshold on (the fault threshold lies above it).
+  return {restart_held_, contamination_warning_};
+}
+
 std::optional<Rs4Event> Scanner::pop_event() noexcept {
   if (event_count_ == 0) return std::nullopt;
   const Rs4Event e = events_[event_head_];

@@ -85,6 +85,17 @@ struct ScannerStatus {  // everything the cyclic byte and option 2/3 need
   std::uint32_t scan_counter = 0;
 };
 
+// The scanner's own LEDs as far as the manual describes them: LED3 red while the restart input
+// is held ([RS4 manual §4.3] "Während der Betätigung der Restart-Taste … leuchtet rot"), LED5
+// yellow blinking while the window is contaminated ([RS4 manual §8.3] "Eine blinkende gelbe
+// LED5 zeigt ,Fensterverschmutzung' an"); their other states are not modelled
+// [docs/decisions.md#rs4-scanner-leds].
+struct ScannerLeds {
+  bool led3_red = false;
+  bool led5_yellow_blinking = false;
+  friend bool operator==(const ScannerLeds&, const ScannerLeds&) = default;
+};
+
 struct ScannerCounters {
   std::uint64_t scans = 0;
   std::uint64_t boots = 0;
@@ -146,6 +157,7 @@ class Scanner {
   // Observation.
   [[nodiscard]] bool ossd() const noexcept { return ossd_; }
   [[nodiscard]] ScannerStatus status() const noexcept;
+  [[nodiscard]] ScannerLeds leds() const noexcept;  // all dark while powered off
   [[nodiscard]] const ScanResult& last_scan() const noexcept { return last_; }
   [[nodiscard]] const ParameterSet& parameters() const noexcept { return params_; }
   [[nodiscard]] const FaultTable& faults() const noexcept { return faults_; }

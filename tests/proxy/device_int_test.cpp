@@ -17,8 +17,13 @@ using namespace std::chrono_literals;
 constexpr std::uint8_t kEnable = rs4::adapter::kOutputProxyEnable | 0x01;
 
 struct DeviceSync : ::testing::Test {
-  static rs4::device::Rs4SegmentConfig config() {
+  DeviceSync() = default;
+  // A device whose RS4 takes `command_time` for every command ([RS4 manual §5.2.1]).
+  explicit DeviceSync(std::chrono::milliseconds command_time) : seg{config(command_time)} {}
+  static rs4::device::Rs4SegmentConfig config(
+      std::optional<std::chrono::milliseconds> command_time = std::nullopt) {
     rs4::device::Rs4SegmentConfig c;
+    if (command_time) c.device.adapter.rs4_command_time = *command_time;
     c.device.switches = rs4::device::switches_for(4);
     c.master.address = 4;
     c.output_byte = kEnable;
@@ -361,7 +366,9 @@ TEST_F(DeviceSync, UserCommandDuringASyncAbortsIt) {
   ASSERT_TRUE(drive());
   const auto& out = sync.outputs();
   EXPECT_EQ(out.error_number_fb & 0xFFU, 0x02U) << std::hex << out.error_number_fb;
-  EXPECT_EQ(out.error_number_rs4, 8);  // kNoSyncRunning: the device ended the sync
+  // The device ended the sync: outside one a download command needs the password, so the
+  // RS4 refuses the proxy's next chunk with 0x53 0503 [docs/decisions.md#rs4-one-command-set].
+  EXPECT_EQ(out.error_number_rs4, 0x0503);
   EXPECT_TRUE(out.config_set_to_default);
   const auto& errors = seg.device().adapter().error_memory();
   EXPECT_EQ(errors.count(rs4::adapter::Processor::kUc2, 0x2B01), 1);
@@ -417,6 +424,39 @@ TEST_F(DeviceSync, RestoreOfAnOlderVersionReachesTheDevice) {
   EXPECT_EQ(sync.outputs(), FbOutputs{}) << std::hex << sync.outputs().error_number_fb;
   EXPECT_EQ(seg.device().scanner().transfer_checksum(), rs4::scanner::transfer_checksum(a));
   EXPECT_FALSE(archive->get(restored.id).value().version.pending_download);
+}
+
+// [RS4 manual §5.2.1] "Da der RS4 bis zu 2 Minuten braucht um Daten zu verarbeiten": the proxy
+// waits 130 s for each answer (docs/proxy.md). At the longest command time `--command-time`
+// allows (120 s) the sync's first RS4 command (IDENTIFY) is answered within the tolerance and
+// the sync goes on; at 130.1 s the proxy gives up at that READ (ERROR_NUMBER_FB = its READ
+// position, ERROR_CODE_SFC 0: no SFC failed) and the device falls back to factory settings.
+struct SlowestDevice : DeviceSync {
+  SlowestDevice() : DeviceSync(std::chrono::milliseconds(120'000)) {}
+};
+struct TooSlowDevice : DeviceSync {
+  TooSlowDevice() : DeviceSync(std::chrono::milliseconds(130'100)) {}
+};
+
+TEST_F(SlowestDevice, EachAnswerComesWithinTheProxysTolerance) {
+  boot(rs4::scanner::factory_default());
+  const auto t0 = seg.now();
+  ASSERT_TRUE(run_sync(300s, Step::kIdentify2));
+  const auto first = seg.now() - t0;
+  EXPECT_GE(first, 120s) << "IDENTIFY answered after the RS4's command time";
+  EXPECT_LT(first, 130s);
+  EXPECT_EQ(sync.outputs().error_number_fb, 0);
+  EXPECT_TRUE(sync.active()) << "the sync goes on";
+}
+
+TEST_F(TooSlowDevice, TheProxyGivesUpAfter130s) {
+  boot(rs4::scanner::factory_default());
+  const auto t0 = seg.now();
+  ASSERT_TRUE(run_sync(300s));
+  EXPECT_GE(seg.now() - t0, 130s);
+  EXPECT_EQ(sync.outputs().error_number_fb, error_number_fb(Step::kIdentify1, FailureKind::kRead))
+      << std::hex << sync.outputs().error_number_fb;
+  EXPECT_EQ(sync.outputs().error_code_sfc, 0);
 }
 
 }  // namespace

@@ -68,6 +68,34 @@ TEST_F(RpcRs4Test, ProtectiveFieldViolationAndRestart) {
   EXPECT_TRUE(run_until(v1::CONDITION_OSSD_ON, 1000));
 }
 
+// The scanner's own LEDs in DeviceState: LED3 red while the restart is held [RS4 manual §4.3],
+// LED5 yellow blinking from the contamination warning on [RS4 manual §8.3] (50 %, not 49 %).
+TEST_F(RpcRs4Test, TheScannersLedsAreInTheState) {
+  boot();
+  EXPECT_FALSE(state().led3_red());
+  EXPECT_FALSE(state().led5_yellow_blinking());
+  press_restart(300);
+  advance(100);
+  EXPECT_TRUE(state().led3_red()) << "held";
+  advance(300);
+  EXPECT_FALSE(state().led3_red()) << "released";
+  const auto contaminate = [&](std::uint32_t percent) {
+    grpc::ClientContext ctx;
+    v1::SetContaminationRequest req;
+    req.set_address(4);
+    req.set_percent(percent);
+    v1::Empty e;
+    ASSERT_TRUE(device_stub_->SetContamination(&ctx, req, &e).ok());
+    advance(40);
+  };
+  contaminate(49);
+  EXPECT_FALSE(state().led5_yellow_blinking());
+  contaminate(50);
+  EXPECT_TRUE(state().led5_yellow_blinking());
+  contaminate(0);
+  EXPECT_FALSE(state().led5_yellow_blinking());
+}
+
 TEST_F(RpcRs4Test, BadInputGetsASpecificStatus) {
   v1::Empty e;
   {

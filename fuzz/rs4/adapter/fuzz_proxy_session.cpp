@@ -95,6 +95,10 @@ struct Harness {
             rs4.transfer_checksum());
     }
     check(!scanner::validate(rs4.parameters()).has_value());
+    // [RS4 manual §7.1.2]: in configuration (OSSDs off) exactly while a download is open.
+    if (rs4.status().state == scanner::ScannerState::kConfiguration) {
+      check(session.download_open() && !rs4.ossd());
+    }
     check(rs4.parameters().passwords == device_set().passwords);
     check(rs4.parameters().identity == scanner::ScannerConfig{}.identity);
   }
@@ -156,8 +160,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (unsigned steps = 0; steps < 64 && !in.empty(); ++steps) {
     switch (in.byte() % 10) {
       case 0: h.session.request(static_cast<protocol::SyncReason>(in.byte() % 4)); break;
-      case 1: h.session.start(h.rs4); break;
-      case 2: h.session.stop(); break;
+      case 1: h.session.start(h.rs4, h.now); break;
+      case 2: h.session.stop(h.rs4, h.now); break;
       case 3: h.raw(in); break;
       case 4: h.begin(in); break;
       case 5: h.chunk(in); break;

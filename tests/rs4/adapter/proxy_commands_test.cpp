@@ -107,15 +107,23 @@ TEST_F(ProxyCommands, LastUploadChunk) {
   EXPECT_EQ(command(rig, {0x61, 0x01, 0x09}), (Bytes{0x61, 0x0B, 0x90, 0x81, 0x02}));  // bad chunk
 }
 
+// Outside a sync a download needs the password, as on RS232 (docs/rs232.md "Reactions", the
+// one command set [docs/decisions.md#rs4-one-command-set]); without it the RS4 answers 0x53
+// 0503. With the password it is a user's parametrisation (tests/rs4/adapter/command_set_test).
 TEST_F(ProxyCommands, DownloadOutsideASyncIsRefused) {
   EXPECT_EQ(command(rig, {0x62, 0x01, 0x21, 0x3B, 0x9C, 0xC1, 0x9E, 0x11}),
             (Bytes{
-                0x62,              // DOWNLOAD_BEGIN
+                0x53,              // COM_CMD_ERROR_OCCURE
                 0x0B, 0x90, 0x81,  // option bytes
-                0x08,              // status 8: no proxy sync running
+                0x05, 0x03,        // error 0x0503: wrong password
+                0x00, 0x62,        // parameter: the command
+                0x00, 0x05,        // function: the command interpreter
             }));
-  EXPECT_EQ(command(rig, {0x64, 0x01}), (Bytes{0x64, 0x0B, 0x90, 0x81, 0x08}));
-  EXPECT_EQ(command(rig, {0x65, 0x01}), (Bytes{0x65, 0x0B, 0x90, 0x81, 0x08}));
+  EXPECT_EQ(command(rig, {0x64, 0x01}),
+            (Bytes{0x53, 0x0B, 0x90, 0x81, 0x05, 0x03, 0x00, 0x64, 0x00, 0x05}));
+  EXPECT_EQ(command(rig, {0x65, 0x01}),
+            (Bytes{0x53, 0x0B, 0x90, 0x81, 0x05, 0x03, 0x00, 0x65, 0x00, 0x05}));
+  EXPECT_FALSE(rig.adapter.proxy_session().download_open());
 }
 
 TEST_F(ProxyCommands, DownloadBeginAndItsRefusals) {
@@ -128,16 +136,18 @@ TEST_F(ProxyCommands, DownloadBeginAndItsRefusals) {
             (Bytes{0x62, 0x0B, 0x90, 0x81, 0x01}));  // one byte short: wrong length
   EXPECT_EQ(command(rig, {0x62, 0x01, 0x21, 0x3B, 0x9C, 0xC1, 0x9E, 0x11}),
             (Bytes{
-                0x62,              // DOWNLOAD_BEGIN
-                0x0B, 0x90, 0x81,  // option bytes
-                0x00,              // status ok
-                0x09,              // 9 chunks
-                0x04, 0x00,        // of 1024 bytes
+                0x62,  // DOWNLOAD_BEGIN
+                0x0D,  // option 1: state 011 configuration ([RS4 manual §5.2.3]), no option 2:
+                       // the RS4 is in its configuration mode from here ([RS4 manual §7.1.2])
+                0x00,        // status ok
+                0x09,        // 9 chunks
+                0x04, 0x00,  // of 1024 bytes
             }));
   // Chunk 1 before chunk 0: bad chunk; a short chunk 0: size mismatch.
-  EXPECT_EQ(command(rig, {0x63, 0x01, 0x01, 0xAA}), (Bytes{0x63, 0x0B, 0x90, 0x81, 0x02}));
-  EXPECT_EQ(command(rig, {0x63, 0x01, 0x00, 0xAA}), (Bytes{0x63, 0x0B, 0x90, 0x81, 0x04}));
-  EXPECT_EQ(command(rig, {0x60, 0x01}).at(22), 0x03);  // IDENTIFY flags: factory, download open
+  EXPECT_EQ(command(rig, {0x63, 0x01, 0x01, 0xAA}), (Bytes{0x63, 0x0D, 0x02}));
+  EXPECT_EQ(command(rig, {0x63, 0x01, 0x00, 0xAA}), (Bytes{0x63, 0x0D, 0x04}));
+  // IDENTIFY flags (byte 20 behind the single option byte): factory, download open.
+  EXPECT_EQ(command(rig, {0x60, 0x01}).at(20), 0x03);
 }
 
 TEST_F(ProxyCommands, ChunkEchoAndCommit) {
@@ -151,7 +161,7 @@ TEST_F(ProxyCommands, ChunkEchoAndCommit) {
   chunk0.insert(chunk0.end(), blob.begin(), blob.begin() + 1024);
   EXPECT_EQ(command(rig, chunk0), (Bytes{
                                       0x63,                    // DOWNLOAD_CHUNK
-                                      0x0B, 0x90, 0x81,        // option bytes
+                                      0x0D,                    // option 1: configuration
                                       0x00,                    // status ok
                                       0x00,                    // chunk 0
                                       0xB2, 0x69, 0x44, 0xAF,  // echo: CRC-32 of what arrived

@@ -199,7 +199,16 @@ TEST_F(ProxySync, InvalidSetAtCommitLeavesTheSetUnchanged) {
 TEST_F(ProxySync, OutOfOrderChunkAndDownloadOutsideASync) {
   boot();
   const auto blob = scanner::encode_for_transfer(scanner::factory_default());
-  EXPECT_EQ(begin_download(blob, 0), TransferStatus::kNoSyncRunning);
+  // Outside a sync, without the password: the RS4 refuses it with 0x53 0503 (the one password
+  // rule of both paths, [docs/decisions.md#rs4-one-command-set]), nothing opens.
+  const auto request = protocol::encode_request(protocol::DownloadBeginRequest{
+      static_cast<std::uint16_t>(blob.size()), 0});
+  ASSERT_TRUE(request);
+  const auto refused = command(request.value());
+  ASSERT_GE(refused.size(), 6U);
+  EXPECT_EQ(refused[0], 0x53);
+  EXPECT_EQ(Bytes(refused.end() - 6, refused.end()), (Bytes{0x05, 0x03, 0x00, 0x62, 0x00, 0x05}));
+  EXPECT_FALSE(seg.device().adapter().proxy_session().download_open());
   begin();
   ASSERT_EQ(begin_download(blob, 0), TransferStatus::kOk);
   EXPECT_EQ(chunk(blob, 1).status, TransferStatus::kBadChunk);

@@ -131,6 +131,25 @@ TEST(Rs232Port, UnknownCommandIsAnsweredWithAnError) {
   EXPECT_EQ(f.port.line_settings().baud, 57600U);
 }
 
+// The same RS4 behind both paths ([RS4 manual §5.2.1], [RS4 manual §5.2.2] "(RS4 geht in
+// Fehlerzustand)"): an unknown command over RS232 puts the RS4 into its error state, OSSD off,
+// as over PROFIBUS; its one 0x53 is the RS4's own error event.
+TEST(Rs232Port, UnknownCommandPutsTheRs4IntoItsErrorStateAsOverProfibus) {
+  Streaming f;
+  (void)f.feed(encode_stream_control(false).value());
+  ASSERT_EQ(f.adapter.scanner().status().state, scanner::ScannerState::kMeasuring);
+  const auto frames = f.feed(encode_command(0x42, {}).value());
+  ASSERT_EQ(frames.size(), 1U);
+  const auto e = std::get<protocol::ErrorTelegram>(PortFixture::decode(frames[0]));
+  EXPECT_EQ(e.report, (protocol::ErrorReport{0x0501, 0x0042, 0x0005}));
+  EXPECT_EQ(e.prefix.options.state, protocol::Option1State::kFault);
+  EXPECT_EQ(f.adapter.scanner().status().state, scanner::ScannerState::kError);
+  EXPECT_FALSE(f.adapter.scanner().ossd());
+  EXPECT_EQ(f.adapter.error_memory().last_error().uc2_error, 0x0501);
+  EXPECT_EQ(f.port.counters().error_telegrams, 0U) << "no second 0x53 beside the event";
+  EXPECT_EQ(f.port.counters().events, 1U);
+}
+
 TEST(Rs232Port, MalformedFramesGetSilenceAndNeverDisturbTheNext) {
   Streaming f;
   (void)f.feed(encode_stream_control(false).value());

@@ -152,5 +152,87 @@ TEST(Rs232Profibus, AnInvalidSetIsRefusedAndChangesNothing) {
   EXPECT_TRUE(p.segment.in_data_exchange());  // the PROFIBUS side is undisturbed
 }
 
+// [RS4 manual §7.1.2] "Natürlich schaltet das OSSD-Signal während eines Downloads über diese
+// Schnittstelle aus, wenn der Datensatz im RS4 verändert wird": a download over the PC adapter
+// puts the RS4 into configuration from its DOWNLOAD_BEGIN (the RS232 answers at once): option 1
+// 011, input bit 4 at once, the OSSD bit 10 ms later ([RS4 manual §6.6]), both sides of the
+// bound; the commit leaves it with the start interlock.
+TEST(Rs232Profibus, DownloadOverRs232SwitchesTheOssdOffFromItsStart) {
+  Profibus p;
+  p.segment.power_on();
+  ASSERT_TRUE(p.segment.run_until([&] { return p.segment.in_data_exchange(); }, 5s));
+  p.segment.run_for(300ms);
+  p.segment.set_output_byte(adapter::kOutputRestart | 0x01);
+  p.segment.run_for(200ms);
+  p.segment.set_output_byte(0x01);
+  ASSERT_TRUE(p.segment.run_until([&] { return (p.input() & adapter::kInputOssd) != 0; }, 500ms));
+  p.port.attach(p.segment.now());
+  p.segment.run_for(50ms);
+  ASSERT_TRUE(p.port.reachable());
+  const auto& a = p.segment.device().adapter();
+  ASSERT_EQ(a.input_byte() & (adapter::kInputOssd | adapter::kInputOperatingState),
+            adapter::kInputOssd);
+
+  auto changed = scanner::factory_default();
+  changed.response_steps = 3;
+  const auto blob = scanner::encode_for_transfer(changed);
+  const auto crc = scanner::crc32_iso_hdlc(blob);
+  const auto begin = p.transfer(
+      protocol::DownloadBeginRequest{static_cast<std::uint16_t>(blob.size()), crc}, kPassword);
+  const auto at = p.segment.now();
+  ASSERT_EQ(begin.status, protocol::TransferStatus::kOk);
+  EXPECT_EQ(begin.options.state, protocol::Option1State::kConfiguration);
+  EXPECT_EQ(p.segment.device().scanner().status().state, scanner::ScannerState::kConfiguration);
+  EXPECT_FALSE(p.segment.device().scanner().ossd());
+  EXPECT_NE(a.input_byte() & adapter::kInputOperatingState, 0) << "bit 4 at once";
+  EXPECT_NE(a.input_byte() & adapter::kInputOssd, 0) << "the OSSD bit 10 ms later";
+  p.segment.run_for(9ms);
+  EXPECT_NE(a.input_byte() & adapter::kInputOssd, 0) << "9 ms";
+  p.segment.run_for(1ms);
+  EXPECT_EQ(p.segment.now() - at, 10ms);
+  EXPECT_EQ(a.input_byte() & adapter::kInputOssd, 0) << "10 ms";
+
+  const auto& b = std::get<protocol::DownloadBeginAnswer>(*begin.body);
+  for (std::size_t c = 0; c < b.chunk_count; ++c) {
+    const std::size_t off = c * b.chunk_size;
+    const std::size_t len = std::min<std::size_t>(b.chunk_size, blob.size() - off);
+    const auto ch = p.transfer(protocol::DownloadChunkRequest{static_cast<std::uint8_t>(c),
+                                                              std::span(blob).subspan(off, len)},
+                               kPassword);
+    ASSERT_EQ(ch.status, protocol::TransferStatus::kOk);
+    EXPECT_EQ(ch.options.state, protocol::Option1State::kConfiguration);
+  }
+  const auto commit = p.transfer(protocol::DownloadCommitRequest{}, kPassword);
+  ASSERT_EQ(commit.status, protocol::TransferStatus::kOk);
+  EXPECT_EQ(commit.options.state, protocol::Option1State::kMeasuring);
+  EXPECT_EQ(p.segment.device().scanner().parameters().response_steps, 3);
+  p.segment.run_for(20ms);
+  EXPECT_EQ(a.input_byte() & (adapter::kInputOssd | adapter::kInputOperatingState), 0)
+      << "protecting again, OSSD 0 until the restart (start interlock)";
+  EXPECT_TRUE(p.segment.device().scanner().status().restart_interlock);
+}
+
+// Removing the PC adapter in the middle of an RS232 download discards it: the RS4 leaves its
+// configuration mode with its set unchanged.
+TEST(Rs232Profibus, RemovalDuringAnRs232DownloadLeavesConfiguration) {
+  Profibus p;
+  p.segment.power_on();
+  ASSERT_TRUE(p.segment.run_until([&] { return p.segment.in_data_exchange(); }, 5s));
+  p.port.attach(p.segment.now());
+  p.segment.run_for(50ms);
+  const auto before = p.segment.device().scanner().parameters();
+  const auto blob = scanner::encode_for_transfer(before);
+  ASSERT_EQ(p.transfer(protocol::DownloadBeginRequest{static_cast<std::uint16_t>(blob.size()),
+                                                      scanner::crc32_iso_hdlc(blob)},
+                       kPassword)
+                .status,
+            protocol::TransferStatus::kOk);
+  ASSERT_EQ(p.segment.device().scanner().status().state, scanner::ScannerState::kConfiguration);
+  p.port.detach(p.segment.now());
+  EXPECT_EQ(p.segment.device().scanner().status().state, scanner::ScannerState::kMeasuring);
+  EXPECT_EQ(p.segment.device().scanner().parameters(), before);
+  EXPECT_EQ(p.segment.device().scanner().change_counter(), 0);
+}
+
 }  // namespace
 }  // namespace rs4sim::rs4::rs232

@@ -228,5 +228,29 @@ TEST(ScannerTiming, FastForwardEqualsStepping) {
   EXPECT_EQ(jump.next_deadline(), step.next_deadline());
 }
 
+// The scanner's own LEDs: LED3 red exactly while the restart input is held ([RS4 manual §4.3]),
+// whatever the pulse's length; LED5 yellow blinking from the contamination warning on
+// ([RS4 manual §8.3]; 49 % no, 50 % yes); dark while powered off.
+TEST(ScannerLeds, Led3WhileTheRestartIsHeldLed5OnAContaminatedWindow) {
+  ManualTime t;
+  Scanner s = booted(params(RestartMode::kStartRestartInterlock), t);
+  EXPECT_EQ(s.leds(), ScannerLeds{});
+  s.set_restart_input(true, t.now);
+  EXPECT_TRUE(s.leds().led3_red);
+  s.advance(t.advance(seconds(6)));  // held too long: still red while held
+  EXPECT_TRUE(s.leds().led3_red);
+  s.set_restart_input(false, t.now);
+  EXPECT_FALSE(s.leds().led3_red);
+  s.set_contamination(49, t.now);
+  EXPECT_FALSE(s.leds().led5_yellow_blinking);
+  s.set_contamination(50, t.now);
+  EXPECT_TRUE(s.leds().led5_yellow_blinking);
+  s.set_contamination(90, t.now);  // a fault: still the contaminated window
+  EXPECT_TRUE(s.leds().led5_yellow_blinking);
+  s.set_restart_input(true, t.now);
+  s.power_off(t.now);
+  EXPECT_EQ(s.leds(), ScannerLeds{}) << "dark without power";
+}
+
 }  // namespace
 }  // namespace rs4sim::rs4::scanner
