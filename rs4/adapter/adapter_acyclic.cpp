@@ -269,7 +269,13 @@ std::vector<std::uint8_t> Adapter::execute_rs4_command(std::span<const std::uint
   } else if (protocol::is_transfer_code(code)) {
     return transfer(command, now, /*authorised=*/!proxy_transfer);
   } else if (prefix && setting_command(code)) {
+    const auto before = scanner_.change_counter();
     const auto v = execute_setting(scanner_, code, command.subspan(prefix.value().size), now);
+    // A new window is a change of the set like a user's download: the proxy is asked to take it
+    // (reason 2, an upload), as after the removal of the PC adapter [RS4 manual §7.2.2].
+    if (scanner_.change_counter() != before && rs4_up_ && !pc_attached_ && !proxy_.running()) {
+      request_sync(protocol::SyncReason::kPcAdapterRemoved);
+    }
     collect_rs4(now);
     if (v.ok()) return ack_telegram(scanner_, code);
     answer = prefix.value().prefix.options.acknowledge

@@ -459,5 +459,27 @@ TEST_F(TooSlowDevice, TheProxyGivesUpAfter130s) {
   EXPECT_EQ(sync.outputs().error_code_sfc, 0);
 }
 
+// A whole sync's duration ("Der automatische Parameterabgleich … kann bis zu 3 Minuten dauern"
+// [RS4 manual §7.2.4]): a download sync is 15 RS4 commands (IDENTIFY twice, DOWNLOAD_BEGIN, 9
+// chunks, COMMIT, IDENTIFY twice after it), each answered its command time after its WRITE, plus
+// the bus (≈1 s at the default 40 ms, ExchangeDownloadsTheStoredSet). At 11 s per command the
+// sync stays within the manual's 3 minutes (15 × 11 s = 165 s); at the maximum of 120 s it would
+// take ≈30 minutes (docs/proxy.md "Timing").
+struct ElevenSecondDevice : DeviceSync {
+  ElevenSecondDevice() : DeviceSync(std::chrono::milliseconds(11'000)) {}
+};
+
+TEST_F(ElevenSecondDevice, ADownloadSyncIsFifteenCommandTimesAndWithinThreeMinutes) {
+  ASSERT_TRUE(store(set_with_response_steps(6), "999"));
+  boot(rs4::scanner::factory_default());
+  const auto t0 = seg.now();
+  ASSERT_TRUE(run_sync(400s, Step::kEnd));
+  const auto took = seg.now() - t0;
+  EXPECT_EQ(sync.outputs().error_number_fb, 0) << std::hex << sync.outputs().error_number_fb;
+  EXPECT_GE(took, 15 * 11s);
+  EXPECT_LT(took, 15 * 11s + 3s);
+  EXPECT_LE(took, 180s) << "within the manual's 3 minutes";
+}
+
 }  // namespace
 }  // namespace rs4sim::proxy

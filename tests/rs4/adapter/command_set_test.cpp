@@ -36,8 +36,13 @@ struct CommandSet : ::testing::Test {
 };
 
 // 0x20 over PROFIBUS, as over RS232: with the password acknowledged (0x16 20) and applied
-// through the configuration mode (start interlock afterwards: OSSD 0 until the restart).
+// through the configuration mode (start interlock afterwards: OSSD 0 until the restart); the
+// changed set is offered to the proxy (Proxy-Request, reason 2: an upload).
 TEST_F(CommandSet, MeasurementWindowOverProfibusWithThePassword) {
+  // The power-up's Proxy-Request first ends with a sync, so that the one below is the window's.
+  ASSERT_TRUE(protocol::decode_proxy_begin_answer(command(rig, {0x98})));
+  ASSERT_TRUE(protocol::decode_proxy_end_answer(command(rig, {0x99, 0x00, 0x00, 0x00})));
+  ASSERT_EQ(rig.adapter.input_byte() & kInputProxyRequest, 0);
   const auto a = command(rig, with(0x20, kWithPassword, {0x04, 0x00, 0x00, 0x02, 0x10}));
   ASSERT_GE(a.size(), 2U);
   EXPECT_EQ(a.front(), 0x16) << "acknowledged: the READ finds an answer";
@@ -46,6 +51,8 @@ TEST_F(CommandSet, MeasurementWindowOverProfibusWithThePassword) {
   EXPECT_EQ(rs4().parameters().measurement.stop, 528);
   EXPECT_EQ(rs4().change_counter(), 1);
   EXPECT_TRUE(rs4().status().restart_interlock) << "the window went through configuration";
+  EXPECT_NE(rig.adapter.input_byte() & kInputProxyRequest, 0);
+  EXPECT_EQ(rig.adapter.proxy_session().reason(), protocol::SyncReason::kPcAdapterRemoved);
   rig.run(40ms);
   EXPECT_FALSE(rig.ossd());
   rig.restart_pulse();
