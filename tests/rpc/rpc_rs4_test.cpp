@@ -68,17 +68,17 @@ TEST_F(RpcRs4Test, ProtectiveFieldViolationAndRestart) {
   EXPECT_TRUE(run_until(v1::CONDITION_OSSD_ON, 1000));
 }
 
-// The scanner's own LEDs in DeviceState: LED3 red while the restart is held [RS4 manual §4.3],
-// LED5 yellow blinking from the contamination warning on [RS4 manual §8.3] (50 %, not 49 %).
+// The scanner's own LEDs in DeviceState: LED5 yellow blinking from the contamination warning on
+// [RS4 manual §8.3] (50 %, not 49 %); LED3 red while the restart is held [RS4 manual §4.3] (on the
+// simulated segment PressRestart runs the whole pulse within the call, so LED3 is dark again
+// afterwards; the held state is pinned by the scanner test
+// ScannerLeds.Led3WhileTheRestartIsHeldLed5OnAContaminatedWindow).
 TEST_F(RpcRs4Test, TheScannersLedsAreInTheState) {
   boot();
   EXPECT_FALSE(state().led3_red());
   EXPECT_FALSE(state().led5_yellow_blinking());
   press_restart(300);
-  advance(100);
-  EXPECT_TRUE(state().led3_red()) << "held";
-  advance(300);
-  EXPECT_FALSE(state().led3_red()) << "released";
+  EXPECT_FALSE(state().led3_red()) << "released again";
   const auto contaminate = [&](std::uint32_t percent) {
     grpc::ClientContext ctx;
     v1::SetContaminationRequest req;
