@@ -201,7 +201,7 @@ function drawRs4(address, state, contour) {
     const inP = fields.protective && d < fields.protective[n];
     const inW = !inP && fields.warning && d < fields.warning[n];
     if (inP || inW) {
-      obstacles.append(svg("circle", { cx: x.toFixed(0), cy: y.toFixed(0), r: (r / 160).toFixed(0),
+      obstacles.append(svg("circle", { cx: x.toFixed(0), cy: y.toFixed(0), r: (r / 70).toFixed(0),
         class: "obstacle" + (inP ? "" : " warning"), "data-segment": n, "data-mm": d,
         "data-field": inP ? "protective" : "warning" }));
     }
