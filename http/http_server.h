@@ -31,7 +31,7 @@ struct HttpOptions {
   std::string host = "127.0.0.1";  // the bind address (loopback; app/runtime checks the rule)
   std::uint16_t port = 0;          // 0: any free port
   // Not empty: every /api request needs `Authorization: Bearer <token>` (or, for browsers'
-  // EventSource, which cannot set headers, `?access_token=<token>` [RFC 6750 §2.3]).
+  // EventSource, which cannot set headers, `?access_token=<token>`, RFC 6750 section 2.3).
   std::string bearer_token{};
   std::size_t body_limit = 1U << 20;                 // request body bytes, else 413
   std::chrono::milliseconds read_timeout{10'000};    // a request's headers and body

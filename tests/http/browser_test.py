@@ -84,15 +84,17 @@ def main():
         call(base, "rs4sim.v1.SimTime/Advance", {"durationMs": 500})
         wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, row + '[data-ossd="off"]'))
         wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, '#scan[data-ossd="off"]'))
-        hits = wait.until(lambda d: d.find_elements(
-            By.CSS_SELECTOR, '#obstacles .obstacle[data-field="protective"]'))
-        assert hits, "no obstacle in the protective field"
-        bit7 = driver.find_element(By.CSS_SELECTOR, '#in-bits td[data-bit="7"]').text
-        assert bit7 == "0", f"OSSD bit {bit7!r}"
+        # (the panel is redrawn four times a second: read it in one script, not element by
+        # element)
+        hits = wait.until(lambda d: d.execute_script(
+            'return document.querySelectorAll(\'#obstacles .obstacle[data-field="protective"]\').length'))
+        assert hits > 0, "no obstacle in the protective field"
+        wait.until(lambda d: d.execute_script(
+            'return document.querySelector(\'#in-bits td[data-bit="7"]\').textContent') == "0")
         driver.find_element(By.CSS_SELECTOR, "#clock:not([hidden])")
         shot = os.path.join(outdir, "live_view.png")
         driver.save_screenshot(shot)
-        print(f"ok: OSSD off in the DOM, {len(hits)} contour points in the protective field; "
+        print(f"ok: OSSD off in the DOM, {hits} contour points in the protective field; "
               f"screenshot {shot}")
         return 0
     finally:
