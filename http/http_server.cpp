@@ -244,6 +244,12 @@ class Connection : public std::enable_shared_from_this<Connection> {
     events_.reset();
     if (closed_) return;
     if (!sse_started_) {
+      if (s.error_code() == grpc::StatusCode::UNIMPLEMENTED && s.error_message().empty()) {
+        respond(error_reply(501, 12, "rs4sim.v1.Observation/StreamEvents: this run does not "
+                                     "serve rs4sim.v1.Observation (no event stream)"),
+                false);
+        return;
+      }
       if (!s.ok()) {
         sse_ = false;  // no byte sent yet: a plain error answer
         respond({http_status_of(static_cast<int>(s.error_code())), status_json(s)}, false);

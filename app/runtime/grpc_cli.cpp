@@ -98,7 +98,7 @@ HttpAddress http_address(const GrpcCliOptions& o) {
   const auto why = rpc::check_listen_address(o.http);
   if (why.find("is not a loopback address") != std::string::npos) {
     throw UsageError("--http: " + why.substr(0, why.find(':')) +
-                     " is not a loopback address: the HTTP server has no TLS, so it serves on "
+                     ": the HTTP server has no TLS, so it serves on "
                      "this machine only (127.0.0.1, ::1, localhost); from elsewhere use --grpc "
                      "with TLS, or an SSH tunnel (ssh -L PORT:127.0.0.1:PORT)");
   }

@@ -67,13 +67,35 @@ function renderStations() {
       `<td>${pill(v["fdevice-state"], fClass(v["fdevice-state"]))}${plc ? " " + pill("F-host " + plc.fhostState, fClass(plc.fhostState)) : ""}</td>`,
       `<td>${v.ossd === undefined ? "–" : pill(v.ossd, v.ossd === "on" ? "ok" : "bad")}</td>`,
       `<td>${v["rs4-state"] || v.state || (v.powered === "off" ? "off" : "–")}</td>`,
-      `<td>${v["proxy-phase"] || "–"}</td>`,
+      `<td>${proxyText(s)}</td>`,
       `<td><code>${v["input-byte"] || ""}</code></td>`, `<td><code>${v["output-byte"] || ""}</code></td>`,
       `<td>${plc ? plc.crcErrors : "–"}</td>`, `<td>${plc ? plc.numberErrors : "–"}</td>`,
       `<td>${plc ? plc.watchdogTimeouts : "–"}</td>`, `<td>${plc ? plc.passivations : "–"}</td>`,
       `<td>${s.alarms || "–"}</td>`, `<td>${s.diags}</td>`,
     ].join("");
   }
+}
+
+// The proxy's step and progress (Proxy.GetStatus on `master`), else the RS4's proxy phase.
+function proxyText(s) {
+  const p = s.proxy;
+  if (!p) return s.values["proxy-phase"] || "–";
+  const total = Number(p.bytesTotal);
+  const pct = total > 0 ? ` ${Math.round(100 * Number(p.bytesDone) / total)} %` : "";
+  return `${p.step}${p.running ? " (" + p.direction + ")" : ""}${pct}`;
+}
+
+async function pollProxy() {
+  try {
+    const status = await call("rs4sim.v1.Proxy/GetStatus");
+    for (const p of status.stations || []) {
+      const s = station(p.address);
+      s.proxy = p;
+      if (!s.kind) s.kind = "rs4 (proxy)";
+    }
+    scheduleRender();
+    return true;
+  } catch (err) { return false; }  // no Proxy service in this run
 }
 
 function log(text) {
@@ -288,6 +310,7 @@ async function start() {
     for (const d of list.devices || []) station(d.address).kind = d.kind;
   } catch (err) { /* not an RS4 run: the kinds stay unknown */ }
   refreshClock();
+  if (await pollProxy()) setInterval(pollProxy, 500);
   const events = new EventSource("/api/events" + (token ? "?access_token=" + encodeURIComponent(token) : ""));
   events.onopen = () => { $("link").dataset.state = "live"; $("link").textContent = "live"; };
   events.onerror = () => { $("link").dataset.state = "lost"; $("link").textContent = "reconnecting…"; };
