@@ -89,7 +89,7 @@ void add_grpc_options(CLI::App& cmd, GrpcCliOptions& o, const std::string& note)
   // "or").
   cmd.parse_complete_callback([token, grpc, http] {
     if (token->count() > 0 && grpc->count() == 0 && http->count() == 0) {
-      throw CLI::ValidationError("--grpc-token-file", "needs --grpc or --http");
+      throw CLI::RequiresError("--grpc-token-file", "--grpc or --http");
     }
   });
 }

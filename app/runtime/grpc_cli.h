@@ -32,7 +32,7 @@ struct GrpcCliOptions {
   std::string tls_cert;    // --grpc-tls-cert FILE
   std::string tls_key;     // --grpc-tls-key FILE
   std::string token_file;  // --grpc-token-file FILE (the token of --http too)
-  std::string http;        // --http HOST:PORT; empty = no HTTP server
+  std::string http{};      // --http HOST:PORT; empty = no HTTP server ({}: see rpc::ServerOptions)
 
   // Neither --grpc nor --http: no API.
   [[nodiscard]] bool empty() const noexcept { return address.empty() && http.empty(); }
