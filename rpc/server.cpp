@@ -168,15 +168,18 @@ std::string check_server_options(const ServerOptions& options) {
 }
 
 RpcServer::RpcServer(const ServerOptions& options, const std::vector<grpc::Service*>& services) {
-  if (const auto why = check_server_options(options); !why.empty()) {
+  const bool listens = !options.address.empty();
+  if (const auto why = listens ? check_server_options(options) : check_bearer_token(options.bearer_token);
+      !why.empty()) {
     throw std::invalid_argument("--grpc: " + why);
   }
   grpc::EnableDefaultHealthCheckService(true);
   grpc::reflection::InitProtoReflectionServerBuilderPlugin();
   grpc::ServerBuilder builder;
-  builder.AddListeningPort(options.address, credentials(options), &port_);
+  if (listens) builder.AddListeningPort(options.address, credentials(options), &port_);
   for (auto* s : services) builder.RegisterService(s);
   server_ = builder.BuildAndStart();
+  if (!listens && server_) return;
   if (!server_ || port_ == 0) {
     throw std::runtime_error(
         "--grpc: cannot listen on " + options.address +
@@ -190,6 +193,10 @@ RpcServer::RpcServer(const ServerOptions& options, const std::vector<grpc::Servi
 }
 
 RpcServer::~RpcServer() { shutdown(); }
+
+std::shared_ptr<grpc::Channel> RpcServer::in_process_channel() {
+  return server_->InProcessChannel(grpc::ChannelArguments());
+}
 
 void RpcServer::shutdown() {
   if (!server_) return;

@@ -4,6 +4,7 @@
 // clients (grpcurl, grpc_cli, Postman) can explore the API. Beyond loopback it serves only
 // with TLS and a bearer token ("Remote access" in docs/rpc.md).
 
+#include <grpcpp/channel.h>
 #include <grpcpp/server.h>
 
 #include <memory>
@@ -14,7 +15,9 @@ namespace rs4sim::rpc {
 
 struct ServerOptions {
   // HOST:PORT; port 0 picks a free one. A host other than loopback (127.0.0.0/8, ::1,
-  // localhost), 0.0.0.0 and :: included, needs both TLS and a bearer token.
+  // localhost), 0.0.0.0 and :: included, needs both TLS and a bearer token. Empty: no
+  // listening port, only the in-process channel (the HTTP server's, `--http` without
+  // `--grpc`).
   std::string address = "127.0.0.1:0";
   // TLS: the server's PEM certificate chain and its PEM private key (both or neither);
   // both empty = plaintext. (The {} keep ServerOptions{address} free of
@@ -58,7 +61,10 @@ class RpcServer {
   RpcServer& operator=(const RpcServer&) = delete;
   ~RpcServer();
 
-  // "127.0.0.1:41234": the address clients use.
+  // A channel to the services inside this process (the HTTP server's route to them):
+  // no bytes on a socket, no bearer-token check (the HTTP server checks its own requests).
+  [[nodiscard]] std::shared_ptr<grpc::Channel> in_process_channel();
+  // "127.0.0.1:41234": the address clients use; empty without a listening port.
   [[nodiscard]] const std::string& address() const noexcept { return address_; }
   [[nodiscard]] int port() const noexcept { return port_; }
   // Stops accepting calls and waits for the running ones (bounded by a short deadline).

@@ -30,6 +30,9 @@ python  ensurepip          python3-venv            python3 -m venv for the Pytho
 python  setuptools         python3-setuptools      the Python package build backend
 python  wheel              python3-wheel           the package build by pip (bdist_wheel)
 python  pip                python3-pip             python_package_venv: the offline install into the venv (after setuptools: importing pip first breaks it)
+python  selenium           python3-selenium        http_live_view_browser: drives the browser
+command /usr/bin/chromium  chromium                http_live_view_browser: the page in a real browser, headless
+command /usr/bin/chromedriver chromium-driver      http_live_view_browser: the WebDriver of chromium for selenium
 command /usr/bin/python3   python3                 every Python test and script (ctest runs /usr/bin/python3)
 command mbpoll             mbpoll                  cli_run_polaris_modbus_clients: libmodbus client
 command tshark             tshark                  capture_dissector, cli_master_run_two_processes*: the Lua dissector

@@ -135,14 +135,15 @@ int run(MasterCliOptions& o) {
     const auto ok = storage::check_text(name, *value, storage::kMaxNameSize);
     if (!ok) throw UsageError("--" + ok.error().message);
   }
+  const std::string api = o.link.grpc.address.empty() ? "--http" : "--grpc";
   if (!o.link.grpc.empty() && o.link.link == LinkKind::kMemory) {
     throw UsageError(
-        "--grpc: the master serves its API on a real-time link (pty, serial, "
+        api + ": the master serves its API on a real-time link (pty, serial, "
         "udp); for a simulated bus under API control use `rs4sim run --link "
-        "memory --grpc`");
+        "memory " + api + "`");
   }
   if (!o.link.grpc.empty() && o.no_proxy) {
-    throw UsageError("--grpc serves the proxy and its archive, which --no-proxy turns off");
+    throw UsageError(api + " serves the proxy and its archive, which --no-proxy turns off");
   }
   std::unique_ptr<storage::ParameterArchive> archive;
   std::unique_ptr<ProxyPlugin> proxy;

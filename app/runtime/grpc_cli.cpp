@@ -79,9 +79,35 @@ void add_grpc_options(CLI::App& cmd, GrpcCliOptions& o, const std::string& note)
       std::string("--grpc: every call needs 'authorization: Bearer TOKEN', TOKEN being this "
                   "file's first line (or set ") +
           kGrpcTokenEnv + ")");
+  auto* http = cmd.add_option(
+      "--http", o.http,
+      "serve the live view (a web page) and the same API as JSON over HTTP on HOST:PORT "
+      "(loopback only; port 0 = any free port; docs/http.md)");
   cert->needs(grpc)->needs(key);
   key->needs(grpc)->needs(cert);
-  token->needs(grpc);
+  // The token guards both APIs: --grpc-token-file needs one of them (CLI11's needs() has no
+  // "or").
+  cmd.parse_complete_callback([token, grpc, http] {
+    if (token->count() > 0 && grpc->count() == 0 && http->count() == 0) {
+      throw CLI::RequiresError("--grpc-token-file", "--grpc or --http");
+    }
+  });
+}
+
+HttpAddress http_address(const GrpcCliOptions& o) {
+  const auto why = rpc::check_listen_address(o.http);
+  if (why.find("is not a loopback address") != std::string::npos) {
+    throw UsageError("--http: " + why.substr(0, why.find(':')) +
+                     ": the HTTP server has no TLS, so it serves on "
+                     "this machine only (127.0.0.1, ::1, localhost); from elsewhere use --grpc "
+                     "with TLS, or an SSH tunnel (ssh -L PORT:127.0.0.1:PORT)");
+  }
+  if (!why.empty()) throw UsageError("--http: " + why);
+  const auto colon = o.http.rfind(':');
+  HttpAddress a{o.http.substr(0, colon), static_cast<unsigned>(std::stoul(o.http.substr(colon + 1)))};
+  if (a.host.size() > 2 && a.host.front() == '[') a.host = a.host.substr(1, a.host.size() - 2);
+  if (a.host == "localhost") a.host = "127.0.0.1";
+  return a;
 }
 
 rpc::ServerOptions grpc_server_options(const GrpcCliOptions& o) {
@@ -106,6 +132,8 @@ rpc::ServerOptions grpc_server_options(const GrpcCliOptions& o, const char* env_
     }
   }
   s.bearer_token = token_of(o, env_token);
+  if (!o.http.empty()) (void)http_address(o);
+  if (o.address.empty()) return s;  // --http alone: the in-process server, no port
   if (const auto why = rpc::check_server_options(s); !why.empty()) {
     const bool remote = why.find("is not a loopback address") != std::string::npos;
     throw UsageError("--grpc: " + why +

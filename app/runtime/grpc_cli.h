@@ -8,8 +8,11 @@
 //   --grpc-token-file FILE      bearer token: the file's first line, trimmed
 //   RS4SIM_GRPC_TOKEN=TOKEN     bearer token from the environment (not with the file)
 //
+//   --http HOST:PORT            the live view and the same API as JSON over HTTP (docs/http.md)
+//
 // The token never comes from a command-line value (`ps` would show it). Loopback serves with
-// neither; a non-loopback host (0.0.0.0 and :: included) needs TLS and a token.
+// neither; a non-loopback host (0.0.0.0 and :: included) needs TLS and a token. --http
+// serves loopback only (it has no TLS yet) and checks the same bearer token on /api.
 
 
 #include <string>
@@ -28,20 +31,30 @@ struct GrpcCliOptions {
   std::string address;     // --grpc HOST:PORT; empty = no API
   std::string tls_cert;    // --grpc-tls-cert FILE
   std::string tls_key;     // --grpc-tls-key FILE
-  std::string token_file;  // --grpc-token-file FILE
+  std::string token_file;  // --grpc-token-file FILE (the token of --http too)
+  std::string http{};      // --http HOST:PORT; empty = no HTTP server ({}: see rpc::ServerOptions)
 
-  // No --grpc: no server.
-  [[nodiscard]] bool empty() const noexcept { return address.empty(); }
+  // Neither --grpc nor --http: no API.
+  [[nodiscard]] bool empty() const noexcept { return address.empty() && http.empty(); }
 };
+
+// The HTTP server's address of `options.http`: the host and the port (0 = any). Throws
+// UsageError for what is not HOST:PORT and for a host beyond loopback.
+struct HttpAddress {
+  std::string host;
+  unsigned port = 0;
+};
+HttpAddress http_address(const GrpcCliOptions& options);
 
 // The environment variable of the bearer token.
 inline constexpr const char* kGrpcTokenEnv = "RS4SIM_GRPC_TOKEN";
 
-// Adds --grpc, --grpc-tls-cert, --grpc-tls-key, --grpc-token-file; `note` ends --grpc's help
+// Adds --grpc, --grpc-tls-cert, --grpc-tls-key, --grpc-token-file, --http; `note` ends --grpc's help
 // (what the API does in this command).
 void add_grpc_options(CLI::App& cmd, GrpcCliOptions& options, const std::string& note = "");
 
-// The server options of `options` (which must have --grpc): the files read, the token from
+// The server options of `options` (which must have --grpc or --http; address empty without
+// --grpc, and --http checked, see http_address): the files read, the token from
 // --grpc-token-file or `env_token` (RS4SIM_GRPC_TOKEN; nullptr = unset), and the rules
 // checked. Throws UsageError with the reason: an unreadable or empty file, not PEM, both
 // token sources, a non-loopback host without TLS or token (and which is missing).

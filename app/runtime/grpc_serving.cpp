@@ -11,9 +11,10 @@
 
 namespace rs4sim::app {
 
-GrpcServing::GrpcServing(const rpc::ServerOptions& options, ServiceList services, std::ostream& out)
+GrpcServing::GrpcServing(const rpc::ServerOptions& options, ServiceList services, std::ostream& out,
+                         const std::string& option)
     : services_(std::move(services)) {
-  if (services_.empty()) throw UsageError("--grpc: this device has no gRPC API yet");
+  if (services_.empty()) throw UsageError(option + ": this device has no API yet");
   std::vector<grpc::Service*> raw;
   for (const auto& s : services_) raw.push_back(s.get());
   try {
@@ -21,6 +22,7 @@ GrpcServing::GrpcServing(const rpc::ServerOptions& options, ServiceList services
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
+  if (options.address.empty()) return;  // in-process only
   out << "grpc: listening on " << server_->address() << std::endl;
   if (const auto protection = grpc_protection(options); !protection.empty()) {
     std::cerr << "rs4sim: grpc: " << protection

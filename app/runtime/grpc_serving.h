@@ -22,12 +22,19 @@ class GrpcServing {
  public:
   // `options`: app/runtime/grpc_cli.h's grpc_server_options. Throws UsageError for refused options,
   // std::runtime_error when it cannot listen.
-  GrpcServing(const rpc::ServerOptions& options, ServiceList services, std::ostream& out);
+  // `option`: the option that asked for the API, for the messages ("--grpc", "--http"); an
+  // empty options.address serves the in-process channel only (--http without --grpc).
+  GrpcServing(const rpc::ServerOptions& options, ServiceList services, std::ostream& out,
+              const std::string& option = "--grpc");
   GrpcServing(const GrpcServing&) = delete;
   GrpcServing& operator=(const GrpcServing&) = delete;
   ~GrpcServing();
   // Shuts the server down, then runs `then` on `io` (which must keep running meanwhile).
   void stop_then(boost::asio::io_context& io, std::function<void()> then);
+  // The services inside this process (the HTTP server's route).
+  [[nodiscard]] std::shared_ptr<grpc::Channel> in_process_channel() {
+    return server_->in_process_channel();
+  }
 
  private:
   ServiceList services_;

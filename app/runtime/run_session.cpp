@@ -1,6 +1,9 @@
 #include "app/runtime/run_session.h"
 
 #include "app/runtime/grpc_serving.h"
+#include "app/runtime/usage_error.h"
+#include "http/http_server.h"
+#include "rpc/server.h"
 
 #include <boost/asio/post.hpp>
 
@@ -57,7 +60,17 @@ RunSession::~RunSession() {
 }
 
 void RunSession::serve_grpc(const GrpcCliOptions& options, ServiceList services) {
-  grpc_ = std::make_unique<GrpcServing>(grpc_server_options(options), std::move(services), out_);
+  const rpc::ServerOptions server = grpc_server_options(options);
+  grpc_ = std::make_unique<GrpcServing>(server, std::move(services), out_,
+                                        options.address.empty() ? "--http" : "--grpc");
+  if (options.http.empty()) return;
+  const HttpAddress address = http_address(options);
+  http::HttpOptions h;
+  h.host = address.host;
+  h.port = static_cast<std::uint16_t>(address.port);
+  h.bearer_token = server.bearer_token;
+  http_ = std::make_unique<http::HttpServer>(io_, h, grpc_->in_process_channel());
+  out_ << "http: listening on " << http_->url() << std::endl;
 }
 
 void RunSession::on_stop(std::function<void()> step) { stop_steps_.push_back(std::move(step)); }
@@ -80,6 +93,7 @@ void RunSession::request_stop(StopReason why) {
   if (stopping()) return;
   why_ = why;
   for (auto& step : begin_steps_) step();  // 0.
+  if (http_) http_->close();                // 1.
   if (grpc_) {
     grpc_->stop_then(io_, [this] { halt(); });  // 1. the server, while the loop runs its calls
   } else {
@@ -106,7 +120,10 @@ RunSession::StopReason RunSession::run() {
 void RunSession::release_servers() {
   // The loop ran out, so the stop completed: the servers are down. Their services go now,
   // before the devices and segments they serve (which the caller destroys after the run).
-  if (halted_) grpc_.reset();
+  if (halted_) {
+    http_.reset();
+    grpc_.reset();
+  }
 }
 
 bool RunSession::run_until(std::chrono::steady_clock::time_point deadline) {

@@ -8,8 +8,9 @@
 // The stop, whatever asked for it (a signal, --duration, request_stop()), goes in one order
 // that cannot deadlock:
 //   0. the first steps (on_stop_begin: e.g. end the event streams the clients hold);
-//   1. the servers shut down on a helper thread while the loop still runs the calls they
-//      wait for (a gRPC call posts its work to this loop);
+//   1. the HTTP server closes its connections and cancels the calls it forwarded (on the
+//      loop), then the gRPC server shuts down on a helper thread while the loop still runs
+//      the calls it waits for (a gRPC call posts its work to this loop);
 //   2. the stop steps run on the loop in the order they were added (the runners stop, the
 //      device's services end their timers);
 //   3. the signal set, the --duration timer and the work guard go, so the loop runs out.
@@ -34,6 +35,10 @@
 #include <iosfwd>
 #include <memory>
 #include <vector>
+
+namespace rs4sim::http {
+class HttpServer;
+}
 
 namespace rs4sim::app {
 
@@ -63,6 +68,8 @@ class RunSession {
   }
 
   // Serves `services` over gRPC (--grpc, docs/rpc.md); prints "grpc: listening on ADDRESS".
+  // With --http also over HTTP (docs/http.md), through the gRPC server's in-process channel
+  // (without --grpc that server has no port); prints "http: listening on http://HOST:PORT/".
   // Throws UsageError for refused options, std::runtime_error when it cannot listen.
   void serve_grpc(const GrpcCliOptions& options, ServiceList services);
   [[nodiscard]] bool serving() const noexcept { return grpc_ != nullptr; }
@@ -103,6 +110,7 @@ class RunSession {
   boost::asio::signal_set signals_;
   boost::asio::steady_timer limit_;
   std::unique_ptr<GrpcServing> grpc_;
+  std::unique_ptr<http::HttpServer> http_;  // on grpc_'s in-process channel
   std::vector<std::function<void()>> begin_steps_;
   std::vector<std::function<void()>> stop_steps_;
   StopReason why_ = StopReason::kNone;

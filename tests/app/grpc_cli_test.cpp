@@ -146,5 +146,53 @@ TEST(GrpcCliOptionsTest, TlsFilesComeInPairsAndNeedGrpc) {
   EXPECT_TRUE(parse({}).empty());
 }
 
+TEST(GrpcCliOptionsTest, HttpIsLoopbackOnlyAndSharesTheToken) {
+  const auto parse = [](std::vector<std::string> args) {
+    CLI::App app;
+    GrpcCliOptions o;
+    add_grpc_options(app, o);
+    std::reverse(args.begin(), args.end());
+    app.parse(args);
+    return o;
+  };
+  auto o = parse({"--http", "127.0.0.1:0"});
+  EXPECT_FALSE(o.empty());
+  EXPECT_TRUE(o.address.empty());
+  EXPECT_EQ(http_address(o).host, "127.0.0.1");
+  EXPECT_EQ(http_address(o).port, 0U);
+  o.http = "localhost:8080";
+  EXPECT_EQ(http_address(o).host, "127.0.0.1");
+  EXPECT_EQ(http_address(o).port, 8080U);
+  o.http = "[::1]:80";
+  EXPECT_EQ(http_address(o).host, "::1");
+  // --http alone: the in-process gRPC server, no port; the token of --grpc
+  o.http = "127.0.0.1:0";
+  o.token_file = kData + "/token.txt";
+  const auto s = grpc_server_options(o, nullptr);
+  EXPECT_TRUE(s.address.empty());
+  EXPECT_EQ(s.bearer_token, "rs4sim-test-token-0123456789");
+  const auto refused = [&](const std::string& address) {
+    GrpcCliOptions r;
+    r.http = address;
+    try {
+      (void)http_address(r);
+    } catch (const UsageError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(refused("0.0.0.0:8080"),
+            "--http: '0.0.0.0' is not a loopback address: the HTTP server has no TLS, so it "
+            "serves on this machine only (127.0.0.1, ::1, localhost); from elsewhere use --grpc "
+            "with TLS, or an SSH tunnel (ssh -L PORT:127.0.0.1:PORT)");
+  EXPECT_EQ(refused("127.0.0.1"),
+            "--http: '127.0.0.1' is not HOST:PORT (e.g. 127.0.0.1:50051, port 0 = any free port)");
+  EXPECT_EQ(refused("127.0.0.1:65536").substr(0, 36), "--http: '127.0.0.1:65536' is not HOS");
+  // the token file needs one of the two APIs
+  EXPECT_NO_THROW(parse({"--http", "127.0.0.1:0", "--grpc-token-file", "t"}));
+  EXPECT_THROW(parse({"--grpc-tls-cert", "c", "--grpc-tls-key", "k", "--http", "127.0.0.1:0"}),
+               CLI::RequiresError);  // TLS is --grpc's only
+}
+
 }  // namespace
 }  // namespace rs4sim::app

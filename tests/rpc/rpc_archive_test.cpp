@@ -1,6 +1,7 @@
 // The Archive service on a real gRPC server on loopback in front of a real SQLite archive.
 // Known answers: the factory set's pair 2 protective field is 1500 mm (docs/rs4-scanner.md),
 // so raising segments 100..140 to 1850 mm is "+350 mm" on exactly that range.
+#include "http_front.h"
 #include "google/rpc/error_details.pb.h"
 #include "google/rpc/status.pb.h"
 #include "rpc/archive_service.h"
@@ -269,6 +270,22 @@ TEST_F(RpcArchiveTest, WatchVersionsWithoutALocationIsRefused) {
   EXPECT_EQ(status.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
   EXPECT_NE(status.error_message().find("no archive location"), std::string::npos);
   server.shutdown();
+}
+
+
+// The same service as JSON over HTTP (docs/http.md).
+TEST_F(RpcArchiveTest, JsonOverHttpIsTheSameService) {
+  const auto id = store(rs4::scanner::factory_default(), 1000);
+  HttpFront h(io_, *server_);
+  const auto got = h.call("rs4sim.v1.Archive/ListStations");
+  ASSERT_EQ(got.status, 200u) << got.body;
+  const auto stations = from_json<v1::ListStationsResponse>(got.body);
+  ASSERT_EQ(stations.stations_size(), 1);
+  EXPECT_EQ(stations.stations(0).key().address(), 4U);
+  EXPECT_EQ(stations.stations(0).current_version_id(), static_cast<std::uint64_t>(id));
+  // uint64 fields are strings in protobuf's JSON mapping
+  EXPECT_NE(got.body.find("\"currentVersionId\":\"" + std::to_string(id) + "\""), std::string::npos)
+      << got.body;
 }
 
 }  // namespace

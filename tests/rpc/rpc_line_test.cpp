@@ -3,6 +3,7 @@
 // `rs4sim run --device X --grpc`. The link is this test: it hands the core bytes and time on
 // the loop (the manual clock) and takes what it sends, through the same tap as the run.
 #include "google/rpc/error_details.pb.h"
+#include "http_front.h"
 #include "google/rpc/status.pb.h"
 #include "rpc/device_target.h"
 #include "rpc/executor.h"
@@ -611,6 +612,37 @@ TEST(RpcMetronNoNodeTest, WrongNodeNeedsNodeMode) {
   server.shutdown();
   work.reset();
   loop.join();
+}
+
+
+// ==== the same services as JSON over HTTP (docs/http.md) ===================================
+
+TEST_F(RpcPolarisTest, JsonOverHttpIsTheSameService) {
+  HttpFront h(io_, *server_);
+  const auto a = h.call("rs4sim.v1.Polaris/SetBlocked", R"({"address": 1, "blocked": [3, 4]})");
+  ASSERT_EQ(a.status, 200u) << a.body;
+  const auto got = h.call("rs4sim.v1.Polaris/GetState", R"({"address": 1})");
+  ASSERT_EQ(got.status, 200u) << got.body;
+  EXPECT_EQ(from_json<v1::PolarisState>(got.body).SerializeAsString(), state().SerializeAsString());
+  EXPECT_EQ(list(from_json<v1::PolarisState>(got.body).blocked()), (std::vector<std::uint32_t>{3, 4}));
+  error_of(h.call("rs4sim.v1.Polaris/GetState", R"({"address": 2})"), 404, 5);
+}
+
+TEST_F(RpcGridScanTest, JsonOverHttpIsTheSameService) {
+  HttpFront h(io_, *server_);
+  const auto got = h.call("rs4sim.v1.GridScan/GetState", R"({"address": 0})");
+  ASSERT_EQ(got.status, 200u) << got.body;
+  EXPECT_EQ(from_json<v1::GridScanState>(got.body).SerializeAsString(), state().SerializeAsString());
+  error_of(h.call("rs4sim.v1.GridScan/SetSoiling", R"({"address": 0, "level": 4})"), 400, 3);
+}
+
+TEST_F(RpcMetronTest, JsonOverHttpIsTheSameService) {
+  HttpFront h(io_, *server_);
+  const auto got = h.call("rs4sim.v1.Metron/GetState", R"({"address": 5})");
+  ASSERT_EQ(got.status, 200u) << got.body;
+  EXPECT_EQ(from_json<v1::MetronState>(got.body).SerializeAsString(), state().SerializeAsString());
+  auto other = error_of(h.call("rs4sim.v1.Metron/GetState", R"({"address": 0})"), 404, 5);
+  EXPECT_EQ(other.message(), "no METRON at address 0 (this run's METRON answers to 5)");
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // bounded mailbox, and the bad-input statuses. The statuses come from a scheduler stand-in on
 // the loop thread, so every value the client sees is one the test set; the real scheduler
 // behind it is covered end to end by python_master_proxy_test.py (two processes, UDP).
+#include "http_front.h"
 #include "proxy/proxy_scheduler.h"
 #include "rpc/executor.h"
 #include "rpc/proxy_service.h"
@@ -271,6 +272,20 @@ TEST(ProxyWatch, AStatusIsMappedFieldByField) {
   EXPECT_EQ(out.direction(), "download");
   EXPECT_TRUE(out.outputs().config_set_to_default());
   EXPECT_EQ(out.now_ns(), 42);
+}
+
+
+// The same service as JSON over HTTP (docs/http.md).
+TEST_F(RpcProxyTest, JsonOverHttpIsTheSameService) {
+  HttpFront h(io_, *server_);
+  const auto got = h.call("rs4sim.v1.Proxy/GetStatus", R"({"addresses": [5]})");
+  ASSERT_EQ(got.status, 200u) << got.body;
+  v1::ProxyStatusResponse over_grpc;
+  ASSERT_TRUE(get({5}, over_grpc).ok());
+  EXPECT_EQ(from_json<v1::ProxyStatusResponse>(got.body).SerializeAsString(),
+            over_grpc.SerializeAsString());
+  error_of(h.call("rs4sim.v1.Proxy/GetStatus", R"({"addresses": [300]})"), 400, 3);
+  error_of(h.call("rs4sim.v1.Proxy/WatchSync"), 501, 12);  // a stream: not over HTTP
 }
 
 }  // namespace

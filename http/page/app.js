@@ -1,0 +1,322 @@
+// rs4sim live view (docs/http.md): the JSON API (POST /api/<Service>/<Method>) and the event
+// stream (GET /api/events, Server-Sent Events). No library, nothing loaded from elsewhere.
+"use strict";
+
+const token = new URLSearchParams(location.hash.slice(1)).get("token") || "";
+const SEGMENTS = 529;                     // [RS4 manual §2.3]: 529 segments of 0.36°
+const angle = (n) => (-5.04 + 0.36 * n) * Math.PI / 180;
+const NO_ECHO = 65535;
+
+async function call(method, request = {}) {
+  const headers = { "Content-Type": "application/json" };
+  if (token) headers.Authorization = "Bearer " + token;
+  const r = await fetch("/api/" + method, { method: "POST", headers, body: JSON.stringify(request) });
+  const body = await r.json();
+  if (!r.ok) throw Object.assign(new Error(body.message || r.statusText), { status: r.status, body });
+  return body;
+}
+
+const $ = (id) => document.getElementById(id);
+const el = (tag, attrs = {}, text) => {
+  const e = document.createElement(tag);
+  for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
+  if (text !== undefined) e.textContent = text;
+  return e;
+};
+const svg = (tag, attrs = {}) => {
+  const e = document.createElementNS("http://www.w3.org/2000/svg", tag);
+  for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
+  return e;
+};
+
+// ---- the stations -------------------------------------------------------------------------
+const stations = new Map();  // address -> { kind, values: {what: to}, state, alarms, diags }
+let selected = null;         // the RS4 shown in the panel
+
+function station(address) {
+  if (!stations.has(address)) {
+    stations.set(address, { kind: "", values: {}, state: null, alarms: "", diags: 0 });
+  }
+  return stations.get(address);
+}
+
+const pill = (text, cls) => `<span class="pill ${cls || ""}">${text || "–"}</span>`;
+function dpClass(v) { return v === "Data_Exch" ? "ok" : v ? "warn" : ""; }
+function fClass(v) { return !v ? "" : /run|data/i.test(v) ? "ok" : /fail|passiv|error/i.test(v) ? "bad" : "warn"; }
+
+function renderStations() {
+  const body = $("stations").tBodies[0];
+  $("stations-empty").hidden = stations.size > 0;
+  for (const address of [...stations.keys()].sort((a, b) => a - b)) {
+    const s = stations.get(address);
+    let row = body.querySelector(`tr[data-address="${address}"]`);
+    if (!row) {
+      row = el("tr", { class: "station", "data-address": address });
+      row.addEventListener("click", () => select(address));
+      body.append(row);
+      [...body.rows].sort((a, b) => a.dataset.address - b.dataset.address).forEach((r) => body.append(r));
+    }
+    const v = s.values, plc = s.state && s.state.plc && s.state.plc.present ? s.state.plc : null;
+    row.dataset.state = v["dp-state"] || (v.powered === "off" ? "off" : "unknown");
+    if (v.ossd !== undefined) row.dataset.ossd = v.ossd;
+    row.dataset.kind = s.kind;
+    row.classList.toggle("selected", address === selected);
+    row.innerHTML = [
+      `<td>${address}</td>`, `<td>${s.kind || "–"}</td>`,
+      `<td>${pill(v["dp-state"], dpClass(v["dp-state"]))}</td>`,
+      `<td>${pill(v["fdevice-state"], fClass(v["fdevice-state"]))}${plc ? " " + pill("F-host " + plc.fhostState, fClass(plc.fhostState)) : ""}</td>`,
+      `<td>${v.ossd === undefined ? "–" : pill(v.ossd, v.ossd === "on" ? "ok" : "bad")}</td>`,
+      `<td>${v["rs4-state"] || v.state || (v.powered === "off" ? "off" : "–")}</td>`,
+      `<td>${proxyText(s)}</td>`,
+      `<td><code>${v["input-byte"] || ""}</code></td>`, `<td><code>${v["output-byte"] || ""}</code></td>`,
+      `<td>${plc ? plc.crcErrors : "–"}</td>`, `<td>${plc ? plc.numberErrors : "–"}</td>`,
+      `<td>${plc ? plc.watchdogTimeouts : "–"}</td>`, `<td>${plc ? plc.passivations : "–"}</td>`,
+      `<td>${s.alarms || "–"}</td>`, `<td>${s.diags}</td>`,
+    ].join("");
+  }
+}
+
+// The proxy's step and progress (Proxy.GetStatus on `master`), else the RS4's proxy phase.
+function proxyText(s) {
+  const p = s.proxy;
+  if (!p) return s.values["proxy-phase"] || "–";
+  const total = Number(p.bytesTotal);
+  const pct = total > 0 ? ` ${Math.round(100 * Number(p.bytesDone) / total)} %` : "";
+  return `${p.step}${p.running ? " (" + p.direction + ")" : ""}${pct}`;
+}
+
+async function pollProxy() {
+  try {
+    const status = await call("rs4sim.v1.Proxy/GetStatus");
+    for (const p of status.stations || []) {
+      const s = station(p.address);
+      s.proxy = p;
+      if (!s.kind) s.kind = "rs4 (proxy)";
+    }
+    scheduleRender();
+    return true;
+  } catch (err) { return false; }  // no Proxy service in this run
+}
+
+function log(text) {
+  const li = el("li", {}, text);
+  $("log").prepend(li);
+  while ($("log").children.length > 200) $("log").lastChild.remove();
+}
+
+function onEvent(e) {
+  const address = e.address || 0;
+  const s = station(address);
+  const t = (Number(e.nowNs) / 1e9).toFixed(3) + " s";
+  if (e.state) {
+    s.values[e.state.what] = e.state.to;
+    if (e.state.from) log(`${t}  #${address}  ${e.state.what}: ${e.state.from} → ${e.state.to}`);
+  } else if (e.alarm) {
+    s.alarms = `${e.alarm.pending}/${e.alarm.outstanding}`;
+    log(`${t}  #${address}  alarm: ${e.alarm.pending} pending, ${e.alarm.outstanding} outstanding`);
+  } else if (e.diagnosis) {
+    s.diags += 1;
+  } else if (e.dropped) {
+    log(`${t}  the stream lost ${e.dropped.count} events (this page read too slowly)`);
+  }
+  if (selected === null && (s.kind === "rs4" || s.values["rs4-state"] !== undefined)) selected = address;
+  scheduleRender();
+  if (address === selected) refreshSelected();
+}
+
+let renderPending = false;
+function scheduleRender() {
+  if (renderPending) return;
+  renderPending = true;
+  requestAnimationFrame(() => { renderPending = false; renderStations(); });
+}
+
+function select(address) {
+  selected = address;
+  fieldsFor = null;
+  renderStations();
+  refreshSelected();
+}
+
+// ---- the RS4: contour, fields, obstacles, bits ----------------------------------------------
+let fieldsFor = null;  // "address/pair" whose fields are drawn
+let fields = { protective: null, warning: null };
+let refreshing = false, refreshAgain = false;
+
+// A contour of the parameter document (docs/param.md) as 529 distances; `get` prints runs.
+function contourOf(c) {
+  const mm = new Array(SEGMENTS).fill(0);
+  if (!c) return mm;
+  if (c.segments) return c.segments.slice(0, SEGMENTS);
+  for (const r of c.runs || []) for (let n = r.from; n <= r.to; n++) mm[n] = r.mm;
+  return mm;
+}
+
+const point = (n, d) => [d * Math.cos(angle(n)), -d * Math.sin(angle(n))];  // SVG y points down
+
+function fieldPath(mm) {
+  let d = "M0 0";
+  for (let n = 0; n < SEGMENTS; n++) {
+    const [x, y] = point(n, mm[n]);
+    d += ` L${x.toFixed(0)} ${y.toFixed(0)}`;
+  }
+  return d + " Z";
+}
+
+async function refreshSelected() {
+  if (selected === null) return;
+  if (refreshing) { refreshAgain = true; return; }
+  refreshing = true;
+  try {
+    const address = selected;
+    const [state, contour] = await Promise.all([
+      call("rs4sim.v1.Observation/GetState", { address }),
+      call("rs4sim.v1.Observation/GetContour", { address }).catch(() => null),
+    ]);
+    station(address).state = state;
+    const key = address + "/" + state.activeFieldPair;
+    if (fieldsFor !== key) {
+      fieldsFor = key;
+      try {
+        const doc = JSON.parse((await call("rs4sim.v1.Device/GetParameterSet", { address })).json);
+        const pairs = doc.pairs || {};
+        const pair = pairs[String(state.activeFieldPair)] || pairs["1"] || {};
+        fields = { protective: contourOf(pair.protective), warning: contourOf(pair.warning) };
+      } catch (err) {  // the demo serves Observation only: no fields to draw
+        fields = { protective: null, warning: null };
+      }
+    }
+    drawRs4(address, state, contour);
+    scheduleRender();
+  } catch (err) {
+    log("GetState: " + err.message);
+  } finally {
+    refreshing = false;
+    if (refreshAgain) { refreshAgain = false; refreshSelected(); }
+  }
+}
+
+function drawRs4(address, state, contour) {
+  $("rs4-panel").hidden = false;
+  $("rs4-address").textContent = address;
+  $("rs4-pair").textContent = state.activeFieldPair;
+  $("rs4-scan").textContent = contour ? contour.scanNumber : "–";
+  const scan = $("scan");
+  scan.dataset.address = address;
+  scan.dataset.state = state.rs4State;
+  scan.dataset.ossd = state.ossd ? "on" : "off";
+  const max = Math.max(1000, ...(fields.warning || []), ...(fields.protective || []));
+  const r = Math.ceil(max * 1.25 / 500) * 500;  // the view's radius, mm
+  scan.setAttribute("viewBox", `${-r} ${-r} ${2 * r} ${r * 1.12}`);
+  drawGrid(r);
+  $("protective-field").setAttribute("d", fields.protective ? fieldPath(fields.protective) : "");
+  $("warning-field").setAttribute("d", fields.warning ? fieldPath(fields.warning) : "");
+  const obstacles = $("obstacles");
+  obstacles.replaceChildren();
+  const pts = [];
+  const mm = contour ? contour.mm : [];
+  for (let n = 0; n < mm.length; n++) {
+    const d = mm[n];
+    if (d === NO_ECHO || d > r) continue;
+    const [x, y] = point(n, d);
+    pts.push(`${x.toFixed(0)},${y.toFixed(0)}`);
+    const inP = fields.protective && d < fields.protective[n];
+    const inW = !inP && fields.warning && d < fields.warning[n];
+    if (inP || inW) {
+      obstacles.append(svg("circle", { cx: x.toFixed(0), cy: y.toFixed(0), r: (r / 70).toFixed(0),
+        class: "obstacle" + (inP ? "" : " warning"), "data-segment": n, "data-mm": d,
+        "data-field": inP ? "protective" : "warning" }));
+    }
+  }
+  $("contour").setAttribute("points", pts.join(" "));
+  drawBits("in-bits", "in-hex", state.inputByte, [
+    ["warning field", "warningFieldViolated"], ["protective field", "protectiveFieldViolated"],
+    ["proxy request", "proxyRequest"], ["RS232 active", "rs232Active"],
+    ["not operational", "notOperational"], ["error", "error"],
+    ["warning output (0 = active)", null], ["OSSD", "ossd"]]);
+  drawBits("out-bits", "out-hex", state.outputByte, [
+    ["field pair bit 0", null], ["field pair bit 1", null], ["field pair bit 2", null],
+    ["restart", null], ["–", null], ["–", null], ["proxy enable", null], ["–", null]]);
+  const kv = $("rs4-kv");
+  kv.replaceChildren();
+  const rows = [["RS4 state", state.rs4State], ["LED", state.led], ["PROFIsafe", state.fdeviceState],
+    ["proxy phase", state.proxyPhase], ["OSSD", state.ossd ? "on" : "off"],
+    ["contamination", state.contaminationPercent + " %"], ["faults", (state.faultsPresent || []).join(", ") || "none"],
+    ["PC adapter", state.pcAdapterAttached ? "attached" : "detached"], ["F_Dest_Add", state.fDestAdd]];
+  if (state.plc && state.plc.present) rows.push(["PLC reads", "0x" + hex(state.plc.inputByte) + " (" + state.plc.fhostState + ")"]);
+  for (const [k, v] of rows) kv.append(Object.assign(el("tr"), { innerHTML: `<td>${k}</td><td>${v}</td>` }));
+}
+
+const hex = (b) => Number(b).toString(16).padStart(2, "0").toUpperCase();
+
+function drawBits(table, label, byte, names) {
+  $(label).textContent = "0x" + hex(byte);
+  const t = $(table);
+  t.replaceChildren();
+  const head = el("tr"), vals = el("tr"), desc = el("tr");
+  for (let bit = 7; bit >= 0; bit--) {
+    const on = (byte >> bit) & 1;
+    head.append(el("td", { class: "bit" }, String(bit)));
+    vals.append(el("td", { class: (on ? "on" : "") + (bit === 7 && table === "in-bits" ? " safety" : ""),
+      "data-bit": bit }, String(on)));
+    desc.append(el("td", {}, names[bit][0]));
+  }
+  t.append(head, vals, desc);
+}
+
+function drawGrid(r) {
+  const g = $("grid"), scale = $("scale");
+  g.replaceChildren();
+  scale.replaceChildren();
+  const step = r > 6000 ? 2000 : r > 2500 ? 1000 : 500;
+  const font = (r / 28).toFixed(0);
+  for (let d = step; d <= r; d += step) {
+    g.append(svg("circle", { r: d }));
+    const t = svg("text", { x: 8, y: -d + r / 40, "font-size": font });
+    t.textContent = (d / 1000) + " m";
+    g.append(t);
+  }
+  g.append(svg("line", { x1: -r, y1: 0, x2: r, y2: 0 }), svg("line", { x1: 0, y1: 0, x2: 0, y2: -r }));
+  // the scale bar: one step, bottom left, in millimetres
+  const y = r * 0.08, x = -r * 0.95;
+  scale.append(svg("line", { x1: x, y1: y, x2: x + step, y2: y }));
+  const t = svg("text", { x: x, y: y - r / 60, "font-size": font });
+  t.textContent = step + " mm";
+  scale.append(t);
+}
+
+// ---- simulated time -------------------------------------------------------------------------
+async function refreshClock(t) {
+  try {
+    const now = t || await call("rs4sim.v1.SimTime/Now");
+    if (!now.simulated) return;
+    $("clock").hidden = false;
+    $("clock-now").textContent = (Number(now.nowNs) / 1e9).toFixed(3) + " s";
+  } catch (err) { /* a real-time run or no SimTime service: no clock */ }
+}
+for (const b of document.querySelectorAll("#clock button")) {
+  b.addEventListener("click", async () => {
+    try {
+      await refreshClock(await call("rs4sim.v1.SimTime/Advance", { durationMs: Number(b.dataset.advance) }));
+      refreshSelected();
+    } catch (err) { log("Advance: " + err.message); }
+  });
+}
+
+// ---- start ------------------------------------------------------------------------------------
+async function start() {
+  try {
+    const list = await call("rs4sim.v1.Device/ListDevices");
+    for (const d of list.devices || []) station(d.address).kind = d.kind;
+  } catch (err) { /* not an RS4 run: the kinds stay unknown */ }
+  refreshClock();
+  if (await pollProxy()) setInterval(pollProxy, 500);
+  const events = new EventSource("/api/events" + (token ? "?access_token=" + encodeURIComponent(token) : ""));
+  events.onopen = () => { $("link").dataset.state = "live"; $("link").textContent = "live"; };
+  events.onerror = () => { $("link").dataset.state = "lost"; $("link").textContent = "reconnecting…"; };
+  events.onmessage = (m) => onEvent(JSON.parse(m.data));
+  events.addEventListener("end", () => { $("link").dataset.state = "lost"; $("link").textContent = "run ended"; events.close(); });
+  // The contour moves without an event: the selected RS4 is read four times a second.
+  setInterval(refreshSelected, 250);
+}
+start();

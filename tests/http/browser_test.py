@@ -1,0 +1,114 @@
+#!/usr/bin/python3
+"""The live view in a real browser (docs/http.md): Debian's chromium, headless, driven by
+python3-selenium through chromium-driver.
+
+Starts `rs4sim run --link memory --http 127.0.0.1:0` (the RS4 at address 4 on the manual
+clock), brings the RS4 to measuring and loads the page: the station's row says OSSD on.
+Then violates the protective field through the JSON API (POST
+/api/rs4sim.v1.Device/ViolateField) and advances the clock: the row's data-ossd goes "off",
+the SVG shows the object in the protective field, and the input byte's OSSD bit reads 0.
+The screenshot is the test's artifact: live_view.png in the working directory.
+
+Usage: browser_test.py RS4SIM OUTDIR. Exit 77 (skipped) without selenium or chromium.
+"""
+import json
+import os
+import subprocess
+import sys
+import time
+import urllib.error
+import urllib.request
+
+try:
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.support.ui import WebDriverWait
+except ImportError:
+    print("skipped: python3-selenium is not installed (tools/preflight.sh lists it)")
+    sys.exit(77)
+
+CHROMIUM = "/usr/bin/chromium"
+DRIVER = "/usr/bin/chromedriver"
+
+
+def call(base, method, request):
+    req = urllib.request.Request(base + "api/" + method, data=json.dumps(request).encode(),
+                                 headers={"Content-Type": "application/json"}, method="POST")
+    with urllib.request.urlopen(req, timeout=30) as r:
+        return json.load(r)
+
+
+def main():
+    rs4sim, outdir = sys.argv[1], sys.argv[2]
+    for path in (CHROMIUM, DRIVER):
+        if not os.path.exists(path):
+            print(f"skipped: {path} is missing (chromium, chromium-driver)")
+            return 77
+    proc = subprocess.Popen([rs4sim, "run", "--link", "memory", "--http", "127.0.0.1:0"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    driver = None
+    try:
+        line = proc.stdout.readline().strip()
+        prefix = "http: listening on "
+        assert line.startswith(prefix), f"first line: {line!r}"
+        base = line[len(prefix):]
+        assert base.startswith("http://127.0.0.1:") and base.endswith("/"), base
+        # The boot: measuring, then the start interlock's restart pulse [RS4 manual §4.3].
+        for condition, timeout in (("CONDITION_RS4_MEASURING", 60000), ("PRESS", 0),
+                                   ("CONDITION_OSSD_ON", 2000)):
+            if condition == "PRESS":
+                call(base, "rs4sim.v1.Device/PressRestart", {"address": 4, "durationMs": 200})
+                continue
+            reached = call(base, "rs4sim.v1.SimTime/RunUntil",
+                           {"address": 4, "condition": condition, "timeoutMs": timeout})
+            assert reached["reached"], (condition, reached)
+
+        options = webdriver.ChromeOptions()
+        options.binary_location = CHROMIUM
+        for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
+                    "--window-size=1400,1000"):
+            options.add_argument(arg)
+        driver = webdriver.Chrome(service=Service(DRIVER), options=options)
+        driver.get(base)
+        wait = WebDriverWait(driver, 10)
+        row = '#stations tr[data-address="4"]'
+        wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, row + '[data-ossd="on"]'))
+        state = driver.find_element(By.CSS_SELECTOR, row).get_attribute("data-state")
+        assert state == "Data_Exch", state
+        wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, '#scan[data-ossd="on"]'))
+        assert driver.find_element(By.ID, "protective-field").get_attribute("d"), "no field drawn"
+        assert not driver.find_elements(By.CSS_SELECTOR, "#obstacles .obstacle"), "an obstacle before"
+
+        call(base, "rs4sim.v1.Device/ViolateField", {"address": 4, "field": "FIELD_KIND_PROTECTIVE"})
+        call(base, "rs4sim.v1.SimTime/Advance", {"durationMs": 500})
+        wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, row + '[data-ossd="off"]'))
+        wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, '#scan[data-ossd="off"]'))
+        # (the panel is redrawn four times a second: read it in one script, not element by
+        # element)
+        hits = wait.until(lambda d: d.execute_script(
+            'return document.querySelectorAll(\'#obstacles .obstacle[data-field="protective"]\').length'))
+        assert hits > 0, "no obstacle in the protective field"
+        wait.until(lambda d: d.execute_script(
+            'return document.querySelector(\'#in-bits td[data-bit="7"]\').textContent') == "0")
+        driver.find_element(By.CSS_SELECTOR, "#clock:not([hidden])")
+        shot = os.path.join(outdir, "live_view.png")
+        driver.save_screenshot(shot)
+        print(f"ok: OSSD off in the DOM, {hits} contour points in the protective field; "
+              f"screenshot {shot}")
+        return 0
+    finally:
+        if driver is not None:
+            driver.quit()
+        proc.terminate()
+        try:
+            proc.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+        err = proc.stderr.read()
+        if proc.returncode not in (0, -15):
+            print(f"rs4sim exited {proc.returncode}: {err}")
+
+
+if __name__ == "__main__":
+    sys.exit(main())
