@@ -183,6 +183,81 @@ std::vector<std::string> polaris_faults(const polaris::Faults& f) {
   return out;
 }
 
+// ---- On the simulated clock: Exchange, Receive (every device) ------------------------------
+
+constexpr std::size_t kMaxExchangeBytes = 256;  // the longest frame of the three: a Modbus RTU ADU
+                                                // [Modbus serial line V1.02 §2.5.1]
+constexpr std::uint32_t kDefaultExchangeMs = 1000;
+constexpr std::uint64_t kMaxSimulatedMs = 24ULL * 3600 * 1000;
+
+grpc::Status needs_simulated_line(const std::string& kind) {
+  return failed_precondition(
+      "CLOCK", "simulated line",
+      "this " + kind + " runs on a real-time link; Exchange and Receive need the simulated "
+      "line (rs4sim run --device " + kind + " --link memory --grpc ...)");
+}
+
+void fill_frame(const stream::LineFrame& f, v1::ReceivedFrame& out) {
+  out.set_frame(std::string(f.bytes.begin(), f.bytes.end()));
+  out.set_start_ns(to_ns(f.start));
+  out.set_end_ns(to_ns(f.end));
+}
+
+grpc::Status exchange_on(const LineContext& c, const std::string& kind,
+                         const v1::ExchangeRequest& in, v1::ExchangeResponse& out) {
+  if (in.request().empty() || in.request().size() > kMaxExchangeBytes) {
+    return invalid_argument("request", std::to_string(in.request().size()) +
+                                           " bytes outside 1..256 (the longest frame on the line)");
+  }
+  if (in.timeout_ms() > kMaxSimulatedMs) {
+    return invalid_argument("timeout_ms", std::to_string(in.timeout_ms()) +
+                                              " ms outside 0..86400000 (24 h; 0 = 1000)");
+  }
+  const std::uint32_t ms = in.timeout_ms() == 0 ? kDefaultExchangeMs : in.timeout_ms();
+  const std::vector<std::uint8_t> request(in.request().begin(), in.request().end());
+  return on_line(
+      c, kind, in.address(),
+      [&](dp::TimePoint) {
+        if (c.line == nullptr) return needs_simulated_line(kind);
+        const auto x = c.line->exchange(request, std::chrono::milliseconds(ms));
+        if (c.hub != nullptr) c.hub->poll(c.line->now());
+        out.set_sent_ns(to_ns(x.sent));
+        out.set_arrived_ns(to_ns(x.arrived));
+        out.set_answered(x.reply.has_value());
+        if (x.reply) {
+          out.set_reply(std::string(x.reply->bytes.begin(), x.reply->bytes.end()));
+          out.set_reply_start_ns(to_ns(x.reply->start));
+          out.set_reply_end_ns(to_ns(x.reply->end));
+          out.set_reply_after_ns(to_ns(x.reply->end) - to_ns(x.sent));
+        }
+        out.set_now_ns(to_ns(c.line->now()));
+        return grpc::Status::OK;
+      },
+      false);
+}
+
+grpc::Status receive_on(const LineContext& c, const std::string& kind,
+                        const v1::ReceiveRequest& in, v1::ReceiveResponse& out) {
+  if (in.wait_ms() > kMaxSimulatedMs) {
+    return invalid_argument("wait_ms",
+                            std::to_string(in.wait_ms()) + " ms outside 0..86400000 (24 h)");
+  }
+  return on_line(
+      c, kind, in.address(),
+      [&](dp::TimePoint) {
+        if (c.line == nullptr) return needs_simulated_line(kind);
+        if (in.wait_ms() > 0) {
+          (void)c.line->run_until([] { return false; }, std::chrono::milliseconds(in.wait_ms()));
+          if (c.hub != nullptr) c.hub->poll(c.line->now());
+        }
+        for (const auto& f : c.line->receive()) fill_frame(f, *out.add_frames());
+        out.set_dropped(c.line->unsolicited_dropped());
+        out.set_now_ns(to_ns(c.line->now()));
+        return grpc::Status::OK;
+      },
+      false);
+}
+
 }  // namespace
 
 // ==== GridScan ==============================================================================
@@ -334,6 +409,48 @@ grpc::Status GridScanService::ClearFault(grpc::ServerContext*, const v1::GridSca
   return fault(*in, false);
 }
 
+grpc::Status GridScanService::PowerCycle(grpc::ServerContext*, const v1::PowerCycleRequest* in,
+                                         v1::Empty*) {
+  constexpr std::uint32_t kMaxOffMs = 3'600'000;
+  if (in->off_ms() > kMaxOffMs) {
+    return invalid_argument("off_ms", std::to_string(in->off_ms()) + " ms outside 0..3600000");
+  }
+  return on_line(
+      c_, "GridScan", in->address(),
+      [&](dp::TimePoint now) {
+        if (in->off_ms() > 0 && c_.line == nullptr) return needs_simulated_line("gridscan");
+        d_.power_off();
+        if (in->off_ms() > 0) {
+          (void)c_.line->run_until([] { return false; }, std::chrono::milliseconds(in->off_ms()));
+          now = c_.line->now();
+        }
+        d_.power_on(now);
+        return grpc::Status::OK;
+      },
+      true);
+}
+
+grpc::Status GridScanService::SetPower(grpc::ServerContext*, const v1::SetPowerRequest* in,
+                                       v1::Empty*) {
+  return on_line(
+      c_, "GridScan", in->address(),
+      [&](dp::TimePoint now) {
+        in->on() ? d_.power_on(now) : d_.power_off();
+        return grpc::Status::OK;
+      },
+      true);
+}
+
+grpc::Status GridScanService::Exchange(grpc::ServerContext*, const v1::ExchangeRequest* in,
+                                       v1::ExchangeResponse* out) {
+  return exchange_on(c_, "gridscan", *in, *out);
+}
+
+grpc::Status GridScanService::Receive(grpc::ServerContext*, const v1::ReceiveRequest* in,
+                                      v1::ReceiveResponse* out) {
+  return receive_on(c_, "gridscan", *in, *out);
+}
+
 // ==== METRON ================================================================================
 
 namespace {
@@ -464,6 +581,16 @@ grpc::Status MetronService::ClearFault(grpc::ServerContext*, const v1::MetronFau
   return fault(*in, false);
 }
 
+grpc::Status MetronService::Exchange(grpc::ServerContext*, const v1::ExchangeRequest* in,
+                                     v1::ExchangeResponse* out) {
+  return exchange_on(c_, "metron", *in, *out);
+}
+
+grpc::Status MetronService::Receive(grpc::ServerContext*, const v1::ReceiveRequest* in,
+                                    v1::ReceiveResponse* out) {
+  return receive_on(c_, "metron", *in, *out);
+}
+
 // ==== Polaris ===============================================================================
 
 namespace {
@@ -577,6 +704,16 @@ grpc::Status PolarisService::InjectFault(grpc::ServerContext*, const v1::Polaris
 grpc::Status PolarisService::ClearFault(grpc::ServerContext*, const v1::PolarisFaultRequest* in,
                                         v1::Empty*) {
   return fault(*in, false);
+}
+
+grpc::Status PolarisService::Exchange(grpc::ServerContext*, const v1::ExchangeRequest* in,
+                                      v1::ExchangeResponse* out) {
+  return exchange_on(c_, "polaris", *in, *out);
+}
+
+grpc::Status PolarisService::Receive(grpc::ServerContext*, const v1::ReceiveRequest* in,
+                                     v1::ReceiveResponse* out) {
+  return receive_on(c_, "polaris", *in, *out);
 }
 
 // ==== Watchers ==============================================================================

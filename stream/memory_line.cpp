@@ -63,7 +63,10 @@ std::optional<TimePoint> MemoryLine::next_event() const {
   return earliest;
 }
 
-void MemoryLine::run_until(TimePoint until) {
+void MemoryLine::run_until(TimePoint until) { (void)run_until(until, {}); }
+
+bool MemoryLine::run_until(TimePoint until, const std::function<bool()>& done) {
+  if (done && done()) return true;
   int steps_at_now = 0;
   TimePoint last = clock_.now();
   for (auto next = next_event(); next && *next <= until; next = next_event()) {
@@ -75,8 +78,10 @@ void MemoryLine::run_until(TimePoint until) {
     last = now;
     clock_.set(now);
     step(now);
+    if (done && done()) return true;
   }
   if (until > clock_.now()) clock_.set(until);
+  return done && done();
 }
 
 void MemoryLine::step(TimePoint now) {

@@ -56,6 +56,9 @@ class MemoryLine {
   void deliver_at(std::span<const std::uint8_t> bytes, TimePoint at);
   // Steps deliveries and deadlines up to `until`; the clock ends at `until`.
   void run_until(TimePoint until);
+  // Steps as run_until(until) but stops after the first step at whose end `done()` holds
+  // (the clock stays at that step's time); returns done(). Checked once before any step.
+  bool run_until(TimePoint until, const std::function<bool()>& done);
   void run_for(Duration d) { run_until(clock_.now() + d); }
 
   // Frames the device sent that have reached the peer, oldest first (and forgets them).
@@ -66,6 +69,8 @@ class MemoryLine {
   [[nodiscard]] const ByteCounters& counters() const { return counters_; }
   // The time the device's frames in flight take to arrive; nullopt when none is.
   [[nodiscard]] std::optional<TimePoint> next_arrival() const;
+  // When the peer's transmitter is free again (its last write's last bit has gone out).
+  [[nodiscard]] TimePoint peer_free() const { return peer_free_; }
 
  private:
   struct Chunk {
