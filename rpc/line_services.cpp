@@ -481,6 +481,7 @@ grpc::Status MetronService::GetState(grpc::ServerContext*, const v1::LineDeviceR
         for (const auto b : metron_blocked(scene)) out->add_blocked(b);
         out->set_synchronised(scene.synchronised());
         out->set_input_high(scene.input_high());
+        out->set_input_type(std::string(metron::to_string(d_.options().input_type)));
         out->set_ossd(d_.ossd_on());
         out->set_ossd_function(ossd_function_name(d_.slave_state().ossd));
         out->set_first_interrupted(scene.measure(metron::Measurement::kFirstInterrupted));
@@ -531,6 +532,18 @@ grpc::Status MetronService::SetSynchronised(grpc::ServerContext*,
       c_, "METRON", in->address(),
       [&](dp::TimePoint) {
         d_.set_synchronised(in->synchronised());
+        return grpc::Status::OK;
+      },
+      true);
+}
+
+grpc::Status MetronService::SetInput(grpc::ServerContext*, const v1::SetInputRequest* in,
+                                     v1::Empty*) {
+  if (auto bad = check_metron_address(in->address()); !bad.ok()) return bad;
+  return on_line(
+      c_, "METRON", in->address(),
+      [&](dp::TimePoint) {
+        d_.set_input(in->high());
         return grpc::Status::OK;
       },
       true);

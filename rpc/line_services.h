@@ -71,6 +71,7 @@ class MetronService final : public v1::Metron::Service {
                           v1::Empty*) override;
   grpc::Status SetSynchronised(grpc::ServerContext*, const v1::SetSynchronisedRequest* in,
                                v1::Empty*) override;
+  grpc::Status SetInput(grpc::ServerContext*, const v1::SetInputRequest* in, v1::Empty*) override;
   grpc::Status InjectFault(grpc::ServerContext*, const v1::MetronFaultRequest* in,
                            v1::Empty*) override;
   grpc::Status ClearFault(grpc::ServerContext*, const v1::MetronFaultRequest* in,

@@ -4,7 +4,7 @@
 // ([METRON manual "Serial line management"], metron/mode_spec.h).
 //
 //   rs4sim run --device metron --link pty --beams 24 --blocked 9-13
-//   rs4sim run --device metron --link pty --node 5
+//   rs4sim run --device metron --link pty --node 5 --mode slave,input=enable-line
 //   rs4sim run --device metron --link pty --mode periodical,hex,separator,checksum,period=250
 //   rs4sim run --device metron --link memory --grpc 127.0.0.1:50051   (the simulated clock)
 #include "app/runtime/usage_error.h"
@@ -80,8 +80,13 @@ class MetronInstance final : public DeviceInstance {
     }
   }
   std::vector<stream::ByteDevice*> byte_devices() override { return {&tap_}; }
+  // SIGUSR1: the input line high, SIGUSR2: low (what the input type acts on).
+  void on_user_signal(bool second, dp::TimePoint) override { device_.set_input(!second); }
   [[nodiscard]] std::string describe() const override {
-    return "METRON measuring light curtain (" + stream::to_string(device_.line_settings()) + ")";
+    const auto& o = device_.options();
+    return "METRON measuring light curtain (" + stream::to_string(device_.line_settings()) +
+           ", input type " + std::string(metron::to_string(o.input_type)) +
+           ": SIGUSR1 sets the input high, SIGUSR2 low)";
   }
   void print_byte_status(std::ostream& out, const stream::ByteCounters& c) const override {
     print_line_status(out, device_, c);

@@ -384,6 +384,10 @@ class Metron(_LineDevice):
         self.service.SetSynchronised(dev_pb.SetSynchronisedRequest(
             address=self.address, synchronised=synchronised))
 
+    def set_input(self, high):
+        """The level of the curtain's input line (what its input type acts on)."""
+        self.service.SetInput(dev_pb.SetInputRequest(address=self.address, high=high))
+
 
 class Polaris(_LineDevice):
     """faults: BAD_CRC, NO_ANSWER, LATE (delay_ms)."""

@@ -432,3 +432,65 @@ TEST(MetronOnTheSimulatedClockSync, E4WhenTheSynchronismIsLost) {
 
 }  // namespace
 }  // namespace rs4sim::rpc
+
+namespace rs4sim::rpc {
+namespace {
+
+// The input type in slave mode: with enable-line the host may not drive the OSSDs (#2..#6 get
+// E2), and the configuration (#11) reports type 1 [METRON manual "Slave line mode"].
+TEST(MetronInputOnTheSimulatedClock, SlaveModeWithAnInputType) {
+  metron::Options o;
+  o.input_type = metron::InputType::kEnableLine;
+  metron::MetronDevice device(o);
+  SimulatedRun<metron::MetronDevice, MetronService> run(device, "metron", 0,
+                                                        metron_watcher(0, device));
+  const auto stub = v1::Metron::NewStub(run.channel());
+  // #11: beams 24, input type 1, node 0, scan cycle 10 ms, t_response 20 ms; checksum: the
+  // bytes from the length on sum to 0 mod 256.
+  auto x = exchange(*stub, 0, {0x02, 0x01, 0x0B, 0xF4});
+  EXPECT_EQ(bytes(x.reply()), (Bytes{0x02, 0x06, 0x0B, 0x18, 0x01, 0x00, 0x0A, 0x14, 0xBD}));
+  x = exchange(*stub, 0, {0x02, 0x01, 0x03, 0xFC});  // #3 disable OSSD
+  EXPECT_EQ(bytes(x.reply()), (Bytes{0x02, 0x01, 0xE2, 0x1D}));
+}
+
+// Input-related reporting with enable-line: reports only while the input is high.
+TEST(MetronInputOnTheSimulatedClock, StandardModeReportsWhileTheInputIsHigh) {
+  metron::Options o;
+  o.line_mode = metron::LineMode::kStandard;
+  o.reporting_mode = metron::ReportingMode::kInputRelated;
+  o.input_type = metron::InputType::kEnableLine;
+  metron::MetronDevice device(o);
+  const std::vector<std::uint16_t> blocked{9, 10, 11, 12, 13};
+  device.set_interrupted(blocked);
+  SimulatedRun<metron::MetronDevice, MetronService> run(device, "metron", 0,
+                                                        metron_watcher(0, device));
+  const auto stub = v1::Metron::NewStub(run.channel());
+  EXPECT_EQ(receive(*stub, 0, 100).frames_size(), 0);
+  const auto set_input = [&](bool high) {
+    grpc::ClientContext ctx;
+    v1::SetInputRequest in;
+    in.set_high(high);
+    v1::Empty none;
+    ASSERT_TRUE(stub->SetInput(&ctx, in, &none).ok());
+  };
+  set_input(true);
+  const auto got = receive(*stub, 0, 35);  // scan cycles of 10 ms: 3 or 4 reports
+  ASSERT_GE(got.frames_size(), 3);
+  ASSERT_LE(got.frames_size(), 4);
+  for (const auto& f : got.frames()) {
+    EXPECT_EQ(bytes(f.frame()), (Bytes{0x02, 0x09, 0x0D, 0x05, 0x03}));  // first, last, count
+    EXPECT_EQ(f.end_ns() - f.start_ns(), wire_ns(5, 11, kMetronBaud));
+  }
+  grpc::ClientContext ctx;
+  v1::LineDeviceRequest req;
+  v1::MetronState state;
+  ASSERT_TRUE(stub->GetState(&ctx, req, &state).ok());
+  EXPECT_TRUE(state.input_high());
+  EXPECT_EQ(state.input_type(), "enable-line");
+  set_input(false);
+  (void)receive(*stub, 0, 5);  // a report already on the line
+  EXPECT_EQ(receive(*stub, 0, 100).frames_size(), 0);
+}
+
+}  // namespace
+}  // namespace rs4sim::rpc
