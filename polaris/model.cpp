@@ -7,9 +7,9 @@ namespace rs4sim::polaris {
 namespace {
 
 // Heights h_min..h_max in steps of `step`; PLi 05 and PL 10 step by 20 mm up to 340 mm
-// first; PL 10 has one model off the steps, PL 10-500 (h 520 mm, 50 beams)
-// [Polaris manual §2.2, the PL 10 table: PL 10-80 … 10-320 in 20 mm steps, then 10-400,
-// 10-480, 10-500, 10-560 … 10-3440 in 80 mm steps].
+// first; PL 10 has one model off the steps, PL 10-500 (h 520 mm, 50 beams). The PL 10 table
+// [Polaris manual §2.2]: PL 10-80 … 10-320 in 20 mm steps, then 10-400, 10-480, 10-500,
+// 10-560 … 10-3440 in 80 mm steps.
 struct HeightSteps {
   Family family;
   std::string_view name;

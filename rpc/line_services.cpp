@@ -17,7 +17,9 @@ using LineFn = std::function<grpc::Status(dp::TimePoint)>;
 constexpr std::uint32_t kMaxFaultDelayMs = 10'000;
 
 // Checks the address (INVALID_ARGUMENT beyond a byte, NOT_FOUND for another device), then
-// runs `fn` on the loop; after a change the link and the event hub look at the device again.
+// runs `fn` on the loop; after a change the event hub looks at the device again. The link
+// needs no poke: a core whose deadline or transmit queue a setter moves wakes it itself
+// ([stream/byte_device.h] point 4; tests/*/wake_test.cpp).
 grpc::Status on_line(const LineContext& c, const std::string& kind, std::uint32_t address,
                      const LineFn& fn, bool changes) {
   if (address > 255) {
@@ -32,7 +34,6 @@ grpc::Status on_line(const LineContext& c, const std::string& kind, std::uint32_
     const auto now = c.clock.now();
     result = fn(now);
     if (!changes) return;
-    c.tap.poke();
     if (c.hub != nullptr) c.hub->poll(now);
   });
   return result;

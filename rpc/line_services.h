@@ -1,8 +1,8 @@
 #pragma once
 // The rs4sim.v1 services of the RS-485 devices (devices.proto, docs/rpc.md): GridScan, Metron,
 // Polaris. As with the RS4's, a request is checked on the gRPC thread (INVALID_ARGUMENT with
-// the field), then runs on the loop through the Executor; after a change the tap pokes the
-// link (the core's deadline may have moved) and the hub looks at the device at once.
+// the field), then runs on the loop through the Executor; after a change the hub looks at the
+// device at once (the core wakes the link itself when its deadline or queue moved).
 
 #include "dp/time/clock.h"
 #include "gridscan/device.h"

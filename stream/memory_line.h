@@ -10,7 +10,10 @@
 //     peer after their wire time (take_received(), or a callback);
 //   * run_until(t) steps through deliveries and the device's deadlines in time order,
 //     moving the clock to each, and leaves it at t.
-// A device that wakes outside a call (a scene change) is drained at once.
+// A device that wakes outside a call (a scene change) is drained at once. Like the ByteRunner's
+// timer, the line reads the device's next_deadline() only after on_bytes()/on_time() and on a
+// wake: a core that moves its deadline from outside a call without waking is called late
+// (or early), here as on a real line ([stream/byte_device.h] point 4).
 
 #include "stream/byte_counters.h"
 #include "stream/byte_device.h"
@@ -92,6 +95,7 @@ class MemoryLine {
   FrameTap tap_;
   ByteCounters counters_;
   bool in_call_ = false;
+  std::optional<TimePoint> deadline_;  // the device's, as last read
 };
 
 }  // namespace rs4sim::stream

@@ -314,8 +314,8 @@ TEST_P(PolarisOnTheSimulatedClock, TheManualsFrames) {
   EXPECT_EQ(bytes(x.reply()), c.reply);
   EXPECT_EQ(x.arrived_ns() - x.sent_ns(),
             wire_ns(static_cast<int>(c.request.size()), 10, kPolarisBaud));
-  // The answer: no earlier than t3.5 of silence after the request [Modbus serial line V1.02
-  // §2.5.1.1], no later than the end of the scan in progress then (5 ms scans).
+  // The answer: no earlier than t3.5 of silence after the request
+  // [Modbus serial line V1.02 §2.5.1.1], no later than the end of the scan then (5 ms scans).
   EXPECT_GE(x.reply_start_ns() - x.arrived_ns(), kT35At19200);
   EXPECT_LE(x.reply_start_ns() - x.arrived_ns(),
             kT35At19200 + std::chrono::nanoseconds(c.options.response_time).count());
