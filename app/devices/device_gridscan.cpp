@@ -74,13 +74,20 @@ class GridScanInstance final : public DeviceInstance {
   explicit GridScanInstance(const gridscan::Options& o) : options_(o), device_(o) {}
   std::vector<stream::ByteDevice*> byte_devices() override { return {&tap_}; }
   void start(dp::TimePoint now) override { device_.power_on(now); }
+  // SIGUSR1: a power cycle (the power-up messages, the configuration window and the alignment
+  // arming again, e.g. once the controller has opened the line); SIGUSR2: mains off.
+  void on_user_signal(bool second, dp::TimePoint now) override {
+    device_.power_off();
+    if (!second) device_.power_on(now);
+  }
   [[nodiscard]] std::string describe() const override {
     const auto cycle_us =
         std::chrono::duration_cast<std::chrono::microseconds>(options_.cycle_time()).count();
     return "GridScan/Pro SI, RC (" + std::to_string(options_.elements) + " elements, " +
            mode_name(device_.configuration()) + " mode, " +
            stream::to_string(device_.line_settings()) + ", t_CYCLE " +
-           std::to_string(cycle_us / 1000) + "." + std::to_string(cycle_us % 1000 / 100) + " ms)";
+           std::to_string(cycle_us / 1000) + "." + std::to_string(cycle_us % 1000 / 100) +
+           " ms; SIGUSR1 power-cycles it, SIGUSR2 switches it off)";
   }
   void print_byte_status(std::ostream& out, const stream::ByteCounters& c) const override {
     print_line_status(out, device_, c);
