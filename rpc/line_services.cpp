@@ -164,6 +164,13 @@ std::vector<std::uint16_t> metron_blocked(const metron::Scene& s) {
   return out;
 }
 
+// The deprecated delay_ms (late_ms's old name), read and written on purpose for old clients.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+std::uint32_t old_delay_ms(const v1::MetronFaultRequest& in) { return in.delay_ms(); }
+void set_old_delay_ms(v1::MetronState& out, std::uint32_t ms) { out.set_delay_ms(ms); }
+#pragma GCC diagnostic pop
+
 std::vector<std::string> metron_faults(const metron::Faults& f) {
   std::vector<std::string> out;
   if (f.silent) out.emplace_back("silent");
@@ -489,7 +496,8 @@ grpc::Status MetronService::GetState(grpc::ServerContext*, const v1::LineDeviceR
         out->set_last_interrupted(scene.measure(metron::Measurement::kLastInterrupted));
         out->set_interrupted_count(scene.measure(metron::Measurement::kInterruptedCount));
         for (const auto& f : metron_faults(d_.faults())) out->add_faults_present(f);
-        out->set_delay_ms(whole_ms(d_.faults().extra_delay));
+        out->set_late_ms(whole_ms(d_.faults().extra_delay));
+        set_old_delay_ms(*out, out->late_ms());
         const auto k = d_.counters();
         auto* c = out->mutable_counters();
         c->set_messages(k.messages);
@@ -556,8 +564,17 @@ grpc::Status MetronService::fault(const v1::MetronFaultRequest& in, bool inject)
   if (which == v1::METRON_FAULT_UNSPECIFIED || !v1::MetronFault_IsValid(which)) {
     return invalid_argument("fault", "a METRON_FAULT_* value is required");
   }
+  // late_ms, or the deprecated delay_ms of older clients.
+  const std::uint32_t old_ms = old_delay_ms(in);
+  const bool old_name = in.late_ms() == 0 && old_ms != 0;
+  const std::uint32_t late_ms = old_name ? old_ms : in.late_ms();
+  if (in.late_ms() != 0 && old_ms != 0 && in.late_ms() != old_ms) {
+    return invalid_argument("delay_ms", "the deprecated delay_ms " + std::to_string(old_ms) +
+                                            " differs from late_ms " +
+                                            std::to_string(in.late_ms()) + "; give late_ms only");
+  }
   if (inject && which == v1::METRON_FAULT_LATE) {
-    if (auto bad = check_delay(in.delay_ms(), "delay_ms"); !bad.ok()) return bad;
+    if (auto bad = check_delay(late_ms, old_name ? "delay_ms" : "late_ms"); !bad.ok()) return bad;
   }
   return on_line(
       c_, "METRON", in.address(),
@@ -566,7 +583,7 @@ grpc::Status MetronService::fault(const v1::MetronFaultRequest& in, bool inject)
         switch (which) {
           case v1::METRON_FAULT_SILENT: f.silent = inject; break;
           case v1::METRON_FAULT_LATE:
-            f.extra_delay = inject ? stream::Duration(std::chrono::milliseconds(in.delay_ms()))
+            f.extra_delay = inject ? stream::Duration(std::chrono::milliseconds(late_ms))
                                    : stream::Duration{};
             break;
           case v1::METRON_FAULT_BAD_CHECKSUM: f.bad_checksum = inject; break;
@@ -697,7 +714,7 @@ grpc::Status PolarisService::fault(const v1::PolarisFaultRequest& in, bool injec
         auto f = d_.faults();
         switch (which) {
           case v1::POLARIS_FAULT_BAD_CRC: f.bad_crc = inject; break;
-          case v1::POLARIS_FAULT_NO_ANSWER: f.no_answer = inject; break;
+          case v1::POLARIS_FAULT_SILENT: f.no_answer = inject; break;
           case v1::POLARIS_FAULT_LATE:
             f.late_by = inject ? stream::Duration(std::chrono::milliseconds(in.late_ms()))
                                : stream::Duration{};

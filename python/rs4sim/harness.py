@@ -375,7 +375,7 @@ class Metron(_LineDevice):
     _stub = dev_grpc.MetronStub
     _fault_enum = "METRON_FAULT_"
     _fault_request = dev_pb.MetronFaultRequest
-    _delay_field = "delay_ms"
+    _delay_field = "late_ms"
 
     def __init__(self, address, device_address=0, timeout=10.0):
         super().__init__(address, device_address, timeout)
@@ -390,7 +390,7 @@ class Metron(_LineDevice):
 
 
 class Polaris(_LineDevice):
-    """faults: BAD_CRC, NO_ANSWER, LATE (delay_ms)."""
+    """faults: BAD_CRC, SILENT (NO_ANSWER, its deprecated name, still works), LATE (delay_ms)."""
     _stub = dev_grpc.PolarisStub
     _fault_enum = "POLARIS_FAULT_"
     _fault_request = dev_pb.PolarisFaultRequest
