@@ -160,7 +160,7 @@ DeviceEntry gridscan_device_entry() {
           [](const DeviceOptions& o) {
             return std::make_unique<GridScanSegment>(gridscan_options(o));
           },
-      .demo = {},
+      .demo = run_gridscan_demo,
       .byte_device = true,
   };
 }
