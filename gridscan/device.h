@@ -76,7 +76,11 @@ class GridScanDevice final : public stream::ByteDevice {
   void set_alignment_value(std::uint16_t v) { scene_.alignment_value = v; }
 
   [[nodiscard]] const FaultControls& faults() const { return faults_; }
-  void set_faults(const FaultControls& f) { faults_ = f; }
+  // Wakes the link: the answer time (late_by) moves the deadline.
+  void set_faults(const FaultControls& f) {
+    faults_ = f;
+    wake();
+  }
 
   // Observation.
   [[nodiscard]] PowerState power() const { return power_; }

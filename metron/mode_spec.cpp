@@ -63,7 +63,13 @@ std::string apply_option(std::string_view word, Options& o) {
 std::string apply_mode_spec(std::string_view spec, Options& o) {
   const auto words = split(spec, ',');
   if (words.front() == "slave") {
-    if (words.size() > 1) return "slave mode takes no options (19200 8E1 binary, fixed)";
+    // The input type applies in both modes: in slave mode it decides whether the host may
+    // drive the OSSDs (#2..#6 need No_function) [METRON manual "Slave line mode"].
+    for (std::size_t i = 1; i < words.size(); ++i) {
+      if (!words[i].starts_with("input="))
+        return "slave mode takes only input=<type> (19200 8E1 binary, fixed)";
+      if (auto e = apply_option(words[i], o); !e.empty()) return e;
+    }
     o.line_mode = LineMode::kSlave;
     return {};
   }

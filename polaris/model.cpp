@@ -6,7 +6,10 @@ namespace rs4sim::polaris {
 
 namespace {
 
-// Heights h_min..h_max in steps of `step`; PLi 05 steps by 20 mm up to 340 mm first.
+// Heights h_min..h_max in steps of `step`; PLi 05 and PL 10 step by 20 mm up to 340 mm
+// first; PL 10 has one model off the steps, PL 10-500 (h 520 mm, 50 beams). The PL 10 table
+// [Polaris manual §2.2]: PL 10-80 … 10-320 in 20 mm steps, then 10-400, 10-480, 10-500,
+// 10-560 … 10-3440 in 80 mm steps.
 struct HeightSteps {
   Family family;
   std::string_view name;
@@ -14,6 +17,7 @@ struct HeightSteps {
   std::uint16_t h_max;
   std::uint16_t step;
   std::uint16_t fine_until;  // 0: no fine steps
+  std::uint16_t extra = 0;   // one more model height off the steps; 0: none
 };
 
 constexpr std::uint16_t kFineStep = 20;
@@ -22,7 +26,7 @@ constexpr std::array<HeightSteps, 6> kFamilies{{
     {Family::kPli02, "PLi02", 100, 3460, 80, 0},
     {Family::kPli05, "PLi05", 100, 3460, 80, 340},
     {Family::kPli12, "PLi12", 116, 3476, 96, 0},
-    {Family::kPl10, "PL10", 100, 3460, 80, 0},
+    {Family::kPl10, "PL10", 100, 3460, 80, 340, 520},
     {Family::kPl24, "PL24", 116, 3476, 96, 0},
     {Family::kPl48, "PL48", 212, 2900, 192, 0},
 }};
@@ -36,6 +40,7 @@ const HeightSteps& steps_of(Family f) noexcept {
 
 bool is_model_height(const HeightSteps& s, std::uint16_t h) noexcept {
   if (h < s.h_min || h > s.h_max) return false;
+  if (s.extra != 0 && h == s.extra) return true;
   if (s.fine_until != 0 && h <= s.fine_until) return (h - s.h_min) % kFineStep == 0;
   const std::uint16_t base = s.fine_until != 0 ? s.fine_until : s.h_min;
   return h >= base && (h - base) % s.step == 0;

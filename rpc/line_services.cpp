@@ -17,7 +17,9 @@ using LineFn = std::function<grpc::Status(dp::TimePoint)>;
 constexpr std::uint32_t kMaxFaultDelayMs = 10'000;
 
 // Checks the address (INVALID_ARGUMENT beyond a byte, NOT_FOUND for another device), then
-// runs `fn` on the loop; after a change the link and the event hub look at the device again.
+// runs `fn` on the loop; after a change the event hub looks at the device again. The link
+// needs no poke: a core whose deadline or transmit queue a setter moves wakes it itself
+// ([stream/byte_device.h] point 4; tests/*/wake_test.cpp).
 grpc::Status on_line(const LineContext& c, const std::string& kind, std::uint32_t address,
                      const LineFn& fn, bool changes) {
   if (address > 255) {
@@ -32,7 +34,6 @@ grpc::Status on_line(const LineContext& c, const std::string& kind, std::uint32_
     const auto now = c.clock.now();
     result = fn(now);
     if (!changes) return;
-    c.tap.poke();
     if (c.hub != nullptr) c.hub->poll(now);
   });
   return result;
@@ -163,6 +164,13 @@ std::vector<std::uint16_t> metron_blocked(const metron::Scene& s) {
   return out;
 }
 
+// The deprecated delay_ms (late_ms's old name), read and written on purpose for old clients.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+std::uint32_t old_delay_ms(const v1::MetronFaultRequest& in) { return in.delay_ms(); }
+void set_old_delay_ms(v1::MetronState& out, std::uint32_t ms) { out.set_delay_ms(ms); }
+#pragma GCC diagnostic pop
+
 std::vector<std::string> metron_faults(const metron::Faults& f) {
   std::vector<std::string> out;
   if (f.silent) out.emplace_back("silent");
@@ -181,6 +189,81 @@ std::vector<std::string> polaris_faults(const polaris::Faults& f) {
   if (f.no_answer) out.emplace_back("no-answer");
   if (f.late_by.count() > 0) out.emplace_back("late");
   return out;
+}
+
+// ---- On the simulated clock: Exchange, Receive (every device) ------------------------------
+
+constexpr std::size_t kMaxExchangeBytes = 256;  // the longest frame of the three: a Modbus RTU ADU
+                                                // [Modbus serial line V1.02 §2.5.1]
+constexpr std::uint32_t kDefaultExchangeMs = 1000;
+constexpr std::uint64_t kMaxSimulatedMs = 24ULL * 3600 * 1000;
+
+grpc::Status needs_simulated_line(const std::string& kind) {
+  return failed_precondition(
+      "CLOCK", "simulated line",
+      "this " + kind + " runs on a real-time link; Exchange and Receive need the simulated "
+      "line (rs4sim run --device " + kind + " --link memory --grpc ...)");
+}
+
+void fill_frame(const stream::LineFrame& f, v1::ReceivedFrame& out) {
+  out.set_frame(std::string(f.bytes.begin(), f.bytes.end()));
+  out.set_start_ns(to_ns(f.start));
+  out.set_end_ns(to_ns(f.end));
+}
+
+grpc::Status exchange_on(const LineContext& c, const std::string& kind,
+                         const v1::ExchangeRequest& in, v1::ExchangeResponse& out) {
+  if (in.request().empty() || in.request().size() > kMaxExchangeBytes) {
+    return invalid_argument("request", std::to_string(in.request().size()) +
+                                           " bytes outside 1..256 (the longest frame on the line)");
+  }
+  if (in.timeout_ms() > kMaxSimulatedMs) {
+    return invalid_argument("timeout_ms", std::to_string(in.timeout_ms()) +
+                                              " ms outside 0..86400000 (24 h; 0 = 1000)");
+  }
+  const std::uint32_t ms = in.timeout_ms() == 0 ? kDefaultExchangeMs : in.timeout_ms();
+  const std::vector<std::uint8_t> request(in.request().begin(), in.request().end());
+  return on_line(
+      c, kind, in.address(),
+      [&](dp::TimePoint) {
+        if (c.line == nullptr) return needs_simulated_line(kind);
+        const auto x = c.line->exchange(request, std::chrono::milliseconds(ms));
+        if (c.hub != nullptr) c.hub->poll(c.line->now());
+        out.set_sent_ns(to_ns(x.sent));
+        out.set_arrived_ns(to_ns(x.arrived));
+        out.set_answered(x.reply.has_value());
+        if (x.reply) {
+          out.set_reply(std::string(x.reply->bytes.begin(), x.reply->bytes.end()));
+          out.set_reply_start_ns(to_ns(x.reply->start));
+          out.set_reply_end_ns(to_ns(x.reply->end));
+          out.set_reply_after_ns(to_ns(x.reply->end) - to_ns(x.sent));
+        }
+        out.set_now_ns(to_ns(c.line->now()));
+        return grpc::Status::OK;
+      },
+      false);
+}
+
+grpc::Status receive_on(const LineContext& c, const std::string& kind,
+                        const v1::ReceiveRequest& in, v1::ReceiveResponse& out) {
+  if (in.wait_ms() > kMaxSimulatedMs) {
+    return invalid_argument("wait_ms",
+                            std::to_string(in.wait_ms()) + " ms outside 0..86400000 (24 h)");
+  }
+  return on_line(
+      c, kind, in.address(),
+      [&](dp::TimePoint) {
+        if (c.line == nullptr) return needs_simulated_line(kind);
+        if (in.wait_ms() > 0) {
+          (void)c.line->run_until([] { return false; }, std::chrono::milliseconds(in.wait_ms()));
+          if (c.hub != nullptr) c.hub->poll(c.line->now());
+        }
+        for (const auto& f : c.line->receive()) fill_frame(f, *out.add_frames());
+        out.set_dropped(c.line->unsolicited_dropped());
+        out.set_now_ns(to_ns(c.line->now()));
+        return grpc::Status::OK;
+      },
+      false);
 }
 
 }  // namespace
@@ -334,6 +417,48 @@ grpc::Status GridScanService::ClearFault(grpc::ServerContext*, const v1::GridSca
   return fault(*in, false);
 }
 
+grpc::Status GridScanService::PowerCycle(grpc::ServerContext*, const v1::PowerCycleRequest* in,
+                                         v1::Empty*) {
+  constexpr std::uint32_t kMaxOffMs = 3'600'000;
+  if (in->off_ms() > kMaxOffMs) {
+    return invalid_argument("off_ms", std::to_string(in->off_ms()) + " ms outside 0..3600000");
+  }
+  return on_line(
+      c_, "GridScan", in->address(),
+      [&](dp::TimePoint now) {
+        if (in->off_ms() > 0 && c_.line == nullptr) return needs_simulated_line("gridscan");
+        d_.power_off();
+        if (in->off_ms() > 0) {
+          (void)c_.line->run_until([] { return false; }, std::chrono::milliseconds(in->off_ms()));
+          now = c_.line->now();
+        }
+        d_.power_on(now);
+        return grpc::Status::OK;
+      },
+      true);
+}
+
+grpc::Status GridScanService::SetPower(grpc::ServerContext*, const v1::SetPowerRequest* in,
+                                       v1::Empty*) {
+  return on_line(
+      c_, "GridScan", in->address(),
+      [&](dp::TimePoint now) {
+        in->on() ? d_.power_on(now) : d_.power_off();
+        return grpc::Status::OK;
+      },
+      true);
+}
+
+grpc::Status GridScanService::Exchange(grpc::ServerContext*, const v1::ExchangeRequest* in,
+                                       v1::ExchangeResponse* out) {
+  return exchange_on(c_, "gridscan", *in, *out);
+}
+
+grpc::Status GridScanService::Receive(grpc::ServerContext*, const v1::ReceiveRequest* in,
+                                      v1::ReceiveResponse* out) {
+  return receive_on(c_, "gridscan", *in, *out);
+}
+
 // ==== METRON ================================================================================
 
 namespace {
@@ -364,13 +489,15 @@ grpc::Status MetronService::GetState(grpc::ServerContext*, const v1::LineDeviceR
         for (const auto b : metron_blocked(scene)) out->add_blocked(b);
         out->set_synchronised(scene.synchronised());
         out->set_input_high(scene.input_high());
+        out->set_input_type(std::string(metron::to_string(d_.options().input_type)));
         out->set_ossd(d_.ossd_on());
         out->set_ossd_function(ossd_function_name(d_.slave_state().ossd));
         out->set_first_interrupted(scene.measure(metron::Measurement::kFirstInterrupted));
         out->set_last_interrupted(scene.measure(metron::Measurement::kLastInterrupted));
         out->set_interrupted_count(scene.measure(metron::Measurement::kInterruptedCount));
         for (const auto& f : metron_faults(d_.faults())) out->add_faults_present(f);
-        out->set_delay_ms(whole_ms(d_.faults().extra_delay));
+        out->set_late_ms(whole_ms(d_.faults().extra_delay));
+        set_old_delay_ms(*out, out->late_ms());
         const auto k = d_.counters();
         auto* c = out->mutable_counters();
         c->set_messages(k.messages);
@@ -419,14 +546,35 @@ grpc::Status MetronService::SetSynchronised(grpc::ServerContext*,
       true);
 }
 
+grpc::Status MetronService::SetInput(grpc::ServerContext*, const v1::SetInputRequest* in,
+                                     v1::Empty*) {
+  if (auto bad = check_metron_address(in->address()); !bad.ok()) return bad;
+  return on_line(
+      c_, "METRON", in->address(),
+      [&](dp::TimePoint) {
+        d_.set_input(in->high());
+        return grpc::Status::OK;
+      },
+      true);
+}
+
 grpc::Status MetronService::fault(const v1::MetronFaultRequest& in, bool inject) {
   if (auto bad = check_metron_address(in.address()); !bad.ok()) return bad;
   const auto which = in.fault();
   if (which == v1::METRON_FAULT_UNSPECIFIED || !v1::MetronFault_IsValid(which)) {
     return invalid_argument("fault", "a METRON_FAULT_* value is required");
   }
+  // late_ms, or the deprecated delay_ms of older clients.
+  const std::uint32_t old_ms = old_delay_ms(in);
+  const bool old_name = in.late_ms() == 0 && old_ms != 0;
+  const std::uint32_t late_ms = old_name ? old_ms : in.late_ms();
+  if (in.late_ms() != 0 && old_ms != 0 && in.late_ms() != old_ms) {
+    return invalid_argument("delay_ms", "the deprecated delay_ms " + std::to_string(old_ms) +
+                                            " differs from late_ms " +
+                                            std::to_string(in.late_ms()) + "; give late_ms only");
+  }
   if (inject && which == v1::METRON_FAULT_LATE) {
-    if (auto bad = check_delay(in.delay_ms(), "delay_ms"); !bad.ok()) return bad;
+    if (auto bad = check_delay(late_ms, old_name ? "delay_ms" : "late_ms"); !bad.ok()) return bad;
   }
   return on_line(
       c_, "METRON", in.address(),
@@ -435,7 +583,7 @@ grpc::Status MetronService::fault(const v1::MetronFaultRequest& in, bool inject)
         switch (which) {
           case v1::METRON_FAULT_SILENT: f.silent = inject; break;
           case v1::METRON_FAULT_LATE:
-            f.extra_delay = inject ? stream::Duration(std::chrono::milliseconds(in.delay_ms()))
+            f.extra_delay = inject ? stream::Duration(std::chrono::milliseconds(late_ms))
                                    : stream::Duration{};
             break;
           case v1::METRON_FAULT_BAD_CHECKSUM: f.bad_checksum = inject; break;
@@ -462,6 +610,16 @@ grpc::Status MetronService::InjectFault(grpc::ServerContext*, const v1::MetronFa
 grpc::Status MetronService::ClearFault(grpc::ServerContext*, const v1::MetronFaultRequest* in,
                                        v1::Empty*) {
   return fault(*in, false);
+}
+
+grpc::Status MetronService::Exchange(grpc::ServerContext*, const v1::ExchangeRequest* in,
+                                     v1::ExchangeResponse* out) {
+  return exchange_on(c_, "metron", *in, *out);
+}
+
+grpc::Status MetronService::Receive(grpc::ServerContext*, const v1::ReceiveRequest* in,
+                                    v1::ReceiveResponse* out) {
+  return receive_on(c_, "metron", *in, *out);
 }
 
 // ==== Polaris ===============================================================================
@@ -556,7 +714,7 @@ grpc::Status PolarisService::fault(const v1::PolarisFaultRequest& in, bool injec
         auto f = d_.faults();
         switch (which) {
           case v1::POLARIS_FAULT_BAD_CRC: f.bad_crc = inject; break;
-          case v1::POLARIS_FAULT_NO_ANSWER: f.no_answer = inject; break;
+          case v1::POLARIS_FAULT_SILENT: f.no_answer = inject; break;
           case v1::POLARIS_FAULT_LATE:
             f.late_by = inject ? stream::Duration(std::chrono::milliseconds(in.late_ms()))
                                : stream::Duration{};
@@ -577,6 +735,16 @@ grpc::Status PolarisService::InjectFault(grpc::ServerContext*, const v1::Polaris
 grpc::Status PolarisService::ClearFault(grpc::ServerContext*, const v1::PolarisFaultRequest* in,
                                         v1::Empty*) {
   return fault(*in, false);
+}
+
+grpc::Status PolarisService::Exchange(grpc::ServerContext*, const v1::ExchangeRequest* in,
+                                      v1::ExchangeResponse* out) {
+  return exchange_on(c_, "polaris", *in, *out);
+}
+
+grpc::Status PolarisService::Receive(grpc::ServerContext*, const v1::ReceiveRequest* in,
+                                     v1::ReceiveResponse* out) {
+  return receive_on(c_, "polaris", *in, *out);
 }
 
 // ==== Watchers ==============================================================================

@@ -2,8 +2,7 @@
 // A stream::ByteDevice in front of an RS-485 device's core that keeps the last frame it sent
 // (GetState's last_frame) and shows the event hub what goes over the line: every frame sent
 // (DIRECTION_FROM_STATION) and every chunk of bytes received (DIRECTION_TO_STATION, as the OS
-// delivered it: the core cuts frames itself). The API pokes it after a change made outside the
-// link's calls, so that the runner looks at the core's deadline and transmit queue again.
+// delivered it: the core cuts frames itself). The core's wakes pass through to the link.
 
 #include "rpc/event_hub.h"
 #include "stream/byte_device.h"
@@ -33,8 +32,6 @@ class TappedByteDevice final : public stream::ByteDevice {
   }
   std::optional<std::vector<std::uint8_t>> take_transmit() override;
 
-  // The core changed outside on_bytes()/on_time() (the API): the link looks again.
-  void poke() const { wake(); }
   [[nodiscard]] const std::vector<std::uint8_t>& last_frame() const noexcept { return last_; }
   // The time of the link's call that took it; nullopt = nothing sent yet.
   [[nodiscard]] std::optional<stream::TimePoint> last_sent() const noexcept { return last_at_; }

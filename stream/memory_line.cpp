@@ -18,7 +18,9 @@ void keep_earliest(std::optional<TimePoint>& earliest, std::optional<TimePoint> 
 MemoryLine::MemoryLine(ManualClock& clock, ByteDevice& device)
     : clock_(clock), device_(device), peer_free_(clock.now()), device_free_(clock.now()) {
   device_.set_wake_handler([this] {
-    if (!in_call_) drain();
+    if (in_call_) return;  // read after the call anyway
+    deadline_ = device_.next_deadline();
+    drain();
   });
 }
 
@@ -28,6 +30,7 @@ void MemoryLine::start() {
   in_call_ = true;
   device_.on_time(clock_.now());
   in_call_ = false;
+  deadline_ = device_.next_deadline();
   drain();
 }
 
@@ -57,13 +60,16 @@ std::optional<TimePoint> MemoryLine::next_arrival() const {
 }
 
 std::optional<TimePoint> MemoryLine::next_event() const {
-  std::optional<TimePoint> earliest = device_.next_deadline();
+  std::optional<TimePoint> earliest = deadline_;
   if (!to_device_.empty()) keep_earliest(earliest, to_device_.front().at);
   keep_earliest(earliest, next_arrival());
   return earliest;
 }
 
-void MemoryLine::run_until(TimePoint until) {
+void MemoryLine::run_until(TimePoint until) { (void)run_until(until, {}); }
+
+bool MemoryLine::run_until(TimePoint until, const std::function<bool()>& done) {
+  if (done && done()) return true;
   int steps_at_now = 0;
   TimePoint last = clock_.now();
   for (auto next = next_event(); next && *next <= until; next = next_event()) {
@@ -75,8 +81,10 @@ void MemoryLine::run_until(TimePoint until) {
     last = now;
     clock_.set(now);
     step(now);
+    if (done && done()) return true;
   }
   if (until > clock_.now()) clock_.set(until);
+  return done && done();
 }
 
 void MemoryLine::step(TimePoint now) {
@@ -88,8 +96,10 @@ void MemoryLine::step(TimePoint now) {
     counters_.bytes_received += chunk.bytes.size();
     if (tap_) tap_(chunk.bytes, now, FrameDirection::kReceived);
     device_.on_bytes(chunk.bytes, now);
+    deadline_ = device_.next_deadline();
   }
-  if (const auto d = device_.next_deadline(); d && *d <= now) device_.on_time(now);
+  if (deadline_ && *deadline_ <= now) device_.on_time(now);
+  deadline_ = device_.next_deadline();
   in_call_ = false;
   drain();
   while (!to_peer_.empty() && to_peer_.front().end <= now) {

@@ -10,7 +10,10 @@
 //     peer after their wire time (take_received(), or a callback);
 //   * run_until(t) steps through deliveries and the device's deadlines in time order,
 //     moving the clock to each, and leaves it at t.
-// A device that wakes outside a call (a scene change) is drained at once.
+// A device that wakes outside a call (a scene change) is drained at once. Like the ByteRunner's
+// timer, the line reads the device's next_deadline() only after on_bytes()/on_time() and on a
+// wake: a core that moves its deadline from outside a call without waking is called late
+// (or early), here as on a real line ([stream/byte_device.h] point 4).
 
 #include "stream/byte_counters.h"
 #include "stream/byte_device.h"
@@ -56,6 +59,9 @@ class MemoryLine {
   void deliver_at(std::span<const std::uint8_t> bytes, TimePoint at);
   // Steps deliveries and deadlines up to `until`; the clock ends at `until`.
   void run_until(TimePoint until);
+  // Steps as run_until(until) but stops after the first step at whose end `done()` holds
+  // (the clock stays at that step's time); returns done(). Checked once before any step.
+  bool run_until(TimePoint until, const std::function<bool()>& done);
   void run_for(Duration d) { run_until(clock_.now() + d); }
 
   // Frames the device sent that have reached the peer, oldest first (and forgets them).
@@ -66,6 +72,8 @@ class MemoryLine {
   [[nodiscard]] const ByteCounters& counters() const { return counters_; }
   // The time the device's frames in flight take to arrive; nullopt when none is.
   [[nodiscard]] std::optional<TimePoint> next_arrival() const;
+  // When the peer's transmitter is free again (its last write's last bit has gone out).
+  [[nodiscard]] TimePoint peer_free() const { return peer_free_; }
 
  private:
   struct Chunk {
@@ -87,6 +95,7 @@ class MemoryLine {
   FrameTap tap_;
   ByteCounters counters_;
   bool in_call_ = false;
+  std::optional<TimePoint> deadline_;  // the device's, as last read
 };
 
 }  // namespace rs4sim::stream

@@ -36,4 +36,8 @@ int run_rs4_demo(RunSession& session, std::ostream& out, const DemoOptions& opti
 // with recovery.
 int run_generic_demo(RunSession& session, std::ostream& out, const DemoOptions& options);
 
+// GridScan scenario: the curtain on the simulated line, the demo its door controller: the
+// power-up messages, the communication test of [GridScan manual §10.3], a power cycle.
+int run_gridscan_demo(RunSession& session, std::ostream& out, const DemoOptions& options);
+
 }  // namespace rs4sim::app

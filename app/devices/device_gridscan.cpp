@@ -4,9 +4,12 @@
 // has the last word.
 //
 //   rs4sim run --device gridscan --link pty --elements 22 --mode blanking --door 10 --blocked 3
+//   rs4sim run --device gridscan --link memory --grpc 127.0.0.1:50051   (the simulated clock:
+//              SimTime, GridScan.Exchange/Receive/PowerCycle, docs/gridscan.md)
 #include "app/runtime/usage_error.h"
 #include "app/devices/device_options.h"
 #include "app/devices/device_registry.h"
+#include "app/devices/line_run.h"
 #include "gridscan/device.h"
 #include "rpc/device_target.h"
 #include "rpc/line_services.h"
@@ -53,29 +56,41 @@ std::string mode_name(gridscan::Configuration c) {
   return c == gridscan::Configuration::kStatic ? "static" : "blanking";
 }
 
+// The status line at the end of a run.
+void print_line_status(std::ostream& out, const gridscan::GridScanDevice& d, const stream::ByteCounters& c) {
+const auto& k = d.counters();
+  out << "gridscan: frames " << k.frames << ", answered " << k.answered
+      << " (communication tests " << k.comm_tests << "), streamed " << k.streamed << ", dropped "
+      << k.dropped() << " (truncated " << k.truncated << ", oversized " << k.oversized
+      << ", sync " << k.bad_sync << ", CRC " << k.bad_crc << ", SeqCnt " << k.bad_seq << ", ID "
+      << k.unknown_id << ", direction " << k.direction_bit << ", busy " << k.busy
+      << ", not ready " << k.not_ready << "), restarts " << k.restarts << ", bytes received "
+      << c.bytes_received << ", sent " << c.bytes_sent << ", link errors " << c.link_errors
+      << std::endl;
+}
+
 class GridScanInstance final : public DeviceInstance {
  public:
   explicit GridScanInstance(const gridscan::Options& o) : options_(o), device_(o) {}
   std::vector<stream::ByteDevice*> byte_devices() override { return {&tap_}; }
   void start(dp::TimePoint now) override { device_.power_on(now); }
+  // SIGUSR1: a power cycle (the power-up messages, the configuration window and the alignment
+  // arming again, e.g. once the controller has opened the line); SIGUSR2: mains off.
+  void on_user_signal(bool second, dp::TimePoint now) override {
+    device_.power_off();
+    if (!second) device_.power_on(now);
+  }
   [[nodiscard]] std::string describe() const override {
     const auto cycle_us =
         std::chrono::duration_cast<std::chrono::microseconds>(options_.cycle_time()).count();
     return "GridScan/Pro SI, RC (" + std::to_string(options_.elements) + " elements, " +
            mode_name(device_.configuration()) + " mode, " +
            stream::to_string(device_.line_settings()) + ", t_CYCLE " +
-           std::to_string(cycle_us / 1000) + "." + std::to_string(cycle_us % 1000 / 100) + " ms)";
+           std::to_string(cycle_us / 1000) + "." + std::to_string(cycle_us % 1000 / 100) +
+           " ms; SIGUSR1 power-cycles it, SIGUSR2 switches it off)";
   }
   void print_byte_status(std::ostream& out, const stream::ByteCounters& c) const override {
-    const auto& k = device_.counters();
-    out << "gridscan: frames " << k.frames << ", answered " << k.answered
-        << " (communication tests " << k.comm_tests << "), streamed " << k.streamed << ", dropped "
-        << k.dropped() << " (truncated " << k.truncated << ", oversized " << k.oversized
-        << ", sync " << k.bad_sync << ", CRC " << k.bad_crc << ", SeqCnt " << k.bad_seq << ", ID "
-        << k.unknown_id << ", direction " << k.direction_bit << ", busy " << k.busy
-        << ", not ready " << k.not_ready << "), restarts " << k.restarts << ", bytes received "
-        << c.bytes_received << ", sent " << c.bytes_sent << ", link errors " << c.link_errors
-        << std::endl;
+    print_line_status(out, device_, c);
   }
 
   // rs4sim.v1.GridScan at address 0 (no bus address: the RS485 link is point-to-point,
@@ -100,6 +115,30 @@ class GridScanInstance final : public DeviceInstance {
   std::unique_ptr<rpc::LineDeviceTarget> target_;
 };
 
+// --link memory: the curtain alone on the simulated line (docs/gridscan.md "Simulated clock").
+class GridScanSegment final : public SimulatedSegment {
+ public:
+  explicit GridScanSegment(const gridscan::Options& o) : device_(o) {}
+  void run_for(dp::Duration d) override { run_.run_for(d); }
+  [[nodiscard]] std::uint8_t master_address() const override { return kAddress; }
+  void print_summary(std::ostream& out) const override {
+    out << std::endl;
+    print_line_status(out, device_, run_.counters());
+  }
+  [[nodiscard]] bool healthy() const override { return true; }
+  ServiceList services(const ServiceContext& c) override {
+    return run_.services(c, rpc::gridscan_watcher(kAddress, device_),
+                         [this](const rpc::LineContext& line) {
+                           return std::make_shared<rpc::GridScanService>(line, device_);
+                         });
+  }
+
+ private:
+  static constexpr std::uint8_t kAddress = 0;
+  gridscan::GridScanDevice device_;
+  LineRun run_{"gridscan", kAddress, device_};
+};
+
 void validate(DeviceOptions& o) {
   refuse_unused(
       o, "gridscan",
@@ -117,8 +156,11 @@ DeviceEntry gridscan_device_entry() {
           [](const DeviceOptions& o) {
             return std::make_unique<GridScanInstance>(gridscan_options(o));
           },
-      .simulate = {},  // no in-memory link yet
-      .demo = {},
+      .simulate =
+          [](const DeviceOptions& o) {
+            return std::make_unique<GridScanSegment>(gridscan_options(o));
+          },
+      .demo = run_gridscan_demo,
       .byte_device = true,
   };
 }

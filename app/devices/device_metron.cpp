@@ -4,11 +4,13 @@
 // ([METRON manual "Serial line management"], metron/mode_spec.h).
 //
 //   rs4sim run --device metron --link pty --beams 24 --blocked 9-13
-//   rs4sim run --device metron --link pty --node 5
+//   rs4sim run --device metron --link pty --node 5 --mode slave,input=enable-line
 //   rs4sim run --device metron --link pty --mode periodical,hex,separator,checksum,period=250
+//   rs4sim run --device metron --link memory --grpc 127.0.0.1:50051   (the simulated clock)
 #include "app/runtime/usage_error.h"
 #include "app/devices/device_options.h"
 #include "app/devices/device_registry.h"
+#include "app/devices/line_run.h"
 #include "metron/metron_device.h"
 #include "metron/mode_spec.h"
 #include "rpc/device_target.h"
@@ -57,6 +59,17 @@ metron::Options metron_options(const DeviceOptions& o) {
   return m;
 }
 
+// The status line at the end of a run.
+void print_line_status(std::ostream& out, const metron::MetronDevice& device_, const stream::ByteCounters& c) {
+  const auto k = device_.counters();
+  out << "metron: messages " << k.messages << ", executed " << k.executed << ", frames sent "
+      << k.frames_sent << ", E1..E5 " << k.errors[0] << "/" << k.errors[1] << "/" << k.errors[2]
+      << "/" << k.errors[3] << "/" << k.errors[4] << ", parity rejected " << k.parity_rejected
+      << ", not for us " << k.not_for_us << ", truncated " << k.truncated << ", too long "
+      << k.too_long << ", reports " << k.reports << ", bytes received " << c.bytes_received
+      << ", sent " << c.bytes_sent << ", link errors " << c.link_errors << std::endl;
+}
+
 class MetronInstance final : public DeviceInstance {
  public:
   explicit MetronInstance(const DeviceOptions& o) : device_(metron_options(o)) {
@@ -67,17 +80,16 @@ class MetronInstance final : public DeviceInstance {
     }
   }
   std::vector<stream::ByteDevice*> byte_devices() override { return {&tap_}; }
+  // SIGUSR1: the input line high, SIGUSR2: low (what the input type acts on).
+  void on_user_signal(bool second, dp::TimePoint) override { device_.set_input(!second); }
   [[nodiscard]] std::string describe() const override {
-    return "METRON measuring light curtain (" + stream::to_string(device_.line_settings()) + ")";
+    const auto& o = device_.options();
+    return "METRON measuring light curtain (" + stream::to_string(device_.line_settings()) +
+           ", input type " + std::string(metron::to_string(o.input_type)) +
+           ": SIGUSR1 sets the input high, SIGUSR2 low)";
   }
   void print_byte_status(std::ostream& out, const stream::ByteCounters& c) const override {
-    const auto k = device_.counters();
-    out << "metron: messages " << k.messages << ", executed " << k.executed << ", frames sent "
-        << k.frames_sent << ", E1..E5 " << k.errors[0] << "/" << k.errors[1] << "/" << k.errors[2]
-        << "/" << k.errors[3] << "/" << k.errors[4] << ", parity rejected " << k.parity_rejected
-        << ", not for us " << k.not_for_us << ", truncated " << k.truncated << ", too long "
-        << k.too_long << ", reports " << k.reports << ", bytes received " << c.bytes_received
-        << ", sent " << c.bytes_sent << ", link errors " << c.link_errors << std::endl;
+    print_line_status(out, device_, c);
   }
 
   // rs4sim.v1.Metron at the node number (node mode), else 0, and Observation for the events.
@@ -101,6 +113,37 @@ class MetronInstance final : public DeviceInstance {
   std::unique_ptr<rpc::LineDeviceTarget> target_;
 };
 
+// --link memory: the device alone on the simulated line, driven through the API
+// (docs/metron.md "Simulated clock").
+class MetronSegment final : public SimulatedSegment {
+ public:
+  explicit MetronSegment(const DeviceOptions& o) : device_(metron_options(o)) {
+    if (o.blocked) {
+      std::vector<std::uint16_t> beams;
+      for (const int b : *o.blocked) beams.push_back(static_cast<std::uint16_t>(b));
+      device_.set_interrupted(beams);
+    }
+  }
+  void run_for(dp::Duration d) override { run_.run_for(d); }
+  [[nodiscard]] std::uint8_t master_address() const override { return address_; }
+  void print_summary(std::ostream& out) const override {
+    out << std::endl;
+    print_line_status(out, device_, run_.counters());
+  }
+  [[nodiscard]] bool healthy() const override { return true; }
+  ServiceList services(const ServiceContext& c) override {
+    return run_.services(c, rpc::metron_watcher(address_, device_),
+                         [this](const rpc::LineContext& line) {
+                           return std::make_shared<rpc::MetronService>(line, device_);
+                         });
+  }
+
+ private:
+  metron::MetronDevice device_;
+  std::uint8_t address_ = device_.options().node_enabled ? device_.options().node : std::uint8_t{0};
+  LineRun run_{"metron", address_, device_};
+};
+
 void validate(DeviceOptions& o) {
   refuse_unused(o, "metron",
                 {DeviceFlag::kBaud, DeviceFlag::kFormat, DeviceFlag::kBeams, DeviceFlag::kMode,
@@ -115,7 +158,7 @@ DeviceEntry metron_device_entry() {
       .name = "metron",
       .validate = validate,
       .build = [](const DeviceOptions& o) { return std::make_unique<MetronInstance>(o); },
-      .simulate = {},  // no in-memory link yet
+      .simulate = [](const DeviceOptions& o) { return std::make_unique<MetronSegment>(o); },
       .demo = {},
       .byte_device = true,
   };

@@ -4,12 +4,14 @@
 // has the last word.
 //
 //   rs4sim run --device polaris --link pty --model PL10 --beams 40 --mode FL4 --address 1
+//   rs4sim run --device polaris --link memory --grpc 127.0.0.1:50051   (the simulated clock)
 //              --baud 19200 --blocked 9-13,25-34
 //   --mode: a data mode (485MB | FL1 | FL4 | FL10), optionally followed by comma-separated
 //           words: slave | master, direct | reverse, object | hole
 #include "app/runtime/usage_error.h"
 #include "app/devices/device_options.h"
 #include "app/devices/device_registry.h"
+#include "app/devices/line_run.h"
 #include "polaris/device.h"
 #include "rpc/device_target.h"
 #include "rpc/line_services.h"
@@ -74,6 +76,18 @@ polaris::Options polaris_options(const DeviceOptions& o) {
   return p;
 }
 
+// The status line at the end of a run.
+void print_line_status(std::ostream& out, const polaris::Device& device_, const stream::ByteCounters& c) {
+  const auto& k = device_.counters();
+  out << "polaris: requests " << k.requests << ", CRC errors " << k.crc_errors << ", too short "
+      << k.too_short << ", oversized " << k.oversized << ", broadcasts " << k.broadcasts
+      << ", other addresses " << k.foreign_address << ", bad function " << k.bad_function
+      << ", bad request " << k.bad_request << ", bad start " << k.bad_start
+      << ", exceptions sent " << k.exceptions_sent << ", frames sent " << k.frames_sent
+      << ", bytes received " << c.bytes_received << ", sent " << c.bytes_sent << ", link errors "
+      << c.link_errors << std::endl;
+}
+
 class PolarisInstance final : public DeviceInstance {
  public:
   explicit PolarisInstance(const DeviceOptions& o) : device_(polaris_options(o)) {
@@ -93,14 +107,7 @@ class PolarisInstance final : public DeviceInstance {
            std::to_string(p.address) + ", " + stream::to_string(device_.line_settings()) + ")";
   }
   void print_byte_status(std::ostream& out, const stream::ByteCounters& c) const override {
-    const auto& k = device_.counters();
-    out << "polaris: requests " << k.requests << ", CRC errors " << k.crc_errors << ", too short "
-        << k.too_short << ", oversized " << k.oversized << ", broadcasts " << k.broadcasts
-        << ", other addresses " << k.foreign_address << ", bad function " << k.bad_function
-        << ", bad request " << k.bad_request << ", bad start " << k.bad_start
-        << ", exceptions sent " << k.exceptions_sent << ", frames sent " << k.frames_sent
-        << ", bytes received " << c.bytes_received << ", sent " << c.bytes_sent << ", link errors "
-        << c.link_errors << std::endl;
+    print_line_status(out, device_, c);
   }
 
   // rs4sim.v1.Polaris at its Modbus address, and Observation for the event stream.
@@ -124,6 +131,37 @@ class PolarisInstance final : public DeviceInstance {
   std::vector<int> blocked_;
 };
 
+// --link memory: the device alone on the simulated line, driven through the API
+// (docs/polaris.md "Simulated clock").
+class PolarisSegment final : public SimulatedSegment {
+ public:
+  explicit PolarisSegment(const DeviceOptions& o) : device_(polaris_options(o)) {
+    if (o.blocked) {
+      std::vector<std::uint16_t> beams;
+      for (const int b : *o.blocked) beams.push_back(static_cast<std::uint16_t>(b));
+      (void)device_.set_interrupted(beams, run_.now());  // checked in validate
+    }
+  }
+  void run_for(dp::Duration d) override { run_.run_for(d); }
+  [[nodiscard]] std::uint8_t master_address() const override { return address_; }
+  void print_summary(std::ostream& out) const override {
+    out << std::endl;
+    print_line_status(out, device_, run_.counters());
+  }
+  [[nodiscard]] bool healthy() const override { return true; }
+  ServiceList services(const ServiceContext& c) override {
+    return run_.services(c, rpc::polaris_watcher(address_, device_),
+                         [this](const rpc::LineContext& line) {
+                           return std::make_shared<rpc::PolarisService>(line, device_);
+                         });
+  }
+
+ private:
+  polaris::Device device_;
+  std::uint8_t address_ = device_.options().address;
+  LineRun run_{"polaris", address_, device_};
+};
+
 void validate(DeviceOptions& o) {
   refuse_unused(o, "polaris",
                 {DeviceFlag::kAddress, DeviceFlag::kBaud, DeviceFlag::kBeams, DeviceFlag::kModel,
@@ -138,7 +176,7 @@ DeviceEntry polaris_device_entry() {
       .name = "polaris",
       .validate = validate,
       .build = [](const DeviceOptions& o) { return std::make_unique<PolarisInstance>(o); },
-      .simulate = {},  // no in-memory link yet
+      .simulate = [](const DeviceOptions& o) { return std::make_unique<PolarisSegment>(o); },
       .demo = {},
       .byte_device = true,
   };

@@ -36,8 +36,9 @@ int run_memory(const DeviceEntry& device, const DeviceOptions& o, const LinkOpti
   if (segment->bus() != nullptr) attach_capture(capture.get(), *segment->bus());
   const double secs = l.duration > 0 ? l.duration : device.simulated_seconds;
   const bool whole = run_simulated(session, secs, [&](dp::Duration d) { segment->run_for(d); });
-  out << "in-memory bus, " << secs << " s simulated" << (whole ? "" : " (interrupted)")
-      << ", master " << int(segment->master_address());
+  out << (device.byte_device ? "in-memory line, " : "in-memory bus, ") << secs << " s simulated"
+      << (whole ? "" : " (interrupted)");
+  if (!device.byte_device) out << ", master " << int(segment->master_address());
   segment->print_summary(out);
   const bool written = report_capture(capture.get(), l);
   return segment->healthy() && written ? 0 : 1;
@@ -56,7 +57,8 @@ int run_memory_served(const DeviceEntry& device, const DeviceOptions& o, const L
   std::cerr << "rs4sim: simulated bus on the manual clock, driven through the API; Ctrl-C to stop"
             << std::endl;
   session.run();
-  out << "in-memory bus, served, master " << int(segment->master_address());
+  out << (device.byte_device ? "in-memory line, served" : "in-memory bus, served");
+  if (!device.byte_device) out << ", master " << int(segment->master_address());
   segment->print_summary(out);
   return report_capture(capture.get(), l) ? 0 : 1;
 }
@@ -243,10 +245,11 @@ bool run_simulated(RunSession& session, double simulated,
 
 namespace {
 
-// A byte device: no in-memory link; --baud is its plain bit rate.
+// A byte device: --baud is its plain bit rate; the in-memory line only for the devices that
+// have one (GridScan, METRON, Polaris: the harness is the client, through the API).
 void prepare_byte_device(const DeviceEntry& device, DeviceOptions& options,
                          const LinkOptions& link) {
-  if (link.link == LinkKind::kMemory) {
+  if (link.link == LinkKind::kMemory && !device.simulate) {
     throw UsageError("--device " + device.name +
                      " has no in-memory link (no master or client of ours for it yet): run it "
                      "with --link pty and connect the client to the printed path (or use "

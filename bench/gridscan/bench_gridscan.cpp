@@ -4,6 +4,7 @@
 // never asserted.
 #include "bench/heap_in_use.h"
 #include "gridscan/device.h"
+#include "stream/memory_line.h"
 
 #include <benchmark/benchmark.h>
 
@@ -56,6 +57,29 @@ void BM_RequestCommTest(benchmark::State& s) {
 BENCHMARK(BM_RequestFullState60);
 BENCHMARK(BM_RequestReducedState22);
 BENCHMARK(BM_RequestCommTest);
+
+// The same request through the simulated line (`--link memory`'s stream::MemoryLine, as an
+// Exchange runs it, without gRPC): the request's wire time, the idle gap, the cycle end, the
+// answer's wire time, all on the manual clock.
+void BM_RequestCommTestOnMemoryLine(benchmark::State& state) {
+  stream::ManualClock clock;
+  GridScanDevice d{Options{}};
+  stream::MemoryLine line(clock, d);
+  line.start();
+  line.run_for(2s);
+  (void)line.take_received();
+  std::uint8_t seq = 2;
+  std::size_t answered = 0;
+  for (auto _ : state) {
+    line.write(encode(Frame{seq, request_id(CommandId::kInfoCommunicationTest), {}}));
+    line.run_for(31ms);  // one cycle and the answer's wire time
+    answered += line.take_received().size();
+    seq = static_cast<std::uint8_t>(seq + 2);
+  }
+  state.counters["answered"] = static_cast<double>(answered);
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_RequestCommTestOnMemoryLine);
 
 // The codec alone: encode a 20-byte frame, then decode it strictly.
 void BM_FrameEncodeDecode(benchmark::State& state) {

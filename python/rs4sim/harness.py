@@ -322,6 +322,28 @@ class _LineDevice(_Client):
         return _Subscribed(self.observation.StreamEvents(pb.StreamEventsRequest(
             addresses=[self.address], telegrams=telegrams, queue_capacity=queue_capacity)))
 
+    # ---- the simulated clock (rs4sim run --device X --link memory --grpc) ----------------
+    def exchange(self, request, timeout_ms=0):
+        """Sends `request` (bytes) on the simulated line and runs the clock until the reply
+        has arrived or timeout_ms (0: 1000) passed: an ExchangeResponse (answered, reply,
+        sent_ns, arrived_ns, reply_start_ns, reply_end_ns, reply_after_ns, now_ns)."""
+        return self.service.Exchange(dev_pb.ExchangeRequest(
+            address=self.address, request=bytes(request), timeout_ms=timeout_ms))
+
+    def receive(self, wait_ms=0):
+        """Runs the clock wait_ms, then the frames the device sent unasked (ReceivedFrame:
+        frame, start_ns, end_ns), oldest first."""
+        return list(self.service.Receive(dev_pb.ReceiveRequest(
+            address=self.address, wait_ms=wait_ms)).frames)
+
+    def now_ns(self):
+        """The run's simulated time (SimTime.Now)."""
+        return pb_grpc.SimTimeStub(self.channel).Now(pb.Empty()).now_ns
+
+    def advance(self, ms):
+        """Moves the simulated clock by `ms` (SimTime.Advance); returns the new now_ns."""
+        return pb_grpc.SimTimeStub(self.channel).Advance(pb.AdvanceRequest(duration_ms=ms)).now_ns
+
 
 class GridScan(_LineDevice):
     """faults: LATE_ANSWER (delay_ms), WRONG_SEQ, DIRECTION_BIT, BAD_CRC, INTERNAL_FAILURE,
@@ -340,13 +362,20 @@ class GridScan(_LineDevice):
     def set_soiling(self, level):
         self.service.SetSoiling(dev_pb.SetSoilingRequest(address=self.address, level=level))
 
+    def power_cycle(self, off_ms=0):
+        """Mains off and on (off_ms later, on the simulated clock): the power-up again."""
+        self.service.PowerCycle(dev_pb.PowerCycleRequest(address=self.address, off_ms=off_ms))
+
+    def set_power(self, on):
+        self.service.SetPower(pb.SetPowerRequest(address=self.address, on=on))
+
 
 class Metron(_LineDevice):
     """faults: SILENT, LATE (delay_ms), BAD_CHECKSUM, WRONG_NODE, TRUNCATE."""
     _stub = dev_grpc.MetronStub
     _fault_enum = "METRON_FAULT_"
     _fault_request = dev_pb.MetronFaultRequest
-    _delay_field = "delay_ms"
+    _delay_field = "late_ms"
 
     def __init__(self, address, device_address=0, timeout=10.0):
         super().__init__(address, device_address, timeout)
@@ -355,9 +384,13 @@ class Metron(_LineDevice):
         self.service.SetSynchronised(dev_pb.SetSynchronisedRequest(
             address=self.address, synchronised=synchronised))
 
+    def set_input(self, high):
+        """The level of the curtain's input line (what its input type acts on)."""
+        self.service.SetInput(dev_pb.SetInputRequest(address=self.address, high=high))
+
 
 class Polaris(_LineDevice):
-    """faults: BAD_CRC, NO_ANSWER, LATE (delay_ms)."""
+    """faults: BAD_CRC, SILENT (NO_ANSWER, its deprecated name, still works), LATE (delay_ms)."""
     _stub = dev_grpc.PolarisStub
     _fault_enum = "POLARIS_FAULT_"
     _fault_request = dev_pb.PolarisFaultRequest

@@ -8,6 +8,7 @@ on the command line (--door 10 --blocked 3).
 Usage: gridscan_pty.py <path to rs4sim>
 """
 import os
+import signal
 import select
 import subprocess
 import sys
@@ -87,6 +88,13 @@ def main():
                        0x01,              # bit 8: an element below the edge interrupted
                        0x04, 0xFC, 0x3F,  # elements 3, 11..22
                        0x74, 0xE5, 0x5F, 0x05])
+        # SIGUSR1: a power cycle once the line is open: the power-up messages again, SeqCnt 0.
+        proc.send_signal(signal.SIGUSR1)
+        expect(fd, "power-up version after SIGUSR1",
+               SYNC + [0x00, 0xA0, 0x30, 0x31, 0x2E, 0x30, 0x32, 0x30, 0x33, 0x2E, 0x30, 0x34,
+                       0x33, 0x7F, 0x67, 0x4B])
+        expect(fd, "power-up reduced state after SIGUSR1",
+               SYNC + [0x01, 0xB0, 0x0A, 0x01, 0x36, 0x9C, 0xDB, 0xFF], timeout=3.0)
     finally:
         os.close(fd)
     rc = proc.wait(timeout=15)

@@ -84,7 +84,11 @@ TEST(MetronModeSpec, Slave) {
   EXPECT_EQ(apply_mode_spec("slave", o), "");
   EXPECT_EQ(o.line_mode, LineMode::kSlave);
   EXPECT_EQ(apply_mode_spec("slave,hex", o),
-            "slave mode takes no options (19200 8E1 binary, fixed)");
+            "slave mode takes only input=<type> (19200 8E1 binary, fixed)");
+  EXPECT_EQ(apply_mode_spec("slave,input=enable-line", o), "");
+  EXPECT_EQ(o.line_mode, LineMode::kSlave);
+  EXPECT_EQ(o.input_type, InputType::kEnableLine);
+  EXPECT_EQ(apply_mode_spec("slave,input=sometimes", o), "unknown input type 'sometimes'");
 }
 
 TEST(MetronModeSpec, StandardWithOptions) {

@@ -25,6 +25,12 @@
 #include <thread>
 #include <vector>
 
+// A use of a field marked [deprecated = true], on purpose (its old clients still work).
+#define RS4SIM_DEPRECATED_FIELD(statement)                                   \
+  _Pragma("GCC diagnostic push")                                             \
+      _Pragma("GCC diagnostic ignored \"-Wdeprecated-declarations\"") statement; \
+  _Pragma("GCC diagnostic pop")
+
 namespace rs4sim::rpc {
 namespace {
 
@@ -200,10 +206,10 @@ TEST_F(RpcPolarisTest, FaultsActOnTheWireUntilCleared) {
       (std::vector<std::string>{"bad-crc"}));
   ASSERT_TRUE(fault(v1::POLARIS_FAULT_BAD_CRC, false).ok());
 
-  ASSERT_TRUE(fault(v1::POLARIS_FAULT_NO_ANSWER, true).ok());
+  ASSERT_TRUE(fault(v1::POLARIS_FAULT_SILENT, true).ok());
   EXPECT_TRUE(exchange(tap_, read_).empty());
   EXPECT_EQ(state().counters().suppressed(), 1U);
-  ASSERT_TRUE(fault(v1::POLARIS_FAULT_NO_ANSWER, false).ok());
+  RS4SIM_DEPRECATED_FIELD(ASSERT_TRUE(fault(v1::POLARIS_FAULT_NO_ANSWER, false).ok()));  // old name
 
   ASSERT_TRUE(fault(v1::POLARIS_FAULT_LATE, true, 30).ok());
   EXPECT_EQ(state().late_ms(), 30U);
@@ -509,12 +515,15 @@ class RpcMetronTest : public LineFixture {
     v1::Empty e;
     return stub_->SetSynchronised(&ctx, req, &e);
   }
-  grpc::Status fault(v1::MetronFault f, bool inject, std::uint32_t delay_ms = 0) {
+  // `old_delay_ms`: the deprecated name of late_ms, as an older client sends it.
+  grpc::Status fault(v1::MetronFault f, bool inject, std::uint32_t late_ms = 0,
+                     std::uint32_t old_delay_ms = 0) {
     grpc::ClientContext ctx;
     v1::MetronFaultRequest req;
     req.set_address(5);
     req.set_fault(f);
-    req.set_delay_ms(delay_ms);
+    req.set_late_ms(late_ms);
+    RS4SIM_DEPRECATED_FIELD(req.set_delay_ms(old_delay_ms));
     v1::Empty e;
     return inject ? stub_->InjectFault(&ctx, req, &e) : stub_->ClearFault(&ctx, req, &e);
   }
@@ -562,7 +571,8 @@ TEST_F(RpcMetronTest, EveryFaultIsInjectedAndCleared) {
   auto s = state();
   EXPECT_EQ(std::vector<std::string>(s.faults_present().begin(), s.faults_present().end()),
             (std::vector<std::string>{"silent", "late", "bad-checksum", "wrong-node", "truncate"}));
-  EXPECT_EQ(s.delay_ms(), 40U);
+  EXPECT_EQ(s.late_ms(), 40U);
+  RS4SIM_DEPRECATED_FIELD(EXPECT_EQ(s.delay_ms(), 40U));
   for (const auto f :
        {v1::METRON_FAULT_SILENT, v1::METRON_FAULT_LATE, v1::METRON_FAULT_BAD_CHECKSUM,
         v1::METRON_FAULT_WRONG_NODE, v1::METRON_FAULT_TRUNCATE}) {
@@ -570,7 +580,19 @@ TEST_F(RpcMetronTest, EveryFaultIsInjectedAndCleared) {
   }
   s = state();
   EXPECT_TRUE(s.faults_present().empty());
-  EXPECT_EQ(s.delay_ms(), 0U);
+  EXPECT_EQ(s.late_ms(), 0U);
+}
+
+// delay_ms, the old name of late_ms, keeps working; both given must agree.
+TEST_F(RpcMetronTest, TheDeprecatedDelayMsStillWorks) {
+  ASSERT_TRUE(fault(v1::METRON_FAULT_LATE, true, 0, 25).ok());
+  EXPECT_EQ(state().late_ms(), 25U);
+  ASSERT_TRUE(fault(v1::METRON_FAULT_LATE, true, 30, 30).ok());
+  EXPECT_EQ(state().late_ms(), 30U);
+  const auto s = fault(v1::METRON_FAULT_LATE, true, 30, 31);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad_field(s), "delay_ms");
+  EXPECT_EQ(bad_field(fault(v1::METRON_FAULT_LATE, true, 0, 10001)), "delay_ms");
 }
 
 TEST_F(RpcMetronTest, BadInputGetsASpecificStatus) {
@@ -584,7 +606,7 @@ TEST_F(RpcMetronTest, BadInputGetsASpecificStatus) {
   s = fault(v1::METRON_FAULT_UNSPECIFIED, true);
   EXPECT_EQ(bad_field(s), "fault");
   s = fault(v1::METRON_FAULT_LATE, true);
-  EXPECT_EQ(bad_field(s), "delay_ms");
+  EXPECT_EQ(bad_field(s), "late_ms");
   EXPECT_TRUE(state().blocked().empty());
   EXPECT_TRUE(state().faults_present().empty());
 }

@@ -1,0 +1,140 @@
+// The GridScan demo of `rs4sim demo --device gridscan` (app/demos/demos.h): the curtain alone
+// on the simulated line (stream::MemoryLine, 115200 8N1 with every frame's wire time) and the
+// demo as its door controller: the power-up messages, the communication test of
+// [GridScan manual §10.3] step by step (each answer compared with the manual's bytes), and a
+// power cycle that runs the power-up again. Exits 0 when every step did what the manual says.
+#include "app/demos/demos.h"
+#include "app/demos/narration.h"
+#include "gridscan/device.h"
+#include "stream/memory_line.h"
+
+#include <cstdio>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace rs4sim::app {
+namespace {
+
+using namespace std::chrono_literals;
+using Bytes = std::vector<std::uint8_t>;
+
+std::string hex(const Bytes& b) {
+  std::string out;
+  char two[4];
+  for (const auto byte : b) {
+    std::snprintf(two, sizeof two, "%02X ", byte);
+    out += two;
+  }
+  if (!out.empty()) out.pop_back();
+  return out;
+}
+
+const Bytes kSync{0x43, 0x45, 0x44, 0x45};
+Bytes with_sync(std::initializer_list<std::uint8_t> rest) {
+  Bytes b = kSync;
+  b.insert(b.end(), rest);
+  return b;
+}
+
+class Demo {
+ public:
+  Demo(std::ostream& out, bool realtime, RunSession& session)
+      : run_(run_until(realtime, session)),
+        n_(out, clock_, run_, Narration::Stamp::kMilliseconds) {
+    line_.set_peer([this](const stream::LineFrame& f) { arrived_.push_back(f.bytes); });
+  }
+  int run() {
+    try {
+      n_.print("GridScan/Pro SI, RC: 22 elements, blanking, door open; 115200 8N1 "
+               "[GridScan manual §9.1]\n");
+      const bool ok = run_steps({[this] { return power_up("power-up"); },
+                                 [this] { return communication_test(); },
+                                 [this] { return power_cycle(); }});
+      n_.print(ok ? "\ndemo: all steps passed\n" : "\ndemo: FAILED\n");
+      return ok ? 0 : 1;
+    } catch (const DemoInterrupted&) {
+      n_.print("\ndemo interrupted\n");
+      return kInterruptedExit;
+    }
+  }
+
+ private:
+  RunUntil run_until(bool realtime, RunSession& session) {
+    RunUntil run = [this](const std::function<bool()>& done, dp::Duration limit) {
+      return line_.run_until(clock_.now() + limit, done);
+    };
+    return in_session(std::move(run), clock_, realtime, session);
+  }
+  // Waits for the next frame from the curtain and checks it against the manual's bytes.
+  bool expect(const Bytes& want, dp::Duration limit, const std::string& what) {
+    if (!run_([this] { return !arrived_.empty(); }, limit)) {
+      return n_.check(false, "no frame from the curtain: expected " + what);
+    }
+    const Bytes frame = arrived_.front();
+    arrived_.erase(arrived_.begin());
+    n_.say("curtain -> " + hex(frame) + "  " + what);
+    return n_.check(frame == want, what + ": the manual prints " + hex(want));
+  }
+  bool power_up(const std::string& why) {
+    n_.print("\n== " + why + " [GridScan manual §10.1.1]\n");
+    if (started_) {
+      device_.power_on(clock_.now());
+    } else {
+      started_ = true;
+      line_.start();
+    }
+    return expect(with_sync({0x00, 0xA0, 0x30, 0x31, 0x2E, 0x30, 0x32, 0x30, 0x33, 0x2E, 0x30,
+                             0x34, 0x33, 0x7F, 0x67, 0x4B}),
+                  10ms, "Info: Get version (SeqCnt 0): SW 01.02, HW 03.04") &&
+           expect(with_sync({0x01, 0xB0, 0x16, 0x00, 0x69, 0x78, 0x27, 0x24}), 2s,
+                  "Data: Reduced state (SeqCnt 1): door 22 = open, nothing interrupted; ready");
+  }
+  bool communication_test() {
+    n_.print("\n== the communication test 0x23, as [GridScan manual §10.3] prints it\n");
+    struct Step {
+      Bytes request, answer;
+      const char* what;
+    };
+    const std::vector<Step> steps{
+        {{0, 0, 0, 0, 0x00, 0x23, 0, 0, 0, 0},
+         with_sync({0x01, 0xA3, 0x07, 0xEF, 0x30, 0x3F, 0x78}), "error bits 07: CRC, SeqCnt, sync"},
+        {{0, 0, 0, 0, 0x02, 0x23, 0, 0, 0, 0},
+         with_sync({0x03, 0xA3, 0x05, 0x8F, 0x52, 0x0C, 0x72}), "error bits 05: CRC, sync"},
+        {with_sync({0x04, 0x23, 0, 0, 0, 0}), with_sync({0x05, 0xA3, 0x01, 0x41, 0xCF, 0xDB, 0x65}),
+         "error bits 01: CRC"},
+        {with_sync({0x06, 0x23, 0xE2, 0x4B, 0x01, 0x70}),
+         with_sync({0x07, 0xA3, 0x00, 0xF8, 0x8B, 0xAB, 0x62}), "error bits 00: all correct"},
+    };
+    for (const auto& s : steps) {
+      n_.say("control -> " + hex(s.request));
+      line_.write(s.request);
+      if (!expect(s.answer, 100ms, std::string(s.what) + " (answered at the cycle end)")) return false;
+    }
+    return true;
+  }
+  bool power_cycle() {
+    n_.print("\n== mains off for 500 ms\n");
+    device_.power_off();
+    n_.run_for(500ms);
+    return n_.check(arrived_.empty(), "nothing sent while off") &&
+           power_up("mains on again: the power-up runs again, SeqCnt from 0");
+  }
+
+  stream::ManualClock clock_;
+  gridscan::GridScanDevice device_{gridscan::Options{}};
+  stream::MemoryLine line_{clock_, device_};
+  std::vector<Bytes> arrived_;
+  bool started_ = false;
+  RunUntil run_;
+  Narration n_;
+};
+
+}  // namespace
+
+int run_gridscan_demo(RunSession& session, std::ostream& out, const DemoOptions& options) {
+  Demo demo(out, options.realtime, session);
+  return demo.run();
+}
+
+}  // namespace rs4sim::app

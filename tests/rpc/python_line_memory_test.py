@@ -1,0 +1,102 @@
+"""`rs4sim run --device gridscan|polaris --link memory --grpc` driven by the Python harness:
+the devices on the simulated clock, no pty. The known answers are the manuals' frames as
+fixed bytes: the GridScan's power-up messages and the last step of the communication test of
+[GridScan manual §10.3]; the Polaris's P7 [Polaris manual §8.2.3] with the beams of its
+example (9-13, 25-34 of 40). Wire time at 115200 8N1: 10 bits a character.
+Usage: python_line_memory_test.py RS4SIM REPO   (exit 77 = skipped: no python3-grpcio)"""
+import sys
+
+try:
+    import grpc
+except ImportError:
+    print("python3-grpcio is not installed: skipped")
+    sys.exit(77)
+
+rs4sim, repo = sys.argv[1], sys.argv[2]
+from rs4sim import GridScan, Polaris, error_details  # noqa: E402
+from rs4sim.process import Rs4simProcess  # noqa: E402
+
+VERSION = bytes([0x43, 0x45, 0x44, 0x45, 0x00, 0xA0, 0x30, 0x31, 0x2E, 0x30, 0x32,
+                 0x30, 0x33, 0x2E, 0x30, 0x34, 0x33, 0x7F, 0x67, 0x4B])
+REDUCED = bytes([0x43, 0x45, 0x44, 0x45, 0x01, 0xB0, 0x16, 0x00, 0x69, 0x78, 0x27, 0x24])
+# The manual's first step: sync, SeqCnt and CRC all wrong -> error bits 0x07.
+TEST_REQUEST = bytes([0x00, 0x00, 0x00, 0x00, 0x00, 0x23, 0x00, 0x00, 0x00, 0x00])
+TEST_ANSWER = bytes([0x43, 0x45, 0x44, 0x45, 0x01, 0xA3, 0x07, 0xEF, 0x30, 0x3F, 0x78])
+
+
+def wire_ns(chars, bits, baud):
+    return -(-chars * bits * 10**9 // baud)  # rounded up
+
+
+def check(cond, what):
+    if not cond:
+        print("FAILED:", what)
+        sys.exit(1)
+
+
+def gridscan():
+    proc = Rs4simProcess(["run", "--device", "gridscan", "--link", "memory",
+                          "--grpc", "127.0.0.1:0"], executable=rs4sim)
+    try:
+        with GridScan(proc.address) as g:
+            t0 = g.now_ns()
+            frames = g.receive(1702)
+            check([f.frame for f in frames] == [VERSION, REDUCED], f"power-up messages {frames}")
+            check(frames[1].start_ns - frames[0].start_ns == 1_700_000_000, "ready after 1700 ms")
+            x = g.exchange(TEST_REQUEST)
+            check(x.answered and x.reply == TEST_ANSWER, f"communication test answer {x}")
+            check(x.reply_start_ns == frames[1].start_ns + 30_000_000, "answered at cycle end")
+            check(x.reply_end_ns - x.reply_start_ns == wire_ns(11, 10, 115200), "wire time")
+            check(x.reply_after_ns == x.reply_end_ns - x.sent_ns, "reply_after_ns")
+            # The power cycle re-runs the power-up: SeqCnt from 0 again.
+            g.power_cycle(off_ms=100)
+            frames = g.receive(1702)
+            check([f.frame for f in frames] == [VERSION, REDUCED], "power-up after the cycle")
+            x = g.exchange(TEST_REQUEST)
+            check(x.answered and x.reply == TEST_ANSWER, f"the same answer after the cycle {x}")
+            check(g.now_ns() > t0, "the clock moved")
+            try:
+                g.exchange(b"")
+                check(False, "an empty request is refused")
+            except grpc.RpcError as e:
+                check(e.code() == grpc.StatusCode.INVALID_ARGUMENT, f"code {e.code()}")
+                check("request" in str(error_details(e)), f"the field: {error_details(e)}")
+    finally:
+        proc.stop()
+
+
+def crc16(frame):
+    crc = 0xFFFF
+    for b in frame:
+        crc ^= b
+        for _ in range(8):
+            crc = (crc >> 1) ^ 0xA001 if crc & 1 else crc >> 1
+    return bytes(frame) + bytes([crc & 0xFF, crc >> 8])
+
+
+def polaris():
+    proc = Rs4simProcess(["run", "--device", "polaris", "--link", "memory", "--model", "PL10",
+                          "--beams", "40", "--mode", "FL1", "--address", "1",
+                          "--blocked", "9-13,25-34", "--grpc", "127.0.0.1:0"],
+                         executable=rs4sim)
+    try:
+        with Polaris(proc.address, 1) as p:
+            request = bytes([0x01, 0x03, 0x20, 0x00, 0x00, 0x02, 0xCF, 0xCB])
+            check(crc16(request[:-2]) == request, "the request's CRC")
+            x = p.exchange(request)
+            check(x.answered, "answered")
+            check(x.reply == bytes([0x01, 0x03, 0x04, 0x00, 0x09, 0x00, 0x22, 0xAA, 0x28]),
+                  f"P7 {x.reply.hex()}")
+            check(x.arrived_ns - x.sent_ns == wire_ns(8, 10, 19200), "request wire time")
+            # A broadcast is never answered: the clock runs the timeout.
+            x = p.exchange(crc16([0x00, 0x03, 0x20, 0x00, 0x00, 0x02]), timeout_ms=50)
+            check(not x.answered and x.now_ns - x.sent_ns == 50_000_000, f"broadcast {x}")
+            before = p.now_ns()
+            check(p.advance(250) == before + 250_000_000, "SimTime.Advance")
+    finally:
+        proc.stop()
+
+
+gridscan()
+polaris()
+print("ok")
