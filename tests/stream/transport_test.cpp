@@ -3,6 +3,7 @@
 #include "stream/pty.h"
 #include "stream/serial_transport.h"
 #include "stream/udp_transport.h"
+#include "tests/stream/run_until.h"
 
 #include <gtest/gtest.h>
 
@@ -117,6 +118,72 @@ TEST(UdpEndpoint, PortInUseIsABindError) {
   } catch (const LinkException& e) {
     EXPECT_EQ(e.code(), LinkError::kBindFailed);
   }
+}
+
+
+// PROFIBUS allows no idle time between a telegram's characters [IEC 61158-4-3 UART character]:
+// each frame goes to the kernel in one write(), so the reader on the other side of the pty
+// finds it whole in one read, and the transport counts it as written whole.
+class OneWritePerTelegram : public ::testing::Test {
+ protected:
+  asio::io_context io;
+  PseudoTerminal pty;
+  int reader = -1;
+  void SetUp() override {
+    // Non-blocking: a frame not yet written fails the read instead of hanging the test.
+    reader = ::open(pty.slave_path().c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK);
+    ASSERT_GE(reader, 0);
+  }
+  void TearDown() override {
+    if (reader >= 0) ::close(reader);
+  }
+};
+
+TEST_F(OneWritePerTelegram, EveryFrameArrivesInOneReadAndIsCountedWhole) {
+  SerialTransport t(io, pty.release_master(), {1500000, 8, Parity::kEven, 1}, "pty");
+  t.start([](std::span<const std::uint8_t>) {}, [](std::error_code) {});
+  for (std::size_t size : {1U, 6U, 14U, 255U}) {
+    std::vector<std::uint8_t> frame(size);
+    for (std::size_t i = 0; i < size; ++i) frame[i] = static_cast<std::uint8_t>(i + size);
+    t.send(frame);
+    // send() returned: the bytes are already in the kernel, before the loop has run at all.
+    std::vector<std::uint8_t> got(512);
+    const ssize_t n = ::read(reader, got.data(), got.size());
+    ASSERT_EQ(n, static_cast<ssize_t>(size));
+    got.resize(size);
+    EXPECT_EQ(got, frame);
+  }
+  EXPECT_EQ(t.write_counters().frames, 4U);
+  EXPECT_EQ(t.write_counters().whole, 4U);
+  EXPECT_EQ(t.write_counters().split, 0U);
+}
+
+// A stalled line (nobody reads, the pty's buffer fills up): the frame that does not fit is
+// the only one written in parts; it and the frames behind it follow in order once the reader
+// drains.
+TEST_F(OneWritePerTelegram, AFullKernelBufferSplitsAFrameAndKeepsTheOrder) {
+  SerialTransport t(io, pty.release_master(), {1500000, 8, Parity::kEven, 1}, "pty");
+  t.start([](std::span<const std::uint8_t>) {}, [](std::error_code) {});
+  std::vector<std::uint8_t> sent;
+  std::uint8_t next = 0;
+  int frames = 0;
+  while (t.write_counters().split < 2 && frames < 100000) {
+    std::vector<std::uint8_t> frame(255);
+    for (auto& b : frame) b = next++;
+    sent.insert(sent.end(), frame.begin(), frame.end());
+    t.send(frame);
+    ++frames;
+  }
+  ASSERT_EQ(t.write_counters().split, 2U);  // the first that did not fit, one queued behind it
+  EXPECT_EQ(t.write_counters().whole, static_cast<std::uint64_t>(frames - 2));
+  std::vector<std::uint8_t> got;
+  ASSERT_TRUE(stream::testing::run_until(io, [&] {
+    std::uint8_t buf[4096];
+    for (ssize_t n; (n = ::read(reader, buf, sizeof buf)) > 0;) got.insert(got.end(), buf, buf + n);
+    return got.size() >= sent.size();
+  }));
+  EXPECT_EQ(got, sent);
+  EXPECT_EQ(t.write_counters().errors, 0U);
 }
 
 }  // namespace
