@@ -30,6 +30,7 @@ SerialTransport::SerialTransport(asio::io_context& io, int fd, const LineSetting
     : port_(io), retry_timer_(io) {
   try {
     setup_ = configure_serial(fd, line, name, log);
+    if (!setup_.is_pty) setup_.adapter = tune_adapter(fd, tty_name(fd), log);
   } catch (...) {
     ::close(fd);
     throw;
