@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
+#include <filesystem>
+#include <fstream>
 #include <termios.h>
 #include <unistd.h>
 
@@ -184,6 +186,80 @@ TEST_F(OneWritePerTelegram, AFullKernelBufferSplitsAFrameAndKeepsTheOrder) {
   }));
   EXPECT_EQ(got, sent);
   EXPECT_EQ(t.write_counters().errors, 0U);
+}
+
+
+// The adapter setup (stream/serial_adapter.h) on a pty, where the serial ioctls fail as they do
+// on any tty without them, with the sysfs tree of a USB adapter in a temporary directory.
+class AdapterSetupTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root = std::filesystem::temp_directory_path() /
+           ("rs4sim-sysfs-" + std::to_string(::getpid()) + "-" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::create_directories(root / "bus/usb-serial/devices/ttyUSB7");
+    std::filesystem::create_directories(root / "class/tty/ttyUSB7/device");
+    std::filesystem::create_directories(root / "bus/usb-serial/drivers/ftdi_sio");
+    std::filesystem::create_directory_symlink(root / "bus/usb-serial/drivers/ftdi_sio",
+                                              root / "class/tty/ttyUSB7/device/driver");
+    fd = ::open(pty.slave_path().c_str(), O_RDWR | O_NOCTTY);
+    ASSERT_GE(fd, 0);
+  }
+  void TearDown() override {
+    ::close(fd);
+    std::filesystem::remove_all(root);
+  }
+  std::filesystem::path latency() const {
+    return root / "bus/usb-serial/devices/ttyUSB7/latency_timer";
+  }
+  PseudoTerminal pty;
+  std::filesystem::path root;
+  int fd = -1;
+  std::vector<std::string> notes;
+  LogFn log = [this](const std::string& s) { notes.push_back(s); };
+};
+
+TEST_F(AdapterSetupTest, TheFtdiLatencyTimerIsSetTo1MsAndNothingIsNoted) {
+  std::ofstream(latency()) << "16\n";
+  const AdapterSetup a = tune_adapter(fd, "ttyUSB7", log, root.string());
+  EXPECT_EQ(a.driver, "ftdi_sio");
+  EXPECT_EQ(a.latency_timer_ms, 1);
+  EXPECT_FALSE(a.async_low_latency);  // TIOCGSERIAL fails on a pty
+  EXPECT_TRUE(a.low_latency());
+  EXPECT_FALSE(a.rs485);  // ENOTTY on a pty: not used, not mentioned
+  EXPECT_TRUE(notes.empty()) << notes.front();
+  std::ifstream in(latency());
+  int ms = 0;
+  in >> ms;
+  EXPECT_EQ(ms, 1);
+  EXPECT_EQ(read_adapter(fd, "ttyUSB7", root.string()).latency_timer_ms, 1);
+}
+
+TEST_F(AdapterSetupTest, ALatencyTimerThatCannotBeWrittenIsNotedWithItsValue) {
+  // A directory where the file should be: reading and writing it fail.
+  std::filesystem::create_directory(latency());
+  const AdapterSetup a = tune_adapter(fd, "ttyUSB7", log, root.string());
+  EXPECT_FALSE(a.low_latency());
+  ASSERT_EQ(notes.size(), 1U);
+  EXPECT_NE(notes[0].find("/dev/ttyUSB7 (ftdi_sio): low-latency mode not set (writing 1 to"),
+            std::string::npos)
+      << notes[0];
+  EXPECT_EQ(a.notes, notes);
+}
+
+TEST_F(AdapterSetupTest, WithoutSysfsEntriesTheFailedIoctlIsTheNote) {
+  const AdapterSetup a = tune_adapter(fd, "ttyS9", log, root.string());
+  EXPECT_EQ(a.driver, "");
+  EXPECT_EQ(a.latency_timer_ms, std::nullopt);
+  ASSERT_EQ(notes.size(), 1U);
+  EXPECT_NE(notes[0].find("/dev/ttyS9: low-latency mode not set (TIOCGSERIAL: "), std::string::npos)
+      << notes[0];
+}
+
+TEST(RateDeviation, RelativeToTheAskedRate) {
+  EXPECT_DOUBLE_EQ(rate_deviation(187500, 187500), 0.0);
+  EXPECT_DOUBLE_EQ(rate_deviation(500000, 500000 + 1500), 0.003);
+  EXPECT_DOUBLE_EQ(rate_deviation(187500, 230400), 42900.0 / 187500.0);
 }
 
 }  // namespace
