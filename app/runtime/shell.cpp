@@ -216,9 +216,6 @@ int run_on_link(RunSession& session, DeviceInstance& instance, const LinkOptions
     if (side_runner) side_runner->stop();
     user_signals.cancel();
   });
-  session.stop_after(l.duration);
-  std::cerr << "rs4sim: " << instance.describe() << " on " << link_name(l.link)
-            << "; Ctrl-C to stop" << std::endl;
   if (l.rt_priority) {
     // The loop thread, i.e. this one (the gRPC server's threads already run as they were).
     if (const std::string refused = enter_realtime(*l.rt_priority); !refused.empty()) {
@@ -228,6 +225,9 @@ int run_on_link(RunSession& session, DeviceInstance& instance, const LinkOptions
     std::cerr << "rs4sim: loop thread at SCHED_FIFO priority " << *l.rt_priority
               << ", memory locked" << std::endl;
   }
+  session.stop_after(l.duration);
+  std::cerr << "rs4sim: " << instance.describe() << " on " << link_name(l.link)
+            << "; Ctrl-C to stop" << std::endl;
   runner.start();
   if (side_runner) side_runner->start();
   session.run();
