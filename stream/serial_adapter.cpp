@@ -24,7 +24,8 @@ std::string tty_name(int fd) {
 
 std::string adapter_driver(const std::string& tty, const std::string& sysfs_root) {
   std::error_code ec;
-  const fs::path link = fs::read_symlink(fs::path(sysfs_root) / "class/tty" / tty / "device/driver", ec);
+  const fs::path link =
+      fs::read_symlink(fs::path(sysfs_root) / "class/tty" / tty / "device/driver", ec);
   return ec ? std::string() : link.filename().string();
 }
 

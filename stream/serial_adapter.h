@@ -21,12 +21,12 @@
 namespace rs4sim::stream {
 
 struct AdapterSetup {
-  std::string tty;                        // "ttyUSB0"
-  std::string driver;                     // "ftdi_sio", "cp210x", "ch341-uart"; empty: unknown
-  std::optional<int> latency_timer_ms;    // as read back after setting it; nullopt: no such file
-  bool async_low_latency = false;         // TIOCSSERIAL ASYNC_LOW_LATENCY took
-  bool rs485 = false;                     // RS-485 mode on (TIOCSRS485)
-  std::vector<std::string> notes;         // what could not be set (already passed to the log)
+  std::string tty;                      // "ttyUSB0"
+  std::string driver;                   // "ftdi_sio", "cp210x", "ch341-uart"; empty: unknown
+  std::optional<int> latency_timer_ms;  // as read back after setting it; nullopt: no such file
+  bool async_low_latency = false;       // TIOCSSERIAL ASYNC_LOW_LATENCY took
+  bool rs485 = false;                   // RS-485 mode on (TIOCSRS485)
+  std::vector<std::string> notes;       // what could not be set (already passed to the log)
   [[nodiscard]] bool low_latency() const {
     return async_low_latency || (latency_timer_ms && *latency_timer_ms <= 1);
   }

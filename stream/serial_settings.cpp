@@ -123,11 +123,11 @@ SerialSetup configure_serial(int fd, const LineSettings& line, const std::string
   if (actual != line.baud && !setup.is_pty && actual != 0 && std::abs(deviation) <= 0.02) {
     char percent[32];
     std::snprintf(percent, sizeof percent, "%+.2f %%", deviation * 100);
-    const std::string warning =
-        "warning: " + name + ": asked for " + std::to_string(line.baud) +
-        " bit/s, the adapter makes " + std::to_string(actual) + " bit/s (" + percent +
-        "; PROFIBUS allows ±0.3 %" + (std::abs(deviation) > 0.003 ? ": expect character errors" : "") +
-        "); an adapter with an exact divisor (FTDI, CH341) avoids this";
+    const std::string warning = "warning: " + name + ": asked for " + std::to_string(line.baud) +
+                                " bit/s, the adapter makes " + std::to_string(actual) + " bit/s (" +
+                                percent + "; PROFIBUS allows ±0.3 %" +
+                                (std::abs(deviation) > 0.003 ? ": expect character errors" : "") +
+                                "); an adapter with an exact divisor (FTDI, CH341) avoids this";
     setup.notes.push_back(warning);
     if (log) log(warning);
   } else if (actual != line.baud) {

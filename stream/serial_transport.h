@@ -40,10 +40,10 @@ class SerialTransport final : public Transport {
   // so send() hands each frame to the kernel in one write() at once; only when the kernel's
   // buffer cannot take it whole (a stalled line) is the rest written later, counted in `split`.
   struct WriteCounters {
-    std::uint64_t frames = 0;   // frames handed to send()
-    std::uint64_t whole = 0;    // written by one write() in send()
-    std::uint64_t split = 0;    // needed more than one write() (or queued behind one that did)
-    std::uint64_t errors = 0;   // write() failed (reported through the error handler)
+    std::uint64_t frames = 0;  // frames handed to send()
+    std::uint64_t whole = 0;   // written by one write() in send()
+    std::uint64_t split = 0;   // needed more than one write() (or queued behind one that did)
+    std::uint64_t errors = 0;  // write() failed (reported through the error handler)
   };
   [[nodiscard]] const WriteCounters& write_counters() const { return writes_; }
 

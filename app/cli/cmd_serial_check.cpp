@@ -20,8 +20,10 @@ Action setup(CLI::App& cmd) {
                  "the station at the other end to send FDL_Status to (default 4; a loopback "
                  "plug echoes the request instead)")
       ->check(CLI::Range(0, 126));
-  cmd.add_option("--master", o->master, "our own FDL address (default 1)")->check(CLI::Range(0, 126));
-  cmd.add_option("--count", o->count, "requests to time (default 50)")->check(CLI::Range(1, 100000));
+  cmd.add_option("--master", o->master, "our own FDL address (default 1)")
+      ->check(CLI::Range(0, 126));
+  cmd.add_option("--count", o->count, "requests to time (default 50)")
+      ->check(CLI::Range(1, 100000));
   cmd.add_option("--timeout", o->timeout_ms, "ms to wait for each reply (default 200)")
       ->check(CLI::Range(1, 10000));
   cmd.add_option("--sysfs", o->sysfs, "sysfs root (default /sys)");

@@ -59,14 +59,14 @@ void validate(const LinkOptions& l, bool byte_device) {
                      "simulated time");
   }
   if (l.tsl_us) {
-    if (byte_device) throw UsageError("--tsl is the PROFIBUS slot time; this device is not on PROFIBUS");
+    if (byte_device)
+      throw UsageError("--tsl is the PROFIBUS slot time; this device is not on PROFIBUS");
     // TSL is at most 16383 bit times [IEC 61158-4-3 bus parameters, timing]; at least 1 µs.
     const auto rate = *dp::parse_baud_rate(l.baud);
     const auto max_us = static_cast<std::int64_t>(16383.0 * 1e6 / dp::bits_per_second(rate));
     if (*l.tsl_us < 1 || *l.tsl_us > max_us) {
       throw UsageError("--tsl " + std::to_string(*l.tsl_us) + ": the slot time must be 1.." +
-                       std::to_string(max_us) + " µs at " + l.baud +
-                       " (at most 16383 bit times)");
+                       std::to_string(max_us) + " µs at " + l.baud + " (at most 16383 bit times)");
     }
   }
   if (l.rt_priority && (*l.rt_priority < 1 || *l.rt_priority > 99)) {

@@ -17,14 +17,16 @@ std::string realtime_error(const std::string& step, int priority, int err) {
   std::string text = "--rt-priority " + std::to_string(priority) + ": " + step +
                      " failed: " + std::strerror(err) + " (" + name + ")";
   if (step == "sched_setscheduler(SCHED_FIFO)" && err == EPERM) {
-    text += "; a real-time priority needs CAP_SYS_NICE (e.g. sudo setcap cap_sys_nice+ep "
-            "$(which rs4sim)) or a real-time limit of at least " +
-            std::to_string(priority) + " (ulimit -r " + std::to_string(priority) +
-            ", /etc/security/limits.conf rtprio); or run without --rt-priority";
+    text +=
+        "; a real-time priority needs CAP_SYS_NICE (e.g. sudo setcap cap_sys_nice+ep "
+        "$(which rs4sim)) or a real-time limit of at least " +
+        std::to_string(priority) + " (ulimit -r " + std::to_string(priority) +
+        ", /etc/security/limits.conf rtprio); or run without --rt-priority";
   } else if (step == "mlockall" && (err == EPERM || err == ENOMEM)) {
-    text += "; locking the memory needs CAP_IPC_LOCK or a locked-memory limit large enough for "
-            "the process (ulimit -l unlimited, /etc/security/limits.conf memlock); or run "
-            "without --rt-priority";
+    text +=
+        "; locking the memory needs CAP_IPC_LOCK or a locked-memory limit large enough for "
+        "the process (ulimit -l unlimited, /etc/security/limits.conf memlock); or run "
+        "without --rt-priority";
   }
   return text;
 }
@@ -63,10 +65,10 @@ void print_turnaround(std::ostream& out, std::uint8_t address, const dp::link::T
   using dp::link::TurnaroundStats;
   if (json) {
     out << R"({"event":"turnaround","address":)" << int(address) << R"(,"replies":)" << s.count()
-        << R"(,"late":)" << s.late() << R"(,"tsl_us":)" << (tsl_us ? std::to_string(*tsl_us) : "null")
-        << R"(,"p50_us":)" << us(s.quantile_ns(0.5)) << R"(,"p99_us":)" << us(s.quantile_ns(0.99))
-        << R"(,"max_us":)" << us(s.max_ns()) << R"(,"mean_us":)" << us(s.mean_ns())
-        << R"(,"histogram":[)";
+        << R"(,"late":)" << s.late() << R"(,"tsl_us":)"
+        << (tsl_us ? std::to_string(*tsl_us) : "null") << R"(,"p50_us":)" << us(s.quantile_ns(0.5))
+        << R"(,"p99_us":)" << us(s.quantile_ns(0.99)) << R"(,"max_us":)" << us(s.max_ns())
+        << R"(,"mean_us":)" << us(s.mean_ns()) << R"(,"histogram":[)";
     bool first = true;
     for (std::size_t i = 0; i < TurnaroundStats::kBuckets; ++i) {
       if (s.buckets()[i] == 0) continue;

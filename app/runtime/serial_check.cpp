@@ -75,7 +75,7 @@ void print_slot_time_table(std::ostream& out, const std::vector<SlotTimeRow>& ro
     const std::string bits = r.bits ? std::to_string(*r.bits) : "> 16383";
     std::snprintf(line, sizeof line, "  %-9s  %13s  %8s  %s\n", dp::to_string(r.rate).c_str(),
                   bits.c_str(), ms_text(r.ms).c_str(),
-                  !r.bits  ? "not usable on this line (TSL is at most 16383 bit times)"
+                  !r.bits   ? "not usable on this line (TSL is at most 16383 bit times)"
                   : r.floor ? "profirust's tested setting (above the measurement)"
                             : "measured: 2 x worst turnaround + 1 character");
     out << line;
@@ -108,11 +108,12 @@ int serial_check(const SerialCheckOptions& o, std::ostream& out, std::ostream& e
   if (setup.is_pty) {
     out << "  adapter: none, a pseudo-terminal (no line, no adapter latency)\n";
   } else {
-    const auto a = stream::tune_adapter(fd, tty, [&](const std::string& s) { notes.push_back(s); },
-                                        o.sysfs);
+    const auto a = stream::tune_adapter(
+        fd, tty, [&](const std::string& s) { notes.push_back(s); }, o.sysfs);
     out << "  driver: " << (a.driver.empty() ? "unknown (not in sysfs)" : a.driver) << "\n"
         << "  latency timer: "
-        << (a.latency_timer_ms ? std::to_string(*a.latency_timer_ms) + " ms" : "none (no USB serial)")
+        << (a.latency_timer_ms ? std::to_string(*a.latency_timer_ms) + " ms"
+                               : "none (no USB serial)")
         << ", ASYNC_LOW_LATENCY " << (a.async_low_latency ? "on" : "off") << ", low latency "
         << (a.low_latency() ? "yes" : "NO") << "\n"
         << "  RS-485 mode (TIOCSRS485): " << (a.rs485 ? "on" : "not offered by the driver") << "\n";
@@ -123,17 +124,18 @@ int serial_check(const SerialCheckOptions& o, std::ostream& out, std::ostream& e
 
   // The FDL_Status request: SD1 DA SA FC=0x49 FCS ED [IEC 61158-4-3 frame formats].
   std::vector<std::uint8_t> request;
-  dp::fdl::encode(dp::fdl::make_data_telegram(
-                      static_cast<std::uint8_t>(o.address), static_cast<std::uint8_t>(o.master),
-                      dp::fdl::FrameControl::request(dp::fdl::RequestFunction::kFdlStatus, false,
-                                                     false),
-                      std::nullopt, std::nullopt, {}),
-                  request);
+  dp::fdl::encode(
+      dp::fdl::make_data_telegram(
+          static_cast<std::uint8_t>(o.address), static_cast<std::uint8_t>(o.master),
+          dp::fdl::FrameControl::request(dp::fdl::RequestFunction::kFdlStatus, false, false),
+          std::nullopt, std::nullopt, {}),
+      request);
   const double bps = dp::bits_per_second(*rate);
   // A pseudo-terminal has no wire: its bytes arrive at memory speed.
   const auto wire = [&](std::size_t chars) {
     if (setup.is_pty) return std::chrono::nanoseconds(0);
-    return std::chrono::nanoseconds(static_cast<std::int64_t>(static_cast<double>(chars) * 11 * 1e9 / bps));
+    return std::chrono::nanoseconds(
+        static_cast<std::int64_t>(static_cast<double>(chars) * 11 * 1e9 / bps));
   };
   dp::link::TurnaroundStats stats;
   int replies = 0, echoes = 0, silent = 0;
@@ -151,7 +153,8 @@ int serial_check(const SerialCheckOptions& o, std::ostream& out, std::ostream& e
     std::size_t reply_chars = 0;
     while (!reply_at && Clock::now() < deadline) {
       pollfd p{fd, POLLIN, 0};
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+      const auto left =
+          std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
       if (::poll(&p, 1, static_cast<int>(std::max<std::int64_t>(left.count(), 1))) <= 0) continue;
       std::uint8_t buf[512];
       const ssize_t n = ::read(fd, buf, sizeof buf);

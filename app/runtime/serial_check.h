@@ -26,8 +26,8 @@ namespace rs4sim::app {
 struct SlotTimeRow {
   dp::BaudRate rate;
   std::optional<std::uint32_t> bits;  // nullopt: needs more than 16383 bit times (TSL's limit)
-  double ms = 0;                       // the slot time the row asks for
-  bool floor = false;                  // profirust's tested setting decided it, not the measurement
+  double ms = 0;                      // the slot time the row asks for
+  bool floor = false;                 // profirust's tested setting decided it, not the measurement
 };
 
 // The slot time to enter for each rate: twice the measured worst turnaround plus the reply's
@@ -40,10 +40,10 @@ void print_slot_time_table(std::ostream& out, const std::vector<SlotTimeRow>& ro
 struct SerialCheckOptions {
   std::string port;
   std::string baud = "187.5k";
-  int address = 4;        // the station asked (rs4sim run's default RS4 address)
-  int master = 1;         // our source address
-  int count = 50;         // requests
-  int timeout_ms = 200;   // per request
+  int address = 4;       // the station asked (rs4sim run's default RS4 address)
+  int master = 1;        // our source address
+  int count = 50;        // requests
+  int timeout_ms = 200;  // per request
   std::string sysfs = "/sys";
 };
 

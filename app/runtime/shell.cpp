@@ -1,9 +1,9 @@
 #include "app/runtime/shell.h"
 
-#include "app/runtime/usage_error.h"
 #include "app/devices/device_options.h"
 #include "app/runtime/real_line.h"
 #include "app/runtime/run_session.h"
+#include "app/runtime/usage_error.h"
 #include "dp/link/profibus_line.h"
 #include "dp/link/station_runner.h"
 #include "rpc/executor.h"
@@ -126,7 +126,8 @@ class LinkRunner {
       for (const dp::Station* s : instance_.stations()) {
         const auto& t = *stations_->turnaround(s->address());
         // A station that answered nothing (our master's own station) has nothing to show.
-        if (t.count() + t.late() > 0) print_turnaround(out, s->address(), t, link_.tsl_us, link_.json);
+        if (t.count() + t.late() > 0)
+          print_turnaround(out, s->address(), t, link_.tsl_us, link_.json);
       }
     } else {
       instance_.print_byte_status(out, byte_runner_->counters());

@@ -1,6 +1,7 @@
 // The real-line pieces of the runtime (docs/serial.md): the slot-time table of `rs4sim
 // serial-check`, the --rt-priority refusal's text, the turnaround summary line.
 #include "app/runtime/real_line.h"
+
 #include "app/runtime/serial_check.h"
 
 #include <gtest/gtest.h>
@@ -24,7 +25,7 @@ TEST(SlotTimeTable, AFastLineGetsProfirustsTestedSettingsAsTheFloor) {
   const auto rows = slot_time_table(1ms);  // 2 ms + one character, below every floor
   ASSERT_EQ(rows.size(), 10U);
   EXPECT_TRUE(row(rows, dp::BaudRate::k19k2).floor);
-  EXPECT_EQ(row(rows, dp::BaudRate::k19k2).bits, 576U);  // 30 ms x 19 200 bit/s
+  EXPECT_EQ(row(rows, dp::BaudRate::k19k2).bits, 576U);    // 30 ms x 19 200 bit/s
   EXPECT_EQ(row(rows, dp::BaudRate::k187k5).bits, 1500U);  // 8 ms x 187 500 bit/s
   EXPECT_EQ(row(rows, dp::BaudRate::k500k).bits, 4000U);   // 8 ms x 500 000 bit/s
   // 1.5M has no tested setting: 2 ms + 11 bit times = 3000 + 11 bit times.

@@ -8,10 +8,11 @@
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
-#include <filesystem>
-#include <fstream>
 #include <termios.h>
 #include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 
 namespace rs4sim::stream {
 namespace {
@@ -122,7 +123,6 @@ TEST(UdpEndpoint, PortInUseIsABindError) {
   }
 }
 
-
 // PROFIBUS allows no idle time between a telegram's characters [IEC 61158-4-3 UART character]:
 // each frame goes to the kernel in one write(), so the reader on the other side of the pty
 // finds it whole in one read, and the transport counts it as written whole.
@@ -187,7 +187,6 @@ TEST_F(OneWritePerTelegram, AFullKernelBufferSplitsAFrameAndKeepsTheOrder) {
   EXPECT_EQ(got, sent);
   EXPECT_EQ(t.write_counters().errors, 0U);
 }
-
 
 // The adapter setup (stream/serial_adapter.h) on a pty, where the serial ioctls fail as they do
 // on any tty without them, with the sysfs tree of a USB adapter in a temporary directory.

@@ -17,8 +17,9 @@ class ReplyStation final : public Station {
  public:
   ReplyStation() {
     const std::vector<std::uint8_t> data(8, 0x5A);
-    reply_ = fdl::make_data_telegram(2, 5, fdl::FrameControl::response(fdl::ResponseStatus::kDataLow),
-                                     std::nullopt, std::nullopt, data);
+    reply_ =
+        fdl::make_data_telegram(2, 5, fdl::FrameControl::response(fdl::ResponseStatus::kDataLow),
+                                std::nullopt, std::nullopt, data);
   }
   [[nodiscard]] std::uint8_t address() const override { return 5; }
   void on_telegram(const fdl::Telegram& t, TimePoint) override { pending_ = t.da == 5; }
@@ -96,7 +97,8 @@ void BM_TurnaroundCostRatio(benchmark::State& state) {
   state.counters["base_ns"] = static_cast<double>(t_base.count()) / n;
   state.counters["timed_ns"] = static_cast<double>(t_timed.count()) / n;
   state.counters["extra_ns"] = static_cast<double>((t_timed - t_base).count()) / n;
-  state.counters["ratio"] = static_cast<double>(t_timed.count()) / static_cast<double>(t_base.count());
+  state.counters["ratio"] =
+      static_cast<double>(t_timed.count()) / static_cast<double>(t_base.count());
   if (timed.runner->turnaround(5)->count() == 0) state.SkipWithError("no reply was timed");
 }
 BENCHMARK(BM_TurnaroundCostRatio);

@@ -2,8 +2,9 @@
 // clock: a counting transport stands for the line, a station that takes a set time to answer
 // stands for the core's processing, so every bound (the slot time, the buckets) is pinned on
 // both sides without a wall clock.
-#include "dp/link/station_runner.h"
 #include "dp/link/turnaround.h"
+
+#include "dp/link/station_runner.h"
 #include "tests/dp/link/fake_station.h"
 
 #include <gtest/gtest.h>
@@ -128,7 +129,8 @@ TEST_F(RunnerTiming, EachReplyIsOneSendTimedFromTheRequestReadToTheWritesReturn)
   request();
   ASSERT_EQ(transport.sends.size(), 1U);  // the whole telegram in one send
   // SD2 with one DU byte, DA 2, SA 5, FC 0x08 (DL) [IEC 61158-4-3 frame formats].
-  EXPECT_EQ(transport.sends[0], (Bytes{0x68, 0x04, 0x04, 0x68, 0x02, 0x05, 0x08, 0xA5, 0xB4, 0x16}));
+  EXPECT_EQ(transport.sends[0],
+            (Bytes{0x68, 0x04, 0x04, 0x68, 0x02, 0x05, 0x08, 0xA5, 0xB4, 0x16}));
   slave.processing = 2ms;
   transport.write_time = 0us;
   request();
