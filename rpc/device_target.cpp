@@ -1,5 +1,7 @@
 #include "rpc/device_target.h"
 
+#include "rpc/rs4_state.h"
+
 #include <boost/asio/steady_timer.hpp>
 
 #include <memory>
@@ -70,6 +72,13 @@ void DeviceTarget::after(dp::Duration delay, std::function<void()> f) {
   timer->async_wait([timer, f = std::move(f)](const boost::system::error_code& ec) {
     if (!ec) f();
   });
+}
+
+bool DeviceTarget::link_timing(std::uint8_t address, v1::LinkTiming& out) {
+  const dp::link::TurnaroundStats* stats = turnaround_ ? turnaround_(address) : nullptr;
+  if (stats == nullptr) return false;
+  fill_link_timing(*stats, slot_time_us_, out);
+  return true;
 }
 
 }  // namespace rs4sim::rpc

@@ -5,6 +5,7 @@
 // faults answer FAILED_PRECONDITION. Events: a timer polls the device every kPollPeriod on the loop
 // (each RS4 watched); telegrams come through each RS4's own TappedStation (rpc/tapped_station.h).
 
+#include "dp/link/turnaround.h"
 #include "rpc/event_hub.h"
 #include "rpc/rs4_target.h"
 
@@ -12,6 +13,7 @@
 #include <boost/asio/steady_timer.hpp>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,7 +54,18 @@ class DeviceTarget final : public Rs4Target {
     }
   }
 
+  // The replies' turnaround of the link's stations (app: the StationRunner's), read on the
+  // loop; `slot_time_us` = --tsl.
+  using TurnaroundSource = std::function<const dp::link::TurnaroundStats*(std::uint8_t)>;
+  void set_link_timing(TurnaroundSource source, std::optional<std::int64_t> slot_time_us) {
+    turnaround_ = std::move(source);
+    slot_time_us_ = slot_time_us;
+  }
+  bool link_timing(std::uint8_t address, v1::LinkTiming& out) override;
+
  private:
+  TurnaroundSource turnaround_;
+  std::optional<std::int64_t> slot_time_us_;
   std::vector<Station> stations_;
   const dp::Clock& clock_;
   boost::asio::io_context& io_;

@@ -368,6 +368,10 @@ grpc::Status ObservationService::GetState(grpc::ServerContext*, const v1::Statio
     if (!c_.target.plc_view(static_cast<std::uint8_t>(in->address()), *out->mutable_plc())) {
       out->clear_plc();
     }
+    if (!c_.target.link_timing(static_cast<std::uint8_t>(in->address()),
+                               *out->mutable_link_timing())) {
+      out->clear_link_timing();
+    }
     return grpc::Status::OK;
   });
 }

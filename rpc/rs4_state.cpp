@@ -100,4 +100,25 @@ void fill_contour(const rs4::device::Rs4Device& device, v1::Contour& out) {
   for (const auto mm : scan.contour) out.add_mm(mm);
 }
 
+void fill_link_timing(const dp::link::TurnaroundStats& stats,
+                      std::optional<std::int64_t> slot_time_us, v1::LinkTiming& out) {
+  using dp::link::TurnaroundStats;
+  const auto u = [](std::int64_t ns) { return static_cast<std::uint64_t>(ns < 0 ? 0 : ns); };
+  out.set_present(true);
+  out.set_replies(stats.count());
+  out.set_late(stats.late());
+  out.set_slot_time_us(slot_time_us ? u(*slot_time_us) : 0U);
+  out.set_p50_ns(u(stats.quantile_ns(0.5)));
+  out.set_p99_ns(u(stats.quantile_ns(0.99)));
+  out.set_max_ns(u(stats.max_ns()));
+  out.set_mean_ns(u(stats.mean_ns()));
+  for (std::size_t i = 0; i < TurnaroundStats::kBuckets; ++i) {
+    if (stats.buckets()[i] == 0) continue;
+    auto* b = out.add_histogram();
+    b->set_upper_ns(i + 1 == TurnaroundStats::kBuckets ? 0U
+                                                       : u(TurnaroundStats::bucket_upper_ns(i)));
+    b->set_count(stats.buckets()[i]);
+  }
+}
+
 }  // namespace rs4sim::rpc

@@ -42,6 +42,12 @@ class Rs4Target {
   virtual void set_pc_adapter(rs4::device::Rs4Device& device, bool attached, dp::TimePoint now) {
     attached ? device.adapter().attach_pc_adapter(now) : device.adapter().detach_pc_adapter(now);
   }
+  // The station's reply timing on a real-time link into `out`; false = none (no such link).
+  virtual bool link_timing(std::uint8_t address, v1::LinkTiming& out) {
+    (void)address;
+    (void)out;
+    return false;
+  }
   // The PLC side of the station (the simulated bus's F-host) into `out`; false = none.
   virtual bool plc_view(std::uint8_t address, v1::PlcView& out) {
     (void)address;

@@ -6,6 +6,8 @@
 
 #include <array>
 #include <cerrno>
+#include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <optional>
 #include <utility>
@@ -116,7 +118,19 @@ SerialSetup configure_serial(int fd, const LineSettings& line, const std::string
     refuse(setup, LinkError::kAdapterRefusedFormat, name + ": " + format + " not kept", log);
   }
   const std::uint32_t actual = detail::read_baud(fd);
-  if (actual != line.baud) {
+  setup.actual_baud = actual;
+  const double deviation = rate_deviation(line.baud, actual);
+  if (actual != line.baud && !setup.is_pty && actual != 0 && std::abs(deviation) <= 0.02) {
+    char percent[32];
+    std::snprintf(percent, sizeof percent, "%+.2f %%", deviation * 100);
+    const std::string warning = "warning: " + name + ": asked for " + std::to_string(line.baud) +
+                                " bit/s, the adapter makes " + std::to_string(actual) + " bit/s (" +
+                                percent + "; PROFIBUS allows ±0.3 %" +
+                                (std::abs(deviation) > 0.003 ? ": expect character errors" : "") +
+                                "); an adapter with an exact divisor (FTDI, CH341) avoids this";
+    setup.notes.push_back(warning);
+    if (log) log(warning);
+  } else if (actual != line.baud) {
     refuse(setup, LinkError::kAdapterRefusedBaudRate,
            name + ": asked for " + std::to_string(line.baud) + " bit/s, driver reports " +
                std::to_string(actual) + " bit/s",

@@ -9,12 +9,18 @@
 // parity error is dropped (INPCK | IGNPAR). Every setting is read back: a real adapter that
 // did not take the rate or the format is an error (LinkException), while a pseudo-terminal,
 // which has no line and may drop parity or the exact rate, only produces a note and carries on.
+// A real adapter whose driver reports a rate within 2 % of the one asked for (it cannot divide
+// its clock to the PROFIBUS rate exactly; CP210x has a fixed table) gets a warning in the notes
+// and carries on: PROFIBUS asks for ±0.3 % [IEC 61158-2 baud rate tolerance] and a master may
+// see character errors; further off, no UART at the other end can read the characters: an error.
 
 #include "stream/line_settings.h"
 #include "stream/link_error.h"
+#include "stream/serial_adapter.h"
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +31,9 @@ using LogFn = std::function<void(const std::string&)>;
 struct SerialSetup {
   bool is_pty = false;
   std::vector<std::string> notes;  // what a pty did not take (already passed to the log)
+  std::uint32_t actual_baud = 0;   // the rate the driver reports it set (termios2 readback)
+  // A real adapter: low latency, RS-485 mode, the driver (SerialTransport sets it up).
+  std::optional<AdapterSetup> adapter;
 };
 
 // True for a pseudo-terminal (either side).

@@ -30,11 +30,15 @@ SerialTransport::SerialTransport(asio::io_context& io, int fd, const LineSetting
     : port_(io), retry_timer_(io) {
   try {
     setup_ = configure_serial(fd, line, name, log);
+    if (!setup_.is_pty) setup_.adapter = tune_adapter(fd, tty_name(fd), log);
   } catch (...) {
     ::close(fd);
     throw;
   }
   port_.assign(fd);
+  // send() writes directly; a full buffer must give EAGAIN, not block the loop.
+  const int flags = ::fcntl(fd, F_GETFL);
+  if (flags >= 0) (void)::fcntl(fd, F_SETFL, flags | O_NONBLOCK);
 }
 
 SerialTransport::~SerialTransport() { close(); }
@@ -66,7 +70,24 @@ void SerialTransport::read_next() {
 
 void SerialTransport::send(std::span<const std::uint8_t> frame) {
   if (!port_.is_open()) return;
-  tx_.emplace_back(frame.begin(), frame.end());
+  ++writes_.frames;
+  std::size_t written = 0;
+  if (!writing_) {
+    // The whole telegram in one write(): the UART then sends its characters back to back.
+    const ssize_t n = ::write(port_.native_handle(), frame.data(), frame.size());
+    if (n == static_cast<ssize_t>(frame.size())) {
+      ++writes_.whole;
+      return;
+    }
+    if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR) {
+      ++writes_.errors;
+      if (on_error_) on_error_(std::error_code(errno, std::generic_category()));
+      return;
+    }
+    written = n > 0 ? static_cast<std::size_t>(n) : 0;
+  }
+  ++writes_.split;  // the kernel's buffer is full: the rest follows when it drains
+  tx_.emplace_back(frame.begin() + static_cast<std::ptrdiff_t>(written), frame.end());
   if (!writing_) write_next();
 }
 
@@ -79,7 +100,10 @@ void SerialTransport::write_next() {
   asio::async_write(port_, asio::buffer(tx_.front()),
                     [this](const boost::system::error_code& ec, std::size_t) {
                       if (ec == asio::error::operation_aborted || tx_.empty()) return;
-                      if (ec && on_error_) on_error_(ec);
+                      if (ec) {
+                        ++writes_.errors;
+                        if (on_error_) on_error_(ec);
+                      }
                       tx_.pop_front();
                       write_next();
                     });

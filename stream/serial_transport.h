@@ -35,6 +35,18 @@ class SerialTransport final : public Transport {
 
   [[nodiscard]] const SerialSetup& setup() const { return setup_; }
 
+  // How the frames went out. PROFIBUS allows no idle time between the characters of a
+  // telegram ([IEC 61158-4-3 UART character]: a telegram's characters follow without a gap),
+  // so send() hands each frame to the kernel in one write() at once; only when the kernel's
+  // buffer cannot take it whole (a stalled line) is the rest written later, counted in `split`.
+  struct WriteCounters {
+    std::uint64_t frames = 0;  // frames handed to send()
+    std::uint64_t whole = 0;   // written by one write() in send()
+    std::uint64_t split = 0;   // needed more than one write() (or queued behind one that did)
+    std::uint64_t errors = 0;  // write() failed (reported through the error handler)
+  };
+  [[nodiscard]] const WriteCounters& write_counters() const { return writes_; }
+
  private:
   void read_next();
   void write_next();
@@ -45,8 +57,9 @@ class SerialTransport final : public Transport {
   BytesFn on_bytes_;
   ErrorFn on_error_;
   std::array<std::uint8_t, 512> rx_{};
-  std::deque<std::vector<std::uint8_t>> tx_;
+  std::deque<std::vector<std::uint8_t>> tx_;  // only after a short write: what is still to go
   bool writing_ = false;
+  WriteCounters writes_;
 };
 
 }  // namespace rs4sim::stream

@@ -90,6 +90,7 @@ Action setup(CLI::App& cmd) {
                  "the manual's technical data)");
   add_byte_device_options(cmd, *o);
   add_link_options(cmd, l, "the master");
+  add_real_line_options(cmd, l);
   add_grpc_options(cmd, l.grpc,
                    "with --link memory the simulated clock moves only through the API");
   return [o]() -> int {

@@ -30,4 +30,15 @@ inline void add_link_options(CLI::App& cmd, LinkOptions& l, const std::string& p
   add_capture_options(cmd, l.capture);
 }
 
+// The real-line options of `rs4sim run` (docs/serial.md): --tsl, --rt-priority, --json.
+inline void add_real_line_options(CLI::App& cmd, LinkOptions& l) {
+  cmd.add_option("--tsl", l.tsl_us,
+                 "the master's slot time in µs: a reply that would leave later is not sent "
+                 "(it would collide with the retry) and is counted late");
+  cmd.add_option("--rt-priority", l.rt_priority,
+                 "run the loop thread under SCHED_FIFO at this priority (1..99) with locked "
+                 "memory (needs CAP_SYS_NICE or ulimit -r)");
+  cmd.add_flag("--json", l.json, "the end summary's turnaround as JSON lines");
+}
+
 }  // namespace rs4sim::app

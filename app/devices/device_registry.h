@@ -18,6 +18,7 @@
 
 #include "app/demos/demos.h"
 #include "dp/link/counters.h"
+#include "dp/link/turnaround.h"
 #include "dp/station.h"
 #include "dp/time/clock.h"
 #include "stream/byte_counters.h"
@@ -92,6 +93,10 @@ struct ServiceContext {
   rpc::Executor& executor;
   boost::asio::io_context& io;
   const dp::Clock& clock;
+  // On a real-time PROFIBUS link: the replies' turnaround of the station at an address
+  // (nullptr: none), read on the loop, and --tsl; empty/nullopt elsewhere.
+  std::function<const dp::link::TurnaroundStats*(std::uint8_t)> turnaround = {};
+  std::optional<std::int64_t> slot_time_us = std::nullopt;
 };
 using ServiceList = std::vector<std::shared_ptr<grpc::Service>>;
 

@@ -215,6 +215,7 @@ class Rs4Instance final : public DeviceInstance {
     std::vector<rpc::DeviceTarget::Station> stations;
     for (const auto& r : rs4s_) stations.push_back({r->address, &r->device});
     target_ = std::make_unique<rpc::DeviceTarget>(std::move(stations), c.clock, c.io);
+    target_->set_link_timing(c.turnaround, c.slot_time_us);
     target_->route_pc_adapter([this](Rs4Device& device, bool attached, dp::TimePoint now) {
       attach(device, attached, now);
     });

@@ -53,6 +53,26 @@ void validate(const LinkOptions& l, bool byte_device) {
   if (l.link == LinkKind::kUdp && (l.listen.empty() || l.peer.empty())) {
     throw UsageError("--link udp needs --listen HOST:PORT and --peer HOST:PORT");
   }
+  if ((l.tsl_us || l.rt_priority) && !is_realtime(l.link)) {
+    throw UsageError(std::string(l.tsl_us ? "--tsl" : "--rt-priority") +
+                     " is for a real-time link (pty, serial, udp); the in-memory bus runs on "
+                     "simulated time");
+  }
+  if (l.tsl_us) {
+    if (byte_device)
+      throw UsageError("--tsl is the PROFIBUS slot time; this device is not on PROFIBUS");
+    // TSL is at most 16383 bit times [IEC 61158-4-3 bus parameters, timing]; at least 1 µs.
+    const auto rate = *dp::parse_baud_rate(l.baud);
+    const auto max_us = static_cast<std::int64_t>(16383.0 * 1e6 / dp::bits_per_second(rate));
+    if (*l.tsl_us < 1 || *l.tsl_us > max_us) {
+      throw UsageError("--tsl " + std::to_string(*l.tsl_us) + ": the slot time must be 1.." +
+                       std::to_string(max_us) + " µs at " + l.baud + " (at most 16383 bit times)");
+    }
+  }
+  if (l.rt_priority && (*l.rt_priority < 1 || *l.rt_priority > 99)) {
+    throw UsageError("--rt-priority " + std::to_string(*l.rt_priority) +
+                     ": SCHED_FIFO priorities are 1..99");
+  }
   if (!l.grpc.empty()) grpc_server_options(l.grpc);  // unreadable files, missing TLS/token
 }
 

@@ -6,6 +6,7 @@
 #include "app/runtime/capture_option.h"
 #include "app/runtime/grpc_cli.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -42,6 +43,12 @@ struct LinkOptions {
   // --capture FILE / --capture-linktype: every PROFIBUS telegram of the run into a pcap file
   // (docs/capture.md); not for byte devices.
   CaptureOptions capture;
+  // A real line (docs/serial.md; `rs4sim run` only): the master's slot time in µs (a reply
+  // later than that after the request is not sent, counted as late), the loop thread's
+  // SCHED_FIFO priority 1..99, and the end summary's turnaround as JSON lines.
+  std::optional<std::int64_t> tsl_us;
+  std::optional<int> rt_priority;
+  bool json = false;
 };
 
 // Throws UsageError with the reason for a bad combination. `byte_device`: --baud is the

@@ -1,8 +1,9 @@
 #include "app/runtime/shell.h"
 
-#include "app/runtime/usage_error.h"
 #include "app/devices/device_options.h"
+#include "app/runtime/real_line.h"
 #include "app/runtime/run_session.h"
+#include "app/runtime/usage_error.h"
 #include "dp/link/profibus_line.h"
 #include "dp/link/station_runner.h"
 #include "rpc/executor.h"
@@ -96,10 +97,12 @@ std::unique_ptr<stream::Transport> make_transport(const LinkOptions& l,
 class LinkRunner {
  public:
   LinkRunner(asio::io_context& io, const dp::Clock& clock, stream::Transport& transport,
-             DeviceInstance& instance)
-      : instance_(instance), bytes_(instance.byte_devices()) {
+             DeviceInstance& instance, const LinkOptions& l)
+      : instance_(instance), bytes_(instance.byte_devices()), link_(l) {
     if (bytes_.empty()) {
-      stations_.emplace(io, clock, transport);
+      link::RunnerOptions options;
+      if (l.tsl_us) options.slot_time = std::chrono::microseconds(*l.tsl_us);
+      stations_.emplace(io, clock, transport, options);
       for (dp::Station* s : instance.stations()) stations_->add(*s);
     } else {
       byte_runner_.emplace(io, clock, transport);
@@ -115,9 +118,19 @@ class LinkRunner {
                   stream::FrameDirection dir) { capture->on_frame(frame, at, dir); });
   }
   void stop() { stations_ ? stations_->stop() : byte_runner_->stop(); }
+  // The turnaround of a station (nullptr: a byte device's runner, or no such station).
+  [[nodiscard]] const link::TurnaroundStats* turnaround(std::uint8_t address) const {
+    return stations_ ? stations_->turnaround(address) : nullptr;
+  }
   void print_status(std::ostream& out) const {
     if (stations_) {
       instance_.print_status(out, stations_->counters());
+      for (const dp::Station* s : instance_.stations()) {
+        const auto& t = *stations_->turnaround(s->address());
+        // A station that answered nothing (our master's own station) has nothing to show.
+        if (t.count() + t.late() > 0)
+          print_turnaround(out, s->address(), t, link_.tsl_us, link_.json);
+      }
     } else {
       instance_.print_byte_status(out, byte_runner_->counters());
     }
@@ -126,6 +139,7 @@ class LinkRunner {
  private:
   DeviceInstance& instance_;
   std::vector<stream::ByteDevice*> bytes_;
+  const LinkOptions& link_;
   std::optional<link::StationRunner> stations_;
   std::optional<stream::ByteRunner> byte_runner_;
 };
@@ -176,7 +190,7 @@ int run_on_link(RunSession& session, DeviceInstance& instance, const LinkOptions
     return 1;
   }
   instance.start(clock.now());
-  LinkRunner runner(io, clock, *transport, instance);
+  LinkRunner runner(io, clock, *transport, instance, l);
   runner.tap(capture.get());
   std::optional<stream::ByteRunner> side_runner;
   if (side) {
@@ -194,7 +208,10 @@ int run_on_link(RunSession& session, DeviceInstance& instance, const LinkOptions
   };
   await_user_signal();
   if (!l.grpc.empty()) {
-    session.serve_grpc(l.grpc, instance.services(session.service_context(clock)));
+    ServiceContext context = session.service_context(clock);
+    context.turnaround = [&runner](std::uint8_t address) { return runner.turnaround(address); };
+    context.slot_time_us = l.tsl_us;
+    session.serve_grpc(l.grpc, instance.services(context));
   }
   session.on_stop([&] {
     instance.stop_services();
@@ -202,6 +219,15 @@ int run_on_link(RunSession& session, DeviceInstance& instance, const LinkOptions
     if (side_runner) side_runner->stop();
     user_signals.cancel();
   });
+  if (l.rt_priority) {
+    // The loop thread, i.e. this one (the gRPC server's threads already run as they were).
+    if (const std::string refused = enter_realtime(*l.rt_priority); !refused.empty()) {
+      std::cerr << "rs4sim: " << refused << std::endl;
+      return 1;
+    }
+    std::cerr << "rs4sim: loop thread at SCHED_FIFO priority " << *l.rt_priority
+              << ", memory locked" << std::endl;
+  }
   session.stop_after(l.duration);
   std::cerr << "rs4sim: " << instance.describe() << " on " << link_name(l.link)
             << "; Ctrl-C to stop" << std::endl;

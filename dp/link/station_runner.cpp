@@ -21,6 +21,7 @@ StationRunner::StationRunner(boost::asio::io_context& io, const Clock& clock, Tr
 
 void StationRunner::add(Station& station) {
   stations_.push_back(&station);
+  turnaround_.emplace_back();
   station.set_wake_handler(wake_.handler());  // a no-op once the runner is gone
 }
 
@@ -46,18 +47,28 @@ void StationRunner::stop() {
 void StationRunner::on_bytes(std::span<const std::uint8_t> bytes) {
   if (!running_) return;
   now_ = clock_.now();
+  received_ = false;
   decoder_.feed(bytes, *this);
   if (transport_.datagram()) {
     decoder_.idle(*this);  // one datagram = one telegram: a leftover is a truncated frame
   } else if (decoder_.pending_bytes() > 0) {
     arm_idle_timer();
   }
-  drain_all();
+  const TimePoint request_end = now_;
+  drain_all(received_ ? &request_end : nullptr);
   arm_timer();
+}
+
+const TurnaroundStats* StationRunner::turnaround(std::uint8_t address) const {
+  for (std::size_t i = 0; i < stations_.size(); ++i) {
+    if (stations_[i]->address() == address) return &turnaround_[i];
+  }
+  return nullptr;
 }
 
 void StationRunner::on_telegram(const fdl::Telegram& t) {
   ++counters_.received;
+  received_ = true;
   if (tap_) {
     tap_buf_.clear();
     fdl::encode(t, tap_buf_);
@@ -76,16 +87,43 @@ void StationRunner::on_transport_error(std::error_code e) {
   ++counters_.send_errors;
 }
 
-void StationRunner::drain_all() {
-  for (Station* s : stations_) {
-    while (const fdl::Telegram* t = s->next_transmit(tx_scratch_)) {
+namespace {
+// A reply (short acknowledgement, or a frame whose FC has the request bit clear), not a
+// request or a token.
+bool is_reply(const fdl::Telegram& t) {
+  if (t.type == fdl::FrameType::kShortAck) return true;
+  return t.type != fdl::FrameType::kToken && !t.fc.is_request();
+}
+}  // namespace
+
+void StationRunner::drain_all(const TimePoint* request_end) {
+  for (std::size_t i = 0; i < stations_.size(); ++i) {
+    while (const fdl::Telegram* t = stations_[i]->next_transmit(tx_scratch_)) {
       ++counters_.sent;
       encode_buf_.clear();
       fdl::encode(*t, encode_buf_);
+      if (request_end != nullptr && is_reply(*t)) {
+        send_reply(i, *request_end);
+        continue;
+      }
       if (tap_) tap_(encode_buf_, now_, FrameDirection::kSent);
       transport_.send(encode_buf_);
     }
   }
+}
+
+void StationRunner::send_reply(std::size_t station, const TimePoint& request_end) {
+  TurnaroundStats& stats = turnaround_[station];
+  if (options_.slot_time) {
+    const TimePoint leaving = clock_.now();
+    if (leaving - request_end > *options_.slot_time) {
+      stats.record_late();  // the master is already sending its retry: keep off the line
+      return;
+    }
+  }
+  if (tap_) tap_(encode_buf_, now_, FrameDirection::kSent);
+  transport_.send(encode_buf_);
+  if (options_.turnaround) stats.record(clock_.now() - request_end);
 }
 
 void StationRunner::arm_timer() {

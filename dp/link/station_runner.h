@@ -12,9 +12,19 @@
 // chunks, so the runner treats a pause of `idle_gap` (default: the larger of TSYN and 30 ms) inside
 // a partial frame as that idle and drops the partial frame (counted malformed, fdl kTruncated). On
 // UDP each datagram must be exactly one telegram; anything left over is malformed.
+//
+// Turnaround (dp/link/turnaround.h): a reply a station hands over while the runner handles
+// received bytes is timed from that read (the one that completed the request) to the return
+// of Transport::send() (one write() per telegram on a serial line), per station. With a slot
+// time (`RunnerOptions::slot_time`, `rs4sim run --tsl`) a reply that would only be written
+// later than TSL after the request is not sent: the master has given up on it and is sending
+// its retry, so it would collide on the line ([IEC 61158-4-3 bus parameters, timing]: TSL).
+// It is counted as late; the station's FCB state is left as if it had been sent, so the
+// retry gets the stored reply, as from a real slave whose reply was lost.
 
 #include "dp/fdl/decoder.h"
 #include "dp/link/counters.h"
+#include "dp/link/turnaround.h"
 #include "dp/station.h"
 #include "stream/coalesced_wake.h"
 #include "stream/deadline_timer.h"
@@ -25,6 +35,7 @@
 #include <boost/asio/steady_timer.hpp>
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace rs4sim::dp::link {
@@ -37,6 +48,10 @@ using stream::Transport;
 
 struct RunnerOptions {
   Duration idle_gap = std::chrono::milliseconds(30);
+  // The master's slot time; nullopt: every reply is sent however late.
+  std::optional<Duration> slot_time;
+  // Time the replies (TurnaroundStats); false only for the benchmark's baseline.
+  bool turnaround = true;
 };
 
 class StationRunner final : private fdl::DecoderSink {
@@ -58,6 +73,9 @@ class StationRunner final : private fdl::DecoderSink {
   [[nodiscard]] const StationCounters& counters() const { return counters_; }
   [[nodiscard]] const fdl::DecoderStats& decoder_stats() const { return decoder_.stats(); }
   [[nodiscard]] std::error_code last_error() const { return last_error_; }
+  // The turnaround of the station at `address` (nullptr: no such station on this runner).
+  [[nodiscard]] const TurnaroundStats* turnaround(std::uint8_t address) const;
+  [[nodiscard]] const RunnerOptions& options() const { return options_; }
 
  private:
   void on_telegram(const fdl::Telegram& t) override;
@@ -65,7 +83,10 @@ class StationRunner final : private fdl::DecoderSink {
   void on_bytes(std::span<const std::uint8_t> bytes);
   void on_transport_error(std::error_code e);
   void on_timer();
-  void drain_all();
+  // `request_end`: the read that completed the request(s) these replies answer (nullptr:
+  // a drain after a timer or a wake, nothing to time).
+  void drain_all(const TimePoint* request_end = nullptr);
+  void send_reply(std::size_t station, const TimePoint& request_end);
   void arm_timer();
   void arm_idle_timer();
 
@@ -73,6 +94,7 @@ class StationRunner final : private fdl::DecoderSink {
   Transport& transport_;
   RunnerOptions options_;
   std::vector<Station*> stations_;
+  std::vector<TurnaroundStats> turnaround_;  // one per station, sized in add()
   fdl::Decoder decoder_;
   stream::DeadlineTimer timer_;
   boost::asio::steady_timer idle_timer_;
@@ -86,6 +108,7 @@ class StationRunner final : private fdl::DecoderSink {
   TimePoint now_{};
   std::uint64_t idle_generation_ = 0;
   bool running_ = false;
+  bool received_ = false;  // a telegram arrived in the bytes being handled
 };
 
 }  // namespace rs4sim::dp::link

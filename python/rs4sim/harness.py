@@ -149,6 +149,13 @@ class Rs4(_Client):
         """What the PLC reads (simulated bus): F-host state, input byte and bits, counters."""
         return self.state().plc
 
+    def link_timing(self):
+        """The station's replies on a real line (pty, serial, udp; None on the in-memory bus):
+        replies, late (not sent, past --tsl), p50_ns/p99_ns/max_ns/mean_ns and the histogram
+        (upper_ns, count) from the read that completed a request to the reply's write."""
+        state = self.state()
+        return state.link_timing if state.HasField("link_timing") else None
+
     def events(self, telegrams=False, queue_capacity=0, stations=None):
         """The event stream (an iterator of Event; .cancel() ends it): the current state
         first (StateChange with from = ""), then every change, alarm, diagnosis change and,

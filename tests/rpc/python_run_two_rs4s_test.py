@@ -85,6 +85,14 @@ try:
                  lambda r=r: r.state().ossd and r.state().input.ossd, 10)
     assert rs5.state().f_dest_add == rs4.state().f_dest_add + 1  # the GSD rule: base + address
 
+    # Each station's reply turnaround on the line (docs/serial.md): every reply timed, none
+    # held back (no --tsl), the histogram holding them all, the percentiles in order.
+    for r in (rs4, rs5):
+        t = r.link_timing()
+        assert t is not None and t.present and t.replies > 0 and t.late == 0, t
+        assert sum(b.count for b in t.histogram) == t.replies, t  # one snapshot of the loop
+        assert 0 < t.p50_ns <= t.p99_ns <= t.max_ns and t.mean_ns <= t.max_ns, t
+
     # Each station's telegrams through its own tap: a stream of station 5 sees 5's only.
     telegrams = rs5.events(telegrams=True)
     seen = set()
@@ -134,3 +142,4 @@ finally:
     print(err, end="")
     assert device.returncode == 0, (device.returncode, err)
     assert "rs4 4: " in out and "rs4 5: " in out, out
+    assert "turnaround 4: " in out and "turnaround 5: " in out, out

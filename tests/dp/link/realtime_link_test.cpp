@@ -69,7 +69,9 @@ TEST_F(PtyLinkTest, GarbageAndATruncatedFrameAreDroppedAndCountedThenFramingReco
   SerialTransport slave_side(io, pty.release_master(), profibus_line(BaudRate::k1M5), "pty master",
                              log);
   FakeStation slave(5);
-  StationRunner runner(io, clock, slave_side, RunnerOptions{20ms});
+  RunnerOptions options;
+  options.idle_gap = 20ms;
+  StationRunner runner(io, clock, slave_side, options);
   runner.add(slave);
   runner.start();
   const int fd = ::open(pty.slave_path().c_str(), O_RDWR | O_NOCTTY);

@@ -1,0 +1,202 @@
+#include "app/runtime/serial_check.h"
+
+#include "dp/fdl/decoder.h"
+#include "dp/fdl/telegram.h"
+#include "dp/link/profibus_line.h"
+#include "dp/link/turnaround.h"
+#include "stream/serial_adapter.h"
+#include "stream/serial_settings.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <ostream>
+
+namespace rs4sim::app {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// profirust's tested settings with CH341/FT232R adapters: 30 ms at 19.2k, 8 ms at 93.75k …
+// 500k; the slower rates take the 19.2k setting, the faster ones have none.
+std::optional<double> floor_ms(dp::BaudRate rate) {
+  const std::uint32_t bps = dp::bits_per_second(rate);
+  if (bps <= 45450) return 30.0;
+  if (bps <= 500000) return 8.0;
+  return std::nullopt;
+}
+
+std::string ms_text(double ms) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3f", ms);
+  return b;
+}
+
+struct Collector final : dp::fdl::DecoderSink {
+  std::vector<dp::fdl::Telegram> frames;
+  void on_telegram(const dp::fdl::Telegram& t) override { frames.push_back(t); }
+};
+
+}  // namespace
+
+std::vector<SlotTimeRow> slot_time_table(std::chrono::nanoseconds worst_turnaround) {
+  std::vector<SlotTimeRow> rows;
+  for (const dp::BaudRate rate : dp::kStandardBaudRates) {
+    const double bps = dp::bits_per_second(rate);
+    // Twice the worst turnaround, plus the reply's first character (11 bit times), which the
+    // master must see start within TSL [IEC 61158-4-3 UART character].
+    const double measured_ms =
+        2.0 * static_cast<double>(worst_turnaround.count()) / 1e6 + 11.0 * 1e3 / bps;
+    SlotTimeRow row{rate, std::nullopt, measured_ms, false};
+    if (const auto f = floor_ms(rate); f && *f >= measured_ms) {
+      row.ms = *f;
+      row.floor = true;
+    }
+    const double bits = std::ceil(row.ms * bps / 1e3 - 1e-9);
+    if (bits <= 16383) row.bits = static_cast<std::uint32_t>(bits);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+void print_slot_time_table(std::ostream& out, const std::vector<SlotTimeRow>& rows) {
+  out << "slot time to enter (user-defined bus profile; retry limit 2-3):\n"
+      << "  rate       TSL bit times  TSL ms    from\n";
+  for (const SlotTimeRow& r : rows) {
+    char line[128];
+    const std::string bits = r.bits ? std::to_string(*r.bits) : "> 16383";
+    std::snprintf(line, sizeof line, "  %-9s  %13s  %8s  %s\n", dp::to_string(r.rate).c_str(),
+                  bits.c_str(), ms_text(r.ms).c_str(),
+                  !r.bits   ? "not usable on this line (TSL is at most 16383 bit times)"
+                  : r.floor ? "profirust's tested setting (above the measurement)"
+                            : "measured: 2 x worst turnaround + 1 character");
+    out << line;
+  }
+}
+
+int serial_check(const SerialCheckOptions& o, std::ostream& out, std::ostream& err) {
+  const auto rate = dp::parse_baud_rate(o.baud);
+  const int fd = ::open(o.port.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) {
+    err << "rs4sim: serial-check: " << o.port << ": " << std::strerror(errno) << std::endl;
+    return 1;
+  }
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  stream::SerialSetup setup;
+  std::vector<std::string> notes;
+  try {
+    setup = stream::configure_serial(fd, dp::link::profibus_line(*rate), o.port,
+                                     [&](const std::string& s) { notes.push_back(s); });
+  } catch (const std::exception& e) {
+    err << "rs4sim: serial-check: " << e.what() << std::endl;
+    return 1;
+  }
+  const std::string tty = stream::tty_name(fd);
+  const bool other = !tty.empty() && "/dev/" + tty != o.port;
+  out << "port " << o.port << (other ? " (/dev/" + tty + ")" : "") << "\n";
+  if (setup.is_pty) {
+    out << "  adapter: none, a pseudo-terminal (no line, no adapter latency)\n";
+  } else {
+    const auto a = stream::tune_adapter(
+        fd, tty, [&](const std::string& s) { notes.push_back(s); }, o.sysfs);
+    out << "  driver: " << (a.driver.empty() ? "unknown (not in sysfs)" : a.driver) << "\n"
+        << "  latency timer: "
+        << (a.latency_timer_ms ? std::to_string(*a.latency_timer_ms) + " ms"
+                               : "none (no USB serial)")
+        << ", ASYNC_LOW_LATENCY " << (a.async_low_latency ? "on" : "off") << ", low latency "
+        << (a.low_latency() ? "yes" : "NO") << "\n"
+        << "  RS-485 mode (TIOCSRS485): " << (a.rs485 ? "on" : "not offered by the driver") << "\n";
+  }
+  out << "  rate: asked " << dp::bits_per_second(*rate) << " bit/s, driver reports "
+      << setup.actual_baud << " bit/s\n";
+  for (const auto& n : notes) out << "  note: " << n << "\n";
+
+  // The FDL_Status request: SD1 DA SA FC=0x49 FCS ED [IEC 61158-4-3 frame formats].
+  std::vector<std::uint8_t> request;
+  dp::fdl::encode(
+      dp::fdl::make_data_telegram(
+          static_cast<std::uint8_t>(o.address), static_cast<std::uint8_t>(o.master),
+          dp::fdl::FrameControl::request(dp::fdl::RequestFunction::kFdlStatus, false, false),
+          std::nullopt, std::nullopt, {}),
+      request);
+  const double bps = dp::bits_per_second(*rate);
+  // A pseudo-terminal has no wire: its bytes arrive at memory speed.
+  const auto wire = [&](std::size_t chars) {
+    if (setup.is_pty) return std::chrono::nanoseconds(0);
+    return std::chrono::nanoseconds(
+        static_cast<std::int64_t>(static_cast<double>(chars) * 11 * 1e9 / bps));
+  };
+  dp::link::TurnaroundStats stats;
+  int replies = 0, echoes = 0, silent = 0;
+  (void)tcflush(fd, TCIOFLUSH);
+  for (int i = 0; i < o.count; ++i) {
+    dp::fdl::Decoder decoder;
+    Collector got;
+    const auto sent = Clock::now();
+    if (::write(fd, request.data(), request.size()) != static_cast<ssize_t>(request.size())) {
+      err << "rs4sim: serial-check: write: " << std::strerror(errno) << std::endl;
+      return 1;
+    }
+    const auto deadline = sent + std::chrono::milliseconds(o.timeout_ms);
+    std::optional<Clock::time_point> echo_at, reply_at;
+    std::size_t reply_chars = 0;
+    while (!reply_at && Clock::now() < deadline) {
+      pollfd p{fd, POLLIN, 0};
+      const auto left =
+          std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+      if (::poll(&p, 1, static_cast<int>(std::max<std::int64_t>(left.count(), 1))) <= 0) continue;
+      std::uint8_t buf[512];
+      const ssize_t n = ::read(fd, buf, sizeof buf);
+      if (n <= 0) continue;
+      const auto at = Clock::now();
+      decoder.feed(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)), got);
+      for (const auto& t : got.frames) {
+        if (t.fc.is_request() && t.da == o.address && t.sa == o.master) {
+          echo_at = echo_at.value_or(at);  // our own request: a loopback plug (or an echo)
+        } else if (t.sa == o.address && !t.fc.is_request()) {
+          reply_at = at;
+          reply_chars = dp::fdl::encoded_size(t);
+        }
+      }
+      got.frames.clear();
+    }
+    if (reply_at) {
+      ++replies;
+      stats.record(*reply_at - sent - wire(request.size()) - wire(reply_chars));
+    } else if (echo_at) {
+      ++echoes;
+      stats.record(*echo_at - sent - wire(request.size()));
+    } else {
+      ++silent;
+    }
+  }
+  out << "turnaround: " << o.count << " FDL_Status requests to station " << o.address << ": "
+      << replies << " replies, " << echoes << " loopback echoes, " << silent << " unanswered\n";
+  if (stats.count() == 0) {
+    err << "rs4sim: serial-check: nothing answered on " << o.port << " at " << o.baud
+        << ": check the wiring (A/B), the termination, the station's address (--address) and "
+           "rate, or plug in a loopback"
+        << std::endl;
+    return 1;
+  }
+  const auto ms = [](std::int64_t ns) { return ms_text(static_cast<double>(ns) / 1e6); };
+  out << "  beyond the wire time: p50 " << ms(stats.quantile_ns(0.5)) << " ms, p99 "
+      << ms(stats.quantile_ns(0.99)) << " ms, max " << ms(stats.max_ns()) << " ms"
+      << (replies > 0 ? " (both ends of the line)" : " (the adapter, there and back)") << "\n";
+  print_slot_time_table(out, slot_time_table(std::chrono::nanoseconds(stats.max_ns())));
+  out.flush();
+  return 0;
+}
+
+}  // namespace rs4sim::app

@@ -1,0 +1,50 @@
+#!/bin/sh
+# The real-line CLI (docs/serial.md): `rs4sim serial-check` against a running `rs4sim run` on a
+# pty pair (every FDL_Status request answered, the table printed, the run's turnaround counts
+# them; a station that is not there exits 1); --tsl/--rt-priority refusals (exit 2) and
+# --rt-priority without the right to it (exit 1 naming EPERM and the remedy).
+set -eu
+EXE="$1"
+TMP=$(mktemp -d)
+trap 'kill "$RUN" 2>/dev/null || true; rm -rf "$TMP"' EXIT
+"$EXE" run --address 4 --boot-time 100 --link pty --baud 187.5k --duration 20 --json \
+  >"$TMP/run.out" 2>"$TMP/run.err" &
+RUN=$!
+i=0
+while [ ! -s "$TMP/run.out" ] && [ $i -lt 100 ]; do sleep 0.05; i=$((i + 1)); done
+PTY=$(head -n 1 "$TMP/run.out")
+"$EXE" serial-check --port "$PTY" --baud 187.5k --address 4 --count 200 >"$TMP/check.out"
+cat "$TMP/check.out"
+grep -q "200 replies, 0 loopback echoes, 0 unanswered" "$TMP/check.out"
+grep -q "^  187.5k " "$TMP/check.out"
+grep -q "retry limit 2-3" "$TMP/check.out"
+# Station 9 is not on the line: nothing answers, exit 1 with the reason.
+if "$EXE" serial-check --port "$PTY" --address 9 --count 3 --timeout 20 >/dev/null 2>"$TMP/err"; then
+  echo "serial-check answered for an absent station"; exit 1
+fi
+grep -q "nothing answered" "$TMP/err"
+kill -INT "$RUN"
+wait "$RUN" || true
+# The run's summary has the 200 replies in its turnaround (FDL_Status of the check).
+grep -q '"event":"turnaround","address":4,"replies":20[0-9]' "$TMP/run.out"
+
+# Usage errors: exit 2 with the reason.
+set +e
+"$EXE" run --link memory --rt-priority 10 >/dev/null 2>"$TMP/e1"; rc1=$?
+"$EXE" run --link pty --baud 1.5M --tsl 20000 >/dev/null 2>"$TMP/e2"; rc2=$?
+"$EXE" run --link pty --rt-priority 100 >/dev/null 2>"$TMP/e3"; rc3=$?
+set -e
+[ "$rc1" = 2 ] && grep -q "is for a real-time link" "$TMP/e1"
+[ "$rc2" = 2 ] && grep -q "1..10922 µs at 1.5M" "$TMP/e2"
+[ "$rc3" = 2 ] && grep -q "priorities are 1..99" "$TMP/e3"
+# Without CAP_SYS_NICE and with a real-time limit of 0, SCHED_FIFO is refused: exit 1.
+if command -v prlimit >/dev/null && command -v setpriv >/dev/null; then
+  set +e
+  prlimit --rtprio=0:0 setpriv --bounding-set -sys_nice --inh-caps -sys_nice \
+    "$EXE" run --link pty --duration 5 --rt-priority 10 >/dev/null 2>"$TMP/e4"; rc4=$?
+  set -e
+  cat "$TMP/e4"
+  [ "$rc4" = 1 ] && grep -q "(EPERM); a real-time priority needs CAP_SYS_NICE" "$TMP/e4" &&
+    grep -q "ulimit -r 10" "$TMP/e4"
+fi
+echo OK
