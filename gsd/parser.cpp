@@ -93,7 +93,12 @@ Result<File> parse_syntax(std::string_view raw, std::string file_name) {
     return Error{GsdError::kMissingHeader, file_name, 1, "",
                  "no keyword line: the file must start with #Profibus_DP"};
   }
-  RS4SIM_GSD_TRY(auto header, parse_statement(lines.front(), file_name));
+  auto parsed_header = parse_statement(lines.front(), file_name);
+  if (!parsed_header) {
+    return Error{GsdError::kMissingHeader, file_name, lines.front().line, lines.front().text,
+                 "not a GSD: the first keyword line must be #Profibus_DP"};
+  }
+  Statement header = std::move(parsed_header).value();
   if (!header.is("#Profibus_DP")) {
     return Error{GsdError::kMissingHeader, file_name, header.line, header.text,
                  "the first keyword line must be #Profibus_DP"};

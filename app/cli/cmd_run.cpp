@@ -72,6 +72,12 @@ Action setup(CLI::App& cmd) {
                  "one real-time link)");
   cmd.add_option("--ident", d.ident, "generic: Ident_Number, e.g. 0x1234");
   cmd.add_option("--cfg", d.cfg, "generic: configuration identifiers in hex, e.g. \"10 20\"");
+  cmd.add_option("--gsd", d.gsd,
+                 "generic: the slave its GSD file describes (ident, Cfg, User_Prm_Data, rates, "
+                 "DPV1); rs4: ident, Cfg and User_Prm layout from this file");
+  cmd.add_option("--module", d.modules,
+                 "with --gsd: a module by its GSD name, repeat it in slot order (a compact "
+                 "station's one module is implicit)");
   cmd.add_option("--boot-time", d.boot_time_ms,
                  "rs4: boot time until operational in ms (default 30000)");
   cmd.add_option("--command-time", d.command_time_ms,
@@ -99,7 +105,10 @@ Action setup(CLI::App& cmd) {
       dev.more_addresses.assign(o->addresses.begin() + 1, o->addresses.end());
     }
     if (o->blocked) dev.blocked = parse_blocked(*o->blocked);
-    if (o->device.empty()) o->device = dev.ident.empty() && dev.cfg.empty() ? "rs4" : "generic";
+    if (o->device.empty()) {
+      o->device = dev.ident.empty() && dev.cfg.empty() && dev.gsd.empty() ? "rs4" : "generic";
+    }
+    dev.link_baud = o->link.baud;
     return run_device(*find_device(o->device), dev, o->link, std::cout);
   };
 }

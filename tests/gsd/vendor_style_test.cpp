@@ -150,6 +150,55 @@ TEST(GsdVendorStyle, FrenchCompactStationConfiguresWithItsImplicitModule) {
             "Courant nominal (0,1 A) = 130 is out of range 5..120");
 }
 
+TEST(GsdSlaveCheck, UserPrmDataIsCheckedAgainstTheGsdRangesAndLists) {
+  const Device d = parse_ok("gateway_asi.gse");
+  auto c = configure(d, {{"Digital 4 byte in/out", "Analog 2 words in"}, {}});
+  ASSERT_TRUE(c) << c.error().what();
+  using Bytes = std::vector<std::uint8_t>;
+  EXPECT_TRUE(check_user_prm(d, c.value(), Bytes{0x80, 0x00, 0x00, 0x00, 0x02, 0x70}));
+  // Other values inside the GSD's ranges: mode bit 1, filter 10, profile 15.
+  EXPECT_TRUE(check_user_prm(d, c.value(), Bytes{0x80, 0x00, 0x00, 0x01, 0x0A, 0xF0}));
+  // Input filter 3 ms is not in the list 1, 2, 5, 10.
+  auto list = check_user_prm(d, c.value(), Bytes{0x80, 0x00, 0x00, 0x00, 0x03, 0x70});
+  ASSERT_FALSE(list);
+  EXPECT_EQ(list.error().code, GsdError::kOutOfRange);
+  EXPECT_EQ(list.error().what(), "byte 4: Input filter (ms) = 3 is not allowed (1, 2, 5, 10)");
+  // One byte short.
+  auto shorter = check_user_prm(d, c.value(), Bytes{0x80, 0x00, 0x00, 0x00, 0x02});
+  ASSERT_FALSE(shorter);
+  EXPECT_EQ(shorter.error().what(),
+            "User_Prm_Data is 5 bytes, the GSD configuration has 6");
+
+  const Device fr = parse_ok("depart_moteur_fr.gsf");
+  auto cf = configure(fr, {});
+  ASSERT_TRUE(cf) << cf.error().what();
+  // Rated current 4 (0.4 A) is below the range 5..120; trip class 15 is not in 5, 10, 20, 30.
+  auto low = check_user_prm(fr, cf.value(), Bytes{0x00, 0x04, 0x0A, 0x14});
+  ASSERT_FALSE(low);
+  EXPECT_EQ(low.error().what(), "byte 1: Courant nominal (0,1 A) = 4 is not allowed (5..120)");
+  auto trip = check_user_prm(fr, cf.value(), Bytes{0x01, 0x78, 0x0F, 0x14});
+  ASSERT_FALSE(trip);
+  EXPECT_EQ(trip.error().what(),
+            "byte 2: Classe de d\xC3\xA9" "clenchement = 15 is not allowed (5, 10, 20, 30)");
+  EXPECT_TRUE(check_user_prm(fr, cf.value(), Bytes{0x01, 0x78, 0x1E, 0x14}));
+}
+
+TEST(GsdSlaveCheck, SignedParametersAreReadAsTwosComplement) {
+  auto d = parse(gsd::testing::minimal("User_Prm_Data_Len = 2\nExt_User_Prm_Data_Ref(0) = 1\n"
+                                       "ExtUserPrmData = 1 \"Offset\"\nSigned16 0 -100-100\n"
+                                       "EndExtUserPrmData\nModule = \"m\" 0x10\nEndModule\n"),
+                 "s.gsd");
+  ASSERT_TRUE(d) << d.error().what();
+  auto c = configure(d.value(), {});
+  ASSERT_TRUE(c) << c.error().what();
+  using Bytes = std::vector<std::uint8_t>;
+  EXPECT_TRUE(check_user_prm(d.value(), c.value(), Bytes{0xFF, 0x9C}));  // -100
+  auto below = check_user_prm(d.value(), c.value(), Bytes{0xFF, 0x9B});  // -101
+  ASSERT_FALSE(below);
+  EXPECT_EQ(below.error().what(), "byte 0: Offset = -101 is not allowed (-100..100)");
+  EXPECT_FALSE(check_user_prm(d.value(), c.value(), Bytes{0x00, 0x65}));  // 101
+}
+
 TEST(GsdVendorStyle, Utf8FilesStayAsTheyAre) {
   bool converted = true;
   EXPECT_EQ(syntax::to_utf8("Info_Text = \"\xC3\xA9\"", &converted), "Info_Text = \"\xC3\xA9\"");

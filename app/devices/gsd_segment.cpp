@@ -1,0 +1,78 @@
+#include "app/devices/gsd_segment.h"
+
+#include "app/runtime/usage_error.h"
+#include "dp/time/baud_rate.h"
+
+#include <algorithm>
+#include <ostream>
+
+namespace rs4sim::app {
+
+std::uint8_t free_master_address(const std::vector<std::uint8_t>& stations) {
+  for (std::uint8_t a = 1; a < 126; ++a) {
+    if (std::find(stations.begin(), stations.end(), a) == stations.end()) return a;
+  }
+  return 0;
+}
+
+GsdSegment::GsdSegment(std::vector<GsdStationSpec> specs, const std::string& baud) {
+  const auto rate = dp::parse_baud_rate(baud);
+  if (!rate) throw UsageError("--baud " + baud + " is not a PROFIBUS rate");
+  dp::master::MasterConfig m;
+  m.bus = dp::master::BusParameters::defaults_for(*rate);
+  std::vector<std::uint8_t> addresses;
+  for (const auto& s : specs) {
+    check_gsd_baud(s, baud);
+    // The master waits for the slowest responder the GSDs declare at this rate
+    // ([IEC 61158-4-3 bus parameters, timing]: max TSDR ≤ TSL).
+    if (const auto t = gsd_max_tsdr(s, baud)) {
+      m.bus.max_tsdr = std::max<std::uint32_t>(m.bus.max_tsdr, *t);
+      m.bus.tsl = std::max<std::uint32_t>(m.bus.tsl, m.bus.max_tsdr + 50);
+      m.bus.tid2 = std::max(m.bus.tid2, m.bus.max_tsdr);
+    }
+    m.slaves.push_back(gsd_master_entry(s, std::chrono::milliseconds(100)));
+    addresses.push_back(s.address);
+  }
+  master_address_ = free_master_address(addresses);
+  m.address = master_address_;
+  bus_ = std::make_unique<dp::link::MemoryBus>(clock_);
+  master_ = std::make_unique<dp::master::Master>(m);
+  bus_->attach(*master_);
+  for (auto& s : specs) {
+    stations_.push_back(std::make_unique<GsdStation>(std::move(s)));
+    bus_->attach(*stations_.back());
+  }
+  bus_->start();
+}
+
+void GsdSegment::run_for(dp::Duration d) {
+  bus_->run_until([] { return false; }, clock_.now() + d, [this] { master_->take_events(events_); });
+  events_.clear();
+}
+
+std::size_t GsdSegment::in_data_exchange() const {
+  std::size_t n = 0;
+  for (const auto& s : stations_) {
+    if (master_->poll_state(s->address()) == dp::master::PollState::kDataExchange) ++n;
+  }
+  return n;
+}
+
+bool GsdSegment::healthy() const { return in_data_exchange() == stations_.size(); }
+
+void GsdSegment::print_summary(std::ostream& out) const {
+  out << ": " << master_->counters().cycles << " cycles, " << in_data_exchange() << " of "
+      << stations_.size() << " GSD stations in data exchange" << std::endl;
+  for (const auto& s : stations_) {
+    const auto& c = bus_->counters(s->address());
+    out << s->describe() << ": state " << dp::slave::to_string(s->slave().state())
+        << ", data exchanges " << s->application().exchanges() << ", telegrams received "
+        << c.received << ", sent " << c.sent;
+    if (!s->application().prm_fault().empty()) {
+      out << ", Set_Prm refused: " << s->application().prm_fault();
+    }
+    out << std::endl;
+  }
+}
+
+}  // namespace rs4sim::app
