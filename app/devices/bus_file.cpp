@@ -236,7 +236,8 @@ class BusInstance final : public DeviceInstance {
 dp::master::SlaveEntry master_entry(const BusStation& s) {
   const DeviceOptions& o = s.options;
   if (!o.gsd.empty() && s.device == "generic") {
-    return gsd_master_entry(load_gsd_station(o.gsd, o.modules, *o.address), 100ms);
+    return gsd_master_entry(load_gsd_station(o.gsd, o.modules, *o.address),
+                            std::chrono::milliseconds(100));
   }
   if (s.device == "generic") {
     return dp::devices::master_entry_for(generic_slave_config(*o.address, o.ident, o.cfg));
