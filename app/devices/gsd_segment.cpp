@@ -15,11 +15,13 @@ std::uint8_t free_master_address(const std::vector<std::uint8_t>& stations) {
   return 0;
 }
 
-GsdSegment::GsdSegment(std::vector<GsdStationSpec> specs, const std::string& baud) {
+GsdSegment::GsdSegment(std::vector<GsdStationSpec> specs, const std::string& baud,
+                       dp::Duration cycle_target) {
   const auto rate = dp::parse_baud_rate(baud);
   if (!rate) throw UsageError("--baud " + baud + " is not a PROFIBUS rate");
   dp::master::MasterConfig m;
   m.bus = dp::master::BusParameters::defaults_for(*rate);
+  m.cycle_target = cycle_target;
   std::vector<std::uint8_t> addresses;
   for (const auto& s : specs) {
     check_gsd_baud(s, baud);

@@ -19,7 +19,8 @@ class GsdSegment final : public SimulatedSegment {
  public:
   // Throws UsageError for a rate a GSD does not support; std::system_error for a
   // configuration dp/ refuses.
-  GsdSegment(std::vector<GsdStationSpec> specs, const std::string& baud);
+  GsdSegment(std::vector<GsdStationSpec> specs, const std::string& baud,
+             dp::Duration cycle_target = std::chrono::milliseconds(10));
 
   void run_for(dp::Duration d) override;
   [[nodiscard]] std::uint8_t master_address() const override { return master_address_; }
