@@ -259,13 +259,8 @@ class BusSegment final : public SimulatedSegment {
     std::vector<std::uint8_t> addresses;
     for (const auto& s : bus.stations) {
       if (!s.options.gsd.empty() && s.device == "generic") {
-        if (const auto t = gsd_max_tsdr(load_gsd_station(s.options.gsd, s.options.modules,
-                                                         *s.options.address),
-                                        baud)) {
-          m.bus.max_tsdr = std::max<std::uint32_t>(m.bus.max_tsdr, *t);
-          m.bus.tsl = std::max<std::uint32_t>(m.bus.tsl, m.bus.max_tsdr + 50);
-          m.bus.tid2 = std::max(m.bus.tid2, m.bus.max_tsdr);
-        }
+        const auto spec = load_gsd_station(s.options.gsd, s.options.modules, *s.options.address);
+        if (const auto t = gsd_max_tsdr(spec, baud)) fit_max_tsdr(m.bus, *t);
       }
       m.slaves.push_back(master_entry(s));
       addresses.push_back(static_cast<std::uint8_t>(*s.options.address));

@@ -15,6 +15,18 @@ std::uint8_t free_master_address(const std::vector<std::uint8_t>& stations) {
   return 0;
 }
 
+void fit_max_tsdr(dp::master::BusParameters& bus, std::uint16_t max_tsdr) {
+  if (max_tsdr <= bus.max_tsdr) return;
+  if (max_tsdr > 1023 || bus.tsl + (max_tsdr - bus.max_tsdr) > 16383) {
+    throw UsageError("MaxTsdr " + std::to_string(max_tsdr) +
+                     " Tbit is beyond what the bus parameters allow (max TSDR 1023, TSL 16383, "
+                     "[IEC 61158-4-3 bus parameters, timing])");
+  }
+  bus.tsl += max_tsdr - bus.max_tsdr;
+  bus.max_tsdr = max_tsdr;
+  bus.tid2 = std::max(bus.tid2, bus.max_tsdr);
+}
+
 GsdSegment::GsdSegment(std::vector<GsdStationSpec> specs, const std::string& baud,
                        dp::Duration cycle_target) {
   const auto rate = dp::parse_baud_rate(baud);
@@ -25,13 +37,7 @@ GsdSegment::GsdSegment(std::vector<GsdStationSpec> specs, const std::string& bau
   std::vector<std::uint8_t> addresses;
   for (const auto& s : specs) {
     check_gsd_baud(s, baud);
-    // The master waits for the slowest responder the GSDs declare at this rate
-    // ([IEC 61158-4-3 bus parameters, timing]: max TSDR ≤ TSL).
-    if (const auto t = gsd_max_tsdr(s, baud)) {
-      m.bus.max_tsdr = std::max<std::uint32_t>(m.bus.max_tsdr, *t);
-      m.bus.tsl = std::max<std::uint32_t>(m.bus.tsl, m.bus.max_tsdr + 50);
-      m.bus.tid2 = std::max(m.bus.tid2, m.bus.max_tsdr);
-    }
+    if (const auto t = gsd_max_tsdr(s, baud)) fit_max_tsdr(m.bus, *t);
     m.slaves.push_back(gsd_master_entry(s, std::chrono::milliseconds(100)));
     addresses.push_back(s.address);
   }

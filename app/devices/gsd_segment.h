@@ -43,6 +43,11 @@ class GsdSegment final : public SimulatedSegment {
   std::vector<dp::master::MasterEvent> events_;
 };
 
+// Our master waits for the slowest responder a GSD declares: when `max_tsdr` (Tbit) is above
+// the bus parameters' max TSDR, max TSDR and TID2 become it and the slot time grows by the same
+// amount, keeping the margin of the [IEC 61158-4-3 bus parameters, timing] default table.
+void fit_max_tsdr(dp::master::BusParameters& bus, std::uint16_t max_tsdr);
+
 // The master's address on a segment: 1, or the lowest address no station has.
 std::uint8_t free_master_address(const std::vector<std::uint8_t>& stations);
 

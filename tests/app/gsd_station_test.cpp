@@ -124,6 +124,24 @@ TEST(GsdStation, DeclaredCapabilitiesReachTheSlave) {
   EXPECT_NE(dpv0.describe().find("ident 0x09C1"), std::string::npos) << dpv0.describe();
 }
 
+TEST(GsdSegmentTiming, MasterWaitsForTheSlowestMaxTsdr) {
+  // [IEC 61158-4-3 bus parameters, timing] at 1.5 Mbit/s: TSL 300, max TSDR 150.
+  auto bus = dp::master::BusParameters::defaults_for(dp::BaudRate::k1M5);
+  ASSERT_EQ(bus.tsl, 300U);
+  ASSERT_EQ(bus.max_tsdr, 150U);
+  fit_max_tsdr(bus, 150);  // not above: unchanged
+  EXPECT_EQ(bus.tsl, 300U);
+  fit_max_tsdr(bus, 400);
+  EXPECT_EQ(bus.max_tsdr, 400U);
+  EXPECT_EQ(bus.tsl, 550U);  // the table's 150 Tbit margin kept
+  EXPECT_GE(bus.tid2, 400U);
+  fit_max_tsdr(bus, 200);
+  EXPECT_EQ(bus.max_tsdr, 400U);
+  EXPECT_THROW(fit_max_tsdr(bus, 1024), UsageError);
+  EXPECT_EQ(free_master_address({1, 2, 4}), 3);
+  EXPECT_EQ(free_master_address({5}), 1);
+}
+
 TEST(GsdStation, BadInputNamesTheFileLineOrTheModules) {
   try {
     (void)load_gsd_station(kGateway, {"Digital 4 byte in/out", "Relay 8"}, 5);
