@@ -77,8 +77,8 @@ Action setup(CLI::App& cmd) {
   cmd.add_option("--ident", d.ident, "generic: Ident_Number, e.g. 0x1234");
   cmd.add_option("--cfg", d.cfg, "generic: configuration identifiers in hex, e.g. \"10 20\"");
   cmd.add_option("--gsd", d.gsd,
-                 "generic: the slave its GSD file describes (ident, Cfg, User_Prm_Data, rates, "
-                 "DPV1); rs4: ident, Cfg and User_Prm layout from this file");
+                 "generic: the DP slave its GSD file describes (ident, Cfg, User_Prm_Data, "
+                 "rates, MaxTsdr, DPV1, Max_Diag_Data_Len)");
   cmd.add_option("--module", d.modules,
                  "with --gsd: a module by its GSD name, repeat it in slot order (a compact "
                  "station's one module is implicit)");

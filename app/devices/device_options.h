@@ -35,7 +35,7 @@ enum class DeviceFlag : std::uint8_t {
   kPcAdapter,
   kSerialNumber,
   kState,
-  kGsd,     // --gsd FILE (generic, rs4)
+  kGsd,     // --gsd FILE (generic)
   kModule,  // --module NAME, repeatable (with --gsd)
 };
 

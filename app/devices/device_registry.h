@@ -75,7 +75,7 @@ struct DeviceOptions {
   // rs4: --state FILE, one per --address in their order: the unit's non-volatile memory
   // (app/devices/rs4_state_file.h).
   std::vector<std::string> state_files;
-  // generic / rs4: --gsd FILE, the device's GSD (app/devices/gsd_station.h), and --module NAME
+  // generic: --gsd FILE, the device's GSD (app/devices/gsd_station.h), and --module NAME
   // in slot order (a compact station's one module is implicit).
   std::string gsd;
   std::vector<std::string> modules;
