@@ -126,7 +126,7 @@ void validate(DeviceOptions& o) {
   if (!o.gsd.empty()) return validate_gsd(o);
   if (!o.modules.empty()) throw UsageError("--module needs --gsd FILE");
   if (!o.address || o.ident.empty() || o.cfg.empty()) {
-    throw UsageError("--device generic needs --address and --ident and --cfg, or --gsd FILE");
+    throw UsageError("--device generic needs --address, --ident and --cfg (or --gsd FILE)");
   }
   refuse_unused(o, "generic", {DeviceFlag::kAddress, DeviceFlag::kIdent, DeviceFlag::kCfg});
   (void)slave_config(o);  // throws UsageError for a bad address, ident or cfg
