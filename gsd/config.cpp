@@ -34,6 +34,23 @@ void write_value(std::vector<std::uint8_t>& data, std::size_t at, const ExtParam
   }
 }
 
+// The inverse of write_value.
+std::int64_t read_value(std::span<const std::uint8_t> data, std::size_t at, const ExtParam& p) {
+  if (p.type == ParamType::kBit || p.type == ParamType::kBitArea) {
+    const unsigned width = static_cast<unsigned>(p.bit_high - p.bit_low + 1);
+    return (data[at] >> p.bit_low) & ((1U << width) - 1U);
+  }
+  const std::size_t n = byte_size(p.type);
+  std::uint32_t raw = 0;
+  for (std::size_t i = 0; i < n; ++i) raw = (raw << 8) | data[at + i];
+  switch (p.type) {
+    case ParamType::kSigned8: return static_cast<std::int8_t>(raw);
+    case ParamType::kSigned16: return static_cast<std::int16_t>(raw);
+    case ParamType::kSigned32: return static_cast<std::int32_t>(raw);
+    default: return raw;
+  }
+}
+
 class Configurator {
  public:
   Configurator(const Device& device, const ConfigRequest& request)
@@ -122,7 +139,8 @@ Result<void> Configurator::place(const PrmTemplate& t, std::size_t module, bool 
     RS4SIM_GSD_TRY(const auto value, value_for(p));
     write_value(out_.user_prm_data, base + ref.offset, p, value);
     out_.fields.push_back(
-        {base + ref.offset, p.name, p.type, p.bit_low, p.bit_high, value, module, f_part});
+        {base + ref.offset, p.name, p.type, p.bit_low, p.bit_high, value, module, f_part,
+         ref.param});
   }
   return boost::outcome_v2::success();
 }
@@ -210,6 +228,29 @@ Result<SlaveSetup> Configurator::run() {
 
 Result<SlaveSetup> configure(const Device& device, const ConfigRequest& request) {
   return Configurator(device, request).run();
+}
+
+Result<void> check_user_prm(const Device& device, const SlaveSetup& setup,
+                            std::span<const std::uint8_t> user_prm_data) {
+  if (user_prm_data.size() != setup.user_prm_data.size()) {
+    return config_error(GsdError::kPrmTooLong,
+                        "User_Prm_Data is " + std::to_string(user_prm_data.size()) +
+                            " bytes, the GSD configuration has " +
+                            std::to_string(setup.user_prm_data.size()));
+  }
+  for (const auto& f : setup.fields) {
+    if (f.f_parameter) continue;
+    const auto it = device.params.find(f.param);
+    if (it == device.params.end()) continue;  // a SlaveSetup of another Device
+    const ExtParam& p = it->second;
+    const std::int64_t v = read_value(user_prm_data, f.offset, p);
+    if (!p.accepts(v)) {
+      return config_error(GsdError::kOutOfRange, "byte " + std::to_string(f.offset) + ": " +
+                                                     p.name + " = " + std::to_string(v) +
+                                                     " is not allowed (" + p.range_text() + ")");
+    }
+  }
+  return boost::outcome_v2::success();
 }
 
 std::uint16_t f_param_desc_crc(const Device& device, const Module& module) {

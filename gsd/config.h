@@ -15,6 +15,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,7 @@ struct PrmField {
   std::int64_t value = 0;
   std::size_t module = kGlobal;  // index into SlaveSetup::modules, or kGlobal
   bool f_parameter = false;      // placed by F_Ext_User_Prm_Data_Ref
+  int param = 0;                 // ExtUserPrmData number (Device::params)
 };
 
 struct FParameterBlock {
@@ -74,6 +76,17 @@ struct SlaveSetup {
 // ("F_WD_Time = 5 is out of range 10..1000"), kNotChangeable (Changeable = 0, or
 // F_Par_CRC which is always computed), kPrmTooLong, kFParameterLayout.
 Result<SlaveSetup> configure(const Device& device, const ConfigRequest& request);
+
+// The slave's side of the same layout ([IEC 61158-6-3 Set_Prm]: a slave that does not accept its
+// parameters sets Prm_Fault in its diagnosis): `user_prm_data` (the Set_Prm DU from byte 7 on,
+// DPV1_Status_1..3 included) is checked as the device the GSD describes would check it: the
+// length must be the configured one, and every ExtUserPrmData placed in it must hold a value
+// the GSD allows (its range or list). The F-parameter blocks are left to the F-device (their
+// own diagnosis, [IEC 61784-3-3 F-Parameters]); constant bytes are not checked.
+// Errors (message names the byte and the parameter): kPrmTooLong (other length),
+// kOutOfRange ("byte 4: Input filter (ms) = 3 is not allowed (1, 2, 5, 10)").
+Result<void> check_user_prm(const Device& device, const SlaveSetup& setup,
+                            std::span<const std::uint8_t> user_prm_data);
 
 // F_ParamDescCRC as the rs4sim project defines it (docs/gsd.md; the PI algorithm for
 // text GSDs is not public): CRC-16 poly 0x4EAB, preset 0 (the CRC1 polynomial) over

@@ -33,4 +33,8 @@ std::string Error::what() const {
   return out;
 }
 
+std::string Warning::what() const {
+  return Error{GsdError::kSyntax, file, line, text, message}.what();
+}
+
 }  // namespace rs4sim::gsd

@@ -50,6 +50,16 @@ struct Error {
   std::string what() const;
 };
 
+// Something the interpreter skipped, e.g. a word that is not a GSD keyword (engineering tools
+// skip those too): "file:line: message: `text`".
+struct Warning {
+  std::string file;
+  int line = 0;
+  std::string text;
+  std::string message;
+  std::string what() const;
+};
+
 template <class T>
 using Result = boost::outcome_v2::result<T, Error, boost::outcome_v2::policy::terminate>;
 

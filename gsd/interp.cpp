@@ -4,6 +4,7 @@
 
 #include "gsd/interp_detail.h"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <functional>
@@ -134,6 +135,7 @@ class Interpreter {
   Result<void> statement(const syntax::Statement& st);
   Result<bool> baud_keyword(const syntax::Statement& st);
   Result<void> legacy_user_prm(const syntax::Statement& st);
+  Result<void> slave_family(const syntax::Statement& st);
   Result<void> finish();
   Result<void> once(const syntax::Statement& st);
 
@@ -213,6 +215,43 @@ Result<void> Interpreter::legacy_user_prm(const syntax::Statement& st) {
   return boost::outcome_v2::success();
 }
 
+// `Slave_Family = 3` or `Slave_Family = 9@AS-I@…` ([PROFIBUS GSD spec Slave_Family]).
+Result<void> Interpreter::slave_family(const syntax::Statement& st) {
+  RS4SIM_GSD_TRYV(once(st));
+  const auto bad = [&] {
+    return error(file_.name, st, GsdError::kBadValue,
+                 "Slave_Family expects a family number, optionally followed by @sub-families");
+  };
+  if (!st.has_equals || st.fields.size() != 1 || st.fields[0].size() != 1) return bad();
+  const auto& v = st.fields[0][0];
+  std::int64_t main = 0;
+  if (v.is_number()) {
+    main = v.number;
+  } else if (v.kind == syntax::Value::Kind::kName) {
+    const std::string& t = v.text;
+    const auto at = t.find('@');
+    if (at == 0 || at == std::string::npos || at > 3) return bad();
+    for (std::size_t i = 0; i < at; ++i) {
+      if (std::isdigit(static_cast<unsigned char>(t[i])) == 0) return bad();
+      main = main * 10 + (t[i] - '0');
+    }
+    for (std::size_t pos = at + 1; pos <= t.size();) {
+      const auto next = std::min(t.find('@', pos), t.size());
+      if (next == pos) return bad();  // "3@" or "3@@x"
+      device_.sub_families.push_back(t.substr(pos, next - pos));
+      pos = next + 1;
+    }
+  } else {
+    return bad();
+  }
+  if (main < 0 || main > 255) {
+    return error(file_.name, st, GsdError::kOutOfRange,
+                 "Slave_Family = " + std::to_string(main) + " is out of range 0..255");
+  }
+  device_.slave_family = static_cast<std::uint8_t>(main);
+  return boost::outcome_v2::success();
+}
+
 Result<void> Interpreter::statement(const syntax::Statement& st) {
   for (const auto& key : kNumberKeys) {
     if (st.is(key.keyword)) {
@@ -234,6 +273,7 @@ Result<void> Interpreter::statement(const syntax::Statement& st) {
   if (st.is("Ext_User_Prm_Data_Const")) return global_.add_const(file_.name, st);
   if (st.is("Ext_User_Prm_Data_Ref")) return global_.add_ref(file_.name, st);
   if (st.is("User_Prm_Data")) return legacy_user_prm(st);
+  if (st.is("Slave_Family")) return slave_family(st);
   if (st.is("User_Prm_Data_Len")) {
     RS4SIM_GSD_TRYV(once(st));
     RS4SIM_GSD_TRY(const auto len, detail::number(file_.name, st, 0, 237));
@@ -285,6 +325,8 @@ Result<Device> Interpreter::run() {
     }
   }
   RS4SIM_GSD_TRYV(finish());
+  device_.warnings = file_.warnings;
+  device_.latin1 = file_.latin1;
   return std::move(device_);
 }
 

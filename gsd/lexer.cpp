@@ -64,8 +64,16 @@ Result<std::vector<Token>> tokenize(const LogicalLine& line, const std::string& 
       i = close + 1;
       space = false;
     } else if (is_word(c)) {
+      // A name with `@` is a main family with sub-families, `Slave_Family = 9@AS-I@Gateway`
+      // ([PROFIBUS GSD spec Slave_Family]): after the first `@` the name runs to the next
+      // blank or comma, so `-` and `/` are part of it.
       std::size_t j = i;
-      while (j < s.size() && is_word(s[j])) ++j;
+      bool family = false;
+      while (j < s.size() &&
+             (is_word(s[j]) || (family && !is_space(s[j]) && s[j] != ',' && s[j] != '"'))) {
+        family = family || s[j] == '@';
+        ++j;
+      }
       tokens.push_back({Token::Kind::kWord, s.substr(i, j - i), space});
       i = j;
       space = false;
@@ -257,6 +265,61 @@ Result<std::vector<LogicalLine>> split_logical_lines(std::string_view text,
       pending.reset();
     }
     if (last) break;
+  }
+  return out;
+}
+
+std::string to_utf8(std::string_view text, bool* converted) {
+  // Valid UTF-8 (RFC 3629: no overlong forms, no surrogates, at most U+10FFFF)?
+  bool valid = true;
+  for (std::size_t i = 0; i < text.size() && valid;) {
+    const auto b = static_cast<unsigned char>(text[i]);
+    std::size_t n = 0;
+    std::uint32_t cp = 0;
+    if (b < 0x80) {
+      ++i;
+      continue;
+    }
+    if (b >= 0xC2 && b <= 0xDF) {
+      n = 1;
+      cp = b & 0x1FU;
+    } else if (b >= 0xE0 && b <= 0xEF) {
+      n = 2;
+      cp = b & 0x0FU;
+    } else if (b >= 0xF0 && b <= 0xF4) {
+      n = 3;
+      cp = b & 0x07U;
+    } else {
+      valid = false;
+      break;
+    }
+    if (i + n >= text.size()) {  // truncated sequence
+      valid = false;
+      break;
+    }
+    for (std::size_t k = 1; k <= n; ++k) {
+      const auto c = static_cast<unsigned char>(text[i + k]);
+      if ((c & 0xC0U) != 0x80U) valid = false;
+      cp = (cp << 6) | (c & 0x3FU);
+    }
+    if (valid && ((n == 2 && (cp < 0x800 || (cp >= 0xD800 && cp <= 0xDFFF))) ||
+                  (n == 3 && (cp < 0x10000 || cp > 0x10FFFF)))) {
+      valid = false;
+    }
+    i += n + 1;
+  }
+  if (converted) *converted = !valid;
+  if (valid) return std::string(text);
+  std::string out;
+  out.reserve(text.size() + text.size() / 8);
+  for (const char ch : text) {
+    const auto b = static_cast<unsigned char>(ch);
+    if (b < 0x80) {
+      out += ch;
+    } else {  // ISO 8859-1 is the first 256 code points of Unicode
+      out += static_cast<char>(0xC0U | (b >> 6));
+      out += static_cast<char>(0x80U | (b & 0x3FU));
+    }
   }
   return out;
 }

@@ -2,6 +2,8 @@
 // The meaning of a GSD ([PROFIBUS GSD spec]): what a master needs to know about a
 // slave. Produced by gsd::interpret() / gsd::parse() (interp.h).
 
+#include "gsd/error.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -139,6 +141,12 @@ struct Device {
   std::map<int, ExtParam> params;
   std::map<int, PrmText> prm_texts;
   std::vector<Module> modules;
+  // Slave_Family = main[@sub[@sub…]] ([PROFIBUS GSD spec Slave_Family]): 0 general, 1 drives,
+  // 2 switching devices, 3 I/O, … 9 gateways …; the sub-families as written ("AS-I").
+  std::optional<std::uint8_t> slave_family;
+  std::vector<std::string> sub_families;
+  std::vector<Warning> warnings;  // lines skipped (syntax::File::warnings)
+  bool latin1 = false;            // strings were ISO 8859-1, converted to UTF-8
 
   const Module* find_module(std::string_view name) const;  // case-insensitive
   const BaudRate* find_baud(std::uint32_t bits_per_second) const;

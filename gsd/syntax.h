@@ -55,7 +55,20 @@ struct Entry {
 struct File {
   std::string name;
   std::vector<Entry> entries;  // in file order, starting after #Profibus_DP
+  std::vector<Warning> warnings;  // lines skipped: words that are not GSD keywords
+  bool latin1 = false;            // the text was not UTF-8: read as ISO 8859-1
 };
+
+// A keyword of the GSD specification (revisions 1–5, slave and master keywords;
+// case-insensitive). A line whose keyword is not one is skipped with a warning, whatever
+// follows it; a line of a known keyword must be well formed.
+bool is_gsd_keyword(std::string_view keyword);
+
+// GSD files are ISO 8859-1 ([PROFIBUS GSD spec] character set; the French and German
+// variants carry letters such as é, ä in their strings and comments). Text that is valid
+// UTF-8 is returned as it is; anything else is read as ISO 8859-1 and converted to UTF-8.
+// `converted` (if given) tells which.
+std::string to_utf8(std::string_view text, bool* converted = nullptr);
 
 bool iequals(std::string_view a, std::string_view b);
 

@@ -146,6 +146,9 @@ int run_prm(const Options& o) {
     std::cerr << "rs4sim gsd: " << device.error().what() << "\n";
     return 1;
   }
+  for (const auto& w : device.value().warnings) {
+    std::cerr << "rs4sim gsd: warning: " << w.what() << "\n";
+  }
   auto config = gsd::configure(device.value(), {o.modules, overrides(o, builtin)});
   if (!config) {
     std::cerr << "rs4sim gsd: " << config.error().what() << "\n";

@@ -5,6 +5,8 @@
 //   rs4sim run --address 4 --address 5 --link pty          (two RS4s, two stations on one
 //                                                           link: pty, serial, udp)
 //   rs4sim run --device generic --address 5 --ident 0x1234 --cfg "10 20" --link pty
+//   rs4sim run --device generic --address 5 --gsd X.gse --module "DI 8" --link pty
+//   rs4sim run --bus bus.json --link pty                     (every station of the file)
 //   rs4sim run ... --link serial --port /dev/ttyUSB0 --baud 1.5M
 //   rs4sim run ... --link udp --listen 127.0.0.1:5001 --peer 127.0.0.1:5000
 //   rs4sim run ... --link memory --duration 10     (our master on the in-memory bus,
@@ -14,6 +16,7 @@
 // With --link pty the first line on stdout is the pty's slave path for the DP master (or
 // the byte device's client).
 #include "app/cli/command.h"
+#include "app/devices/bus_file.h"
 #include "app/devices/device_options.h"
 #include "app/runtime/grpc_cli.h"
 #include "app/cli/link_cli.h"
@@ -32,6 +35,7 @@ struct RunOptions {
   std::optional<std::string> blocked;
   DeviceOptions device_options;
   LinkOptions link;
+  std::string bus;  // --bus FILE.json (app/devices/bus_file.h)
 };
 
 std::string joined(const std::vector<std::string>& names) {
@@ -72,6 +76,16 @@ Action setup(CLI::App& cmd) {
                  "one real-time link)");
   cmd.add_option("--ident", d.ident, "generic: Ident_Number, e.g. 0x1234");
   cmd.add_option("--cfg", d.cfg, "generic: configuration identifiers in hex, e.g. \"10 20\"");
+  cmd.add_option("--gsd", d.gsd,
+                 "generic: the DP slave its GSD file describes (ident, Cfg, User_Prm_Data, "
+                 "rates, MaxTsdr, DPV1, Max_Diag_Data_Len)");
+  cmd.add_option("--module", d.modules,
+                 "with --gsd: a module by its GSD name, repeat it in slot order (a compact "
+                 "station's one module is implicit)");
+  cmd.add_option("--bus", o->bus,
+                 "a whole bus from FILE.json: {\"stations\": [{\"address\": 4, \"device\": "
+                 "\"rs4\"}, {\"address\": 5, \"gsd\": \"X.gse\", \"modules\": [...]}]}, all on "
+                 "the one link");
   cmd.add_option("--boot-time", d.boot_time_ms,
                  "rs4: boot time until operational in ms (default 30000)");
   cmd.add_option("--command-time", d.command_time_ms,
@@ -100,7 +114,19 @@ Action setup(CLI::App& cmd) {
       dev.more_addresses.assign(o->addresses.begin() + 1, o->addresses.end());
     }
     if (o->blocked) dev.blocked = parse_blocked(*o->blocked);
-    if (o->device.empty()) o->device = dev.ident.empty() && dev.cfg.empty() ? "rs4" : "generic";
+    if (!o->bus.empty()) {
+      if (!o->device.empty() || dev.address || !dev.gsd.empty() || !dev.ident.empty() ||
+          !dev.cfg.empty() || !dev.modules.empty()) {
+        throw UsageError("--bus " + o->bus + " describes the stations: --device, --address, "
+                         "--gsd, --module, --ident and --cfg go into the file");
+      }
+      return run_device(bus_device_entry(read_bus_file(o->bus, o->link.baud)), dev, o->link,
+                        std::cout);
+    }
+    if (o->device.empty()) {
+      o->device = dev.ident.empty() && dev.cfg.empty() && dev.gsd.empty() ? "rs4" : "generic";
+    }
+    dev.link_baud = o->link.baud;
     return run_device(*find_device(o->device), dev, o->link, std::cout);
   };
 }

@@ -1,8 +1,11 @@
 // Device entry `generic`: a generic DP-V1 slave (dp/devices) with the Ident_Number and
-// configuration identifiers given on the command line.
+// configuration identifiers given on the command line, or any DP slave from its GSD
+// (--gsd FILE [--module NAME]..., app/devices/gsd_station.h).
 #include "app/demos/demos.h"
 #include "app/devices/device_options.h"
 #include "app/devices/device_registry.h"
+#include "app/devices/gsd_segment.h"
+#include "app/devices/gsd_station.h"
 #include "app/runtime/run_options.h"
 #include "dp/devices/generic_bus.h"
 
@@ -78,9 +81,52 @@ class GenericSegment final : public SimulatedSegment {
   dp::devices::GenericBus bus_;
 };
 
+// --gsd: the station the GSD describes.
+class GsdInstance final : public DeviceInstance {
+ public:
+  explicit GsdInstance(GsdStationSpec spec) : station_(std::move(spec)) {}
+  std::vector<dp::Station*> stations() override { return {&station_}; }
+  [[nodiscard]] std::string describe() const override { return station_.describe(); }
+  void print_status(std::ostream& out, const dp::link::StationCounters& c) const override {
+    out << "slave " << int(station_.address()) << ": state "
+        << dp::slave::to_string(station_.slave().state()) << ", data exchanges "
+        << station_.application().exchanges() << ", telegrams received " << c.received
+        << ", sent " << c.sent << ", malformed " << c.malformed << ", link errors "
+        << c.send_errors;
+    if (!station_.application().prm_fault().empty()) {
+      out << ", Set_Prm refused: " << station_.application().prm_fault();
+    }
+    out << std::endl;
+  }
+
+ private:
+  GsdStation station_;
+};
+
+GsdStationSpec gsd_spec(const DeviceOptions& o, std::vector<std::string>* warnings) {
+  GsdStationSpec spec = load_gsd_station(o.gsd, o.modules, o.address.value_or(-1), warnings);
+  check_gsd_baud(spec, o.link_baud);
+  return spec;
+}
+
+void validate_gsd(DeviceOptions& o) {
+  if (!o.address) throw UsageError("--device generic --gsd needs --address");
+  refuse_unused(o, "generic --gsd", {DeviceFlag::kAddress, DeviceFlag::kGsd, DeviceFlag::kModule});
+  std::vector<std::string> warnings;
+  GsdStationSpec spec = gsd_spec(o, &warnings);
+  for (const auto& w : warnings) std::cerr << "warning: " << w << std::endl;
+  try {
+    GsdStation probe(std::move(spec));
+  } catch (const std::system_error& e) {
+    throw UsageError(o.gsd + ": the slave cannot take this GSD: " + e.what());
+  }
+}
+
 void validate(DeviceOptions& o) {
+  if (!o.gsd.empty()) return validate_gsd(o);
+  if (!o.modules.empty()) throw UsageError("--module needs --gsd FILE");
   if (!o.address || o.ident.empty() || o.cfg.empty()) {
-    throw UsageError("--device generic needs --address, --ident and --cfg");
+    throw UsageError("--device generic needs --address, --ident and --cfg (or --gsd FILE)");
   }
   refuse_unused(o, "generic", {DeviceFlag::kAddress, DeviceFlag::kIdent, DeviceFlag::kCfg});
   (void)slave_config(o);  // throws UsageError for a bad address, ident or cfg
@@ -93,8 +139,18 @@ DeviceEntry generic_device_entry() {
       "generic",
       10.0,
       validate,
-      [](const DeviceOptions& o) { return std::make_unique<GenericInstance>(slave_config(o)); },
-      [](const DeviceOptions& o) { return std::make_unique<GenericSegment>(slave_config(o)); },
+      [](const DeviceOptions& o) -> std::unique_ptr<DeviceInstance> {
+        if (!o.gsd.empty()) return std::make_unique<GsdInstance>(gsd_spec(o, nullptr));
+        return std::make_unique<GenericInstance>(slave_config(o));
+      },
+      [](const DeviceOptions& o) -> std::unique_ptr<SimulatedSegment> {
+        if (!o.gsd.empty()) {
+          std::vector<GsdStationSpec> specs;
+          specs.push_back(gsd_spec(o, nullptr));
+          return std::make_unique<GsdSegment>(std::move(specs), o.link_baud);
+        }
+        return std::make_unique<GenericSegment>(slave_config(o));
+      },
       run_generic_demo,
   };
 }

@@ -35,6 +35,8 @@ bool given(const DeviceOptions& o, DeviceFlag f) {
     case DeviceFlag::kPcAdapter: return !o.pc_adapter.empty();
     case DeviceFlag::kSerialNumber: return !o.serial_numbers.empty();
     case DeviceFlag::kState: return !o.state_files.empty();
+    case DeviceFlag::kGsd: return !o.gsd.empty();
+    case DeviceFlag::kModule: return !o.modules.empty();
   }
   return false;
 }
@@ -46,7 +48,8 @@ constexpr DeviceFlag kAllFlags[] = {
     DeviceFlag::kMode,        DeviceFlag::kBlocked,      DeviceFlag::kDoor,
     DeviceFlag::kNode,        DeviceFlag::kRs232,        DeviceFlag::kPcAdapter,
     DeviceFlag::kCommandTime, DeviceFlag::kResponseTime, DeviceFlag::kAddresses,
-    DeviceFlag::kSerialNumber, DeviceFlag::kState,
+    DeviceFlag::kSerialNumber, DeviceFlag::kState,        DeviceFlag::kGsd,
+    DeviceFlag::kModule,
 };
 
 // A whole decimal number in `text`, or nullopt.
@@ -72,6 +75,8 @@ int blocked_number(std::string_view item, std::string_view number) {
 const char* flag_name(DeviceFlag f) {
   switch (f) {
     case DeviceFlag::kAddress: return "--address";
+    case DeviceFlag::kGsd: return "--gsd";
+    case DeviceFlag::kModule: return "--module";
     case DeviceFlag::kAddresses: return "--address (repeated)";
     case DeviceFlag::kIdent: return "--ident";
     case DeviceFlag::kCfg: return "--cfg";

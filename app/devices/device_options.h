@@ -35,6 +35,8 @@ enum class DeviceFlag : std::uint8_t {
   kPcAdapter,
   kSerialNumber,
   kState,
+  kGsd,     // --gsd FILE (generic)
+  kModule,  // --module NAME, repeatable (with --gsd)
 };
 
 // "--elements".

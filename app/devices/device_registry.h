@@ -76,6 +76,12 @@ struct DeviceOptions {
   // rs4: --state FILE, one per --address in their order: the unit's non-volatile memory
   // (app/devices/rs4_state_file.h).
   std::vector<std::string> state_files;
+  // generic: --gsd FILE, the device's GSD (app/devices/gsd_station.h), and --module NAME
+  // in slot order (a compact station's one module is implicit).
+  std::string gsd;
+  std::vector<std::string> modules;
+  // The PROFIBUS rate of the run (--baud of a DP link), for checking it against a GSD.
+  std::string link_baud = "1.5M";
 };
 
 // A device's second serial port beside its main link (the RS4's RS232 interface): the shell

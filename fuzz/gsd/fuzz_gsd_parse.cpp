@@ -1,4 +1,5 @@
-// libFuzzer: any text → gsd::parse → (if it means something) gsd::configure.
+// libFuzzer: any text (ASCII, UTF-8 or ISO 8859-1) → gsd::parse → (if it means something)
+// gsd::configure. Seeds cover sub-families, Latin-1 text and skipped unknown keywords.
 // Must never crash, hang or leak; a successful configuration must be self-consistent.
 #include "gsd/cfg.h"
 #include "gsd/config.h"
@@ -34,6 +35,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
   const auto& d = device.value();
+  for (const auto& w : d.warnings) {
+    if (w.line <= 0 || w.what().empty()) __builtin_trap();  // a warning names its line
+  }
   if (auto c = rs4sim::gsd::configure(d, {})) check(c.value());
   rs4sim::gsd::ConfigRequest all;
   for (const auto& m : d.modules) {

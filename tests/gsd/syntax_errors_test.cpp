@@ -30,26 +30,38 @@ const Case kCases[] = {
      "bad.gsd:2: unterminated string: `\"abc`"},
     {"stray character", "#Profibus_DP\nIdent_Number = 0x12!4\n", GsdError::kSyntax,
      "bad.gsd:2: unexpected character '!': `Ident_Number = 0x12!4`"},
-    {"control byte", "#Profibus_DP\nA = \x01\n", GsdError::kSyntax,
-     "bad.gsd:2: unexpected byte 0x01: `A = \x01`"},
+    {"control byte", "#Profibus_DP\nVendor_Name = \x01\n", GsdError::kSyntax,
+     "bad.gsd:2: unexpected byte 0x01: `Vendor_Name = \x01`"},
     {"bad hex", "#Profibus_DP\nIdent_Number = 0x12G4\n", GsdError::kSyntax,
      "bad.gsd:2: malformed hex number: `0x12G4`"},
     {"bare 0x", "#Profibus_DP\nIdent_Number = 0x\n", GsdError::kSyntax,
      "bad.gsd:2: malformed hex number: `0x`"},
-    {"number too large", "#Profibus_DP\nA = 4294967296\n", GsdError::kSyntax,
+    {"number too large", "#Profibus_DP\nMax_Module = 4294967296\n", GsdError::kSyntax,
      "bad.gsd:2: number too large: `4294967296`"},
     {"nothing after =", "#Profibus_DP\nIdent_Number =\n", GsdError::kSyntax,
      "bad.gsd:2: value expected after '=' near 'end of line': `Ident_Number =`"},
-    {"dangling comma", "#Profibus_DP\nA = 1,\n", GsdError::kSyntax,
-     "bad.gsd:2: value expected near 'end of line': `A = 1,`"},
+    {"dangling comma", "#Profibus_DP\nUser_Prm_Data = 1,\n", GsdError::kSyntax,
+     "bad.gsd:2: value expected near 'end of line': `User_Prm_Data = 1,`"},
     {"unclosed args", "#Profibus_DP\nBit(0 1 0-1\n", GsdError::kSyntax,
      "bad.gsd:2: ')' expected near '1': `Bit(0 1 0-1`"},
     {"line starts with =", "#Profibus_DP\n= 5\n", GsdError::kSyntax,
      "bad.gsd:2: keyword expected near '=': `= 5`"},
-    {"range without high end", "#Profibus_DP\nA = 1-\n", GsdError::kSyntax,
-     "bad.gsd:2: number expected near 'end of line': `A = 1-`"},
+    {"range without high end", "#Profibus_DP\nUnsigned8 1 1-\n", GsdError::kSyntax,
+     "bad.gsd:2: number expected near 'end of line': `Unsigned8 1 1-`"},
     {"continuation at end of file", "#Profibus_DP\nA = 1, \\", GsdError::kSyntax,
      "bad.gsd:2: '\\' continues past the end of the file: `A = 1, `"},
+    {"unterminated module", "#Profibus_DP\nModule = \"DI 8\" 0x10\nUnit_Diag_!Bit(3) = \"x\"\n",
+     GsdError::kBlockStructure,
+     "bad.gsd:2: Module is not closed (EndModule missing): `Module = \"DI 8\" 0x10`"},
+    {"sub-family without family", "#Profibus_DP\nSlave_Family = @AS-I\n", GsdError::kBadValue,
+     "bad.gsd:2: Slave_Family expects a family number, optionally followed by @sub-families: "
+     "`Slave_Family = @AS-I`"},
+    {"family out of range", "#Profibus_DP\nSlave_Family = 256@X\n", GsdError::kOutOfRange,
+     "bad.gsd:2: Slave_Family = 256 is out of range 0..255: `Slave_Family = 256@X`"},
+    {"unterminated X_Unit_Diag_Area",
+     "#Profibus_DP\nX_Unit_Diag_Area = 16-17\nX_Value(0) = \"ok\"\n", GsdError::kBlockStructure,
+     "bad.gsd:2: X_Unit_Diag_Area is not closed (X_Unit_Diag_Area_End missing): "
+     "`X_Unit_Diag_Area = 16-17`"},
     {"End without block", "#Profibus_DP\nEndModule\n", GsdError::kBlockStructure,
      "bad.gsd:2: EndModule without Module: `EndModule`"},
     {"wrong End", "#Profibus_DP\nPrmText = 1\nText(0) = \"a\"\nEndModule\n",
@@ -73,7 +85,7 @@ TEST(GsdSyntaxErrors, EachMalformedClassHasItsMessage) {
 }
 
 TEST(GsdSyntaxErrors, LineNumberIsThePhysicalLineOfTheStatement) {
-  auto result = parse("; 1\n; 2\n#Profibus_DP\n\nA = 1, \\\n  2\nB = \"x\n", "f.gsd");
+  auto result = parse("; 1\n; 2\n#Profibus_DP\n\nA = 1, \\\n  2\nVendor_Name = \"x\n", "f.gsd");
   ASSERT_FALSE(result);
   EXPECT_EQ(result.error().line, 7);
   EXPECT_EQ(result.error().file, "f.gsd");

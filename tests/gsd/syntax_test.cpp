@@ -116,8 +116,8 @@ TEST(GsdStatement, KeywordComparisonIgnoresCase) {
 
 TEST(GsdParser, BlocksCollectTheirBodies) {
   auto f = parse_syntax(
-      "#Profibus_DP\nA = 1\nPrmText = 3\nText(0) = \"x\"\nEndPrmText\n"
-      "Module = \"m\" 0x10\n1\nEndModule\nB = 2\n",
+      "#Profibus_DP\nFail_Safe = 1\nPrmText = 3\nText(0) = \"x\"\nEndPrmText\n"
+      "Module = \"m\" 0x10\n1\nEndModule\nSync_Mode_supp = 2\n",
       "f.gsd");
   ASSERT_TRUE(f) << f.error().what();
   const auto& e = f.value().entries;
@@ -127,7 +127,7 @@ TEST(GsdParser, BlocksCollectTheirBodies) {
   EXPECT_EQ(e[1].body->size(), 1U);
   EXPECT_EQ(e[2].statement.line, 6);
   EXPECT_EQ(e[2].body->size(), 1U);
-  EXPECT_EQ(e[3].statement.keyword, "B");
+  EXPECT_EQ(e[3].statement.keyword, "Sync_Mode_supp");
 }
 
 TEST(GsdParser, EveryCorpusFileParses) {

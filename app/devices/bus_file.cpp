@@ -1,0 +1,330 @@
+// The bus file (bus_file.h). JSON is read with protobuf's JSON parser into a
+// google.protobuf.Value, as the parameter documents and archive files are: Debian 12's Boost
+// (1.74) has no Boost.JSON (it came with 1.75), and the project links protobuf anyway
+// (docs/decisions.md).
+#include "app/devices/bus_file.h"
+
+#include "app/devices/device_options.h"
+#include "app/devices/gsd_segment.h"
+#include "app/devices/gsd_station.h"
+#include "app/runtime/run_options.h"
+#include "app/runtime/usage_error.h"
+#include "dp/devices/generic_master_config.h"
+#include "dp/link/memory_bus.h"
+#include "dp/master/master.h"
+#include "rs4/device/rs4_master.h"
+
+#include <google/protobuf/struct.pb.h>
+#include <google/protobuf/util/json_util.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <ostream>
+#include <sstream>
+
+namespace rs4sim::app {
+namespace {
+
+using google::protobuf::Value;
+
+class Reader {
+ public:
+  Reader(std::string file, std::string dir) : file_(std::move(file)), dir_(std::move(dir)) {}
+
+  [[noreturn]] void fail(const std::string& path, const std::string& reason) const {
+    throw UsageError(file_ + ": " + path + ": " + reason);
+  }
+  const std::string& text(const Value& v, const std::string& path) const {
+    if (v.kind_case() != Value::kStringValue) fail(path, "expected a string");
+    return v.string_value();
+  }
+  long long integer(const Value& v, const std::string& path, long long lo, long long hi) const {
+    if (v.kind_case() != Value::kNumberValue || v.number_value() != std::floor(v.number_value())) {
+      fail(path, "expected an integer");
+    }
+    const double d = v.number_value();
+    if (d < static_cast<double>(lo) || d > static_cast<double>(hi)) {
+      fail(path, std::to_string(static_cast<long long>(d)) + " is outside " + std::to_string(lo) +
+                     ".." + std::to_string(hi));
+    }
+    return static_cast<long long>(d);
+  }
+  std::vector<std::string> texts(const Value& v, const std::string& path) const {
+    if (!v.has_list_value()) fail(path, "expected an array of strings");
+    std::vector<std::string> out;
+    for (int i = 0; i < v.list_value().values_size(); ++i) {
+      out.push_back(text(v.list_value().values(i), path + "[" + std::to_string(i) + "]"));
+    }
+    return out;
+  }
+  // A file named relative to the bus file; it must exist.
+  std::string file_name(const Value& v, const std::string& path) const {
+    std::filesystem::path p(text(v, path));
+    if (p.is_relative() && !dir_.empty()) p = std::filesystem::path(dir_) / p;
+    return p.string();
+  }
+  std::string existing_file(const Value& v, const std::string& path) const {
+    std::string name = file_name(v, path);
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(name, ec)) fail(path, "no file " + name);
+    return name;
+  }
+
+ private:
+  std::string file_;
+  std::string dir_;
+};
+
+// The keys of a station, as the `rs4sim run` options without the dashes.
+constexpr const char* kKeys[] = {"address", "device", "gsd", "modules", "ident", "cfg",
+                                 "boot-time", "command-time", "adapter-response-time",
+                                 "serial-number", "state", "rs232", "pc-adapter"};
+// The byte devices' options: those devices are not DP stations.
+constexpr const char* kByteKeys[] = {"baud", "format", "elements", "beams", "model",
+                                     "mode", "blocked", "door", "node"};
+
+BusStation read_station(const Reader& r, const Value& v, const std::string& path) {
+  if (!v.has_struct_value()) r.fail(path, "expected an object");
+  const auto& fields = v.struct_value().fields();
+  std::vector<std::string> keys;
+  for (const auto& [k, value] : fields) keys.push_back(k);
+  std::sort(keys.begin(), keys.end());  // the first refused key does not depend on map order
+  BusStation s;
+  s.path = path;
+  for (const auto& key : keys) {
+    const std::string at = path + "." + key;
+    if (std::find(std::begin(kByteKeys), std::end(kByteKeys), key) != std::end(kByteKeys)) {
+      r.fail(at, "an option of the RS-485 byte devices, which are not DP stations and cannot "
+                 "be on a DP bus");
+    }
+    if (std::find(std::begin(kKeys), std::end(kKeys), key) == std::end(kKeys)) {
+      std::string known;
+      for (const char* k : kKeys) known += (known.empty() ? "" : ", ") + std::string(k);
+      r.fail(at, "unknown key (a station takes: " + known + ")");
+    }
+  }
+  DeviceOptions& o = s.options;
+  for (const auto& key : keys) {
+    const Value& x = fields.at(key);
+    const std::string at = path + "." + key;
+    if (key == "address") o.address = static_cast<int>(r.integer(x, at, 0, 126));
+    if (key == "device") s.device = r.text(x, at);
+    if (key == "gsd") o.gsd = r.existing_file(x, at);
+    if (key == "modules") o.modules = r.texts(x, at);
+    if (key == "ident") o.ident = r.text(x, at);
+    if (key == "cfg") o.cfg = r.text(x, at);
+    if (key == "boot-time") o.boot_time_ms = static_cast<int>(r.integer(x, at, 0, 3'600'000));
+    if (key == "command-time") o.command_time_ms = static_cast<int>(r.integer(x, at, 0, 120'000));
+    if (key == "adapter-response-time") {
+      o.response_time_ms = static_cast<int>(r.integer(x, at, 0, 1000));
+    }
+    if (key == "serial-number") o.serial_numbers = {r.integer(x, at, 1, 4'294'967'295LL)};
+    if (key == "state") o.state_files = {r.file_name(x, at)};
+    if (key == "rs232") o.rs232 = r.text(x, at);
+    if (key == "pc-adapter") o.pc_adapter = r.text(x, at);
+  }
+  if (!o.address) r.fail(path, "\"address\" is missing");
+  if (s.device.empty()) {
+    if (o.gsd.empty() && o.ident.empty()) {
+      r.fail(path, "\"device\" is missing (or give \"gsd\" for a slave from its GSD file)");
+    }
+    s.device = "generic";
+  }
+  const DeviceEntry* entry = find_device(s.device);
+  if (entry == nullptr) {
+    std::string names;
+    for (const auto& n : device_names()) names += (names.empty() ? "" : ", ") + n;
+    r.fail(path + ".device", "no device \"" + s.device + "\" (devices: " + names + ")");
+  }
+  if (entry->byte_device || !entry->simulate) {
+    r.fail(path + ".device", "\"" + s.device + "\" is not a DP station and cannot be on a DP bus");
+  }
+  return s;
+}
+
+}  // namespace
+
+BusFile parse_bus_file(const std::string& text, const std::string& file, const std::string& dir,
+                       const std::string& link_baud) {
+  Reader r(file, dir);
+  Value root;
+  const auto status = google::protobuf::util::JsonStringToMessage(text, &root, {});
+  if (!status.ok()) r.fail("$", "not valid JSON: " + std::string(status.message()));
+  if (!root.has_struct_value()) r.fail("$", "expected an object {\"stations\": [...]}");
+  for (const auto& [key, value] : root.struct_value().fields()) {
+    if (key != "stations") r.fail("$." + key, "unknown key (the bus file takes: stations)");
+  }
+  const auto it = root.struct_value().fields().find("stations");
+  if (it == root.struct_value().fields().end()) r.fail("$", "\"stations\" is missing");
+  if (!it->second.has_list_value() || it->second.list_value().values_size() == 0) {
+    r.fail("$.stations", "expected a non-empty array of stations");
+  }
+  BusFile bus;
+  bus.file = file;
+  std::map<int, std::string> used;  // address → path
+  const auto& list = it->second.list_value();
+  for (int i = 0; i < list.values_size(); ++i) {
+    const std::string path = "$.stations[" + std::to_string(i) + "]";
+    BusStation s = read_station(r, list.values(i), path);
+    const int a = *s.options.address;
+    if (const auto u = used.find(a); u != used.end()) {
+      r.fail(path + ".address", std::to_string(a) + " is already used by " + u->second);
+    }
+    used.emplace(a, path);
+    s.options.link_baud = link_baud;
+    try {
+      find_device(s.device)->validate(s.options);
+    } catch (const UsageError& e) {
+      r.fail(path, e.what());
+    }
+    bus.stations.push_back(std::move(s));
+  }
+  return bus;
+}
+
+BusFile read_bus_file(const std::string& file, const std::string& link_baud) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw UsageError(file + ": cannot read the bus file");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return parse_bus_file(s.str(), file, std::filesystem::path(file).parent_path().string(),
+                        link_baud);
+}
+
+namespace {
+
+// Every station's instance on one real-time link.
+class BusInstance final : public DeviceInstance {
+ public:
+  explicit BusInstance(const BusFile& bus) : file_(bus.file) {
+    for (const auto& s : bus.stations) {
+      children_.push_back(find_device(s.device)->build(s.options));
+    }
+  }
+  std::vector<dp::Station*> stations() override {
+    std::vector<dp::Station*> all;
+    for (auto& c : children_) {
+      for (dp::Station* s : c->stations()) all.push_back(s);
+    }
+    return all;
+  }
+  void start(dp::TimePoint now) override {
+    for (auto& c : children_) c->start(now);
+  }
+  [[nodiscard]] std::string describe() const override {
+    std::string d = "bus " + file_ + " (" + std::to_string(children_.size()) + " stations: ";
+    for (std::size_t i = 0; i < children_.size(); ++i) {
+      d += (i ? "; " : "") + children_[i]->describe();
+    }
+    return d + ")";
+  }
+  void print_status(std::ostream& out, const dp::link::StationCounters& link) const override {
+    out << "link: telegrams received " << link.received << ", sent " << link.sent
+        << ", malformed " << link.malformed << ", link errors " << link.send_errors << std::endl;
+    for (const auto& c : children_) c->print_status(out, link);
+  }
+
+ private:
+  std::string file_;
+  std::vector<std::unique_ptr<DeviceInstance>> children_;
+};
+
+// The master's entry for a station that is not a GSD station.
+dp::master::SlaveEntry master_entry(const BusStation& s) {
+  const DeviceOptions& o = s.options;
+  if (!o.gsd.empty() && s.device == "generic") {
+    return gsd_master_entry(load_gsd_station(o.gsd, o.modules, *o.address),
+                            std::chrono::milliseconds(100));
+  }
+  if (s.device == "generic") {
+    return dp::devices::master_entry_for(generic_slave_config(*o.address, o.ident, o.cfg));
+  }
+  rs4::device::Rs4MasterOptions r;
+  r.address = static_cast<std::uint8_t>(*o.address);
+  auto e = rs4::device::rs4_master_entry(r);
+  if (!e) throw UsageError(s.path + ": " + e.error().what());
+  return e.value().slave;
+}
+
+// Every station with our master on the in-memory bus.
+class BusSegment final : public SimulatedSegment {
+ public:
+  explicit BusSegment(const BusFile& bus) {
+    dp::master::MasterConfig m;
+    const std::string baud = bus.stations.front().options.link_baud;
+    m.bus = dp::master::BusParameters::defaults_for(*dp::parse_baud_rate(baud));
+    std::vector<std::uint8_t> addresses;
+    for (const auto& s : bus.stations) {
+      if (!s.options.gsd.empty() && s.device == "generic") {
+        const auto spec = load_gsd_station(s.options.gsd, s.options.modules, *s.options.address);
+        if (const auto t = gsd_max_tsdr(spec, baud)) fit_max_tsdr(m.bus, *t);
+      }
+      m.slaves.push_back(master_entry(s));
+      addresses.push_back(static_cast<std::uint8_t>(*s.options.address));
+    }
+    m.address = free_master_address(addresses);
+    master_address_ = m.address;
+    bus_ = std::make_unique<dp::link::MemoryBus>(clock_);
+    master_ = std::make_unique<dp::master::Master>(m);
+    bus_->attach(*master_);
+    for (const auto& s : bus.stations) {
+      children_.push_back(find_device(s.device)->build(s.options));
+      children_.back()->start(clock_.now());
+      for (dp::Station* st : children_.back()->stations()) bus_->attach(*st);
+    }
+    addresses_ = addresses;
+    bus_->start();
+  }
+  void run_for(dp::Duration d) override {
+    bus_->run_until([] { return false; }, clock_.now() + d,
+                    [this] { master_->take_events(events_); });
+    events_.clear();
+  }
+  [[nodiscard]] std::uint8_t master_address() const override { return master_address_; }
+  [[nodiscard]] std::size_t in_data_exchange() const {
+    return static_cast<std::size_t>(std::count_if(addresses_.begin(), addresses_.end(), [&](auto a) {
+      return master_->poll_state(a) == dp::master::PollState::kDataExchange;
+    }));
+  }
+  void print_summary(std::ostream& out) const override {
+    out << ": " << master_->counters().cycles << " cycles, " << in_data_exchange() << " of "
+        << addresses_.size() << " stations in data exchange" << std::endl;
+    for (std::size_t i = 0; i < children_.size(); ++i) {
+      children_[i]->print_status(out, bus_->counters(addresses_[i]));
+    }
+  }
+  [[nodiscard]] bool healthy() const override { return in_data_exchange() == addresses_.size(); }
+  dp::link::MemoryBus* bus() override { return bus_.get(); }
+
+ private:
+  dp::ManualClock clock_;
+  std::unique_ptr<dp::link::MemoryBus> bus_;
+  std::unique_ptr<dp::master::Master> master_;
+  std::vector<std::unique_ptr<DeviceInstance>> children_;
+  std::vector<std::uint8_t> addresses_;
+  std::uint8_t master_address_ = 1;
+  std::vector<dp::master::MasterEvent> events_;
+};
+
+}  // namespace
+
+DeviceEntry bus_device_entry(BusFile bus) {
+  double simulated = 1;
+  for (const auto& s : bus.stations) {
+    simulated = std::max(simulated, find_device(s.device)->simulated_seconds);
+  }
+  auto shared = std::make_shared<const BusFile>(std::move(bus));
+  return {
+      "bus",
+      simulated,
+      [](DeviceOptions&) {},  // every station was validated by read_bus_file
+      [shared](const DeviceOptions&) { return std::make_unique<BusInstance>(*shared); },
+      [shared](const DeviceOptions&) { return std::make_unique<BusSegment>(*shared); },
+      {},
+  };
+}
+
+}  // namespace rs4sim::app

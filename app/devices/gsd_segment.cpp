@@ -1,0 +1,86 @@
+#include "app/devices/gsd_segment.h"
+
+#include "app/runtime/usage_error.h"
+#include "dp/time/baud_rate.h"
+
+#include <algorithm>
+#include <ostream>
+
+namespace rs4sim::app {
+
+std::uint8_t free_master_address(const std::vector<std::uint8_t>& stations) {
+  for (std::uint8_t a = 1; a < 126; ++a) {
+    if (std::find(stations.begin(), stations.end(), a) == stations.end()) return a;
+  }
+  return 0;
+}
+
+void fit_max_tsdr(dp::master::BusParameters& bus, std::uint16_t max_tsdr) {
+  if (max_tsdr <= bus.max_tsdr) return;
+  if (max_tsdr > 1023 || bus.tsl + (max_tsdr - bus.max_tsdr) > 16383) {
+    throw UsageError("MaxTsdr " + std::to_string(max_tsdr) +
+                     " Tbit is beyond what the bus parameters allow (max TSDR 1023, TSL 16383, "
+                     "[IEC 61158-4-3 bus parameters, timing])");
+  }
+  bus.tsl += max_tsdr - bus.max_tsdr;
+  bus.max_tsdr = max_tsdr;
+  bus.tid2 = std::max(bus.tid2, bus.max_tsdr);
+}
+
+GsdSegment::GsdSegment(std::vector<GsdStationSpec> specs, const std::string& baud,
+                       dp::Duration cycle_target) {
+  const auto rate = dp::parse_baud_rate(baud);
+  if (!rate) throw UsageError("--baud " + baud + " is not a PROFIBUS rate");
+  dp::master::MasterConfig m;
+  m.bus = dp::master::BusParameters::defaults_for(*rate);
+  m.cycle_target = cycle_target;
+  std::vector<std::uint8_t> addresses;
+  for (const auto& s : specs) {
+    check_gsd_baud(s, baud);
+    if (const auto t = gsd_max_tsdr(s, baud)) fit_max_tsdr(m.bus, *t);
+    m.slaves.push_back(gsd_master_entry(s, std::chrono::milliseconds(100)));
+    addresses.push_back(s.address);
+  }
+  master_address_ = free_master_address(addresses);
+  m.address = master_address_;
+  bus_ = std::make_unique<dp::link::MemoryBus>(clock_);
+  master_ = std::make_unique<dp::master::Master>(m);
+  bus_->attach(*master_);
+  for (auto& s : specs) {
+    stations_.push_back(std::make_unique<GsdStation>(std::move(s)));
+    bus_->attach(*stations_.back());
+  }
+  bus_->start();
+}
+
+void GsdSegment::run_for(dp::Duration d) {
+  bus_->run_until([] { return false; }, clock_.now() + d, [this] { master_->take_events(events_); });
+  events_.clear();
+}
+
+std::size_t GsdSegment::in_data_exchange() const {
+  std::size_t n = 0;
+  for (const auto& s : stations_) {
+    if (master_->poll_state(s->address()) == dp::master::PollState::kDataExchange) ++n;
+  }
+  return n;
+}
+
+bool GsdSegment::healthy() const { return in_data_exchange() == stations_.size(); }
+
+void GsdSegment::print_summary(std::ostream& out) const {
+  out << ": " << master_->counters().cycles << " cycles, " << in_data_exchange() << " of "
+      << stations_.size() << " GSD stations in data exchange" << std::endl;
+  for (const auto& s : stations_) {
+    const auto& c = bus_->counters(s->address());
+    out << s->describe() << ": state " << dp::slave::to_string(s->slave().state())
+        << ", data exchanges " << s->application().exchanges() << ", telegrams received "
+        << c.received << ", sent " << c.sent;
+    if (!s->application().prm_fault().empty()) {
+      out << ", Set_Prm refused: " << s->application().prm_fault();
+    }
+    out << std::endl;
+  }
+}
+
+}  // namespace rs4sim::app

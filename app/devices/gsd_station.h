@@ -1,0 +1,159 @@
+#pragma once
+// A DP slave described by its GSD ([PROFIBUS GSD spec]): `rs4sim run --device generic --gsd FILE
+// [--module NAME]...` and the stations of a bus file (app/devices/bus_file.h).
+//
+// What the GSD declares, the station does:
+//   * Ident_Number (Set_Prm with another one → Prm_Fault, [IEC 61158-6-3 Set_Prm]);
+//   * Chk_Cfg = the chosen modules' Cfg bytes in slot order (anything else → Cfg_Fault,
+//     [IEC 61158-6-3 Chk_Cfg/Get_Cfg]; with DPV1 Check_Cfg_Mode the same I/O lengths suffice);
+//   * User_Prm_Data as gsd::configure lays it out: another length, or a parameter outside its
+//     GSD range or list → Prm_Fault in the diagnosis (gsd::check_user_prm);
+//   * DPV1_Slave, C1/C2_Read_Write_supp and their Max_Data_Len, Fail_Safe, WD_Base_1ms_supp,
+//     Sync/Freeze/Set_Slave_Add support, Max_Diag_Data_Len;
+//   * the I/O lengths of the modules: the inputs are what the harness set (per module, zero at
+//     start), the outputs what the master wrote.
+// The supported baud rates and MaxTsdr are checked by the entry against the run's rate and
+// given to our master (GsdStationSpec::max_tsdr).
+//
+// The DPV1 record store and the alarm trigger record are the generic device's
+// (dp/devices/generic_device.h).
+
+#include "dp/devices/generic_device.h"
+#include "dp/master/master_config.h"
+#include "dp/slave/slave.h"
+#include "gsd/config.h"
+#include "gsd/model.h"
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <system_error>
+#include <vector>
+
+namespace rs4sim::app {
+
+// One GSD station as configured: the parsed file, the chosen modules, the address.
+struct GsdStationSpec {
+  std::string file;  // as given (for messages and listings)
+  std::shared_ptr<const gsd::Device> device;
+  gsd::SlaveSetup setup;  // gsd::configure with the chosen modules, default parameters
+  std::uint8_t address = 126;
+  struct ModuleIo {
+    std::string name;
+    std::size_t input_offset = 0, input_len = 0;
+    std::size_t output_offset = 0, output_len = 0;
+  };
+  std::vector<ModuleIo> modules;  // slot order
+};
+
+// Parses `path` and configures `modules` (empty: a compact station's one module). Throws
+// UsageError (exit 2) with file:line and the reason: unreadable file, not a GSD, a syntax or
+// meaning error, an unknown module (the message lists the file's modules). `warnings` gets the
+// lines the parser skipped ("file:line: …").
+GsdStationSpec load_gsd_station(const std::string& path, const std::vector<std::string>& modules,
+                                int address, std::vector<std::string>* warnings = nullptr);
+
+// Throws UsageError when the GSD does not support `baud` ("1.5M"; the supported ones listed).
+void check_gsd_baud(const GsdStationSpec& spec, const std::string& baud);
+// MaxTsdr of the GSD at `baud` (Tbit), or nullopt when the file does not say.
+std::optional<std::uint16_t> gsd_max_tsdr(const GsdStationSpec& spec, const std::string& baud);
+
+// Our class 1 master's entry for the station, from the same GSD: Set_Prm (Lock_Req, WD_On, the
+// GSD's ident and User_Prm_Data), Chk_Cfg, image lengths, C1 timeout.
+dp::master::SlaveEntry gsd_master_entry(const GsdStationSpec& spec,
+                                        std::chrono::milliseconds watchdog);
+
+class GsdApplication final : public dp::slave::SlaveApplication {
+ public:
+  explicit GsdApplication(const GsdStationSpec& spec);
+
+  void on_attach(dp::slave::SlaveControl& control) override {
+    control_ = &control;
+    generic_.on_attach(control);
+  }
+  dp::slave::PrmVerdict check_parameters(const dp::pdu::SetPrm& prm, dp::TimePoint now) override;
+  dp::slave::CfgVerdict check_config(std::span<const std::uint8_t> cfg, bool user_check,
+                                     dp::TimePoint now) override {
+    return generic_.check_config(cfg, user_check, now);
+  }
+  [[nodiscard]] std::span<const std::uint8_t> real_config() const override {
+    return generic_.real_config();
+  }
+  void on_outputs(std::span<const std::uint8_t> outputs, dp::TimePoint now) override {
+    generic_.on_outputs(outputs, now);
+  }
+  void on_outputs_cleared(dp::slave::OutputClear why, dp::TimePoint now) override {
+    generic_.on_outputs_cleared(why, now);
+  }
+  void read_inputs(std::span<std::uint8_t> inputs, dp::TimePoint now) override;
+  void on_state_change(dp::slave::State from, dp::slave::State to,
+                       dp::slave::TransitionReason why, dp::TimePoint now) override {
+    generic_.on_state_change(from, to, why, now);
+  }
+  dp::slave::AcyclicResult on_acyclic(const dp::slave::AcyclicRequest& req,
+                                      dp::TimePoint now) override {
+    return generic_.on_acyclic(req, now);
+  }
+  void on_alarm_acknowledged(const dp::slave::AlarmAck& ack, dp::TimePoint now) override {
+    generic_.on_alarm_acknowledged(ack, now);
+  }
+
+  // The module's inputs (slot index, 0-based): `bytes` must be exactly its input length.
+  // std::errc::invalid_argument otherwise.
+  std::error_code set_inputs(std::size_t module, std::span<const std::uint8_t> bytes);
+  [[nodiscard]] std::span<const std::uint8_t> inputs() const { return inputs_; }
+  [[nodiscard]] std::span<const std::uint8_t> outputs() const { return generic_.outputs(); }
+  [[nodiscard]] std::uint64_t exchanges() const { return generic_.exchanges(); }
+  // Why the last Set_Prm was refused (empty: accepted or none yet).
+  [[nodiscard]] const std::string& prm_fault() const { return prm_fault_; }
+  [[nodiscard]] std::span<const std::uint8_t> user_prm_data() const { return user_prm_; }
+
+ private:
+  const GsdStationSpec& spec_;
+  dp::devices::GenericDevice generic_;
+  dp::slave::SlaveControl* control_ = nullptr;
+  std::vector<std::uint8_t> inputs_;
+  std::vector<std::uint8_t> user_prm_;
+  std::string prm_fault_;
+};
+
+class GsdStation final : public dp::Station {
+ public:
+  // Throws std::system_error for a slave configuration dp::slave refuses.
+  explicit GsdStation(GsdStationSpec spec);
+  GsdStation(const GsdStation&) = delete;
+  GsdStation& operator=(const GsdStation&) = delete;
+
+  [[nodiscard]] std::uint8_t address() const override { return slave_.address(); }
+  void on_telegram(const dp::fdl::Telegram& t, dp::TimePoint now) override {
+    slave_.on_telegram(t, now);
+  }
+  void on_time(dp::TimePoint now) override { slave_.on_time(now); }
+  [[nodiscard]] std::optional<dp::TimePoint> next_deadline() const override {
+    return slave_.next_deadline();
+  }
+  std::optional<dp::fdl::Telegram> take_transmit() override { return slave_.take_transmit(); }
+  const dp::fdl::Telegram* next_transmit(dp::fdl::Telegram& scratch) override {
+    return slave_.next_transmit(scratch);
+  }
+  void on_malformed_frame(std::error_code why) override { slave_.on_malformed_frame(why); }
+  [[nodiscard]] std::uint16_t min_tsdr_bits() const override { return slave_.min_tsdr_bits(); }
+
+  [[nodiscard]] const GsdStationSpec& spec() const { return *spec_; }
+  [[nodiscard]] GsdApplication& application() { return app_; }
+  [[nodiscard]] const GsdApplication& application() const { return app_; }
+  [[nodiscard]] dp::slave::Slave& slave() { return slave_; }
+  [[nodiscard]] const dp::slave::Slave& slave() const { return slave_; }
+  // "GSD slave 5 (X.gse, ident 0x0B4E, modules "A", "B", cfg 33 51)"
+  [[nodiscard]] std::string describe() const;
+
+ private:
+  static dp::slave::Config slave_config(const GsdStationSpec& spec);
+
+  std::unique_ptr<const GsdStationSpec> spec_;  // stable address for app_
+  GsdApplication app_;
+  dp::slave::Slave slave_;
+};
+
+}  // namespace rs4sim::app
