@@ -38,17 +38,9 @@ class Demo {
     return in_session(std::move(run), bus_.clock(), realtime, session);
   }
   int run() {
-    try {
-      const bool ok =
-          run_steps({[this] { return start_up(); }, [this] { return data_exchange(); },
-                     [this] { return dpv1(); }, [this] { return alarm(); },
-                     [this] { return watchdog(); }});
-      n_.print(ok ? "\ndemo: all steps passed\n" : "\ndemo: FAILED\n");
-      return ok ? 0 : 1;
-    } catch (const DemoInterrupted&) {
-      n_.print("\ndemo interrupted\n");
-      return kInterruptedExit;
-    }
+    return run_story(n_, {[this] { return start_up(); }, [this] { return data_exchange(); },
+                          [this] { return dpv1(); }, [this] { return alarm(); },
+                          [this] { return watchdog(); }});
   }
 
  private:

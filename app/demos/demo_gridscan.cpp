@@ -45,18 +45,11 @@ class Demo {
     line_.set_peer([this](const stream::LineFrame& f) { arrived_.push_back(f.bytes); });
   }
   int run() {
-    try {
-      n_.print("GridScan/Pro SI, RC: 22 elements, blanking, door open; 115200 8N1 "
-               "[GridScan manual §9.1]\n");
-      const bool ok = run_steps({[this] { return power_up("power-up"); },
-                                 [this] { return communication_test(); },
-                                 [this] { return power_cycle(); }});
-      n_.print(ok ? "\ndemo: all steps passed\n" : "\ndemo: FAILED\n");
-      return ok ? 0 : 1;
-    } catch (const DemoInterrupted&) {
-      n_.print("\ndemo interrupted\n");
-      return kInterruptedExit;
-    }
+    n_.print("GridScan/Pro SI, RC: 22 elements, blanking, door open; 115200 8N1 "
+             "[GridScan manual §9.1]\n");
+    return run_story(n_, {[this] { return power_up("power-up"); },
+                          [this] { return communication_test(); },
+                          [this] { return power_cycle(); }});
   }
 
  private:

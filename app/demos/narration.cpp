@@ -106,4 +106,15 @@ bool run_steps(const std::vector<std::function<bool()>>& steps) {
   return std::all_of(steps.begin(), steps.end(), [](const auto& step) { return step(); });
 }
 
+int run_story(const Narration& n, const std::vector<std::function<bool()>>& steps) {
+  try {
+    const bool ok = run_steps(steps);
+    n.print(ok ? "\ndemo: all steps passed\n" : "\ndemo: FAILED\n");
+    return ok ? 0 : 1;
+  } catch (const DemoInterrupted&) {
+    n.print("\ndemo interrupted\n");
+    return kInterruptedExit;
+  }
+}
+
 }  // namespace rs4sim::app

@@ -80,4 +80,8 @@ RunUntil in_session(RunUntil run, const dp::Clock& clock, bool realtime, RunSess
 // Runs the steps in order until one fails; returns true when all passed.
 bool run_steps(const std::vector<std::function<bool()>>& steps);
 
+// A demo's whole story: the steps in order until one fails, then "demo: all steps passed" or
+// "demo: FAILED" (exit 0 / 1), or "demo interrupted" (exit 130) on DemoInterrupted.
+int run_story(const Narration& n, const std::vector<std::function<bool()>>& steps);
+
 }  // namespace rs4sim::app
