@@ -19,7 +19,8 @@ grpc::Status check_count(std::uint32_t count) {
   return grpc::Status::OK;
 }
 
-// The link fault of the request, or the INVALID_ARGUMENT naming the field.
+}  // namespace
+
 grpc::Status to_bus_fault(const v1::BusFaultRequest& in, dp::link::Fault& out) {
   switch (in.kind()) {
     case v1::BUS_FAULT_KIND_DROP: out.kind = dp::link::FaultKind::kDrop; break;
@@ -44,8 +45,6 @@ grpc::Status to_bus_fault(const v1::BusFaultRequest& in, dp::link::Fault& out) {
   out.bit = in.bit();
   return grpc::Status::OK;
 }
-
-}  // namespace
 
 grpc::Status FaultsService::InjectBusFault(grpc::ServerContext*, const v1::BusFaultRequest* in,
                                            v1::BusFaultResponse* out) {

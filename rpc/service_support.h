@@ -26,4 +26,8 @@ grpc::Status needs_simulated_bus();
 
 std::int64_t to_ns(dp::TimePoint t);
 
+// The link fault of a Faults.InjectBusFault request (GsdStations.InjectBusFault too), or the
+// INVALID_ARGUMENT naming the field.
+grpc::Status to_bus_fault(const v1::BusFaultRequest& in, dp::link::Fault& out);
+
 }  // namespace rs4sim::rpc

@@ -5,9 +5,13 @@
 #include "app/devices/device_options.h"
 #include "app/devices/device_registry.h"
 #include "app/devices/gsd_segment.h"
+#include "app/devices/gsd_service.h"
 #include "app/devices/gsd_station.h"
 #include "app/runtime/run_options.h"
 #include "dp/devices/generic_bus.h"
+#include "rpc/device_target.h"
+#include "rpc/rs4_services.h"
+#include "rpc/tapped_station.h"
 
 #include <cstdio>
 #include <iostream>
@@ -81,11 +85,24 @@ class GenericSegment final : public SimulatedSegment {
   dp::devices::GenericBus bus_;
 };
 
-// --gsd: the station the GSD describes.
+// --gsd: the station the GSD describes, with rs4sim.v1.GsdStations and the event stream
+// (docs/gsd.md "Harness API").
 class GsdInstance final : public DeviceInstance {
  public:
   explicit GsdInstance(GsdStationSpec spec) : station_(std::move(spec)) {}
-  std::vector<dp::Station*> stations() override { return {&station_}; }
+  std::vector<dp::Station*> stations() override { return {&tap_}; }
+  ServiceList services(const ServiceContext& c) override {
+    target_ = std::make_unique<rpc::LineDeviceTarget>("gsd", gsd_watcher(station_), c.clock, c.io);
+    tap_.set_hub(target_->events());
+    auto* hub = target_->events();
+    const dp::Clock& clock = c.clock;
+    GsdServiceContext g{c.executor, {&station_}, [hub, &clock] { hub->poll(clock.now()); }};
+    return {std::make_shared<GsdStationsService>(std::move(g)),
+            std::make_shared<rpc::ObservationService>(rpc::Rs4Context{*target_, c.executor})};
+  }
+  void stop_services() override {
+    if (target_) target_->stop();
+  }
   [[nodiscard]] std::string describe() const override { return station_.describe(); }
   void print_status(std::ostream& out, const dp::link::StationCounters& c) const override {
     out << "slave " << int(station_.address()) << ": state "
@@ -101,6 +118,8 @@ class GsdInstance final : public DeviceInstance {
 
  private:
   GsdStation station_;
+  rpc::TappedStation tap_{station_};  // telegrams for the event stream
+  std::unique_ptr<rpc::LineDeviceTarget> target_;
 };
 
 GsdStationSpec gsd_spec(const DeviceOptions& o, std::vector<std::string>* warnings) {

@@ -152,6 +152,14 @@ std::error_code GsdApplication::set_inputs(std::size_t module, std::span<const s
   return {};
 }
 
+std::error_code GsdApplication::set_diagnosis(std::span<const std::uint8_t> blocks, bool ext_diag) {
+  if (control_ == nullptr) return std::make_error_code(std::errc::not_connected);
+  if (auto e = control_->set_device_diagnosis(blocks, ext_diag, false)) return e;
+  diag_.assign(blocks.begin(), blocks.end());
+  ext_diag_ = ext_diag;
+  return {};
+}
+
 dp::slave::Config GsdStation::slave_config(const GsdStationSpec& spec) {
   return gsd::dp_slave_config(*spec.device, spec.address);
 }

@@ -108,6 +108,16 @@ class GsdApplication final : public dp::slave::SlaveApplication {
   // Why the last Set_Prm was refused (empty: accepted or none yet).
   [[nodiscard]] const std::string& prm_fault() const { return prm_fault_; }
   [[nodiscard]] std::span<const std::uint8_t> user_prm_data() const { return user_prm_; }
+  // The harness API (app/devices/gsd_service.h): Ext_Diag and the device-related diagnosis
+  // blocks (errors as SlaveControl::set_device_diagnosis), a DPV1 alarm (errors as
+  // GenericDevice::raise_alarm).
+  std::error_code set_diagnosis(std::span<const std::uint8_t> blocks, bool ext_diag);
+  std::error_code raise_alarm(std::uint8_t type, std::uint8_t slot,
+                              std::span<const std::uint8_t> user_data) {
+    return generic_.raise_alarm(type, slot, user_data);
+  }
+  [[nodiscard]] std::span<const std::uint8_t> diagnosis_blocks() const { return diag_; }
+  [[nodiscard]] bool ext_diag() const { return ext_diag_; }
 
  private:
   const GsdStationSpec& spec_;
@@ -116,6 +126,8 @@ class GsdApplication final : public dp::slave::SlaveApplication {
   std::vector<std::uint8_t> inputs_;
   std::vector<std::uint8_t> user_prm_;
   std::string prm_fault_;
+  std::vector<std::uint8_t> diag_;
+  bool ext_diag_ = false;
 };
 
 class GsdStation final : public dp::Station {
@@ -127,7 +139,7 @@ class GsdStation final : public dp::Station {
 
   [[nodiscard]] std::uint8_t address() const override { return slave_.address(); }
   void on_telegram(const dp::fdl::Telegram& t, dp::TimePoint now) override {
-    slave_.on_telegram(t, now);
+    if (online_) slave_.on_telegram(t, now);
   }
   void on_time(dp::TimePoint now) override { slave_.on_time(now); }
   [[nodiscard]] std::optional<dp::TimePoint> next_deadline() const override {
@@ -141,6 +153,10 @@ class GsdStation final : public dp::Station {
   [[nodiscard]] std::uint16_t min_tsdr_bits() const override { return slave_.min_tsdr_bits(); }
 
   [[nodiscard]] const GsdStationSpec& spec() const { return *spec_; }
+  // Off the bus (the connector pulled): the station hears nothing and so answers nothing; its
+  // watchdog runs on, as a powered station's does. Back on: it answers again.
+  void set_online(bool online) noexcept { online_ = online; }
+  [[nodiscard]] bool online() const noexcept { return online_; }
   [[nodiscard]] GsdApplication& application() { return app_; }
   [[nodiscard]] const GsdApplication& application() const { return app_; }
   [[nodiscard]] dp::slave::Slave& slave() { return slave_; }
@@ -154,6 +170,7 @@ class GsdStation final : public dp::Station {
   std::unique_ptr<const GsdStationSpec> spec_;  // stable address for app_
   GsdApplication app_;
   dp::slave::Slave slave_;
+  bool online_ = true;
 };
 
 }  // namespace rs4sim::app

@@ -1,6 +1,7 @@
 """rs4sim: the Python client of the rs4sim simulator's gRPC API (docs/rpc.md).
 
     Rs4, GridScan, Metron, Polaris   one device of a running rs4sim (rs4sim.harness)
+    GsdStations                      the GSD stations of a running rs4sim (rs4sim.gsd)
     Master                           a running `rs4sim master --grpc`: proxy and archive
     error_details, open_channel      a failed call's details; a channel with TLS/token
     Rs4simProcess                    start rs4sim, read its API address, end it (rs4sim.process)
@@ -22,10 +23,14 @@ _HARNESS = ("Rs4", "Master", "GridScan", "Metron", "Polaris", "error_details", "
             "pb", "pb_grpc", "archive_pb", "archive_grpc", "proxy_pb", "proxy_grpc", "dev_pb",
             "dev_grpc", "status_pb2", "error_details_pb2")
 
-__all__ = ["Rs4simError", "Rs4simProcess", "find_executable", "__version__", *_HARNESS]
+__all__ = ["Rs4simError", "Rs4simProcess", "find_executable", "__version__", *_HARNESS,
+           "GsdStations"]
 
 
 def __getattr__(name):
+    if name == "GsdStations":
+        from . import gsd
+        return gsd.GsdStations
     if name in _HARNESS:
         from . import harness
         return getattr(harness, name)
@@ -33,4 +38,4 @@ def __getattr__(name):
 
 
 def __dir__():
-    return sorted(set(globals()) | set(_HARNESS))
+    return sorted(set(globals()) | set(_HARNESS) | {"GsdStations"})

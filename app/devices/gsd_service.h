@@ -1,0 +1,57 @@
+#pragma once
+// rs4sim.v1.GsdStations (rpc/proto/rs4sim/v1/gsd.proto, docs/gsd.md "Harness API"): the GSD
+// stations of a run driven from a harness. As with the other services a request is checked on
+// the gRPC thread (INVALID_ARGUMENT with the field), then runs on the loop through the
+// Executor; after a change `changed` runs there (the event hub looks at once).
+
+#include "app/devices/gsd_station.h"
+#include "dp/link/memory_bus.h"
+#include "rpc/device_watcher.h"
+#include "rpc/executor.h"
+#include "rs4sim/v1/gsd.grpc.pb.h"
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace rs4sim::app {
+
+struct GsdServiceContext {
+  rpc::Executor& executor;
+  std::vector<GsdStation*> stations;  // distinct addresses
+  // On the loop after a call changed a station (nullptr-safe: empty = nothing).
+  std::function<void()> changed = {};
+  // The simulated bus (--link memory) for bus faults; nullptr on a real link.
+  dp::link::MemoryBus* bus = nullptr;
+};
+
+class GsdStationsService final : public v1::GsdStations::Service {
+ public:
+  explicit GsdStationsService(GsdServiceContext context) : c_(std::move(context)) {}
+  grpc::Status ListStations(grpc::ServerContext*, const v1::Empty*,
+                            v1::ListGsdStationsResponse* out) override;
+  grpc::Status GetStation(grpc::ServerContext*, const v1::StationRequest* in,
+                          v1::GsdStation* out) override;
+  grpc::Status SetInputs(grpc::ServerContext*, const v1::SetGsdInputsRequest* in,
+                         v1::Empty*) override;
+  grpc::Status SetDiagnosis(grpc::ServerContext*, const v1::SetGsdDiagnosisRequest* in,
+                            v1::Empty*) override;
+  grpc::Status RaiseAlarm(grpc::ServerContext*, const v1::RaiseGsdAlarmRequest* in,
+                          v1::Empty*) override;
+  grpc::Status SetOnline(grpc::ServerContext*, const v1::SetGsdOnlineRequest* in,
+                         v1::Empty*) override;
+  grpc::Status InjectBusFault(grpc::ServerContext*, const v1::BusFaultRequest* in,
+                              v1::BusFaultResponse* out) override;
+  grpc::Status ClearBusFaults(grpc::ServerContext*, const v1::Empty*, v1::Empty*) override;
+
+ private:
+  using StationFn = std::function<grpc::Status(GsdStation&)>;
+  grpc::Status on_station(std::uint32_t address, const StationFn& fn, bool changes);
+  GsdServiceContext c_;
+};
+
+// The event-stream watcher of a station (StateChange.what: "dp-state", "online", "inputs",
+// "outputs", "ext-diag", "diagnosis"; the bytes in hex).
+std::unique_ptr<rpc::Watcher> gsd_watcher(const GsdStation& station);
+
+}  // namespace rs4sim::app

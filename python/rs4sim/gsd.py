@@ -1,0 +1,60 @@
+"""The GSD stations of a running rs4sim (rs4sim.v1.GsdStations, docs/gsd.md "Harness API"):
+`rs4sim run --device generic --gsd FILE --grpc 127.0.0.1:0`.
+
+    from rs4sim import GsdStations
+    gsd = GsdStations("127.0.0.1:50051")
+    station = gsd.station(5)           # address, ident, modules with their I/O, DP state
+    gsd.set_inputs(5, 1, b"\\x11\\x22")  # module in slot 1: exactly its input length
+    gsd.outputs(5, 2)                  # what the master wrote to the module in slot 2
+    gsd.set_online(5, False)           # off the bus; True puts it back
+"""
+
+from .harness import _Client, _Subscribed, open_channel, pb, pb_grpc
+from .v1 import gsd_pb2 as gsd_pb
+from .v1 import gsd_pb2_grpc as gsd_grpc
+
+
+class GsdStations(_Client):
+    """Every GSD station of one rs4sim run, each by its station address."""
+
+    def __init__(self, address, timeout=10.0, root_certificates=None, token=None):
+        self.channel = open_channel(address, root_certificates, token, timeout)
+        self.stub = gsd_grpc.GsdStationsStub(self.channel)
+        self.observation = pb_grpc.ObservationStub(self.channel)
+
+    def stations(self):
+        return list(self.stub.ListStations(pb.Empty()).stations)
+
+    def station(self, address):
+        return self.stub.GetStation(pb.StationRequest(address=address))
+
+    def set_inputs(self, address, slot, data):
+        self.stub.SetInputs(gsd_pb.SetGsdInputsRequest(address=address, slot=slot,
+                                                       data=bytes(data)))
+
+    def inputs(self, address, slot):
+        return self.station(address).modules[slot].inputs
+
+    def outputs(self, address, slot):
+        return self.station(address).modules[slot].outputs
+
+    def set_online(self, address, online):
+        self.stub.SetOnline(gsd_pb.SetGsdOnlineRequest(address=address, online=online))
+
+    def set_diagnosis(self, address, blocks=b"", ext_diag=False):
+        self.stub.SetDiagnosis(gsd_pb.SetGsdDiagnosisRequest(address=address, ext_diag=ext_diag,
+                                                             blocks=bytes(blocks)))
+
+    def raise_alarm(self, address, kind, slot=0, user_data=b""):
+        """kind: "diagnostic", "process", "pull", "plug", "status", "update" (as the GSD
+        declares them, GsdStation.alarms)."""
+        alarm_type = gsd_pb.GsdAlarmType.Value("GSD_ALARM_TYPE_" + kind.upper())
+        self.stub.RaiseAlarm(gsd_pb.RaiseGsdAlarmRequest(address=address, type=alarm_type,
+                                                         slot=slot, user_data=bytes(user_data)))
+
+    def events(self, stations=(), telegrams=False):
+        """Observation.StreamEvents for these stations (all: empty), as Rs4.events: the
+        current items first (StateChange with from = ""), then every change ("dp-state",
+        "online", "inputs", "outputs", "ext-diag", "diagnosis")."""
+        return _Subscribed(self.observation.StreamEvents(pb.StreamEventsRequest(
+            addresses=list(stations), telegrams=telegrams)))

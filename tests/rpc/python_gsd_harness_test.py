@@ -1,0 +1,117 @@
+"""`rs4sim run --device generic --gsd FILE --link pty --grpc` driven by the Python harness
+(rs4sim.GsdStations, python3-grpcio): the station as its GSD describes it, a module's inputs set
+and read back, the refusals with their details, the event stream's "inputs" and "online"
+changes, and off the bus: an FDL_Status request on the pty gets no answer until the station is
+back [IEC 61158-4-3 FDL_Status]. The GSD is the project's tests/gsd/corpus/modular_dpv1.gsd
+("DI 8": 1 input byte, "AI 2": 4, "DO 16 consistent": 2 output bytes; ident 0xB756).
+Usage: python_gsd_harness_test.py RS4SIM REPO   (exit 77 = skipped: no python3-grpcio)"""
+import os
+import subprocess
+import sys
+import termios
+
+try:
+    import grpc
+except ImportError:
+    print("python3-grpcio is not installed: skipped")
+    sys.exit(77)
+
+rs4sim, repo = sys.argv[1], sys.argv[2]
+from rs4sim import GsdStations, error_details  # noqa: E402
+
+# SD1 request, DA 5, SA 1, FC 0x49 (Request FDL Status), FCS = (5 + 1 + 0x49) mod 256, ED.
+FDL_STATUS = bytes([0x10, 0x05, 0x01, 0x49, 0x4F, 0x16])
+
+
+def open_raw(path):
+    fd = os.open(path, os.O_RDWR | os.O_NOCTTY)
+    attrs = termios.tcgetattr(fd)
+    attrs[0] = attrs[1] = attrs[3] = 0
+    attrs[2] = termios.CS8 | termios.CREAD | termios.CLOCAL
+    attrs[6][termios.VMIN] = 0
+    attrs[6][termios.VTIME] = 3  # read() gives up after 0.3 s of silence
+    termios.tcsetattr(fd, termios.TCSANOW, attrs)
+    return fd
+
+
+def transact(fd, request):
+    termios.tcflush(fd, termios.TCIFLUSH)
+    os.write(fd, request)
+    out = b""
+    while True:
+        chunk = os.read(fd, 256)
+        if not chunk:
+            return out
+        out += chunk
+
+
+gsd = os.path.join(repo, "tests/gsd/corpus/modular_dpv1.gsd")
+proc = subprocess.Popen([rs4sim, "run", "--device", "generic", "--gsd", gsd, "--module", "DI 8",
+                         "--module", "AI 2", "--module", "DO 16 consistent", "--address", "5",
+                         "--baud", "12M", "--link", "pty", "--grpc", "127.0.0.1:0"],
+                        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+try:
+    tty = proc.stdout.readline().strip()
+    assert tty.startswith("/dev/"), tty
+    line = proc.stdout.readline()
+    assert line.startswith("grpc: listening on 127.0.0.1:"), line
+    stations = GsdStations(line.split()[-1])
+    fd = open_raw(tty)
+
+    [station] = stations.stations()
+    assert station.address == 5 and station.ident_number == 0xB756, station
+    assert [(m.name, m.input_length, m.output_length) for m in station.modules] == [
+        ("DI 8", 1, 0), ("AI 2", 4, 0), ("DO 16 consistent", 0, 2)], station.modules
+    assert station.dp_state == "Wait_Prm" and station.online, station
+    assert list(station.alarms) == ["diagnostic", "process"], station.alarms
+
+    events = stations.events([5])
+    stations.set_inputs(5, 1, b"\x11\x22\x33\x44")
+    assert stations.inputs(5, 1) == b"\x11\x22\x33\x44"
+    assert stations.outputs(5, 2) == b"\x00\x00"  # no master has written yet
+
+    try:
+        stations.set_inputs(5, 1, b"\x11")
+        raise AssertionError("1 byte for a 4-byte module accepted")
+    except grpc.RpcError as e:
+        assert e.code() == grpc.StatusCode.INVALID_ARGUMENT, e
+        _, [(field, description)], _ = error_details(e)
+        assert field == "data", field
+        assert description == '1 bytes; module "AI 2" (slot 1) has 4 input bytes', description
+    try:
+        stations.station(9)
+        raise AssertionError("station 9 found")
+    except grpc.RpcError as e:
+        assert e.code() == grpc.StatusCode.NOT_FOUND, e
+    try:
+        stations.raise_alarm(5, "status")
+        raise AssertionError("a status alarm the GSD does not declare accepted")
+    except grpc.RpcError as e:
+        assert e.code() == grpc.StatusCode.FAILED_PRECONDITION, e
+        _, _, [(kind, subject, description)] = error_details(e)
+        assert (kind, subject) == ("GSD", "station 5"), (kind, subject)
+        assert "does not declare Status_Alarm_supp = 1" in description, description
+
+    answer = transact(fd, FDL_STATUS)
+    assert answer[:3] == bytes([0x10, 0x01, 0x05]), answer.hex()
+    stations.set_online(5, False)
+    assert not stations.station(5).online
+    assert transact(fd, FDL_STATUS) == b"", "an answer off the bus"
+    stations.set_online(5, True)
+    assert transact(fd, FDL_STATUS)[:3] == bytes([0x10, 0x01, 0x05])
+
+    seen = {}
+    for event in events:
+        if event.HasField("state") and event.state.what in ("inputs", "online"):
+            seen.setdefault(event.state.what, []).append(event.state.to)
+            if len(seen.get("online", [])) == 3:
+                break
+    assert seen["inputs"][:2] == ["00 00 00 00 00", "00 11 22 33 44"], seen
+    assert seen["online"] == ["yes", "no", "yes"], seen
+    events.cancel()
+    stations.close()
+    os.close(fd)
+    print("GSD station harness: ok")
+finally:
+    proc.terminate()
+    proc.wait(timeout=10)

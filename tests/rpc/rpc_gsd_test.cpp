@@ -1,0 +1,242 @@
+// rs4sim.v1.GsdStations (gsd.proto) end to end: a real gRPC server on loopback in front of a GSD
+// station on the simulated bus with our master configured from the same GSD (app/devices/
+// gsd_segment.h), the loop on its own thread as in a run. The GSD is the project's own
+// tests/gsd/corpus/modular_dpv1.gsd: "DI 8" (Cfg 0x10: 1 input byte), "AI 2" (0x51: 2 input
+// words = 4 bytes), "DO 16 consistent" (0xA1: 2 output bytes) [IEC 61158-6-3 Chk_Cfg/Get_Cfg].
+#include "app/devices/gsd_segment.h"
+#include "app/devices/gsd_service.h"
+#include "google/rpc/error_details.pb.h"
+#include "google/rpc/status.pb.h"
+#include "rpc/executor.h"
+#include "rpc/server.h"
+#include "rs4sim/v1/gsd.grpc.pb.h"
+
+#include <boost/asio/executor_work_guard.hpp>
+#include <boost/asio/io_context.hpp>
+#include <gtest/gtest.h>
+#include <grpcpp/create_channel.h>
+#include <grpcpp/security/credentials.h>
+
+#include <memory>
+#include <optional>
+#include <thread>
+
+namespace rs4sim::app {
+namespace {
+
+using namespace std::chrono_literals;
+using Bytes = std::vector<std::uint8_t>;
+
+std::string bad_field(const grpc::Status& status) {
+  google::rpc::Status rich;
+  if (!rich.ParseFromString(status.error_details()) || rich.details_size() != 1) return "?";
+  google::rpc::BadRequest bad;
+  if (!rich.details(0).UnpackTo(&bad) || bad.field_violations_size() != 1) return "?";
+  return bad.field_violations(0).field() + ": " + bad.field_violations(0).description();
+}
+
+std::string bytes(const Bytes& b) { return {b.begin(), b.end()}; }
+
+class RpcGsdTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::vector<GsdStationSpec> specs;
+    specs.push_back(load_gsd_station(std::string(RS4SIM_GSD_CORPUS) + "/modular_dpv1.gsd",
+                                     {"DI 8", "AI 2", "DO 16 consistent"}, 5));
+    segment_ = std::make_unique<GsdSegment>(std::move(specs), "12M");
+    service_ = std::make_unique<GsdStationsService>(GsdServiceContext{
+        executor_, {segment_->stations().front().get()}, {}, segment_->bus()});
+    loop_ = std::thread([this] { io_.run(); });
+    server_ = std::make_unique<rpc::RpcServer>(rpc::ServerOptions{},
+                                               std::vector<grpc::Service*>{service_.get()});
+    stub_ = v1::GsdStations::NewStub(
+        grpc::CreateChannel(server_->address(), grpc::InsecureChannelCredentials()));
+  }
+  void TearDown() override {
+    server_->shutdown();
+    work_.reset();
+    loop_.join();
+  }
+  void run_for(dp::Duration d) {
+    executor_.run([&] { segment_->run_for(d); });
+  }
+  bool master_exchanges() {
+    bool in = false;
+    executor_.run([&] {
+      in = segment_->master().poll_state(5) == dp::master::PollState::kDataExchange;
+    });
+    return in;
+  }
+  v1::GsdStation get(std::uint32_t address, grpc::Status* status = nullptr) {
+    grpc::ClientContext ctx;
+    v1::StationRequest in;
+    in.set_address(address);
+    v1::GsdStation out;
+    const auto s = stub_->GetStation(&ctx, in, &out);
+    if (status != nullptr) *status = s;
+    return out;
+  }
+  grpc::Status set_inputs(std::uint32_t address, std::uint32_t slot, const Bytes& data) {
+    grpc::ClientContext ctx;
+    v1::SetGsdInputsRequest in;
+    in.set_address(address);
+    in.set_slot(slot);
+    in.set_data(bytes(data));
+    v1::Empty out;
+    return stub_->SetInputs(&ctx, in, &out);
+  }
+  grpc::Status set_online(bool online) {
+    grpc::ClientContext ctx;
+    v1::SetGsdOnlineRequest in;
+    in.set_address(5);
+    in.set_online(online);
+    v1::Empty out;
+    return stub_->SetOnline(&ctx, in, &out);
+  }
+  grpc::Status alarm(v1::GsdAlarmType type) {
+    grpc::ClientContext ctx;
+    v1::RaiseGsdAlarmRequest in;
+    in.set_address(5);
+    in.set_type(type);
+    in.set_slot(1);
+    v1::Empty out;
+    return stub_->RaiseAlarm(&ctx, in, &out);
+  }
+
+  boost::asio::io_context io_;
+  std::optional<boost::asio::executor_work_guard<boost::asio::io_context::executor_type>> work_{
+      io_.get_executor()};
+  rpc::AsioExecutor executor_{io_};
+  std::unique_ptr<GsdSegment> segment_;
+  std::unique_ptr<GsdStationsService> service_;
+  std::thread loop_;
+  std::unique_ptr<rpc::RpcServer> server_;
+  std::unique_ptr<v1::GsdStations::Stub> stub_;
+};
+
+TEST_F(RpcGsdTest, ListsTheStationAsItsGsdDescribesIt) {
+  grpc::ClientContext ctx;
+  v1::ListGsdStationsResponse list;
+  ASSERT_TRUE(stub_->ListStations(&ctx, v1::Empty{}, &list).ok());
+  ASSERT_EQ(list.stations_size(), 1);
+  const auto& s = list.stations(0);
+  EXPECT_EQ(s.address(), 5u);
+  EXPECT_EQ(s.ident_number(), 0xB756u);
+  EXPECT_TRUE(s.dpv1());
+  ASSERT_EQ(s.alarms_size(), 2);  // Diagnostic_Alarm_supp = 1, Process_Alarm_supp = 1
+  EXPECT_EQ(s.alarms(0), "diagnostic");
+  EXPECT_EQ(s.alarms(1), "process");
+  ASSERT_EQ(s.modules_size(), 3);
+  EXPECT_EQ(s.modules(0).name(), "DI 8");
+  EXPECT_EQ(s.modules(0).input_length(), 1u);
+  EXPECT_EQ(s.modules(1).input_length(), 4u);
+  EXPECT_EQ(s.modules(1).output_length(), 0u);
+  EXPECT_EQ(s.modules(2).input_length(), 0u);
+  EXPECT_EQ(s.modules(2).output_length(), 2u);
+  EXPECT_EQ(s.modules(2).outputs(), bytes({0, 0}));  // nothing written yet
+  EXPECT_EQ(s.dp_state(), "Wait_Prm");
+  EXPECT_TRUE(s.online());
+}
+
+TEST_F(RpcGsdTest, InputsReachTheMasterAndItsOutputsTheStation) {
+  run_for(500ms);
+  ASSERT_TRUE(master_exchanges());
+  EXPECT_EQ(get(5).dp_state(), "Data_Exch");
+  ASSERT_TRUE(set_inputs(5, 1, {0x11, 0x22, 0x33, 0x44}).ok());
+  ASSERT_TRUE(set_inputs(5, 0, {0xA5}).ok());
+  executor_.run([&] { (void)segment_->master().set_outputs(5, Bytes{0xAB, 0xCD}); });
+  run_for(100ms);
+  Bytes inputs;
+  executor_.run([&] {
+    const auto in = segment_->master().inputs(5);
+    inputs.assign(in.begin(), in.end());
+  });
+  EXPECT_EQ(inputs, (Bytes{0xA5, 0x11, 0x22, 0x33, 0x44}));
+  const auto s = get(5);
+  EXPECT_EQ(s.modules(1).inputs(), bytes({0x11, 0x22, 0x33, 0x44}));
+  EXPECT_EQ(s.modules(2).outputs(), bytes({0xAB, 0xCD}));
+  EXPECT_GT(s.data_exchanges(), 0u);
+}
+
+TEST_F(RpcGsdTest, OffTheBusTheMasterLosesTheStationAndFindsItAgain) {
+  run_for(500ms);
+  ASSERT_TRUE(master_exchanges());
+  ASSERT_TRUE(set_online(false).ok());
+  EXPECT_FALSE(get(5).online());
+  run_for(300ms);
+  EXPECT_FALSE(master_exchanges());
+  ASSERT_TRUE(set_online(true).ok());
+  run_for(1s);
+  EXPECT_TRUE(master_exchanges());
+}
+
+TEST_F(RpcGsdTest, RefusesWhatTheGsdDoesNotAllow) {
+  grpc::Status s;
+  s = set_inputs(5, 1, {0x11, 0x22});
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad_field(s), "data: 2 bytes; module \"AI 2\" (slot 1) has 4 input bytes");
+  s = set_inputs(5, 3, {0});
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad_field(s), "slot: slot 3 outside 0..2 (the station's 3 modules)");
+  s = set_inputs(9, 0, {0});
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::NOT_FOUND);
+  EXPECT_EQ(s.error_message(), "no GSD station at address 9 (this run's GSD stations: 5)");
+  s = set_inputs(200, 0, {0});
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  (void)get(7, &s);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::NOT_FOUND);
+  // Pull_Plug_Alarm_supp is not in the file.
+  s = alarm(v1::GSD_ALARM_TYPE_PULL);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+  EXPECT_NE(s.error_message().find("Pull_Plug_Alarm_supp"), std::string::npos) << s.error_message();
+  s = alarm(v1::GSD_ALARM_TYPE_UNSPECIFIED);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  // Declared, but before a DPV1 data exchange the alarms are closed [IEC 61158-6-3 MSAC_C1].
+  s = alarm(v1::GSD_ALARM_TYPE_PROCESS);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+  EXPECT_NE(s.error_message().find("cannot send it now"), std::string::npos) << s.error_message();
+}
+
+// modular_dpv1.gsd has no Max_Diag_Data_Len: the 6 standard bytes only ([PROFIBUS GSD spec]
+// default), so Ext_Diag alone fits and a device-related block does not.
+TEST_F(RpcGsdTest, DiagnosisWithinMaxDiagDataLen) {
+  run_for(500ms);
+  grpc::ClientContext ctx;
+  v1::SetGsdDiagnosisRequest in;
+  in.set_address(5);
+  in.set_ext_diag(true);
+  v1::Empty out;
+  const auto s = stub_->SetDiagnosis(&ctx, in, &out);
+  ASSERT_TRUE(s.ok()) << s.error_message() << " " << bad_field(s);
+  grpc::ClientContext ctx2;
+  // A device-related block: header 0x03 = length 3 incl. the header [IEC 61158-6-3 Slave_Diag].
+  in.set_blocks(bytes({0x03, 0x01, 0x02}));
+  const auto too_long = stub_->SetDiagnosis(&ctx2, in, &out);
+  EXPECT_EQ(too_long.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad_field(too_long),
+            "blocks: 3 bytes; the GSD's Max_Diag_Data_Len 6 leaves 0 bytes after the 6 standard "
+            "ones");
+}
+
+TEST_F(RpcGsdTest, BusFaultsByTheFaultsServiceRules) {
+  grpc::ClientContext ctx;
+  v1::BusFaultRequest in;
+  in.set_address(5);
+  in.set_kind(v1::BUS_FAULT_KIND_DROP);
+  in.set_direction(v1::DIRECTION_FROM_STATION);
+  in.set_count(3);
+  v1::BusFaultResponse out;
+  ASSERT_TRUE(stub_->InjectBusFault(&ctx, in, &out).ok());
+  EXPECT_NE(out.fault_id(), 0u);
+  grpc::ClientContext ctx2;
+  in.set_count(0);
+  const auto bad = stub_->InjectBusFault(&ctx2, in, &out);
+  EXPECT_EQ(bad.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad_field(bad), "count: 0 outside 1..1000000");
+  grpc::ClientContext ctx3;
+  v1::Empty e;
+  EXPECT_TRUE(stub_->ClearBusFaults(&ctx3, v1::Empty{}, &e).ok());
+}
+
+}  // namespace
+}  // namespace rs4sim::app
