@@ -317,7 +317,7 @@ TEST(DeviceRefusal, StatusByteIsErrorNumberRs4) {
   h.device.answer_hook = [](std::uint8_t cmd, std::vector<std::uint8_t>& answer) {
     if (cmd != 0x62) return;
     rs4::protocol::TransferAnswer a;  // the RS4's refusal of a begin with another set size
-    a.code = 0x62;
+    a.code = rs4::protocol::TransferCode::kDownloadBegin;
     a.options.state = rs4::protocol::Option1State::kMeasuring;
     a.status = rs4::protocol::TransferStatus::kSizeMismatch;
     answer = rs4::protocol::encode_answer(a).value();
