@@ -24,6 +24,7 @@ std::string reason_text(protocol::SyncReason r) {
     case protocol::SyncReason::kPowerUp: return "power-up";
     case protocol::SyncReason::kPcAdapterRemoved: return "pc-adapter-removed";
     case protocol::SyncReason::kRetry: return "retry";
+    case protocol::SyncReason::kUserParametrisation: return "user-parametrisation";
     case protocol::SyncReason::kNone: break;
   }
   return "none";

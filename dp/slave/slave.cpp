@@ -77,6 +77,49 @@ Slave::Slave(const Config& config, SlaveApplication& app)
   app_.on_attach(*this);
 }
 
+void Slave::restart(std::uint8_t address) {
+  Config c = config_;
+  c.address = address;
+  config_ = checked(c);
+  counters_ = Counters{};
+  fcb_ = fdl::FcbResponder{};
+  has_tx_ = false;
+  tx_taken_ = false;
+  state_ = State::kWaitPrm;
+  address_ = address;
+  address_locked_ = config_.address_change_locked;
+  master_ = 0xFF;
+  min_tsdr_ = config_.min_tsdr_default;
+  group_ident_ = 0;
+  wd_on_ = false;
+  wd_time_.reset();
+  wd_deadline_.reset();
+  sync_req_ = false;
+  freeze_req_ = false;
+  dpv1_.reset();
+  input_length_ = 0;
+  output_length_ = 0;
+  c1_open_ = false;
+  sync_mode_ = false;
+  freeze_mode_ = false;
+  outputs_ = {};
+  frozen_inputs_ = {};
+  held_outputs_valid_ = false;
+  prm_fault_ = false;
+  cfg_fault_ = false;
+  not_supported_ = false;
+  ext_diag_ = false;
+  stat_diag_ = false;
+  diag_flag_ = false;
+  device_diag_.clear();
+  alarm_in_diag_.reset();
+  alarms_ = AlarmQueue(config_.alarm_capacity, config_.alarm_sequence_numbers,
+                       config_.alarm_queue_capacity);
+  c1_ = AcyclicJob{};
+  alarm_sap_ = AcyclicJob{};
+  c2_ = C2Connection{};
+}
+
 // ---- Station ---------------------------------------------------------------------------
 
 void Slave::on_telegram(const fdl::Telegram& t, TimePoint now) {

@@ -80,6 +80,12 @@ class Slave final : public Station, public SlaveControl {
   Slave(const Slave&) = delete;  // the application holds a SlaveControl& to this object
   Slave& operator=(const Slave&) = delete;
 
+  // Power-up of the same slave at `address`: Wait_Prm, no master, parameters, configuration,
+  // diagnosis, alarms, acyclic jobs and counters as after construction; the configuration, the
+  // application (its SlaveControl& stays valid), the trace hook and the wake handler are kept.
+  // Throws std::system_error (dp.slave category) if the address is not a station address.
+  void restart(std::uint8_t address);
+
   // ---- Station ----
   [[nodiscard]] std::uint8_t address() const override { return address_; }
   void on_telegram(const fdl::Telegram& t, TimePoint now) override;

@@ -89,9 +89,7 @@ Adapter::Adapter(AdapterConfig config)
 void Adapter::power_on(TimePoint now) {
   if (powered_) return;
   powered_ = true;
-  rs4_up_ = false;
-  released_ = false;
-  proxy_request_ = false;
+  gate_.power_change();
   proxy_.reset();
   scanner_.power_on(now);
   signal_line_.clear();
@@ -118,10 +116,7 @@ void Adapter::power_off(TimePoint now) {
   link_down_until_.reset();
   connected_ = false;
   proxy_.reset();
-  rs4_up_ = false;
-  released_ = false;
-  proxy_request_ = false;
-  check_after_release_ = false;
+  gate_.power_change();
   error_active_ = false;
   adapter_error_active_ = false;
   inconsistent_output_.reset();
@@ -151,15 +146,11 @@ void Adapter::start_adapter(TimePoint now, bool keep_errors) {
   connected_ = false;
   prm_refused_ = false;
   proxy_.stop(scanner_, now);
-  proxy_enable_ = false;
-  proxy_enable_known_ = false;
-  rs232_through_ = pc_attached_;
-  through_pending_ = false;
-  check_after_release_ = false;
-  if (rs4_up_ && !pc_attached_) {  // a restarted adapter checks again
-    request_sync(proxy_request_ ? proxy_.reason() : protocol::SyncReason::kPowerUp);
+  pc_.adapter_start();
+  if (gate_.rs4_up() && !pc_.attached()) {  // a restarted adapter checks again
+    request_sync(gate_.proxy_request() ? proxy_.reason() : protocol::SyncReason::kPowerUp);
   }
-  released_ = rs4_up_ && pc_attached_;
+  gate_.adapter_start(pc_.attached());
   field_pair_error_ = false;
   field_pair_release_at_.reset();
   if (!keep_errors) {
@@ -249,7 +240,7 @@ void Adapter::on_state_change(dp::slave::State from, dp::slave::State to,
 // from the first process output, the last error re-reported when still present.
 void Adapter::enter_data_exchange(TimePoint now) {
   connected_ = true;
-  proxy_enable_known_ = false;
+  gate_.forget_proxy_enable();
   field_pair_ = 1;
   field_pair_error_ = false;
   field_pair_release_at_.reset();
@@ -324,9 +315,9 @@ bool Adapter::led_lit(TimePoint now) const noexcept {
 }
 
 ProxyPhase Adapter::proxy_phase() const noexcept {
-  if (!rs4_up_) return ProxyPhase::kWaitRs4;
+  if (!gate_.rs4_up()) return ProxyPhase::kWaitRs4;
   if (proxy_.running()) return ProxyPhase::kSyncRunning;
-  if (proxy_request_) return ProxyPhase::kRequested;
+  if (gate_.proxy_request()) return ProxyPhase::kRequested;
   return ProxyPhase::kDone;
 }
 
@@ -337,8 +328,8 @@ AdapterView Adapter::view() const {
   v.f_dest_add = address_ ? f_dest_add(*address_) : 0;
   v.led = led();
   v.proxy = proxy_phase();
-  v.proxy_enable = proxy_enable_;
-  v.pc_adapter_attached = pc_attached_;
+  v.proxy_enable = gate_.proxy_enable();
+  v.pc_adapter_attached = pc_.attached();
   v.connected = connected_;
   v.input_byte = input_byte_;
   v.input = decode_input_byte(input_byte_);

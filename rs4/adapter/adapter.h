@@ -24,7 +24,9 @@
 #include "profisafe/f_device.h"
 #include "rs4/adapter/cyclic_bytes.h"
 #include "rs4/adapter/error_memory.h"
+#include "rs4/adapter/pc_link.h"
 #include "rs4/adapter/proxy_session.h"
+#include "rs4/adapter/release_gate.h"
 #include "rs4/adapter/rs4_commands.h"
 #include "rs4/protocol/adapter_answer.h"
 #include "rs4/protocol/adapter_command.h"
@@ -77,7 +79,7 @@ struct AdapterConfig {
   // Accepted by the RS4's password rule while both user passwords are empty (the factory
   // state): the same rule and default as on its RS232 (rs4_commands.h, docs/rs232.md).
   std::array<std::uint8_t, 8> factory_password = kFactoryPassword;
-  std::size_t read_buffers = 4;          // answers awaiting a READ per channel (0x2A05)
+  std::size_t read_buffers = 4;            // answers awaiting a READ per channel (0x2A05)
   bool check_reserved_output_bits = true;  // output bits 5..3 ≠ 0 → 0x2419, byte not applied
   std::size_t event_buffer = 8;       // second buffer: 0x53/0x54 for 0x92 ([RS4 manual §5.2.2])
   protocol::VersionAnswer version{};  // PROFI_CMD_GET_VERSION bytes
@@ -189,7 +191,7 @@ class Adapter final : public dp::slave::SlaveApplication {
   void detach_pc_adapter(TimePoint now);
   // Input bit 3 ([RS4 manual §5.1.1]): the RS4's RS232 is switched through to the PC adapter
   // (attached and no sync running); rs4/rs232 answers only then.
-  [[nodiscard]] bool rs232_switched_through() const noexcept { return rs232_through_; }
+  [[nodiscard]] bool rs232_switched_through() const noexcept { return pc_.switched_through(); }
   // Called with every 0x53/0x54 event the RS4 emits, as the adapter collects it (the RS232
   // port behind the PC adapter sends them too); an empty function removes the listener.
   void set_rs4_event_listener(std::function<void(const scanner::Rs4Event&)> listener) {
@@ -217,7 +219,7 @@ class Adapter final : public dp::slave::SlaveApplication {
   [[nodiscard]] bool led_lit(TimePoint now) const noexcept;
   [[nodiscard]] ProxyPhase proxy_phase() const noexcept;
   // The parameter-check gate of [RS4 manual §7.1, §7.2]: true once the OSSD bit may follow the RS4.
-  [[nodiscard]] bool released() const noexcept { return released_; }
+  [[nodiscard]] bool released() const noexcept { return gate_.released(); }
   [[nodiscard]] protocol::FlowState flow_state(dp::slave::AcyclicChannel ch) const noexcept;
   [[nodiscard]] std::uint8_t flow_byte(dp::slave::AcyclicChannel ch, bool payload) const noexcept;
   [[nodiscard]] const ErrorMemory& error_memory() const noexcept { return errors_; }
@@ -334,18 +336,9 @@ class Adapter final : public dp::slave::SlaveApplication {
   bool prm_refused_ = false;  // F-parameters refused (LED slow blink)
 
   // [RS4 manual §7.1, §7.2] proxy logic
-  bool rs4_up_ = false;    // RS4 reached operation since power-on
-  ProxySession proxy_;     // sync running, reason, direction, the open download
-  bool released_ = false;  // parameter check passed or not needed
-  bool proxy_request_ = false;
-  bool proxy_enable_ = false;
-  bool proxy_enable_known_ = false;  // evaluated since DP start-up / PC removal
-  bool pc_attached_ = false;         // reed contact
-  bool rs232_through_ = false;       // bit 3: switched through (not during a sync)
-  bool through_pending_ = false;     // switch through once the sync's last answer was read
-  // The last sync ended with 99 success: the proxy's background verify may still fail it with
-  // `99 01` ([RS4 manual §5.1.1] bit 2, [docs/proxy-protocol.md] PROFI_CMD_PROXY_END).
-  bool check_after_release_ = false;
+  ReleaseGate gate_;    // RS4 up, Proxy-Request, Proxy-Enable, released, verify open
+  ProxySession proxy_;  // sync running, reason, direction, the open download
+  PcLink pc_;  // reed contact, bit 3 switched through, pending until the sync's last answer
   LedState led_state_ = LedState::kDark;  // the LED's state as last seen by track_led()
   TimePoint led_since_{};                 // when it entered that state
   void track_led(TimePoint now) noexcept;

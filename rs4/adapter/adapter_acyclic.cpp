@@ -39,7 +39,7 @@ std::size_t Adapter::pending_answers(AcyclicChannel which) const noexcept {
 // (the proxy's own requests on C1 are processed normally).
 protocol::FlowState Adapter::flow_state(AcyclicChannel which) const noexcept {
   if (!powered_ || init_end_ || link_down_until_) return protocol::FlowState::kNoCommunicationPath;
-  if (rs232_through_) return protocol::FlowState::kPcAdapterAttached;
+  if (pc_.switched_through()) return protocol::FlowState::kPcAdapterAttached;
   if (proxy_.running()) return protocol::FlowState::kProxyBusy;
   if (which == AcyclicChannel::kC2 && !connected_) return protocol::FlowState::kNoConnection;
   return protocol::FlowState::kNormal;
@@ -159,7 +159,7 @@ dp::slave::AcyclicResult Adapter::on_read(const dp::slave::AcyclicRequest& req, 
     (void)protocol::encode_block(flow_byte(req.channel, false), protocol::kLastBlockNumber, {},
                                  block);
   }
-  if (through_pending_) switch_through_after_sync(now);
+  if (pc_.pending()) switch_through_after_sync(now);
   return AcyclicResult::ok(block);
 }
 
@@ -231,8 +231,8 @@ void Adapter::submit_rs4_command(std::span<const std::uint8_t> command, Channel&
     return;
   }
   const TimePoint after = ch.processing.empty() ? now : ch.processing.back().due;
-  ch.processing.push_back(
-      {after + config_.rs4_command_time, std::vector<std::uint8_t>(command.begin(), command.end())});
+  ch.processing.push_back({after + config_.rs4_command_time,
+                           std::vector<std::uint8_t>(command.begin(), command.end())});
 }
 
 void Adapter::finish_processing(TimePoint now) {
@@ -263,18 +263,21 @@ std::vector<std::uint8_t> Adapter::execute_rs4_command(std::span<const std::uint
   std::vector<std::uint8_t> answer;
   if (prefix && protected_command(code) && !proxy_transfer &&
       !password_accepted(scanner_.parameters(), prefix.value().prefix, config_.factory_password)) {
-    answer = prefix.value().prefix.options.acknowledge
-                 ? nak_telegram(scanner_, code, kRs4ErrorWrongPassword)
-                 : error_telegram(scanner_, kRs4ErrorWrongPassword, code, kRs4ErrorFunctionCommands);
+    answer =
+        prefix.value().prefix.options.acknowledge
+            ? nak_telegram(scanner_, code, kRs4ErrorWrongPassword)
+            : error_telegram(scanner_, kRs4ErrorWrongPassword, code, kRs4ErrorFunctionCommands);
   } else if (protocol::is_transfer_code(code)) {
     return transfer(command, now, /*authorised=*/!proxy_transfer);
   } else if (prefix && setting_command(code)) {
     const auto before = scanner_.change_counter();
     const auto v = execute_setting(scanner_, code, command.subspan(prefix.value().size), now);
     // A new window is a change of the set like a user's download: the proxy is asked to take it
-    // (reason 2, an upload), as after the removal of the PC adapter [RS4 manual §7.2.2].
-    if (scanner_.change_counter() != before && rs4_up_ && !pc_attached_ && !proxy_.running()) {
-      request_sync(protocol::SyncReason::kPcAdapterRemoved);
+    // (an upload), as after the removal of the PC adapter [RS4 manual §7.2.2], with its own
+    // reason 4 [docs/decisions.md#rs4-user-parametrisation-reason].
+    if (scanner_.change_counter() != before && gate_.rs4_up() && !pc_.attached() &&
+        !proxy_.running()) {
+      request_sync(protocol::SyncReason::kUserParametrisation);
     }
     collect_rs4(now);
     if (v.ok()) return ack_telegram(scanner_, code);

@@ -76,12 +76,8 @@ void Adapter::apply_output_byte(std::uint8_t out, TimePoint now) {
     return;
   }
   inconsistent_output_.reset();
-  if (!proxy_enable_known_) {
-    proxy_enable_known_ = true;
-    proxy_enable_ = bits.proxy_enable;
-    // Proxy-Enable 0: the OSSD bit is released without the proxy ([RS4 manual §5.1.2, §7.1, §7.2]).
-    if (!proxy_enable_ && rs4_up_ && !proxy_.running()) released_ = true;
-  }
+  // Proxy-Enable 0: the OSSD bit is released without the proxy ([RS4 manual §5.1.2, §7.1, §7.2]).
+  gate_.process_output(bits.proxy_enable, proxy_.running());
   restart_bus_ = bits.restart;
   drive_restart_input(now);
   apply_field_pair(bits.field_pair, now);
@@ -128,34 +124,27 @@ void Adapter::set_restart_button(bool pressed, TimePoint now) {
 // ---- [RS4 manual §7.1, §7.2]: RS4 start-up, PC adapter, proxy -----------------------------------
 void Adapter::update_rs4_phase(TimePoint now) {
   (void)now;
-  if (rs4_up_ || !rs4_operational(scanner_.status().state)) return;
-  rs4_up_ = true;  // [RS4 manual §7.1.1]: the RS4 is operational (≈30 s after power-on)
-  if (pc_attached_) {
-    released_ = true;  // PC adapter at start-up: no Proxy-Request, OSSD follows the RS4
-    return;
-  }
-  request_sync(protocol::SyncReason::kPowerUp);
-  if (proxy_enable_known_ && !proxy_enable_) released_ = true;
+  if (gate_.rs4_up() || !rs4_operational(scanner_.status().state)) return;
+  // [RS4 manual §7.1.1]: the RS4 is operational (≈30 s after power-on); with a PC adapter at
+  // start-up no Proxy-Request, the OSSD follows the RS4.
+  if (gate_.rs4_operational(pc_.attached())) request_sync(protocol::SyncReason::kPowerUp);
 }
 
 void Adapter::attach_pc_adapter(TimePoint now) {
-  pc_attached_ = true;
   // [RS4 manual §5.1.1] bit 3: during a sync the RS232 is switched through only after the sync
   // ends.
-  if (!proxy_.running()) rs232_through_ = true;
+  pc_.attach(proxy_.running());
   if (powered_) refresh_input(now);
 }
 
 void Adapter::detach_pc_adapter(TimePoint now) {
-  const bool was = pc_attached_;
-  pc_attached_ = false;
-  rs232_through_ = false;
-  through_pending_ = false;
+  const bool was = pc_.attached();
+  pc_.detach();
   if (!powered_ || !was) return;
   // [RS4 manual §5.1.1] bit 3: on 1→0 the Proxy-Request bit is always set; Proxy-Enable is read
   // again.
-  if (rs4_up_ && !proxy_.running()) request_sync(protocol::SyncReason::kPcAdapterRemoved);
-  proxy_enable_known_ = false;
+  if (gate_.rs4_up() && !proxy_.running()) request_sync(protocol::SyncReason::kPcAdapterRemoved);
+  gate_.forget_proxy_enable();
   refresh_input(now);
 }
 
@@ -204,7 +193,7 @@ void Adapter::refresh_input(TimePoint now) {
 //  - both OSSDs of the RS4 are on, as the adapter sees them (`response_time` after the RS4).
 bool Adapter::ossd_release_allowed(TimePoint now) const noexcept {
   if (!powered_ || !connected_ || !fdevice_.sends_process_values()) return false;
-  if (!rs4_up_ || !released_) return false;
+  if (!gate_.open()) return false;
   if (error_present()) return false;
   if (field_pair_release_at_ && now < *field_pair_release_at_) return false;
   return seen_.ossd;  // both OSSDs of the RS4 on, as the adapter sees them
@@ -224,9 +213,9 @@ std::uint8_t Adapter::compose_input_byte(TimePoint now) const noexcept {
   bits.ossd = ossd_release_allowed(now);
   bits.warning_output_active = seen_.warning_output;
   bits.error = error_present();
-  bits.not_operational = !rs4_up_ || !released_ || !rs4_operational(st.state);
-  bits.rs232_active = rs232_through_;
-  bits.proxy_request = proxy_request_;
+  bits.not_operational = !gate_.open() || !rs4_operational(st.state);
+  bits.rs232_active = pc_.switched_through();
+  bits.proxy_request = gate_.proxy_request();
   bits.protective_field = seen_.protective;
   bits.warning_field = seen_.warning;
   return encode_input_byte(bits);

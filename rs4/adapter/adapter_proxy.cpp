@@ -20,15 +20,14 @@ bool proxy_command(std::span<const std::uint8_t> command) noexcept {
 
 // [RS4 manual §5.1.1] bit 2 = 1, remembering why for PROFI_CMD_PROXY_BEGIN.
 void Adapter::request_sync(protocol::SyncReason why) {
-  proxy_request_ = true;
+  gate_.request();
   proxy_.request(why);
 }
 
 std::error_code Adapter::proxy_sync_started(TimePoint now) {
   if (!powered_) return AdapterApiError::kPoweredOff;
-  if (!proxy_request_) return AdapterApiError::kNoSyncRequested;
-  proxy_request_ = false;  // [RS4 manual §5.1.1] bit 2: reset when the check begins
-  check_after_release_ = false;
+  // [RS4 manual §5.1.1] bit 2: reset when the check begins
+  if (!gate_.sync_start()) return AdapterApiError::kNoSyncRequested;
   proxy_.start(scanner_, now);  // flow state 011 on both channels from now on
   refresh_input(now);
   return {};
@@ -40,9 +39,8 @@ std::error_code Adapter::proxy_sync_succeeded(TimePoint now) {
   proxy_.stop(scanner_, now);
   // [RS4 manual §7.1, §7.2]: Proxy-Enable 1 → OSSD released after a successful sync. The only
   // place besides Proxy-Enable 0 that grants the release.
-  released_ = true;
-  check_after_release_ = true;  // "Die Parameter werden im Hintergrund verifiziert" [RS4 manual §7.1.1]
-  through_pending_ = pc_attached_;  // switched through at the next on_time/READ
+  gate_.sync_succeeded();  // "Die Parameter werden im Hintergrund verifiziert" [RS4 manual §7.1.1]
+  pc_.sync_ended();        // switched through at the next on_time/READ
   refresh_input(now);
   return {};
 }
@@ -51,10 +49,7 @@ std::error_code Adapter::proxy_sync_succeeded(TimePoint now) {
 // sync has ended — DECISION: and the proxy has fetched the answer of its last command (99), which
 // a switched-through adapter would no longer hand out (flow state 010).
 void Adapter::switch_through_after_sync(TimePoint now) {
-  if (through_pending_ && c1_.answers.empty() && c1_.reading.done()) {
-    through_pending_ = false;
-    rs232_through_ = pc_attached_;
-  }
+  if (pc_.pending() && c1_.answers.empty() && c1_.reading.done()) pc_.last_answer_read();
   refresh_input(now);
 }
 
@@ -74,8 +69,8 @@ void Adapter::fail_sync(std::uint16_t error, TimePoint now) {
   if (error != 0) report_error(error, error, now);
   scanner_.reset_to_factory_default(now);
   request_sync(protocol::SyncReason::kRetry);
-  if (proxy_enable_) released_ = false;  // OSSD unaffected unless the sync fails
-  through_pending_ = pc_attached_;       // switched through at the next on_time/READ
+  gate_.set_in_doubt();  // OSSD unaffected unless the sync fails (Proxy-Enable 1: withdrawn)
+  pc_.sync_ended();      // switched through at the next on_time/READ
   refresh_input(now);
 }
 
@@ -83,7 +78,7 @@ void Adapter::fail_sync(std::uint16_t error, TimePoint now) {
 // `98 00 00 flags` and nothing starts.
 void Adapter::proxy_begin(Channel& ch, TimePoint now) {
   protocol::ProxyBeginAnswer a;
-  if (rs4_up_ && !proxy_sync_started(now)) {
+  if (gate_.rs4_up() && !proxy_sync_started(now)) {
     a.reason = proxy_.reason();
     a.direction = proxy_.direction();
   }
@@ -99,17 +94,17 @@ void Adapter::proxy_begin(Channel& ch, TimePoint now) {
 void Adapter::proxy_end(const protocol::ProxyEndCommand& end, Channel& ch, TimePoint now) {
   const bool running = proxy_.running();
   const bool failed = end.outcome != protocol::ProxyOutcome::kSucceeded;
-  const bool verify_failed = !running && failed && check_after_release_;
+  const bool verify_failed = !running && failed && gate_.check_open();
   if (running && !failed) {
     (void)proxy_sync_succeeded(now);
   } else if (running) {
     (void)proxy_sync_failed(now, end.error);
   } else if (verify_failed) {
-    check_after_release_ = false;
+    gate_.verify_failed();
     fail_sync(end.error, now);
   }
-  ch.answers.push_back(protocol::encode_proxy_end_answer(
-      {running || verify_failed, scanner_.factory_settings()}));
+  ch.answers.push_back(
+      protocol::encode_proxy_end_answer({running || verify_failed, scanner_.factory_settings()}));
 }
 
 // [RS4 manual §5.2] "a user command while the proxy is still syncing aborts the proxy with an
@@ -135,9 +130,12 @@ std::vector<std::uint8_t> Adapter::transfer(std::span<const std::uint8_t> comman
       // as the removal of the PC adapter does after one over RS232 ([RS4 manual §7.2.2]);
       // the OSSD bit is not withdrawn for it ([RS4 manual §7.1.2] "Das OSSD-Bit wird davon
       // nicht beeinflusst solange bei dem Parameterabgleich keine Fehler auftreten").
-      if (rs4_up_ && !pc_attached_) request_sync(protocol::SyncReason::kPcAdapterRemoved);
-    } else if (proxy_enable_) {
-      released_ = false;
+      // Its own reason 4 [docs/decisions.md#rs4-user-parametrisation-reason].
+      if (gate_.rs4_up() && !pc_.attached()) {
+        request_sync(protocol::SyncReason::kUserParametrisation);
+      }
+    } else {
+      gate_.set_in_doubt();  // the set changed during the sync: with Proxy-Enable 1 not released
     }
     refresh_input(now);
   }

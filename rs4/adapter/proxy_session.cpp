@@ -53,7 +53,10 @@ protocol::TransferAnswer ok(protocol::TransferAnswerBody body) {
 }  // namespace
 
 protocol::SyncDirection sync_direction(protocol::SyncReason why, bool factory_settings) noexcept {
-  if (why == protocol::SyncReason::kPcAdapterRemoved) return protocol::SyncDirection::kUpload;
+  if (why == protocol::SyncReason::kPcAdapterRemoved ||
+      why == protocol::SyncReason::kUserParametrisation) {
+    return protocol::SyncDirection::kUpload;
+  }
   if (factory_settings) return protocol::SyncDirection::kDownload;
   return protocol::SyncDirection::kVerify;
 }

@@ -20,18 +20,28 @@ adapter::AdapterConfig adapter_config(const Rs4DeviceConfig& c) {
 
 dp::slave::Config rs4_slave_config(std::uint8_t address) { return adapter::slave_config(address); }
 
-Rs4Device::Rs4Device(const Rs4DeviceConfig& config)
-    : unit_(config.scanner), adapter_(adapter_config(config)) {
-  const auto addr = adapter::station_address(config.switches);
-  fresh_slave(addr ? addr.value() : std::uint8_t{126});
+namespace {
+
+// The slave's address before the switches were ever read valid: the factory setting
+// ([RS4 manual §4.5]). The station is silent while the switches are invalid (on_bus()), so this
+// address is only what address() reports, never one the station answers at.
+std::uint8_t initial_address(const Rs4DeviceConfig& c) {
+  const auto addr = adapter::station_address(c.switches);
+  return addr ? addr.value() : adapter::station_address(Rs4DeviceConfig{}.switches).value();
 }
 
-// A new dp::slave::Slave in Wait_Prm. The old one is replaced in place, so the adapter's
-// SlaveControl pointer is valid again as soon as the new slave attaches itself.
-void Rs4Device::fresh_slave(std::uint8_t address) {
-  slave_.emplace(rs4_slave_config(address), adapter_);
-  slave_->set_wake_handler([this] { wake(); });  // the slave's wake-ups are the device's
+}  // namespace
+
+Rs4Device::Rs4Device(const Rs4DeviceConfig& config)
+    : unit_(config.scanner),
+      adapter_(adapter_config(config)),
+      slave_(rs4_slave_config(initial_address(config)), adapter_) {
+  slave_.set_wake_handler([this] { wake(); });  // the slave's wake-ups are the device's
 }
+
+// The one dp::slave::Slave back in Wait_Prm at `address` (power-up, link return); the adapter's
+// SlaveControl reference stays valid.
+void Rs4Device::restart_slave(std::uint8_t address) { slave_.restart(address); }
 
 void Rs4Device::power_on(TimePoint now) {
   if (powered_) return;
@@ -41,7 +51,7 @@ void Rs4Device::power_on(TimePoint now) {
   ++counters_.power_ups;
   adapter_.power_on(now);  // reads the address switches ([RS4 manual §4.5])
   const auto addr = adapter_.station_address();
-  fresh_slave(addr ? *addr : slave_->address());
+  restart_slave(addr ? *addr : slave_.address());
   wake();
 }
 
@@ -78,14 +88,14 @@ void Rs4Device::on_telegram(const dp::fdl::Telegram& t, TimePoint now) {
     ++counters_.ignored_while_silent;
     return;
   }
-  slave_->on_telegram(t, now);
+  slave_.on_telegram(t, now);
   after_core_call(now);
 }
 
 void Rs4Device::on_time(TimePoint now) {
   if (!powered_) return;
   if (on_bus(now)) {
-    slave_->on_time(now);
+    slave_.on_time(now);
   } else {
     // The slave is bypassed while the link is down: the adapter (and its scanner) runs on.
     const auto d = adapter_.next_deadline();
@@ -101,21 +111,21 @@ void Rs4Device::after_core_call(TimePoint now) {
   (void)now;
   const bool wants_down = adapter_.wants_link_down_until().has_value();
   if (wants_down && !link_down_) {
-    while (auto t = slave_->take_transmit()) pending_.push_back(std::move(*t));
+    while (auto t = slave_.take_transmit()) pending_.push_back(std::move(*t));
     link_down_ = true;
     ++counters_.link_drops;
-    fresh_slave(slave_->address());
+    restart_slave(slave_.address());
   } else if (!wants_down && link_down_) {
     link_down_ = false;
     const auto addr = adapter_.station_address();
-    fresh_slave(addr ? *addr : slave_->address());
+    restart_slave(addr ? *addr : slave_.address());
   }
 }
 
 std::optional<TimePoint> Rs4Device::next_deadline() const {
   if (!powered_) return std::nullopt;
   if (link_down_) return adapter_.next_deadline();
-  return slave_->next_deadline();
+  return slave_.next_deadline();
 }
 
 std::optional<dp::fdl::Telegram> Rs4Device::take_transmit() {
@@ -125,11 +135,11 @@ std::optional<dp::fdl::Telegram> Rs4Device::take_transmit() {
     return t;
   }
   if (!powered_ || link_down_) return std::nullopt;
-  return slave_->take_transmit();
+  return slave_.take_transmit();
 }
 
 void Rs4Device::on_malformed_frame(std::error_code why) {
-  if (powered_ && !link_down_) slave_->on_malformed_frame(why);
+  if (powered_ && !link_down_) slave_.on_malformed_frame(why);
 }
 
 }  // namespace rs4sim::rs4::device

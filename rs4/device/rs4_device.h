@@ -90,27 +90,27 @@ class Rs4Device final : public dp::Station {
   [[nodiscard]] const adapter::Adapter& adapter() const noexcept { return adapter_; }
   scanner::Scanner& scanner() noexcept { return adapter_.scanner(); }
   [[nodiscard]] const scanner::Scanner& scanner() const noexcept { return adapter_.scanner(); }
-  [[nodiscard]] const dp::slave::Slave& slave() const noexcept { return *slave_; }
+  [[nodiscard]] const dp::slave::Slave& slave() const noexcept { return slave_; }
   [[nodiscard]] const Rs4DeviceCounters& counters() const noexcept { return counters_; }
   // Heap owned by the device beyond sizeof (scene obstacles), for the memory benchmark.
   [[nodiscard]] std::size_t heap_bytes() const noexcept { return adapter_.scanner().heap_bytes(); }
 
   // ---- dp::Station -------------------------------------------------------------------------
-  [[nodiscard]] std::uint8_t address() const override { return slave_->address(); }
+  [[nodiscard]] std::uint8_t address() const override { return slave_.address(); }
   void on_telegram(const dp::fdl::Telegram& t, TimePoint now) override;
   void on_time(TimePoint now) override;
   [[nodiscard]] std::optional<TimePoint> next_deadline() const override;
   std::optional<dp::fdl::Telegram> take_transmit() override;
   void on_malformed_frame(std::error_code why) override;
-  [[nodiscard]] std::uint16_t min_tsdr_bits() const override { return slave_->min_tsdr_bits(); }
+  [[nodiscard]] std::uint16_t min_tsdr_bits() const override { return slave_.min_tsdr_bits(); }
 
  private:
-  void fresh_slave(std::uint8_t address);
+  void restart_slave(std::uint8_t address);
   void after_core_call(TimePoint now);
 
   scanner::ScannerConfig unit_;  // the configured unit, the template of exchange_unit()
   adapter::Adapter adapter_;
-  std::optional<dp::slave::Slave> slave_;  // always engaged: the adapter keeps a SlaveControl*
+  dp::slave::Slave slave_;  // for the device's lifetime: the adapter keeps a SlaveControl&
   std::deque<dp::fdl::Telegram> pending_;  // replies the slave queued just before the link drop
   bool powered_ = false;
   bool link_down_ = false;

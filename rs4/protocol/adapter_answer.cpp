@@ -122,7 +122,7 @@ Result<ProxyBeginAnswer> decode_proxy_begin_answer(std::span<const std::uint8_t>
   const std::uint8_t direction = answer[2];
   const std::uint8_t flags = answer[3];
   // Reason and direction come together: none with none, something with something.
-  if (reason > static_cast<std::uint8_t>(SyncReason::kRetry) ||
+  if (reason > static_cast<std::uint8_t>(SyncReason::kUserParametrisation) ||
       direction > static_cast<std::uint8_t>(SyncDirection::kDownload) || flags > 1 ||
       (reason == 0) != (direction == 0)) {
     return ProtocolError::kBadAnswerValue;

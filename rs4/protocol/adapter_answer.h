@@ -78,10 +78,11 @@ Result<ErrorMemoryAnswer> decode_error_memory_answer(std::span<const std::uint8_
 // ---- EXTENSION: the proxy's adapter commands ([docs/proxy-protocol.md]) --------------------
 // Why the adapter set Proxy-Request ([RS4 manual §7.1, §7.2]).
 enum class SyncReason : std::uint8_t {
-  kNone = 0,              // no sync requested: nothing was started
-  kPowerUp = 1,           // the RS4 became operational after power-on / adapter start
-  kPcAdapterRemoved = 2,  // the PC adapter was removed: the set may have changed
-  kRetry = 3,             // Proxy-Request again after a failed sync
+  kNone = 0,                 // no sync requested: nothing was started
+  kPowerUp = 1,              // the RS4 became operational after power-on / adapter start
+  kPcAdapterRemoved = 2,     // the PC adapter was removed: the set may have changed
+  kRetry = 3,                // Proxy-Request again after a failed sync
+  kUserParametrisation = 4,  // a user changed the set over PROFIBUS (password): upload it
 };
 // The direction the device wants (it decides, as an IO-Link Data Storage device does).
 enum class SyncDirection : std::uint8_t {

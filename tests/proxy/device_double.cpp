@@ -1,6 +1,7 @@
 // The device double of the proxy tests.
 #include "tests/proxy/device_double.h"
 
+#include "rs4/protocol/telegram.h"
 #include "rs4/scanner/parameter_codec.h"
 #include "storage/crc32.h"
 
@@ -93,6 +94,16 @@ std::vector<std::uint8_t> DeviceDouble::execute(std::span<const std::uint8_t> co
 }
 
 std::vector<std::uint8_t> DeviceDouble::transfer(std::span<const std::uint8_t> command) {
+  // As the adapter answers a download command outside a sync (no password: the proxy holds
+  // none): the RS4's error telegram 0x53, error 0x0503 (wrong password), parameter = the
+  // command, function 0x0005 (command interpreter) ([RS4 manual §7.2.4], rs4_commands.h).
+  const std::uint8_t code = command.empty() ? 0 : command[0];
+  if (code >= 0x62 && code <= 0x65 && !sync_running) {
+    protocol::ErrorTelegram e;
+    e.prefix.options.state = protocol::Option1State::kMeasuring;
+    e.report = {0x0503, code, 0x0005};
+    return protocol::encode_telegram(e).value();
+  }
   const auto request_or = protocol::decode_request(command);
   if (!request_or) return {};
   const auto& req = request_or.value();
@@ -138,10 +149,6 @@ protocol::TransferAnswer DeviceDouble::download(const protocol::TransferRequest&
     download_broken = true;
     rollback();
     a.body = protocol::DownloadBreakAnswer{protocol::kFlagFactoryDefault};
-    return a;
-  }
-  if (!sync_running) {
-    a.status = protocol::TransferStatus::kNoSyncRunning;
     return a;
   }
   if (const auto* begin = std::get_if<protocol::DownloadBeginRequest>(&req)) {

@@ -1,5 +1,6 @@
 // The four start-up scenarios of [RS4 manual §7.1, §7.2] and the proxy's other decisions
 // (docs/proxy.md "Decisions"), against the device double and a real SqliteArchive.
+#include "rs4/protocol/parameter_transfer.h"
 #include "rs4/protocol/telegram.h"
 #include "storage/crc32.h"
 #include "tests/proxy/sync_harness.h"
@@ -67,6 +68,23 @@ TEST(Scenario, ParameterChangeReplacesTheCurrentSetAndHistoryKeepsTheOld) {
   // Every chunk read twice.
   const auto cmds = commands(h.issued);
   EXPECT_EQ(std::count(cmds.begin(), cmds.end(), 0x61), 2 * 9);
+}
+
+// A user's parametrisation over PROFIBUS (reason 4, docs/proxy-protocol.md) is uploaded like a
+// change through the PC adapter, and the sync log names it as such, not as a PC adapter removal.
+TEST(Scenario, UserParametrisationIsUploadedUnderItsOwnReason) {
+  SyncHarness h;
+  h.store(SyncHarness::custom_set(3), "1001");
+  h.device.set = SyncHarness::custom_set(6);
+  h.device.reason = SyncReason::kUserParametrisation;
+  h.device.direction = SyncDirection::kUpload;
+  ASSERT_TRUE(h.run_sync());
+  EXPECT_EQ(h.sync->outputs(), FbOutputs{});
+  EXPECT_EQ(h.real->current(SyncHarness::kStation).value().set.blob, h.device.set);
+  const auto log = h.real->sync_log(SyncHarness::kStation, 10).value();
+  ASSERT_FALSE(log.empty());
+  EXPECT_EQ(log.front().reason, "user-parametrisation");
+  EXPECT_EQ(log.front().direction, storage::SyncDirection::kUpload);
 }
 
 // What the proxy records with a version (docs/storage.md "What maintenance records"): the
@@ -289,19 +307,51 @@ TEST(Comparison, IdentifyDiffersOnRepetition) {
 }
 
 // ---- device refusals: ERROR_NUMBER_RS4
+// A transfer answer whose status byte is not 0: the status is ERROR_NUMBER_RS4, the step's
+// bad-record position is ERROR_NUMBER_FB (22 02: download begin [RS4 manual §6.4]).
 TEST(DeviceRefusal, StatusByteIsErrorNumberRs4) {
   SyncHarness h;
   h.store(SyncHarness::custom_set(3), "1001");
   h.device.factory = true;
   h.device.direction = SyncDirection::kDownload;
-  // A user command aborted the sync on the device side ([RS4 manual §5.2]).
-  h.device.answer_hook = [&](std::uint8_t cmd, std::vector<std::uint8_t>&) {
-    if (cmd == 0x60) h.device.sync_running = false;
+  h.device.answer_hook = [](std::uint8_t cmd, std::vector<std::uint8_t>& answer) {
+    if (cmd != 0x62) return;
+    rs4::protocol::TransferAnswer a;  // the RS4's refusal of a begin with another set size
+    a.code = rs4::protocol::TransferCode::kDownloadBegin;
+    a.options.state = rs4::protocol::Option1State::kMeasuring;
+    a.status = rs4::protocol::TransferStatus::kSizeMismatch;
+    answer = rs4::protocol::encode_answer(a).value();
   };
   ASSERT_TRUE(h.run_sync());
   const auto& out = h.sync->outputs();
   EXPECT_EQ(out.error_number_fb, 0x2202);
-  EXPECT_EQ(out.error_number_rs4, 8);  // TransferStatus::kNoSyncRunning
+  EXPECT_EQ(out.error_number_rs4, 4);  // TransferStatus::kSizeMismatch
+  EXPECT_FALSE(h.device.released);
+}
+
+// A user command aborted the sync on the device side ([RS4 manual §5.2]): the proxy's download
+// begin then comes outside a sync, and the device answers it as the adapter does, with the RS4's
+// error telegram 0x53 0503 (wrong password; bytes pinned in
+// tests/rs4/adapter/proxy_commands_test.cpp, DownloadOutsideASyncIsRefused).
+TEST(DeviceRefusal, DownloadOutsideTheSyncIsTheRs4sWrongPassword) {
+  SyncHarness h;
+  h.store(SyncHarness::custom_set(3), "1001");
+  h.device.factory = true;
+  h.device.direction = SyncDirection::kDownload;
+  std::vector<std::uint8_t> refusal;
+  h.device.answer_hook = [&](std::uint8_t cmd, std::vector<std::uint8_t>& answer) {
+    if (cmd == 0x60) h.device.sync_running = false;
+    if (cmd == 0x62) refusal = answer;
+  };
+  ASSERT_TRUE(h.run_sync());
+  ASSERT_GE(refusal.size(), 7U);
+  EXPECT_EQ(refusal.front(), 0x53);
+  EXPECT_EQ(std::vector<std::uint8_t>(refusal.end() - 6, refusal.end()),
+            (std::vector<std::uint8_t>{0x05, 0x03, 0x00, 0x62, 0x00, 0x05}));
+  const auto& out = h.sync->outputs();
+  EXPECT_EQ(out.error_number_fb, 0x2202);
+  EXPECT_EQ(out.error_number_rs4, 0x0503);
+  EXPECT_FALSE(h.device.released);
 }
 
 TEST(DeviceRefusal, Rs4ErrorTelegramNumberIsErrorNumberRs4) {

@@ -159,7 +159,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   Harness h;
   for (unsigned steps = 0; steps < 64 && !in.empty(); ++steps) {
     switch (in.byte() % 10) {
-      case 0: h.session.request(static_cast<protocol::SyncReason>(in.byte() % 4)); break;
+      case 0: h.session.request(static_cast<protocol::SyncReason>(in.byte() % 5)); break;
       case 1: h.session.start(h.rs4, h.now); break;
       case 2: h.session.stop(h.rs4, h.now); break;
       case 3: h.raw(in); break;

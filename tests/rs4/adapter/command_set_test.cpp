@@ -37,7 +37,7 @@ struct CommandSet : ::testing::Test {
 
 // 0x20 over PROFIBUS, as over RS232: with the password acknowledged (0x16 20) and applied
 // through the configuration mode (start interlock afterwards: OSSD 0 until the restart); the
-// changed set is offered to the proxy (Proxy-Request, reason 2: an upload).
+// changed set is offered to the proxy (Proxy-Request, reason 4: an upload).
 TEST_F(CommandSet, MeasurementWindowOverProfibusWithThePassword) {
   // The power-up's Proxy-Request first ends with a sync, so that the one below is the window's.
   ASSERT_TRUE(protocol::decode_proxy_begin_answer(command(rig, {0x98})));
@@ -52,7 +52,7 @@ TEST_F(CommandSet, MeasurementWindowOverProfibusWithThePassword) {
   EXPECT_EQ(rs4().change_counter(), 1);
   EXPECT_TRUE(rs4().status().restart_interlock) << "the window went through configuration";
   EXPECT_NE(rig.adapter.input_byte() & kInputProxyRequest, 0);
-  EXPECT_EQ(rig.adapter.proxy_session().reason(), protocol::SyncReason::kPcAdapterRemoved);
+  EXPECT_EQ(rig.adapter.proxy_session().reason(), protocol::SyncReason::kUserParametrisation);
   rig.run(40ms);
   EXPECT_FALSE(rig.ossd());
   rig.restart_pulse();
@@ -104,8 +104,11 @@ TEST_F(CommandSet, DownloadOutsideASyncNeedsThePasswordAndAsksForAnUpload) {
   set.response_steps = 3;
   const auto blob = scanner::encode_for_transfer(set);
   const auto crc = scanner::crc32_iso_hdlc(blob);
-  const Bytes begin{0x21, 0x3B, static_cast<std::uint8_t>(crc >> 24),
-                    static_cast<std::uint8_t>(crc >> 16), static_cast<std::uint8_t>(crc >> 8),
+  const Bytes begin{0x21,
+                    0x3B,
+                    static_cast<std::uint8_t>(crc >> 24),
+                    static_cast<std::uint8_t>(crc >> 16),
+                    static_cast<std::uint8_t>(crc >> 8),
                     static_cast<std::uint8_t>(crc)};
   const auto refused = command(rig, with(0x62, {0x01}, begin));
   ASSERT_GE(refused.size(), 6U);
@@ -136,7 +139,7 @@ TEST_F(CommandSet, DownloadOutsideASyncNeedsThePasswordAndAsksForAnUpload) {
   EXPECT_EQ(commit.value().status, TransferStatus::kOk);
   EXPECT_EQ(rs4().parameters().response_steps, 3);
   EXPECT_NE(rig.adapter.input_byte() & kInputProxyRequest, 0);
-  EXPECT_EQ(rig.adapter.proxy_session().reason(), protocol::SyncReason::kPcAdapterRemoved);
+  EXPECT_EQ(rig.adapter.proxy_session().reason(), protocol::SyncReason::kUserParametrisation);
   EXPECT_EQ(sync_direction(rig.adapter.proxy_session().reason(), rs4().factory_settings()),
             protocol::SyncDirection::kUpload);
   EXPECT_TRUE(rig.adapter.released()) << "the OSSD bit's release is kept";

@@ -43,6 +43,35 @@ TEST(Rs4DeviceSwitches, ReservedAddressesKeepTheStationSilent) {
   }
 }
 
+// Invalid switches: the station stays silent (above) and reports the factory address 4
+// ([RS4 manual §4.5]) until a power-up reads a valid one.
+TEST(Rs4DeviceSwitches, InvalidSwitchesReportTheFactoryAddress) {
+  Rs4DeviceConfig c;
+  c.switches = {0x7, 0xF};
+  Rs4Device d(c);
+  EXPECT_EQ(d.address(), 4);
+  d.power_on(dp::TimePoint{1h});
+  EXPECT_EQ(d.address(), 4);
+  d.set_address_switches(switches_for(12));
+  d.power_cycle(dp::TimePoint{1h + 1s});
+  EXPECT_EQ(d.address(), 12);
+  EXPECT_TRUE(d.on_bus(dp::TimePoint{1h + 1s}));
+}
+
+// The device keeps one dp::slave::Slave (the adapter holds its SlaveControl&): a power-up at a
+// new address restarts it in Wait_Prm instead of building another one.
+TEST(Rs4DeviceSwitches, OneSlaveForTheDevicesLifetime) {
+  Rs4Device d;
+  const dp::slave::Slave* const first = &d.slave();
+  d.power_on(dp::TimePoint{1h});
+  d.set_address_switches(switches_for(9));
+  d.power_cycle(dp::TimePoint{1h + 1s});
+  EXPECT_EQ(&d.slave(), first);
+  EXPECT_EQ(d.slave().address(), 9);
+  EXPECT_EQ(d.slave().state(), dp::slave::State::kWaitPrm);
+  EXPECT_EQ(d.slave().master_address(), 0xFF);
+}
+
 TEST(Rs4DeviceSwitches, NewSwitchPositionTakesEffectAtPowerUp) {
   Rs4Device d;
   const dp::TimePoint t{1h};

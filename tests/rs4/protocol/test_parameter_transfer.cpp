@@ -233,8 +233,10 @@ TEST(ProxyAdapterAnswers, BeginAndEndAnswers) {
             (ProxyBeginAnswer{SyncReason::kNone, SyncDirection::kNone, true}));
   EXPECT_EQ(decode_proxy_begin_answer(Bytes{0x98, 0x01, 0x00, 0x00}).error(),
             ProtocolError::kBadAnswerValue);  // a reason without a direction
-  EXPECT_EQ(decode_proxy_begin_answer(Bytes{0x98, 0x04, 0x01, 0x00}).error(),
-            ProtocolError::kBadAnswerValue);
+  EXPECT_EQ(decode_proxy_begin_answer(Bytes{0x98, 0x04, 0x02, 0x00}).value(),
+            (ProxyBeginAnswer{SyncReason::kUserParametrisation, SyncDirection::kUpload, false}));
+  EXPECT_EQ(decode_proxy_begin_answer(Bytes{0x98, 0x05, 0x01, 0x00}).error(),
+            ProtocolError::kBadAnswerValue);  // reason 5 is not defined
   EXPECT_EQ(decode_proxy_begin_answer(Bytes{0x98, 0x01, 0x01}).error(),
             ProtocolError::kBadAnswerLength);
   EXPECT_EQ(decode_proxy_begin_answer(Bytes{0x99, 0x01, 0x01, 0x00}).error(),
