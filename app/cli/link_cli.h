@@ -28,6 +28,7 @@ inline void add_link_options(CLI::App& cmd, LinkOptions& l, const std::string& p
   cmd.add_option("--duration", l.duration, "seconds to run (0 = until Ctrl-C; memory: simulated)")
       ->check(CLI::NonNegativeNumber);
   add_capture_options(cmd, l.capture);
+  add_rs232_capture_option(cmd, l.capture);
 }
 
 // The real-line options of `rs4sim run` (docs/serial.md): --tsl, --rt-priority, --json.

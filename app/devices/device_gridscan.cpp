@@ -73,6 +73,9 @@ class GridScanInstance final : public DeviceInstance {
  public:
   explicit GridScanInstance(const gridscan::Options& o) : options_(o), device_(o) {}
   std::vector<stream::ByteDevice*> byte_devices() override { return {&tap_}; }
+  [[nodiscard]] stream::LineProtocol line_protocol() const override {
+    return stream::LineProtocol::kGridScan;
+  }
   void start(dp::TimePoint now) override { device_.power_on(now); }
   // SIGUSR1: a power cycle (the power-up messages, the configuration window and the alignment
   // arming again, e.g. once the controller has opened the line); SIGUSR2: mains off.
@@ -126,6 +129,13 @@ class GridScanSegment final : public SimulatedSegment {
     print_line_status(out, device_, run_.counters());
   }
   [[nodiscard]] bool healthy() const override { return true; }
+  bool tap_line(stream::FrameTap tap) override {
+    run_.set_frame_tap(std::move(tap));
+    return true;
+  }
+  [[nodiscard]] stream::LineProtocol line_protocol() const override {
+    return stream::LineProtocol::kGridScan;
+  }
   ServiceList services(const ServiceContext& c) override {
     return run_.services(c, rpc::gridscan_watcher(kAddress, device_),
                          [this](const rpc::LineContext& line) {

@@ -80,6 +80,9 @@ class MetronInstance final : public DeviceInstance {
     }
   }
   std::vector<stream::ByteDevice*> byte_devices() override { return {&tap_}; }
+  [[nodiscard]] stream::LineProtocol line_protocol() const override {
+    return stream::LineProtocol::kMetron;
+  }
   // SIGUSR1: the input line high, SIGUSR2: low (what the input type acts on).
   void on_user_signal(bool second, dp::TimePoint) override { device_.set_input(!second); }
   [[nodiscard]] std::string describe() const override {
@@ -131,6 +134,13 @@ class MetronSegment final : public SimulatedSegment {
     print_line_status(out, device_, run_.counters());
   }
   [[nodiscard]] bool healthy() const override { return true; }
+  bool tap_line(stream::FrameTap tap) override {
+    run_.set_frame_tap(std::move(tap));
+    return true;
+  }
+  [[nodiscard]] stream::LineProtocol line_protocol() const override {
+    return stream::LineProtocol::kMetron;
+  }
   ServiceList services(const ServiceContext& c) override {
     return run_.services(c, rpc::metron_watcher(address_, device_),
                          [this](const rpc::LineContext& line) {

@@ -94,6 +94,9 @@ class PolarisInstance final : public DeviceInstance {
     if (o.blocked) blocked_.assign(o.blocked->begin(), o.blocked->end());
   }
   std::vector<stream::ByteDevice*> byte_devices() override { return {&tap_}; }
+  [[nodiscard]] stream::LineProtocol line_protocol() const override {
+    return stream::LineProtocol::kModbusRtu;
+  }
   void start(dp::TimePoint now) override {
     std::vector<std::uint16_t> beams;
     for (const int b : blocked_) beams.push_back(static_cast<std::uint16_t>(b));
@@ -149,6 +152,13 @@ class PolarisSegment final : public SimulatedSegment {
     print_line_status(out, device_, run_.counters());
   }
   [[nodiscard]] bool healthy() const override { return true; }
+  bool tap_line(stream::FrameTap tap) override {
+    run_.set_frame_tap(std::move(tap));
+    return true;
+  }
+  [[nodiscard]] stream::LineProtocol line_protocol() const override {
+    return stream::LineProtocol::kModbusRtu;
+  }
   ServiceList services(const ServiceContext& c) override {
     return run_.services(c, rpc::polaris_watcher(address_, device_),
                          [this](const rpc::LineContext& line) {

@@ -23,6 +23,7 @@
 #include "dp/time/clock.h"
 #include "stream/byte_counters.h"
 #include "stream/byte_device.h"
+#include "stream/frame_tap.h"
 
 #include <functional>
 #include <iosfwd>
@@ -115,6 +116,10 @@ class DeviceInstance {
   // A byte device's cores (non-empty: the shell runs a stream::ByteRunner with them instead
   // of a StationRunner, in the first one's LineSettings); they live as long as this object.
   [[nodiscard]] virtual std::vector<stream::ByteDevice*> byte_devices() { return {}; }
+  // The protocol on the byte devices' line, named in every record of its --capture.
+  [[nodiscard]] virtual stream::LineProtocol line_protocol() const {
+    return stream::LineProtocol::kRaw;
+  }
   // The second port, if the options asked for one.
   [[nodiscard]] virtual std::optional<SidePort> side_port() { return std::nullopt; }
   // SIGUSR1 (`second` false) / SIGUSR2 while running (the RS4: the PC adapter attached /
@@ -157,6 +162,15 @@ class SimulatedSegment {
   [[nodiscard]] virtual bool healthy() const = 0;
   // The in-memory bus, for --capture (nullptr: none to observe).
   virtual dp::link::MemoryBus* bus() { return nullptr; }
+  // A byte device's in-memory line, for --capture: installs `tap` on it (false: no line) and
+  // names its protocol.
+  virtual bool tap_line(stream::FrameTap tap) {
+    (void)tap;
+    return false;
+  }
+  [[nodiscard]] virtual stream::LineProtocol line_protocol() const {
+    return stream::LineProtocol::kRaw;
+  }
   // The gRPC services, with SimTime moving this segment's manual clock (empty: none yet).
   virtual ServiceList services(const ServiceContext& context) {
     (void)context;

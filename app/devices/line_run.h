@@ -15,6 +15,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 
 namespace rs4sim::app {
 
@@ -31,6 +32,8 @@ class LineRun {
   void run_for(dp::Duration d);
   [[nodiscard]] const stream::ByteCounters& counters() const { return line_.counters(); }
   [[nodiscard]] dp::TimePoint now() const { return clock_.now(); }
+  // Every frame on the line with its direction (--capture).
+  void set_frame_tap(stream::FrameTap tap) { line_.line().set_frame_tap(std::move(tap)); }
 
   // The device's service from `make`, Observation and SimTime; the line starts now (its first
   // frames go to the event stream and to Receive).

@@ -9,12 +9,19 @@ namespace rs4sim::app {
 
 void add_capture_options(CLI::App& cmd, CaptureOptions& options) {
   cmd.add_option("--capture", options.file,
-                 "write every telegram to this pcap file (open it in Wireshark with "
-                 "tools/wireshark/rs4sim.lua)");
+                 "write every telegram (a byte device: every frame, with its direction) to "
+                 "this pcap file (open it in Wireshark with tools/wireshark/rs4sim.lua)");
+
   cmd.add_option("--capture-linktype", options.linktype,
                  "user0 (LINKTYPE_USER0 147, default, the project's dissector) or 257 "
                  "(LINKTYPE_PROFIBUS_DL)")
       ->check(CLI::IsMember({"user0", "257"}));
+}
+
+void add_rs232_capture_option(CLI::App& cmd, CaptureOptions& options) {
+  cmd.add_option("--capture-rs232", options.rs232_file,
+                 "write the frames of the RS4's RS232 port (--rs232), with their direction, to "
+                 "this pcap file (open it with tools/wireshark/rs4sim.lua)");
 }
 
 std::unique_ptr<dp::link::Capture> open_capture(const CaptureOptions& options) {

@@ -17,9 +17,12 @@ namespace rs4sim::app {
 struct CaptureOptions {
   std::string file;                // empty: no capture
   std::string linktype = "user0";  // user0 (147, the project's dissector) | 257 (PROFIBUS_DL)
+  std::string rs232_file;          // --capture-rs232: the RS4's RS232 port (line_capture.h)
 };
 
 void add_capture_options(CLI::App& cmd, CaptureOptions& options);
+// --capture-rs232 FILE (a real-time run of the RS4 with --rs232).
+void add_rs232_capture_option(CLI::App& cmd, CaptureOptions& options);
 
 // Opens the capture (nullptr without --capture). Simulated time is shifted to the wall clock
 // at the call, so Wireshark shows today's date. Throws std::runtime_error when the file

@@ -42,10 +42,10 @@ void validate(const LinkOptions& l, bool byte_device) {
     throw UsageError("--baud " + l.baud + ": not a PROFIBUS rate; use one of " +
                      dp::standard_baud_rate_list());
   }
-  if (byte_device && !l.capture.file.empty()) {
+  if (!l.capture.rs232_file.empty() && (byte_device || !is_realtime(l.link))) {
     throw UsageError(
-        "--capture writes PROFIBUS telegrams; this device's line carries none "
-        "(record its bytes with e.g. socat -x or a serial sniffer)");
+        "--capture-rs232 records the RS4's RS232 port, which a real-time run of the RS4 with "
+        "--rs232 has");
   }
   if (l.link == LinkKind::kSerial && l.port.empty()) {
     throw UsageError("--link serial needs --port DEVICE (e.g. /dev/ttyUSB0)");

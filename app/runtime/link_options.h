@@ -41,7 +41,8 @@ struct LinkOptions {
   // service.
   GrpcCliOptions grpc;
   // --capture FILE / --capture-linktype: every PROFIBUS telegram of the run into a pcap file
-  // (docs/capture.md); not for byte devices.
+  // (docs/capture.md); a byte device's frames with their direction (line_capture.h), as
+  // --capture-rs232 FILE the RS4's RS232 port's.
   CaptureOptions capture;
   // A real line (docs/serial.md; `rs4sim run` only): the master's slot time in µs (a reply
   // later than that after the request is not sent, counted as late), the loop thread's

@@ -1,6 +1,7 @@
 #include "app/runtime/shell.h"
 
 #include "app/devices/device_options.h"
+#include "app/runtime/line_capture.h"
 #include "app/runtime/real_line.h"
 #include "app/runtime/run_session.h"
 #include "app/runtime/usage_error.h"
@@ -29,19 +30,41 @@ dp::Duration seconds(double s) {
   return std::chrono::duration_cast<dp::Duration>(std::chrono::duration<double>(s));
 }
 
+// --capture of an in-memory run: the bus's telegrams, or a byte device's line's frames.
+bool open_memory_captures(SimulatedSegment& segment, const DeviceEntry& device,
+                          const LinkOptions& l, std::unique_ptr<dp::link::Capture>& capture,
+                          std::unique_ptr<LineCapture>& line_capture) {
+  try {
+    if (device.byte_device) {
+      line_capture = open_line_capture("--capture", l.capture.file, segment.line_protocol(),
+                                       dp::TimePoint{});
+      if (line_capture && !segment.tap_line(line_capture->tap())) line_capture.reset();
+    } else {
+      capture = open_link_capture(l, dp::TimePoint{});
+      if (segment.bus() != nullptr) attach_capture(capture.get(), *segment.bus());
+    }
+  } catch (const std::runtime_error& e) {
+    std::cerr << "rs4sim: " << e.what() << std::endl;
+    return false;
+  }
+  return true;
+}
+
 int run_memory(const DeviceEntry& device, const DeviceOptions& o, const LinkOptions& l,
                std::ostream& out) {
   RunSession session(out);
   const auto segment = device.simulate(o);
-  const auto capture = open_link_capture(l, dp::TimePoint{});
-  if (segment->bus() != nullptr) attach_capture(capture.get(), *segment->bus());
+  std::unique_ptr<dp::link::Capture> capture;
+  std::unique_ptr<LineCapture> line_capture;
+  if (!open_memory_captures(*segment, device, l, capture, line_capture)) return 1;
   const double secs = l.duration > 0 ? l.duration : device.simulated_seconds;
   const bool whole = run_simulated(session, secs, [&](dp::Duration d) { segment->run_for(d); });
   out << (device.byte_device ? "in-memory line, " : "in-memory bus, ") << secs << " s simulated"
       << (whole ? "" : " (interrupted)");
   if (!device.byte_device) out << ", master " << int(segment->master_address());
   segment->print_summary(out);
-  const bool written = report_capture(capture.get(), l);
+  const bool written =
+      report_capture(capture.get(), l) && report_line_capture(line_capture.get(), l.capture.file);
   return segment->healthy() && written ? 0 : 1;
 }
 
@@ -51,8 +74,9 @@ int run_memory_served(const DeviceEntry& device, const DeviceOptions& o, const L
                       std::ostream& out) {
   const auto segment = device.simulate(o);  // outlives the session's server
   RunSession session(out);
-  const auto capture = open_link_capture(l, dp::TimePoint{});
-  if (segment->bus() != nullptr) attach_capture(capture.get(), *segment->bus());
+  std::unique_ptr<dp::link::Capture> capture;
+  std::unique_ptr<LineCapture> line_capture;
+  if (!open_memory_captures(*segment, device, l, capture, line_capture)) return 1;
   session.serve_grpc(l.grpc, segment->services(session.service_context(session.wall_clock())));
   session.stop_after(l.duration);
   std::cerr << "rs4sim: simulated bus on the manual clock, driven through the API; Ctrl-C to stop"
@@ -61,7 +85,9 @@ int run_memory_served(const DeviceEntry& device, const DeviceOptions& o, const L
   out << (device.byte_device ? "in-memory line, served" : "in-memory bus, served");
   if (!device.byte_device) out << ", master " << int(segment->master_address());
   segment->print_summary(out);
-  return report_capture(capture.get(), l) ? 0 : 1;
+  const bool written =
+      report_capture(capture.get(), l) && report_line_capture(line_capture.get(), l.capture.file);
+  return written ? 0 : 1;
 }
 
 // The character format of the line: a byte device's own, else PROFIBUS 8E1 at --baud.
@@ -110,7 +136,12 @@ class LinkRunner {
     }
   }
   void start() { stations_ ? stations_->start() : byte_runner_->start(); }
-  // Every PROFIBUS telegram on the line (validate() keeps --capture off byte devices).
+  // Every frame of a byte device's line, with its direction.
+  void tap(LineCapture* capture) {
+    if (capture != nullptr && byte_runner_) byte_runner_->set_frame_tap(capture->tap());
+  }
+  [[nodiscard]] bool bytes() const { return !bytes_.empty(); }
+  // Every PROFIBUS telegram on the line.
   void tap(dp::link::Capture* capture) {
     if (capture == nullptr || !stations_) return;
     stations_->set_frame_tap(
@@ -181,10 +212,24 @@ int run_on_link(RunSession& session, DeviceInstance& instance, const LinkOptions
       return 1;
     }
   }
+  if (!side && !l.capture.rs232_file.empty()) {
+    std::cerr << "rs4sim: --capture-rs232 needs the RS232 port (--rs232)" << std::endl;
+    return 2;
+  }
   dp::RealClock clock;
+  const bool byte_line = !instance.byte_devices().empty();
   std::unique_ptr<dp::link::Capture> capture;
+  std::unique_ptr<LineCapture> line_capture;
+  std::unique_ptr<LineCapture> side_capture;
   try {
-    capture = open_link_capture(l, clock.now());
+    if (byte_line) {
+      line_capture = open_line_capture("--capture", l.capture.file, instance.line_protocol(),
+                                       clock.now());
+    } else {
+      capture = open_link_capture(l, clock.now());
+    }
+    side_capture = open_line_capture("--capture-rs232", l.capture.rs232_file,
+                                     stream::LineProtocol::kRs4Rs232, clock.now());
   } catch (const std::runtime_error& e) {
     std::cerr << "rs4sim: " << e.what() << std::endl;
     return 1;
@@ -192,10 +237,12 @@ int run_on_link(RunSession& session, DeviceInstance& instance, const LinkOptions
   instance.start(clock.now());
   LinkRunner runner(io, clock, *transport, instance, l);
   runner.tap(capture.get());
+  runner.tap(line_capture.get());
   std::optional<stream::ByteRunner> side_runner;
   if (side) {
     side_runner.emplace(io, clock, *side_transport);
     side_runner->add(*side->device);
+    if (side_capture) side_runner->set_frame_tap(side_capture->tap());
   }
   // SIGUSR1/SIGUSR2: the device's user actions (the RS4: PC adapter attached/removed).
   asio::signal_set user_signals(io, SIGUSR1, SIGUSR2);
@@ -235,7 +282,10 @@ int run_on_link(RunSession& session, DeviceInstance& instance, const LinkOptions
   if (side_runner) side_runner->start();
   session.run();
   runner.print_status(out);
-  return report_capture(capture.get(), l) ? 0 : 1;
+  const bool written = report_capture(capture.get(), l) &&
+                       report_line_capture(line_capture.get(), l.capture.file) &&
+                       report_line_capture(side_capture.get(), l.capture.rs232_file);
+  return written ? 0 : 1;
 }
 
 std::unique_ptr<dp::link::Capture> open_link_capture(const LinkOptions& link,
@@ -252,6 +302,16 @@ bool report_capture(const dp::link::Capture* capture, const LinkOptions& link) {
   }
   std::cerr << "rs4sim: capture: " << capture->records() << " telegrams in " << link.capture.file
             << std::endl;
+  return true;
+}
+
+bool report_line_capture(LineCapture* capture, const std::string& file) {
+  if (capture == nullptr) return true;
+  if (const auto ec = capture->error() ? capture->error() : capture->flush()) {
+    std::cerr << "rs4sim: capture " << file << ": writing stopped: " << ec.message() << std::endl;
+    return false;
+  }
+  std::cerr << "rs4sim: capture: " << capture->records() << " frames in " << file << std::endl;
   return true;
 }
 

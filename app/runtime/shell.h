@@ -30,6 +30,9 @@ std::unique_ptr<dp::link::Capture> open_link_capture(const LinkOptions& link,
 // After the run: "rs4sim: capture: N telegrams in FILE" on stderr (stdout may carry --json
 // lines), or the write error; returns false after a write error.
 bool report_capture(const dp::link::Capture* capture, const LinkOptions& link);
+// The same for a byte line's capture (line_capture.h): "rs4sim: capture: N frames in FILE".
+class LineCapture;
+bool report_line_capture(LineCapture* capture, const std::string& file);
 
 // Validates both option sets, builds the device and runs it; returns the exit code
 // (1 for a link error, reported on stderr).

@@ -234,3 +234,190 @@ end
 
 DissectorTable.get("wtap_encap"):add(wtap.USER0, p)
 if wtap.PROFIBUS_DL ~= nil then DissectorTable.get("wtap_encap"):add(wtap.PROFIBUS_DL, p) end
+
+-- Byte-line captures (LINKTYPE_USER1, 148; docs/capture.md#byte-lines): a direction byte
+-- (0 master → device, 1 device → master), a protocol byte, then the line's bytes:
+--   1 GridScan CEDES frames: sync 43 45 44 45, SeqCnt, ID (bits 0..6 command, bit 7
+--     curtain → controller), payload, CRC-32/MPEG-2 over SeqCnt..payload, LSB first
+--     [GridScan manual §9.2];
+--   2 METRON slave-mode messages: 02 [node] Length Command Data Checksum, the checksum
+--     making Command + Data + checksum 0xFF mod 256 [METRON manual "No node", "With node"];
+--     standard-mode reports 02 ... 03 shown as such;
+--   3 Modbus RTU: address, function, data, CRC-16 LSB first [Modbus over Serial Line V1.02
+--     §2.5.1.2], with the FC 3/4/16 fields [Modbus Application Protocol V1.1b3 §6];
+--   4 the RS4's RS232 interface, shown as bytes [RS4 manual §5.2.3].
+-- A received chunk that is not a whole frame is shown as bytes (the OS may split or join).
+local line = Proto("rs4sim_line", "rs4sim byte line")
+local DIRECTION = { [0] = "master → device", [1] = "device → master" }
+local LINE_PROTOCOL = { [0] = "raw", [1] = "GridScan", [2] = "METRON", [3] = "Modbus RTU",
+                        [4] = "RS4 RS232" }
+local GS_CMD = { [0x10] = "Mode: Set polling", [0x11] = "Mode: Set full streaming",
+                 [0x12] = "Mode: Set reduced streaming", [0x13] = "Mode: Set stand-by",
+                 [0x14] = "Mode: Get current", [0x20] = "Info: Get version",
+                 [0x21] = "Info: Get product information", [0x22] = "Info: Get count of elements",
+                 [0x23] = "Info: Communication test", [0x24] = "Info: Get alignment value",
+                 [0x25] = "Info: Request alignment mode", [0x30] = "Data: Reduced state",
+                 [0x31] = "Data: Full state", [0x40] = "Safety: Test input",
+                 [0x50] = "Config: Allow change", [0x51] = "Config: Set static",
+                 [0x52] = "Config: Set blanking", [0x53] = "Config: Get current" }
+local MT_CMD = { [0x01] = "Reset software", [0x02] = "Enable OSSD", [0x03] = "Disable OSSD",
+                 [0x04] = "OSSD standby", [0x05] = "Start OSSD measurement",
+                 [0x06] = "Stop OSSD measurement", [0x07] = "Start measurement",
+                 [0x08] = "Stop measurement", [0x09] = "Request beam status",
+                 [0x0A] = "Request measurements", [0x0B] = "Request configuration",
+                 [0x0C] = "Request OSSD status", [0x0D] = "Request light curtain status",
+                 [0xE1] = "E1 checksum or length", [0xE2] = "E2 length or argument",
+                 [0xE3] = "E3 OSSD state", [0xE4] = "E4 no synchronism",
+                 [0xE5] = "E5 no Start measurement" }
+local MB_FN = { [1] = "Read Coils", [2] = "Read Discrete Inputs", [3] = "Read Holding Registers",
+                [4] = "Read Input Registers", [5] = "Write Single Coil",
+                [6] = "Write Single Register", [16] = "Write Multiple Registers" }
+local lf = {
+  direction = ProtoField.uint8("rs4sim.line.direction", "Direction", base.DEC, DIRECTION),
+  protocol = ProtoField.uint8("rs4sim.line.protocol", "Protocol", base.DEC, LINE_PROTOCOL),
+  bytes = ProtoField.bytes("rs4sim.line.bytes", "Bytes"),
+  gs_seq = ProtoField.uint8("rs4sim.gridscan.seq", "SeqCnt", base.DEC),
+  gs_id = ProtoField.uint8("rs4sim.gridscan.id", "ID", base.HEX),
+  gs_cmd = ProtoField.uint8("rs4sim.gridscan.command", "Command", base.HEX, GS_CMD),
+  gs_response = ProtoField.bool("rs4sim.gridscan.response", "Curtain → controller"),
+  gs_payload = ProtoField.bytes("rs4sim.gridscan.payload", "Payload"),
+  gs_crc = ProtoField.uint32("rs4sim.gridscan.crc", "CRC-32/MPEG-2", base.HEX),
+  gs_crc_ok = ProtoField.bool("rs4sim.gridscan.crc_ok", "CRC correct"),
+  mt_node = ProtoField.uint8("rs4sim.metron.node", "Node", base.DEC),
+  mt_length = ProtoField.uint8("rs4sim.metron.length", "Length", base.DEC),
+  mt_cmd = ProtoField.uint8("rs4sim.metron.command", "Command", base.HEX, MT_CMD),
+  mt_data = ProtoField.bytes("rs4sim.metron.data", "Data"),
+  mt_checksum = ProtoField.uint8("rs4sim.metron.checksum", "Checksum", base.HEX),
+  mt_checksum_ok = ProtoField.bool("rs4sim.metron.checksum_ok", "Checksum correct"),
+  mt_report = ProtoField.bytes("rs4sim.metron.report", "Standard-mode report"),
+  mb_address = ProtoField.uint8("rs4sim.modbus.address", "Slave address", base.DEC),
+  mb_fn = ProtoField.uint8("rs4sim.modbus.function", "Function", base.DEC, MB_FN),
+  mb_exception = ProtoField.uint8("rs4sim.modbus.exception", "Exception code", base.HEX),
+  mb_start = ProtoField.uint16("rs4sim.modbus.start", "Starting address", base.HEX),
+  mb_quantity = ProtoField.uint16("rs4sim.modbus.quantity", "Quantity", base.DEC),
+  mb_byte_count = ProtoField.uint8("rs4sim.modbus.byte_count", "Byte count", base.DEC),
+  mb_data = ProtoField.bytes("rs4sim.modbus.data", "Data"),
+  mb_crc = ProtoField.uint16("rs4sim.modbus.crc", "CRC-16", base.HEX),
+  mb_crc_ok = ProtoField.bool("rs4sim.modbus.crc_ok", "CRC correct"),
+}
+line.fields = lf
+
+local function crc32_mpeg2(tvb, from, to)  -- poly 0x04C11DB7, init 0xFFFFFFFF, no reflection
+  local crc = 0xFFFFFFFF
+  for i = from, to - 1 do
+    crc = bit.bxor(crc, bit.lshift(tvb(i, 1):uint(), 24))
+    for _ = 1, 8 do
+      if bit.band(crc, 0x80000000) ~= 0 then
+        crc = bit.bxor(bit.lshift(crc, 1), 0x04C11DB7)
+      else
+        crc = bit.lshift(crc, 1)
+      end
+    end
+  end
+  return bit.band(crc, 0xFFFFFFFF) % 0x100000000
+end
+
+local function crc16_modbus(tvb, from, to)  -- poly 0xA001 reflected, init 0xFFFF
+  local crc = 0xFFFF
+  for i = from, to - 1 do
+    crc = bit.bxor(crc, tvb(i, 1):uint())
+    for _ = 1, 8 do
+      if bit.band(crc, 1) ~= 0 then crc = bit.bxor(bit.rshift(crc, 1), 0xA001)
+      else crc = bit.rshift(crc, 1) end
+    end
+  end
+  return crc
+end
+
+local function gridscan(tvb, tree)
+  local n = tvb:len()
+  if n < 10 or n > 20 or tvb(0, 4):uint() ~= 0x43454445 then return nil end
+  local id = tvb(5, 1):uint()
+  local cmd = bit.band(id, 0x7F)
+  tree:add(lf.gs_seq, tvb(4, 1))
+  local idt = tree:add(lf.gs_id, tvb(5, 1))
+  idt:add(lf.gs_cmd, tvb(5, 1), cmd)
+  idt:add(lf.gs_response, tvb(5, 1), bit.band(id, 0x80) ~= 0)
+  if n > 10 then tree:add(lf.gs_payload, tvb(6, n - 10)) end
+  local crc = tvb(n - 4, 4):le_uint()
+  tree:add_le(lf.gs_crc, tvb(n - 4, 4))
+  tree:add(lf.gs_crc_ok, tvb(n - 4, 4), crc == crc32_mpeg2(tvb, 4, n - 4))
+  return string.format("GridScan SeqCnt %d %s%s", tvb(4, 1):uint(), name(GS_CMD, cmd),
+                       bit.band(id, 0x80) ~= 0 and " (answer)" or "")
+end
+
+local function metron(tvb, tree)
+  local n = tvb:len()
+  if n < 4 or tvb(0, 1):uint() ~= 0x02 then return nil end
+  local pos
+  if 3 + tvb(1, 1):uint() == n then pos = 1            -- no node
+  elseif n >= 5 and 4 + tvb(2, 1):uint() == n then     -- with node
+    tree:add(lf.mt_node, tvb(1, 1)); pos = 2
+  elseif tvb(n - 1, 1):uint() == 0x03 then
+    tree:add(lf.mt_report, tvb(1, n - 2)); return "METRON standard-mode report"
+  else return nil end
+  local len = tvb(pos, 1):uint()
+  tree:add(lf.mt_length, tvb(pos, 1))
+  if len == 0 then return nil end
+  local cmd = tvb(pos + 1, 1):uint()
+  tree:add(lf.mt_cmd, tvb(pos + 1, 1))
+  if len > 1 then tree:add(lf.mt_data, tvb(pos + 2, len - 1)) end
+  local sum = 0
+  for i = pos + 1, n - 1 do sum = (sum + tvb(i, 1):uint()) % 256 end
+  tree:add(lf.mt_checksum, tvb(n - 1, 1))
+  tree:add(lf.mt_checksum_ok, tvb(n - 1, 1), sum == 0xFF)
+  return "METRON " .. name(MT_CMD, cmd)
+end
+
+local function modbus(tvb, tree, from_device)
+  local n = tvb:len()
+  if n < 4 then return nil end
+  local fn = tvb(1, 1):uint()
+  tree:add(lf.mb_address, tvb(0, 1))
+  local fnt = tree:add(lf.mb_fn, tvb(1, 1), bit.band(fn, 0x7F))
+  local body = n - 2
+  if bit.band(fn, 0x80) ~= 0 then
+    fnt:append_text(" (exception)")
+    tree:add(lf.mb_exception, tvb(2, 1))
+  elseif (fn == 3 or fn == 4) and from_device and n >= 5 then
+    tree:add(lf.mb_byte_count, tvb(2, 1))
+    if body > 3 then tree:add(lf.mb_data, tvb(3, body - 3)) end
+  elseif (fn == 3 or fn == 4 or fn == 16) and n >= 8 then
+    tree:add(lf.mb_start, tvb(2, 2))
+    tree:add(lf.mb_quantity, tvb(4, 2))
+    if fn == 16 and not from_device and n >= 9 then
+      tree:add(lf.mb_byte_count, tvb(6, 1))
+      if body > 7 then tree:add(lf.mb_data, tvb(7, body - 7)) end
+    end
+  elseif body > 2 then
+    tree:add(lf.mb_data, tvb(2, body - 2))
+  end
+  tree:add_le(lf.mb_crc, tvb(body, 2))
+  tree:add(lf.mb_crc_ok, tvb(body, 2), tvb(body, 2):le_uint() == crc16_modbus(tvb, 0, body))
+  return string.format("Modbus slave %d %s%s", tvb(0, 1):uint(),
+                       name(MB_FN, bit.band(fn, 0x7F)),
+                       bit.band(fn, 0x80) ~= 0 and " exception" or "")
+end
+
+function line.dissector(tvb, pinfo, tree)
+  if tvb:len() < 2 then return 0 end
+  pinfo.cols.protocol = "rs4sim line"
+  local root = tree:add(line, tvb())
+  local dir = tvb(0, 1):uint()
+  local proto = tvb(1, 1):uint()
+  root:add(lf.direction, tvb(0, 1))
+  root:add(lf.protocol, tvb(1, 1))
+  local info
+  if tvb:len() > 2 then
+    local frame = tvb(2):tvb()
+    root:add(lf.bytes, tvb(2))
+    if proto == 1 then info = gridscan(frame, root)
+    elseif proto == 2 then info = metron(frame, root)
+    elseif proto == 3 then info = modbus(frame, root, dir == 1) end
+  end
+  pinfo.cols.info = string.format("%s  %s", name(DIRECTION, dir),
+                                  info or name(LINE_PROTOCOL, proto) .. " bytes")
+  return tvb:len()
+end
+
+DissectorTable.get("wtap_encap"):add(wtap.USER1, line)
