@@ -74,6 +74,19 @@ bool SegmentTarget::plc_view(std::uint8_t address, v1::PlcView& out) {
   out.set_watchdog_timeouts(n.watchdog_timeouts);
   out.set_passivations(n.passivations);
   out.set_reintegrations(n.reintegrations);
+  if (const auto status = segment_.master().slave_status(address)) {
+    const auto& c = status->counters;
+    auto& dp = *out.mutable_dp();
+    dp.set_requests(c.requests);
+    dp.set_repeats(c.retries);
+    dp.set_no_answer(c.no_answer);
+    dp.set_lost(c.left_data_exchange);
+    dp.set_syncs(c.entered_data_exchange);
+    dp.set_illegal(c.invalid_responses);
+    dp.set_negative(c.negative_replies);
+    dp.set_data_exchanges(c.data_exchanges);
+    dp.set_diag_reads(c.diag_reads);
+  }
   return true;
 }
 

@@ -63,6 +63,9 @@ struct PollCounters {
   std::uint64_t left_data_exchange = 0;  // lost slave or re-parameterisation
                                          // ([IEC 61158-6-3 slave supervision])
   std::uint64_t invalid_responses = 0;
+  // Replies with a negative status: RS (SAP not enabled), RR (no resources), UE (user error)
+  // ([IEC 61158-4-3 frame control, response status]).
+  std::uint64_t negative_replies = 0;
 };
 
 struct SlaveStatus {

@@ -26,6 +26,10 @@ std::error_code negative_reply(const Reply& r) {
 }  // namespace
 
 void SlaveHandler::on_reply(SlaveContext& ctx, const Reply& r, TimePoint now) {
+  if (!r.short_ack && (r.status == S::kSapNotEnabled || r.status == S::kNoResource ||
+                       r.status == S::kUserError)) {
+    ++counters_.negative_replies;
+  }
   switch (last_kind_) {
     case RequestKind::kFdlStatus: on_status_reply(ctx, r); break;
     case RequestKind::kDiag: on_diag_reply(ctx, r); break;

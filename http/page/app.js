@@ -60,6 +60,12 @@ function renderStations() {
     row.dataset.state = v["dp-state"] || (v.powered === "off" ? "off" : "unknown");
     if (v.ossd !== undefined) row.dataset.ossd = v.ossd;
     row.dataset.kind = s.kind;
+    // The master's counters in ProfiTrace's names (docs/http.md "Station counters").
+    const dp = plc && plc.dp ? plc.dp : null;
+    for (const k of ["lost", "syncs", "repeats", "illegal", "negative"]) {
+      if (dp) row.dataset[k] = Number(dp[k] || 0); else delete row.dataset[k];
+    }
+    const n = (k) => (dp ? Number(dp[k] || 0) : "–");
     row.classList.toggle("selected", address === selected);
     row.innerHTML = [
       `<td>${address}</td>`, `<td>${s.kind || "–"}</td>`,
@@ -71,6 +77,9 @@ function renderStations() {
       `<td><code>${v["input-byte"] || ""}</code></td>`, `<td><code>${v["output-byte"] || ""}</code></td>`,
       `<td>${plc ? plc.crcErrors : "–"}</td>`, `<td>${plc ? plc.numberErrors : "–"}</td>`,
       `<td>${plc ? plc.watchdogTimeouts : "–"}</td>`, `<td>${plc ? plc.passivations : "–"}</td>`,
+      `<td class="count">${n("lost")}</td>`, `<td class="count">${n("syncs")}</td>`,
+      `<td class="count">${n("repeats")}</td>`, `<td class="count">${n("illegal")}</td>`,
+      `<td class="count">${n("negative")}</td>`,
       `<td>${s.alarms || "–"}</td>`, `<td>${s.diags}</td>`,
     ].join("");
   }
@@ -122,6 +131,9 @@ function onEvent(e) {
   if (selected === null && (s.kind === "rs4" || s.values["rs4-state"] !== undefined)) selected = address;
   scheduleRender();
   if (address === selected) refreshSelected();
+  if (!stations.get(address).kind || lineOf.get(address)) {
+    if (lineOf.has(address)) refreshLine(address); else probeLine(address);
+  }
 }
 
 let renderPending = false;
@@ -285,6 +297,80 @@ function drawGrid(r) {
   scale.append(t);
 }
 
+// ---- GridScan, METRON, Polaris: their elements/beams ------------------------------------------
+// A station the event stream names but ListDevices does not is asked once which line device
+// it is (GetState of each service; the wrong ones answer NOT_FOUND or UNIMPLEMENTED).
+const LINE_KINDS = [
+  { kind: "gridscan", service: "rs4sim.v1.GridScan", count: (st) => st.elements,
+    text: (st) => `${st.power || "–"}, ${st.mode || "–"}, ${st.configuration || "–"}` +
+      (st.reportInterrupted ? ", reports interrupted" : "") },
+  { kind: "metron", service: "rs4sim.v1.Metron", count: (st) => st.beams,
+    text: (st) => `OSSD ${st.ossd ? "on" : "off"}, ${st.synchronised ? "synchronised" : "not synchronised"}` +
+      (st.interruptedCount ? `, ${st.interruptedCount} interrupted (${st.firstInterrupted}–${st.lastInterrupted})` : "") },
+  { kind: "polaris", service: "rs4sim.v1.Polaris", count: (st) => st.beams,
+    text: (st) => `${st.family || ""} ${st.dataMode || ""}, PN1 ${st.pn1 ? "on" : "off"}, PN2 ${st.pn2 ? "on" : "off"}` },
+];
+const lineOf = new Map();  // address -> entry of LINE_KINDS, or null (not a line device)
+const probing = new Set();
+
+async function probeLine(address) {
+  if (lineOf.has(address) || probing.has(address)) return;
+  probing.add(address);
+  let found = null;
+  for (const k of LINE_KINDS) {
+    try {
+      const st = await call(k.service + "/GetState", { address });
+      found = k;
+      station(address).kind = k.kind;
+      drawLine(address, k, st);
+      break;
+    } catch (err) { /* not this kind */ }
+  }
+  lineOf.set(address, found);
+  probing.delete(address);
+  scheduleRender();
+}
+
+const lineRefreshing = new Set();
+async function refreshLine(address) {
+  const k = lineOf.get(address);
+  if (!k || lineRefreshing.has(address)) return;
+  lineRefreshing.add(address);
+  try {
+    drawLine(address, k, await call(k.service + "/GetState", { address }));
+  } catch (err) {
+    log(`${k.kind} GetState: ${err.message}`);
+  } finally { lineRefreshing.delete(address); }
+}
+
+// One row of cells, element/beam 1 first; data-state free or interrupted (the scene's
+// blocked list), every tenth cell marked.
+function drawLine(address, k, st) {
+  $("lines-panel").hidden = false;
+  let box = $("lines").querySelector(`.line-device[data-address="${address}"]`);
+  if (!box) {
+    box = el("div", { class: "line-device", "data-address": address, "data-kind": k.kind });
+    box.append(el("h3"), el("div", { class: "beams" }));
+    $("lines").append(box);
+  }
+  const n = Number(k.count(st) || 0), blocked = new Set((st.blocked || []).map(Number));
+  box.dataset.interrupted = blocked.size;
+  box.dataset.state = blocked.size ? "interrupted" : "free";
+  const h = box.querySelector("h3");
+  h.textContent = `${k.kind} at address ${address} `;
+  h.append(el("span", { class: "sub" }, `${n} ${k.kind === "gridscan" ? "elements" : "beams"}; ${k.text(st)}`));
+  const row = box.querySelector(".beams");
+  while (row.children.length > n) row.lastChild.remove();
+  while (row.children.length < n) {
+    const i = row.children.length + 1;
+    row.append(el("span", { class: "beam" + (i % 10 === 0 ? " tick" : ""), "data-beam": i, title: `${i}` }));
+  }
+  for (const cell of row.children) {
+    const state = blocked.has(Number(cell.dataset.beam)) ? "interrupted" : "free";
+    if (cell.dataset.state !== state) cell.dataset.state = state;
+  }
+}
+
 // ---- simulated time -------------------------------------------------------------------------
 async function refreshClock(t) {
   try {
@@ -318,5 +404,6 @@ async function start() {
   events.addEventListener("end", () => { $("link").dataset.state = "lost"; $("link").textContent = "run ended"; events.close(); });
   // The contour moves without an event: the selected RS4 is read four times a second.
   setInterval(refreshSelected, 250);
+  setInterval(() => { for (const a of lineOf.keys()) refreshLine(a); }, 250);
 }
 start();

@@ -7,7 +7,10 @@ clock), brings the RS4 to measuring and loads the page: the station's row says O
 Then violates the protective field through the JSON API (POST
 /api/rs4sim.v1.Device/ViolateField) and advances the clock: the row's data-ossd goes "off",
 the SVG shows the object in the protective field, and the input byte's OSSD bit reads 0.
-The screenshot is the test's artifact: live_view.png in the working directory.
+Then drops one reply on the bus: the row's data-repeats goes "1". Then a GridScan
+(`run --device gridscan`): its elements drawn, three interrupted through the JSON API.
+The screenshots are the test's artifacts: live_view.png and live_view_gridscan.png in the
+working directory.
 
 Usage: browser_test.py RS4SIM OUTDIR. Exit 77 (skipped) without selenium or chromium.
 """
@@ -39,6 +42,16 @@ def call(base, method, request):
         return json.load(r)
 
 
+def listening(proc):
+    """The base URL from the run's first line."""
+    line = proc.stdout.readline().strip()
+    prefix = "http: listening on "
+    assert line.startswith(prefix), f"first line: {line!r}"
+    base = line[len(prefix):]
+    assert base.startswith("http://127.0.0.1:") and base.endswith("/"), base
+    return base
+
+
 def main():
     rs4sim, outdir = sys.argv[1], sys.argv[2]
     for path in (CHROMIUM, DRIVER):
@@ -47,13 +60,10 @@ def main():
             return 77
     proc = subprocess.Popen([rs4sim, "run", "--link", "memory", "--http", "127.0.0.1:0"],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    procs = [proc]
     driver = None
     try:
-        line = proc.stdout.readline().strip()
-        prefix = "http: listening on "
-        assert line.startswith(prefix), f"first line: {line!r}"
-        base = line[len(prefix):]
-        assert base.startswith("http://127.0.0.1:") and base.endswith("/"), base
+        base = listening(proc)
         # The boot: measuring, then the start interlock's restart pulse [RS4 manual §4.3].
         for condition, timeout in (("CONDITION_RS4_MEASURING", 60000), ("PRESS", 0),
                                    ("CONDITION_OSSD_ON", 2000)):
@@ -92,22 +102,56 @@ def main():
         wait.until(lambda d: d.execute_script(
             'return document.querySelector(\'#in-bits td[data-bit="7"]\').textContent') == "0")
         driver.find_element(By.CSS_SELECTOR, "#clock:not([hidden])")
+        # The master's counters in ProfiTrace's names: one dropped reply is one repeat.
+        wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, row + '[data-repeats="0"][data-syncs="1"]'))
+        call(base, "rs4sim.v1.Faults/InjectBusFault",
+             {"address": 4, "kind": "BUS_FAULT_KIND_DROP", "direction": "DIRECTION_FROM_STATION",
+              "count": 1})
+        call(base, "rs4sim.v1.SimTime/Advance", {"durationMs": 200})
+        wait.until(lambda d: d.find_elements(
+            By.CSS_SELECTOR, row + '[data-repeats="1"][data-lost="0"][data-syncs="1"]'))
         shot = os.path.join(outdir, "live_view.png")
         driver.save_screenshot(shot)
-        print(f"ok: OSSD off in the DOM, {hits} contour points in the protective field; "
-              f"screenshot {shot}")
+        print(f"ok: OSSD off in the DOM, {hits} contour points in the protective field, "
+              f"one repeat counted; screenshot {shot}")
+
+        # A GridScan on the simulated line: its elements drawn, three interrupted through the
+        # JSON API (GridScan.SetBlocked), the others free.
+        grid = subprocess.Popen([rs4sim, "run", "--device", "gridscan", "--link", "memory",
+                                 "--http", "127.0.0.1:0"],
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        procs.append(grid)
+        base = listening(grid)
+        driver.get(base)
+        box = '#lines .line-device[data-address="0"][data-kind="gridscan"]'
+        wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, box + '[data-state="free"] .beam'))
+        elements = call(base, "rs4sim.v1.GridScan/GetState", {"address": 0})["elements"]
+        cells = len(driver.find_elements(By.CSS_SELECTOR, box + " .beam"))
+        assert cells == elements, (cells, elements)
+        call(base, "rs4sim.v1.GridScan/SetBlocked", {"address": 0, "blocked": [3, 4, 5]})
+        call(base, "rs4sim.v1.SimTime/Advance", {"durationMs": 100})
+        wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, box + '[data-state="interrupted"]'))
+        states = wait.until(lambda d: d.execute_script(
+            "const c = document.querySelectorAll(arguments[0] + ' .beam');"
+            "return c.length ? [...c].slice(0, 7).map((e) => e.dataset.state) : null;", box))
+        assert states == ["free", "free", "interrupted", "interrupted", "interrupted", "free",
+                          "free"], states
+        shot = os.path.join(outdir, "live_view_gridscan.png")
+        driver.save_screenshot(shot)
+        print(f"ok: {elements} GridScan elements drawn, 3..5 interrupted; screenshot {shot}")
         return 0
     finally:
         if driver is not None:
             driver.quit()
-        proc.terminate()
-        try:
-            proc.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-        err = proc.stderr.read()
-        if proc.returncode not in (0, -15):
-            print(f"rs4sim exited {proc.returncode}: {err}")
+        for p in procs:
+            p.terminate()
+            try:
+                p.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                p.kill()
+            err = p.stderr.read()
+            if p.returncode not in (0, -15):
+                print(f"rs4sim exited {p.returncode}: {err}")
 
 
 if __name__ == "__main__":

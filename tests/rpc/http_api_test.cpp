@@ -107,6 +107,63 @@ TEST_F(HttpApiTest, EveryRs4ServiceAnswersAsOverGrpc) {
   EXPECT_EQ(cleared.body, "{}");
 }
 
+// The master's per-station counters in ProfiTrace's vocabulary (docs/http.md "Station
+// counters"), read as the page reads them: GetState's plc.dp over JSON. Known counts from the
+// faults injected: one dropped reply is one repeat; a reply and its repeat dropped is one no
+// answer, one lost and, after the restart, one more sync; a corrupted reply (the FCS check
+// rejects it) is a repeat too.
+TEST_F(HttpApiTest, StationCountersCountTheInjectedBusFaults) {
+  HttpFront h(io_, *server_);
+  boot_over_http(h);
+  const auto dp = [&h] {
+    const auto a = h.call("rs4sim.v1.Observation/GetState", R"({"address": 4})");
+    EXPECT_EQ(a.status, 200u) << a.body;
+    return from_json<v1::DeviceState>(a.body).plc().dp();
+  };
+  const auto fault = [&h](const char* kind, int count) {
+    const auto a = h.call("rs4sim.v1.Faults/InjectBusFault",
+                          std::string(R"({"address": 4, "kind": ")") + kind +
+                              R"(", "direction": "DIRECTION_FROM_STATION", "count": )" +
+                              std::to_string(count) + "}");
+    ASSERT_EQ(a.status, 200u) << a.body;
+  };
+  const auto before = dp();
+  EXPECT_GT(before.data_exchanges(), 0u);
+  EXPECT_EQ(before.syncs(), 1u);  // one start-up into data exchange
+  EXPECT_EQ(before.lost(), 0u);
+  EXPECT_EQ(before.repeats(), 0u);
+  // (while the RS4 boots it answers the master's start-up with RS: negative, and Illegal)
+  EXPECT_EQ(before.illegal(), before.negative());
+  EXPECT_NE(h.call("rs4sim.v1.Observation/GetState", R"({"address": 4})").body.find(R"("repeats":"0")"),
+            std::string::npos);  // the JSON a script reads: uint64 as a string
+
+  fault("BUS_FAULT_KIND_DROP", 1);
+  advance(200);
+  auto c = dp();
+  EXPECT_EQ(c.repeats(), 1u);
+  EXPECT_EQ(c.no_answer(), 0u);
+  EXPECT_EQ(c.lost(), 0u);
+  EXPECT_EQ(c.syncs(), 1u);
+
+  fault("BUS_FAULT_KIND_CORRUPT", 1);
+  advance(200);
+  c = dp();
+  EXPECT_EQ(c.repeats(), 2u);
+  EXPECT_EQ(c.lost(), 0u);
+  EXPECT_EQ(c.illegal(), before.illegal());
+
+  fault("BUS_FAULT_KIND_DROP", 2);  // the reply and its one repeat (max_retry_limit 1)
+  advance(3000);                    // the restart: diagnosis, Set_Prm, Chk_Cfg, data exchange
+  c = dp();
+  EXPECT_EQ(c.repeats(), 3u);
+  EXPECT_EQ(c.no_answer(), 1u);
+  EXPECT_EQ(c.lost(), 1u);
+  EXPECT_EQ(c.syncs(), 2u);
+  EXPECT_EQ(c.negative(), before.negative());
+  EXPECT_TRUE(state().plc().data_exchange());
+  EXPECT_GT(c.requests(), before.requests() + 3);
+}
+
 TEST_F(HttpApiTest, ServiceErrorsKeepTheirCodeAndDetails) {
   HttpFront h(io_, *server_);
   // NOT_FOUND -> 404 with the service's message

@@ -45,6 +45,10 @@ const Bytes kRs = {0x10, 0x02, 0x05,
                    0x03,  // FC RS: SAP not enabled (slave left DATA_EXCH,
                           // [IEC 61158-6-3 slave state machine] [pyprofibus issue #19 trace])
                    0x0A, 0x16};
+const Bytes kRr = {0x10, 0x02, 0x05,
+                   0x02,  // FC RR: no resources ([IEC 61158-4-3 frame control])
+                   0x09,  // FCS 02+05+02
+                   0x16};
 
 std::error_code err(MasterError e) { return make_error_code(e); }
 
@@ -109,6 +113,26 @@ TEST(MasterSupervision, RsToDataExchangeRestartsAtSlaveDiag) {
   ASSERT_EQ(left.size(), 1U);
   EXPECT_EQ(left[0].reason, err(MasterError::kSapNotEnabled));
   EXPECT_EQ(hex(f.step()), hex(diag_request(0x7D)));
+  // ProfiTrace's live list: one RS/RR negative reply, one Lost; the RS does not fit a
+  // Data_Exchange either, so it is one Illegal too
+  const auto c = f.master.slave_status(5)->counters;
+  EXPECT_EQ(c.negative_replies, 1U);
+  EXPECT_EQ(c.left_data_exchange, 1U);
+  EXPECT_EQ(c.entered_data_exchange, 1U);
+  EXPECT_EQ(c.invalid_responses, 1U);
+  EXPECT_EQ(c.retries, 0U);
+}
+
+TEST(MasterSupervision, RrToDataExchangeCountsANegativeReply) {
+  MasterFixture f;
+  f.bring_to_dx();
+  f.step();
+  f.reply(kRr);
+  ASSERT_EQ(f.events<SlaveLeftDataExchange>().size(), 1U);
+  EXPECT_EQ(f.master.slave_status(5)->counters.negative_replies, 1U);
+  f.step();
+  f.reply(kDxDl);  // a positive reply (out of place here) is no negative one
+  EXPECT_EQ(f.master.slave_status(5)->counters.negative_replies, 1U);
 }
 
 TEST(MasterSupervision, InputLengthMismatchLeavesDataExchange) {
