@@ -156,7 +156,7 @@ bool GridScanDevice::periodic() const {
 
 std::optional<TimePoint> GridScanDevice::tick_deadline() const {
   if (power_ != PowerState::kReady || (!pending_ && !periodic())) return std::nullopt;
-  return next_end_ + faults_.late_by;
+  return faults_.transmit.delay(next_end_);
 }
 
 TimePoint GridScanDevice::cycle_end_after(TimePoint t) const {
@@ -175,7 +175,7 @@ void GridScanDevice::tick(TimePoint cycle_end, TimePoint now) {
     if (power_ != PowerState::kReady) return;  // restarted by a configuration change
   }
   send_cycle_messages();
-  const TimePoint from = std::max(cycle_end, now - faults_.late_by);
+  const TimePoint from = std::max(cycle_end, now - faults_.transmit.late);
   next_end_ =
       pending_ ? std::min(pending_->cycle_end, cycle_end_after(from)) : cycle_end_after(from);
 }
@@ -201,7 +201,7 @@ void GridScanDevice::send_cycle_messages() {
 }
 
 void GridScanDevice::send(std::uint8_t id, std::uint8_t seq, const Payload& payload) {
-  if (faults_.silent) return;
+  if (faults_.transmit.silent) return;
   Frame f{seq, id, payload};
   if (faults_.wrong_seq) ++f.seq;
   if (faults_.direction_bit) f.id &= kIdMask;

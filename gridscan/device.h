@@ -10,6 +10,7 @@
 // gets no reply, except the communication test 0x23, which reports them
 // ([GridScan manual §10.2, §10.3]). Every dropped frame is counted by reason.
 
+#include "gridscan/counters.h"
 #include "gridscan/faults.h"
 #include "gridscan/frame.h"
 #include "gridscan/leds.h"
@@ -24,27 +25,6 @@
 #include <vector>
 
 namespace rs4sim::gridscan {
-
-struct Counters {
-  std::uint64_t frames = 0;      // frames cut by idle gap
-  std::uint64_t answered = 0;    // requests answered (incl. communication tests)
-  std::uint64_t comm_tests = 0;  // 0x23 processed
-  std::uint64_t streamed = 0;    // unsolicited cycle messages (streaming, alignment)
-  std::uint64_t truncated = 0;   // fewer than 10 bytes
-  std::uint64_t oversized = 0;   // more than 10 bytes (requests carry no payload)
-  std::uint64_t bad_sync = 0;
-  std::uint64_t bad_crc = 0;
-  std::uint64_t bad_seq = 0;
-  std::uint64_t unknown_id = 0;
-  std::uint64_t direction_bit = 0;  // request with ID bit 7 set
-  std::uint64_t busy = 0;           // a second request in the same cycle
-  std::uint64_t not_ready = 0;      // before the power-up Reduced state
-  std::uint64_t restarts = 0;       // configuration changes
-  [[nodiscard]] std::uint64_t dropped() const {
-    return truncated + oversized + bad_sync + bad_crc + bad_seq + unknown_id + direction_bit +
-           busy + not_ready;
-  }
-};
 
 enum class PowerState : std::uint8_t { kOff, kStarting, kReady };
 
@@ -76,7 +56,7 @@ class GridScanDevice final : public stream::ByteDevice {
   void set_alignment_value(std::uint16_t v) { scene_.alignment_value = v; }
 
   [[nodiscard]] const FaultControls& faults() const { return faults_; }
-  // Wakes the link: the answer time (late_by) moves the deadline.
+  // Wakes the link: the answer time (transmit.late) moves the deadline.
   void set_faults(const FaultControls& f) {
     faults_ = f;
     wake();

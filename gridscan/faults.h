@@ -5,16 +5,17 @@
 // frames as they go on the wire; the curtain's own counters stay right, so clearing a
 // fault brings back correct frames at once.
 
-#include "stream/clock.h"
+#include "stream/transmit_fault.h"
 
 namespace rs4sim::gridscan {
 
 struct FaultControls {
-  stream::Duration late_by{0};  // every frame of a cycle leaves this much after its end
+  // late: every frame of a cycle leaves this much after its end; silent: nothing is sent
+  // (communication loss)
+  stream::TransmitFault transmit{};
   bool wrong_seq = false;       // SeqCnt one higher than it should be
   bool direction_bit = false;   // ID bit 7 cleared (the CRC is computed over the wrong ID)
   bool bad_crc = false;         // bit 0 of the CRC's first byte inverted
-  bool silent = false;          // nothing is sent (communication loss)
   bool config_not_set = false;  // Config: Set static/blanking fail with code 1 "not set"
 
   friend bool operator==(const FaultControls&, const FaultControls&) = default;

@@ -57,7 +57,7 @@ void MetronDevice::on_time(stream::TimePoint now) {
   } else if (!resetting(now)) {
     scratch_.clear();
     standard_.advance(now, scene_, scratch_);
-    for (auto& f : scratch_) queue({f.at + faults_.extra_delay, std::move(f.bytes)});
+    for (auto& f : scratch_) queue(std::move(f));
   }
   release(now);
 }
@@ -85,7 +85,7 @@ void MetronDevice::react(const SlaveMessage& m, const Reaction& r, stream::TimeP
   auto bytes =
       encode_reply(options_.wire, node, *r.reply_code, r.reply_data, options_.checksum_reading);
   const auto due = std::max(now, m.first_byte + reply_delay(m.wire_bytes, options_.t_response));
-  queue({due + faults_.extra_delay, std::move(bytes)});
+  queue({due, std::move(bytes)});
 }
 
 void MetronDevice::count(const Reaction& r) {
@@ -100,10 +100,6 @@ void MetronDevice::count(const Reaction& r) {
 }
 
 void MetronDevice::queue(Outgoing frame) {
-  if (faults_.silent) {
-    ++counters_.suppressed;
-    return;
-  }
   auto& b = frame.bytes;
   if (faults_.bad_checksum && b.size() >= 2) {
     // slave reply: the last byte; standard report: the byte before End, if a checksum is sent
@@ -113,15 +109,12 @@ void MetronDevice::queue(Outgoing frame) {
       b[b.size() - 2] = static_cast<std::uint8_t>(~b[b.size() - 2]);
   }
   if (faults_.truncate && !b.empty()) b.pop_back();
-  const auto at = std::upper_bound(pending_.begin(), pending_.end(), frame.at,
-                                   [](stream::TimePoint t, const Outgoing& o) { return t < o.at; });
-  pending_.insert(at, std::move(frame));
+  if (!pending_.schedule(std::move(b), frame.at, faults_.transmit)) ++counters_.suppressed;
 }
 
 void MetronDevice::release(stream::TimePoint now) {
-  while (!pending_.empty() && pending_.front().at <= now) {
-    transmit_.push_back(std::move(pending_.front().bytes));
-    pending_.pop_front();
+  while (auto frame = pending_.pop_due(now)) {
+    transmit_.push_back(std::move(*frame));
     ++counters_.frames_sent;
   }
 }
@@ -132,7 +125,7 @@ std::optional<stream::TimePoint> MetronDevice::next_deadline() const {
   const auto take = [&](std::optional<stream::TimePoint> t) {
     if (t && (!d || *t < *d)) d = t;
   };
-  if (!pending_.empty()) take(pending_.front().at);
+  take(pending_.next_due());
   take(receiver_.deadline());
   if (options_.line_mode == LineMode::kStandard) take(standard_.deadline());
   return d;

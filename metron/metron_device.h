@@ -4,6 +4,7 @@
 // (sends reports by its reporting mode) [METRON manual "Serial line management"]. Sans-I/O:
 // time comes in with every call, frames leave through take_transmit() when due.
 
+#include "metron/counters.h"
 #include "metron/faults.h"
 #include "metron/options.h"
 #include "metron/scene.h"
@@ -12,6 +13,7 @@
 #include "metron/slave_state.h"
 #include "metron/standard_line.h"
 #include "stream/byte_device.h"
+#include "stream/transmit_fault.h"
 
 #include <deque>
 #include <optional>
@@ -68,7 +70,7 @@ class MetronDevice final : public stream::ByteDevice {
   Counters counters_;
   bool started_ = false;
   stream::TimePoint reset_until_{};
-  std::deque<Outgoing> pending_;  // due in time order
+  stream::TransmitQueue pending_;
   std::deque<std::vector<std::uint8_t>> transmit_;
   std::vector<Outgoing> scratch_;
 };

@@ -5,7 +5,6 @@
 #include "modbus/pdu.h"
 #include "modbus/timing.h"
 
-#include <algorithm>
 #include <utility>
 
 namespace rs4sim::polaris {
@@ -55,7 +54,7 @@ std::optional<stream::TimePoint> Device::next_deadline() const {
   const auto earliest = [&next](stream::TimePoint t) {
     if (!next || t < *next) next = t;
   };
-  if (!pending_.empty()) earliest(pending_.front().due);
+  if (const auto due = pending_.next_due()) earliest(*due);
   if (next_push_) earliest(*next_push_);
   return next;
 }
@@ -113,9 +112,8 @@ void Device::advance(stream::TimePoint now) {
     push_data(*next_push_);
     *next_push_ += options_.scan_time;
   }
-  while (!pending_.empty() && pending_.front().due <= now) {
-    transmit_.push_back(std::move(pending_.front().bytes));
-    pending_.pop_front();
+  while (std::optional<std::vector<std::uint8_t>> frame = pending_.pop_due(now)) {
+    transmit_.push_back(std::move(*frame));
     ++counters_.frames_sent;
   }
 }
@@ -203,15 +201,8 @@ void Device::push_data(stream::TimePoint due) {
 }
 
 void Device::schedule(std::vector<std::uint8_t> bytes, stream::TimePoint due) {
-  if (faults_.no_answer) {
-    ++counters_.suppressed;
-    return;
-  }
   if (faults_.bad_crc) bytes.back() = static_cast<std::uint8_t>(~bytes.back());
-  due += faults_.late_by;
-  const auto at = std::upper_bound(pending_.begin(), pending_.end(), due,
-                                   [](stream::TimePoint t, const Pending& p) { return t < p.due; });
-  pending_.insert(at, Pending{due, std::move(bytes)});
+  if (!pending_.schedule(std::move(bytes), due, faults_.transmit)) ++counters_.suppressed;
 }
 
 stream::TimePoint Device::scan_end_after(stream::TimePoint t) const {

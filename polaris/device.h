@@ -11,10 +11,13 @@
 // The scene (interrupted beams) and the fault controls are set from outside (API, tests).
 
 #include "modbus/rtu_frame.h"
+#include "polaris/counters.h"
+#include "polaris/faults.h"
 #include "polaris/measurement.h"
 #include "polaris/options.h"
 #include "stream/byte_device.h"
 #include "stream/idle_gap_framer.h"
+#include "stream/transmit_fault.h"
 
 #include <cstdint>
 #include <deque>
@@ -24,31 +27,6 @@
 #include <vector>
 
 namespace rs4sim::polaris {
-
-// Every received frame lands in exactly one of the first ten counters.
-struct Counters {
-  std::uint64_t requests = 0;  // well-formed reads for us (answered with data)
-  std::uint64_t crc_errors = 0;
-  std::uint64_t too_short = 0;        // < 4 bytes
-  std::uint64_t oversized = 0;        // > 256 bytes
-  std::uint64_t broadcasts = 0;       // address 0: not supported, ignored
-  std::uint64_t foreign_address = 0;  // for another slave, ignored
-  std::uint64_t bad_function = 0;     // not FC 3/4
-  std::uint64_t bad_request = 0;      // wrong length or 485MB word count -> exception 0x03
-  std::uint64_t bad_start = 0;        // outside the data block -> exception 0x02
-  std::uint64_t answers_ignored = 0;  // master role: the slave's replies
-  std::uint64_t exceptions_sent = 0;
-  std::uint64_t frames_sent = 0;  // answers and pushes put on the line
-  std::uint64_t suppressed = 0;   // frames the no_answer fault swallowed
-};
-
-// Faults the controller must catch, applied to every frame sent while set.
-struct Faults {
-  bool bad_crc = false;        // the CRC's high byte inverted
-  bool no_answer = false;      // nothing sent (slave: no answer; master: no push)
-  stream::Duration late_by{};  // sent this much later than due
-  friend bool operator==(const Faults&, const Faults&) = default;
-};
 
 class Device final : public stream::ByteDevice {
  public:
@@ -79,11 +57,6 @@ class Device final : public stream::ByteDevice {
   [[nodiscard]] bool pn2(stream::TimePoint now) const;
 
  private:
-  struct Pending {
-    stream::TimePoint due;
-    std::vector<std::uint8_t> bytes;
-  };
-
   void start(stream::TimePoint now);
   void advance(stream::TimePoint now);
   void handle(const stream::GapFrame& frame);
@@ -100,7 +73,7 @@ class Device final : public stream::ByteDevice {
   stream::TimePoint scene_since_{};
   std::optional<stream::TimePoint> epoch_;
   std::optional<stream::TimePoint> next_push_;
-  std::deque<Pending> pending_;
+  stream::TransmitQueue pending_;
   std::deque<std::vector<std::uint8_t>> transmit_;
   Counters counters_;
   Faults faults_;

@@ -135,12 +135,12 @@ std::vector<std::uint16_t> elements_of(std::uint64_t mask, unsigned count) {
 std::vector<std::string> gridscan_faults(const gridscan::GridScanDevice& d) {
   const auto& f = d.faults();
   std::vector<std::string> out;
-  if (f.late_by.count() > 0) out.emplace_back("late-answer");
+  if (f.transmit.late.count() > 0) out.emplace_back("late-answer");
   if (f.wrong_seq) out.emplace_back("wrong-seq");
   if (f.direction_bit) out.emplace_back("direction-bit");
   if (f.bad_crc) out.emplace_back("bad-crc");
   if (d.scene().internal_failure) out.emplace_back("internal-failure");
-  if (f.silent) out.emplace_back("silent");
+  if (f.transmit.silent) out.emplace_back("silent");
   if (f.config_not_set) out.emplace_back("config-not-set");
   return out;
 }
@@ -173,8 +173,8 @@ void set_old_delay_ms(v1::MetronState& out, std::uint32_t ms) { out.set_delay_ms
 
 std::vector<std::string> metron_faults(const metron::Faults& f) {
   std::vector<std::string> out;
-  if (f.silent) out.emplace_back("silent");
-  if (f.extra_delay.count() > 0) out.emplace_back("late");
+  if (f.transmit.silent) out.emplace_back("silent");
+  if (f.transmit.late.count() > 0) out.emplace_back("late");
   if (f.bad_checksum) out.emplace_back("bad-checksum");
   if (f.wrong_node) out.emplace_back("wrong-node");
   if (f.truncate) out.emplace_back("truncate");
@@ -186,8 +186,8 @@ std::vector<std::string> metron_faults(const metron::Faults& f) {
 std::vector<std::string> polaris_faults(const polaris::Faults& f) {
   std::vector<std::string> out;
   if (f.bad_crc) out.emplace_back("bad-crc");
-  if (f.no_answer) out.emplace_back("no-answer");
-  if (f.late_by.count() > 0) out.emplace_back("late");
+  if (f.transmit.silent) out.emplace_back("no-answer");
+  if (f.transmit.late.count() > 0) out.emplace_back("late");
   return out;
 }
 
@@ -298,7 +298,7 @@ grpc::Status GridScanService::GetState(grpc::ServerContext*, const v1::LineDevic
           out->add_report_interrupted_elements(e);
         }
         for (const auto& f : gridscan_faults(d_)) out->add_faults_present(f);
-        out->set_late_ms(whole_ms(d_.faults().late_by));
+        out->set_late_ms(whole_ms(d_.faults().transmit.late));
         const auto& k = d_.counters();
         auto* o = out->mutable_counters();
         o->set_frames(k.frames);
@@ -391,13 +391,13 @@ grpc::Status GridScanService::fault(const v1::GridScanFaultRequest& in, bool inj
         auto f = d_.faults();
         switch (which) {
           case v1::GRID_SCAN_FAULT_LATE_ANSWER:
-            f.late_by = inject ? stream::Duration(std::chrono::milliseconds(in.late_ms()))
+            f.transmit.late = inject ? stream::Duration(std::chrono::milliseconds(in.late_ms()))
                                : stream::Duration{};
             break;
           case v1::GRID_SCAN_FAULT_WRONG_SEQ: f.wrong_seq = inject; break;
           case v1::GRID_SCAN_FAULT_DIRECTION_BIT: f.direction_bit = inject; break;
           case v1::GRID_SCAN_FAULT_BAD_CRC: f.bad_crc = inject; break;
-          case v1::GRID_SCAN_FAULT_SILENT: f.silent = inject; break;
+          case v1::GRID_SCAN_FAULT_SILENT: f.transmit.silent = inject; break;
           case v1::GRID_SCAN_FAULT_CONFIG_NOT_SET: f.config_not_set = inject; break;
           default: break;
         }
@@ -496,7 +496,7 @@ grpc::Status MetronService::GetState(grpc::ServerContext*, const v1::LineDeviceR
         out->set_last_interrupted(scene.measure(metron::Measurement::kLastInterrupted));
         out->set_interrupted_count(scene.measure(metron::Measurement::kInterruptedCount));
         for (const auto& f : metron_faults(d_.faults())) out->add_faults_present(f);
-        out->set_late_ms(whole_ms(d_.faults().extra_delay));
+        out->set_late_ms(whole_ms(d_.faults().transmit.late));
         set_old_delay_ms(*out, out->late_ms());
         const auto k = d_.counters();
         auto* c = out->mutable_counters();
@@ -581,9 +581,9 @@ grpc::Status MetronService::fault(const v1::MetronFaultRequest& in, bool inject)
       [&](dp::TimePoint) {
         auto& f = d_.faults();
         switch (which) {
-          case v1::METRON_FAULT_SILENT: f.silent = inject; break;
+          case v1::METRON_FAULT_SILENT: f.transmit.silent = inject; break;
           case v1::METRON_FAULT_LATE:
-            f.extra_delay = inject ? stream::Duration(std::chrono::milliseconds(late_ms))
+            f.transmit.late = inject ? stream::Duration(std::chrono::milliseconds(late_ms))
                                    : stream::Duration{};
             break;
           case v1::METRON_FAULT_BAD_CHECKSUM: f.bad_checksum = inject; break;
@@ -660,7 +660,7 @@ grpc::Status PolarisService::GetState(grpc::ServerContext*, const v1::LineDevice
           p->set_last(obj.last);
         }
         for (const auto& f : polaris_faults(d_.faults())) out->add_faults_present(f);
-        out->set_late_ms(whole_ms(d_.faults().late_by));
+        out->set_late_ms(whole_ms(d_.faults().transmit.late));
         const auto& k = d_.counters();
         auto* c = out->mutable_counters();
         c->set_requests(k.requests);
@@ -714,9 +714,9 @@ grpc::Status PolarisService::fault(const v1::PolarisFaultRequest& in, bool injec
         auto f = d_.faults();
         switch (which) {
           case v1::POLARIS_FAULT_BAD_CRC: f.bad_crc = inject; break;
-          case v1::POLARIS_FAULT_SILENT: f.no_answer = inject; break;
+          case v1::POLARIS_FAULT_SILENT: f.transmit.silent = inject; break;
           case v1::POLARIS_FAULT_LATE:
-            f.late_by = inject ? stream::Duration(std::chrono::milliseconds(in.late_ms()))
+            f.transmit.late = inject ? stream::Duration(std::chrono::milliseconds(in.late_ms()))
                                : stream::Duration{};
             break;
           default: break;

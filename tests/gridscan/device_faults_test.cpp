@@ -23,7 +23,7 @@ TEST(GridScanFaults, LateAnswer) {
   DeviceHarness h;
   h.boot();
   const auto ready = h.clock.now();
-  h.device.set_faults({.late_by = 50ms});
+  h.device.set_faults({.transmit = {.late = 50ms}});
   const auto s = reduced_state(h);
   ASSERT_EQ(s.size(), 1U);
   EXPECT_EQ(s[0].bytes, kClearState);
@@ -42,7 +42,7 @@ TEST(GridScanFaults, WrongSeqCntDirectionBitBadCrc) {
   h.device.set_faults({.bad_crc = true});
   s = h.exchange(request(6, CommandId::kDataReducedState));
   EXPECT_EQ(decode_response(s.at(0).bytes, 22).error(), FrameError::kBadCrc);
-  h.device.set_faults({.silent = true});
+  h.device.set_faults({.transmit = {.silent = true}});
   EXPECT_TRUE(h.exchange(request(8, CommandId::kDataReducedState)).empty());
   h.device.set_faults({});
   s = h.exchange(request(10, CommandId::kDataReducedState));

@@ -35,7 +35,7 @@ TEST(GridScanWake, ALateAnswerClearedFromOutsideLeavesAtTheCycleEnd) {
   Line l;
   const auto ready = l.t0 + 1700ms;
   FaultControls late;
-  late.late_by = 20ms;
+  late.transmit.late = 20ms;
   l.device.set_faults(late);
   l.line.run_until(ready + 5ms);
   l.line.write(request(2, CommandId::kInfoCommunicationTest));
@@ -54,7 +54,7 @@ TEST(GridScanWake, AFaultInjectedFromOutsideDelaysThePendingAnswer) {
   l.line.write(request(2, CommandId::kInfoCommunicationTest));
   l.line.run_until(ready + 15ms);
   FaultControls late;
-  late.late_by = 20ms;
+  late.transmit.late = 20ms;
   l.device.set_faults(late);
   l.line.run_until(ready + 49ms);
   EXPECT_TRUE(l.line.take_received().empty());

@@ -12,7 +12,7 @@ const Bytes kRequest{0x02, 0x01, 0x0C, 0xF3};
 
 TEST(MetronFaults, Silent) {
   Rig rig(slave_options());
-  rig.device().faults().silent = true;
+  rig.device().faults().transmit.silent = true;
   EXPECT_TRUE(rig.exchange(kRequest).empty());
   EXPECT_EQ(rig.device().counters().suppressed, 1U);
   EXPECT_EQ(rig.device().counters().executed, 1U);  // the command still ran
@@ -20,7 +20,7 @@ TEST(MetronFaults, Silent) {
 
 TEST(MetronFaults, LateAnswer) {
   Rig rig(slave_options());
-  rig.device().faults().extra_delay = 50ms;
+  rig.device().faults().transmit.late = 50ms;
   const auto t0 = rig.clock().now();
   const auto s = rig.exchange(kRequest);
   ASSERT_EQ(s.size(), 1U);

@@ -34,7 +34,7 @@ TEST(PolarisWake, ASceneChangeFromOutsideGoesOutWithTheNextPushOnTime) {
   for (std::uint16_t b = 25; b <= 34; ++b) beams.push_back(b);
   ASSERT_FALSE(device.set_interrupted(beams, clock.now()));
   Faults late;
-  late.late_by = milliseconds(3);
+  late.transmit.late = milliseconds(3);
   device.set_faults(late);
   line.run_until(t0 + milliseconds(59));
   const auto got = line.take_received();

@@ -1,0 +1,25 @@
+#pragma once
+// What the barrier counted on its Modbus RTU line.
+
+#include <cstdint>
+
+namespace rs4sim::polaris {
+
+// Every received frame lands in exactly one of the first ten counters.
+struct Counters {
+  std::uint64_t requests = 0;  // well-formed reads for us (answered with data)
+  std::uint64_t crc_errors = 0;
+  std::uint64_t too_short = 0;        // < 4 bytes
+  std::uint64_t oversized = 0;        // > 256 bytes
+  std::uint64_t broadcasts = 0;       // address 0: not supported, ignored
+  std::uint64_t foreign_address = 0;  // for another slave, ignored
+  std::uint64_t bad_function = 0;     // not FC 3/4
+  std::uint64_t bad_request = 0;      // wrong length or 485MB word count -> exception 0x03
+  std::uint64_t bad_start = 0;        // outside the data block -> exception 0x02
+  std::uint64_t answers_ignored = 0;  // master role: the slave's replies
+  std::uint64_t exceptions_sent = 0;
+  std::uint64_t frames_sent = 0;  // answers and pushes put on the line
+  std::uint64_t suppressed = 0;   // frames the silent fault swallowed
+};
+
+}  // namespace rs4sim::polaris
