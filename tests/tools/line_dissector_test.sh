@@ -56,7 +56,7 @@ with open(sys.argv[1], "wb") as f:
 PY
 # booleans print as 1/0 with -T fields
 fields() {
-  tshark -X "lua_script:$lua" -r "$dir/manual.pcap" -T fields -E separator=, "$@" 2>&1
+  tshark -X "lua_script:$lua" -r "$dir/manual.pcap" -T fields -E separator=, "$@" 2>&1 | grep -v "^Running as user"
 }
 got=$(fields -e rs4sim.line.direction -e rs4sim.line.protocol -e rs4sim.gridscan.seq \
   -e rs4sim.gridscan.command -e rs4sim.gridscan.response -e rs4sim.gridscan.payload \
