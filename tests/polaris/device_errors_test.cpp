@@ -122,7 +122,7 @@ TEST(PolarisErrors, ForeignAndBroadcastAreSilent) {
 TEST(PolarisErrors, FaultBadCrc) {
   Harness h(fl1());
   with_scene(h);
-  h.device.set_faults(Faults{true, false, {}});
+  h.device.set_faults(Faults{true, {false, {}}});
   const auto sent = h.exchange(kGoodFl1);
   ASSERT_TRUE(sent);
   Bytes expected = kFl1Answer;
@@ -135,10 +135,10 @@ TEST(PolarisErrors, FaultNoAnswerThenLate) {
   o.response_time = milliseconds(2);
   Harness h(o);
   with_scene(h);
-  h.device.set_faults(Faults{false, true, {}});
+  h.device.set_faults(Faults{false, {true, {}}});
   EXPECT_FALSE(h.exchange(kGoodFl1));
   EXPECT_EQ(h.device.counters().suppressed, 1U);
-  h.device.set_faults(Faults{false, false, milliseconds(30)});
+  h.device.set_faults(Faults{false, {false, milliseconds(30)}});
   const auto start = h.clock.now();
   const auto sent = h.exchange(kGoodFl1, milliseconds(100));
   ASSERT_TRUE(sent);

@@ -81,7 +81,7 @@ TEST(PolarisMaster, Mb485PushesTheBits) {
 
 TEST(PolarisMaster, FaultSkipsPushes) {
   Harness h(master_fl4());
-  h.device.set_faults(Faults{false, true, {}});
+  h.device.set_faults(Faults{false, {true, {}}});
   EXPECT_FALSE(h.run_until_sent(h.clock.now() + milliseconds(50)));
   EXPECT_EQ(h.device.counters().suppressed, 2U);
 }
