@@ -6,7 +6,8 @@
 //   1. decodes received bytes into telegrams (fdl::Decoder) and calls on_telegram();
 //   2. calls on_time() when the station's next_deadline() has passed;
 //   3. after either call, drains next_transmit() (or take_transmit()) and puts the telegrams
-//      on the wire;
+//      on the wire, each no earlier than its send_time() where the link honours that
+//      (set_send_time_honoured);
 //   4. reports frames its decoder rejected through on_malformed_frame();
 //   5. installs a wake handler (set_wake_handler): a core whose transmit queue or
 //      next_deadline() changed outside on_telegram()/on_time() (an application request,
@@ -55,6 +56,19 @@ class Station {
     return &scratch;
   }
 
+  // When the telegram next_transmit()/take_transmit() handed out last may start on the wire
+  // at the earliest; nullopt = at once. A link asks only after it said it honours it
+  // (set_send_time_honoured(true)): it then holds the telegram until that time, or (a simulated
+  // wire) starts it then. This lets a core hand out a telegram it already knows, such as a
+  // master's next request after TID1 ([IEC 61158-4-3 bus parameters, timing]), in the same call
+  // as the reply, instead of waiting for a deadline of its own. Default: nullopt.
+  [[nodiscard]] virtual std::optional<TimePoint> send_time() const { return std::nullopt; }
+
+  // Set by a link that honours send_time(). It is off unless the link the station is
+  // attached to turns it on, so a wrapper station that does not forward it gets every telegram
+  // from its inner core at the time it is due, as a link that ignores send_time() needs.
+  void set_send_time_honoured(bool honoured) { send_time_honoured_ = honoured; }
+
   // The link's decoder rejected a frame under the receiver checks
   // ([IEC 61158-4-3 frame reception]): the station counts it (a slave shows it in its counters).
   // Default: ignored.
@@ -75,9 +89,11 @@ class Station {
   void wake() const {
     if (wake_) wake_();
   }
+  [[nodiscard]] bool send_time_honoured() const { return send_time_honoured_; }
 
  private:
   std::function<void()> wake_;
+  bool send_time_honoured_ = false;
 };
 
 }  // namespace rs4sim::dp

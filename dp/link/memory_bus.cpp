@@ -107,6 +107,7 @@ void MemoryBus::attach(Station& station) {
   }
   ports_[a] = std::make_unique<Port>();
   ports_[a]->station = &station;
+  station.set_send_time_honoured(true);  // transmit() starts each telegram at its send_time()
   Port* p = ports_[a].get();
   p->slot = order_.size();
   order_.push_back(p);
@@ -212,7 +213,10 @@ void MemoryBus::refresh_deadline(Port& p) {
 }
 
 void MemoryBus::drain(Port& p) {
-  while (const fdl::Telegram* t = p.station->next_transmit(tx_scratch_)) transmit(p, *t);
+  while (const fdl::Telegram* t = p.station->next_transmit(tx_scratch_)) {
+    const auto at = p.station->send_time();
+    transmit(p, *t, at && *at > clock_.now() ? *at : clock_.now());
+  }
   refresh_deadline(p);
 }
 
@@ -224,8 +228,9 @@ std::optional<std::uint8_t> MemoryBus::route(Port& from, const fdl::Telegram& t)
   return to;
 }
 
-TimePoint MemoryBus::arrival_time(const Port& from, const fdl::Telegram& t, std::size_t bytes) {
-  if (!config_.wire_model) return clock_.now();
+TimePoint MemoryBus::arrival_time(const Port& from, const fdl::Telegram& t, std::size_t bytes,
+                                  TimePoint start) {
+  if (!config_.wire_model) return start;
   const BaudRate baud = *config_.wire_model;
   // [IEC 61158-4-3 bus parameters, timing]: TSYN before a request; before a reply the responder's
   // own min TSDR (from its Set_Prm), never less than the configured floor.
@@ -233,11 +238,11 @@ TimePoint MemoryBus::arrival_time(const Port& from, const fdl::Telegram& t, std:
       is_request(t) ? kTsynBits
                     : std::max<std::uint32_t>(config_.min_tsdr_bits, from.station->min_tsdr_bits());
   // Rounded up to the clock tick once per telegram (idle gap + characters).
-  line_free_ = std::max(clock_.now(), line_free_) + bit_time(baud, gap + telegram_bits(bytes));
+  line_free_ = std::max(start, line_free_) + bit_time(baud, gap + telegram_bits(bytes));
   return line_free_;
 }
 
-void MemoryBus::transmit(Port& from, const fdl::Telegram& t) {
+void MemoryBus::transmit(Port& from, const fdl::Telegram& t, TimePoint start) {
   ++from.counters.sent;
   // The wire bytes are made only for those who look at them: an observer, or a fault that
   // works on bytes. Otherwise the frame travels as its telegram and only its size counts
@@ -250,8 +255,7 @@ void MemoryBus::transmit(Port& from, const fdl::Telegram& t) {
   } else {
     size = fdl::encoded_size(t);
   }
-  BusEvent ev{clock_.now(), clock_.now(), from.station->address(), std::nullopt,
-              &t,           wire,         Fate::kDelivered};
+  BusEvent ev{start, start, from.station->address(), std::nullopt, &t, wire, Fate::kDelivered};
   if (from.silenced) {
     ++from.counters.silenced;
     ev.fate = Fate::kSilenced;
@@ -260,7 +264,7 @@ void MemoryBus::transmit(Port& from, const fdl::Telegram& t) {
     ev.fate = Fate::kUnroutable;
   } else {
     ev.to = to;
-    ev.arrival = arrival_time(from, t, size);
+    ev.arrival = arrival_time(from, t, size, start);
     if (*to == fdl::kBroadcastAddress) {
       for (Port* p : order_) {
         if (p != &from) schedule(from, p->station->address(), ev.arrival, t, wire);

@@ -69,7 +69,7 @@ enum class Fate : std::uint8_t {
 const char* to_string(Fate f);
 
 struct BusEvent {
-  TimePoint time;     // when the sender handed it to the bus
+  TimePoint time;     // when the sender handed it to the bus (at its send_time(), if later)
   TimePoint arrival;  // when it reaches the receiver(s)
   std::uint8_t from = 0;
   std::optional<std::uint8_t> to;  // 127 = broadcast; nullopt = unroutable
@@ -161,9 +161,11 @@ class MemoryBus {
   bool step_until(TimePoint until);  // step() if the next event lies at or before `until`
   bool step_once(TimePoint until);
   void drain_woken();
-  void transmit(Port& from, const fdl::Telegram& t);
+  // `start`: when the sender hands it to the line (now, or its later send_time()).
+  void transmit(Port& from, const fdl::Telegram& t, TimePoint start);
   std::optional<std::uint8_t> route(Port& from, const fdl::Telegram& t);
-  TimePoint arrival_time(const Port& from, const fdl::Telegram& t, std::size_t bytes);
+  TimePoint arrival_time(const Port& from, const fdl::Telegram& t, std::size_t bytes,
+                         TimePoint start);
   Fate schedule(Port& from, std::uint8_t to, TimePoint arrival, const fdl::Telegram& t,
                 std::span<const std::uint8_t> wire);
   std::optional<Fault> match_fault(FaultKind kind, std::uint8_t from, std::uint8_t to);

@@ -88,6 +88,8 @@ const fdl::Telegram* Master::next_transmit(fdl::Telegram& /*scratch*/) {
   return &outstanding_.request.telegram;  // kept there until its reply or expiry
 }
 
+std::optional<TimePoint> Master::send_time() const { return built_for_; }
+
 void Master::on_malformed_frame(std::error_code why) {
   (void)why;
   ++counters_.malformed_frames;
@@ -101,6 +103,7 @@ std::optional<TimePoint> Master::next_deadline() const {
 }
 
 void Master::on_time(TimePoint now) {
+  built_for_.reset();  // what this call queues is due now
   if (!started_) {
     started_ = true;
     listen_until_ = now + config_.bus.token_lost_timeout(config_.address);
@@ -148,6 +151,11 @@ void Master::on_telegram(const fdl::Telegram& t, TimePoint now) {
   SlaveContext ctx = context();
   slave.on_reply(ctx, Reply::from(t), now);
   next_send_ = now + config_.bus.bits(config_.bus.tid1);
+  if (send_time_honoured()) {
+    // The link starts what this queues at next_send_: the turn goes on as of then.
+    built_for_ = next_send_;
+    run_bus(next_send_);
+  }
 }
 
 void Master::send_request(std::size_t slave, TimePoint now) {

@@ -14,7 +14,10 @@
 // send time + request wire time + TSL + wire time of the longest acceptable reply: links
 // deliver a reply only when it is complete, so the wait for the first character (TSL,
 // [IEC 61158-4-3 bus parameters, timing]) is extended by the reply's own transmission time. After a
-// reply the next request waits TID1 (≥ TSYN). On expiry the same telegram (same FCB) is re-sent up
+// reply the next request waits TID1 (≥ TSYN): on a link that honours Station::send_time() the
+// master builds that request at once, as of the reply's end + TID1, and hands it out with that
+// send time (no deadline step of its own for the idle time); elsewhere it builds it when its
+// deadline at that time comes. On expiry the same telegram (same FCB) is re-sent up
 // to max_retry_limit times, except a first frame (FCV=0), which is not retried
 // ([IEC 61158-4-3 FCB/FCV]); then the slave counts as not answering
 // ([IEC 61158-6-3 slave supervision]).
@@ -71,6 +74,7 @@ class Master final : public Station {
   [[nodiscard]] std::optional<TimePoint> next_deadline() const override;
   std::optional<fdl::Telegram> take_transmit() override;
   const fdl::Telegram* next_transmit(fdl::Telegram& scratch) override;
+  [[nodiscard]] std::optional<TimePoint> send_time() const override;
   // A frame the link's decoder rejected ([IEC 61158-4-3 frame reception]): counted; a garbled reply
   // is handled like a missing one, by the slot time and a retry with the same FCB
   // ([IEC 61158-4-3 FCB/FCV]).
@@ -160,6 +164,9 @@ class Master final : public Station {
   Outstanding outstanding_;
   bool outstanding_active_ = false;
   TimePoint next_send_{};
+  // The telegrams queued now were built ahead, as of this time (send_time()); set by a reply on
+  // a link that honours send times, cleared by on_time(), whose telegrams are due at once.
+  std::optional<TimePoint> built_for_;
   bool in_cycle_ = false;
   std::size_t cursor_ = 0;
   bool turn_open_ = false;

@@ -46,6 +46,43 @@ TEST(MemoryBusIntegration, MasterAnd125SlavesExchangeLoopedBackData) {
   EXPECT_EQ(b.bus().counters(0).malformed, 0U);
 }
 
+TEST(MemoryBusIntegration, OnTheWireEveryRequestAfterAReplyStartsTid1AfterIt) {
+  // The master hands out its next request together with the reply (Station::send_time()); the
+  // bus starts it at reply end + TID1 and adds TSYN before it as for any request. The gaps are
+  // measured on what the bus carried: TID1 = 37 bit at 1.5 Mbit/s = 24666.7 ns
+  // ([IEC 61158-4-3 bus parameters, timing]).
+  GenericBusConfig c;
+  c.baud = dp::BaudRate::k1M5;
+  c.bus.wire_model = dp::BaudRate::k1M5;
+  for (std::uint8_t a = 3; a <= 6; ++a) c.slaves.push_back(slave_config(a));
+  GenericBus b(c);
+  std::optional<TimePoint> reply_end;
+  std::size_t checked = 0, off = 0;
+  Duration min_gap = Duration::max(), max_gap = Duration::zero();
+  b.bus().add_observer([&](const dp::link::BusEvent& e) {
+    const bool request = e.from == c.master_address;
+    if (!request) {
+      reply_end = e.arrival;
+      return;
+    }
+    if (reply_end) {
+      const Duration gap = e.time - *reply_end;
+      min_gap = std::min(min_gap, gap);
+      max_gap = std::max(max_gap, gap);
+      ++checked;
+      if (gap < 24'666ns) ++off;
+    }
+    reply_end.reset();
+  });
+  ASSERT_TRUE(b.run_until([&] { return b.slaves_in_data_exchange() == 4; }, 5s));
+  b.run_for(200ms);               // 20 cycles of 4 Data_Exchanges
+  EXPECT_GT(checked, 80U);
+  EXPECT_EQ(off, 0U);
+  EXPECT_GE(min_gap, 24'666ns);
+  EXPECT_LE(min_gap, 24'667ns);  // the request right after a reply: exactly TID1
+  EXPECT_GT(max_gap, 1ms);       // and after the last reply of a cycle, the cycle target's wait
+}
+
 TEST(MemoryBusIntegration, ThirtySimulatedSecondsRunFastAndStayInDataExchange) {
   GenericBusConfig c;
   for (std::uint8_t a = 2; a <= 11; ++a) c.slaves.push_back(slave_config(a));

@@ -61,6 +61,9 @@ class FakeStation : public Station {
     return t;
   }
 
+  // Station::send_time(): every telegram handed out starts no earlier than `hold`.
+  [[nodiscard]] std::optional<TimePoint> send_time() const override { return hold; }
+
   // Fires every `p`, first at `first`; sends `telegram` on each fire if given.
   void run_timer(TimePoint first, Duration p, std::optional<fdl::Telegram> telegram = {}) {
     next_ = first;
@@ -80,6 +83,7 @@ class FakeStation : public Station {
   std::optional<Duration> period;
   std::optional<fdl::Telegram> on_timer;
   std::optional<TimePoint> stuck_deadline;
+  std::optional<TimePoint> hold;  // send_time() of everything sent
   std::optional<std::vector<std::uint8_t>>
       reply_data;  // kEchoData: reply with this instead  // a broken core that never advances
   int on_time_calls = 0;

@@ -59,6 +59,62 @@ TEST(MemoryBusWire, SlowRateAndTheLineCarriesOneTelegramAtATime) {
   EXPECT_EQ(c.received[0].at - t0, 2 * 10'312'500ns);  // waits for the line
 }
 
+TEST(MemoryBusWire, ATelegramStartsAtItsSendTimeAndNotBefore) {
+  ManualClock clock;
+  MemoryBus bus(clock, {BaudRate::k12M, kMinTsdrBits});
+  FakeStation master(2), slave(5);
+  bus.attach(master);
+  bus.attach(slave);
+  std::vector<TimePoint> started;
+  bus.add_observer([&](const BusEvent& e) { started.push_back(e.time); });
+  const TimePoint t0 = clock.now();
+  master.hold = t0 + 5us;  // e.g. a request handed out with the reply, due TID1 later
+  master.outbox.push_back(srd_request(5, 2, {0xA5}));  // 10 bytes: 143 bit = 11917 ns
+  bus.start();
+  ASSERT_EQ(started.size(), 1U);
+  EXPECT_EQ(started[0], t0 + 5us);  // handed out at t0, on the line at its send time
+  bus.run_until(t0 + 5us + 11916ns);
+  EXPECT_TRUE(slave.received.empty());
+  bus.run_until(t0 + 5us + 11917ns);
+  ASSERT_EQ(slave.received.size(), 1U);
+  EXPECT_EQ(slave.received[0].at, t0 + 5us + 11917ns);
+}
+
+TEST(MemoryBusWire, ASendTimeAlreadyPassedMeansAtOnce) {
+  ManualClock clock;
+  MemoryBus bus(clock, {BaudRate::k12M, kMinTsdrBits});
+  FakeStation master(2), slave(5);
+  bus.attach(master);
+  bus.attach(slave);
+  const TimePoint t0 = clock.now();
+  master.hold = t0;
+  clock.set(t0 + 1ms);
+  master.outbox.push_back(srd_request(5, 2, {0xA5}));
+  bus.start();
+  while (bus.step()) {
+  }
+  ASSERT_EQ(slave.received.size(), 1U);
+  EXPECT_EQ(slave.received[0].at, t0 + 1ms + 11917ns);
+}
+
+TEST(MemoryBusWire, WithoutTheWireModelATelegramArrivesAtItsSendTime) {
+  ManualClock clock;
+  MemoryBus bus(clock);
+  FakeStation master(2), slave(5);
+  bus.attach(master);
+  bus.attach(slave);
+  const TimePoint t0 = clock.now();
+  master.hold = t0 + 24'667ns;
+  master.outbox.push_back(srd_request(5, 2, {0xA5}));
+  bus.start();
+  bus.run_until(t0 + 24'666ns);
+  EXPECT_TRUE(slave.received.empty());
+  while (bus.step()) {
+  }
+  ASSERT_EQ(slave.received.size(), 1U);
+  EXPECT_EQ(slave.received[0].at, t0 + 24'667ns);
+}
+
 class MemoryBusFaults : public ::testing::Test {
  protected:
   void SetUp() override {

@@ -124,6 +124,29 @@ TEST(MasterStartup, NextRequestWaitsTid1AfterReply) {
   EXPECT_EQ(hex(f.poke()), hex(kDiagFirstReq));
 }
 
+TEST(MasterStartup, OnALinkThatHonoursSendTimesTheNextRequestComesWithTheReplyDueTid1Later) {
+  MasterFixture f;
+  f.master.set_send_time_honoured(true);
+  f.step();
+  EXPECT_FALSE(f.master.send_time());  // built by on_time(): due at once
+  const TimePoint t_reply = f.clock.now() + std::chrono::microseconds(50);
+  f.clock.set(t_reply);
+  f.reply(kFdlStatusRes);
+  // Handed out now, with the send time reply + TID1 (37 bit at 1.5 Mbit/s = 24.67 µs): the same
+  // request and the same instant on the wire as NextRequestWaitsTid1AfterReply.
+  EXPECT_EQ(hex(f.drain()), hex(kDiagFirstReq));
+  const auto at = f.master.send_time();
+  ASSERT_TRUE(at);
+  EXPECT_GT(*at, t_reply + std::chrono::nanoseconds(24'600));
+  EXPECT_LE(*at, t_reply + std::chrono::nanoseconds(24'700));
+  // Its slot time runs from the send time, not from the reply.
+  const auto deadline = f.master.next_deadline();
+  ASSERT_TRUE(deadline);
+  EXPECT_GT(*deadline, *at);
+  f.clock.set(*at);
+  EXPECT_TRUE(f.poke().empty());  // no second copy when the send time comes
+}
+
 TEST(MasterStartup, NotReadyDiagWaitsForTheNextCycle) {
   MasterFixture f;
   f.step();
