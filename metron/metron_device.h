@@ -38,6 +38,10 @@ class MetronDevice final : public stream::ByteDevice {
   // A byte that failed its parity check (a serial link that sees parity errors passes such
   // bytes here): the whole message it belongs to gets no reply [METRON manual "No node"].
   void on_byte_with_parity_error(std::uint8_t byte, stream::TimePoint now);
+  // The link's damaged character (stream::ByteDevice): a parity error, handled as above.
+  void on_damaged_byte(std::uint8_t byte, stream::TimePoint now) override {
+    on_byte_with_parity_error(byte, now);
+  }
 
   // The scene. Beam numbers from 1; the input drives input-related reporting.
   [[nodiscard]] const Scene& scene() const { return scene_; }

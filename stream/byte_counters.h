@@ -9,7 +9,8 @@ namespace rs4sim::stream {
 
 struct ByteCounters {
   std::uint64_t bytes_received = 0;
-  std::uint64_t chunks_received = 0;  // reads as the OS delivered them (UDP: datagrams)
+  std::uint64_t chunks_received = 0;   // reads as the OS delivered them (UDP: datagrams)
+  std::uint64_t damaged_received = 0;  // characters with a parity or framing error
   std::uint64_t bytes_sent = 0;
   std::uint64_t frames_sent = 0;  // frames the devices handed to the link (take_transmit)
   std::uint64_t link_errors = 0;  // OS-level send/receive failures (serial/UDP)

@@ -7,7 +7,8 @@
 // real time; the device owns the protocol, including where its frames begin and end
 // (by silence with stream::IdleGapFramer, by markers, or by length). The link:
 //   1. passes received bytes with the time they arrived to on_bytes() (chunks as the OS
-//      delivers them: part of a frame, or several frames);
+//      delivers them: part of a frame, or several frames), and a character received with a
+//      parity or framing error to on_damaged_byte();
 //   2. calls on_time() when next_deadline() has passed (e.g. an idle gap completed a
 //      frame, a cycle ended, a streaming period elapsed);
 //   3. after either call, drains take_transmit() and writes each frame whole, in order;
@@ -42,6 +43,15 @@ class ByteDevice {
 
   // When on_time() must be called next; nullopt = only when bytes arrive.
   [[nodiscard]] virtual std::optional<TimePoint> next_deadline() const = 0;
+
+  // A character arrived damaged at `now` (parity or framing error; a serial link reports it
+  // between the good bytes of on_bytes(), in line order). Default: dropped, as a port with
+  // IGNPAR drops it; a device whose manual has a rule for it applies that instead (the METRON
+  // rejects the whole message).
+  virtual void on_damaged_byte(std::uint8_t byte, TimePoint now) {
+    (void)byte;
+    (void)now;
+  }
 
   // The next frame to put on the line now, if any. The link calls this until nullopt.
   virtual std::optional<std::vector<std::uint8_t>> take_transmit() = 0;

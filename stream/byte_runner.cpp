@@ -17,6 +17,7 @@ void ByteRunner::add(ByteDevice& device) {
 void ByteRunner::start() {
   running_ = true;
   wake_.set_enabled(true);
+  transport_.set_damaged_handler([this](std::uint8_t b) { on_damaged(b); });
   transport_.start([this](std::span<const std::uint8_t> b) { on_bytes(b); },
                    [this](std::error_code e) { on_transport_error(e); });
   now_ = clock_.now();
@@ -39,6 +40,15 @@ void ByteRunner::on_bytes(std::span<const std::uint8_t> bytes) {
   counters_.bytes_received += bytes.size();
   if (tap_) tap_(bytes, now_, FrameDirection::kReceived);
   for (ByteDevice* d : devices_) d->on_bytes(bytes, now_);
+  drain_all();
+  arm_timer();
+}
+
+void ByteRunner::on_damaged(std::uint8_t byte) {
+  if (!running_) return;
+  now_ = clock_.now();
+  ++counters_.damaged_received;
+  for (ByteDevice* d : devices_) d->on_damaged_byte(byte, now_);
   drain_all();
   arm_timer();
 }

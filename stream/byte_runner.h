@@ -44,6 +44,7 @@ class ByteRunner {
 
  private:
   void on_bytes(std::span<const std::uint8_t> bytes);
+  void on_damaged(std::uint8_t byte);
   void on_transport_error(std::error_code e);
   void on_timer();
   void drain_all();

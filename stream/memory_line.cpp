@@ -47,8 +47,17 @@ void MemoryLine::write(std::span<const std::uint8_t> bytes, Pacing pacing) {
   }
 }
 
+void MemoryLine::write_damaged(std::uint8_t byte) {
+  const TimePoint start = std::max(clock_.now(), peer_free_);
+  peer_free_ = start + character_time(device_.line_settings(), 1.0);
+  Chunk chunk{{byte}, peer_free_, true};
+  const auto pos = std::upper_bound(to_device_.begin(), to_device_.end(), chunk.at,
+                                    [](TimePoint t, const Chunk& c) { return t < c.at; });
+  to_device_.insert(pos, std::move(chunk));
+}
+
 void MemoryLine::deliver_at(std::span<const std::uint8_t> bytes, TimePoint at) {
-  Chunk chunk{{bytes.begin(), bytes.end()}, std::max(at, clock_.now())};
+  Chunk chunk{{bytes.begin(), bytes.end()}, std::max(at, clock_.now()), false};
   const auto pos = std::upper_bound(to_device_.begin(), to_device_.end(), chunk.at,
                                     [](TimePoint t, const Chunk& c) { return t < c.at; });
   to_device_.insert(pos, std::move(chunk));
@@ -92,6 +101,12 @@ void MemoryLine::step(TimePoint now) {
   while (!to_device_.empty() && to_device_.front().at <= now) {
     const Chunk chunk = std::move(to_device_.front());
     to_device_.pop_front();
+    if (chunk.damaged) {
+      ++counters_.damaged_received;
+      device_.on_damaged_byte(chunk.bytes.front(), now);
+      deadline_ = device_.next_deadline();
+      continue;
+    }
     ++counters_.chunks_received;
     counters_.bytes_received += chunk.bytes.size();
     if (tap_) tap_(chunk.bytes, now, FrameDirection::kReceived);

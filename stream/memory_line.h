@@ -54,6 +54,9 @@ class MemoryLine {
   void start();
   // The peer sends `bytes` starting at clock.now() (or when its previous write has left).
   void write(std::span<const std::uint8_t> bytes, Pacing pacing = Pacing::kWhole);
+  // The peer sends one character that arrives damaged (a parity error on the line): the device
+  // gets on_damaged_byte(byte) when it has arrived, in line order with the other writes.
+  void write_damaged(std::uint8_t byte);
   // The device receives exactly `bytes` at `at` (≥ now), for tests that place chunks
   // themselves (a frame split across reads, a gap inside a frame).
   void deliver_at(std::span<const std::uint8_t> bytes, TimePoint at);
@@ -79,6 +82,7 @@ class MemoryLine {
   struct Chunk {
     std::vector<std::uint8_t> bytes;
     TimePoint at{};
+    bool damaged = false;  // one character with a parity error
   };
   [[nodiscard]] std::optional<TimePoint> next_event() const;
   void step(TimePoint now);

@@ -78,6 +78,21 @@ std::string format_text(const LineSettings& line) {
 
 }  // namespace
 
+bool mark_parity_errors(int fd) {
+  termios tio{};
+  if (tcgetattr(fd, &tio) != 0) return false;
+  tio.c_iflag |= INPCK | PARMRK;
+  tio.c_iflag &= ~static_cast<tcflag_t>(IGNPAR | ISTRIP);
+  if (tcsetattr(fd, TCSANOW, &tio) != 0) return false;
+  termios back{};
+  if (tcgetattr(fd, &back) != 0) return false;
+  if ((back.c_iflag & (INPCK | PARMRK | IGNPAR | ISTRIP)) != (INPCK | PARMRK)) {
+    errno = EINVAL;
+    return false;
+  }
+  return true;
+}
+
 bool is_pseudo_terminal(int fd) {
   struct stat st {};
   if (fstat(fd, &st) != 0 || !S_ISCHR(st.st_mode)) return false;

@@ -6,7 +6,8 @@
 //
 // Standard termios speeds (B9600 … B4000000) are set with cfsetspeed; any other rate (45.45k,
 // 93.75k, 187.5k, 6M, 12M, …) with Linux termios2/BOTHER. With parity, a character with a
-// parity error is dropped (INPCK | IGNPAR). Every setting is read back: a real adapter that
+// parity error is dropped (INPCK | IGNPAR; mark_parity_errors() hands it to the device instead).
+// Every setting is read back: a real adapter that
 // did not take the rate or the format is an error (LinkException), while a pseudo-terminal,
 // which has no line and may drop parity or the exact rate, only produces a note and carries on.
 // A real adapter whose driver reports a rate within 2 % of the one asked for (it cannot divide
@@ -35,6 +36,13 @@ struct SerialSetup {
   // A real adapter: low latency, RS-485 mode, the driver (SerialTransport sets it up).
   std::optional<AdapterSetup> adapter;
 };
+
+// Switches a configured port with parity from dropping damaged characters (IGNPAR) to marking
+// them (INPCK | PARMRK, [termios(3) PARMRK]; stream/parity_marks.h decodes the marks), so a
+// device can apply its own rule. Only for a real adapter: on a pseudo-terminal the master's
+// termios are the slave's (Linux), so PARMRK would make the client's own reads double every FF.
+// Returns false (errno set) when the port refused it or did not keep it.
+bool mark_parity_errors(int fd);
 
 // True for a pseudo-terminal (either side).
 [[nodiscard]] bool is_pseudo_terminal(int fd);

@@ -27,7 +27,7 @@ SerialTransport::SerialTransport(asio::io_context& io, const std::string& path,
 
 SerialTransport::SerialTransport(asio::io_context& io, int fd, const LineSettings& line,
                                  const std::string& name, const LogFn& log)
-    : port_(io), retry_timer_(io) {
+    : port_(io), retry_timer_(io), parity_(line.parity != Parity::kNone), log_(log) {
   try {
     setup_ = configure_serial(fd, line, name, log);
     if (!setup_.is_pty) setup_.adapter = tune_adapter(fd, tty_name(fd), log);
@@ -42,6 +42,17 @@ SerialTransport::SerialTransport(asio::io_context& io, int fd, const LineSetting
 }
 
 SerialTransport::~SerialTransport() { close(); }
+
+void SerialTransport::set_damaged_handler(DamagedFn on_damaged) {
+  on_damaged_ = std::move(on_damaged);
+  if (!on_damaged_ || !parity_ || setup_.is_pty || marks_ || !port_.is_open()) return;
+  if (mark_parity_errors(port_.native_handle())) {
+    marks_.emplace();
+  } else if (log_) {
+    log_(std::string("serial port refused PARMRK (") + std::strerror(errno) +
+         "): characters with a parity error are dropped (IGNPAR)");
+  }
+}
 
 void SerialTransport::start(BytesFn on_bytes, ErrorFn on_error) {
   on_bytes_ = std::move(on_bytes);
@@ -63,7 +74,19 @@ void SerialTransport::read_next() {
                             });
                             return;
                           }
-                          if (on_bytes_) on_bytes_(std::span<const std::uint8_t>(rx_.data(), n));
+                          const std::span<const std::uint8_t> chunk(rx_.data(), n);
+                          if (marks_) {
+                            marks_->feed(
+                                chunk,
+                                [this](std::span<const std::uint8_t> good) {
+                                  if (on_bytes_) on_bytes_(good);
+                                },
+                                [this](std::uint8_t damaged) {
+                                  if (on_damaged_) on_damaged_(damaged);
+                                });
+                          } else if (on_bytes_) {
+                            on_bytes_(chunk);
+                          }
                           read_next();
                         });
 }

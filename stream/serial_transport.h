@@ -4,6 +4,7 @@
 // standard rate, dp/link/profibus_line.h; see serial_settings.h for how refused settings are
 // handled).
 
+#include "stream/parity_marks.h"
 #include "stream/serial_settings.h"
 #include "stream/transport.h"
 
@@ -12,6 +13,7 @@
 
 #include <array>
 #include <deque>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +32,10 @@ class SerialTransport final : public Transport {
 
   [[nodiscard]] bool datagram() const override { return false; }
   void start(BytesFn on_bytes, ErrorFn on_error) override;
+  // With parity on a real adapter: the port marks damaged characters (PARMRK) and they come
+  // here, decoded, in line order; a pseudo-terminal keeps dropping nothing (it has no line).
+  // A port that refuses PARMRK keeps IGNPAR, with a note in the log.
+  void set_damaged_handler(DamagedFn on_damaged) override;
   void send(std::span<const std::uint8_t> frame) override;
   void close() override;
 
@@ -54,7 +60,11 @@ class SerialTransport final : public Transport {
   boost::asio::serial_port port_;
   boost::asio::steady_timer retry_timer_;
   SerialSetup setup_;
+  bool parity_ = false;  // the line has a parity bit
+  LogFn log_;
   BytesFn on_bytes_;
+  DamagedFn on_damaged_;
+  std::optional<ParityMarks> marks_;  // set when the port marks damaged characters
   ErrorFn on_error_;
   std::array<std::uint8_t, 512> rx_{};
   std::deque<std::vector<std::uint8_t>> tx_;  // only after a short write: what is still to go

@@ -1,6 +1,7 @@
 // Bad input on the slave line: every corrupt, truncated, oversized or misaddressed message
 // gets the manual's reaction (or the project's documented one), is counted, and the next
 // good message is answered normally [METRON manual "No node", "With node"].
+#include "stream/memory_line.h"
 #include "tests/metron/metron_rig.h"
 
 #include <gtest/gtest.h>
@@ -47,6 +48,29 @@ TEST(MetronBadInput, ParityErrorInTheMiddle) {
   rig.advance(100ms);
   EXPECT_TRUE(rig.take().empty());
   expect_next_good(rig);
+}
+
+// The same rule as it arrives from a link: the line reports the damaged character between the
+// good ones (stream::ByteDevice::on_damaged_byte, a serial adapter with PARMRK) and the
+// device rejects the whole message; without the hook the port would drop the byte (IGNPAR)
+// and the device would wait for it, then count a truncated message instead.
+TEST(MetronBadInput, AParityErrorTheLineReportsRejectsTheWholeMessage) {
+  MetronDevice device(slave_options());
+  stream::ManualClock clock;
+  stream::MemoryLine line(clock, device);
+  line.start();
+  line.write(Bytes{0x02, 0x01, 0x0C});
+  line.write_damaged(0xF3);  // the checksum byte, received with a parity error
+  line.run_for(100ms);
+  EXPECT_TRUE(line.take_received().empty());
+  EXPECT_EQ(line.counters().damaged_received, 1U);
+  EXPECT_EQ(device.counters().parity_rejected, 1U);
+  EXPECT_EQ(device.counters().truncated, 0U);
+  line.write(kGood);
+  line.run_for(100ms);
+  const auto got = line.take_received();
+  ASSERT_EQ(got.size(), 1U);
+  EXPECT_EQ(got[0].bytes, kGoodReply);
 }
 
 TEST(MetronBadInput, TruncatedMessageIsDroppedAfterTheTimeout) {

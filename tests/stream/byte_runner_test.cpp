@@ -13,6 +13,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <termios.h>
 #include <unistd.h>
 
 #include <functional>
@@ -141,6 +142,99 @@ TEST_F(BytePtyTest, AWakeFromOutsideSendsAtOnce) {
   const Bytes got = read_at_least(io, client, 3);
   EXPECT_EQ(got, (Bytes{0xCA, 0xFE, 0xBE}));
   EXPECT_EQ(runner.counters().frames_sent, 2U);
+  runner.stop();
+}
+
+// A pty has no line: the device side's termios are the client's (Linux), so the transport
+// must not switch it to PARMRK even with parity and a damaged handler installed; a byte FF
+// from the client arrives as itself, not doubled.
+TEST_F(BytePtyTest, APseudoTerminalWithParityStaysUnmarked) {
+  constexpr LineSettings k19200e{19200, 8, Parity::kEven, 1};
+  EchoDevice even{EchoOptions{k19200e, 3.5, {}, 256}};
+  SerialTransport transport(io, pty.release_master(), k19200e, "pty");
+  ByteRunner runner(io, clock, transport);
+  runner.add(even);
+  runner.start();
+  PtyClient client(pty.slave_path());
+  const int fd = ::open(pty.slave_path().c_str(), O_RDWR | O_NOCTTY);
+  ASSERT_GE(fd, 0);
+  termios tio{};
+  ASSERT_EQ(tcgetattr(fd, &tio), 0);
+  EXPECT_EQ(tio.c_iflag & PARMRK, 0U);
+  client.write({0xFF, 0x00, 0x41});
+  const Bytes got = read_at_least(io, client, 3);
+  EXPECT_EQ(got, (Bytes{0xFF, 0x00, 0x41}));
+  EXPECT_EQ(runner.counters().damaged_received, 0U);
+  ::close(fd);
+  runner.stop();
+}
+
+// mark_parity_errors() itself, on a tty that keeps its input flags (a pty slave): INPCK and
+// PARMRK on, IGNPAR and ISTRIP off, read back.
+TEST(SerialSettings, MarkParityErrorsSetsTheInputFlags) {
+  PseudoTerminal pty;
+  const int fd = ::open(pty.slave_path().c_str(), O_RDWR | O_NOCTTY);
+  ASSERT_GE(fd, 0);
+  termios tio{};
+  ASSERT_EQ(tcgetattr(fd, &tio), 0);
+  tio.c_iflag |= IGNPAR | ISTRIP;
+  ASSERT_EQ(tcsetattr(fd, TCSANOW, &tio), 0);
+  ASSERT_TRUE(mark_parity_errors(fd));
+  ASSERT_EQ(tcgetattr(fd, &tio), 0);
+  EXPECT_NE(tio.c_iflag & INPCK, 0U);
+  EXPECT_NE(tio.c_iflag & PARMRK, 0U);
+  EXPECT_EQ(tio.c_iflag & (IGNPAR | ISTRIP), 0U);
+  ::close(fd);
+  EXPECT_FALSE(mark_parity_errors(-1));  // not a terminal
+}
+
+// A transport that reports damaged characters (what SerialTransport does on an adapter with
+// PARMRK): the runner hands each to every device, in line order with the good bytes, and
+// counts it.
+class ScriptedTransport final : public Transport {
+ public:
+  [[nodiscard]] bool datagram() const override { return false; }
+  void start(BytesFn on_bytes, ErrorFn /*on_error*/) override { on_bytes_ = std::move(on_bytes); }
+  void set_damaged_handler(DamagedFn on_damaged) override { on_damaged_ = std::move(on_damaged); }
+  void send(std::span<const std::uint8_t> frame) override {
+    sent.emplace_back(frame.begin(), frame.end());
+  }
+  void close() override {}
+  BytesFn on_bytes_;
+  DamagedFn on_damaged_;
+  std::vector<Bytes> sent;
+};
+
+class DamageLog final : public ByteDevice {
+ public:
+  [[nodiscard]] LineSettings line_settings() const override { return {19200, 8, Parity::kEven, 1}; }
+  void on_bytes(std::span<const std::uint8_t> bytes, TimePoint /*now*/) override {
+    for (auto b : bytes) log.push_back(b);
+  }
+  void on_damaged_byte(std::uint8_t byte, TimePoint /*now*/) override {
+    log.push_back(0x100 | byte);
+  }
+  void on_time(TimePoint /*now*/) override {}
+  [[nodiscard]] std::optional<TimePoint> next_deadline() const override { return std::nullopt; }
+  std::optional<std::vector<std::uint8_t>> take_transmit() override { return std::nullopt; }
+  std::vector<unsigned> log;  // 0x1XX = XX received damaged
+};
+
+TEST(ByteRunnerDamaged, ADamagedCharacterReachesTheDeviceInLineOrder) {
+  asio::io_context io;
+  RealClock clock;
+  ScriptedTransport transport;
+  DamageLog device;
+  ByteRunner runner(io, clock, transport);
+  runner.add(device);
+  runner.start();
+  ASSERT_TRUE(transport.on_damaged_) << "the runner installs the handler before start()";
+  transport.on_bytes_(Bytes{0x02, 0x01});
+  transport.on_damaged_(0x0C);
+  transport.on_bytes_(Bytes{0xF3});
+  EXPECT_EQ(device.log, (std::vector<unsigned>{0x02, 0x01, 0x10C, 0xF3}));
+  EXPECT_EQ(runner.counters().damaged_received, 1U);
+  EXPECT_EQ(runner.counters().bytes_received, 3U);
   runner.stop();
 }
 
