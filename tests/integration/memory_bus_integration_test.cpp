@@ -75,7 +75,7 @@ TEST(MemoryBusIntegration, OnTheWireEveryRequestAfterAReplyStartsTid1AfterIt) {
     reply_end.reset();
   });
   ASSERT_TRUE(b.run_until([&] { return b.slaves_in_data_exchange() == 4; }, 5s));
-  b.run_for(200ms);               // 20 cycles of 4 Data_Exchanges
+  b.run_for(200ms);  // 20 cycles of 4 Data_Exchanges
   EXPECT_GT(checked, 80U);
   EXPECT_EQ(off, 0U);
   EXPECT_GE(min_gap, 24'666ns);
