@@ -1,6 +1,7 @@
 #include "app/runtime/master_gsd.h"
 
 #include "app/runtime/usage_error.h"
+#include "gsd/unit_diag.h"
 #include "rpc/status.h"
 
 #include <charconv>
@@ -53,6 +54,20 @@ std::string text_of(std::span<const std::uint8_t> bytes) {
   return {reinterpret_cast<const char*>(bytes.data()), bytes.size()};
 }
 
+constexpr std::size_t kStandardDiagBytes = 6;  // [IEC 61158-6-3 Slave_Diag]
+
+// The Slave_Diag DU after its 6 standard bytes.
+std::span<const std::uint8_t> ext_diag(const dp::fdl::DataUnit& diag) {
+  if (diag.size() <= kStandardDiagBytes) return {};
+  return {diag.data() + kStandardDiagBytes, diag.size() - kStandardDiagBytes};
+}
+
+std::string joined(const std::vector<std::string>& texts) {
+  std::string out;
+  for (const auto& t : texts) out += (out.empty() ? "" : "; ") + t;
+  return out;
+}
+
 const char* state_name(std::optional<dp::master::PollState> s) {
   return s ? dp::master::to_string(*s) : "unknown";
 }
@@ -82,6 +97,9 @@ void fill(const GsdMasterSlave& s, const dp::master::Master& master, v1::GsdMast
     out.set_data_exchanges(status->counters.data_exchanges);
     if (status->last_error) out.set_last_error(status->last_error.message());
     out.set_diagnosis(text_of({status->last_diag.data(), status->last_diag.size()}));
+    for (auto& t : gsd::unit_diag_texts(spec.device->unit_diag, ext_diag(status->last_diag))) {
+      out.add_diagnosis_texts(std::move(t));
+    }
   }
   out.set_user_prm_data(text_of(spec.setup.user_prm_data));
   out.set_cfg(text_of(spec.setup.cfg));
@@ -197,6 +215,7 @@ void GsdMasterSlaves::update(const dp::master::Master& master, const MasterRepor
       report.custom(now, a, "GSD slave", "dp", text, f);
       s.shown_state = state;
     }
+    if (!s.spec.device->unit_diag.empty()) diagnosis(master, report, now, s);
     const auto in = master.inputs(a);
     if (dx && !std::equal(in.begin(), in.end(), s.shown_inputs.begin(), s.shown_inputs.end())) {
       s.shown_inputs.assign(in.begin(), in.end());
@@ -204,6 +223,23 @@ void GsdMasterSlaves::update(const dp::master::Master& master, const MasterRepor
                     {{"inputs", hex_bytes(in)}});
     }
   }
+}
+
+// A "diagnosis" line when the device-related texts of the last Slave_Diag change.
+void GsdMasterSlaves::diagnosis(const dp::master::Master& master, const MasterReport& report,
+                                dp::TimePoint now, GsdMasterSlave& s) {
+  const auto status = master.slave_status(s.spec.address);
+  if (!status) return;
+  const auto ext = ext_diag(status->last_diag);
+  if (std::equal(ext.begin(), ext.end(), s.shown_diag.begin(), s.shown_diag.end())) return;
+  s.shown_diag.assign(ext.begin(), ext.end());
+  auto texts = joined(gsd::unit_diag_texts(s.spec.device->unit_diag, ext));
+  if (texts == s.shown_diag_text) return;
+  s.shown_diag_text = texts;
+  report.custom(now, s.spec.address, "GSD slave", "diagnosis",
+                "diagnosis " + (texts.empty() ? std::string("cleared") : texts) + " (" +
+                    hex_bytes(ext) + ")",
+                {{"ext_diag", hex_bytes(ext)}, {"texts", texts}});
 }
 
 void GsdMasterSlaves::stopped(const dp::master::Master& master, const MasterReport& report,

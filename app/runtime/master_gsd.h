@@ -45,6 +45,8 @@ struct GsdMasterSlave {
   // What the report last said.
   std::optional<dp::master::PollState> shown_state;
   std::vector<std::uint8_t> shown_inputs;
+  std::vector<std::uint8_t> shown_diag;  // the last Slave_Diag after its 6 standard bytes
+  std::string shown_diag_text;           // its GSD texts ("; "-separated)
 };
 
 class GsdMasterSlaves {
@@ -64,7 +66,8 @@ class GsdMasterSlaves {
   // Once, before the link starts: one "gsd" line per slave (file, ident, modules).
   void start(const MasterReport& report, dp::TimePoint now);
   // After a link call: a "dp" line when a slave's DP state changed, an "inputs" line when the
-  // inputs of its last Data_Exchange changed.
+  // inputs of its last Data_Exchange changed, a "diagnosis" line when the GSD's Unit_Diag texts
+  // for its last Slave_Diag changed (gsd::unit_diag_texts).
   void update(const dp::master::Master& master, const MasterReport& report, dp::TimePoint now);
   // A "stop" line per slave.
   void stopped(const dp::master::Master& master, const MasterReport& report, dp::TimePoint now) const;
@@ -79,6 +82,8 @@ class GsdMasterSlaves {
 
  private:
   GsdMasterSlave* find_mutable(std::uint8_t address);
+  static void diagnosis(const dp::master::Master& master, const MasterReport& report,
+                        dp::TimePoint now, GsdMasterSlave& s);
   std::vector<GsdMasterSlave> slaves_;
 };
 

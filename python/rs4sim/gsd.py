@@ -64,7 +64,7 @@ class GsdStations(_Client):
     def events(self, stations=(), telegrams=False):
         """Observation.StreamEvents for these stations (all: empty), as Rs4.events: the
         current items first (StateChange with from = ""), then every change ("dp-state",
-        "online", "inputs", "outputs", "ext-diag", "diagnosis")."""
+        "online", "inputs", "outputs", "ext-diag", "diagnosis", "diagnosis-text")."""
         return _Subscribed(self.observation.StreamEvents(pb.StreamEventsRequest(
             addresses=list(stations), telegrams=telegrams)))
 

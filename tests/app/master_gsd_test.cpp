@@ -3,6 +3,7 @@
 // (Set_Prm with the GSD's default User_Prm_Data [IEC 61158-6-3 Set_Prm], Chk_Cfg from the modules
 // [IEC 61158-6-3 Chk_Cfg/Get_Cfg]), both reach data exchange on one bus, and the I/O set on each
 // side arrives at the other. The GSD is the project's tests/gsd/corpus/modular_dpv1.gsd.
+#include "app/devices/gsd_service.h"
 #include "app/runtime/master_service.h"
 #include "app/runtime/usage_error.h"
 #include "dp/link/memory_bus.h"
@@ -102,6 +103,69 @@ TEST(MasterGsd, InputsArriveAtTheMasterAndOutputsAtTheStation) {
             std::errc::no_such_device_or_address);  // the RS4 is no GSD slave
   b.bus->run_for(std::chrono::milliseconds(50));
   EXPECT_EQ(bytes_of(b.gsd->application().outputs()), (Bytes{0xBE, 0xEF}));  // refused: unchanged
+}
+
+// The services' calls without a server: the loop is the test's own thread.
+class InlineExecutor final : public rpc::Executor {
+ public:
+  void run(const std::function<void()>& f) override { f(); }
+};
+
+// gateway_asi.gse's Unit_Diag texts (bits 16, 17, Not_Bit 18, area 24-27, counted after the
+// device-related block's header) for a diagnosis raised at the station: the station's
+// GsdStations and the master's GsdMaster and report show the same texts.
+TEST(MasterGsd, UnitDiagTextsOnBothSides) {
+  dp::ManualClock clock;
+  std::ostringstream out;
+  MasterServiceOptions o;
+  o.station.bus = dp::master::BusParameters::defaults_for(dp::BaudRate::k1M5);
+  const std::string gse = std::string(RS4SIM_GSD_CORPUS) + "/gateway_asi.gse";
+  auto specs = parse_gsd_slaves({"6:" + gse}, {"6:Status 1 byte"}, "1.5M");
+  o.gsd_slaves = specs;
+  MasterService service(o, LinkKind::kMemory, out);
+  GsdStation station(std::move(specs.front()));
+  dp::link::MemoryBus bus(clock);
+  for (auto* s : service.stations()) bus.attach(*s);
+  bus.attach(station);
+  service.start(clock.now());
+  bus.start();
+  bus.run_for(std::chrono::milliseconds(500));
+  ASSERT_EQ(service.station().master().poll_state(6), dp::master::PollState::kDataExchange)
+      << out.str();
+
+  // Device-related block, 5 bytes with the header: bit 17 set, bit 18 clear, bits 24..27 = 1.
+  ASSERT_FALSE(station.application().set_diagnosis(Bytes{0x05, 0x00, 0x00, 0x02, 0x01}, true));
+  bus.run_for(std::chrono::milliseconds(100));
+  const std::string texts = "AS-i configuration error; gateway not in protected mode; earth fault";
+  EXPECT_NE(out.str().find("GSD slave 6: diagnosis " + texts + " (05 00 00 02 01)"),
+            std::string::npos)
+      << out.str();
+
+  InlineExecutor executor;
+  GsdMasterService master_api(executor, service.gsd_slaves(),
+                              [&]() -> dp::master::Master& { return service.station().master(); });
+  v1::StationRequest request;
+  request.set_address(6);
+  v1::GsdMasterSlave slave;
+  ASSERT_TRUE(master_api.GetSlave(nullptr, &request, &slave).ok());
+  const std::vector<std::string> expected{"AS-i configuration error",
+                                          "gateway not in protected mode", "earth fault"};
+  EXPECT_EQ(std::vector<std::string>(slave.diagnosis_texts().begin(),
+                                     slave.diagnosis_texts().end()),
+            expected);
+  GsdStationsService station_api(GsdServiceContext{executor, {&station}});
+  v1::GsdStation listed;
+  ASSERT_TRUE(station_api.GetStation(nullptr, &request, &listed).ok());
+  EXPECT_EQ(std::vector<std::string>(listed.diagnosis_texts().begin(),
+                                     listed.diagnosis_texts().end()),
+            expected);
+
+  // Cleared: the Not_Bit's text alone (bit 18 clear in a block that holds it) is gone too
+  // with a block that sets bit 18.
+  ASSERT_FALSE(station.application().set_diagnosis(Bytes{0x04, 0x00, 0x00, 0x04}, true));
+  bus.run_for(std::chrono::milliseconds(100));
+  EXPECT_NE(out.str().find("GSD slave 6: diagnosis cleared (04 00 00 04)"), std::string::npos)
+      << out.str();
 }
 
 TEST(MasterGsd, BadOptionsNameWhatIsWrong) {
