@@ -1,9 +1,9 @@
 #include "app/devices/gsd_service.h"
 
+#include "gsd/unit_diag.h"
 #include "rpc/items_watcher.h"
 #include "rpc/service_support.h"
 #include "rpc/status.h"
-#include "gsd/unit_diag.h"
 
 #include <cstdio>
 #include <string>
