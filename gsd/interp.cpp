@@ -274,6 +274,9 @@ Result<void> Interpreter::statement(const syntax::Statement& st) {
   if (st.is("Ext_User_Prm_Data_Ref")) return global_.add_ref(file_.name, st);
   if (st.is("User_Prm_Data")) return legacy_user_prm(st);
   if (st.is("Slave_Family")) return slave_family(st);
+  if (st.is("Unit_Diag_Bit") || st.is("Unit_Diag_Not_Bit")) {
+    return detail::interpret_unit_diag_bit(file_.name, st, device_.unit_diag);
+  }
   if (st.is("User_Prm_Data_Len")) {
     RS4SIM_GSD_TRYV(once(st));
     RS4SIM_GSD_TRY(const auto len, detail::number(file_.name, st, 0, 237));
@@ -322,6 +325,8 @@ Result<Device> Interpreter::run() {
                      "module \"" + m.name + "\" defined twice");
       }
       device_.modules.push_back(std::move(m));
+    } else if (e.statement.is("Unit_Diag_Area")) {
+      RS4SIM_GSD_TRYV(detail::interpret_unit_diag_area(file_.name, e, device_.unit_diag));
     }
   }
   RS4SIM_GSD_TRYV(finish());

@@ -51,6 +51,11 @@ struct TemplateBuilder {
 
 Result<ExtParam> interpret_ext_param(const std::string& file, const syntax::Entry& entry);
 Result<PrmText> interpret_prm_text(const std::string& file, const syntax::Entry& entry);
+// Unit_Diag_Bit(n) / Unit_Diag_Not_Bit(n) = "text"; a Unit_Diag_Area block (unit_diag.cpp).
+Result<void> interpret_unit_diag_bit(const std::string& file, const syntax::Statement& st,
+                                     UnitDiag& out);
+Result<void> interpret_unit_diag_area(const std::string& file, const syntax::Entry& entry,
+                                      UnitDiag& out);
 Result<Module> interpret_module(const std::string& file, const syntax::Entry& entry,
                                 const std::map<int, ExtParam>& params);
 

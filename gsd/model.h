@@ -113,6 +113,23 @@ struct Module {
   int line = 0;
 };
 
+// The texts of the device-related diagnosis ([PROFIBUS GSD spec Unit_Diag_Bit, Unit_Diag_Area]):
+// `Unit_Diag_Bit(n) = "text"` (bit n set), `Unit_Diag_Not_Bit(n) = "text"` (bit n clear), and
+// `Unit_Diag_Area = a-b` … `Value(v) = "text"` … `Unit_Diag_Area_End` (bits a..b read as an
+// unsigned number, bit a its least significant). Bit n is bit n % 8 of byte n / 8 after the
+// device-related block's header byte (docs/decisions.md `gsd-unit-diag-bits`).
+struct UnitDiagArea {
+  std::uint16_t first = 0, last = 0;
+  std::map<std::uint32_t, std::string> values;
+  int line = 0;
+};
+struct UnitDiag {
+  std::map<std::uint16_t, std::string> bits;
+  std::map<std::uint16_t, std::string> not_bits;
+  std::vector<UnitDiagArea> areas;
+  [[nodiscard]] bool empty() const { return bits.empty() && not_bits.empty() && areas.empty(); }
+};
+
 struct Device {
   std::string file;
   int gsd_revision = 0;
@@ -141,6 +158,7 @@ struct Device {
   std::map<int, ExtParam> params;
   std::map<int, PrmText> prm_texts;
   std::vector<Module> modules;
+  UnitDiag unit_diag;
   // Slave_Family = main[@sub[@sub…]] ([PROFIBUS GSD spec Slave_Family]): 0 general, 1 drives,
   // 2 switching devices, 3 I/O, … 9 gateways …; the sub-families as written ("AS-I").
   std::optional<std::uint8_t> slave_family;

@@ -6,11 +6,15 @@
 //   rs4sim master --slave 4 --link udp --listen 127.0.0.1:5000 --peer 127.0.0.1:5001
 //   rs4sim master --slave 4 --slave 5 --link memory --json        (simulated RS4s, simulated time)
 //   rs4sim master --slave 4 --link serial --port /dev/pts/3 --grpc 127.0.0.1:0  (Proxy, Archive)
+//   rs4sim master --gsd-slave 5:X.gsd --module "5:DI 8" --slave 4 --link serial --port ...
+//                                                   (a GSD slave beside the RS4, master_gsd.h)
 #include "app/cli/command.h"
 #include "app/runtime/archive_path.h"
 #include "app/runtime/author.h"
 #include "app/runtime/grpc_cli.h"
 #include "app/cli/link_cli.h"
+#include "app/devices/gsd_segment.h"  // fit_max_tsdr
+#include "app/runtime/master_gsd.h"
 #include "app/runtime/master_proxy.h"
 #include "app/runtime/master_service.h"
 #include "dp/master/master_config.h"
@@ -28,6 +32,8 @@ namespace {
 
 struct MasterCliOptions {
   std::vector<int> slaves;
+  std::vector<std::string> gsd_slaves;   // ADDR:FILE
+  std::vector<std::string> gsd_modules;  // ADDR:NAME, slot order per address
   int address = 1;
   std::optional<int> f_wd_time_ms;
   std::optional<int> f_source_add;
@@ -74,13 +80,20 @@ std::uint8_t checked(int value, int low, int high, const std::string& what) {
 // there, so the longest slot time [IEC 61158-4-3 bus parameters, timing] allows.
 constexpr std::uint32_t kRealtimeSlotBits = 16383;
 
-dp::master::BusParameters bus_parameters(const MasterCliOptions& o) {
+dp::master::BusParameters bus_parameters(const MasterCliOptions& o,
+                                         const std::vector<GsdStationSpec>& gsd) {
   const auto baud = dp::parse_baud_rate(o.link.baud);
   if (!baud) {
     throw UsageError("--baud " + o.link.baud + ": not a PROFIBUS rate; use one of " +
                      dp::standard_baud_rate_list());
   }
   auto bus = dp::master::BusParameters::defaults_for(*baud);
+  // The slowest responder a GSD declares at this rate ([PROFIBUS GSD spec] MaxTsdr_<rate>):
+  // on the memory bus the slot time grows with it (fit_max_tsdr); a real-time link's slot time
+  // is the longest already.
+  for (const auto& spec : gsd) {
+    if (const auto t = gsd_max_tsdr(spec, o.link.baud)) fit_max_tsdr(bus, *t);
+  }
   if (is_realtime(o.link.link)) bus.tsl = kRealtimeSlotBits;
   if (o.slot_time_bits) bus.tsl = static_cast<std::uint32_t>(*o.slot_time_bits);
   if (dp::master::validate(bus)) {
@@ -91,15 +104,17 @@ dp::master::BusParameters bus_parameters(const MasterCliOptions& o) {
   return bus;
 }
 
-rs4::device::Rs4MasterStationConfig station_config(const MasterCliOptions& o) {
+rs4::device::Rs4MasterStationConfig station_config(const MasterCliOptions& o,
+                                                   const std::vector<GsdStationSpec>& gsd) {
   rs4::device::Rs4MasterStationConfig c;
   c.master_address = checked(o.address, 0, 126, "--address");
-  c.bus = bus_parameters(o);
+  c.bus = bus_parameters(o, gsd);
   c.cycle_target = std::chrono::milliseconds(checked(o.cycle_ms, 1, 255, "--cycle"));
   c.auto_ack_rei = !o.manual_ack;
   c.output_byte = checked(o.field_pair, 1, 4, "--field-pair");
   if (o.proxy_enable && o.no_proxy) c.output_byte |= rs4::adapter::kOutputProxyEnable;
-  const std::vector<int> slaves = o.slaves.empty() ? std::vector<int>{4} : o.slaves;
+  const std::vector<int> slaves =
+      o.slaves.empty() && gsd.empty() ? std::vector<int>{4} : o.slaves;
   for (const int s : slaves) {
     rs4::device::Rs4MasterOptions r;
     // [RS4 manual §4.5]: 0..126 on the switches; the master polls 0..125.
@@ -117,12 +132,29 @@ rs4::device::Rs4MasterStationConfig station_config(const MasterCliOptions& o) {
     for (const auto& p : o.params) r.overrides.push_back(parse_param(p));
     c.slaves.push_back(r);
   }
+  for (const auto& g : gsd) {
+    for (const auto& r : c.slaves) {
+      if (r.address == g.address) {
+        throw UsageError("--gsd-slave " + std::to_string(g.address) + ":" + g.file +
+                         ": address " + std::to_string(g.address) + " is already --slave " +
+                         std::to_string(r.address) + " (an RS4)");
+      }
+    }
+    if (g.address == c.master_address) {
+      throw UsageError("--gsd-slave " + std::to_string(g.address) + ":" + g.file +
+                       ": that is the master's --address");
+    }
+  }
   return c;
 }
 
 int run(MasterCliOptions& o) {
   validate(o.link);
-  o.service.station = station_config(o);
+  std::vector<std::string> warnings;
+  o.service.gsd_slaves = parse_gsd_slaves(o.gsd_slaves, o.gsd_modules, o.link.baud, &warnings);
+  for (const auto& w : warnings) std::cerr << "warning: " << w << std::endl;
+  o.service.gsd_watchdog = std::chrono::milliseconds(o.dp_watchdog_ms);
+  o.service.station = station_config(o, o.service.gsd_slaves);
   if (o.proxy_enable && !o.no_proxy) {
     throw UsageError("--proxy-enable is for --no-proxy runs; the proxy sets Proxy-Enable itself");
   }
@@ -142,7 +174,7 @@ int run(MasterCliOptions& o) {
         "udp); for a simulated bus under API control use `rs4sim run --link "
         "memory " + api + "`");
   }
-  if (!o.link.grpc.empty() && o.no_proxy) {
+  if (!o.link.grpc.empty() && o.no_proxy && o.service.gsd_slaves.empty()) {
     throw UsageError(api + " serves the proxy and its archive, which --no-proxy turns off");
   }
   std::unique_ptr<storage::ParameterArchive> archive;
@@ -174,7 +206,13 @@ int run(MasterCliOptions& o) {
 Action setup(CLI::App& cmd) {
   auto o = std::make_shared<MasterCliOptions>();
   LinkOptions& l = o->link;
-  cmd.add_option("--slave", o->slaves, "an RS4's DP address; repeat for more (default 4)");
+  cmd.add_option("--slave", o->slaves, "an RS4's DP address; repeat for more (default 4 unless --gsd-slave is given)");
+  cmd.add_option("--gsd-slave", o->gsd_slaves,
+                 "ADDRESS:FILE: a DP slave configured from its GSD file (Set_Prm with the GSD's "
+                 "default User_Prm_Data, Chk_Cfg from its modules); repeatable");
+  cmd.add_option("--module", o->gsd_modules,
+                 "ADDRESS:NAME: a module of that --gsd-slave by its GSD name, repeat it in slot "
+                 "order (a compact station's one module is implicit)");
   cmd.add_option("--address", o->address, "the master's own FDL address (default 1)");
   cmd.add_option("--f-wd-time", o->f_wd_time_ms, "F_WD_Time in ms for every RS4 (default 150)")
       ->check(CLI::Range(1, 65535));
@@ -215,13 +253,15 @@ Action setup(CLI::App& cmd) {
       ->check(CLI::Range(0, 600000));
   cmd.add_flag("--json", o->service.json, "one JSON object per line for every event");
   add_link_options(cmd, l, "the RS4's process");
-  add_grpc_options(cmd, l.grpc, "the Proxy and Archive services (real-time links)");
+  add_grpc_options(cmd, l.grpc,
+                   "the Proxy and Archive services, GsdMaster with --gsd-slave (real-time links)");
   return [o]() -> int { return run(*o); };
 }
 
 const CommandRegistration kMaster(
     "master",
-    "run our class 1 master + PROFIsafe F-host for RS4s on a link (memory, pty, serial, udp)",
+    "run our class 1 master + PROFIsafe F-host for RS4s, and GSD slaves, on a link (memory, pty, "
+    "serial, udp)",
     setup,
     Signals::kSession);
 

@@ -1,5 +1,6 @@
 #include "app/devices/gsd_service.h"
 
+#include "gsd/unit_diag.h"
 #include "rpc/items_watcher.h"
 #include "rpc/service_support.h"
 #include "rpc/status.h"
@@ -18,6 +19,16 @@ std::string hex_bytes(std::span<const std::uint8_t> bytes) {
     s += (s.empty() ? "" : " ") + std::string(b);
   }
   return s;
+}
+
+// The GSD's Unit_Diag texts of the diagnosis set, "; "-separated (empty: none).
+std::string diagnosis_text(const GsdStation& s) {
+  std::string out;
+  for (const auto& t : gsd::unit_diag_texts(s.spec().device->unit_diag,
+                                            s.application().diagnosis_blocks())) {
+    out += (out.empty() ? "" : "; ") + t;
+  }
+  return out;
 }
 
 std::string station_list(const std::vector<GsdStation*>& stations) {
@@ -70,6 +81,9 @@ void fill(const GsdStation& s, v1::GsdStation& out) {
   out.set_online(s.online());
   out.set_data_exchanges(s.application().exchanges());
   out.set_prm_fault(s.application().prm_fault());
+  for (auto& t : gsd::unit_diag_texts(spec.device->unit_diag, s.application().diagnosis_blocks())) {
+    out.add_diagnosis_texts(std::move(t));
+  }
   out.set_dpv1(spec.device->dpv1.slave);
   if (spec.device->dpv1.slave) {
     for (const auto& a : kAlarms) {
@@ -260,7 +274,8 @@ std::unique_ptr<rpc::Watcher> gsd_watcher(const GsdStation& station) {
                                     {"inputs", hex_bytes(a.inputs())},
                                     {"outputs", hex_bytes(a.outputs())},
                                     {"ext-diag", a.ext_diag() ? "on" : "off"},
-                                    {"diagnosis", hex_bytes(a.diagnosis_blocks())}};
+                                    {"diagnosis", hex_bytes(a.diagnosis_blocks())},
+                                    {"diagnosis-text", diagnosis_text(station)}};
   });
 }
 

@@ -51,7 +51,8 @@ class GsdStationsService final : public v1::GsdStations::Service {
 };
 
 // The event-stream watcher of a station (StateChange.what: "dp-state", "online", "inputs",
-// "outputs", "ext-diag", "diagnosis"; the bytes in hex).
+// "outputs", "ext-diag", "diagnosis"; the bytes in hex; "diagnosis-text": the GSD's Unit_Diag
+// texts for it, "; "-separated).
 std::unique_ptr<rpc::Watcher> gsd_watcher(const GsdStation& station);
 
 }  // namespace rs4sim::app

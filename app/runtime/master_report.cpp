@@ -133,7 +133,9 @@ void MasterReport::started(const device::Rs4MasterStation& station, std::string_
               {{"link", std::string(link)}, {"rs4", addresses}});
     return;
   }
-  out_ << "master " << int(station.address()) << " on " << link << ", RS4 at " << list << std::endl;
+  out_ << "master " << int(station.address()) << " on " << link;
+  if (!list.empty()) out_ << ", RS4 at " << list;
+  out_ << std::endl;
 }
 
 void MasterReport::json_event(const device::Rs4MasterEvent& e, dp::TimePoint now) const {
@@ -180,12 +182,17 @@ void MasterReport::console_line(const device::Rs4SlaveView& v, dp::TimePoint now
 }
 
 void MasterReport::custom(dp::TimePoint now, std::uint8_t address, std::string_view event,
-                          std::string_view text, const Fields& fields) {
+                          std::string_view text, const Fields& fields) const {
+  custom(now, address, "RS4", event, text, fields);
+}
+
+void MasterReport::custom(dp::TimePoint now, std::uint8_t address, std::string_view label,
+                          std::string_view event, std::string_view text, const Fields& fields) const {
   if (json_) {
     json_line(now, address, event, fields);
     return;
   }
-  out_ << seconds(now) << " s  RS4 " << int(address) << ": " << text << std::endl;
+  out_ << seconds(now) << " s  " << label << " " << int(address) << ": " << text << std::endl;
 }
 
 void MasterReport::stopped(const device::Rs4MasterStation& station, dp::TimePoint now) const {

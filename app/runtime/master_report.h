@@ -33,7 +33,10 @@ class MasterReport {
               const rs4::device::Rs4MasterStation& station, dp::TimePoint now);
   // An event of a plugged-in service, e.g. {"event":"proxy","step":"upload",...}.
   void custom(dp::TimePoint now, std::uint8_t address, std::string_view event,
-              std::string_view text, const std::vector<ReportField>& fields);
+              std::string_view text, const std::vector<ReportField>& fields) const;
+  // The same for a station that is not an RS4 (a GSD slave: `label` "GSD slave").
+  void custom(dp::TimePoint now, std::uint8_t address, std::string_view label,
+              std::string_view event, std::string_view text, const std::vector<ReportField>& fields) const;
   // The final state of every RS4 ({"event":"stop",...} per RS4 with --json).
   void stopped(const rs4::device::Rs4MasterStation& station, dp::TimePoint now) const;
 

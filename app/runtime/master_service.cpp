@@ -44,9 +44,22 @@ class MasterService::Forwarder final : public dp::Station {
   MasterService& service_;
 };
 
+namespace {
+
+rs4::device::Rs4MasterStationConfig with_gsd_slaves(const MasterServiceOptions& o,
+                                                    const GsdMasterSlaves& gsd) {
+  auto c = o.station;
+  const auto entries = gsd.entries(o.gsd_watchdog);
+  c.other_slaves.insert(c.other_slaves.end(), entries.begin(), entries.end());
+  return c;
+}
+
+}  // namespace
+
 MasterService::MasterService(const MasterServiceOptions& options, LinkKind link,
                              std::ostream& out)
-    : station_(options.station),
+    : gsd_(options.gsd_slaves),
+      station_(with_gsd_slaves(options, gsd_)),
       forwarder_(std::make_unique<Forwarder>(*this)),
       link_(link),
       json_(options.json),
@@ -60,6 +73,7 @@ void MasterService::start(dp::TimePoint now) {
   last_now_ = now;
   report_.emplace(out_, json_, now);
   report_->started(station_, link_name(link_));
+  gsd_.start(*report_, now);
   for (auto* p : plugins_) p->start(station_, now);
 }
 
@@ -68,13 +82,20 @@ std::string MasterService::describe() const {
   for (const auto a : station_.slave_addresses()) {
     list += (list.empty() ? "" : ", ") + std::to_string(a);
   }
-  return "class 1 master " + std::to_string(station_.address()) +
-         " with PROFIsafe F-host for RS4 " + list + " (from the GSD)";
+  std::string text = "class 1 master " + std::to_string(station_.address());
+  if (!list.empty()) text += " with PROFIsafe F-host for RS4 " + list + " (from the GSD)";
+  if (!gsd_.empty()) {
+    text += list.empty() ? " for" : ", and";
+    text += " GSD slave " + gsd_.address_list() + " (from their GSDs)";
+  }
+  return text;
 }
 
 void MasterService::print_status(std::ostream& out, const dp::link::StationCounters& link) const {
   (void)out, (void)link;  // the report writes to the service's stream
-  if (report_) report_->stopped(station_, last_now_);
+  if (!report_) return;
+  report_->stopped(station_, last_now_);
+  gsd_.stopped(station_.master(), *report_, last_now_);
 }
 
 bool MasterService::healthy() const {
@@ -82,7 +103,7 @@ bool MasterService::healthy() const {
     const auto v = station_.view(a);
     if (!v || !v->data_exchange() || v->safety != profisafe::FHostState::kRun) return false;
   }
-  return true;
+  return gsd_.healthy(station_.master());
 }
 
 void MasterService::dispatch(dp::TimePoint now) {
@@ -94,6 +115,7 @@ void MasterService::dispatch(dp::TimePoint now) {
     for (const auto& e : events_) p->on_event(e, station_, *report_, now);
   }
   report_->events(events_, station_, now);
+  gsd_.update(station_.master(), *report_, now);
 }
 
 namespace {
@@ -114,11 +136,14 @@ int run_memory(const MasterServiceOptions& o, const LinkOptions& l, std::ostream
     c.boot_time = std::chrono::milliseconds(o.simulated_boot_ms);
     devices.push_back(std::make_unique<device::Rs4Device>(c));
   }
+  std::vector<std::unique_ptr<GsdStation>> gsd_stations;
+  for (const auto& spec : o.gsd_slaves) gsd_stations.push_back(std::make_unique<GsdStation>(spec));
   dp::link::MemoryBus bus(clock);
   const auto capture = open_link_capture(l, clock.now());
   attach_capture(capture.get(), bus);
   for (auto* s : service.stations()) bus.attach(*s);
   for (auto& d : devices) bus.attach(*d);
+  for (auto& g : gsd_stations) bus.attach(*g);
   service.start(clock.now());
   bus.start();
   for (auto& d : devices) d->power_on(clock.now());
@@ -133,6 +158,10 @@ int run_memory(const MasterServiceOptions& o, const LinkOptions& l, std::ostream
 
 ServiceList MasterService::services(const ServiceContext& context) {
   ServiceList all;
+  if (!gsd_.empty()) {
+    all.push_back(std::make_shared<GsdMasterService>(
+        context.executor, gsd_, [this]() -> dp::master::Master& { return station_.master(); }));
+  }
   for (auto* p : plugins_) {
     auto some = p->services(context);
     all.insert(all.end(), some.begin(), some.end());

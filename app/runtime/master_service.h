@@ -9,6 +9,8 @@
 //   pty / serial / udp  the RS4s are elsewhere (e.g. `rs4sim run --device rs4`)
 
 #include "app/devices/device_registry.h"
+#include "app/devices/gsd_station.h"
+#include "app/runtime/master_gsd.h"
 #include "app/runtime/master_report.h"
 #include "app/runtime/shell.h"
 #include "rs4/device/rs4_master_station.h"
@@ -25,6 +27,10 @@ struct MasterServiceOptions {
   rs4::device::Rs4MasterStationConfig station;
   bool json = false;
   int simulated_boot_ms = 30000;  // --link memory: boot time of the simulated RS4s
+  // GSD slaves polled after the RS4s, configured from their GSDs (app/runtime/master_gsd.h);
+  // --link memory simulates them too (GsdStation).
+  std::vector<GsdStationSpec> gsd_slaves;
+  std::chrono::milliseconds gsd_watchdog{200};  // their Set_Prm DP watchdog
 };
 
 class MasterPlugin {
@@ -68,13 +74,15 @@ class MasterService final : public DeviceInstance {
 
   [[nodiscard]] rs4::device::Rs4MasterStation& station() { return station_; }
   [[nodiscard]] const rs4::device::Rs4MasterStation& station() const { return station_; }
-  // Every RS4 in data exchange with its F-host in RUN.
+  [[nodiscard]] GsdMasterSlaves& gsd_slaves() { return gsd_; }
+  // Every RS4 in data exchange with its F-host in RUN, every GSD slave in data exchange.
   [[nodiscard]] bool healthy() const;
 
  private:
   class Forwarder;
   void dispatch(dp::TimePoint now);
 
+  GsdMasterSlaves gsd_;  // before station_: its entries configure the master
   rs4::device::Rs4MasterStation station_;
   std::unique_ptr<Forwarder> forwarder_;
   LinkKind link_;
@@ -86,9 +94,10 @@ class MasterService final : public DeviceInstance {
   dp::TimePoint last_now_{};
 };
 
-// Runs the master side on the link until Ctrl-C / --duration (memory: simulated RS4s for
-// --duration simulated seconds, default 40). Returns the exit code: 0, or 1 for a link error
-// (memory: 1 unless every RS4 ends in data exchange with PROFIsafe running).
+// Runs the master side on the link until Ctrl-C / --duration (memory: simulated RS4s and GSD
+// stations for --duration simulated seconds, default 40). Returns the exit code: 0, or 1 for a
+// link error (memory: 1 unless every RS4 ends in data exchange with PROFIsafe running and every
+// GSD station in data exchange).
 int run_master(const MasterServiceOptions& options, const LinkOptions& link, std::ostream& out,
                const std::vector<MasterPlugin*>& plugins = {});
 

@@ -1,9 +1,10 @@
 // libFuzzer: any text (ASCII, UTF-8 or ISO 8859-1) → gsd::parse → (if it means something)
-// gsd::configure. Seeds cover sub-families, Latin-1 text and skipped unknown keywords.
+// gsd::configure, and the file's own bytes read as Ext_Diag_Data against its Unit_Diag texts. Seeds cover sub-families, Latin-1 text and skipped unknown keywords.
 // Must never crash, hang or leak; a successful configuration must be self-consistent.
 #include "gsd/cfg.h"
 #include "gsd/config.h"
 #include "gsd/interp.h"
+#include "gsd/unit_diag.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -48,5 +49,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   if (auto c = rs4sim::gsd::configure(d, all)) check(c.value());
   for (const auto& m : d.modules) (void)rs4sim::gsd::f_param_desc_crc(d, m);
+  // The texts come from the file: never more than it declares (a file starting with '#' reads
+  // as a device-related block of 35 bytes, 0x23).
+  const auto texts = rs4sim::gsd::unit_diag_texts(d.unit_diag, {data, size});
+  if (texts.size() > d.unit_diag.bits.size() + d.unit_diag.not_bits.size() +
+                         d.unit_diag.areas.size()) {
+    __builtin_trap();
+  }
   return 0;
 }

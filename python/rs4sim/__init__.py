@@ -2,6 +2,7 @@
 
     Rs4, GridScan, Metron, Polaris   one device of a running rs4sim (rs4sim.harness)
     GsdStations                      the GSD stations of a running rs4sim (rs4sim.gsd)
+    GsdMaster                        the GSD slaves of a running `rs4sim master --grpc`
     Master                           a running `rs4sim master --grpc`: proxy and archive
     error_details, open_channel      a failed call's details; a channel with TLS/token
     Rs4simProcess                    start rs4sim, read its API address, end it (rs4sim.process)
@@ -24,13 +25,13 @@ _HARNESS = ("Rs4", "Master", "GridScan", "Metron", "Polaris", "error_details", "
             "dev_grpc", "status_pb2", "error_details_pb2")
 
 __all__ = ["Rs4simError", "Rs4simProcess", "find_executable", "__version__", *_HARNESS,
-           "GsdStations"]
+           "GsdStations", "GsdMaster"]
 
 
 def __getattr__(name):
-    if name == "GsdStations":
+    if name in ("GsdStations", "GsdMaster"):
         from . import gsd
-        return gsd.GsdStations
+        return getattr(gsd, name)
     if name in _HARNESS:
         from . import harness
         return getattr(harness, name)
@@ -38,4 +39,4 @@ def __getattr__(name):
 
 
 def __dir__():
-    return sorted(set(globals()) | set(_HARNESS) | {"GsdStations"})
+    return sorted(set(globals()) | set(_HARNESS) | {"GsdStations", "GsdMaster"})

@@ -7,6 +7,15 @@
     gsd.set_inputs(5, 1, b"\\x11\\x22")  # module in slot 1: exactly its input length
     gsd.outputs(5, 2)                  # what the master wrote to the module in slot 2
     gsd.set_online(5, False)           # off the bus; True puts it back
+
+The master side (rs4sim.v1.GsdMaster): `rs4sim master --gsd-slave 5:FILE --module 5:NAME ...
+--grpc 127.0.0.1:0`.
+
+    from rs4sim import GsdMaster
+    master = GsdMaster("127.0.0.1:50052")
+    master.slave(5).data_exchange      # the master's view: DP state, diagnosis, Set_Prm bytes
+    master.set_outputs(5, 2, b"\xbe\xef")  # what the master sends to the module in slot 2
+    master.inputs(5, 1)                # what it received from the module in slot 1
 """
 
 from .harness import _Client, _Subscribed, open_channel, pb, pb_grpc
@@ -55,6 +64,31 @@ class GsdStations(_Client):
     def events(self, stations=(), telegrams=False):
         """Observation.StreamEvents for these stations (all: empty), as Rs4.events: the
         current items first (StateChange with from = ""), then every change ("dp-state",
-        "online", "inputs", "outputs", "ext-diag", "diagnosis")."""
+        "online", "inputs", "outputs", "ext-diag", "diagnosis", "diagnosis-text")."""
         return _Subscribed(self.observation.StreamEvents(pb.StreamEventsRequest(
             addresses=list(stations), telegrams=telegrams)))
+
+
+class GsdMaster(_Client):
+    """The GSD slaves of one running `rs4sim master`, each by its station address."""
+
+    def __init__(self, address, timeout=10.0, root_certificates=None, token=None):
+        self.channel = open_channel(address, root_certificates, token, timeout)
+        self.stub = gsd_grpc.GsdMasterStub(self.channel)
+
+    def slaves(self):
+        return list(self.stub.ListSlaves(pb.Empty()).slaves)
+
+    def slave(self, address):
+        return self.stub.GetSlave(pb.StationRequest(address=address))
+
+    def set_outputs(self, address, slot, data):
+        self.stub.SetOutputs(gsd_pb.SetGsdOutputsRequest(address=address, slot=slot,
+                                                         data=bytes(data)))
+
+    def inputs(self, address, slot):
+        """The module's inputs of the last Data_Exchange (b"" while not in data exchange)."""
+        return self.slave(address).modules[slot].inputs
+
+    def outputs(self, address, slot):
+        return self.slave(address).modules[slot].outputs

@@ -73,13 +73,16 @@ dp::master::MasterConfig master_config(const Rs4MasterStationConfig& c,
 
 Rs4MasterStation::Rs4MasterStation(const Rs4MasterStationConfig& config)
     : auto_ack_rei_(config.auto_ack_rei), keep_master_events_(config.keep_master_events) {
-  if (config.slaves.empty()) throw std::invalid_argument("no RS4 configured");
+  if (config.slaves.empty() && config.other_slaves.empty()) {
+    throw std::invalid_argument("no RS4 or other slave configured");
+  }
   std::vector<dp::master::SlaveEntry> entries;
   for (const auto& options : config.slaves) {
     slaves_.push_back(
         std::make_unique<Slave>(make_entry(options), config.output_byte, slaves_.size()));
     entries.push_back(slaves_.back()->entry.slave);
   }
+  entries.insert(entries.end(), config.other_slaves.begin(), config.other_slaves.end());
   master_ = std::make_unique<dp::master::Master>(master_config(config, entries));
   // After the master: its configuration check names a duplicate or out-of-range address.
   index_.fill(-1);
@@ -110,7 +113,10 @@ std::optional<dp::fdl::Telegram> Rs4MasterStation::take_transmit() {
 void Rs4MasterStation::on_malformed_frame(std::error_code why) { master_->on_malformed_frame(why); }
 
 std::vector<std::uint8_t> Rs4MasterStation::slave_addresses() const {
-  return master_->slave_addresses();
+  std::vector<std::uint8_t> out;
+  out.reserve(slaves_.size());
+  for (const auto& s : slaves_) out.push_back(s->address());
+  return out;
 }
 
 Rs4MasterStation::Slave* Rs4MasterStation::find(std::uint8_t address) {

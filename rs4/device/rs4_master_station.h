@@ -44,6 +44,10 @@ struct Rs4MasterStationConfig {
   dp::Duration cycle_target = std::chrono::milliseconds(10);
   bool claim_token = true;               // [IEC 61158-4-3 token, bus start]
   std::vector<Rs4MasterOptions> slaves;  // one per RS4, polled in this order
+  // Other DP slaves the same master polls after the RS4s (e.g. GSD stations configured from
+  // their GSDs, app/runtime/master_gsd.h): no F-host, no events here; their state and I/O
+  // through master(). The RS4 calls (view, set_output_byte, ...) do not know them.
+  std::vector<dp::master::SlaveEntry> other_slaves;
   std::uint8_t output_byte = 0x01;       // initial process output of every RS4: field pair 1
   bool auto_ack_rei = false;             // acknowledge every ACK_REQ at once
   // Keep a copy of every dp::master event (alarms, diagnosis, …) for take_master_events(),
@@ -106,7 +110,7 @@ using Rs4MasterEvent = std::variant<DpStateChanged, SafetyStateChanged, FDiagnos
 
 class Rs4MasterStation final : public dp::Station {
  public:
-  // Throws std::invalid_argument (no slave, a GSD override error, a duplicate address) or
+  // Throws std::invalid_argument (no slave at all, a GSD override error, a duplicate address) or
   // std::system_error (the master configuration does not validate).
   explicit Rs4MasterStation(const Rs4MasterStationConfig& config);
   ~Rs4MasterStation() override;
@@ -122,6 +126,7 @@ class Rs4MasterStation final : public dp::Station {
   void on_malformed_frame(std::error_code why) override;
 
   // ---- per RS4 ----------------------------------------------------------------------------
+  // The RS4s' addresses in configuration order (not the other_slaves).
   [[nodiscard]] std::vector<std::uint8_t> slave_addresses() const;
   // nullopt for an address that is not configured.
   [[nodiscard]] std::optional<Rs4SlaveView> view(std::uint8_t address) const;

@@ -1,0 +1,88 @@
+// The GSD's diagnosis texts ([PROFIBUS GSD spec Unit_Diag_Bit, Unit_Diag_Area]): what
+// gateway_asi.gse (the project's vendor-style test file) declares, and the texts for
+// Ext_Diag_Data bytes written by hand ([IEC 61158-6-3 Slave_Diag] device-related block: header
+// bits 7..6 = 00, bits 5..0 = length with the header). Bit n = bit n % 8 of data byte n / 8
+// after the header (docs/decisions.md gsd-unit-diag-bits).
+#include "gsd/interp.h"
+#include "gsd/unit_diag.h"
+#include "test_util.h"
+
+#include <gtest/gtest.h>
+
+namespace rs4sim::gsd {
+namespace {
+
+using Bytes = std::vector<std::uint8_t>;
+using Texts = std::vector<std::string>;
+
+Device gateway() {
+  auto d = parse(testing::corpus("gateway_asi.gse"), "gateway_asi.gse");
+  EXPECT_TRUE(d) << (d ? "" : d.error().what());
+  return d ? d.value() : Device{};
+}
+
+TEST(GsdUnitDiag, TheGatewaysTextsAreRead) {
+  const UnitDiag u = gateway().unit_diag;
+  EXPECT_EQ(u.bits, (std::map<std::uint16_t, std::string>{{16, "AS-i voltage too low"},
+                                                           {17, "AS-i configuration error"}}));
+  EXPECT_EQ(u.not_bits,
+            (std::map<std::uint16_t, std::string>{{18, "gateway not in protected mode"}}));
+  ASSERT_EQ(u.areas.size(), 1U);  // X_Unit_Diag_Area and UnitDiagType are not these
+  EXPECT_EQ(u.areas[0].first, 24);
+  EXPECT_EQ(u.areas[0].last, 27);
+  EXPECT_EQ(u.areas[0].values, (std::map<std::uint32_t, std::string>{
+                                   {0, "no fault"}, {1, "earth fault"}, {2, "double address"}}));
+}
+
+TEST(GsdUnitDiag, TextsOfHandWrittenDiagnosisBytes) {
+  const UnitDiag u = gateway().unit_diag;
+  // 05 = device-related, 5 bytes with the header; data byte 2 = bits 16..23, byte 3 = 24..31.
+  // Bit 16 set, bit 18 set (protected mode), bits 24..27 = 2.
+  EXPECT_EQ(unit_diag_texts(u, Bytes{0x05, 0x00, 0x00, 0x05, 0x02}),
+            (Texts{"AS-i voltage too low", "double address"}));
+  // Bit 17 set, bit 18 clear, bits 24..27 = 7 (a value the GSD names not); bits 28..31 are
+  // outside the area.
+  EXPECT_EQ(unit_diag_texts(u, Bytes{0x05, 0x00, 0x00, 0x02, 0xF7}),
+            (Texts{"AS-i configuration error", "gateway not in protected mode",
+                   "Unit_Diag_Area 24-27: value 7"}));
+  // A block of 2 data bytes holds none of the bits: no text, not even the Not_Bit's.
+  EXPECT_EQ(unit_diag_texts(u, Bytes{0x03, 0xFF, 0xFF}), Texts{});
+  // Bits 16..23 only (4 bytes with the header): the area is beyond the block.
+  EXPECT_EQ(unit_diag_texts(u, Bytes{0x04, 0x00, 0x00, 0x00}),
+            Texts{"gateway not in protected mode"});
+  // The block's length, not the bytes after it: a second block (identifier-related, 0x42)
+  // follows; its bits are not read.
+  EXPECT_EQ(unit_diag_texts(u, Bytes{0x04, 0x00, 0x00, 0x04, 0x42, 0xFF}), Texts{});
+}
+
+TEST(GsdUnitDiag, NoDeviceRelatedBlockNoTexts) {
+  const UnitDiag u = gateway().unit_diag;
+  EXPECT_EQ(unit_diag_texts(u, Bytes{}), Texts{});
+  EXPECT_EQ(unit_diag_texts(u, Bytes{0x45, 0x00, 0x00, 0x01, 0x00}), Texts{});  // identifier
+  EXPECT_EQ(unit_diag_texts(u, Bytes{0x85, 0x00, 0x00, 0x01, 0x00}), Texts{});  // channel
+  EXPECT_EQ(unit_diag_texts(u, Bytes{0x09, 0x00, 0x00, 0x01}), Texts{});  // longer than the bytes
+  EXPECT_EQ(unit_diag_texts(u, Bytes{0x01}), Texts{});                    // a header alone
+}
+
+TEST(GsdUnitDiag, ErrorsNameTheLine) {
+  const auto what = [](const std::string& rest) {
+    auto d = parse(testing::minimal(rest), "m.gsd");
+    return d ? std::string("accepted") : d.error().what();
+  };
+  EXPECT_EQ(what("Unit_Diag_Bit(3) = \"a\"\nUnit_Diag_Bit(3) = \"b\"\n"),
+            "m.gsd:6: Unit_Diag_Bit(3) given twice: `Unit_Diag_Bit(3) = \"b\"`");
+  EXPECT_EQ(what("Unit_Diag_Bit(3) = 5\n"),
+            "m.gsd:5: Unit_Diag_Bit expects a \"string\": `Unit_Diag_Bit(3) = 5`");
+  EXPECT_EQ(what("Unit_Diag_Bit(1896) = \"a\"\n"),
+            "m.gsd:5: Unit_Diag_Bit(1896) is out of range 0..1895: `Unit_Diag_Bit(1896) = \"a\"`");
+  EXPECT_EQ(what("Unit_Diag_Area = 27-24\nUnit_Diag_Area_End\n"),
+            "m.gsd:5: Unit_Diag_Area = 27-24: bits 0..1895, first <= last, 32 bits at most: "
+            "`Unit_Diag_Area = 27-24`");
+  EXPECT_EQ(what("Unit_Diag_Area = 8-9\nValue(4) = \"x\"\nUnit_Diag_Area_End\n"),
+            "m.gsd:6: Value(4) is out of range 0..3: `Value(4) = \"x\"`");
+  EXPECT_EQ(what("Unit_Diag_Area = 8-9\nValue(1) = \"x\"\nValue(1) = \"y\"\nUnit_Diag_Area_End\n"),
+            "m.gsd:7: Value(1) given twice: `Value(1) = \"y\"`");
+}
+
+}  // namespace
+}  // namespace rs4sim::gsd
