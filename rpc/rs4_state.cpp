@@ -64,6 +64,7 @@ void fill_state(const rs4::device::Rs4Device& device, std::uint8_t address, dp::
   const auto leds = device.scanner().leds();
   out.set_led3_red(leds.led3_red);
   out.set_led5_yellow_blinking(leds.led5_yellow_blinking);
+  out.set_restart_button_held(device.adapter().restart_button());
   out.set_rs4_state(rs4::scanner::to_string(status.state));
   out.set_fdevice_state(fdevice_name(view.fdevice));
   out.set_proxy_phase(proxy_phase_name(view.proxy));

@@ -251,7 +251,9 @@ function drawRs4(address, state, contour) {
     ["restart", null], ["–", null], ["–", null], ["proxy enable", null], ["–", null]]);
   const kv = $("rs4-kv");
   kv.replaceChildren();
-  const rows = [["RS4 state", state.rs4State], ["LED", state.led], ["PROFIsafe", state.fdeviceState],
+  const rows = [["RS4 state", state.rs4State], ["LED", state.led],
+    ["LED3", state.led3Red ? "red" : "off"], ["LED5", state.led5YellowBlinking ? "yellow, blinking" : "off"],
+    ["restart button", state.restartButtonHeld ? "held" : "released"], ["PROFIsafe", state.fdeviceState],
     ["proxy phase", state.proxyPhase], ["OSSD", state.ossd ? "on" : "off"],
     ["contamination", state.contaminationPercent + " %"], ["faults", (state.faultsPresent || []).join(", ") || "none"],
     ["PC adapter", state.pcAdapterAttached ? "attached" : "detached"], ["F_Dest_Add", state.fDestAdd]];
