@@ -2,6 +2,7 @@
 
 #include "app/runtime/run_session.h"
 #include "dp/link/memory_bus.h"
+#include "rpc/bus_master_service.h"
 #include "rs4/device/rs4_device.h"
 
 #include <ostream>
@@ -132,7 +133,10 @@ int run_memory(const MasterServiceOptions& o, const LinkOptions& l, std::ostream
 }  // namespace
 
 ServiceList MasterService::services(const ServiceContext& context) {
-  ServiceList all;
+  // The master's own view of its stations (the page's station list and counters), then the
+  // plugins' services.
+  ServiceList all{std::make_shared<rpc::BusMasterService>(station_, context.clock,
+                                                          context.executor)};
   for (auto* p : plugins_) {
     auto some = p->services(context);
     all.insert(all.end(), some.begin(), some.end());

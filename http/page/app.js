@@ -56,7 +56,10 @@ function renderStations() {
       body.append(row);
       [...body.rows].sort((a, b) => a.dataset.address - b.dataset.address).forEach((r) => body.append(r));
     }
-    const v = s.values, plc = s.state && s.state.plc && s.state.plc.present ? s.state.plc : null;
+    const m = s.master;  // `master`: the master's own view (BusMaster.ListStations)
+    const plc = s.state && s.state.plc && s.state.plc.present ? s.state.plc
+      : m && m.plc && m.plc.present ? m.plc : null;
+    const v = m ? Object.assign(masterValues(m), s.values) : s.values;
     row.dataset.state = v["dp-state"] || (v.powered === "off" ? "off" : "unknown");
     if (v.ossd !== undefined) row.dataset.ossd = v.ossd;
     row.dataset.kind = s.kind;
@@ -83,6 +86,28 @@ function renderStations() {
       `<td>${s.alarms || "–"}</td>`, `<td>${s.diags}</td>`,
     ].join("");
   }
+}
+
+// A station as `master`'s class 1 master and F-host see it, in the event stream's item names
+// (its DP state in the master's words: DataExchange, WaitPrm, ...).
+function masterValues(m) {
+  const plc = m.plc || {};
+  return { "dp-state": m.dpState, ossd: plc.input && plc.input.ossd ? "on" : "off",
+    "input-byte": hex(plc.inputByte || 0).toLowerCase(),
+    "output-byte": hex(m.outputByte || 0).toLowerCase(), "rs4-state": m.dpError || "" };
+}
+
+async function pollMaster() {
+  try {
+    const list = await call("rs4sim.v1.BusMaster/ListStations");
+    for (const m of list.stations || []) {
+      const s = station(m.address);
+      s.master = m;
+      if (!s.kind) s.kind = "rs4 (master)";
+    }
+    scheduleRender();
+    return true;
+  } catch (err) { return false; }  // not `master`: no BusMaster service in this run
 }
 
 // The proxy's step and progress (Proxy.GetStatus on `master`), else the RS4's proxy phase.
@@ -399,6 +424,7 @@ async function start() {
   } catch (err) { /* not an RS4 run: the kinds stay unknown */ }
   refreshClock();
   if (await pollProxy()) setInterval(pollProxy, 500);
+  if (await pollMaster()) setInterval(pollMaster, 500);
   const events = new EventSource("/api/events" + (token ? "?access_token=" + encodeURIComponent(token) : ""));
   events.onopen = () => { $("link").dataset.state = "live"; $("link").textContent = "live"; };
   events.onerror = () => { $("link").dataset.state = "lost"; $("link").textContent = "reconnecting…"; };
