@@ -416,6 +416,85 @@ for (const b of document.querySelectorAll("#clock button")) {
   });
 }
 
+// ---- the parameter archive (`master --archive`: rs4sim.v1.Archive) ---------------------------
+let archiveKey = null;    // {bus, address} whose history is shown
+let archiveDiffed = "";   // "old/new" drawn last
+let archiveVersion = null; // the version row clicked (diffed against its predecessor)
+
+const keyText = (k) => `${k.bus || "default"}/${k.address || 0}`;
+
+async function pollArchive() {
+  let list;
+  try { list = await call("rs4sim.v1.Archive/ListStations"); } catch (err) { return false; }
+  $("archive-panel").hidden = false;
+  const body = $("archive-stations").tBodies[0];
+  body.replaceChildren();
+  for (const st of list.stations || []) {
+    const k = st.key || {};
+    if (!archiveKey) archiveKey = { bus: k.bus || "", address: k.address || 0 };
+    const row = el("tr", { class: "archive-station", "data-address": k.address || 0,
+      "data-bus": k.bus || "default", "data-current": st.currentVersionId });
+    row.classList.toggle("selected", keyText(k) === keyText(archiveKey));
+    row.innerHTML = `<td>${keyText(k)}</td><td>${st.deviceType}</td>` +
+      `<td>${(st.serialNumbers || []).join(", ")}</td><td>${st.currentVersionId}</td>` +
+      `<td>${[st.site, st.line].filter(Boolean).join(" / ") || "–"}</td>`;
+    row.addEventListener("click", () => {
+      archiveKey = { bus: k.bus || "", address: k.address || 0 };
+      archiveVersion = null;
+      pollArchive();
+    });
+    body.append(row);
+  }
+  if (archiveKey) await showHistory(archiveKey);
+  return true;
+}
+
+async function showHistory(key) {
+  const history = await call("rs4sim.v1.Archive/History", key).catch(() => ({ versions: [] }));
+  const versions = history.versions || [];
+  $("archive-station").textContent = keyText(key);
+  const body = $("archive-history").tBodies[0];
+  body.replaceChildren();
+  for (const v of versions) {
+    const row = el("tr", { class: "version", "data-address": key.address, "data-version": v.id,
+      "data-source": v.source });
+    row.classList.toggle("selected", String(v.id) === String(archiveVersion));
+    const at = new Date(Number(v.storedAtMs)).toISOString().replace("T", " ").slice(0, 19);
+    row.innerHTML = `<td>${v.id}</td><td>${v.number}</td><td>${v.source}${v.pendingDownload ? " (pending)" : ""}</td>` +
+      `<td>${at} UTC</td><td>${[v.user, v.host].filter(Boolean).join("@") || "–"}</td>` +
+      `<td><code>${hex8(v.crc32)}</code></td><td>${v.note || ""}</td>`;
+    row.addEventListener("click", () => { archiveVersion = v.id; showHistory(key); });
+    body.append(row);
+  }
+  // The picked version against the one before it; else the newest two.
+  const ids = versions.map((v) => String(v.id));
+  let at = archiveVersion === null ? ids.length - 1 : ids.indexOf(String(archiveVersion));
+  if (at < 1) at = ids.length - 1;
+  if (ids.length < 2) {
+    $("archive-diff-title").textContent = ids.length ? "(one version: nothing to compare)" : "";
+    $("archive-diff").replaceChildren();
+    $("archive-diff-text").textContent = "";
+    archiveDiffed = "";
+    return;
+  }
+  const pair = ids[at - 1] + "/" + ids[at];
+  if (pair === archiveDiffed) return;
+  const d = await call("rs4sim.v1.Archive/Diff",
+    { oldVersionId: ids[at - 1], newVersionId: ids[at], withSvg: true });
+  archiveDiffed = pair;
+  $("archive-diff-title").textContent = `version ${ids[at - 1]} → ${ids[at]}` +
+    (d.identical ? " (identical sets)" : "");
+  $("archive-diff-text").textContent = d.text;
+  const box = $("archive-diff");
+  box.dataset.address = key.address;
+  box.dataset.old = ids[at - 1];
+  box.dataset.new = ids[at];
+  box.dataset.identical = d.identical ? "true" : "false";
+  box.innerHTML = d.svg;  // our own server's picture, every text in it XML-escaped
+}
+
+const hex8 = (n) => Number(n).toString(16).padStart(8, "0").toUpperCase();
+
 // ---- start ------------------------------------------------------------------------------------
 async function start() {
   try {
@@ -425,6 +504,7 @@ async function start() {
   refreshClock();
   if (await pollProxy()) setInterval(pollProxy, 500);
   if (await pollMaster()) setInterval(pollMaster, 500);
+  if (await pollArchive()) setInterval(pollArchive, 2000);
   const events = new EventSource("/api/events" + (token ? "?access_token=" + encodeURIComponent(token) : ""));
   events.onopen = () => { $("link").dataset.state = "live"; $("link").textContent = "live"; };
   events.onerror = () => { $("link").dataset.state = "lost"; $("link").textContent = "reconnecting…"; };
