@@ -271,6 +271,13 @@ class Master(_Client):
         grpc.channel_ready_future(self.channel).result(timeout=timeout)
         self.proxy = proxy_grpc.ProxyStub(self.channel)
         self.archive = archive_grpc.ArchiveStub(self.channel)
+        self.bus_master = pb_grpc.BusMasterStub(self.channel)
+
+    def stations(self):
+        """[BusStation]: each RS4 as the master sees it (address, dp_state, dp_error, plc: the
+        F-host's state and counters, the input byte the PLC reads, dp: ProfiTrace's counters
+        lost/syncs/repeats/illegal/negative; output_byte, f_diagnosis)."""
+        return list(self.bus_master.ListStations(pb.Empty()).stations)
 
     def proxy_status(self, addresses=()):
         """ProxyStatusResponse: bus, max_parallel, running, queue, stations (FB outputs)."""
