@@ -503,11 +503,17 @@ async function start() {
   } catch (err) { /* not an RS4 run: the kinds stay unknown */ }
   refreshClock();
   if (await pollProxy()) setInterval(pollProxy, 500);
-  if (await pollMaster()) setInterval(pollMaster, 500);
-  if (await pollArchive()) setInterval(pollArchive, 2000);
+  let polled = false;
+  if (await pollMaster()) { polled = true; setInterval(pollMaster, 500); }
+  if (await pollArchive()) { polled = true; setInterval(pollArchive, 2000); }
   const events = new EventSource("/api/events" + (token ? "?access_token=" + encodeURIComponent(token) : ""));
   events.onopen = () => { $("link").dataset.state = "live"; $("link").textContent = "live"; };
-  events.onerror = () => { $("link").dataset.state = "lost"; $("link").textContent = "reconnecting…"; };
+  events.onerror = () => {
+    // A run without an event source (`master`) refuses the stream: the page polls instead.
+    const closed = events.readyState === EventSource.CLOSED;
+    $("link").dataset.state = closed && polled ? "polling" : "lost";
+    $("link").textContent = closed ? (polled ? "polling" : "no event stream") : "reconnecting…";
+  };
   events.onmessage = (m) => onEvent(JSON.parse(m.data));
   events.addEventListener("end", () => { $("link").dataset.state = "lost"; $("link").textContent = "run ended"; events.close(); });
   // The contour moves without an event: the selected RS4 is read four times a second.
