@@ -1,6 +1,7 @@
 #include "rpc/archive_service.h"
 
 #include "rpc/status.h"
+#include "rs4/report/field_svg.h"
 #include "rs4/report/parameter_diff.h"
 #include "rs4/report/parameter_summary.h"
 #include "rs4/scanner/parameter_codec.h"
@@ -166,6 +167,14 @@ grpc::Status ArchiveService::Diff(grpc::ServerContext*, const v1::DiffRequest* i
     out->set_identical(d.empty());
     out->set_text(rs4::report::render_text(d));
     out->set_json(rs4::report::render_json(d));
+    if (in->with_svg()) {
+      const std::string old_label = "version " + std::to_string(a);
+      const std::string new_label = "version " + std::to_string(b);
+      const std::string title = "station " + old_v.value().version.station.bus + "/" +
+                                std::to_string(old_v.value().version.station.address) + ", " +
+                                old_label + " -> " + new_label;
+      out->set_svg(rs4::report::field_diff_svg(old_set, new_set, {title, old_label, new_label}));
+    }
     return grpc::Status::OK;
   });
 }

@@ -8,9 +8,9 @@ namespace rs4sim::rpc {
 namespace {
 
 // The names of Look::items, in order (the StateChange.what of docs/rpc.md).
-constexpr std::array<const char*, 10> kWhat = {
-    "powered", "dp-state",   "fdevice-state", "rs4-state",  "led",
-    "ossd",    "field-pair", "proxy-phase",   "input-byte", "output-byte"};
+constexpr std::array<const char*, 12> kWhat = {
+    "powered",    "dp-state",    "fdevice-state", "rs4-state", "led",  "ossd", "field-pair",
+    "proxy-phase", "input-byte", "output-byte",   "led3",      "led5"};
 
 std::string hex2(std::uint8_t b) {
   char s[3];
@@ -24,6 +24,7 @@ DeviceWatcher::Look DeviceWatcher::look() const {
   const auto view = device_.adapter().view();
   const auto status = device_.scanner().status();
   const auto& slave = device_.slave();
+  const auto leds = device_.scanner().leds();
   Look l;
   l.items = {device_.powered() ? "on" : "off",
              dp::slave::to_string(slave.state()),
@@ -34,7 +35,9 @@ DeviceWatcher::Look DeviceWatcher::look() const {
              std::to_string(status.first_pair),
              proxy_phase_name(view.proxy),
              hex2(view.input_byte),
-             hex2(view.output_byte)};
+             hex2(view.output_byte),
+             leds.led3_red ? "red" : "off",
+             leds.led5_yellow_blinking ? "yellow-blinking" : "off"};
   l.alarms_pending = static_cast<std::uint32_t>(slave.alarms().pending());
   l.alarms_outstanding = static_cast<std::uint32_t>(slave.alarms().outstanding());
   l.error_active = view.error_active;

@@ -45,7 +45,7 @@ class DeviceWatcher final : public Watcher {
   void snapshot(std::int64_t now_ns, const Sink& sink) const override;
 
  private:
-  static constexpr std::size_t kItems = 10;
+  static constexpr std::size_t kItems = 12;
   struct Look {
     std::array<std::string, kItems> items;
     std::uint32_t alarms_pending = 0;

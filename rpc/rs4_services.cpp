@@ -231,6 +231,9 @@ grpc::Status DeviceService::SetPcAdapter(grpc::ServerContext*, const v1::SetPcAd
   });
 }
 
+// The button on X1 [RS4 manual §4.3]. PressRestart holds it and releases it after duration_ms;
+// SetRestartButton holds or releases it until told otherwise and supersedes a pulse still running
+// (each change of the button gets a number; a pulse releases only if it was the last change).
 grpc::Status DeviceService::PressRestart(grpc::ServerContext*, const v1::PressRestartRequest* in,
                                          v1::Empty*) {
   if (in->duration_ms() == 0 || in->duration_ms() > kMaxPressMs) {
@@ -239,13 +242,31 @@ grpc::Status DeviceService::PressRestart(grpc::ServerContext*, const v1::PressRe
   }
   const auto address = static_cast<std::uint8_t>(in->address());
   return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint now) {
+    if (d.adapter().restart_button()) {
+      return failed_precondition("BUTTON", "station " + std::to_string(in->address()),
+                                 "the restart button is already held; release it first "
+                                 "(SetRestartButton pressed = false) or wait for the press to end");
+    }
     d.adapter().set_restart_button(true, now);
+    const std::uint64_t press = ++(*button_changes_)[address];
     Rs4Target& target = c_.target;
-    target.after(std::chrono::milliseconds(in->duration_ms()), [&target, address] {
-      if (auto* device = target.device(address)) {
-        device->adapter().set_restart_button(false, target.now());
-      }
-    });
+    target.after(std::chrono::milliseconds(in->duration_ms()),
+                 [&target, address, press, changes = button_changes_] {
+                   if ((*changes)[address] != press) return;  // superseded by SetRestartButton
+                   if (auto* device = target.device(address)) {
+                     device->adapter().set_restart_button(false, target.now());
+                   }
+                 });
+    return grpc::Status::OK;
+  });
+}
+
+grpc::Status DeviceService::SetRestartButton(grpc::ServerContext*,
+                                             const v1::SetRestartButtonRequest* in, v1::Empty*) {
+  const auto address = static_cast<std::uint8_t>(in->address());
+  return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint now) {
+    ++(*button_changes_)[address];
+    d.adapter().set_restart_button(in->pressed(), now);
     return grpc::Status::OK;
   });
 }

@@ -7,6 +7,10 @@
 #include "rpc/rs4_target.h"
 #include "rs4sim/v1/rs4.grpc.pb.h"
 
+#include <cstdint>
+#include <map>
+#include <memory>
+
 namespace rs4sim::rpc {
 
 struct Rs4Context {
@@ -34,6 +38,8 @@ class DeviceService final : public v1::Device::Service {
                             v1::Empty*) override;
   grpc::Status PressRestart(grpc::ServerContext*, const v1::PressRestartRequest* in,
                             v1::Empty*) override;
+  grpc::Status SetRestartButton(grpc::ServerContext*, const v1::SetRestartButtonRequest* in,
+                                v1::Empty*) override;
   grpc::Status SetPower(grpc::ServerContext*, const v1::SetPowerRequest* in, v1::Empty*) override;
   grpc::Status PowerCycle(grpc::ServerContext*, const v1::StationRequest* in, v1::Empty*) override;
   grpc::Status SetAddressSwitches(grpc::ServerContext*, const v1::SetAddressSwitchesRequest* in,
@@ -48,6 +54,10 @@ class DeviceService final : public v1::Device::Service {
  private:
   grpc::Status fault(std::uint32_t address, v1::Fault fault, bool inject);
   Rs4Context c_;
+  // Per station, the number of the restart button's last change (loop thread only; shared with
+  // the release a PressRestart has scheduled, which may outlive the call).
+  std::shared_ptr<std::map<std::uint8_t, std::uint64_t>> button_changes_ =
+      std::make_shared<std::map<std::uint8_t, std::uint64_t>>();
 };
 
 class ObservationService final : public v1::Observation::Service {

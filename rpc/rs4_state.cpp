@@ -1,5 +1,7 @@
 #include "rpc/rs4_state.h"
 
+#include "rs4/adapter/cyclic_bytes.h"
+
 #include <string>
 
 namespace rs4sim::rpc {
@@ -53,6 +55,31 @@ const char* proxy_phase_name(rs4::adapter::ProxyPhase p) {
 
 std::string fdevice_name(profisafe::FDeviceState s) { return kebab(profisafe::to_string(s)); }
 
+void fill_dp_counters(const dp::master::PollCounters& c, v1::DpCounters& out) {
+  out.set_requests(c.requests);
+  out.set_repeats(c.retries);
+  out.set_no_answer(c.no_answer);
+  out.set_lost(c.left_data_exchange);
+  out.set_syncs(c.entered_data_exchange);
+  out.set_illegal(c.invalid_responses);
+  out.set_negative(c.negative_replies);
+  out.set_data_exchanges(c.data_exchanges);
+  out.set_diag_reads(c.diag_reads);
+}
+
+void fill_fhost(const profisafe::FHost& host, std::uint8_t plc_input_byte, v1::PlcView& out) {
+  const auto& n = host.counters();
+  out.set_present(true);
+  out.set_fhost_state(kebab(profisafe::to_string(host.state())));
+  out.set_input_byte(plc_input_byte);
+  fill_input_bits(rs4::adapter::decode_input_byte(plc_input_byte), *out.mutable_input());
+  out.set_crc_errors(n.crc_errors);
+  out.set_number_errors(n.number_errors);
+  out.set_watchdog_timeouts(n.watchdog_timeouts);
+  out.set_passivations(n.passivations);
+  out.set_reintegrations(n.reintegrations);
+}
+
 void fill_state(const rs4::device::Rs4Device& device, std::uint8_t address, dp::TimePoint now,
                 v1::DeviceState& out) {
   const auto view = device.adapter().view();
@@ -64,6 +91,7 @@ void fill_state(const rs4::device::Rs4Device& device, std::uint8_t address, dp::
   const auto leds = device.scanner().leds();
   out.set_led3_red(leds.led3_red);
   out.set_led5_yellow_blinking(leds.led5_yellow_blinking);
+  out.set_restart_button_held(device.adapter().restart_button());
   out.set_rs4_state(rs4::scanner::to_string(status.state));
   out.set_fdevice_state(fdevice_name(view.fdevice));
   out.set_proxy_phase(proxy_phase_name(view.proxy));

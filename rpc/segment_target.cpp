@@ -62,30 +62,10 @@ std::string SegmentTarget::ack_rei(std::uint8_t address) {
 
 bool SegmentTarget::plc_view(std::uint8_t address, v1::PlcView& out) {
   if (address != segment_.rs4_address()) return false;
-  const auto& host = segment_.fhost();
-  const auto& n = host.counters();
-  out.set_present(true);
-  out.set_fhost_state(kebab(profisafe::to_string(host.state())));
-  out.set_input_byte(segment_.input_byte());
-  fill_input_bits(rs4::adapter::decode_input_byte(segment_.input_byte()), *out.mutable_input());
+  fill_fhost(segment_.fhost(), segment_.input_byte(), out);
   out.set_data_exchange(segment_.in_data_exchange());
-  out.set_crc_errors(n.crc_errors);
-  out.set_number_errors(n.number_errors);
-  out.set_watchdog_timeouts(n.watchdog_timeouts);
-  out.set_passivations(n.passivations);
-  out.set_reintegrations(n.reintegrations);
   if (const auto status = segment_.master().slave_status(address)) {
-    const auto& c = status->counters;
-    auto& dp = *out.mutable_dp();
-    dp.set_requests(c.requests);
-    dp.set_repeats(c.retries);
-    dp.set_no_answer(c.no_answer);
-    dp.set_lost(c.left_data_exchange);
-    dp.set_syncs(c.entered_data_exchange);
-    dp.set_illegal(c.invalid_responses);
-    dp.set_negative(c.negative_replies);
-    dp.set_data_exchanges(c.data_exchanges);
-    dp.set_diag_reads(c.diag_reads);
+    fill_dp_counters(status->counters, *out.mutable_dp());
   }
   return true;
 }

@@ -2,6 +2,7 @@
 
 #include "app/runtime/run_session.h"
 #include "dp/link/memory_bus.h"
+#include "rpc/bus_master_service.h"
 #include "rs4/device/rs4_device.h"
 
 #include <ostream>
@@ -157,7 +158,10 @@ int run_memory(const MasterServiceOptions& o, const LinkOptions& l, std::ostream
 }  // namespace
 
 ServiceList MasterService::services(const ServiceContext& context) {
-  ServiceList all;
+  // The master's own view of its stations (the page's station list and counters), its GSD
+  // slaves' I/O, then the plugins' services.
+  ServiceList all{std::make_shared<rpc::BusMasterService>(station_, context.clock,
+                                                          context.executor)};
   if (!gsd_.empty()) {
     all.push_back(std::make_shared<GsdMasterService>(
         context.executor, gsd_, [this]() -> dp::master::Master& { return station_.master(); }));

@@ -68,7 +68,8 @@ class MasterService final : public DeviceInstance {
   void start(dp::TimePoint now) override;
   [[nodiscard]] std::string describe() const override;
   void print_status(std::ostream& out, const dp::link::StationCounters& link) const override;
-  // The plugins' services (the proxy: Proxy and Archive).
+  // BusMaster (the stations as the master sees them) and the plugins' services (the proxy:
+  // Proxy and Archive).
   ServiceList services(const ServiceContext& context) override;
   void stop_services() override;
 

@@ -56,7 +56,10 @@ function renderStations() {
       body.append(row);
       [...body.rows].sort((a, b) => a.dataset.address - b.dataset.address).forEach((r) => body.append(r));
     }
-    const v = s.values, plc = s.state && s.state.plc && s.state.plc.present ? s.state.plc : null;
+    const m = s.master;  // `master`: the master's own view (BusMaster.ListStations)
+    const plc = s.state && s.state.plc && s.state.plc.present ? s.state.plc
+      : m && m.plc && m.plc.present ? m.plc : null;
+    const v = m ? Object.assign(masterValues(m), s.values) : s.values;
     row.dataset.state = v["dp-state"] || (v.powered === "off" ? "off" : "unknown");
     if (v.ossd !== undefined) row.dataset.ossd = v.ossd;
     row.dataset.kind = s.kind;
@@ -83,6 +86,28 @@ function renderStations() {
       `<td>${s.alarms || "–"}</td>`, `<td>${s.diags}</td>`,
     ].join("");
   }
+}
+
+// A station as `master`'s class 1 master and F-host see it, in the event stream's item names
+// (its DP state in the master's words: DataExchange, WaitPrm, ...).
+function masterValues(m) {
+  const plc = m.plc || {};
+  return { "dp-state": m.dpState, ossd: plc.input && plc.input.ossd ? "on" : "off",
+    "input-byte": hex(plc.inputByte || 0).toLowerCase(),
+    "output-byte": hex(m.outputByte || 0).toLowerCase(), "rs4-state": m.dpError || "" };
+}
+
+async function pollMaster() {
+  try {
+    const list = await call("rs4sim.v1.BusMaster/ListStations");
+    for (const m of list.stations || []) {
+      const s = station(m.address);
+      s.master = m;
+      if (!s.kind) s.kind = "rs4 (master)";
+    }
+    scheduleRender();
+    return true;
+  } catch (err) { return false; }  // not `master`: no BusMaster service in this run
 }
 
 // The proxy's step and progress (Proxy.GetStatus on `master`), else the RS4's proxy phase.
@@ -251,7 +276,9 @@ function drawRs4(address, state, contour) {
     ["restart", null], ["–", null], ["–", null], ["proxy enable", null], ["–", null]]);
   const kv = $("rs4-kv");
   kv.replaceChildren();
-  const rows = [["RS4 state", state.rs4State], ["LED", state.led], ["PROFIsafe", state.fdeviceState],
+  const rows = [["RS4 state", state.rs4State], ["LED", state.led],
+    ["LED3", state.led3Red ? "red" : "off"], ["LED5", state.led5YellowBlinking ? "yellow, blinking" : "off"],
+    ["restart button", state.restartButtonHeld ? "held" : "released"], ["PROFIsafe", state.fdeviceState],
     ["proxy phase", state.proxyPhase], ["OSSD", state.ossd ? "on" : "off"],
     ["contamination", state.contaminationPercent + " %"], ["faults", (state.faultsPresent || []).join(", ") || "none"],
     ["PC adapter", state.pcAdapterAttached ? "attached" : "detached"], ["F_Dest_Add", state.fDestAdd]];
@@ -389,6 +416,85 @@ for (const b of document.querySelectorAll("#clock button")) {
   });
 }
 
+// ---- the parameter archive (`master --archive`: rs4sim.v1.Archive) ---------------------------
+let archiveKey = null;    // {bus, address} whose history is shown
+let archiveDiffed = "";   // "old/new" drawn last
+let archiveVersion = null; // the version row clicked (diffed against its predecessor)
+
+const keyText = (k) => `${k.bus || "default"}/${k.address || 0}`;
+
+async function pollArchive() {
+  let list;
+  try { list = await call("rs4sim.v1.Archive/ListStations"); } catch (err) { return false; }
+  $("archive-panel").hidden = false;
+  const body = $("archive-stations").tBodies[0];
+  body.replaceChildren();
+  for (const st of list.stations || []) {
+    const k = st.key || {};
+    if (!archiveKey) archiveKey = { bus: k.bus || "", address: k.address || 0 };
+    const row = el("tr", { class: "archive-station", "data-address": k.address || 0,
+      "data-bus": k.bus || "default", "data-current": st.currentVersionId });
+    row.classList.toggle("selected", keyText(k) === keyText(archiveKey));
+    row.innerHTML = `<td>${keyText(k)}</td><td>${st.deviceType}</td>` +
+      `<td>${(st.serialNumbers || []).join(", ")}</td><td>${st.currentVersionId}</td>` +
+      `<td>${[st.site, st.line].filter(Boolean).join(" / ") || "–"}</td>`;
+    row.addEventListener("click", () => {
+      archiveKey = { bus: k.bus || "", address: k.address || 0 };
+      archiveVersion = null;
+      pollArchive();
+    });
+    body.append(row);
+  }
+  if (archiveKey) await showHistory(archiveKey);
+  return true;
+}
+
+async function showHistory(key) {
+  const history = await call("rs4sim.v1.Archive/History", key).catch(() => ({ versions: [] }));
+  const versions = history.versions || [];
+  $("archive-station").textContent = keyText(key);
+  const body = $("archive-history").tBodies[0];
+  body.replaceChildren();
+  for (const v of versions) {
+    const row = el("tr", { class: "version", "data-address": key.address, "data-version": v.id,
+      "data-source": v.source });
+    row.classList.toggle("selected", String(v.id) === String(archiveVersion));
+    const at = new Date(Number(v.storedAtMs)).toISOString().replace("T", " ").slice(0, 19);
+    row.innerHTML = `<td>${v.id}</td><td>${v.number}</td><td>${v.source}${v.pendingDownload ? " (pending)" : ""}</td>` +
+      `<td>${at} UTC</td><td>${[v.user, v.host].filter(Boolean).join("@") || "–"}</td>` +
+      `<td><code>${hex8(v.crc32)}</code></td><td>${v.note || ""}</td>`;
+    row.addEventListener("click", () => { archiveVersion = v.id; showHistory(key); });
+    body.append(row);
+  }
+  // The picked version against the one before it; else the newest two.
+  const ids = versions.map((v) => String(v.id));
+  let at = archiveVersion === null ? ids.length - 1 : ids.indexOf(String(archiveVersion));
+  if (at < 1) at = ids.length - 1;
+  if (ids.length < 2) {
+    $("archive-diff-title").textContent = ids.length ? "(one version: nothing to compare)" : "";
+    $("archive-diff").replaceChildren();
+    $("archive-diff-text").textContent = "";
+    archiveDiffed = "";
+    return;
+  }
+  const pair = ids[at - 1] + "/" + ids[at];
+  if (pair === archiveDiffed) return;
+  const d = await call("rs4sim.v1.Archive/Diff",
+    { oldVersionId: ids[at - 1], newVersionId: ids[at], withSvg: true });
+  archiveDiffed = pair;
+  $("archive-diff-title").textContent = `version ${ids[at - 1]} → ${ids[at]}` +
+    (d.identical ? " (identical sets)" : "");
+  $("archive-diff-text").textContent = d.text;
+  const box = $("archive-diff");
+  box.dataset.address = key.address;
+  box.dataset.old = ids[at - 1];
+  box.dataset.new = ids[at];
+  box.dataset.identical = d.identical ? "true" : "false";
+  box.innerHTML = d.svg;  // our own server's picture, every text in it XML-escaped
+}
+
+const hex8 = (n) => Number(n).toString(16).padStart(8, "0").toUpperCase();
+
 // ---- start ------------------------------------------------------------------------------------
 async function start() {
   try {
@@ -397,9 +503,17 @@ async function start() {
   } catch (err) { /* not an RS4 run: the kinds stay unknown */ }
   refreshClock();
   if (await pollProxy()) setInterval(pollProxy, 500);
+  let polled = false;
+  if (await pollMaster()) { polled = true; setInterval(pollMaster, 500); }
+  if (await pollArchive()) { polled = true; setInterval(pollArchive, 2000); }
   const events = new EventSource("/api/events" + (token ? "?access_token=" + encodeURIComponent(token) : ""));
   events.onopen = () => { $("link").dataset.state = "live"; $("link").textContent = "live"; };
-  events.onerror = () => { $("link").dataset.state = "lost"; $("link").textContent = "reconnecting…"; };
+  events.onerror = () => {
+    // A run without an event source (`master`) refuses the stream: the page polls instead.
+    const closed = events.readyState === EventSource.CLOSED;
+    $("link").dataset.state = closed && polled ? "polling" : "lost";
+    $("link").textContent = closed ? (polled ? "polling" : "no event stream") : "reconnecting…";
+  };
   events.onmessage = (m) => onEvent(JSON.parse(m.data));
   events.addEventListener("end", () => { $("link").dataset.state = "lost"; $("link").textContent = "run ended"; events.close(); });
   // The contour moves without an event: the selected RS4 is read four times a second.

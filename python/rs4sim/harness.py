@@ -197,6 +197,23 @@ class Rs4(_Client):
     def press_restart(self, ms=200):
         self.device.PressRestart(pb.PressRestartRequest(address=self.station, duration_ms=ms))
 
+    def hold_restart(self):
+        """Holds the restart button on X1 until release_restart(): LED3 red (state().led3_red)
+        and the OSSD off meanwhile; the release counts as the reset signal only if the button
+        was held 0.12..5 s ([RS4 manual §4.3]; time it with advance() on the manual clock)."""
+        self.device.SetRestartButton(pb.SetRestartButtonRequest(address=self.station, pressed=True))
+
+    def release_restart(self):
+        self.device.SetRestartButton(
+            pb.SetRestartButtonRequest(address=self.station, pressed=False))
+
+    def leds(self):
+        """The scanner's own LEDs and the adapter's: {"led3_red", "led5_yellow_blinking",
+        "adapter": DeviceState.led, "adapter_lit": DeviceState.led_lit}."""
+        s = self.state()
+        return {"led3_red": s.led3_red, "led5_yellow_blinking": s.led5_yellow_blinking,
+                "adapter": s.led, "adapter_lit": s.led_lit}
+
     def set_contamination(self, percent):
         self.device.SetContamination(
             pb.SetContaminationRequest(address=self.station, percent=percent))
@@ -254,6 +271,13 @@ class Master(_Client):
         grpc.channel_ready_future(self.channel).result(timeout=timeout)
         self.proxy = proxy_grpc.ProxyStub(self.channel)
         self.archive = archive_grpc.ArchiveStub(self.channel)
+        self.bus_master = pb_grpc.BusMasterStub(self.channel)
+
+    def stations(self):
+        """[BusStation]: each RS4 as the master sees it (address, dp_state, dp_error, plc: the
+        F-host's state and counters, the input byte the PLC reads, dp: ProfiTrace's counters
+        lost/syncs/repeats/illegal/negative; output_byte, f_diagnosis)."""
+        return list(self.bus_master.ListStations(pb.Empty()).stations)
 
     def proxy_status(self, addresses=()):
         """ProxyStatusResponse: bus, max_parallel, running, queue, stations (FB outputs)."""

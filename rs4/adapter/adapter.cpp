@@ -102,6 +102,7 @@ bool Adapter::exchange_scanner(const scanner::ScannerConfig& unit) {
   scanner::ScannerConfig c = unit;
   c.boot_duration = config_.scanner.boot_duration;  // the simulation's setting, not the unit's
   scanner_ = scanner::Scanner(c);
+  restart_driven_ = false;  // the new unit's restart input is low until the power-on drives it
   return true;
 }
 

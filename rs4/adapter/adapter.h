@@ -186,6 +186,8 @@ class Adapter final : public dp::slave::SlaveApplication {
   // simulation's). Only while powered off, as on site; false (nothing changed) while powered.
   bool exchange_scanner(const scanner::ScannerConfig& unit);
   void set_restart_button(bool pressed, TimePoint now);  // button on X1 ([RS4 manual §2.3, §2.4])
+  // The button on X1 held ([RS4 manual §4.3]); the scanner's restart input is this or bit 3.
+  [[nodiscard]] bool restart_button() const noexcept { return restart_button_; }
   void attach_pc_adapter(TimePoint now);                 // reed contact of X5
                                                          // ([RS4 manual §7.1, §7.2])
   void detach_pc_adapter(TimePoint now);

@@ -9,14 +9,21 @@ Then violates the protective field through the JSON API (POST
 the SVG shows the object in the protective field, and the input byte's OSSD bit reads 0.
 Then drops one reply on the bus: the row's data-repeats goes "1". Then a GridScan
 (`run --device gridscan`): its elements drawn, three interrupted through the JSON API.
-The screenshots are the test's artifacts: live_view.png and live_view_gridscan.png in the
-working directory.
+Then `rs4sim master --archive --http` on UDP with an RS4 of `rs4sim run` beside it: the
+master's page lists the station from the master's own view (BusMaster: data-state
+DataExchange, data-syncs 1), the archive's station and its history (the first sync's upload);
+two changes of the set through the run's JSON API (Device.SetParameterSet) are uploaded as
+two versions and the page draws their diff (the picture of `rs4sim archive diff --svg`).
+The screenshots are the test's artifacts: live_view.png, live_view_gridscan.png and
+live_view_master.png in the working directory.
 
 Usage: browser_test.py RS4SIM OUTDIR. Exit 77 (skipped) without selenium or chromium.
 """
 import json
 import os
+import socket
 import subprocess
+import tempfile
 import sys
 import time
 import urllib.error
@@ -50,6 +57,22 @@ def listening(proc):
     base = line[len(prefix):]
     assert base.startswith("http://127.0.0.1:") and base.endswith("/"), base
     return base
+
+
+def listening_among(proc, prefix="http: listening on "):
+    """The base URL from the first stdout line with `prefix` (other lines may come first)."""
+    for _ in range(40):
+        line = proc.stdout.readline()
+        assert line, f"rs4sim printed no {prefix!r} line"
+        if line.startswith(prefix):
+            return line[len(prefix):].strip()
+    raise AssertionError(f"no {prefix!r} line")
+
+
+def free_udp_port():
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
 
 
 def main():
@@ -139,6 +162,49 @@ def main():
         shot = os.path.join(outdir, "live_view_gridscan.png")
         driver.save_screenshot(shot)
         print(f"ok: {elements} GridScan elements drawn, 3..5 interrupted; screenshot {shot}")
+
+        # `master` with an archive, its RS4 in `rs4sim run` on UDP (a 3 s boot).
+        work = tempfile.mkdtemp(prefix="rs4sim_browser_master_")
+        a, b = free_udp_port(), free_udp_port()
+        device = subprocess.Popen(
+            [rs4sim, "run", "--device", "rs4", "--address", "4", "--link", "udp", "--listen",
+             f"127.0.0.1:{a}", "--peer", f"127.0.0.1:{b}", "--boot-time", "3000", "--duration",
+             "60", "--pc-adapter", "detached", "--http", "127.0.0.1:0"],
+            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        procs.append(device)
+        master = subprocess.Popen(
+            [rs4sim, "master", "--slave", "4", "--link", "udp", "--listen", f"127.0.0.1:{b}",
+             "--peer", f"127.0.0.1:{a}", "--f-wd-time", "500", "--dp-watchdog", "1000",
+             "--archive", os.path.join(work, "archive.sqlite3"), "--http", "127.0.0.1:0"],
+            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        procs.append(master)
+        device_base = listening_among(device)
+        base = listening_among(master)
+        driver.get(base)
+        wait = WebDriverWait(driver, 30)
+        row = '#stations tr[data-address="4"]'
+        wait.until(lambda d: d.find_elements(
+            By.CSS_SELECTOR, row + '[data-state="DataExchange"][data-syncs="1"][data-lost="0"]'))
+        wait.until(lambda d: d.find_elements(
+            By.CSS_SELECTOR, '#archive-stations tr.archive-station[data-address="4"]'))
+        # The factory set is not archived (the first sync reports it); each change of the set on
+        # site (the parametrisation tool through the PC adapter, [RS4 manual §7.2]) is uploaded.
+        version = '#archive-history tr.version[data-address="4"][data-source="upload"]'
+        for response_time_ms, versions in ((160, 1), (200, 2)):
+            call(device_base, "rs4sim.v1.Device/SetParameterSet",
+                 {"address": 4, "json": json.dumps({"format": 1,
+                                                    "response_time_ms": response_time_ms})})
+            wait.until(lambda d, n=versions: len(d.find_elements(By.CSS_SELECTOR, version)) == n)
+        diff = '#archive-diff[data-address="4"][data-identical="false"] svg'
+        wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, diff))
+        versions = len(driver.find_elements(By.CSS_SELECTOR, '#archive-history tr.version'))
+        assert versions == 2, versions
+        text = driver.find_element(By.ID, "archive-diff-text").text
+        assert "response" in text, text
+        shot = os.path.join(outdir, "live_view_master.png")
+        driver.save_screenshot(shot)
+        print(f"ok: master's station list from BusMaster, {versions} archived versions, their "
+              f"diff drawn ({text.splitlines()[0] if text else ''}); screenshot {shot}")
         return 0
     finally:
         if driver is not None:

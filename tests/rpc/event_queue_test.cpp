@@ -62,13 +62,17 @@ TEST(EventHub, SnapshotFirstThenOnlyChanges) {
   auto q = std::make_shared<EventQueue>(64, false, std::vector<std::uint8_t>{});
   hub.subscribe(q, dp::TimePoint{});
   auto events = q->pop(0ms);
-  // 10 state items, one alarm count, one diagnosis.
-  ASSERT_EQ(events.size(), 12U);
+  // 12 state items (the scanner's LED3 and LED5 last), one alarm count, one diagnosis.
+  ASSERT_EQ(events.size(), 14U);
   EXPECT_EQ(events[0].state().what(), "powered");
   EXPECT_EQ(events[0].state().from(), "");
   EXPECT_EQ(events[0].state().to(), "off");
-  EXPECT_TRUE(events[10].has_alarm());
-  EXPECT_TRUE(events[11].has_diagnosis());
+  EXPECT_EQ(events[10].state().what(), "led3");
+  EXPECT_EQ(events[10].state().to(), "off");
+  EXPECT_EQ(events[11].state().what(), "led5");
+  EXPECT_EQ(events[11].state().to(), "off");
+  EXPECT_TRUE(events[12].has_alarm());
+  EXPECT_TRUE(events[13].has_diagnosis());
   hub.poll(dp::TimePoint{});
   EXPECT_TRUE(q->pop(0ms).empty());  // nothing changed
   device.power_on(dp::TimePoint{});

@@ -40,7 +40,14 @@ try:
     assert not rs4.plc().input.ossd, "the PLC reads the OSSD bit 0"
     rs4.remove(obstacle)
     assert not rs4.run_until("OSSD_ON", 1), "restart interlock holds the OSSD off"
-    rs4.press_restart(300)
+    # The button held and released [RS4 manual §4.3]: LED3 red while held, the reset signal at
+    # the release (0.3 s, inside 0.12..5 s).
+    rs4.hold_restart()
+    rs4.advance(0.3)
+    assert rs4.leds()["led3_red"] and rs4.state().restart_button_held, rs4.leds()
+    assert not rs4.ossd(), "not before the release"
+    rs4.release_restart()
+    assert not rs4.leds()["led3_red"]
     assert rs4.run_until("OSSD_ON", 1)
     rs4.advance(0.05)
     plc = rs4.plc()

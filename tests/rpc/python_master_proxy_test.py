@@ -94,6 +94,10 @@ try:
     assert status.running == 0 and list(status.queue) == [], status
     assert [s.address for s in status.stations] == [4], status
     assert status.stations[0].outputs.config_set_to_default, status.stations[0]
+    # The master's own view of the station (BusMaster): in data exchange, synchronised once.
+    (seen,) = m.stations()
+    assert seen.address == 4 and seen.dp_state == "DataExchange" and not seen.dp_error, seen
+    assert seen.plc.fhost_state == "run" and seen.plc.dp.syncs == 1, seen.plc
     # The Archive service beside it reads the file the proxy wrote.
     listed = m.archive.ListStations(archive_pb.ListStationsRequest())
     assert any(s.key.address == 4 for s in listed.stations), listed

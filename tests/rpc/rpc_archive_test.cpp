@@ -6,6 +6,7 @@
 #include "google/rpc/status.pb.h"
 #include "rpc/archive_service.h"
 #include "rpc/server.h"
+#include "rs4/report/field_svg.h"
 #include "rs4/scanner/parameter_codec.h"
 #include "rs4sim/v1/archive_service.grpc.pb.h"
 #include "storage/crc32.h"
@@ -109,6 +110,22 @@ TEST_F(RpcArchiveTest, HistoryDiffRestoreAndVerify) {
   ASSERT_TRUE(stub_->Diff(&c3, d, &diff).ok());
   EXPECT_FALSE(diff.identical());
   EXPECT_EQ(diff.text(), "pair 2 protective: segments 100-140 changed, max +350 mm\n");
+  EXPECT_EQ(diff.svg(), "") << "only with with_svg";
+  {
+    // The live view's picture: the one `rs4sim archive diff --svg` draws (rs4/report).
+    grpc::ClientContext c;
+    d.set_with_svg(true);
+    v1::DiffResponse pictured;
+    ASSERT_TRUE(stub_->Diff(&c, d, &pictured).ok());
+    EXPECT_EQ(pictured.text(), diff.text());
+    const std::string old_label = "version " + std::to_string(first);
+    const std::string new_label = "version " + std::to_string(second);
+    const std::string title = "station default/4, " + old_label + " -> " + new_label;
+    EXPECT_NE(pictured.svg().find("<svg"), std::string::npos) << pictured.svg().substr(0, 80);
+    EXPECT_NE(pictured.svg().find(rs4::report::xml_escape(title)), std::string::npos);
+    EXPECT_EQ(pictured.svg(), rs4::report::field_diff_svg(rs4::scanner::factory_default(), changed,
+                                                          {title, old_label, new_label}));
+  }
 
   grpc::ClientContext c4;
   v1::VersionRequest g;

@@ -51,7 +51,7 @@ TEST_F(RpcEventsTest, SnapshotThenTheBootAndAViolationInOrder) {
   std::map<std::string, std::string> snapshot;
   v1::Event e;
   std::uint64_t sequence = 0;
-  while (snapshot.size() < 10 && reader->Read(&e)) {
+  while (snapshot.size() < 12 && reader->Read(&e)) {
     EXPECT_EQ(e.sequence(), ++sequence);
     EXPECT_EQ(e.address(), 4U);
     if (e.has_state()) {
@@ -62,6 +62,8 @@ TEST_F(RpcEventsTest, SnapshotThenTheBootAndAViolationInOrder) {
   EXPECT_EQ(snapshot["powered"], "on");
   EXPECT_EQ(snapshot["ossd"], "off");
   EXPECT_EQ(snapshot["dp-state"], "Wait_Prm");
+  EXPECT_EQ(snapshot["led3"], "off");
+  EXPECT_EQ(snapshot["led5"], "off");
 
   boot();
   const auto to_exchange = read_until(*reader, "dp-state", "Data_Exch");
@@ -82,6 +84,40 @@ TEST_F(RpcEventsTest, SnapshotThenTheBootAndAViolationInOrder) {
   EXPECT_EQ(reader->Finish().error_code(), grpc::StatusCode::CANCELLED);
 }
 
+// The scanner's LED3 in the stream [RS4 manual §4.3]: red when the restart button is held
+// (Device.SetRestartButton), off at the release, with the OSSD's own changes around it.
+TEST_F(RpcEventsTest, Led3FollowsTheRestartButton) {
+  boot();
+  grpc::ClientContext ctx;
+  v1::StreamEventsRequest req;
+  auto reader = open(ctx, req);
+  const auto button = [&](bool pressed) {
+    grpc::ClientContext c;
+    v1::SetRestartButtonRequest r;
+    r.set_address(4);
+    r.set_pressed(pressed);
+    v1::Empty e;
+    ASSERT_TRUE(device_stub_->SetRestartButton(&c, r, &e).ok());
+  };
+  button(true);
+  const auto red = read_until(*reader, "led3", "red");
+  ASSERT_FALSE(red.empty());
+  EXPECT_EQ(red.back().from(), "off");
+  advance(300);
+  button(false);
+  const auto off = read_until(*reader, "led3", "off");
+  ASSERT_FALSE(off.empty());
+  EXPECT_EQ(off.back().from(), "red");
+  std::vector<v1::StateChange> seen = red;
+  seen.insert(seen.end(), off.begin(), off.end());
+  const bool ossd_went_off = std::any_of(seen.begin(), seen.end(), [](const v1::StateChange& c) {
+    return c.what() == "ossd" && c.to() == "off";
+  });
+  EXPECT_TRUE(ossd_went_off) << "the OSSD is off while the button is held";
+  ctx.TryCancel();
+  (void)reader->Finish();
+}
+
 // The PLC's side of the simulated bus: a CRC2 error passivates the F-host, the PLC program
 // reads the fail-safe value 0 instead of the RS4's input byte, after good PDUs it waits for
 // the operator (ACK_REQ), and Faults.AcknowledgeReintegration (ACK_REI) brings it back to RUN
@@ -92,7 +128,7 @@ TEST_F(RpcEventsTest, TheFHostsStateAndThePlcInputByteFollowAPassivation) {
   auto reader = open(ctx, req);
   std::map<std::string, std::string> snapshot;
   v1::Event e;
-  while (snapshot.size() < 12 && reader->Read(&e)) {
+  while (snapshot.size() < 14 && reader->Read(&e)) {
     if (e.has_state()) snapshot[e.state().what()] = e.state().to();
   }
   EXPECT_EQ(snapshot["plc-input-byte"], "00");  // no data exchange yet

@@ -69,16 +69,16 @@ TEST_F(RpcRs4Test, ProtectiveFieldViolationAndRestart) {
 }
 
 // The scanner's own LEDs in DeviceState: LED5 yellow blinking from the contamination warning on
-// [RS4 manual §8.3] (50 %, not 49 %); LED3 red while the restart is held [RS4 manual §4.3] (on the
-// simulated segment PressRestart runs the whole pulse within the call, so LED3 is dark again
-// afterwards; the held state is pinned by the scanner test
-// ScannerLeds.Led3WhileTheRestartIsHeldLed5OnAContaminatedWindow).
+// [RS4 manual §8.3] (50 %, not 49 %); LED3 red while the restart button is held [RS4 manual §4.3]
+// (PressRestart runs its whole pulse within the call on the simulated segment, so LED3 is dark
+// again afterwards; SetRestartButton holds it, see RestartButtonHeldAndReleased).
 TEST_F(RpcRs4Test, TheScannersLedsAreInTheState) {
   boot();
   EXPECT_FALSE(state().led3_red());
   EXPECT_FALSE(state().led5_yellow_blinking());
   press_restart(300);
   EXPECT_FALSE(state().led3_red()) << "released again";
+  EXPECT_FALSE(state().restart_button_held());
   const auto contaminate = [&](std::uint32_t percent) {
     grpc::ClientContext ctx;
     v1::SetContaminationRequest req;
@@ -94,6 +94,78 @@ TEST_F(RpcRs4Test, TheScannersLedsAreInTheState) {
   EXPECT_TRUE(state().led5_yellow_blinking());
   contaminate(0);
   EXPECT_FALSE(state().led5_yellow_blinking());
+}
+
+// Device.SetRestartButton: held, the button turns LED3 red and the OSSD off [RS4 manual §4.3]
+// "Während der Betätigung der Restart-Taste sind die sicheren Ausgänge OSSD 1 und OSSD 2 des RS4
+// abgeschaltet; die Anzeige am Scanner (LED 3) leuchtet rot"; at the release the press acts as the
+// reset signal only if it lasted 0.12..5 s ("Die Dauer des Rücksetz-Signals muss zwischen 0,12
+// und 5 Sekunden betragen"): after a protective-field violation a 119 ms hold leaves the restart
+// interlock, a 120 ms hold releases it. PressRestart while the button is held: FAILED_PRECONDITION.
+TEST_F(RpcRs4Test, RestartButtonHeldAndReleased) {
+  boot();
+  const auto button = [&](bool pressed) {
+    grpc::ClientContext ctx;
+    v1::SetRestartButtonRequest req;
+    req.set_address(4);
+    req.set_pressed(pressed);
+    v1::Empty e;
+    return device_stub_->SetRestartButton(&ctx, req, &e);
+  };
+  ASSERT_TRUE(button(true).ok());
+  advance(40);
+  auto s = state();
+  EXPECT_TRUE(s.restart_button_held());
+  EXPECT_TRUE(s.led3_red());
+  EXPECT_FALSE(s.ossd());
+  EXPECT_FALSE(s.input().ossd());
+  {
+    grpc::ClientContext ctx;
+    v1::PressRestartRequest req;
+    req.set_address(4);
+    req.set_duration_ms(200);
+    v1::Empty e;
+    const auto status = device_stub_->PressRestart(&ctx, req, &e);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+    EXPECT_NE(status.error_message().find("already held"), std::string::npos)
+        << status.error_message();
+  }
+  advance(6000);  // held long: still red, still off
+  EXPECT_TRUE(state().led3_red());
+  EXPECT_FALSE(state().ossd());
+  ASSERT_TRUE(button(false).ok());
+  EXPECT_FALSE(state().led3_red());
+  EXPECT_FALSE(state().restart_button_held());
+  EXPECT_TRUE(run_until(v1::CONDITION_OSSD_ON, 200)) << "no interlock pending: on again";
+
+  v1::AddObstacleResponse obstacle;
+  {
+    grpc::ClientContext ctx;
+    v1::ViolateFieldRequest req;
+    req.set_address(4);
+    req.set_field(v1::FIELD_KIND_PROTECTIVE);
+    ASSERT_TRUE(device_stub_->ViolateField(&ctx, req, &obstacle).ok());
+  }
+  ASSERT_TRUE(run_until(v1::CONDITION_OSSD_OFF, 1000));
+  {
+    grpc::ClientContext ctx;
+    v1::RemoveObstacleRequest req;
+    req.set_address(4);
+    req.set_obstacle_id(obstacle.obstacle_id());
+    v1::Empty e;
+    ASSERT_TRUE(device_stub_->RemoveObstacle(&ctx, req, &e).ok());
+  }
+  advance(200);
+  ASSERT_FALSE(state().ossd()) << "restart interlock";
+  ASSERT_TRUE(button(true).ok());
+  advance(119);
+  ASSERT_TRUE(button(false).ok());
+  EXPECT_FALSE(run_until(v1::CONDITION_OSSD_ON, 500)) << "119 ms is no reset signal";
+  ASSERT_TRUE(button(true).ok());
+  advance(120);
+  EXPECT_FALSE(state().ossd()) << "not before the release";
+  ASSERT_TRUE(button(false).ok());
+  EXPECT_TRUE(run_until(v1::CONDITION_OSSD_ON, 500)) << "120 ms releases the interlock";
 }
 
 TEST_F(RpcRs4Test, BadInputGetsASpecificStatus) {

@@ -90,6 +90,70 @@ TEST_F(Running, RestartButtonOnX1WorksLikeTheBit) {
   EXPECT_TRUE(rig.ossd());
 }
 
+// The button on X1 held and released on the manual clock, as Device.SetRestartButton drives it
+// [RS4 manual §4.3]: "Während der Betätigung der Restart-Taste sind die sicheren Ausgänge OSSD 1
+// und OSSD 2 des RS4 abgeschaltet; die Anzeige am Scanner (LED 3) leuchtet rot. Die Dauer des
+// Rücksetz-Signals muss zwischen 0,12 und 5 Sekunden betragen." LED3 red and the PLC's OSSD bit
+// 0 while held; the interlock is released at the release, and only by a press of 0.12..5 s
+// (119 ms and 5001 ms do nothing, 120 ms and 5000 ms release it).
+TEST_F(Running, RestartButtonHeldLed3RedAndTheReleaseCountsByTheManualsWindow) {
+  const auto hold = [&](std::chrono::milliseconds d) {
+    rig.adapter.set_restart_button(true, rig.now);
+    EXPECT_TRUE(rig.adapter.restart_button());
+    EXPECT_TRUE(rig.adapter.scanner().leds().led3_red);
+    rig.run(d / 20ms * 20ms);
+    rig.run(d % 20ms, 1ms);
+    EXPECT_TRUE(rig.adapter.scanner().leds().led3_red) << "held for " << d.count() << " ms";
+    EXPECT_FALSE(rig.ossd()) << "held for " << d.count() << " ms";
+    rig.adapter.set_restart_button(false, rig.now);
+    EXPECT_FALSE(rig.adapter.scanner().leds().led3_red) << "released";
+    rig.run(100ms);
+  };
+  const auto interlock = [&] {
+    auto id = rig.adapter.scanner().edit_scene(rig.now).add(scanner::Circle{{500, 0}, 100});
+    ASSERT_TRUE(id);
+    rig.run(200ms);
+    ASSERT_TRUE(rig.adapter.scanner().edit_scene(rig.now).remove(id.value()));
+    rig.run(200ms);
+    ASSERT_FALSE(rig.ossd());
+    ASSERT_TRUE(rig.adapter.scanner().status().restart_interlock);
+  };
+  // Held while the OSSD is on: off while held, LED3 red; on again after the release.
+  hold(300ms);
+  EXPECT_TRUE(rig.ossd());
+  interlock();
+  hold(119ms);
+  EXPECT_FALSE(rig.ossd()) << "119 ms: too short";
+  hold(5001ms);
+  EXPECT_FALSE(rig.ossd()) << "5001 ms: too long";
+  hold(120ms);
+  EXPECT_TRUE(rig.ossd()) << "120 ms: the interlock released at the release";
+  interlock();
+  hold(5000ms);
+  EXPECT_TRUE(rig.ossd()) << "5000 ms";
+  EXPECT_EQ(rig.adapter.scanner().counters().restart_too_short, 1U);
+  EXPECT_EQ(rig.adapter.scanner().counters().restart_too_long, 1U);
+}
+
+// A button held across a device exchange holds the new unit's restart input from its power-on:
+// LED3 red once it is measuring, the start interlock released only after the release.
+TEST_F(Running, RestartButtonHeldAcrossADeviceExchange) {
+  rig.adapter.set_restart_button(true, rig.now);
+  rig.adapter.power_off(rig.now);
+  ASSERT_TRUE(rig.adapter.exchange_scanner(scanner::ScannerConfig{}));
+  rig.start();
+  rig.run(31s);
+  EXPECT_TRUE(rig.adapter.scanner().status().restart_held);
+  EXPECT_TRUE(rig.adapter.scanner().leds().led3_red);
+  EXPECT_FALSE(rig.ossd());
+  rig.adapter.set_restart_button(false, rig.now);  // held far longer than 5 s: no pulse
+  rig.run(100ms);
+  EXPECT_FALSE(rig.adapter.scanner().leds().led3_red);
+  EXPECT_FALSE(rig.ossd());
+  rig.restart_pulse(200ms);
+  EXPECT_TRUE(rig.ossd());
+}
+
 TEST_F(Running, ProxyEnableIsNotEvaluatedDuringOperation) {
   rig.out_byte = 0x41;  // Proxy-Enable 1 now: no effect until start-up / PC removal
   rig.run(200ms);
