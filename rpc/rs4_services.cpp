@@ -7,6 +7,8 @@
 #include "rs4/param_doc/parameter_document.h"
 
 #include <algorithm>
+#include <chrono>
+#include <functional>
 #include <optional>
 #include <string>
 #include <variant>
@@ -19,6 +21,39 @@ namespace scanner = rs4::scanner;
 
 constexpr std::uint64_t kMaxSimulatedMs = 24ULL * 3600 * 1000;  // one call advances ≤ 24 h
 constexpr std::uint32_t kMaxPressMs = 60'000;
+
+// Simulated time runs in slices of at most this much loop time: between two slices the loop
+// serves the other calls, the live view and the event stream, and a call whose client has
+// gone (cancelled, deadline exceeded) stops at the next slice. A 24 h Advance of a big bus
+// takes minutes of CPU; in one piece it would hold the loop for all of them.
+constexpr auto kSlice = std::chrono::milliseconds(20);
+
+// `done` for one slice: true once `holds()` does or the slice's loop time is used up
+// (`sliced`); the clock is read every 64 checks (a check runs after every bus event).
+class SliceDone {
+ public:
+  explicit SliceDone(const std::function<bool()>& holds)
+      : holds_(holds), end_(std::chrono::steady_clock::now() + kSlice) {}
+  bool operator()() {
+    if (sliced_) return true;
+    if (holds_()) return true;
+    if ((++checks_ & 63U) == 0 && std::chrono::steady_clock::now() >= end_) sliced_ = true;
+    return sliced_;
+  }
+  [[nodiscard]] bool sliced() const { return sliced_; }
+
+ private:
+  const std::function<bool()>& holds_;
+  std::chrono::steady_clock::time_point end_;
+  std::uint32_t checks_ = 0;
+  bool sliced_ = false;
+};
+
+grpc::Status stopped_by_client(std::int64_t now_ns) {
+  return grpc::Status(
+      grpc::StatusCode::CANCELLED,
+      "the client cancelled; simulated time stopped at now_ns " + std::to_string(now_ns));
+}
 
 scanner::Point point(const v1::PointMm& p) { return {p.x(), p.y()}; }
 
@@ -413,26 +448,35 @@ grpc::Status SimTimeService::Now(grpc::ServerContext*, const v1::Empty*, v1::Tim
   return grpc::Status::OK;
 }
 
-grpc::Status SimTimeService::Advance(grpc::ServerContext*, const v1::AdvanceRequest* in,
+grpc::Status SimTimeService::Advance(grpc::ServerContext* context, const v1::AdvanceRequest* in,
                                      v1::TimeResponse* out) {
   if (in->duration_ms() == 0 || in->duration_ms() > kMaxSimulatedMs) {
     return invalid_argument("duration_ms",
                             std::to_string(in->duration_ms()) + " ms outside 1..86400000 (24 h)");
   }
   grpc::Status result;
-  c_.executor.run([&] {
-    if (!c_.target.simulated()) {
-      result = needs_simulated_clock();
-      return;
-    }
-    c_.target.run_until([] { return false; }, std::chrono::milliseconds(in->duration_ms()));
-    out->set_now_ns(to_ns(c_.target.now()));
-    out->set_simulated(true);
-  });
+  std::optional<dp::TimePoint> end;  // simulated
+  const std::function<bool()> never = [] { return false; };
+  for (bool more = true; more;) {
+    c_.executor.run([&] {
+      more = false;
+      if (!c_.target.simulated()) {
+        result = needs_simulated_clock();
+        return;
+      }
+      if (!end) end = c_.target.now() + std::chrono::milliseconds(in->duration_ms());
+      SliceDone slice(never);
+      c_.target.run_until(std::ref(slice), *end - c_.target.now());
+      more = slice.sliced() && c_.target.now() < *end;
+      out->set_now_ns(to_ns(c_.target.now()));
+      out->set_simulated(true);
+    });
+    if (more && context->IsCancelled()) return stopped_by_client(out->now_ns());
+  }
   return result;
 }
 
-grpc::Status SimTimeService::RunUntil(grpc::ServerContext*, const v1::RunUntilRequest* in,
+grpc::Status SimTimeService::RunUntil(grpc::ServerContext* context, const v1::RunUntilRequest* in,
                                       v1::RunUntilResponse* out) {
   if (in->timeout_ms() == 0 || in->timeout_ms() > kMaxSimulatedMs) {
     return invalid_argument("timeout_ms",
@@ -442,25 +486,39 @@ grpc::Status SimTimeService::RunUntil(grpc::ServerContext*, const v1::RunUntilRe
   if (condition == v1::CONDITION_UNSPECIFIED || !v1::Condition_IsValid(condition)) {
     return invalid_argument("condition", "a CONDITION_* value is required");
   }
-  return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint) {
-    if (!c_.target.simulated()) return needs_simulated_clock();
-    const auto holds = [&d, condition] {
-      const std::uint8_t in_byte = d.adapter().input_byte();
-      switch (condition) {
-        case v1::CONDITION_DATA_EXCHANGE: return d.adapter().view().connected;
-        case v1::CONDITION_OSSD_ON: return (in_byte & rs4::adapter::kInputOssd) != 0;
-        case v1::CONDITION_OSSD_OFF: return (in_byte & rs4::adapter::kInputOssd) == 0;
-        case v1::CONDITION_PROXY_REQUEST: return (in_byte & rs4::adapter::kInputProxyRequest) != 0;
-        case v1::CONDITION_RS4_MEASURING:
-          return d.scanner().status().state == scanner::ScannerState::kMeasuring;
-        default: return false;
+  std::optional<dp::TimePoint> end;  // simulated: where the timeout ends
+  for (;;) {
+    bool more = false;
+    const grpc::Status s = on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint) {
+      if (!c_.target.simulated()) return needs_simulated_clock();
+      const std::function<bool()> holds = [&d, condition] {
+        const std::uint8_t in_byte = d.adapter().input_byte();
+        switch (condition) {
+          case v1::CONDITION_DATA_EXCHANGE: return d.adapter().view().connected;
+          case v1::CONDITION_OSSD_ON: return (in_byte & rs4::adapter::kInputOssd) != 0;
+          case v1::CONDITION_OSSD_OFF: return (in_byte & rs4::adapter::kInputOssd) == 0;
+          case v1::CONDITION_PROXY_REQUEST:
+            return (in_byte & rs4::adapter::kInputProxyRequest) != 0;
+          case v1::CONDITION_RS4_MEASURING:
+            return d.scanner().status().state == scanner::ScannerState::kMeasuring;
+          default: return false;
+        }
+      };
+      if (!end) end = c_.target.now() + std::chrono::milliseconds(in->timeout_ms());
+      bool reached = holds();
+      if (!reached) {
+        SliceDone slice(holds);
+        c_.target.run_until(std::ref(slice), *end - c_.target.now());
+        reached = holds();
+        more = !reached && slice.sliced() && c_.target.now() < *end;
       }
-    };
-    out->set_reached(holds() ||
-                     c_.target.run_until(holds, std::chrono::milliseconds(in->timeout_ms())));
-    out->set_now_ns(to_ns(c_.target.now()));
-    return grpc::Status::OK;
-  });
+      out->set_reached(reached);
+      out->set_now_ns(to_ns(c_.target.now()));
+      return grpc::Status::OK;
+    });
+    if (!s.ok() || !more) return s;
+    if (context->IsCancelled()) return stopped_by_client(out->now_ns());
+  }
 }
 
 }  // namespace rs4sim::rpc

@@ -360,6 +360,50 @@ TEST_F(RpcRs4Test, ThePlcSeesFailSafeValuesWhileTheFHostIsPassivated) {
   EXPECT_GT(plc.reintegrations(), 0U);
 }
 
+// A long Advance runs in slices of loop time: the other calls are served meanwhile (each Now
+// sees a later simulated time than the one before), and when its client cancels, simulated
+// time stops at the next slice instead of running on to the end (24 h here: minutes of CPU).
+TEST_F(RpcRs4Test, ALongAdvanceLeavesTheLoopToOtherCallsAndStopsWhenCancelled) {
+  const auto now_ns = [this] {
+    grpc::ClientContext ctx;
+    ctx.set_deadline(std::chrono::system_clock::now() + 5s);
+    v1::Empty e;
+    v1::TimeResponse t;
+    const auto s = time_stub_->Now(&ctx, e, &t);
+    EXPECT_TRUE(s.ok()) << s.error_message();
+    return t.now_ns();
+  };
+  const std::int64_t t0 = now_ns();
+  grpc::ClientContext long_ctx;
+  auto advance = std::async(std::launch::async, [&] {
+    v1::AdvanceRequest req;
+    req.set_duration_ms(86'400'000);
+    v1::TimeResponse t;
+    return time_stub_->Advance(&long_ctx, req, &t);
+  });
+  // While it runs: Now answers, and simulated time has moved on between two answers.
+  std::int64_t seen = t0;
+  int moved = 0;
+  for (int i = 0; i < 500 && moved < 3; ++i) {
+    const std::int64_t t = now_ns();
+    if (t > seen) ++moved;
+    seen = t;
+  }
+  EXPECT_GE(moved, 3) << "Now was not served while Advance ran";
+  EXPECT_LT(seen - t0, std::int64_t{86'400'000} * 1'000'000) << "Advance ended: too short";
+  long_ctx.TryCancel();
+  ASSERT_EQ(advance.wait_for(10s), std::future_status::ready);
+  EXPECT_EQ(advance.get().error_code(), grpc::StatusCode::CANCELLED);
+  // The server's handler stops within a slice: simulated time stands still afterwards.
+  bool still = false;
+  for (int i = 0; i < 100 && !still; ++i) {
+    const std::int64_t a = now_ns();
+    std::this_thread::sleep_for(30ms);  // longer than a slice (20 ms)
+    still = now_ns() == a;
+  }
+  EXPECT_TRUE(still) << "simulated time kept running after the client cancelled";
+}
+
 TEST_F(RpcRs4Test, StandardHealthServiceAnswersServing) {
   grpc::GenericStub stub(channel_);
   grpc::ClientContext ctx;
