@@ -2,7 +2,9 @@
 // GSD stations with our class 1 master on the in-memory bus (simulated time): the master is
 // configured from the same GSDs (gsd_master_entry), at the run's rate, with the largest MaxTsdr
 // the GSDs declare for it. `rs4sim run --device generic --gsd FILE --link memory` and
-// `rs4sim run --bus FILE --link memory`.
+// `rs4sim run --bus FILE --link memory`; with `--grpc` the harness drives it: GsdStations for
+// every station, SimTime moving this segment's manual clock, Observation's event stream
+// (docs/gsd.md "Harness API").
 
 #include "app/devices/device_registry.h"
 #include "app/devices/gsd_station.h"
@@ -27,6 +29,10 @@ class GsdSegment final : public SimulatedSegment {
   void print_summary(std::ostream& out) const override;
   [[nodiscard]] bool healthy() const override;
   dp::link::MemoryBus* bus() override { return bus_.get(); }
+  // GsdStations (with the bus faults), SimTime and Observation, on this segment's clock. The
+  // segment must outlive the server that serves them (run_memory_served keeps it so).
+  ServiceList services(const ServiceContext& context) override;
+  ~GsdSegment() override;
 
   [[nodiscard]] dp::ManualClock& clock() { return clock_; }
   [[nodiscard]] dp::master::Master& master() { return *master_; }
@@ -35,12 +41,15 @@ class GsdSegment final : public SimulatedSegment {
   [[nodiscard]] std::size_t in_data_exchange() const;
 
  private:
+  class Target;  // rpc::Rs4Target over this segment (no RS4; simulated time)
+
   dp::ManualClock clock_;
   std::uint8_t master_address_ = 1;
   std::unique_ptr<dp::link::MemoryBus> bus_;
   std::unique_ptr<dp::master::Master> master_;
   std::vector<std::unique_ptr<GsdStation>> stations_;
   std::vector<dp::master::MasterEvent> events_;
+  std::unique_ptr<Target> target_;  // made by services()
 };
 
 // Our master waits for the slowest responder a GSD declares: when `max_tsdr` (Tbit) is above

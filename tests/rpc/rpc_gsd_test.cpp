@@ -10,6 +10,7 @@
 #include "rpc/executor.h"
 #include "rpc/server.h"
 #include "rs4sim/v1/gsd.grpc.pb.h"
+#include "rs4sim/v1/rs4.grpc.pb.h"
 
 #include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/io_context.hpp>
@@ -236,6 +237,93 @@ TEST_F(RpcGsdTest, BusFaultsByTheFaultsServiceRules) {
   grpc::ClientContext ctx3;
   v1::Empty e;
   EXPECT_TRUE(stub_->ClearBusFaults(&ctx3, v1::Empty{}, &e).ok());
+}
+
+// `rs4sim run --device generic --gsd … --link memory --grpc`: the segment's own services
+// (GsdSegment::services) drive it on its manual clock. SimTime moves the clock and nothing else
+// does; GsdStations sees the station reach data exchange and its inputs reach our master; the
+// RS4 calls name what the run is.
+TEST(RpcGsdSegment, TheSegmentsOwnServicesDriveItOnItsClock) {
+  std::vector<GsdStationSpec> specs;
+  specs.push_back(load_gsd_station(std::string(RS4SIM_GSD_CORPUS) + "/modular_dpv1.gsd",
+                                   {"DI 8", "AI 2", "DO 16 consistent"}, 5));
+  GsdSegment segment(std::move(specs), "12M");
+  boost::asio::io_context io;
+  auto work = boost::asio::make_work_guard(io);
+  rpc::AsioExecutor executor{io};
+  dp::RealClock wall;
+  const ServiceList services = segment.services(ServiceContext{executor, io, wall});
+  std::vector<grpc::Service*> raw;
+  for (const auto& s : services) raw.push_back(s.get());
+  std::thread loop([&] { io.run(); });
+  {
+    rpc::RpcServer server(rpc::ServerOptions{}, raw);
+    const auto channel = grpc::CreateChannel(server.address(), grpc::InsecureChannelCredentials());
+    const auto gsd = v1::GsdStations::NewStub(channel);
+    const auto time = v1::SimTime::NewStub(channel);
+    const auto observation = v1::Observation::NewStub(channel);
+    const auto now = [&] {
+      grpc::ClientContext ctx;
+      v1::TimeResponse t;
+      EXPECT_TRUE(time->Now(&ctx, v1::Empty{}, &t).ok());
+      EXPECT_TRUE(t.simulated());
+      return t.now_ns();
+    };
+    const auto advance = [&](std::uint64_t ms) {
+      grpc::ClientContext ctx;
+      v1::AdvanceRequest in;
+      in.set_duration_ms(ms);
+      v1::TimeResponse t;
+      EXPECT_TRUE(time->Advance(&ctx, in, &t).ok());
+      return t.now_ns();
+    };
+    const auto station = [&] {
+      grpc::ClientContext ctx;
+      v1::StationRequest in;
+      in.set_address(5);
+      v1::GsdStation out;
+      EXPECT_TRUE(gsd->GetStation(&ctx, in, &out).ok());
+      return out;
+    };
+    const std::int64_t t0 = now();
+    EXPECT_EQ(station().dp_state(), "Wait_Prm");  // the clock has not moved
+    EXPECT_EQ(now(), t0);
+    EXPECT_EQ(advance(500), t0 + 500'000'000);
+    EXPECT_EQ(station().dp_state(), "Data_Exch");
+    {
+      grpc::ClientContext ctx;
+      v1::SetGsdInputsRequest in;
+      in.set_address(5);
+      in.set_slot(1);
+      in.set_data(bytes({0x11, 0x22, 0x33, 0x44}));
+      v1::Empty e;
+      ASSERT_TRUE(gsd->SetInputs(&ctx, in, &e).ok());
+    }
+    Bytes before;
+    executor.run([&] {
+      const auto in = segment.master().inputs(5);
+      before.assign(in.begin(), in.end());
+    });
+    EXPECT_EQ(before, (Bytes{0x00, 0x00, 0x00, 0x00, 0x00}));  // not yet polled
+    (void)advance(50);
+    Bytes after;
+    executor.run([&] {
+      const auto in = segment.master().inputs(5);
+      after.assign(in.begin(), in.end());
+    });
+    EXPECT_EQ(after, (Bytes{0x00, 0x11, 0x22, 0x33, 0x44}));
+    {
+      grpc::ClientContext ctx;
+      v1::StationRequest in;
+      in.set_address(5);
+      v1::DeviceState out;
+      const auto s = observation->GetState(&ctx, in, &out);
+      EXPECT_EQ(s.error_code(), grpc::StatusCode::FAILED_PRECONDITION) << s.error_message();
+    }
+    server.shutdown();
+  }
+  work.reset();
+  loop.join();
 }
 
 }  // namespace
