@@ -301,8 +301,9 @@ class Master(_Client):
 
     def watch_versions(self, after_id=None, timeout=None):
         """The archive's change feed: every version as it is stored (by any master or
-        workstation on the same archive), in id order; first those after `after_id` when
-        given. Returns once the server has subscribed; cancel() ends it."""
+        workstation on the same archive), each once, in commit order (one station's in id
+        order); first those after `after_id` when given. Returns once the server has
+        subscribed; cancel() ends it."""
         request = (archive_pb.WatchVersionsRequest() if after_id is None
                    else archive_pb.WatchVersionsRequest(after_id=after_id))
         call = self.archive.WatchVersions(request, timeout=timeout)
