@@ -12,6 +12,7 @@
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/steady_timer.hpp>
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -62,8 +63,18 @@ class DeviceTarget final : public Rs4Target {
     slot_time_us_ = slot_time_us;
   }
   bool link_timing(std::uint8_t address, v1::LinkTiming& out) override;
+  // The run's stations that are not RS4s (a bus file's), by address: what the RS4 calls say
+  // for them (Rs4Target::other_station).
+  void set_other_stations(std::map<std::uint8_t, std::string> others) {
+    others_ = std::move(others);
+  }
+  [[nodiscard]] std::string other_station(std::uint8_t address) const override {
+    const auto it = others_.find(address);
+    return it == others_.end() ? std::string() : it->second;
+  }
 
  private:
+  std::map<std::uint8_t, std::string> others_;
   TurnaroundSource turnaround_;
   std::optional<std::int64_t> slot_time_us_;
   std::vector<Station> stations_;

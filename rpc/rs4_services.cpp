@@ -521,4 +521,11 @@ grpc::Status SimTimeService::RunUntil(grpc::ServerContext* context, const v1::Ru
   }
 }
 
+std::vector<std::shared_ptr<grpc::Service>> rs4_service_set(Rs4Target& target,
+                                                            Executor& executor) {
+  const Rs4Context c{target, executor};
+  return {std::make_shared<DeviceService>(c), std::make_shared<ObservationService>(c),
+          std::make_shared<FaultsService>(c), std::make_shared<SimTimeService>(c)};
+}
+
 }  // namespace rs4sim::rpc

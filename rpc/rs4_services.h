@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <vector>
 
 namespace rs4sim::rpc {
 
@@ -106,5 +107,9 @@ class SimTimeService final : public v1::SimTime::Service {
  private:
   Rs4Context c_;
 };
+
+// Device, Observation, Faults and SimTime over `target`: the services of a run with RS4s.
+std::vector<std::shared_ptr<grpc::Service>> rs4_service_set(Rs4Target& target,
+                                                            Executor& executor);
 
 }  // namespace rs4sim::rpc

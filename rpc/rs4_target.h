@@ -35,6 +35,12 @@ class Rs4Target {
   virtual void after(dp::Duration delay, std::function<void()> f) = 0;
   // What the run's devices are: "rs4", or the RS-485 device of a LineDeviceTarget.
   [[nodiscard]] virtual std::string kind() const { return "rs4"; }
+  // A station of the run that is not an RS4, as the RS4 calls name it ("a GSD station
+  // (rs4sim.v1.GsdStations)"); empty when the run has no other station at `address`.
+  [[nodiscard]] virtual std::string other_station(std::uint8_t address) const {
+    (void)address;
+    return {};
+  }
   // The source of Observation.StreamEvents (rpc/event_hub.h); nullptr = no event stream.
   virtual EventHub* events() { return nullptr; }
   // The reed contact of the PC adapter (Device.SetPcAdapter). A process that serves the RS4's

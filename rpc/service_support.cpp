@@ -29,8 +29,18 @@ grpc::Status unknown_station(const Rs4Target& target, std::uint32_t address) {
                                "this run serves a " + kind + ", not an RS4 (stations: " +
                                    station_list(target) + "); use its own service");
   }
-  return not_found("no RS4 at station " + std::to_string(address) +
-                   " (stations: " + station_list(target) + ")");
+  const std::string rs4s = station_list(target);
+  if (address < 256) {
+    if (const auto what = target.other_station(static_cast<std::uint8_t>(address));
+        !what.empty()) {
+      return failed_precondition(
+          "DEVICE_KIND", "address " + std::to_string(address),
+          what + ", not an RS4 (" +
+              (rs4s.empty() ? "this run has none" : "RS4s: " + rs4s) + ")");
+    }
+  }
+  return not_found("no RS4 at station " + std::to_string(address) + " (" +
+                   (rs4s.empty() ? "this run has none" : "stations: " + rs4s) + ")");
 }
 
 grpc::Status on_device(const Rs4Context& c, std::uint32_t address, const DeviceFn& fn) {

@@ -6,12 +6,18 @@
 
 #include "app/devices/device_options.h"
 #include "app/devices/gsd_segment.h"
+#include "app/devices/gsd_service.h"
 #include "app/devices/gsd_station.h"
+#include "app/devices/memory_bus_target.h"
 #include "app/runtime/run_options.h"
 #include "app/runtime/usage_error.h"
 #include "dp/devices/generic_master_config.h"
 #include "dp/link/memory_bus.h"
 #include "dp/master/master.h"
+#include "rpc/device_target.h"
+#include "rpc/rs4_services.h"
+#include "rpc/tapped_station.h"
+#include "rs4/device/rs4_device.h"
 #include "rs4/device/rs4_master.h"
 
 #include <google/protobuf/struct.pb.h>
@@ -165,6 +171,7 @@ BusFile parse_bus_file(const std::string& text, const std::string& file, const s
   BusFile bus;
   bus.file = file;
   std::map<int, std::string> used;  // address → path
+  std::string rs232;                 // the station that serves the RS232 port
   const auto& list = it->second.list_value();
   for (int i = 0; i < list.values_size(); ++i) {
     const std::string path = "$.stations[" + std::to_string(i) + "]";
@@ -174,6 +181,13 @@ BusFile parse_bus_file(const std::string& text, const std::string& file, const s
       r.fail(path + ".address", std::to_string(a) + " is already used by " + u->second);
     }
     used.emplace(a, path);
+    if (!s.options.rs232.empty()) {
+      if (!rs232.empty()) {
+        r.fail(path + ".rs232", "one station of a bus serves its RS232 port (" + rs232 +
+                                    " does already)");
+      }
+      rs232 = path;
+    }
     s.options.link_baud = link_baud;
     try {
       find_device(s.device)->validate(s.options);
@@ -226,10 +240,81 @@ class BusInstance final : public DeviceInstance {
         << ", malformed " << link.malformed << ", link errors " << link.send_errors << std::endl;
     for (const auto& c : children_) c->print_status(out, link);
   }
+  // The one RS232 port a bus may serve (parse_bus_file refuses a second).
+  std::optional<SidePort> side_port() override {
+    for (auto& c : children_) {
+      if (auto side = c->side_port()) return side;
+    }
+    return std::nullopt;
+  }
+  void on_user_signal(bool second, dp::TimePoint now) override {
+    for (auto& c : children_) c->on_user_signal(second, now);
+  }
+  // One set of services for every station: Device, Observation, Faults, SimTime over the
+  // RS4s (one target, one event stream that also watches the GSD stations) and GsdStations
+  // over the GSD stations.
+  ServiceList services(const ServiceContext& c) override {
+    const Served all = served(children_);
+    target_ = std::make_unique<rpc::DeviceTarget>(all.rs4s, c.clock, c.io);
+    target_->set_link_timing(c.turnaround, c.slot_time_us);
+    target_->set_other_stations(all.others);
+    target_->route_pc_adapter(all.pc_adapter);
+    rpc::EventHub* hub = target_->events();
+    for (const GsdStation* g : all.gsd) hub->watch(gsd_watcher(*g));
+    for (rpc::TappedStation* t : all.taps) t->set_hub(hub);
+    ServiceList list = rpc::rs4_service_set(*target_, c.executor);
+    if (!all.gsd.empty()) {
+      const dp::Clock& clock = c.clock;
+      list.push_back(std::make_shared<GsdStationsService>(GsdServiceContext{
+          c.executor, all.gsd, [hub, &clock] { hub->poll(clock.now()); }}));
+    }
+    return list;
+  }
+  void stop_services() override {
+    if (target_) target_->stop();
+  }
 
  private:
+  // Every child's ServedStations gathered for one target.
+  struct Served {
+    std::vector<rpc::DeviceTarget::Station> rs4s;
+    std::vector<GsdStation*> gsd;
+    std::map<std::uint8_t, std::string> others;
+    std::vector<rpc::TappedStation*> taps;
+    rpc::DeviceTarget::PcAdapterHook pc_adapter;
+  };
+  static Served served(const std::vector<std::unique_ptr<DeviceInstance>>& children) {
+    Served all;
+    // The RS4 → its instance's hook (the one with the RS232 port routes through it).
+    auto hooks = std::make_shared<std::map<const rs4::device::Rs4Device*,
+                                           decltype(ServedStations::pc_adapter)>>();
+    for (const auto& c : children) {
+      ServedStations s = c->served_stations();
+      for (const auto& r : s.rs4s) {
+        all.rs4s.push_back({r.address, r.device});
+        if (s.pc_adapter) (*hooks)[r.device] = s.pc_adapter;
+      }
+      for (GsdStation* g : s.gsd) {
+        all.gsd.push_back(g);
+        all.others.emplace(g->address(), kGsdStationKind);
+      }
+      for (const auto& o : s.others) all.others.emplace(o.address, o.what);
+      all.taps.insert(all.taps.end(), s.taps.begin(), s.taps.end());
+    }
+    all.pc_adapter = [hooks](rs4::device::Rs4Device& device, bool attached, dp::TimePoint now) {
+      if (const auto it = hooks->find(&device); it != hooks->end()) {
+        it->second(device, attached, now);
+      } else {
+        attached ? device.adapter().attach_pc_adapter(now)
+                 : device.adapter().detach_pc_adapter(now);
+      }
+    };
+    return all;
+  }
+
   std::string file_;
   std::vector<std::unique_ptr<DeviceInstance>> children_;
+  std::unique_ptr<rpc::DeviceTarget> target_;
 };
 
 // The master's entry for a station that is not a GSD station.
@@ -244,6 +329,13 @@ dp::master::SlaveEntry master_entry(const BusStation& s) {
   }
   rs4::device::Rs4MasterOptions r;
   r.address = static_cast<std::uint8_t>(*o.address);
+  std::shared_ptr<const gsd::Device> file;  // an RS4 with "gsd": configured from that file
+  if (!o.gsd.empty()) {
+    const auto spec = load_gsd_station(o.gsd, o.modules, *o.address);
+    file = spec.device;
+    r.device = file.get();
+    r.module = spec.setup.modules.front();
+  }
   auto e = rs4::device::rs4_master_entry(r);
   if (!e) throw UsageError(s.path + ": " + e.error().what());
   return e.value().slave;
@@ -298,6 +390,32 @@ class BusSegment final : public SimulatedSegment {
   }
   [[nodiscard]] bool healthy() const override { return in_data_exchange() == addresses_.size(); }
   dp::link::MemoryBus* bus() override { return bus_.get(); }
+  // As BusInstance's, on this segment's manual clock (SimTime moves it; the bus faults act on
+  // its bus). The RS4s here run without an F-host (docs/gsd.md "Bus file").
+  ServiceList services(const ServiceContext& c) override {
+    ServedStations all;
+    for (const auto& child : children_) {
+      ServedStations s = child->served_stations();
+      all.rs4s.insert(all.rs4s.end(), s.rs4s.begin(), s.rs4s.end());
+      all.gsd.insert(all.gsd.end(), s.gsd.begin(), s.gsd.end());
+      all.others.insert(all.others.end(), s.others.begin(), s.others.end());
+    }
+    const std::vector<GsdStation*> gsd = all.gsd;
+    target_ = std::make_unique<MemoryBusTarget>(
+        clock_, *bus_,
+        [this] {
+          master_->take_events(events_);
+          events_.clear();
+        },
+        std::move(all));
+    ServiceList list = rpc::rs4_service_set(*target_, c.executor);
+    if (!gsd.empty()) {
+      rpc::EventHub* hub = target_->events();
+      list.push_back(std::make_shared<GsdStationsService>(GsdServiceContext{
+          c.executor, gsd, [hub, this] { hub->poll(clock_.now()); }, bus_.get()}));
+    }
+    return list;
+  }
 
  private:
   dp::ManualClock clock_;
@@ -307,6 +425,7 @@ class BusSegment final : public SimulatedSegment {
   std::vector<std::uint8_t> addresses_;
   std::uint8_t master_address_ = 1;
   std::vector<dp::master::MasterEvent> events_;
+  std::unique_ptr<MemoryBusTarget> target_;  // made by services(); the bus observes for it
 };
 
 }  // namespace

@@ -54,6 +54,11 @@ class GenericInstance final : public DeviceInstance {
   void print_status(std::ostream& out, const dp::link::StationCounters& link) const override {
     print_slave(out, slave_, link);
   }
+  ServedStations served_stations() override {
+    ServedStations s;
+    s.others.push_back({config_.address, "a generic slave (--ident/--cfg: no API of its own)"});
+    return s;
+  }
 
  private:
   GenericSlaveConfig config_;
@@ -102,6 +107,12 @@ class GsdInstance final : public DeviceInstance {
   }
   void stop_services() override {
     if (target_) target_->stop();
+  }
+  ServedStations served_stations() override {
+    ServedStations s;
+    s.gsd.push_back(&station_);
+    s.taps.push_back(&tap_);
+    return s;
   }
   [[nodiscard]] std::string describe() const override { return station_.describe(); }
   void print_status(std::ostream& out, const dp::link::StationCounters& c) const override {

@@ -38,6 +38,10 @@ class Service;
 }
 namespace rs4sim::rpc {
 class Executor;
+class TappedStation;
+}
+namespace rs4sim::rs4::device {
+class Rs4Device;
 }
 namespace boost::asio {
 class io_context;
@@ -107,6 +111,30 @@ struct ServiceContext {
 };
 using ServiceList = std::vector<std::shared_ptr<grpc::Service>>;
 
+class GsdStation;
+
+// What one instance contributes when a run serves several instances' stations under one set
+// of services (a bus file, app/devices/bus_file.h): its RS4s, its GSD stations, the stations
+// without an API of their own, and the taps that show the event stream their telegrams on a
+// real-time link (the memory bus shows them all itself).
+struct ServedStations {
+  struct Rs4 {
+    std::uint8_t address;
+    rs4::device::Rs4Device* device;
+  };
+  struct Other {
+    std::uint8_t address;
+    std::string what;  // "a generic slave (no API of its own)"
+  };
+  std::vector<Rs4> rs4s;
+  std::vector<GsdStation*> gsd;
+  std::vector<Other> others;
+  std::vector<rpc::TappedStation*> taps;
+  // Device.SetPcAdapter for one of `rs4s` (the RS4 whose RS232 port is served routes it
+  // through the port); empty: the adapter alone.
+  std::function<void(rs4::device::Rs4Device&, bool attached, dp::TimePoint)> pc_adapter = {};
+};
+
 // One device built for a real-time link.
 class DeviceInstance {
  public:
@@ -147,6 +175,8 @@ class DeviceInstance {
   // The server has shut down: the services end their timers on the loop, so that the loop
   // can finish.
   virtual void stop_services() {}
+  // Its stations for a combined run's services (instead of services(); see ServedStations).
+  virtual ServedStations served_stations() { return {}; }
 };
 
 // One device with our master on the in-memory bus (simulated time).

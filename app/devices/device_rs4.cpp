@@ -5,6 +5,7 @@
 #include "app/demos/demos.h"
 #include "app/devices/device_options.h"
 #include "app/devices/device_registry.h"
+#include "app/devices/gsd_station.h"
 #include "app/devices/rs4_state_file.h"
 #include "app/runtime/run_options.h"
 #include "rpc/device_target.h"
@@ -59,13 +60,6 @@ std::string joined_numbers(const std::vector<int>& numbers) {
   return s;
 }
 
-// The RS4's services of rs4sim.v1 over `target` (docs/rpc.md).
-ServiceList rs4_services(rpc::Rs4Target& target, rpc::Executor& executor) {
-  const rpc::Rs4Context c{target, executor};
-  return {std::make_shared<rpc::DeviceService>(c), std::make_shared<rpc::ObservationService>(c),
-          std::make_shared<rpc::FaultsService>(c), std::make_shared<rpc::SimTimeService>(c)};
-}
-
 // --rs232 pty | serial:DEVICE[@BAUD] → the serial device ("" for a pty) and the port's options.
 struct Rs232Choice {
   std::string path;
@@ -117,10 +111,34 @@ std::unique_ptr<Rs4StateFile> state_file(const DeviceOptions& o, int address, st
   return file;
 }
 
+// --gsd FILE [--module NAME]: the RS4 as the user's GSD describes it (its ident, Chk_Cfg and
+// User_Prm_Data layout; docs/gsd.md "The RS4 from your GSD"); nullopt without --gsd.
+// UsageError naming the file and what does not fit the RS4.
+struct UserGsd {
+  std::shared_ptr<const gsd::Device> device;
+  std::shared_ptr<const rs4::adapter::GsdProfile> profile;
+};
+
+std::optional<UserGsd> user_gsd(const DeviceOptions& o,
+                                std::vector<std::string>* warnings = nullptr) {
+  if (o.gsd.empty()) return std::nullopt;
+  if (o.modules.size() > 1) {
+    throw UsageError("--module: the RS4/PROFIsafe is one module; name it once");
+  }
+  const GsdStationSpec spec = load_gsd_station(o.gsd, o.modules, *o.address, warnings);
+  check_gsd_baud(spec, o.link_baud);
+  auto p = rs4::adapter::gsd_profile(*spec.device, o.modules.empty() ? "" : o.modules.front(),
+                                     o.gsd);
+  if (!p) throw UsageError(p.error().what());
+  return UserGsd{spec.device,
+                 std::make_shared<const rs4::adapter::GsdProfile>(std::move(p).value())};
+}
+
 Rs4DeviceConfig unit_config(const DeviceOptions& o, int address, std::size_t index,
-                            const Rs4StateFile* file) {
+                            const Rs4StateFile* file, const std::optional<UserGsd>& gsd) {
   auto c = device_config(o, address, index);
   if (file != nullptr && file->loaded()) c = rs4::device::with_state(c, *file->loaded());
+  if (gsd) c.adapter.gsd = gsd->profile;
   return c;
 }
 
@@ -139,9 +157,10 @@ class Rs4Instance final : public DeviceInstance {
   explicit Rs4Instance(const DeviceOptions& o)
       : boot_time_ms_(*o.boot_time_ms), attached_at_start_(o.pc_adapter == "attached") {
     const auto addresses = all_addresses(o);
+    const auto gsd = user_gsd(o);
     for (std::size_t i = 0; i < addresses.size(); ++i) {
       auto file = state_file(o, addresses[i], i);
-      rs4s_.push_back(std::make_unique<Rs4>(unit_config(o, addresses[i], i, file.get()),
+      rs4s_.push_back(std::make_unique<Rs4>(unit_config(o, addresses[i], i, file.get(), gsd),
                                             static_cast<std::uint8_t>(addresses[i]),
                                             std::move(file)));
     }
@@ -188,8 +207,9 @@ class Rs4Instance final : public DeviceInstance {
               << std::endl;
   }
   [[nodiscard]] std::string describe() const override {
+    const auto& gsd = rs4s_.front()->device.adapter().gsd();
     char ident[8];
-    std::snprintf(ident, sizeof ident, "%x", rs4::adapter::ident_number());
+    std::snprintf(ident, sizeof ident, "%x", gsd.slave.ident_number);
     std::string f_dest;
     for (const auto& r : rs4s_) {
       f_dest += (f_dest.empty() ? "" : ", ") + std::to_string(rs4::adapter::f_dest_add(r->address));
@@ -198,7 +218,10 @@ class Rs4Instance final : public DeviceInstance {
     return (one ? "RS4/PROFIsafe at address "
                 : std::to_string(rs4s_.size()) + " RS4/PROFIsafe at addresses ") +
            joined_numbers(addresses()) + " (ident 0x" + ident + ", F_Dest_Add " + f_dest +
-           ", boot " + std::to_string(boot_time_ms_) + " ms)";
+           ", boot " + std::to_string(boot_time_ms_) + " ms" +
+           (gsd.file == rs4::adapter::builtin_profile().file ? std::string()
+                                                             : ", GSD " + gsd.file) +
+           ")";
   }
   void print_status(std::ostream& out, const dp::link::StationCounters& link) const override {
     (void)link;
@@ -220,10 +243,21 @@ class Rs4Instance final : public DeviceInstance {
       attach(device, attached, now);
     });
     for (const auto& r : rs4s_) r->tap.set_hub(target_->events());
-    return rs4_services(*target_, c.executor);
+    return rpc::rs4_service_set(*target_, c.executor);
   }
   void stop_services() override {
     if (target_) target_->stop();
+  }
+  ServedStations served_stations() override {
+    ServedStations s;
+    for (const auto& r : rs4s_) {
+      s.rs4s.push_back({r->address, &r->device});
+      s.taps.push_back(&r->tap);
+    }
+    s.pc_adapter = [this](Rs4Device& device, bool attached, dp::TimePoint now) {
+      attach(device, attached, now);
+    };
+    return s;
   }
 
  private:
@@ -268,7 +302,9 @@ class Rs4Instance final : public DeviceInstance {
 class Rs4Simulation final : public SimulatedSegment {
  public:
   explicit Rs4Simulation(const DeviceOptions& o)
-      : state_(state_file(o, *o.address, 0)), segment_(segment_config(o, state_.get())) {
+      : gsd_(user_gsd(o)),
+        state_(state_file(o, *o.address, 0)),
+        segment_(segment_config(o, state_.get(), gsd_)) {
     if (state_) {
       if (state_->loaded() &&
           !rs4::device::restore_state(segment_.device(), *state_->loaded(), segment_.now())) {
@@ -298,20 +334,27 @@ class Rs4Simulation final : public SimulatedSegment {
   dp::link::MemoryBus* bus() override { return &segment_.bus(); }
   ServiceList services(const ServiceContext& c) override {
     target_ = std::make_unique<rpc::SegmentTarget>(segment_);
-    return rs4_services(*target_, c.executor);
+    return rpc::rs4_service_set(*target_, c.executor);
   }
 
  private:
+  // With --gsd our master is configured from the user's file too, as the PLC project is.
   static rs4::device::Rs4SegmentConfig segment_config(const DeviceOptions& o,
-                                                      const Rs4StateFile* file) {
+                                                      const Rs4StateFile* file,
+                                                      const std::optional<UserGsd>& gsd) {
     rs4::device::Rs4SegmentConfig c;
-    c.device = unit_config(o, *o.address, 0, file);
+    c.device = unit_config(o, *o.address, 0, file, gsd);
     c.master.address = static_cast<std::uint8_t>(*o.address);
+    if (gsd) {
+      c.master.device = gsd->device.get();
+      c.master.module = gsd->profile->module;
+    }
     c.master_address = *o.address == 1 ? 2 : 1;
     c.auto_ack_rei = true;
     return c;
   }
 
+  std::optional<UserGsd> gsd_;            // --gsd
   std::unique_ptr<Rs4StateFile> state_;  // --state
   rs4::device::Rs4Segment segment_;
   std::unique_ptr<rpc::SegmentTarget> target_;
@@ -325,7 +368,10 @@ void validate(DeviceOptions& o) {
       o, "rs4",
       {DeviceFlag::kAddress, DeviceFlag::kAddresses, DeviceFlag::kBootTime, DeviceFlag::kRs232,
        DeviceFlag::kPcAdapter, DeviceFlag::kCommandTime, DeviceFlag::kResponseTime,
-       DeviceFlag::kSerialNumber, DeviceFlag::kState});
+       DeviceFlag::kSerialNumber, DeviceFlag::kState, DeviceFlag::kGsd, DeviceFlag::kModule});
+  if (!o.modules.empty() && o.gsd.empty()) {
+    throw UsageError("--module needs --gsd FILE (the built-in GSD has one module)");
+  }
   if (!o.rs232.empty()) (void)rs232_choice(o.rs232);
   if (!o.address) o.address = kDefaultAddress;
   if (!o.boot_time_ms) o.boot_time_ms = kDefaultBootTimeMs;
@@ -392,6 +438,9 @@ void validate(DeviceOptions& o) {
     throw UsageError("--adapter-response-time: " + std::to_string(*o.response_time_ms) +
                      " ms is outside 0..1000");
   }
+  std::vector<std::string> warnings;
+  (void)user_gsd(o, &warnings);  // the file's errors and what does not fit the RS4, now
+  for (const auto& w : warnings) std::cerr << "warning: " << w << std::endl;
 }
 
 }  // namespace

@@ -1,14 +1,13 @@
 #include "app/devices/gsd_segment.h"
 
 #include "app/devices/gsd_service.h"
+#include "app/devices/memory_bus_target.h"
 #include "app/runtime/usage_error.h"
 #include "dp/time/baud_rate.h"
 #include "rpc/event_hub.h"
 #include "rpc/rs4_services.h"
-#include "rpc/rs4_target.h"
 
 #include <algorithm>
-#include <array>
 #include <ostream>
 
 namespace rs4sim::app {
@@ -58,67 +57,24 @@ GsdSegment::GsdSegment(std::vector<GsdStationSpec> specs, const std::string& bau
   bus_->start();
 }
 
-// The run as the shared services see it: the GSD stations' addresses, no RS4 (the RS4 calls
-// answer FAILED_PRECONDITION), the manual clock moved by SimTime, the bus for bus faults, and an
-// event hub that watches every station and is polled after each bus event.
-class GsdSegment::Target final : public rpc::Rs4Target {
- public:
-  explicit Target(GsdSegment& segment) : segment_(segment) {
-    for (auto& s : segment.stations_) hub_->watch(gsd_watcher(*s));
-    // The observer holds the hub, not this target: the bus may call it after the target is
-    // gone (the segment ends after the server).
-    std::array<bool, 128> station{};  // the addresses whose telegrams the stream carries
-    for (const auto& s : segment.stations_) station[s->address()] = true;
-    segment.bus_->add_observer(
-        [hub = hub_, station, &clock = segment.clock_](const dp::link::BusEvent& e) {
-          if (hub->wants_telegrams()) {
-            const auto fate = dp::link::to_string(e.fate);
-            if (station[e.from & 127U]) {
-              hub->telegram(e.from, v1::DIRECTION_FROM_STATION, e.wire, fate, e.time);
-            }
-            if (e.to && station[*e.to & 127U]) {
-              hub->telegram(*e.to, v1::DIRECTION_TO_STATION, e.wire, fate, e.time);
-            }
-          }
-          hub->poll(clock.now());
-        });
-  }
-  [[nodiscard]] std::vector<std::uint8_t> addresses() const override {
-    std::vector<std::uint8_t> out;
-    for (const auto& s : segment_.stations_) out.push_back(s->address());
-    return out;
-  }
-  rs4::device::Rs4Device* device(std::uint8_t) override { return nullptr; }
-  [[nodiscard]] dp::TimePoint now() const override { return segment_.clock_.now(); }
-  [[nodiscard]] bool simulated() const override { return true; }
-  bool run_until(const std::function<bool()>& done, dp::Duration limit) override {
-    const bool reached = segment_.bus_->run_until(done, segment_.clock_.now() + limit, [this] {
-      segment_.master_->take_events(segment_.events_);
-      segment_.events_.clear();
-    });
-    hub_->poll(now());
-    return reached;
-  }
-  void after(dp::Duration delay, std::function<void()> f) override {
-    segment_.run_for(delay);
-    f();
-    hub_->poll(now());
-  }
-  dp::link::MemoryBus* bus() override { return segment_.bus_.get(); }
-  rpc::EventHub* events() override { return hub_.get(); }
-  [[nodiscard]] std::string kind() const override { return "gsd"; }
-
- private:
-  GsdSegment& segment_;
-  std::shared_ptr<rpc::EventHub> hub_ = std::make_shared<rpc::EventHub>();
-};
-
 GsdSegment::~GsdSegment() = default;
 
+// The shared services see the GSD stations and no RS4 (the RS4 calls answer
+// FAILED_PRECONDITION), on this segment's clock.
 ServiceList GsdSegment::services(const ServiceContext& context) {
-  target_ = std::make_unique<Target>(*this);
   std::vector<GsdStation*> stations;
   for (auto& s : stations_) stations.push_back(s.get());
+  target_ = std::make_unique<MemoryBusTarget>(
+      clock_, *bus_,
+      [this] {
+        master_->take_events(events_);
+        events_.clear();
+      },
+      [&stations] {
+        ServedStations s;
+        s.gsd = stations;
+        return s;
+      }());
   auto* hub = target_->events();
   GsdServiceContext g{context.executor, std::move(stations),
                       [hub, this] { hub->poll(clock_.now()); }, bus_.get()};

@@ -8,6 +8,7 @@
 
 #include "app/devices/device_registry.h"
 #include "app/devices/gsd_station.h"
+#include "app/devices/memory_bus_target.h"
 #include "dp/link/memory_bus.h"
 #include "dp/master/master.h"
 #include "dp/time/clock.h"
@@ -41,7 +42,6 @@ class GsdSegment final : public SimulatedSegment {
   [[nodiscard]] std::size_t in_data_exchange() const;
 
  private:
-  class Target;  // rpc::Rs4Target over this segment (no RS4; simulated time)
 
   dp::ManualClock clock_;
   std::uint8_t master_address_ = 1;
@@ -49,7 +49,7 @@ class GsdSegment final : public SimulatedSegment {
   std::unique_ptr<dp::master::Master> master_;
   std::vector<std::unique_ptr<GsdStation>> stations_;
   std::vector<dp::master::MasterEvent> events_;
-  std::unique_ptr<Target> target_;  // made by services()
+  std::unique_ptr<MemoryBusTarget> target_;  // made by services()
 };
 
 // Our master waits for the slowest responder a GSD declares: when `max_tsdr` (Tbit) is above

@@ -188,14 +188,19 @@ dp::slave::PrmVerdict Adapter::check_parameters(const dp::pdu::SetPrm& prm, Time
     return dp::slave::PrmVerdict::kPrmFault;
   }
   const std::span<const std::uint8_t> user(prm.user_data.data(), prm.user_data.size());
-  const bool shaped = user.size() == kFBlockHeader.size() + profisafe::kFParametersSize &&
-                      std::equal(kFBlockHeader.begin(), kFBlockHeader.end(), user.begin());
-  if (!shaped) {  // not the F-parameter block of docs/gsd.md: Prm_Fault, no status PDU
+  const GsdProfile& g = gsd();
+  const auto header = user.subspan(std::min(g.f_block_offset, user.size()));
+  const bool shaped = user.size() == g.user_prm_len &&
+                      g.f_block_offset + g.f_block_header.size() + profisafe::kFParametersSize <=
+                          user.size() &&
+                      std::equal(g.f_block_header.begin(), g.f_block_header.end(), header.begin());
+  if (!shaped) {  // not the GSD's layout (docs/gsd.md): Prm_Fault, no status PDU
     ++counters_.prm_refused;
     if (control_) control_->set_device_diagnosis({}, false, false);
     return dp::slave::PrmVerdict::kPrmFault;
   }
-  const auto v = fdevice_.set_parameters(user.subspan(kFBlockHeader.size()));
+  const auto v = fdevice_.set_parameters(
+      user.subspan(g.f_block_offset + g.f_block_header.size(), profisafe::kFParametersSize));
   // [RS4 manual §6.2, §6.3]: the status PDU 05 81 00 00 nn follows the 6 standard diagnosis bytes;
   // a refused block sets Ext_Diag, the slave reports Prm_Fault and stays out of data exchange.
   const auto pdu = safety::status_pdu(safety::diagnosis(v.fault));
@@ -212,8 +217,10 @@ dp::slave::PrmVerdict Adapter::check_parameters(const dp::pdu::SetPrm& prm, Time
 
 dp::slave::CfgVerdict Adapter::check_config(std::span<const std::uint8_t> cfg, bool user_check,
                                             TimePoint now) {
-  (void)user_check, (void)now;  // the RS4 has one module: the Cfg must be exactly C0 84 84
-  if (std::equal(cfg.begin(), cfg.end(), kRealConfig.begin(), kRealConfig.end())) {
+  // The RS4 has one module: the Cfg must be exactly its GSD's (built in: C0 84 84).
+  (void)user_check, (void)now;
+  const auto& expected = gsd().cfg;
+  if (std::equal(cfg.begin(), cfg.end(), expected.begin(), expected.end())) {
     return dp::slave::CfgVerdict::kAccept;
   }
   ++counters_.cfg_refused;

@@ -28,6 +28,7 @@
 #include "rs4/adapter/proxy_session.h"
 #include "rs4/adapter/release_gate.h"
 #include "rs4/adapter/rs4_commands.h"
+#include "rs4/adapter/rs4_gsd.h"
 #include "rs4/protocol/adapter_answer.h"
 #include "rs4/protocol/adapter_command.h"
 #include "rs4/protocol/adapter_error.h"
@@ -40,6 +41,7 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 #include <system_error>
@@ -83,6 +85,9 @@ struct AdapterConfig {
   bool check_reserved_output_bits = true;  // output bits 5..3 ≠ 0 → 0x2419, byte not applied
   std::size_t event_buffer = 8;       // second buffer: 0x53/0x54 for 0x92 ([RS4 manual §5.2.2])
   protocol::VersionAnswer version{};  // PROFI_CMD_GET_VERSION bytes
+  // The GSD whose Chk_Cfg and User_Prm_Data layout Set_Prm/Chk_Cfg are checked against
+  // (rs4_gsd.h); nullptr: the built-in one.
+  std::shared_ptr<const GsdProfile> gsd;
 };
 
 // Status LED of the adapter ([RS4 manual §4.4]).
@@ -169,6 +174,10 @@ class Adapter final : public dp::slave::SlaveApplication {
   void power_off(TimePoint now);  // error memory lost
   void power_cycle(TimePoint now);
   // Takes effect at the next power-on / adapter reset, as on the device.
+  // The GSD the adapter is checked against (AdapterConfig::gsd, else the built-in one).
+  [[nodiscard]] const GsdProfile& gsd() const noexcept {
+    return config_.gsd ? *config_.gsd : builtin_profile();
+  }
   void set_address_switches(AddressSwitches s) noexcept { config_.switches = s; }
   [[nodiscard]] AddressSwitches address_switches() const noexcept { return config_.switches; }
   // The station address read at power-on; nullopt while off or when the switches are invalid.

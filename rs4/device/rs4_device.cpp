@@ -35,7 +35,9 @@ std::uint8_t initial_address(const Rs4DeviceConfig& c) {
 Rs4Device::Rs4Device(const Rs4DeviceConfig& config)
     : unit_(config.scanner),
       adapter_(adapter_config(config)),
-      slave_(rs4_slave_config(initial_address(config)), adapter_) {
+      slave_(config.adapter.gsd ? config.adapter.gsd->slave_at(initial_address(config))
+                                : rs4_slave_config(initial_address(config)),
+             adapter_) {
   slave_.set_wake_handler([this] { wake(); });  // the slave's wake-ups are the device's
 }
 

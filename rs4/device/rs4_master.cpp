@@ -27,9 +27,11 @@ gsd::Error layout_error(std::string message) {
 }  // namespace
 
 gsd::Result<Rs4MasterEntry> rs4_master_entry(const Rs4MasterOptions& options) {
-  const auto& device = gsd::rs4sim_device();
-  if (!device) return device.error();
+  const auto& builtin = gsd::rs4sim_device();
+  if (options.device == nullptr && !builtin) return builtin.error();
+  const gsd::Device& device = options.device != nullptr ? *options.device : builtin.value();
   gsd::ConfigRequest request;
+  if (!options.module.empty()) request.modules = {options.module};
   request.overrides = options.overrides;
   if (!overrides(options.overrides, "F_Dest_Add")) {
     request.overrides.push_back({"F_Dest_Add", 500 + options.address});  // [RS4 manual §4.5]
@@ -37,7 +39,7 @@ gsd::Result<Rs4MasterEntry> rs4_master_entry(const Rs4MasterOptions& options) {
   if (!overrides(options.overrides, "F_WD_Time")) {
     request.overrides.push_back({"F_WD_Time", options.f_wd_time_ms});
   }
-  RS4SIM_GSD_TRY(gsd::SlaveSetup config, gsd::configure(device.value(), request));
+  RS4SIM_GSD_TRY(gsd::SlaveSetup config, gsd::configure(device, request));
   if (config.f_parameters.size() != 1)
     return layout_error("the RS4 module needs one F-parameter block");
 
@@ -56,7 +58,8 @@ gsd::Result<Rs4MasterEntry> rs4_master_entry(const Rs4MasterOptions& options) {
   if (!dp::pdu::encode_set_prm(fixed, du)) return layout_error("Set_Prm header does not encode");
   du.insert(du.end(), config.user_prm_data.begin(), config.user_prm_data.end());
   auto prm = dp::pdu::decode_set_prm(std::span<const std::uint8_t>(du.data(), du.size()),
-                                     dp::pdu::PrmLayout::kDpv1);
+                                     config.dpv1 ? dp::pdu::PrmLayout::kDpv1
+                                                 : dp::pdu::PrmLayout::kDpv0);
   if (!prm) return layout_error("the GSD's Set_Prm does not decode: " + prm.error().message());
 
   entry.slave.address = options.address;
@@ -68,7 +71,8 @@ gsd::Result<Rs4MasterEntry> rs4_master_entry(const Rs4MasterOptions& options) {
   entry.gsd = std::move(config);
   if (options.f_par_crc_override) {
     // SetPrm::user_data starts after DPV1_Status_1..3, User_Prm_Data includes them.
-    const std::size_t at = f_par_crc_offset(entry) - entry.gsd.dpv1_status.size();
+    const std::size_t at =
+        f_par_crc_offset(entry) - (entry.gsd.dpv1 ? entry.gsd.dpv1_status.size() : 0);
     entry.slave.prm.user_data[at] = static_cast<std::uint8_t>(*options.f_par_crc_override >> 8);
     entry.slave.prm.user_data[at + 1] = static_cast<std::uint8_t>(*options.f_par_crc_override);
   }

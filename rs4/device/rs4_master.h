@@ -31,6 +31,11 @@ struct Rs4MasterOptions {
   // answers with PROFIsafe diagnosis 72, [RS4 manual §6.2, §6.3]). The F-host keeps the correct
   // CRC1.
   std::optional<std::uint16_t> f_par_crc_override;
+  // The GSD the entry is configured from and its module (nullptr: the built-in file; `rs4sim
+  // run --device rs4 --gsd FILE --link memory` configures our master from the user's file).
+  // The device outlives the call only; the entry copies what it needs.
+  const gsd::Device* device = nullptr;
+  std::string module;
 };
 
 struct Rs4MasterEntry {

@@ -1,7 +1,12 @@
 // The master side from the shipped GSD (issue 5): Set_Prm/Chk_Cfg bytes, data exchange,
 // and the PROFIsafe parameter diagnosis 66 / 72 ([RS4 manual §6.2, §6.3]).
+#include "gsd/interp.h"
 #include "profisafe/f_parameters.h"
+#include "rs4/adapter/rs4_gsd.h"
 #include "rs4_fixture.h"
+
+#include <fstream>
+#include <sstream>
 
 namespace rs4sim::rs4::device::testing {
 namespace {
@@ -119,6 +124,62 @@ TEST(Rs4MasterOnBus, WrongCrc1GivesDiagnosis72AndNoDataExchange) {
   c.master.f_par_crc_override = good.value().f_parameters.par_crc ^ 0x00FF;  // one byte off
   Rs4Segment s(c);
   expect_profisafe_diag(s, 72);
+}
+
+}  // namespace
+}  // namespace rs4sim::rs4::device::testing
+
+namespace rs4sim::rs4::device::testing {
+namespace {
+
+gsd::Device other_gsd() {
+  std::ifstream in(std::string(RS4SIM_GSD_CORPUS) + "/rs4_other_gsd.gsd", std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  auto d = gsd::parse(text.str(), "rs4_other_gsd.gsd");
+  EXPECT_TRUE(d) << d.error().what();
+  return std::move(d).value();
+}
+
+// `rs4sim run --device rs4 --gsd FILE --link memory`: the RS4 and our master both from the
+// project's tests/gsd/corpus/rs4_other_gsd.gsd. The master sends that file's bytes (ident
+// 0x7A51, Chk_Cfg B4, the F-block one byte later with slot 0), the RS4 accepts them, and
+// PROFIsafe runs over the same 5-byte PDUs; the built-in master is refused by it.
+TEST(Rs4MasterOnBus, BothFromAnotherGsdReachDataExchangeAndTheFHostRuns) {
+  const gsd::Device d = other_gsd();
+  const auto profile = adapter::gsd_profile(d, "", "rs4_other_gsd.gsd");
+  ASSERT_TRUE(profile) << profile.error().what();
+  auto c = segment_config(4);
+  c.device.adapter.gsd = std::make_shared<const adapter::GsdProfile>(profile.value());
+  c.master.device = &d;
+  const auto e = rs4_master_entry(c.master);
+  ASSERT_TRUE(e) << e.error().what();
+  EXPECT_EQ(e.value().slave.prm.ident_number, 0x7A51);
+  EXPECT_EQ(std::vector<std::uint8_t>(e.value().slave.cfg.begin(), e.value().slave.cfg.end()),
+            (std::vector<std::uint8_t>{0xB4}));
+  const std::vector<std::uint8_t> user(e.value().slave.prm.user_data.begin(),
+                                       e.value().slave.prm.user_data.end());
+  ASSERT_EQ(user.size(), 15U);
+  EXPECT_EQ(std::vector<std::uint8_t>(user.begin(), user.begin() + 13),
+            (std::vector<std::uint8_t>{0x00, 0x0E, 0x05, 0x00, 0x00, 0x14, 0x00, 0x00, 0x01, 0x01,
+                                       0xF8, 0x00, 0x96}));
+  Rs4Segment s(c);
+  s.power_on();
+  ASSERT_TRUE(s.run_until([&] { return s.in_data_exchange(); }, 5s));
+  ASSERT_TRUE(s.run_until([&] { return s.fhost().state() == profisafe::FHostState::kRun; }, 1s));
+  // accepted once (the refusals counted before are the adapter's initialisation, when every
+  // Set_Prm is refused [RS4 manual §6.2]), the Cfg never refused
+  EXPECT_EQ(s.device().adapter().counters().prm_accepted, 1U);
+  EXPECT_EQ(s.device().adapter().counters().cfg_refused, 0U);
+  EXPECT_NE(s.device().adapter().led(), adapter::LedState::kSlowBlink);
+
+  auto builtin = segment_config(4);
+  builtin.device.adapter.gsd = c.device.adapter.gsd;  // the RS4 from the file, the master not
+  Rs4Segment refused(builtin);
+  refused.power_on();
+  EXPECT_FALSE(refused.run_until([&] { return refused.in_data_exchange(); }, 3s));
+  // The built-in master's ident 0x5234 is refused by the slave before the layout is looked at.
+  EXPECT_EQ(refused.device().adapter().counters().prm_accepted, 0U);
 }
 
 }  // namespace

@@ -1,0 +1,186 @@
+// `rs4sim run --bus FILE --link memory --grpc`: one set of services for a whole bus (app/devices/
+// bus_file.h, memory_bus_target.h) on a real gRPC server on loopback. The bus file is the
+// project's tests/gsd/corpus/bus_rs4_gsd.json: an RS4 at 4 (boot 100 ms), the modular GSD station
+// at 5 ("DI 8" 1 input byte, "AI 2" 4, "DO 16 consistent" 2 output bytes) and a generic slave at
+// 7, with our master polling all three on the manual clock.
+#include "app/devices/bus_file.h"
+#include "app/devices/device_registry.h"
+#include "rpc/executor.h"
+#include "rpc/server.h"
+#include "rs4sim/v1/gsd.grpc.pb.h"
+#include "rs4sim/v1/rs4.grpc.pb.h"
+
+#include <boost/asio/executor_work_guard.hpp>
+#include <boost/asio/io_context.hpp>
+#include <gtest/gtest.h>
+#include <grpcpp/create_channel.h>
+#include <grpcpp/security/credentials.h>
+
+#include <memory>
+#include <string>
+#include <thread>
+
+namespace rs4sim::app {
+namespace {
+
+using Bytes = std::vector<std::uint8_t>;
+
+class RpcBusFileTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const DeviceEntry entry = bus_device_entry(
+        read_bus_file(std::string(RS4SIM_GSD_CORPUS) + "/bus_rs4_gsd.json", "12M"));
+    segment_ = entry.simulate(DeviceOptions{});
+    services_ = segment_->services(ServiceContext{executor_, io_, wall_});
+    std::vector<grpc::Service*> raw;
+    for (const auto& s : services_) raw.push_back(s.get());
+    loop_ = std::thread([this] { io_.run(); });
+    server_ = std::make_unique<rpc::RpcServer>(rpc::ServerOptions{}, raw);
+    const auto channel =
+        grpc::CreateChannel(server_->address(), grpc::InsecureChannelCredentials());
+    gsd_ = v1::GsdStations::NewStub(channel);
+    device_ = v1::Device::NewStub(channel);
+    observation_ = v1::Observation::NewStub(channel);
+    time_ = v1::SimTime::NewStub(channel);
+  }
+  void TearDown() override {
+    server_->shutdown();
+    work_.reset();
+    loop_.join();
+  }
+  std::int64_t advance(std::uint64_t ms) {
+    grpc::ClientContext ctx;
+    v1::AdvanceRequest in;
+    in.set_duration_ms(ms);
+    v1::TimeResponse t;
+    EXPECT_TRUE(time_->Advance(&ctx, in, &t).ok());
+    return t.now_ns();
+  }
+  v1::GsdStation station(std::uint32_t address) {
+    grpc::ClientContext ctx;
+    v1::StationRequest in;
+    in.set_address(address);
+    v1::GsdStation out;
+    EXPECT_TRUE(gsd_->GetStation(&ctx, in, &out).ok());
+    return out;
+  }
+  grpc::Status state(std::uint32_t address, v1::DeviceState* out) {
+    grpc::ClientContext ctx;
+    v1::StationRequest in;
+    in.set_address(address);
+    return observation_->GetState(&ctx, in, out);
+  }
+
+  boost::asio::io_context io_;
+  std::optional<boost::asio::executor_work_guard<boost::asio::io_context::executor_type>> work_{
+      io_.get_executor()};
+  rpc::AsioExecutor executor_{io_};
+  dp::RealClock wall_;
+  std::unique_ptr<SimulatedSegment> segment_;
+  ServiceList services_;
+  std::thread loop_;
+  std::unique_ptr<rpc::RpcServer> server_;
+  std::unique_ptr<v1::GsdStations::Stub> gsd_;
+  std::unique_ptr<v1::Device::Stub> device_;
+  std::unique_ptr<v1::Observation::Stub> observation_;
+  std::unique_ptr<v1::SimTime::Stub> time_;
+};
+
+// Each kind of station is reached through its own service, all on the one simulated clock: the
+// RS4 through Device/Observation, the GSD station through GsdStations; before SimTime moves the
+// clock nothing has happened, after it both are in data exchange with our master.
+TEST_F(RpcBusFileTest, EveryStationThroughItsServiceOnTheOneClock) {
+  {
+    grpc::ClientContext ctx;
+    v1::ListGsdStationsResponse list;
+    ASSERT_TRUE(gsd_->ListStations(&ctx, v1::Empty{}, &list).ok());
+    ASSERT_EQ(list.stations_size(), 1);
+    EXPECT_EQ(list.stations(0).address(), 5u);
+  }
+  {
+    grpc::ClientContext ctx;
+    v1::ListDevicesResponse list;
+    ASSERT_TRUE(device_->ListDevices(&ctx, v1::ListDevicesRequest{}, &list).ok());
+    ASSERT_EQ(list.devices_size(), 1);
+    EXPECT_EQ(list.devices(0).address(), 4u);
+  }
+  v1::DeviceState rs4;
+  ASSERT_TRUE(state(4, &rs4).ok());
+  EXPECT_FALSE(rs4.connected());
+  EXPECT_EQ(station(5).dp_state(), "Wait_Prm");
+  const std::int64_t t0 = rs4.now_ns();
+  EXPECT_EQ(advance(2000), t0 + 2'000'000'000);
+  // the GSD station is in data exchange; the RS4's PROFIBUS adapter still initialises (LED
+  // steady 2-3 s [RS4 manual §4.4], 2.5 s here) and refuses the master's Set_Prm
+  EXPECT_EQ(station(5).dp_state(), "Data_Exch");
+  ASSERT_TRUE(state(4, &rs4).ok());
+  EXPECT_FALSE(rs4.connected());
+  EXPECT_EQ(rs4.now_ns(), t0 + 2'000'000'000);
+  EXPECT_EQ(advance(2000), t0 + 4'000'000'000);
+  ASSERT_TRUE(state(4, &rs4).ok());
+  EXPECT_TRUE(rs4.connected());  // DP data exchange (no F-host on a bus file's bus)
+  EXPECT_EQ(station(5).dp_state(), "Data_Exch");
+}
+
+// The inputs set through GsdStations go out in the station's next Data_Exchange response, as the
+// event stream's telegrams show them on the wire: SD2 68 LE LEr 68, DA = the master (1, the
+// lowest free address), SA = 5, FC 08 (response, data low), then the 5 input bytes in slot order
+// ("DI 8" then "AI 2") [IEC 61158-4-3 frame formats; IEC 61158-6-3 Data_Exchange].
+TEST_F(RpcBusFileTest, InputsReachTheWireInTheNextDataExchange) {
+  (void)advance(2000);
+  {
+    grpc::ClientContext ctx;
+    v1::SetGsdInputsRequest in;
+    in.set_address(5);
+    in.set_slot(1);
+    const Bytes ai{0x11, 0x22, 0x33, 0x44};
+    in.set_data(std::string(ai.begin(), ai.end()));
+    v1::Empty e;
+    ASSERT_TRUE(gsd_->SetInputs(&ctx, in, &e).ok());
+  }
+  grpc::ClientContext ctx;
+  v1::StreamEventsRequest req;
+  req.add_addresses(5);
+  req.set_telegrams(true);
+  auto reader = observation_->StreamEvents(&ctx, req);
+  std::thread mover([this] { (void)advance(50); });
+  const Bytes expected{0x68, 0x08, 0x08, 0x68, 0x01, 0x05, 0x08, 0x00, 0x11, 0x22, 0x33, 0x44};
+  bool seen = false;
+  v1::Event e;
+  while (!seen && reader->Read(&e)) {
+    if (!e.has_telegram() || e.telegram().direction() != v1::DIRECTION_FROM_STATION) continue;
+    const std::string& w = e.telegram().frame();
+    seen = w.size() >= expected.size() &&
+           Bytes(w.begin(), w.begin() + static_cast<long>(expected.size())) == expected;
+  }
+  mover.join();
+  ctx.TryCancel();
+  EXPECT_TRUE(seen);
+}
+
+// The RS4 calls for the other stations name what they are; an address no station has is
+// NOT_FOUND naming the RS4s; GsdStations refuses the RS4's address.
+TEST_F(RpcBusFileTest, EachServiceNamesTheStationsItDoesNotServe) {
+  v1::DeviceState out;
+  const auto gsd = state(5, &out);
+  EXPECT_EQ(gsd.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+  EXPECT_EQ(gsd.error_message(),
+            "address 5: a GSD station (rs4sim.v1.GsdStations), not an RS4 (RS4s: 4)");
+  const auto generic = state(7, &out);
+  EXPECT_EQ(generic.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+  EXPECT_EQ(generic.error_message(),
+            "address 7: a generic slave (--ident/--cfg: no API of its own), not an RS4 (RS4s: 4)");
+  const auto none = state(9, &out);
+  EXPECT_EQ(none.error_code(), grpc::StatusCode::NOT_FOUND);
+  EXPECT_EQ(none.error_message(), "no RS4 at station 9 (stations: 4)");
+  grpc::ClientContext ctx;
+  v1::StationRequest in;
+  in.set_address(4);
+  v1::GsdStation s;
+  const auto rs4 = gsd_->GetStation(&ctx, in, &s);
+  EXPECT_EQ(rs4.error_code(), grpc::StatusCode::NOT_FOUND);
+  EXPECT_NE(rs4.error_message().find("5"), std::string::npos) << rs4.error_message();
+}
+
+}  // namespace
+}  // namespace rs4sim::app
