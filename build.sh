@@ -37,6 +37,7 @@ packages=(build-essential cmake ninja-build pkg-config libboost-dev libsqlite3-d
 packages+=(libprotobuf-dev protobuf-compiler zlib1g-dev)   # storage/: archive export format, CRC-32
 packages+=(libgrpc++-dev protobuf-compiler-grpc)           # rpc/: the control API
 packages+=(libpq-dev)                                      # storage/: the PostgreSQL archive (libpq)
+packages+=(libssl-dev)                                     # http/: HTTPS (Boost.Asio SSL on OpenSSL)
 case "$mode" in test|deps) testing=true ;; *) testing=false ;; esac
 if $testing; then
   # the tests' packages (fuzzing, dissector, gRPC and Modbus clients, ...): the preflight's table

@@ -7,10 +7,12 @@
 
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/post.hpp>
+#include <boost/asio/ssl.hpp>
 #include <boost/asio/steady_timer.hpp>
 #include <boost/asio/write.hpp>
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
+#include <boost/beast/ssl.hpp>
 #include <google/protobuf/descriptor.h>
 #include <google/protobuf/dynamic_message.h>
 #include <google/protobuf/util/json_util.h>
@@ -21,12 +23,14 @@
 
 #include <array>
 #include <charconv>
+#include <condition_variable>
 #include <deque>
 #include <mutex>
 #include <optional>
 #include <set>
 #include <stdexcept>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 namespace rs4sim::http {
@@ -37,6 +41,11 @@ namespace beast = boost::beast;
 namespace bhttp = boost::beast::http;
 namespace pb = google::protobuf;
 using tcp = asio::ip::tcp;
+namespace ssl = asio::ssl;
+// A connection's stream: plain TCP, or TLS over it when the server has a certificate.
+using PlainStream = beast::tcp_stream;
+using TlsStream = beast::ssl_stream<beast::tcp_stream>;
+using AnyStream = std::variant<PlainStream, TlsStream>;
 
 constexpr std::string_view kApi = "/api/";
 constexpr std::string_view kEvents = "/api/events";
@@ -102,10 +111,12 @@ Reply error_reply(unsigned http, int code, const std::string& message) {
 }
 
 // Posts work to the loop while the server lives (gRPC threads call it; the server may be
-// gone by the time a call completes).
+// gone by the time a call completes), and counts the forwarded calls still alive.
 struct Gate {
   std::mutex mutex;
+  std::condition_variable idle;
   asio::io_context* io = nullptr;
+  std::size_t calls = 0;
   template <class F>
   void post(F&& f) {
     std::lock_guard lock(mutex);
@@ -115,6 +126,32 @@ struct Gate {
     std::lock_guard lock(mutex);
     io = nullptr;
   }
+  bool wait_idle(std::chrono::milliseconds timeout) {
+    std::unique_lock lock(mutex);
+    return idle.wait_for(lock, timeout, [this] { return calls == 0; });
+  }
+};
+
+// One forwarded call alive, from its start until its ClientContext is gone (the member
+// declared first, so destroyed last). A call's last reference usually drops on a gRPC
+// thread; its context holds the channel, and the channel holds gRPC itself: an owner that
+// tears gRPC down must wait for these (HttpServer::wait_for_calls), else gRPC's last
+// reference could drop on its own thread, where grpc_shutdown races the process's exit.
+class CallTicket {
+ public:
+  explicit CallTicket(std::shared_ptr<Gate> gate) : gate_(std::move(gate)) {
+    std::lock_guard lock(gate_->mutex);
+    ++gate_->calls;
+  }
+  CallTicket(const CallTicket&) = delete;
+  CallTicket& operator=(const CallTicket&) = delete;
+  ~CallTicket() {
+    std::lock_guard lock(gate_->mutex);
+    if (--gate_->calls == 0) gate_->idle.notify_all();
+  }
+
+ private:
+  std::shared_ptr<Gate> gate_;
 };
 
 std::string lowercase(std::string_view s) {
@@ -182,6 +219,7 @@ struct HttpServer::Impl : std::enable_shared_from_this<HttpServer::Impl> {
 
   asio::io_context& io;
   HttpOptions options;
+  std::optional<ssl::context> tls;  // HTTPS: the certificate and key of HttpOptions
   tcp::acceptor acceptor;
   std::shared_ptr<grpc::Channel> channel;
   grpc::GenericStub stub;
@@ -195,6 +233,8 @@ namespace {
 
 // A forwarded unary call: what must outlive it until gRPC calls back.
 struct UnaryCall {
+  explicit UnaryCall(std::shared_ptr<Gate> gate) : ticket(std::move(gate)) {}
+  CallTicket ticket;
   grpc::ClientContext context;
   grpc::ByteBuffer request;
   grpc::ByteBuffer response;
@@ -202,6 +242,8 @@ struct UnaryCall {
 
 // A forwarded StreamEvents: the reactor lives until OnDone; the connection may cancel it.
 struct StreamCall {
+  explicit StreamCall(std::shared_ptr<Gate> gate) : ticket(std::move(gate)) {}
+  CallTicket ticket;
   grpc::ClientContext context;
 };
 
@@ -210,10 +252,28 @@ struct StreamCall {
 class Connection : public std::enable_shared_from_this<Connection> {
  public:
   Connection(tcp::socket socket, std::shared_ptr<HttpServer::Impl> server)
-      : stream_(std::move(socket)), server_(std::move(server)),
+      : stream_(make_stream(std::move(socket), *server)), server_(std::move(server)),
         timer_(server_->io) {}
 
-  void start() { read(); }
+  // HTTPS: the TLS handshake first, within the read timeout (a client that does not speak
+  // TLS, plain HTTP included, fails it and is closed).
+  void start() {
+    auto* tls = std::get_if<TlsStream>(&stream_);
+    if (tls == nullptr) {
+      read();
+      return;
+    }
+    lowest().expires_after(server_->options.read_timeout);
+    tls->async_handshake(ssl::stream_base::server,
+                         [self = shared_from_this()](beast::error_code ec) {
+                           if (self->closed_) return;
+                           if (ec) {
+                             self->close();
+                             return;
+                           }
+                           self->read();
+                         });
+  }
 
   // On the loop: ends the connection and its forwarded call.
   void close() {
@@ -223,8 +283,8 @@ class Connection : public std::enable_shared_from_this<Connection> {
     if (events_) events_->context.TryCancel();
     timer_.cancel();
     beast::error_code ignored;
-    stream_.socket().shutdown(tcp::socket::shutdown_both, ignored);
-    stream_.close();
+    lowest().socket().shutdown(tcp::socket::shutdown_both, ignored);
+    lowest().close();
     server_->connections.erase(shared_from_this());
   }
 
@@ -267,11 +327,12 @@ class Connection : public std::enable_shared_from_this<Connection> {
     parser_.emplace();
     parser_->body_limit(server_->options.body_limit);
     parser_->header_limit(16 * 1024);
-    stream_.expires_after(server_->options.read_timeout);
-    bhttp::async_read(stream_, buffer_, *parser_,
-                      [self = shared_from_this()](beast::error_code ec, std::size_t) {
-                        self->on_read(ec);
-                      });
+    lowest().expires_after(server_->options.read_timeout);
+    auto on_read = [self = shared_from_this()](beast::error_code ec, std::size_t) {
+      self->on_read(ec);
+    };
+    std::visit([&](auto& s) { bhttp::async_read(s, buffer_, *parser_, std::move(on_read)); },
+               stream_);
   }
 
   void on_read(beast::error_code ec) {
@@ -300,7 +361,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
       close();
       return;
     }
-    stream_.expires_never();
+    lowest().expires_never();
     request_ = parser_->release();
     handle();
   }
@@ -430,7 +491,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
                                       std::string(st.message())));
       return;
     }
-    auto c = std::make_shared<UnaryCall>();
+    auto c = std::make_shared<UnaryCall>(server_->gate);
     unary_ = c;
     c->request = buffer_of(in->SerializeAsString());
     c->context.set_deadline(std::chrono::system_clock::now() + server_->options.call_timeout);
@@ -471,7 +532,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
     res->body() = std::move(r.body);
     res->prepare_payload();
     res->keep_alive(keep_alive && request_.keep_alive());
-    stream_.expires_after(server_->options.write_timeout);
+    lowest().expires_after(server_->options.write_timeout);
     auto self = shared_from_this();
     auto on_written = [self, res](beast::error_code ec, std::size_t) {
       if (ec || !res->keep_alive()) {
@@ -480,7 +541,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
       }
       self->read();
     };
-    bhttp::async_write(stream_, *res, std::move(on_written));
+    std::visit([&](auto& s) { bhttp::async_write(s, *res, std::move(on_written)); }, stream_);
   }
 
   // ---- GET /api/events ----------------------------------------------------------------------
@@ -563,16 +624,17 @@ class Connection : public std::enable_shared_from_this<Connection> {
   }
 
   void watch_client() {
-    stream_.expires_never();
-    stream_.socket().async_read_some(
-        asio::buffer(sink_), [self = shared_from_this()](beast::error_code ec, std::size_t) {
-          if (self->closed_) return;
-          if (ec) {
-            self->close();
-            return;
-          }
-          self->watch_client();
-        });
+    lowest().expires_never();
+    auto on_read = [self = shared_from_this()](beast::error_code ec, std::size_t) {
+      if (self->closed_) return;
+      if (ec) {
+        self->close();
+        return;
+      }
+      self->watch_client();
+    };
+    std::visit([&](auto& s) { s.async_read_some(asio::buffer(sink_), std::move(on_read)); },
+               stream_);
   }
 
   void write_events() {
@@ -584,22 +646,36 @@ class Connection : public std::enable_shared_from_this<Connection> {
     writing_ = true;
     // One write at a time with its own deadline: a client that stops reading is dropped
     // by the timeout or by its backlog's bound, never waited for.
-    stream_.expires_after(server_->options.write_timeout);
-    asio::async_write(stream_, asio::buffer(backlog_.front()),
-                      [self = shared_from_this()](beast::error_code ec, std::size_t) {
-                        self->writing_ = false;
-                        if (self->closed_) return;
-                        if (ec) {
-                          self->close();
-                          return;
-                        }
-                        self->backlog_.pop_front();
-                        self->write_events();
-                      });
+    lowest().expires_after(server_->options.write_timeout);
+    auto on_written = [self = shared_from_this()](beast::error_code ec, std::size_t) {
+      self->writing_ = false;
+      if (self->closed_) return;
+      if (ec) {
+        self->close();
+        return;
+      }
+      self->backlog_.pop_front();
+      self->write_events();
+    };
+    std::visit(
+        [&](auto& s) {
+          asio::async_write(s, asio::buffer(backlog_.front()), std::move(on_written));
+        },
+        stream_);
+  }
+
+  static AnyStream make_stream(tcp::socket socket, HttpServer::Impl& server) {
+    if (server.tls) return AnyStream(std::in_place_type<TlsStream>, std::move(socket), *server.tls);
+    return AnyStream(std::in_place_type<PlainStream>, std::move(socket));
+  }
+  // The TCP stream under TLS or the plain one: timeouts and the socket.
+  beast::tcp_stream& lowest() {
+    return std::visit([](auto& s) -> beast::tcp_stream& { return beast::get_lowest_layer(s); },
+                      stream_);
   }
 
   friend struct HttpServer::Impl;
-  beast::tcp_stream stream_;
+  AnyStream stream_;
   std::shared_ptr<HttpServer::Impl> server_;
   beast::flat_buffer buffer_;
   std::optional<bhttp::request_parser<bhttp::string_body>> parser_;
@@ -660,7 +736,7 @@ class EventReactor final : public grpc::ClientBidiReactor<grpc::ByteBuffer, grpc
 }  // namespace
 
 void Connection::start_reactor(const std::string& request, const pb::Descriptor* event_type) {
-  events_ = std::make_shared<StreamCall>();
+  events_ = std::make_shared<StreamCall>(server_->gate);
   new EventReactor(server_->stub, events_, server_->gate, weak_from_this(), request, event_type);
 }
 
@@ -688,6 +764,23 @@ void HttpServer::Impl::close() {
 HttpServer::HttpServer(asio::io_context& io, const HttpOptions& options,
                        std::shared_ptr<grpc::Channel> channel)
     : impl_(std::make_shared<Impl>(io, options, std::move(channel))) {
+  if (options.tls_cert_chain.empty() != options.tls_private_key.empty()) {
+    throw std::runtime_error("--http: TLS needs both the certificate chain and the private key");
+  }
+  if (!options.tls_cert_chain.empty()) {
+    try {
+      // TLS 1.2 and later only ([RFC 8996]: TLS 1.0/1.1 deprecated).
+      ssl::context c(ssl::context::tls_server);
+      c.set_options(ssl::context::default_workarounds | ssl::context::no_sslv2 |
+                    ssl::context::no_sslv3 | ssl::context::no_tlsv1 | ssl::context::no_tlsv1_1 |
+                    ssl::context::single_dh_use);
+      c.use_certificate_chain(asio::buffer(options.tls_cert_chain));
+      c.use_private_key(asio::buffer(options.tls_private_key), ssl::context::pem);
+      impl_->tls.emplace(std::move(c));
+    } catch (const boost::system::system_error& e) {
+      throw std::runtime_error(std::string("--http: TLS: ") + e.code().message());
+    }
+  }
   beast::error_code ec;
   const auto address = asio::ip::make_address(options.host, ec);
   if (ec) throw std::runtime_error("--http: '" + options.host + "' is not an IP address");
@@ -713,9 +806,13 @@ std::uint16_t HttpServer::port() const noexcept { return impl_->port; }
 std::string HttpServer::url() const {
   std::string host = impl_->options.host;
   if (host.find(':') != std::string::npos) host = "[" + host + "]";
-  return "http://" + host + ":" + std::to_string(port()) + "/";
+  return (impl_->tls ? "https://" : "http://") + host + ":" + std::to_string(port()) + "/";
 }
 
 void HttpServer::close() { impl_->close(); }
+
+bool HttpServer::wait_for_calls(std::chrono::milliseconds timeout) const {
+  return impl_->gate->wait_idle(timeout);
+}
 
 }  // namespace rs4sim::http

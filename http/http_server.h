@@ -33,6 +33,10 @@ struct HttpOptions {
   // Not empty: every /api request needs `Authorization: Bearer <token>` (or, for browsers'
   // EventSource, which cannot set headers, `?access_token=<token>`, RFC 6750 section 2.3).
   std::string bearer_token{};
+  // Both set (PEM text, the files of --grpc-tls-cert/--grpc-tls-key): HTTPS, TLS 1.2 or later
+  // on every connection; empty: plain HTTP.
+  std::string tls_cert_chain{};
+  std::string tls_private_key{};
   std::size_t body_limit = 1U << 20;                 // request body bytes, else 413
   std::chrono::milliseconds read_timeout{10'000};    // a request's headers and body
   std::chrono::milliseconds write_timeout{10'000};   // one response or one event write
@@ -43,7 +47,8 @@ struct HttpOptions {
 
 class HttpServer {
  public:
-  // Binds and listens (throws std::runtime_error with the reason when it cannot); `channel`
+  // Binds and listens (throws std::runtime_error with the reason when it cannot, or when the
+  // TLS certificate or key is refused); `channel`
   // reaches the services (grpc::Server::InProcessChannel). Runs on `io`'s thread.
   HttpServer(boost::asio::io_context& io, const HttpOptions& options,
              std::shared_ptr<grpc::Channel> channel);
@@ -52,10 +57,15 @@ class HttpServer {
   ~HttpServer();
 
   [[nodiscard]] std::uint16_t port() const noexcept;
-  // "http://127.0.0.1:PORT/"
+  // "http://127.0.0.1:PORT/" ("https://…" with TLS)
   [[nodiscard]] std::string url() const;
   // On the loop: stops accepting, cancels the forwarded calls and ends every connection.
   void close();
+  // Off the loop, after close() (the loop still running, or the gRPC server shut down, so
+  // the cancelled calls can end): waits until every forwarded call has completed and released
+  // its gRPC context; false when `timeout` passed first. Call it before the gRPC server and
+  // the last channel go, so gRPC is never torn down from one of its own threads.
+  [[nodiscard]] bool wait_for_calls(std::chrono::milliseconds timeout) const;
 
   struct Impl;
 

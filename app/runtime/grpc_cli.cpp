@@ -71,9 +71,11 @@ void add_grpc_options(CLI::App& cmd, GrpcCliOptions& o, const std::string& note)
       "--grpc-tls-cert/--grpc-tls-key and a token)" +
           (note.empty() ? "" : "; " + note));
   auto* cert = cmd.add_option("--grpc-tls-cert", o.tls_cert,
-                              "--grpc over TLS: the server's PEM certificate chain file");
+                              "--grpc (and --http: HTTPS) over TLS: the server's PEM certificate "
+                              "chain file");
   auto* key =
-      cmd.add_option("--grpc-tls-key", o.tls_key, "--grpc over TLS: the PEM private key file");
+      cmd.add_option("--grpc-tls-key", o.tls_key,
+                     "--grpc (and --http) over TLS: the PEM private key file");
   auto* token = cmd.add_option(
       "--grpc-token-file", o.token_file,
       std::string("--grpc: every call needs 'authorization: Bearer TOKEN', TOKEN being this "
@@ -82,27 +84,31 @@ void add_grpc_options(CLI::App& cmd, GrpcCliOptions& o, const std::string& note)
   auto* http = cmd.add_option(
       "--http", o.http,
       "serve the live view (a web page) and the same API as JSON over HTTP on HOST:PORT "
-      "(loopback only; port 0 = any free port; docs/http.md)");
-  cert->needs(grpc)->needs(key);
-  key->needs(grpc)->needs(cert);
-  // The token guards both APIs: --grpc-token-file needs one of them (CLI11's needs() has no
-  // "or").
-  cmd.parse_complete_callback([token, grpc, http] {
-    if (token->count() > 0 && grpc->count() == 0 && http->count() == 0) {
-      throw CLI::RequiresError("--grpc-token-file", "--grpc or --http");
-    }
+      "(port 0 = any free port; a non-loopback host needs --grpc-tls-cert/--grpc-tls-key, then "
+      "HTTPS, and a token; docs/http.md)");
+  cert->needs(key);
+  key->needs(cert);
+  // TLS and the token guard both APIs: they need one of them (CLI11's needs() has no "or").
+  cmd.parse_complete_callback([cert, token, grpc, http] {
+    const bool api = grpc->count() > 0 || http->count() > 0;
+    if (token->count() > 0 && !api) throw CLI::RequiresError("--grpc-token-file", "--grpc or --http");
+    if (cert->count() > 0 && !api) throw CLI::RequiresError("--grpc-tls-cert", "--grpc or --http");
   });
 }
 
-HttpAddress http_address(const GrpcCliOptions& o) {
-  const auto why = rpc::check_listen_address(o.http);
-  if (why.find("is not a loopback address") != std::string::npos) {
-    throw UsageError("--http: " + why.substr(0, why.find(':')) +
-                     ": the HTTP server has no TLS, so it serves on "
-                     "this machine only (127.0.0.1, ::1, localhost); from elsewhere use --grpc "
-                     "with TLS, or an SSH tunnel (ssh -L PORT:127.0.0.1:PORT)");
+HttpAddress http_address(const GrpcCliOptions& o) { return http_address(o, rpc::ServerOptions{}); }
+
+HttpAddress http_address(const GrpcCliOptions& o, const rpc::ServerOptions& protection) {
+  rpc::ServerOptions h = protection;  // the same TLS files and token as --grpc
+  h.address = o.http;
+  if (const auto why = rpc::check_server_options(h); !why.empty()) {
+    const bool remote = why.find("is not a loopback address") != std::string::npos;
+    throw UsageError("--http: " + why +
+                     (remote ? std::string(" (TLS: --grpc-tls-cert FILE --grpc-tls-key FILE; "
+                                           "token: --grpc-token-file FILE or ") +
+                                   kGrpcTokenEnv + "; or an SSH tunnel: ssh -L PORT:127.0.0.1:PORT)"
+                             : ""));
   }
-  if (!why.empty()) throw UsageError("--http: " + why);
   const auto colon = o.http.rfind(':');
   HttpAddress a{o.http.substr(0, colon), static_cast<unsigned>(std::stoul(o.http.substr(colon + 1)))};
   if (a.host.size() > 2 && a.host.front() == '[') a.host = a.host.substr(1, a.host.size() - 2);
@@ -132,7 +138,7 @@ rpc::ServerOptions grpc_server_options(const GrpcCliOptions& o, const char* env_
     }
   }
   s.bearer_token = token_of(o, env_token);
-  if (!o.http.empty()) (void)http_address(o);
+  if (!o.http.empty()) (void)http_address(o, s);
   if (o.address.empty()) return s;  // --http alone: the in-process server, no port
   if (const auto why = rpc::check_server_options(s); !why.empty()) {
     const bool remote = why.find("is not a loopback address") != std::string::npos;

@@ -11,8 +11,8 @@
 //   --http HOST:PORT            the live view and the same API as JSON over HTTP (docs/http.md)
 //
 // The token never comes from a command-line value (`ps` would show it). Loopback serves with
-// neither; a non-loopback host (0.0.0.0 and :: included) needs TLS and a token. --http
-// serves loopback only (it has no TLS yet) and checks the same bearer token on /api.
+// neither; a non-loopback host (0.0.0.0 and :: included) needs TLS and a token. --http follows
+// the same rule with the same files and token: HTTPS beyond loopback, the token on /api.
 
 
 #include <string>
@@ -39,11 +39,14 @@ struct GrpcCliOptions {
 };
 
 // The HTTP server's address of `options.http`: the host and the port (0 = any). Throws
-// UsageError for what is not HOST:PORT and for a host beyond loopback.
+// UsageError for what is not HOST:PORT and for a host beyond loopback without TLS and a bearer
+// token in `protection` (the files and token grpc_server_options read; --grpc's rule).
 struct HttpAddress {
   std::string host;
   unsigned port = 0;
 };
+HttpAddress http_address(const GrpcCliOptions& options, const rpc::ServerOptions& protection);
+// The same without TLS or token (loopback only).
 HttpAddress http_address(const GrpcCliOptions& options);
 
 // The environment variable of the bearer token.

@@ -10,6 +10,7 @@
 #include <pthread.h>
 
 #include <csignal>
+#include <iostream>
 #include <ostream>
 
 namespace rs4sim::app {
@@ -64,13 +65,24 @@ void RunSession::serve_grpc(const GrpcCliOptions& options, ServiceList services)
   grpc_ = std::make_unique<GrpcServing>(server, std::move(services), out_,
                                         options.address.empty() ? "--http" : "--grpc");
   if (options.http.empty()) return;
-  const HttpAddress address = http_address(options);
+  const HttpAddress address = http_address(options, server);
   http::HttpOptions h;
   h.host = address.host;
   h.port = static_cast<std::uint16_t>(address.port);
   h.bearer_token = server.bearer_token;
+  h.tls_cert_chain = server.tls_cert_chain;
+  h.tls_private_key = server.tls_private_key;
   http_ = std::make_unique<http::HttpServer>(io_, h, grpc_->in_process_channel());
   out_ << "http: listening on " << http_->url() << std::endl;
+  rpc::ServerOptions http_protection;  // what guards the HTTP server (not --grpc's address)
+  http_protection.tls_cert_chain = h.tls_cert_chain;
+  http_protection.tls_private_key = h.tls_private_key;
+  http_protection.bearer_token = h.bearer_token;
+  if (const auto protection = grpc_protection(http_protection); !protection.empty()) {
+    std::cerr << "rs4sim: http: " << protection
+              << (h.bearer_token.empty() ? "" : " (every /api request; the page needs none)")
+              << std::endl;
+  }
 }
 
 void RunSession::on_stop(std::function<void()> step) { stop_steps_.push_back(std::move(step)); }
@@ -121,6 +133,11 @@ void RunSession::release_servers() {
   // The loop ran out, so the stop completed: the servers are down. Their services go now,
   // before the devices and segments they serve (which the caller destroys after the run).
   if (halted_) {
+    // the forwarded calls the HTTP server cancelled complete on gRPC threads: gRPC goes
+    // only after them (http_server.h wait_for_calls)
+    if (http_ && !http_->wait_for_calls(std::chrono::seconds(5))) {
+      out_ << "http: a forwarded call did not end within 5 s of the stop" << std::endl;
+    }
     http_.reset();
     grpc_.reset();
   }

@@ -146,7 +146,7 @@ TEST(GrpcCliOptionsTest, TlsFilesComeInPairsAndNeedGrpc) {
   EXPECT_TRUE(parse({}).empty());
 }
 
-TEST(GrpcCliOptionsTest, HttpIsLoopbackOnlyAndSharesTheToken) {
+TEST(GrpcCliOptionsTest, HttpFollowsTheGrpcRuleAndSharesTheToken) {
   const auto parse = [](std::vector<std::string> args) {
     CLI::App app;
     GrpcCliOptions o;
@@ -182,16 +182,35 @@ TEST(GrpcCliOptionsTest, HttpIsLoopbackOnlyAndSharesTheToken) {
     return std::string();
   };
   EXPECT_EQ(refused("0.0.0.0:8080"),
-            "--http: '0.0.0.0' is not a loopback address: the HTTP server has no TLS, so it "
-            "serves on this machine only (127.0.0.1, ::1, localhost); from elsewhere use --grpc "
-            "with TLS, or an SSH tunnel (ssh -L PORT:127.0.0.1:PORT)");
+            "--http: '0.0.0.0' is not a loopback address: serving beyond this machine needs TLS "
+            "and a bearer token; missing: TLS and a bearer token (TLS: --grpc-tls-cert FILE "
+            "--grpc-tls-key FILE; token: --grpc-token-file FILE or RS4SIM_GRPC_TOKEN; or an SSH "
+            "tunnel: ssh -L PORT:127.0.0.1:PORT)");
+  // Beyond loopback with the --grpc files: HTTPS with the token; TLS alone is not enough.
+  GrpcCliOptions remote;
+  remote.http = "0.0.0.0:0";
+  remote.tls_cert = kData + "/localhost.crt";
+  remote.tls_key = kData + "/localhost.key";
+  remote.token_file = kData + "/token.txt";
+  const auto served = grpc_server_options(remote, nullptr);
+  EXPECT_TRUE(served.tls());
+  EXPECT_EQ(http_address(remote, served).host, "0.0.0.0");
+  remote.token_file.clear();
+  try {
+    (void)grpc_server_options(remote, nullptr);
+    ADD_FAILURE() << "--http 0.0.0.0 with TLS and no token accepted";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("missing: a bearer token"), std::string::npos)
+        << e.what();
+  }
   EXPECT_EQ(refused("127.0.0.1"),
             "--http: '127.0.0.1' is not HOST:PORT (e.g. 127.0.0.1:50051, port 0 = any free port)");
   EXPECT_EQ(refused("127.0.0.1:65536").substr(0, 36), "--http: '127.0.0.1:65536' is not HOS");
   // the token file needs one of the two APIs
   EXPECT_NO_THROW(parse({"--http", "127.0.0.1:0", "--grpc-token-file", "t"}));
-  EXPECT_THROW(parse({"--grpc-tls-cert", "c", "--grpc-tls-key", "k", "--http", "127.0.0.1:0"}),
-               CLI::RequiresError);  // TLS is --grpc's only
+  EXPECT_NO_THROW(parse({"--grpc-tls-cert", "c", "--grpc-tls-key", "k", "--http", "127.0.0.1:0"}));
+  EXPECT_THROW(parse({"--grpc-tls-cert", "c", "--grpc-tls-key", "k"}),
+               CLI::RequiresError);  // TLS needs one of the two APIs
 }
 
 }  // namespace

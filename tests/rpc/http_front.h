@@ -39,6 +39,8 @@ class HttpFront {
   HttpFront& operator=(const HttpFront&) = delete;
   ~HttpFront() {
     on_loop([&] { http_->close(); });
+    // the cancelled calls end while the loop runs; gRPC goes only after them (http_server.h)
+    EXPECT_TRUE(http_->wait_for_calls(std::chrono::seconds(10)));
     on_loop([&] { http_.reset(); });
   }
   void on_loop(const std::function<void()>& f) {

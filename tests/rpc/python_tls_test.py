@@ -4,10 +4,14 @@ client's root, the token of its token.txt; the right token answers (a service, h
 reflection), a wrong or missing one is UNAUTHENTICATED with its message, a plaintext client
 fails; then `--grpc 127.0.0.1:0` with only RS4SIM_GRPC_TOKEN (no TLS, local credentials).
 Usage: python_tls_test.py RS4SIM REPO   (exit 77 = skipped: no python3-grpcio)"""
+import json
 import os
 import signal
+import ssl
 import subprocess
 import sys
+import urllib.error
+import urllib.request
 
 try:
     import grpc
@@ -23,12 +27,12 @@ root = open(os.path.join(data, "localhost.crt"), "rb").read()
 token = open(os.path.join(data, "token.txt")).readline().strip()
 
 
-def serve(args, env=None):
+def serve(args, env=None, banner="grpc: listening on "):
     proc = subprocess.Popen([rs4sim, "run", "--link", "memory"] + args, stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True, env=env)
     line = proc.stdout.readline()
-    assert line.startswith("grpc: listening on "), (line, proc.stderr.read() if not line else "")
-    return proc, int(line.split(":")[-1])
+    assert line.startswith(banner), (line, proc.stderr.read() if not line else "")
+    return proc, int(line.rstrip().rstrip("/").split(":")[-1])
 
 
 def stop(proc):
@@ -91,4 +95,49 @@ try:
                     "missing authorization metadata")
 finally:
     stop(proc)
-print("ok: TLS + bearer token through python3-grpcio")
+
+# HTTPS: --http beyond loopback under --grpc's rule, the same certificate and token
+proc, port = serve(["--http", "0.0.0.0:0", "--grpc-tls-cert", os.path.join(data, "localhost.crt"),
+                    "--grpc-tls-key", os.path.join(data, "localhost.key"),
+                    "--grpc-token-file", os.path.join(data, "token.txt")], env,
+                   banner="http: listening on https://")
+try:
+    trusted = ssl.create_default_context(cafile=os.path.join(data, "localhost.crt"))
+    url = f"https://127.0.0.1:{port}/api/rs4sim.v1.SimTime/Now"
+
+    def post(context, authorization=None):
+        request = urllib.request.Request(url, data=b"{}", method="POST",
+                                         headers={"Content-Type": "application/json"})
+        if authorization:
+            request.add_header("Authorization", authorization)
+        return urllib.request.urlopen(request, context=context, timeout=10)
+
+    with post(trusted, "Bearer " + token) as answer:
+        assert answer.status == 200, answer.status
+        assert json.load(answer)["simulated"] is True
+    try:
+        post(trusted)
+        raise AssertionError("answered without the token")
+    except urllib.error.HTTPError as e:
+        assert e.code == 401, e.code
+        assert json.load(e)["code"] == 16
+    # the page needs no token, but TLS all the same
+    with urllib.request.urlopen(f"https://127.0.0.1:{port}/", context=trusted, timeout=10) as page:
+        assert page.status == 200 and b"<html" in page.read().lower()
+    # a client that trusts another certificate refuses the server
+    other = ssl.create_default_context(cafile=os.path.join(data, "untrusted.crt"))
+    try:
+        post(other, "Bearer " + token)
+        raise AssertionError("the untrusted certificate was accepted")
+    except urllib.error.URLError as e:
+        assert isinstance(e.reason, ssl.SSLCertVerificationError), e.reason
+    # plain HTTP to the TLS port gets no HTTP answer
+    try:
+        with urllib.request.urlopen(f"http://127.0.0.1:{port}/", timeout=10) as page:
+            raise AssertionError(f"plain HTTP answered {page.status}")
+    except (urllib.error.URLError, ConnectionError, OSError) as e:
+        assert not isinstance(e, urllib.error.HTTPError), e
+finally:
+    err = stop(proc)
+assert "rs4sim: http: TLS, bearer token" in err, err
+print("ok: TLS + bearer token through python3-grpcio, HTTPS through urllib")
