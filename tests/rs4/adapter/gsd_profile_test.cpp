@@ -6,9 +6,7 @@
 #include "adapter_rig.h"
 #include "gsd/config.h"
 #include "gsd/interp.h"
-
-#include <fstream>
-#include <sstream>
+#include "tests/gsd/test_util.h"
 
 namespace rs4sim::rs4::adapter::testing {
 namespace {
@@ -16,10 +14,7 @@ namespace {
 using Bytes = std::vector<std::uint8_t>;
 
 gsd::Device other_gsd() {
-  std::ifstream in(std::string(RS4SIM_GSD_CORPUS) + "/rs4_other_gsd.gsd", std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  auto d = gsd::parse(text.str(), "rs4_other_gsd.gsd");
+  auto d = gsd::parse(gsd::testing::corpus("rs4_other_gsd.gsd"), "rs4_other_gsd.gsd");
   EXPECT_TRUE(d) << d.error().what();
   return std::move(d).value();
 }

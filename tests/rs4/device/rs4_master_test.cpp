@@ -4,9 +4,7 @@
 #include "profisafe/f_parameters.h"
 #include "rs4/adapter/rs4_gsd.h"
 #include "rs4_fixture.h"
-
-#include <fstream>
-#include <sstream>
+#include "tests/gsd/test_util.h"
 
 namespace rs4sim::rs4::device::testing {
 namespace {
@@ -133,10 +131,7 @@ namespace rs4sim::rs4::device::testing {
 namespace {
 
 gsd::Device other_gsd() {
-  std::ifstream in(std::string(RS4SIM_GSD_CORPUS) + "/rs4_other_gsd.gsd", std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  auto d = gsd::parse(text.str(), "rs4_other_gsd.gsd");
+  auto d = gsd::parse(gsd::testing::corpus("rs4_other_gsd.gsd"), "rs4_other_gsd.gsd");
   EXPECT_TRUE(d) << d.error().what();
   return std::move(d).value();
 }
