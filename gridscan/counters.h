@@ -22,6 +22,7 @@ struct Counters {
   std::uint64_t busy = 0;           // a second request in the same cycle
   std::uint64_t not_ready = 0;      // before the power-up Reduced state
   std::uint64_t restarts = 0;       // configuration changes
+  std::uint64_t mode_fallbacks = 0;  // mode activations that failed into polling (a fault)
   [[nodiscard]] std::uint64_t dropped() const {
     return truncated + oversized + bad_sync + bad_crc + bad_seq + unknown_id + direction_bit +
            busy + not_ready;

@@ -3,6 +3,7 @@
 #include "gridscan/device.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace rs4sim::gridscan {
 
@@ -53,6 +54,7 @@ void GridScanDevice::power_up(TimePoint now) {
   change_allowed_ = config_read_ = test_pending_ = alignment_active_ = false;
   stream_seq_ = 0;
   last_seq_ = 0;
+  last_sent_.reset();
   send(response_id(CommandId::kInfoGetVersion), 0,
        encode_version(options_.sw_version, options_.hw_version).value());
 }
@@ -61,10 +63,10 @@ void GridScanDevice::become_ready(TimePoint t) {
   power_ = PowerState::kReady;
   last_seq_ = 1;
   send(response_id(CommandId::kDataReducedState), last_seq_,
-       encode_reduced_state(report_of(scene_, elements(), configuration_)));
+       encode_reduced_state(scanned_report()));
   // [GridScan manual §10.1.3]: alignment values on an interrupted power-up when armed.
   alignment_active_ =
-      alignment_armed_ && interrupted_below_edge(scene_, elements(), configuration_);
+      alignment_armed_ && scanned_report().interrupted;
   mode_ = options_.power_up_mode;
   if (mode_ == CommMode::kStandBy) standby_door_ = scene_.door_position;
   if (periodic()) next_end_ = t + options_.cycle_time();
@@ -191,7 +193,7 @@ void GridScanDevice::send_cycle_messages() {
   // [GridScan manual §10.1.3]: the first time the curtain is free it leaves alignment
   // mode for good; until then an alignment value every cycle (DECISION: 0xA4 on the
   // streaming SeqCnt).
-  if (!interrupted_below_edge(scene_, elements(), configuration_)) {
+  if (!scanned_report().interrupted) {
     alignment_active_ = alignment_armed_ = false;
     return;
   }
@@ -200,13 +202,25 @@ void GridScanDevice::send_cycle_messages() {
   ++counters_.streamed;
 }
 
+// The frame as it goes on the wire, with the transmission faults of [GridScan manual
+// §10.2.2] applied (faults.h).
 void GridScanDevice::send(std::uint8_t id, std::uint8_t seq, const Payload& payload) {
-  if (faults_.transmit.silent) return;
   Frame f{seq, id, payload};
+  std::optional<Frame> previous = std::exchange(last_sent_, f);
+  if (faults_.transmit.silent) return;
   if (faults_.wrong_seq) ++f.seq;
   if (faults_.direction_bit) f.id &= kIdMask;
-  auto bytes = encode(f);
-  if (faults_.bad_crc) bytes[bytes.size() - kCrcSize] ^= 0x01U;
+  const auto seal = [this](const Frame& frame) {
+    auto bytes = encode(frame);
+    if (faults_.bad_crc) bytes[bytes.size() - kCrcSize] ^= 0x01U;
+    return bytes;
+  };
+  if (faults_.insert_frames && previous) {
+    previous->seq = f.seq;
+    transmit_.push_back(seal(*previous));
+  }
+  auto bytes = seal(f);
+  if (faults_.repeat_frames) transmit_.push_back(bytes);
   transmit_.push_back(std::move(bytes));
 }
 
@@ -230,10 +244,29 @@ Leds GridScanDevice::leds(TimePoint now) const {
 }
 
 StateReport GridScanDevice::current_report() const {
-  if (mode_ != CommMode::kStandBy) return report_of(scene_, elements(), configuration_);
+  if (mode_ != CommMode::kStandBy) return scanned_report();
   Scene frozen = scene_;
   frozen.door_position = standby_door_;
   return all_interrupted_report(frozen, elements(), configuration_);
+}
+
+// What the elements report in a scan: an element stuck free reads free whatever is in
+// front of it (the door's cover included).
+StateReport GridScanDevice::scanned_report() const {
+  Scene seen = scene_;
+  seen.blocked &= ~faults_.stuck_free;
+  StateReport r = report_of(seen, elements(), configuration_);
+  r.elements &= ~faults_.stuck_free;
+  return r;
+}
+
+// The scan of a Test input ([GridScan manual §10.1.2]): every element shows interrupted,
+// except one stuck free.
+StateReport GridScanDevice::test_report() const {
+  StateReport r = all_interrupted_report(scene_, elements(), configuration_);
+  r.elements &= ~faults_.stuck_free;
+  r.interrupted = r.elements != 0;
+  return r;
 }
 
 }  // namespace rs4sim::gridscan

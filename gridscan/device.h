@@ -71,6 +71,8 @@ class GridScanDevice final : public stream::ByteDevice {
   [[nodiscard]] const Counters& counters() const { return counters_; }
   [[nodiscard]] Leds leds(stream::TimePoint now) const;
   [[nodiscard]] StateReport current_report() const;
+  // What the elements report in a scan (the faults' stuck elements applied).
+  [[nodiscard]] StateReport scanned_report() const;
 
  private:
   struct Pending {
@@ -103,6 +105,7 @@ class GridScanDevice final : public stream::ByteDevice {
   Reaction allow_change(stream::TimePoint cycle_end);
   Reaction set_configuration(Configuration target, stream::TimePoint cycle_end);
   [[nodiscard]] Payload state_payload(bool full);
+  [[nodiscard]] StateReport test_report() const;
   [[nodiscard]] bool window_over(stream::TimePoint t) const;
 
   Options options_;
@@ -112,6 +115,7 @@ class GridScanDevice final : public stream::ByteDevice {
   Counters counters_;
   stream::IdleGapFramer framer_;
   std::deque<std::vector<std::uint8_t>> transmit_;
+  std::optional<Frame> last_sent_;  // before the faults (what an inserted frame repeats)
 
   bool waiting_for_start_ = true;
   PowerState power_ = PowerState::kOff;

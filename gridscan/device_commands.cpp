@@ -61,7 +61,9 @@ GridScanDevice::Reaction GridScanDevice::execute(CommandId c, TimePoint cycle_en
       return {Payload{}};
     case CommandId::kDataReducedState: return {state_payload(false)};
     case CommandId::kDataFullState: return {state_payload(true)};
-    case CommandId::kSafetyTestInput: test_pending_ = true; return {Payload{}};
+    case CommandId::kSafetyTestInput:
+      test_pending_ = !faults_.test_ignored;  // a fault: answered, but no test
+      return {Payload{}};
     case CommandId::kConfigAllowChange: return allow_change(cycle_end);
     case CommandId::kConfigSetStatic: return set_configuration(Configuration::kStatic, cycle_end);
     case CommandId::kConfigSetBlanking:
@@ -80,6 +82,14 @@ GridScanDevice::Reaction GridScanDevice::set_mode(CommMode m) {
   const auto streaming = [](CommMode x) {
     return x == CommMode::kFullStreaming || x == CommMode::kReducedStreaming;
   };
+  // [GridScan manual §10.1.1]: "In case of a failure in the activation of the
+  // communication mode, the light curtain switches automatically to the polling mode"
+  // (DECISION: the request is answered as a success would be; the controller sees the
+  // failure in Mode: Get current or in the missing stream).
+  if (m != CommMode::kPolling && faults_.mode_activation_fails) {
+    ++counters_.mode_fallbacks;
+    m = CommMode::kPolling;
+  }
   if (streaming(m) && !streaming(mode_)) stream_seq_ = 0;
   if (m == CommMode::kStandBy && mode_ != CommMode::kStandBy) {
     standby_door_ = scene_.door_position;
@@ -133,8 +143,9 @@ GridScanDevice::Reaction GridScanDevice::set_configuration(Configuration target,
 Payload GridScanDevice::state_payload(bool full) {
   StateReport r = current_report();
   if (test_pending_) {
-    r = all_interrupted_report(scene_, elements(), configuration_);
-    if (mode_ == CommMode::kStandBy) r.door_position = current_report().door_position;
+    const std::uint8_t door = r.door_position;
+    r = test_report();
+    if (mode_ == CommMode::kStandBy) r.door_position = door;
     test_pending_ = false;
   }
   return full ? encode_full_state(r, elements()) : encode_reduced_state(r);

@@ -142,6 +142,11 @@ std::vector<std::string> gridscan_faults(const gridscan::GridScanDevice& d) {
   if (d.scene().internal_failure) out.emplace_back("internal-failure");
   if (f.transmit.silent) out.emplace_back("silent");
   if (f.config_not_set) out.emplace_back("config-not-set");
+  if (f.repeat_frames) out.emplace_back("repeat-frames");
+  if (f.insert_frames) out.emplace_back("insert-frames");
+  if (f.test_ignored) out.emplace_back("test-ignored");
+  if (f.stuck_free != 0) out.emplace_back("stuck-free");
+  if (f.mode_activation_fails) out.emplace_back("mode-activation-fails");
   return out;
 }
 
@@ -316,6 +321,10 @@ grpc::Status GridScanService::GetState(grpc::ServerContext*, const v1::LineDevic
         o->set_busy(k.busy);
         o->set_not_ready(k.not_ready);
         o->set_restarts(k.restarts);
+        o->set_mode_fallbacks(k.mode_fallbacks);
+        for (const auto e : elements_of(d_.faults().stuck_free, d_.elements())) {
+          out->add_stuck_free(e);
+        }
         set_last_frame(c_.tap, *out->mutable_last_frame());
         out->set_now_ns(to_ns(now));
         return grpc::Status::OK;
@@ -381,9 +390,23 @@ grpc::Status GridScanService::fault(const v1::GridScanFaultRequest& in, bool inj
   if (inject && which == v1::GRID_SCAN_FAULT_LATE_ANSWER) {
     if (auto bad = check_delay(in.late_ms(), "late_ms"); !bad.ok()) return bad;
   }
+  if (which != v1::GRID_SCAN_FAULT_STUCK_FREE && in.elements_size() > 0) {
+    return invalid_argument("elements", "only GRID_SCAN_FAULT_STUCK_FREE takes elements");
+  }
+  if (inject && which == v1::GRID_SCAN_FAULT_STUCK_FREE && in.elements_size() == 0) {
+    return invalid_argument("elements", "GRID_SCAN_FAULT_STUCK_FREE needs the elements to stick");
+  }
   return on_line(
       c_, "GridScan", in.address(),
       [&](dp::TimePoint) {
+        std::uint64_t chosen = 0;
+        for (const auto e : in.elements()) {
+          if (e < 1 || e > d_.elements()) {
+            return invalid_argument("elements", "element " + std::to_string(e) + " outside 1.." +
+                                                    std::to_string(d_.elements()));
+          }
+          chosen |= std::uint64_t{1} << (e - 1U);
+        }
         if (which == v1::GRID_SCAN_FAULT_INTERNAL_FAILURE) {
           d_.set_internal_failure(inject);
           return grpc::Status::OK;
@@ -399,6 +422,17 @@ grpc::Status GridScanService::fault(const v1::GridScanFaultRequest& in, bool inj
           case v1::GRID_SCAN_FAULT_BAD_CRC: f.bad_crc = inject; break;
           case v1::GRID_SCAN_FAULT_SILENT: f.transmit.silent = inject; break;
           case v1::GRID_SCAN_FAULT_CONFIG_NOT_SET: f.config_not_set = inject; break;
+          case v1::GRID_SCAN_FAULT_REPEAT_FRAMES: f.repeat_frames = inject; break;
+          case v1::GRID_SCAN_FAULT_INSERT_FRAMES: f.insert_frames = inject; break;
+          case v1::GRID_SCAN_FAULT_TEST_IGNORED: f.test_ignored = inject; break;
+          case v1::GRID_SCAN_FAULT_STUCK_FREE:
+            if (inject) {
+              f.stuck_free |= chosen;
+            } else {
+              f.stuck_free &= chosen == 0 ? 0 : ~chosen;
+            }
+            break;
+          case v1::GRID_SCAN_FAULT_MODE_ACTIVATION_FAILS: f.mode_activation_fails = inject; break;
           default: break;
         }
         d_.set_faults(f);

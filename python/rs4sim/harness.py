@@ -379,7 +379,8 @@ class _LineDevice(_Client):
 
 class GridScan(_LineDevice):
     """faults: LATE_ANSWER (delay_ms), WRONG_SEQ, DIRECTION_BIT, BAD_CRC, INTERNAL_FAILURE,
-    SILENT, CONFIG_NOT_SET."""
+    SILENT, CONFIG_NOT_SET, REPEAT_FRAMES, INSERT_FRAMES, TEST_IGNORED, MODE_ACTIVATION_FAILS;
+    STUCK_FREE through stick_free/unstick."""
     _stub = dev_grpc.GridScanStub
     _fault_enum = "GRID_SCAN_FAULT_"
     _fault_request = dev_pb.GridScanFaultRequest
@@ -400,6 +401,18 @@ class GridScan(_LineDevice):
 
     def set_power(self, on):
         self.service.SetPower(pb.SetPowerRequest(address=self.address, on=on))
+
+    def stick_free(self, elements):
+        """Elements (1-based) that read free whatever is in front of them (STUCK_FREE)."""
+        self.service.InjectFault(dev_pb.GridScanFaultRequest(
+            address=self.address, fault=dev_pb.GRID_SCAN_FAULT_STUCK_FREE,
+            elements=list(elements)))
+
+    def unstick(self, elements=()):
+        """Frees the given stuck elements again, or every one."""
+        self.service.ClearFault(dev_pb.GridScanFaultRequest(
+            address=self.address, fault=dev_pb.GRID_SCAN_FAULT_STUCK_FREE,
+            elements=list(elements)))
 
 
 class Metron(_LineDevice):

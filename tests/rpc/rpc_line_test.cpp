@@ -445,6 +445,60 @@ TEST_F(RpcGridScanTest, FaultsReachThePowerUpStateFrame) {
   EXPECT_EQ(cycle(), frame({0x01, 0xB0, 0x0A, 0x01, 0x36, 0x9C, 0xDB, 0xFF}));
 }
 
+// The curtain's own failures a controller must catch ([GridScan manual §10.1.1, §10.1.2,
+// §10.2.2]): in GetState while present, gone after ClearFault; stuck elements by number.
+TEST_F(RpcGridScanTest, TheCurtainsOwnFailuresAreInjectedByNameAndElement) {
+  power_up();
+  const auto stuck = [this](bool inject, std::vector<std::uint32_t> elements) {
+    grpc::ClientContext ctx;
+    v1::GridScanFaultRequest req;
+    req.set_fault(v1::GRID_SCAN_FAULT_STUCK_FREE);
+    for (const auto e : elements) req.add_elements(e);
+    v1::Empty e;
+    return inject ? stub_->InjectFault(&ctx, req, &e) : stub_->ClearFault(&ctx, req, &e);
+  };
+  for (const auto f : {v1::GRID_SCAN_FAULT_REPEAT_FRAMES, v1::GRID_SCAN_FAULT_INSERT_FRAMES,
+                       v1::GRID_SCAN_FAULT_TEST_IGNORED,
+                       v1::GRID_SCAN_FAULT_MODE_ACTIVATION_FAILS}) {
+    ASSERT_TRUE(fault(f, true).ok()) << f;
+  }
+  ASSERT_TRUE(block({3, 4}).ok());
+  ASSERT_TRUE(stuck(true, {3, 7}).ok());
+  auto s = state();
+  EXPECT_EQ(std::vector<std::string>(s.faults_present().begin(), s.faults_present().end()),
+            (std::vector<std::string>{"repeat-frames", "insert-frames", "test-ignored",
+                                      "stuck-free", "mode-activation-fails"}));
+  EXPECT_EQ(std::vector<std::uint32_t>(s.stuck_free().begin(), s.stuck_free().end()),
+            (std::vector<std::uint32_t>{3, 7}));
+  // element 3's object is not seen; element 4's is
+  EXPECT_EQ(std::vector<std::uint32_t>(s.report_interrupted_elements().begin(),
+                                       s.report_interrupted_elements().end()),
+            (std::vector<std::uint32_t>{4}));
+  ASSERT_TRUE(stuck(false, {7}).ok());
+  EXPECT_EQ(state().stuck_free_size(), 1);
+  ASSERT_TRUE(stuck(false, {}).ok());  // every one
+  EXPECT_EQ(state().stuck_free_size(), 0);
+  EXPECT_EQ(state().report_interrupted_elements_size(), 2);
+  // bad input
+  EXPECT_EQ(bad_field(stuck(true, {})), "elements");
+  EXPECT_EQ(bad_field(stuck(true, {23})), "elements");  // 22 elements
+  EXPECT_EQ(bad_field(stuck(true, {0})), "elements");
+  {
+    grpc::ClientContext ctx;
+    v1::GridScanFaultRequest req;
+    req.set_fault(v1::GRID_SCAN_FAULT_BAD_CRC);
+    req.add_elements(1);
+    v1::Empty e;
+    EXPECT_EQ(bad_field(stub_->InjectFault(&ctx, req, &e)), "elements");
+  }
+  for (const auto f : {v1::GRID_SCAN_FAULT_REPEAT_FRAMES, v1::GRID_SCAN_FAULT_INSERT_FRAMES,
+                       v1::GRID_SCAN_FAULT_TEST_IGNORED,
+                       v1::GRID_SCAN_FAULT_MODE_ACTIVATION_FAILS}) {
+    ASSERT_TRUE(fault(f, false).ok()) << f;
+  }
+  EXPECT_TRUE(state().faults_present().empty());
+}
+
 TEST_F(RpcGridScanTest, SilentFaultKeepsThePowerUpMessagesOffTheLine) {
   ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_SILENT, true).ok());
   power_up();
