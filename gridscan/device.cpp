@@ -202,8 +202,8 @@ void GridScanDevice::send_cycle_messages() {
   ++counters_.streamed;
 }
 
-// The frame as it goes on the wire, with the transmission faults of [GridScan manual
-// §10.2.2] applied (faults.h).
+// The frame as it goes on the wire, with the transmission faults of
+// [GridScan manual §10.2.2] applied (faults.h).
 void GridScanDevice::send(std::uint8_t id, std::uint8_t seq, const Payload& payload) {
   Frame f{seq, id, payload};
   std::optional<Frame> previous = std::exchange(last_sent_, f);

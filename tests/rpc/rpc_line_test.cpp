@@ -445,8 +445,9 @@ TEST_F(RpcGridScanTest, FaultsReachThePowerUpStateFrame) {
   EXPECT_EQ(cycle(), frame({0x01, 0xB0, 0x0A, 0x01, 0x36, 0x9C, 0xDB, 0xFF}));
 }
 
-// The curtain's own failures a controller must catch ([GridScan manual §10.1.1, §10.1.2,
-// §10.2.2]): in GetState while present, gone after ClearFault; stuck elements by number.
+// The curtain's own failures a controller must catch ([GridScan manual §10.1.1],
+// [GridScan manual §10.1.2], [GridScan manual §10.2.2]): in GetState while present, gone
+// after ClearFault; stuck elements by number.
 TEST_F(RpcGridScanTest, TheCurtainsOwnFailuresAreInjectedByNameAndElement) {
   power_up();
   const auto stuck = [this](bool inject, std::vector<std::uint32_t> elements) {
