@@ -9,7 +9,7 @@ namespace rs4sim::gridscan {
 
 using stream::TimePoint;
 
-GridScanDevice::GridScanDevice(const Options& options)
+Device::Device(const Options& options)
     : options_(options),
       configuration_(options.configuration),
       framer_(options.idle_gap(), kMaxFrame) {
@@ -20,19 +20,19 @@ GridScanDevice::GridScanDevice(const Options& options)
   alignment_armed_ = options.alignment_armed;
 }
 
-void GridScanDevice::start_if_waiting(TimePoint now) {
+void Device::start_if_waiting(TimePoint now) {
   if (!waiting_for_start_) return;
   waiting_for_start_ = false;
   power_up(now);
 }
 
-void GridScanDevice::power_on(TimePoint now) {
+void Device::power_on(TimePoint now) {
   waiting_for_start_ = false;
   if (power_ == PowerState::kOff) power_up(now);
   wake();
 }
 
-void GridScanDevice::power_off() {
+void Device::power_off() {
   waiting_for_start_ = false;
   power_ = PowerState::kOff;
   framer_.reset();
@@ -44,7 +44,7 @@ void GridScanDevice::power_off() {
 // [GridScan manual §10.1.1] "Power-up sequence": Info: Get version as soon as the
 // communication is up; SeqCnt 0 and 1 for the two power-up messages (DECISION: the only
 // start that reproduces the exchange of [GridScan manual §10.3], docs/gridscan.md).
-void GridScanDevice::power_up(TimePoint now) {
+void Device::power_up(TimePoint now) {
   power_ = PowerState::kStarting;
   power_up_at_ = now;
   ready_at_ = now + options_.ready_time;
@@ -59,25 +59,24 @@ void GridScanDevice::power_up(TimePoint now) {
        encode_version(options_.sw_version, options_.hw_version).value());
 }
 
-void GridScanDevice::become_ready(TimePoint t) {
+void Device::become_ready(TimePoint t) {
   power_ = PowerState::kReady;
   last_seq_ = 1;
   send(response_id(CommandId::kDataReducedState), last_seq_,
        encode_reduced_state(scanned_report()));
   // [GridScan manual §10.1.3]: alignment values on an interrupted power-up when armed.
-  alignment_active_ =
-      alignment_armed_ && scanned_report().interrupted;
+  alignment_active_ = alignment_armed_ && scanned_report().interrupted;
   mode_ = options_.power_up_mode;
   if (mode_ == CommMode::kStandBy) standby_door_ = scene_.door_position;
   if (periodic()) next_end_ = t + options_.cycle_time();
 }
 
-void GridScanDevice::on_time(TimePoint now) {
+void Device::on_time(TimePoint now) {
   start_if_waiting(now);
   advance(now);
 }
 
-void GridScanDevice::on_bytes(std::span<const std::uint8_t> bytes, TimePoint now) {
+void Device::on_bytes(std::span<const std::uint8_t> bytes, TimePoint now) {
   start_if_waiting(now);
   advance(now);
   if (power_ == PowerState::kOff) return;
@@ -86,7 +85,7 @@ void GridScanDevice::on_bytes(std::span<const std::uint8_t> bytes, TimePoint now
 }
 
 // Runs every event due at or before `now` in time order: ready, frame ends, cycle ends.
-void GridScanDevice::advance(TimePoint now) {
+void Device::advance(TimePoint now) {
   for (;;) {
     std::optional<TimePoint> ready;
     if (power_ == PowerState::kStarting) ready = ready_at_;
@@ -106,7 +105,7 @@ void GridScanDevice::advance(TimePoint now) {
   }
 }
 
-std::optional<TimePoint> GridScanDevice::next_deadline() const {
+std::optional<TimePoint> Device::next_deadline() const {
   if (waiting_for_start_ || power_ == PowerState::kOff) return std::nullopt;
   std::optional<TimePoint> d = framer_.deadline();
   const auto earliest = [&d](TimePoint t) { d = d ? std::min(*d, t) : t; };
@@ -115,7 +114,7 @@ std::optional<TimePoint> GridScanDevice::next_deadline() const {
   return d;
 }
 
-std::optional<std::vector<std::uint8_t>> GridScanDevice::take_transmit() {
+std::optional<std::vector<std::uint8_t>> Device::take_transmit() {
   if (transmit_.empty()) return std::nullopt;
   auto f = std::move(transmit_.front());
   transmit_.pop_front();
@@ -124,7 +123,7 @@ std::optional<std::vector<std::uint8_t>> GridScanDevice::take_transmit() {
 
 // A frame cut by idle gap. Requests are exactly 10 bytes ([GridScan manual §9.2.4] "All
 // request packages have no payload"); anything else is dropped and counted.
-void GridScanDevice::receive(const stream::GapFrame& f) {
+void Device::receive(const stream::GapFrame& f) {
   ++counters_.frames;
   if (f.oversized || f.bytes.size() > kMinFrame) {
     ++counters_.oversized;
@@ -150,18 +149,18 @@ void GridScanDevice::receive(const stream::GapFrame& f) {
   if (idle) next_end_ = pending_->cycle_end;
 }
 
-bool GridScanDevice::periodic() const {
+bool Device::periodic() const {
   return power_ == PowerState::kReady &&
          (mode_ == CommMode::kFullStreaming || mode_ == CommMode::kReducedStreaming ||
           alignment_active_);
 }
 
-std::optional<TimePoint> GridScanDevice::tick_deadline() const {
+std::optional<TimePoint> Device::tick_deadline() const {
   if (power_ != PowerState::kReady || (!pending_ && !periodic())) return std::nullopt;
   return faults_.transmit.delay(next_end_);
 }
 
-TimePoint GridScanDevice::cycle_end_after(TimePoint t) const {
+TimePoint Device::cycle_end_after(TimePoint t) const {
   const auto period = options_.cycle_time();
   const auto since = std::max(t - ready_at_, stream::Duration::zero());
   return ready_at_ + (since / period + 1) * period;
@@ -169,7 +168,7 @@ TimePoint GridScanDevice::cycle_end_after(TimePoint t) const {
 
 // [GridScan manual §11]: after the cycle, the answer to the request received in it, then
 // the streaming message.
-void GridScanDevice::tick(TimePoint cycle_end, TimePoint now) {
+void Device::tick(TimePoint cycle_end, TimePoint now) {
   if (pending_ && pending_->cycle_end <= cycle_end) {
     const RawFrame request = std::move(pending_->request);
     pending_.reset();
@@ -182,7 +181,7 @@ void GridScanDevice::tick(TimePoint cycle_end, TimePoint now) {
       pending_ ? std::min(pending_->cycle_end, cycle_end_after(from)) : cycle_end_after(from);
 }
 
-void GridScanDevice::send_cycle_messages() {
+void Device::send_cycle_messages() {
   if (mode_ == CommMode::kFullStreaming || mode_ == CommMode::kReducedStreaming) {
     const bool full = mode_ == CommMode::kFullStreaming;
     const auto id = response_id(full ? CommandId::kDataFullState : CommandId::kDataReducedState);
@@ -204,7 +203,7 @@ void GridScanDevice::send_cycle_messages() {
 
 // The frame as it goes on the wire, with the transmission faults of
 // [GridScan manual §10.2.2] applied (faults.h).
-void GridScanDevice::send(std::uint8_t id, std::uint8_t seq, const Payload& payload) {
+void Device::send(std::uint8_t id, std::uint8_t seq, const Payload& payload) {
   Frame f{seq, id, payload};
   std::optional<Frame> previous = std::exchange(last_sent_, f);
   if (faults_.transmit.silent) return;
@@ -226,13 +225,13 @@ void GridScanDevice::send(std::uint8_t id, std::uint8_t seq, const Payload& payl
 
 // Response SeqCnt = request SeqCnt + 1, and the next request must carry one more
 // ([GridScan manual §9.2.2]).
-void GridScanDevice::send_answer(CommandId c, std::uint8_t request_seq, const Payload& payload) {
+void Device::send_answer(CommandId c, std::uint8_t request_seq, const Payload& payload) {
   last_seq_ = static_cast<std::uint8_t>(request_seq + 1U);
   send(response_id(c), last_seq_, payload);
   ++counters_.answered;
 }
 
-Leds GridScanDevice::leds(TimePoint now) const {
+Leds Device::leds(TimePoint now) const {
   LedInputs in;
   in.powered = power_ != PowerState::kOff;
   in.starting = power_ == PowerState::kStarting;
@@ -243,7 +242,7 @@ Leds GridScanDevice::leds(TimePoint now) const {
   return leds_for(in);
 }
 
-StateReport GridScanDevice::current_report() const {
+StateReport Device::current_report() const {
   if (mode_ != CommMode::kStandBy) return scanned_report();
   Scene frozen = scene_;
   frozen.door_position = standby_door_;
@@ -252,7 +251,7 @@ StateReport GridScanDevice::current_report() const {
 
 // What the elements report in a scan: an element stuck free reads free whatever is in
 // front of it (the door's cover included).
-StateReport GridScanDevice::scanned_report() const {
+StateReport Device::scanned_report() const {
   Scene seen = scene_;
   seen.blocked &= ~faults_.stuck_free;
   StateReport r = report_of(seen, elements(), configuration_);
@@ -262,11 +261,20 @@ StateReport GridScanDevice::scanned_report() const {
 
 // The scan of a Test input ([GridScan manual §10.1.2]): every element shows interrupted,
 // except one stuck free.
-StateReport GridScanDevice::test_report() const {
+StateReport Device::test_report() const {
   StateReport r = all_interrupted_report(scene_, elements(), configuration_);
   r.elements &= ~faults_.stuck_free;
   r.interrupted = r.elements != 0;
   return r;
+}
+
+std::string_view to_token(PowerState p) noexcept {
+  switch (p) {
+    case PowerState::kOff: return "off";
+    case PowerState::kStarting: return "starting";
+    case PowerState::kReady: return "ready";
+  }
+  return "?";
 }
 
 }  // namespace rs4sim::gridscan

@@ -22,17 +22,20 @@
 #include <cstdint>
 #include <deque>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 namespace rs4sim::gridscan {
 
 enum class PowerState : std::uint8_t { kOff, kStarting, kReady };
+// "off", "starting", "ready" (the API's and the event stream's word).
+[[nodiscard]] std::string_view to_token(PowerState p) noexcept;
 
-class GridScanDevice final : public stream::ByteDevice {
+class Device final : public stream::ByteDevice {
  public:
   // `options` must have passed validate(). The device powers up at the first call from
   // its link (on_time or on_bytes) unless power_off() came first.
-  explicit GridScanDevice(const Options& options);
+  explicit Device(const Options& options);
 
   [[nodiscard]] stream::LineSettings line_settings() const override { return kLineSettings; }
   void on_bytes(std::span<const std::uint8_t> bytes, stream::TimePoint now) override;
@@ -55,9 +58,9 @@ class GridScanDevice final : public stream::ByteDevice {
   void set_internal_failure(bool on) { scene_.internal_failure = on; }
   void set_alignment_value(std::uint16_t v) { scene_.alignment_value = v; }
 
-  [[nodiscard]] const FaultControls& faults() const { return faults_; }
+  [[nodiscard]] const Faults& faults() const { return faults_; }
   // Wakes the link: the answer time (transmit.late) moves the deadline.
-  void set_faults(const FaultControls& f) {
+  void set_faults(const Faults& f) {
     faults_ = f;
     wake();
   }
@@ -111,7 +114,7 @@ class GridScanDevice final : public stream::ByteDevice {
   Options options_;
   Configuration configuration_;
   Scene scene_;
-  FaultControls faults_;
+  Faults faults_;
   Counters counters_;
   stream::IdleGapFramer framer_;
   std::deque<std::vector<std::uint8_t>> transmit_;

@@ -9,7 +9,7 @@ using stream::TimePoint;
 // data will be responded"; the communication test 0x23 is processed anyway and reports
 // what was wrong ([GridScan manual §10.3]). DECISION: a bad sync alone suppresses the reply
 // like a bad CRC; a request with the direction bit set counts as a wrong ID.
-void GridScanDevice::answer_request(const RawFrame& raw, TimePoint cycle_end) {
+void Device::answer_request(const RawFrame& raw, TimePoint cycle_end) {
   const Frame& f = raw.frame;
   const bool seq_ok = f.seq == static_cast<std::uint8_t>(last_seq_ + 1U);
   if (f.id == request_id(CommandId::kInfoCommunicationTest)) {
@@ -42,7 +42,7 @@ void GridScanDevice::answer_request(const RawFrame& raw, TimePoint cycle_end) {
   }
 }
 
-GridScanDevice::Reaction GridScanDevice::execute(CommandId c, TimePoint cycle_end) {
+Device::Reaction Device::execute(CommandId c, TimePoint cycle_end) {
   switch (c) {
     case CommandId::kModeSetPolling: return set_mode(CommMode::kPolling);
     case CommandId::kModeSetFullStreaming: return set_mode(CommMode::kFullStreaming);
@@ -78,7 +78,7 @@ GridScanDevice::Reaction GridScanDevice::execute(CommandId c, TimePoint cycle_en
 
 // DECISION: the commands "with no data" answer with an empty payload; leaving stand-by
 // ends a configuration sequence; the streaming SeqCnt starts at 0 when streaming starts.
-GridScanDevice::Reaction GridScanDevice::set_mode(CommMode m) {
+Device::Reaction Device::set_mode(CommMode m) {
   const auto streaming = [](CommMode x) {
     return x == CommMode::kFullStreaming || x == CommMode::kReducedStreaming;
   };
@@ -99,13 +99,13 @@ GridScanDevice::Reaction GridScanDevice::set_mode(CommMode m) {
   return {Payload{}};
 }
 
-bool GridScanDevice::window_over(TimePoint t) const {
+bool Device::window_over(TimePoint t) const {
   return t - power_up_at_ > options_.config_window;
 }
 
 // [GridScan manual §10.4] step 3. DECISION: the checks in the order of the sequence
 // (window, stand-by, allowed, read) when several fail.
-GridScanDevice::Reaction GridScanDevice::allow_change(TimePoint cycle_end) {
+Device::Reaction Device::allow_change(TimePoint cycle_end) {
   AllowChange code = AllowChange::kAllowed;
   if (window_over(cycle_end)) {
     code = AllowChange::kWindowOver;
@@ -119,7 +119,7 @@ GridScanDevice::Reaction GridScanDevice::allow_change(TimePoint cycle_end) {
 
 // [GridScan manual §10.4] step 5: no answer on success, the curtain restarts in the new
 // mode (DECISION: also when it is the current one); an answer with the code on failure.
-GridScanDevice::Reaction GridScanDevice::set_configuration(Configuration target,
+Device::Reaction Device::set_configuration(Configuration target,
                                                            TimePoint cycle_end) {
   std::optional<SetConfigResult> failure;
   if (window_over(cycle_end)) {
@@ -140,7 +140,7 @@ GridScanDevice::Reaction GridScanDevice::set_configuration(Configuration target,
 
 // [GridScan manual §10.1.1] stand-by reports every element interrupted;
 // [GridScan manual §10.1.2] the first state message after a test too (DECISION, docs/gridscan.md).
-Payload GridScanDevice::state_payload(bool full) {
+Payload Device::state_payload(bool full) {
   StateReport r = current_report();
   if (test_pending_) {
     const std::uint8_t door = r.door_position;

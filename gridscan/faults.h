@@ -16,7 +16,7 @@
 
 namespace rs4sim::gridscan {
 
-struct FaultControls {
+struct Faults {
   // late: every frame of a cycle leaves this much after its end; silent: nothing is sent
   // (communication loss)
   stream::TransmitFault transmit{};
@@ -40,7 +40,7 @@ struct FaultControls {
   // falls back to) polling mode.
   bool mode_activation_fails = false;
 
-  friend bool operator==(const FaultControls&, const FaultControls&) = default;
+  friend bool operator==(const Faults&, const Faults&) = default;
 };
 
 }  // namespace rs4sim::gridscan

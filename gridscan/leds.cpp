@@ -31,4 +31,15 @@ std::string_view to_string(Led led) noexcept {
   return "?";
 }
 
+std::string_view to_token(Led led) noexcept {
+  switch (led) {
+    case Led::kOff: return "off";
+    case Led::kOn: return "on";
+    case Led::kBlinkSlow: return "blink-slow";
+    case Led::kBlinkFast: return "blink-fast";
+    case Led::kBlink1Hz: return "blink-1hz";
+  }
+  return "?";
+}
+
 }  // namespace rs4sim::gridscan

@@ -31,5 +31,7 @@ struct LedInputs {
 
 [[nodiscard]] Leds leds_for(const LedInputs& in) noexcept;
 [[nodiscard]] std::string_view to_string(Led led) noexcept;
+// The API's and the event stream's word: "off", "on", "blink-slow", "blink-fast", "blink-1hz".
+[[nodiscard]] std::string_view to_token(Led led) noexcept;
 
 }  // namespace rs4sim::gridscan

@@ -20,7 +20,7 @@ bool is_part_number(const std::string& p) {
          std::ranges::all_of(p, [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
 }
 
-std::optional<std::string> validate_scene(const Options& o) {
+std::string validate_scene(const Options& o) {
   if (o.door_position && *o.door_position > o.elements) {
     return "door position " + std::to_string(*o.door_position) + " outside 0.." +
            std::to_string(o.elements);
@@ -29,12 +29,12 @@ std::optional<std::string> validate_scene(const Options& o) {
     return "blocked elements beyond element " + std::to_string(o.elements);
   }
   if (o.soiling > 3) return "soiling level " + std::to_string(o.soiling) + " outside 0..3";
-  return std::nullopt;
+  return {};
 }
 
 }  // namespace
 
-std::optional<std::string> Options::validate() const {
+std::string Options::validate() const {
   if (elements < kMinElements || elements > kMaxElements) {
     return "elements " + std::to_string(elements) + " outside 12..60";
   }

@@ -42,7 +42,7 @@ struct Options {
   std::uint16_t alignment_value = 1000;
 
   // Empty when usable, else what is wrong, e.g. "elements 61 outside 12..60".
-  [[nodiscard]] std::optional<std::string> validate() const;
+  [[nodiscard]] std::string validate() const;
   [[nodiscard]] stream::Duration cycle_time() const;
   [[nodiscard]] stream::Duration idle_gap() const;
 };

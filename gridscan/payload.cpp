@@ -80,4 +80,18 @@ Payload encode_u16_le(std::uint16_t v) {
   return p;
 }
 
+std::string_view to_token(CommMode m) noexcept {
+  switch (m) {
+    case CommMode::kPolling: return "polling";
+    case CommMode::kFullStreaming: return "full-streaming";
+    case CommMode::kReducedStreaming: return "reduced-streaming";
+    case CommMode::kStandBy: return "stand-by";
+  }
+  return "?";
+}
+
+std::string_view to_token(Configuration c) noexcept {
+  return c == Configuration::kStatic ? "static" : "blanking";
+}
+
 }  // namespace rs4sim::gridscan

@@ -23,6 +23,11 @@ enum class CommMode : std::uint8_t {
 // Config: Get current ([GridScan manual §9.2.4]); the operating mode of the curtain.
 enum class Configuration : std::uint8_t { kStatic = 0x55, kBlanking = 0xAA };
 
+// The API's, the CLI's and the event stream's words: "polling", "full-streaming",
+// "reduced-streaming", "stand-by"; "static", "blanking".
+[[nodiscard]] std::string_view to_token(CommMode m) noexcept;
+[[nodiscard]] std::string_view to_token(Configuration c) noexcept;
+
 // Config: Allow change, bits 0..1.
 enum class AllowChange : std::uint8_t { kAllowed = 0, kNotInStandBy = 1, kWindowOver = 2 };
 

@@ -8,10 +8,21 @@
 
 #include <cstdint>
 #include <optional>
+#include <string_view>
 
 namespace rs4sim::metron {
 
 enum class OssdFunction : std::uint8_t { kEnabled, kDisabled, kStandby };
+
+// "enabled", "disabled", "standby" (the API's word).
+[[nodiscard]] constexpr std::string_view to_token(OssdFunction f) noexcept {
+  switch (f) {
+    case OssdFunction::kEnabled: return "enabled";
+    case OssdFunction::kDisabled: return "disabled";
+    case OssdFunction::kStandby: return "standby";
+  }
+  return "?";
+}
 
 struct SlaveState {
   OssdFunction ossd = OssdFunction::kEnabled;

@@ -88,17 +88,16 @@ class DeviceTarget final : public Rs4Target {
   PcAdapterHook pc_adapter_hook_;
 };
 
-// Rs4Target for an RS-485 device's run (rs4sim run --device gridscan|metron|polaris --grpc):
-// no RS4, only the event source, so that Observation.StreamEvents carries the device's
+// The RunTarget of an RS-485 device's run (rs4sim run --device gridscan|metron|polaris
+// --grpc): no RS4, only the event source, so that Observation.StreamEvents carries the device's
 // changes (its watcher, rpc/items_watcher.h) with the same timer as DeviceTarget; the
 // Observation RPCs for an RS4 answer FAILED_PRECONDITION naming the device's own service.
-class LineDeviceTarget final : public Rs4Target {
+class LineDeviceTarget final : public RunTarget {
  public:
   // `kind`: "gridscan", "metron", "polaris". Starts the poll timer as DeviceTarget does.
   LineDeviceTarget(std::string kind, std::unique_ptr<Watcher> watcher, const dp::Clock& clock,
                    boost::asio::io_context& io);
   [[nodiscard]] std::vector<std::uint8_t> addresses() const override { return {address_}; }
-  rs4::device::Rs4Device* device(std::uint8_t) override { return nullptr; }
   [[nodiscard]] dp::TimePoint now() const override { return clock_.now(); }
   [[nodiscard]] bool simulated() const override { return false; }
   bool run_until(const std::function<bool()>& done, dp::Duration) override { return done(); }

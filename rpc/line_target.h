@@ -15,7 +15,7 @@
 // Everything runs on the loop thread (through the Executor), as every core call does.
 
 #include "rpc/event_hub.h"
-#include "rpc/rs4_target.h"
+#include "rpc/run_target.h"
 #include "stream/memory_line.h"
 
 #include <cstddef>
@@ -41,8 +41,8 @@ class SimulatedLine {
   void start() { line_.start(); }
 
   struct Exchanged {
-    stream::TimePoint sent{};     // the request's first bit left the harness
-    stream::TimePoint arrived{};  // its last bit reached the device
+    stream::TimePoint sent{};                // the request's first bit left the harness
+    stream::TimePoint arrived{};             // its last bit reached the device
     std::optional<stream::LineFrame> reply;  // nullopt: none within the timeout
   };
   Exchanged exchange(std::span<const std::uint8_t> request, stream::Duration timeout);
@@ -69,13 +69,12 @@ class SimulatedLine {
   std::optional<stream::LineFrame> reply_;
 };
 
-// Rs4Target of a simulated RS-485 run: no RS4, the manual clock moved by SimTime, the hub
+// The RunTarget of a simulated RS-485 run: no RS4, the manual clock moved by SimTime, the hub
 // watching the device and polled after every call that moves the time.
-class SimulatedLineTarget final : public Rs4Target {
+class SimulatedLineTarget final : public RunTarget {
  public:
   SimulatedLineTarget(std::string kind, std::unique_ptr<Watcher> watcher, SimulatedLine& line);
   [[nodiscard]] std::vector<std::uint8_t> addresses() const override { return {address_}; }
-  rs4::device::Rs4Device* device(std::uint8_t) override { return nullptr; }
   [[nodiscard]] dp::TimePoint now() const override { return line_.now(); }
   [[nodiscard]] bool simulated() const override { return true; }
   bool run_until(const std::function<bool()>& done, dp::Duration limit) override;

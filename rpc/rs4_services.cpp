@@ -114,33 +114,6 @@ std::optional<scanner::Fault> to_fault(v1::Fault f) {
   }
 }
 
-// A narrow obstacle of three beams inside the field the request names, in the active pair
-// (docs/rpc.md "ViolateField"); nullopt when that pair has no such field.
-std::optional<scanner::RawContour> field_violation(const scanner::FieldPair& pair, bool warning) {
-  std::optional<std::size_t> best;
-  std::uint16_t best_mm = 0;
-  for (std::size_t s = 0; s < scanner::kSegmentCount; ++s) {
-    const std::uint16_t p = pair.protective_mm[s];
-    const std::uint16_t w = pair.warning_mm[s];
-    const std::uint16_t room = warning ? (w > p ? static_cast<std::uint16_t>(w - p) : 0) : p;
-    if (room > best_mm) {
-      best_mm = room;
-      best = s;
-    }
-  }
-  if (!best || best_mm < 20) return std::nullopt;
-  scanner::RawContour raw{std::vector<std::uint16_t>(scanner::kSegmentCount, scanner::kNoEchoMm)};
-  const std::size_t first = *best == 0 ? 0 : *best - 1;
-  const std::size_t last = std::min(*best + 1, scanner::kSegmentCount - 1);
-  for (std::size_t s = first; s <= last; ++s) {
-    const std::uint16_t p = pair.protective_mm[s];
-    const std::uint16_t w = pair.warning_mm[s];
-    if (warning && w > p + 10) raw.mm[s] = static_cast<std::uint16_t>(p + (w - p) / 2);
-    if (!warning && p > 10) raw.mm[s] = static_cast<std::uint16_t>(p / 2);
-  }
-  return raw;
-}
-
 }  // namespace
 
 grpc::Status DeviceService::ListDevices(grpc::ServerContext*, const v1::ListDevicesRequest*,
@@ -206,7 +179,7 @@ grpc::Status DeviceService::ViolateField(grpc::ServerContext*, const v1::Violate
     if (pair < 1 || pair > scanner::kFieldPairCount) {
       return failed_precondition("STATE", subject, "no field pair is active (RS4 not measuring)");
     }
-    auto raw = field_violation(d.scanner().parameters().pairs[pair - 1U], warning);
+    auto raw = scanner::field_violation(d.scanner().parameters().pairs[pair - 1U], warning);
     if (!raw) {
       return failed_precondition(
           "PARAMETERS", subject,
@@ -421,11 +394,11 @@ grpc::Status ObservationService::GetState(grpc::ServerContext*, const v1::Statio
                                           v1::DeviceState* out) {
   return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint now) {
     fill_state(d, static_cast<std::uint8_t>(in->address()), now, *out);
-    if (!c_.target.plc_view(static_cast<std::uint8_t>(in->address()), *out->mutable_plc())) {
+    Rs4Target& rs4s = *c_.target.rs4s();  // a device was found: the run has RS4s
+    if (!rs4s.plc_view(static_cast<std::uint8_t>(in->address()), *out->mutable_plc())) {
       out->clear_plc();
     }
-    if (!c_.target.link_timing(static_cast<std::uint8_t>(in->address()),
-                               *out->mutable_link_timing())) {
+    if (!rs4s.link_timing(static_cast<std::uint8_t>(in->address()), *out->mutable_link_timing())) {
       out->clear_link_timing();
     }
     return grpc::Status::OK;
@@ -521,8 +494,7 @@ grpc::Status SimTimeService::RunUntil(grpc::ServerContext* context, const v1::Ru
   }
 }
 
-std::vector<std::shared_ptr<grpc::Service>> rs4_service_set(Rs4Target& target,
-                                                            Executor& executor) {
+std::vector<std::shared_ptr<grpc::Service>> rs4_service_set(Rs4Target& target, Executor& executor) {
   const Rs4Context c{target, executor};
   return {std::make_shared<DeviceService>(c), std::make_shared<ObservationService>(c),
           std::make_shared<FaultsService>(c), std::make_shared<SimTimeService>(c)};

@@ -1,5 +1,6 @@
 #pragma once
-// The rs4sim.v1 services of an RS4 run (docs/rpc.md): Device, Observation, SimTime.
+// The rs4sim.v1 services of an RS4 run (docs/rpc.md): Device, Observation, Faults, SimTime
+// (Observation's event stream and SimTime serve every run).
 // Requests are checked on the gRPC thread (INVALID_ARGUMENT with the field), then run on
 // the loop through the Executor; no core is touched from a gRPC thread.
 
@@ -17,6 +18,7 @@ namespace rs4sim::rpc {
 struct Rs4Context {
   Rs4Target& target;
   Executor& executor;
+  operator RunContext() const { return {target, executor}; }  // NOLINT: an RS4 run is a run
 };
 
 class DeviceService final : public v1::Device::Service {
@@ -63,7 +65,9 @@ class DeviceService final : public v1::Device::Service {
 
 class ObservationService final : public v1::Observation::Service {
  public:
-  explicit ObservationService(Rs4Context context) : c_(context) {}
+  // A run without RS4s (a byte line's) serves the event stream only; its GetState and
+  // GetContour name the device's own service.
+  explicit ObservationService(RunContext context) : c_(context) {}
   grpc::Status GetState(grpc::ServerContext*, const v1::StationRequest* in,
                         v1::DeviceState* out) override;
   grpc::Status GetContour(grpc::ServerContext*, const v1::StationRequest* in,
@@ -73,7 +77,7 @@ class ObservationService final : public v1::Observation::Service {
                             grpc::ServerWriter<v1::Event>* out) override;
 
  private:
-  Rs4Context c_;
+  RunContext c_;
 };
 
 class FaultsService final : public v1::Faults::Service {
@@ -97,7 +101,7 @@ class FaultsService final : public v1::Faults::Service {
 
 class SimTimeService final : public v1::SimTime::Service {
  public:
-  explicit SimTimeService(Rs4Context context) : c_(context) {}
+  explicit SimTimeService(RunContext context) : c_(context) {}
   grpc::Status Now(grpc::ServerContext*, const v1::Empty*, v1::TimeResponse* out) override;
   grpc::Status Advance(grpc::ServerContext*, const v1::AdvanceRequest* in,
                        v1::TimeResponse* out) override;
@@ -105,11 +109,10 @@ class SimTimeService final : public v1::SimTime::Service {
                         v1::RunUntilResponse* out) override;
 
  private:
-  Rs4Context c_;
+  RunContext c_;
 };
 
 // Device, Observation, Faults and SimTime over `target`: the services of a run with RS4s.
-std::vector<std::shared_ptr<grpc::Service>> rs4_service_set(Rs4Target& target,
-                                                            Executor& executor);
+std::vector<std::shared_ptr<grpc::Service>> rs4_service_set(Rs4Target& target, Executor& executor);
 
 }  // namespace rs4sim::rpc

@@ -1,10 +1,10 @@
 #pragma once
-// What the RS4 services need from the running process (rs4sim run / demo / a test): the
-// devices by station address and the clock. Every call is made on the loop thread
-// (through rpc::Executor), so the cores see one thread only.
+// What the RS4 services need from the running process (rs4sim run / demo / a test) beyond
+// the run itself (run_target.h): the RS4s by station address, their PC adapter, their link
+// timing and PLC side. Every call is made on the loop thread (through rpc::Executor), so the
+// cores see one thread only.
 
-#include "dp/link/memory_bus.h"
-#include "dp/time/clock.h"
+#include "rpc/run_target.h"
 #include "rs4/device/rs4_device.h"
 #include "rs4sim/v1/rs4.pb.h"
 
@@ -15,34 +15,12 @@
 
 namespace rs4sim::rpc {
 
-class EventHub;
-
-class Rs4Target {
+class Rs4Target : public RunTarget {
  public:
-  virtual ~Rs4Target() = default;
-  [[nodiscard]] virtual std::vector<std::uint8_t> addresses() const = 0;
-  // nullptr for an unknown station.
+  // nullptr for an unknown station, or one that is not an RS4.
   virtual rs4::device::Rs4Device* device(std::uint8_t address) = 0;
-  [[nodiscard]] virtual dp::TimePoint now() const = 0;
-  // True when the run is on the manual clock: time moves only through run_until.
-  [[nodiscard]] virtual bool simulated() const = 0;
-  // Simulated runs: advances time, checking `done` after every bus event, until it holds
-  // or `limit` passed; returns done().
-  virtual bool run_until(const std::function<bool()>& done, dp::Duration limit) = 0;
-  // The simulated bus for bus faults; nullptr on a real link.
-  virtual dp::link::MemoryBus* bus() = 0;
-  // Runs `f` on the loop after `delay` (simulated runs: advances time by `delay` first).
-  virtual void after(dp::Duration delay, std::function<void()> f) = 0;
-  // What the run's devices are: "rs4", or the RS-485 device of a LineDeviceTarget.
-  [[nodiscard]] virtual std::string kind() const { return "rs4"; }
-  // A station of the run that is not an RS4, as the RS4 calls name it ("a GSD station
-  // (rs4sim.v1.GsdStations)"); empty when the run has no other station at `address`.
-  [[nodiscard]] virtual std::string other_station(std::uint8_t address) const {
-    (void)address;
-    return {};
-  }
-  // The source of Observation.StreamEvents (rpc/event_hub.h); nullptr = no event stream.
-  virtual EventHub* events() { return nullptr; }
+  [[nodiscard]] std::string kind() const override { return "rs4"; }
+  Rs4Target* rs4s() final { return this; }
   // The reed contact of the PC adapter (Device.SetPcAdapter). A process that serves the RS4's
   // RS232 port routes it through the port, which opens and closes with it.
   virtual void set_pc_adapter(rs4::device::Rs4Device& device, bool attached, dp::TimePoint now) {

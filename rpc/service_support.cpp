@@ -9,7 +9,7 @@
 namespace rs4sim::rpc {
 namespace {
 
-std::string station_list(const Rs4Target& target) {
+std::string station_list(const RunTarget& target) {
   std::string out;
   for (const auto a : target.addresses()) out += (out.empty() ? "" : ", ") + std::to_string(a);
   return out;
@@ -17,7 +17,7 @@ std::string station_list(const Rs4Target& target) {
 
 }  // namespace
 
-grpc::Status unknown_station(const Rs4Target& target, std::uint32_t address) {
+grpc::Status unknown_station(const RunTarget& target, std::uint32_t address) {
   if (target.kind() != "rs4") {
     const auto kind = target.kind();
     const auto here = target.addresses();
@@ -31,12 +31,10 @@ grpc::Status unknown_station(const Rs4Target& target, std::uint32_t address) {
   }
   const std::string rs4s = station_list(target);
   if (address < 256) {
-    if (const auto what = target.other_station(static_cast<std::uint8_t>(address));
-        !what.empty()) {
+    if (const auto what = target.other_station(static_cast<std::uint8_t>(address)); !what.empty()) {
       return failed_precondition(
           "DEVICE_KIND", "address " + std::to_string(address),
-          what + ", not an RS4 (" +
-              (rs4s.empty() ? "this run has none" : "RS4s: " + rs4s) + ")");
+          what + ", not an RS4 (" + (rs4s.empty() ? "this run has none" : "RS4s: " + rs4s) + ")");
     }
   }
   return not_found("no RS4 at station " + std::to_string(address) + " (" +
@@ -58,6 +56,17 @@ grpc::Status on_device(const Rs4Context& c, std::uint32_t address, const DeviceF
     result = fn(*device, c.target.now());
     if (auto* hub = c.target.events()) hub->poll(c.target.now());  // the change, at once
   });
+  return result;
+}
+
+grpc::Status on_device(const RunContext& c, std::uint32_t address, const DeviceFn& fn) {
+  if (auto* rs4s = c.target.rs4s()) return on_device(Rs4Context{*rs4s, c.executor}, address, fn);
+  if (address > 126) {
+    return invalid_argument("address",
+                            "station address " + std::to_string(address) + " outside 0..126");
+  }
+  grpc::Status result;
+  c.executor.run([&] { result = unknown_station(c.target, address); });
   return result;
 }
 

@@ -16,9 +16,11 @@ using DeviceFn = std::function<grpc::Status(rs4::device::Rs4Device&, dp::TimePoi
 // Checks the address (INVALID_ARGUMENT), then runs `fn` with the device on the loop
 // (NOT_FOUND for an unknown station).
 // NOT_FOUND naming the stations there are.
-grpc::Status unknown_station(const Rs4Target& target, std::uint32_t address);
+grpc::Status unknown_station(const RunTarget& target, std::uint32_t address);
 
 grpc::Status on_device(const Rs4Context& c, std::uint32_t address, const DeviceFn& fn);
+// The same on any run: a run without RS4s answers as unknown_station does.
+grpc::Status on_device(const RunContext& c, std::uint32_t address, const DeviceFn& fn);
 
 // FAILED_PRECONDITION: the call needs the manual clock (SimTime) or the simulated bus.
 grpc::Status needs_simulated_clock();

@@ -115,7 +115,7 @@ class Demo {
   }
 
   stream::ManualClock clock_;
-  gridscan::GridScanDevice device_{gridscan::Options{}};
+  gridscan::Device device_{gridscan::Options{}};
   stream::MemoryLine line_{clock_, device_};
   std::vector<Bytes> arrived_;
   bool started_ = false;

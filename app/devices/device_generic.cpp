@@ -103,7 +103,7 @@ class GsdInstance final : public DeviceInstance {
     const dp::Clock& clock = c.clock;
     GsdServiceContext g{c.executor, {&station_}, [hub, &clock] { hub->poll(clock.now()); }};
     return {std::make_shared<GsdStationsService>(std::move(g)),
-            std::make_shared<rpc::ObservationService>(rpc::Rs4Context{*target_, c.executor})};
+            std::make_shared<rpc::ObservationService>(rpc::RunContext{*target_, c.executor})};
   }
   void stop_services() override {
     if (target_) target_->stop();
@@ -118,9 +118,8 @@ class GsdInstance final : public DeviceInstance {
   void print_status(std::ostream& out, const dp::link::StationCounters& c) const override {
     out << "slave " << int(station_.address()) << ": state "
         << dp::slave::to_string(station_.slave().state()) << ", data exchanges "
-        << station_.application().exchanges() << ", telegrams received " << c.received
-        << ", sent " << c.sent << ", malformed " << c.malformed << ", link errors "
-        << c.send_errors;
+        << station_.application().exchanges() << ", telegrams received " << c.received << ", sent "
+        << c.sent << ", malformed " << c.malformed << ", link errors " << c.send_errors;
     if (!station_.application().prm_fault().empty()) {
       out << ", Set_Prm refused: " << station_.application().prm_fault();
     }

@@ -6,13 +6,13 @@
 //   rs4sim run --device gridscan --link pty --elements 22 --mode blanking --door 10 --blocked 3
 //   rs4sim run --device gridscan --link memory --grpc 127.0.0.1:50051   (the simulated clock:
 //              SimTime, GridScan.Exchange/Receive/PowerCycle, docs/gridscan.md)
-#include "app/runtime/usage_error.h"
 #include "app/devices/device_options.h"
 #include "app/devices/device_registry.h"
 #include "app/devices/line_run.h"
+#include "app/runtime/usage_error.h"
 #include "gridscan/device.h"
 #include "rpc/device_target.h"
-#include "rpc/line_services.h"
+#include "rpc/gridscan_service.h"
 #include "rpc/rs4_services.h"
 
 #include <chrono>
@@ -48,25 +48,21 @@ gridscan::Options gridscan_options(const DeviceOptions& o) {
   if (o.blocked) {
     for (const int e : *o.blocked) g.blocked |= std::uint64_t{1} << static_cast<unsigned>(e - 1);
   }
-  if (const auto why = g.validate()) throw UsageError("gridscan: " + *why);
+  if (const auto why = g.validate(); !why.empty()) throw UsageError("gridscan: " + why);
   return g;
 }
 
-std::string mode_name(gridscan::Configuration c) {
-  return c == gridscan::Configuration::kStatic ? "static" : "blanking";
-}
-
 // The status line at the end of a run.
-void print_line_status(std::ostream& out, const gridscan::GridScanDevice& d, const stream::ByteCounters& c) {
-const auto& k = d.counters();
-  out << "gridscan: frames " << k.frames << ", answered " << k.answered
-      << " (communication tests " << k.comm_tests << "), streamed " << k.streamed << ", dropped "
-      << k.dropped() << " (truncated " << k.truncated << ", oversized " << k.oversized
-      << ", sync " << k.bad_sync << ", CRC " << k.bad_crc << ", SeqCnt " << k.bad_seq << ", ID "
-      << k.unknown_id << ", direction " << k.direction_bit << ", busy " << k.busy
-      << ", not ready " << k.not_ready << "), restarts " << k.restarts << ", bytes received "
-      << c.bytes_received << ", sent " << c.bytes_sent << ", link errors " << c.link_errors
-      << std::endl;
+void print_line_status(std::ostream& out, const gridscan::Device& d,
+                       const stream::ByteCounters& c) {
+  const auto& k = d.counters();
+  out << "gridscan: frames " << k.frames << ", answered " << k.answered << " (communication tests "
+      << k.comm_tests << "), streamed " << k.streamed << ", dropped " << k.dropped()
+      << " (truncated " << k.truncated << ", oversized " << k.oversized << ", sync " << k.bad_sync
+      << ", CRC " << k.bad_crc << ", SeqCnt " << k.bad_seq << ", ID " << k.unknown_id
+      << ", direction " << k.direction_bit << ", busy " << k.busy << ", not ready " << k.not_ready
+      << "), restarts " << k.restarts << ", bytes received " << c.bytes_received << ", sent "
+      << c.bytes_sent << ", link errors " << c.link_errors << std::endl;
 }
 
 class GridScanInstance final : public DeviceInstance {
@@ -87,7 +83,7 @@ class GridScanInstance final : public DeviceInstance {
     const auto cycle_us =
         std::chrono::duration_cast<std::chrono::microseconds>(options_.cycle_time()).count();
     return "GridScan/Pro SI, RC (" + std::to_string(options_.elements) + " elements, " +
-           mode_name(device_.configuration()) + " mode, " +
+           std::string(gridscan::to_token(device_.configuration())) + " mode, " +
            stream::to_string(device_.line_settings()) + ", t_CYCLE " +
            std::to_string(cycle_us / 1000) + "." + std::to_string(cycle_us % 1000 / 100) +
            " ms; SIGUSR1 power-cycles it, SIGUSR2 switches it off)";
@@ -104,7 +100,7 @@ class GridScanInstance final : public DeviceInstance {
     tap_.set_hub(target_->events(), kAddress);
     const rpc::LineContext line{c.executor, c.clock, kAddress, tap_, target_->events()};
     return {std::make_shared<rpc::GridScanService>(line, device_),
-            std::make_shared<rpc::ObservationService>(rpc::Rs4Context{*target_, c.executor})};
+            std::make_shared<rpc::ObservationService>(rpc::RunContext{*target_, c.executor})};
   }
   void stop_services() override {
     if (target_) target_->stop();
@@ -113,7 +109,7 @@ class GridScanInstance final : public DeviceInstance {
  private:
   static constexpr std::uint8_t kAddress = 0;
   gridscan::Options options_;
-  gridscan::GridScanDevice device_;
+  gridscan::Device device_;
   rpc::TappedByteDevice tap_{device_};
   std::unique_ptr<rpc::LineDeviceTarget> target_;
 };
@@ -145,7 +141,7 @@ class GridScanSegment final : public SimulatedSegment {
 
  private:
   static constexpr std::uint8_t kAddress = 0;
-  gridscan::GridScanDevice device_;
+  gridscan::Device device_;
   LineRun run_{"gridscan", kAddress, device_};
 };
 

@@ -1,5 +1,5 @@
 // Device entry `metron`: the virtual ReeR METRON measuring light curtain on RS-485
-// (metron/metron_device.h, docs/metron.md), on pty, serial or UDP. Slave line mode at
+// (metron/device.h, docs/metron.md), on pty, serial or UDP. Slave line mode at
 // 19200 8E1 by default; `--mode` switches to standard line mode with its reporting mode
 // ([METRON manual "Serial line management"], metron/mode_spec.h).
 //
@@ -7,14 +7,14 @@
 //   rs4sim run --device metron --link pty --node 5 --mode slave,input=enable-line
 //   rs4sim run --device metron --link pty --mode periodical,hex,separator,checksum,period=250
 //   rs4sim run --device metron --link memory --grpc 127.0.0.1:50051   (the simulated clock)
-#include "app/runtime/usage_error.h"
 #include "app/devices/device_options.h"
 #include "app/devices/device_registry.h"
 #include "app/devices/line_run.h"
-#include "metron/metron_device.h"
+#include "app/runtime/usage_error.h"
+#include "metron/device.h"
 #include "metron/mode_spec.h"
 #include "rpc/device_target.h"
-#include "rpc/line_services.h"
+#include "rpc/metron_service.h"
 #include "rpc/rs4_services.h"
 
 #include <ostream>
@@ -60,7 +60,8 @@ metron::Options metron_options(const DeviceOptions& o) {
 }
 
 // The status line at the end of a run.
-void print_line_status(std::ostream& out, const metron::MetronDevice& device_, const stream::ByteCounters& c) {
+void print_line_status(std::ostream& out, const metron::Device& device_,
+                       const stream::ByteCounters& c) {
   const auto k = device_.counters();
   out << "metron: messages " << k.messages << ", executed " << k.executed << ", frames sent "
       << k.frames_sent << ", E1..E5 " << k.errors[0] << "/" << k.errors[1] << "/" << k.errors[2]
@@ -104,14 +105,14 @@ class MetronInstance final : public DeviceInstance {
     tap_.set_hub(target_->events(), address);
     const rpc::LineContext line{c.executor, c.clock, address, tap_, target_->events()};
     return {std::make_shared<rpc::MetronService>(line, device_),
-            std::make_shared<rpc::ObservationService>(rpc::Rs4Context{*target_, c.executor})};
+            std::make_shared<rpc::ObservationService>(rpc::RunContext{*target_, c.executor})};
   }
   void stop_services() override {
     if (target_) target_->stop();
   }
 
  private:
-  metron::MetronDevice device_;
+  metron::Device device_;
   rpc::TappedByteDevice tap_{device_};
   std::unique_ptr<rpc::LineDeviceTarget> target_;
 };
@@ -149,7 +150,7 @@ class MetronSegment final : public SimulatedSegment {
   }
 
  private:
-  metron::MetronDevice device_;
+  metron::Device device_;
   std::uint8_t address_ = device_.options().node_enabled ? device_.options().node : std::uint8_t{0};
   LineRun run_{"metron", address_, device_};
 };

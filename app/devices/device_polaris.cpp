@@ -8,13 +8,13 @@
 //              --baud 19200 --blocked 9-13,25-34
 //   --mode: a data mode (485MB | FL1 | FL4 | FL10), optionally followed by comma-separated
 //           words: slave | master, direct | reverse, object | hole
-#include "app/runtime/usage_error.h"
 #include "app/devices/device_options.h"
 #include "app/devices/device_registry.h"
 #include "app/devices/line_run.h"
+#include "app/runtime/usage_error.h"
 #include "polaris/device.h"
 #include "rpc/device_target.h"
-#include "rpc/line_services.h"
+#include "rpc/polaris_service.h"
 #include "rpc/rs4_services.h"
 
 #include <ostream>
@@ -77,15 +77,16 @@ polaris::Options polaris_options(const DeviceOptions& o) {
 }
 
 // The status line at the end of a run.
-void print_line_status(std::ostream& out, const polaris::Device& device_, const stream::ByteCounters& c) {
+void print_line_status(std::ostream& out, const polaris::Device& device_,
+                       const stream::ByteCounters& c) {
   const auto& k = device_.counters();
   out << "polaris: requests " << k.requests << ", CRC errors " << k.crc_errors << ", too short "
       << k.too_short << ", oversized " << k.oversized << ", broadcasts " << k.broadcasts
       << ", other addresses " << k.foreign_address << ", bad function " << k.bad_function
-      << ", bad request " << k.bad_request << ", bad start " << k.bad_start
-      << ", exceptions sent " << k.exceptions_sent << ", frames sent " << k.frames_sent
-      << ", bytes received " << c.bytes_received << ", sent " << c.bytes_sent << ", link errors "
-      << c.link_errors << std::endl;
+      << ", bad request " << k.bad_request << ", bad start " << k.bad_start << ", exceptions sent "
+      << k.exceptions_sent << ", frames sent " << k.frames_sent << ", bytes received "
+      << c.bytes_received << ", sent " << c.bytes_sent << ", link errors " << c.link_errors
+      << std::endl;
 }
 
 class PolarisInstance final : public DeviceInstance {
@@ -121,7 +122,7 @@ class PolarisInstance final : public DeviceInstance {
     tap_.set_hub(target_->events(), address);
     const rpc::LineContext line{c.executor, c.clock, address, tap_, target_->events()};
     return {std::make_shared<rpc::PolarisService>(line, device_),
-            std::make_shared<rpc::ObservationService>(rpc::Rs4Context{*target_, c.executor})};
+            std::make_shared<rpc::ObservationService>(rpc::RunContext{*target_, c.executor})};
   }
   void stop_services() override {
     if (target_) target_->stop();

@@ -29,9 +29,9 @@ ServiceList LineRun::services(const ServiceContext& c, std::unique_ptr<rpc::Watc
   target_ = std::make_unique<rpc::SimulatedLineTarget>(kind_, std::move(watcher), line_);
   tap_.set_hub(target_->events(), address_);
   const rpc::LineContext line{c.executor, clock_, address_, tap_, target_->events(), &line_};
-  const rpc::Rs4Context rs4{*target_, c.executor};
-  ServiceList out{make(line), std::make_shared<rpc::ObservationService>(rs4),
-                  std::make_shared<rpc::SimTimeService>(rs4)};
+  const rpc::RunContext run{*target_, c.executor};
+  ServiceList out{make(line), std::make_shared<rpc::ObservationService>(run),
+                  std::make_shared<rpc::SimTimeService>(run)};
   start();
   return out;
 }

@@ -8,7 +8,7 @@
 // (docs/rpc.md "Exchange").
 
 #include "app/devices/device_registry.h"
-#include "rpc/line_services.h"
+#include "rpc/line_service_support.h"
 #include "rpc/line_target.h"
 #include "rpc/tapped_byte_device.h"
 

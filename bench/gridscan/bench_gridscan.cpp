@@ -23,7 +23,7 @@ using namespace std::chrono_literals;
 void run_requests(benchmark::State& state, CommandId id, unsigned elements) {
   Options o;
   o.elements = elements;
-  GridScanDevice d(o);
+  Device d(o);
   stream::TimePoint t{1h};
   d.on_time(t);
   t += 2s;
@@ -63,7 +63,7 @@ BENCHMARK(BM_RequestCommTest);
 // answer's wire time, all on the manual clock.
 void BM_RequestCommTestOnMemoryLine(benchmark::State& state) {
   stream::ManualClock clock;
-  GridScanDevice d{Options{}};
+  Device d{Options{}};
   stream::MemoryLine line(clock, d);
   line.start();
   line.run_for(2s);
@@ -98,12 +98,12 @@ void BM_MemoryPerDevice(benchmark::State& state) {
   const auto n = static_cast<std::size_t>(state.range(0));
   double per_device = 0;
   for (auto _ : state) {
-    std::vector<std::unique_ptr<GridScanDevice>> devices;
+    std::vector<std::unique_ptr<Device>> devices;
     devices.reserve(n);
     const std::size_t after_reserve = heap_in_use();
     stream::TimePoint t{1h};
     for (std::size_t i = 0; i < n; ++i) {
-      devices.push_back(std::make_unique<GridScanDevice>(Options{}));
+      devices.push_back(std::make_unique<Device>(Options{}));
       devices.back()->on_time(t);
       devices.back()->on_time(t + 2s);  // ready
       while (devices.back()->take_transmit()) {
@@ -113,7 +113,7 @@ void BM_MemoryPerDevice(benchmark::State& state) {
     per_device = static_cast<double>(heap) / static_cast<double>(n);
     benchmark::DoNotOptimize(devices.data());
   }
-  state.counters["sizeof_GridScanDevice_B"] = static_cast<double>(sizeof(GridScanDevice));
+  state.counters["sizeof_Device_B"] = static_cast<double>(sizeof(Device));
   state.counters["heap_per_device_B"] = per_device;  // incl. the object itself
 }
 BENCHMARK(BM_MemoryPerDevice)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);

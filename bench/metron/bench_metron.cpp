@@ -3,7 +3,7 @@
 // standard-mode report composed and sent, and memory per device instance (sizeof + heap).
 // Figures are reported, never asserted.
 #include "bench/heap_in_use.h"
-#include "metron/metron_device.h"
+#include "metron/device.h"
 #include "metron/standard_report.h"
 
 #include <benchmark/benchmark.h>
@@ -21,7 +21,7 @@ using Bytes = std::vector<std::uint8_t>;
 
 // One request/reply: the reply is due 12.3 ms after the request (Equation 3).
 void run_requests(benchmark::State& state, Options o, const Bytes& request) {
-  MetronDevice d(o);
+  Device d(o);
   stream::TimePoint t{1h};
   d.on_time(t);
   std::size_t reply_bytes = 0;
@@ -66,7 +66,7 @@ void BM_StandardReportPerCycle(benchmark::State& state) {
   o.separator = true;
   o.checksum = true;
   o.baud = 115200;
-  MetronDevice d(o);
+  Device d(o);
   stream::TimePoint t{1h};
   d.on_time(t);
   for (auto _ : state) {
@@ -84,12 +84,12 @@ void BM_MemoryPerMetron(benchmark::State& state) {
   double per_device = 0;
   for (auto _ : state) {
     const std::size_t before = heap_in_use();
-    std::vector<std::unique_ptr<MetronDevice>> devices;
+    std::vector<std::unique_ptr<Device>> devices;
     stream::TimePoint t{1h};
     for (std::size_t i = 0; i < n; ++i) {
       Options o;
       o.beams = 255;
-      devices.push_back(std::make_unique<MetronDevice>(o));
+      devices.push_back(std::make_unique<Device>(o));
       devices.back()->on_time(t);
       devices.back()->on_bytes(Bytes{0x02, 0x02, 0x09, 0x00, 0xF6}, t);
       devices.back()->on_time(t + 30ms);
@@ -98,7 +98,7 @@ void BM_MemoryPerMetron(benchmark::State& state) {
     per_device = static_cast<double>(heap_in_use() - before) / static_cast<double>(n);
     benchmark::DoNotOptimize(devices.data());
   }
-  state.counters["sizeof_MetronDevice_B"] = static_cast<double>(sizeof(MetronDevice));
+  state.counters["sizeof_Device_B"] = static_cast<double>(sizeof(Device));
   state.counters["heap_per_device_B"] = per_device;  // incl. the object itself
 }
 BENCHMARK(BM_MemoryPerMetron)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);

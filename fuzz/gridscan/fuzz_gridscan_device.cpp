@@ -52,7 +52,7 @@ struct Harness {
   }
 
   rs4sim::stream::ManualClock clock;
-  GridScanDevice device;
+  Device device;
   std::uint8_t next_seq = 2;  // the SeqCnt the next request must carry
   std::uint8_t asked = 0;     // the ID of the last scripted request
 };

@@ -1,4 +1,4 @@
-// libFuzzer target: the METRON in slave line mode (metron::MetronDevice with its receiver and
+// libFuzzer target: the METRON in slave line mode (metron::Device with its receiver and
 // command handler) driven by a fuzzed script of byte chunks, parity errors, time steps and
 // scene changes. The first byte picks no-node or node 5. Invariants: no crash or hang;
 // every frame the device sends is a well-formed reply [METRON manual "No node", "With

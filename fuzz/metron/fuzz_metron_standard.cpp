@@ -1,4 +1,4 @@
-// libFuzzer target: the METRON in standard line mode (metron::MetronDevice with the
+// libFuzzer target: the METRON in standard line mode (metron::Device with the
 // reporting scheduler and the report encoder). The first two bytes pick the format,
 // separator, checksum, reporting mode, input type and period; then a script of request
 // bytes, input toggles, scene changes and time steps. Invariants: no crash or hang; every

@@ -1,8 +1,8 @@
 #pragma once
-// The two METRON fuzz targets' driver: a MetronDevice on a manual clock, on_time() at every
+// The two METRON fuzz targets' driver: a Device on a manual clock, on_time() at every
 // deadline up to a target, each transmitted frame handed to a check with its time.
 
-#include "metron/metron_device.h"
+#include "metron/device.h"
 #include "stream/clock.h"
 
 #include <cstdint>
@@ -20,7 +20,7 @@ class Harness {
     advance(stream::Duration{});
   }
 
-  MetronDevice& device() { return device_; }
+  Device& device() { return device_; }
   [[nodiscard]] stream::TimePoint now() const { return clock_.now(); }
 
   void drain() {
@@ -44,7 +44,7 @@ class Harness {
 
  private:
   stream::ManualClock clock_;
-  MetronDevice device_;
+  Device device_;
   Check check_;
 };
 

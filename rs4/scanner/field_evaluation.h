@@ -6,6 +6,9 @@
 
 #include "rs4/scanner/geometry.h"
 #include "rs4/scanner/parameter_set.h"
+#include "rs4/scanner/scene.h"
+
+#include <optional>
 
 namespace rs4sim::rs4::scanner {
 
@@ -17,5 +20,12 @@ struct FieldFlags {
 };
 
 FieldFlags evaluate(const Contour& contour, const FieldPair& pair) noexcept;
+
+// A narrow obstacle that violates the pair's protective field (warning = false) or only its
+// warning field (warning = true): three beams around the segment with the most room, at half
+// the protective distance, or halfway between the protective and the warning boundary
+// (Device.ViolateField, docs/rpc.md). nullopt when the pair has no such field, or less than
+// 20 mm of it anywhere.
+std::optional<RawContour> field_violation(const FieldPair& pair, bool warning);
 
 }  // namespace rs4sim::rs4::scanner

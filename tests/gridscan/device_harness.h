@@ -59,7 +59,7 @@ class DeviceHarness {
   }
 
   stream::ManualClock clock;
-  GridScanDevice device;
+  Device device;
   std::vector<Sent> sent;
 };
 

@@ -68,7 +68,7 @@ TEST(GridScanLeds, Table2And3) {
 
 TEST(GridScanOptions, ValidateNamesTheProblem) {
   Options o;
-  EXPECT_EQ(o.validate(), std::nullopt);
+  EXPECT_EQ(o.validate(), "");
   EXPECT_EQ(o.cycle_time(), 30ms);
   o.elements = 60;
   EXPECT_EQ(o.cycle_time(), 62ms);

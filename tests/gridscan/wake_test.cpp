@@ -9,7 +9,7 @@ namespace {
 
 struct Line {
   stream::ManualClock clock;
-  GridScanDevice device{Options{}};
+  Device device{Options{}};
   stream::MemoryLine line{clock, device};
   stream::TimePoint t0 = clock.now();
   Line() {
@@ -34,13 +34,13 @@ TEST(GridScanWake, APowerCycleFromOutsideSendsThePowerUpMessageAtOnce) {
 TEST(GridScanWake, ALateAnswerClearedFromOutsideLeavesAtTheCycleEnd) {
   Line l;
   const auto ready = l.t0 + 1700ms;
-  FaultControls late;
+  Faults late;
   late.transmit.late = 20ms;
   l.device.set_faults(late);
   l.line.run_until(ready + 5ms);
   l.line.write(request(2, CommandId::kInfoCommunicationTest));
   l.line.run_until(ready + 15ms);  // cut by its idle gap: answered at ready + 30 ms + 20 ms
-  l.device.set_faults(FaultControls{});  // cleared before the cycle end: at ready + 30 ms
+  l.device.set_faults(Faults{});  // cleared before the cycle end: at ready + 30 ms
   l.line.run_until(ready + 60ms);
   const auto got = l.line.take_received();
   ASSERT_EQ(got.size(), 1U);
@@ -53,7 +53,7 @@ TEST(GridScanWake, AFaultInjectedFromOutsideDelaysThePendingAnswer) {
   l.line.run_until(ready + 5ms);
   l.line.write(request(2, CommandId::kInfoCommunicationTest));
   l.line.run_until(ready + 15ms);
-  FaultControls late;
+  Faults late;
   late.transmit.late = 20ms;
   l.device.set_faults(late);
   l.line.run_until(ready + 49ms);

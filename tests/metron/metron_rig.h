@@ -2,7 +2,7 @@
 // A METRON device on a manual clock: send bytes, advance time deadline by deadline, and
 // collect what the device transmits with the time it went out.
 
-#include "metron/metron_device.h"
+#include "metron/device.h"
 #include "stream/clock.h"
 
 #include <gtest/gtest.h>
@@ -61,7 +61,7 @@ class Rig {
     return s;
   }
 
-  MetronDevice& device() { return device_; }
+  Device& device() { return device_; }
   stream::ManualClock& clock() { return clock_; }
 
  private:
@@ -70,7 +70,7 @@ class Rig {
   }
 
   stream::ManualClock clock_;
-  MetronDevice device_;
+  Device device_;
   std::vector<Sent> sent_;
 };
 

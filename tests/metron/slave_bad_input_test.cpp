@@ -55,7 +55,7 @@ TEST(MetronBadInput, ParityErrorInTheMiddle) {
 // device rejects the whole message; without the hook the port would drop the byte (IGNPAR)
 // and the device would wait for it, then count a truncated message instead.
 TEST(MetronBadInput, AParityErrorTheLineReportsRejectsTheWholeMessage) {
-  MetronDevice device(slave_options());
+  Device device(slave_options());
   stream::ManualClock clock;
   stream::MemoryLine line(clock, device);
   line.start();

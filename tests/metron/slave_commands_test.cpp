@@ -157,7 +157,7 @@ TEST(MetronSlave, LineIs19200_8E1) {
   auto o = slave_options();
   o.baud = 9600;
   o.parity = stream::Parity::kNone;
-  MetronDevice d(o);
+  Device d(o);
   EXPECT_EQ(d.line_settings(), (stream::LineSettings{19200, 8, stream::Parity::kEven, 1}));
 }
 

@@ -140,7 +140,7 @@ TEST(MetronStandard, LineSettingsAreConfigured) {
   auto o = standard(ReportingMode::kContinuous);
   o.baud = 9600;
   o.parity = stream::Parity::kNone;
-  MetronDevice d(o);
+  Device d(o);
   EXPECT_EQ(d.line_settings(), (stream::LineSettings{9600, 8, stream::Parity::kNone, 1}));
 }
 

@@ -2,7 +2,7 @@
 // synchronism) move neither its deadline nor its transmit queue, so they need no wake; on a
 // stream::MemoryLine that reads the deadline only after its calls and on a wake, the next
 // report goes out at its scan cycle with the new scene.
-#include "metron/metron_device.h"
+#include "metron/device.h"
 #include "stream/memory_line.h"
 
 #include <gtest/gtest.h>
@@ -20,7 +20,7 @@ TEST(MetronWake, ASceneChangeFromOutsideIsInTheNextReportOnTime) {
   o.line_mode = LineMode::kStandard;
   o.reporting_mode = ReportingMode::kContinuous;
   stream::ManualClock clock;
-  MetronDevice device(o);
+  Device device(o);
   stream::MemoryLine line(clock, device);
   const auto t0 = clock.now();
   line.start();

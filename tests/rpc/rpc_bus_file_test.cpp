@@ -143,10 +143,15 @@ TEST_F(RpcBusFileTest, InputsReachTheWireInTheNextDataExchange) {
   req.add_addresses(5);
   req.set_telegrams(true);
   auto reader = observation_->StreamEvents(&ctx, req);
+  // The snapshot's first item says the stream has subscribed: only then may time move, or
+  // the telegrams could go by before it (and the read below wait for ever).
+  v1::Event e;
+  ASSERT_TRUE(reader->Read(&e));
+  ASSERT_TRUE(e.has_state()) << "the snapshot comes first";
+  EXPECT_EQ(e.state().from(), "");
   std::thread mover([this] { (void)advance(50); });
   const Bytes expected{0x68, 0x08, 0x08, 0x68, 0x01, 0x05, 0x08, 0x00, 0x11, 0x22, 0x33, 0x44};
   bool seen = false;
-  v1::Event e;
   while (!seen && reader->Read(&e)) {
     if (!e.has_telegram() || e.telegram().direction() != v1::DIRECTION_FROM_STATION) continue;
     const std::string& w = e.telegram().frame();

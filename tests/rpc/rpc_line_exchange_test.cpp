@@ -10,8 +10,10 @@
 #include "google/rpc/error_details.pb.h"
 #include "google/rpc/status.pb.h"
 #include "rpc/executor.h"
-#include "rpc/line_services.h"
+#include "rpc/gridscan_service.h"
 #include "rpc/line_target.h"
+#include "rpc/metron_service.h"
+#include "rpc/polaris_service.h"
 #include "rpc/rs4_services.h"
 #include "rpc/server.h"
 #include "rpc/service_support.h"
@@ -58,11 +60,11 @@ class SimulatedRun {
  public:
   SimulatedRun(Device& device, const std::string& kind, std::uint8_t address,
                std::unique_ptr<Watcher> watcher)
-      : tap_(device), line_(clock_, tap_),
+      : tap_(device),
+        line_(clock_, tap_),
         target_(std::make_unique<SimulatedLineTarget>(kind, std::move(watcher), line_)),
-        service_(LineContext{executor_, clock_, address, tap_, target_->events(), &line_},
-                 device),
-        time_(Rs4Context{*target_, executor_}) {
+        service_(LineContext{executor_, clock_, address, tap_, target_->events(), &line_}, device),
+        time_(RunContext{*target_, executor_}) {
     tap_.set_hub(target_->events(), address);
     t0_ = clock_.now();
     line_.start();
@@ -139,20 +141,20 @@ v1::ReceiveResponse receive(Stub& stub, std::uint32_t address, std::uint32_t wai
 // ==== GridScan ==============================================================================
 
 constexpr int kGridScanBaud = 115200;
-const Bytes kPowerUpVersion{0x43, 0x45, 0x44, 0x45,        // sync
-                            0x00, 0xA0,                    // SeqCnt 0, Info: Get version
-                            0x30, 0x31, 0x2E, 0x30, 0x32,  // SW "01.02"
-                            0x30, 0x33, 0x2E, 0x30, 0x34,  // HW "03.04"
-                            0x33, 0x7F, 0x67, 0x4B};       // CRC
+const Bytes kPowerUpVersion{0x43, 0x45, 0x44, 0x45,              // sync
+                            0x00, 0xA0,                          // SeqCnt 0, Info: Get version
+                            0x30, 0x31, 0x2E, 0x30, 0x32,        // SW "01.02"
+                            0x30, 0x33, 0x2E, 0x30, 0x34,        // HW "03.04"
+                            0x33, 0x7F, 0x67, 0x4B};             // CRC
 const Bytes kPowerUpReduced{0x43, 0x45, 0x44, 0x45, 0x01, 0xB0,  // SeqCnt 1, Reduced state
                             0x16, 0x00,                          // door 22 open, clear, clean
                             0x69, 0x78, 0x27, 0x24};             // CRC
 
 class GridScanOnTheSimulatedClock : public ::testing::Test {
  protected:
-  gridscan::GridScanDevice device_{gridscan::Options{}};
-  SimulatedRun<gridscan::GridScanDevice, GridScanService> run_{
-      device_, "gridscan", 0, gridscan_watcher(0, device_)};
+  gridscan::Device device_{gridscan::Options{}};
+  SimulatedRun<gridscan::Device, GridScanService> run_{device_, "gridscan", 0,
+                                                       gridscan_watcher(0, device_)};
   std::unique_ptr<v1::GridScan::Stub> stub_ = v1::GridScan::NewStub(run_.channel());
 
   // The power-up messages from `at`: Get version at once, Reduced state 1700 ms later.
@@ -218,8 +220,8 @@ TEST_F(GridScanOnTheSimulatedClock, PowerCycleRunsThePowerUpAgain) {
   const std::int64_t on = before + 500'000'000;
   EXPECT_EQ(run_.now_ns(), on);
   // Before ready (1700 ms after power-on), a request is dropped: no answer.
-  const auto early = exchange(*stub_, 0, {0x43, 0x45, 0x44, 0x45, 0x02, 0x23, 0xE2, 0x4B, 0x01, 0x70},
-                              100);
+  const auto early =
+      exchange(*stub_, 0, {0x43, 0x45, 0x44, 0x45, 0x02, 0x23, 0xE2, 0x4B, 0x01, 0x70}, 100);
   EXPECT_FALSE(early.answered());
   EXPECT_EQ(device_.counters().not_ready, 1U);
   // The power-up messages again, SeqCnt from 0: the manual's exchange works once more.
@@ -239,8 +241,8 @@ TEST_F(GridScanOnTheSimulatedClock, PoweredOffIsSilentUntilOn) {
   v1::Empty none;
   ASSERT_TRUE(stub_->SetPower(&off_ctx, off, &none).ok());
   EXPECT_EQ(receive(*stub_, 0, 5000).frames_size(), 0);
-  EXPECT_FALSE(exchange(*stub_, 0, {0x43, 0x45, 0x44, 0x45, 0x02, 0x23, 0xE2, 0x4B, 0x01, 0x70})
-                   .answered());
+  EXPECT_FALSE(
+      exchange(*stub_, 0, {0x43, 0x45, 0x44, 0x45, 0x02, 0x23, 0xE2, 0x4B, 0x01, 0x70}).answered());
   grpc::ClientContext on_ctx;
   v1::SetPowerRequest on;
   on.set_on(true);
@@ -274,8 +276,8 @@ TEST_F(GridScanOnTheSimulatedClock, BadExchangesAreRefusedWithTheField) {
 constexpr int kPolarisBaud = 19200;
 constexpr std::int64_t kT35At19200 = 1'822'917;  // 3.5 characters of 10 bit times: 35 bits
 
-polaris::Options polaris_options(polaris::Family family, std::uint16_t beams, polaris::DataMode mode,
-                                 std::uint8_t address) {
+polaris::Options polaris_options(polaris::Family family, std::uint16_t beams,
+                                 polaris::DataMode mode, std::uint8_t address) {
   polaris::Options o;
   o.family = family;
   o.beams = beams;
@@ -329,33 +331,38 @@ using polaris::Family;
 INSTANTIATE_TEST_SUITE_P(
     Manual, PolarisOnTheSimulatedClock,
     ::testing::Values(
-        PolarisCase{"P1_P2", polaris_options(Family::kPli02, 127, DataMode::k485Mb, 3),
+        PolarisCase{"P1_P2",
+                    polaris_options(Family::kPli02, 127, DataMode::k485Mb, 3),
                     beams({{72, 79}, {87, 92}}),
                     {0x03, 0x03, 0x20, 0x00, 0x00, 0x08, 0x4E, 0x2E},
-                    {0x03, 0x03, 0x10, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0x80,
-                     0x7F, 0xF0, 0x3F, 0xFF, 0xFF, 0xFF, 0xFF, 0x1B, 0xD3}},
-        PolarisCase{"P3_P4", polaris_options(Family::kPl10, 40, DataMode::kFl4, 1),
+                    {0x03, 0x03, 0x10, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF,
+                     0x80, 0x7F, 0xF0, 0x3F, 0xFF, 0xFF, 0xFF, 0xFF, 0x1B, 0xD3}},
+        PolarisCase{"P3_P4",
+                    polaris_options(Family::kPl10, 40, DataMode::kFl4, 1),
                     beams({{9, 13}, {25, 34}}),
                     {0x01, 0x03, 0x20, 0x00, 0x00, 0x0A, 0xCE, 0x0D},
-                    {0x01, 0x03, 0x14, 0x00, 0x09, 0x00, 0x0D, 0x00, 0x19, 0x00, 0x22, 0x00,
-                     0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x09, 0x00, 0x22, 0x19,
-                     0x5A}},
-        PolarisCase{"P3_P5", polaris_options(Family::kPli02, 127, DataMode::kFl4, 1),
+                    {0x01, 0x03, 0x14, 0x00, 0x09, 0x00, 0x0D, 0x00, 0x19, 0x00, 0x22, 0x00, 0x00,
+                     0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x09, 0x00, 0x22, 0x19, 0x5A}},
+        PolarisCase{"P3_P5",
+                    polaris_options(Family::kPli02, 127, DataMode::kFl4, 1),
                     beams({{68, 71}, {85, 93}}),
                     {0x01, 0x03, 0x20, 0x00, 0x00, 0x0A, 0xCE, 0x0D},
-                    {0x01, 0x03, 0x14, 0x00, 0x44, 0x00, 0x47, 0x00, 0x55, 0x00, 0x5D, 0x00,
-                     0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x44, 0x00, 0x5D, 0x03,
-                     0xB3}},
-        PolarisCase{"P6", polaris_options(Family::kPl10, 40, DataMode::kFl1, 1),
+                    {0x01, 0x03, 0x14, 0x00, 0x44, 0x00, 0x47, 0x00, 0x55, 0x00, 0x5D, 0x00, 0x00,
+                     0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x44, 0x00, 0x5D, 0x03, 0xB3}},
+        PolarisCase{"P6",
+                    polaris_options(Family::kPl10, 40, DataMode::kFl1, 1),
                     beams({{9, 13}, {25, 34}}),
                     {0x01, 0x04, 0x20, 0x00, 0x00, 0x02, 0x7A, 0x0B},
                     {0x01, 0x04, 0x04, 0x00, 0x09, 0x00, 0x22, 0xAB, 0x9F}},
-        PolarisCase{"P7", polaris_options(Family::kPl10, 40, DataMode::kFl1, 1),
+        PolarisCase{"P7",
+                    polaris_options(Family::kPl10, 40, DataMode::kFl1, 1),
                     beams({{9, 13}, {25, 34}}),
                     {0x01, 0x03, 0x20, 0x00, 0x00, 0x02, 0xCF, 0xCB},
                     {0x01, 0x03, 0x04, 0x00, 0x09, 0x00, 0x22, 0xAA, 0x28}},
         // P1 with its CRC's bytes swapped -> P8: FC 3|0x80, exception 07.
-        PolarisCase{"P8", polaris_options(Family::kPli02, 127, DataMode::k485Mb, 3), {},
+        PolarisCase{"P8",
+                    polaris_options(Family::kPli02, 127, DataMode::k485Mb, 3),
+                    {},
                     {0x03, 0x03, 0x20, 0x00, 0x00, 0x08, 0x2E, 0x4E},
                     {0x03, 0x83, 0x07, 0xA1, 0x32}}),
     [](const ::testing::TestParamInfo<PolarisCase>& i) { return std::string(i.param.name); });
@@ -387,9 +394,8 @@ class MetronOnTheSimulatedClock : public ::testing::TestWithParam<MetronCase> {}
 
 TEST_P(MetronOnTheSimulatedClock, TheErrorAnswers) {
   const auto& c = GetParam();
-  metron::MetronDevice device(metron::Options{});
-  SimulatedRun<metron::MetronDevice, MetronService> run(device, "metron", 0,
-                                                        metron_watcher(0, device));
+  metron::Device device(metron::Options{});
+  SimulatedRun<metron::Device, MetronService> run(device, "metron", 0, metron_watcher(0, device));
   const auto stub = v1::Metron::NewStub(run.channel());
   const auto x = exchange(*stub, 0, c.request);
   ASSERT_TRUE(x.answered());
@@ -410,16 +416,16 @@ INSTANTIATE_TEST_SUITE_P(
         MetronCase{"E1_wrong_checksum", {0x02, 0x01, 0x0C, 0xF4}, {0x02, 0x01, 0xE1, 0x1E}},
         MetronCase{"E2_wrong_length", {0x02, 0x02, 0x0C, 0x00, 0xF3}, {0x02, 0x01, 0xE2, 0x1D}},
         MetronCase{"E2_no_such_command", {0x02, 0x01, 0x77, 0x88}, {0x02, 0x01, 0xE2, 0x1D}},
-        MetronCase{"E3_stop_ossd_without_start", {0x02, 0x01, 0x06, 0xF9},
-                   {0x02, 0x01, 0xE3, 0x1C}},
-        MetronCase{"E5_stop_measurement_without_start", {0x02, 0x01, 0x08, 0xF7},
+        MetronCase{
+            "E3_stop_ossd_without_start", {0x02, 0x01, 0x06, 0xF9}, {0x02, 0x01, 0xE3, 0x1C}},
+        MetronCase{"E5_stop_measurement_without_start",
+                   {0x02, 0x01, 0x08, 0xF7},
                    {0x02, 0x01, 0xE5, 0x1A}}),
     [](const ::testing::TestParamInfo<MetronCase>& i) { return std::string(i.param.name); });
 
 TEST(MetronOnTheSimulatedClockSync, E4WhenTheSynchronismIsLost) {
-  metron::MetronDevice device(metron::Options{});
-  SimulatedRun<metron::MetronDevice, MetronService> run(device, "metron", 0,
-                                                        metron_watcher(0, device));
+  metron::Device device(metron::Options{});
+  SimulatedRun<metron::Device, MetronService> run(device, "metron", 0, metron_watcher(0, device));
   const auto stub = v1::Metron::NewStub(run.channel());
   grpc::ClientContext ctx;
   v1::SetSynchronisedRequest in;  // false
@@ -441,9 +447,8 @@ namespace {
 TEST(MetronInputOnTheSimulatedClock, SlaveModeWithAnInputType) {
   metron::Options o;
   o.input_type = metron::InputType::kEnableLine;
-  metron::MetronDevice device(o);
-  SimulatedRun<metron::MetronDevice, MetronService> run(device, "metron", 0,
-                                                        metron_watcher(0, device));
+  metron::Device device(o);
+  SimulatedRun<metron::Device, MetronService> run(device, "metron", 0, metron_watcher(0, device));
   const auto stub = v1::Metron::NewStub(run.channel());
   // #11: beams 24, input type 1, node 0, scan cycle 10 ms, t_response 20 ms; checksum: the
   // bytes from the length on sum to 0 mod 256.
@@ -459,11 +464,10 @@ TEST(MetronInputOnTheSimulatedClock, StandardModeReportsWhileTheInputIsHigh) {
   o.line_mode = metron::LineMode::kStandard;
   o.reporting_mode = metron::ReportingMode::kInputRelated;
   o.input_type = metron::InputType::kEnableLine;
-  metron::MetronDevice device(o);
+  metron::Device device(o);
   const std::vector<std::uint16_t> blocked{9, 10, 11, 12, 13};
   device.set_interrupted(blocked);
-  SimulatedRun<metron::MetronDevice, MetronService> run(device, "metron", 0,
-                                                        metron_watcher(0, device));
+  SimulatedRun<metron::Device, MetronService> run(device, "metron", 0, metron_watcher(0, device));
   const auto stub = v1::Metron::NewStub(run.channel());
   EXPECT_EQ(receive(*stub, 0, 100).frames_size(), 0);
   const auto set_input = [&](bool high) {

@@ -3,11 +3,13 @@
 // `rs4sim run --device X --grpc`. The link is this test: it hands the core bytes and time on
 // the loop (the manual clock) and takes what it sends, through the same tap as the run.
 #include "google/rpc/error_details.pb.h"
-#include "http_front.h"
 #include "google/rpc/status.pb.h"
+#include "http_front.h"
 #include "rpc/device_target.h"
 #include "rpc/executor.h"
-#include "rpc/line_services.h"
+#include "rpc/gridscan_service.h"
+#include "rpc/metron_service.h"
+#include "rpc/polaris_service.h"
 #include "rpc/rs4_services.h"
 #include "rpc/server.h"
 #include "rs4sim/v1/devices.grpc.pb.h"
@@ -26,9 +28,9 @@
 #include <vector>
 
 // A use of a field marked [deprecated = true], on purpose (its old clients still work).
-#define RS4SIM_DEPRECATED_FIELD(statement)                                   \
-  _Pragma("GCC diagnostic push")                                             \
-      _Pragma("GCC diagnostic ignored \"-Wdeprecated-declarations\"") statement; \
+#define RS4SIM_DEPRECATED_FIELD(statement)                                                       \
+  _Pragma("GCC diagnostic push") _Pragma("GCC diagnostic ignored \"-Wdeprecated-declarations\"") \
+      statement;                                                                                 \
   _Pragma("GCC diagnostic pop")
 
 namespace rs4sim::rpc {
@@ -58,7 +60,7 @@ class LineFixture : public ::testing::Test {
   }
   // Starts the loop and serves `service` beside the device's Observation service.
   void serve(grpc::Service& service) {
-    observation_ = std::make_unique<ObservationService>(Rs4Context{*target_, executor_});
+    observation_ = std::make_unique<ObservationService>(RunContext{*target_, executor_});
     loop_ = std::thread([this] { io_.run(); });
     server_ = std::make_unique<RpcServer>(
         ServerOptions{}, std::vector<grpc::Service*>{&service, observation_.get()});
@@ -349,7 +351,7 @@ class RpcGridScanTest : public LineFixture {
   }
 
   // 22 elements, blanking mode, door open.
-  gridscan::GridScanDevice device_{gridscan::Options{}};
+  gridscan::Device device_{gridscan::Options{}};
   TappedByteDevice tap_{device_};
   std::unique_ptr<GridScanService> service_;
   std::unique_ptr<v1::GridScan::Stub> stub_;
@@ -458,9 +460,9 @@ TEST_F(RpcGridScanTest, TheCurtainsOwnFailuresAreInjectedByNameAndElement) {
     v1::Empty e;
     return inject ? stub_->InjectFault(&ctx, req, &e) : stub_->ClearFault(&ctx, req, &e);
   };
-  for (const auto f : {v1::GRID_SCAN_FAULT_REPEAT_FRAMES, v1::GRID_SCAN_FAULT_INSERT_FRAMES,
-                       v1::GRID_SCAN_FAULT_TEST_IGNORED,
-                       v1::GRID_SCAN_FAULT_MODE_ACTIVATION_FAILS}) {
+  for (const auto f :
+       {v1::GRID_SCAN_FAULT_REPEAT_FRAMES, v1::GRID_SCAN_FAULT_INSERT_FRAMES,
+        v1::GRID_SCAN_FAULT_TEST_IGNORED, v1::GRID_SCAN_FAULT_MODE_ACTIVATION_FAILS}) {
     ASSERT_TRUE(fault(f, true).ok()) << f;
   }
   ASSERT_TRUE(block({3, 4}).ok());
@@ -492,9 +494,9 @@ TEST_F(RpcGridScanTest, TheCurtainsOwnFailuresAreInjectedByNameAndElement) {
     v1::Empty e;
     EXPECT_EQ(bad_field(stub_->InjectFault(&ctx, req, &e)), "elements");
   }
-  for (const auto f : {v1::GRID_SCAN_FAULT_REPEAT_FRAMES, v1::GRID_SCAN_FAULT_INSERT_FRAMES,
-                       v1::GRID_SCAN_FAULT_TEST_IGNORED,
-                       v1::GRID_SCAN_FAULT_MODE_ACTIVATION_FAILS}) {
+  for (const auto f :
+       {v1::GRID_SCAN_FAULT_REPEAT_FRAMES, v1::GRID_SCAN_FAULT_INSERT_FRAMES,
+        v1::GRID_SCAN_FAULT_TEST_IGNORED, v1::GRID_SCAN_FAULT_MODE_ACTIVATION_FAILS}) {
     ASSERT_TRUE(fault(f, false).ok()) << f;
   }
   EXPECT_TRUE(state().faults_present().empty());
@@ -583,7 +585,7 @@ class RpcMetronTest : public LineFixture {
     return inject ? stub_->InjectFault(&ctx, req, &e) : stub_->ClearFault(&ctx, req, &e);
   }
 
-  metron::MetronDevice device_{options()};
+  metron::Device device_{options()};
   TappedByteDevice tap_{device_};
   std::unique_ptr<MetronService> service_;
   std::unique_ptr<v1::Metron::Stub> stub_;
@@ -673,7 +675,7 @@ TEST(RpcMetronNoNodeTest, WrongNodeNeedsNodeMode) {
   auto work = boost::asio::make_work_guard(io);
   std::thread loop([&io] { io.run(); });
   AsioExecutor executor(io);
-  metron::MetronDevice device{metron::Options{}};
+  metron::Device device{metron::Options{}};
   TappedByteDevice tap(device);
   MetronService service(LineContext{executor, clock, 0, tap, nullptr}, device);
   RpcServer server(ServerOptions{}, {&service});
@@ -691,7 +693,6 @@ TEST(RpcMetronNoNodeTest, WrongNodeNeedsNodeMode) {
   loop.join();
 }
 
-
 // ==== the same services as JSON over HTTP (docs/http.md) ===================================
 
 TEST_F(RpcPolarisTest, JsonOverHttpIsTheSameService) {
@@ -701,7 +702,8 @@ TEST_F(RpcPolarisTest, JsonOverHttpIsTheSameService) {
   const auto got = h.call("rs4sim.v1.Polaris/GetState", R"({"address": 1})");
   ASSERT_EQ(got.status, 200u) << got.body;
   EXPECT_EQ(from_json<v1::PolarisState>(got.body).SerializeAsString(), state().SerializeAsString());
-  EXPECT_EQ(list(from_json<v1::PolarisState>(got.body).blocked()), (std::vector<std::uint32_t>{3, 4}));
+  EXPECT_EQ(list(from_json<v1::PolarisState>(got.body).blocked()),
+            (std::vector<std::uint32_t>{3, 4}));
   error_of(h.call("rs4sim.v1.Polaris/GetState", R"({"address": 2})"), 404, 5);
 }
 
@@ -709,7 +711,8 @@ TEST_F(RpcGridScanTest, JsonOverHttpIsTheSameService) {
   HttpFront h(io_, *server_);
   const auto got = h.call("rs4sim.v1.GridScan/GetState", R"({"address": 0})");
   ASSERT_EQ(got.status, 200u) << got.body;
-  EXPECT_EQ(from_json<v1::GridScanState>(got.body).SerializeAsString(), state().SerializeAsString());
+  EXPECT_EQ(from_json<v1::GridScanState>(got.body).SerializeAsString(),
+            state().SerializeAsString());
   error_of(h.call("rs4sim.v1.GridScan/SetSoiling", R"({"address": 0, "level": 4})"), 400, 3);
 }
 

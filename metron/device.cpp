@@ -1,4 +1,4 @@
-#include "metron/metron_device.h"
+#include "metron/device.h"
 
 #include "metron/slave_reply.h"
 
@@ -16,15 +16,15 @@ ReceiverConfig receiver_config(const Options& o) {
 
 }  // namespace
 
-MetronDevice::MetronDevice(Options options)
+Device::Device(Options options)
     : options_(std::move(options)),
       scene_(options_.beams),
       receiver_(receiver_config(options_)),
       standard_(options_) {}
 
-stream::LineSettings MetronDevice::line_settings() const { return metron::line_settings(options_); }
+stream::LineSettings Device::line_settings() const { return metron::line_settings(options_); }
 
-void MetronDevice::on_bytes(std::span<const std::uint8_t> bytes, stream::TimePoint now) {
+void Device::on_bytes(std::span<const std::uint8_t> bytes, stream::TimePoint now) {
   if (resetting(now)) {
     counters_.ignored_in_reset += bytes.size();
     return;
@@ -37,7 +37,7 @@ void MetronDevice::on_bytes(std::span<const std::uint8_t> bytes, stream::TimePoi
   process_messages(now);
 }
 
-void MetronDevice::on_byte_with_parity_error(std::uint8_t byte, stream::TimePoint now) {
+void Device::on_byte_with_parity_error(std::uint8_t byte, stream::TimePoint now) {
   if (resetting(now) || options_.line_mode == LineMode::kStandard) {
     on_bytes(std::span<const std::uint8_t>(&byte, 1), now);
     return;
@@ -47,7 +47,7 @@ void MetronDevice::on_byte_with_parity_error(std::uint8_t byte, stream::TimePoin
   process_messages(now);
 }
 
-void MetronDevice::on_time(stream::TimePoint now) {
+void Device::on_time(stream::TimePoint now) {
   if (!started_) {
     started_ = true;
     if (options_.line_mode == LineMode::kStandard) standard_.start(now);
@@ -62,7 +62,7 @@ void MetronDevice::on_time(stream::TimePoint now) {
   release(now);
 }
 
-void MetronDevice::process_messages(stream::TimePoint now) {
+void Device::process_messages(stream::TimePoint now) {
   while (auto m = receiver_.poll(now)) {
     const auto r = handle(*m, options_, scene_, state_);
     count(r);
@@ -70,7 +70,7 @@ void MetronDevice::process_messages(stream::TimePoint now) {
   }
 }
 
-void MetronDevice::react(const SlaveMessage& m, const Reaction& r, stream::TimePoint now) {
+void Device::react(const SlaveMessage& m, const Reaction& r, stream::TimePoint now) {
   if (r.reset) {
     ++counters_.resets;
     reset_until_ = now + options_.reset_time;
@@ -88,7 +88,7 @@ void MetronDevice::react(const SlaveMessage& m, const Reaction& r, stream::TimeP
   queue({due, std::move(bytes)});
 }
 
-void MetronDevice::count(const Reaction& r) {
+void Device::count(const Reaction& r) {
   switch (r.disposition) {
     case Disposition::kExecuted: ++counters_.executed; break;
     case Disposition::kErrorAnswer: break;
@@ -99,7 +99,7 @@ void MetronDevice::count(const Reaction& r) {
   if (r.error) ++counters_.errors[static_cast<std::size_t>(*r.error)];
 }
 
-void MetronDevice::queue(Outgoing frame) {
+void Device::queue(Outgoing frame) {
   auto& b = frame.bytes;
   if (faults_.bad_checksum && b.size() >= 2) {
     // slave reply: the last byte; standard report: the byte before End, if a checksum is sent
@@ -112,14 +112,14 @@ void MetronDevice::queue(Outgoing frame) {
   if (!pending_.schedule(std::move(b), frame.at, faults_.transmit)) ++counters_.suppressed;
 }
 
-void MetronDevice::release(stream::TimePoint now) {
+void Device::release(stream::TimePoint now) {
   while (auto frame = pending_.pop_due(now)) {
     transmit_.push_back(std::move(*frame));
     ++counters_.frames_sent;
   }
 }
 
-std::optional<stream::TimePoint> MetronDevice::next_deadline() const {
+std::optional<stream::TimePoint> Device::next_deadline() const {
   if (!started_) return stream::TimePoint{};
   std::optional<stream::TimePoint> d;
   const auto take = [&](std::optional<stream::TimePoint> t) {
@@ -131,43 +131,43 @@ std::optional<stream::TimePoint> MetronDevice::next_deadline() const {
   return d;
 }
 
-std::optional<std::vector<std::uint8_t>> MetronDevice::take_transmit() {
+std::optional<std::vector<std::uint8_t>> Device::take_transmit() {
   if (transmit_.empty()) return std::nullopt;
   auto f = std::move(transmit_.front());
   transmit_.pop_front();
   return f;
 }
 
-void MetronDevice::set_interrupted(std::span<const std::uint16_t> beams) {
+void Device::set_interrupted(std::span<const std::uint16_t> beams) {
   scene_.clear();
   for (const auto b : beams) scene_.set_interrupted(b, true);
   scene_changed();
 }
 
-void MetronDevice::set_beam(std::uint16_t beam, bool interrupted) {
+void Device::set_beam(std::uint16_t beam, bool interrupted) {
   scene_.set_interrupted(beam, interrupted);
   scene_changed();
 }
 
-void MetronDevice::set_input(bool high) {
+void Device::set_input(bool high) {
   scene_.set_input(high);
   standard_.on_input(high, scene_);
   scene_changed();
 }
 
-void MetronDevice::set_synchronised(bool synchronised) {
+void Device::set_synchronised(bool synchronised) {
   scene_.set_synchronised(synchronised);
   scene_changed();
 }
 
-void MetronDevice::scene_changed() {
+void Device::scene_changed() {
   state_.track(scene_);
   standard_.on_scene(scene_);
 }
 
-bool MetronDevice::ossd_on() const { return metron::ossd_on(state_, scene_); }
+bool Device::ossd_on() const { return metron::ossd_on(state_, scene_); }
 
-Counters MetronDevice::counters() const {
+Counters Device::counters() const {
   Counters c = counters_;
   const auto& r = receiver_.stats();
   c.messages = r.messages;

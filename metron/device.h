@@ -22,12 +22,12 @@
 
 namespace rs4sim::metron {
 
-class MetronDevice final : public stream::ByteDevice {
+class Device final : public stream::ByteDevice {
  public:
   // `options` must have passed validate().
-  explicit MetronDevice(Options options);
-  MetronDevice(const MetronDevice&) = delete;
-  MetronDevice& operator=(const MetronDevice&) = delete;
+  explicit Device(Options options);
+  Device(const Device&) = delete;
+  Device& operator=(const Device&) = delete;
 
   [[nodiscard]] stream::LineSettings line_settings() const override;
   void on_bytes(std::span<const std::uint8_t> bytes, stream::TimePoint now) override;

@@ -1,0 +1,220 @@
+#include "rpc/metron_service.h"
+
+#include "rpc/service_support.h"
+#include "rpc/status.h"
+
+#include <chrono>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace rs4sim::rpc {
+namespace {
+
+using line::check_delay;
+using line::exchange_on;
+using line::numbers;
+using line::on_line;
+using line::on_off;
+using line::ranges;
+using line::receive_on;
+using line::set_last_frame;
+using line::token_of;
+using line::whole_ms;
+
+std::vector<std::uint16_t> metron_blocked(const metron::Scene& s) {
+  std::vector<std::uint16_t> out;
+  for (std::uint16_t b = 1; b <= s.beams(); ++b) {
+    if (s.interrupted(b)) out.push_back(b);
+  }
+  return out;
+}
+
+// The deprecated delay_ms (late_ms's old name), read and written on purpose for old clients.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+std::uint32_t old_delay_ms(const v1::MetronFaultRequest& in) { return in.delay_ms(); }
+void set_old_delay_ms(v1::MetronState& out, std::uint32_t ms) { out.set_delay_ms(ms); }
+#pragma GCC diagnostic pop
+
+std::vector<std::string> metron_faults(const metron::Faults& f) {
+  std::vector<std::string> out;
+  if (f.transmit.silent) out.emplace_back("silent");
+  if (f.transmit.late.count() > 0) out.emplace_back("late");
+  if (f.bad_checksum) out.emplace_back("bad-checksum");
+  if (f.wrong_node) out.emplace_back("wrong-node");
+  if (f.truncate) out.emplace_back("truncate");
+  return out;
+}
+
+grpc::Status check_metron_address(std::uint32_t address) {
+  if (address == metron::kBroadcast) {
+    return invalid_argument("address",
+                            "255 is the broadcast address [METRON manual \"With node\"]; the "
+                            "curtain's is its node (0..254), or 0 without node mode");
+  }
+  return grpc::Status::OK;
+}
+
+}  // namespace
+
+grpc::Status MetronService::GetState(grpc::ServerContext*, const v1::LineDeviceRequest* in,
+                                     v1::MetronState* out) {
+  if (auto bad = check_metron_address(in->address()); !bad.ok()) return bad;
+  return on_line(
+      c_, "METRON", in->address(),
+      [&](dp::TimePoint now) {
+        const auto& o = d_.options();
+        const auto& scene = d_.scene();
+        out->set_address(c_.address);
+        out->set_line_mode(std::string(metron::to_string(o.line_mode)));
+        out->set_node_enabled(o.node_enabled);
+        out->set_beams(scene.beams());
+        for (const auto b : metron_blocked(scene)) out->add_blocked(b);
+        out->set_synchronised(scene.synchronised());
+        out->set_input_high(scene.input_high());
+        out->set_input_type(std::string(metron::to_string(d_.options().input_type)));
+        out->set_ossd(d_.ossd_on());
+        out->set_ossd_function(token_of(d_.slave_state().ossd));
+        out->set_first_interrupted(scene.measure(metron::Measurement::kFirstInterrupted));
+        out->set_last_interrupted(scene.measure(metron::Measurement::kLastInterrupted));
+        out->set_interrupted_count(scene.measure(metron::Measurement::kInterruptedCount));
+        for (const auto& f : metron_faults(d_.faults())) out->add_faults_present(f);
+        out->set_late_ms(whole_ms(d_.faults().transmit.late));
+        set_old_delay_ms(*out, out->late_ms());
+        const auto k = d_.counters();
+        auto* c = out->mutable_counters();
+        c->set_messages(k.messages);
+        c->set_executed(k.executed);
+        c->set_frames_sent(k.frames_sent);
+        for (const auto e : k.errors) c->add_errors(e);
+        c->set_parity_rejected(k.parity_rejected);
+        c->set_not_for_us(k.not_for_us);
+        c->set_broadcast_ignored(k.broadcast_ignored);
+        c->set_truncated(k.truncated);
+        c->set_too_long(k.too_long);
+        c->set_resets(k.resets);
+        c->set_reports(k.reports);
+        c->set_reports_dropped(k.reports_dropped);
+        c->set_suppressed(k.suppressed);
+        set_last_frame(c_.tap, *out->mutable_last_frame());
+        out->set_now_ns(to_ns(now));
+        return grpc::Status::OK;
+      },
+      false);
+}
+
+grpc::Status MetronService::SetBlocked(grpc::ServerContext*, const v1::SetBlockedRequest* in,
+                                       v1::Empty*) {
+  if (auto bad = check_metron_address(in->address()); !bad.ok()) return bad;
+  return on_line(
+      c_, "METRON", in->address(),
+      [&](dp::TimePoint) {
+        auto beams = numbers(*in, d_.scene().beams(), "beam");
+        if (auto* bad = std::get_if<grpc::Status>(&beams)) return *bad;
+        d_.set_interrupted(std::get<std::vector<std::uint16_t>>(beams));
+        return grpc::Status::OK;
+      },
+      true);
+}
+
+grpc::Status MetronService::SetSynchronised(grpc::ServerContext*,
+                                            const v1::SetSynchronisedRequest* in, v1::Empty*) {
+  if (auto bad = check_metron_address(in->address()); !bad.ok()) return bad;
+  return on_line(
+      c_, "METRON", in->address(),
+      [&](dp::TimePoint) {
+        d_.set_synchronised(in->synchronised());
+        return grpc::Status::OK;
+      },
+      true);
+}
+
+grpc::Status MetronService::SetInput(grpc::ServerContext*, const v1::SetInputRequest* in,
+                                     v1::Empty*) {
+  if (auto bad = check_metron_address(in->address()); !bad.ok()) return bad;
+  return on_line(
+      c_, "METRON", in->address(),
+      [&](dp::TimePoint) {
+        d_.set_input(in->high());
+        return grpc::Status::OK;
+      },
+      true);
+}
+
+grpc::Status MetronService::fault(const v1::MetronFaultRequest& in, bool inject) {
+  if (auto bad = check_metron_address(in.address()); !bad.ok()) return bad;
+  const auto which = in.fault();
+  if (which == v1::METRON_FAULT_UNSPECIFIED || !v1::MetronFault_IsValid(which)) {
+    return invalid_argument("fault", "a METRON_FAULT_* value is required");
+  }
+  // late_ms, or the deprecated delay_ms of older clients.
+  const std::uint32_t old_ms = old_delay_ms(in);
+  const bool old_name = in.late_ms() == 0 && old_ms != 0;
+  const std::uint32_t late_ms = old_name ? old_ms : in.late_ms();
+  if (in.late_ms() != 0 && old_ms != 0 && in.late_ms() != old_ms) {
+    return invalid_argument("delay_ms", "the deprecated delay_ms " + std::to_string(old_ms) +
+                                            " differs from late_ms " +
+                                            std::to_string(in.late_ms()) + "; give late_ms only");
+  }
+  if (inject && which == v1::METRON_FAULT_LATE) {
+    if (auto bad = check_delay(late_ms, old_name ? "delay_ms" : "late_ms"); !bad.ok()) return bad;
+  }
+  return on_line(
+      c_, "METRON", in.address(),
+      [&](dp::TimePoint) {
+        auto& f = d_.faults();
+        switch (which) {
+          case v1::METRON_FAULT_SILENT: f.transmit.silent = inject; break;
+          case v1::METRON_FAULT_LATE:
+            f.transmit.late =
+                inject ? stream::Duration(std::chrono::milliseconds(late_ms)) : stream::Duration{};
+            break;
+          case v1::METRON_FAULT_BAD_CHECKSUM: f.bad_checksum = inject; break;
+          case v1::METRON_FAULT_WRONG_NODE:
+            if (inject && !d_.options().node_enabled) {
+              return failed_precondition("MODE", "METRON " + std::to_string(c_.address),
+                                         "a wrong node needs node mode (rs4sim run --node N)");
+            }
+            f.wrong_node = inject;
+            break;
+          case v1::METRON_FAULT_TRUNCATE: f.truncate = inject; break;
+          default: break;
+        }
+        return grpc::Status::OK;
+      },
+      true);
+}
+
+grpc::Status MetronService::InjectFault(grpc::ServerContext*, const v1::MetronFaultRequest* in,
+                                        v1::Empty*) {
+  return fault(*in, true);
+}
+
+grpc::Status MetronService::ClearFault(grpc::ServerContext*, const v1::MetronFaultRequest* in,
+                                       v1::Empty*) {
+  return fault(*in, false);
+}
+
+grpc::Status MetronService::Exchange(grpc::ServerContext*, const v1::ExchangeRequest* in,
+                                     v1::ExchangeResponse* out) {
+  return exchange_on(c_, "metron", *in, *out);
+}
+
+grpc::Status MetronService::Receive(grpc::ServerContext*, const v1::ReceiveRequest* in,
+                                    v1::ReceiveResponse* out) {
+  return receive_on(c_, "metron", *in, *out);
+}
+
+std::unique_ptr<Watcher> metron_watcher(std::uint8_t address, const metron::Device& d) {
+  return std::make_unique<ItemsWatcher>(address, [&d](dp::TimePoint) {
+    return ItemsWatcher::Items{
+        {"ossd", on_off(d.ossd_on())},
+        {"ossd-function", token_of(d.slave_state().ossd)},
+        {"synchronised", on_off(d.scene().synchronised())},
+        {"beams", ranges(metron_blocked(d.scene()))},
+    };
+  });
+}
+
+}  // namespace rs4sim::rpc

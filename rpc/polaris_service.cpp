@@ -1,0 +1,163 @@
+#include "rpc/polaris_service.h"
+
+#include "rpc/service_support.h"
+#include "rpc/status.h"
+
+#include <chrono>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace rs4sim::rpc {
+namespace {
+
+using line::check_delay;
+using line::exchange_on;
+using line::numbers;
+using line::on_line;
+using line::on_off;
+using line::ranges;
+using line::receive_on;
+using line::set_last_frame;
+using line::whole_ms;
+
+std::vector<std::string> polaris_faults(const polaris::Faults& f) {
+  std::vector<std::string> out;
+  if (f.bad_crc) out.emplace_back("bad-crc");
+  if (f.transmit.silent) out.emplace_back("no-answer");
+  if (f.transmit.late.count() > 0) out.emplace_back("late");
+  return out;
+}
+
+grpc::Status check_modbus_address(std::uint32_t address) {
+  if (address == 0 || address > 247) {
+    return invalid_argument("address", std::to_string(address) +
+                                           " outside 1..247, the Modbus slave addresses "
+                                           "[Modbus serial line V1.02 §2.2]");
+  }
+  return grpc::Status::OK;
+}
+
+}  // namespace
+
+grpc::Status PolarisService::GetState(grpc::ServerContext*, const v1::LineDeviceRequest* in,
+                                      v1::PolarisState* out) {
+  if (auto bad = check_modbus_address(in->address()); !bad.ok()) return bad;
+  return on_line(
+      c_, "Polaris", in->address(),
+      [&](dp::TimePoint now) {
+        const auto& o = d_.options();
+        out->set_address(c_.address);
+        out->set_family(std::string(polaris::to_string(o.family)));
+        out->set_beams(o.beams);
+        out->set_data_mode(std::string(polaris::to_string(o.mode)));
+        out->set_role(o.role == polaris::Role::kSlave ? "slave" : "master");
+        for (const auto b : d_.interrupted()) out->add_blocked(b);
+        out->set_pn1(d_.pn1());
+        out->set_pn2(d_.pn2(now));
+        out->set_start_address(polaris::start_address(o));
+        for (const auto w : d_.data_block()) out->add_data_block(w);
+        for (const auto& obj : d_.objects()) {
+          auto* p = out->add_objects();
+          p->set_first(obj.first);
+          p->set_last(obj.last);
+        }
+        for (const auto& f : polaris_faults(d_.faults())) out->add_faults_present(f);
+        out->set_late_ms(whole_ms(d_.faults().transmit.late));
+        const auto& k = d_.counters();
+        auto* c = out->mutable_counters();
+        c->set_requests(k.requests);
+        c->set_crc_errors(k.crc_errors);
+        c->set_too_short(k.too_short);
+        c->set_oversized(k.oversized);
+        c->set_broadcasts(k.broadcasts);
+        c->set_foreign_address(k.foreign_address);
+        c->set_bad_function(k.bad_function);
+        c->set_bad_request(k.bad_request);
+        c->set_bad_start(k.bad_start);
+        c->set_answers_ignored(k.answers_ignored);
+        c->set_exceptions_sent(k.exceptions_sent);
+        c->set_frames_sent(k.frames_sent);
+        c->set_suppressed(k.suppressed);
+        set_last_frame(c_.tap, *out->mutable_last_frame());
+        out->set_now_ns(to_ns(now));
+        return grpc::Status::OK;
+      },
+      false);
+}
+
+grpc::Status PolarisService::SetBlocked(grpc::ServerContext*, const v1::SetBlockedRequest* in,
+                                        v1::Empty*) {
+  if (auto bad = check_modbus_address(in->address()); !bad.ok()) return bad;
+  return on_line(
+      c_, "Polaris", in->address(),
+      [&](dp::TimePoint now) {
+        auto beams = numbers(*in, d_.options().beams, "beam");
+        if (auto* bad = std::get_if<grpc::Status>(&beams)) return *bad;
+        if (const auto ec = d_.set_interrupted(std::get<std::vector<std::uint16_t>>(beams), now)) {
+          return invalid_argument("blocked", ec.message());
+        }
+        return grpc::Status::OK;
+      },
+      true);
+}
+
+grpc::Status PolarisService::fault(const v1::PolarisFaultRequest& in, bool inject) {
+  if (auto bad = check_modbus_address(in.address()); !bad.ok()) return bad;
+  const auto which = in.fault();
+  if (which == v1::POLARIS_FAULT_UNSPECIFIED || !v1::PolarisFault_IsValid(which)) {
+    return invalid_argument("fault", "a POLARIS_FAULT_* value is required");
+  }
+  if (inject && which == v1::POLARIS_FAULT_LATE) {
+    if (auto bad = check_delay(in.late_ms(), "late_ms"); !bad.ok()) return bad;
+  }
+  return on_line(
+      c_, "Polaris", in.address(),
+      [&](dp::TimePoint) {
+        auto f = d_.faults();
+        switch (which) {
+          case v1::POLARIS_FAULT_BAD_CRC: f.bad_crc = inject; break;
+          case v1::POLARIS_FAULT_SILENT: f.transmit.silent = inject; break;
+          case v1::POLARIS_FAULT_LATE:
+            f.transmit.late = inject ? stream::Duration(std::chrono::milliseconds(in.late_ms()))
+                                     : stream::Duration{};
+            break;
+          default: break;
+        }
+        d_.set_faults(f);
+        return grpc::Status::OK;
+      },
+      true);
+}
+
+grpc::Status PolarisService::InjectFault(grpc::ServerContext*, const v1::PolarisFaultRequest* in,
+                                         v1::Empty*) {
+  return fault(*in, true);
+}
+
+grpc::Status PolarisService::ClearFault(grpc::ServerContext*, const v1::PolarisFaultRequest* in,
+                                        v1::Empty*) {
+  return fault(*in, false);
+}
+
+grpc::Status PolarisService::Exchange(grpc::ServerContext*, const v1::ExchangeRequest* in,
+                                      v1::ExchangeResponse* out) {
+  return exchange_on(c_, "polaris", *in, *out);
+}
+
+grpc::Status PolarisService::Receive(grpc::ServerContext*, const v1::ReceiveRequest* in,
+                                     v1::ReceiveResponse* out) {
+  return receive_on(c_, "polaris", *in, *out);
+}
+
+std::unique_ptr<Watcher> polaris_watcher(std::uint8_t address, const polaris::Device& d) {
+  return std::make_unique<ItemsWatcher>(address, [&d](dp::TimePoint now) {
+    return ItemsWatcher::Items{
+        {"pn1", on_off(d.pn1())},
+        {"pn2", on_off(d.pn2(now))},
+        {"beams", ranges(d.interrupted())},
+    };
+  });
+}
+
+}  // namespace rs4sim::rpc

@@ -1,0 +1,42 @@
+#pragma once
+// rs4sim.v1.Polaris, the Optoscan Polaris service (devices.proto, docs/polaris.md, docs/rpc.md). A
+// request is checked on the gRPC thread (INVALID_ARGUMENT with the field), then runs on the loop
+// through the Executor; after a change the hub looks at the device at once (the core wakes
+// the link itself when its deadline or queue moved).
+
+#include "polaris/device.h"
+#include "rpc/items_watcher.h"
+#include "rpc/line_service_support.h"
+#include "rs4sim/v1/devices.grpc.pb.h"
+
+#include <cstdint>
+#include <memory>
+
+namespace rs4sim::rpc {
+
+class PolarisService final : public v1::Polaris::Service {
+ public:
+  PolarisService(LineContext context, polaris::Device& device) : c_(context), d_(device) {}
+  grpc::Status GetState(grpc::ServerContext*, const v1::LineDeviceRequest* in,
+                        v1::PolarisState* out) override;
+  grpc::Status SetBlocked(grpc::ServerContext*, const v1::SetBlockedRequest* in,
+                          v1::Empty*) override;
+  grpc::Status InjectFault(grpc::ServerContext*, const v1::PolarisFaultRequest* in,
+                           v1::Empty*) override;
+  grpc::Status ClearFault(grpc::ServerContext*, const v1::PolarisFaultRequest* in,
+                          v1::Empty*) override;
+  grpc::Status Exchange(grpc::ServerContext*, const v1::ExchangeRequest* in,
+                        v1::ExchangeResponse* out) override;
+  grpc::Status Receive(grpc::ServerContext*, const v1::ReceiveRequest* in,
+                       v1::ReceiveResponse* out) override;
+
+ private:
+  grpc::Status fault(const v1::PolarisFaultRequest& in, bool inject);
+  LineContext c_;
+  polaris::Device& d_;
+};
+
+// The event-stream watcher (StateChange.what in docs/rpc.md).
+std::unique_ptr<Watcher> polaris_watcher(std::uint8_t address, const polaris::Device& device);
+
+}  // namespace rs4sim::rpc
