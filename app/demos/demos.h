@@ -40,4 +40,9 @@ int run_generic_demo(RunSession& session, std::ostream& out, const DemoOptions& 
 // power-up messages, the communication test of [GridScan manual §10.3], a power cycle.
 int run_gridscan_demo(RunSession& session, std::ostream& out, const DemoOptions& options);
 
+// Polaris scenario: the barrier as Modbus RTU slave on the simulated line, the demo its
+// master: an empty barrier, two objects in FL4 with the hole between them (PN2 after the
+// filter's scans), a CRC error answered by exception 07, an unanswered broadcast.
+int run_polaris_demo(RunSession& session, std::ostream& out, const DemoOptions& options);
+
 }  // namespace rs4sim::app

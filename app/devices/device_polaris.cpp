@@ -188,7 +188,7 @@ DeviceEntry polaris_device_entry() {
       .validate = validate,
       .build = [](const DeviceOptions& o) { return std::make_unique<PolarisInstance>(o); },
       .simulate = [](const DeviceOptions& o) { return std::make_unique<PolarisSegment>(o); },
-      .demo = {},
+      .demo = run_polaris_demo,
       .byte_device = true,
   };
 }
