@@ -81,9 +81,9 @@ stream::LineSettings line_settings(const Options& o) noexcept {
   return stream::LineSettings{o.baud, 8, stream::Parity::kNone, 1};
 }
 
-std::string validate(const Options& o) {
+std::string Options::validate() const {
   for (const auto check : {check_beams, check_line, check_addresses, check_timing}) {
-    std::string message = check(o);
+    std::string message = check(*this);
     if (!message.empty()) return message;
   }
   return {};

@@ -46,6 +46,9 @@ struct Options {
   stream::Duration response_time{};
   bool nak_on_error = true;  // exception 0x07 on CRC error/bad function; false: standard
   BitOrder bit_order = BitOrder::kLsbFirst;
+
+  // Empty when usable; otherwise one sentence naming the field, the value and the rule.
+  [[nodiscard]] std::string validate() const;
 };
 
 inline constexpr std::uint16_t kDefaultSlaveStart = 0x2000;
@@ -57,8 +60,5 @@ inline constexpr std::uint16_t kMaxSlaveStart = 12287;
 // The scan duration (response_time, or its default from the beam count).
 [[nodiscard]] stream::Duration scan_duration(const Options& o) noexcept;
 [[nodiscard]] stream::LineSettings line_settings(const Options& o) noexcept;
-
-// Empty when usable; otherwise one sentence naming the field, the value and the rule.
-[[nodiscard]] std::string validate(const Options& o);
 
 }  // namespace rs4sim::polaris

@@ -71,7 +71,7 @@ polaris::Options polaris_options(const DeviceOptions& o) {
   }
   if (o.baud) p.baud = *o.baud;
   if (!o.mode.empty()) apply_mode(o.mode, p);
-  if (const auto why = polaris::validate(p); !why.empty()) throw UsageError("polaris: " + why);
+  if (const auto why = p.validate(); !why.empty()) throw UsageError("polaris: " + why);
   check_blocked(o, p.beams, "beams");
   return p;
 }
