@@ -1,5 +1,7 @@
 #include "polaris/options.h"
 
+#include "modbus/rtu_frame.h"
+
 #include <array>
 
 namespace rs4sim::polaris {
@@ -10,7 +12,6 @@ constexpr std::array<std::string_view, 4> kModeNames{"485MB", "FL1", "FL4", "FL1
 constexpr std::array<DataMode, 4> kModes{DataMode::k485Mb, DataMode::kFl1, DataMode::kFl4,
                                          DataMode::kFl10};
 constexpr std::array<std::uint32_t, 4> kBauds{19200, 38400, 57600, 115200};
-constexpr std::uint8_t kMaxAddress = 247;
 constexpr std::chrono::milliseconds kMinScanTime{5};
 constexpr std::chrono::milliseconds kMaxScanTime{5000};
 constexpr std::uint16_t kMaxFilter = 255;
@@ -33,8 +34,10 @@ std::string check_line(const Options& o) {
 }
 
 std::string check_addresses(const Options& o) {
-  if (o.address < 1 || o.address > kMaxAddress) {
-    return "address " + std::to_string(o.address) + ": must be 1..247 (no broadcast)";
+  if (!modbus::is_slave_address(o.address)) {
+    return "address " + std::to_string(o.address) + ": must be " +
+           std::to_string(modbus::kMinSlaveAddress) + ".." +
+           std::to_string(modbus::kMaxSlaveAddress) + " (no broadcast)";
   }
   const std::uint16_t start = start_address(o);
   if (o.role == Role::kSlave && (start < kMinSlaveStart || start > kMaxSlaveStart)) {

@@ -12,6 +12,7 @@
 #include "app/devices/device_options.h"
 #include "app/devices/device_registry.h"
 #include "app/devices/line_run.h"
+#include "modbus/rtu_frame.h"
 #include "polaris/device.h"
 #include "rpc/device_target.h"
 #include "rpc/line_services.h"
@@ -63,9 +64,11 @@ polaris::Options polaris_options(const DeviceOptions& o) {
     p.beams = static_cast<std::uint16_t>(*o.beams);
   }
   if (o.address) {
-    if (*o.address < 1 || *o.address > 247) {
-      throw UsageError("--address " + std::to_string(*o.address) +
-                       ": a Modbus address is 1..247 [Modbus serial line V1.02 §2.2]");
+    if (!modbus::is_slave_address(*o.address)) {
+      throw UsageError("--address " + std::to_string(*o.address) + ": a Modbus address is " +
+                       std::to_string(modbus::kMinSlaveAddress) + ".." +
+                       std::to_string(modbus::kMaxSlaveAddress) +
+                       " [Modbus serial line V1.02 §2.2]");
     }
     p.address = static_cast<std::uint8_t>(*o.address);
   }
