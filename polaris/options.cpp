@@ -3,6 +3,7 @@
 #include "modbus/rtu_frame.h"
 
 #include <array>
+#include <span>
 
 namespace rs4sim::polaris {
 
@@ -15,8 +16,6 @@ constexpr std::array<std::uint32_t, 4> kBauds{19200, 38400, 57600, 115200};
 constexpr std::chrono::milliseconds kMinScanTime{5};
 constexpr std::chrono::milliseconds kMaxScanTime{5000};
 constexpr std::uint16_t kMaxFilter = 255;
-constexpr auto kScanBase = std::chrono::microseconds(300);
-constexpr auto kScanPerBeam = std::chrono::microseconds(14);
 
 std::string check_beams(const Options& o) {
   if (height_for_beams(o.family, o.beams)) return {};
@@ -77,7 +76,11 @@ std::uint16_t start_address(const Options& o) noexcept {
 
 stream::Duration scan_duration(const Options& o) noexcept {
   if (o.response_time > stream::Duration::zero()) return o.response_time;
-  return kScanBase + kScanPerBeam * o.beams;
+  const std::span<const Model> family = models(o.family);
+  for (const Model& m : family) {
+    if (m.beams >= o.beams) return m.response_time();
+  }
+  return family.back().response_time();
 }
 
 stream::LineSettings line_settings(const Options& o) noexcept {

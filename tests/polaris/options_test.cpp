@@ -37,11 +37,22 @@ TEST(Options, PreciseMessages) {
   EXPECT_EQ(o.validate(), "PN2 filter 0: must be 1..255 scans");
 }
 
-TEST(Options, ScanDurationFromBeams) {
+// By default a scan lasts the model's first maximum response time
+// [Polaris manual §2.1, §2.2] (PLi 02-3440: 19,6 ms; PL 10-160: 0,6 ms; PL 10-3040: 8,7 ms).
+TEST(Options, ScanDurationIsTheModelsResponseTime) {
+  using std::chrono::microseconds;
   Options o;
+  EXPECT_EQ(scan_duration(o), microseconds(600));
   o.family = Family::kPli02;
   o.beams = 1375;
-  EXPECT_EQ(scan_duration(o), std::chrono::microseconds(300 + 14 * 1375));  // 19.55 ms
+  EXPECT_EQ(scan_duration(o), microseconds(19600));
+  o.family = Family::kPl10;
+  o.beams = 304;
+  EXPECT_EQ(scan_duration(o), microseconds(8700));
+  o.beams = 305;  // no such model (validate() refuses it): the next larger one's, PL 10-3120
+  EXPECT_EQ(scan_duration(o), microseconds(8900));
+  o.beams = 400;  // above the family: its largest
+  EXPECT_EQ(scan_duration(o), microseconds(9800));
   o.response_time = std::chrono::milliseconds(2);
   EXPECT_EQ(scan_duration(o), std::chrono::milliseconds(2));
 }
