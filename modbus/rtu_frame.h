@@ -15,6 +15,12 @@ namespace rs4sim::modbus {
 inline constexpr std::size_t kMinFrameSize = 4;
 inline constexpr std::size_t kMaxFrameSize = 256;
 inline constexpr std::uint8_t kBroadcastAddress = 0;
+// The individual (slave) addresses; 248..255 are reserved [Modbus serial line V1.02 §2.2].
+inline constexpr std::uint8_t kMinSlaveAddress = 1;
+inline constexpr std::uint8_t kMaxSlaveAddress = 247;
+[[nodiscard]] constexpr bool is_slave_address(long long address) noexcept {
+  return address >= kMinSlaveAddress && address <= kMaxSlaveAddress;
+}
 inline constexpr std::uint8_t kExceptionFlag = 0x80;
 
 struct RtuFrame {

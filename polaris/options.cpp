@@ -1,6 +1,9 @@
 #include "polaris/options.h"
 
+#include "modbus/rtu_frame.h"
+
 #include <array>
+#include <span>
 
 namespace rs4sim::polaris {
 
@@ -10,12 +13,9 @@ constexpr std::array<std::string_view, 4> kModeNames{"485MB", "FL1", "FL4", "FL1
 constexpr std::array<DataMode, 4> kModes{DataMode::k485Mb, DataMode::kFl1, DataMode::kFl4,
                                          DataMode::kFl10};
 constexpr std::array<std::uint32_t, 4> kBauds{19200, 38400, 57600, 115200};
-constexpr std::uint8_t kMaxAddress = 247;
 constexpr std::chrono::milliseconds kMinScanTime{5};
 constexpr std::chrono::milliseconds kMaxScanTime{5000};
 constexpr std::uint16_t kMaxFilter = 255;
-constexpr auto kScanBase = std::chrono::microseconds(300);
-constexpr auto kScanPerBeam = std::chrono::microseconds(14);
 
 std::string check_beams(const Options& o) {
   if (height_for_beams(o.family, o.beams)) return {};
@@ -33,8 +33,10 @@ std::string check_line(const Options& o) {
 }
 
 std::string check_addresses(const Options& o) {
-  if (o.address < 1 || o.address > kMaxAddress) {
-    return "address " + std::to_string(o.address) + ": must be 1..247 (no broadcast)";
+  if (!modbus::is_slave_address(o.address)) {
+    return "address " + std::to_string(o.address) + ": must be " +
+           std::to_string(modbus::kMinSlaveAddress) + ".." +
+           std::to_string(modbus::kMaxSlaveAddress) + " (no broadcast)";
   }
   const std::uint16_t start = start_address(o);
   if (o.role == Role::kSlave && (start < kMinSlaveStart || start > kMaxSlaveStart)) {
@@ -74,16 +76,20 @@ std::uint16_t start_address(const Options& o) noexcept {
 
 stream::Duration scan_duration(const Options& o) noexcept {
   if (o.response_time > stream::Duration::zero()) return o.response_time;
-  return kScanBase + kScanPerBeam * o.beams;
+  const std::span<const Model> family = models(o.family);
+  for (const Model& m : family) {
+    if (m.beams >= o.beams) return m.response_time();
+  }
+  return family.back().response_time();
 }
 
 stream::LineSettings line_settings(const Options& o) noexcept {
   return stream::LineSettings{o.baud, 8, stream::Parity::kNone, 1};
 }
 
-std::string validate(const Options& o) {
+std::string Options::validate() const {
   for (const auto check : {check_beams, check_line, check_addresses, check_timing}) {
-    std::string message = check(o);
+    std::string message = check(*this);
     if (!message.empty()) return message;
   }
   return {};

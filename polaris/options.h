@@ -41,11 +41,15 @@ struct Options {
   Detection detection = Detection::kObject;
   std::uint16_t pn2_filter = 1;              // scans that confirm a hole, 1..255
   std::chrono::milliseconds scan_time{100};  // master send period, 5..5000 ms
-  // One scan of the barrier; a slave answers when the scan in progress ends. Zero: from
-  // the beam count (DECISION: 0.3 ms + 14 µs per beam, the manual's 0.3..19.6 ms column).
+  // One scan of the barrier; a slave answers when the scan in progress ends. Zero: the
+  // model's first maximum response time [Polaris manual §2.1, §2.2]
+  // ([docs/decisions.md#polaris-response-time]).
   stream::Duration response_time{};
   bool nak_on_error = true;  // exception 0x07 on CRC error/bad function; false: standard
   BitOrder bit_order = BitOrder::kLsbFirst;
+
+  // Empty when usable; otherwise one sentence naming the field, the value and the rule.
+  [[nodiscard]] std::string validate() const;
 };
 
 inline constexpr std::uint16_t kDefaultSlaveStart = 0x2000;
@@ -54,11 +58,9 @@ inline constexpr std::uint16_t kMaxSlaveStart = 12287;
 
 // The first register of the data block.
 [[nodiscard]] std::uint16_t start_address(const Options& o) noexcept;
-// The scan duration (response_time, or its default from the beam count).
+// The scan duration: response_time, or the model's first maximum response time (a beam
+// count no model has, which validate() refuses: the next larger model's).
 [[nodiscard]] stream::Duration scan_duration(const Options& o) noexcept;
 [[nodiscard]] stream::LineSettings line_settings(const Options& o) noexcept;
-
-// Empty when usable; otherwise one sentence naming the field, the value and the rule.
-[[nodiscard]] std::string validate(const Options& o);
 
 }  // namespace rs4sim::polaris

@@ -1,5 +1,6 @@
 #include "rpc/polaris_service.h"
 
+#include "modbus/rtu_frame.h"
 #include "rpc/service_support.h"
 #include "rpc/status.h"
 
@@ -30,9 +31,11 @@ std::vector<std::string> polaris_faults(const polaris::Faults& f) {
 }
 
 grpc::Status check_modbus_address(std::uint32_t address) {
-  if (address == 0 || address > 247) {
-    return invalid_argument("address", std::to_string(address) +
-                                           " outside 1..247, the Modbus slave addresses "
+  if (!modbus::is_slave_address(address)) {
+    return invalid_argument("address", std::to_string(address) + " outside " +
+                                           std::to_string(modbus::kMinSlaveAddress) + ".." +
+                                           std::to_string(modbus::kMaxSlaveAddress) +
+                                           ", the Modbus slave addresses "
                                            "[Modbus serial line V1.02 §2.2]");
   }
   return grpc::Status::OK;
