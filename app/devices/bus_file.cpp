@@ -265,8 +265,10 @@ class BusInstance final : public DeviceInstance {
     ServiceList list = rpc::rs4_service_set(*target_, c.executor);
     if (!all.gsd.empty()) {
       const dp::Clock& clock = c.clock;
-      list.push_back(std::make_shared<GsdStationsService>(GsdServiceContext{
-          c.executor, all.gsd, [hub, &clock] { hub->poll(clock.now()); }}));
+      GsdServiceContext g{c.executor, all.gsd, [hub, &clock] { hub->poll(clock.now()); }};
+      g.turnaround = c.turnaround;
+      g.slot_time_us = c.slot_time_us;
+      list.push_back(std::make_shared<GsdStationsService>(std::move(g)));
     }
     return list;
   }
