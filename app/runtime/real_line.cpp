@@ -90,6 +90,19 @@ void print_turnaround(std::ostream& out, std::uint8_t address, const dp::link::T
     out << "; late (> TSL " << ms(*tsl_us * 1000) << ", not sent) " << s.late();
   }
   out << std::endl;
+  if (s.count() == 0) return;
+  // The non-empty buckets by their exclusive upper bound; the last one (no bound) by its lower.
+  out << "  histogram:";
+  const char* sep = " ";
+  for (std::size_t i = 0; i < TurnaroundStats::kBuckets; ++i) {
+    if (s.buckets()[i] == 0) continue;
+    out << sep
+        << (i + 1 == TurnaroundStats::kBuckets ? ">= " + ms(TurnaroundStats::bucket_upper_ns(i - 1))
+                                               : "< " + ms(TurnaroundStats::bucket_upper_ns(i)))
+        << ": " << s.buckets()[i];
+    sep = ", ";
+  }
+  out << std::endl;
 }
 
 }  // namespace rs4sim::app
