@@ -91,14 +91,15 @@ void print_turnaround(std::ostream& out, std::uint8_t address, const dp::link::T
   }
   out << std::endl;
   if (s.count() == 0) return;
-  // The non-empty buckets by their exclusive upper bound; the last one (no bound) by its lower.
-  out << "  histogram:";
+  // The non-empty buckets by their exclusive upper bound in µs (ms at 3 decimals would give
+  // neighbouring buckets the same name); the last one (no bound) by its lower bound.
+  out << "  histogram (µs):";
   const char* sep = " ";
   for (std::size_t i = 0; i < TurnaroundStats::kBuckets; ++i) {
     if (s.buckets()[i] == 0) continue;
     out << sep
-        << (i + 1 == TurnaroundStats::kBuckets ? ">= " + ms(TurnaroundStats::bucket_upper_ns(i - 1))
-                                               : "< " + ms(TurnaroundStats::bucket_upper_ns(i)))
+        << (i + 1 == TurnaroundStats::kBuckets ? ">= " + us(TurnaroundStats::bucket_upper_ns(i - 1))
+                                               : "< " + us(TurnaroundStats::bucket_upper_ns(i)))
         << ": " << s.buckets()[i];
     sep = ", ";
   }

@@ -69,7 +69,7 @@ TEST(TurnaroundSummary, TextAndJsonCarryTheSameFigures) {
   EXPECT_EQ(text.str(),
             "turnaround 5: 2 replies, p50 0.115 ms, p99 2.000 ms, max 2.000 ms, mean 1.050 ms; "
             "late (> TSL 8.000 ms, not sent) 1\n"
-            "  histogram: < 0.115 ms: 1, < 2.097 ms: 1\n");
+            "  histogram (µs): < 114.688: 1, < 2097.152: 1\n");
   EXPECT_EQ(json.str(),
             R"({"event":"turnaround","address":5,"replies":2,"late":1,"tsl_us":8000,)"
             R"("p50_us":114.688,"p99_us":2000.000,"max_us":2000.000,"mean_us":1050.000,)"
@@ -90,7 +90,7 @@ TEST(TurnaroundSummary, TheTextHistogramNamesTheLastBucketByItsLowerBoundAndIsOm
   EXPECT_EQ(text.str(),
             "turnaround 4: 3 replies, p50 0.001 ms, p99 40000.000 ms, max 40000.000 ms, "
             "mean 13333.334 ms\n"
-            "  histogram: < 0.001 ms: 2, >= 34359.738 ms: 1\n");
+            "  histogram (µs): < 1.024: 2, >= 34359738.368: 1\n");
 }
 
 }  // namespace
