@@ -102,6 +102,8 @@ class GsdInstance final : public DeviceInstance {
     auto* hub = target_->events();
     const dp::Clock& clock = c.clock;
     GsdServiceContext g{c.executor, {&station_}, [hub, &clock] { hub->poll(clock.now()); }};
+    g.turnaround = c.turnaround;
+    g.slot_time_us = c.slot_time_us;
     return {std::make_shared<GsdStationsService>(std::move(g)),
             std::make_shared<rpc::ObservationService>(rpc::RunContext{*target_, c.executor})};
   }

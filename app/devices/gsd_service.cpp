@@ -2,6 +2,7 @@
 
 #include "gsd/unit_diag.h"
 #include "rpc/items_watcher.h"
+#include "rpc/rs4_state.h"
 #include "rpc/service_support.h"
 #include "rpc/status.h"
 
@@ -53,7 +54,7 @@ constexpr AlarmKind kAlarms[] = {
     {v1::GSD_ALARM_TYPE_UPDATE, "update", "Update_Alarm_supp", &gsd::Dpv1Info::update_alarm},
 };
 
-void fill(const GsdStation& s, v1::GsdStation& out) {
+void fill(const GsdStation& s, const GsdServiceContext& c, v1::GsdStation& out) {
   const auto& spec = s.spec();
   out.set_address(s.address());
   out.set_file(spec.file);
@@ -90,6 +91,8 @@ void fill(const GsdStation& s, v1::GsdStation& out) {
       if (spec.device->dpv1.*a.declared) out.add_alarms(a.name);
     }
   }
+  const dp::link::TurnaroundStats* timing = c.turnaround ? c.turnaround(s.address()) : nullptr;
+  if (timing != nullptr) rpc::fill_link_timing(*timing, c.slot_time_us, *out.mutable_link_timing());
 }
 
 std::span<const std::uint8_t> as_bytes(const std::string& s) {
@@ -126,7 +129,7 @@ grpc::Status GsdStationsService::on_station(std::uint32_t address, const Station
 grpc::Status GsdStationsService::ListStations(grpc::ServerContext*, const v1::Empty*,
                                               v1::ListGsdStationsResponse* out) {
   c_.executor.run([&] {
-    for (const auto* s : c_.stations) fill(*s, *out->add_stations());
+    for (const auto* s : c_.stations) fill(*s, c_, *out->add_stations());
   });
   return grpc::Status::OK;
 }
@@ -136,7 +139,7 @@ grpc::Status GsdStationsService::GetStation(grpc::ServerContext*, const v1::Stat
   return on_station(
       in->address(),
       [&](GsdStation& s) {
-        fill(s, *out);
+        fill(s, c_, *out);
         return grpc::Status::OK;
       },
       false);

@@ -6,12 +6,15 @@
 
 #include "app/devices/gsd_station.h"
 #include "dp/link/memory_bus.h"
+#include "dp/link/turnaround.h"
 #include "rpc/device_watcher.h"
 #include "rpc/executor.h"
 #include "rs4sim/v1/gsd.grpc.pb.h"
 
+#include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace rs4sim::app {
@@ -23,6 +26,10 @@ struct GsdServiceContext {
   std::function<void()> changed = {};
   // The simulated bus (--link memory) for bus faults; nullptr on a real link.
   dp::link::MemoryBus* bus = nullptr;
+  // On a real-time link: the replies' turnaround of the station at an address (nullptr: none),
+  // read on the loop, and --tsl (ServiceContext's); empty on the simulated bus.
+  std::function<const dp::link::TurnaroundStats*(std::uint8_t)> turnaround = {};
+  std::optional<std::int64_t> slot_time_us = std::nullopt;
 };
 
 class GsdStationsService final : public v1::GsdStations::Service {

@@ -90,6 +90,20 @@ void print_turnaround(std::ostream& out, std::uint8_t address, const dp::link::T
     out << "; late (> TSL " << ms(*tsl_us * 1000) << ", not sent) " << s.late();
   }
   out << std::endl;
+  if (s.count() == 0) return;
+  // The non-empty buckets by their exclusive upper bound in µs (ms at 3 decimals would give
+  // neighbouring buckets the same name); the last one (no bound) by its lower bound.
+  out << "  histogram (µs):";
+  const char* sep = " ";
+  for (std::size_t i = 0; i < TurnaroundStats::kBuckets; ++i) {
+    if (s.buckets()[i] == 0) continue;
+    out << sep
+        << (i + 1 == TurnaroundStats::kBuckets ? ">= " + us(TurnaroundStats::bucket_upper_ns(i - 1))
+                                               : "< " + us(TurnaroundStats::bucket_upper_ns(i)))
+        << ": " << s.buckets()[i];
+    sep = ", ";
+  }
+  out << std::endl;
 }
 
 }  // namespace rs4sim::app

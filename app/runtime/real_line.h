@@ -22,7 +22,11 @@ namespace rs4sim::app {
 [[nodiscard]] std::string realtime_error(const std::string& step, int priority, int err);
 
 // "turnaround 5: 1204 replies, p50 0.112 ms, p99 0.410 ms, max 1.877 ms, mean 0.130 ms;
-// late (> TSL 8.000 ms, not sent) 0" or, with `json`, one object per line:
+// late (> TSL 8.000 ms, not sent) 0" and, when a reply was timed, a second line with the
+// non-empty histogram buckets by their exclusive upper bound in µs ("  histogram (µs):
+// < 114.688: 1180, < 131.072: 20, ..."; the last bucket, without a bound, as
+// ">= 34359738.368: N") or, with
+// `json`, one object per line:
 // {"event":"turnaround","address":5,"replies":1204,"late":0,"p50_us":112.6,...,
 //  "histogram":[{"le_us":1.28,"count":3},...]} (the non-empty buckets, by upper bound).
 void print_turnaround(std::ostream& out, std::uint8_t address, const dp::link::TurnaroundStats& s,

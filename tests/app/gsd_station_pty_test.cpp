@@ -2,6 +2,7 @@
 // pseudo-terminal pair with the real clock (app/devices/gsd_station.h): start-up to Data_Exch,
 // inputs set per module on the station arrive at the master, the master's outputs at the
 // station. Waits are bounded and end as soon as the condition holds.
+#include "app/devices/gsd_service.h"
 #include "app/devices/gsd_station.h"
 #include "dp/link/profibus_line.h"
 #include "dp/link/station_runner.h"
@@ -19,6 +20,12 @@ namespace {
 namespace asio = boost::asio;
 using namespace std::chrono_literals;
 using Bytes = std::vector<std::uint8_t>;
+
+// The test's loop is this thread: the service's work runs at once.
+class InlineExecutor final : public rpc::Executor {
+ public:
+  void run(const std::function<void()>& f) override { f(); }
+};
 
 TEST(GsdStationPty, MasterFromTheSameGsdReachesDataExchangeAndIoArrivesBothWays) {
   const std::string gse = std::string(RS4SIM_GSD_CORPUS) + "/gateway_asi.gse";
@@ -72,6 +79,37 @@ TEST(GsdStationPty, MasterFromTheSameGsdReachesDataExchangeAndIoArrivesBothWays)
   }));
   EXPECT_EQ(rm.counters().malformed, 0U);
   EXPECT_EQ(rs.counters().malformed, 0U);
+
+  // GsdStations.GetStation carries the station's turnaround as the runner measured it
+  // (dp/link/turnaround.h), with --tsl as given to the run.
+  InlineExecutor executor;
+  GsdServiceContext context{executor, {&station}};
+  context.turnaround = [&rs](std::uint8_t address) { return rs.turnaround(address); };
+  context.slot_time_us = 8000;
+  GsdStationsService api(std::move(context));
+  v1::StationRequest request;
+  request.set_address(5);
+  v1::GsdStation got;
+  ASSERT_TRUE(api.GetStation(nullptr, &request, &got).ok());
+  const dp::link::TurnaroundStats& measured = *rs.turnaround(5);
+  ASSERT_TRUE(got.has_link_timing());
+  const v1::LinkTiming& t = got.link_timing();
+  EXPECT_TRUE(t.present());
+  EXPECT_GT(t.replies(), 0U);  // Set_Prm, Chk_Cfg, the diagnosis polls, the Data_Exchanges
+  EXPECT_EQ(t.replies(), measured.count());
+  EXPECT_EQ(t.late(), 0U);
+  EXPECT_EQ(t.slot_time_us(), 8000U);
+  EXPECT_EQ(t.max_ns(), static_cast<std::uint64_t>(measured.max_ns()));
+  EXPECT_GT(t.max_ns(), 0U);
+  EXPECT_LE(t.p50_ns(), t.p99_ns());
+  EXPECT_LE(t.p99_ns(), t.max_ns());
+  std::uint64_t in_histogram = 0;
+  for (const auto& b : t.histogram()) in_histogram += b.count();
+  EXPECT_EQ(in_histogram, t.replies());
+  v1::ListGsdStationsResponse list;
+  ASSERT_TRUE(api.ListStations(nullptr, nullptr, &list).ok());
+  ASSERT_EQ(list.stations_size(), 1);
+  EXPECT_EQ(list.stations(0).link_timing().replies(), t.replies());
   rm.stop();
   rs.stop();
 }

@@ -1,12 +1,14 @@
 #!/bin/sh
 # The real-line CLI (docs/serial.md): `rs4sim serial-check` against a running `rs4sim run` on a
 # pty pair (every FDL_Status request answered, the table printed, the run's turnaround counts
-# them; a station that is not there exits 1); --tsl/--rt-priority refusals (exit 2) and
+# them; a station that is not there exits 1), in loopback mode against `rs4sim run --device
+# echo`; --tsl/--rt-priority refusals (exit 2) and
 # --rt-priority without the right to it (exit 1 naming EPERM and the remedy).
 set -eu
 EXE="$1"
 TMP=$(mktemp -d)
-trap 'kill "$RUN" 2>/dev/null || true; rm -rf "$TMP"' EXIT
+ECHO=
+trap 'kill "$RUN" $ECHO 2>/dev/null || true; rm -rf "$TMP"' EXIT
 "$EXE" run --address 4 --boot-time 100 --link pty --baud 187.5k --duration 20 --json \
   >"$TMP/run.out" 2>"$TMP/run.err" &
 RUN=$!
@@ -27,6 +29,27 @@ kill -INT "$RUN"
 wait "$RUN" || true
 # The run's summary has the 200 replies in its turnaround (FDL_Status of the check).
 grep -q '"event":"turnaround","address":4,"replies":20[0-9]' "$TMP/run.out"
+
+# Loopback mode: `rs4sim run --device echo` on a pty stands in for a loopback plug (TX wired
+# to RX): every request comes back as it was sent (whole, after the echo device's 3.5
+# characters of silence, where a plug returns each character at once), so serial-check counts
+# loopback echoes, no replies, and measures the adapter's round trip.
+"$EXE" run --device echo --link pty --baud 187500 --format 8E1 --duration 20 \
+  >"$TMP/echo.out" 2>"$TMP/echo.err" &
+ECHO=$!
+i=0
+while [ ! -s "$TMP/echo.out" ] && [ $i -lt 100 ]; do sleep 0.05; i=$((i + 1)); done
+EPTY=$(head -n 1 "$TMP/echo.out")
+"$EXE" serial-check --port "$EPTY" --baud 187.5k --address 4 --count 50 >"$TMP/loop.out"
+cat "$TMP/loop.out"
+grep -q "50 FDL_Status requests to station 4: 0 replies, 50 loopback echoes, 0 unanswered" \
+  "$TMP/loop.out"
+grep -q "(the adapter, there and back)" "$TMP/loop.out"
+grep -q "^  187.5k " "$TMP/loop.out"
+kill -INT "$ECHO"
+wait "$ECHO" || true
+# The echo device echoed each request once (6 bytes each: SD1 DA SA FC FCS ED).
+grep -q "frames echoed 50," "$TMP/echo.err" "$TMP/echo.out"
 
 # Usage errors: exit 2 with the reason.
 set +e

@@ -68,12 +68,29 @@ TEST(TurnaroundSummary, TextAndJsonCarryTheSameFigures) {
   // 100 µs: bucket 98 304..114 687 ns; the p50 is its bound; p99 the max (2 ms).
   EXPECT_EQ(text.str(),
             "turnaround 5: 2 replies, p50 0.115 ms, p99 2.000 ms, max 2.000 ms, mean 1.050 ms; "
-            "late (> TSL 8.000 ms, not sent) 1\n");
+            "late (> TSL 8.000 ms, not sent) 1\n"
+            "  histogram (µs): < 114.688: 1, < 2097.152: 1\n");
   EXPECT_EQ(json.str(),
             R"({"event":"turnaround","address":5,"replies":2,"late":1,"tsl_us":8000,)"
             R"("p50_us":114.688,"p99_us":2000.000,"max_us":2000.000,"mean_us":1050.000,)"
             R"("histogram":[{"le_us":114.688,"count":1},{"le_us":2097.152,"count":1}]})"
             "\n");
+}
+
+TEST(TurnaroundSummary, TheTextHistogramNamesTheLastBucketByItsLowerBoundAndIsOmittedWhenEmpty) {
+  dp::link::TurnaroundStats s;
+  std::ostringstream none;
+  print_turnaround(none, 4, s, std::nullopt, false);
+  EXPECT_EQ(none.str(), "turnaround 4: 0 replies\n");  // no histogram line without replies
+  s.record(500ns);                                     // below 1.024 µs: the first bucket
+  s.record(500ns);
+  s.record(40s);  // at or above 2^35 ns: the last bucket, unbounded
+  std::ostringstream text;
+  print_turnaround(text, 4, s, std::nullopt, false);
+  EXPECT_EQ(text.str(),
+            "turnaround 4: 3 replies, p50 0.001 ms, p99 40000.000 ms, max 40000.000 ms, "
+            "mean 13333.334 ms\n"
+            "  histogram (µs): < 1.024: 2, >= 34359738.368: 1\n");
 }
 
 }  // namespace

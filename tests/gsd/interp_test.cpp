@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <utility>
+
 namespace rs4sim::gsd {
 namespace {
 
@@ -33,6 +36,57 @@ TEST(GsdInterp, CompactDpv0WithLegacyUserPrmData) {
   EXPECT_EQ(d.modules[0].cfg, std::vector<std::uint8_t>{0x30});
   EXPECT_EQ(d.modules[0].input_len, 1U);  // 0x30: in+out, 1 byte each
                                           // ([IEC 61158-6-3 Chk_Cfg/Get_Cfg])
+  EXPECT_EQ(d.modules[0].output_len, 1U);
+}
+
+// GSD revisions 1 and 2 ([PROFIBUS GSD spec GSD_Revision]): the same DP-V0 keywords as later
+// revisions, read the same way; what they add over the revision before is rates. Revision 1:
+// 3, 6 and 12 Mbit/s with their MaxTsdr_3M/6M/12M; revision 2: 45.45 kbit/s and 31.25 kbit/s
+// (the MBP rate of PROFIBUS PA, behind a coupler: a known keyword that no RS-485 rate takes,
+// so it is skipped without a warning). The DP-V1 keywords came with revision 3.
+TEST(GsdInterp, Revision1ModularDpv0WithTheMegabitRates) {
+  const Device d = load("revision1_modular.gsd");
+  EXPECT_EQ(d.gsd_revision, 1);
+  EXPECT_EQ(d.ident_number, 0x0A11);
+  EXPECT_TRUE(d.warnings.empty());
+  EXPECT_FALSE(d.dpv1.slave);
+  EXPECT_TRUE(d.freeze_mode);
+  EXPECT_TRUE(d.sync_mode);
+  EXPECT_EQ(d.min_slave_interval, 6);
+  EXPECT_EQ(d.max_diag_data_len, 8);
+  const std::pair<std::uint32_t, int> megabit[] = {{3000000, 250}, {6000000, 450}, {12000000, 800}};
+  for (const auto& [bps, tsdr] : megabit) {
+    ASSERT_NE(d.find_baud(bps), nullptr) << bps;
+    EXPECT_TRUE(d.find_baud(bps)->supported) << bps;
+    EXPECT_EQ(d.find_baud(bps)->max_tsdr, tsdr) << bps;
+  }
+  EXPECT_FALSE(d.find_baud(45450)->supported);  // a revision 2 rate
+  EXPECT_TRUE(d.modular_station);
+  EXPECT_EQ(d.max_module, 4);
+  EXPECT_EQ(d.user_prm.defaults, (std::vector<std::uint8_t>{0x00, 0x05}));
+  ASSERT_EQ(d.modules.size(), 3U);                               // Cfg bytes written in decimal
+  EXPECT_EQ(d.modules[0].cfg, std::vector<std::uint8_t>{0x10});  // 16: 1 input byte
+  EXPECT_EQ(d.modules[0].input_len, 1U);
+  EXPECT_EQ(d.modules[1].cfg, std::vector<std::uint8_t>{0x20});  // 32: 1 output byte
+  EXPECT_EQ(d.modules[1].output_len, 1U);
+  EXPECT_EQ(d.modules[2].cfg, std::vector<std::uint8_t>{0x51});  // 81: 2 input words
+  EXPECT_EQ(d.modules[2].input_len, 4U);                         // [IEC 61158-6-3 Chk_Cfg/Get_Cfg]
+}
+
+TEST(GsdInterp, Revision2Compact45k45AndThePaRateSkipped) {
+  const Device d = load("revision2_compact.gsd");
+  EXPECT_EQ(d.gsd_revision, 2);
+  EXPECT_EQ(d.ident_number, 0x0A22);
+  EXPECT_TRUE(d.warnings.empty());  // 31.25_supp and MaxTsdr_31.25 are GSD keywords
+  EXPECT_FALSE(d.dpv1.slave);
+  ASSERT_NE(d.find_baud(45450), nullptr);
+  EXPECT_TRUE(d.find_baud(45450)->supported);
+  EXPECT_EQ(d.find_baud(45450)->max_tsdr, 250);
+  EXPECT_EQ(d.find_baud(31250), nullptr);  // not one of the ten RS-485 DP rates
+  EXPECT_FALSE(d.find_baud(12000000)->supported);
+  EXPECT_FALSE(d.modular_station);
+  ASSERT_EQ(d.modules.size(), 1U);
+  EXPECT_EQ(d.modules[0].input_len, 1U);
   EXPECT_EQ(d.modules[0].output_len, 1U);
 }
 

@@ -132,7 +132,8 @@ TEST(GsdParser, BlocksCollectTheirBodies) {
 
 TEST(GsdParser, EveryCorpusFileParses) {
   for (const char* name :
-       {"compact_dpv0.gsd", "modular_dpv1.gsd", "profisafe_v2.gsd", "whitespace_comments.gsd"}) {
+       {"compact_dpv0.gsd", "modular_dpv1.gsd", "profisafe_v2.gsd", "whitespace_comments.gsd",
+        "revision1_modular.gsd", "revision2_compact.gsd"}) {
     auto f = parse_syntax(gsd::testing::corpus(name), name);
     EXPECT_TRUE(f) << name << ": " << (f ? "" : f.error().what());
   }

@@ -157,6 +157,8 @@ TEST_F(RpcGsdTest, InputsReachTheMasterAndItsOutputsTheStation) {
   EXPECT_EQ(s.modules(1).inputs(), bytes({0x11, 0x22, 0x33, 0x44}));
   EXPECT_EQ(s.modules(2).outputs(), bytes({0xAB, 0xCD}));
   EXPECT_GT(s.data_exchanges(), 0u);
+  // The simulated bus times no reply (no turnaround source, as on --link memory): absent.
+  EXPECT_FALSE(s.has_link_timing());
 }
 
 TEST_F(RpcGsdTest, OffTheBusTheMasterLosesTheStationAndFindsItAgain) {
