@@ -177,7 +177,8 @@ def main():
                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         procs.append(bus)
         base = listening_among(bus)
-        call(base, "rs4sim.v1.SimTime/Advance", {"durationMs": 1000})
+        # past the RS4's PROFIBUS adapter start (LED steady 2-3 s [RS4 manual §4.4], 2.5 s)
+        call(base, "rs4sim.v1.SimTime/Advance", {"durationMs": 3000})
         driver.get(base)
         gsd = '#gsd .gsd-station[data-address="5"]'
         wait.until(lambda d: d.find_elements(
@@ -211,7 +212,8 @@ def main():
         call(base, "rs4sim.v1.SimTime/Advance", {"durationMs": 1000})
         wait.until(lambda d: d.find_elements(
             By.CSS_SELECTOR, gsd + '[data-online="yes"][data-state="Data_Exch"]'))
-        wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, '#stations tr[data-address="4"]'))
+        wait.until(lambda d: d.find_elements(
+            By.CSS_SELECTOR, '#stations tr[data-address="4"][data-state="Data_Exch"]'))
         driver.execute_script("document.getElementById('gsd-panel').scrollIntoView()")
         shot = os.path.join(outdir, "live_view_gsd.png")
         driver.save_screenshot(shot)
