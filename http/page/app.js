@@ -75,9 +75,9 @@ function renderStations() {
       `<td>${pill(v["dp-state"], dpClass(v["dp-state"]))}</td>`,
       `<td>${pill(v["fdevice-state"], fClass(v["fdevice-state"]))}${plc ? " " + pill("F-host " + plc.fhostState, fClass(plc.fhostState)) : ""}</td>`,
       `<td>${v.ossd === undefined ? "–" : pill(v.ossd, v.ossd === "on" ? "ok" : "bad")}</td>`,
-      `<td>${v["rs4-state"] || v.state || (v.powered === "off" ? "off" : "–")}</td>`,
+      `<td>${v["rs4-state"] || v.state || (v.powered === "off" ? "off" : v.online === "no" ? "off the bus" : v.online === "yes" ? "online" : "–")}</td>`,
       `<td>${proxyText(s)}</td>`,
-      `<td><code>${v["input-byte"] || ""}</code></td>`, `<td><code>${v["output-byte"] || ""}</code></td>`,
+      `<td><code>${v["input-byte"] || v.inputs || ""}</code></td>`, `<td><code>${v["output-byte"] || v.outputs || ""}</code></td>`,
       `<td>${plc ? plc.crcErrors : "–"}</td>`, `<td>${plc ? plc.numberErrors : "–"}</td>`,
       `<td>${plc ? plc.watchdogTimeouts : "–"}</td>`, `<td>${plc ? plc.passivations : "–"}</td>`,
       `<td class="count">${n("lost")}</td>`, `<td class="count">${n("syncs")}</td>`,
@@ -156,6 +156,7 @@ function onEvent(e) {
   if (selected === null && (s.kind === "rs4" || s.values["rs4-state"] !== undefined)) selected = address;
   scheduleRender();
   if (address === selected) refreshSelected();
+  if (gsdStations.has(address)) { refreshGsd(address); return; }
   if (!stations.get(address).kind || lineOf.get(address)) {
     if (lineOf.has(address)) refreshLine(address); else probeLine(address);
   }
@@ -398,6 +399,116 @@ function drawLine(address, k, st) {
   }
 }
 
+// ---- GSD stations (rs4sim.v1.GsdStations: `run --gsd FILE`, `run --bus FILE`) ----------------
+// Each station from ListStations: address, ident, the modules with their input and output bytes
+// bit by bit, DP state and online. Redrawn after every event of the station (dp-state, online,
+// inputs, outputs, diagnosis items) and polled once a second for the counters; twice a second
+// where the run has no event stream.
+const gsdStations = new Map();  // address -> the GsdStation as JSON
+let gsdServed = false;
+
+async function pollGsd() {
+  let list;
+  try { list = await call("rs4sim.v1.GsdStations/ListStations"); } catch (err) { return false; }
+  gsdServed = true;
+  for (const st of list.stations || []) drawGsd(st);
+  return true;
+}
+
+const gsdRefreshing = new Set();
+async function refreshGsd(address) {
+  if (gsdRefreshing.has(address)) return;
+  gsdRefreshing.add(address);
+  try {
+    drawGsd(await call("rs4sim.v1.GsdStations/GetStation", { address }));
+  } catch (err) {
+    log(`GSD station ${address}: ${err.message}`);
+  } finally { gsdRefreshing.delete(address); }
+}
+
+// The JSON mapping's base64 `bytes` as numbers, `length` of them (zeros where none were set).
+function bytesOf(b64, length) {
+  const raw = atob(b64 || "");
+  const out = [];
+  for (let i = 0; i < Math.max(length, raw.length); i++) out.push(i < raw.length ? raw.charCodeAt(i) : 0);
+  return out;
+}
+
+// One byte: its number and hex value over eight cells, bit 7 on the left.
+function byteCells(bytes, direction) {
+  if (!bytes.length) return el("span", { class: "note" }, "–");
+  const box = el("div", { class: "bytes " + direction });
+  bytes.forEach((value, i) => {
+    const b = el("div", { class: "byte", "data-byte": i, "data-value": hex(value).toLowerCase() });
+    b.append(el("div", { class: "byte-label" }, `byte ${i} · 0x${hex(value)}`));
+    const cells = el("div", { class: "bitrow" });
+    for (let bit = 7; bit >= 0; bit--) {
+      const on = (value >> bit) & 1;
+      cells.append(el("span", { class: "b" + (on ? " on" : ""), "data-bit": bit,
+        title: `byte ${i} bit ${bit}` }, String(on)));
+    }
+    b.append(cells);
+    box.append(b);
+  });
+  return box;
+}
+
+function drawGsd(st) {
+  const address = Number(st.address || 0);
+  gsdStations.set(address, st);
+  const s = station(address);
+  if (!s.kind) s.kind = "gsd";
+  // the station list's row, also where the run has no event stream (the items' names)
+  const all = (key, len) => (st.modules || []).flatMap((m) => bytesOf(m[key], Number(m[len] || 0)));
+  Object.assign(s.values, { "dp-state": st.dpState, online: st.online ? "yes" : "no",
+    inputs: all("inputs", "inputLength").map((b) => hex(b).toLowerCase()).join(" "),
+    outputs: all("outputs", "outputLength").map((b) => hex(b).toLowerCase()).join(" ") });
+  $("gsd-panel").hidden = false;
+  let box = $("gsd").querySelector(`.gsd-station[data-address="${address}"]`);
+  if (!box) {
+    box = el("div", { class: "gsd-station", "data-address": address });
+    box.append(el("h3"), el("p", { class: "gsd-diag note" }), el("table", { class: "gsd-modules" }));
+    $("gsd").append(box);
+    [...$("gsd").children].sort((a, b) => a.dataset.address - b.dataset.address)
+      .forEach((c) => $("gsd").append(c));
+  }
+  box.dataset.state = st.dpState || "";
+  box.dataset.online = st.online ? "yes" : "no";
+  box.dataset.ident = "0x" + Number(st.identNumber || 0).toString(16).padStart(4, "0").toUpperCase();
+  const h = box.querySelector("h3");
+  const file = (st.file || "").split("/").pop();
+  h.innerHTML = "";
+  h.append(`Station ${address} `);
+  h.insertAdjacentHTML("beforeend", pill(st.dpState, dpClass(st.dpState)) + " " +
+    pill(st.online ? "online" : "off the bus", st.online ? "ok" : "bad"));
+  h.append(el("span", { class: "sub" }, `ident ${box.dataset.ident} · ${file}` +
+    `${st.dpv1 ? " · DPV1" : ""} · ${Number(st.dataExchanges || 0)} data exchanges`));
+  const notes = [];
+  if (st.prmFault) notes.push("Set_Prm refused: " + st.prmFault);
+  if ((st.diagnosisTexts || []).length) notes.push("diagnosis: " + st.diagnosisTexts.join("; "));
+  const diag = box.querySelector(".gsd-diag");
+  diag.textContent = notes.join(" · ");
+  diag.hidden = notes.length === 0;
+  const t = box.querySelector("table");
+  t.replaceChildren();
+  t.append(Object.assign(el("tr"), { innerHTML:
+    "<th>Slot</th><th>Module</th><th>Inputs (station → master)</th><th>Outputs (master → station)</th>" }));
+  for (const m of st.modules || []) {
+    const inputs = bytesOf(m.inputs, Number(m.inputLength || 0));
+    const outputs = bytesOf(m.outputs, Number(m.outputLength || 0));
+    const row = el("tr", { class: "gsd-module", "data-slot": Number(m.slot || 0),
+      "data-inputs": inputs.map((b) => hex(b).toLowerCase()).join(" "),
+      "data-outputs": outputs.map((b) => hex(b).toLowerCase()).join(" ") });
+    row.append(el("td", {}, String(Number(m.slot || 0))), el("td", { class: "module" }, m.name));
+    const i = el("td"), o = el("td");
+    i.append(byteCells(inputs, "in"));
+    o.append(byteCells(outputs, "out"));
+    row.append(i, o);
+    t.append(row);
+  }
+  scheduleRender();
+}
+
 // ---- simulated time -------------------------------------------------------------------------
 async function refreshClock(t) {
   try {
@@ -506,11 +617,14 @@ async function start() {
   let polled = false;
   if (await pollMaster()) { polled = true; setInterval(pollMaster, 500); }
   if (await pollArchive()) { polled = true; setInterval(pollArchive, 2000); }
+  const gsd = await pollGsd();
+  let gsdPoll = gsd ? setInterval(pollGsd, 1000) : null;
   const events = new EventSource("/api/events" + (token ? "?access_token=" + encodeURIComponent(token) : ""));
   events.onopen = () => { $("link").dataset.state = "live"; $("link").textContent = "live"; };
   events.onerror = () => {
     // A run without an event source (`master`) refuses the stream: the page polls instead.
     const closed = events.readyState === EventSource.CLOSED;
+    if (closed && gsd) { polled = true; clearInterval(gsdPoll); gsdPoll = setInterval(pollGsd, 500); }
     $("link").dataset.state = closed && polled ? "polling" : "lost";
     $("link").textContent = closed ? (polled ? "polling" : "no event stream") : "reconnecting…";
   };

@@ -14,8 +14,11 @@ master's page lists the station from the master's own view (BusMaster: data-stat
 DataExchange, data-syncs 1), the archive's station and its history (the first sync's upload);
 two changes of the set through the run's JSON API (Device.SetParameterSet) are uploaded as
 two versions and the page draws their diff (the picture of `rs4sim archive diff --svg`).
-The screenshots are the test's artifacts: live_view.png, live_view_gridscan.png and
-live_view_master.png in the working directory.
+Before that, a bus file on the simulated bus (`run --bus bus_rs4_gsd.json --link memory`):
+the GSD station's address, ident, modules, DP state and online, and the inputs set through
+GsdStations.SetInputs bit by bit in the DOM; off the bus and back.
+The screenshots are the test's artifacts: live_view.png, live_view_gridscan.png,
+live_view_gsd.png and live_view_master.png in the working directory.
 
 Usage: browser_test.py RS4SIM OUTDIR. Exit 77 (skipped) without selenium or chromium.
 """
@@ -162,6 +165,60 @@ def main():
         shot = os.path.join(outdir, "live_view_gridscan.png")
         driver.save_screenshot(shot)
         print(f"ok: {elements} GridScan elements drawn, 3..5 interrupted; screenshot {shot}")
+
+        # A bus from one file on the simulated bus: the RS4 at 4, a GSD station at 5
+        # (modular_dpv1.gsd: "DI 8" 1 input byte, "AI 2" 4 input bytes, "DO 16 consistent" 2
+        # output bytes) and a generic slave at 7. Inputs set through the JSON API
+        # (GsdStations.SetInputs, bytes in base64) appear bit by bit; off the bus and back.
+        bus_file = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "gsd", "corpus",
+                                "bus_rs4_gsd.json")
+        bus = subprocess.Popen([rs4sim, "run", "--bus", bus_file, "--link", "memory",
+                                "--baud", "12M", "--http", "127.0.0.1:0"],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        procs.append(bus)
+        base = listening_among(bus)
+        # past the RS4's PROFIBUS adapter start (LED steady 2-3 s [RS4 manual §4.4], 2.5 s)
+        call(base, "rs4sim.v1.SimTime/Advance", {"durationMs": 3000})
+        driver.get(base)
+        gsd = '#gsd .gsd-station[data-address="5"]'
+        wait.until(lambda d: d.find_elements(
+            By.CSS_SELECTOR,
+            gsd + '[data-state="Data_Exch"][data-online="yes"][data-ident="0xB756"]'))
+        modules = driver.execute_script(
+            "return [...document.querySelectorAll(arguments[0] + ' .gsd-module .module')]"
+            ".map((e) => e.textContent);", gsd)
+        assert modules == ["DI 8", "AI 2", "DO 16 consistent"], modules
+        wait.until(lambda d: d.find_elements(
+            By.CSS_SELECTOR, '#stations tr[data-address="5"][data-state="Data_Exch"]'))
+        call(base, "rs4sim.v1.GsdStations/SetInputs", {"address": 5, "slot": 0, "data": "pQ=="})  # A5
+        call(base, "rs4sim.v1.GsdStations/SetInputs",
+             {"address": 5, "slot": 1, "data": "ESIzRA=="})  # 11 22 33 44
+        call(base, "rs4sim.v1.SimTime/Advance", {"durationMs": 100})
+        wait.until(lambda d: d.find_elements(
+            By.CSS_SELECTOR, gsd + ' .gsd-module[data-slot="1"][data-inputs="11 22 33 44"]'))
+        bits = wait.until(lambda d: d.execute_script(
+            "const c = document.querySelectorAll(arguments[0] + ' .gsd-module[data-slot=\"0\"]"
+            " .bytes.in .byte[data-byte=\"0\"] .b');"
+            "return c.length === 8 ? [...c].map((e) => e.dataset.bit + ':' + e.textContent) : null;",
+            gsd))
+        assert bits == ["7:1", "6:0", "5:1", "4:0", "3:0", "2:1", "1:0", "0:1"], bits  # 0xA5
+        outputs = driver.find_element(
+            By.CSS_SELECTOR, gsd + ' .gsd-module[data-slot="2"]').get_attribute("data-outputs")
+        assert outputs == "00 00", outputs  # our master writes zeros
+        call(base, "rs4sim.v1.GsdStations/SetOnline", {"address": 5, "online": False})
+        call(base, "rs4sim.v1.SimTime/Advance", {"durationMs": 300})
+        wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, gsd + '[data-online="no"]'))
+        call(base, "rs4sim.v1.GsdStations/SetOnline", {"address": 5, "online": True})
+        call(base, "rs4sim.v1.SimTime/Advance", {"durationMs": 1000})
+        wait.until(lambda d: d.find_elements(
+            By.CSS_SELECTOR, gsd + '[data-online="yes"][data-state="Data_Exch"]'))
+        wait.until(lambda d: d.find_elements(
+            By.CSS_SELECTOR, '#stations tr[data-address="4"][data-state="Data_Exch"]'))
+        driver.execute_script("document.getElementById('gsd-panel').scrollIntoView()")
+        shot = os.path.join(outdir, "live_view_gsd.png")
+        driver.save_screenshot(shot)
+        print(f"ok: GSD station 5 drawn (ident 0xB756, {len(modules)} modules), inputs A5 and "
+              f"11 22 33 44 bit by bit, off the bus and back; screenshot {shot}")
 
         # `master` with an archive, its RS4 in `rs4sim run` on UDP (a 3 s boot).
         work = tempfile.mkdtemp(prefix="rs4sim_browser_master_")

@@ -7,12 +7,17 @@
 
 #include "dp/link/memory_bus.h"
 #include "dp/time/clock.h"
+#include "http_front.h"
+#include "rpc/executor.h"
+#include "rpc/server.h"
 #include "rpc/service_support.h"
 #include "rs4/device/rs4_device.h"
 
+#include <boost/asio/executor_work_guard.hpp>
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <thread>
 
 namespace rs4sim::rpc {
 namespace {
@@ -88,6 +93,66 @@ TEST(BusMaster, ListStationsShowsTheMastersViewAndCounters) {
   EXPECT_EQ(after.repeats(), 1U);
   EXPECT_EQ(after.lost(), 0U);
   EXPECT_EQ(after.syncs(), 1U);
+}
+
+// The same list as JSON over HTTP (docs/http.md), what the page of `rs4sim master` polls: a real
+// server in front of the service, the bus on the loop's thread as in a run. The answer is the
+// service's own, in the JSON mapping (uint64 counters as strings); what is not the Empty request
+// or not a method of BusMaster is refused with the google.rpc.Status of the error.
+TEST(BusMaster, ListStationsAsJsonOverHttp) {
+  dp::ManualClock clock;
+  rs4::device::Rs4MasterStation station(one_rs4());
+  rs4::device::Rs4Device rs4(rs4_at_4());
+  dp::link::MemoryBus bus(clock);
+  bus.attach(station);
+  bus.attach(rs4);
+  bus.start();
+  rs4.power_on(clock.now());
+  boost::asio::io_context io;
+  auto work = boost::asio::make_work_guard(io);
+  AsioExecutor executor(io);
+  std::thread loop([&] { io.run(); });
+  {
+    BusMasterService service(station, clock, executor);
+    RpcServer server(ServerOptions{}, std::vector<grpc::Service*>{&service});
+    HttpFront h(io, server);
+    executor.run([&] {
+      std::vector<rs4::device::Rs4MasterEvent> events;
+      ASSERT_TRUE(bus.run_until([&] { return station.in_data_exchange(4); }, clock.now() + 10s,
+                                [&] { station.take_events(events); }));
+      bus.run_for(5s);
+      dp::link::Fault drop;
+      drop.kind = dp::link::FaultKind::kDrop;
+      drop.from = 4;
+      drop.count = 1;
+      bus.inject(drop);
+      bus.run_for(200ms);
+    });
+    const auto a = h.call("rs4sim.v1.BusMaster/ListStations");
+    ASSERT_EQ(a.status, 200u) << a.body;
+    EXPECT_EQ(a.content_type, "application/json");
+    const auto list = from_json<v1::BusStationsResponse>(a.body);
+    v1::BusStationsResponse direct;
+    ASSERT_TRUE(service.ListStations(nullptr, nullptr, &direct).ok());
+    EXPECT_EQ(list.SerializeAsString(), direct.SerializeAsString());
+    ASSERT_EQ(list.stations_size(), 1);
+    EXPECT_EQ(list.stations(0).address(), 4U);
+    EXPECT_EQ(list.stations(0).plc().dp().repeats(), 1U);
+    EXPECT_EQ(list.now_ns(), to_ns(clock.now()));
+    for (const char* text : {R"("dpState":"DataExchange")", R"("fhostState":"run")",
+                             R"("syncs":"1")", R"("repeats":"1")", R"("lost":"0")"}) {
+      EXPECT_NE(a.body.find(text), std::string::npos) << text << " in " << a.body;
+    }
+    auto field = error_of(h.call("rs4sim.v1.BusMaster/ListStations", R"({"address": 4})"), 400, 3);
+    EXPECT_NE(field.message().find("address"), std::string::npos) << field.message();
+    auto method = error_of(h.call("rs4sim.v1.BusMaster/GetStation", R"({"address": 4})"), 404, 5);
+    EXPECT_NE(method.message().find("GetStation"), std::string::npos) << method.message();
+    error_of(h.request(boost::beast::http::verb::get, "/api/rs4sim.v1.BusMaster/ListStations"), 405,
+             12);
+    error_of(h.call("rs4sim.v1.GsdStations/ListStations"), 501, 12);  // not served by this run
+  }
+  work.reset();
+  loop.join();
 }
 
 }  // namespace

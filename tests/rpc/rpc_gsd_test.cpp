@@ -7,6 +7,7 @@
 #include "app/devices/gsd_service.h"
 #include "google/rpc/error_details.pb.h"
 #include "google/rpc/status.pb.h"
+#include "http_front.h"
 #include "rpc/executor.h"
 #include "rpc/server.h"
 #include "rs4sim/v1/gsd.grpc.pb.h"
@@ -15,6 +16,7 @@
 #include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/io_context.hpp>
 #include <gtest/gtest.h>
+
 #include <grpcpp/create_channel.h>
 #include <grpcpp/security/credentials.h>
 
@@ -239,6 +241,88 @@ TEST_F(RpcGsdTest, BusFaultsByTheFaultsServiceRules) {
   grpc::ClientContext ctx3;
   v1::Empty e;
   EXPECT_TRUE(stub_->ClearBusFaults(&ctx3, v1::Empty{}, &e).ok());
+}
+
+// The same service as JSON over HTTP (docs/http.md): the answers are the gRPC answers, inputs set
+// through POST /api/rs4sim.v1.GsdStations/SetInputs reach our master in the next Data_Exchange,
+// and the errors keep their code, message and details. `bytes` are base64 in the JSON mapping:
+// "ESIzRA==" is 11 22 33 44, "pQ==" is A5.
+TEST_F(RpcGsdTest, JsonOverHttpIsTheSameService) {
+  rpc::HttpFront h(io_, *server_);
+  const auto list = h.call("rs4sim.v1.GsdStations/ListStations");
+  ASSERT_EQ(list.status, 200u) << list.body;
+  {
+    grpc::ClientContext ctx;
+    v1::ListGsdStationsResponse over_grpc;
+    ASSERT_TRUE(stub_->ListStations(&ctx, v1::Empty{}, &over_grpc).ok());
+    EXPECT_EQ(rpc::from_json<v1::ListGsdStationsResponse>(list.body).SerializeAsString(),
+              over_grpc.SerializeAsString());
+  }
+  EXPECT_NE(list.body.find(R"("identNumber":46934)"), std::string::npos) << list.body;  // 0xB756
+  EXPECT_NE(list.body.find(R"("dpState":"Wait_Prm")"), std::string::npos) << list.body;
+  EXPECT_NE(list.body.find(R"("name":"DO 16 consistent")"), std::string::npos) << list.body;
+
+  run_for(500ms);
+  ASSERT_TRUE(master_exchanges());
+  auto a =
+      h.call("rs4sim.v1.GsdStations/SetInputs", R"({"address": 5, "slot": 1, "data": "ESIzRA=="})");
+  ASSERT_EQ(a.status, 200u) << a.body;
+  EXPECT_EQ(a.body, "{}");
+  ASSERT_EQ(
+      h.call("rs4sim.v1.GsdStations/SetInputs", R"({"address": 5, "slot": 0, "data": "pQ=="})")
+          .status,
+      200u);
+  run_for(100ms);
+  Bytes inputs;
+  executor_.run([&] {
+    const auto in = segment_->master().inputs(5);
+    inputs.assign(in.begin(), in.end());
+  });
+  EXPECT_EQ(inputs, (Bytes{0xA5, 0x11, 0x22, 0x33, 0x44}));
+  a = h.call("rs4sim.v1.GsdStations/GetStation", R"({"address": 5})");
+  ASSERT_EQ(a.status, 200u) << a.body;
+  const auto s = rpc::from_json<v1::GsdStation>(a.body);
+  EXPECT_EQ(s.dp_state(), "Data_Exch");
+  EXPECT_EQ(s.modules(1).inputs(), bytes({0x11, 0x22, 0x33, 0x44}));
+  EXPECT_EQ(s.SerializeAsString(), get(5).SerializeAsString());
+
+  // Off the bus and back through JSON.
+  ASSERT_EQ(h.call("rs4sim.v1.GsdStations/SetOnline", R"({"address": 5, "online": false})").status,
+            200u);
+  EXPECT_FALSE(get(5).online());
+  ASSERT_EQ(h.call("rs4sim.v1.GsdStations/SetOnline", R"({"address": 5, "online": true})").status,
+            200u);
+  EXPECT_TRUE(get(5).online());
+
+  // The errors: the gRPC code, its HTTP status and the service's own message and details.
+  auto unknown = rpc::error_of(
+      h.call("rs4sim.v1.GsdStations/SetInputs", R"({"address": 9, "slot": 0, "data": "AA=="})"),
+      404, 5);
+  EXPECT_EQ(unknown.message(), "no GSD station at address 9 (this run's GSD stations: 5)");
+  rpc::error_of(h.call("rs4sim.v1.GsdStations/GetStation", R"({"address": 7})"), 404, 5);
+  auto length = rpc::error_of(
+      h.call("rs4sim.v1.GsdStations/SetInputs", R"({"address": 5, "slot": 1, "data": "ESI="})"),
+      400, 3);
+  ASSERT_EQ(length.details_size(), 1);
+  google::rpc::BadRequest bad;
+  ASSERT_TRUE(length.details(0).UnpackTo(&bad));
+  ASSERT_EQ(bad.field_violations_size(), 1);
+  EXPECT_EQ(bad.field_violations(0).field(), "data");
+  EXPECT_EQ(bad.field_violations(0).description(),
+            "2 bytes; module \"AI 2\" (slot 1) has 4 input bytes");
+  EXPECT_NE(length.details(0).type_url().find("google.rpc.BadRequest"), std::string::npos);
+  auto pull = rpc::error_of(h.call("rs4sim.v1.GsdStations/RaiseAlarm",
+                                   R"({"address": 5, "type": "GSD_ALARM_TYPE_PULL", "slot": 1})"),
+                            412, 9);
+  EXPECT_NE(pull.message().find("Pull_Plug_Alarm_supp"), std::string::npos) << pull.message();
+  // Not the input message in the JSON mapping: protobuf's reason, nothing reaches the station.
+  rpc::error_of(
+      h.call("rs4sim.v1.GsdStations/SetInputs", R"({"address": 5, "slot": 0, "data": 165})"), 400,
+      3);
+  rpc::error_of(
+      h.call("rs4sim.v1.GsdStations/SetOnline", R"({"address": "five", "online": false})"), 400, 3);
+  EXPECT_TRUE(get(5).online());
+  rpc::error_of(h.call("rs4sim.v1.GsdStations/SetInput", "{}"), 404, 5);
 }
 
 // `rs4sim run --device generic --gsd … --link memory --grpc`: the segment's own services
