@@ -45,4 +45,9 @@ int run_gridscan_demo(RunSession& session, std::ostream& out, const DemoOptions&
 // filter's scans), a CRC error answered by exception 07, an unanswered broadcast.
 int run_polaris_demo(RunSession& session, std::ostream& out, const DemoOptions& options);
 
+// METRON scenario: the Receiver in slave line mode on the simulated line, the demo its host:
+// the OSSD status after Equation 3's delay, an object's measurements, the error answers
+// E1..E5, a parity error that costs the whole message its reply.
+int run_metron_demo(RunSession& session, std::ostream& out, const DemoOptions& options);
+
 }  // namespace rs4sim::app

@@ -170,7 +170,7 @@ DeviceEntry metron_device_entry() {
       .validate = validate,
       .build = [](const DeviceOptions& o) { return std::make_unique<MetronInstance>(o); },
       .simulate = [](const DeviceOptions& o) { return std::make_unique<MetronSegment>(o); },
-      .demo = {},
+      .demo = run_metron_demo,
       .byte_device = true,
   };
 }
