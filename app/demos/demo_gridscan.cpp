@@ -5,10 +5,10 @@
 // power cycle that runs the power-up again. Exits 0 when every step did what the manual says.
 #include "app/demos/demos.h"
 #include "app/demos/narration.h"
+#include "app/runtime/run_options.h"
 #include "gridscan/device.h"
 #include "stream/memory_line.h"
 
-#include <cstdio>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -18,17 +18,6 @@ namespace {
 
 using namespace std::chrono_literals;
 using Bytes = std::vector<std::uint8_t>;
-
-std::string hex(const Bytes& b) {
-  std::string out;
-  char two[4];
-  for (const auto byte : b) {
-    std::snprintf(two, sizeof two, "%02X ", byte);
-    out += two;
-  }
-  if (!out.empty()) out.pop_back();
-  return out;
-}
 
 const Bytes kSync{0x43, 0x45, 0x44, 0x45};
 Bytes with_sync(std::initializer_list<std::uint8_t> rest) {
@@ -40,16 +29,16 @@ Bytes with_sync(std::initializer_list<std::uint8_t> rest) {
 class Demo {
  public:
   Demo(std::ostream& out, bool realtime, RunSession& session)
-      : run_(run_until(realtime, session)),
-        n_(out, clock_, run_, Narration::Stamp::kMilliseconds) {
+      : run_(run_until(realtime, session)), n_(out, clock_, run_, Narration::Stamp::kMilliseconds) {
     line_.set_peer([this](const stream::LineFrame& f) { arrived_.push_back(f.bytes); });
   }
   int run() {
-    n_.print("GridScan/Pro SI, RC: 22 elements, blanking, door open; 115200 8N1 "
-             "[GridScan manual §9.1]\n");
-    return run_story(n_, {[this] { return power_up("power-up"); },
-                          [this] { return communication_test(); },
-                          [this] { return power_cycle(); }});
+    n_.print(
+        "GridScan/Pro SI, RC: 22 elements, blanking, door open; 115200 8N1 "
+        "[GridScan manual §9.1]\n");
+    return run_story(
+        n_, {[this] { return power_up("power-up"); }, [this] { return communication_test(); },
+             [this] { return power_cycle(); }});
   }
 
  private:
@@ -77,8 +66,8 @@ class Demo {
       started_ = true;
       line_.start();
     }
-    return expect(with_sync({0x00, 0xA0, 0x30, 0x31, 0x2E, 0x30, 0x32, 0x30, 0x33, 0x2E, 0x30,
-                             0x34, 0x33, 0x7F, 0x67, 0x4B}),
+    return expect(with_sync({0x00, 0xA0, 0x30, 0x31, 0x2E, 0x30, 0x32, 0x30, 0x33, 0x2E, 0x30, 0x34,
+                             0x33, 0x7F, 0x67, 0x4B}),
                   10ms, "Info: Get version (SeqCnt 0): SW 01.02, HW 03.04") &&
            expect(with_sync({0x01, 0xB0, 0x16, 0x00, 0x69, 0x78, 0x27, 0x24}), 2s,
                   "Data: Reduced state (SeqCnt 1): door 22 = open, nothing interrupted; ready");
@@ -91,9 +80,11 @@ class Demo {
     };
     const std::vector<Step> steps{
         {{0, 0, 0, 0, 0x00, 0x23, 0, 0, 0, 0},
-         with_sync({0x01, 0xA3, 0x07, 0xEF, 0x30, 0x3F, 0x78}), "error bits 07: CRC, SeqCnt, sync"},
+         with_sync({0x01, 0xA3, 0x07, 0xEF, 0x30, 0x3F, 0x78}),
+         "error bits 07: CRC, SeqCnt, sync"},
         {{0, 0, 0, 0, 0x02, 0x23, 0, 0, 0, 0},
-         with_sync({0x03, 0xA3, 0x05, 0x8F, 0x52, 0x0C, 0x72}), "error bits 05: CRC, sync"},
+         with_sync({0x03, 0xA3, 0x05, 0x8F, 0x52, 0x0C, 0x72}),
+         "error bits 05: CRC, sync"},
         {with_sync({0x04, 0x23, 0, 0, 0, 0}), with_sync({0x05, 0xA3, 0x01, 0x41, 0xCF, 0xDB, 0x65}),
          "error bits 01: CRC"},
         {with_sync({0x06, 0x23, 0xE2, 0x4B, 0x01, 0x70}),
@@ -102,7 +93,8 @@ class Demo {
     for (const auto& s : steps) {
       n_.say("control -> " + hex(s.request));
       line_.write(s.request);
-      if (!expect(s.answer, 100ms, std::string(s.what) + " (answered at the cycle end)")) return false;
+      if (!expect(s.answer, 100ms, std::string(s.what) + " (answered at the cycle end)"))
+        return false;
     }
     return true;
   }

@@ -8,10 +8,10 @@
 // what the manual says.
 #include "app/demos/demos.h"
 #include "app/demos/narration.h"
+#include "app/runtime/run_options.h"
 #include "metron/device.h"
 #include "stream/memory_line.h"
 
-#include <cstdio>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -21,17 +21,6 @@ namespace {
 
 using namespace std::chrono_literals;
 using Bytes = std::vector<std::uint8_t>;
-
-std::string hex(const Bytes& b) {
-  std::string out;
-  char two[4];
-  for (const auto byte : b) {
-    std::snprintf(two, sizeof two, "%02X ", byte);
-    out += two;
-  }
-  if (!out.empty()) out.pop_back();
-  return out;
-}
 
 // #12 Request OSSD status: start, length 1, command, checksum (~ of command and data).
 const Bytes kOssdStatus{0x02, 0x01, 0x0C, 0xF3};

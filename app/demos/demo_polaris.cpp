@@ -7,10 +7,10 @@
 // step did what the manual says.
 #include "app/demos/demos.h"
 #include "app/demos/narration.h"
+#include "app/runtime/run_options.h"
 #include "polaris/device.h"
 #include "stream/memory_line.h"
 
-#include <cstdio>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -20,17 +20,6 @@ namespace {
 
 using namespace std::chrono_literals;
 using Bytes = std::vector<std::uint8_t>;
-
-std::string hex(const Bytes& b) {
-  std::string out;
-  char two[4];
-  for (const auto byte : b) {
-    std::snprintf(two, sizeof two, "%02X ", byte);
-    out += two;
-  }
-  if (!out.empty()) out.pop_back();
-  return out;
-}
 
 std::vector<std::uint16_t> range(std::uint16_t first, std::uint16_t last) {
   std::vector<std::uint16_t> out;
