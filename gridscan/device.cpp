@@ -204,9 +204,9 @@ void Device::send_cycle_messages() {
 // The frame as it goes on the wire, with the transmission faults of
 // [GridScan manual §10.2.2] applied (faults.h).
 void Device::send(std::uint8_t id, std::uint8_t seq, const Payload& payload) {
+  if (faults_.transmit.silent) return;  // nothing on the wire, nothing to insert again later
   Frame f{seq, id, payload};
   std::optional<Frame> previous = std::exchange(last_sent_, f);
-  if (faults_.transmit.silent) return;
   if (faults_.wrong_seq) ++f.seq;
   if (faults_.direction_bit) f.id &= kIdMask;
   const auto seal = [this](const Frame& frame) {

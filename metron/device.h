@@ -50,7 +50,12 @@ class Device final : public stream::ByteDevice {
   void set_input(bool high);
   void set_synchronised(bool synchronised);
 
-  [[nodiscard]] Faults& faults() { return faults_; }
+  [[nodiscard]] const Faults& faults() const { return faults_; }
+  // Wakes the link: a late answer's due time may move.
+  void set_faults(const Faults& f) {
+    faults_ = f;
+    wake();
+  }
   [[nodiscard]] const Options& options() const { return options_; }
   [[nodiscard]] const SlaveState& slave_state() const { return state_; }
   [[nodiscard]] bool ossd_on() const;

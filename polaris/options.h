@@ -27,6 +27,10 @@ enum class Detection : std::uint8_t { kObject, kHole };
 enum class BitOrder : std::uint8_t { kLsbFirst, kMsbFirst };
 
 [[nodiscard]] std::string_view to_string(DataMode m) noexcept;
+// "slave", "master" (the API's and the CLI's word).
+[[nodiscard]] constexpr std::string_view to_token(Role r) noexcept {
+  return r == Role::kSlave ? "slave" : "master";
+}
 [[nodiscard]] std::optional<DataMode> parse_data_mode(std::string_view text) noexcept;
 
 struct Options {

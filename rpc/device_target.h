@@ -64,7 +64,7 @@ class DeviceTarget final : public Rs4Target {
   }
   bool link_timing(std::uint8_t address, v1::LinkTiming& out) override;
   // The run's stations that are not RS4s (a bus file's), by address: what the RS4 calls say
-  // for them (Rs4Target::other_station).
+  // for them (RunTarget::other_station).
   void set_other_stations(std::map<std::uint8_t, std::string> others) {
     others_ = std::move(others);
   }
@@ -88,13 +88,16 @@ class DeviceTarget final : public Rs4Target {
   PcAdapterHook pc_adapter_hook_;
 };
 
-// The RunTarget of an RS-485 device's run (rs4sim run --device gridscan|metron|polaris
-// --grpc): no RS4, only the event source, so that Observation.StreamEvents carries the device's
-// changes (its watcher, rpc/items_watcher.h) with the same timer as DeviceTarget; the
-// Observation RPCs for an RS4 answer FAILED_PRECONDITION naming the device's own service.
+// The RunTarget of a real-time run without RS4s (rs4sim run --device gridscan|metron|polaris
+// --grpc, and a lone GSD station's, kind "gsd"): only the event source, so that
+// Observation.StreamEvents carries the device's changes (its watcher, rpc/items_watcher.h) with the
+// same timer as DeviceTarget; the Observation RPCs for an RS4 answer FAILED_PRECONDITION naming the
+// device's own service.
 class LineDeviceTarget final : public RunTarget {
  public:
-  // `kind`: "gridscan", "metron", "polaris". Starts the poll timer as DeviceTarget does.
+  // `kind`: "gridscan", "metron", "polaris", "gsd". Starts the poll timer as DeviceTarget
+  // does. Real time: run_until() only checks `done`, after() is not offered (nothing of such
+  // a run schedules through it: SimTime answers FAILED_PRECONDITION on a real-time clock).
   LineDeviceTarget(std::string kind, std::unique_ptr<Watcher> watcher, const dp::Clock& clock,
                    boost::asio::io_context& io);
   [[nodiscard]] std::vector<std::uint8_t> addresses() const override { return {address_}; }

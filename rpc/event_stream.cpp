@@ -1,6 +1,7 @@
 // Observation.StreamEvents (docs/rpc.md "Event stream"): the request is checked here, the
 // stream subscribes on the loop (so its snapshot and the changes after it line up), then this
 // gRPC thread writes what the queue holds until the client goes away or the run ends.
+#include "modbus/rtu_frame.h"
 #include "rpc/event_hub.h"
 #include "rpc/rs4_services.h"
 #include "rpc/service_support.h"
@@ -25,9 +26,11 @@ grpc::Status check(const v1::StreamEventsRequest& in) {
   }
   for (int i = 0; i < in.addresses_size(); ++i) {
     if (in.addresses(i) > 255) {
-      return invalid_argument("addresses[" + std::to_string(i) + "]",
-                              "address " + std::to_string(in.addresses(i)) +
-                                  " outside 0..255 (RS4: 0..126, Polaris: 1..247)");
+      return invalid_argument(
+          "addresses[" + std::to_string(i) + "]",
+          "address " + std::to_string(in.addresses(i)) +
+              " outside 0..255 (RS4: 0..126, Polaris: " + std::to_string(modbus::kMinSlaveAddress) +
+              ".." + std::to_string(modbus::kMaxSlaveAddress) + ")");
     }
   }
   return grpc::Status::OK;

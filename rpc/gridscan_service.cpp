@@ -236,7 +236,7 @@ grpc::Status GridScanService::PowerCycle(grpc::ServerContext*, const v1::PowerCy
   return on_line(
       c_, "GridScan", in->address(),
       [&](dp::TimePoint now) {
-        if (in->off_ms() > 0 && c_.line == nullptr) return needs_simulated_line("gridscan");
+        if (in->off_ms() > 0 && c_.line == nullptr) return needs_simulated_line("GridScan");
         d_.power_off();
         if (in->off_ms() > 0) {
           (void)c_.line->run_until([] { return false; }, std::chrono::milliseconds(in->off_ms()));
@@ -261,12 +261,12 @@ grpc::Status GridScanService::SetPower(grpc::ServerContext*, const v1::SetPowerR
 
 grpc::Status GridScanService::Exchange(grpc::ServerContext*, const v1::ExchangeRequest* in,
                                        v1::ExchangeResponse* out) {
-  return exchange_on(c_, "gridscan", *in, *out);
+  return exchange_on(c_, "GridScan", *in, *out);
 }
 
 grpc::Status GridScanService::Receive(grpc::ServerContext*, const v1::ReceiveRequest* in,
                                       v1::ReceiveResponse* out) {
-  return receive_on(c_, "gridscan", *in, *out);
+  return receive_on(c_, "GridScan", *in, *out);
 }
 
 std::unique_ptr<Watcher> gridscan_watcher(std::uint8_t address, const gridscan::Device& d) {

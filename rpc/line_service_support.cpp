@@ -3,6 +3,8 @@
 #include "rpc/service_support.h"
 #include "rpc/status.h"
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <string>
 #include <variant>
@@ -26,12 +28,15 @@ void fill_frame(const stream::LineFrame& f, v1::ReceivedFrame& out) {
 }  // namespace
 
 grpc::Status needs_simulated_line(const std::string& kind) {
+  std::string word = kind;  // the --device word: "gridscan" for "GridScan"
+  std::transform(word.begin(), word.end(), word.begin(),
+                 [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
   return failed_precondition(
       "CLOCK", "simulated line",
       "this " + kind +
           " runs on a real-time link; Exchange and Receive need the simulated "
           "line (rs4sim run --device " +
-          kind + " --link memory --grpc ...)");
+          word + " --link memory --grpc ...)");
 }
 
 // Checks the address (INVALID_ARGUMENT beyond a byte, NOT_FOUND for another device), then

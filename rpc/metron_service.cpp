@@ -163,7 +163,7 @@ grpc::Status MetronService::fault(const v1::MetronFaultRequest& in, bool inject)
   return on_line(
       c_, "METRON", in.address(),
       [&](dp::TimePoint) {
-        auto& f = d_.faults();
+        auto f = d_.faults();
         switch (which) {
           case v1::METRON_FAULT_SILENT: f.transmit.silent = inject; break;
           case v1::METRON_FAULT_LATE:
@@ -181,6 +181,7 @@ grpc::Status MetronService::fault(const v1::MetronFaultRequest& in, bool inject)
           case v1::METRON_FAULT_TRUNCATE: f.truncate = inject; break;
           default: break;
         }
+        d_.set_faults(f);
         return grpc::Status::OK;
       },
       true);
@@ -198,12 +199,14 @@ grpc::Status MetronService::ClearFault(grpc::ServerContext*, const v1::MetronFau
 
 grpc::Status MetronService::Exchange(grpc::ServerContext*, const v1::ExchangeRequest* in,
                                      v1::ExchangeResponse* out) {
-  return exchange_on(c_, "metron", *in, *out);
+  if (auto bad = check_metron_address(in->address()); !bad.ok()) return bad;
+  return exchange_on(c_, "METRON", *in, *out);
 }
 
 grpc::Status MetronService::Receive(grpc::ServerContext*, const v1::ReceiveRequest* in,
                                     v1::ReceiveResponse* out) {
-  return receive_on(c_, "metron", *in, *out);
+  if (auto bad = check_metron_address(in->address()); !bad.ok()) return bad;
+  return receive_on(c_, "METRON", *in, *out);
 }
 
 std::unique_ptr<Watcher> metron_watcher(std::uint8_t address, const metron::Device& d) {

@@ -25,7 +25,7 @@ using line::whole_ms;
 std::vector<std::string> polaris_faults(const polaris::Faults& f) {
   std::vector<std::string> out;
   if (f.bad_crc) out.emplace_back("bad-crc");
-  if (f.transmit.silent) out.emplace_back("no-answer");
+  if (f.transmit.silent) out.emplace_back("silent");
   if (f.transmit.late.count() > 0) out.emplace_back("late");
   return out;
 }
@@ -54,7 +54,7 @@ grpc::Status PolarisService::GetState(grpc::ServerContext*, const v1::LineDevice
         out->set_family(std::string(polaris::to_string(o.family)));
         out->set_beams(o.beams);
         out->set_data_mode(std::string(polaris::to_string(o.mode)));
-        out->set_role(o.role == polaris::Role::kSlave ? "slave" : "master");
+        out->set_role(std::string(polaris::to_token(o.role)));
         for (const auto b : d_.interrupted()) out->add_blocked(b);
         out->set_pn1(d_.pn1());
         out->set_pn2(d_.pn2(now));
@@ -145,12 +145,14 @@ grpc::Status PolarisService::ClearFault(grpc::ServerContext*, const v1::PolarisF
 
 grpc::Status PolarisService::Exchange(grpc::ServerContext*, const v1::ExchangeRequest* in,
                                       v1::ExchangeResponse* out) {
-  return exchange_on(c_, "polaris", *in, *out);
+  if (auto bad = check_modbus_address(in->address()); !bad.ok()) return bad;
+  return exchange_on(c_, "Polaris", *in, *out);
 }
 
 grpc::Status PolarisService::Receive(grpc::ServerContext*, const v1::ReceiveRequest* in,
                                      v1::ReceiveResponse* out) {
-  return receive_on(c_, "polaris", *in, *out);
+  if (auto bad = check_modbus_address(in->address()); !bad.ok()) return bad;
+  return receive_on(c_, "Polaris", *in, *out);
 }
 
 std::unique_ptr<Watcher> polaris_watcher(std::uint8_t address, const polaris::Device& d) {

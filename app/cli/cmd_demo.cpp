@@ -2,8 +2,8 @@
 // the simulated bus; the RS4's by default. Exits 0 when every step did what the manual or
 // the spec says and 1 otherwise (CI runs it).
 #include "app/cli/command.h"
-#include "app/runtime/archive_path.h"
 #include "app/devices/device_registry.h"
+#include "app/runtime/archive_path.h"
 #include "app/runtime/grpc_cli.h"
 #include "app/runtime/run_session.h"
 #include "rpc/server.h"
@@ -17,16 +17,17 @@ namespace rs4sim::app {
 namespace {
 
 const CommandRegistration kDemo(
-    "demo", "narrated RS4/PROFIsafe scenario (or --device generic) on the simulated bus",
+    "demo", "narrated scenario of a device (RS4/PROFIsafe by default) on the simulated bus",
     [](CLI::App& cmd) {
       auto device = std::make_shared<std::string>("rs4");
-      cmd.add_option("--device", *device, "rs4 (default) | generic")
+      cmd.add_option("--device", *device, "rs4 (default) | generic | gridscan | metron | polaris")
           ->check(CLI::IsMember(device_names()));
       auto options = std::make_shared<DemoOptions>();
       add_capture_options(cmd, options->capture);
-      cmd.add_option("--archive", options->archive,
-                     "rs4: keep the sets the demo's proxy archives in this SQLite file or PostgreSQL "
-                     "URI (postgresql://user@host/db)");
+      cmd.add_option(
+          "--archive", options->archive,
+          "rs4: keep the sets the demo's proxy archives in this SQLite file or PostgreSQL "
+          "URI (postgresql://user@host/db)");
       cmd.add_flag("--realtime", options->realtime,
                    "run at the device's real timing (the RS4 demo takes about a minute)");
       add_grpc_options(cmd, options->grpc,
@@ -35,6 +36,15 @@ const CommandRegistration kDemo(
       return [device, options]() {
         const DeviceEntry& entry = *find_device(*device);
         if (!entry.demo) throw UsageError("--device " + *device + " has no demo yet");
+        if (!options->archive.empty() && *device != "rs4") {
+          throw UsageError("--archive: only the RS4 demo has a parameter proxy to archive");
+        }
+        const bool bus_demo = *device == "rs4" || *device == "generic";
+        if (!options->capture.file.empty() && !bus_demo) {
+          throw UsageError("--capture: the " + *device +
+                           " demo captures nothing; rs4sim run --device " + *device +
+                           " --link memory --capture FILE captures its line");
+        }
         checked_archive_path(options->archive);
         if (!options->grpc.empty()) {
           if (*device != "rs4") throw UsageError("--grpc: only the RS4 demo serves the API");

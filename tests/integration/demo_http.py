@@ -14,6 +14,8 @@ import re
 import signal
 import subprocess
 import sys
+import tempfile
+import threading
 import urllib.error
 import urllib.request
 
@@ -32,8 +34,10 @@ def post(base, method, request):
 
 def main():
     rs4sim = sys.argv[1]
+    err_file = tempfile.TemporaryFile(mode="w+")  # read at the end: a pipe could fill up
     proc = subprocess.Popen([rs4sim, "demo", "--http", "127.0.0.1:0"], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True)
+                            stderr=err_file, text=True)
+    rest = []  # the narration after the listening line, drained so the demo never blocks
     try:
         base = None
         for _ in range(40):
@@ -44,6 +48,8 @@ def main():
                 base = m.group(1)
                 break
         assert base, "no 'http: listening on http://127.0.0.1:PORT/' line in the first 40"
+        drain = threading.Thread(target=lambda: rest.extend(proc.stdout), daemon=True)
+        drain.start()
 
         status, ctype, state = post(base, "rs4sim.v1.Observation/GetState", {"address": 4})
         assert status == 200 and ctype == "application/json", (status, ctype, state)
@@ -74,7 +80,11 @@ def main():
         assert first.get("address") == 4 and first["state"]["from"] == "", first
 
         proc.send_signal(signal.SIGTERM)
-        out, err = proc.communicate(timeout=30)
+        proc.wait(timeout=30)
+        drain.join(timeout=30)
+        out = "".join(rest)
+        err_file.seek(0)
+        err = err_file.read()
         assert "demo interrupted" in out, out[-2000:]
         assert proc.returncode == 130, (proc.returncode, err)
         print(f"ok: {base} answered GetState (rs4State {state['rs4State']}), 404 for address 9, "

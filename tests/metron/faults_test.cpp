@@ -10,9 +10,17 @@ using namespace std::chrono_literals;
 
 const Bytes kRequest{0x02, 0x01, 0x0C, 0xF3};
 
+// Changes the device's faults as a client does: a copy, changed, set back (the setter wakes).
+template <typename Change>
+void set_fault(Rig& rig, Change change) {
+  Faults f = rig.device().faults();
+  change(f);
+  rig.device().set_faults(f);
+}
+
 TEST(MetronFaults, Silent) {
   Rig rig(slave_options());
-  rig.device().faults().transmit.silent = true;
+  set_fault(rig, [](Faults& f) { f.transmit.silent = true; });
   EXPECT_TRUE(rig.exchange(kRequest).empty());
   EXPECT_EQ(rig.device().counters().suppressed, 1U);
   EXPECT_EQ(rig.device().counters().executed, 1U);  // the command still ran
@@ -20,7 +28,7 @@ TEST(MetronFaults, Silent) {
 
 TEST(MetronFaults, LateAnswer) {
   Rig rig(slave_options());
-  rig.device().faults().transmit.late = 50ms;
+  set_fault(rig, [](Faults& f) { f.transmit.late = 50ms; });
   const auto t0 = rig.clock().now();
   const auto s = rig.exchange(kRequest);
   ASSERT_EQ(s.size(), 1U);
@@ -29,7 +37,7 @@ TEST(MetronFaults, LateAnswer) {
 
 TEST(MetronFaults, BadChecksum) {
   Rig rig(slave_options());
-  rig.device().faults().bad_checksum = true;
+  set_fault(rig, [](Faults& f) { f.bad_checksum = true; });
   const auto s = rig.exchange(kRequest);
   ASSERT_EQ(s.size(), 1U);
   EXPECT_EQ(s[0].bytes, (Bytes{0x02, 0x03, 0x0C, 0x01, 0x01, 0x0E /* ~0xF1 */}));
@@ -37,7 +45,7 @@ TEST(MetronFaults, BadChecksum) {
 
 TEST(MetronFaults, WrongNode) {
   Rig rig(node_options(5));
-  rig.device().faults().wrong_node = true;
+  set_fault(rig, [](Faults& f) { f.wrong_node = true; });
   const auto s = rig.exchange({0x02, 0x05, 0x01, 0x0C, 0xF3});
   ASSERT_EQ(s.size(), 1U);
   EXPECT_EQ(s[0].bytes[1], 0x06);
@@ -45,7 +53,7 @@ TEST(MetronFaults, WrongNode) {
 
 TEST(MetronFaults, Truncated) {
   Rig rig(slave_options());
-  rig.device().faults().truncate = true;
+  set_fault(rig, [](Faults& f) { f.truncate = true; });
   const auto s = rig.exchange(kRequest);
   ASSERT_EQ(s.size(), 1U);
   EXPECT_EQ(s[0].bytes, (Bytes{0x02, 0x03, 0x0C, 0x01, 0x01}));
@@ -56,7 +64,7 @@ TEST(MetronFaults, StandardReportBadChecksum) {
   o.line_mode = LineMode::kStandard;
   o.checksum = true;
   Rig rig(o);
-  rig.device().faults().bad_checksum = true;
+  set_fault(rig, [](Faults& f) { f.bad_checksum = true; });
   rig.advance(10ms);
   const auto s = rig.take();
   ASSERT_EQ(s.size(), 1U);

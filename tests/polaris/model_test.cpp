@@ -80,15 +80,15 @@ TEST(Model, ResponseTimesOfTheManualsTables) {
     std::chrono::microseconds second;
   };
   using std::chrono::microseconds;
+  // Rows the OCR printed whole (the repaired ones are checked by TheTablesAreConsistent only:
+  // their values are the project's reading, not the manual's print).
   const std::vector<Row> rows{
       {"PLi 02-80", Family::kPli02, 31, microseconds(700), microseconds(1100)},
-      {"PLi 02-2320", Family::kPli02, 927, microseconds(13300), microseconds(23500)},
       {"PLi 02-3440", Family::kPli02, 1375, microseconds(19600), microseconds(34700)},
       {"PLi 05-80", Family::kPli05, 15, microseconds(600), microseconds(1000)},
       {"PLi 05-2080", Family::kPli05, 415, microseconds(11800), microseconds(21000)},
       {"PLi 05-3440", Family::kPli05, 687, microseconds(19400), microseconds(34600)},
       {"PLi 12-095", Family::kPli12, 7, microseconds(400), microseconds(600)},
-      {"PLi 12-1440", Family::kPli12, 119, microseconds(3500), microseconds(6200)},
       {"PLi 12-3500", Family::kPli12, 287, microseconds(8200), microseconds(14600)},
       {"PL 10-80", Family::kPl10, 8, microseconds(400), microseconds(600)},
       {"PL 10-500", Family::kPl10, 50, microseconds(1600), microseconds(2700)},
@@ -97,7 +97,6 @@ TEST(Model, ResponseTimesOfTheManualsTables) {
       {"PL 24, h 116", Family::kPl24, 4, microseconds(300), microseconds(400)},
       {"PL 24, h 3476", Family::kPl24, 144, microseconds(4200), microseconds(7400)},
       {"PL 48, h 212", Family::kPl48, 4, microseconds(300), microseconds(400)},
-      {"PL 48, h 2324", Family::kPl48, 48, microseconds(1500), microseconds(2600)},
       {"PL 48, h 2900", Family::kPl48, 60, microseconds(1900), microseconds(3200)},
   };
   for (const Row& r : rows) {
