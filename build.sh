@@ -18,7 +18,7 @@
 # and run that preflight before anything is built: it names what is missing and its package.
 #
 # Environment: JOBS (parallel build jobs, default: nproc), FUZZ_SECONDS (per fuzz target
-# in `test`, default 5), RS4SIM_WERROR (warnings are errors, default ON here; a plain
+# in `test`, default 3), RS4SIM_WERROR (warnings are errors, default ON here; a plain
 # `cmake` configure leaves them warnings).
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -29,7 +29,7 @@ case "$mode" in demo|test|build|deps) ;; *)
 esac
 
 JOBS=${JOBS:-$(nproc)}
-FUZZ_SECONDS=${FUZZ_SECONDS:-5}
+FUZZ_SECONDS=${FUZZ_SECONDS:-3}
 RS4SIM_WERROR=${RS4SIM_WERROR:-ON}
 
 packages=(build-essential cmake ninja-build pkg-config libboost-dev libsqlite3-dev
