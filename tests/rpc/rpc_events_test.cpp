@@ -91,6 +91,11 @@ TEST_F(RpcEventsTest, Led3FollowsTheRestartButton) {
   grpc::ClientContext ctx;
   v1::StreamEventsRequest req;
   auto reader = open(ctx, req);
+  // The call returns before the server has subscribed; the snapshot's LED3 item says it has.
+  // A press before that would arrive inside the snapshot (from "") instead of as a change.
+  const auto snapshot = read_until(*reader, "led3", "off");
+  ASSERT_FALSE(snapshot.empty());
+  ASSERT_EQ(snapshot.back().from(), "");
   const auto button = [&](bool pressed) {
     grpc::ClientContext c;
     v1::SetRestartButtonRequest r;
