@@ -54,6 +54,11 @@ class Device final : public stream::ByteDevice {
   void set_blocked(std::uint64_t elements_mask) {
     scene_.blocked = elements_mask & element_mask(elements());
   }
+  // The objects as element numbers 1..elements() (Scene::set_interrupted), as every device.
+  std::error_code set_interrupted(std::span<const std::uint16_t> numbers) {
+    return scene_.set_interrupted(numbers, elements());
+  }
+  [[nodiscard]] std::vector<std::uint16_t> interrupted() const { return scene_.interrupted(); }
   void set_soiling(std::uint8_t level) { scene_.soiling = level > 3 ? 3 : level; }
   void set_internal_failure(bool on) { scene_.internal_failure = on; }
   void set_alignment_value(std::uint16_t v) { scene_.alignment_value = v; }

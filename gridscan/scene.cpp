@@ -14,6 +14,26 @@ std::uint8_t reported_door(const Scene& s, unsigned elements, Configuration c) {
 
 }  // namespace
 
+std::vector<std::uint16_t> elements_of(std::uint64_t mask, unsigned count) {
+  std::vector<std::uint16_t> out;
+  for (unsigned e = 1; e <= std::min(count, 64U); ++e) {
+    if ((mask >> (e - 1U) & 1U) != 0) out.push_back(static_cast<std::uint16_t>(e));
+  }
+  return out;
+}
+
+std::error_code Scene::set_interrupted(std::span<const std::uint16_t> elements, unsigned count) {
+  std::uint64_t mask = 0;
+  for (const std::uint16_t e : elements) {
+    if (e == 0 || e > std::min(count, 64U)) return std::make_error_code(std::errc::invalid_argument);
+    mask |= std::uint64_t{1} << (e - 1U);
+  }
+  blocked = mask;
+  return {};
+}
+
+std::vector<std::uint16_t> Scene::interrupted() const { return elements_of(blocked, 64); }
+
 std::uint64_t raw_elements(const Scene& s, unsigned elements, Configuration c) {
   const std::uint64_t all = element_mask(elements);
   std::uint64_t raw = s.blocked & all;

@@ -12,6 +12,9 @@
 #include "gridscan/payload.h"
 
 #include <cstdint>
+#include <span>
+#include <system_error>
+#include <vector>
 
 namespace rs4sim::gridscan {
 
@@ -21,12 +24,22 @@ struct Scene {
   std::uint8_t soiling = 0;       // maintenance level 0..3
   bool internal_failure = false;  // bit 9 ([GridScan manual §10.2.3])
   std::uint16_t alignment_value = 0;
+
+  // The objects as element numbers, the form every device's scene takes (metron/scene.h,
+  // polaris/scene.h): `elements` interrupted, the others free. An element outside 1..count
+  // is std::errc::invalid_argument and changes nothing.
+  std::error_code set_interrupted(std::span<const std::uint16_t> elements, unsigned count);
+  // The elements interrupted by objects, ascending (the door's cover is not an object).
+  [[nodiscard]] std::vector<std::uint16_t> interrupted() const;
 };
 
 // Bits of elements 1..n.
 [[nodiscard]] constexpr std::uint64_t element_mask(unsigned n) noexcept {
   return n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1U;
 }
+
+// The elements of `mask` among 1..count, ascending.
+[[nodiscard]] std::vector<std::uint16_t> elements_of(std::uint64_t mask, unsigned count);
 
 // What the elements see: the objects, plus the door's cover in blanking mode.
 [[nodiscard]] std::uint64_t raw_elements(const Scene& s, unsigned elements, Configuration c);

@@ -23,18 +23,12 @@ using line::set_last_frame;
 using line::token_of;
 using line::whole_ms;
 
-std::vector<std::uint16_t> elements_of(std::uint64_t mask, unsigned count) {
-  std::vector<std::uint16_t> out;
-  for (unsigned e = 1; e <= count && e <= 64; ++e) {
-    if ((mask >> (e - 1U)) & 1U) out.push_back(static_cast<std::uint16_t>(e));
-  }
-  return out;
-}
+using gridscan::elements_of;
 
 std::vector<std::string> gridscan_faults(const gridscan::Device& d) {
   const auto& f = d.faults();
   std::vector<std::string> out;
-  if (f.transmit.late.count() > 0) out.emplace_back("late-answer");
+  if (f.transmit.late.count() > 0) out.emplace_back("late");
   if (f.wrong_seq) out.emplace_back("wrong-seq");
   if (f.direction_bit) out.emplace_back("direction-bit");
   if (f.bad_crc) out.emplace_back("bad-crc");
@@ -68,7 +62,7 @@ grpc::Status GridScanService::GetState(grpc::ServerContext*, const v1::LineDevic
         out->set_led_tx_green(token_of(leds.tx_green));
         const auto& scene = d_.scene();
         out->set_door_position(scene.door_position);
-        for (const auto e : elements_of(scene.blocked, d_.elements())) out->add_blocked(e);
+        for (const auto e : d_.interrupted()) out->add_blocked(e);
         out->set_soiling(scene.soiling);
         const auto report = d_.current_report();
         out->set_report_door_position(report.door_position);
@@ -132,11 +126,8 @@ grpc::Status GridScanService::SetBlocked(grpc::ServerContext*, const v1::SetBloc
       [&](dp::TimePoint) {
         auto elements = numbers(*in, d_.elements(), "element");
         if (auto* bad = std::get_if<grpc::Status>(&elements)) return *bad;
-        std::uint64_t mask = 0;
-        for (const auto e : std::get<std::vector<std::uint16_t>>(elements)) {
-          mask |= std::uint64_t{1} << (e - 1U);
-        }
-        d_.set_blocked(mask);
+        // numbers() has checked the range, so the scene takes them all.
+        (void)d_.set_interrupted(std::get<std::vector<std::uint16_t>>(elements));
         return grpc::Status::OK;
       },
       true);
@@ -163,7 +154,7 @@ grpc::Status GridScanService::fault(const v1::GridScanFaultRequest& in, bool inj
   if (which == v1::GRID_SCAN_FAULT_UNSPECIFIED || !v1::GridScanFault_IsValid(which)) {
     return invalid_argument("fault", "a GRID_SCAN_FAULT_* value is required");
   }
-  if (inject && which == v1::GRID_SCAN_FAULT_LATE_ANSWER) {
+  if (inject && which == v1::GRID_SCAN_FAULT_LATE) {
     if (auto bad = check_delay(in.late_ms(), "late_ms"); !bad.ok()) return bad;
   }
   if (which != v1::GRID_SCAN_FAULT_STUCK_FREE && in.elements_size() > 0) {
@@ -189,7 +180,7 @@ grpc::Status GridScanService::fault(const v1::GridScanFaultRequest& in, bool inj
         }
         auto f = d_.faults();
         switch (which) {
-          case v1::GRID_SCAN_FAULT_LATE_ANSWER:
+          case v1::GRID_SCAN_FAULT_LATE:
             f.transmit.late = inject ? stream::Duration(std::chrono::milliseconds(in.late_ms()))
                                      : stream::Duration{};
             break;

@@ -378,8 +378,8 @@ class _LineDevice(_Client):
 
 
 class GridScan(_LineDevice):
-    """faults: LATE_ANSWER (delay_ms), WRONG_SEQ, DIRECTION_BIT, BAD_CRC, INTERNAL_FAILURE,
-    SILENT, CONFIG_NOT_SET, REPEAT_FRAMES, INSERT_FRAMES, TEST_IGNORED, MODE_ACTIVATION_FAILS;
+    """faults: LATE (late_ms; LATE_ANSWER is its old name), WRONG_SEQ, DIRECTION_BIT, BAD_CRC,
+    INTERNAL_FAILURE, SILENT, CONFIG_NOT_SET, REPEAT_FRAMES, INSERT_FRAMES, TEST_IGNORED, MODE_ACTIVATION_FAILS;
     STUCK_FREE through stick_free/unstick."""
     _stub = dev_grpc.GridScanStub
     _fault_enum = "GRID_SCAN_FAULT_"

@@ -55,6 +55,19 @@ def gridscan():
             x = g.exchange(TEST_REQUEST)
             check(x.answered and x.reply == TEST_ANSWER, f"the same answer after the cycle {x}")
             check(g.now_ns() > t0, "the clock moved")
+            # Stuck elements fail the controller's check [GridScan manual §10.1.2]: element 3
+            # blocked reads interrupted (state bit 8), stuck free it reads free, unstuck it
+            # reads interrupted again. Reduced state: door 0x16 (22 elements, open), bits 8-15.
+            check(crc32_mpeg2(REDUCED[4:-4]) == REDUCED[-4:], "CRC-32/MPEG-2 of the manual")
+            g.set_blocked([3])
+            seq = 2  # the device sent 0 (A0), 1 (B0) and the test answer 1: the next is 2
+            for action, bit8 in ((None, 1), (lambda: g.stick_free([3]), 0), (g.unstick, 1)):
+                if action:
+                    action()
+                x = g.exchange(seal(seq, 0x30, b""))
+                check(x.answered and x.reply == seal(seq + 1, 0xB0, bytes([0x16, bit8])),
+                      f"reduced state, bit 8 = {bit8}: {x.reply.hex()}")
+                seq += 2
             try:
                 g.exchange(b"")
                 check(False, "an empty request is refused")
@@ -63,6 +76,22 @@ def gridscan():
                 check("request" in str(error_details(e)), f"the field: {error_details(e)}")
     finally:
         proc.stop()
+
+
+def crc32_mpeg2(data):
+    """CRC-32/MPEG-2 (poly 0x04C11DB7, init all ones, no reflection), least significant
+    byte first on the wire [GridScan manual §9.2]."""
+    crc = 0xFFFFFFFF
+    for b in data:
+        crc ^= b << 24
+        for _ in range(8):
+            crc = ((crc << 1) ^ 0x04C11DB7) & 0xFFFFFFFF if crc & 0x80000000 else (crc << 1) & 0xFFFFFFFF
+    return crc.to_bytes(4, "little")
+
+
+def seal(seq, ident, payload):
+    body = bytes([seq, ident]) + payload
+    return b"CEDE" + body + crc32_mpeg2(body)
 
 
 def crc16(frame):

@@ -390,7 +390,7 @@ TEST_F(RpcGridScanTest, SceneReachesTheStateBytes) {
 
 TEST_F(RpcGridScanTest, EveryFaultIsInjectedAndCleared) {
   power_up();
-  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_LATE_ANSWER, true, 25).ok());
+  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_LATE, true, 25).ok());
   ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_WRONG_SEQ, true).ok());
   ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_DIRECTION_BIT, true).ok());
   ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_BAD_CRC, true).ok());
@@ -399,12 +399,12 @@ TEST_F(RpcGridScanTest, EveryFaultIsInjectedAndCleared) {
   ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_CONFIG_NOT_SET, true).ok());
   auto s = state();
   EXPECT_EQ(std::vector<std::string>(s.faults_present().begin(), s.faults_present().end()),
-            (std::vector<std::string>{"late-answer", "wrong-seq", "direction-bit", "bad-crc",
+            (std::vector<std::string>{"late", "wrong-seq", "direction-bit", "bad-crc",
                                       "internal-failure", "silent", "config-not-set"}));
   EXPECT_EQ(s.late_ms(), 25U);
   EXPECT_TRUE(s.report_internal_failure());       // bit 9 [GridScan manual §10.2.3]
   EXPECT_EQ(state().led_rx_red(), "blink-fast");  // [GridScan manual §13]
-  for (const auto f : {v1::GRID_SCAN_FAULT_LATE_ANSWER, v1::GRID_SCAN_FAULT_WRONG_SEQ,
+  for (const auto f : {v1::GRID_SCAN_FAULT_LATE, v1::GRID_SCAN_FAULT_WRONG_SEQ,
                        v1::GRID_SCAN_FAULT_DIRECTION_BIT, v1::GRID_SCAN_FAULT_BAD_CRC,
                        v1::GRID_SCAN_FAULT_INTERNAL_FAILURE, v1::GRID_SCAN_FAULT_SILENT,
                        v1::GRID_SCAN_FAULT_CONFIG_NOT_SET}) {
@@ -414,6 +414,21 @@ TEST_F(RpcGridScanTest, EveryFaultIsInjectedAndCleared) {
   EXPECT_TRUE(s.faults_present().empty());
   EXPECT_EQ(s.late_ms(), 0U);
   EXPECT_FALSE(s.report_internal_failure());
+}
+
+// LATE_ANSWER, LATE's deprecated old name, still parses (by name, as JSON and the Python
+// package send it) to the same value; what the server prints is LATE.
+TEST_F(RpcGridScanTest, TheOldNameOfLateIsTheSameFault) {
+  v1::GridScanFault old_name{};
+  ASSERT_TRUE(v1::GridScanFault_Parse("GRID_SCAN_FAULT_LATE_ANSWER", &old_name));
+  EXPECT_EQ(old_name, v1::GRID_SCAN_FAULT_LATE);
+  EXPECT_EQ(v1::GridScanFault_Name(old_name), "GRID_SCAN_FAULT_LATE");
+  power_up();
+  ASSERT_TRUE(fault(old_name, true, 40).ok());
+  EXPECT_EQ(state().late_ms(), 40U);
+  EXPECT_EQ(state().faults_present(0), "late");
+  ASSERT_TRUE(fault(v1::GRID_SCAN_FAULT_LATE, false).ok());
+  EXPECT_TRUE(state().faults_present().empty());
 }
 
 // The power-up Reduced state (ID 0xB0, SeqCnt 1) of door 10 with element 3 interrupted:
@@ -519,7 +534,7 @@ TEST_F(RpcGridScanTest, BadInputGetsASpecificStatus) {
   EXPECT_EQ(bad_field(s), "level");
   s = fault(v1::GRID_SCAN_FAULT_UNSPECIFIED, true);
   EXPECT_EQ(bad_field(s), "fault");
-  s = fault(v1::GRID_SCAN_FAULT_LATE_ANSWER, true, 0);
+  s = fault(v1::GRID_SCAN_FAULT_LATE, true, 0);
   EXPECT_EQ(bad_field(s), "late_ms");
   s = fault(v1::GRID_SCAN_FAULT_BAD_CRC, true, 0, 1);
   EXPECT_EQ(s.error_code(), grpc::StatusCode::NOT_FOUND);
