@@ -416,7 +416,7 @@ class GridScan(_LineDevice):
 
 
 class Metron(_LineDevice):
-    """faults: SILENT, LATE (delay_ms), BAD_CHECKSUM, WRONG_NODE, TRUNCATE."""
+    """faults: SILENT, LATE (late_ms), BAD_CHECKSUM, WRONG_NODE, TRUNCATE."""
     _stub = dev_grpc.MetronStub
     _fault_enum = "METRON_FAULT_"
     _fault_request = dev_pb.MetronFaultRequest
