@@ -57,7 +57,7 @@ class DeviceTarget final : public Rs4Target {
 
   // The replies' turnaround of the link's stations (app: the StationRunner's), read on the
   // loop; `slot_time_us` = --tsl.
-  using TurnaroundSource = std::function<const dp::link::TurnaroundStats*(std::uint8_t)>;
+  using TurnaroundSource = dp::link::TurnaroundSource;
   void set_link_timing(TurnaroundSource source, std::optional<std::int64_t> slot_time_us) {
     turnaround_ = std::move(source);
     slot_time_us_ = slot_time_us;

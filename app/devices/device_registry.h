@@ -106,7 +106,7 @@ struct ServiceContext {
   const dp::Clock& clock;
   // On a real-time PROFIBUS link: the replies' turnaround of the station at an address
   // (nullptr: none), read on the loop, and --tsl; empty/nullopt elsewhere.
-  std::function<const dp::link::TurnaroundStats*(std::uint8_t)> turnaround = {};
+  dp::link::TurnaroundSource turnaround = {};
   std::optional<std::int64_t> slot_time_us = std::nullopt;
 };
 using ServiceList = std::vector<std::shared_ptr<grpc::Service>>;

@@ -28,7 +28,7 @@ struct GsdServiceContext {
   dp::link::MemoryBus* bus = nullptr;
   // On a real-time link: the replies' turnaround of the station at an address (nullptr: none),
   // read on the loop, and --tsl (ServiceContext's); empty on the simulated bus.
-  std::function<const dp::link::TurnaroundStats*(std::uint8_t)> turnaround = {};
+  dp::link::TurnaroundSource turnaround = {};
   std::optional<std::int64_t> slot_time_us = std::nullopt;
 };
 

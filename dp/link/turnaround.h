@@ -18,6 +18,7 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 
 namespace rs4sim::dp::link {
 
@@ -91,5 +92,9 @@ class TurnaroundStats {
   std::uint64_t sum_ns_ = 0;
   std::int64_t max_ns_ = 0;
 };
+
+// Where a layer above finds the turnaround of the station at an address (nullptr: none),
+// read on the loop: the runtime's StationRunner hands it to rpc and the GSD service.
+using TurnaroundSource = std::function<const TurnaroundStats*(std::uint8_t)>;
 
 }  // namespace rs4sim::dp::link
