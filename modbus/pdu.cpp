@@ -59,6 +59,20 @@ std::error_code parse_read_response(const RtuFrame& f, std::vector<std::uint16_t
   return {};
 }
 
+RtuFrame make_write_single(std::uint8_t address, const WriteSingleRequest& w) {
+  RtuFrame f{address, kWriteSingleRegister, {}};
+  put16(f.data, w.address);
+  put16(f.data, w.value);
+  return f;
+}
+
+std::error_code parse_write_single(const RtuFrame& f, WriteSingleRequest& out) {
+  if (f.function != kWriteSingleRegister) return ModbusError::kWrongFunction;
+  if (f.data.size() != 4) return ModbusError::kBadLength;
+  out = WriteSingleRequest{get16(f.data, 0), get16(f.data, 2)};
+  return {};
+}
+
 RtuFrame make_write_multiple(std::uint8_t address, std::uint16_t start,
                              std::span<const std::uint16_t> words) {
   RtuFrame f{address, kWriteMultipleRegisters, {}};
@@ -88,6 +102,15 @@ RtuFrame make_write_multiple_response(std::uint8_t address, std::uint16_t start,
   put16(f.data, start);
   put16(f.data, quantity);
   return f;
+}
+
+std::error_code parse_write_multiple_response(const RtuFrame& f, WriteMultipleResponse& out) {
+  if (f.function != kWriteMultipleRegisters) return ModbusError::kWrongFunction;
+  if (f.data.size() != 4) return ModbusError::kBadLength;
+  const std::uint16_t quantity = get16(f.data, 2);
+  if (quantity < 1 || quantity > kMaxWriteQuantity) return ModbusError::kBadQuantity;
+  out = WriteMultipleResponse{get16(f.data, 0), quantity};
+  return {};
 }
 
 RtuFrame make_exception(std::uint8_t address, std::uint8_t function, ExceptionCode code) {

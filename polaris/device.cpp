@@ -12,6 +12,20 @@ namespace rs4sim::polaris {
 namespace {
 
 constexpr std::uint16_t kPadWord = 0xFFFF;  // 485MB beyond the beams: "not interrupted"
+// "approximately ... 0.4 seconds * N beams" [Polaris manual §7.2].
+constexpr std::chrono::milliseconds kCalibrationPerBeam{400};
+
+bool is_write(std::uint8_t function) {
+  return function == modbus::kWriteSingleRegister || function == modbus::kWriteMultipleRegisters;
+}
+
+// The refusal a write gets: a PDU that does not parse is a bad quantity/length (03).
+ConfigError config_error(const std::error_code& ec) {
+  if (ec.category() == codec::category_of<ConfigError>()) {
+    return static_cast<ConfigError>(ec.value());
+  }
+  return ConfigError::kBadQuantity;
+}
 
 // The words a read of `r` gets from `block` at `offset` (inside the block): 485MB the
 // asked count, padded with free beams (DECISION); FL the rest of the block, the count
@@ -34,7 +48,7 @@ Device::Device(Options options)
     : options_(options),
       scan_(scan_duration(options_)),
       framer_(modbus::t3_5(polaris::line_settings(options_)), modbus::kMaxFrameSize),
-      interrupted_(options_.beams, 0) {}
+      scene_(options_.beams) {}
 
 stream::LineSettings Device::line_settings() const { return polaris::line_settings(options_); }
 
@@ -56,6 +70,7 @@ std::optional<stream::TimePoint> Device::next_deadline() const {
   };
   if (const auto due = pending_.next_due()) earliest(*due);
   if (next_push_) earliest(*next_push_);
+  if (calibration_end_) earliest(*calibration_end_);
   return next;
 }
 
@@ -68,31 +83,42 @@ std::optional<std::vector<std::uint8_t>> Device::take_transmit() {
 
 std::error_code Device::set_interrupted(std::span<const std::uint16_t> beams,
                                         stream::TimePoint now) {
-  for (const std::uint16_t b : beams) {
-    if (b == 0 || b > options_.beams) return std::make_error_code(std::errc::invalid_argument);
-  }
-  std::fill(interrupted_.begin(), interrupted_.end(), std::uint8_t{0});
-  for (const std::uint16_t b : beams) interrupted_[b - 1U] = 1;
+  if (const std::error_code ec = scene_.set_interrupted(beams)) return ec;
   scene_since_ = now;
   return {};
 }
 
-std::vector<std::uint16_t> Device::data_block() const { return data_words(options_, interrupted_); }
-
-std::vector<Object> Device::objects() const { return find_objects(options_, interrupted_); }
-
-std::vector<std::uint16_t> Device::interrupted() const {
-  std::vector<std::uint16_t> beams;
-  for (std::size_t i = 0; i < interrupted_.size(); ++i) {
-    if (interrupted_[i] != 0) beams.push_back(static_cast<std::uint16_t>(i + 1U));
-  }
-  return beams;
+std::error_code Device::start_calibration(stream::TimePoint now) {
+  if (calibrating(now)) return std::make_error_code(std::errc::device_or_resource_busy);
+  finish_calibration(now);
+  calibration_end_ = now + calibration_time();
+  wake();
+  return {};
 }
 
-bool Device::pn1() const {
-  return std::any_of(interrupted_.begin(), interrupted_.end(),
-                     [](std::uint8_t b) { return b != 0; });
+bool Device::calibrating(stream::TimePoint now) const {
+  return calibration_end_ && now < *calibration_end_;
 }
+
+stream::Duration Device::calibration_time() const {
+  return kCalibrationPerBeam * static_cast<int>(options_.beams);
+}
+
+void Device::finish_calibration(stream::TimePoint now) {
+  if (!calibration_end_ || now < *calibration_end_) return;
+  calibration_end_.reset();
+  ++calibrations_;  // wraps at 65535 like its register
+}
+
+std::vector<std::uint16_t> Device::data_block() const {
+  return data_words(options_, scene_.flags());
+}
+
+std::vector<Object> Device::objects() const { return find_objects(options_, scene_.flags()); }
+
+std::vector<std::uint16_t> Device::interrupted() const { return scene_.interrupted(); }
+
+bool Device::pn1() const { return scene_.any_interrupted(); }
 
 bool Device::pn2(stream::TimePoint now) const {
   const bool two_or_hole = objects().size() >= 2;  // a free run between interrupted beams
@@ -109,9 +135,11 @@ void Device::start(stream::TimePoint now) {
 void Device::advance(stream::TimePoint now) {
   while (std::optional<stream::GapFrame> frame = framer_.poll(now)) handle(*frame);
   while (next_push_ && *next_push_ <= now) {
-    push_data(*next_push_);
+    finish_calibration(*next_push_);
+    if (!calibrating(*next_push_)) push_data(*next_push_);  // DECISION: no data meanwhile
     *next_push_ += options_.scan_time;
   }
+  finish_calibration(now);
   while (std::optional<std::vector<std::uint8_t>> frame = pending_.pop_due(now)) {
     transmit_.push_back(std::move(*frame));
     ++counters_.frames_sent;
@@ -128,6 +156,7 @@ void Device::handle(const stream::GapFrame& frame) {
     return;
   }
   const stream::TimePoint end = frame.last_byte + framer_.gap();
+  finish_calibration(end);
   modbus::RtuFrame request;
   const std::error_code ec = modbus::decode(frame.bytes, request);
   if (ec == modbus::ModbusError::kBadCrc) {
@@ -144,7 +173,13 @@ void Device::handle(const stream::GapFrame& frame) {
     return;
   }
   if (request.address == modbus::kBroadcastAddress) {
-    ++counters_.broadcasts;
+    // DECISION: a broadcast write is applied without an answer
+    // [Modbus serial line V1.02 §2.1]; any other broadcast is ignored as before.
+    if (is_write(request.function)) {
+      handle_write(request, end, false);
+    } else {
+      ++counters_.broadcasts;
+    }
   } else if (request.address != options_.address) {
     ++counters_.foreign_address;
   } else {
@@ -154,18 +189,47 @@ void Device::handle(const stream::GapFrame& frame) {
 
 void Device::handle_request(const modbus::RtuFrame& request, stream::TimePoint end) {
   using modbus::ExceptionCode;
-  const auto refuse = [&](ExceptionCode code) {
-    answer(modbus::make_exception(options_.address, request.function, code), end);
-  };
+  if (is_write(request.function)) {
+    handle_write(request, end, true);
+    return;
+  }
   if (request.function != modbus::kReadHoldingRegisters &&
       request.function != modbus::kReadInputRegisters) {
     ++counters_.bad_function;
-    refuse(options_.nak_on_error ? ExceptionCode::kNegativeAcknowledge
-                                 : ExceptionCode::kIllegalFunction);
+    answer(modbus::make_exception(options_.address, request.function,
+                                  options_.nak_on_error ? ExceptionCode::kNegativeAcknowledge
+                                                        : ExceptionCode::kIllegalFunction),
+           end);
     return;
   }
+  handle_read(request, end);
+}
+
+void Device::handle_read(const modbus::RtuFrame& request, stream::TimePoint end) {
+  using modbus::ExceptionCode;
+  const auto refuse = [&](ExceptionCode code) {
+    answer(modbus::make_exception(options_.address, request.function, code), end);
+  };
   modbus::ReadRequest read;
   std::error_code ec = modbus::parse_read_request(request, read);
+  if (request.data.size() == 4 && in_config_block(codec::be16(request.data[0], request.data[1]))) {
+    std::vector<std::uint16_t> words;
+    if (!ec) {
+      ec = read_config(options_, CalibrationStatus{calibrating(end), calibrations_}, read.start,
+                       read.quantity, words);
+    }
+    if (ec == ConfigError::kUnknownRegister) {
+      ++counters_.bad_start;
+      refuse(ExceptionCode::kIllegalDataAddress);
+    } else if (ec) {
+      ++counters_.bad_request;
+      refuse(ExceptionCode::kIllegalDataValue);
+    } else {
+      ++counters_.requests;
+      answer(modbus::make_read_response(options_.address, request.function, words), end);
+    }
+    return;
+  }
   if (ec == modbus::ModbusError::kBadQuantity && options_.mode != DataMode::k485Mb) {
     read = {request.function, codec::be16(request.data[0], request.data[1]), 0};
     ec = {};
@@ -182,9 +246,56 @@ void Device::handle_request(const modbus::RtuFrame& request, stream::TimePoint e
     refuse(ExceptionCode::kIllegalDataAddress);
     return;
   }
+  if (calibrating(end)) {  // DECISION: no measurement while the beams are adjusted
+    ++counters_.busy;
+    refuse(ExceptionCode::kServerDeviceBusy);
+    return;
+  }
   ++counters_.requests;
   const auto words = read_words(options_.mode, block, read.start - base, read.quantity);
   answer(modbus::make_read_response(options_.address, request.function, words), end);
+}
+
+void Device::handle_write(const modbus::RtuFrame& request, stream::TimePoint end,
+                          bool answer_to) {
+  std::uint16_t start = 0;
+  std::vector<std::uint16_t> words;
+  std::error_code ec;
+  if (request.function == modbus::kWriteSingleRegister) {
+    modbus::WriteSingleRequest single;
+    ec = modbus::parse_write_single(request, single);
+    start = single.address;
+    words.push_back(single.value);
+  } else {
+    modbus::WriteMultipleRequest multiple;
+    ec = modbus::parse_write_multiple(request, multiple);
+    start = multiple.start;
+    words = std::move(multiple.words);
+  }
+  ConfigWrite write;
+  if (!ec) ec = write_config(options_, start, words, write);
+  if (!ec && write.start_calibration && calibrating(end)) ec = ConfigError::kBusy;
+  if (ec) {
+    ++counters_.refused_writes;
+    if (answer_to) {
+      answer(modbus::make_exception(options_.address, request.function,
+                                    exception_for(config_error(ec))),
+             end);
+    }
+    return;
+  }
+  // Only settings that leave the line and the scan as they are: the framer and scan_ stay.
+  options_ = write.options;
+  if (write.start_calibration) calibration_end_ = end + calibration_time();
+  ++counters_.writes;
+  if (!answer_to) return;
+  if (request.function == modbus::kWriteSingleRegister) {
+    answer(modbus::make_write_single_response(options_.address, {start, words.front()}), end);
+  } else {
+    answer(modbus::make_write_multiple_response(options_.address, start,
+                                                static_cast<std::uint16_t>(words.size())),
+           end);
+  }
 }
 
 void Device::answer(const modbus::RtuFrame& reply, stream::TimePoint end) {

@@ -4,17 +4,22 @@
 //   slave:  frames cut by t3.5 of silence; FC 3/4 read the data block from the configured
 //           start address; CRC error or another function -> exception 0x07 (the manual)
 //           or the standard reaction (silence / 0x01) with nak_on_error = false; other
-//           addresses and broadcasts are ignored. The answer leaves when the scan in
-//           progress at the end of the request ends.
+//           addresses and broadcast reads are ignored. The answer leaves when the scan in
+//           progress at the end of the request ends. EXTENSION: FC 3/4/6/16 on the
+//           configuration registers (polaris/config_registers.h) set the options and start
+//           auto-calibration, 0.4 s x N beams [Polaris manual §7.2], during which data reads
+//           get exception 0x06 (DECISION).
 //   master: an FC 16 push of the data block every scan_time; the slave's answer is framed,
 //           counted and ignored [Polaris manual §8.1.1].
 // The scene (interrupted beams) and the fault controls are set from outside (API, tests).
 
 #include "modbus/rtu_frame.h"
+#include "polaris/config_registers.h"
 #include "polaris/counters.h"
 #include "polaris/faults.h"
 #include "polaris/measurement.h"
 #include "polaris/options.h"
+#include "polaris/scene.h"
 #include "stream/byte_device.h"
 #include "stream/idle_gap_framer.h"
 #include "stream/transmit_fault.h"
@@ -44,6 +49,18 @@ class Device final : public stream::ByteDevice {
   std::error_code set_interrupted(std::span<const std::uint16_t> beams, stream::TimePoint now);
   void set_faults(const Faults& faults) { faults_ = faults; }
 
+  // Auto-calibration [Polaris manual §7.2]: the autocal input, SW1 or the PC tool's
+  // "Auto-Cal" (the Modbus command register does the same). It lasts calibration_time()
+  // from `now`; errc::device_or_resource_busy (nothing changed) while one runs. Wakes the link.
+  std::error_code start_calibration(stream::TimePoint now);
+  // Calibrating at `now`: started at or before it and not yet ended (end exclusive).
+  [[nodiscard]] bool calibrating(stream::TimePoint now) const;
+  [[nodiscard]] std::optional<stream::TimePoint> calibration_end() const { return calibration_end_; }
+  // Auto-calibrations completed by the last call (wraps at 65535, like its register).
+  [[nodiscard]] std::uint16_t calibrations() const { return calibrations_; }
+  // "approximately ... 0.4 seconds * N beams" [Polaris manual §7.2].
+  [[nodiscard]] stream::Duration calibration_time() const;
+
   [[nodiscard]] const Options& options() const { return options_; }
   [[nodiscard]] const Counters& counters() const { return counters_; }
   [[nodiscard]] const Faults& faults() const { return faults_; }
@@ -61,6 +78,10 @@ class Device final : public stream::ByteDevice {
   void advance(stream::TimePoint now);
   void handle(const stream::GapFrame& frame);
   void handle_request(const modbus::RtuFrame& request, stream::TimePoint end);
+  void handle_read(const modbus::RtuFrame& request, stream::TimePoint end);
+  // FC 6/16 to us or broadcast (`answer_to` false): applied or refused, answered if asked.
+  void handle_write(const modbus::RtuFrame& request, stream::TimePoint end, bool answer_to);
+  void finish_calibration(stream::TimePoint now);
   void answer(const modbus::RtuFrame& reply, stream::TimePoint end);
   void push_data(stream::TimePoint due);
   void schedule(std::vector<std::uint8_t> bytes, stream::TimePoint due);
@@ -69,10 +90,12 @@ class Device final : public stream::ByteDevice {
   Options options_;
   stream::Duration scan_;
   stream::IdleGapFramer framer_;
-  std::vector<std::uint8_t> interrupted_;  // per physical beam, 1 = interrupted
+  Scene scene_;
   stream::TimePoint scene_since_{};
   std::optional<stream::TimePoint> epoch_;
   std::optional<stream::TimePoint> next_push_;
+  std::optional<stream::TimePoint> calibration_end_;
+  std::uint16_t calibrations_ = 0;
   stream::TransmitQueue pending_;
   std::deque<std::vector<std::uint8_t>> transmit_;
   Counters counters_;

@@ -29,6 +29,12 @@ void check_pdus(const RtuFrame& f) {
   if (!mb::parse_write_multiple(f, write)) {
     check(mb::make_write_multiple(f.address, write.start, write.words) == f);
   }
+  mb::WriteSingleRequest single;
+  if (!mb::parse_write_single(f, single)) check(mb::make_write_single(f.address, single) == f);
+  mb::WriteMultipleResponse written;
+  if (!mb::parse_write_multiple_response(f, written)) {
+    check(mb::make_write_multiple_response(f.address, written.start, written.quantity) == f);
+  }
 }
 
 }  // namespace

@@ -1,7 +1,10 @@
 // Feeds the input to a Polaris slave as chunks with gaps taken from the input itself (a
 // gap byte, a length byte, the chunk), runs the device's deadlines, and checks what it
 // sends: only whole RTU frames with a good CRC for its own address, at most one answer
-// per received frame. The first byte picks the data mode and the NAK switch.
+// per received frame. The first byte picks the data mode, the NAK switch, the direction,
+// and (bit 4) whether the harness appends a good CRC to each chunk, so that the PDUs behind
+// the CRC (the FC 6/16 configuration writes, FC 3/4 reads of both blocks) are reached.
+#include "modbus/crc16.h"
 #include "modbus/rtu_frame.h"
 #include "polaris/device.h"
 
@@ -11,6 +14,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <span>
+#include <vector>
 
 namespace {
 
@@ -59,11 +63,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   while (at + 2 <= size) {
     now += std::chrono::microseconds(100 * data[at]);  // 0..25.5 ms: inside or after t3.5
     const std::size_t length = std::min<std::size_t>(data[at + 1], size - at - 2);
-    device.on_bytes(std::span(data + at + 2, length), now);
+    std::vector<std::uint8_t> chunk(data + at + 2, data + at + 2 + length);
+    if ((data[0] & 16U) != 0) {
+      const std::uint16_t crc = rs4sim::modbus::crc16(chunk);
+      chunk.push_back(static_cast<std::uint8_t>(crc & 0xFFU));
+      chunk.push_back(static_cast<std::uint8_t>(crc >> 8U));
+    }
+    device.on_bytes(chunk, now);
     sent += drain(device);
     at += 2 + length;
   }
-  for (int i = 0; i < 8; ++i) {
+  for (int i = 0; i < 16; ++i) {  // framer, answers, the end of an auto-calibration
     const auto next = device.next_deadline();
     if (!next) break;
     now = std::max(now, *next);
@@ -74,7 +84,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto& c = device.counters();
   const std::uint64_t frames = c.requests + c.crc_errors + c.too_short + c.oversized +
                                c.broadcasts + c.foreign_address + c.bad_function + c.bad_request +
-                               c.bad_start;
+                               c.bad_start + c.busy + c.writes + c.refused_writes;
   check(sent <= frames);
   check(sent == c.frames_sent);
   return 0;

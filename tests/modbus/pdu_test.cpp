@@ -94,6 +94,74 @@ TEST(Pdu, WriteMultipleResponse) {
             (RtuFrame{0x11, 0x10, {0x00, 0x01, 0x00, 0x02}}));
 }
 
+TEST(Pdu, WriteSingleSpecExample) {
+  // [Modbus application protocol V1.1b3 §6.6] example: write register 2 (address 0x0001)
+  // to 0x0003, on slave 0x11. CRC computed independently (CRC-16/MODBUS, low byte first).
+  const Bytes wire{0x11,        // slave
+                   0x06,        // FC 6 write single register
+                   0x00, 0x01,  // register address 0x0001
+                   0x00, 0x03,  // value 0x0003
+                   0x9A, 0x9B};  // CRC 0x9B9A
+  WriteSingleRequest w;
+  ASSERT_FALSE(parse_write_single(decoded(wire), w));
+  EXPECT_EQ(w, (WriteSingleRequest{0x0001, 0x0003}));
+  EXPECT_EQ(encode(make_write_single(0x11, w)), wire);
+  // The normal response is an echo of the request.
+  EXPECT_EQ(encode(make_write_single_response(0x11, w)), wire);
+}
+
+TEST(Pdu, WriteSingleRejects) {
+  WriteSingleRequest w{7, 7};
+  EXPECT_EQ(parse_write_single(RtuFrame{1, 0x10, {0, 1, 0, 3}}, w), ModbusError::kWrongFunction);
+  EXPECT_EQ(parse_write_single(RtuFrame{1, 0x06, {0, 1, 0}}, w), ModbusError::kBadLength);
+  EXPECT_EQ(parse_write_single(RtuFrame{1, 0x06, {0, 1, 0, 3, 0}}, w), ModbusError::kBadLength);
+  EXPECT_EQ(w, (WriteSingleRequest{7, 7}));  // untouched on error
+}
+
+TEST(Pdu, WriteMultipleSpecExample) {
+  // [Modbus application protocol V1.1b3 §6.12] example: two registers from 0x0001, values
+  // 0x000A and 0x0102, on slave 0x11; the response echoes start and quantity.
+  const Bytes request{0x11,        // slave
+                      0x10,        // FC 16
+                      0x00, 0x01,  // start 0x0001
+                      0x00, 0x02,  // 2 registers
+                      0x04,        // 4 bytes
+                      0x00, 0x0A,  // 0x000A
+                      0x01, 0x02,  // 0x0102
+                      0xC6, 0xF0};  // CRC 0xF0C6
+  WriteMultipleRequest w;
+  ASSERT_FALSE(parse_write_multiple(decoded(request), w));
+  EXPECT_EQ(w.start, 0x0001);
+  EXPECT_EQ(w.words, (Words{0x000A, 0x0102}));
+  const Bytes response{0x11, 0x10,   // slave, FC 16
+                       0x00, 0x01,   // start
+                       0x00, 0x02,   // quantity
+                       0x12, 0x98};  // CRC 0x9812
+  EXPECT_EQ(encode(make_write_multiple_response(0x11, 0x0001, 2)), response);
+  WriteMultipleResponse r;
+  ASSERT_FALSE(parse_write_multiple_response(decoded(response), r));
+  EXPECT_EQ(r, (WriteMultipleResponse{0x0001, 2}));
+}
+
+TEST(Pdu, WriteMultipleResponseRejects) {
+  WriteMultipleResponse r;
+  EXPECT_EQ(parse_write_multiple_response(RtuFrame{1, 0x06, {0, 1, 0, 2}}, r),
+            ModbusError::kWrongFunction);
+  EXPECT_EQ(parse_write_multiple_response(RtuFrame{1, 0x10, {0, 1, 0}}, r),
+            ModbusError::kBadLength);
+  EXPECT_EQ(parse_write_multiple_response(RtuFrame{1, 0x10, {0, 1, 0, 0}}, r),
+            ModbusError::kBadQuantity);
+  EXPECT_EQ(parse_write_multiple_response(RtuFrame{1, 0x10, {0, 1, 0, 0x7C}}, r),
+            ModbusError::kBadQuantity);
+}
+
+TEST(Pdu, ExceptionBusy) {
+  // Exception 06 Server Device Busy [Modbus application protocol V1.1b3 §7] to FC 3, slave 1:
+  // 01 83 06, CRC 0x32C1 computed independently.
+  EXPECT_EQ(encode(make_exception(0x01, 0x03, ExceptionCode::kServerDeviceBusy)),
+            (Bytes{0x01, 0x83, 0x06, 0xC1, 0x32}));
+}
+
 TEST(Pdu, ExceptionP8) {
   const RtuFrame f = make_exception(0x03, 0x03, ExceptionCode::kNegativeAcknowledge);
   EXPECT_TRUE(is_exception(f));

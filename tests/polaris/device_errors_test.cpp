@@ -58,16 +58,17 @@ TEST(PolarisErrors, StandardSilenceOnCrcError) {
 
 TEST(PolarisErrors, BadFunction) {
   Harness nak(fl1());
-  // FC 6 write single register: exception 07 (the manual) ...
-  const Bytes fc6{0x01, 0x06, 0x20, 0x00, 0x00, 0x01, 0x43, 0xCA};
-  auto sent = nak.exchange(fc6);
+  // FC 5 write single coil (FC 6/16 now write the configuration registers): exception 07
+  // (the manual) ...
+  const Bytes fc5{0x01, 0x05, 0x20, 0x00, 0x00, 0x01, 0x07, 0xCA};
+  auto sent = nak.exchange(fc5);
   ASSERT_TRUE(sent);
-  EXPECT_EQ(sent->bytes, (Bytes{0x01, 0x86, 0x07, 0x03, 0xA2}));
+  EXPECT_EQ(sent->bytes, (Bytes{0x01, 0x85, 0x07, 0x03, 0x52}));
   // ... or 01 illegal function (standard Modbus).
   Harness standard(fl1(false));
-  sent = standard.exchange(fc6);
+  sent = standard.exchange(fc5);
   ASSERT_TRUE(sent);
-  EXPECT_EQ(sent->bytes, (Bytes{0x01, 0x86, 0x01, 0x83, 0xA0}));
+  EXPECT_EQ(sent->bytes, (Bytes{0x01, 0x85, 0x01, 0x83, 0x50}));
   EXPECT_EQ(standard.device.counters().bad_function, 1U);
 }
 

@@ -1,0 +1,109 @@
+// polaris::Scene (which physical beams are interrupted) and the configuration registers'
+// pure functions (EXTENSION, polaris/config_registers.h), without a device.
+#include "polaris/config_registers.h"
+#include "polaris/scene.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace rs4sim::polaris {
+namespace {
+
+using Beams = std::vector<std::uint16_t>;
+
+TEST(PolarisScene, SetsAndListsAscending) {
+  Scene s(40);
+  EXPECT_FALSE(s.any_interrupted());
+  const Beams beams{34, 9, 10};
+  ASSERT_FALSE(s.set_interrupted(beams));
+  EXPECT_EQ(s.interrupted(), (Beams{9, 10, 34}));
+  EXPECT_TRUE(s.any_interrupted());
+  EXPECT_EQ(s.flags().size(), 40U);
+  EXPECT_EQ(s.flags()[8], 1);
+  EXPECT_EQ(s.flags()[10], 0);
+}
+
+TEST(PolarisScene, RefusesBeamZeroAndBeyondAndKeepsTheOldScene) {
+  Scene s(40);
+  const Beams old{5};
+  ASSERT_FALSE(s.set_interrupted(old));
+  const Beams zero{3, 0};
+  const Beams past{40, 41};
+  EXPECT_EQ(s.set_interrupted(zero), std::make_error_code(std::errc::invalid_argument));
+  EXPECT_EQ(s.set_interrupted(past), std::make_error_code(std::errc::invalid_argument));
+  EXPECT_EQ(s.interrupted(), old);
+  const Beams edge{1, 40};
+  EXPECT_FALSE(s.set_interrupted(edge));
+  EXPECT_EQ(s.interrupted(), edge);
+}
+
+TEST(PolarisConfigRegisters, MapsEachRefusalToItsException) {
+  using modbus::ExceptionCode;
+  EXPECT_EQ(exception_for(ConfigError::kUnknownRegister), ExceptionCode::kIllegalDataAddress);
+  EXPECT_EQ(exception_for(ConfigError::kReadOnly), ExceptionCode::kIllegalDataAddress);
+  EXPECT_EQ(exception_for(ConfigError::kBadQuantity), ExceptionCode::kIllegalDataValue);
+  EXPECT_EQ(exception_for(ConfigError::kOutOfRange), ExceptionCode::kIllegalDataValue);
+  EXPECT_EQ(exception_for(ConfigError::kInvalidOptions), ExceptionCode::kIllegalDataValue);
+  EXPECT_EQ(exception_for(ConfigError::kBusy), ExceptionCode::kServerDeviceBusy);
+}
+
+TEST(PolarisConfigRegisters, EachRangeBothSides) {
+  struct Case {
+    ConfigRegister reg;
+    std::uint16_t min;
+    std::uint16_t max;
+  };
+  for (const Case c : {Case{ConfigRegister::kDataMode, 0, 3}, Case{ConfigRegister::kStartAddress, 500, 12287},
+                       Case{ConfigRegister::kDirection, 0, 1}, Case{ConfigRegister::kDetection, 0, 1},
+                       Case{ConfigRegister::kPn2Filter, 1, 255}, Case{ConfigRegister::kScanTime, 5, 5000},
+                       Case{ConfigRegister::kBitOrder, 0, 1}, Case{ConfigRegister::kNakMode, 0, 1},
+                       Case{ConfigRegister::kCommand, 0, 1}}) {
+    const auto at = static_cast<std::uint16_t>(c.reg);
+    SCOPED_TRACE(at);
+    ConfigWrite w;
+    EXPECT_FALSE(write_config(Options{}, at, Beams{c.min}, w));
+    EXPECT_FALSE(write_config(Options{}, at, Beams{c.max}, w));
+    EXPECT_EQ(write_config(Options{}, at, Beams{static_cast<std::uint16_t>(c.max + 1)}, w),
+              ConfigError::kOutOfRange);
+    if (c.min > 0) {
+      EXPECT_EQ(write_config(Options{}, at, Beams{static_cast<std::uint16_t>(c.min - 1)}, w),
+                ConfigError::kOutOfRange);
+    }
+  }
+}
+
+TEST(PolarisConfigRegisters, AWriteThatLeavesInvalidOptionsIsRefused) {
+  Options broken;
+  broken.beams = 17;  // no PL 10 model has 17 beams: validate() refuses it
+  ConfigWrite w;
+  w.options.pn2_filter = 99;
+  EXPECT_EQ(write_config(broken, static_cast<std::uint16_t>(ConfigRegister::kPn2Filter),
+                         Beams{3}, w),
+            ConfigError::kInvalidOptions);
+  EXPECT_EQ(w.options.pn2_filter, 99);  // untouched
+}
+
+TEST(PolarisConfigRegisters, CommandZeroDoesNothingOneStartsCalibration) {
+  const auto at = static_cast<std::uint16_t>(ConfigRegister::kCommand);
+  ConfigWrite w;
+  ASSERT_FALSE(write_config(Options{}, at, Beams{0}, w));
+  EXPECT_FALSE(w.start_calibration);
+  ASSERT_FALSE(write_config(Options{}, at, Beams{kCommandStartCalibration}, w));
+  EXPECT_TRUE(w.start_calibration);
+}
+
+TEST(PolarisConfigRegisters, ReadCountsAndBounds) {
+  std::vector<std::uint16_t> out;
+  const CalibrationStatus idle;
+  EXPECT_EQ(read_config(Options{}, idle, kConfigBase, 0, out), ConfigError::kBadQuantity);
+  EXPECT_EQ(read_config(Options{}, idle, kConfigBase, 126, out), ConfigError::kBadQuantity);
+  EXPECT_EQ(read_config(Options{}, idle, kConfigBase, 13, out), ConfigError::kUnknownRegister);
+  EXPECT_EQ(read_config(Options{}, idle, kConfigBase - 1, 1, out), ConfigError::kUnknownRegister);
+  ASSERT_FALSE(read_config(Options{}, CalibrationStatus{true, 7}, kConfigBase + 9, 3, out));
+  EXPECT_EQ(out, (std::vector<std::uint16_t>{1, 7, 16}));  // calibrating, 7 done, 16 beams
+}
+
+}  // namespace
+}  // namespace rs4sim::polaris
