@@ -32,6 +32,17 @@ enum class BitOrder : std::uint8_t { kLsbFirst, kMsbFirst };
   return r == Role::kSlave ? "slave" : "master";
 }
 [[nodiscard]] std::optional<DataMode> parse_data_mode(std::string_view text) noexcept;
+// The CLI's --mode words and the API's strings: "direct"/"reverse", "object"/"hole",
+// "lsb"/"msb".
+[[nodiscard]] constexpr std::string_view to_token(ScanDirection d) noexcept {
+  return d == ScanDirection::kDirect ? "direct" : "reverse";
+}
+[[nodiscard]] constexpr std::string_view to_token(Detection d) noexcept {
+  return d == Detection::kObject ? "object" : "hole";
+}
+[[nodiscard]] constexpr std::string_view to_token(BitOrder b) noexcept {
+  return b == BitOrder::kLsbFirst ? "lsb" : "msb";
+}
 
 struct Options {
   Family family = Family::kPl10;

@@ -82,6 +82,18 @@ grpc::Status PolarisService::GetState(grpc::ServerContext*, const v1::LineDevice
         c->set_exceptions_sent(k.exceptions_sent);
         c->set_frames_sent(k.frames_sent);
         c->set_suppressed(k.suppressed);
+        c->set_busy(k.busy);
+        c->set_writes(k.writes);
+        c->set_refused_writes(k.refused_writes);
+        out->set_calibrating(d_.calibrating(now));
+        if (const auto end = d_.calibration_end()) out->set_calibration_end_ns(to_ns(*end));
+        out->set_calibrations(d_.calibrations());
+        out->set_direction(std::string(polaris::to_token(o.direction)));
+        out->set_detection(std::string(polaris::to_token(o.detection)));
+        out->set_pn2_filter(o.pn2_filter);
+        out->set_scan_time_ms(static_cast<std::uint32_t>(o.scan_time.count()));
+        out->set_bit_order(std::string(polaris::to_token(o.bit_order)));
+        out->set_nak_on_error(o.nak_on_error);
         set_last_frame(c_.tap, *out->mutable_last_frame());
         out->set_now_ns(to_ns(now));
         return grpc::Status::OK;
@@ -143,6 +155,23 @@ grpc::Status PolarisService::ClearFault(grpc::ServerContext*, const v1::PolarisF
   return fault(*in, false);
 }
 
+grpc::Status PolarisService::Calibrate(grpc::ServerContext*, const v1::LineDeviceRequest* in,
+                                       v1::Empty*) {
+  if (auto bad = check_modbus_address(in->address()); !bad.ok()) return bad;
+  return on_line(
+      c_, "Polaris", in->address(),
+      [&](dp::TimePoint now) {
+        if (d_.start_calibration(now)) {
+          return failed_precondition(
+              "CALIBRATING", "Polaris " + std::to_string(c_.address),
+              "an auto-calibration runs until " + std::to_string(to_ns(*d_.calibration_end())) +
+                  " ns (0.4 s per beam)");
+        }
+        return grpc::Status::OK;
+      },
+      true);
+}
+
 grpc::Status PolarisService::Exchange(grpc::ServerContext*, const v1::ExchangeRequest* in,
                                       v1::ExchangeResponse* out) {
   if (auto bad = check_modbus_address(in->address()); !bad.ok()) return bad;
@@ -161,6 +190,7 @@ std::unique_ptr<Watcher> polaris_watcher(std::uint8_t address, const polaris::De
         {"pn1", on_off(d.pn1())},
         {"pn2", on_off(d.pn2(now))},
         {"beams", ranges(d.interrupted())},
+        {"calibrating", on_off(d.calibrating(now))},
     };
   });
 }

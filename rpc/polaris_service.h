@@ -25,6 +25,8 @@ class PolarisService final : public v1::Polaris::Service {
                            v1::Empty*) override;
   grpc::Status ClearFault(grpc::ServerContext*, const v1::PolarisFaultRequest* in,
                           v1::Empty*) override;
+  grpc::Status Calibrate(grpc::ServerContext*, const v1::LineDeviceRequest* in,
+                         v1::Empty*) override;
   grpc::Status Exchange(grpc::ServerContext*, const v1::ExchangeRequest* in,
                         v1::ExchangeResponse* out) override;
   grpc::Status Receive(grpc::ServerContext*, const v1::ReceiveRequest* in,

@@ -435,7 +435,7 @@ class Metron(_LineDevice):
 
 
 class Polaris(_LineDevice):
-    """faults: BAD_CRC, SILENT (NO_ANSWER, its deprecated name, still works), LATE (delay_ms)."""
+    """faults: BAD_CRC, SILENT (NO_ANSWER, its deprecated name, still works), LATE (late_ms)."""
     _stub = dev_grpc.PolarisStub
     _fault_enum = "POLARIS_FAULT_"
     _fault_request = dev_pb.PolarisFaultRequest
@@ -443,3 +443,8 @@ class Polaris(_LineDevice):
 
     def __init__(self, address, device_address=1, timeout=10.0):
         super().__init__(address, device_address, timeout)
+
+    def calibrate(self):
+        """Starts auto-calibration as the autocal input does: 0.4 s per beam, data reads get
+        exception 06 meanwhile; grpc.RpcError FAILED_PRECONDITION while one runs."""
+        self.service.Calibrate(dev_pb.LineDeviceRequest(address=self.address))

@@ -195,6 +195,53 @@ TEST_F(RpcPolarisTest, BlockedBeamsReachTheModbusAnswer) {
   EXPECT_EQ(list(state().data_block()), (std::vector<std::uint32_t>{0xFFFF}));
 }
 
+// Auto-calibration from the API (the autocal input): 0.4 s × 16 beams = 6.4 s during which a
+// data read gets exception 06 Server Device Busy, then the data again [Polaris manual §7.2]
+// (docs/polaris.md "Auto-calibration"); the frames' CRCs were worked out by hand.
+TEST_F(RpcPolarisTest, CalibrateMakesTheDataBusyForPointFourSecondsABeam) {
+  const auto calibrate = [this] {
+    grpc::ClientContext ctx;
+    v1::LineDeviceRequest req;
+    req.set_address(1);
+    v1::Empty e;
+    return stub_->Calibrate(&ctx, req, &e);
+  };
+  auto s = state();
+  EXPECT_FALSE(s.calibrating());
+  EXPECT_EQ(s.calibration_end_ns(), 0);
+  EXPECT_EQ(s.direction(), "direct");
+  EXPECT_EQ(s.detection(), "object");
+  EXPECT_EQ(s.bit_order(), "lsb");
+  EXPECT_EQ(s.pn2_filter(), 1U);
+  EXPECT_EQ(s.scan_time_ms(), 100U);
+  EXPECT_TRUE(s.nak_on_error());
+
+  const auto started = state().now_ns();
+  ASSERT_TRUE(calibrate().ok());
+  s = state();
+  EXPECT_TRUE(s.calibrating());
+  EXPECT_EQ(s.calibration_end_ns(), started + 6'400'000'000);
+  const auto again = calibrate();
+  EXPECT_EQ(again.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+  EXPECT_NE(again.error_message().find("auto-calibration runs"), std::string::npos)
+      << again.error_message();
+  // address 1, FC 04 | 0x80, exception 06, CRC C3 02
+  EXPECT_EQ(exchange(tap_, read_), (std::vector<Bytes>{{0x01, 0x84, 0x06, 0xC3, 0x02}}));
+  EXPECT_EQ(state().counters().busy(), 1U);
+  (void)exchange(tap_, {}, 6400ms);  // past the end
+  s = state();
+  EXPECT_FALSE(s.calibrating());
+  EXPECT_EQ(s.calibrations(), 1U);
+  // 1 word, all 16 beams free, CRC B8 80
+  EXPECT_EQ(exchange(tap_, read_), (std::vector<Bytes>{{0x01, 0x04, 0x02, 0xFF, 0xFF, 0xB8, 0x80}}));
+  s.Clear();
+  grpc::ClientContext ctx;
+  v1::LineDeviceRequest wrong;
+  wrong.set_address(0);
+  v1::Empty e;
+  EXPECT_EQ(stub_->Calibrate(&ctx, wrong, &e).error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+}
+
 TEST_F(RpcPolarisTest, FaultsActOnTheWireUntilCleared) {
   ASSERT_TRUE(fault(v1::POLARIS_FAULT_BAD_CRC, true).ok());
   EXPECT_EQ(list(state().data_block()), (std::vector<std::uint32_t>{0xFFFF}));
@@ -272,12 +319,13 @@ TEST_F(RpcPolarisTest, StateChangesReachTheSharedEventStream) {
   std::vector<std::string> seen;
   v1::Event e;
   // The snapshot first (the stream has subscribed once it arrived).
-  for (int i = 0; i < 3 && reader->Read(&e); ++i) {
+  for (int i = 0; i < 4 && reader->Read(&e); ++i) {
     ASSERT_TRUE(e.has_state());
     EXPECT_EQ(e.address(), 1U);
     seen.push_back(e.state().what() + ":" + e.state().from() + ">" + e.state().to());
   }
-  EXPECT_EQ(seen, (std::vector<std::string>{"pn1:>off", "pn2:>off", "beams:>none"}));
+  EXPECT_EQ(seen,
+            (std::vector<std::string>{"pn1:>off", "pn2:>off", "beams:>none", "calibrating:>off"}));
   ASSERT_TRUE(block({2, 3, 7}).ok());
   seen.clear();
   for (int i = 0; i < 3 && reader->Read(&e); ++i) {
