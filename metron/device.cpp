@@ -101,12 +101,16 @@ void Device::count(const Reaction& r) {
 
 void Device::queue(Outgoing frame) {
   auto& b = frame.bytes;
-  if (faults_.bad_checksum && b.size() >= 2) {
-    // slave reply: the last byte; standard report: the byte before End, if a checksum is sent
-    const bool standard = options_.line_mode == LineMode::kStandard;
-    if (!standard) b.back() = static_cast<std::uint8_t>(~b.back());
-    if (standard && options_.checksum)
-      b[b.size() - 2] = static_cast<std::uint8_t>(~b[b.size() - 2]);
+  if (faults_.bad_checksum) {
+    // The checksum byte where the table's layout puts it (by default a slave reply's last
+    // byte, a report's byte before End), if the frame has one.
+    const auto at = options_.line_mode == LineMode::kStandard
+                        ? report_checksum_offset(options_.wire,
+                                                 {options_.format, options_.separator,
+                                                  options_.checksum},
+                                                 b.size())
+                        : reply_checksum_offset(options_.wire, options_.node_enabled, b.size());
+    if (at && *at < b.size()) b[*at] = static_cast<std::uint8_t>(~b[*at]);
   }
   if (faults_.truncate && !b.empty()) b.pop_back();
   if (!pending_.schedule(std::move(b), frame.at, faults_.transmit)) ++counters_.suppressed;
@@ -138,10 +142,10 @@ std::optional<std::vector<std::uint8_t>> Device::take_transmit() {
   return f;
 }
 
-void Device::set_interrupted(std::span<const std::uint16_t> beams) {
-  scene_.clear();
-  for (const auto b : beams) scene_.set_interrupted(b, true);
+std::error_code Device::set_interrupted(std::span<const std::uint16_t> beams) {
+  if (auto e = scene_.set_interrupted(beams)) return e;
   scene_changed();
+  return {};
 }
 
 void Device::set_beam(std::uint16_t beam, bool interrupted) {

@@ -18,6 +18,7 @@
 #include <deque>
 #include <optional>
 #include <span>
+#include <system_error>
 #include <vector>
 
 namespace rs4sim::metron {
@@ -45,7 +46,9 @@ class Device final : public stream::ByteDevice {
 
   // The scene. Beam numbers from 1; the input drives input-related reporting.
   [[nodiscard]] const Scene& scene() const { return scene_; }
-  void set_interrupted(std::span<const std::uint16_t> beams);  // the others become free
+  // The given beams interrupted, the others free; a beam outside 1..beams() changes nothing
+  // and is refused (SceneError::kNoSuchBeam).
+  std::error_code set_interrupted(std::span<const std::uint16_t> beams);
   void set_beam(std::uint16_t beam, bool interrupted);
   void set_input(bool high);
   void set_synchronised(bool synchronised);

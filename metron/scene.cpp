@@ -4,6 +4,28 @@
 
 namespace rs4sim::metron {
 
+std::string_view to_string(SceneError e) noexcept {
+  switch (e) {
+    case SceneError::kNoSuchBeam: return "no such beam (beams are numbered 1..the beam count)";
+  }
+  return "unknown scene error";
+}
+
+std::error_code Scene::set_interrupted(std::span<const std::uint16_t> beams) {
+  for (const auto b : beams)
+    if (b < 1 || b > this->beams()) return SceneError::kNoSuchBeam;
+  clear();
+  for (const auto b : beams) interrupted_[b - 1U] = true;
+  return {};
+}
+
+std::vector<std::uint16_t> Scene::interrupted() const {
+  std::vector<std::uint16_t> out;
+  for (std::size_t i = 0; i < interrupted_.size(); ++i)
+    if (interrupted_[i]) out.push_back(static_cast<std::uint16_t>(i + 1U));
+  return out;
+}
+
 void Scene::set_interrupted(std::uint16_t beam, bool interrupted) {
   if (beam >= 1 && beam <= beams()) interrupted_[beam - 1U] = interrupted;
 }

@@ -4,12 +4,28 @@
 // first beam) as in the manual's beam-status example [METRON manual "Request active beam
 // status command"]. The measurement values are the project's EXTENSION (wire_table.h).
 
+#include "codec/error_category.h"
 #include "metron/wire_table.h"
 
 #include <cstdint>
+#include <span>
+#include <string_view>
+#include <system_error>
 #include <vector>
 
 namespace rs4sim::metron {
+
+// Why a scene change was refused.
+enum class SceneError : std::uint8_t {
+  kNoSuchBeam = 1,  // a beam number outside 1..beams()
+};
+[[nodiscard]] std::string_view to_string(SceneError e) noexcept;
+[[nodiscard]] constexpr const char* error_category_name(SceneError) noexcept {
+  return "metron.scene";
+}
+[[nodiscard]] inline std::error_code make_error_code(SceneError e) noexcept {
+  return codec::make_error_code_of(e);
+}
 
 class Scene {
  public:
@@ -18,7 +34,12 @@ class Scene {
   [[nodiscard]] std::uint16_t beams() const {
     return static_cast<std::uint16_t>(interrupted_.size());
   }
-  // Beam numbers outside 1..beams() are ignored.
+  // The given beams interrupted, the others free. A beam outside 1..beams() refuses the
+  // whole call (SceneError::kNoSuchBeam) and changes nothing.
+  std::error_code set_interrupted(std::span<const std::uint16_t> beams);
+  // The interrupted beams, ascending.
+  [[nodiscard]] std::vector<std::uint16_t> interrupted() const;
+  // One beam; beam numbers outside 1..beams() are ignored.
   void set_interrupted(std::uint16_t beam, bool interrupted);
   void clear();
   [[nodiscard]] bool interrupted(std::uint16_t beam) const;
@@ -45,3 +66,6 @@ class Scene {
 };
 
 }  // namespace rs4sim::metron
+
+template <>
+struct std::is_error_code_enum<rs4sim::metron::SceneError> : std::true_type {};

@@ -28,16 +28,38 @@ std::size_t digits(Format f) { return f == Format::kBinary ? 1 : (f == Format::k
 
 std::vector<std::uint8_t> encode_report(std::span<const std::uint8_t> values, const ReportFormat& f,
                                         const WireTable& table, ChecksumReading reading) {
+  // The data characters first: the checksum may sum them (ReportLayout).
+  std::vector<std::uint8_t> data;
+  data.reserve(report_length(values.size(), f));
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i > 0 && f.separator) data.push_back(table.separator);
+    put_value(data, values[i], f.format);
+  }
   std::vector<std::uint8_t> out;
   out.reserve(report_length(values.size(), f));
-  out.push_back(table.report_start);
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    if (i > 0 && f.separator) out.push_back(table.separator);
-    put_value(out, values[i], f.format);
+  for (const auto part : table.report.order) {
+    switch (part) {
+      case ReportField::kStart: out.push_back(table.report_start); break;
+      case ReportField::kData: out.insert(out.end(), data.begin(), data.end()); break;
+      case ReportField::kChecksum:
+        if (f.checksum)
+          out.push_back(checksum(table.report.checksum_over_characters ? data : values, reading));
+        break;
+      case ReportField::kEnd: out.push_back(table.report_end); break;
+    }
   }
-  if (f.checksum) out.push_back(checksum(values, reading));
-  out.push_back(table.report_end);
   return out;
+}
+
+std::optional<std::size_t> report_checksum_offset(const WireTable& table, const ReportFormat& f,
+                                                  std::size_t frame_size) {
+  if (!f.checksum || frame_size < 3) return std::nullopt;
+  std::size_t at = 0;
+  for (const auto part : table.report.order) {
+    if (part == ReportField::kChecksum) return at;
+    at += part == ReportField::kData ? frame_size - 3 : 1;
+  }
+  return std::nullopt;
 }
 
 std::size_t report_length(std::size_t n, const ReportFormat& f) {

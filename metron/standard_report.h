@@ -5,10 +5,11 @@
 // Table 1's lengths (n data: binary n+2 / 2n+1, hex 2n+2 / 3n+1, decimal 3n+2 / 4n+1, +1
 // with checksum) fix the shape: one character before and one after the data, n-1
 // separators, and a checksum of ONE character in every mode. The characters themselves
-// were lost: EXTENSION ([docs/metron.md#standard-frame]):
+// were lost: EXTENSION ([docs/metron.md#standard-frame]), the wire table's characters in
+// the order of WireTable::report, by default
 //   Start | D1 [Sep D2 ...] | [Checksum] | End
 // with the checksum sent as one raw byte, the one's complement of the sum of the data
-// values (not of their ASCII digits).
+// values (not of their ASCII digits; ReportLayout::checksum_over_characters sums those).
 
 #include "metron/checksum.h"
 #include "metron/options.h"
@@ -18,6 +19,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -32,6 +34,11 @@ struct ReportFormat {
 [[nodiscard]] std::vector<std::uint8_t> encode_report(std::span<const std::uint8_t> values,
                                                       const ReportFormat& f, const WireTable& table,
                                                       ChecksumReading reading);
+
+// Where the checksum byte of a `frame_size`-byte report sits; nullopt without a checksum.
+[[nodiscard]] std::optional<std::size_t> report_checksum_offset(const WireTable& table,
+                                                                const ReportFormat& f,
+                                                                std::size_t frame_size);
 
 // Table 1 plus its footnote: the message length for n data.
 [[nodiscard]] std::size_t report_length(std::size_t n, const ReportFormat& f);

@@ -24,6 +24,56 @@ constexpr std::array<std::string_view, kCommandCount> kCommandNames{
 constexpr std::array<std::string_view, kMeasurementCount> kMeasurementNames{
     "first", "last", "count", "free", "central", "run"};
 
+constexpr std::array<std::string_view, kReplyFieldCount> kReplyFieldNames{
+    "start", "node", "length", "code", "data", "checksum"};
+constexpr std::array<std::string_view, kReportFieldCount> kReportFieldNames{"start", "data",
+                                                                            "checksum", "end"};
+
+std::string quoted(std::string_view s) { return "\"" + std::string(s) + "\""; }
+
+// The first field of `set` that `fields` does not list, if any.
+std::optional<ReplyField> outside(ReplyFieldSet set, const std::vector<ReplyField>& fields) {
+  for (std::size_t i = 0; i < kReplyFieldCount; ++i) {
+    const auto f = static_cast<ReplyField>(i);
+    if (contains(set, f) && std::find(fields.begin(), fields.end(), f) == fields.end()) return f;
+  }
+  return std::nullopt;
+}
+
+std::optional<WireIssue> check_reply(const ReplyLayout& r) {
+  for (std::size_t i = 0; i < r.fields.size(); ++i) {
+    if (static_cast<std::size_t>(r.fields[i]) >= kReplyFieldCount)
+      return WireIssue{"reply.fields", "the reply names an unknown field"};
+    if (std::find(r.fields.begin(), r.fields.begin() + static_cast<std::ptrdiff_t>(i),
+                  r.fields[i]) != r.fields.begin() + static_cast<std::ptrdiff_t>(i))
+      return WireIssue{"reply.fields", "the reply lists " + quoted(to_token(r.fields[i])) + " twice"};
+  }
+  if (std::find(r.fields.begin(), r.fields.end(), ReplyField::kData) == r.fields.end())
+    return WireIssue{"reply.fields", "a reply needs \"data\" (what the requests ask for)"};
+  if (r.length_counts >= (1U << kReplyFieldCount) || r.checksum_covers >= (1U << kReplyFieldCount))
+    return WireIssue{"reply", "a reply field set names an unknown field"};
+  if (const auto f = outside(r.length_counts, r.fields))
+    return WireIssue{"reply.length_counts",
+                     "the Length byte counts " + quoted(to_token(*f)) +
+                         ", which the reply does not carry"};
+  if (const auto f = outside(r.checksum_covers, r.fields))
+    return WireIssue{"reply.checksum_covers", "the checksum covers " + quoted(to_token(*f)) +
+                                                  ", which the reply does not carry"};
+  if (contains(r.checksum_covers, ReplyField::kChecksum))
+    return WireIssue{"reply.checksum_covers", "the checksum cannot sum itself"};
+  return std::nullopt;
+}
+
+std::optional<WireIssue> check_report(const ReportLayout& r) {
+  for (std::size_t i = 0; i < kReportFieldCount; ++i) {
+    if (std::count(r.order.begin(), r.order.end(), static_cast<ReportField>(i)) != 1)
+      return WireIssue{"report.order", "the report order must list \"start\", \"data\", \"checksum\" and \"end\" "
+                                       "once each (Table 1: one character before and one after "
+                                       "the data, one checksum character)"};
+  }
+  return std::nullopt;
+}
+
 template <std::size_t N>
 bool all_distinct(const std::array<std::uint8_t, N>& a) {
   auto s = a;
@@ -72,17 +122,41 @@ std::optional<Measurement> parse_measurement(std::string_view name) {
   return std::nullopt;
 }
 
-std::string validate(const WireTable& t) {
-  if (!all_distinct(t.commands)) return "wire table: two commands share a code";
-  if (!all_distinct(t.errors)) return "wire table: two error answers share a code";
+std::string_view to_token(ReplyField f) { return kReplyFieldNames[static_cast<std::size_t>(f)]; }
+std::string_view to_token(ReportField f) { return kReportFieldNames[static_cast<std::size_t>(f)]; }
+
+std::optional<ReplyField> parse_reply_field(std::string_view token) {
+  for (std::size_t i = 0; i < kReplyFieldCount; ++i)
+    if (kReplyFieldNames[i] == token) return static_cast<ReplyField>(i);
+  return std::nullopt;
+}
+
+std::optional<ReportField> parse_report_field(std::string_view token) {
+  for (std::size_t i = 0; i < kReportFieldCount; ++i)
+    if (kReportFieldNames[i] == token) return static_cast<ReportField>(i);
+  return std::nullopt;
+}
+
+std::optional<WireIssue> check(const WireTable& t) {
+  if (!all_distinct(t.commands)) return WireIssue{"commands", "two commands share a code"};
+  if (!all_distinct(t.errors)) return WireIssue{"errors", "two error answers share a code"};
   for (const auto e : t.errors)
     if (std::find(t.commands.begin(), t.commands.end(), e) != t.commands.end())
-      return "wire table: error answer code " + hex(e) + " is also a command code";
-  if (!all_distinct(t.measurements)) return "wire table: two measurements share a code";
+      return WireIssue{"errors", "error answer code " + hex(e) + " is also a command code"};
+  if (!all_distinct(t.measurements))
+    return WireIssue{"measurements", "two measurements share a code"};
   if (t.all_beams != 0 && t.all_beams != 0xFF)
-    return "wire table: the all-beams selector must be 0x00 or 0xFF (beam numbers use the rest)";
-  if (t.report_start == t.report_end) return "wire table: report start and end are equal";
-  return {};
+    return WireIssue{"all_beams",
+                     "the all-beams selector must be 0x00 or 0xFF (beam numbers use the rest)"};
+  if (t.report_start == t.report_end)
+    return WireIssue{"report_end", "report start and end are equal"};
+  if (auto r = check_reply(t.reply)) return r;
+  return check_report(t.report);
+}
+
+std::string validate(const WireTable& t) {
+  const auto issue = check(t);
+  return issue ? "wire table: " + issue->reason : std::string{};
 }
 
 }  // namespace rs4sim::metron

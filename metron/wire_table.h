@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace rs4sim::metron {
 
@@ -50,7 +51,56 @@ enum class Measurement : std::uint8_t {
 };
 inline constexpr std::size_t kMeasurementCount = 6;
 
-// EXTENSION: every byte value the lost figures held.
+// The fields of a slave reply (figures 15 and 18, lost): which ones a reply carries and in
+// what order is the table's (EXTENSION, [docs/metron.md#replies]).
+enum class ReplyField : std::uint8_t { kStart, kNode, kLength, kCode, kData, kChecksum };
+inline constexpr std::size_t kReplyFieldCount = 6;
+
+// A set of reply fields, bit i = ReplyField i: what the Length byte counts, what the
+// checksum sums.
+using ReplyFieldSet = std::uint8_t;
+[[nodiscard]] constexpr ReplyFieldSet field_bit(ReplyField f) {
+  return static_cast<ReplyFieldSet>(1U << static_cast<unsigned>(f));
+}
+[[nodiscard]] constexpr bool contains(ReplyFieldSet s, ReplyField f) {
+  return (s & field_bit(f)) != 0;
+}
+
+// DECISION: the reply mirrors the request (slave_reply.h).
+inline constexpr std::array<ReplyField, kReplyFieldCount> kMirroredReply{
+    ReplyField::kStart, ReplyField::kNode, ReplyField::kLength,
+    ReplyField::kCode,  ReplyField::kData, ReplyField::kChecksum};
+
+struct ReplyLayout {
+  // The fields a reply carries, in wire order; a field not listed is not sent. The node is
+  // sent only in node mode, the data only when the reply has any.
+  std::vector<ReplyField> fields =
+      std::vector<ReplyField>(kMirroredReply.begin(), kMirroredReply.end());
+  // What the Length byte counts (in bytes) and what the checksum sums.
+  ReplyFieldSet length_counts = field_bit(ReplyField::kCode) | field_bit(ReplyField::kData);
+  ReplyFieldSet checksum_covers = field_bit(ReplyField::kCode) | field_bit(ReplyField::kData);
+
+  friend bool operator==(const ReplyLayout&, const ReplyLayout&) = default;
+};
+
+// The parts of a standard-mode report. Table 1 fixes one character before and one after the
+// data and a one-character checksum [METRON manual "Standard line mode"]; which is which and
+// their order is the table's (EXTENSION, [docs/metron.md#standard-frame]).
+enum class ReportField : std::uint8_t { kStart, kData, kChecksum, kEnd };
+inline constexpr std::size_t kReportFieldCount = 4;
+
+struct ReportLayout {
+  // All four, in wire order (the checksum is sent only when the report has one).
+  std::array<ReportField, kReportFieldCount> order{ReportField::kStart, ReportField::kData,
+                                                   ReportField::kChecksum, ReportField::kEnd};
+  // false: the checksum sums the data values; true: the characters sent for them (digits
+  // and separators).
+  bool checksum_over_characters = false;
+
+  friend bool operator==(const ReportLayout&, const ReportLayout&) = default;
+};
+
+// EXTENSION: every byte value the lost figures held, and the layouts they showed.
 struct WireTable {
   // slave line mode
   std::uint8_t frame_start = 0x02;
@@ -65,6 +115,9 @@ struct WireTable {
   std::uint8_t report_end = 0x03;    // ETX
   std::uint8_t separator = 0x2C;     // ','
   std::uint8_t request_char = 0x3F;  // '?', reporting on request
+  // layouts
+  ReplyLayout reply;
+  ReportLayout report;
 
   friend bool operator==(const WireTable&, const WireTable&) = default;
 };
@@ -86,10 +139,23 @@ struct WireTable {
 [[nodiscard]] std::string_view to_string(Command c);
 [[nodiscard]] std::string_view to_string(ErrorCase e);
 [[nodiscard]] std::string_view to_string(Measurement m);
+// "start", "node", "length", "code", "data", "checksum"; "start", "data", "checksum", "end".
+[[nodiscard]] std::string_view to_token(ReplyField f);
+[[nodiscard]] std::string_view to_token(ReportField f);
+[[nodiscard]] std::optional<ReplyField> parse_reply_field(std::string_view token);
+[[nodiscard]] std::optional<ReportField> parse_report_field(std::string_view token);
 // "first", "last", "count", "free", "central", "run".
 [[nodiscard]] std::optional<Measurement> parse_measurement(std::string_view name);
 
-// Empty when every code is distinct where it must be; otherwise what clashes.
+// What is wrong with a table: the key of the table it concerns ("commands", "reply.fields";
+// the names of the wire-table file, docs/metron.md#wire-table) and why.
+struct WireIssue {
+  std::string key;
+  std::string reason;
+};
+// nullopt when every code is distinct where it must be and the layouts are whole.
+[[nodiscard]] std::optional<WireIssue> check(const WireTable& t);
+// Empty when check() finds nothing; otherwise "wire table: " and the reason.
 [[nodiscard]] std::string validate(const WireTable& t);
 
 }  // namespace rs4sim::metron

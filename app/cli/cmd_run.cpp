@@ -55,6 +55,9 @@ void add_byte_device_options(CLI::App& cmd, RunOptions& o) {
                  "byte devices: interrupted elements/beams at start, 1-based, e.g. 9-13,25-34");
   cmd.add_option("--door", d.door, "byte devices: door position at start");
   cmd.add_option("--node", d.node, "byte devices: node number");
+  cmd.add_option("--wire-table", d.wire_table,
+                 "metron: the byte values and reply/report layouts from a JSON file (the "
+                 "defaults: rs4sim metron-wire-table)");
   cmd.add_option("--format", d.format,
                  "byte devices: character format override, e.g. 8E1 (--baud: the bit rate)");
   cmd.add_option("--rs232", d.rs232,

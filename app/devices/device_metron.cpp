@@ -7,9 +7,11 @@
 //   rs4sim run --device metron --link pty --node 5 --mode slave,input=enable-line
 //   rs4sim run --device metron --link pty --mode periodical,hex,separator,checksum,period=250
 //   rs4sim run --device metron --link memory --grpc 127.0.0.1:50051   (the simulated clock)
+//   rs4sim run --device metron --link pty --wire-table trace.json  (byte values, layouts)
 #include "app/devices/device_options.h"
 #include "app/devices/device_registry.h"
 #include "app/devices/line_run.h"
+#include "app/devices/metron_wire_file.h"
 #include "app/runtime/usage_error.h"
 #include "metron/device.h"
 #include "metron/mode_spec.h"
@@ -54,6 +56,7 @@ metron::Options metron_options(const DeviceOptions& o) {
     m.baud = line.baud;
     m.parity = line.parity;
   }
+  if (!o.wire_table.empty()) m.wire = read_metron_wire_table(o.wire_table);
   if (const auto why = m.validate(); !why.empty()) throw UsageError("metron: " + why);
   check_blocked(o, m.beams, "beams");
   return m;
@@ -158,7 +161,7 @@ class MetronSegment final : public SimulatedSegment {
 void validate(DeviceOptions& o) {
   refuse_unused(o, "metron",
                 {DeviceFlag::kBaud, DeviceFlag::kFormat, DeviceFlag::kBeams, DeviceFlag::kMode,
-                 DeviceFlag::kBlocked, DeviceFlag::kNode});
+                 DeviceFlag::kBlocked, DeviceFlag::kNode, DeviceFlag::kWireTable});
   (void)metron_options(o);  // throws UsageError with the reason
 }
 

@@ -37,6 +37,7 @@ bool given(const DeviceOptions& o, DeviceFlag f) {
     case DeviceFlag::kState: return !o.state_files.empty();
     case DeviceFlag::kGsd: return !o.gsd.empty();
     case DeviceFlag::kModule: return !o.modules.empty();
+    case DeviceFlag::kWireTable: return !o.wire_table.empty();
   }
   return false;
 }
@@ -49,7 +50,7 @@ constexpr DeviceFlag kAllFlags[] = {
     DeviceFlag::kNode,        DeviceFlag::kRs232,        DeviceFlag::kPcAdapter,
     DeviceFlag::kCommandTime, DeviceFlag::kResponseTime, DeviceFlag::kAddresses,
     DeviceFlag::kSerialNumber, DeviceFlag::kState,        DeviceFlag::kGsd,
-    DeviceFlag::kModule,
+    DeviceFlag::kModule,      DeviceFlag::kWireTable,
 };
 
 // A whole decimal number in `text`, or nullopt.
@@ -96,6 +97,7 @@ const char* flag_name(DeviceFlag f) {
     case DeviceFlag::kPcAdapter: return "--pc-adapter";
     case DeviceFlag::kSerialNumber: return "--serial-number";
     case DeviceFlag::kState: return "--state";
+    case DeviceFlag::kWireTable: return "--wire-table";
   }
   return "--?";
 }

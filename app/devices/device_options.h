@@ -37,6 +37,7 @@ enum class DeviceFlag : std::uint8_t {
   kState,
   kGsd,     // --gsd FILE (generic)
   kModule,  // --module NAME, repeatable (with --gsd)
+  kWireTable,  // --wire-table FILE (METRON)
 };
 
 // "--elements".

@@ -72,6 +72,7 @@ struct DeviceOptions {
   std::optional<std::vector<int>> blocked;  // --blocked 9-13,25-34: sorted 1-based numbers
   std::optional<int> door;                  // --door N (GridScan: door position)
   std::optional<int> node;                  // --node N (METRON node)
+  std::string wire_table;                   // --wire-table FILE (METRON byte values, JSON)
   // The RS4's RS232 interface behind the optical PC adapter (docs/rs232.md):
   std::string rs232;       // --rs232 pty | serial:DEVICE[@BAUD]
   std::string pc_adapter;  // --pc-adapter attached | detached (at start)

@@ -1,0 +1,160 @@
+// The wire-table file (metron/wire_file.h): partial files keep the defaults, bytes as numbers
+// or "0x.." strings, layouts by name; every bad input names its key (or line:column) and why.
+#include "metron/wire_file.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace rs4sim::metron {
+namespace {
+
+using RF = ReplyField;
+
+// The issue of `json` applied to the default table, as "where: reason".
+std::string issue_of(const std::string& json) {
+  WireTable t;
+  const auto issue = apply_wire_json(json, t);
+  return issue ? issue->where + ": " + issue->reason : std::string("none");
+}
+
+TEST(MetronWireFile, EmptyObjectKeepsTheDefaults) {
+  WireTable t;
+  EXPECT_FALSE(apply_wire_json("{}", t));
+  EXPECT_EQ(t, WireTable{});
+}
+
+TEST(MetronWireFile, PartialFileChangesOnlyItsKeys) {
+  WireTable t;
+  const auto issue = apply_wire_json(R"({
+    "frame_start": "0x7E",
+    "commands": [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, "0x0d", "0x0C"],
+    "beam_bits": "msb-first",
+    "separator": 59,
+    "reply": {"fields": ["start", "code", "length", "data", "checksum"],
+              "length_counts": ["data"]},
+    "report": {"checksum_over": "characters"}
+  })",
+                                     t);
+  ASSERT_FALSE(issue) << issue->where << ": " << issue->reason;
+  WireTable want;
+  want.frame_start = 0x7E;
+  want.commands[11] = 0x0D;
+  want.commands[12] = 0x0C;
+  want.beam_bits_lsb_first = false;
+  want.separator = ';';
+  want.reply.fields = {RF::kStart, RF::kCode, RF::kLength, RF::kData, RF::kChecksum};
+  want.reply.length_counts = field_bit(RF::kData);
+  want.report.checksum_over_characters = true;
+  EXPECT_EQ(t, want);  // errors, measurements, checksum_covers, report.order: defaults
+}
+
+TEST(MetronWireFile, PrintedTableReadsBackToTheSameTable) {
+  WireTable changed;
+  changed.errors = {0xF1, 0xF2, 0xF3, 0xF4, 0xF5};
+  changed.all_beams = 0xFF;
+  changed.reply.fields = {RF::kNode, RF::kData, RF::kChecksum};
+  changed.reply.length_counts = 0;
+  changed.reply.checksum_covers = field_bit(RF::kNode) | field_bit(RF::kData);
+  changed.report.order = {ReportField::kEnd, ReportField::kData, ReportField::kChecksum,
+                          ReportField::kStart};
+  for (const WireTable& table : {WireTable{}, changed}) {
+    WireTable read;
+    read.frame_start = 0x55;  // overwritten: the printed file has every key
+    const auto issue = apply_wire_json(wire_json(table), read);
+    ASSERT_FALSE(issue) << issue->where << ": " << issue->reason;
+    EXPECT_EQ(read, table);
+  }
+  EXPECT_NE(wire_json(WireTable{}).find("\"commands\": [\"0x01\", \"0x02\""), std::string::npos);
+}
+
+TEST(MetronWireFile, SyntaxErrorHasLineAndColumn) {
+  WireTable t;
+  const auto issue = apply_wire_json("{\n  \"frame_start\": 2,\n  \"separator\": x\n}", t);
+  ASSERT_TRUE(issue);
+  EXPECT_TRUE(issue->syntax);
+  EXPECT_EQ(issue->where, "3:16");  // the x
+  EXPECT_EQ(issue->reason.rfind("not valid JSON: ", 0), 0U) << issue->reason;
+  const auto unterminated = apply_wire_json("{\"a\": [1, 2", t);
+  ASSERT_TRUE(unterminated);
+  EXPECT_TRUE(unterminated->syntax);
+}
+
+TEST(MetronWireFile, BadKeysAndValuesNameTheirKey) {
+  EXPECT_EQ(issue_of(R"({"frame_begin": 2})"),
+            "frame_begin: unknown key (the wire table takes: frame_start, commands, errors, "
+            "measurements, all_beams, beam_bits, report_start, report_end, separator, "
+            "request_char, reply, report)");
+  EXPECT_EQ(issue_of(R"({"frame_start": 256})"),
+            "frame_start: 256 is not a byte (0..255 or \"0x00\"..\"0xFF\")");
+  EXPECT_EQ(issue_of(R"({"frame_start": -1})"),
+            "frame_start: -1 is not a byte (0..255 or \"0x00\"..\"0xFF\")");
+  EXPECT_EQ(issue_of(R"({"frame_start": 2.5})"),
+            "frame_start: 2.5 is not a byte (0..255 or \"0x00\"..\"0xFF\")");
+  EXPECT_EQ(issue_of(R"({"separator": "0x100"})"),
+            "separator: \"0x100\" is not a byte (0..255 or \"0x00\"..\"0xFF\")");
+  EXPECT_EQ(issue_of(R"({"separator": "0xG1"})"),
+            "separator: \"0xG1\" is not a byte (0..255 or \"0x00\"..\"0xFF\")");
+  EXPECT_EQ(issue_of(R"({"separator": true})"),
+            "separator: expected a byte (0..255 or \"0x00\"..\"0xFF\"), found a boolean");
+  EXPECT_EQ(issue_of(R"({"commands": [1, 2, 3]})"),
+            "commands: expected 13 bytes (#1..#13 in the manual's order), found 3");
+  EXPECT_EQ(issue_of(R"({"errors": [225, 226, 227, 228, 300]})"),
+            "errors[4]: 300 is not a byte (0..255 or \"0x00\"..\"0xFF\")");
+  EXPECT_EQ(issue_of(R"({"measurements": {"first": 1}})"),
+            "measurements: expected an array, found an object");
+  EXPECT_EQ(issue_of(R"({"beam_bits": "lsb"})"),
+            "beam_bits: \"lsb\": expected \"lsb-first\" or \"msb-first\"");
+  EXPECT_EQ(issue_of(R"({"reply": {"fields": ["start", "crc"]}})"),
+            "reply.fields[1]: no reply field \"crc\" (fields: start, node, length, code, data, "
+            "checksum)");
+  EXPECT_EQ(issue_of(R"({"reply": {"order": []}})"),
+            "reply.order: unknown key (reply takes: fields, length_counts, checksum_covers)");
+  EXPECT_EQ(issue_of(R"({"reply": {"length_counts": ["code", "code"]}})"),
+            "reply.length_counts[1]: \"code\" is listed twice");
+  EXPECT_EQ(issue_of(R"({"report": {"order": ["start", "data", "end"]}})"),
+            "report.order: expected 4 parts (start, data, checksum, end in some order), found 3");
+  EXPECT_EQ(issue_of(R"({"report": {"checksum_over": "digits"}})"),
+            "report.checksum_over: \"digits\": expected \"values\" or \"characters\"");
+  EXPECT_EQ(issue_of("[1]"), "$: expected an object {\"commands\": [...], ...}");
+}
+
+TEST(MetronWireFile, ClashesAndBrokenLayoutsNameTheirKey) {
+  EXPECT_EQ(issue_of(R"({"commands": [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 12]})"),
+            "commands: two commands share a code");
+  EXPECT_EQ(issue_of(R"({"errors": [225, 226, 3, 228, 229]})"),
+            "errors: error answer code 0x03 is also a command code");
+  EXPECT_EQ(issue_of(R"({"errors": [225, 225, 227, 228, 229]})"),
+            "errors: two error answers share a code");
+  EXPECT_EQ(issue_of(R"({"measurements": [1, 1, 3, 4, 5, 6]})"),
+            "measurements: two measurements share a code");
+  EXPECT_EQ(issue_of(R"({"all_beams": 7})"),
+            "all_beams: the all-beams selector must be 0x00 or 0xFF (beam numbers use the rest)");
+  EXPECT_EQ(issue_of(R"({"report_end": 2})"), "report_end: report start and end are equal");
+  EXPECT_EQ(issue_of(R"({"reply": {"fields": ["start", "code", "checksum"]}})"),
+            "reply.fields: a reply needs \"data\" (what the requests ask for)");
+  EXPECT_EQ(issue_of(R"({"reply": {"fields": ["data", "data"]}})"),
+            "reply.fields: the reply lists \"data\" twice");
+  EXPECT_EQ(issue_of(R"({"reply": {"fields": ["start", "data", "checksum"]}})"),
+            "reply.length_counts: the Length byte counts \"code\", which the reply does not "
+            "carry");
+  EXPECT_EQ(issue_of(R"({"reply": {"checksum_covers": ["start", "checksum"]}})"),
+            "reply.checksum_covers: the checksum cannot sum itself");
+  EXPECT_EQ(issue_of(R"({"reply": {"fields": ["code", "data"], "length_counts": [],
+                         "checksum_covers": ["code", "length"]}})"),
+            "reply.checksum_covers: the checksum covers \"length\", which the reply does not "
+            "carry");
+  EXPECT_EQ(issue_of(R"({"report": {"order": ["start", "data", "data", "end"]}})"),
+            "report.order: the report order must list \"start\", \"data\", \"checksum\" and "
+            "\"end\" once each (Table 1: one character before and one after the data, one "
+            "checksum character)");
+}
+
+TEST(MetronWireFile, ValidateNamesLayoutProblemsToo) {
+  WireTable t;
+  t.reply.fields = {RF::kStart, RF::kCode};
+  EXPECT_EQ(validate(t), "wire table: a reply needs \"data\" (what the requests ask for)");
+}
+
+}  // namespace
+}  // namespace rs4sim::metron
