@@ -1,6 +1,6 @@
 // Slave line mode with node: the address filter, the node number in every reply and the
 // broadcast rules [METRON manual "With node"]. Node 5 throughout.
-#include "tests/metron/metron_rig.h"
+#include "tests/metron/metron_line.h"
 
 #include <gtest/gtest.h>
 
@@ -21,12 +21,12 @@ TEST(MetronNode, OwnAddressIsAnsweredWithTheNodeNumber) {
 TEST(MetronNode, ReplyTimingCountsTheAddressByte) {
   using namespace std::chrono_literals;
   Rig rig(node_options(5));
-  const auto t0 = rig.clock().now();
+  const auto t0 = rig.now();
   rig.send({0x02, 0x05, 0x01, 0x0C, 0xF3});
   rig.run_to(t0 + 20ms);
   const auto s = rig.take();
   ASSERT_EQ(s.size(), 1U);
-  EXPECT_EQ(s[0].at, t0 + 10ms + 2'864'584ns);  // 55 bits at 19200 + t_response/2
+  EXPECT_EQ(s[0].start, t0 + 10ms + 2'864'584ns);  // 55 bits at 19200 + t_response/2
 }
 
 TEST(MetronNode, OtherAddressIsIgnored) {
