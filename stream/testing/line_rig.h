@@ -104,6 +104,20 @@ class LineRig {
     return exchange(std::span<const std::uint8_t>(request.begin(), request.size()), window);
   }
 
+  // Sends `request` as exchange() does; true when the device gave out nothing within
+  // `window`: nothing reached the peer and nothing is on the wire at its end.
+  bool silent(std::span<const std::uint8_t> request,
+              Duration window = std::chrono::milliseconds(100)) {
+    return exchange(request, window).empty() && !on_the_wire();
+  }
+  bool silent(std::initializer_list<std::uint8_t> request,
+              Duration window = std::chrono::milliseconds(100)) {
+    return silent(std::span<const std::uint8_t>(request.begin(), request.size()), window);
+  }
+  // True when nothing has reached the peer since the last take() and nothing is on the wire:
+  // the device has given out nothing since then (if the line was quiet at that take()).
+  [[nodiscard]] bool quiet() const { return received_.empty() && !on_the_wire(); }
+
   // The frames that have reached the peer since the last take(), oldest first.
   std::vector<LineFrame> take() {
     std::vector<LineFrame> out(std::make_move_iterator(received_.begin()),

@@ -99,7 +99,7 @@ TEST(GridScanModes, AlignmentModeOnAnInterruptedPowerUp) {
   EXPECT_EQ(decoded(s[1]).seq, 1);
   h.device().set_blocked(0);  // free for the first time: alignment mode ends for good
   h.run_for(100ms);
-  EXPECT_TRUE(h.take().empty());
+  EXPECT_TRUE(h.quiet());
   h.device().set_blocked(0b100);
   h.device().power_off();
   h.device().power_on(h.now());
