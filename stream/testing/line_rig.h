@@ -32,7 +32,7 @@
 namespace rs4sim::stream::testing {
 
 template <typename Device>
-  requires std::derived_from<Device, ByteDevice>
+requires std::derived_from<Device, ByteDevice>
 class LineRig {
  public:
   using Bytes = std::vector<std::uint8_t>;
@@ -40,7 +40,7 @@ class LineRig {
   // Builds the device from `args` and starts the line at the clock's epoch (on_time once,
   // the device's first frames drained).
   template <typename... Args>
-    requires std::constructible_from<Device, Args...>
+  requires std::constructible_from<Device, Args...>
   explicit LineRig(Args&&... args) : LineRig(FrameTap{}, std::forward<Args>(args)...) {}
 
   // The same with `tap` on the line before it starts: it sees every frame the device gives
@@ -48,7 +48,7 @@ class LineRig {
   // chunk the device receives (kReceived). For fuzz targets whose invariants hold at the
   // moment of transmission (nothing sent while powered off).
   template <typename... Args>
-    requires std::constructible_from<Device, Args...>
+  requires std::constructible_from<Device, Args...>
   explicit LineRig(FrameTap tap, Args&&... args)
       : device_(std::forward<Args>(args)...), line_(clock_, device_) {
     line_.set_peer([this](const LineFrame& f) { received_.push_back(f); });
