@@ -35,8 +35,6 @@ template <typename Device>
 requires std::derived_from<Device, ByteDevice>
 class LineRig {
  public:
-  using Bytes = std::vector<std::uint8_t>;
-
   // Builds the device from `args` and starts the line at the clock's epoch (on_time once,
   // the device's first frames drained).
   template <typename... Args>
