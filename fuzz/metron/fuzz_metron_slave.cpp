@@ -9,7 +9,9 @@
 //   0 t      advance t ms (0..255)         3 b     set beam b interrupted, 4 b: free
 //   1 n ...  n bytes to the device         5 x     toggle synchronism
 //   2 b      byte b with a parity error    6 x     toggle the input (x ignored)
-#include "fuzz/metron/metron_harness.h"
+//            (it arrives one character time after now, or after the damaged
+//            characters before it, in line order)
+#include "fuzz/metron/metron_script.h"
 #include "metron/checksum.h"
 
 #include <cstddef>
@@ -20,12 +22,12 @@ namespace {
 
 using namespace rs4sim;
 
-void check_frame(const std::vector<std::uint8_t>& f, const metron::Options& o) {
+void check_frame(std::span<const std::uint8_t> f, const metron::Options& o) {
   const std::size_t header = o.node_enabled ? 3 : 2;
   if (f.size() < header + 2 || f[0] != o.wire.frame_start) std::abort();
   if (o.node_enabled && f[1] != o.node) std::abort();
   if (f[header - 1] != f.size() - header - 1) std::abort();
-  const auto body = std::span<const std::uint8_t>(f).subspan(header, f.size() - header - 1);
+  const auto body = f.subspan(header, f.size() - header - 1);
   if (metron::checksum(body, o.checksum_reading) != f.back()) std::abort();
 }
 
@@ -39,27 +41,28 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   o.checksum_reading = (data[0] & 2U) != 0 ? metron::ChecksumReading::kEndAroundCarry
                                            : metron::ChecksumReading::kModulo256;
   std::uint64_t replies = 0;
-  metron::fuzzing::Harness h(o, [&](const std::vector<std::uint8_t>& f, stream::TimePoint) {
-    check_frame(f, o);
-    ++replies;
-  });
-  auto& d = h.device();
+  metron::fuzzing::Rig rig(metron::fuzzing::sent_to([&](std::span<const std::uint8_t> f,
+                                                        stream::TimePoint) {
+                             check_frame(f, o);
+                             ++replies;
+                           }),
+                           o);
+  auto& d = rig.device();
   const std::uint8_t* p = data + 1;
   const std::uint8_t* end = data + size;
   while (p < end) {
     const auto op = static_cast<std::uint8_t>(*p++ % 7);
-    if (metron::fuzzing::common_op(h, op, p, end)) continue;
+    if (metron::fuzzing::common_op(rig, op, p, end)) continue;
     const std::uint8_t arg = p < end ? *p++ : 0;
     switch (op) {
-      case 2: d.on_byte_with_parity_error(arg, h.now()); break;
+      case 2: rig.write_damaged(arg); break;  // one character time from now
       case 3: d.set_beam(arg, true); break;
       case 4: d.set_beam(arg, false); break;
       case 5: d.set_synchronised(!d.scene().synchronised()); break;
       default: d.set_input(!d.scene().input_high()); break;
     }
-    h.drain();
   }
-  h.advance(std::chrono::seconds(1));
+  rig.run_for(std::chrono::seconds(1));
   if (replies > d.counters().messages) std::abort();
   return 0;
 }

@@ -8,7 +8,7 @@
 // Script: op byte, then its arguments
 //   0 t      advance t ms      1 n ...  n bytes to the device (requests and garbage)
 //   2 b      beam b on         3 b      beam b off      4 x  toggle the input (x ignored)
-#include "fuzz/metron/metron_harness.h"
+#include "fuzz/metron/metron_script.h"
 #include "metron/standard_report.h"
 
 #include <array>
@@ -46,26 +46,27 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const metron::ReportFormat f{o.format, o.separator, o.checksum};
   const auto line = metron::line_settings(o);
   std::optional<stream::TimePoint> last;
-  metron::fuzzing::Harness h(o, [&](const std::vector<std::uint8_t>& r, stream::TimePoint now) {
-    if (r.size() != metron::report_length(o.report.size(), f)) std::abort();
-    if (r.front() != o.wire.report_start || r.back() != o.wire.report_end) std::abort();
-    if (last && now - *last < metron::send_time(r.size(), line)) std::abort();
-    last = now;
-  });
-  auto& d = h.device();
+  metron::fuzzing::Rig rig(
+      metron::fuzzing::sent_to([&](std::span<const std::uint8_t> r, stream::TimePoint now) {
+        if (r.size() != metron::report_length(o.report.size(), f)) std::abort();
+        if (r.front() != o.wire.report_start || r.back() != o.wire.report_end) std::abort();
+        if (last && now - *last < metron::send_time(r.size(), line)) std::abort();
+        last = now;
+      }),
+      o);
+  auto& d = rig.device();
   const std::uint8_t* p = data + 2;
   const std::uint8_t* end = data + size;
   while (p < end) {
     const auto op = static_cast<std::uint8_t>(*p++ % 5);
-    if (metron::fuzzing::common_op(h, op, p, end)) continue;
+    if (metron::fuzzing::common_op(rig, op, p, end)) continue;
     const std::uint8_t arg = p < end ? *p++ : 0;
     switch (op) {
       case 2: d.set_beam(arg, true); break;
       case 3: d.set_beam(arg, false); break;
       default: d.set_input(!d.scene().input_high()); break;
     }
-    h.drain();
   }
-  h.advance(std::chrono::milliseconds(100));
+  rig.run_for(std::chrono::milliseconds(100));
   return 0;
 }

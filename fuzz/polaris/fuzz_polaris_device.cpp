@@ -1,3 +1,4 @@
+<<<<<<< HEAD
 // Feeds the input to a Polaris slave as chunks with gaps taken from the input itself (a
 // gap byte, a length byte, the chunk), runs the device's deadlines, and checks what it
 // sends: only whole RTU frames with a good CRC for its own address, at most one answer
@@ -5,8 +6,16 @@
 // and (bit 4) whether the harness appends a good CRC to each chunk, so that the PDUs behind
 // the CRC (the FC 6/16 configuration writes, FC 3/4 reads of both blocks) are reached.
 #include "modbus/crc16.h"
+=======
+// Feeds the input to a Polaris slave on the shared line rig (stream/testing/line_rig.h) as
+// chunks with gaps taken from the input itself (a gap byte, a length byte, the chunk), the
+// line running the device's deadlines, and checks what it sends as it gives it out: only
+// whole RTU frames with a good CRC for its own address, at most one answer per received
+// frame, and the device idle at the end. The first byte picks the data mode and the NAK switch.
+>>>>>>> line-rig
 #include "modbus/rtu_frame.h"
 #include "polaris/device.h"
+#include "stream/testing/line_rig.h"
 
 #include <algorithm>
 #include <chrono>
@@ -38,31 +47,29 @@ polaris::Options options_from(std::uint8_t selector) {
   return o;
 }
 
-std::uint64_t drain(polaris::Device& d) {
-  std::uint64_t sent = 0;
-  while (auto frame = d.take_transmit()) {
-    rs4sim::modbus::RtuFrame f;
-    check(!rs4sim::modbus::decode(*frame, f));
-    check(f.address == 1);
-    ++sent;
-  }
-  return sent;
-}
 
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 1) return 0;
-  polaris::Device device(options_from(data[0]));
-  rs4sim::stream::TimePoint now{std::chrono::hours(1)};
-  device.on_time(now);
-  const std::uint16_t scene[] = {3, 4, 5, 40, 41, 127};
-  check(!device.set_interrupted(scene, now));
   std::uint64_t sent = 0;
+  const auto on_sent = [&sent](std::span<const std::uint8_t> frame, rs4sim::stream::TimePoint,
+                               rs4sim::stream::FrameDirection d) {
+    if (d != rs4sim::stream::FrameDirection::kSent) return;
+    rs4sim::modbus::RtuFrame f;
+    check(!rs4sim::modbus::decode(frame, f));
+    check(f.address == 1);
+    ++sent;
+  };
+  rs4sim::stream::testing::LineRig<polaris::Device> rig(on_sent, options_from(data[0]));
+  polaris::Device& device = rig.device();
+  const std::uint16_t scene[] = {3, 4, 5, 40, 41, 127};
+  check(!device.set_interrupted(scene, rig.now()));
   std::size_t at = 1;
   while (at + 2 <= size) {
-    now += std::chrono::microseconds(100 * data[at]);  // 0..25.5 ms: inside or after t3.5
+    rig.run_for(std::chrono::microseconds(100 * data[at]));  // 0..25.5 ms: inside or after t3.5
     const std::size_t length = std::min<std::size_t>(data[at + 1], size - at - 2);
+<<<<<<< HEAD
     std::vector<std::uint8_t> chunk(data + at + 2, data + at + 2 + length);
     if ((data[0] & 16U) != 0) {
       const std::uint16_t crc = rs4sim::modbus::crc16(chunk);
@@ -80,7 +87,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     device.on_time(now);
     sent += drain(device);
   }
+=======
+    rig.send(std::span(data + at + 2, length));
+    (void)rig.take();  // checked as given out
+    at += 2 + length;
+  }
+  rig.run_for(std::chrono::seconds(1));  // the last frame's t3.5, the scan, the answer's wire time
+>>>>>>> line-rig
   check(!device.next_deadline());
+  check(!rig.on_the_wire());
   const auto& c = device.counters();
   const std::uint64_t frames = c.requests + c.crc_errors + c.too_short + c.oversized +
                                c.broadcasts + c.foreign_address + c.bad_function + c.bad_request +

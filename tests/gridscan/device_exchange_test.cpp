@@ -1,7 +1,7 @@
 // The device from power-up through the whole [GridScan manual §10.3] exchange, byte for
 // byte and on the manual clock: power-up messages, answers after the cycle end, one
 // request per cycle, the sequence counter rules ([GridScan manual §9.2.2, §10.1.1, §11]).
-#include "device_harness.h"
+#include "tests/gridscan/gridscan_line.h"
 
 namespace rs4sim::gridscan::testing {
 namespace {
@@ -14,23 +14,24 @@ const Bytes kPowerUpVersion{0x43, 0x45, 0x44, 0x45,        // sync
                             0x33, 0x7F, 0x67, 0x4B};       // CRC
 
 TEST(GridScanExchange, PowerUpThenTheManualsCommunicationTest) {
-  DeviceHarness h;
-  const auto t0 = h.clock.now();
-  h.start();
-  ASSERT_EQ(h.sent.size(), 1U);
-  EXPECT_EQ(h.sent[0].bytes, kPowerUpVersion);
-  EXPECT_EQ(h.sent[0].at, t0);
-  EXPECT_EQ(h.device.power(), PowerState::kStarting);
-  h.sent.clear();
+  Rig h(Options{});  // powers up as the line starts
+  const auto t0 = h.now();
+  EXPECT_EQ(h.device().power(), PowerState::kStarting);
+  h.run_to(t0 + chars(20));  // the version message's 20 characters
+  auto s = h.take();
+  ASSERT_EQ(s.size(), 1U);
+  EXPECT_EQ(s[0].bytes, kPowerUpVersion);
+  EXPECT_EQ(s[0].start, t0);
 
-  h.run_for(1700ms);  // ready: Data: Reduced state, SeqCnt 1
-  ASSERT_EQ(h.sent.size(), 1U);
-  EXPECT_EQ(h.sent[0].at, t0 + 1700ms);
-  EXPECT_EQ(h.sent[0].bytes, (Bytes{0x43, 0x45, 0x44, 0x45,     // sync
-                                    0x01,                       // SeqCnt 1 (DECISION)
-                                    0xB0,                       // Data: Reduced state
-                                    0x16, 0x00,                 // door 22 open, clear, clean
-                                    0x69, 0x78, 0x27, 0x24}));  // CRC (COMPUTED)
+  h.run_to(t0 + 1700ms + chars(12));  // ready: Data: Reduced state, SeqCnt 1
+  s = h.take();
+  ASSERT_EQ(s.size(), 1U);
+  EXPECT_EQ(s[0].start, t0 + 1700ms);
+  EXPECT_EQ(s[0].bytes, (Bytes{0x43, 0x45, 0x44, 0x45,     // sync
+                               0x01,                       // SeqCnt 1 (DECISION)
+                               0xB0,                       // Data: Reduced state
+                               0x16, 0x00,                 // door 22 open, clear, clean
+                               0x69, 0x78, 0x27, 0x24}));  // CRC (COMPUTED)
   const auto ready = t0 + 1700ms;
 
   struct Step {
@@ -47,38 +48,37 @@ TEST(GridScanExchange, PowerUpThenTheManualsCommunicationTest) {
        {0x43, 0x45, 0x44, 0x45, 0x07, 0xA3, 0x00, 0xF8, 0x8B, 0xAB, 0x62}},
   };
   for (std::size_t i = 0; i < steps.size(); ++i) {
-    h.sent.clear();
-    h.clock.set(ready + 30ms * static_cast<int>(i) + 5ms);  // 5 ms into cycle i
+    const auto cycle_end = ready + 30ms * static_cast<int>(i + 1);
+    h.run_to(cycle_end - 25ms);  // 5 ms into cycle i
     h.send(steps[i].request);
-    h.run_for(24ms);  // still inside the cycle: nothing yet
-    EXPECT_TRUE(h.sent.empty()) << "step " << i;
-    h.run_for(1ms);  // the cycle ends at ready + 30 ms · (i + 1)
-    ASSERT_EQ(h.sent.size(), 1U) << "step " << i;
-    EXPECT_EQ(h.sent[0].bytes, steps[i].answer) << "step " << i;
-    EXPECT_EQ(h.sent[0].at, ready + 30ms * static_cast<int>(i + 1)) << "step " << i;
+    h.run_to(cycle_end - 1ms);  // still inside the cycle: nothing given out yet
+    EXPECT_TRUE(h.quiet()) << "step " << i;
+    h.run_to(cycle_end + chars(11));  // the answer leaves at the cycle end: 11 characters
+    s = h.take();
+    ASSERT_EQ(s.size(), 1U) << "step " << i;
+    EXPECT_EQ(s[0].bytes, steps[i].answer) << "step " << i;
+    EXPECT_EQ(s[0].start, cycle_end) << "step " << i;
   }
-  EXPECT_EQ(h.device.counters().comm_tests, 4U);
-  EXPECT_EQ(h.device.counters().dropped(), 0U);
+  EXPECT_EQ(h.device().counters().comm_tests, 4U);
+  EXPECT_EQ(h.device().counters().dropped(), 0U);
 }
 
 TEST(GridScanExchange, RequestsBeforeReadyAreDropped) {
-  DeviceHarness h;
-  h.start();
+  Rig h(Options{});
   h.run_for(100ms);
-  h.sent.clear();
+  (void)h.take();  // the version message
   h.send(request(2, CommandId::kInfoCommunicationTest));
   h.run_for(1000ms);
-  EXPECT_TRUE(h.sent.empty());
-  EXPECT_EQ(h.device.counters().not_ready, 1U);
+  EXPECT_TRUE(h.quiet());
+  EXPECT_EQ(h.device().counters().not_ready, 1U);
 }
 
 TEST(GridScanExchange, SequenceCounterRulesAndWrap) {
-  DeviceHarness h;
-  h.boot();
-  auto s = h.exchange(request(3, CommandId::kInfoGetCountOfElements));  // expected 2
-  EXPECT_TRUE(s.empty());
-  EXPECT_EQ(h.device.counters().bad_seq, 1U);
-  s = h.exchange(request(2, CommandId::kInfoGetCountOfElements));
+  Rig h(Options{});
+  boot(h);
+  EXPECT_TRUE(h.silent(request(3, CommandId::kInfoGetCountOfElements)));  // expected 2
+  EXPECT_EQ(h.device().counters().bad_seq, 1U);
+  auto s = h.exchange(request(2, CommandId::kInfoGetCountOfElements));
   ASSERT_EQ(s.size(), 1U);
   EXPECT_EQ(decode_response(s[0].bytes, 22).value(), (Frame{3, 0xA2, {22}}));
   // Walk the counter to the wrap: request 254 → answer 255, request 0 → answer 1.
@@ -95,15 +95,15 @@ TEST(GridScanExchange, SequenceCounterRulesAndWrap) {
 }
 
 TEST(GridScanExchange, OneRequestPerCycle) {
-  DeviceHarness h;
-  h.boot();
-  h.clock.advance(2ms);
+  Rig h(Options{});
+  boot(h);
+  h.run_for(2ms);
   h.send(request(2, CommandId::kInfoGetCountOfElements));
   h.run_for(5ms);
   h.send(request(4, CommandId::kInfoGetCountOfElements));  // same cycle: dropped
   h.run_for(60ms);
-  ASSERT_EQ(h.sent.size(), 1U);
-  EXPECT_EQ(h.device.counters().busy, 1U);
+  ASSERT_EQ(h.take().size(), 1U);
+  EXPECT_EQ(h.device().counters().busy, 1U);
   // The next good frame is answered in the next cycle.
   auto s = h.exchange(request(4, CommandId::kInfoGetCountOfElements));
   ASSERT_EQ(s.size(), 1U);
@@ -111,8 +111,8 @@ TEST(GridScanExchange, OneRequestPerCycle) {
 }
 
 TEST(GridScanExchange, BadInputIsCountedAndNeverDisturbsTheNextGoodFrame) {
-  DeviceHarness h;
-  h.boot();
+  Rig h(Options{});
+  boot(h);
   const Bytes good = request(2, CommandId::kInfoGetCountOfElements);
   Bytes bad_crc = good;
   bad_crc[9] ^= 0xFF;
@@ -132,8 +132,8 @@ TEST(GridScanExchange, BadInputIsCountedAndNeverDisturbsTheNextGoodFrame) {
       encode({2, 0x26, {}}),  // unknown ID
       {},
   };
-  for (const auto& b : bad) EXPECT_TRUE(h.exchange(b).empty());
-  const auto& c = h.device.counters();
+  for (const auto& b : bad) EXPECT_TRUE(h.silent(b));
+  const auto& c = h.device().counters();
   EXPECT_EQ(c.truncated, 1U);
   EXPECT_EQ(c.oversized, 2U);
   EXPECT_EQ(c.bad_crc, 1U);
@@ -146,24 +146,23 @@ TEST(GridScanExchange, BadInputIsCountedAndNeverDisturbsTheNextGoodFrame) {
 }
 
 TEST(GridScanExchange, FramesAreCutByIdleGap) {
-  DeviceHarness h;
-  h.boot();
+  Rig h(Options{});
+  boot(h);
   const Bytes good = request(2, CommandId::kInfoGetCountOfElements);
   // A frame in two chunks 200 µs apart (less than the 3.5-character gap) is one frame.
   h.send(Bytes(good.begin(), good.begin() + 4));
-  h.clock.advance(200us);
+  h.run_for(200us);
   h.send(Bytes(good.begin() + 4, good.end()));
   h.run_for(40ms);
-  ASSERT_EQ(h.sent.size(), 1U);
+  ASSERT_EQ(h.take().size(), 1U);
   // Two halves 400 µs apart are two truncated frames.
-  h.sent.clear();
   const Bytes next = request(4, CommandId::kInfoGetCountOfElements);
   h.send(Bytes(next.begin(), next.begin() + 4));
-  h.clock.advance(400us);
+  h.run_for(400us);
   h.send(Bytes(next.begin() + 4, next.end()));
   h.run_for(40ms);
-  EXPECT_TRUE(h.sent.empty());
-  EXPECT_EQ(h.device.counters().truncated, 2U);
+  EXPECT_TRUE(h.quiet());
+  EXPECT_EQ(h.device().counters().truncated, 2U);
 }
 
 }  // namespace

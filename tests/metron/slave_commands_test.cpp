@@ -1,7 +1,7 @@
 // Slave line mode, no node: every command's correct operation as annotated bytes
 // [METRON manual "No node"]. Byte values are the project's EXTENSION (metron/wire_table.h):
 // start 0x02, commands 0x01..0x0D in the manual's order, reply code = command code.
-#include "tests/metron/metron_rig.h"
+#include "tests/metron/metron_line.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@ using namespace std::chrono_literals;
 
 TEST(MetronSlave, RequestOssdStatus) {
   Rig rig(slave_options());
-  EXPECT_EQ(rig.only_reply({0x02,    // frame start
+  EXPECT_EQ(only_reply(rig, {0x02,    // frame start
                             0x01,    // length: command only
                             0x0C,    // #12 Request OSSD status
                             0xF3}),  // checksum ~0x0C
@@ -21,7 +21,7 @@ TEST(MetronSlave, RequestOssdStatus) {
                    0x01, 0x01,       // OSSD1 ON, OSSD2 ON (free curtain)
                    0xF1}));          // ~(0x0C+1+1)
   rig.device().set_beam(3, true);
-  EXPECT_EQ(rig.only_reply({0x02, 0x01, 0x0C, 0xF3}),
+  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x0C, 0xF3}),
             (Bytes{0x02, 0x03, 0x0C, 0x00, 0x00, 0xF3}));  // both OFF
 }
 
@@ -29,7 +29,7 @@ TEST(MetronSlave, RequestActiveBeamStatusAllBeams24) {
   Rig rig(slave_options());
   const std::uint16_t blocked[] = {9, 10, 11, 12, 13};
   rig.device().set_interrupted(blocked);
-  EXPECT_EQ(rig.only_reply({0x02, 0x02, 0x09,  // start, length 2, #9
+  EXPECT_EQ(only_reply(rig, {0x02, 0x02, 0x09,  // start, length 2, #9
                             0x00,              // all beams (EXTENSION)
                             0xF6}),
             (Bytes{0x02, 0x04, 0x09,
@@ -46,14 +46,14 @@ TEST(MetronSlave, RequestActiveBeamStatusAllBeams30UsesFourBytes) {
   const std::uint16_t blocked[] = {25, 26, 27, 28, 29, 30};
   rig.device().set_interrupted(blocked);
   // "a 30-beam light curtain will send 4 bytes, the last two bits as X" (sent as 0)
-  EXPECT_EQ(rig.only_reply({0x02, 0x02, 0x09, 0x00, 0xF6}),
+  EXPECT_EQ(only_reply(rig, {0x02, 0x02, 0x09, 0x00, 0xF6}),
             (Bytes{0x02, 0x05, 0x09, 0x00, 0x00, 0x00, 0x3F, 0xB7}));
 }
 
 TEST(MetronSlave, RequestActiveBeamStatusOneBeam) {
   Rig rig(slave_options());
   rig.device().set_beam(10, true);
-  EXPECT_EQ(rig.only_reply({0x02, 0x02, 0x09, 0x0A /* beam 10 */, 0xEC}),
+  EXPECT_EQ(only_reply(rig, {0x02, 0x02, 0x09, 0x0A /* beam 10 */, 0xEC}),
             (Bytes{0x02, 0x02, 0x09, 0x01 /* interrupted */, 0xF5}));
 }
 
@@ -61,7 +61,7 @@ TEST(MetronSlave, RequestInstantaneousMeasurements) {
   Rig rig(slave_options());
   const std::uint16_t blocked[] = {9, 10, 11, 12, 13};
   rig.device().set_interrupted(blocked);
-  EXPECT_EQ(rig.only_reply({0x02, 0x04, 0x0A,  // #10, three fields
+  EXPECT_EQ(only_reply(rig, {0x02, 0x04, 0x0A,  // #10, three fields
                             0x01, 0x02, 0x03,  // first, last, count
                             0xEF}),
             (Bytes{0x02, 0x04, 0x0A, 0x09, 0x0D, 0x05,  // 9, 13, 5
@@ -70,7 +70,7 @@ TEST(MetronSlave, RequestInstantaneousMeasurements) {
 
 TEST(MetronSlave, RequestConfiguration) {
   Rig rig(slave_options());
-  EXPECT_EQ(rig.only_reply({0x02, 0x01, 0x0B, 0xF4}), (Bytes{0x02, 0x06, 0x0B,
+  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x0B, 0xF4}), (Bytes{0x02, 0x06, 0x0B,
                                                              0x18,  // 24 beams
                                                              0x00,  // input type: no function
                                                              0x00,  // node: none
@@ -81,49 +81,49 @@ TEST(MetronSlave, RequestConfiguration) {
 
 TEST(MetronSlave, RequestLightCurtainStatus) {
   Rig rig(slave_options());
-  EXPECT_EQ(rig.only_reply({0x02, 0x01, 0x0D, 0xF2}),
+  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x0D, 0xF2}),
             (Bytes{0x02, 0x02, 0x0D, 0x03 /* synchronised, OSSD enabled */, 0xEF}));
 }
 
 TEST(MetronSlave, OssdFunctionCommands) {
   Rig rig(slave_options());
-  EXPECT_EQ(rig.only_reply({0x02, 0x01, 0x03, 0xFC}), (Bytes{0x02, 0x01, 0x03, 0xFC}));
+  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x03, 0xFC}), (Bytes{0x02, 0x01, 0x03, 0xFC}));
   EXPECT_EQ(rig.device().slave_state().ossd, OssdFunction::kDisabled);
   EXPECT_FALSE(rig.device().ossd_on());
-  EXPECT_EQ(rig.only_reply({0x02, 0x01, 0x02, 0xFD}), (Bytes{0x02, 0x01, 0x02, 0xFD}));
+  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x02, 0xFD}), (Bytes{0x02, 0x01, 0x02, 0xFD}));
   EXPECT_TRUE(rig.device().ossd_on());
-  EXPECT_EQ(rig.only_reply({0x02, 0x01, 0x04, 0xFB}), (Bytes{0x02, 0x01, 0x04, 0xFB}));
+  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x04, 0xFB}), (Bytes{0x02, 0x01, 0x04, 0xFB}));
   EXPECT_EQ(rig.device().slave_state().ossd, OssdFunction::kStandby);
-  EXPECT_EQ(rig.only_reply({0x02, 0x01, 0x02, 0xFD}), (Bytes{0x02, 0x01, 0x02, 0xFD}));
-  EXPECT_EQ(rig.only_reply({0x02, 0x01, 0x05, 0xFA}), (Bytes{0x02, 0x01, 0x05, 0xFA}));
+  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x02, 0xFD}), (Bytes{0x02, 0x01, 0x02, 0xFD}));
+  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x05, 0xFA}), (Bytes{0x02, 0x01, 0x05, 0xFA}));
   EXPECT_TRUE(rig.device().slave_state().ossd_measuring);
-  EXPECT_EQ(rig.only_reply({0x02, 0x01, 0x06, 0xF9}), (Bytes{0x02, 0x01, 0x06, 0xF9}));
+  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x06, 0xF9}), (Bytes{0x02, 0x01, 0x06, 0xF9}));
   EXPECT_FALSE(rig.device().slave_state().ossd_measuring);
 }
 
 TEST(MetronSlave, StartStopMeasurementReturnsTheMaximum) {
   Rig rig(slave_options());
   rig.device().set_beam(3, true);
-  EXPECT_EQ(rig.only_reply({0x02, 0x02, 0x07, 0x01 /* first interrupted */, 0xF7}),
+  EXPECT_EQ(only_reply(rig, {0x02, 0x02, 0x07, 0x01 /* first interrupted */, 0xF7}),
             (Bytes{0x02, 0x01, 0x07, 0xF8}));
   rig.device().set_beam(9, true);
   rig.device().set_beam(3, false);  // first = 9: the maximum
   rig.device().set_beam(4, true);   // first = 4
-  EXPECT_EQ(rig.only_reply({0x02, 0x01, 0x08, 0xF7}),
+  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x08, 0xF7}),
             (Bytes{0x02, 0x02, 0x08, 0x09 /* maximum */, 0xEE}));
 }
 
 TEST(MetronSlave, ResetSoftwareNeverReplies) {
   Rig rig(slave_options());
   rig.send({0x02, 0x01, 0x03, 0xFC});  // disable OSSD
-  rig.advance(100ms);
-  EXPECT_TRUE(rig.exchange({0x02, 0x01, 0x01, 0xFE}).empty());  // #1 Reset software
+  rig.run_for(100ms);
+  EXPECT_TRUE(rig.silent({0x02, 0x01, 0x01, 0xFE}));  // #1 Reset software
   EXPECT_EQ(rig.device().counters().resets, 1U);
   EXPECT_EQ(rig.device().slave_state().ossd, OssdFunction::kEnabled);  // state restarted
   // deaf while restarting (reset_time 500 ms from the reset)
-  EXPECT_TRUE(rig.exchange({0x02, 0x01, 0x0C, 0xF3}).empty());
+  EXPECT_TRUE(rig.silent({0x02, 0x01, 0x0C, 0xF3}));
   EXPECT_EQ(rig.device().counters().ignored_in_reset, 4U);
-  rig.advance(400ms);
+  rig.run_for(400ms);
   EXPECT_EQ(rig.exchange({0x02, 0x01, 0x0C, 0xF3}).size(), 1U);
 }
 
@@ -131,26 +131,28 @@ TEST(MetronSlave, ReplyTimingIsEquation3) {
   // t_late = n_byte * 11 * 0.05208 ms + t_response / 2 from the start of the host's message
   // [METRON manual "Slave line mode"]: 4 bytes -> 44 bits / 19200 = 2.291667 ms, + 10 ms.
   Rig rig(slave_options());
-  const auto t0 = rig.clock().now();
+  const auto t0 = rig.now();
   rig.send({0x02, 0x01, 0x0C, 0xF3});
   rig.run_to(t0 + 12'291'666ns);
-  EXPECT_TRUE(rig.take().empty());
+  EXPECT_FALSE(rig.on_the_wire());  // not given out yet
   rig.run_to(t0 + 12'291'667ns);
+  EXPECT_TRUE(rig.on_the_wire());  // given out now: its 6 characters take 3.44 ms
+  rig.run_to(t0 + 20ms);
   const auto s = rig.take();
   ASSERT_EQ(s.size(), 1U);
-  EXPECT_EQ(s[0].at, t0 + 12'291'667ns);
+  EXPECT_EQ(s[0].start, t0 + 12'291'667ns);
 }
 
 TEST(MetronSlave, ReplyTimingCountsFromTheFirstByte) {
   Rig rig(slave_options());
-  const auto t0 = rig.clock().now();
+  const auto t0 = rig.now();
   rig.send({0x02, 0x01});
-  rig.advance(1ms);
+  rig.run_for(1ms);
   rig.send({0x0C, 0xF3});
   rig.run_to(t0 + 20ms);
   const auto s = rig.take();
   ASSERT_EQ(s.size(), 1U);
-  EXPECT_EQ(s[0].at, t0 + 12'291'667ns);
+  EXPECT_EQ(s[0].start, t0 + 12'291'667ns);
 }
 
 TEST(MetronSlave, LineIs19200_8E1) {

@@ -2,35 +2,30 @@
 // synchronism) move neither its deadline nor its transmit queue, so they need no wake; on a
 // stream::MemoryLine that reads the deadline only after its calls and on a wake, the next
 // report goes out at its scan cycle with the new scene.
-#include "metron/device.h"
-#include "stream/memory_line.h"
+#include "tests/metron/metron_line.h"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
 
-namespace rs4sim::metron {
+namespace rs4sim::metron::testing {
 namespace {
 
 using std::chrono::milliseconds;
-using Bytes = std::vector<std::uint8_t>;
 
 TEST(MetronWake, ASceneChangeFromOutsideIsInTheNextReportOnTime) {
   Options o;
   o.line_mode = LineMode::kStandard;
   o.reporting_mode = ReportingMode::kContinuous;
-  stream::ManualClock clock;
-  Device device(o);
-  stream::MemoryLine line(clock, device);
-  const auto t0 = clock.now();
-  line.start();
-  line.run_until(t0 + milliseconds(25));
-  const auto before = line.take_received();
+  Rig rig(o);  // the line starts at t0
+  const auto t0 = rig.now();
+  rig.run_to(t0 + milliseconds(25));
+  const auto before = rig.take();
   ASSERT_FALSE(before.empty());
   const std::vector<std::uint16_t> beams{9, 10, 11, 12, 13};
-  device.set_interrupted(beams);
-  line.run_until(t0 + milliseconds(35));
-  const auto got = line.take_received();
+  rig.device().set_interrupted(beams);
+  rig.run_to(t0 + milliseconds(35));
+  const auto got = rig.take();
   ASSERT_EQ(got.size(), 1U);
   // A report every scan cycle (10 ms) from the start; first, last, count = 9, 13, 5
   // (docs/metron.md "Example bytes").
@@ -39,4 +34,4 @@ TEST(MetronWake, ASceneChangeFromOutsideIsInTheNextReportOnTime) {
 }
 
 }  // namespace
-}  // namespace rs4sim::metron
+}  // namespace rs4sim::metron::testing

@@ -1,6 +1,6 @@
 // The barrier as Modbus master: an FC 16 push of its data every scan time, the slave's
 // answer ignored [Polaris manual §8.1.1, §8.2.1].
-#include "device_harness.h"
+#include "tests/polaris/polaris_line.h"
 
 #include <gtest/gtest.h>
 
@@ -10,8 +10,8 @@ namespace rs4sim::polaris {
 namespace {
 
 using std::chrono::milliseconds;
-using test::Bytes;
-using test::Harness;
+using testing::Bytes;
+using testing::Rig;
 
 Options master_fl4() {
   Options o;
@@ -24,12 +24,12 @@ Options master_fl4() {
 }
 
 TEST(PolarisMaster, PushesFl4AtTheScanTime) {
-  Harness h(master_fl4());
-  const auto t0 = h.clock.now();
+  Rig h(master_fl4());
+  const auto t0 = h.now();
   std::vector<std::uint16_t> beams;
   for (std::uint16_t b = 9; b <= 13; ++b) beams.push_back(b);
   for (std::uint16_t b = 25; b <= 34; ++b) beams.push_back(b);
-  ASSERT_FALSE(h.device.set_interrupted(beams, t0));
+  ASSERT_FALSE(h.device().set_interrupted(beams, t0));
   const Bytes push{0x01,                    // slave 1
                    0x10,                    // FC 16
                    0x00, 0x00,              // register 0 (master default)
@@ -40,28 +40,32 @@ TEST(PolarisMaster, PushesFl4AtTheScanTime) {
                    0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
                    0x00, 0x00, 0x00, 0x09, 0x00, 0x22,  // overall 9..34
                    0xCA, 0xC3};
-  EXPECT_EQ(h.device.next_deadline(), t0 + milliseconds(20));
-  auto sent = h.run_until_sent(t0 + milliseconds(100));
+  EXPECT_EQ(h.device().next_deadline(), t0 + milliseconds(20));
+  auto sent = h.run_until_received(t0 + milliseconds(100));
   ASSERT_TRUE(sent);
   EXPECT_EQ(sent->bytes, push);
-  EXPECT_EQ(sent->at, t0 + milliseconds(20));
-  sent = h.run_until_sent(t0 + milliseconds(100));
+  EXPECT_EQ(sent->start, t0 + milliseconds(20));
+  sent = h.run_until_received(t0 + milliseconds(100));
   ASSERT_TRUE(sent);
-  EXPECT_EQ(sent->at, t0 + milliseconds(40));
+  EXPECT_EQ(sent->start, t0 + milliseconds(40));
 }
 
 TEST(PolarisMaster, TheSlavesAnswerIsIgnored) {
-  Harness h(master_fl4());
-  const auto t0 = h.clock.now();
-  ASSERT_TRUE(h.run_until_sent(t0 + milliseconds(25)));
-  // The slave's FC 16 answer, then garbage: framed, counted, nothing sent in reply.
-  h.device.on_bytes(Bytes{0x01, 0x10, 0x00, 0x00, 0x00, 0x0A, 0x40, 0x0E}, h.clock.now());
-  h.clock.advance(milliseconds(5));
-  h.device.on_bytes(Bytes{0xDE, 0xAD}, h.clock.now());
-  const auto sent = h.run_until_sent(t0 + milliseconds(39));
-  EXPECT_FALSE(sent);
-  EXPECT_EQ(h.device.counters().answers_ignored, 2U);
-  ASSERT_TRUE(h.run_until_sent(t0 + milliseconds(40)));
+  Rig h(master_fl4());
+  const auto t0 = h.now();
+  // The push at 20 ms has 29 characters: it has reached the slave 15.1 ms later.
+  ASSERT_TRUE(h.run_until_received(t0 + milliseconds(36)));
+  // The slave's FC 16 answer, then garbage 2 ms later (two frames: t3.5 is 1.82 ms):
+  // framed, counted, nothing sent in reply before the next push at 40 ms.
+  h.send({0x01, 0x10, 0x00, 0x00, 0x00, 0x0A, 0x40, 0x0E});
+  h.run_for(milliseconds(2));
+  h.send({0xDE, 0xAD});
+  h.run_to(t0 + milliseconds(39));
+  EXPECT_TRUE(h.quiet());
+  EXPECT_EQ(h.device().counters().answers_ignored, 2U);
+  const auto next = h.run_until_received(t0 + milliseconds(40) + testing::chars(h, 29));
+  ASSERT_TRUE(next);
+  EXPECT_EQ(next->start, t0 + milliseconds(40));
 }
 
 TEST(PolarisMaster, Mb485PushesTheBits) {
@@ -69,10 +73,11 @@ TEST(PolarisMaster, Mb485PushesTheBits) {
   o.mode = DataMode::k485Mb;
   o.beams = 16;
   o.start_address = 0x0100;
-  Harness h(o);
+  Rig h(o);
   const std::vector<std::uint16_t> beams{1};
-  ASSERT_FALSE(h.device.set_interrupted(beams, h.clock.now()));
-  const auto sent = h.run_until_sent(h.clock.now() + milliseconds(20));
+  ASSERT_FALSE(h.device().set_interrupted(beams, h.now()));
+  // The push at 20 ms: 11 characters on the wire.
+  const auto sent = h.run_until_received(h.now() + milliseconds(20) + testing::chars(h, 11));
   ASSERT_TRUE(sent);
   // 01 10, register 0x0100, 1 word, 2 bytes, FFFE (beam 1 = bit 0 interrupted), CRC.
   const Bytes head{0x01, 0x10, 0x01, 0x00, 0x00, 0x01, 0x02, 0xFF, 0xFE};
@@ -80,35 +85,36 @@ TEST(PolarisMaster, Mb485PushesTheBits) {
 }
 
 TEST(PolarisMaster, FaultSkipsPushes) {
-  Harness h(master_fl4());
-  h.device.set_faults(Faults{false, {true, {}}});
-  EXPECT_FALSE(h.run_until_sent(h.clock.now() + milliseconds(50)));
-  EXPECT_EQ(h.device.counters().suppressed, 2U);
+  Rig h(master_fl4());
+  h.device().set_faults(Faults{false, {true, {}}});
+  EXPECT_FALSE(h.run_until_received(h.now() + milliseconds(50)));
+  EXPECT_FALSE(h.on_the_wire());
+  EXPECT_EQ(h.device().counters().suppressed, 2U);
 }
 
 TEST(PolarisPn, ObjectAndHoleOutputs) {
   Options o;
   o.beams = 40;
-  Harness h(o);
-  const auto t0 = h.clock.now();
-  EXPECT_FALSE(h.device.pn1());
+  Rig h(o);
+  const auto t0 = h.now();
+  EXPECT_FALSE(h.device().pn1());
   const std::vector<std::uint16_t> one{5, 6};
-  ASSERT_FALSE(h.device.set_interrupted(one, t0));
-  EXPECT_TRUE(h.device.pn1());
-  EXPECT_FALSE(h.device.pn2(t0));
+  ASSERT_FALSE(h.device().set_interrupted(one, t0));
+  EXPECT_TRUE(h.device().pn1());
+  EXPECT_FALSE(h.device().pn2(t0));
   const std::vector<std::uint16_t> two{5, 6, 9};
-  ASSERT_FALSE(h.device.set_interrupted(two, t0));
-  EXPECT_TRUE(h.device.pn2(t0));
+  ASSERT_FALSE(h.device().set_interrupted(two, t0));
+  EXPECT_TRUE(h.device().pn2(t0));
   const std::vector<std::uint16_t> bad{0, 41};
-  EXPECT_TRUE(h.device.set_interrupted(bad, t0));
+  EXPECT_TRUE(h.device().set_interrupted(bad, t0));
 
   o.detection = Detection::kHole;
   o.pn2_filter = 3;
   o.response_time = milliseconds(1);
-  Harness hole(o);
-  ASSERT_FALSE(hole.device.set_interrupted(two, t0));
-  EXPECT_FALSE(hole.device.pn2(t0 + milliseconds(2)));
-  EXPECT_TRUE(hole.device.pn2(t0 + milliseconds(3)));
+  Rig hole(o);
+  ASSERT_FALSE(hole.device().set_interrupted(two, t0));
+  EXPECT_FALSE(hole.device().pn2(t0 + milliseconds(2)));
+  EXPECT_TRUE(hole.device().pn2(t0 + milliseconds(3)));
 }
 
 }  // namespace

@@ -2,8 +2,7 @@
 // neither its deadline nor its transmit queue, so they need no wake; on a stream::MemoryLine
 // that reads the deadline only after its calls and on a wake, the master's pushes keep their
 // times and carry the new scene.
-#include "polaris/device.h"
-#include "stream/memory_line.h"
+#include "tests/polaris/polaris_line.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +12,7 @@ namespace rs4sim::polaris {
 namespace {
 
 using std::chrono::milliseconds;
-using Bytes = std::vector<std::uint8_t>;
+using testing::Bytes;
 
 TEST(PolarisWake, ASceneChangeFromOutsideGoesOutWithTheNextPushOnTime) {
   Options o;
@@ -22,22 +21,19 @@ TEST(PolarisWake, ASceneChangeFromOutsideGoesOutWithTheNextPushOnTime) {
   o.role = Role::kMaster;
   o.address = 1;
   o.scan_time = milliseconds(20);
-  stream::ManualClock clock;
-  Device device(o);
-  stream::MemoryLine line(clock, device);
-  const auto t0 = clock.now();
-  line.start();
-  line.run_until(t0 + milliseconds(36));  // the push at 20 ms (29 bytes: 15.1 ms on the wire)
-  ASSERT_EQ(line.take_received().size(), 1U);
+  testing::Rig rig(o);  // the line starts at t0
+  const auto t0 = rig.now();
+  rig.run_to(t0 + milliseconds(36));  // the push at 20 ms (29 bytes: 15.1 ms on the wire)
+  ASSERT_EQ(rig.take().size(), 1U);
   std::vector<std::uint16_t> beams;
   for (std::uint16_t b = 9; b <= 13; ++b) beams.push_back(b);
   for (std::uint16_t b = 25; b <= 34; ++b) beams.push_back(b);
-  ASSERT_FALSE(device.set_interrupted(beams, clock.now()));
+  ASSERT_FALSE(rig.device().set_interrupted(beams, rig.now()));
   Faults late;
   late.transmit.late = milliseconds(3);
-  device.set_faults(late);
-  line.run_until(t0 + milliseconds(59));
-  const auto got = line.take_received();
+  rig.device().set_faults(late);
+  rig.run_to(t0 + milliseconds(59));
+  const auto got = rig.take();
   ASSERT_EQ(got.size(), 1U);
   EXPECT_EQ(got[0].start, t0 + milliseconds(43));  // the 40 ms push, 3 ms late
   // [Polaris manual §8.2.3] FL4 to slave 1 at register 0: objects 9..13, 25..34.
