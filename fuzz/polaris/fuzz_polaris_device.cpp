@@ -1,18 +1,12 @@
-<<<<<<< HEAD
-// Feeds the input to a Polaris slave as chunks with gaps taken from the input itself (a
-// gap byte, a length byte, the chunk), runs the device's deadlines, and checks what it
-// sends: only whole RTU frames with a good CRC for its own address, at most one answer
-// per received frame. The first byte picks the data mode, the NAK switch, the direction,
-// and (bit 4) whether the harness appends a good CRC to each chunk, so that the PDUs behind
-// the CRC (the FC 6/16 configuration writes, FC 3/4 reads of both blocks) are reached.
-#include "modbus/crc16.h"
-=======
 // Feeds the input to a Polaris slave on the shared line rig (stream/testing/line_rig.h) as
 // chunks with gaps taken from the input itself (a gap byte, a length byte, the chunk), the
 // line running the device's deadlines, and checks what it sends as it gives it out: only
 // whole RTU frames with a good CRC for its own address, at most one answer per received
-// frame, and the device idle at the end. The first byte picks the data mode and the NAK switch.
->>>>>>> line-rig
+// frame, and the device idle at the end. The first byte picks the data mode, the NAK switch,
+// the direction, and (bit 4) whether the harness appends a good CRC to each chunk, so that
+// the PDUs behind the CRC (the FC 6/16 configuration writes, FC 3/4 reads of both blocks)
+// are reached.
+#include "modbus/crc16.h"
 #include "modbus/rtu_frame.h"
 #include "polaris/device.h"
 #include "stream/testing/line_rig.h"
@@ -69,31 +63,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   while (at + 2 <= size) {
     rig.run_for(std::chrono::microseconds(100 * data[at]));  // 0..25.5 ms: inside or after t3.5
     const std::size_t length = std::min<std::size_t>(data[at + 1], size - at - 2);
-<<<<<<< HEAD
     std::vector<std::uint8_t> chunk(data + at + 2, data + at + 2 + length);
     if ((data[0] & 16U) != 0) {
       const std::uint16_t crc = rs4sim::modbus::crc16(chunk);
       chunk.push_back(static_cast<std::uint8_t>(crc & 0xFFU));
       chunk.push_back(static_cast<std::uint8_t>(crc >> 8U));
     }
-    device.on_bytes(chunk, now);
-    sent += drain(device);
-    at += 2 + length;
-  }
-  for (int i = 0; i < 16; ++i) {  // framer, answers, the end of an auto-calibration
-    const auto next = device.next_deadline();
-    if (!next) break;
-    now = std::max(now, *next);
-    device.on_time(now);
-    sent += drain(device);
-  }
-=======
-    rig.send(std::span(data + at + 2, length));
+    rig.send(chunk);
     (void)rig.take();  // checked as given out
     at += 2 + length;
   }
-  rig.run_for(std::chrono::seconds(1));  // the last frame's t3.5, the scan, the answer's wire time
->>>>>>> line-rig
+  // The last frame's t3.5, the scan, the answer's wire time, an auto-calibration's end.
+  rig.run_for(device.calibration_time() + std::chrono::seconds(1));
   check(!device.next_deadline());
   check(!rig.on_the_wire());
   const auto& c = device.counters();
