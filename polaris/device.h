@@ -17,7 +17,7 @@
 #include "polaris/config_registers.h"
 #include "polaris/counters.h"
 #include "polaris/faults.h"
-#include "polaris/measurement.h"
+#include "polaris/data_modes.h"
 #include "polaris/options.h"
 #include "polaris/scene.h"
 #include "stream/byte_device.h"

@@ -1,7 +1,7 @@
 #pragma once
 // What the barrier sees: which of its beams are interrupted, counted physically from the
 // connector cap (beam 1) [Polaris manual §7.4.2 "Scan direction"]; the scan direction only
-// changes the numbers the barrier transmits (polaris/measurement.h).
+// changes the numbers the barrier transmits (polaris/data_modes.h).
 
 #include <cstdint>
 #include <span>
@@ -23,7 +23,7 @@ class Scene {
   // The interrupted physical beams, ascending.
   [[nodiscard]] std::vector<std::uint16_t> interrupted() const;
   [[nodiscard]] bool any_interrupted() const;
-  // Per physical beam (index i = beam i+1), non-zero = interrupted: what measurement.h reads.
+  // Per physical beam (index i = beam i+1), non-zero = interrupted: what data_modes.h reads.
   [[nodiscard]] std::span<const std::uint8_t> flags() const { return interrupted_; }
 
   friend bool operator==(const Scene&, const Scene&) = default;

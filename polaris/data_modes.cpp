@@ -1,4 +1,4 @@
-#include "polaris/measurement.h"
+#include "polaris/data_modes.h"
 
 namespace rs4sim::polaris {
 

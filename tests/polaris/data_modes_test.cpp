@@ -1,4 +1,4 @@
-#include "polaris/measurement.h"
+#include "polaris/data_modes.h"
 
 #include <gtest/gtest.h>
 
