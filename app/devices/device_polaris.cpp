@@ -135,7 +135,9 @@ void print_line_status(std::ostream& out, const polaris::Device& device_,
   out << "polaris: requests " << k.requests << ", CRC errors " << k.crc_errors << ", too short "
       << k.too_short << ", oversized " << k.oversized << ", broadcasts " << k.broadcasts
       << ", other addresses " << k.foreign_address << ", bad function " << k.bad_function
-      << ", bad request " << k.bad_request << ", bad start " << k.bad_start << ", exceptions sent "
+      << ", bad request " << k.bad_request << ", bad start " << k.bad_start << ", busy " << k.busy
+      << ", configuration writes " << k.writes << " (refused " << k.refused_writes
+      << "), calibrations " << device_.calibrations() << ", exceptions sent "
       << k.exceptions_sent << ", frames sent " << k.frames_sent << ", bytes received "
       << c.bytes_received << ", sent " << c.bytes_sent << ", link errors " << c.link_errors
       << std::endl;
@@ -155,12 +157,18 @@ class PolarisInstance final : public DeviceInstance {
     for (const int b : blocked_) beams.push_back(static_cast<std::uint16_t>(b));
     (void)device_.set_interrupted(beams, now);  // checked against the beam count in validate
   }
+  // SIGUSR1: the autocal input's pulse, an auto-calibration of 0.4 s per beam
+  // [Polaris manual §7.2] (data reads answer exception 06 meanwhile); ignored while one runs.
+  void on_user_signal(bool second, dp::TimePoint now) override {
+    if (!second) (void)device_.start_calibration(now);
+  }
   [[nodiscard]] std::string describe() const override {
     const auto& p = device_.options();
     return "Polaris " + std::string(polaris::to_string(p.family)) + " (" + std::to_string(p.beams) +
            " beams, " + std::string(polaris::to_string(p.mode)) + ", " +
            (p.role == polaris::Role::kSlave ? "Modbus slave " : "Modbus master to slave ") +
-           std::to_string(p.address) + ", " + stream::to_string(device_.line_settings()) + ")";
+           std::to_string(p.address) + ", " + stream::to_string(device_.line_settings()) +
+           "; SIGUSR1 starts an auto-calibration)";
   }
   void print_byte_status(std::ostream& out, const stream::ByteCounters& c) const override {
     print_line_status(out, device_, c);

@@ -59,4 +59,75 @@ stop
 start 485MB
 expect "pymodbus 485MB" "$(pymodbus_read "$tty" 3)" "57599 255 65532"
 expect "mbpoll 485MB" "$(mbpoll_read "$tty" 3)" "0xE0FF 0x00FF 0xFFFC"
-echo "polaris_clients: all reads match"
+stop
+
+# The configuration registers at 0x0100 (EXTENSION, docs/polaris.md "Configuration
+# registers") written by the clients' own FC 6 and FC 16 encoders, and what the barrier
+# answers after them [Modbus application protocol V1.1b3 §6.6, §6.12].
+pymodbus_script() {  # <tty>, the Python on stdin; prints what it prints
+  /usr/bin/python3 - "$1"
+}
+start FL4
+expect "pymodbus FC 6 mode FL1, read back, FL1 data" "$(pymodbus_script "$tty" <<'PY'
+import sys
+from pymodbus.client import ModbusSerialClient
+c = ModbusSerialClient(port=sys.argv[1], baudrate=19200, bytesize=8, parity="N", stopbits=1,
+                       timeout=1)
+assert c.connect()
+w = c.write_register(0x0100, 1, slave=1)          # data mode 1 = FL1
+assert not w.isError(), w
+mode = c.read_holding_registers(0x0100, 1, slave=1)
+data = c.read_holding_registers(0x2000, 2, slave=1)
+bad_value = c.write_register(0x0100, 9, slave=1)  # no data mode 9: exception 03
+bad_address = c.write_register(0x0200, 0, slave=1)  # outside the map: exception 02
+c.close()
+print(mode.registers[0], " ".join(map(str, data.registers)),
+      bad_value.exception_code, bad_address.exception_code)
+PY
+)" "1 9 34 3 2"
+# mbpoll's FC 16 (two values from 0x0102): direction reverse, detection object. Beam 1 is now
+# at the far cap: physical 9-13 and 25-34 of 40 are transmitted 28-32 and 7-16 (41 - b), so
+# FL1's overall pair is 7, 32.
+mbpoll -m rtu -b 19200 -d 8 -P none -s 1 -a 1 -t 4 -0 -r 258 -1 -o 1 "$tty" 1 0 >/dev/null ||
+  fail "mbpoll FC 16 write refused"
+expect "mbpoll FC 16 direction reverse, FL1 data" "$(mbpoll_read "$tty" 2)" "0x0007 0x0020"
+# An auto-calibration from the command register (FC 6, 0x0108 = 1): 16 s for 40 beams, the
+# data answered with exception 06 meanwhile; a second start is busy too.
+expect "pymodbus calibration busy" "$(pymodbus_script "$tty" <<'PY'
+import sys
+from pymodbus.client import ModbusSerialClient
+c = ModbusSerialClient(port=sys.argv[1], baudrate=19200, bytesize=8, parity="N", stopbits=1,
+                       timeout=1)
+assert c.connect()
+assert not c.write_register(0x0108, 1, slave=1).isError()
+data = c.read_holding_registers(0x2000, 2, slave=1)
+again = c.write_register(0x0108, 1, slave=1)
+status = c.read_holding_registers(0x0109, 1, slave=1)
+c.close()
+print(data.exception_code, again.exception_code, status.registers[0])
+PY
+)" "6 6 1"
+stop
+
+# SIGUSR1: the autocal input, the same busy answer.
+start FL4
+bg_signal polaris USR1
+# The signal is handled on the device's loop: the status register (0x0109) says when it
+# has; then the data read is busy.
+expect "pymodbus after SIGUSR1" "$(pymodbus_script "$tty" <<'PY'
+import sys
+import time
+from pymodbus.client import ModbusSerialClient
+c = ModbusSerialClient(port=sys.argv[1], baudrate=19200, bytesize=8, parity="N", stopbits=1,
+                       timeout=1)
+assert c.connect()
+deadline = time.monotonic() + 10
+while c.read_holding_registers(0x0109, 1, slave=1).registers[0] != 1:
+    assert time.monotonic() < deadline, "no calibration within 10 s of SIGUSR1"
+data = c.read_holding_registers(0x2000, 2, slave=1)
+c.close()
+print(data.exception_code)
+PY
+)" "6"
+stop
+echo "polaris_clients: all reads and writes match"
