@@ -1,43 +1,28 @@
 // A changed wire table changes the bytes on the wire, both ways: command codes, frame start,
 // measurement codes, the all-beams selector and bit order, the standard-mode characters, and
 // the reply and report layouts (metron/wire_table.h, EXTENSION [docs/metron.md#wire-table]).
-// Each exchange runs over stream::MemoryLine at 19200 8E1 (11 bit times a character) on the
-// manual clock; the expected bytes are written out by hand, one field per line, with the
-// checksums summed by hand (~(sum mod 256)).
-#include "metron/device.h"
-#include "stream/clock.h"
-#include "stream/memory_line.h"
+// Each exchange runs over the shared line rig (tests/metron/metron_line.h) at 19200 8E1 (11
+// bit times a character) on the manual clock; the expected bytes are written out by hand,
+// one field per line, with the checksums summed by hand (~(sum mod 256)).
+#include "tests/metron/metron_line.h"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <vector>
+#include <cstdint>
 
 namespace rs4sim::metron {
 namespace {
 
 using namespace std::chrono_literals;
-using Bytes = std::vector<std::uint8_t>;
+using testing::Bytes;
+using testing::only_reply;
+using testing::Rig;
 using RF = ReplyField;
 
 // Equation 3 for a 4-byte request with t_response 20 ms: 44 bit times at 19200 baud
 // (2.291667 ms, rounded up to the ns) + 10 ms [METRON manual "Slave line mode"].
 constexpr auto kReplyAfter4 = 2'291'667ns + 10ms;
-
-struct Line {
-  explicit Line(Options o) : device(std::move(o)), line(clock, device) { line.start(); }
-  // The frames answering `request`, delivered at once at clock.now().
-  std::vector<stream::LineFrame> exchange(const Bytes& request) {
-    sent_at = clock.now();
-    line.deliver_at(request, clock.now());
-    line.run_for(100ms);
-    return line.take_received();
-  }
-  stream::ManualClock clock;
-  Device device;
-  stream::MemoryLine line;
-  stream::TimePoint sent_at{};
-};
 
 Options swapped_and_reordered() {
   Options o;
@@ -54,12 +39,13 @@ Options swapped_and_reordered() {
 TEST(MetronWireLayout, SwappedCommandsAndAReorderedReply) {
   auto o = swapped_and_reordered();
   ASSERT_EQ(o.validate(), "");
-  Line l(o);
+  Rig rig(o);
   // 0x0D is now Request OSSD status (the default table's light curtain status).
-  const auto got = l.exchange({0x02,    // frame start
-                               0x01,    // Length: command only
-                               0x0D,    // #12 Request OSSD status (swapped)
-                               0xF2});  // ~0x0D
+  const stream::TimePoint sent = rig.now();  // send(): the request is at the device now
+  const auto got = rig.exchange({0x02,    // frame start
+                                 0x01,    // Length: command only
+                                 0x0D,    // #12 Request OSSD status (swapped)
+                                 0xF2});  // ~0x0D
   ASSERT_EQ(got.size(), 1U);
   EXPECT_EQ(got[0].bytes, (Bytes{0x02,     // frame start
                                  0x0D,     // reply code: the command's code
@@ -67,22 +53,22 @@ TEST(MetronWireLayout, SwappedCommandsAndAReorderedReply) {
                                  0x01,     // OSSD1 ON (free, synchronised, enabled)
                                  0x01,     // OSSD2 ON
                                  0xEE}));  // ~(02 + 0D + 01 + 01)
-  EXPECT_EQ(got[0].start - l.sent_at, kReplyAfter4);
+  // Equation 3 times the reply's first bit (LineFrame.start, when the device gave it out),
+  // not its end 6 characters later.
+  EXPECT_EQ(got[0].start - sent, kReplyAfter4);
   // 0x0C is now Request light curtain status.
-  const auto status = l.exchange({0x02, 0x01, 0x0C, 0xF3});
-  ASSERT_EQ(status.size(), 1U);
-  EXPECT_EQ(status[0].bytes, (Bytes{0x02,     // frame start
-                                    0x0C,     // #13 (swapped)
-                                    0x01,     // Length: 1 data byte
-                                    0x03,     // synchronised | OSSD enabled
-                                    0xEF}));  // ~(01 + 0C + 03)
+  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x0C, 0xF3}),
+            (Bytes{0x02,     // frame start
+                   0x0C,     // #13 (swapped)
+                   0x01,     // Length: 1 data byte
+                   0x03,     // synchronised | OSSD enabled
+                   0xEF}));  // ~(01 + 0C + 03)
   // An error answer in the same layout: no data, Length 0.
-  const auto e1 = l.exchange({0x02, 0x01, 0x0D, 0x00});  // checksum wrong
-  ASSERT_EQ(e1.size(), 1U);
-  EXPECT_EQ(e1[0].bytes, (Bytes{0x02,     // frame start
-                                0xE1,     // E1
-                                0x00,     // Length: no data
-                                0x1E}));  // ~(00 + E1)
+  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x0D, 0x00}),  // checksum wrong
+            (Bytes{0x02,     // frame start
+                   0xE1,     // E1
+                   0x00,     // Length: no data
+                   0x1E}));  // ~(00 + E1)
 }
 
 TEST(MetronWireLayout, NodeReplyWithoutStartAndLength) {
@@ -93,31 +79,29 @@ TEST(MetronWireLayout, NodeReplyWithoutStartAndLength) {
   o.wire.reply.length_counts = 0;
   o.wire.reply.checksum_covers = field_bit(RF::kNode) | field_bit(RF::kCode) | field_bit(RF::kData);
   ASSERT_EQ(o.validate(), "");
-  Line l(o);
-  const auto got = l.exchange({0x02, 0x05, 0x01, 0x0C, 0xF3});  // node 5, #12
-  ASSERT_EQ(got.size(), 1U);
-  EXPECT_EQ(got[0].bytes, (Bytes{0x05,     // node
-                                 0x0C,     // #12 Request OSSD status
-                                 0x01,     // OSSD1 ON
-                                 0x01,     // OSSD2 ON
-                                 0xEC}));  // ~(05 + 0C + 01 + 01)
+  Rig rig(o);
+  EXPECT_EQ(only_reply(rig, {0x02, 0x05, 0x01, 0x0C, 0xF3}),  // node 5, #12
+            (Bytes{0x05,     // node
+                   0x0C,     // #12 Request OSSD status
+                   0x01,     // OSSD1 ON
+                   0x01,     // OSSD2 ON
+                   0xEC}));  // ~(05 + 0C + 01 + 01)
 }
 
 TEST(MetronWireLayout, BadChecksumFaultFindsTheChecksumWhereTheLayoutPutsIt) {
   Options o;
   o.wire.reply.fields = {RF::kStart, RF::kLength, RF::kChecksum, RF::kCode, RF::kData};
-  Line l(o);
+  Rig rig(o);
   Faults f;
   f.bad_checksum = true;
-  l.device.set_faults(f);
-  const auto got = l.exchange({0x02, 0x01, 0x0C, 0xF3});
-  ASSERT_EQ(got.size(), 1U);
-  EXPECT_EQ(got[0].bytes, (Bytes{0x02,    // frame start
-                                 0x03,    // Length: code + 2 data
-                                 0x0E,    // ~F1: the checksum ~(0C + 01 + 01) inverted
-                                 0x0C,    // #12
-                                 0x01,    // OSSD1 ON
-                                 0x01}));  // OSSD2 ON
+  rig.device().set_faults(f);
+  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x0C, 0xF3}),
+            (Bytes{0x02,     // frame start
+                   0x03,     // Length: code + 2 data
+                   0x0E,     // ~F1: the checksum ~(0C + 01 + 01) inverted
+                   0x0C,     // #12
+                   0x01,     // OSSD1 ON
+                   0x01}));  // OSSD2 ON
 }
 
 TEST(MetronWireLayout, FrameStartMeasurementCodesAndBeamBits) {
@@ -127,36 +111,32 @@ TEST(MetronWireLayout, FrameStartMeasurementCodesAndBeamBits) {
   o.wire.all_beams = 0xFF;
   o.wire.beam_bits_lsb_first = false;
   ASSERT_EQ(o.validate(), "");
-  Line l(o);
+  Rig rig(o);
   const std::uint16_t beams[] = {9, 10, 11, 12, 13};
-  ASSERT_FALSE(l.device.set_interrupted(beams));
-  // The default frame start is line noise now.
-  EXPECT_TRUE(l.exchange({0x02, 0x01, 0x0C, 0xF3}).empty());
-  EXPECT_EQ(l.device.counters().noise_bytes, 4U);
-  const auto all = l.exchange({0x7E,    // frame start
-                               0x02,    // Length
-                               0x09,    // #9 Request active beam status
-                               0xFF,    // all beams (the table's selector)
-                               0xF7});  // ~(09 + FF)
-  ASSERT_EQ(all.size(), 1U);
-  EXPECT_EQ(all[0].bytes, (Bytes{0x7E,     // frame start
-                                 0x04,     // Length: code + 3 data
-                                 0x09,     // #9
-                                 0x00,     // beams 1..8 free
-                                 0xF8,     // beams 9..13 in bits 7..3 (MSB first)
-                                 0x00,     // beams 17..24 free
-                                 0xFE}));  // ~(09 + 00 + F8 + 00)
-  const auto first = l.exchange({0x7E, 0x02, 0x0A,
-                                 0x10,    // "first interrupted beam" under its new code
-                                 0xE5});  // ~(0A + 10)
-  ASSERT_EQ(first.size(), 1U);
-  EXPECT_EQ(first[0].bytes, (Bytes{0x7E, 0x02, 0x0A,
-                                   0x09,     // beam 9
-                                   0xEC}));  // ~(0A + 09)
+  ASSERT_FALSE(rig.device().set_interrupted(beams));
+  // The default frame start is line noise now: nothing arrives and nothing is on the wire.
+  EXPECT_TRUE(rig.silent({0x02, 0x01, 0x0C, 0xF3}));
+  EXPECT_EQ(rig.device().counters().noise_bytes, 4U);
+  EXPECT_EQ(only_reply(rig, {0x7E,    // frame start
+                            0x02,    // Length
+                            0x09,    // #9 Request active beam status
+                            0xFF,    // all beams (the table's selector)
+                            0xF7}),  // ~(09 + FF)
+            (Bytes{0x7E,     // frame start
+                   0x04,     // Length: code + 3 data
+                   0x09,     // #9
+                   0x00,     // beams 1..8 free
+                   0xF8,     // beams 9..13 in bits 7..3 (MSB first)
+                   0x00,     // beams 17..24 free
+                   0xFE}));  // ~(09 + 00 + F8 + 00)
+  EXPECT_EQ(only_reply(rig, {0x7E, 0x02, 0x0A,
+                            0x10,    // "first interrupted beam" under its new code
+                            0xE5}),  // ~(0A + 10)
+            (Bytes{0x7E, 0x02, 0x0A,
+                   0x09,     // beam 9
+                   0xEC}));  // ~(0A + 09)
   // The old code 0x01 is no measurement any more: E2.
-  const auto old = l.exchange({0x7E, 0x02, 0x0A, 0x01, 0xF4});
-  ASSERT_EQ(old.size(), 1U);
-  EXPECT_EQ(old[0].bytes, (Bytes{0x7E, 0x01, 0xE2, 0x1D}));
+  EXPECT_EQ(only_reply(rig, {0x7E, 0x02, 0x0A, 0x01, 0xF4}), (Bytes{0x7E, 0x01, 0xE2, 0x1D}));
 }
 
 TEST(MetronWireLayout, ReportCharactersAndOrder) {
@@ -172,18 +152,17 @@ TEST(MetronWireLayout, ReportCharactersAndOrder) {
                          ReportField::kEnd};
   o.wire.report.checksum_over_characters = true;
   ASSERT_EQ(o.validate(), "");
-  Line l(o);
+  Rig rig(o);
   const std::uint16_t beams[] = {9, 10, 11, 12, 13};
-  ASSERT_FALSE(l.device.set_interrupted(beams));
-  EXPECT_TRUE(l.exchange({'?'}).empty());  // the default request character: not a request
-  const auto got = l.exchange({'!'});
-  ASSERT_EQ(got.size(), 1U);
-  EXPECT_EQ(got[0].bytes, (Bytes{'[',          // start
-                                 0xBD,         // ~('0'+'9'+'0'+'D'+'0'+'5'): over the characters
-                                 '0', '9',     // first = 9
-                                 '0', 'D',     // last = 13
-                                 '0', '5',     // count = 5
-                                 ']'}));       // end
+  ASSERT_FALSE(rig.device().set_interrupted(beams));
+  EXPECT_TRUE(rig.silent({'?'}));  // the default request character: not a request
+  EXPECT_EQ(only_reply(rig, {'!'}),
+            (Bytes{'[',        // start
+                   0xBD,       // ~('0'+'9'+'0'+'D'+'0'+'5'): over the characters
+                   '0', '9',   // first = 9
+                   '0', 'D',   // last = 13
+                   '0', '5',   // count = 5
+                   ']'}));     // end
 }
 
 }  // namespace

@@ -4,8 +4,7 @@
 // docs/decisions.md#polaris-calibration-busy), and the status registers say when it ended.
 // CRCs computed independently (CRC-16/MODBUS, low byte first).
 #include "modbus/timing.h"
-#include "polaris/device.h"
-#include "stream/memory_line.h"
+#include "tests/polaris/polaris_line.h"
 
 #include <gtest/gtest.h>
 
@@ -19,49 +18,47 @@ namespace {
 using std::chrono::milliseconds;
 using std::chrono::nanoseconds;
 using std::chrono::seconds;
-using CalBytes = std::vector<std::uint8_t>;
-using CalAnswers = std::vector<CalBytes>;
+using testing::Answers;
+using testing::answers;
+using testing::Bytes;
+using testing::Rig;
 
-const CalBytes kStartCal{0x01, 0x06,   // slave 1, FC 6
-                         0x01, 0x08,   // register 0x0108 command
-                         0x00, 0x01,   // 1: start auto-calibration
-                         0xC8, 0x34};  // CRC
-const CalBytes kReadStatus{0x01, 0x03, 0x01, 0x09, 0x00, 0x02, 0x15, 0xF5};  // 0x0109, 2 words
-const CalBytes kCalibrating{0x01, 0x03, 0x04,
-                            0x00, 0x01,   // status: calibrating
-                            0x00, 0x00,   // calibrations completed: 0
-                            0xAB, 0xF3};  // CRC
-const CalBytes kCalibratedOnce{0x01, 0x03, 0x04,
-                               0x00, 0x00,   // status: idle
-                               0x00, 0x01,   // calibrations completed: 1
-                               0x3B, 0xF3};  // CRC
-const CalBytes kReadData{0x01, 0x03, 0x20, 0x00, 0x00, 0x02, 0xCF, 0xCB};  // FL1 block
-const CalBytes kData{0x01, 0x03, 0x04, 0x00, 0x09, 0x00, 0x22, 0xAA, 0x28};  // 9..34
-const CalBytes kBusy{0x01, 0x83, 0x06, 0xC1, 0x32};  // FC 3 | 0x80, 06 Server Device Busy
+const Bytes kStartCal{0x01, 0x06,   // slave 1, FC 6
+                      0x01, 0x08,   // register 0x0108 command
+                      0x00, 0x01,   // 1: start auto-calibration
+                      0xC8, 0x34};  // CRC
+const Bytes kReadStatus{0x01, 0x03, 0x01, 0x09, 0x00, 0x02, 0x15, 0xF5};  // 0x0109, 2 words
+const Bytes kCalibrating{0x01, 0x03, 0x04,
+                         0x00, 0x01,   // status: calibrating
+                         0x00, 0x00,   // calibrations completed: 0
+                         0xAB, 0xF3};  // CRC
+const Bytes kCalibratedOnce{0x01, 0x03, 0x04,
+                            0x00, 0x00,   // status: idle
+                            0x00, 0x01,   // calibrations completed: 1
+                            0x3B, 0xF3};  // CRC
+const Bytes kReadData{0x01, 0x03, 0x20, 0x00, 0x00, 0x02, 0xCF, 0xCB};  // FL1 block
+const Bytes kData{0x01, 0x03, 0x04, 0x00, 0x09, 0x00, 0x22, 0xAA, 0x28};  // 9..34
+const Bytes kBusy{0x01, 0x83, 0x06, 0xC1, 0x32};  // FC 3 | 0x80, 06 Server Device Busy
 
-struct CalLine {
-  explicit CalLine(const Options& o) : device(o), line(clock, device) {
-    line.start();
-    if (o.beams < 34) return;  // the master test's 8 beams: an empty scene
-    const std::vector<std::uint16_t> beams{9, 34};
-    EXPECT_FALSE(device.set_interrupted(beams, clock.now()));
-  }
-  // `request` has arrived whole at `at`; the line runs 100 ms past it.
-  CalAnswers exchange_at(const CalBytes& request, stream::TimePoint at) {
-    line.deliver_at(request, at);
-    line.run_until(at + milliseconds(100));
-    CalAnswers got;
-    for (auto& f : line.take_received()) got.push_back(std::move(f.bytes));
-    return got;
-  }
-  CalAnswers exchange(const CalBytes& request) { return exchange_at(request, clock.now()); }
-  // A request that arrives at `at` is decided t3.5 later (the frame's end).
-  [[nodiscard]] stream::Duration t3_5() const { return modbus::t3_5(device.line_settings()); }
+// Beams 9 and 34 interrupted: the FL1 data 9..34 (kData). The master test's 8 beams keep an
+// empty scene.
+void interrupt_edges(Rig& r) {
+  const std::vector<std::uint16_t> beams{9, 34};
+  EXPECT_FALSE(r.device().set_interrupted(beams, r.now()));
+}
 
-  stream::ManualClock clock;
-  Device device;
-  stream::MemoryLine line;
-};
+// A request that arrives at `at` is decided t3.5 later (the frame's end).
+stream::Duration t3_5(Rig& r) { return modbus::t3_5(r.device().line_settings()); }
+
+// The device receives `request` whole at `at` (send() at `at`: no wire time) and the rig's
+// 100 ms window runs from there; the answers as answers() gives them. Nothing may have
+// reached the controller or be on the wire between the last exchange and `at`: a frame the
+// slave gave out meanwhile would be an answer nobody asked for.
+Answers answers_at(Rig& r, const Bytes& request, stream::TimePoint at) {
+  r.run_to(at);
+  EXPECT_TRUE(r.quiet()) << "frames before the request";
+  return answers(r, request);
+}
 
 Options cal_options() {
   Options o;  // PL 10, 40 beams, FL1, slave 1
@@ -71,10 +68,10 @@ Options cal_options() {
 }
 
 // Starts calibration by the command register; returns when it must end.
-stream::TimePoint start_by_command(CalLine& r) {
-  const stream::TimePoint sent = r.clock.now();
-  EXPECT_EQ(r.exchange(kStartCal), (CalAnswers{kStartCal}));  // echoed
-  return sent + r.t3_5() + seconds(16);  // 0.4 s x 40 beams from the request's end
+stream::TimePoint start_by_command(Rig& r) {
+  const stream::TimePoint sent = r.now();
+  EXPECT_EQ(answers(r, kStartCal), (Answers{kStartCal}));  // echoed
+  return sent + t3_5(r) + seconds(16);  // 0.4 s x 40 beams from the request's end
 }
 
 TEST(PolarisCalibration, LastsPointFourSecondsPerBeam) {
@@ -86,50 +83,54 @@ TEST(PolarisCalibration, LastsPointFourSecondsPerBeam) {
 }
 
 TEST(PolarisCalibration, DataReadOneTickBeforeTheEndIsBusy) {
-  CalLine r(cal_options());
+  Rig r(cal_options());
+  interrupt_edges(r);
   const stream::TimePoint end = start_by_command(r);
-  EXPECT_EQ(r.exchange(kReadStatus), (CalAnswers{kCalibrating}));
+  EXPECT_EQ(answers(r, kReadStatus), (Answers{kCalibrating}));
   // The read's end (last byte + t3.5) one nanosecond before the calibration's.
-  EXPECT_EQ(r.exchange_at(kReadData, end - r.t3_5() - nanoseconds(1)), (CalAnswers{kBusy}));
-  EXPECT_EQ(r.device.counters().busy, 1U);
-  EXPECT_EQ(r.device.counters().requests, 1U);  // the status read
+  EXPECT_EQ(answers_at(r, kReadData, end - t3_5(r) - nanoseconds(1)), (Answers{kBusy}));
+  EXPECT_EQ(r.device().counters().busy, 1U);
+  EXPECT_EQ(r.device().counters().requests, 1U);  // the status read
 }
 
 TEST(PolarisCalibration, DataReadAtTheEndGetsData) {
-  CalLine r(cal_options());
+  Rig r(cal_options());
+  interrupt_edges(r);
   const stream::TimePoint end = start_by_command(r);
-  EXPECT_TRUE(r.device.calibrating(end - nanoseconds(1)));
-  EXPECT_FALSE(r.device.calibrating(end));
-  EXPECT_EQ(r.device.calibration_end(), end);
-  EXPECT_EQ(r.exchange_at(kReadData, end - r.t3_5()), (CalAnswers{kData}));
-  EXPECT_EQ(r.exchange(kReadStatus), (CalAnswers{kCalibratedOnce}));
-  EXPECT_EQ(r.device.calibrations(), 1U);
-  EXPECT_EQ(r.device.counters().busy, 0U);
+  EXPECT_TRUE(r.device().calibrating(end - nanoseconds(1)));
+  EXPECT_FALSE(r.device().calibrating(end));
+  EXPECT_EQ(r.device().calibration_end(), end);
+  EXPECT_EQ(answers_at(r, kReadData, end - t3_5(r)), (Answers{kData}));
+  EXPECT_EQ(answers(r, kReadStatus), (Answers{kCalibratedOnce}));
+  EXPECT_EQ(r.device().calibrations(), 1U);
+  EXPECT_EQ(r.device().counters().busy, 0U);
 }
 
 TEST(PolarisCalibration, TheStatusFlipsAtTheEndWithoutARequest) {
-  CalLine r(cal_options());
+  Rig r(cal_options());
+  interrupt_edges(r);
   const stream::TimePoint end = start_by_command(r);
-  r.line.run_until(end - nanoseconds(1));
-  EXPECT_EQ(r.device.calibrations(), 0U);
-  r.line.run_until(end);  // the end is one of the core's deadlines
-  EXPECT_EQ(r.device.calibrations(), 1U);
-  EXPECT_EQ(r.device.calibration_end(), std::nullopt);
+  r.run_to(end - nanoseconds(1));
+  EXPECT_EQ(r.device().calibrations(), 0U);
+  r.run_to(end);  // the end is one of the core's deadlines
+  EXPECT_EQ(r.device().calibrations(), 1U);
+  EXPECT_EQ(r.device().calibration_end(), std::nullopt);
 }
 
 TEST(PolarisCalibration, SecondStartIsBusyOtherWritesAndFc4Too) {
-  CalLine r(cal_options());
+  Rig r(cal_options());
+  interrupt_edges(r);
   start_by_command(r);
-  EXPECT_EQ(r.exchange(kStartCal), (CalAnswers{{0x01, 0x86, 0x06, 0xC2, 0x62}}));
-  EXPECT_EQ(r.device.counters().refused_writes, 1U);
+  EXPECT_EQ(answers(r, kStartCal), (Answers{{0x01, 0x86, 0x06, 0xC2, 0x62}}));
+  EXPECT_EQ(r.device().counters().refused_writes, 1U);
   // FC 4 of the data block: 06 as well.
-  EXPECT_EQ(r.exchange({0x01, 0x04, 0x20, 0x00, 0x00, 0x02, 0x7A, 0x0B}),
-            (CalAnswers{{0x01, 0x84, 0x06, 0xC3, 0x02}}));
+  EXPECT_EQ(answers(r, {0x01, 0x04, 0x20, 0x00, 0x00, 0x02, 0x7A, 0x0B}),
+            (Answers{{0x01, 0x84, 0x06, 0xC3, 0x02}}));
   // A setting is taken meanwhile (DECISION): data mode FL4.
-  const CalBytes fl4{0x01, 0x06, 0x01, 0x00, 0x00, 0x02, 0x09, 0xF7};
-  EXPECT_EQ(r.exchange(fl4), (CalAnswers{fl4}));
-  EXPECT_EQ(r.device.options().mode, DataMode::kFl4);
-  EXPECT_EQ(r.device.start_calibration(r.clock.now()),
+  const Bytes fl4{0x01, 0x06, 0x01, 0x00, 0x00, 0x02, 0x09, 0xF7};
+  EXPECT_EQ(answers(r, fl4), (Answers{fl4}));
+  EXPECT_EQ(r.device().options().mode, DataMode::kFl4);
+  EXPECT_EQ(r.device().start_calibration(r.now()),
             std::make_error_code(std::errc::device_or_resource_busy));
 }
 
@@ -138,17 +139,20 @@ TEST(PolarisCalibration, MasterSendsNothingWhileCalibrating) {
   o.role = Role::kMaster;
   o.beams = 8;  // PL 10-80: 3.2 s
   o.scan_time = milliseconds(20);
-  CalLine r(o);
-  const stream::TimePoint t0 = r.clock.now();
-  r.line.run_until(t0 + milliseconds(30));  // the push at 20 ms
-  ASSERT_FALSE(r.device.start_calibration(r.clock.now()));
-  r.line.run_until(t0 + milliseconds(3250));
-  const auto got = r.line.take_received();
+  Rig r(o);
+  const stream::TimePoint t0 = r.now();
+  r.run_to(t0 + milliseconds(30));  // the push at 20 ms
+  ASSERT_FALSE(r.device().start_calibration(r.now()));
+  r.run_to(t0 + milliseconds(3250));
+  const auto got = r.take();
   ASSERT_EQ(got.size(), 2U);
   EXPECT_EQ(got[0].start, t0 + milliseconds(20));
   // Pushes due at 40 .. 3220 ms fall inside 30 ms + 3.2 s; the next goes out at 3240 ms.
   EXPECT_EQ(got[1].start, t0 + milliseconds(3240));
-  EXPECT_EQ(r.device.calibrations(), 1U);
+  // That push (13 characters, 6.8 ms) has arrived; no later one is on the wire at 3250 ms.
+  EXPECT_EQ(got[1].end - got[1].start, testing::chars(r, 13));
+  EXPECT_FALSE(r.on_the_wire());
+  EXPECT_EQ(r.device().calibrations(), 1U);
 }
 
 }  // namespace

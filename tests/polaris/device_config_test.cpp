@@ -1,11 +1,11 @@
 // EXTENSION: the configuration registers at 0x0100 (docs/polaris.md "Configuration
-// registers") driven over a stream::MemoryLine on the manual clock: FC 3 reads, FC 6 / FC 16
-// writes echoed [Modbus application protocol V1.1b3 §6.6] [Modbus application protocol V1.1b3 §6.12],
-// the refusals (02, 03, all or nothing), broadcast writes, and a setting taking effect at
-// the next read. Every CRC below was computed independently (CRC-16/MODBUS, low byte first;
-// check: 03 83 07 gives A1 32 as in docs/polaris.md).
-#include "polaris/device.h"
-#include "stream/memory_line.h"
+// registers") driven over the shared line rig (tests/polaris/polaris_line.h) on the manual
+// clock: FC 3 reads, FC 6 / FC 16 writes echoed [Modbus application protocol V1.1b3 §6.6]
+// [Modbus application protocol V1.1b3 §6.12], the refusals (02, 03, all or nothing),
+// broadcast writes, and a setting taking effect at the next read. Every CRC below was
+// computed independently (CRC-16/MODBUS, low byte first; check: 03 83 07 gives A1 32 as in
+// docs/polaris.md).
+#include "tests/polaris/polaris_line.h"
 
 #include <gtest/gtest.h>
 
@@ -17,9 +17,13 @@ namespace rs4sim::polaris {
 namespace {
 
 using std::chrono::milliseconds;
-using CfgBytes = std::vector<std::uint8_t>;
+using testing::Answers;
+using testing::answers;
+using testing::Bytes;
+using testing::Rig;
 
-// PL 10, 40 beams, FL1, slave 1, 19200 8N1; beams 9..13 and 25..34 interrupted.
+// PL 10, 40 beams, FL1, slave 1, 19200 8N1; beams 9..13 and 25..34 interrupted
+// (interrupt_objects).
 Options config_options() {
   Options o;
   o.beams = 40;
@@ -27,47 +31,27 @@ Options config_options() {
   return o;
 }
 
-struct ConfigLine {
-  explicit ConfigLine(const Options& o) : device(o), line(clock, device) {
-    line.start();
-    std::vector<std::uint16_t> beams;
-    for (std::uint16_t b = 9; b <= 13; ++b) beams.push_back(b);
-    for (std::uint16_t b = 25; b <= 34; ++b) beams.push_back(b);
-    EXPECT_FALSE(device.set_interrupted(beams, clock.now()));
-  }
-  // The device receives `request` at `at` (its last byte), the line runs 100 ms past it;
-  // what the master received meanwhile.
-  std::vector<CfgBytes> exchange_at(const CfgBytes& request, stream::TimePoint at) {
-    line.deliver_at(request, at);
-    line.run_until(at + milliseconds(100));
-    std::vector<CfgBytes> got;
-    for (auto& f : line.take_received()) got.push_back(std::move(f.bytes));
-    return got;
-  }
-  std::vector<CfgBytes> exchange(const CfgBytes& request) {
-    return exchange_at(request, clock.now());
-  }
+void interrupt_objects(Rig& r) {
+  std::vector<std::uint16_t> beams;
+  for (std::uint16_t b = 9; b <= 13; ++b) beams.push_back(b);
+  for (std::uint16_t b = 25; b <= 34; ++b) beams.push_back(b);
+  EXPECT_FALSE(r.device().set_interrupted(beams, r.now()));
+}
 
-  stream::ManualClock clock;
-  Device device;
-  stream::MemoryLine line;
-};
-
-using Answers = std::vector<CfgBytes>;
-
-const CfgBytes kReadFl1{0x01, 0x03, 0x20, 0x00, 0x00, 0x02, 0xCF, 0xCB};
-const CfgBytes kFl1Data{0x01, 0x03, 0x04, 0x00, 0x09, 0x00, 0x22, 0xAA, 0x28};
-const CfgBytes kReadMode{0x01, 0x03, 0x01, 0x00, 0x00, 0x01, 0x85, 0xF6};  // 0x0100, 1 word
-const CfgBytes kModeFl1{0x01, 0x03, 0x02, 0x00, 0x01, 0x79, 0x84};         // mode 1 (FL1)
-const CfgBytes kModeFl4{0x01, 0x03, 0x02, 0x00, 0x02, 0x39, 0x85};         // mode 2 (FL4)
+const Bytes kReadFl1{0x01, 0x03, 0x20, 0x00, 0x00, 0x02, 0xCF, 0xCB};
+const Bytes kFl1Data{0x01, 0x03, 0x04, 0x00, 0x09, 0x00, 0x22, 0xAA, 0x28};
+const Bytes kReadMode{0x01, 0x03, 0x01, 0x00, 0x00, 0x01, 0x85, 0xF6};  // 0x0100, 1 word
+const Bytes kModeFl1{0x01, 0x03, 0x02, 0x00, 0x01, 0x79, 0x84};         // mode 1 (FL1)
+const Bytes kModeFl4{0x01, 0x03, 0x02, 0x00, 0x02, 0x39, 0x85};         // mode 2 (FL4)
 
 TEST(PolarisConfig, ReadsTheWholeBlock) {
-  ConfigLine r(config_options());
-  const CfgBytes request{0x01, 0x03,   // slave 1, FC 3
-                         0x01, 0x00,   // start 0x0100
-                         0x00, 0x0C,   // 12 registers
-                         0x44, 0x33};  // CRC
-  EXPECT_EQ(r.exchange(request), (Answers{{0x01, 0x03, 0x18,  // slave 1, FC 3, 24 bytes
+  Rig r(config_options());
+  interrupt_objects(r);
+  const Bytes request{0x01, 0x03,   // slave 1, FC 3
+                      0x01, 0x00,   // start 0x0100
+                      0x00, 0x0C,   // 12 registers
+                      0x44, 0x33};  // CRC
+  EXPECT_EQ(answers(r, request), (Answers{{0x01, 0x03, 0x18,  // slave 1, FC 3, 24 bytes
                                            0x00, 0x01,        // 0x0100 data mode: FL1
                                            0x20, 0x00,        // 0x0101 start address 8192
                                            0x00, 0x00,        // 0x0102 direction: direct
@@ -81,43 +65,45 @@ TEST(PolarisConfig, ReadsTheWholeBlock) {
                                            0x00, 0x00,        // 0x010A calibrations: 0
                                            0x00, 0x28,        // 0x010B beams: 40
                                            0xC0, 0xD8}}));    // CRC
-  EXPECT_EQ(r.device.counters().requests, 1U);
+  EXPECT_EQ(r.device().counters().requests, 1U);
 }
 
 TEST(PolarisConfig, WriteSingleEchoesAndTheNextReadUsesTheNewMode) {
-  ConfigLine r(config_options());
-  ASSERT_EQ(r.exchange(kReadFl1), (Answers{kFl1Data}));
-  const CfgBytes write{0x01, 0x06,   // slave 1, FC 6
-                       0x01, 0x00,   // register 0x0100 data mode
-                       0x00, 0x02,   // FL4
-                       0x09, 0xF7};  // CRC
-  EXPECT_EQ(r.exchange(write), (Answers{write}));  // the response echoes the request
-  EXPECT_EQ(r.device.options().mode, DataMode::kFl4);
+  Rig r(config_options());
+  interrupt_objects(r);
+  ASSERT_EQ(answers(r, kReadFl1), (Answers{kFl1Data}));
+  const Bytes write{0x01, 0x06,   // slave 1, FC 6
+                    0x01, 0x00,   // register 0x0100 data mode
+                    0x00, 0x02,   // FL4
+                    0x09, 0xF7};  // CRC
+  EXPECT_EQ(answers(r, write), (Answers{write}));  // the response echoes the request
+  EXPECT_EQ(r.device().options().mode, DataMode::kFl4);
   // P3 -> P4 [Polaris manual §8.2.3]: the FL4 block of objects 9..13 and 25..34.
-  EXPECT_EQ(r.exchange({0x01, 0x03, 0x20, 0x00, 0x00, 0x0A, 0xCE, 0x0D}),
+  EXPECT_EQ(answers(r, {0x01, 0x03, 0x20, 0x00, 0x00, 0x0A, 0xCE, 0x0D}),
             (Answers{{0x01, 0x03, 0x14, 0x00, 0x09, 0x00, 0x0D, 0x00, 0x19, 0x00, 0x22, 0x00, 0x00,
                       0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x09, 0x00, 0x22, 0x19, 0x5A}}));
-  EXPECT_EQ(r.exchange(kReadMode), (Answers{kModeFl4}));
-  EXPECT_EQ(r.device.counters().writes, 1U);
+  EXPECT_EQ(answers(r, kReadMode), (Answers{kModeFl4}));
+  EXPECT_EQ(r.device().counters().writes, 1U);
 }
 
 TEST(PolarisConfig, WriteMultipleMovesTheBlockAndReversesTheNumbering) {
-  ConfigLine r(config_options());
-  const CfgBytes write{0x01, 0x10,   // slave 1, FC 16
-                       0x01, 0x00,   // start 0x0100
-                       0x00, 0x03,   // 3 registers
-                       0x06,         // 6 bytes
-                       0x00, 0x02,   // data mode FL4
-                       0x10, 0x00,   // start address 0x1000
-                       0x00, 0x01,   // direction reverse
-                       0x5E, 0xBC};  // CRC
+  Rig r(config_options());
+  interrupt_objects(r);
+  const Bytes write{0x01, 0x10,   // slave 1, FC 16
+                    0x01, 0x00,   // start 0x0100
+                    0x00, 0x03,   // 3 registers
+                    0x06,         // 6 bytes
+                    0x00, 0x02,   // data mode FL4
+                    0x10, 0x00,   // start address 0x1000
+                    0x00, 0x01,   // direction reverse
+                    0x5E, 0xBC};  // CRC
   // Response: start and quantity [Modbus application protocol V1.1b3 §6.12].
-  EXPECT_EQ(r.exchange(write), (Answers{{0x01, 0x10, 0x01, 0x00, 0x00, 0x03, 0x81, 0xF4}}));
+  EXPECT_EQ(answers(r, write), (Answers{{0x01, 0x10, 0x01, 0x00, 0x00, 0x03, 0x81, 0xF4}}));
   // The old start address is now outside the block: exception 02.
-  EXPECT_EQ(r.exchange({0x01, 0x03, 0x20, 0x00, 0x00, 0x0A, 0xCE, 0x0D}),
+  EXPECT_EQ(answers(r, {0x01, 0x03, 0x20, 0x00, 0x00, 0x0A, 0xCE, 0x0D}),
             (Answers{{0x01, 0x83, 0x02, 0xC0, 0xF1}}));
   // FL4 at 0x1000, reverse: physical 25..34 -> 7..16, 9..13 -> 28..32 (N + 1 - p).
-  EXPECT_EQ(r.exchange({0x01, 0x03, 0x10, 0x00, 0x00, 0x0A, 0xC1, 0x0D}),
+  EXPECT_EQ(answers(r, {0x01, 0x03, 0x10, 0x00, 0x00, 0x0A, 0xC1, 0x0D}),
             (Answers{{0x01, 0x03, 0x14,
                       0x00, 0x07, 0x00, 0x10,  // object 1: 7..16
                       0x00, 0x1C, 0x00, 0x20,  // object 2: 28..32
@@ -128,80 +114,85 @@ TEST(PolarisConfig, WriteMultipleMovesTheBlockAndReversesTheNumbering) {
 }
 
 TEST(PolarisConfig, AddressesOutsideTheMapOrReadOnlyGetException02) {
-  ConfigLine r(config_options());
-  const CfgBytes k02{0x01, 0x86, 0x02, 0xC3, 0xA1};  // FC 6 | 0x80, Illegal Data Address
-  EXPECT_EQ(r.exchange({0x01, 0x06, 0x01, 0x0C, 0x00, 0x01, 0x89, 0xF5}), (Answers{k02}));  // past
-  EXPECT_EQ(r.exchange({0x01, 0x06, 0x00, 0xFF, 0x00, 0x01, 0x78, 0x3A}), (Answers{k02}));  // before
-  EXPECT_EQ(r.exchange({0x01, 0x06, 0x01, 0x09, 0x00, 0x00, 0x58, 0x34}), (Answers{k02}));  // status
+  Rig r(config_options());
+  interrupt_objects(r);
+  const Bytes k02{0x01, 0x86, 0x02, 0xC3, 0xA1};  // FC 6 | 0x80, Illegal Data Address
+  EXPECT_EQ(answers(r, {0x01, 0x06, 0x01, 0x0C, 0x00, 0x01, 0x89, 0xF5}), (Answers{k02}));  // past
+  EXPECT_EQ(answers(r, {0x01, 0x06, 0x00, 0xFF, 0x00, 0x01, 0x78, 0x3A}), (Answers{k02}));  // before
+  EXPECT_EQ(answers(r, {0x01, 0x06, 0x01, 0x09, 0x00, 0x00, 0x58, 0x34}), (Answers{k02}));  // status
   // FC 16 from 0x010A (calibrations) for 3 registers: read-only and past the end.
-  EXPECT_EQ(r.exchange({0x01, 0x10, 0x01, 0x0A, 0x00, 0x03, 0x06, 0x00, 0x00, 0x00, 0x00, 0x00,
+  EXPECT_EQ(answers(r, {0x01, 0x10, 0x01, 0x0A, 0x00, 0x03, 0x06, 0x00, 0x00, 0x00, 0x00, 0x00,
                         0x00, 0xC2, 0x5C}),
             (Answers{{0x01, 0x90, 0x02, 0xCD, 0xC1}}));
   // FC 3 of 0x010B (beams) and one past it.
-  EXPECT_EQ(r.exchange({0x01, 0x03, 0x01, 0x0B, 0x00, 0x02, 0xB4, 0x35}),
+  EXPECT_EQ(answers(r, {0x01, 0x03, 0x01, 0x0B, 0x00, 0x02, 0xB4, 0x35}),
             (Answers{{0x01, 0x83, 0x02, 0xC0, 0xF1}}));
-  EXPECT_EQ(r.device.counters().refused_writes, 4U);
-  EXPECT_EQ(r.device.counters().bad_start, 1U);
-  EXPECT_EQ(r.device.counters().writes, 0U);
+  EXPECT_EQ(r.device().counters().refused_writes, 4U);
+  EXPECT_EQ(r.device().counters().bad_start, 1U);
+  EXPECT_EQ(r.device().counters().writes, 0U);
 }
 
 TEST(PolarisConfig, ValuesOutsideTheirRangeGetException03AndChangeNothing) {
-  ConfigLine r(config_options());
-  const CfgBytes k03{0x01, 0x86, 0x03, 0x02, 0x61};  // FC 6 | 0x80, Illegal Data Value
-  EXPECT_EQ(r.exchange({0x01, 0x06, 0x01, 0x00, 0x00, 0x04, 0x89, 0xF5}), (Answers{k03}));  // mode 4
+  Rig r(config_options());
+  interrupt_objects(r);
+  const Bytes k03{0x01, 0x86, 0x03, 0x02, 0x61};  // FC 6 | 0x80, Illegal Data Value
+  EXPECT_EQ(answers(r, {0x01, 0x06, 0x01, 0x00, 0x00, 0x04, 0x89, 0xF5}), (Answers{k03}));  // mode 4
   // Start address 499 and 12288: just outside 500..12287 [Polaris manual §7.4.2].
-  EXPECT_EQ(r.exchange({0x01, 0x06, 0x01, 0x01, 0x01, 0xF3, 0x98, 0x23}), (Answers{k03}));
-  EXPECT_EQ(r.exchange({0x01, 0x06, 0x01, 0x01, 0x30, 0x00, 0xCD, 0xF6}), (Answers{k03}));
+  EXPECT_EQ(answers(r, {0x01, 0x06, 0x01, 0x01, 0x01, 0xF3, 0x98, 0x23}), (Answers{k03}));
+  EXPECT_EQ(answers(r, {0x01, 0x06, 0x01, 0x01, 0x30, 0x00, 0xCD, 0xF6}), (Answers{k03}));
   // FC 16: mode FL4 (good) and start 499 (bad): all or nothing, the mode stays FL1.
-  EXPECT_EQ(r.exchange({0x01, 0x10, 0x01, 0x00, 0x00, 0x02, 0x04, 0x00, 0x02, 0x01, 0xF3, 0x1E,
+  EXPECT_EQ(answers(r, {0x01, 0x10, 0x01, 0x00, 0x00, 0x02, 0x04, 0x00, 0x02, 0x01, 0xF3, 0x1E,
                         0x2A}),
             (Answers{{0x01, 0x90, 0x03, 0x0C, 0x01}}));
   // FC 16 byte count 2 for 2 registers, and quantity 0: a bad quantity.
-  EXPECT_EQ(r.exchange({0x01, 0x10, 0x01, 0x00, 0x00, 0x02, 0x02, 0x00, 0x02, 0x37, 0x15}),
+  EXPECT_EQ(answers(r, {0x01, 0x10, 0x01, 0x00, 0x00, 0x02, 0x02, 0x00, 0x02, 0x37, 0x15}),
             (Answers{{0x01, 0x90, 0x03, 0x0C, 0x01}}));
-  EXPECT_EQ(r.exchange({0x01, 0x10, 0x01, 0x00, 0x00, 0x00, 0x00, 0x34, 0x90}),
+  EXPECT_EQ(answers(r, {0x01, 0x10, 0x01, 0x00, 0x00, 0x00, 0x00, 0x34, 0x90}),
             (Answers{{0x01, 0x90, 0x03, 0x0C, 0x01}}));
   // FC 3 of 0 registers of the block.
-  EXPECT_EQ(r.exchange({0x01, 0x03, 0x01, 0x00, 0x00, 0x00, 0x44, 0x36}),
+  EXPECT_EQ(answers(r, {0x01, 0x03, 0x01, 0x00, 0x00, 0x00, 0x44, 0x36}),
             (Answers{{0x01, 0x83, 0x03, 0x01, 0x31}}));
-  EXPECT_EQ(r.exchange(kReadMode), (Answers{kModeFl1}));
-  EXPECT_EQ(r.exchange(kReadFl1), (Answers{kFl1Data}));
-  EXPECT_EQ(r.device.options().start_address, std::nullopt);
-  EXPECT_EQ(r.device.counters().refused_writes, 6U);
-  EXPECT_EQ(r.device.counters().bad_request, 1U);
+  EXPECT_EQ(answers(r, kReadMode), (Answers{kModeFl1}));
+  EXPECT_EQ(answers(r, kReadFl1), (Answers{kFl1Data}));
+  EXPECT_EQ(r.device().options().start_address, std::nullopt);
+  EXPECT_EQ(r.device().counters().refused_writes, 6U);
+  EXPECT_EQ(r.device().counters().bad_request, 1U);
 }
 
 TEST(PolarisConfig, BroadcastWritesAreAppliedWithoutAnswer) {
-  ConfigLine r(config_options());
-  // Address 0, FC 6, mode 9: refused, silently.
-  EXPECT_EQ(r.exchange({0x00, 0x06, 0x01, 0x00, 0x00, 0x09, 0x49, 0xE1}), Answers{});
-  EXPECT_EQ(r.exchange(kReadMode), (Answers{kModeFl1}));
+  Rig r(config_options());
+  interrupt_objects(r);
+  // Address 0, FC 6, mode 9: refused, silently (silent(): nothing arrived within the
+  // window and nothing is still on the wire).
+  EXPECT_TRUE(r.silent({0x00, 0x06, 0x01, 0x00, 0x00, 0x09, 0x49, 0xE1}));
+  EXPECT_EQ(answers(r, kReadMode), (Answers{kModeFl1}));
   // Address 0, FC 6, mode FL4: applied, silently [Modbus serial line V1.02 §2.1].
-  EXPECT_EQ(r.exchange({0x00, 0x06, 0x01, 0x00, 0x00, 0x02, 0x08, 0x26}), Answers{});
-  EXPECT_EQ(r.exchange(kReadMode), (Answers{kModeFl4}));
-  const Counters& c = r.device.counters();
+  EXPECT_TRUE(r.silent({0x00, 0x06, 0x01, 0x00, 0x00, 0x02, 0x08, 0x26}));
+  EXPECT_EQ(answers(r, kReadMode), (Answers{kModeFl4}));
+  const Counters& c = r.device().counters();
   EXPECT_EQ(c.writes, 1U);
   EXPECT_EQ(c.refused_writes, 1U);
   EXPECT_EQ(c.broadcasts, 0U);  // broadcasts counts the ignored (non-write) ones
 }
 
 TEST(PolarisConfig, NakModeWrittenSwitchesTheBadFunctionAnswer) {
-  ConfigLine r(config_options());
-  const CfgBytes fc5{0x01, 0x05, 0x20, 0x00, 0x00, 0x01, 0x07, 0xCA};  // FC 5: not served
-  EXPECT_EQ(r.exchange(fc5), (Answers{{0x01, 0x85, 0x07, 0x03, 0x52}}));  // 07 (the manual)
-  const CfgBytes standard{0x01, 0x10, 0x01, 0x00, 0x00, 0x09, 0x12,  // 9 registers from 0x0100
-                          0x00, 0x02,                                // data mode FL4
-                          0x10, 0x00,                                // start 0x1000
-                          0x00, 0x01,                                // reverse
-                          0x00, 0x01,                                // hole detection
-                          0x00, 0x03,                                // PN2 filter 3
-                          0x00, 0x14,                                // scan time 20 ms
-                          0x00, 0x01,                                // MSB first
-                          0x00, 0x00,                                // NAK off: standard Modbus
-                          0x00, 0x01,                                // command: auto-calibration
-                          0x55, 0xD0};
-  EXPECT_EQ(r.exchange(standard), (Answers{{0x01, 0x10, 0x01, 0x00, 0x00, 0x09, 0x01, 0xF3}}));
-  const Options& o = r.device.options();
+  Rig r(config_options());
+  interrupt_objects(r);
+  const Bytes fc5{0x01, 0x05, 0x20, 0x00, 0x00, 0x01, 0x07, 0xCA};  // FC 5: not served
+  EXPECT_EQ(answers(r, fc5), (Answers{{0x01, 0x85, 0x07, 0x03, 0x52}}));  // 07 (the manual)
+  const Bytes standard{0x01, 0x10, 0x01, 0x00, 0x00, 0x09, 0x12,  // 9 registers from 0x0100
+                       0x00, 0x02,                                // data mode FL4
+                       0x10, 0x00,                                // start 0x1000
+                       0x00, 0x01,                                // reverse
+                       0x00, 0x01,                                // hole detection
+                       0x00, 0x03,                                // PN2 filter 3
+                       0x00, 0x14,                                // scan time 20 ms
+                       0x00, 0x01,                                // MSB first
+                       0x00, 0x00,                                // NAK off: standard Modbus
+                       0x00, 0x01,                                // command: auto-calibration
+                       0x55, 0xD0};
+  EXPECT_EQ(answers(r, standard), (Answers{{0x01, 0x10, 0x01, 0x00, 0x00, 0x09, 0x01, 0xF3}}));
+  const Options& o = r.device().options();
   EXPECT_EQ(o.mode, DataMode::kFl4);
   EXPECT_EQ(o.start_address, 0x1000);
   EXPECT_EQ(o.direction, ScanDirection::kReverse);
@@ -210,8 +201,8 @@ TEST(PolarisConfig, NakModeWrittenSwitchesTheBadFunctionAnswer) {
   EXPECT_EQ(o.scan_time, milliseconds(20));
   EXPECT_EQ(o.bit_order, BitOrder::kMsbFirst);
   EXPECT_FALSE(o.nak_on_error);
-  EXPECT_TRUE(r.device.calibrating(r.clock.now()));
-  EXPECT_EQ(r.exchange(fc5), (Answers{{0x01, 0x85, 0x01, 0x83, 0x50}}));  // 01 (standard)
+  EXPECT_TRUE(r.device().calibrating(r.now()));
+  EXPECT_EQ(answers(r, fc5), (Answers{{0x01, 0x85, 0x01, 0x83, 0x50}}));  // 01 (standard)
 }
 
 }  // namespace
