@@ -50,6 +50,9 @@ std::optional<WireIssue> check_reply(const ReplyLayout& r) {
   }
   if (std::find(r.fields.begin(), r.fields.end(), ReplyField::kData) == r.fields.end())
     return WireIssue{"reply.fields", "a reply needs \"data\" (what the requests ask for)"};
+  if (std::find(r.fields.begin(), r.fields.end(), ReplyField::kCode) == r.fields.end())
+    return WireIssue{"reply.fields",
+                     "a reply needs \"code\" (without it E1..E5 and an empty answer look alike)"};
   if (r.length_counts >= (1U << kReplyFieldCount) || r.checksum_covers >= (1U << kReplyFieldCount))
     return WireIssue{"reply", "a reply field set names an unknown field"};
   if (const auto f = outside(r.length_counts, r.fields))
@@ -150,6 +153,9 @@ std::optional<WireIssue> check(const WireTable& t) {
                      "the all-beams selector must be 0x00 or 0xFF (beam numbers use the rest)"};
   if (t.report_start == t.report_end)
     return WireIssue{"report_end", "report start and end are equal"};
+  if (t.separator == t.report_start || t.separator == t.report_end)
+    return WireIssue{"separator", "the separator " + hex(t.separator) +
+                                      " is also the report's start or end character"};
   if (auto r = check_reply(t.reply)) return r;
   return check_report(t.report);
 }

@@ -89,6 +89,10 @@ std::error_code Device::set_interrupted(std::span<const std::uint16_t> beams,
 }
 
 std::error_code Device::start_calibration(stream::TimePoint now) {
+  // What was due before `now` happens first (a real-time runner's timer may fire late): a
+  // request that ended before the pulse is answered with data, a push due before it goes.
+  start(now);
+  advance(now);
   if (calibrating(now)) return std::make_error_code(std::errc::device_or_resource_busy);
   finish_calibration(now);
   calibration_end_ = now + calibration_time();
@@ -173,13 +177,9 @@ void Device::handle(const stream::GapFrame& frame) {
     return;
   }
   if (request.address == modbus::kBroadcastAddress) {
-    // DECISION: a broadcast write is applied without an answer
-    // [Modbus serial line V1.02 §2.1]; any other broadcast is ignored as before.
-    if (is_write(request.function)) {
-      handle_write(request, end, false);
-    } else {
-      ++counters_.broadcasts;
-    }
+    // "Broadcast is not supported" [Polaris manual §8.1]: a configuration write meant for
+    // the other slaves of a shared line must not reconfigure this one either.
+    ++counters_.broadcasts;
   } else if (request.address != options_.address) {
     ++counters_.foreign_address;
   } else {
@@ -190,7 +190,7 @@ void Device::handle(const stream::GapFrame& frame) {
 void Device::handle_request(const modbus::RtuFrame& request, stream::TimePoint end) {
   using modbus::ExceptionCode;
   if (is_write(request.function)) {
-    handle_write(request, end, true);
+    handle_write(request, end);
     return;
   }
   if (request.function != modbus::kReadHoldingRegisters &&
@@ -256,8 +256,7 @@ void Device::handle_read(const modbus::RtuFrame& request, stream::TimePoint end)
   answer(modbus::make_read_response(options_.address, request.function, words), end);
 }
 
-void Device::handle_write(const modbus::RtuFrame& request, stream::TimePoint end,
-                          bool answer_to) {
+void Device::handle_write(const modbus::RtuFrame& request, stream::TimePoint end) {
   std::uint16_t start = 0;
   std::vector<std::uint16_t> words;
   std::error_code ec;
@@ -277,18 +276,15 @@ void Device::handle_write(const modbus::RtuFrame& request, stream::TimePoint end
   if (!ec && write.start_calibration && calibrating(end)) ec = ConfigError::kBusy;
   if (ec) {
     ++counters_.refused_writes;
-    if (answer_to) {
-      answer(modbus::make_exception(options_.address, request.function,
-                                    exception_for(config_error(ec))),
-             end);
-    }
+    answer(modbus::make_exception(options_.address, request.function,
+                                  exception_for(config_error(ec))),
+           end);
     return;
   }
   // Only settings that leave the line and the scan as they are: the framer and scan_ stay.
   options_ = write.options;
   if (write.start_calibration) calibration_end_ = end + calibration_time();
   ++counters_.writes;
-  if (!answer_to) return;
   if (request.function == modbus::kWriteSingleRegister) {
     answer(modbus::make_write_single_response(options_.address, {start, words.front()}), end);
   } else {

@@ -79,8 +79,8 @@ class Device final : public stream::ByteDevice {
   void handle(const stream::GapFrame& frame);
   void handle_request(const modbus::RtuFrame& request, stream::TimePoint end);
   void handle_read(const modbus::RtuFrame& request, stream::TimePoint end);
-  // FC 6/16 to us or broadcast (`answer_to` false): applied or refused, answered if asked.
-  void handle_write(const modbus::RtuFrame& request, stream::TimePoint end, bool answer_to);
+  // FC 6/16 to us: applied or refused, answered.
+  void handle_write(const modbus::RtuFrame& request, stream::TimePoint end);
   void finish_calibration(stream::TimePoint now);
   void answer(const modbus::RtuFrame& reply, stream::TimePoint end);
   void push_data(stream::TimePoint due);

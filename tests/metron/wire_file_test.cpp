@@ -53,7 +53,7 @@ TEST(MetronWireFile, PrintedTableReadsBackToTheSameTable) {
   WireTable changed;
   changed.errors = {0xF1, 0xF2, 0xF3, 0xF4, 0xF5};
   changed.all_beams = 0xFF;
-  changed.reply.fields = {RF::kNode, RF::kData, RF::kChecksum};
+  changed.reply.fields = {RF::kNode, RF::kCode, RF::kData, RF::kChecksum};
   changed.reply.length_counts = 0;
   changed.reply.checksum_covers = field_bit(RF::kNode) | field_bit(RF::kData);
   changed.report.order = {ReportField::kEnd, ReportField::kData, ReportField::kChecksum,
@@ -136,8 +136,16 @@ TEST(MetronWireFile, ClashesAndBrokenLayoutsNameTheirKey) {
   EXPECT_EQ(issue_of(R"({"reply": {"fields": ["data", "data"]}})"),
             "reply.fields: the reply lists \"data\" twice");
   EXPECT_EQ(issue_of(R"({"reply": {"fields": ["start", "data", "checksum"]}})"),
-            "reply.length_counts: the Length byte counts \"code\", which the reply does not "
+            "reply.fields: a reply needs \"code\" (without it E1..E5 and an empty answer look "
+            "alike)");
+  EXPECT_EQ(issue_of(R"({"reply": {"fields": ["code", "length", "data", "checksum"],
+                         "length_counts": ["node", "data"]}})"),
+            "reply.length_counts: the Length byte counts \"node\", which the reply does not "
             "carry");
+  EXPECT_EQ(issue_of(R"({"separator": "0x03"})"),
+            "separator: the separator 0x03 is also the report's start or end character");
+  EXPECT_EQ(issue_of(R"({"separator": 2})"),
+            "separator: the separator 0x02 is also the report's start or end character");
   EXPECT_EQ(issue_of(R"({"reply": {"checksum_covers": ["start", "checksum"]}})"),
             "reply.checksum_covers: the checksum cannot sum itself");
   EXPECT_EQ(issue_of(R"({"reply": {"fields": ["code", "data"], "length_counts": [],

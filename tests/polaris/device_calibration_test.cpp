@@ -134,6 +134,30 @@ TEST(PolarisCalibration, SecondStartIsBusyOtherWritesAndFc4Too) {
             std::make_error_code(std::errc::device_or_resource_busy));
 }
 
+// A real-time runner's timer can fire late: the autocal pulse may be handled before the
+// device's deadline for a read that had already ended (its t3.5 passed). That read ended
+// before the calibration began, so it is answered with data, not 06. The device is driven
+// by hand here, since no line would let a deadline pass unserved.
+TEST(PolarisCalibration, AReadThatEndedBeforeThePulseGetsData) {
+  Device d(cal_options());
+  const std::vector<std::uint16_t> edges{9, 34};
+  const stream::TimePoint t0{};
+  d.on_time(t0);
+  ASSERT_FALSE(d.set_interrupted(edges, t0));
+  d.on_bytes(kReadData, t0);
+  const stream::TimePoint late = t0 + milliseconds(10);  // t3.5 (1.82 ms) long gone
+  ASSERT_FALSE(d.start_calibration(late));
+  EXPECT_EQ(d.calibration_end(), late + seconds(16));
+  std::vector<Bytes> sent;
+  for (int i = 0; i < 8; ++i) {
+    while (auto f = d.take_transmit()) sent.push_back(*f);
+    const auto next = d.next_deadline();
+    if (!next || *next >= late + seconds(1)) break;
+    d.on_time(*next);
+  }
+  EXPECT_EQ(sent, (std::vector<Bytes>{kData}));
+}
+
 TEST(PolarisCalibration, MasterSendsNothingWhileCalibrating) {
   Options o = cal_options();
   o.role = Role::kMaster;
