@@ -3,11 +3,14 @@
 // CRC-32) and the memory of one device instance (sizeof + heap). Figures are reported,
 // never asserted.
 #include "bench/heap_in_use.h"
+#include "gridscan/crc32_mpeg2.h"
 #include "gridscan/device.h"
 #include "stream/memory_line.h"
 
 #include <benchmark/benchmark.h>
 
+#include <array>
+#include <cstring>
 #include <memory>
 #include <vector>
 
@@ -57,6 +60,93 @@ void BM_RequestCommTest(benchmark::State& s) {
 BENCHMARK(BM_RequestFullState60);
 BENCHMARK(BM_RequestReducedState22);
 BENCHMARK(BM_RequestCommTest);
+
+// One request's bytes in, the reply's bytes out, nothing else in the loop: the requests are
+// sealed before the timing (one per sequence counter, 128 in turn, each the previous
+// answer's SeqCnt + 1 [GridScan manual §9.2.2]), so the loop times the device alone:
+// on_bytes (idle-gap framing), on_time at the cycle end (inspect, checks, command, answer
+// frame with CRC-32), take_transmit. Every request must be answered with `reply_size` bytes.
+// Compare it with the baselines below (same run, same byte count), not as an absolute time.
+void run_wire_requests(benchmark::State& state, CommandId id, unsigned elements,
+                       std::size_t reply_size) {
+  std::vector<std::vector<std::uint8_t>> requests;
+  requests.reserve(128);
+  for (unsigned i = 0; i < 128; ++i) {
+    const auto seq = static_cast<std::uint8_t>(2U + 2U * i);
+    requests.push_back(encode(Frame{seq, request_id(id), {}}));
+  }
+  Options o;
+  o.elements = elements;
+  Device d(o);
+  stream::TimePoint t{1h};
+  d.on_time(t);
+  t += 2s;
+  d.on_time(t);
+  while (d.take_transmit()) {
+  }
+  const auto cycle = o.cycle_time();
+  std::size_t next = 0;
+  std::uint64_t wrong_replies = 0;
+  for (auto _ : state) {
+    d.on_bytes(requests[next], t);
+    t += cycle;
+    d.on_time(t);
+    auto reply = d.take_transmit();
+    if (!reply || reply->size() != reply_size) ++wrong_replies;
+    benchmark::DoNotOptimize(reply);
+    next = (next + 1) % requests.size();
+  }
+  if (wrong_replies != 0) state.SkipWithError("a request without its reply");
+  state.counters["bytes_in_out"] = static_cast<double>(kMinFrame + reply_size);
+  state.SetItemsProcessed(state.iterations());
+}
+
+// 0x23 Info: Communication test, its answer one byte of payload: 10 + 11 bytes.
+inline constexpr std::size_t kCommTestReply = kMinFrame + 1;
+// 0x30 Data: Reduced state, 22 elements: 10 + 12 bytes (two bytes of payload).
+inline constexpr std::size_t kReducedStateReply = kMinFrame + 2;
+
+void BM_WireCommTest(benchmark::State& s) {
+  run_wire_requests(s, CommandId::kInfoCommunicationTest, 22, kCommTestReply);
+}
+void BM_WireReducedState22(benchmark::State& s) {
+  run_wire_requests(s, CommandId::kDataReducedState, 22, kReducedStateReply);
+}
+BENCHMARK(BM_WireCommTest);
+BENCHMARK(BM_WireReducedState22);
+
+// Baselines of the same run that no device code takes part in: the CRC-32 over as many
+// bytes as one request and its reply (the request's and the reply's CRC together), and a
+// memcpy of those bytes. Arg: the byte count (21: communication test, 22: reduced state).
+void BM_BaselineCrc32(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  std::array<std::uint8_t, 64> bytes{};
+  for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<std::uint8_t>(i * 37U);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(bytes.data());
+    benchmark::DoNotOptimize(crc32_mpeg2(std::span(bytes.data(), n)));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_BaselineCrc32)
+    ->Arg(static_cast<std::int64_t>(kMinFrame + kCommTestReply))
+    ->Arg(static_cast<std::int64_t>(kMinFrame + kReducedStateReply));
+
+void BM_BaselineMemcpy(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  std::array<std::uint8_t, 64> from{};
+  std::array<std::uint8_t, 64> to{};
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(from.data());
+    std::memcpy(to.data(), from.data(), n);
+    benchmark::DoNotOptimize(to.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_BaselineMemcpy)
+    ->Arg(static_cast<std::int64_t>(kMinFrame + kCommTestReply))
+    ->Arg(static_cast<std::int64_t>(kMinFrame + kReducedStateReply));
 
 // The same request through the simulated line (`--link memory`'s stream::MemoryLine, as an
 // Exchange runs it, without gRPC): the request's wire time, the idle gap, the cycle end, the

@@ -3,11 +3,14 @@
 // standard-mode report composed and sent, and memory per device instance (sizeof + heap).
 // Figures are reported, never asserted.
 #include "bench/heap_in_use.h"
+#include "metron/checksum.h"
 #include "metron/device.h"
 #include "metron/standard_report.h"
 
 #include <benchmark/benchmark.h>
 
+#include <array>
+#include <cstring>
 #include <memory>
 #include <vector>
 
@@ -42,6 +45,62 @@ void BM_SlaveRequestOssdStatus(benchmark::State& state) {
   run_requests(state, Options{}, {0x02, 0x01, 0x0C, 0xF3});
 }
 BENCHMARK(BM_SlaveRequestOssdStatus);
+
+// #12 Request OSSD status, no node: exactly one request's bytes in (02 01 0C F3), the
+// device decodes, handles and encodes, the reply's bytes out (02 03 0C 00 00 F3, both OSSDs
+// OFF) [METRON manual "No node"]. Every request must get its 6-byte reply. Compare it with
+// the baselines below (same run, same byte count), not as an absolute time.
+inline constexpr std::size_t kOssdRequest = 4;
+inline constexpr std::size_t kOssdReply = 6;
+
+void BM_WireOssdStatus(benchmark::State& state) {
+  const Bytes request{0x02, 0x01, 0x0C, 0xF3};
+  Device d(Options{});
+  stream::TimePoint t{1h};
+  d.on_time(t);
+  std::uint64_t wrong_replies = 0;
+  for (auto _ : state) {
+    d.on_bytes(request, t);
+    t += 30ms;  // past the reply's due time, 12.3 ms after the request (Equation 3)
+    d.on_time(t);
+    auto reply = d.take_transmit();
+    if (!reply || reply->size() != kOssdReply) ++wrong_replies;
+    benchmark::DoNotOptimize(reply);
+  }
+  if (wrong_replies != 0) state.SkipWithError("a request without its reply");
+  state.counters["bytes_in_out"] = static_cast<double>(kOssdRequest + kOssdReply);
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_WireOssdStatus);
+
+// Baselines of the same run that no device code takes part in: the METRON checksum (sum of
+// the bytes, complemented) over as many bytes as one request and its reply, and a memcpy of
+// those bytes. Arg: the byte count (10: #12 Request OSSD status).
+void BM_BaselineChecksum(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  std::array<std::uint8_t, 64> bytes{};
+  for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<std::uint8_t>(i * 37U);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(bytes.data());
+    benchmark::DoNotOptimize(checksum(std::span(bytes.data(), n), ChecksumReading::kModulo256));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_BaselineChecksum)->Arg(static_cast<std::int64_t>(kOssdRequest + kOssdReply));
+
+void BM_BaselineMemcpy(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  std::array<std::uint8_t, 64> from{};
+  std::array<std::uint8_t, 64> to{};
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(from.data());
+    std::memcpy(to.data(), from.data(), n);
+    benchmark::DoNotOptimize(to.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_BaselineMemcpy)->Arg(static_cast<std::int64_t>(kOssdRequest + kOssdReply));
 
 void BM_SlaveRequestMeasurements(benchmark::State& state) {
   run_requests(state, Options{}, {0x02, 0x04, 0x0A, 0x01, 0x02, 0x03, 0xEF});

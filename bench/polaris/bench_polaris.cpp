@@ -11,7 +11,9 @@
 
 #include <malloc.h>
 
+#include <array>
 #include <chrono>
+#include <cstring>
 #include <memory>
 
 namespace {
@@ -69,6 +71,69 @@ BENCHMARK(BM_SlaveRequest)
     ->Args({static_cast<int>(polaris::DataMode::kFl1), 127})
     ->Args({static_cast<int>(polaris::DataMode::kFl4), 127})
     ->Args({static_cast<int>(polaris::DataMode::kFl10), 1375});
+
+// FC 3 read of the whole data block, 485MB mode, 127 beams (8 registers): exactly one
+// request's bytes in (8), the device decodes, handles and encodes, the answer's bytes out
+// (3 + 16 + 2 = 21) [Modbus application protocol V1.1b3 §6.3]. The same path as
+// BM_SlaveRequest/mode:0/beams:127, with every request's answer checked. Compare it with
+// the baselines below (same run, same byte count), not as an absolute time.
+constexpr std::size_t kFc3Request = 8;
+constexpr std::size_t kFc3Answer = 21;
+
+void BM_WireFc3DataBlock(benchmark::State& state) {
+  polaris::Device device(options(polaris::DataMode::k485Mb, 127));
+  stream::TimePoint now{std::chrono::hours(1)};
+  device.on_time(now);
+  (void)device.set_interrupted(typical_scene(), now);
+  const std::vector<std::uint8_t> req = request(polaris::DataMode::k485Mb, 127);
+  std::uint64_t wrong_answers = 0;
+  for (auto _ : state) {
+    device.on_bytes(req, now);
+    while (auto next = device.next_deadline()) {
+      now = *next;
+      device.on_time(now);
+    }
+    auto answer = device.take_transmit();
+    if (!answer || answer->size() != kFc3Answer) ++wrong_answers;
+    benchmark::DoNotOptimize(answer);
+    now += milliseconds(1);
+  }
+  if (req.size() != kFc3Request || wrong_answers != 0) {
+    state.SkipWithError("a request without its answer");
+  }
+  state.counters["bytes_in_out"] = static_cast<double>(kFc3Request + kFc3Answer);
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_WireFc3DataBlock);
+
+// Baselines of the same run that no device code takes part in: the Modbus CRC-16 over as
+// many bytes as one request and its answer (the two frames' CRCs together), and a memcpy of
+// those bytes. Arg: the byte count (29: the FC 3 read above).
+void BM_BaselineCrc16(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  std::array<std::uint8_t, 64> bytes{};
+  for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<std::uint8_t>(i * 37U);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(bytes.data());
+    benchmark::DoNotOptimize(modbus::crc16(std::span(bytes.data(), n)));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_BaselineCrc16)->Arg(static_cast<std::int64_t>(kFc3Request + kFc3Answer));
+
+void BM_BaselineMemcpy(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  std::array<std::uint8_t, 64> from{};
+  std::array<std::uint8_t, 64> to{};
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(from.data());
+    std::memcpy(to.data(), from.data(), n);
+    benchmark::DoNotOptimize(to.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_BaselineMemcpy)->Arg(static_cast<std::int64_t>(kFc3Request + kFc3Answer));
 
 void BM_MasterPush(benchmark::State& state) {
   polaris::Options o = options(polaris::DataMode::kFl4, 127);
