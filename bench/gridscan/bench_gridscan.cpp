@@ -2,6 +2,7 @@
 // request (the whole device path: idle-gap framing, checks, command, answer frame with
 // CRC-32) and the memory of one device instance (sizeof + heap). Figures are reported,
 // never asserted.
+#include "bench/baselines.h"
 #include "bench/heap_in_use.h"
 #include "gridscan/crc32_mpeg2.h"
 #include "gridscan/device.h"
@@ -23,16 +24,21 @@ using namespace std::chrono_literals;
 
 // One request → answer through the device: on_bytes, the idle gap, the cycle end, the
 // answer taken. The clock jumps a cycle per request (no real waiting).
-void run_requests(benchmark::State& state, CommandId id, unsigned elements) {
-  Options o;
-  o.elements = elements;
-  Device d(o);
-  stream::TimePoint t{1h};
+// The curtain powered up and its power-up messages taken: ready for requests at `t`.
+void power_up(Device& d, stream::TimePoint& t) {
   d.on_time(t);
   t += 2s;
   d.on_time(t);
   while (d.take_transmit()) {
   }
+}
+
+void run_requests(benchmark::State& state, CommandId id, unsigned elements) {
+  Options o;
+  o.elements = elements;
+  Device d(o);
+  stream::TimePoint t{1h};
+  power_up(d, t);
   std::uint8_t seq = 2;
   std::size_t bytes = 0;
   for (auto _ : state) {
@@ -79,11 +85,7 @@ void run_wire_requests(benchmark::State& state, CommandId id, unsigned elements,
   o.elements = elements;
   Device d(o);
   stream::TimePoint t{1h};
-  d.on_time(t);
-  t += 2s;
-  d.on_time(t);
-  while (d.take_transmit()) {
-  }
+  power_up(d, t);
   const auto cycle = o.cycle_time();
   std::size_t next = 0;
   std::uint64_t wrong_replies = 0;
@@ -119,31 +121,13 @@ BENCHMARK(BM_WireReducedState22);
 // bytes as one request and its reply (the request's and the reply's CRC together), and a
 // memcpy of those bytes. Arg: the byte count (21: communication test, 22: reduced state).
 void BM_BaselineCrc32(benchmark::State& state) {
-  const auto n = static_cast<std::size_t>(state.range(0));
-  std::array<std::uint8_t, 64> bytes{};
-  for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<std::uint8_t>(i * 37U);
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(bytes.data());
-    benchmark::DoNotOptimize(crc32_mpeg2(std::span(bytes.data(), n)));
-  }
-  state.SetItemsProcessed(state.iterations());
+  bench::run_check_baseline(state, [](auto bytes) { return crc32_mpeg2(bytes); });
 }
 BENCHMARK(BM_BaselineCrc32)
     ->Arg(static_cast<std::int64_t>(kMinFrame + kCommTestReply))
     ->Arg(static_cast<std::int64_t>(kMinFrame + kReducedStateReply));
 
-void BM_BaselineMemcpy(benchmark::State& state) {
-  const auto n = static_cast<std::size_t>(state.range(0));
-  std::array<std::uint8_t, 64> from{};
-  std::array<std::uint8_t, 64> to{};
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(from.data());
-    std::memcpy(to.data(), from.data(), n);
-    benchmark::DoNotOptimize(to.data());
-    benchmark::ClobberMemory();
-  }
-  state.SetItemsProcessed(state.iterations());
-}
+using bench::BM_BaselineMemcpy;
 BENCHMARK(BM_BaselineMemcpy)
     ->Arg(static_cast<std::int64_t>(kMinFrame + kCommTestReply))
     ->Arg(static_cast<std::int64_t>(kMinFrame + kReducedStateReply));

@@ -2,6 +2,7 @@
 // its reply encoded (on_bytes + on_time + take_transmit on a manual clock), one
 // standard-mode report composed and sent, and memory per device instance (sizeof + heap).
 // Figures are reported, never asserted.
+#include "bench/baselines.h"
 #include "bench/heap_in_use.h"
 #include "metron/checksum.h"
 #include "metron/device.h"
@@ -77,29 +78,12 @@ BENCHMARK(BM_WireOssdStatus);
 // the bytes, complemented) over as many bytes as one request and its reply, and a memcpy of
 // those bytes. Arg: the byte count (10: #12 Request OSSD status).
 void BM_BaselineChecksum(benchmark::State& state) {
-  const auto n = static_cast<std::size_t>(state.range(0));
-  std::array<std::uint8_t, 64> bytes{};
-  for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<std::uint8_t>(i * 37U);
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(bytes.data());
-    benchmark::DoNotOptimize(checksum(std::span(bytes.data(), n), ChecksumReading::kModulo256));
-  }
-  state.SetItemsProcessed(state.iterations());
+  bench::run_check_baseline(
+      state, [](auto bytes) { return checksum(bytes, ChecksumReading::kModulo256); });
 }
 BENCHMARK(BM_BaselineChecksum)->Arg(static_cast<std::int64_t>(kOssdRequest + kOssdReply));
 
-void BM_BaselineMemcpy(benchmark::State& state) {
-  const auto n = static_cast<std::size_t>(state.range(0));
-  std::array<std::uint8_t, 64> from{};
-  std::array<std::uint8_t, 64> to{};
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(from.data());
-    std::memcpy(to.data(), from.data(), n);
-    benchmark::DoNotOptimize(to.data());
-    benchmark::ClobberMemory();
-  }
-  state.SetItemsProcessed(state.iterations());
-}
+using bench::BM_BaselineMemcpy;
 BENCHMARK(BM_BaselineMemcpy)->Arg(static_cast<std::int64_t>(kOssdRequest + kOssdReply));
 
 void BM_SlaveRequestMeasurements(benchmark::State& state) {

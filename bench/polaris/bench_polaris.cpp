@@ -2,6 +2,7 @@
 // one Modbus request decoded, handled and its answer encoded (on_bytes, on_time at the
 // deadlines, take_transmit) per data mode; a master push; memory per device instance
 // (sizeof + the heap it holds, from glibc's allocator statistics, as counters).
+#include "bench/baselines.h"
 #include "modbus/crc16.h"
 #include "modbus/pdu.h"
 #include "modbus/rtu_frame.h"
@@ -15,6 +16,7 @@
 #include <chrono>
 #include <cstring>
 #include <memory>
+#include <optional>
 
 namespace {
 
@@ -40,25 +42,39 @@ std::vector<std::uint8_t> request(polaris::DataMode mode, std::uint16_t beams) {
       modbus::make_read_request(1, {modbus::kReadHoldingRegisters, 0x2000, words}));
 }
 
+// The slave started at `now` with the typical scene.
+void start_with_scene(polaris::Device& device, stream::TimePoint now) {
+  device.on_time(now);
+  (void)device.set_interrupted(typical_scene(), now);
+}
+
+// One request through the device: its bytes in at `now`, every deadline served (the framer's
+// t3.5, the scan's end), the answer out; `now` ends 1 ms after the last deadline.
+std::optional<std::vector<std::uint8_t>> one_request(polaris::Device& device,
+                                                     const std::vector<std::uint8_t>& req,
+                                                     stream::TimePoint& now) {
+  device.on_bytes(req, now);
+  while (auto next = device.next_deadline()) {
+    now = *next;
+    device.on_time(now);
+  }
+  auto answer = device.take_transmit();
+  now += milliseconds(1);
+  return answer;
+}
+
 void BM_SlaveRequest(benchmark::State& state) {
   const auto mode = static_cast<polaris::DataMode>(state.range(0));
   const auto beams = static_cast<std::uint16_t>(state.range(1));
   polaris::Device device(options(mode, beams));
   stream::TimePoint now{std::chrono::hours(1)};
-  device.on_time(now);
-  (void)device.set_interrupted(typical_scene(), now);
+  start_with_scene(device, now);
   const std::vector<std::uint8_t> req = request(mode, beams);
   std::size_t answer_bytes = 0;
   for (auto _ : state) {
-    device.on_bytes(req, now);
-    while (auto next = device.next_deadline()) {
-      now = *next;
-      device.on_time(now);
-    }
-    auto answer = device.take_transmit();
+    auto answer = one_request(device, req, now);
     answer_bytes = answer ? answer->size() : 0;
     benchmark::DoNotOptimize(answer);
-    now += milliseconds(1);
   }
   state.counters["answer_bytes"] = static_cast<double>(answer_bytes);
   state.counters["requests/s"] =
@@ -83,20 +99,13 @@ constexpr std::size_t kFc3Answer = 21;
 void BM_WireFc3DataBlock(benchmark::State& state) {
   polaris::Device device(options(polaris::DataMode::k485Mb, 127));
   stream::TimePoint now{std::chrono::hours(1)};
-  device.on_time(now);
-  (void)device.set_interrupted(typical_scene(), now);
+  start_with_scene(device, now);
   const std::vector<std::uint8_t> req = request(polaris::DataMode::k485Mb, 127);
   std::uint64_t wrong_answers = 0;
   for (auto _ : state) {
-    device.on_bytes(req, now);
-    while (auto next = device.next_deadline()) {
-      now = *next;
-      device.on_time(now);
-    }
-    auto answer = device.take_transmit();
+    auto answer = one_request(device, req, now);
     if (!answer || answer->size() != kFc3Answer) ++wrong_answers;
     benchmark::DoNotOptimize(answer);
-    now += milliseconds(1);
   }
   if (req.size() != kFc3Request || wrong_answers != 0) {
     state.SkipWithError("a request without its answer");
@@ -110,29 +119,11 @@ BENCHMARK(BM_WireFc3DataBlock);
 // many bytes as one request and its answer (the two frames' CRCs together), and a memcpy of
 // those bytes. Arg: the byte count (29: the FC 3 read above).
 void BM_BaselineCrc16(benchmark::State& state) {
-  const auto n = static_cast<std::size_t>(state.range(0));
-  std::array<std::uint8_t, 64> bytes{};
-  for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<std::uint8_t>(i * 37U);
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(bytes.data());
-    benchmark::DoNotOptimize(modbus::crc16(std::span(bytes.data(), n)));
-  }
-  state.SetItemsProcessed(state.iterations());
+  bench::run_check_baseline(state, [](auto bytes) { return modbus::crc16(bytes); });
 }
 BENCHMARK(BM_BaselineCrc16)->Arg(static_cast<std::int64_t>(kFc3Request + kFc3Answer));
 
-void BM_BaselineMemcpy(benchmark::State& state) {
-  const auto n = static_cast<std::size_t>(state.range(0));
-  std::array<std::uint8_t, 64> from{};
-  std::array<std::uint8_t, 64> to{};
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(from.data());
-    std::memcpy(to.data(), from.data(), n);
-    benchmark::DoNotOptimize(to.data());
-    benchmark::ClobberMemory();
-  }
-  state.SetItemsProcessed(state.iterations());
-}
+using bench::BM_BaselineMemcpy;
 BENCHMARK(BM_BaselineMemcpy)->Arg(static_cast<std::int64_t>(kFc3Request + kFc3Answer));
 
 void BM_MasterPush(benchmark::State& state) {
