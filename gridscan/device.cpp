@@ -206,7 +206,9 @@ void Device::send_cycle_messages() {
 void Device::send(std::uint8_t id, std::uint8_t seq, const Payload& payload) {
   if (faults_.transmit.silent) return;  // nothing on the wire, nothing to insert again later
   Frame f{seq, id, payload};
-  std::optional<Frame> previous = std::exchange(last_sent_, f);
+  std::optional<Frame> previous;
+  if (faults_.insert_frames) previous = std::move(last_sent_);
+  last_sent_ = f;  // assigned in place: the payload's storage is reused, frame after frame
   if (faults_.wrong_seq) ++f.seq;
   if (faults_.direction_bit) f.id &= kIdMask;
   const auto seal = [this](const Frame& frame) {
