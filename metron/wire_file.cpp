@@ -4,6 +4,9 @@
 // "metron-wire-table-file").
 #include "metron/wire_file.h"
 
+#include "json/syntax.h"
+#include "json/value_kind.h"
+
 #include <google/protobuf/struct.pb.h>
 #include <google/protobuf/util/json_util.h>
 
@@ -27,17 +30,7 @@ struct Refusal {
   throw Refusal{{std::move(where), std::move(reason), false}};
 }
 
-std::string kind_of(const Value& v) {
-  switch (v.kind_case()) {
-    case Value::kStringValue: return "a string";
-    case Value::kNumberValue: return "a number";
-    case Value::kBoolValue: return "a boolean";
-    case Value::kNullValue: return "null";
-    case Value::kListValue: return "an array";
-    case Value::kStructValue: return "an object";
-    default: return "nothing";
-  }
-}
+using json::kind_of;
 
 // An object's members in key order: the first issue reported does not depend on the map's
 // order.
@@ -203,30 +196,13 @@ void read_table(const Value& root, WireTable& t) {
   }
 }
 
-// protobuf reports a syntax error as "<reason>\n<up to 40 characters around it>\n<spaces>^".
-// The position is where that excerpt occurs in the text, when it occurs exactly once.
+// A text protobuf's parser refuses: the first break of the grammar with its line:column, or,
+// where the text is JSON that protobuf still refuses (a number beyond double, a duplicate
+// key), protobuf's own message without a position.
 WireFileIssue syntax_issue(std::string_view text, std::string_view message) {
-  WireFileIssue issue{"", "not valid JSON: " + std::string(message), true};
-  const auto first = message.find('\n');
-  const auto last = message.rfind('\n');
-  if (first == std::string_view::npos || first == last) return issue;
-  const auto caret_line = message.substr(last + 1);
-  const auto caret = caret_line.find('^');
-  if (caret == std::string_view::npos || caret_line.find_first_not_of(' ') != caret) return issue;
-  const auto excerpt = message.substr(first + 1, last - first - 1);
-  const auto at = text.find(excerpt);
-  if (excerpt.empty() || at == std::string_view::npos ||
-      text.find(excerpt, at + 1) != std::string_view::npos)
-    return issue;
-  const auto offset = at + caret;
-  const auto before = text.substr(0, offset);
-  std::size_t line = 1;
-  for (const char c : before) line += c == '\n' ? 1 : 0;
-  const auto nl = before.rfind('\n');
-  const auto column = nl == std::string_view::npos ? offset + 1 : offset - nl;
-  issue.where = std::to_string(line) + ":" + std::to_string(column);
-  issue.reason = "not valid JSON: " + std::string(message.substr(0, first));
-  return issue;
+  if (const auto syntax = json::first_syntax_error(text))
+    return {json::line_column(text, syntax->offset), "not valid JSON: " + syntax->reason, true};
+  return {"", "not valid JSON: " + std::string(message), true};
 }
 
 std::string byte_text(std::uint8_t b) {

@@ -26,7 +26,8 @@
 namespace rs4sim::metron {
 
 struct WireFileIssue {
-  // A JSON syntax error: "LINE:COLUMN" (from 1) when the parser's report locates it, else "".
+  // A JSON syntax error: "LINE:COLUMN" (from 1) of the first break of the grammar, "" for
+  // JSON text protobuf's parser refuses anyway (a number beyond double, say).
   // Otherwise the key: "commands[3]", "reply.fields", "$" for the whole text.
   std::string where;
   std::string reason;

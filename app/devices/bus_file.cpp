@@ -14,6 +14,8 @@
 #include "dp/devices/generic_master_config.h"
 #include "dp/link/memory_bus.h"
 #include "dp/master/master.h"
+#include "json/syntax.h"
+#include "json/value_kind.h"
 #include "rpc/device_target.h"
 #include "rpc/rs4_services.h"
 #include "rpc/tapped_station.h"
@@ -24,7 +26,6 @@
 #include <google/protobuf/util/json_util.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -39,179 +40,7 @@ namespace {
 
 using google::protobuf::Value;
 
-// Where JSON text first breaks the grammar (RFC 8259), to name its line and column:
-// protobuf's parser says what it did not expect but not where in a multi-line file.
-struct JsonSyntax {
-  std::size_t offset = 0;
-  std::string reason;  // empty: the text is JSON
-};
-
-class JsonScanner {
- public:
-  explicit JsonScanner(std::string_view text) : t_(text) {}
-  JsonSyntax check() {
-    space();
-    if (!value(0)) return error_;
-    space();
-    if (i_ < t_.size()) return {i_, "text after the end of the JSON value"};
-    return {};
-  }
-
- private:
-  static constexpr int kMaxDepth = 100;  // protobuf's recursion limit
-
-  bool close() {  // the bracket that ends an object or array
-    ++i_;
-    return true;
-  }
-  bool fail(const std::string& reason) {
-    error_ = {i_, reason};
-    return false;
-  }
-  void space() {
-    while (i_ < t_.size() &&
-           (t_[i_] == ' ' || t_[i_] == '\t' || t_[i_] == '\n' || t_[i_] == '\r')) {
-      ++i_;
-    }
-  }
-  bool literal(std::string_view word) {
-    if (t_.substr(i_, word.size()) != word) return fail("expected a value");
-    i_ += word.size();
-    return true;
-  }
-  bool digits() {
-    const std::size_t start = i_;
-    while (i_ < t_.size() && t_[i_] >= '0' && t_[i_] <= '9') ++i_;
-    return i_ > start || fail("expected a digit");
-  }
-  bool number() {
-    if (t_[i_] == '-') ++i_;
-    if (i_ < t_.size() && t_[i_] == '0') {
-      ++i_;
-    } else if (!digits()) {
-      return false;
-    }
-    if (i_ < t_.size() && t_[i_] == '.') {
-      ++i_;
-      if (!digits()) return false;
-    }
-    if (i_ < t_.size() && (t_[i_] == 'e' || t_[i_] == 'E')) {
-      ++i_;
-      if (i_ < t_.size() && (t_[i_] == '+' || t_[i_] == '-')) ++i_;
-      if (!digits()) return false;
-    }
-    return true;
-  }
-  bool string() {
-    const std::size_t start = i_;
-    ++i_;  // the opening quote
-    while (i_ < t_.size() && t_[i_] != '"') {
-      const auto c = static_cast<unsigned char>(t_[i_]);
-      if (c < 0x20) return fail("a control character in a string (write it escaped)");
-      if (c == '\\') {
-        ++i_;
-        if (i_ >= t_.size()) break;
-        if (t_[i_] == 'u') {
-          for (std::size_t k = 1; k <= 4; ++k) {
-            if (i_ + k >= t_.size() || !std::isxdigit(static_cast<unsigned char>(t_[i_ + k]))) {
-              return fail("expected four hex digits after \\u");
-            }
-          }
-          i_ += 4;
-        } else if (std::string_view("\"\\/bfnrt").find(t_[i_]) == std::string_view::npos) {
-          return fail("an unknown escape in a string");
-        }
-      }
-      ++i_;
-    }
-    if (i_ >= t_.size()) {
-      i_ = start;  // where the string began
-      return fail("a string without its closing quote");
-    }
-    ++i_;
-    return true;
-  }
-  bool value(int depth) {
-    if (depth > kMaxDepth) return fail("nested deeper than 100");
-    if (i_ >= t_.size()) return fail("expected a value, found the end of the text");
-    switch (t_[i_]) {
-      case '{': return object(depth);
-      case '[': return array(depth);
-      case '"': return string();
-      case 't': return literal("true");
-      case 'f': return literal("false");
-      case 'n': return literal("null");
-      default:
-        if (t_[i_] == '-' || (t_[i_] >= '0' && t_[i_] <= '9')) return number();
-        return fail("expected a value");
-    }
-  }
-  bool object(int depth) {
-    ++i_;
-    space();
-    if (i_ < t_.size() && t_[i_] == '}') return close();
-    for (;;) {
-      space();
-      if (i_ >= t_.size() || t_[i_] != '"') return fail("expected a key in double quotes");
-      if (!string()) return false;
-      space();
-      if (i_ >= t_.size() || t_[i_] != ':') return fail("expected ':' after the key");
-      ++i_;
-      space();
-      if (!value(depth + 1)) return false;
-      space();
-      if (i_ < t_.size() && t_[i_] == ',') {
-        ++i_;
-        continue;
-      }
-      if (i_ < t_.size() && t_[i_] == '}') return close();
-      return fail("expected ',' or '}' after an object member");
-    }
-  }
-  bool array(int depth) {
-    ++i_;
-    space();
-    if (i_ < t_.size() && t_[i_] == ']') return close();
-    for (;;) {
-      space();
-      if (!value(depth + 1)) return false;
-      space();
-      if (i_ < t_.size() && t_[i_] == ',') {
-        ++i_;
-        continue;
-      }
-      if (i_ < t_.size() && t_[i_] == ']') return close();
-      return fail("expected ',' or ']' after an array element");
-    }
-  }
-
-  std::string_view t_;
-  std::size_t i_ = 0;
-  JsonSyntax error_;
-};
-
-// "3:17" for a byte offset: line and column (of bytes), both from 1.
-std::string line_column(std::string_view text, std::size_t offset) {
-  offset = std::min(offset, text.size());
-  const auto before = text.substr(0, offset);
-  const auto line = 1 + std::count(before.begin(), before.end(), '\n');
-  const auto nl = before.rfind('\n');
-  const auto column = nl == std::string_view::npos ? offset + 1 : offset - nl;
-  return std::to_string(line) + ":" + std::to_string(column);
-}
-
-// What a JSON value is, for "expected an integer, got a string".
-std::string kind_of(const Value& v) {
-  switch (v.kind_case()) {
-    case Value::kStringValue: return "a string";
-    case Value::kNumberValue: return "a number";
-    case Value::kBoolValue: return "a boolean";
-    case Value::kNullValue: return "null";
-    case Value::kListValue: return "an array";
-    case Value::kStructValue: return "an object";
-    default: return "nothing";
-  }
-}
+using json::kind_of;
 
 class Reader {
  public:
@@ -342,10 +171,9 @@ BusFile parse_bus_file(const std::string& text, const std::string& file, const s
   if (!status.ok()) {
     // file:line:column of the first break of the grammar; protobuf's reason where the text is
     // JSON its parser still refuses (a number beyond double, say).
-    const JsonSyntax syntax = JsonScanner(text).check();
-    if (!syntax.reason.empty()) {
-      throw UsageError(file + ":" + line_column(text, syntax.offset) +
-                       ": not valid JSON: " + syntax.reason);
+    if (const auto syntax = json::first_syntax_error(text)) {
+      throw UsageError(file + ":" + json::line_column(text, syntax->offset) +
+                       ": not valid JSON: " + syntax->reason);
     }
     r.fail("$", "not valid JSON: " + std::string(status.message()));
   }

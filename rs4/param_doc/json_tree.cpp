@@ -1,5 +1,7 @@
 #include "rs4/param_doc/json_tree.h"
 
+#include "json/value_kind.h"
+
 #include <google/protobuf/util/json_util.h>
 
 #include <algorithm>
@@ -9,22 +11,9 @@
 namespace rs4sim::rs4::param_doc::json {
 namespace {
 
-std::string type_name(const Value& v) {
-  switch (v.kind_case()) {
-    case Value::kNullValue: return "null";
-    case Value::kNumberValue: return "a number";
-    case Value::kStringValue: return "a string";
-    case Value::kBoolValue: return "a boolean";
-    case Value::kStructValue: return "an object";
-    case Value::kListValue: return "an array";
-    case Value::KIND_NOT_SET: break;
-  }
-  return "nothing";
-}
-
 [[noreturn]] void wrong_type(const Value& v, const std::string& path, std::string_view expected) {
   refuse(DocumentError::kWrongType, path,
-         "expected " + std::string(expected) + ", found " + type_name(v));
+         "expected " + std::string(expected) + ", found " + rs4sim::json::kind_of(v));
 }
 
 std::string number_text(double d) {

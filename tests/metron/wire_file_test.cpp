@@ -73,11 +73,37 @@ TEST(MetronWireFile, SyntaxErrorHasLineAndColumn) {
   const auto issue = apply_wire_json("{\n  \"frame_start\": 2,\n  \"separator\": x\n}", t);
   ASSERT_TRUE(issue);
   EXPECT_TRUE(issue->syntax);
-  EXPECT_EQ(issue->where, "3:16");  // the x
-  EXPECT_EQ(issue->reason.rfind("not valid JSON: ", 0), 0U) << issue->reason;
+  EXPECT_EQ(issue->where, "3:16");  // the x: line 3 is `  "separator": x`, x its 16th byte
+  EXPECT_EQ(issue->reason, "not valid JSON: expected a value");
+  // The text ends after the 2 (offset 11, 1:12) where ',' or ']' must come.
   const auto unterminated = apply_wire_json("{\"a\": [1, 2", t);
   ASSERT_TRUE(unterminated);
   EXPECT_TRUE(unterminated->syntax);
+  EXPECT_EQ(unterminated->where, "1:12");
+  EXPECT_EQ(unterminated->reason, "not valid JSON: expected ',' or ']' after an array element");
+}
+
+// The same broken line three times: any excerpt of protobuf's message around the first x also
+// occurs around the second, so a search for the excerpt cannot place it; the scanner does.
+TEST(MetronWireFile, SyntaxErrorInRepeatedTextHasTheFirstPosition) {
+  const std::string line = "  \"commands\": [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, x]";
+  // cols 1-2 spaces, 3-13 "commands":, 14 space, 15 [, 16-42 "1, ".."9, ", 43-54 "10, ".."12, ",
+  // 55 the x
+  EXPECT_EQ(issue_of("{\n" + line + ",\n" + line + ",\n" + line + "\n}"),
+            "2:55: not valid JSON: expected a value");
+}
+
+// JSON by the grammar (1e999 is a number there) that protobuf's parser refuses: its message,
+// without a position.
+TEST(MetronWireFile, JsonThatProtobufRefusesHasNoPosition) {
+  WireTable t;
+  const auto issue = apply_wire_json(R"({"frame_start": 1e999})", t);
+  ASSERT_TRUE(issue);
+  EXPECT_TRUE(issue->syntax);
+  EXPECT_EQ(issue->where, "");
+  // protobuf's words (its first line; an excerpt of the text and a caret follow)
+  EXPECT_EQ(issue->reason.substr(0, issue->reason.find('\n')),
+            "not valid JSON: Number exceeds the range of double.");
 }
 
 TEST(MetronWireFile, BadKeysAndValuesNameTheirKey) {
