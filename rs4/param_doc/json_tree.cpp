@@ -1,5 +1,6 @@
 #include "rs4/param_doc/json_tree.h"
 
+#include "json/syntax.h"
 #include "json/value_kind.h"
 
 #include <google/protobuf/util/json_util.h>
@@ -42,6 +43,13 @@ Value parse(std::string_view text) {
   Value root;
   const auto status = google::protobuf::util::JsonStringToMessage(std::string(text), &root, {});
   if (!status.ok()) {
+    // Where the grammar breaks, by line and column (the document is edited by hand); what
+    // protobuf alone refuses (a duplicate key, a number beyond double) in its own words.
+    if (const auto broken = rs4sim::json::first_syntax_error(text)) {
+      refuse(DocumentError::kSyntax, "$",
+             "not valid JSON at " + rs4sim::json::line_column(text, broken->offset) + ": " +
+                 broken->reason);
+    }
     refuse(DocumentError::kSyntax, "$", "not valid JSON: " + std::string(status.message()));
   }
   return root;

@@ -34,9 +34,14 @@ TEST_P(DocumentErrors, NamesPathAndReason) {
 using E = DocumentError;
 
 const Case kSyntaxAndKeys[] = {
-    {"{", E::kSyntax, "$", "not valid JSON"},
-    {"", E::kSyntax, "$", "not valid JSON"},
-    {R"({"format":1} trailing)", E::kSyntax, "$", "before end of input"},
+    {"{", E::kSyntax, "$", "not valid JSON at 1:2: expected a key in double quotes"},
+    {"", E::kSyntax, "$", "not valid JSON at 1:1: expected a value, found the end of the text"},
+    {R"({"format":1} trailing)", E::kSyntax, "$",
+     "not valid JSON at 1:14: text after the end of the JSON value"},
+    // A hand-edited document: the break named by line and column (the comma after "format"
+    // is missing, so line 3 column 3 has a key where ',' or '}' belongs).
+    {"{\n  \"format\": 1\n  \"start_pair\": 2\n}", E::kSyntax, "$",
+     "not valid JSON at 3:3: expected ',' or '}' after an object member"},
     {R"({"format":1,"start_pair":2,"start_pair":3})", E::kSyntax, "$", "Repeated map key"},
     {R"({"format":1,"start_pair":1e400})", E::kSyntax, "$", "range of double"},
     {"[1, 2]", E::kWrongType, "$", "expected an object, found an array"},
