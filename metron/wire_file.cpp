@@ -4,6 +4,7 @@
 // "metron-wire-table-file").
 #include "metron/wire_file.h"
 
+#include "json/path.h"
 #include "json/syntax.h"
 #include "json/value_kind.h"
 
@@ -122,7 +123,7 @@ void read_reply(const Value& v, ReplyLayout& r) {
   if (!v.has_struct_value()) refuse("reply", "expected an object, found " + kind_of(v));
   for (const auto& [key, member] : members(v)) {
     const Value& value = *member;
-    const std::string where = "reply." + key;
+    const std::string where = json::member_path("reply", key);
     if (key == "fields") {
       const auto& l = list_of(value, where);
       r.fields.clear();
@@ -142,7 +143,7 @@ void read_report(const Value& v, ReportLayout& r) {
   if (!v.has_struct_value()) refuse("report", "expected an object, found " + kind_of(v));
   for (const auto& [key, member] : members(v)) {
     const Value& value = *member;
-    const std::string where = "report." + key;
+    const std::string where = json::member_path("report", key);
     if (key == "order") {
       const auto& l = list_of(value, where);
       if (l.values_size() != static_cast<int>(kReportFieldCount)) {
@@ -189,9 +190,10 @@ void read_table(const Value& root, WireTable& t) {
     else if (key == "reply") read_reply(v, t.reply);
     else if (key == "report") read_report(v, t.report);
     else {
-      refuse(key, "unknown key (the wire table takes: frame_start, commands, errors, "
-                  "measurements, all_beams, beam_bits, report_start, report_end, separator, "
-                  "request_char, reply, report)");
+      refuse(json::member_path("", key),
+             "unknown key (the wire table takes: frame_start, commands, errors, measurements, "
+             "all_beams, beam_bits, report_start, report_end, separator, request_char, reply, "
+             "report)");
     }
   }
 }

@@ -28,7 +28,8 @@ namespace rs4sim::metron {
 struct WireFileIssue {
   // A JSON syntax error: "LINE:COLUMN" (from 1) of the first break of the grammar, "" for
   // JSON text protobuf's parser refuses anyway (a number beyond double, say).
-  // Otherwise the key: "commands[3]", "reply.fields", "$" for the whole text.
+  // Otherwise the key: "commands[3]", "reply.fields", "$" for the whole text, a key that is
+  // not a plain word as a JSON string in brackets ("[\"\"]" for the empty key).
   std::string where;
   std::string reason;
   bool syntax = false;

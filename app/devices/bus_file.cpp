@@ -14,6 +14,7 @@
 #include "dp/devices/generic_master_config.h"
 #include "dp/link/memory_bus.h"
 #include "dp/master/master.h"
+#include "json/path.h"
 #include "json/syntax.h"
 #include "json/value_kind.h"
 #include "rpc/device_target.h"
@@ -111,7 +112,7 @@ BusStation read_station(const Reader& r, const Value& v, const std::string& path
   BusStation s;
   s.path = path;
   for (const auto& key : keys) {
-    const std::string at = path + "." + key;
+    const std::string at = json::member_path(path, key);
     if (std::find(std::begin(kByteKeys), std::end(kByteKeys), key) != std::end(kByteKeys)) {
       r.fail(at, "an option of the RS-485 byte devices, which are not DP stations and cannot "
                  "be on a DP bus");
@@ -125,7 +126,7 @@ BusStation read_station(const Reader& r, const Value& v, const std::string& path
   DeviceOptions& o = s.options;
   for (const auto& key : keys) {
     const Value& x = fields.at(key);
-    const std::string at = path + "." + key;
+    const std::string at = json::member_path(path, key);
     if (key == "address") o.address = static_cast<int>(r.integer(x, at, 0, 126));
     if (key == "device") s.device = r.text(x, at);
     if (key == "gsd") o.gsd = r.existing_file(x, at);
@@ -179,7 +180,7 @@ BusFile parse_bus_file(const std::string& text, const std::string& file, const s
   }
   if (!root.has_struct_value()) r.fail("$", "expected an object {\"stations\": [...]}");
   for (const auto& [key, value] : root.struct_value().fields()) {
-    if (key != "stations") r.fail("$." + key, "unknown key (the bus file takes: stations)");
+    if (key != "stations") r.fail(json::member_path("$", key), "unknown key (the bus file takes: stations)");
   }
   const auto it = root.struct_value().fields().find("stations");
   if (it == root.struct_value().fields().end()) r.fail("$", "\"stations\" is missing");

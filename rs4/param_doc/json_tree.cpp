@@ -1,5 +1,6 @@
 #include "rs4/param_doc/json_tree.h"
 
+#include "json/path.h"
 #include "json/syntax.h"
 #include "json/value_kind.h"
 
@@ -56,7 +57,7 @@ Value parse(std::string_view text) {
 }
 
 std::string key_path(const std::string& path, std::string_view key) {
-  return path + "." + std::string(key);
+  return ::rs4sim::json::member_path(path, key);
 }
 
 std::string index_path(const std::string& path, std::size_t index) {

@@ -89,6 +89,9 @@ TEST(BusFile, AnUnknownKeyIsNamedWithTheKeysAStationTakes) {
       << e;
   EXPECT_EQ(refusal(R"({"stations": [{"address": 5, "device": "rs4"}], "master": 2})"),
             "bus.json: $.master: unknown key (the bus file takes: stations)");
+  // A key that is not a plain word is named as a JSON string, never as an empty place.
+  EXPECT_EQ(refusal(R"({"stations": [{"address": 5, "device": "rs4"}], "": 2})"),
+            R"(bus.json: $[""]: unknown key (the bus file takes: stations))");
 }
 
 TEST(BusFile, AnAddressTwiceNamesBothEntries) {

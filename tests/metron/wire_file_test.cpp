@@ -134,6 +134,14 @@ TEST(MetronWireFile, BadKeysAndValuesNameTheirKey) {
   EXPECT_EQ(issue_of(R"({"reply": {"fields": ["start", "crc"]}})"),
             "reply.fields[1]: no reply field \"crc\" (fields: start, node, length, code, data, "
             "checksum)");
+  // A key that is not a plain word is named as a JSON string: the fuzzer found that the empty
+  // key named no place at all.
+  EXPECT_EQ(issue_of(R"({"": 1})"),
+            R"([""]: unknown key (the wire table takes: frame_start, commands, errors, )"
+            "measurements, all_beams, beam_bits, report_start, report_end, separator, "
+            "request_char, reply, report)");
+  EXPECT_EQ(issue_of(R"({"reply": {"a b": 1}})"),
+            R"(reply["a b"]: unknown key (reply takes: fields, length_counts, checksum_covers))");
   EXPECT_EQ(issue_of(R"({"reply": {"order": []}})"),
             "reply.order: unknown key (reply takes: fields, length_counts, checksum_covers)");
   EXPECT_EQ(issue_of(R"({"reply": {"length_counts": ["code", "code"]}})"),
