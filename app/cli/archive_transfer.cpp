@@ -2,10 +2,10 @@
 // storage/archive_file.h's: protobuf binary, or protobuf's JSON mapping.
 #include "app/cli/archive_commands.h"
 #include "app/runtime/author.h"
+#include "app/runtime/whole_file.h"
 #include "storage/archive_file.h"
 #include "storage/request_check.h"
 
-#include <fstream>
 #include <iostream>
 #include <iterator>
 
@@ -27,11 +27,9 @@ bool is_json_format(const ArchiveOptions& o, const char* command) {
 }
 
 std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ArchiveCommandError("cannot read " + path);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw ArchiveCommandError("cannot read " + path);
-  return text;
+  auto file = read_whole_file(path);
+  if (!file) throw ArchiveCommandError("cannot read " + path + ": " + file.error);
+  return std::move(file.bytes);
 }
 
 std::size_t version_count(const storage::Snapshot& s) {

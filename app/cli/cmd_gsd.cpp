@@ -2,6 +2,7 @@
 // data and Chk_Cfg bytes a master needs — for masters that cannot read GSD files.
 // The layout of the user data is documented in docs/gsd.md.
 #include "app/cli/command.h"
+#include "app/runtime/whole_file.h"
 #include "gsd/config.h"
 #include "gsd/device_gsd.h"
 #include "gsd/interp.h"
@@ -12,7 +13,6 @@
 #include <fstream>
 #include <iostream>
 #include <optional>
-#include <sstream>
 
 namespace rs4sim::app {
 namespace {
@@ -132,14 +132,12 @@ int run_prm(const Options& o) {
   const bool builtin = o.gsd_file.empty();
   gsd::Result<gsd::Device> loaded = gsd::Error{};
   if (!builtin) {
-    std::ifstream in(o.gsd_file, std::ios::binary);
-    if (!in) {
-      std::cerr << "rs4sim gsd: cannot read " << o.gsd_file << "\n";
+    const auto file = read_whole_file(o.gsd_file);
+    if (!file) {
+      std::cerr << "rs4sim gsd: cannot read " << o.gsd_file << ": " << file.error << "\n";
       return 1;
     }
-    std::ostringstream text;
-    text << in.rdbuf();
-    loaded = gsd::parse(text.str(), o.gsd_file);
+    loaded = gsd::parse(file.bytes, o.gsd_file);
   }
   const gsd::Result<gsd::Device>& device = builtin ? gsd::rs4sim_device() : loaded;
   if (!device) {

@@ -1,15 +1,14 @@
 #include "app/cli/param_sources.h"
 
 #include "app/cli/archive_support.h"
+#include "app/runtime/whole_file.h"
 #include "rs4/param_doc/parameter_document.h"
 #include "rs4/rs232/rs232_codes.h"
 #include "rs4/scanner/parameter_codec.h"
 
 #include <algorithm>
 #include <cctype>
-#include <fstream>
 #include <iterator>
-#include <sstream>
 #include <vector>
 
 namespace rs4sim::app::param {
@@ -19,11 +18,9 @@ using rs4::scanner::ParameterSet;
 using rs4::scanner::Password;
 
 std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ParamCommandError("cannot read " + path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  auto file = read_whole_file(path);
+  if (!file) throw ParamCommandError("cannot read " + path + ": " + file.error);
+  return std::move(file.bytes);
 }
 
 bool all_zero(const ParameterSet& set) {

@@ -11,6 +11,7 @@
 #include "app/devices/memory_bus_target.h"
 #include "app/runtime/run_options.h"
 #include "app/runtime/usage_error.h"
+#include "app/runtime/whole_file.h"
 #include "dp/devices/generic_master_config.h"
 #include "dp/link/memory_bus.h"
 #include "dp/master/master.h"
@@ -30,7 +31,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <ostream>
 #include <sstream>
@@ -219,11 +219,9 @@ BusFile parse_bus_file(const std::string& text, const std::string& file, const s
 }
 
 BusFile read_bus_file(const std::string& file, const std::string& link_baud) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw UsageError(file + ": cannot read the bus file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return parse_bus_file(s.str(), file, std::filesystem::path(file).parent_path().string(),
+  const auto text = read_whole_file(file);
+  if (!text) throw UsageError(file + ": cannot read the bus file: " + text.error);
+  return parse_bus_file(text.bytes, file, std::filesystem::path(file).parent_path().string(),
                         link_baud);
 }
 

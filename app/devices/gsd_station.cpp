@@ -1,24 +1,21 @@
 #include "app/devices/gsd_station.h"
 
 #include "app/runtime/usage_error.h"
+#include "app/runtime/whole_file.h"
 #include "dp/pdu/set_prm.h"
 #include "dp/time/baud_rate.h"
 #include "gsd/dp_slave_config.h"
 #include "gsd/interp.h"
 
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 
 namespace rs4sim::app {
 namespace {
 
 std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError(path + ": cannot read the GSD file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  auto file = read_whole_file(path);
+  if (!file) throw UsageError(path + ": cannot read the GSD file: " + file.error);
+  return std::move(file.bytes);
 }
 
 const gsd::BaudRate* find_rate(const GsdStationSpec& spec, const std::string& baud) {

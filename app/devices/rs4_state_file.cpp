@@ -1,14 +1,14 @@
 #include "app/devices/rs4_state_file.h"
 
+#include "app/runtime/whole_file.h"
+
 #include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <iterator>
 #include <stdexcept>
 #include <system_error>
 #include <vector>
@@ -65,12 +65,9 @@ Rs4StateFile::Rs4StateFile(std::string path) : path_(std::move(path)) {
     if (ec) throw refused(path_, ec.message());
     return;  // a new unit: the file is made at the first write
   }
-  if (std::filesystem::is_directory(path_, ec)) throw refused(path_, "is a directory");
-  std::ifstream in(path_, std::ios::binary);
-  if (!in) throw refused(path_, std::strerror(errno));
-  const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in),
-                                        std::istreambuf_iterator<char>()};
-  if (in.bad()) throw refused(path_, "cannot be read");
+  const auto file = read_whole_file(path_);
+  if (!file) throw refused(path_, file.error);
+  const std::vector<std::uint8_t> bytes(file.bytes.begin(), file.bytes.end());
   auto state = rs4::device::decode_state(bytes);
   if (!state) throw refused(path_, state.error().message());
   loaded_ = std::move(state).value();

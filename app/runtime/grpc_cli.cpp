@@ -1,35 +1,22 @@
 #include "app/runtime/grpc_cli.h"
 
 #include "app/runtime/usage_error.h"
+#include "app/runtime/whole_file.h"
 #include "rpc/server.h"
 
 #include <CLI/CLI.hpp>
 
-#include <cerrno>
 #include <cstdlib>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace rs4sim::app {
 namespace {
 
 // The whole file; UsageError "OPTION FILE: cannot read: REASON" or "...: the file is empty".
 std::string read_file(const std::string& option, const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    throw UsageError(option + " " + path + ": is a directory, not a file");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw UsageError(option + " " + path + ": cannot read: " + std::strerror(errno));
-  }
-  std::stringstream s;
-  s << in.rdbuf();
-  if (in.bad()) throw UsageError(option + " " + path + ": cannot read: " + std::strerror(errno));
-  if (s.str().empty()) throw UsageError(option + " " + path + ": the file is empty");
-  return s.str();
+  auto file = read_whole_file(path);
+  if (!file) throw UsageError(option + " " + path + ": cannot read: " + file.error);
+  if (file.bytes.empty()) throw UsageError(option + " " + path + ": the file is empty");
+  return std::move(file.bytes);
 }
 
 std::string trimmed(const std::string& text) {

@@ -78,7 +78,7 @@ TEST_F(GrpcCliTest, BadTokenSourcesAreRefusedWithTheReason) {
   EXPECT_NE(refusal({lo, "", "", (dir_ / "none").string()}).find("cannot read: No such file"),
             std::string::npos);
   EXPECT_EQ(refusal({lo, "", "", dir_.string()}),
-            "--grpc-token-file " + dir_.string() + ": is a directory, not a file");
+            "--grpc-token-file " + dir_.string() + ": cannot read: Is a directory");
   EXPECT_EQ(refusal({lo, "", "", ""}, "  "),
             "RS4SIM_GRPC_TOKEN is set but empty: unset it or give a token");
   EXPECT_EQ(refusal({lo, "", "", file("t", "x\n")}, "y"),

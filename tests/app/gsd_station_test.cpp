@@ -155,7 +155,7 @@ TEST(GsdStation, BadInputNamesTheFileLineOrTheModules) {
     (void)load_gsd_station(kCorpus + "/missing.gsd", {}, 5);
     FAIL();
   } catch (const UsageError& e) {
-    EXPECT_EQ(std::string(e.what()), kCorpus + "/missing.gsd: cannot read the GSD file");
+    EXPECT_EQ(std::string(e.what()), kCorpus + "/missing.gsd: cannot read the GSD file: No such file or directory");
   }
   EXPECT_THROW((void)load_gsd_station(kStarter, {}, 126), UsageError);
   std::vector<std::string> warnings;
