@@ -12,7 +12,9 @@
 //   rs4sim run ... --link memory --duration 10     (our master on the in-memory bus,
 //                                                   simulated time)
 //   rs4sim run --device <byte device> --link pty --baud 19200 --blocked 9-13,25-34
-//                                                  (the RS-485 devices: pty, serial, udp)
+//                                                  (the RS-485 devices: pty, serial, udp, and
+//                                                   memory on the simulated clock; echo: no
+//                                                   memory)
 // With --link pty the first line on stdout is the pty's slave path for the DP master (or
 // the byte device's client).
 #include "app/cli/command.h"
