@@ -12,9 +12,33 @@
 
 #include <iostream>
 #include <memory>
+#include <string>
 
 namespace rs4sim::app {
 namespace {
+
+// Why a demo other than the RS4's refuses --grpc/--http, naming the option(s) given. The RS4
+// demo serves the read-only Observation service over its segment (rpc::SegmentTarget). The
+// line demos (gridscan, metron, polaris) script their device on a stream::MemoryLine of their
+// own, with no tap and no event hub, and what shows a line device (its GetState, docs/http.md
+// "The page") lives in the device's service beside SetBlocked, InjectFault and Exchange, each
+// of which would change the frames the demo compares with the bytes it expects.
+// The generic demo's slaves have no service at all. `rs4sim run --device X --link memory`
+// serves each of these devices on the simulated clock.
+std::string api_refusal(const std::string& device, const GrpcCliOptions& api) {
+  const bool grpc = !api.address.empty();
+  const bool http = !api.http.empty();
+  const std::string given = grpc && http ? "--grpc and --http" : grpc ? "--grpc" : "--http";
+  const std::string head = given + ": only the RS4 demo serves the API; the " + device + " demo ";
+  if (device == "generic")
+    return head + "does not (its generic slaves have no service of their own)";
+  const std::string serve =
+      std::string(grpc ? " --grpc HOST:PORT" : "") + (http ? " --http HOST:PORT" : "");
+  return head +
+         "does not (it compares each frame of its device with the bytes it expects, and the "
+         "device's service would let a client change the device under it); rs4sim run --device " +
+         device + " --link memory" + serve + " serves the device on the simulated clock";
+}
 
 const CommandRegistration kDemo(
     "demo", "narrated scenario of a device (RS4/PROFIsafe by default) on the simulated bus",
@@ -47,7 +71,7 @@ const CommandRegistration kDemo(
         }
         checked_archive_path(options->archive);
         if (!options->grpc.empty()) {
-          if (*device != "rs4") throw UsageError("--grpc: only the RS4 demo serves the API");
+          if (*device != "rs4") throw UsageError(api_refusal(*device, options->grpc));
           (void)grpc_server_options(options->grpc);  // unreadable files, missing TLS/token
           options->realtime = true;  // on the simulated clock the demo is over at once
         }

@@ -510,13 +510,16 @@ function drawGsd(st) {
 }
 
 // ---- simulated time -------------------------------------------------------------------------
+// Read at the start and, on the simulated clock, four times a second: whoever moves the time
+// (a script over the API, another page) moves this clock too. True when the run is simulated.
 async function refreshClock(t) {
   try {
     const now = t || await call("rs4sim.v1.SimTime/Now");
-    if (!now.simulated) return;
+    if (!now.simulated) return false;
     $("clock").hidden = false;
     $("clock-now").textContent = (Number(now.nowNs) / 1e9).toFixed(3) + " s";
-  } catch (err) { /* a real-time run or no SimTime service: no clock */ }
+    return true;
+  } catch (err) { return false; /* a real-time run or no SimTime service: no clock */ }
 }
 for (const b of document.querySelectorAll("#clock button")) {
   b.addEventListener("click", async () => {
@@ -612,7 +615,7 @@ async function start() {
     const list = await call("rs4sim.v1.Device/ListDevices");
     for (const d of list.devices || []) station(d.address).kind = d.kind;
   } catch (err) { /* not an RS4 run: the kinds stay unknown */ }
-  refreshClock();
+  if (await refreshClock()) setInterval(refreshClock, 250);
   if (await pollProxy()) setInterval(pollProxy, 500);
   let polled = false;
   if (await pollMaster()) { polled = true; setInterval(pollMaster, 500); }

@@ -7,8 +7,10 @@ clock), brings the RS4 to measuring and loads the page: the station's row says O
 Then violates the protective field through the JSON API (POST
 /api/rs4sim.v1.Device/ViolateField) and advances the clock: the row's data-ossd goes "off",
 the SVG shows the object in the protective field, and the input byte's OSSD bit reads 0.
-Then drops one reply on the bus: the row's data-repeats goes "1". Then a GridScan
-(`run --device gridscan`): its elements drawn, three interrupted through the JSON API.
+Then drops one reply on the bus: the row's data-repeats goes "1". Then the RS-485 devices,
+each in its own `run --device X --link memory` (GridScan, METRON, Polaris): their elements or
+beams drawn, some interrupted through the JSON API (X.SetBlocked), each cell's data-state, the
+device's state in words and the page's clock after the time moved on.
 Then `rs4sim master --archive --http` on UDP with an RS4 of `rs4sim run` beside it: the
 master's page lists the station from the master's own view (BusMaster: data-state
 DataExchange, data-syncs 1), the archive's station and its history (the first sync's upload);
@@ -18,7 +20,8 @@ Before that, a bus file on the simulated bus (`run --bus bus_rs4_gsd.json --link
 the GSD station's address, ident, modules, DP state and online, and the inputs set through
 GsdStations.SetInputs bit by bit in the DOM; off the bus and back.
 The screenshots are the test's artifacts: live_view.png, live_view_gridscan.png,
-live_view_gsd.png and live_view_master.png in the working directory.
+live_view_metron.png, live_view_polaris.png, live_view_gsd.png and live_view_master.png in
+OUTDIR.
 
 Usage: browser_test.py RS4SIM OUTDIR. Exit 77 (skipped) without selenium or chromium.
 """
@@ -76,6 +79,52 @@ def free_udp_port():
     with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
         s.bind(("127.0.0.1", 0))
         return s.getsockname()[1]
+
+
+def line_stage(driver, wait, rs4sim, procs, outdir, kind, address, blocked, pattern, words,
+               screenshot):
+    """`run --device KIND --link memory --http`: the device's cells (one per element or beam)
+    all free, then `blocked` interrupted through the JSON API and the simulated clock moved on:
+    each cell's data-state as `pattern` says ("I" interrupted, "." free, cell 1 first) and,
+    when given, `words` in the device's heading; the page's clock at the time moved on to.
+    Leaves `screenshot` in `outdir`."""
+    proc = subprocess.Popen([rs4sim, "run", "--device", kind, "--link", "memory",
+                             "--http", "127.0.0.1:0"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    procs.append(proc)
+    base = listening(proc)
+    driver.get(base)
+    box = f'#lines .line-device[data-address="{address}"][data-kind="{kind}"]'
+    wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, box + '[data-state="free"] .beam'))
+    cells = len(driver.find_elements(By.CSS_SELECTOR, box + " .beam"))
+    assert cells == len(pattern), (kind, cells, len(pattern))
+    service = {"gridscan": "GridScan", "metron": "Metron", "polaris": "Polaris"}[kind]
+    call(base, f"rs4sim.v1.{service}/SetBlocked", {"address": address, "blocked": blocked})
+    now = call(base, "rs4sim.v1.SimTime/Advance", {"durationMs": 500})
+    wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, box + '[data-state="interrupted"]'))
+    # The page's clock follows time moved by another client (here: this script).
+    clock = f"{int(now['nowNs']) // 1_000_000 / 1000:.3f} s"
+    wait.until(lambda d: d.find_element(By.ID, "clock-now").text == clock)
+    # (the cells are redrawn four times a second: read them in one script)
+    states = wait.until(lambda d: d.execute_script(
+        "const c = document.querySelectorAll(arguments[0] + ' .beam');"
+        "return c.length ? [...c].map((e) => e.dataset.state === 'interrupted' ? 'I' : "
+        "e.dataset.state === 'free' ? '.' : '?').join('') : null;", box))
+    assert states == pattern, (kind, states, pattern)
+    if words is not None:
+        heading = wait.until(lambda d: d.execute_script(
+            "const h = document.querySelector(arguments[0] + ' h3');"
+            "return h && h.textContent.includes(arguments[1]) ? h.textContent : null;",
+            box, words))
+    else:
+        heading = driver.execute_script(
+            "return document.querySelector(arguments[0] + ' h3').textContent;", box)
+    driver.execute_script("document.getElementById('lines-panel').scrollIntoView()")
+    shot = os.path.join(outdir, screenshot)
+    driver.save_screenshot(shot)
+    print(f"ok: {kind} {len(pattern)} cells, {states}; {heading!r}; screenshot {shot}")
+    proc.terminate()  # done with it (main's cleanup checks how it ended)
+    proc.wait(timeout=10)
 
 
 def main():
@@ -141,30 +190,21 @@ def main():
         print(f"ok: OSSD off in the DOM, {hits} contour points in the protective field, "
               f"one repeat counted; screenshot {shot}")
 
-        # A GridScan on the simulated line: its elements drawn, three interrupted through the
-        # JSON API (GridScan.SetBlocked), the others free.
-        grid = subprocess.Popen([rs4sim, "run", "--device", "gridscan", "--link", "memory",
-                                 "--http", "127.0.0.1:0"],
-                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-        procs.append(grid)
-        base = listening(grid)
-        driver.get(base)
-        box = '#lines .line-device[data-address="0"][data-kind="gridscan"]'
-        wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, box + '[data-state="free"] .beam'))
-        elements = call(base, "rs4sim.v1.GridScan/GetState", {"address": 0})["elements"]
-        cells = len(driver.find_elements(By.CSS_SELECTOR, box + " .beam"))
-        assert cells == elements, (cells, elements)
-        call(base, "rs4sim.v1.GridScan/SetBlocked", {"address": 0, "blocked": [3, 4, 5]})
-        call(base, "rs4sim.v1.SimTime/Advance", {"durationMs": 100})
-        wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, box + '[data-state="interrupted"]'))
-        states = wait.until(lambda d: d.execute_script(
-            "const c = document.querySelectorAll(arguments[0] + ' .beam');"
-            "return c.length ? [...c].slice(0, 7).map((e) => e.dataset.state) : null;", box))
-        assert states == ["free", "free", "interrupted", "interrupted", "interrupted", "free",
-                          "free"], states
-        shot = os.path.join(outdir, "live_view_gridscan.png")
-        driver.save_screenshot(shot)
-        print(f"ok: {elements} GridScan elements drawn, 3..5 interrupted; screenshot {shot}")
+        # The RS-485 devices on the simulated line, each from `run --device X --link memory`:
+        # its cells drawn, some interrupted through the JSON API (X.SetBlocked), the others
+        # free, the device's state in words. Each pattern is cell 1 first, "I" interrupted.
+        # GridScan/Pro SI RC: 22 elements, 3..5 blocked.
+        line_stage(driver, wait, rs4sim, procs, outdir, "gridscan", 0, [3, 4, 5],
+                   "..III" + "." * 17, None, "live_view_gridscan.png")
+        # METRON Receiver: 24 beams, 9..13 blocked: both OSSDs off, and the measurements
+        # first 9, last 13, count 5 (#10) [METRON manual "Slave line mode"].
+        line_stage(driver, wait, rs4sim, procs, outdir, "metron", 0, [9, 10, 11, 12, 13],
+                   "." * 8 + "IIIII" + "." * 11, "OSSD off, synchronised, 5 interrupted (9–13)",
+                   "live_view_metron.png")
+        # Polaris PL10: 16 beams, 3..5 and 10..11 blocked: PN1 (an object) and PN2 (two
+        # objects) on [Polaris manual §3].
+        line_stage(driver, wait, rs4sim, procs, outdir, "polaris", 1, [3, 4, 5, 10, 11],
+                   "..III....II.....", "PL10 485MB, PN1 on, PN2 on", "live_view_polaris.png")
 
         # A bus from one file on the simulated bus: the RS4 at 4, a GSD station at 5
         # (modular_dpv1.gsd: "DI 8" 1 input byte, "AI 2" 4 input bytes, "DO 16 consistent" 2
@@ -202,8 +242,11 @@ def main():
             "return c.length === 8 ? [...c].map((e) => e.dataset.bit + ':' + e.textContent) : null;",
             gsd))
         assert bits == ["7:1", "6:0", "5:1", "4:0", "3:0", "2:1", "1:0", "0:1"], bits  # 0xA5
-        outputs = driver.find_element(
-            By.CSS_SELECTOR, gsd + ' .gsd-module[data-slot="2"]').get_attribute("data-outputs")
+        # (the station is redrawn after each of its events: read the attribute in one script,
+        # not through an element that may be gone by the time it is asked)
+        outputs = wait.until(lambda d: d.execute_script(
+            "const m = document.querySelector(arguments[0] + ' .gsd-module[data-slot=\"2\"]');"
+            "return m ? m.dataset.outputs : null;", gsd))
         assert outputs == "00 00", outputs  # our master writes zeros
         call(base, "rs4sim.v1.GsdStations/SetOnline", {"address": 5, "online": False})
         call(base, "rs4sim.v1.SimTime/Advance", {"durationMs": 300})
