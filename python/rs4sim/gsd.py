@@ -8,6 +8,12 @@
     gsd.outputs(5, 2)                  # what the master wrote to the module in slot 2
     gsd.set_online(5, False)           # off the bus; True puts it back
 
+On the simulated bus (`--link memory`) the clock and the bus faults:
+
+    gsd.inject_bus_fault(5, "DROP", "FROM_STATION", count=1)  # the station's next reply lost
+    gsd.advance(0.05)                  # 50 ms on the simulated clock: the master repeats
+    gsd.clear_bus_faults()
+
 The master side (rs4sim.v1.GsdMaster): `rs4sim master --gsd-slave 5:FILE --module 5:NAME ...
 --grpc 127.0.0.1:0`.
 
@@ -30,6 +36,7 @@ class GsdStations(_Client):
         self.channel = open_channel(address, root_certificates, token, timeout)
         self.stub = gsd_grpc.GsdStationsStub(self.channel)
         self.observation = pb_grpc.ObservationStub(self.channel)
+        self.time = pb_grpc.SimTimeStub(self.channel)
 
     def stations(self):
         return list(self.stub.ListStations(pb.Empty()).stations)
@@ -60,6 +67,38 @@ class GsdStations(_Client):
         alarm_type = gsd_pb.GsdAlarmType.Value("GSD_ALARM_TYPE_" + kind.upper())
         self.stub.RaiseAlarm(gsd_pb.RaiseGsdAlarmRequest(address=address, type=alarm_type,
                                                          slot=slot, user_data=bytes(user_data)))
+
+    def link_timing(self, address):
+        """The station's replies on a real line (pty, serial, udp; None on the in-memory bus),
+        as Rs4.link_timing: replies, late (not sent, past --tsl), p50_ns/p99_ns/max_ns/mean_ns
+        and the histogram (upper_ns, count)."""
+        station = self.station(address)
+        return station.link_timing if station.HasField("link_timing") else None
+
+    # ---- the simulated bus (rs4sim run --gsd FILE --link memory --grpc) ------------------
+    def now(self):
+        """The run's clock in seconds (SimTime.Now)."""
+        return self.time.Now(pb.Empty()).now_ns / 1e9
+
+    def advance(self, seconds):
+        """Moves the simulated clock (SimTime.Advance); returns the new time in seconds."""
+        return self.time.Advance(pb.AdvanceRequest(duration_ms=int(seconds * 1000))).now_ns / 1e9
+
+    def inject_bus_fault(self, address, kind, direction, count=1, delay_ms=0, bit=0):
+        """GsdStations.InjectBusFault (the rules of Faults.InjectBusFault): kind "DROP",
+        "CORRUPT" (bit: the bit flipped, modulo the frame's length) or "DELAY" (delay_ms
+        1..10000); direction "TO_STATION" (the master's requests) or "FROM_STATION" (the
+        station's replies); the next `count` (1..1000000) telegrams. Returns the fault id. The
+        simulated bus only: a real link refuses with FAILED_PRECONDITION."""
+        return self.stub.InjectBusFault(pb.BusFaultRequest(
+            address=address, kind=pb.BusFaultKind.Value("BUS_FAULT_KIND_" + kind.upper()),
+            direction=pb.Direction.Value("DIRECTION_" + direction.upper()), count=count,
+            delay_ms=delay_ms, bit=bit)).fault_id
+
+    def clear_bus_faults(self):
+        """GsdStations.ClearBusFaults: every bus fault of the run's simulated bus ends (those
+        injected for its other stations too)."""
+        self.stub.ClearBusFaults(pb.Empty())
 
     def events(self, stations=(), telegrams=False):
         """Observation.StreamEvents for these stations (all: empty), as Rs4.events: the

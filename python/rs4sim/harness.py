@@ -18,6 +18,7 @@ With TLS and a bearer token (`--grpc-tls-cert`, `--grpc-tls-key`, `--grpc-token-
 """
 
 import json
+import warnings
 
 import grpc
 
@@ -321,9 +322,9 @@ class _LineDevice(_Client):
     _fault_request = None
     _delay_field = ""
 
-    def __init__(self, address, device_address, timeout=10.0):
-        self.channel = grpc.insecure_channel(address)
-        grpc.channel_ready_future(self.channel).result(timeout=timeout)
+    def __init__(self, address, device_address, timeout=10.0, root_certificates=None,
+                 token=None):
+        self.channel = open_channel(address, root_certificates, token, timeout)
         self.address = device_address
         self.service = self._stub(self.channel)
         self.observation = pb_grpc.ObservationStub(self.channel)
@@ -336,15 +337,25 @@ class _LineDevice(_Client):
         self.service.SetBlocked(dev_pb.SetBlockedRequest(address=self.address,
                                                          blocked=list(numbers)))
 
-    def _fault(self, call, name, delay_ms):
+    def _fault(self, call, name, late_ms):
         fields = {"address": self.address,
                   "fault": getattr(dev_pb, self._fault_enum + name)}
-        if delay_ms:
-            fields[self._delay_field] = delay_ms
+        if late_ms:
+            fields[self._delay_field] = late_ms
         call(self._fault_request(**fields))
 
-    def inject_fault(self, name, delay_ms=0):
-        self._fault(self.service.InjectFault, name, delay_ms)
+    def inject_fault(self, name, late_ms=0, *, delay_ms=None):
+        """name: the device's fault (its class lists them); late_ms: LATE's delay, 1..10000 ms
+        (the request's late_ms). delay_ms is late_ms's old name: still accepted, with a
+        DeprecationWarning; both at once must agree (TypeError otherwise)."""
+        if delay_ms is not None:
+            warnings.warn("inject_fault(delay_ms=...) is deprecated: use late_ms=...",
+                          DeprecationWarning, stacklevel=2)
+            if late_ms and late_ms != delay_ms:
+                raise TypeError(f"inject_fault: delay_ms={delay_ms} (late_ms's deprecated name) "
+                                f"differs from late_ms={late_ms}; give late_ms only")
+            late_ms = delay_ms
+        self._fault(self.service.InjectFault, name, late_ms)
 
     def clear_fault(self, name):
         self._fault(self.service.ClearFault, name, 0)
@@ -386,8 +397,9 @@ class GridScan(_LineDevice):
     _fault_request = dev_pb.GridScanFaultRequest
     _delay_field = "late_ms"
 
-    def __init__(self, address, device_address=0, timeout=10.0):
-        super().__init__(address, device_address, timeout)
+    def __init__(self, address, device_address=0, timeout=10.0, root_certificates=None,
+                 token=None):
+        super().__init__(address, device_address, timeout, root_certificates, token)
 
     def set_door(self, position):
         self.service.SetDoor(dev_pb.SetDoorRequest(address=self.address, position=position))
@@ -422,8 +434,9 @@ class Metron(_LineDevice):
     _fault_request = dev_pb.MetronFaultRequest
     _delay_field = "late_ms"
 
-    def __init__(self, address, device_address=0, timeout=10.0):
-        super().__init__(address, device_address, timeout)
+    def __init__(self, address, device_address=0, timeout=10.0, root_certificates=None,
+                 token=None):
+        super().__init__(address, device_address, timeout, root_certificates, token)
 
     def set_synchronised(self, synchronised):
         self.service.SetSynchronised(dev_pb.SetSynchronisedRequest(
@@ -441,8 +454,9 @@ class Polaris(_LineDevice):
     _fault_request = dev_pb.PolarisFaultRequest
     _delay_field = "late_ms"
 
-    def __init__(self, address, device_address=1, timeout=10.0):
-        super().__init__(address, device_address, timeout)
+    def __init__(self, address, device_address=1, timeout=10.0, root_certificates=None,
+                 token=None):
+        super().__init__(address, device_address, timeout, root_certificates, token)
 
     def calibrate(self):
         """Starts auto-calibration as the autocal input does: 0.4 s per beam, data reads get

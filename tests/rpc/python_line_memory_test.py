@@ -2,9 +2,12 @@
 the devices on the simulated clock, no pty. The known answers are the manuals' frames as
 fixed bytes: the GridScan's power-up messages and the last step of the communication test of
 [GridScan manual §10.3]; the Polaris's P7 [Polaris manual §8.2.3] with the beams of its
-example (9-13, 25-34 of 40). Wire time at 115200 8N1: 10 bits a character.
+example (9-13, 25-34 of 40). Wire time at 115200 8N1: 10 bits a character. The LATE fault
+through inject_fault(late_ms=...) and its deprecated alias delay_ms=... (a DeprecationWarning):
+the Polaris's reply leaves exactly that much later on the simulated clock.
 Usage: python_line_memory_test.py RS4SIM REPO   (exit 77 = skipped: no python3-grpcio)"""
 import sys
+import warnings
 
 try:
     import grpc
@@ -122,6 +125,52 @@ def polaris():
             check(not x.answered and x.now_ns - x.sent_ns == 50_000_000, f"broadcast {x}")
             before = p.now_ns()
             check(p.advance(250) == before + 250_000_000, "SimTime.Advance")
+            # LATE: the same P7 reply, late_ms later after the request's arrival. An answer
+            # leaves at the end of the scan in progress (docs/polaris.md), so the wait depends
+            # on where in its scan a request ends: each timed request is sent right after an
+            # on-time reply (which began at a scan's end and is as long), in the same phase.
+            p.exchange(request)
+            x = p.exchange(request)
+            on_time = x.reply_start_ns - x.arrived_ns
+            y = p.exchange(request)
+            check(y.sent_ns == x.reply_end_ns and y.reply_start_ns - y.arrived_ns == on_time,
+                  f"the same phase gives the same wait: {y}")
+            p.inject_fault("LATE", late_ms=40)
+            check(p.state().late_ms == 40, f"late_ms {p.state().late_ms}")
+            x = p.exchange(request)
+            check(x.answered and x.reply_start_ns - x.arrived_ns == on_time + 40_000_000,
+                  f"40 ms late: {x.reply_start_ns - x.arrived_ns} vs {on_time}")
+            p.clear_fault("LATE")
+            check(p.state().late_ms == 0, "LATE cleared")
+            p.exchange(request)  # on time again: the next one starts in the same phase
+            # delay_ms, late_ms's old name: the same request, with a DeprecationWarning.
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always")
+                p.inject_fault("LATE", delay_ms=25)
+            check([w.category for w in caught] == [DeprecationWarning], f"warnings {caught}")
+            check("late_ms" in str(caught[0].message), str(caught[0].message))
+            check(caught[0].filename == __file__, f"warned at {caught[0].filename}")
+            check(p.state().late_ms == 25, f"delay_ms=25 gave late_ms {p.state().late_ms}")
+            x = p.exchange(request)
+            check(x.reply_start_ns - x.arrived_ns == on_time + 25_000_000, "25 ms late")
+            # Both names at once must agree; nothing is sent when they do not.
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", DeprecationWarning)
+                try:
+                    p.inject_fault("LATE", late_ms=30, delay_ms=31)
+                    check(False, "late_ms=30 with delay_ms=31 accepted")
+                except TypeError as e:
+                    check("give late_ms only" in str(e), str(e))
+                p.inject_fault("LATE", late_ms=30, delay_ms=30)
+            check(p.state().late_ms == 30, f"late_ms {p.state().late_ms}")
+            # The service's own range check, the field named.
+            try:
+                p.inject_fault("LATE", late_ms=10001)
+                check(False, "late_ms 10001 accepted")
+            except grpc.RpcError as e:
+                check(e.code() == grpc.StatusCode.INVALID_ARGUMENT, f"code {e.code()}")
+                check(error_details(e)[1] == [("late_ms", "10001 ms outside 1..10000")],
+                      f"details {error_details(e)}")
     finally:
         proc.stop()
 

@@ -2,7 +2,8 @@
 python3-grpcio (the rs4sim package): the test certificate of tests/rpc/data as the
 client's root, the token of its token.txt; the right token answers (a service, health,
 reflection), a wrong or missing one is UNAUTHENTICATED with its message, a plaintext client
-fails; then `--grpc 127.0.0.1:0` with only RS4SIM_GRPC_TOKEN (no TLS, local credentials).
+fails; then `--grpc 127.0.0.1:0` with only RS4SIM_GRPC_TOKEN (no TLS, local credentials); a
+line device's client (Polaris) over the same TLS and token as Rs4 (open_channel).
 Usage: python_tls_test.py RS4SIM REPO   (exit 77 = skipped: no python3-grpcio)"""
 import json
 import os
@@ -20,7 +21,7 @@ except ImportError:
     sys.exit(77)
 
 rs4sim, repo = sys.argv[1], sys.argv[2]
-from rs4sim import Rs4, open_channel  # noqa: E402
+from rs4sim import Polaris, Rs4, open_channel  # noqa: E402
 
 data = os.path.join(repo, "tests", "rpc", "data")
 root = open(os.path.join(data, "localhost.crt"), "rb").read()
@@ -93,6 +94,28 @@ try:
     assert ok == b"\x08\x01", ok.hex()
     unauthenticated(lambda: plain.unary_unary("/grpc.health.v1.Health/Check")(b""),
                     "missing authorization metadata")
+finally:
+    stop(proc)
+
+# A line device behind TLS and the token: its client opens the channel as Rs4 does.
+tls = ["--grpc", "0.0.0.0:0", "--grpc-tls-cert", os.path.join(data, "localhost.crt"),
+       "--grpc-tls-key", os.path.join(data, "localhost.key"),
+       "--grpc-token-file", os.path.join(data, "token.txt")]
+proc, port = serve(["--device", "polaris", "--address", "1"] + tls, env)
+try:
+    address = f"127.0.0.1:{port}"
+    with Polaris(address, 1, root_certificates=root, token=token) as polaris:
+        assert polaris.state().address == 1
+        polaris.inject_fault("LATE", late_ms=40)
+        assert polaris.state().late_ms == 40
+    with Polaris(address, 1, root_certificates=root, token=token + "x") as wrong:
+        unauthenticated(wrong.state, "wrong bearer token")
+    # No TLS on the client: the channel never becomes ready (the old insecure channel's fate).
+    try:
+        Polaris(address, 1, timeout=2)
+        raise AssertionError("a plaintext line-device client connected to the TLS server")
+    except grpc.FutureTimeoutError:
+        pass
 finally:
     stop(proc)
 

@@ -40,6 +40,25 @@ std::string bad_field(const grpc::Status& status) {
 
 std::string bytes(const Bytes& b) { return {b.begin(), b.end()}; }
 
+// "TYPE subject: description" of a FAILED_PRECONDITION's google.rpc.PreconditionFailure.
+std::string precondition(const grpc::Status& status) {
+  google::rpc::Status rich;
+  if (!rich.ParseFromString(status.error_details()) || rich.details_size() != 1) return "?";
+  google::rpc::PreconditionFailure failure;
+  if (!rich.details(0).UnpackTo(&failure) || failure.violations_size() != 1) return "?";
+  const auto& v = failure.violations(0);
+  return v.type() + " " + v.subject() + ": " + v.description();
+}
+
+// One telegram on the simulated bus as an observer saw it (dp::link::BusEvent, copied out).
+struct Seen {
+  dp::TimePoint time;
+  std::uint8_t from = 0;
+  std::optional<std::uint8_t> to;
+  Bytes wire;
+  dp::link::Fate fate = dp::link::Fate::kDelivered;
+};
+
 class RpcGsdTest : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -223,24 +242,158 @@ TEST_F(RpcGsdTest, DiagnosisWithinMaxDiagDataLen) {
             "ones");
 }
 
+// A DROP of the station's next reply acts on the simulated bus, and only when its clock moves:
+// the bus loses exactly that one reply (station 5's `dropped`), our master's slot time expires
+// and it repeats the very same request (same bytes, so the same FCB) once
+// ([IEC 61158-4-3 FCB/FCV]); the repeat is answered, so no no-answer and the station stays in
+// data exchange ([IEC 61158-6-3 slave supervision]). A fault that were a no-op leaves every
+// counter as it was. Then the refusals of the Faults service's rules, and ClearBusFaults ends a
+// fault that has telegrams left.
 TEST_F(RpcGsdTest, BusFaultsByTheFaultsServiceRules) {
+  run_for(500ms);
+  ASSERT_TRUE(master_exchanges());
+  // Shared with the observer, which stays on the bus for the rest of the fixture's life.
+  const auto log = std::make_shared<std::vector<Seen>>();
+  const std::vector<Seen>& seen = *log;
+  executor_.run([&] {
+    segment_->bus()->add_observer([log](const dp::link::BusEvent& e) {
+      log->push_back({e.time, e.from, e.to, Bytes(e.wire.begin(), e.wire.end()), e.fate});
+    });
+  });
+  struct Counts {
+    dp::link::StationCounters bus;
+    dp::master::PollCounters poll;
+    std::uint64_t slot_timeouts = 0;
+    std::uint64_t station_exchanges = 0;
+  };
+  const auto counts = [&] {
+    Counts c;
+    executor_.run([&] {
+      c.bus = segment_->bus()->counters(5);
+      c.poll = segment_->master().slave_status(5)->counters;
+      c.slot_timeouts = segment_->master().counters().slot_timeouts;
+    });
+    c.station_exchanges = get(5).data_exchanges();
+    return c;
+  };
+  const Counts before = counts();
+  ASSERT_EQ(before.bus.dropped, 0u);
+  ASSERT_EQ(before.poll.retries, 0u);  // a clean bus: nothing repeated yet
+
   grpc::ClientContext ctx;
   v1::BusFaultRequest in;
   in.set_address(5);
   in.set_kind(v1::BUS_FAULT_KIND_DROP);
   in.set_direction(v1::DIRECTION_FROM_STATION);
-  in.set_count(3);
+  in.set_count(1);
   v1::BusFaultResponse out;
   ASSERT_TRUE(stub_->InjectBusFault(&ctx, in, &out).ok());
   EXPECT_NE(out.fault_id(), 0u);
+  // The clock has not moved: nothing has been dropped yet.
+  EXPECT_EQ(counts().bus.dropped, 0u);
+  EXPECT_TRUE(seen.empty());
+
+  run_for(50ms);  // five poll cycles of 10 ms
+  const Counts after = counts();
+  EXPECT_EQ(after.bus.dropped, 1u);                          // exactly one reply lost
+  EXPECT_EQ(after.poll.retries, before.poll.retries + 1);    // repeated once
+  EXPECT_EQ(after.slot_timeouts, before.slot_timeouts + 1);  // after its slot time
+  EXPECT_EQ(after.poll.no_answer, before.poll.no_answer);    // the repeat was answered
+  EXPECT_EQ(after.poll.left_data_exchange, before.poll.left_data_exchange);
+  EXPECT_TRUE(master_exchanges());
+  EXPECT_GT(after.station_exchanges, before.station_exchanges);  // the station answered on
+
+  // On the wire: the one dropped telegram is station 5's reply to our master; the master's
+  // requests to 5 just before and just after it are the same bytes (the repeat).
+  std::size_t dropped_at = seen.size();
+  for (std::size_t i = 0; i < seen.size(); ++i) {
+    if (seen[i].fate == dp::link::Fate::kDropped) {
+      EXPECT_EQ(dropped_at, seen.size()) << "a second telegram dropped at " << i;
+      dropped_at = i;
+    }
+  }
+  ASSERT_LT(dropped_at, seen.size());
+  ASSERT_TRUE(dropped_at > 0 && dropped_at + 1 < seen.size());
+  const Seen& reply = seen[dropped_at];
+  EXPECT_EQ(reply.from, 5u);
+  EXPECT_EQ(reply.to, std::optional<std::uint8_t>(segment_->master_address()));
+  const Seen& request = seen[dropped_at - 1];
+  const Seen& repeat = seen[dropped_at + 1];
+  EXPECT_EQ(request.from, segment_->master_address());
+  EXPECT_EQ(request.to, std::optional<std::uint8_t>(5));
+  EXPECT_EQ(repeat.from, segment_->master_address());
+  EXPECT_EQ(repeat.to, std::optional<std::uint8_t>(5));
+  EXPECT_EQ(repeat.wire, request.wire);
+  EXPECT_EQ(repeat.fate, dp::link::Fate::kDelivered);
+  EXPECT_GT(repeat.time, reply.time);  // the master waited out its slot time
+
+  // The Faults service's rules: a count of 0 is refused before anything reaches the bus.
   grpc::ClientContext ctx2;
   in.set_count(0);
   const auto bad = stub_->InjectBusFault(&ctx2, in, &out);
   EXPECT_EQ(bad.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
   EXPECT_EQ(bad_field(bad), "count: 0 outside 1..1000000");
+
+  // ClearBusFaults ends a fault with telegrams left: 1000 replies to drop, cleared before the
+  // clock moves, drop none.
   grpc::ClientContext ctx3;
+  in.set_count(1000);
+  ASSERT_TRUE(stub_->InjectBusFault(&ctx3, in, &out).ok());
+  grpc::ClientContext ctx4;
   v1::Empty e;
-  EXPECT_TRUE(stub_->ClearBusFaults(&ctx3, v1::Empty{}, &e).ok());
+  EXPECT_TRUE(stub_->ClearBusFaults(&ctx4, v1::Empty{}, &e).ok());
+  run_for(50ms);
+  EXPECT_EQ(counts().bus.dropped, 1u);
+  EXPECT_TRUE(master_exchanges());
+}
+
+// On a real link (pty, serial, udp) the service has no simulated bus (GsdServiceContext::bus =
+// nullptr): both bus-fault calls answer FAILED_PRECONDITION with the reason; a bad request is
+// still INVALID_ARGUMENT first (the same checks as on the simulated bus).
+TEST_F(RpcGsdTest, BusFaultsOnARealLinkAreRefused) {
+  GsdStationsService real(
+      GsdServiceContext{executor_, {segment_->stations().front().get()}, {}, nullptr});
+  rpc::RpcServer server(rpc::ServerOptions{}, std::vector<grpc::Service*>{&real});
+  const auto stub = v1::GsdStations::NewStub(
+      grpc::CreateChannel(server.address(), grpc::InsecureChannelCredentials()));
+  const std::string reason =
+      "LINK bus faults: this run is on a real link; bus faults need the simulated bus "
+      "(--link memory)";
+  v1::BusFaultRequest in;
+  in.set_address(5);
+  in.set_kind(v1::BUS_FAULT_KIND_DROP);
+  in.set_direction(v1::DIRECTION_FROM_STATION);
+  in.set_count(1);
+  v1::BusFaultResponse out;
+  {
+    grpc::ClientContext ctx;
+    const auto s = stub->InjectBusFault(&ctx, in, &out);
+    EXPECT_EQ(s.error_code(), grpc::StatusCode::FAILED_PRECONDITION) << s.error_message();
+    EXPECT_EQ(precondition(s), reason);
+    EXPECT_EQ(out.fault_id(), 0u);
+  }
+  {
+    grpc::ClientContext ctx;
+    v1::Empty e;
+    const auto s = stub->ClearBusFaults(&ctx, v1::Empty{}, &e);
+    EXPECT_EQ(s.error_code(), grpc::StatusCode::FAILED_PRECONDITION) << s.error_message();
+    EXPECT_EQ(precondition(s), reason);
+  }
+  {
+    grpc::ClientContext ctx;
+    in.set_count(0);
+    const auto s = stub->InjectBusFault(&ctx, in, &out);
+    EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+    EXPECT_EQ(bad_field(s), "count: 0 outside 1..1000000");
+  }
+  {
+    grpc::ClientContext ctx;  // an address no GSD station has: NOT_FOUND, as everywhere
+    in.set_count(1);
+    in.set_address(9);
+    const auto s = stub->InjectBusFault(&ctx, in, &out);
+    EXPECT_EQ(s.error_code(), grpc::StatusCode::NOT_FOUND);
+  }
+  server.shutdown();
 }
 
 // The same service as JSON over HTTP (docs/http.md): the answers are the gRPC answers, inputs set
