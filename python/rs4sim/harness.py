@@ -267,9 +267,8 @@ class Rs4(_Client):
 class Master(_Client):
     """A running `rs4sim master --grpc`: its parameter proxy and the archive it writes."""
 
-    def __init__(self, address, timeout=10.0):
-        self.channel = grpc.insecure_channel(address)
-        grpc.channel_ready_future(self.channel).result(timeout=timeout)
+    def __init__(self, address, timeout=10.0, root_certificates=None, token=None):
+        self.channel = open_channel(address, root_certificates, token, timeout)
         self.proxy = proxy_grpc.ProxyStub(self.channel)
         self.archive = archive_grpc.ArchiveStub(self.channel)
         self.bus_master = pb_grpc.BusMasterStub(self.channel)
