@@ -17,16 +17,20 @@ bool plain_word(std::string_view key) {
 
 }  // namespace
 
-std::string string_literal(std::string_view key) {
+std::string string_literal(std::string_view text) {
   std::string out = "\"";
-  for (const char c : key) {
+  for (const char c : text) {
     const auto u = static_cast<unsigned char>(c);
     if (c == '"' || c == '\\') {
       out += '\\';
       out += c;
-    } else if (u < 0x20 || u == 0x7F) {
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (u < 0x20) {
       char esc[8];
-      std::snprintf(esc, sizeof esc, "\\u%04X", u);
+      std::snprintf(esc, sizeof esc, "\\u%04x", static_cast<unsigned>(u));
       out += esc;
     } else {
       out += c;

@@ -14,8 +14,9 @@ namespace rs4sim::json {
 // alone for a plain word ("frame_start"), or the bracket form ("[\"\"]").
 std::string member_path(std::string_view parent, std::string_view key);
 
-// `key` as a JSON string literal: quotes around, '"' and '\' escaped, control characters and
-// DEL as \u00XX; other bytes (UTF-8 included) as they are.
-std::string string_literal(std::string_view key);
+// `text` as a JSON string literal [RFC 8259 §7]: quotes around, '"' and '\' escaped, newline
+// and tab as \n and \t, the other control characters as \u00xx; every other byte (UTF-8
+// included) as it is.
+std::string string_literal(std::string_view text);
 
 }  // namespace rs4sim::json

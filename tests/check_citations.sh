@@ -14,7 +14,7 @@ outside+='|DESIGN\.md|STYLE(\.md)? habit|CONTRIBUTING-HELPERS|docs/requests'
 # a source tag: [RS4 manual …], [IEC …], [PROFIsafe …], [PROFIBUS GSD spec …], [VPC3+ …],
 # [docs/…] and the other names of docs/references.md
 tag='\[(RS4 manual|IEC [0-9]|PROFIsafe V|PROFIBUS GSD spec|docs/|roboticslibrary/|pyprofibus'
-tag+='|GridScan manual|METRON manual|Polaris manual|Modbus |VPC3|Felser|ELPRO|COM PROFIBUS|CP 5613|profirust|WAGO|Softing|tcpdump|PostgreSQL 15)[^][]*\]'
+tag+='|GridScan manual|METRON manual|Polaris manual|Modbus |VPC3|Felser|ELPRO|COM PROFIBUS|CP 5613|profirust|WAGO|Softing|tcpdump|PostgreSQL 15|RFC [0-9])[^][]*\]'
 
 mapfile -d '' files < <(find . \( -name .git -o -name 'build*' -o -path ./fuzz/corpus \) -prune \
   -o -type f \( -name '*.h' -o -name '*.cpp' -o -name '*.md' -o -name '*.txt' \

@@ -1,30 +1,11 @@
 #include "rs4/report/json_writer.h"
 
-#include <cstdio>
+#include "json/path.h"
+
 
 namespace rs4sim::rs4::report {
 
-std::string json_quote(std::string_view text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    const auto u = static_cast<unsigned char>(c);
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (c == '\n') {
-      out += "\\n";
-    } else if (c == '\t') {
-      out += "\\t";
-    } else if (u < 0x20) {
-      char b[8];
-      std::snprintf(b, sizeof b, "\\u%04x", static_cast<unsigned>(u));
-      out += b;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
+std::string json_quote(std::string_view text) { return ::rs4sim::json::string_literal(text); }
 
 void JsonWriter::newline() {
   if (indent_ == 0) return;

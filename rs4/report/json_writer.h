@@ -11,7 +11,7 @@
 
 namespace rs4sim::rs4::report {
 
-// `text` as a JSON string literal, quotes included.
+// `text` as a JSON string literal, quotes included (json::string_literal).
 std::string json_quote(std::string_view text);
 
 class JsonWriter {

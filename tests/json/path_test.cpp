@@ -29,9 +29,10 @@ TEST(JsonPath, OtherKeysAreBracketedJsonStrings) {
 }
 
 TEST(JsonPath, ControlCharactersAreEscapedSoThePathStaysOneLine) {
-  EXPECT_EQ(string_literal(std::string("a\nb", 3)), R"("a\u000Ab")");
+  EXPECT_EQ(string_literal("a\nb\tc"), R"("a\nb\tc")");
   EXPECT_EQ(string_literal(std::string("\0", 1)), R"("\u0000")");
-  EXPECT_EQ(string_literal("\x7f"), R"("\u007F")");
+  EXPECT_EQ(string_literal("\x1f\r"), R"("\u001f\u000d")");
+  EXPECT_EQ(string_literal("\x7f"), "\"\x7f\"");  // DEL needs no escape [RFC 8259 §7]
   // UTF-8 passes unchanged: "Départ" (0xC3 0xA9 for é).
   EXPECT_EQ(string_literal("D\xC3\xA9part"), "\"D\xC3\xA9part\"");
 }
