@@ -50,8 +50,10 @@ std::vector<std::string> metron_faults(const metron::Faults& f) {
 grpc::Status check_metron_address(std::uint32_t address) {
   if (address == metron::kBroadcast) {
     return invalid_argument("address",
-                            "255 is the broadcast address [METRON manual \"With node\"]; the "
-                            "curtain's is its node (0..254), or 0 without node mode");
+                            std::to_string(metron::kBroadcast) +
+                                " is the broadcast address [METRON manual \"With node\"]; "
+                                "the curtain's is its node (0.." +
+                                std::to_string(metron::kMaxNode) + "), or 0 without node mode");
   }
   return grpc::Status::OK;
 }

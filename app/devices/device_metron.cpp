@@ -34,9 +34,10 @@ metron::Options metron_options(const DeviceOptions& o) {
     m.beams = static_cast<std::uint16_t>(*o.beams);
   }
   if (o.node) {
-    if (*o.node < 0 || *o.node > 254) {
-      throw UsageError("--node " + std::to_string(*o.node) +
-                       ": a node is 0..254 (255 is the broadcast address)");
+    if (*o.node < 0 || *o.node > metron::kMaxNode) {
+      throw UsageError("--node " + std::to_string(*o.node) + ": a node is 0.." +
+                       std::to_string(metron::kMaxNode) + " (" +
+                       std::to_string(metron::kBroadcast) + " is the broadcast address)");
     }
     m.node_enabled = true;
     m.node = static_cast<std::uint8_t>(*o.node);
