@@ -12,12 +12,10 @@ namespace rs4sim::rpc {
 namespace {
 
 using line::check_delay;
-using line::exchange_on;
 using line::numbers;
 using line::on_line;
 using line::on_off;
 using line::ranges;
-using line::receive_on;
 using line::set_last_frame;
 using line::token_of;
 using line::whole_ms;
@@ -59,6 +57,9 @@ grpc::Status check_metron_address(std::uint32_t address) {
 }
 
 }  // namespace
+
+MetronService::MetronService(LineContext context, metron::Device& device)
+    : LineService(context, "METRON", check_metron_address), d_(device) {}
 
 grpc::Status MetronService::GetState(grpc::ServerContext*, const v1::LineDeviceRequest* in,
                                      v1::MetronState* out) {
@@ -187,28 +188,6 @@ grpc::Status MetronService::fault(const v1::MetronFaultRequest& in, bool inject)
         return grpc::Status::OK;
       },
       true);
-}
-
-grpc::Status MetronService::InjectFault(grpc::ServerContext*, const v1::MetronFaultRequest* in,
-                                        v1::Empty*) {
-  return fault(*in, true);
-}
-
-grpc::Status MetronService::ClearFault(grpc::ServerContext*, const v1::MetronFaultRequest* in,
-                                       v1::Empty*) {
-  return fault(*in, false);
-}
-
-grpc::Status MetronService::Exchange(grpc::ServerContext*, const v1::ExchangeRequest* in,
-                                     v1::ExchangeResponse* out) {
-  if (auto bad = check_metron_address(in->address()); !bad.ok()) return bad;
-  return exchange_on(c_, "METRON", *in, *out);
-}
-
-grpc::Status MetronService::Receive(grpc::ServerContext*, const v1::ReceiveRequest* in,
-                                    v1::ReceiveResponse* out) {
-  if (auto bad = check_metron_address(in->address()); !bad.ok()) return bad;
-  return receive_on(c_, "METRON", *in, *out);
 }
 
 std::unique_ptr<Watcher> metron_watcher(std::uint8_t address, const metron::Device& d) {
