@@ -39,6 +39,9 @@ enum class InputType : std::uint8_t {
 };
 
 inline constexpr std::uint8_t kBroadcast = 255;  // [METRON manual "With node"]
+// The highest node number: the address is one byte, and 255 is the broadcast address
+// [METRON manual "With node"].
+inline constexpr std::uint8_t kMaxNode = kBroadcast - 1;
 inline constexpr std::uint8_t kMaxLength = 6;    // the length field's maximum, same place
 inline constexpr std::uint16_t kMaxBeams = 255;  // one data byte numbers a beam (EXTENSION)
 

@@ -12,13 +12,11 @@ namespace rs4sim::rpc {
 namespace {
 
 using line::check_delay;
-using line::exchange_on;
 using line::needs_simulated_line;
 using line::numbers;
 using line::on_line;
 using line::on_off;
 using line::ranges;
-using line::receive_on;
 using line::set_last_frame;
 using line::token_of;
 using line::whole_ms;
@@ -44,6 +42,9 @@ std::vector<std::string> gridscan_faults(const gridscan::Device& d) {
 }
 
 }  // namespace
+
+GridScanService::GridScanService(LineContext context, gridscan::Device& device)
+    : LineService(context, "GridScan", nullptr), d_(device) {}
 
 grpc::Status GridScanService::GetState(grpc::ServerContext*, const v1::LineDeviceRequest* in,
                                        v1::GridScanState* out) {
@@ -208,16 +209,6 @@ grpc::Status GridScanService::fault(const v1::GridScanFaultRequest& in, bool inj
       true);
 }
 
-grpc::Status GridScanService::InjectFault(grpc::ServerContext*, const v1::GridScanFaultRequest* in,
-                                          v1::Empty*) {
-  return fault(*in, true);
-}
-
-grpc::Status GridScanService::ClearFault(grpc::ServerContext*, const v1::GridScanFaultRequest* in,
-                                         v1::Empty*) {
-  return fault(*in, false);
-}
-
 grpc::Status GridScanService::PowerCycle(grpc::ServerContext*, const v1::PowerCycleRequest* in,
                                          v1::Empty*) {
   constexpr std::uint32_t kMaxOffMs = 3'600'000;
@@ -248,16 +239,6 @@ grpc::Status GridScanService::SetPower(grpc::ServerContext*, const v1::SetPowerR
         return grpc::Status::OK;
       },
       true);
-}
-
-grpc::Status GridScanService::Exchange(grpc::ServerContext*, const v1::ExchangeRequest* in,
-                                       v1::ExchangeResponse* out) {
-  return exchange_on(c_, "GridScan", *in, *out);
-}
-
-grpc::Status GridScanService::Receive(grpc::ServerContext*, const v1::ReceiveRequest* in,
-                                      v1::ReceiveResponse* out) {
-  return receive_on(c_, "GridScan", *in, *out);
 }
 
 std::unique_ptr<Watcher> gridscan_watcher(std::uint8_t address, const gridscan::Device& d) {

@@ -14,9 +14,11 @@
 
 namespace rs4sim::rpc {
 
-class GridScanService final : public v1::GridScan::Service {
+// InjectFault, ClearFault, Exchange and Receive: line::LineService.
+class GridScanService final
+    : public line::LineService<v1::GridScan::Service, v1::GridScanFaultRequest> {
  public:
-  GridScanService(LineContext context, gridscan::Device& device) : c_(context), d_(device) {}
+  GridScanService(LineContext context, gridscan::Device& device);
   grpc::Status GetState(grpc::ServerContext*, const v1::LineDeviceRequest* in,
                         v1::GridScanState* out) override;
   grpc::Status SetDoor(grpc::ServerContext*, const v1::SetDoorRequest* in, v1::Empty*) override;
@@ -24,21 +26,12 @@ class GridScanService final : public v1::GridScan::Service {
                           v1::Empty*) override;
   grpc::Status SetSoiling(grpc::ServerContext*, const v1::SetSoilingRequest* in,
                           v1::Empty*) override;
-  grpc::Status InjectFault(grpc::ServerContext*, const v1::GridScanFaultRequest* in,
-                           v1::Empty*) override;
-  grpc::Status ClearFault(grpc::ServerContext*, const v1::GridScanFaultRequest* in,
-                          v1::Empty*) override;
   grpc::Status PowerCycle(grpc::ServerContext*, const v1::PowerCycleRequest* in,
                           v1::Empty*) override;
   grpc::Status SetPower(grpc::ServerContext*, const v1::SetPowerRequest* in, v1::Empty*) override;
-  grpc::Status Exchange(grpc::ServerContext*, const v1::ExchangeRequest* in,
-                        v1::ExchangeResponse* out) override;
-  grpc::Status Receive(grpc::ServerContext*, const v1::ReceiveRequest* in,
-                       v1::ReceiveResponse* out) override;
 
  private:
-  grpc::Status fault(const v1::GridScanFaultRequest& in, bool inject);
-  LineContext c_;
+  grpc::Status fault(const v1::GridScanFaultRequest& in, bool inject) override;
   gridscan::Device& d_;
 };
 

@@ -1,7 +1,8 @@
 #pragma once
 // What the services of the RS-485 devices share (gridscan_service.h, metron_service.h,
 // polaris_service.h): the call's context, the address check and the run on the loop, the
-// checks of the common request fields, and Exchange/Receive on the simulated line.
+// checks of the common request fields, Exchange/Receive on the simulated line, and the calls
+// every one of them answers alike (line::LineService).
 
 #include "dp/time/clock.h"
 #include "rpc/event_hub.h"
@@ -17,8 +18,13 @@
 #include <functional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
+
+namespace grpc {
+class ServerContext;
+}
 
 namespace rs4sim::rpc {
 
@@ -75,6 +81,54 @@ grpc::Status exchange_on(const LineContext& c, const std::string& kind,
                          const v1::ExchangeRequest& in, v1::ExchangeResponse& out);
 grpc::Status receive_on(const LineContext& c, const std::string& kind, const v1::ReceiveRequest& in,
                         v1::ReceiveResponse& out);
+
+// The part of a line service that is the same for the three devices, over `Base` (the
+// generated v1::GridScan::Service, v1::Metron::Service, v1::Polaris::Service) whose
+// InjectFault and ClearFault take a `FaultRequest`: InjectFault and ClearFault run the
+// device's fault(request, inject); Exchange and Receive check the address by the device's
+// rule, then run exchange_on / receive_on. The device's service adds its own calls.
+template <typename Base, typename FaultRequest>
+class LineService : public Base {
+ public:
+  // Refuses an address the device can never have, before on_line's own check (the METRON's
+  // broadcast, an address beyond Modbus's range), else OK. nullptr: on_line's check alone.
+  using AddressCheck = grpc::Status (*)(std::uint32_t address);
+
+  grpc::Status InjectFault(grpc::ServerContext*, const FaultRequest* in, v1::Empty*) final {
+    return fault(*in, true);
+  }
+  grpc::Status ClearFault(grpc::ServerContext*, const FaultRequest* in, v1::Empty*) final {
+    return fault(*in, false);
+  }
+  grpc::Status Exchange(grpc::ServerContext*, const v1::ExchangeRequest* in,
+                        v1::ExchangeResponse* out) final {
+    if (auto bad = check_address(in->address()); !bad.ok()) return bad;
+    return exchange_on(c_, kind_, *in, *out);
+  }
+  grpc::Status Receive(grpc::ServerContext*, const v1::ReceiveRequest* in,
+                       v1::ReceiveResponse* out) final {
+    if (auto bad = check_address(in->address()); !bad.ok()) return bad;
+    return receive_on(c_, kind_, *in, *out);
+  }
+
+ protected:
+  // `kind` names the device in the messages ("GridScan", "METRON", "Polaris").
+  LineService(LineContext context, std::string kind, AddressCheck check)
+      : c_(context), kind_(std::move(kind)), check_address_(check) {}
+
+  // InjectFault (`inject`) or ClearFault: the device's checks and its faults.
+  virtual grpc::Status fault(const FaultRequest& in, bool inject) = 0;
+
+  LineContext c_;
+
+ private:
+  [[nodiscard]] grpc::Status check_address(std::uint32_t address) const {
+    return check_address_ == nullptr ? grpc::Status::OK : check_address_(address);
+  }
+
+  std::string kind_;
+  AddressCheck check_address_;
+};
 
 }  // namespace line
 }  // namespace rs4sim::rpc

@@ -12,12 +12,10 @@ namespace rs4sim::rpc {
 namespace {
 
 using line::check_delay;
-using line::exchange_on;
 using line::numbers;
 using line::on_line;
 using line::on_off;
 using line::ranges;
-using line::receive_on;
 using line::set_last_frame;
 using line::token_of;
 using line::whole_ms;
@@ -50,13 +48,18 @@ std::vector<std::string> metron_faults(const metron::Faults& f) {
 grpc::Status check_metron_address(std::uint32_t address) {
   if (address == metron::kBroadcast) {
     return invalid_argument("address",
-                            "255 is the broadcast address [METRON manual \"With node\"]; the "
-                            "curtain's is its node (0..254), or 0 without node mode");
+                            std::to_string(metron::kBroadcast) +
+                                " is the broadcast address [METRON manual \"With node\"]; "
+                                "the curtain's is its node (0.." +
+                                std::to_string(metron::kMaxNode) + "), or 0 without node mode");
   }
   return grpc::Status::OK;
 }
 
 }  // namespace
+
+MetronService::MetronService(LineContext context, metron::Device& device)
+    : LineService(context, "METRON", check_metron_address), d_(device) {}
 
 grpc::Status MetronService::GetState(grpc::ServerContext*, const v1::LineDeviceRequest* in,
                                      v1::MetronState* out) {
@@ -185,28 +188,6 @@ grpc::Status MetronService::fault(const v1::MetronFaultRequest& in, bool inject)
         return grpc::Status::OK;
       },
       true);
-}
-
-grpc::Status MetronService::InjectFault(grpc::ServerContext*, const v1::MetronFaultRequest* in,
-                                        v1::Empty*) {
-  return fault(*in, true);
-}
-
-grpc::Status MetronService::ClearFault(grpc::ServerContext*, const v1::MetronFaultRequest* in,
-                                       v1::Empty*) {
-  return fault(*in, false);
-}
-
-grpc::Status MetronService::Exchange(grpc::ServerContext*, const v1::ExchangeRequest* in,
-                                     v1::ExchangeResponse* out) {
-  if (auto bad = check_metron_address(in->address()); !bad.ok()) return bad;
-  return exchange_on(c_, "METRON", *in, *out);
-}
-
-grpc::Status MetronService::Receive(grpc::ServerContext*, const v1::ReceiveRequest* in,
-                                    v1::ReceiveResponse* out) {
-  if (auto bad = check_metron_address(in->address()); !bad.ok()) return bad;
-  return receive_on(c_, "METRON", *in, *out);
 }
 
 std::unique_ptr<Watcher> metron_watcher(std::uint8_t address, const metron::Device& d) {

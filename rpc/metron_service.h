@@ -14,9 +14,10 @@
 
 namespace rs4sim::rpc {
 
-class MetronService final : public v1::Metron::Service {
+// InjectFault, ClearFault, Exchange and Receive: line::LineService.
+class MetronService final : public line::LineService<v1::Metron::Service, v1::MetronFaultRequest> {
  public:
-  MetronService(LineContext context, metron::Device& device) : c_(context), d_(device) {}
+  MetronService(LineContext context, metron::Device& device);
   grpc::Status GetState(grpc::ServerContext*, const v1::LineDeviceRequest* in,
                         v1::MetronState* out) override;
   grpc::Status SetBlocked(grpc::ServerContext*, const v1::SetBlockedRequest* in,
@@ -24,18 +25,9 @@ class MetronService final : public v1::Metron::Service {
   grpc::Status SetSynchronised(grpc::ServerContext*, const v1::SetSynchronisedRequest* in,
                                v1::Empty*) override;
   grpc::Status SetInput(grpc::ServerContext*, const v1::SetInputRequest* in, v1::Empty*) override;
-  grpc::Status InjectFault(grpc::ServerContext*, const v1::MetronFaultRequest* in,
-                           v1::Empty*) override;
-  grpc::Status ClearFault(grpc::ServerContext*, const v1::MetronFaultRequest* in,
-                          v1::Empty*) override;
-  grpc::Status Exchange(grpc::ServerContext*, const v1::ExchangeRequest* in,
-                        v1::ExchangeResponse* out) override;
-  grpc::Status Receive(grpc::ServerContext*, const v1::ReceiveRequest* in,
-                       v1::ReceiveResponse* out) override;
 
  private:
-  grpc::Status fault(const v1::MetronFaultRequest& in, bool inject);
-  LineContext c_;
+  grpc::Status fault(const v1::MetronFaultRequest& in, bool inject) override;
   metron::Device& d_;
 };
 

@@ -13,12 +13,10 @@ namespace rs4sim::rpc {
 namespace {
 
 using line::check_delay;
-using line::exchange_on;
 using line::numbers;
 using line::on_line;
 using line::on_off;
 using line::ranges;
-using line::receive_on;
 using line::set_last_frame;
 using line::whole_ms;
 
@@ -42,6 +40,9 @@ grpc::Status check_modbus_address(std::uint32_t address) {
 }
 
 }  // namespace
+
+PolarisService::PolarisService(LineContext context, polaris::Device& device)
+    : LineService(context, "Polaris", check_modbus_address), d_(device) {}
 
 grpc::Status PolarisService::GetState(grpc::ServerContext*, const v1::LineDeviceRequest* in,
                                       v1::PolarisState* out) {
@@ -145,16 +146,6 @@ grpc::Status PolarisService::fault(const v1::PolarisFaultRequest& in, bool injec
       true);
 }
 
-grpc::Status PolarisService::InjectFault(grpc::ServerContext*, const v1::PolarisFaultRequest* in,
-                                         v1::Empty*) {
-  return fault(*in, true);
-}
-
-grpc::Status PolarisService::ClearFault(grpc::ServerContext*, const v1::PolarisFaultRequest* in,
-                                        v1::Empty*) {
-  return fault(*in, false);
-}
-
 grpc::Status PolarisService::Calibrate(grpc::ServerContext*, const v1::LineDeviceRequest* in,
                                        v1::Empty*) {
   if (auto bad = check_modbus_address(in->address()); !bad.ok()) return bad;
@@ -170,18 +161,6 @@ grpc::Status PolarisService::Calibrate(grpc::ServerContext*, const v1::LineDevic
         return grpc::Status::OK;
       },
       true);
-}
-
-grpc::Status PolarisService::Exchange(grpc::ServerContext*, const v1::ExchangeRequest* in,
-                                      v1::ExchangeResponse* out) {
-  if (auto bad = check_modbus_address(in->address()); !bad.ok()) return bad;
-  return exchange_on(c_, "Polaris", *in, *out);
-}
-
-grpc::Status PolarisService::Receive(grpc::ServerContext*, const v1::ReceiveRequest* in,
-                                     v1::ReceiveResponse* out) {
-  if (auto bad = check_modbus_address(in->address()); !bad.ok()) return bad;
-  return receive_on(c_, "Polaris", *in, *out);
 }
 
 std::unique_ptr<Watcher> polaris_watcher(std::uint8_t address, const polaris::Device& d) {

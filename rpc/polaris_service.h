@@ -14,27 +14,20 @@
 
 namespace rs4sim::rpc {
 
-class PolarisService final : public v1::Polaris::Service {
+// InjectFault, ClearFault, Exchange and Receive: line::LineService.
+class PolarisService final
+    : public line::LineService<v1::Polaris::Service, v1::PolarisFaultRequest> {
  public:
-  PolarisService(LineContext context, polaris::Device& device) : c_(context), d_(device) {}
+  PolarisService(LineContext context, polaris::Device& device);
   grpc::Status GetState(grpc::ServerContext*, const v1::LineDeviceRequest* in,
                         v1::PolarisState* out) override;
   grpc::Status SetBlocked(grpc::ServerContext*, const v1::SetBlockedRequest* in,
                           v1::Empty*) override;
-  grpc::Status InjectFault(grpc::ServerContext*, const v1::PolarisFaultRequest* in,
-                           v1::Empty*) override;
-  grpc::Status ClearFault(grpc::ServerContext*, const v1::PolarisFaultRequest* in,
-                          v1::Empty*) override;
   grpc::Status Calibrate(grpc::ServerContext*, const v1::LineDeviceRequest* in,
                          v1::Empty*) override;
-  grpc::Status Exchange(grpc::ServerContext*, const v1::ExchangeRequest* in,
-                        v1::ExchangeResponse* out) override;
-  grpc::Status Receive(grpc::ServerContext*, const v1::ReceiveRequest* in,
-                       v1::ReceiveResponse* out) override;
 
  private:
-  grpc::Status fault(const v1::PolarisFaultRequest& in, bool inject);
-  LineContext c_;
+  grpc::Status fault(const v1::PolarisFaultRequest& in, bool inject) override;
   polaris::Device& d_;
 };
 

@@ -8,7 +8,7 @@
 //              SimTime, GridScan.Exchange/Receive/PowerCycle, docs/gridscan.md)
 #include "app/devices/device_options.h"
 #include "app/devices/device_registry.h"
-#include "app/devices/line_run.h"
+#include "app/devices/line_segment.h"
 #include "app/runtime/usage_error.h"
 #include "gridscan/device.h"
 #include "rpc/device_target.h"
@@ -20,6 +20,10 @@
 
 namespace rs4sim::app {
 namespace {
+
+// The curtain's address in the API: 0, there is no bus address (the RS485 link is
+// point-to-point, [GridScan manual §9]).
+constexpr std::uint8_t kAddress = 0;
 
 gridscan::Configuration configuration_of(const std::string& mode) {
   if (mode.empty() || mode == "blanking") return gridscan::Configuration::kBlanking;
@@ -92,8 +96,7 @@ class GridScanInstance final : public DeviceInstance {
     print_line_status(out, device_, c);
   }
 
-  // rs4sim.v1.GridScan at address 0 (no bus address: the RS485 link is point-to-point,
-  // [GridScan manual §9]), and Observation for the event stream.
+  // rs4sim.v1.GridScan at kAddress, and Observation for the event stream.
   ServiceList services(const ServiceContext& c) override {
     target_ = std::make_unique<rpc::LineDeviceTarget>(
         "gridscan", rpc::gridscan_watcher(kAddress, device_), c.clock, c.io);
@@ -107,7 +110,6 @@ class GridScanInstance final : public DeviceInstance {
   }
 
  private:
-  static constexpr std::uint8_t kAddress = 0;
   gridscan::Options options_;
   gridscan::Device device_;
   rpc::TappedByteDevice tap_{device_};
@@ -115,34 +117,13 @@ class GridScanInstance final : public DeviceInstance {
 };
 
 // --link memory: the curtain alone on the simulated line (docs/gridscan.md "Simulated clock").
-class GridScanSegment final : public SimulatedSegment {
- public:
-  explicit GridScanSegment(const gridscan::Options& o) : device_(o) {}
-  void run_for(dp::Duration d) override { run_.run_for(d); }
-  [[nodiscard]] std::uint8_t master_address() const override { return kAddress; }
-  void print_summary(std::ostream& out) const override {
-    out << std::endl;
-    print_line_status(out, device_, run_.counters());
-  }
-  [[nodiscard]] bool healthy() const override { return true; }
-  bool tap_line(stream::FrameTap tap) override {
-    run_.set_frame_tap(std::move(tap));
-    return true;
-  }
-  [[nodiscard]] stream::LineProtocol line_protocol() const override {
-    return stream::LineProtocol::kGridScan;
-  }
-  ServiceList services(const ServiceContext& c) override {
-    return run_.services(c, rpc::gridscan_watcher(kAddress, device_),
-                         [this](const rpc::LineContext& line) {
-                           return std::make_shared<rpc::GridScanService>(line, device_);
-                         });
-  }
-
- private:
-  static constexpr std::uint8_t kAddress = 0;
-  gridscan::Device device_;
-  LineRun run_{"gridscan", kAddress, device_};
+using GridScanSegment = LineSegment<gridscan::Device, rpc::GridScanService>;
+const LineDevice<gridscan::Device> kGridScanLine{
+    .kind = "gridscan",
+    .protocol = stream::LineProtocol::kGridScan,
+    .address = [](const gridscan::Device&) { return kAddress; },
+    .watcher = rpc::gridscan_watcher,
+    .print_status = print_line_status,
 };
 
 void validate(DeviceOptions& o) {
@@ -164,7 +145,7 @@ DeviceEntry gridscan_device_entry() {
           },
       .simulate =
           [](const DeviceOptions& o) {
-            return std::make_unique<GridScanSegment>(gridscan_options(o));
+            return std::make_unique<GridScanSegment>(kGridScanLine, gridscan_options(o));
           },
       .demo = run_gridscan_demo,
       .byte_device = true,

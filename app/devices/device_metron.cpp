@@ -10,7 +10,7 @@
 //   rs4sim run --device metron --link pty --wire-table trace.json  (byte values, layouts)
 #include "app/devices/device_options.h"
 #include "app/devices/device_registry.h"
-#include "app/devices/line_run.h"
+#include "app/devices/line_segment.h"
 #include "app/devices/metron_wire_file.h"
 #include "app/runtime/usage_error.h"
 #include "metron/device.h"
@@ -34,9 +34,10 @@ metron::Options metron_options(const DeviceOptions& o) {
     m.beams = static_cast<std::uint16_t>(*o.beams);
   }
   if (o.node) {
-    if (*o.node < 0 || *o.node > 254) {
-      throw UsageError("--node " + std::to_string(*o.node) +
-                       ": a node is 0..254 (255 is the broadcast address)");
+    if (*o.node < 0 || *o.node > metron::kMaxNode) {
+      throw UsageError("--node " + std::to_string(*o.node) + ": a node is 0.." +
+                       std::to_string(metron::kMaxNode) + " (" +
+                       std::to_string(metron::kBroadcast) + " is the broadcast address)");
     }
     m.node_enabled = true;
     m.node = static_cast<std::uint8_t>(*o.node);
@@ -62,6 +63,14 @@ metron::Options metron_options(const DeviceOptions& o) {
   return m;
 }
 
+// --blocked: the beams interrupted from the start (check_blocked() has checked them).
+void set_blocked(const DeviceOptions& o, metron::Device& device) {
+  if (!o.blocked) return;
+  std::vector<std::uint16_t> beams;
+  for (const int b : *o.blocked) beams.push_back(static_cast<std::uint16_t>(b));
+  device.set_interrupted(beams);
+}
+
 // The status line at the end of a run.
 void print_line_status(std::ostream& out, const metron::Device& device_,
                        const stream::ByteCounters& c) {
@@ -77,11 +86,7 @@ void print_line_status(std::ostream& out, const metron::Device& device_,
 class MetronInstance final : public DeviceInstance {
  public:
   explicit MetronInstance(const DeviceOptions& o) : device_(metron_options(o)) {
-    if (o.blocked) {
-      std::vector<std::uint16_t> beams;
-      for (const int b : *o.blocked) beams.push_back(static_cast<std::uint16_t>(b));
-      device_.set_interrupted(beams);
-    }
+    set_blocked(o, device_);
   }
   std::vector<stream::ByteDevice*> byte_devices() override { return {&tap_}; }
   [[nodiscard]] stream::LineProtocol line_protocol() const override {
@@ -121,41 +126,17 @@ class MetronInstance final : public DeviceInstance {
 };
 
 // --link memory: the device alone on the simulated line, driven through the API
-// (docs/metron.md "Simulated clock").
-class MetronSegment final : public SimulatedSegment {
- public:
-  explicit MetronSegment(const DeviceOptions& o) : device_(metron_options(o)) {
-    if (o.blocked) {
-      std::vector<std::uint16_t> beams;
-      for (const int b : *o.blocked) beams.push_back(static_cast<std::uint16_t>(b));
-      device_.set_interrupted(beams);
-    }
-  }
-  void run_for(dp::Duration d) override { run_.run_for(d); }
-  [[nodiscard]] std::uint8_t master_address() const override { return address_; }
-  void print_summary(std::ostream& out) const override {
-    out << std::endl;
-    print_line_status(out, device_, run_.counters());
-  }
-  [[nodiscard]] bool healthy() const override { return true; }
-  bool tap_line(stream::FrameTap tap) override {
-    run_.set_frame_tap(std::move(tap));
-    return true;
-  }
-  [[nodiscard]] stream::LineProtocol line_protocol() const override {
-    return stream::LineProtocol::kMetron;
-  }
-  ServiceList services(const ServiceContext& c) override {
-    return run_.services(c, rpc::metron_watcher(address_, device_),
-                         [this](const rpc::LineContext& line) {
-                           return std::make_shared<rpc::MetronService>(line, device_);
-                         });
-  }
-
- private:
-  metron::Device device_;
-  std::uint8_t address_ = device_.options().node_enabled ? device_.options().node : std::uint8_t{0};
-  LineRun run_{"metron", address_, device_};
+// (docs/metron.md "Simulated clock"), at its node number (node mode), else 0.
+using MetronSegment = LineSegment<metron::Device, rpc::MetronService>;
+const LineDevice<metron::Device> kMetronLine{
+    .kind = "metron",
+    .protocol = stream::LineProtocol::kMetron,
+    .address =
+        [](const metron::Device& d) {
+          return d.options().node_enabled ? d.options().node : std::uint8_t{0};
+        },
+    .watcher = rpc::metron_watcher,
+    .print_status = print_line_status,
 };
 
 void validate(DeviceOptions& o) {
@@ -172,7 +153,12 @@ DeviceEntry metron_device_entry() {
       .name = "metron",
       .validate = validate,
       .build = [](const DeviceOptions& o) { return std::make_unique<MetronInstance>(o); },
-      .simulate = [](const DeviceOptions& o) { return std::make_unique<MetronSegment>(o); },
+      .simulate =
+          [](const DeviceOptions& o) {
+            auto segment = std::make_unique<MetronSegment>(kMetronLine, metron_options(o));
+            set_blocked(o, segment->device());
+            return segment;
+          },
       .demo = run_metron_demo,
       .byte_device = true,
   };

@@ -14,7 +14,7 @@
 //           start=<register> (decimal or 0x hex), scan-time=<ms>, pn2-filter=<scans>
 #include "app/devices/device_options.h"
 #include "app/devices/device_registry.h"
-#include "app/devices/line_run.h"
+#include "app/devices/line_segment.h"
 #include "app/runtime/usage_error.h"
 #include "modbus/rtu_frame.h"
 #include "polaris/device.h"
@@ -128,6 +128,15 @@ polaris::Options polaris_options(const DeviceOptions& o) {
   return p;
 }
 
+// --blocked as beam numbers (check_blocked() has checked them), empty without it.
+std::vector<std::uint16_t> blocked_beams(const DeviceOptions& o) {
+  std::vector<std::uint16_t> beams;
+  if (o.blocked) {
+    for (const int b : *o.blocked) beams.push_back(static_cast<std::uint16_t>(b));
+  }
+  return beams;
+}
+
 // The status line at the end of a run.
 void print_line_status(std::ostream& out, const polaris::Device& device_,
                        const stream::ByteCounters& c) {
@@ -145,17 +154,14 @@ void print_line_status(std::ostream& out, const polaris::Device& device_,
 
 class PolarisInstance final : public DeviceInstance {
  public:
-  explicit PolarisInstance(const DeviceOptions& o) : device_(polaris_options(o)) {
-    if (o.blocked) blocked_.assign(o.blocked->begin(), o.blocked->end());
-  }
+  explicit PolarisInstance(const DeviceOptions& o)
+      : device_(polaris_options(o)), blocked_(blocked_beams(o)) {}
   std::vector<stream::ByteDevice*> byte_devices() override { return {&tap_}; }
   [[nodiscard]] stream::LineProtocol line_protocol() const override {
     return stream::LineProtocol::kModbusRtu;
   }
   void start(dp::TimePoint now) override {
-    std::vector<std::uint16_t> beams;
-    for (const int b : blocked_) beams.push_back(static_cast<std::uint16_t>(b));
-    (void)device_.set_interrupted(beams, now);  // checked against the beam count in validate
+    (void)device_.set_interrupted(blocked_, now);  // checked against the beam count in validate
   }
   // SIGUSR1: the autocal input's pulse, an auto-calibration of 0.4 s per beam
   // [Polaris manual §7.2] (data reads answer exception 06 meanwhile); ignored while one runs.
@@ -192,45 +198,18 @@ class PolarisInstance final : public DeviceInstance {
   polaris::Device device_;
   rpc::TappedByteDevice tap_{device_};
   std::unique_ptr<rpc::LineDeviceTarget> target_;
-  std::vector<int> blocked_;
+  std::vector<std::uint16_t> blocked_;
 };
 
 // --link memory: the device alone on the simulated line, driven through the API
-// (docs/polaris.md "Simulated clock").
-class PolarisSegment final : public SimulatedSegment {
- public:
-  explicit PolarisSegment(const DeviceOptions& o) : device_(polaris_options(o)) {
-    if (o.blocked) {
-      std::vector<std::uint16_t> beams;
-      for (const int b : *o.blocked) beams.push_back(static_cast<std::uint16_t>(b));
-      (void)device_.set_interrupted(beams, run_.now());  // checked in validate
-    }
-  }
-  void run_for(dp::Duration d) override { run_.run_for(d); }
-  [[nodiscard]] std::uint8_t master_address() const override { return address_; }
-  void print_summary(std::ostream& out) const override {
-    out << std::endl;
-    print_line_status(out, device_, run_.counters());
-  }
-  [[nodiscard]] bool healthy() const override { return true; }
-  bool tap_line(stream::FrameTap tap) override {
-    run_.set_frame_tap(std::move(tap));
-    return true;
-  }
-  [[nodiscard]] stream::LineProtocol line_protocol() const override {
-    return stream::LineProtocol::kModbusRtu;
-  }
-  ServiceList services(const ServiceContext& c) override {
-    return run_.services(c, rpc::polaris_watcher(address_, device_),
-                         [this](const rpc::LineContext& line) {
-                           return std::make_shared<rpc::PolarisService>(line, device_);
-                         });
-  }
-
- private:
-  polaris::Device device_;
-  std::uint8_t address_ = device_.options().address;
-  LineRun run_{"polaris", address_, device_};
+// (docs/polaris.md "Simulated clock"), at its Modbus address.
+using PolarisSegment = LineSegment<polaris::Device, rpc::PolarisService>;
+const LineDevice<polaris::Device> kPolarisLine{
+    .kind = "polaris",
+    .protocol = stream::LineProtocol::kModbusRtu,
+    .address = [](const polaris::Device& d) { return d.options().address; },
+    .watcher = rpc::polaris_watcher,
+    .print_status = print_line_status,
 };
 
 void validate(DeviceOptions& o) {
@@ -247,7 +226,14 @@ DeviceEntry polaris_device_entry() {
       .name = "polaris",
       .validate = validate,
       .build = [](const DeviceOptions& o) { return std::make_unique<PolarisInstance>(o); },
-      .simulate = [](const DeviceOptions& o) { return std::make_unique<PolarisSegment>(o); },
+      .simulate =
+          [](const DeviceOptions& o) {
+            auto segment = std::make_unique<PolarisSegment>(kPolarisLine, polaris_options(o));
+            if (o.blocked) {  // checked against the beam count in validate
+              (void)segment->device().set_interrupted(blocked_beams(o), segment->now());
+            }
+            return segment;
+          },
       .demo = run_polaris_demo,
       .byte_device = true,
   };

@@ -1,10 +1,11 @@
-"""`rs4sim run --device gridscan|polaris --link memory --grpc` driven by the Python harness:
-the devices on the simulated clock, no pty. The known answers are the manuals' frames as
-fixed bytes: the GridScan's power-up messages and the last step of the communication test of
-[GridScan manual §10.3]; the Polaris's P7 [Polaris manual §8.2.3] with the beams of its
-example (9-13, 25-34 of 40). Wire time at 115200 8N1: 10 bits a character. The LATE fault
-through inject_fault(late_ms=...) and its deprecated alias delay_ms=... (a DeprecationWarning):
-the Polaris's reply leaves exactly that much later on the simulated clock.
+"""`rs4sim run --device gridscan|metron|polaris --link memory --grpc` driven by the Python
+harness: the devices on the simulated clock, no pty. The known answers are the manuals' frames
+as fixed bytes: the GridScan's power-up messages and the last step of the communication test
+of [GridScan manual §10.3]; the Polaris's P7 [Polaris manual §8.2.3] with the beams of its
+example (9-13, 25-34 of 40); the METRON's "status of all the beams" in node mode, laid out as
+[METRON manual "With node"] gives it. Wire time at 115200 8N1: 10 bits a character. The LATE
+fault through inject_fault(late_ms=...) and its deprecated alias delay_ms=... (a
+DeprecationWarning): the Polaris's reply leaves exactly that much later on the simulated clock.
 Usage: python_line_memory_test.py RS4SIM REPO   (exit 77 = skipped: no python3-grpcio)"""
 import sys
 import warnings
@@ -16,7 +17,7 @@ except ImportError:
     sys.exit(77)
 
 rs4sim, repo = sys.argv[1], sys.argv[2]
-from rs4sim import GridScan, Polaris, error_details  # noqa: E402
+from rs4sim import GridScan, Metron, Polaris, error_details  # noqa: E402
 from rs4sim.process import Rs4simProcess  # noqa: E402
 
 VERSION = bytes([0x43, 0x45, 0x44, 0x45, 0x00, 0xA0, 0x30, 0x31, 0x2E, 0x30, 0x32,
@@ -175,6 +176,46 @@ def polaris():
         proc.stop()
 
 
+def metron():
+    proc = Rs4simProcess(["run", "--device", "metron", "--link", "memory", "--node", "5",
+                          "--blocked", "9-13", "--grpc", "127.0.0.1:0"], executable=rs4sim)
+    try:
+        with Metron(proc.address, 5) as m:
+            # Status of all the beams (#9, data 00) to node 5: start 02, address 05, length 02,
+            # command 09, data 00, checksum ~(09 + 00) = F6 (address and length not summed).
+            request = bytes([0x02, 0x05, 0x02, 0x09, 0x00, 0xF6])
+            # The reply: 02, node 05, length 04 (command + 3 data bytes), 09, the 24 beams a bit
+            # each from beam 1 (beams 9-13 -> 00 1F 00), checksum ~(09 + 1F) = D7.
+            x = m.exchange(request)
+            all_beams = bytes([0x02, 0x05, 0x04, 0x09, 0x00, 0x1F, 0x00, 0xD7])
+            check(x.answered and x.reply == all_beams, f"all beams {x.reply.hex()}")
+            check(x.arrived_ns - x.sent_ns == wire_ns(6, 11, 19200), "request wire time (8E1)")
+            # WRONG_NODE: the reply carries node 6 until cleared.
+            m.inject_fault("WRONG_NODE")
+            x = m.exchange(request)
+            check(x.answered and x.reply[1] == 0x06, f"wrong node {x.reply.hex()}")
+            m.clear_fault("WRONG_NODE")
+            x = m.exchange(request)
+            check(x.answered and x.reply[1] == 0x05, f"own node again {x.reply.hex()}")
+            # 255 is the broadcast address, never the curtain's; another node is not this run.
+            for address, code in ((255, grpc.StatusCode.INVALID_ARGUMENT),
+                                  (4, grpc.StatusCode.NOT_FOUND)):
+                m.address = address
+                try:
+                    m.exchange(request)
+                    check(False, f"Exchange at {address} is refused")
+                except grpc.RpcError as e:
+                    check(e.code() == code, f"address {address}: code {e.code()}")
+                    if address == 255:
+                        check(e.details() == "address: 255 is the broadcast address "
+                              "[METRON manual \"With node\"]; "
+                              "the curtain's is its node (0..254), or 0 without node mode",
+                              f"the message: {e.details()}")
+    finally:
+        proc.stop()
+
+
 gridscan()
+metron()
 polaris()
 print("ok")

@@ -381,6 +381,34 @@ TEST(PolarisOnTheSimulatedClockSilence, ABroadcastGetsNoReplyWithinTheTimeout) {
   EXPECT_EQ(device.counters().broadcasts, 1U);
 }
 
+// Exchange and Receive take the Modbus slave addresses only (1..247
+// [Modbus serial line V1.02 §2.2]), then this run's address alone.
+TEST(PolarisOnTheSimulatedClockAddress, ExchangeAndReceiveCheckTheModbusAddress) {
+  polaris::Device device(polaris_options(Family::kPl10, 40, DataMode::kFl1, 1));
+  SimulatedRun<polaris::Device, PolarisService> run(device, "polaris", 1,
+                                                    polaris_watcher(1, device));
+  const auto stub = v1::Polaris::NewStub(run.channel());
+  const Bytes request{0x01, 0x03, 0x20, 0x00, 0x00, 0x02, 0xCF, 0xCB};
+  for (const std::uint32_t address : {0U, 248U}) {
+    grpc::Status s;
+    (void)exchange(*stub, address, request, 0, &s);
+    EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT) << address;
+    EXPECT_EQ(s.error_message(), "address: " + std::to_string(address) +
+                                     " outside 1..247, the Modbus slave addresses "
+                                     "[Modbus serial line V1.02 §2.2]");
+    grpc::ClientContext ctx;
+    v1::ReceiveRequest in;
+    in.set_address(address);
+    v1::ReceiveResponse out;
+    EXPECT_EQ(bad_field(stub->Receive(&ctx, in, &out)), "address") << address;
+  }
+  grpc::Status s;
+  (void)exchange(*stub, 2, request, 0, &s);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::NOT_FOUND);
+  EXPECT_EQ(s.error_message(), "no Polaris at address 2 (this run's Polaris answers to 1)");
+  EXPECT_EQ(device.counters().requests, 0U);  // nothing reached the line
+}
+
 // ==== METRON ================================================================================
 
 constexpr int kMetronBaud = 19200;  // 8E1: 11 bit times a character

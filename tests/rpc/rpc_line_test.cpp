@@ -721,6 +721,10 @@ TEST_F(RpcMetronTest, BadInputGetsASpecificStatus) {
   EXPECT_EQ(bad_field(s), "blocked[0]");
   s = block({1}, 255);
   EXPECT_EQ(bad_field(s), "address");
+  EXPECT_EQ(s.error_message(),
+            "address: 255 is the broadcast address "
+            "[METRON manual \"With node\"]; "
+            "the curtain's is its node (0..254), or 0 without node mode");
   s = block({1}, 0);
   EXPECT_EQ(s.error_code(), grpc::StatusCode::NOT_FOUND);
   s = fault(v1::METRON_FAULT_UNSPECIFIED, true);
