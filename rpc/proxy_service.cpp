@@ -12,16 +12,6 @@ constexpr std::chrono::milliseconds kCancelCheck{100};
 // of syncs, so this is never reached by a reading client; it bounds a client that does not.
 constexpr std::size_t kMaxPendingPerStation = 16;
 
-std::string_view direction_name(rs4::protocol::SyncDirection d) noexcept {
-  switch (d) {
-    case rs4::protocol::SyncDirection::kNone: return "none";
-    case rs4::protocol::SyncDirection::kVerify: return "verify";
-    case rs4::protocol::SyncDirection::kUpload: return "upload";
-    case rs4::protocol::SyncDirection::kDownload: return "download";
-  }
-  return "none";
-}
-
 bool waiting_or_running(const v1::ProxyStationStatus& s) noexcept {
   return s.running() || s.queue_position() >= 0;
 }
@@ -38,7 +28,7 @@ void fill_proxy_status(const proxy::StationStatus& s, const std::string& bus, st
   out.set_position(s.progress.position);
   out.set_bytes_done(s.progress.bytes_done);
   out.set_bytes_total(s.progress.bytes_total);
-  out.set_direction(std::string(direction_name(s.progress.direction)));
+  out.set_direction(std::string(rs4::protocol::to_token(s.progress.direction)));
   auto& o = *out.mutable_outputs();
   o.set_fb_busy(s.outputs.fb_busy);
   o.set_config_set_to_default(s.outputs.config_set_to_default);
