@@ -1,5 +1,6 @@
 #include "rpc/proxy_service.h"
 
+#include "dp/pdu/sap.h"
 #include "rpc/status.h"
 
 #include <algorithm>
@@ -128,7 +129,10 @@ grpc::Status ProxyService::resolve(const google::protobuf::RepeatedField<std::ui
   for (int i = 0; i < in.size(); ++i) {
     const auto a = in.Get(i);
     const std::string field = "addresses[" + std::to_string(i) + "]";
-    if (a > 126) return invalid_argument(field, std::to_string(a) + " outside 0..126");
+    if (a > dp::pdu::sap::kMaxStationAddress) {
+      return invalid_argument(field, std::to_string(a) + " outside 0.." +
+                                         std::to_string(dp::pdu::sap::kMaxStationAddress));
+    }
     const bool served = std::any_of(all.begin(), all.end(),
                                     [a](const proxy::StationStatus& s) { return s.address == a; });
     if (!served) {
