@@ -189,7 +189,7 @@ std::span<const std::uint8_t> FDevice::response() {
 
 namespace rs4sim::profisafe {
 
-const char* to_string(FDeviceState s) noexcept {
+std::string_view to_token(FDeviceState s) noexcept {
   switch (s) {
     case FDeviceState::kNoParameters: return "no-parameters";
     case FDeviceState::kStartup: return "startup";
@@ -198,6 +198,9 @@ const char* to_string(FDeviceState s) noexcept {
   }
   return "?";
 }
+
+// Every token is a string literal, so its data() ends in a NUL.
+const char* to_string(FDeviceState s) noexcept { return to_token(s).data(); }
 
 const char* to_string(FDeviceEvent e) noexcept {
   switch (e) {

@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string_view>
 
 namespace rs4sim::profisafe {
 
@@ -32,7 +33,10 @@ struct FDeviceConfig {
 };
 
 enum class FDeviceState : std::uint8_t { kNoParameters, kStartup, kRun, kFault };
-[[nodiscard]] const char* to_string(FDeviceState s) noexcept;
+// "no-parameters", "startup", "run", "fault": the API's and the event stream's word, also the
+// one logs print.
+[[nodiscard]] std::string_view to_token(FDeviceState s) noexcept;
+[[nodiscard]] const char* to_string(FDeviceState s) noexcept;  // to_token() as a C string
 
 // What on_pdu() made of a host PDU.
 enum class FDeviceEvent : std::uint8_t {

@@ -161,7 +161,7 @@ std::span<const std::uint8_t> FHost::input() const noexcept {
   return std::span<const std::uint8_t>(input_).first(config_.data_size);
 }
 
-const char* to_string(FHostState s) noexcept {
+std::string_view to_token(FHostState s) noexcept {
   switch (s) {
     case FHostState::kStartup: return "startup";
     case FHostState::kRun: return "run";
@@ -170,6 +170,9 @@ const char* to_string(FHostState s) noexcept {
   }
   return "?";
 }
+
+// Every token is a string literal, so its data() ends in a NUL.
+const char* to_string(FHostState s) noexcept { return to_token(s).data(); }
 
 const char* to_string(FHostEvent e) noexcept {
   switch (e) {

@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string_view>
 
 namespace rs4sim::profisafe {
 
@@ -37,7 +38,10 @@ enum class FHostState : std::uint8_t {
   kPassivated,   // a fault was seen; waiting for healthy communication
   kAckRequired,  // communication healthy again: ACK_REQ raised, waiting for ACK_REI
 };
-[[nodiscard]] const char* to_string(FHostState s) noexcept;
+// "startup", "run", "passivated", "ack-required": the API's and the event stream's word,
+// also the one logs print.
+[[nodiscard]] std::string_view to_token(FHostState s) noexcept;
+[[nodiscard]] const char* to_string(FHostState s) noexcept;  // to_token() as a C string
 
 enum class FHostEvent : std::uint8_t {
   kValid,        // valid answer to the current number

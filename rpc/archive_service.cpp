@@ -1,5 +1,6 @@
 #include "rpc/archive_service.h"
 
+#include "dp/pdu/sap.h"
 #include "rpc/status.h"
 #include "rs4/report/field_svg.h"
 #include "rs4/report/parameter_diff.h"
@@ -42,10 +43,11 @@ std::string peer_host(const std::string& peer) {
   return colon == std::string::npos ? rest : rest.substr(0, colon);
 }
 
-// The request's station, or INVALID_ARGUMENT for an address above 126.
+// The request's station, or INVALID_ARGUMENT for an address above kMaxStationAddress.
 grpc::Status to_key(const v1::StationKey& in, storage::StationKey& out) {
-  if (in.address() > 126) {
-    return invalid_argument("address", std::to_string(in.address()) + " outside 0..126");
+  if (in.address() > dp::pdu::sap::kMaxStationAddress) {
+    return invalid_argument("address", std::to_string(in.address()) + " outside 0.." +
+                                           std::to_string(dp::pdu::sap::kMaxStationAddress));
   }
   out.bus = in.bus().empty() ? "default" : in.bus();
   out.address = static_cast<std::uint8_t>(in.address());

@@ -1,5 +1,6 @@
 #include "rpc/proxy_service.h"
 
+#include "dp/pdu/sap.h"
 #include "rpc/status.h"
 
 #include <algorithm>
@@ -11,16 +12,6 @@ constexpr std::chrono::milliseconds kCancelCheck{100};
 // A stream's backlog per RS4: statuses alternate between running and not only at the rate
 // of syncs, so this is never reached by a reading client; it bounds a client that does not.
 constexpr std::size_t kMaxPendingPerStation = 16;
-
-std::string_view direction_name(rs4::protocol::SyncDirection d) noexcept {
-  switch (d) {
-    case rs4::protocol::SyncDirection::kNone: return "none";
-    case rs4::protocol::SyncDirection::kVerify: return "verify";
-    case rs4::protocol::SyncDirection::kUpload: return "upload";
-    case rs4::protocol::SyncDirection::kDownload: return "download";
-  }
-  return "none";
-}
 
 bool waiting_or_running(const v1::ProxyStationStatus& s) noexcept {
   return s.running() || s.queue_position() >= 0;
@@ -38,7 +29,7 @@ void fill_proxy_status(const proxy::StationStatus& s, const std::string& bus, st
   out.set_position(s.progress.position);
   out.set_bytes_done(s.progress.bytes_done);
   out.set_bytes_total(s.progress.bytes_total);
-  out.set_direction(std::string(direction_name(s.progress.direction)));
+  out.set_direction(std::string(rs4::protocol::to_token(s.progress.direction)));
   auto& o = *out.mutable_outputs();
   o.set_fb_busy(s.outputs.fb_busy);
   o.set_config_set_to_default(s.outputs.config_set_to_default);
@@ -138,7 +129,10 @@ grpc::Status ProxyService::resolve(const google::protobuf::RepeatedField<std::ui
   for (int i = 0; i < in.size(); ++i) {
     const auto a = in.Get(i);
     const std::string field = "addresses[" + std::to_string(i) + "]";
-    if (a > 126) return invalid_argument(field, std::to_string(a) + " outside 0..126");
+    if (a > dp::pdu::sap::kMaxStationAddress) {
+      return invalid_argument(field, std::to_string(a) + " outside 0.." +
+                                         std::to_string(dp::pdu::sap::kMaxStationAddress));
+    }
     const bool served = std::any_of(all.begin(), all.end(),
                                     [a](const proxy::StationStatus& s) { return s.address == a; });
     if (!served) {

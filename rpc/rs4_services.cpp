@@ -94,16 +94,6 @@ std::variant<scanner::Shape, grpc::Status> to_shape(const v1::AddObstacleRequest
   return invalid_argument("shape", "one of circle, polygon, wall, point or contour is required");
 }
 
-const char* shape_field(const v1::AddObstacleRequest& in) {
-  switch (in.shape_case()) {
-    case v1::AddObstacleRequest::kCircle: return "circle";
-    case v1::AddObstacleRequest::kPolygon: return "polygon";
-    case v1::AddObstacleRequest::kWall: return "wall";
-    case v1::AddObstacleRequest::kPoint: return "point";
-    default: return "contour";
-  }
-}
-
 std::optional<scanner::Fault> to_fault(v1::Fault f) {
   switch (f) {
     case v1::FAULT_OSSD_CROSS_CIRCUIT: return scanner::Fault::kOssdCrossCircuit;
@@ -135,7 +125,8 @@ grpc::Status DeviceService::AddObstacle(grpc::ServerContext*, const v1::AddObsta
   auto shape = to_shape(*in);
   if (auto* bad = std::get_if<grpc::Status>(&shape)) return *bad;
   if (auto ok = scanner::check_shape(std::get<scanner::Shape>(shape)); !ok) {
-    return invalid_argument(shape_field(*in), ok.error().message());
+    return invalid_argument(std::string(scanner::to_token(std::get<scanner::Shape>(shape))),
+                            ok.error().message());
   }
   return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint now) {
     auto id = d.scanner().edit_scene(now).add(std::move(std::get<scanner::Shape>(shape)));

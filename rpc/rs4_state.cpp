@@ -6,18 +6,6 @@
 
 namespace rs4sim::rpc {
 
-std::string kebab(std::string_view name) {
-  std::string out;
-  for (const char c : name) {
-    if (c == '_' || c == ' ') {
-      out += '-';
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
-
 void fill_input_bits(const rs4::adapter::InputBits& bits, v1::InputBits& out) {
   out.set_warning_field_violated(bits.warning_field);
   out.set_protective_field_violated(bits.protective_field);
@@ -28,32 +16,6 @@ void fill_input_bits(const rs4::adapter::InputBits& bits, v1::InputBits& out) {
   out.set_warning_output_active(bits.warning_output_active);
   out.set_ossd(bits.ossd);
 }
-
-const char* led_name(rs4::adapter::LedState s) {
-  using rs4::adapter::LedState;
-  switch (s) {
-    case LedState::kDark: return "dark";
-    case LedState::kSteadyInit: return "steady-init";
-    case LedState::kFastBlink: return "fast-blink";
-    case LedState::kOffConnected: return "off-connected";
-    case LedState::kSteadyFault: return "steady-fault";
-    case LedState::kSlowBlink: return "slow-blink";
-  }
-  return "unknown";
-}
-
-const char* proxy_phase_name(rs4::adapter::ProxyPhase p) {
-  using rs4::adapter::ProxyPhase;
-  switch (p) {
-    case ProxyPhase::kWaitRs4: return "wait-rs4";
-    case ProxyPhase::kRequested: return "requested";
-    case ProxyPhase::kSyncRunning: return "sync-running";
-    case ProxyPhase::kDone: return "done";
-  }
-  return "unknown";
-}
-
-std::string fdevice_name(profisafe::FDeviceState s) { return kebab(profisafe::to_string(s)); }
 
 void fill_dp_counters(const dp::master::PollCounters& c, v1::DpCounters& out) {
   out.set_requests(c.requests);
@@ -70,7 +32,7 @@ void fill_dp_counters(const dp::master::PollCounters& c, v1::DpCounters& out) {
 void fill_fhost(const profisafe::FHost& host, std::uint8_t plc_input_byte, v1::PlcView& out) {
   const auto& n = host.counters();
   out.set_present(true);
-  out.set_fhost_state(kebab(profisafe::to_string(host.state())));
+  out.set_fhost_state(std::string(profisafe::to_token(host.state())));
   out.set_input_byte(plc_input_byte);
   fill_input_bits(rs4::adapter::decode_input_byte(plc_input_byte), *out.mutable_input());
   out.set_crc_errors(n.crc_errors);
@@ -86,15 +48,15 @@ void fill_state(const rs4::device::Rs4Device& device, std::uint8_t address, dp::
   const auto status = device.scanner().status();
   out.set_address(address);
   out.set_powered(device.powered());
-  out.set_led(led_name(view.led));
+  out.set_led(std::string(rs4::adapter::to_token(view.led)));
   out.set_led_lit(device.adapter().led_lit(now));
   const auto leds = device.scanner().leds();
   out.set_led3_red(leds.led3_red);
   out.set_led5_yellow_blinking(leds.led5_yellow_blinking);
   out.set_restart_button_held(device.adapter().restart_button());
   out.set_rs4_state(rs4::scanner::to_string(status.state));
-  out.set_fdevice_state(fdevice_name(view.fdevice));
-  out.set_proxy_phase(proxy_phase_name(view.proxy));
+  out.set_fdevice_state(std::string(profisafe::to_token(view.fdevice)));
+  out.set_proxy_phase(std::string(rs4::adapter::to_token(view.proxy)));
   out.set_connected(view.connected);
   out.set_pc_adapter_attached(view.pc_adapter_attached);
   out.set_input_byte(view.input_byte);

@@ -26,13 +26,6 @@ void fill_dp_counters(const dp::master::PollCounters& c, v1::DpCounters& out);
 // its bits, the F-host's error counters); data_exchange and dp are the caller's.
 void fill_fhost(const profisafe::FHost& host, std::uint8_t plc_input_byte, v1::PlcView& out);
 
-// "steady-init" from kSteadyInit and the like.
-std::string kebab(std::string_view name);
 void fill_input_bits(const rs4::adapter::InputBits& bits, v1::InputBits& out);
-
-// The names the API documents: "steady-init", "sync-running", "wait-for-f-parameters" …
-const char* led_name(rs4::adapter::LedState s);
-const char* proxy_phase_name(rs4::adapter::ProxyPhase p);
-std::string fdevice_name(profisafe::FDeviceState s);
 
 }  // namespace rs4sim::rpc

@@ -17,7 +17,7 @@ SegmentTarget::SegmentTarget(rs4::device::Rs4Segment& segment) : segment_(segmen
     char byte[3];
     std::snprintf(byte, sizeof byte, "%02x", segment.input_byte());
     return ItemsWatcher::Items{
-        {"fhost-state", kebab(profisafe::to_string(segment.fhost().state()))},
+        {"fhost-state", std::string(profisafe::to_token(segment.fhost().state()))},
         {"plc-input-byte", byte}};
   }));
   // The bus outlives nothing it calls: the observer holds the hub, not this target.
@@ -52,7 +52,7 @@ void SegmentTarget::after(dp::Duration delay, std::function<void()> f) {
 std::string SegmentTarget::ack_rei(std::uint8_t address) {
   if (address != segment_.rs4_address()) return "no F-host for station " + std::to_string(address);
   if (!segment_.fhost().ack_req()) {
-    return "the F-host is in " + kebab(profisafe::to_string(segment_.fhost().state())) +
+    return "the F-host is in " + std::string(profisafe::to_token(segment_.fhost().state())) +
            ", not ack-required: there is nothing to acknowledge";
   }
   segment_.ack_rei();

@@ -1,5 +1,6 @@
 #include "rpc/service_support.h"
 
+#include "dp/pdu/sap.h"
 #include "rpc/event_hub.h"
 #include "rpc/status.h"
 
@@ -42,9 +43,10 @@ grpc::Status unknown_station(const RunTarget& target, std::uint32_t address) {
 }
 
 grpc::Status on_device(const Rs4Context& c, std::uint32_t address, const DeviceFn& fn) {
-  if (address > 126) {
-    return invalid_argument("address",
-                            "station address " + std::to_string(address) + " outside 0..126");
+  if (address > dp::pdu::sap::kMaxStationAddress) {
+    return invalid_argument("address", "station address " + std::to_string(address) +
+                                           " outside 0.." +
+                                           std::to_string(dp::pdu::sap::kMaxStationAddress));
   }
   grpc::Status result;
   c.executor.run([&] {
@@ -61,9 +63,10 @@ grpc::Status on_device(const Rs4Context& c, std::uint32_t address, const DeviceF
 
 grpc::Status on_device(const RunContext& c, std::uint32_t address, const DeviceFn& fn) {
   if (auto* rs4s = c.target.rs4s()) return on_device(Rs4Context{*rs4s, c.executor}, address, fn);
-  if (address > 126) {
-    return invalid_argument("address",
-                            "station address " + std::to_string(address) + " outside 0..126");
+  if (address > dp::pdu::sap::kMaxStationAddress) {
+    return invalid_argument("address", "station address " + std::to_string(address) +
+                                           " outside 0.." +
+                                           std::to_string(dp::pdu::sap::kMaxStationAddress));
   }
   grpc::Status result;
   c.executor.run([&] { result = unknown_station(c.target, address); });

@@ -1,7 +1,7 @@
 #include "app/cli/archive_support.h"
 
 #include "app/runtime/archive_path.h"
-
+#include "dp/pdu/sap.h"
 #include "rs4/scanner/parameter_codec.h"
 #include "storage/open_archive.h"
 #include "storage/sqlite_archive.h"  // default_archive_path
@@ -29,7 +29,9 @@ void add_json_option(CLI::App& cmd, CommonOptions& o) {
 
 void add_station_options(CLI::App& cmd, CommonOptions& o) {
   cmd.add_option("--bus", o.bus, "bus name of the station")->capture_default_str();
-  cmd.add_option("--address", o.address, "PROFIBUS address of the station (0..126)");
+  cmd.add_option("--address", o.address,
+                 "PROFIBUS address of the station (0.." +
+                     std::to_string(dp::pdu::sap::kMaxStationAddress) + ")");
 }
 
 std::string archive_path(const CommonOptions& o) {
@@ -43,8 +45,9 @@ std::string archive_shown(const CommonOptions& o) {
 
 storage::StationKey station_of(const CommonOptions& o, const char* command) {
   if (!o.address) throw UsageError(std::string(command) + ": needs --address N (the station)");
-  if (*o.address < 0 || *o.address > 126) {
-    throw UsageError(std::string(command) + ": --address must be 0..126, got " +
+  if (*o.address < 0 || *o.address > dp::pdu::sap::kMaxStationAddress) {
+    throw UsageError(std::string(command) + ": --address must be 0.." +
+                     std::to_string(dp::pdu::sap::kMaxStationAddress) + ", got " +
                      std::to_string(*o.address));
   }
   if (o.bus.empty()) throw UsageError(std::string(command) + ": --bus must not be empty");

@@ -5,6 +5,7 @@
 // `--decode HEX [--address N]` shows what the RS4 makes of a received block (exit 1 unless
 // diagnosis 0).
 #include "app/cli/command.h"
+#include "dp/pdu/sap.h"
 #include "profisafe/f_parameters.h"
 #include "rs4/safety/diagnosis.h"
 #include "rs4/safety/profile.h"
@@ -115,7 +116,10 @@ std::vector<std::uint8_t> parse_hex(const std::string& text) {
 
 // --decode: what the RS4 at --address makes of a received block ([RS4 manual §6.3]).
 int run_decode(const FparamsOptions& o) {
-  if (o.address > 126) throw UsageError("--address must be a DP station address 0..126");
+  if (o.address > dp::pdu::sap::kMaxStationAddress) {
+    throw UsageError("--address must be a DP station address 0.." +
+                     std::to_string(dp::pdu::sap::kMaxStationAddress));
+  }
   const auto bytes = parse_hex(o.decode);
   const auto parsed = profisafe::parse_f_parameters(bytes);
   const auto v = profisafe::validate(bytes, rs4::safety::device_profile(o.address));

@@ -18,6 +18,7 @@
 #include "app/runtime/master_proxy.h"
 #include "app/runtime/master_service.h"
 #include "dp/master/master_config.h"
+#include "dp/pdu/sap.h"
 #include "rs4/adapter/cyclic_bytes.h"
 #include "storage/open_archive.h"
 #include "storage/request_check.h"
@@ -107,7 +108,7 @@ dp::master::BusParameters bus_parameters(const MasterCliOptions& o,
 rs4::device::Rs4MasterStationConfig station_config(const MasterCliOptions& o,
                                                    const std::vector<GsdStationSpec>& gsd) {
   rs4::device::Rs4MasterStationConfig c;
-  c.master_address = checked(o.address, 0, 126, "--address");
+  c.master_address = checked(o.address, 0, dp::pdu::sap::kMaxStationAddress, "--address");
   c.bus = bus_parameters(o, gsd);
   c.cycle_target = std::chrono::milliseconds(checked(o.cycle_ms, 1, 255, "--cycle"));
   c.auto_ack_rei = !o.manual_ack;
@@ -118,7 +119,7 @@ rs4::device::Rs4MasterStationConfig station_config(const MasterCliOptions& o,
   for (const int s : slaves) {
     rs4::device::Rs4MasterOptions r;
     // [RS4 manual §4.5]: 0..126 on the switches; the master polls 0..125.
-    r.address = checked(s, 0, 125, "--slave");
+    r.address = checked(s, 0, dp::pdu::sap::kMaxSlaveAddress, "--slave");
     for (const auto& earlier : c.slaves) {
       if (earlier.address == r.address)
         throw UsageError("--slave " + std::to_string(s) + " given twice");

@@ -15,6 +15,7 @@
 #include "dp/devices/generic_master_config.h"
 #include "dp/link/memory_bus.h"
 #include "dp/master/master.h"
+#include "dp/pdu/sap.h"
 #include "json/path.h"
 #include "json/syntax.h"
 #include "json/value_kind.h"
@@ -127,7 +128,9 @@ BusStation read_station(const Reader& r, const Value& v, const std::string& path
   for (const auto& key : keys) {
     const Value& x = fields.at(key);
     const std::string at = json::member_path(path, key);
-    if (key == "address") o.address = static_cast<int>(r.integer(x, at, 0, 126));
+    if (key == "address") {
+      o.address = static_cast<int>(r.integer(x, at, 0, dp::pdu::sap::kMaxStationAddress));
+    }
     if (key == "device") s.device = r.text(x, at);
     if (key == "gsd") o.gsd = r.existing_file(x, at);
     if (key == "modules") o.modules = r.texts(x, at);

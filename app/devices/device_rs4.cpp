@@ -8,6 +8,7 @@
 #include "app/devices/gsd_station.h"
 #include "app/devices/rs4_state_file.h"
 #include "app/runtime/run_options.h"
+#include "dp/pdu/sap.h"
 #include "rpc/device_target.h"
 #include "rpc/rs4_services.h"
 #include "rpc/segment_target.h"
@@ -377,9 +378,10 @@ void validate(DeviceOptions& o) {
   if (!o.boot_time_ms) o.boot_time_ms = kDefaultBootTimeMs;
   std::vector<int> seen;
   for (const int a : all_addresses(o)) {
-    if (a < 0 || a > 126) {
-      throw UsageError("--address: " + std::to_string(a) +
-                       " is outside 0..126 (the RS4's switches; 127 and 255 must not be used, "
+    if (a < 0 || a > dp::pdu::sap::kMaxStationAddress) {
+      throw UsageError("--address: " + std::to_string(a) + " is outside 0.." +
+                       std::to_string(dp::pdu::sap::kMaxStationAddress) +
+                       " (the RS4's switches; 127 and 255 must not be used, "
                        "[RS4 manual §4.5])");
     }
     if (std::find(seen.begin(), seen.end(), a) != seen.end()) {

@@ -1,5 +1,6 @@
 #include "app/devices/gsd_service.h"
 
+#include "dp/pdu/sap.h"
 #include "gsd/unit_diag.h"
 #include "rpc/items_watcher.h"
 #include "rpc/rs4_state.h"
@@ -100,9 +101,10 @@ std::span<const std::uint8_t> as_bytes(const std::string& s) {
 }
 
 grpc::Status check_address(std::uint32_t address) {
-  if (address > 126) {
-    return rpc::invalid_argument("address",
-                                 "station address " + std::to_string(address) + " outside 0..126");
+  if (address > dp::pdu::sap::kMaxStationAddress) {
+    return rpc::invalid_argument("address", "station address " + std::to_string(address) +
+                                                " outside 0.." +
+                                                std::to_string(dp::pdu::sap::kMaxStationAddress));
   }
   return grpc::Status::OK;
 }

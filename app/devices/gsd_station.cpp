@@ -2,6 +2,7 @@
 
 #include "app/runtime/usage_error.h"
 #include "app/runtime/whole_file.h"
+#include "dp/pdu/sap.h"
 #include "dp/pdu/set_prm.h"
 #include "dp/time/baud_rate.h"
 #include "gsd/dp_slave_config.h"
@@ -34,9 +35,10 @@ std::string hex16(std::uint16_t v) {
 
 GsdStationSpec load_gsd_station(const std::string& path, const std::vector<std::string>& modules,
                                 int address, std::vector<std::string>* warnings) {
-  if (address < 0 || address > 125) {
-    throw UsageError(path + ": address " + std::to_string(address) +
-                     " is outside 0..125 ([IEC 61158-4-3 addresses, SAPs])");
+  if (address < 0 || address > dp::pdu::sap::kMaxSlaveAddress) {
+    throw UsageError(path + ": address " + std::to_string(address) + " is outside 0.." +
+                     std::to_string(dp::pdu::sap::kMaxSlaveAddress) +
+                     " ([IEC 61158-4-3 addresses, SAPs])");
   }
   auto parsed = gsd::parse(read_text(path), path);
   if (!parsed) throw UsageError(parsed.error().what());

@@ -32,7 +32,10 @@ inline constexpr std::uint8_t kMasterMs2 = 50;    // "DPM2 to slave" (C2, UNCERT
                                                   // [docs/decisions.md#dp-open-points])
 inline constexpr std::uint8_t kMasterMm = 54;     // master-master
 
-// Station addresses ([IEC 61158-4-3 addresses, SAPs]).
+// Station addresses ([IEC 61158-4-3 addresses, SAPs]): a master or a slave is 0..126, 127
+// is the broadcast address (fdl::kBroadcastAddress); a slave in operation is 0..125, 126 is
+// the delivery address only Set_Slave_Add moves it from.
+inline constexpr std::uint8_t kMaxStationAddress = 126;
 inline constexpr std::uint8_t kMaxSlaveAddress = 125;
 inline constexpr std::uint8_t kDefaultSlaveAddress = 126;
 inline constexpr std::uint8_t kNoMasterAddress = 255;  // Diag.Master_Add when unparameterized

@@ -46,6 +46,18 @@ const char* to_string(LedState s) noexcept {
   return "unknown";
 }
 
+std::string_view to_token(LedState s) noexcept {
+  switch (s) {
+    case LedState::kDark: return "dark";
+    case LedState::kSteadyInit: return "steady-init";
+    case LedState::kFastBlink: return "fast-blink";
+    case LedState::kOffConnected: return "off-connected";
+    case LedState::kSteadyFault: return "steady-fault";
+    case LedState::kSlowBlink: return "slow-blink";
+  }
+  return "?";
+}
+
 LedPattern led_pattern(LedState s) noexcept {
   using std::chrono::milliseconds;
   switch (s) {
@@ -74,6 +86,16 @@ const char* to_string(ProxyPhase p) noexcept {
     case ProxyPhase::kDone: return "done";
   }
   return "unknown";
+}
+
+std::string_view to_token(ProxyPhase p) noexcept {
+  switch (p) {
+    case ProxyPhase::kWaitRs4: return "wait-rs4";
+    case ProxyPhase::kRequested: return "requested";
+    case ProxyPhase::kSyncRunning: return "sync-running";
+    case ProxyPhase::kDone: return "done";
+  }
+  return "?";
 }
 
 void Adapter::Channel::clear() {

@@ -99,7 +99,10 @@ enum class LedState : std::uint8_t {
   kSteadyFault,   // fault: steady for more than 3 s (invalid address switches)
   kSlowBlink,     // fault: blinking slower than 5 Hz (F-parameters refused)
 };
-[[nodiscard]] const char* to_string(LedState s) noexcept;
+[[nodiscard]] const char* to_string(LedState s) noexcept;  // for people: "off (connected)"
+// "dark", "steady-init", "fast-blink", "off-connected", "steady-fault", "slow-blink" (the
+// API's and the event stream's word).
+[[nodiscard]] std::string_view to_token(LedState s) noexcept;
 
 // How the LED shows a state: lit for `on` of every `period`; period 0 = steady (lit when `on`
 // is non-zero). Fast blink ≈5 Hz as the manual says; the fault blink is "slower than ≈5 Hz"
@@ -120,7 +123,9 @@ enum class ProxyPhase : std::uint8_t {
   kSyncRunning,  // the proxy reported "sync started": Proxy-Request 0
   kDone,         // check passed (or not needed): release allowed
 };
-[[nodiscard]] const char* to_string(ProxyPhase p) noexcept;
+[[nodiscard]] const char* to_string(ProxyPhase p) noexcept;  // for people: "wait for RS4"
+// "wait-rs4", "requested", "sync-running", "done" (the API's and the event stream's word).
+[[nodiscard]] std::string_view to_token(ProxyPhase p) noexcept;
 
 struct AdapterCounters {
   std::uint64_t cyclic_exchanges = 0;

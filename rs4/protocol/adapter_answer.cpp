@@ -41,6 +41,16 @@ constexpr std::size_t kRingSize = 2 + 2 * ErrorRingBuffer::kEntries;  // 42 byte
 
 }  // namespace
 
+std::string_view to_token(SyncDirection d) noexcept {
+  switch (d) {
+    case SyncDirection::kNone: return "none";
+    case SyncDirection::kVerify: return "verify";
+    case SyncDirection::kUpload: return "upload";
+    case SyncDirection::kDownload: return "download";
+  }
+  return "?";
+}
+
 std::vector<std::uint8_t> encode_version_answer(const VersionAnswer& a) {
   return {static_cast<std::uint8_t>(AdapterCommandCode::kGetVersion),
           a.profisafe_version_hi,

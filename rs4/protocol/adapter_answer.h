@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <string_view>
 #include <vector>
 
 namespace rs4sim::rs4::protocol {
@@ -92,6 +93,8 @@ enum class SyncDirection : std::uint8_t {
   kUpload = 2,    // the device's set is new (parametrised through the PC adapter): store it
   kDownload = 3,  // the device holds factory settings: download the stored set, if any
 };
+// "none", "verify", "upload", "download" (the API's word).
+[[nodiscard]] std::string_view to_token(SyncDirection d) noexcept;
 // PROFI_CMD_PROXY_BEGIN answer: 98 reason direction flags (4 bytes).
 struct ProxyBeginAnswer {
   SyncReason reason = SyncReason::kNone;

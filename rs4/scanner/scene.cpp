@@ -131,6 +131,17 @@ const BeamTable& beam_table() noexcept {
   return table;
 }
 
+std::string_view to_token(const Shape& shape) {
+  struct Token {
+    std::string_view operator()(const Circle&) const noexcept { return "circle"; }
+    std::string_view operator()(const Polygon&) const noexcept { return "polygon"; }
+    std::string_view operator()(const Wall&) const noexcept { return "wall"; }
+    std::string_view operator()(const PointObstacle&) const noexcept { return "point"; }
+    std::string_view operator()(const RawContour&) const noexcept { return "contour"; }
+  };
+  return std::visit(Token{}, shape);
+}
+
 outcome::std_result<void> check_shape(const Shape& shape) {
   if (const auto* c = std::get_if<Circle>(&shape)) {
     if (!finite(c->centre) || !std::isfinite(c->radius)) return SceneError::kNotFinite;

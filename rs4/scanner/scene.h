@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -40,6 +41,9 @@ struct RawContour {  // 529 distances in mm (kNoEchoMm = nothing), merged by min
   std::vector<std::uint16_t> mm;
 };
 using Shape = std::variant<Circle, Polygon, Wall, PointObstacle, RawContour>;
+// "circle", "polygon", "wall", "point", "contour" (the API's word: the request field that
+// carries the shape).
+[[nodiscard]] std::string_view to_token(const Shape& shape);
 
 using ObstacleId = std::uint32_t;
 struct Obstacle {

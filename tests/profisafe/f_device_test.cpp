@@ -231,5 +231,15 @@ TEST(ProfisafeFDeviceConfig, RejectsNonV1Profiles) {
   EXPECT_NO_THROW(FDevice{c});
 }
 
+// DeviceState.fdevice_state and the "fdevice-state" event show these words.
+TEST(ProfisafeFDeviceState, EveryStateHasItsApiWord) {
+  EXPECT_EQ(to_token(FDeviceState::kNoParameters), "no-parameters");
+  EXPECT_EQ(to_token(FDeviceState::kStartup), "startup");
+  EXPECT_EQ(to_token(FDeviceState::kRun), "run");
+  EXPECT_EQ(to_token(FDeviceState::kFault), "fault");
+  EXPECT_EQ(to_token(static_cast<FDeviceState>(200)), "?");
+  EXPECT_STREQ(to_string(FDeviceState::kNoParameters), "no-parameters");  // logs print the same
+}
+
 }  // namespace
 }  // namespace rs4sim::profisafe

@@ -187,5 +187,15 @@ TEST(ProfisafeFHostConfig, RejectsNonV1Parameters) {
   EXPECT_THROW(FHost{c}, std::invalid_argument);
 }
 
+// PlcView.fhost_state and the "fhost-state" event show these words; clients compare them.
+TEST(ProfisafeFHostState, EveryStateHasItsApiWord) {
+  EXPECT_EQ(to_token(FHostState::kStartup), "startup");
+  EXPECT_EQ(to_token(FHostState::kRun), "run");
+  EXPECT_EQ(to_token(FHostState::kPassivated), "passivated");
+  EXPECT_EQ(to_token(FHostState::kAckRequired), "ack-required");
+  EXPECT_EQ(to_token(static_cast<FHostState>(200)), "?");
+  EXPECT_STREQ(to_string(FHostState::kAckRequired), "ack-required");  // logs print the same
+}
+
 }  // namespace
 }  // namespace rs4sim::profisafe

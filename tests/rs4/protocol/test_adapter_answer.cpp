@@ -118,5 +118,15 @@ TEST(Rs4AdapterAnswer, ErrorMemoryAnswerRejectsBadIndexAgeAndLength) {
   EXPECT_EQ(decode_error_memory_answer(bytes).error(), ProtocolError::kBadAnswerLength);
 }
 
+// ProxyStationStatus.direction shows the direction the RS4 asked for in its
+// PROFI_CMD_PROXY_BEGIN answer; clients compare the word.
+TEST(Rs4AdapterAnswer, EverySyncDirectionHasItsApiWord) {
+  EXPECT_EQ(to_token(SyncDirection::kNone), "none");
+  EXPECT_EQ(to_token(SyncDirection::kVerify), "verify");
+  EXPECT_EQ(to_token(SyncDirection::kUpload), "upload");
+  EXPECT_EQ(to_token(SyncDirection::kDownload), "download");
+  EXPECT_EQ(to_token(static_cast<SyncDirection>(4)), "?");  // the decoder refuses 4 and up
+}
+
 }  // namespace
 }  // namespace rs4sim::rs4::protocol

@@ -202,5 +202,15 @@ TEST(ScannerScene, ObstacleLimit) {
   EXPECT_EQ(s.add(PointObstacle{{0, 100}}).error(), SceneError::kTooManyObstacles);
 }
 
+// The API names a refused shape by the request field that carried it (AddObstacle's
+// circle/polygon/wall/point/contour).
+TEST(ScannerScene, EveryShapeHasItsApiWord) {
+  EXPECT_EQ(to_token(Shape{Circle{{0, 0}, 10}}), "circle");
+  EXPECT_EQ(to_token(Shape{Polygon{}}), "polygon");
+  EXPECT_EQ(to_token(Shape{Wall{}}), "wall");
+  EXPECT_EQ(to_token(Shape{PointObstacle{}}), "point");
+  EXPECT_EQ(to_token(Shape{RawContour{}}), "contour");
+}
+
 }  // namespace
 }  // namespace rs4sim::rs4::scanner
