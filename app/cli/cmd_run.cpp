@@ -60,6 +60,11 @@ void add_byte_device_options(CLI::App& cmd, RunOptions& o) {
   cmd.add_option("--wire-table", d.wire_table,
                  "metron: the byte values and reply/report layouts from a JSON file (the "
                  "defaults: rs4sim metron-wire-table)");
+  cmd.add_option("--mains", d.mains,
+                 "gridscan: the mains at start: on (default: the power-up messages at once) | "
+                 "off (SIGUSR1 or GridScan.SetPower powers it up, e.g. once the controller has "
+                 "opened the pty)")
+      ->check(CLI::IsMember({"on", "off"}));
   cmd.add_option("--format", d.format,
                  "byte devices: character format override, e.g. 8E1 (--baud: the bit rate)");
   cmd.add_option("--rs232", d.rs232,

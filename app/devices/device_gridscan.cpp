@@ -71,12 +71,18 @@ void print_line_status(std::ostream& out, const gridscan::Device& d,
 
 class GridScanInstance final : public DeviceInstance {
  public:
-  explicit GridScanInstance(const gridscan::Options& o) : options_(o), device_(o) {}
+  GridScanInstance(const gridscan::Options& o, bool mains_on)
+      : options_(o), device_(o), mains_on_(mains_on) {}
   std::vector<stream::ByteDevice*> byte_devices() override { return {&tap_}; }
   [[nodiscard]] stream::LineProtocol line_protocol() const override {
     return stream::LineProtocol::kGridScan;
   }
-  void start(dp::TimePoint now) override { device_.power_on(now); }
+  // --mains off: the curtain stays dark until SIGUSR1 or GridScan.SetPower, so a controller
+  // that opens the line late (or flushes it on open) still sees the power-up messages.
+  void start(dp::TimePoint now) override {
+    if (mains_on_) device_.power_on(now);
+    else device_.power_off();
+  }
   // SIGUSR1: a power cycle (the power-up messages, the configuration window and the alignment
   // arming again, e.g. once the controller has opened the line); SIGUSR2: mains off.
   void on_user_signal(bool second, dp::TimePoint now) override {
@@ -90,7 +96,8 @@ class GridScanInstance final : public DeviceInstance {
            std::string(gridscan::to_token(device_.configuration())) + " mode, " +
            stream::to_string(device_.line_settings()) + ", t_CYCLE " +
            std::to_string(cycle_us / 1000) + "." + std::to_string(cycle_us % 1000 / 100) +
-           " ms; SIGUSR1 power-cycles it, SIGUSR2 switches it off)";
+           " ms; " + (mains_on_ ? "" : "mains off until SIGUSR1; ") +
+           "SIGUSR1 power-cycles it, SIGUSR2 switches it off)";
   }
   void print_byte_status(std::ostream& out, const stream::ByteCounters& c) const override {
     print_line_status(out, device_, c);
@@ -112,6 +119,7 @@ class GridScanInstance final : public DeviceInstance {
  private:
   gridscan::Options options_;
   gridscan::Device device_;
+  bool mains_on_;
   rpc::TappedByteDevice tap_{device_};
   std::unique_ptr<rpc::LineDeviceTarget> target_;
 };
@@ -129,7 +137,8 @@ const LineDevice<gridscan::Device> kGridScanLine{
 void validate(DeviceOptions& o) {
   refuse_unused(
       o, "gridscan",
-      {DeviceFlag::kElements, DeviceFlag::kMode, DeviceFlag::kDoor, DeviceFlag::kBlocked});
+      {DeviceFlag::kElements, DeviceFlag::kMode, DeviceFlag::kDoor, DeviceFlag::kBlocked,
+       DeviceFlag::kMains});
   (void)gridscan_options(o);  // throws UsageError with the reason
 }
 
@@ -141,11 +150,15 @@ DeviceEntry gridscan_device_entry() {
       .validate = validate,
       .build =
           [](const DeviceOptions& o) {
-            return std::make_unique<GridScanInstance>(gridscan_options(o));
+            return std::make_unique<GridScanInstance>(gridscan_options(o), o.mains != "off");
           },
       .simulate =
           [](const DeviceOptions& o) {
-            return std::make_unique<GridScanSegment>(kGridScanLine, gridscan_options(o));
+            auto segment = std::make_unique<GridScanSegment>(kGridScanLine, gridscan_options(o));
+            // --mains off: dark until GridScan.SetPower / PowerCycle (the device powers up at
+            // the line's first call unless power_off() came first).
+            if (o.mains == "off") segment->device().power_off();
+            return segment;
           },
       .demo = run_gridscan_demo,
       .byte_device = true,

@@ -38,6 +38,7 @@ bool given(const DeviceOptions& o, DeviceFlag f) {
     case DeviceFlag::kGsd: return !o.gsd.empty();
     case DeviceFlag::kModule: return !o.modules.empty();
     case DeviceFlag::kWireTable: return !o.wire_table.empty();
+    case DeviceFlag::kMains: return !o.mains.empty();
   }
   return false;
 }
@@ -50,7 +51,7 @@ constexpr DeviceFlag kAllFlags[] = {
     DeviceFlag::kNode,        DeviceFlag::kRs232,        DeviceFlag::kPcAdapter,
     DeviceFlag::kCommandTime, DeviceFlag::kResponseTime, DeviceFlag::kAddresses,
     DeviceFlag::kSerialNumber, DeviceFlag::kState,        DeviceFlag::kGsd,
-    DeviceFlag::kModule,      DeviceFlag::kWireTable,
+    DeviceFlag::kModule,      DeviceFlag::kWireTable,    DeviceFlag::kMains,
 };
 
 // A whole decimal number in `text`, or nullopt.
@@ -98,6 +99,7 @@ const char* flag_name(DeviceFlag f) {
     case DeviceFlag::kSerialNumber: return "--serial-number";
     case DeviceFlag::kState: return "--state";
     case DeviceFlag::kWireTable: return "--wire-table";
+    case DeviceFlag::kMains: return "--mains";
   }
   return "--?";
 }

@@ -38,6 +38,7 @@ enum class DeviceFlag : std::uint8_t {
   kGsd,     // --gsd FILE (generic)
   kModule,  // --module NAME, repeatable (with --gsd)
   kWireTable,  // --wire-table FILE (METRON)
+  kMains,      // --mains on | off (GridScan)
 };
 
 // "--elements".

@@ -73,6 +73,7 @@ struct DeviceOptions {
   std::optional<int> door;                  // --door N (GridScan: door position)
   std::optional<int> node;                  // --node N (METRON node)
   std::string wire_table;                   // --wire-table FILE (METRON byte values, JSON)
+  std::string mains;                        // --mains on | off (GridScan: power at start)
   // The RS4's RS232 interface behind the optical PC adapter (docs/rs232.md):
   std::string rs232;       // --rs232 pty | serial:DEVICE[@BAUD]
   std::string pc_adapter;  // --pc-adapter attached | detached (at start)

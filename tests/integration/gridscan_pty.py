@@ -4,7 +4,7 @@
 No code of ours on this side: the script opens the pty with os/termios only, reads the
 power-up messages, plays the communication-test exchange of [GridScan manual §10.3],
 sends a request with a bad CRC (no reply) and asks for the full state of the scene given
-on the command line (--door 10 --blocked 3).
+on the command line (--door 10 --blocked 3). Then --mains off: silent until SIGUSR1.
 Usage: gridscan_pty.py <path to rs4sim>
 """
 import os
@@ -101,7 +101,34 @@ def main():
     if rc != 0:
         print(f"FAIL rs4sim exited {rc}")
         sys.exit(1)
+    mains_off(sys.argv[1])
     print("all answers as expected")
+
+
+def mains_off(rs4sim):
+    """--mains off: the line stays silent after the client has opened it, until SIGUSR1
+    switches the mains on; then the power-up messages, SeqCnt from 0."""
+    proc = subprocess.Popen(
+        [rs4sim, "run", "--device", "gridscan", "--link", "pty", "--mains", "off",
+         "--duration", "3"], stdout=subprocess.PIPE, text=True)
+    fd = os.open(proc.stdout.readline().strip(), os.O_RDWR | os.O_NOCTTY)
+    raw(fd)
+    try:
+        early = read_exactly(fd, 1, 0.5)
+        if early:
+            print(f"FAIL --mains off sent {bytes(early).hex(' ')} before SIGUSR1")
+            sys.exit(1)
+        print("ok   --mains off: silent until switched on")
+        proc.send_signal(signal.SIGUSR1)
+        expect(fd, "power-up version after --mains off and SIGUSR1",
+               SYNC + [0x00, 0xA0, 0x30, 0x31, 0x2E, 0x30, 0x32, 0x30, 0x33, 0x2E, 0x30, 0x34,
+                       0x33, 0x7F, 0x67, 0x4B])
+    finally:
+        os.close(fd)
+    rc = proc.wait(timeout=15)
+    if rc != 0:
+        print(f"FAIL rs4sim --mains off exited {rc}")
+        sys.exit(1)
 
 
 if __name__ == "__main__":
