@@ -16,6 +16,9 @@ import termios
 import time
 
 SYNC = [0x43, 0x45, 0x44, 0x45]
+# The power-up version message: SeqCnt 0, ID 0xA0, "01.02" (SW) "03.04" (HW), CRC32.
+POWER_UP_VERSION = SYNC + [0x00, 0xA0, 0x30, 0x31, 0x2E, 0x30, 0x32, 0x30, 0x33, 0x2E, 0x30,
+                           0x34, 0x33, 0x7F, 0x67, 0x4B]
 
 
 def raw(fd):
@@ -60,8 +63,7 @@ def main():
     raw(fd)
     try:
         expect(fd, "power-up version (SeqCnt 0, SW 01.02, HW 03.04)",
-               SYNC + [0x00, 0xA0, 0x30, 0x31, 0x2E, 0x30, 0x32, 0x30, 0x33, 0x2E, 0x30, 0x34,
-                       0x33, 0x7F, 0x67, 0x4B])
+               POWER_UP_VERSION)
         expect(fd, "power-up reduced state (SeqCnt 1, door 10, interrupted)",
                SYNC + [0x01, 0xB0, 0x0A, 0x01, 0x36, 0x9C, 0xDB, 0xFF], timeout=3.0)
         exchange = [  # [GridScan manual §10.3]
@@ -91,8 +93,7 @@ def main():
         # SIGUSR1: a power cycle once the line is open: the power-up messages again, SeqCnt 0.
         proc.send_signal(signal.SIGUSR1)
         expect(fd, "power-up version after SIGUSR1",
-               SYNC + [0x00, 0xA0, 0x30, 0x31, 0x2E, 0x30, 0x32, 0x30, 0x33, 0x2E, 0x30, 0x34,
-                       0x33, 0x7F, 0x67, 0x4B])
+               POWER_UP_VERSION)
         expect(fd, "power-up reduced state after SIGUSR1",
                SYNC + [0x01, 0xB0, 0x0A, 0x01, 0x36, 0x9C, 0xDB, 0xFF], timeout=3.0)
     finally:
@@ -121,8 +122,7 @@ def mains_off(rs4sim):
         print("ok   --mains off: silent until switched on")
         proc.send_signal(signal.SIGUSR1)
         expect(fd, "power-up version after --mains off and SIGUSR1",
-               SYNC + [0x00, 0xA0, 0x30, 0x31, 0x2E, 0x30, 0x32, 0x30, 0x33, 0x2E, 0x30, 0x34,
-                       0x33, 0x7F, 0x67, 0x4B])
+               POWER_UP_VERSION)
     finally:
         os.close(fd)
     rc = proc.wait(timeout=15)
