@@ -12,6 +12,15 @@
 #   ./build.sh build   install + build only
 #   ./build.sh deps    install what `test` needs, run the preflight; no build (a fresh
 #                      machine's check: tools/fresh_machine_check.sh)
+#   ./build.sh configure MODE DIR
+#                      configure DIR as MODE (demo, test, build) would, nothing else (the
+#                      check of the modes: tests/tools/build_modes_test.sh)
+#
+# Every mode configures the tree it builds with everything that mode needs, whatever an
+# earlier mode left in the tree's cache: `demo` then `test` builds and runs every tier.
+# All modes compile the same way (-O2, line tables), so `test` after `demo` only adds the
+# tests and benchmarks. Every build goes through ccache, set up so that another clone of
+# the same commit hits the objects of this one (docs/ci.md).
 #
 # `test` and `deps` install the packages of tools/preflight.sh's table (what the tests import
 # or call, each beside the test that needs it, what a dependency only recommends included)
@@ -23,16 +32,15 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
+usage() { echo "usage: $0 demo|test|build|deps  (or: $0 configure demo|test|build DIR)" >&2; exit 2; }
 mode=${1:-}
-case "$mode" in demo|test|build|deps) ;; *)
-  echo "usage: $0 demo|test|build|deps" >&2; exit 2;;
-esac
+case "$mode" in demo|test|build|deps|configure) ;; *) usage ;; esac
 
 JOBS=${JOBS:-$(nproc)}
 FUZZ_SECONDS=${FUZZ_SECONDS:-3}
 RS4SIM_WERROR=${RS4SIM_WERROR:-ON}
 
-packages=(build-essential cmake ninja-build pkg-config libboost-dev libsqlite3-dev
+packages=(build-essential cmake ninja-build ccache pkg-config libboost-dev libsqlite3-dev
           libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev)
 packages+=(libprotobuf-dev protobuf-compiler zlib1g-dev)   # storage/: archive export format, CRC-32
 packages+=(libgrpc++-dev protobuf-compiler-grpc)           # rpc/: the control API
@@ -47,6 +55,7 @@ if $testing; then
 fi
 
 missing=()
+[ "$mode" = configure ] && packages=()   # configure only: nothing is installed
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
 done
@@ -61,20 +70,54 @@ if $testing; then
   tools/preflight.sh
 fi
 
-configure_and_build() {  # dir, extra cmake args...
-  local dir=$1; shift
-  cmake -S . -B "$dir" -G Ninja -DRS4SIM_WERROR="$RS4SIM_WERROR" "$@" >/dev/null
-  cmake --build "$dir" -j "$JOBS"
+# The compiler cache: paths under the source folder are hashed relative to it and the
+# working folder is left out, so a fresh clone elsewhere hits this one's objects (test data
+# paths reach the tests relative to their executable, and the unity batches include their
+# files by relative path: tests/CMakeLists.txt). CCACHE_DIR keeps ccache's own default.
+export CCACHE_BASEDIR=$PWD CCACHE_NOHASHDIR=1 CCACHE_MAXSIZE=${CCACHE_MAXSIZE:-20G}
+
+# The cmake arguments of a mode, into the array `args`; every mode states every option it
+# depends on, so what an earlier mode left in a tree's cache never decides.
+mode_args() {  # mode
+  args=(-G Ninja -DRS4SIM_WERROR="$RS4SIM_WERROR" -DCMAKE_BUILD_TYPE=RelWithDebInfo
+        -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  # -g1 (line tables): every backtrace still has file:line; full -g costs a third of the
+  # build time here for nothing a test run reads.
+  local gcc=(-DCMAKE_CXX_COMPILER=g++ -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG"
+             -DRS4SIM_FUZZ=OFF -DRS4SIM_SANITIZE=OFF)
+  case "$1" in
+    demo) args+=("${gcc[@]}" -DRS4SIM_TESTS=OFF -DRS4SIM_BENCH=OFF) ;;
+    test|build) args+=("${gcc[@]}" -DRS4SIM_TESTS=ON -DRS4SIM_BENCH=ON) ;;
+    # One clang build serves the sanitizers and the fuzzers (stage 2 of `test`).
+    asan) args+=(-DCMAKE_CXX_COMPILER=clang++ -DRS4SIM_FUZZ=ON -DRS4SIM_TESTS=ON
+                 -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG") ;;
+    *) usage ;;
+  esac
+}
+
+configure() {  # dir, mode
+  local args
+  mode_args "$2"
+  cmake -S . -B "$1" "${args[@]}" >/dev/null
+}
+
+configure_and_build() {  # dir, mode
+  configure "$1" "$2"
+  cmake --build "$1" -j "$JOBS"
 }
 
 case "$mode" in
+  configure)
+    [ $# -eq 3 ] || usage
+    configure "$3" "$2"
+    ;;
   build)
-    configure_and_build build
+    configure_and_build build build
     ;;
   deps)
     ;;
   demo)
-    configure_and_build build -DRS4SIM_TESTS=OFF -DRS4SIM_BENCH=OFF
+    configure_and_build build demo
     exec build/app/rs4sim demo
     ;;
   test)
@@ -84,29 +127,29 @@ case "$mode" in
     # ./build.sh test installed PostgreSQL's server programs: the PostgreSQL half of the
     # archive tests must run, a server that does not start is a failure (never a skip).
     export RS4SIM_REQUIRE_POSTGRES=1
+    ccache --zero-stats >/dev/null
     echo "==> [1/3] build + ctest: unit, integration, realtime"
-    # -g1 (line tables): every backtrace still has file:line; full -g costs a third of the
-    # build time here for nothing a test run reads.
-    configure_and_build build -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG"
+    configure_and_build build test
     stage_done "build"
     for tier in unit integration realtime; do
       echo "--- ctest -L $tier"
-      (cd build && ctest -L "^$tier\$" --output-on-failure -j "$JOBS")
+      # A selection that finds no test is a broken build, not a pass.
+      (cd build && ctest -L "^$tier\$" --no-tests=error --output-on-failure -j "$JOBS")
       stage_done "ctest -L $tier"
     done
     echo "==> [2/3] clang: ASan + UBSan build (with the libFuzzer targets) + ctest unit, integration"
     # One clang build serves the sanitizers and the fuzzers. The realtime tier (wall clock:
     # pty, UDP, processes) ran in stage 1; every unit and integration test runs again here.
-    configure_and_build build-asan -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-      -DRS4SIM_FUZZ=ON -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
+    configure_and_build build-asan asan
     stage_done "sanitizer build"
     (cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
        UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-       ctest -L '^(unit|integration)$' --output-on-failure -j "$JOBS")
+       ctest -L '^(unit|integration)$' --no-tests=error --output-on-failure -j "$JOBS")
     stage_done "sanitizer ctest"
     echo "==> [3/3] libFuzzer targets, ${FUZZ_SECONDS}s each, $JOBS at a time"
     JOBS=$JOBS fuzz/run_all.sh build-asan/fuzz "$FUZZ_SECONDS"
     stage_done "fuzz"
+    echo "==> compiler cache: $(ccache --print-stats | awk -F'\t' '$1=="direct_cache_hit"||$1=="preprocessed_cache_hit"{h+=$2} $1=="cache_miss"{m=$2} END{printf "%d hits, %d misses", h, m}')"
     echo "==> all tests passed"
     ;;
 esac

@@ -35,12 +35,13 @@ Writer spawn(const std::string& file, int seed) {
   int fds[2];
   if (::pipe(fds) != 0) return {};
   const auto seed_text = std::to_string(seed);
+  const std::string writer = RS4SIM_ARCHIVE_WRITER;  // before fork: the child only execs
   const pid_t pid = ::fork();
   if (pid == 0) {
     ::dup2(fds[1], STDOUT_FILENO);
     ::close(fds[0]);
     ::close(fds[1]);
-    ::execl(RS4SIM_ARCHIVE_WRITER, "archive_writer", file.c_str(), seed_text.c_str(), nullptr);
+    ::execl(writer.c_str(), "archive_writer", file.c_str(), seed_text.c_str(), nullptr);
     ::_exit(127);
   }
   ::close(fds[1]);

@@ -66,7 +66,7 @@ std::string read_text(const std::string& path) {
 TEST(ArchiveFile, HandWrittenJsonImportsToTheExpectedRows) {
   auto archive = SqliteArchive::open(":memory:").value();
   const auto summary =
-      import_json(*archive, read_text(RS4SIM_STORAGE_DATA "/archive_v1.json")).value();
+      import_json(*archive, read_text(RS4SIM_STORAGE_DATA + "/archive_v1.json")).value();
   EXPECT_EQ(summary.stations, 1u);
   EXPECT_EQ(summary.versions, 3u);
   EXPECT_EQ(summary.new_sets, 2u);
