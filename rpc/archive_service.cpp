@@ -8,6 +8,7 @@
 #include "rs4/scanner/parameter_codec.h"
 #include "storage/archive_file.h"
 #include "storage/change_feed.h"
+#include "storage/open_archive.h"
 
 #include <string>
 
@@ -105,6 +106,7 @@ grpc::Status ArchiveService::on_loop(const std::function<grpc::Status()>& f) {
 
 grpc::Status ArchiveService::ListStations(grpc::ServerContext*, const v1::ListStationsRequest*,
                                           v1::ListStationsResponse* out) {
+  out->set_archive(storage::display_location(location_));
   return on_loop([&] {
     auto stations = archive_.stations();
     if (!stations) return archive_status(stations.error(), "");

@@ -404,11 +404,14 @@ grpc::Status ObservationService::GetContour(grpc::ServerContext*, const v1::Stat
   });
 }
 
+void SimTimeService::time(v1::TimeResponse& out) const {
+  out.set_now_ns(to_ns(c_.target.now()));
+  out.set_simulated(c_.target.simulated());
+  out.set_start_ns(to_ns(start_));
+}
+
 grpc::Status SimTimeService::Now(grpc::ServerContext*, const v1::Empty*, v1::TimeResponse* out) {
-  c_.executor.run([&] {
-    out->set_now_ns(to_ns(c_.target.now()));
-    out->set_simulated(c_.target.simulated());
-  });
+  c_.executor.run([&] { time(*out); });
   return grpc::Status::OK;
 }
 
@@ -432,8 +435,7 @@ grpc::Status SimTimeService::Advance(grpc::ServerContext* context, const v1::Adv
       SliceDone slice(never);
       c_.target.run_until(std::ref(slice), *end - c_.target.now());
       more = slice.sliced() && c_.target.now() < *end;
-      out->set_now_ns(to_ns(c_.target.now()));
-      out->set_simulated(true);
+      time(*out);
     });
     if (more && context->IsCancelled()) return stopped_by_client(out->now_ns());
   }

@@ -101,7 +101,9 @@ class FaultsService final : public v1::Faults::Service {
 
 class SimTimeService final : public v1::SimTime::Service {
  public:
-  explicit SimTimeService(RunContext context) : c_(context) {}
+  // Reads the run's clock once, as the run's start (TimeResponse.start_ns): built before the
+  // run's loop starts, on the thread that runs it.
+  explicit SimTimeService(RunContext context) : c_(context), start_(context.target.now()) {}
   grpc::Status Now(grpc::ServerContext*, const v1::Empty*, v1::TimeResponse* out) override;
   grpc::Status Advance(grpc::ServerContext*, const v1::AdvanceRequest* in,
                        v1::TimeResponse* out) override;
@@ -109,7 +111,9 @@ class SimTimeService final : public v1::SimTime::Service {
                         v1::RunUntilResponse* out) override;
 
  private:
+  void time(v1::TimeResponse& out) const;  // on the loop
   RunContext c_;
+  dp::TimePoint start_;
 };
 
 // Device, Observation, Faults and SimTime over `target`: the services of a run with RS4s.

@@ -4,6 +4,8 @@
 // clients (grpcurl, grpc_cli, Postman) can explore the API. Beyond loopback it serves only
 // with TLS and a bearer token ("Remote access" in docs/rpc.md).
 
+#include "rpc/run_service.h"
+
 #include <grpcpp/channel.h>
 #include <grpcpp/server.h>
 
@@ -55,7 +57,7 @@ class RpcServer {
  public:
   // Throws std::invalid_argument for refused options (check_server_options), and
   // std::runtime_error when the bind fails or gRPC refuses the certificate or key. The
-  // services must outlive the server.
+  // services must outlive the server. Serves rs4sim.v1.Run (rpc/run_service.h) besides.
   RpcServer(const ServerOptions& options, const std::vector<grpc::Service*>& services);
   RpcServer(const RpcServer&) = delete;
   RpcServer& operator=(const RpcServer&) = delete;
@@ -71,6 +73,7 @@ class RpcServer {
   void shutdown();
 
  private:
+  RunService run_;  // declared before server_: outlives it
   std::unique_ptr<grpc::Server> server_;
   std::string address_;
   int port_ = 0;

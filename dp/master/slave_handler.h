@@ -62,6 +62,8 @@ struct PollCounters {
   std::uint64_t entered_data_exchange = 0;
   std::uint64_t left_data_exchange = 0;  // lost slave or re-parameterisation
                                          // ([IEC 61158-6-3 slave supervision])
+  // Replies that do not fit their request (wrong kind, length or SAPs); a negative reply
+  // counts in negative_replies only.
   std::uint64_t invalid_responses = 0;
   // Replies with a negative status: RS (SAP not enabled), RR (no resources), UE (user error)
   // ([IEC 61158-4-3 frame control, response status]).

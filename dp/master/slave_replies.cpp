@@ -23,13 +23,22 @@ std::error_code negative_reply(const Reply& r) {
   return make_error_code(MasterError::kInvalidResponse);
 }
 
+// A reply with status RS, RR or UE ([IEC 61158-4-3 frame control, response status]).
+bool negative_status(const Reply& r) {
+  return !r.short_ack && (r.status == S::kSapNotEnabled || r.status == S::kNoResource ||
+                          r.status == S::kUserError);
+}
+
+// A reply that does not fit its request counts as Illegal, unless it is a negative reply,
+// which counts as RS/RR only: ProfiTrace's live list counts the two apart.
+void count_unfitting(PollCounters& c, const Reply& r) {
+  if (!negative_status(r)) ++c.invalid_responses;
+}
+
 }  // namespace
 
 void SlaveHandler::on_reply(SlaveContext& ctx, const Reply& r, TimePoint now) {
-  if (!r.short_ack && (r.status == S::kSapNotEnabled || r.status == S::kNoResource ||
-                       r.status == S::kUserError)) {
-    ++counters_.negative_replies;
-  }
+  if (negative_status(r)) ++counters_.negative_replies;
   switch (last_kind_) {
     case RequestKind::kFdlStatus: on_status_reply(ctx, r); break;
     case RequestKind::kDiag: on_diag_reply(ctx, r); break;
@@ -57,7 +66,7 @@ void SlaveHandler::on_status_reply(SlaveContext& ctx, const Reply& r) {
   // [IEC 61158-6-3 master start-up of a slave] [pyprofibus dp_master.py] step 0: SD1 reply, FC
   // status OK with station type "slave" (`00`).
   if (r.short_ack || r.has_saps || !r.data.empty() || r.status != S::kOk) {
-    ++counters_.invalid_responses;
+    count_unfitting(counters_, r);
     fault(ctx, make_error_code(MasterError::kInvalidResponse));
     return;
   }
@@ -76,7 +85,7 @@ void SlaveHandler::on_diag_reply(SlaveContext& ctx, const Reply& r) {
   auto diag = shaped ? pdu::decode_slave_diag(r.data)
                      : pdu::Result<pdu::SlaveDiag>(make_error_code(pdu::PduError::kTooShort));
   if (!diag) {
-    ++counters_.invalid_responses;
+    count_unfitting(counters_, r);
     restart(ctx, shaped ? make_error_code(MasterError::kInvalidResponse) : negative_reply(r),
             PollState::kReadDiag);
     return;
@@ -157,7 +166,7 @@ void SlaveHandler::on_prm_cfg_reply(SlaveContext& ctx, const Reply& r, TimePoint
   // Set_Prm/Chk_Cfg are confirmed by SC only; acceptance shows in the next diag
   // ([IEC 61158-4-3 short acknowledgement]).
   if (!r.empty_ack()) {
-    ++counters_.invalid_responses;
+    count_unfitting(counters_, r);
     restart(ctx, negative_reply(r), PollState::kReadDiag);
     return;
   }
@@ -175,7 +184,7 @@ void SlaveHandler::on_dx_reply(SlaveContext& ctx, const Reply& r) {
   // without inputs; RS ⇒ the slave left DATA_EXCH ([IEC 61158-6-3 slave supervision]).
   std::span<const std::uint8_t> in;
   if (r.has_saps || !(r.carries_data() || r.empty_ack())) {
-    ++counters_.invalid_responses;
+    count_unfitting(counters_, r);
     leave_data_exchange(ctx, negative_reply(r), PollState::kReadDiag);
     return;
   }

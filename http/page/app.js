@@ -29,6 +29,15 @@ const svg = (tag, attrs = {}) => {
   return e;
 };
 
+// ---- what the run serves (rs4sim.v1.Run/Describe, asked once) ------------------------------
+let served = new Set();
+const serves = (service) => served.has("rs4sim.v1." + service);
+
+// ---- the run's clock: times are shown since the run began -------------------------------------
+let clockStart = 0;
+let simulatedRun = false;  // SimTime's start_ns: the run's clock when it began (not 0 when simulated)
+const sinceStart = (ns) => ((Number(ns) - clockStart) / 1e9).toFixed(3) + " s";
+
 // ---- the stations -------------------------------------------------------------------------
 const stations = new Map();  // address -> { kind, values: {what: to}, state, alarms, diags }
 let selected = null;         // the RS4 shown in the panel
@@ -41,7 +50,13 @@ function station(address) {
 }
 
 const pill = (text, cls) => `<span class="pill ${cls || ""}">${text || "–"}</span>`;
-function dpClass(v) { return v === "Data_Exch" ? "ok" : v ? "warn" : ""; }
+// The DP state in the standard's words [IEC 61158-6-3 slave state machine]: the slave's own
+// (the event stream, GsdStations) and the master's view of it (BusMaster: DataExchange,
+// WaitPrm, ...) shown alike, with one colour for data exchange.
+const DP_STATE_NAMES = { DataExchange: "Data_Exch", WaitPrm: "Wait_Prm", WaitCfg: "Wait_Cfg",
+  PowerOn: "Power_On" };
+const dpName = (v) => DP_STATE_NAMES[v] || v;
+function dpClass(v) { return dpName(v) === "Data_Exch" ? "ok" : v ? "warn" : ""; }
 function fClass(v) { return !v ? "" : /run|data/i.test(v) ? "ok" : /fail|passiv|error/i.test(v) ? "bad" : "warn"; }
 
 function renderStations() {
@@ -72,8 +87,8 @@ function renderStations() {
     row.classList.toggle("selected", address === selected);
     row.innerHTML = [
       `<td>${address}</td>`, `<td>${s.kind || "–"}</td>`,
-      `<td>${pill(v["dp-state"], dpClass(v["dp-state"]))}</td>`,
-      `<td>${pill(v["fdevice-state"], fClass(v["fdevice-state"]))}${plc ? " " + pill("F-host " + plc.fhostState, fClass(plc.fhostState)) : ""}</td>`,
+      `<td>${pill(dpName(v["dp-state"]), dpClass(v["dp-state"]))}</td>`,
+      `<td>${fdeviceCell(v, plc)}</td>`,
       `<td>${v.ossd === undefined ? "–" : pill(v.ossd, v.ossd === "on" ? "ok" : "bad")}</td>`,
       `<td>${v["rs4-state"] || v.state || (v.powered === "off" ? "off" : v.online === "no" ? "off the bus" : v.online === "yes" ? "online" : "–")}</td>`,
       `<td>${proxyText(s)}</td>`,
@@ -86,6 +101,17 @@ function renderStations() {
       `<td>${s.alarms || "–"}</td>`, `<td>${s.diags}</td>`,
     ].join("");
   }
+}
+
+// The RS4's PROFIsafe state and, where the run has the PLC side, the F-host's. A simulated bus
+// is all in this process: without a PLC side it has no F-host, and the RS4 waiting for one
+// (its watchdog expired: "fault") is shown as that, not as a fault. On a real link the F-host
+// is elsewhere and the device's state is shown as it is.
+function fdeviceCell(v, plc) {
+  const f = v["fdevice-state"];
+  if (!f) return plc ? pill("F-host " + plc.fhostState, fClass(plc.fhostState)) : "–";
+  if (!plc && simulatedRun && fClass(f) !== "ok") return pill("no F-host on this bus", "");
+  return pill(f, fClass(f)) + (plc ? " " + pill("F-host " + plc.fhostState, fClass(plc.fhostState)) : "");
 }
 
 // A station as `master`'s class 1 master and F-host see it, in the event stream's item names
@@ -141,7 +167,7 @@ function log(text) {
 function onEvent(e) {
   const address = e.address || 0;
   const s = station(address);
-  const t = (Number(e.nowNs) / 1e9).toFixed(3) + " s";
+  const t = sinceStart(e.nowNs);
   if (e.state) {
     s.values[e.state.what] = e.state.to;
     if (e.state.from) log(`${t}  #${address}  ${e.state.what}: ${e.state.from} → ${e.state.to}`);
@@ -326,8 +352,8 @@ function drawGrid(r) {
 }
 
 // ---- GridScan, METRON, Polaris: their elements/beams ------------------------------------------
-// A station the event stream names but ListDevices does not is asked once which line device
-// it is (GetState of each service; the wrong ones answer NOT_FOUND or UNIMPLEMENTED).
+// A station the event stream names but ListDevices does not is a line device if the run serves
+// a line device's service (a line run holds one device): asked once with that service only.
 const LINE_KINDS = [
   { kind: "gridscan", service: "rs4sim.v1.GridScan", count: (st) => st.elements,
     text: (st) => `${st.power || "–"}, ${st.mode || "–"}, ${st.configuration || "–"}` +
@@ -345,14 +371,14 @@ async function probeLine(address) {
   if (lineOf.has(address) || probing.has(address)) return;
   probing.add(address);
   let found = null;
-  for (const k of LINE_KINDS) {
+  const k = LINE_KINDS.find((line) => served.has(line.service));
+  if (k) {
     try {
       const st = await call(k.service + "/GetState", { address });
       found = k;
       station(address).kind = k.kind;
       drawLine(address, k, st);
-      break;
-    } catch (err) { /* not this kind */ }
+    } catch (err) { /* NOT_FOUND: not the line device */ }
   }
   lineOf.set(address, found);
   probing.delete(address);
@@ -515,11 +541,13 @@ function drawGsd(st) {
 async function refreshClock(t) {
   try {
     const now = t || await call("rs4sim.v1.SimTime/Now");
+    if (now.startNs !== undefined) clockStart = Number(now.startNs);
+    simulatedRun = Boolean(now.simulated);
     if (!now.simulated) return false;
     $("clock").hidden = false;
-    $("clock-now").textContent = (Number(now.nowNs) / 1e9).toFixed(3) + " s";
+    $("clock-now").textContent = sinceStart(now.nowNs);
     return true;
-  } catch (err) { return false; /* a real-time run or no SimTime service: no clock */ }
+  } catch (err) { log("SimTime: " + err.message); return false; }
 }
 for (const b of document.querySelectorAll("#clock button")) {
   b.addEventListener("click", async () => {
@@ -541,6 +569,7 @@ async function pollArchive() {
   let list;
   try { list = await call("rs4sim.v1.Archive/ListStations"); } catch (err) { return false; }
   $("archive-panel").hidden = false;
+  $("archive-name").textContent = list.archive || "(not named)";
   const body = $("archive-stations").tBodies[0];
   body.replaceChildren();
   for (const st of list.stations || []) {
@@ -612,16 +641,26 @@ const hex8 = (n) => Number(n).toString(16).padStart(8, "0").toUpperCase();
 // ---- start ------------------------------------------------------------------------------------
 async function start() {
   try {
-    const list = await call("rs4sim.v1.Device/ListDevices");
+    served = new Set((await call("rs4sim.v1.Run/Describe")).services || []);
+  } catch (err) { log("Run.Describe: " + err.message); }
+  if (serves("Device")) {
+    const list = await call("rs4sim.v1.Device/ListDevices").catch(() => ({}));
     for (const d of list.devices || []) station(d.address).kind = d.kind;
-  } catch (err) { /* not an RS4 run: the kinds stay unknown */ }
-  if (await refreshClock()) setInterval(refreshClock, 250);
-  if (await pollProxy()) setInterval(pollProxy, 500);
+  }
+  if (serves("SimTime") && await refreshClock()) setInterval(refreshClock, 250);
+  if (serves("Proxy") && await pollProxy()) setInterval(pollProxy, 500);
   let polled = false;
-  if (await pollMaster()) { polled = true; setInterval(pollMaster, 500); }
-  if (await pollArchive()) { polled = true; setInterval(pollArchive, 2000); }
-  const gsd = await pollGsd();
+  if (serves("BusMaster") && await pollMaster()) { polled = true; setInterval(pollMaster, 500); }
+  if (serves("Archive") && await pollArchive()) { polled = true; setInterval(pollArchive, 2000); }
+  const gsd = serves("GsdStations") && await pollGsd();
   let gsdPoll = gsd ? setInterval(pollGsd, 1000) : null;
+  if (!serves("Observation")) {
+    // No event source in this run (`master`): the page polls what it serves.
+    if (gsd) { polled = true; clearInterval(gsdPoll); gsdPoll = setInterval(pollGsd, 500); }
+    $("link").dataset.state = polled ? "polling" : "lost";
+    $("link").textContent = polled ? "polling" : "no event stream";
+    return;
+  }
   const events = new EventSource("/api/events" + (token ? "?access_token=" + encodeURIComponent(token) : ""));
   events.onopen = () => { $("link").dataset.state = "live"; $("link").textContent = "live"; };
   events.onerror = () => {

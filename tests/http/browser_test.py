@@ -19,6 +19,9 @@ two versions and the page draws their diff (the picture of `rs4sim archive diff 
 Before that, a bus file on the simulated bus (`run --bus bus_rs4_gsd.json --link memory`):
 the GSD station's address, ident, modules, DP state and online, and the inputs set through
 GsdStations.SetInputs bit by bit in the DOM; off the bus and back.
+At every stage the browser's console holds no 501 (the page asks Run.Describe what the run
+serves and calls nothing else); the RS4's healthy start counts RS/RR but no Illegal; the
+master's page names its archive file and shows the master's DataExchange as Data_Exch.
 The screenshots are the test's artifacts: live_view.png, live_view_gridscan.png,
 live_view_metron.png, live_view_polaris.png, live_view_gsd.png and live_view_master.png in
 OUTDIR.
@@ -81,6 +84,13 @@ def free_udp_port():
         return s.getsockname()[1]
 
 
+def no_unserved_calls(driver, stage):
+    """The browser's console since the last look holds no request the run answered with 501
+    (a service it does not serve)."""
+    unserved = [e["message"] for e in driver.get_log("browser") if "status of 501" in e["message"]]
+    assert not unserved, (stage, unserved)
+
+
 def line_stage(driver, wait, rs4sim, procs, outdir, kind, address, blocked, pattern, words,
                screenshot):
     """`run --device KIND --link memory --http`: the device's cells (one per element or beam)
@@ -103,7 +113,9 @@ def line_stage(driver, wait, rs4sim, procs, outdir, kind, address, blocked, patt
     now = call(base, "rs4sim.v1.SimTime/Advance", {"durationMs": 500})
     wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, box + '[data-state="interrupted"]'))
     # The page's clock follows time moved by another client (here: this script).
-    clock = f"{int(now['nowNs']) // 1_000_000 / 1000:.3f} s"
+    # The clock shows the time since the run began: now_ns - start_ns (a simulated clock does
+    # not start at 0).
+    clock = f"{(int(now['nowNs']) - int(now['startNs'])) // 1_000_000 / 1000:.3f} s"
     wait.until(lambda d: d.find_element(By.ID, "clock-now").text == clock)
     # (the cells are redrawn four times a second: read them in one script)
     states = wait.until(lambda d: d.execute_script(
@@ -111,6 +123,7 @@ def line_stage(driver, wait, rs4sim, procs, outdir, kind, address, blocked, patt
         "return c.length ? [...c].map((e) => e.dataset.state === 'interrupted' ? 'I' : "
         "e.dataset.state === 'free' ? '.' : '?').join('') : null;", box))
     assert states == pattern, (kind, states, pattern)
+    no_unserved_calls(driver, kind)
     if words is not None:
         heading = wait.until(lambda d: d.execute_script(
             "const h = document.querySelector(arguments[0] + ' h3');"
@@ -154,6 +167,9 @@ def main():
         for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
                     "--window-size=1400,1000"):
             options.add_argument(arg)
+        # The browser's console: the page asks the run what it serves (Run.Describe) and calls
+        # nothing else, so no load logs a 501 (no_unserved_calls below).
+        options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
         driver = webdriver.Chrome(service=Service(DRIVER), options=options)
         driver.get(base)
         wait = WebDriverWait(driver, 10)
@@ -177,8 +193,13 @@ def main():
         wait.until(lambda d: d.execute_script(
             'return document.querySelector(\'#in-bits td[data-bit="7"]\').textContent') == "0")
         driver.find_element(By.CSS_SELECTOR, "#clock:not([hidden])")
-        # The master's counters in ProfiTrace's names: one dropped reply is one repeat.
-        wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, row + '[data-repeats="0"][data-syncs="1"]'))
+        # The master's counters in ProfiTrace's names: one dropped reply is one repeat. The
+        # RS4's boot answers the master's start-up with RS: RS/RR, not Illegal.
+        wait.until(lambda d: d.find_elements(
+            By.CSS_SELECTOR, row + '[data-repeats="0"][data-syncs="1"][data-illegal="0"]'))
+        negative = int(driver.find_element(By.CSS_SELECTOR, row).get_attribute("data-negative"))
+        assert negative > 0, negative
+        no_unserved_calls(driver, "the RS4 run")
         call(base, "rs4sim.v1.Faults/InjectBusFault",
              {"address": 4, "kind": "BUS_FAULT_KIND_DROP", "direction": "DIRECTION_FROM_STATION",
               "count": 1})
@@ -299,6 +320,12 @@ def main():
         wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, diff))
         versions = len(driver.find_elements(By.CSS_SELECTOR, '#archive-history tr.version'))
         assert versions == 2, versions
+        # Which archive the page shows, and the master's DP state in the slave's words.
+        archive = driver.find_element(By.ID, "archive-name").text
+        assert archive == os.path.join(work, "archive.sqlite3"), archive
+        shown = driver.find_element(By.CSS_SELECTOR, row + " td:nth-child(3)").text
+        assert shown == "Data_Exch", shown
+        no_unserved_calls(driver, "the master")
         text = driver.find_element(By.ID, "archive-diff-text").text
         assert "response" in text, text
         shot = os.path.join(outdir, "live_view_master.png")

@@ -132,8 +132,10 @@ TEST_F(HttpApiTest, StationCountersCountTheInjectedBusFaults) {
   EXPECT_EQ(before.syncs(), 1u);  // one start-up into data exchange
   EXPECT_EQ(before.lost(), 0u);
   EXPECT_EQ(before.repeats(), 0u);
-  // (while the RS4 boots it answers the master's start-up with RS: negative, and Illegal)
-  EXPECT_EQ(before.illegal(), before.negative());
+  // While the RS4 boots it answers the master's start-up with RS: RS/RR counts them, Illegal
+  // does not (ProfiTrace's live list counts the two apart); nothing else was unfitting.
+  EXPECT_GT(before.negative(), 0u);
+  EXPECT_EQ(before.illegal(), 0u);
   EXPECT_NE(h.call("rs4sim.v1.Observation/GetState", R"({"address": 4})").body.find(R"("repeats":"0")"),
             std::string::npos);  // the JSON a script reads: uint64 as a string
 

@@ -79,6 +79,16 @@ std::string bad_field(const grpc::Status& status) {
   return bad.field_violations(0).field();
 }
 
+// ListStations names the archive it shows (the master's page says which one); a PostgreSQL
+// server without its password.
+TEST_F(RpcArchiveTest, ListStationsNamesAServerArchiveWithoutItsPassword) {
+  ArchiveService named(*archive_, executor_, [] { return storage::testing::at_ms(5000); },
+                       "postgresql://plant:s3cret@127.0.0.1:5433/rs4");
+  v1::ListStationsResponse out;
+  ASSERT_TRUE(named.ListStations(nullptr, nullptr, &out).ok());
+  EXPECT_EQ(out.archive(), "postgresql://plant@127.0.0.1:5433/rs4");
+}
+
 TEST_F(RpcArchiveTest, HistoryDiffRestoreAndVerify) {
   const auto first = store(rs4::scanner::factory_default(), 1000);
   auto changed = rs4::scanner::factory_default();
@@ -91,6 +101,7 @@ TEST_F(RpcArchiveTest, HistoryDiffRestoreAndVerify) {
   ASSERT_EQ(stations.stations_size(), 1);
   EXPECT_EQ(stations.stations(0).key().address(), 4U);
   EXPECT_EQ(stations.stations(0).current_version_id(), static_cast<std::uint64_t>(second));
+  EXPECT_EQ(stations.archive(), dir_.file("archive.sqlite3").string());  // which archive
 
   grpc::ClientContext c2;
   v1::StationKey key;

@@ -4,11 +4,15 @@
 // interlock) and the public wire formats of grpc.health.v1 (HealthCheckResponse{status =
 // SERVING} = 08 01) and google.rpc.Status/BadRequest.
 #include "rs4_fixture.h"
+#include "rs4sim/v1/run.grpc.pb.h"
 
 #include <grpcpp/generic/generic_stub.h>
 #include <grpcpp/support/byte_buffer.h>
 
+#include <algorithm>
 #include <future>
+#include <string>
+#include <vector>
 
 namespace rs4sim::rpc {
 namespace {
@@ -402,6 +406,50 @@ TEST_F(RpcRs4Test, ALongAdvanceLeavesTheLoopToOtherCallsAndStopsWhenCancelled) {
     still = now_ns() == a;
   }
   EXPECT_TRUE(still) << "simulated time kept running after the client cancelled";
+}
+
+// rs4sim.v1.Run: one call names what the run serves (the live page asks it instead of
+// probing). Known answer: the four services the fixture registered, the server's own Run, and
+// none of the services of other runs.
+TEST_F(RpcRs4Test, RunDescribesTheServicesItServes) {
+  auto stub = v1::Run::NewStub(channel_);
+  grpc::ClientContext ctx;
+  v1::RunDescription run;
+  ASSERT_TRUE(stub->Describe(&ctx, v1::DescribeRunRequest{}, &run).ok());
+  const std::vector<std::string> names(run.services().begin(), run.services().end());
+  for (const char* served : {"rs4sim.v1.Device", "rs4sim.v1.Faults", "rs4sim.v1.Observation",
+                             "rs4sim.v1.Run", "rs4sim.v1.SimTime"}) {
+    EXPECT_NE(std::find(names.begin(), names.end(), served), names.end()) << served;
+  }
+  for (const char* absent : {"rs4sim.v1.GsdStations", "rs4sim.v1.BusMaster", "rs4sim.v1.Archive",
+                             "rs4sim.v1.GridScan", "rs4sim.v1.Proxy"}) {
+    EXPECT_EQ(std::find(names.begin(), names.end(), absent), names.end()) << absent;
+  }
+  EXPECT_TRUE(std::is_sorted(names.begin(), names.end()));
+}
+
+// SimTime's start_ns is where the run's clock stood when its services were set up: the time
+// since the run began is now_ns - start_ns, whatever the clock's origin (a simulated run's
+// clock starts at 1 h, not 0).
+TEST_F(RpcRs4Test, TheTimeSinceTheRunBeganIsNowMinusStart) {
+  grpc::ClientContext at_start;
+  v1::TimeResponse start;
+  ASSERT_TRUE(time_stub_->Now(&at_start, v1::Empty{}, &start).ok());
+  EXPECT_EQ(start.now_ns(), start.start_ns());  // nothing has run yet
+  boot();
+  grpc::ClientContext ctx;
+  v1::TimeResponse before;
+  ASSERT_TRUE(time_stub_->Now(&ctx, v1::Empty{}, &before).ok());
+  EXPECT_GT(before.start_ns(), 0);
+  // the boot: ≈30 s [RS4 manual §7.1.1], less than a minute
+  EXPECT_GE(before.now_ns() - before.start_ns(), 30'000'000'000);
+  EXPECT_LT(before.now_ns() - before.start_ns(), 60'000'000'000);
+  advance(1500);
+  grpc::ClientContext again;
+  v1::TimeResponse after;
+  ASSERT_TRUE(time_stub_->Now(&again, v1::Empty{}, &after).ok());
+  EXPECT_EQ(after.start_ns(), before.start_ns());
+  EXPECT_EQ(after.now_ns() - before.now_ns(), 1'500'000'000);
 }
 
 TEST_F(RpcRs4Test, StandardHealthServiceAnswersServing) {
