@@ -5,6 +5,7 @@
 #include "modbus/pdu.h"
 #include "modbus/timing.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace rs4sim::polaris {
@@ -17,6 +18,18 @@ constexpr std::chrono::milliseconds kCalibrationPerBeam{400};
 
 bool is_write(std::uint8_t function) {
   return function == modbus::kWriteSingleRegister || function == modbus::kWriteMultipleRegisters;
+}
+
+// Whether a write's registers overlap the configuration block: FC 6 its register, FC 16
+// start..start+quantity-1 (a PDU too short to say is the block's to refuse: 03).
+bool writes_config_block(const modbus::RtuFrame& request) {
+  if (request.data.size() < 4) return true;
+  const std::uint16_t start = codec::be16(request.data[0], request.data[1]);
+  std::uint32_t count = 1;
+  if (request.function == modbus::kWriteMultipleRegisters) {
+    count = std::max<std::uint32_t>(1, codec::be16(request.data[2], request.data[3]));
+  }
+  return start < kConfigEnd && start + count > kConfigBase;
 }
 
 // The refusal a write gets: a PDU that does not parse is a bad quantity/length (03).
@@ -189,20 +202,35 @@ void Device::handle(const stream::GapFrame& frame) {
 
 void Device::handle_request(const modbus::RtuFrame& request, stream::TimePoint end) {
   using modbus::ExceptionCode;
+  if (is_write(request.function) && !writes_config_block(request)) {
+    // The manual's barrier takes no write: "In case of CRC error or incorrect function
+    // code, the Exception code ... will be 'Negative Acknowledgment' (0x07)"
+    // [Polaris manual §8.1.2]. Only the configuration block (EXTENSION) takes FC 6/16; a
+    // write that touches none of its registers is the incorrect function the manual speaks
+    // of (standard Modbus, nak_on_error = false: the register does not exist, 02)
+    // [docs/decisions.md#polaris-write-outside-config].
+    refuse_function(request, end, ExceptionCode::kIllegalDataAddress);
+    return;
+  }
   if (is_write(request.function)) {
     handle_write(request, end);
     return;
   }
   if (request.function != modbus::kReadHoldingRegisters &&
       request.function != modbus::kReadInputRegisters) {
-    ++counters_.bad_function;
-    answer(modbus::make_exception(options_.address, request.function,
-                                  options_.nak_on_error ? ExceptionCode::kNegativeAcknowledge
-                                                        : ExceptionCode::kIllegalFunction),
-           end);
+    refuse_function(request, end, ExceptionCode::kIllegalFunction);
     return;
   }
   handle_read(request, end);
+}
+
+void Device::refuse_function(const modbus::RtuFrame& request, stream::TimePoint end,
+                             modbus::ExceptionCode standard) {
+  ++counters_.bad_function;
+  answer(modbus::make_exception(options_.address, request.function,
+                                options_.nak_on_error ? modbus::ExceptionCode::kNegativeAcknowledge
+                                                      : standard),
+         end);
 }
 
 void Device::handle_read(const modbus::RtuFrame& request, stream::TimePoint end) {

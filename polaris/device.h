@@ -79,6 +79,9 @@ class Device final : public stream::ByteDevice {
   void handle(const stream::GapFrame& frame);
   void handle_request(const modbus::RtuFrame& request, stream::TimePoint end);
   void handle_read(const modbus::RtuFrame& request, stream::TimePoint end);
+  // An incorrect function: exception 07, or `standard` with nak_on_error = false.
+  void refuse_function(const modbus::RtuFrame& request, stream::TimePoint end,
+                       modbus::ExceptionCode standard);
   // FC 6/16 to us: applied or refused, answered.
   void handle_write(const modbus::RtuFrame& request, stream::TimePoint end);
   void finish_calibration(stream::TimePoint now);

@@ -79,12 +79,12 @@ assert not w.isError(), w
 mode = c.read_holding_registers(0x0100, 1, slave=1)
 data = c.read_holding_registers(0x2000, 2, slave=1)
 bad_value = c.write_register(0x0100, 9, slave=1)  # no data mode 9: exception 03
-bad_address = c.write_register(0x0200, 0, slave=1)  # outside the map: exception 02
+bad_address = c.write_register(0x0200, 0, slave=1)  # outside the map: incorrect function, 07
 c.close()
 print(mode.registers[0], " ".join(map(str, data.registers)),
       bad_value.exception_code, bad_address.exception_code)
 PY
-)" "1 9 34 3 2"
+)" "1 9 34 3 7"
 # mbpoll's FC 16 (two values from 0x0102): direction reverse, detection object. Beam 1 is now
 # at the far cap: physical 9-13 and 25-34 of 40 are transmitted 28-32 and 7-16 (41 - b), so
 # FL1's overall pair is 7, 32.
