@@ -227,6 +227,8 @@ TEST(PolarisConfig, NakModeWrittenSwitchesTheBadFunctionAnswer) {
   interrupt_objects(r);
   const Bytes fc5{0x01, 0x05, 0x20, 0x00, 0x00, 0x01, 0x07, 0xCA};  // FC 5: not served
   EXPECT_EQ(answers(r, fc5), (Answers{{0x01, 0x85, 0x07, 0x03, 0x52}}));  // 07 (the manual)
+  // The area cleared: auto-calibration needs it free [Polaris manual §7.2].
+  ASSERT_FALSE(r.device().set_interrupted({}, r.now()));
   const Bytes standard{0x01, 0x10, 0x01, 0x00, 0x00, 0x09, 0x12,  // 9 registers from 0x0100
                        0x00, 0x02,                                // data mode FL4
                        0x10, 0x00,                                // start 0x1000
