@@ -12,7 +12,8 @@ using stream::TimePoint;
 Device::Device(const Options& options)
     : options_(options),
       configuration_(options.configuration),
-      framer_(options.idle_gap(), kMaxFrame) {
+      framer_(options.idle_gap(), kMaxFrame),
+      cycle_(options.cycle_time()) {
   scene_.door_position = options.door_position.value_or(options.elements);
   scene_.blocked = options.blocked & element_mask(options.elements);
   scene_.soiling = options.soiling;
@@ -48,6 +49,7 @@ void Device::power_up(TimePoint now) {
   power_ = PowerState::kStarting;
   power_up_at_ = now;
   ready_at_ = now + options_.ready_time;
+  cycle_ = options_.cycle_time();  // t_CYCLE of this power-up (set_cycle: the next one's)
   framer_.reset();
   pending_.reset();
   mode_ = CommMode::kPolling;
@@ -68,7 +70,16 @@ void Device::become_ready(TimePoint t) {
   alignment_active_ = alignment_armed_ && scanned_report().interrupted;
   mode_ = options_.power_up_mode;
   if (mode_ == CommMode::kStandBy) standby_door_ = scene_.door_position;
-  if (periodic()) next_end_ = t + options_.cycle_time();
+  if (periodic()) next_end_ = t + cycle_;
+}
+
+std::string Device::set_cycle(stream::Duration cycle) {
+  if (auto why = check_cycle(options_.elements, cycle); !why.empty()) return why;
+  Options next = options_;
+  next.cycle = cycle;
+  if (auto why = next.validate(); !why.empty()) return why;
+  options_.cycle = cycle;
+  return {};
 }
 
 void Device::on_time(TimePoint now) {
@@ -161,7 +172,7 @@ std::optional<TimePoint> Device::tick_deadline() const {
 }
 
 TimePoint Device::cycle_end_after(TimePoint t) const {
-  const auto period = options_.cycle_time();
+  const auto period = cycle_;
   const auto since = std::max(t - ready_at_, stream::Duration::zero());
   return ready_at_ + (since / period + 1) * period;
 }

@@ -75,6 +75,13 @@ class Device final : public stream::ByteDevice {
   [[nodiscard]] CommMode mode() const { return mode_; }
   [[nodiscard]] Configuration configuration() const { return configuration_; }
   [[nodiscard]] unsigned elements() const { return options_.elements; }
+  // t_CYCLE from the next power-up on (the cycles run from the ready instant
+  // [GridScan manual §11]; a running grid is not moved): "" or why not, check_cycle()'s
+  // sentence for a value outside the manual's band.
+  std::string set_cycle(stream::Duration cycle);
+  [[nodiscard]] const Options& options() const { return options_; }
+  // t_CYCLE of the running power-up.
+  [[nodiscard]] stream::Duration cycle() const { return cycle_; }
   [[nodiscard]] bool alignment_active() const { return alignment_active_; }
   [[nodiscard]] const Counters& counters() const { return counters_; }
   [[nodiscard]] Leds leds(stream::TimePoint now) const;
@@ -129,6 +136,7 @@ class Device final : public stream::ByteDevice {
   PowerState power_ = PowerState::kOff;
   stream::TimePoint power_up_at_{};
   stream::TimePoint ready_at_{};
+  stream::Duration cycle_{};
   stream::TimePoint next_end_{};  // the next cycle end with work to do
   std::optional<Pending> pending_;
 

@@ -59,6 +59,30 @@ stream::Duration typical_cycle(unsigned elements) {
   return std::chrono::microseconds(us);
 }
 
+CycleRange cycle_range(unsigned elements) {
+  // min 18 + (N-22)*30/38 ms, max 40 + (N-22)*36/38 ms, in microseconds.
+  const auto n = static_cast<long long>(elements) - 22;
+  return {std::chrono::microseconds(18000 + n * 30000 / 38),
+          std::chrono::microseconds(40000 + n * 36000 / 38)};
+}
+
+std::string check_cycle(unsigned elements, stream::Duration cycle) {
+  const CycleRange r = cycle_range(elements);
+  if (cycle >= r.min && cycle <= r.max) return {};
+  const auto ms = [](stream::Duration d) {
+    const auto us = std::chrono::duration_cast<std::chrono::microseconds>(d).count();
+    std::string s = std::to_string(us / 1000);
+    if (us % 1000 != 0) {
+      std::string frac = std::to_string(1000 + us % 1000).substr(1);
+      while (frac.back() == '0') frac.pop_back();
+      s += "." + frac;
+    }
+    return s;
+  };
+  return "t_CYCLE " + ms(cycle) + " ms outside " + ms(r.min) + ".." + ms(r.max) + " ms for " +
+         std::to_string(elements) + " elements [GridScan manual §11]";
+}
+
 stream::Duration Options::cycle_time() const { return cycle.value_or(typical_cycle(elements)); }
 
 stream::Duration Options::idle_gap() const {

@@ -50,4 +50,16 @@ struct Options {
 // Typical t_CYCLE of an edge with n elements (DECISION above).
 [[nodiscard]] stream::Duration typical_cycle(unsigned elements);
 
+// The band of t_CYCLE the manual gives: 18..40 ms at 22 elements, 48..76 ms at 60
+// [GridScan manual §11] (Table 1, min and max); other counts linear between and beyond, as
+// the typical value (DECISION).
+struct CycleRange {
+  stream::Duration min;
+  stream::Duration max;
+};
+[[nodiscard]] CycleRange cycle_range(unsigned elements);
+// "" when `cycle` is inside cycle_range(elements), else why, e.g. "t_CYCLE 17 ms outside
+// 18..40 ms for 22 elements [GridScan manual §11]". What a user sets (CLI, API) is held to it.
+[[nodiscard]] std::string check_cycle(unsigned elements, stream::Duration cycle);
+
 }  // namespace rs4sim::gridscan

@@ -22,10 +22,17 @@ std::vector<std::uint16_t> elements_of(std::uint64_t mask, unsigned count) {
   return out;
 }
 
+std::string_view to_string(SceneError e) noexcept {
+  switch (e) {
+    case SceneError::kNoSuchElement: return "no such element";
+  }
+  return "unknown scene error";
+}
+
 std::error_code Scene::set_interrupted(std::span<const std::uint16_t> elements, unsigned count) {
   std::uint64_t mask = 0;
   for (const std::uint16_t e : elements) {
-    if (e == 0 || e > std::min(count, 64U)) return std::make_error_code(std::errc::invalid_argument);
+    if (e == 0 || e > std::min(count, 64U)) return SceneError::kNoSuchElement;
     mask |= std::uint64_t{1} << (e - 1U);
   }
   blocked = mask;

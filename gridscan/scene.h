@@ -9,14 +9,28 @@
 // every element counts. The element bitmap of Full state is the raw per-element state:
 // elements covered by the door show interrupted (DECISION).
 
+#include "codec/error_category.h"
 #include "gridscan/payload.h"
 
 #include <cstdint>
 #include <span>
+#include <string_view>
 #include <system_error>
 #include <vector>
 
 namespace rs4sim::gridscan {
+
+// Why a scene change was refused (the same shape as metron::SceneError, polaris::SceneError).
+enum class SceneError : std::uint8_t {
+  kNoSuchElement = 1,  // an element number outside 1..elements
+};
+[[nodiscard]] std::string_view to_string(SceneError e) noexcept;
+[[nodiscard]] constexpr const char* error_category_name(SceneError) noexcept {
+  return "gridscan.scene";
+}
+[[nodiscard]] inline std::error_code make_error_code(SceneError e) noexcept {
+  return codec::make_error_code_of(e);
+}
 
 struct Scene {
   unsigned door_position = 0;     // 0..N; N = door open
@@ -27,7 +41,7 @@ struct Scene {
 
   // The objects as element numbers, the form every device's scene takes (metron/scene.h,
   // polaris/scene.h): `elements` interrupted, the others free. An element outside 1..count
-  // is std::errc::invalid_argument and changes nothing.
+  // is SceneError::kNoSuchElement and changes nothing.
   std::error_code set_interrupted(std::span<const std::uint16_t> elements, unsigned count);
   // The elements interrupted by objects, ascending (the door's cover is not an object).
   [[nodiscard]] std::vector<std::uint16_t> interrupted() const;
@@ -57,3 +71,6 @@ struct Scene {
                                                  Configuration c);
 
 }  // namespace rs4sim::gridscan
+
+template <>
+struct std::is_error_code_enum<rs4sim::gridscan::SceneError> : std::true_type {};

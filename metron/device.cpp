@@ -20,7 +20,9 @@ Device::Device(Options options)
     : options_(std::move(options)),
       scene_(options_.beams),
       receiver_(receiver_config(options_)),
-      standard_(options_) {}
+      standard_(options_) {
+  (void)scene_.set_interrupted(options_.blocked);  // validate() has checked the beams
+}
 
 stream::LineSettings Device::line_settings() const { return metron::line_settings(options_); }
 
@@ -157,6 +159,17 @@ void Device::set_input(bool high) {
   scene_.set_input(high);
   standard_.on_input(high, scene_);
   scene_changed();
+}
+
+std::string Device::set_timing(stream::Duration scan_cycle, stream::Duration t_response) {
+  Options next = options_;
+  next.scan_cycle = scan_cycle;
+  next.t_response = t_response;
+  if (auto why = next.validate(); !why.empty()) return why;
+  options_.scan_cycle = scan_cycle;  // standard_ reads options_ by reference
+  options_.t_response = t_response;
+  wake();
+  return {};
 }
 
 void Device::set_synchronised(bool synchronised) {

@@ -59,6 +59,10 @@ class Device final : public stream::ByteDevice {
     faults_ = f;
     wake();
   }
+  // The scan cycle and Equation 3's t_response from now on [METRON manual "Slave line
+  // mode"]: "" or Options::validate()'s sentence (nothing changed). A reply already due
+  // keeps its time; the next report cycle follows the new scan cycle. Wakes the link.
+  std::string set_timing(stream::Duration scan_cycle, stream::Duration t_response);
   [[nodiscard]] const Options& options() const { return options_; }
   [[nodiscard]] const SlaveState& slave_state() const { return state_; }
   [[nodiscard]] bool ossd_on() const;

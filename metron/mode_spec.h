@@ -1,13 +1,14 @@
 #pragma once
 // The METRON's line and reporting configuration as one command-line word list, for
 // `rs4sim run --device metron --mode ...` (the app parses flags, this parses the word):
-//   slave                                   slave line mode (the default)
+//   slave[,input=<type>][,scan-cycle=<ms>][,t-response=<ms>]   slave line mode (the default)
 //   <reporting>[,<option>...]               standard line mode with that reporting mode:
 //     continuous | periodical | on-request | status-change | input-related
 //   options: binary | hex | decimal, separator, checksum, period=<ms>,
 //            input=<no-function|enable-line|enable-all|start-stop-line|start-stop-all|
 //                   line-standby|all-standby>, report=<m>[+<m>...] (first, last, count,
-//            free, central, run)
+//            free, central, run), scan-cycle=<ms> (1..1000), t-response=<ms> (1..2000): the
+//            scan cycle and Equation 3's t_response [METRON manual "Slave line mode"]
 // e.g. "periodical,hex,separator,checksum,period=250" [docs/metron.md#running].
 
 #include "metron/options.h"

@@ -49,6 +49,10 @@ std::string Options::validate() const {
   if (t_response < milliseconds(1) || t_response > milliseconds(2000))
     return "t_response must be 1..2000 ms";
   if (receive_timeout < milliseconds(1)) return "receive timeout must be at least 1 ms";
+  for (const auto b : blocked) {
+    if (b < 1 || b > beams)
+      return "blocked beam " + std::to_string(b) + " outside 1.." + std::to_string(beams);
+  }
   if (auto w = metron::validate(wire); !w.empty()) return w;
   if (line_mode == LineMode::kStandard) return validate_standard(*this);
   return {};

@@ -68,6 +68,9 @@ struct Options {
   std::vector<Measurement> report = {Measurement::kFirstInterrupted, Measurement::kLastInterrupted,
                                      Measurement::kInterruptedCount};
   WireTable wire;
+  // The initial scene: beams interrupted from the start (1..beams), as gridscan::Options
+  // and polaris::Options hold theirs.
+  std::vector<std::uint16_t> blocked;
 
   // Empty when usable; otherwise one sentence naming the option and the allowed values.
   [[nodiscard]] std::string validate() const;

@@ -1,6 +1,7 @@
 #include "metron/slave_handler.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 
 namespace rs4sim::metron {
@@ -54,16 +55,41 @@ std::uint8_t clamp_ms(stream::Duration d) {
   return static_cast<std::uint8_t>(std::clamp<long long>(ms, 0, 255));
 }
 
-std::uint8_t curtain_status(const Scene& scene, const SlaveState& s) {
+// #13: each flag that holds sets its bit of the table (EXTENSION, [docs/metron.md#replies]).
+std::uint8_t curtain_status(const WireTable& t, const Scene& scene, const SlaveState& s) {
+  const std::array<bool, kStatusFlagCount> holds{
+      scene.synchronised(),  s.ossd == OssdFunction::kEnabled, s.ossd == OssdFunction::kStandby,
+      s.ossd_measuring,      s.measuring.has_value(),          scene.any_interrupted(),
+      scene.input_high()};
   unsigned v = 0;
-  if (scene.synchronised()) v |= 0x01U;
-  if (s.ossd == OssdFunction::kEnabled) v |= 0x02U;
-  if (s.ossd == OssdFunction::kStandby) v |= 0x04U;
-  if (s.ossd_measuring) v |= 0x08U;
-  if (s.measuring) v |= 0x10U;
-  if (scene.any_interrupted()) v |= 0x20U;
-  if (scene.input_high()) v |= 0x40U;
+  for (std::size_t i = 0; i < kStatusFlagCount; ++i) {
+    if (holds[i]) v |= t.replies.curtain_status[i];
+  }
   return static_cast<std::uint8_t>(v);
+}
+
+// #11: the table's items in its order.
+std::vector<std::uint8_t> configuration(const Options& o) {
+  std::vector<std::uint8_t> out;
+  for (const ConfigItem item : o.wire.replies.configuration) {
+    switch (item) {
+      case ConfigItem::kBeams: out.push_back(static_cast<std::uint8_t>(o.beams)); break;
+      case ConfigItem::kInputType: out.push_back(static_cast<std::uint8_t>(o.input_type)); break;
+      case ConfigItem::kNode: out.push_back(o.node_enabled ? o.node : std::uint8_t{0}); break;
+      case ConfigItem::kScanCycle: out.push_back(clamp_ms(o.scan_cycle)); break;
+      case ConfigItem::kTResponse: out.push_back(clamp_ms(o.t_response)); break;
+    }
+  }
+  return out;
+}
+
+// #8: the measurement's code and/or its maximum, in the table's order.
+std::vector<std::uint8_t> stop_reply(const Options& o, const SlaveState& s) {
+  std::vector<std::uint8_t> out;
+  for (const StopItem item : o.wire.replies.stop_measurement) {
+    out.push_back(item == StopItem::kCode ? code_of(o.wire, *s.measuring) : s.maximum);
+  }
+  return out;
 }
 
 // Runs the command; returns the reply data (EXTENSION layouts, [docs/metron.md#replies]).
@@ -84,24 +110,26 @@ std::vector<std::uint8_t> execute(C c, const SlaveMessage& m, const Options& o, 
       s.measuring = measurement_from_code(o.wire, data[0]);
       s.maximum = scene.measure(*s.measuring);
       return {};
-    case C::kStopMeasurement: s.measuring.reset(); return {s.maximum};
+    case C::kStopMeasurement: {
+      auto reply = stop_reply(o, s);  // E5 has refused it without a measurement
+      s.measuring.reset();
+      return reply;
+    }
     case C::kRequestBeamStatus:
       if (data[0] == o.wire.all_beams) return scene.packed(o.wire.beam_bits_lsb_first);
-      return {static_cast<std::uint8_t>(scene.interrupted(data[0]) ? 1 : 0)};
+      return {scene.interrupted(data[0]) ? o.wire.replies.beam_interrupted
+                                         : o.wire.replies.beam_free};
     case C::kRequestMeasurements: {
       std::vector<std::uint8_t> out;
       for (const auto f : data) out.push_back(scene.measure(*measurement_from_code(o.wire, f)));
       return out;
     }
-    case C::kRequestConfiguration:
-      return {static_cast<std::uint8_t>(o.beams), static_cast<std::uint8_t>(o.input_type),
-              o.node_enabled ? o.node : std::uint8_t{0}, clamp_ms(o.scan_cycle),
-              clamp_ms(o.t_response)};
+    case C::kRequestConfiguration: return configuration(o);
     case C::kRequestOssdStatus: {
       const auto on = static_cast<std::uint8_t>(ossd_on(s, scene) ? 1 : 0);
       return {on, on};
     }
-    case C::kRequestCurtainStatus: return {curtain_status(scene, s)};
+    case C::kRequestCurtainStatus: return {curtain_status(o.wire, scene, s)};
   }
   return {};
 }

@@ -168,6 +168,60 @@ void read_report(const Value& v, ReportLayout& r) {
   }
 }
 
+// A list of tokens of one kind, each once (`parse` names them, `known` lists them for the
+// message).
+template <class E>
+std::vector<E> read_tokens(const Value& v, const std::string& where,
+                           std::optional<E> (*parse)(std::string_view), std::string_view known) {
+  const auto& l = list_of(v, where);
+  std::vector<E> out;
+  for (int i = 0; i < l.values_size(); ++i) {
+    const std::string at = where + "[" + std::to_string(i) + "]";
+    const auto& t = text_of(l.values(i), at);
+    const auto item = parse(t);
+    if (!item) refuse(at, "no item \"" + t + "\" (items: " + std::string(known) + ")");
+    out.push_back(*item);
+  }
+  return out;
+}
+
+void read_curtain_status(const Value& v, const std::string& where,
+                         std::array<std::uint8_t, kStatusFlagCount>& masks) {
+  if (!v.has_struct_value()) refuse(where, "expected an object, found " + kind_of(v));
+  for (const auto& [key, member] : members(v)) {
+    const std::string at = json::member_path(where, key);
+    const auto flag = parse_status_flag(key);
+    if (!flag) {
+      refuse(at, "unknown flag (flags: synchronised, ossd_enabled, ossd_standby, "
+                 "ossd_measuring, measuring, interrupted, input_high)");
+    }
+    masks[static_cast<std::size_t>(*flag)] = byte_of(*member, at);
+  }
+}
+
+void read_replies(const Value& v, ReplyData& r) {
+  if (!v.has_struct_value()) refuse("replies", "expected an object, found " + kind_of(v));
+  for (const auto& [key, member] : members(v)) {
+    const Value& value = *member;
+    const std::string where = json::member_path("replies", key);
+    if (key == "stop_measurement") {
+      r.stop_measurement = read_tokens<StopItem>(value, where, parse_stop_item, "code, maximum");
+    } else if (key == "beam_interrupted") {
+      r.beam_interrupted = byte_of(value, where);
+    } else if (key == "beam_free") {
+      r.beam_free = byte_of(value, where);
+    } else if (key == "configuration") {
+      r.configuration = read_tokens<ConfigItem>(value, where, parse_config_item,
+                                                "beams, input_type, node, scan_cycle, t_response");
+    } else if (key == "curtain_status") {
+      read_curtain_status(value, where, r.curtain_status);
+    } else {
+      refuse(where, "unknown key (replies takes: stop_measurement, beam_interrupted, beam_free, "
+                    "configuration, curtain_status)");
+    }
+  }
+}
+
 void read_table(const Value& root, WireTable& t) {
   if (!root.has_struct_value()) refuse("$", "expected an object {\"commands\": [...], ...}");
   for (const auto& [key, member] : members(root)) {
@@ -189,11 +243,12 @@ void read_table(const Value& root, WireTable& t) {
     else if (key == "request_char") t.request_char = byte_of(v, key);
     else if (key == "reply") read_reply(v, t.reply);
     else if (key == "report") read_report(v, t.report);
+    else if (key == "replies") read_replies(v, t.replies);
     else {
       refuse(json::member_path("", key),
              "unknown key (the wire table takes: frame_start, commands, errors, measurements, "
              "all_beams, beam_bits, report_start, report_end, separator, request_char, reply, "
-             "report)");
+             "report, replies)");
     }
   }
 }
@@ -227,6 +282,28 @@ std::string set_text(ReplyFieldSet set) {
     if (contains(set, f)) s += (s.size() > 1 ? ", \"" : "\"") + std::string(to_token(f)) + "\"";
   }
   return s + "]";
+}
+
+template <class E>
+std::string tokens_text(const std::vector<E>& items) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < items.size(); ++i)
+    s += (i ? ", \"" : "\"") + std::string(to_token(items[i])) + "\"";
+  return s + "]";
+}
+
+std::string replies_text(const ReplyData& r) {
+  std::string s = "  \"replies\": {\n";
+  s += "    \"stop_measurement\": " + tokens_text(r.stop_measurement) + ",\n";
+  s += "    \"beam_interrupted\": " + byte_text(r.beam_interrupted) + ",\n";
+  s += "    \"beam_free\": " + byte_text(r.beam_free) + ",\n";
+  s += "    \"configuration\": " + tokens_text(r.configuration) + ",\n";
+  s += "    \"curtain_status\": {";
+  for (std::size_t i = 0; i < kStatusFlagCount; ++i) {
+    s += std::string(i ? ", \"" : "\"") + std::string(to_token(static_cast<StatusFlag>(i))) +
+         "\": " + byte_text(r.curtain_status[i]);
+  }
+  return s + "}\n  }";
 }
 
 }  // namespace
@@ -266,8 +343,8 @@ std::string wire_json(const WireTable& t) {
   for (std::size_t i = 0; i < kReportFieldCount; ++i)
     s += (i ? ", \"" : "\"") + std::string(to_token(t.report.order[i])) + "\"";
   s += std::string("],\n    \"checksum_over\": \"") +
-       (t.report.checksum_over_characters ? "characters" : "values") + "\"\n  }\n}\n";
-  return s;
+       (t.report.checksum_over_characters ? "characters" : "values") + "\"\n  },\n";
+  return s + replies_text(t.replies) + "\n}\n";
 }
 
 }  // namespace rs4sim::metron

@@ -11,7 +11,11 @@
 //    "report_start", "report_end", "separator", "request_char": bytes,
 //    "reply": {"fields": ["start", "node", "length", "code", "data", "checksum"],
 //              "length_counts": ["code", "data"], "checksum_covers": ["code", "data"]},
-//    "report": {"order": ["start", "data", "checksum", "end"], "checksum_over": "values"}}
+//    "report": {"order": ["start", "data", "checksum", "end"], "checksum_over": "values"},
+//    "replies": {"stop_measurement": ["maximum"],            #8: "code" and/or "maximum"
+//                "beam_interrupted": byte, "beam_free": byte,  #9, one beam
+//                "configuration": ["beams", "input_type", "node", "scan_cycle", "t_response"],
+//                "curtain_status": {"synchronised": "0x01", ..., "input_high": "0x40"}}}
 //
 // This is a library of its own (rs4sim_metron_wire_file): it reads JSON with protobuf's
 // parser, which the sans-I/O core rs4sim_metron does not link. No file I/O here: the caller

@@ -29,6 +29,27 @@ constexpr std::array<std::string_view, kReplyFieldCount> kReplyFieldNames{
 constexpr std::array<std::string_view, kReportFieldCount> kReportFieldNames{"start", "data",
                                                                             "checksum", "end"};
 
+constexpr std::array<std::string_view, kStopItemCount> kStopItemNames{"code", "maximum"};
+constexpr std::array<std::string_view, kConfigItemCount> kConfigItemNames{
+    "beams", "input_type", "node", "scan_cycle", "t_response"};
+constexpr std::array<std::string_view, kStatusFlagCount> kStatusFlagNames{
+    "synchronised", "ossd_enabled", "ossd_standby", "ossd_measuring",
+    "measuring",    "interrupted",  "input_high"};
+
+template <class E, std::size_t N>
+std::optional<E> parse_token(const std::array<std::string_view, N>& names, std::string_view t) {
+  for (std::size_t i = 0; i < N; ++i)
+    if (names[i] == t) return static_cast<E>(i);
+  return std::nullopt;
+}
+
+template <class E>
+bool has_duplicate(const std::vector<E>& items) {
+  for (std::size_t i = 0; i < items.size(); ++i)
+    if (std::count(items.begin(), items.end(), items[i]) > 1) return true;
+  return false;
+}
+
 std::string quoted(std::string_view s) { return "\"" + std::string(s) + "\""; }
 
 // The first field of `set` that `fields` does not list, if any.
@@ -90,7 +111,39 @@ std::string hex(std::uint8_t v) {
   return buf;
 }
 
+std::optional<WireIssue> check_replies(const ReplyData& r) {
+  if (r.stop_measurement.empty() || has_duplicate(r.stop_measurement))
+    return WireIssue{"replies.stop_measurement",
+                     "#8 must return \"code\" and/or \"maximum\", each once"};
+  if (r.beam_interrupted == r.beam_free)
+    return WireIssue{"replies.beam_free", "a free beam must differ from an interrupted one"};
+  if (r.configuration.empty() || has_duplicate(r.configuration))
+    return WireIssue{"replies.configuration", "#11 must return at least one item, each once"};
+  std::uint8_t seen = 0;
+  for (const std::uint8_t mask : r.curtain_status) {
+    if (mask == 0) continue;
+    if ((mask & (mask - 1U)) != 0 || (seen & mask) != 0)
+      return WireIssue{"replies.curtain_status",
+                       "each flag takes its own single bit (or 0: not reported), not " + hex(mask)};
+    seen = static_cast<std::uint8_t>(seen | mask);
+  }
+  return std::nullopt;
+}
+
 }  // namespace
+
+std::string_view to_token(StopItem i) { return kStopItemNames[static_cast<std::size_t>(i)]; }
+std::string_view to_token(ConfigItem i) { return kConfigItemNames[static_cast<std::size_t>(i)]; }
+std::string_view to_token(StatusFlag f) { return kStatusFlagNames[static_cast<std::size_t>(f)]; }
+std::optional<StopItem> parse_stop_item(std::string_view t) {
+  return parse_token<StopItem>(kStopItemNames, t);
+}
+std::optional<ConfigItem> parse_config_item(std::string_view t) {
+  return parse_token<ConfigItem>(kConfigItemNames, t);
+}
+std::optional<StatusFlag> parse_status_flag(std::string_view t) {
+  return parse_token<StatusFlag>(kStatusFlagNames, t);
+}
 
 std::optional<Command> command_from_code(const WireTable& t, std::uint8_t code) {
   for (std::size_t i = 0; i < kCommandCount; ++i)
@@ -157,6 +210,7 @@ std::optional<WireIssue> check(const WireTable& t) {
     return WireIssue{"separator", "the separator " + hex(t.separator) +
                                       " is also the report's start or end character"};
   if (auto r = check_reply(t.reply)) return r;
+  if (auto r = check_replies(t.replies)) return r;
   return check_report(t.report);
 }
 

@@ -100,6 +100,42 @@ struct ReportLayout {
   friend bool operator==(const ReportLayout&, const ReportLayout&) = default;
 };
 
+// What the replies of #8, #9 (one beam), #11 and #13 carry: the lost figures held it
+// (EXTENSION, [docs/metron.md#replies]). #10 sends one byte per measurement asked for and #12
+// "the status of both OSSDs: 0 = OFF, 1 = ON" [METRON manual "Request OSSD status command"];
+// those stay fixed.
+// #8 Stop measurement: the measurement's code and/or the maximum it reached.
+enum class StopItem : std::uint8_t { kCode, kMaximum };
+inline constexpr std::size_t kStopItemCount = 2;
+// #11 Request configuration: one byte each (times in ms, at most 255).
+enum class ConfigItem : std::uint8_t { kBeams, kInputType, kNode, kScanCycle, kTResponse };
+inline constexpr std::size_t kConfigItemCount = 5;
+// #13 Request light curtain status: one bit each in the status byte.
+enum class StatusFlag : std::uint8_t {
+  kSynchronised,
+  kOssdEnabled,
+  kOssdStandby,
+  kOssdMeasuring,
+  kMeasuring,
+  kInterrupted,
+  kInputHigh,
+};
+inline constexpr std::size_t kStatusFlagCount = 7;
+
+struct ReplyData {
+  std::vector<StopItem> stop_measurement{StopItem::kMaximum};
+  std::uint8_t beam_interrupted = 0x01;  // #9, one beam
+  std::uint8_t beam_free = 0x00;
+  std::vector<ConfigItem> configuration{ConfigItem::kBeams, ConfigItem::kInputType,
+                                        ConfigItem::kNode, ConfigItem::kScanCycle,
+                                        ConfigItem::kTResponse};
+  // The mask of each flag in #13's byte, StatusFlag order; 0: not reported.
+  std::array<std::uint8_t, kStatusFlagCount> curtain_status{0x01, 0x02, 0x04, 0x08,
+                                                            0x10, 0x20, 0x40};
+
+  friend bool operator==(const ReplyData&, const ReplyData&) = default;
+};
+
 // EXTENSION: every byte value the lost figures held, and the layouts they showed.
 struct WireTable {
   // slave line mode
@@ -118,6 +154,7 @@ struct WireTable {
   // layouts
   ReplyLayout reply;
   ReportLayout report;
+  ReplyData replies;
 
   friend bool operator==(const WireTable&, const WireTable&) = default;
 };
@@ -144,6 +181,15 @@ struct WireTable {
 [[nodiscard]] std::string_view to_token(ReportField f);
 [[nodiscard]] std::optional<ReplyField> parse_reply_field(std::string_view token);
 [[nodiscard]] std::optional<ReportField> parse_report_field(std::string_view token);
+// "code", "maximum"; "beams", "input_type", "node", "scan_cycle", "t_response";
+// "synchronised", "ossd_enabled", "ossd_standby", "ossd_measuring", "measuring",
+// "interrupted", "input_high".
+[[nodiscard]] std::string_view to_token(StopItem i);
+[[nodiscard]] std::string_view to_token(ConfigItem i);
+[[nodiscard]] std::string_view to_token(StatusFlag f);
+[[nodiscard]] std::optional<StopItem> parse_stop_item(std::string_view token);
+[[nodiscard]] std::optional<ConfigItem> parse_config_item(std::string_view token);
+[[nodiscard]] std::optional<StatusFlag> parse_status_flag(std::string_view token);
 // "first", "last", "count", "free", "central", "run".
 [[nodiscard]] std::optional<Measurement> parse_measurement(std::string_view name);
 

@@ -23,8 +23,8 @@ constexpr std::array<Range, kConfigRegisterCount> kRanges{{
     {5, 5000},                         // scan time, ms [Polaris manual §7.4.2]
     {0, 1},                            // bit order
     {0, 1},                            // NAK mode
-    {0, 1},                            // command
-    {0, 1, false},                     // status
+    {0, 2},                            // command
+    {0, 2, false},                     // status
     {0, 0xFFFF, false},                // calibrations completed
     {0, 0xFFFF, false},                // beams
 }};
@@ -42,7 +42,7 @@ std::uint16_t value_of(const Options& o, const CalibrationStatus& s, ConfigRegis
     case ConfigRegister::kBitOrder: return static_cast<std::uint16_t>(o.bit_order);
     case ConfigRegister::kNakMode: return o.nak_on_error ? 1 : 0;
     case ConfigRegister::kCommand: return 0;
-    case ConfigRegister::kStatus: return s.calibrating ? 1 : 0;
+    case ConfigRegister::kStatus: return s.calibrating ? 1 : (s.manual_adjustment ? 2 : 0);
     case ConfigRegister::kCalibrations: return s.completed;
     case ConfigRegister::kBeams: return o.beams;
   }
@@ -61,7 +61,10 @@ void assign(ConfigWrite& w, ConfigRegister r, std::uint16_t v) {
     case ConfigRegister::kScanTime: o.scan_time = std::chrono::milliseconds(v); break;
     case ConfigRegister::kBitOrder: o.bit_order = static_cast<BitOrder>(v); break;
     case ConfigRegister::kNakMode: o.nak_on_error = v != 0; break;
-    case ConfigRegister::kCommand: w.start_calibration = w.start_calibration || v == 1; break;
+    case ConfigRegister::kCommand:
+      w.start_calibration = w.start_calibration || v == kCommandStartCalibration;
+      w.manual_adjustment = w.manual_adjustment || v == kCommandManualAdjustment;
+      break;
     case ConfigRegister::kStatus:
     case ConfigRegister::kCalibrations:
     case ConfigRegister::kBeams: break;  // read-only: refused before
@@ -78,6 +81,8 @@ std::string_view to_string(ConfigError e) noexcept {
     case ConfigError::kOutOfRange: return "value outside the register's range";
     case ConfigError::kInvalidOptions: return "the options would be invalid";
     case ConfigError::kBusy: return "auto-calibration in progress";
+    case ConfigError::kBeamsInterrupted:
+      return "beams interrupted: auto-calibration needs a free detection area";
   }
   return "unknown configuration error";
 }
@@ -90,6 +95,7 @@ modbus::ExceptionCode exception_for(ConfigError e) noexcept {
     case ConfigError::kOutOfRange:
     case ConfigError::kInvalidOptions: return modbus::ExceptionCode::kIllegalDataValue;
     case ConfigError::kBusy: return modbus::ExceptionCode::kServerDeviceBusy;
+    case ConfigError::kBeamsInterrupted: return modbus::ExceptionCode::kServerDeviceFailure;
   }
   return modbus::ExceptionCode::kServerDeviceFailure;
 }
@@ -119,7 +125,7 @@ std::error_code write_config(const Options& current, std::uint16_t start,
   for (std::size_t i = 0; i < words.size(); ++i) {
     if (!kRanges[index_of(start) + i].writable) return ConfigError::kReadOnly;
   }
-  ConfigWrite w{current, false};
+  ConfigWrite w{current, false, false};
   for (std::size_t i = 0; i < words.size(); ++i) {
     const Range& range = kRanges[index_of(start) + i];
     if (words[i] < range.min || words[i] > range.max) return ConfigError::kOutOfRange;

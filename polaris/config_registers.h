@@ -34,14 +34,16 @@ enum class ConfigRegister : std::uint16_t {
   kScanTime,                // 5..5000 ms (the master's send period)
   kBitOrder,                // 0 LSB first, 1 MSB first (485MB)
   kNakMode,                 // 1 exception 07 on CRC error/bad function, 0 standard Modbus
-  kCommand,                 // write 1: start auto-calibration; 0: nothing; reads 0
-  kStatus,                  // read-only: 0 idle, 1 calibrating
+  kCommand,                 // write 1: start auto-calibration; 2: manual adjustment; 0: nothing; reads 0
+  kStatus,                  // read-only: 0 idle, 1 calibrating, 2 manual adjustment
   kCalibrations,            // read-only: auto-calibrations completed (wraps at 65535)
   kBeams,                   // read-only: N beams of the barrier
 };
 inline constexpr std::uint16_t kConfigRegisterCount = 12;
 inline constexpr std::uint16_t kConfigEnd = kConfigBase + kConfigRegisterCount;  // exclusive
 inline constexpr std::uint16_t kCommandStartCalibration = 1;
+// "the manual adjustment can be activated by sending the ModBus command" [Polaris manual §7.2].
+inline constexpr std::uint16_t kCommandManualAdjustment = 2;
 
 [[nodiscard]] constexpr bool in_config_block(std::uint16_t address) noexcept {
   return address >= kConfigBase && address < kConfigEnd;
@@ -55,19 +57,21 @@ enum class ConfigError : std::uint8_t {
   kOutOfRange,           // a value outside its register's range    -> 03
   kInvalidOptions,       // the options would fail Options::validate() -> 03
   kBusy,                 // start auto-calibration while one runs   -> 06
+  kBeamsInterrupted,     // start auto-calibration with beams interrupted -> 04
 };
 [[nodiscard]] std::string_view to_string(ConfigError e) noexcept;
 constexpr const char* error_category_name(ConfigError) noexcept { return "polaris.config"; }
 inline std::error_code make_error_code(ConfigError e) noexcept {
   return codec::make_error_code_of(e);
 }
-// The exception code a refusal is answered with (02, 03 or 06).
+// The exception code a refusal is answered with (02, 03, 04 or 06).
 [[nodiscard]] modbus::ExceptionCode exception_for(ConfigError e) noexcept;
 
 // What the status registers show.
 struct CalibrationStatus {
   bool calibrating = false;
   std::uint16_t completed = 0;
+  bool manual_adjustment = false;
 };
 
 // `quantity` registers from `start`; kUnknownRegister when any lies outside the block.
@@ -79,6 +83,7 @@ struct CalibrationStatus {
 struct ConfigWrite {
   Options options;
   bool start_calibration = false;
+  bool manual_adjustment = false;
 };
 // Writes `words` from `start` onto a copy of `current` (all or nothing): addresses first
 // (kUnknownRegister, kReadOnly), then each value's range (kOutOfRange), then validate()

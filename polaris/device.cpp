@@ -5,6 +5,7 @@
 #include "modbus/pdu.h"
 #include "modbus/timing.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace rs4sim::polaris {
@@ -14,9 +15,25 @@ namespace {
 constexpr std::uint16_t kPadWord = 0xFFFF;  // 485MB beyond the beams: "not interrupted"
 // "approximately ... 0.4 seconds * N beams" [Polaris manual §7.2].
 constexpr std::chrono::milliseconds kCalibrationPerBeam{400};
+// "close the SW1 contact for at least 0.5 seconds and no more than 3 seconds"; "keeping the
+// SW1 contact closed for more than 3 seconds": manual adjustment [Polaris manual §7.2].
+constexpr std::chrono::milliseconds kSw1Min{500};
+constexpr std::chrono::seconds kSw1Max{3};
 
 bool is_write(std::uint8_t function) {
   return function == modbus::kWriteSingleRegister || function == modbus::kWriteMultipleRegisters;
+}
+
+// Whether a write's registers overlap the configuration block: FC 6 its register, FC 16
+// start..start+quantity-1 (a PDU too short to say is the block's to refuse: 03).
+bool writes_config_block(const modbus::RtuFrame& request) {
+  if (request.data.size() < 4) return true;
+  const std::uint16_t start = codec::be16(request.data[0], request.data[1]);
+  std::uint32_t count = 1;
+  if (request.function == modbus::kWriteMultipleRegisters) {
+    count = std::max<std::uint32_t>(1, codec::be16(request.data[2], request.data[3]));
+  }
+  return start < kConfigEnd && start + count > kConfigBase;
 }
 
 // The refusal a write gets: a PDU that does not parse is a bad quantity/length (03).
@@ -48,7 +65,10 @@ Device::Device(Options options)
     : options_(options),
       scan_(scan_duration(options_)),
       framer_(modbus::t3_5(polaris::line_settings(options_)), modbus::kMaxFrameSize),
-      scene_(options_.beams) {}
+      scene_(options_.beams) {
+  (void)scene_.set_interrupted(options_.blocked);  // validate() has checked the beams
+  storage_.observe(options_.storage, scene_.flags());
+}
 
 stream::LineSettings Device::line_settings() const { return polaris::line_settings(options_); }
 
@@ -85,7 +105,53 @@ std::error_code Device::set_interrupted(std::span<const std::uint16_t> beams,
                                         stream::TimePoint now) {
   if (const std::error_code ec = scene_.set_interrupted(beams)) return ec;
   scene_since_ = now;
+  storage_.observe(options_.storage, scene_.flags());
+  if (calibrating(now) && scene_.any_interrupted()) {
+    // "check that there are no obstacles in the detection area" [Polaris manual §7.2]:
+    // an obstacle during the procedure makes it fail (DECISION,
+    // [docs/decisions.md#polaris-calibration-obstacles]).
+    calibration_end_.reset();
+    ++calibrations_failed_;
+    wake();
+  }
   return {};
+}
+
+std::error_code Device::set_response_time(stream::Duration response_time, ResponseColumn column,
+                                          stream::TimePoint now) {
+  Options next = options_;
+  next.response_time = response_time;
+  next.response_column = column;
+  if (!next.validate().empty()) return ConfigError::kInvalidOptions;
+  start(now);
+  advance(now);
+  options_ = next;
+  scan_ = scan_duration(options_);
+  epoch_ = now;
+  wake();
+  return {};
+}
+
+std::error_code Device::set_sw1(bool closed, stream::TimePoint now) {
+  if (closed) {
+    if (!sw1_closed_) sw1_closed_ = now;
+    return {};
+  }
+  if (!sw1_closed_) return {};
+  const stream::Duration held = now - *sw1_closed_;
+  sw1_closed_.reset();
+  if (held > kSw1Max) {
+    manual_adjustment_ = true;
+    return {};
+  }
+  if (held < kSw1Min) return {};
+  return start_calibration(now);
+}
+
+Leds Device::leds(stream::TimePoint now) const {
+  std::optional<std::chrono::nanoseconds> running;
+  if (calibrating(now)) running = now - (*calibration_end_ - calibration_time());
+  return leds_for(scene_.any_interrupted(), running);
 }
 
 std::error_code Device::start_calibration(stream::TimePoint now) {
@@ -94,10 +160,16 @@ std::error_code Device::start_calibration(stream::TimePoint now) {
   start(now);
   advance(now);
   if (calibrating(now)) return std::make_error_code(std::errc::device_or_resource_busy);
+  if (scene_.any_interrupted()) return ConfigError::kBeamsInterrupted;
   finish_calibration(now);
-  calibration_end_ = now + calibration_time();
+  begin_calibration(now);
   wake();
   return {};
+}
+
+void Device::begin_calibration(stream::TimePoint start) {
+  calibration_end_ = start + calibration_time();
+  manual_adjustment_ = false;
 }
 
 bool Device::calibrating(stream::TimePoint now) const {
@@ -115,7 +187,13 @@ void Device::finish_calibration(stream::TimePoint now) {
 }
 
 std::vector<std::uint16_t> Device::data_block() const {
-  return data_words(options_, scene_.flags());
+  return data_words(options_, storage_.scan(options_, scene_.flags()));
+}
+
+std::vector<std::uint16_t> Device::transmit_block() {
+  std::vector<std::uint16_t> words = data_block();
+  storage_.transmitted(options_, scene_.flags());
+  return words;
 }
 
 std::vector<Object> Device::objects() const { return find_objects(options_, scene_.flags()); }
@@ -133,6 +211,7 @@ bool Device::pn2(stream::TimePoint now) const {
 void Device::start(stream::TimePoint now) {
   if (epoch_) return;
   epoch_ = now;
+  scene_since_ = std::max(scene_since_, now);  // a scene set before is seen from here on
   if (options_.role == Role::kMaster) next_push_ = now + options_.scan_time;
 }
 
@@ -189,20 +268,35 @@ void Device::handle(const stream::GapFrame& frame) {
 
 void Device::handle_request(const modbus::RtuFrame& request, stream::TimePoint end) {
   using modbus::ExceptionCode;
+  if (is_write(request.function) && !writes_config_block(request)) {
+    // The manual's barrier takes no write: "In case of CRC error or incorrect function
+    // code, the Exception code ... will be 'Negative Acknowledgment' (0x07)"
+    // [Polaris manual §8.1.2]. Only the configuration block (EXTENSION) takes FC 6/16; a
+    // write that touches none of its registers is the incorrect function the manual speaks
+    // of (standard Modbus, nak_on_error = false: the register does not exist, 02)
+    // [docs/decisions.md#polaris-write-outside-config].
+    refuse_function(request, end, ExceptionCode::kIllegalDataAddress);
+    return;
+  }
   if (is_write(request.function)) {
     handle_write(request, end);
     return;
   }
   if (request.function != modbus::kReadHoldingRegisters &&
       request.function != modbus::kReadInputRegisters) {
-    ++counters_.bad_function;
-    answer(modbus::make_exception(options_.address, request.function,
-                                  options_.nak_on_error ? ExceptionCode::kNegativeAcknowledge
-                                                        : ExceptionCode::kIllegalFunction),
-           end);
+    refuse_function(request, end, ExceptionCode::kIllegalFunction);
     return;
   }
   handle_read(request, end);
+}
+
+void Device::refuse_function(const modbus::RtuFrame& request, stream::TimePoint end,
+                             modbus::ExceptionCode standard) {
+  ++counters_.bad_function;
+  answer(modbus::make_exception(options_.address, request.function,
+                                options_.nak_on_error ? modbus::ExceptionCode::kNegativeAcknowledge
+                                                      : standard),
+         end);
 }
 
 void Device::handle_read(const modbus::RtuFrame& request, stream::TimePoint end) {
@@ -215,8 +309,9 @@ void Device::handle_read(const modbus::RtuFrame& request, stream::TimePoint end)
   if (request.data.size() == 4 && in_config_block(codec::be16(request.data[0], request.data[1]))) {
     std::vector<std::uint16_t> words;
     if (!ec) {
-      ec = read_config(options_, CalibrationStatus{calibrating(end), calibrations_}, read.start,
-                       read.quantity, words);
+      ec = read_config(options_,
+                       CalibrationStatus{calibrating(end), calibrations_, manual_adjustment_},
+                       read.start, read.quantity, words);
     }
     if (ec == ConfigError::kUnknownRegister) {
       ++counters_.bad_start;
@@ -252,6 +347,7 @@ void Device::handle_read(const modbus::RtuFrame& request, stream::TimePoint end)
     return;
   }
   ++counters_.requests;
+  storage_.transmitted(options_, scene_.flags());  // [Polaris manual §7.4.2]
   const auto words = read_words(options_.mode, block, read.start - base, read.quantity);
   answer(modbus::make_read_response(options_.address, request.function, words), end);
 }
@@ -274,6 +370,9 @@ void Device::handle_write(const modbus::RtuFrame& request, stream::TimePoint end
   ConfigWrite write;
   if (!ec) ec = write_config(options_, start, words, write);
   if (!ec && write.start_calibration && calibrating(end)) ec = ConfigError::kBusy;
+  if (!ec && write.start_calibration && scene_.any_interrupted()) {
+    ec = ConfigError::kBeamsInterrupted;
+  }
   if (ec) {
     ++counters_.refused_writes;
     answer(modbus::make_exception(options_.address, request.function,
@@ -283,7 +382,8 @@ void Device::handle_write(const modbus::RtuFrame& request, stream::TimePoint end
   }
   // Only settings that leave the line and the scan as they are: the framer and scan_ stay.
   options_ = write.options;
-  if (write.start_calibration) calibration_end_ = end + calibration_time();
+  if (write.manual_adjustment) manual_adjustment_ = true;
+  if (write.start_calibration) begin_calibration(end);
   ++counters_.writes;
   if (request.function == modbus::kWriteSingleRegister) {
     answer(modbus::make_write_single_response(options_.address, {start, words.front()}), end);
@@ -300,7 +400,7 @@ void Device::answer(const modbus::RtuFrame& reply, stream::TimePoint end) {
 }
 
 void Device::push_data(stream::TimePoint due) {
-  std::vector<std::uint16_t> words = data_block();
+  std::vector<std::uint16_t> words = transmit_block();
   if (words.size() > modbus::kMaxWriteQuantity) words.resize(modbus::kMaxWriteQuantity);
   schedule(
       modbus::encode(modbus::make_write_multiple(options_.address, start_address(options_), words)),

@@ -18,8 +18,10 @@
 #include "polaris/counters.h"
 #include "polaris/faults.h"
 #include "polaris/data_modes.h"
+#include "polaris/leds.h"
 #include "polaris/options.h"
 #include "polaris/scene.h"
+#include "polaris/storage.h"
 #include "stream/byte_device.h"
 #include "stream/idle_gap_framer.h"
 #include "stream/transmit_fault.h"
@@ -51,8 +53,25 @@ class Device final : public stream::ByteDevice {
 
   // Auto-calibration [Polaris manual §7.2]: the autocal input, SW1 or the PC tool's
   // "Auto-Cal" (the Modbus command register does the same). It lasts calibration_time()
-  // from `now`; errc::device_or_resource_busy (nothing changed) while one runs. Wakes the link.
+  // from `now`; errc::device_or_resource_busy (nothing changed) while one runs,
+  // ConfigError::kBeamsInterrupted (nothing changed) with a beam interrupted ("Make sure that
+  // there is no material to be detected or other obstacles in the detection area"). It
+  // leaves manual adjustment. A beam interrupted while it runs makes it fail: it ends
+  // there, not counted (calibrations_failed()). Wakes the link.
   std::error_code start_calibration(stream::TimePoint now);
+  // The SW1 contact (or the autocal input) closed or opened at `now` [Polaris manual §7.2]:
+  // opened after 0.5..3 s closed starts an auto-calibration (its error returned), after more
+  // than 3 s enters manual adjustment ("keeping the SW1 contact closed for more than 3
+  // seconds"), after less than 0.5 s does nothing.
+  std::error_code set_sw1(bool closed, stream::TimePoint now);
+  // Manual adjustment: auto-calibration switched off (SW1 held > 3 s, the command register's
+  // 2); the trimmer it hands over to is not modelled.
+  [[nodiscard]] bool manual_adjustment() const { return manual_adjustment_; }
+  [[nodiscard]] std::uint16_t calibrations_failed() const { return calibrations_failed_; }
+  // The TX and RX LEDs at `now` [Polaris manual §5.1] [Polaris manual §7.2].
+  [[nodiscard]] Leds leds(stream::TimePoint now) const;
+  // The data storage's memory [Polaris manual §7.4.2] (polaris/storage.h).
+  [[nodiscard]] const Storage& storage() const { return storage_; }
   // Calibrating at `now`: started at or before it and not yet ended (end exclusive).
   [[nodiscard]] bool calibrating(stream::TimePoint now) const;
   [[nodiscard]] std::optional<stream::TimePoint> calibration_end() const { return calibration_end_; }
@@ -61,6 +80,12 @@ class Device final : public stream::ByteDevice {
   // "approximately ... 0.4 seconds * N beams" [Polaris manual §7.2].
   [[nodiscard]] stream::Duration calibration_time() const;
 
+  // One scan from `now` on: `response_time` (0: the model's maximum response time of
+  // `column`); ConfigError::kInvalidOptions (nothing changed) when Options::validate()
+  // refuses it. What was due before `now` happens first; scans then restart at `now`.
+  std::error_code set_response_time(stream::Duration response_time, ResponseColumn column,
+                                    stream::TimePoint now);
+  [[nodiscard]] stream::Duration scan() const { return scan_; }
   [[nodiscard]] const Options& options() const { return options_; }
   [[nodiscard]] const Counters& counters() const { return counters_; }
   [[nodiscard]] const Faults& faults() const { return faults_; }
@@ -79,9 +104,15 @@ class Device final : public stream::ByteDevice {
   void handle(const stream::GapFrame& frame);
   void handle_request(const modbus::RtuFrame& request, stream::TimePoint end);
   void handle_read(const modbus::RtuFrame& request, stream::TimePoint end);
+  // An incorrect function: exception 07, or `standard` with nak_on_error = false.
+  void refuse_function(const modbus::RtuFrame& request, stream::TimePoint end,
+                       modbus::ExceptionCode standard);
   // FC 6/16 to us: applied or refused, answered.
   void handle_write(const modbus::RtuFrame& request, stream::TimePoint end);
   void finish_calibration(stream::TimePoint now);
+  void begin_calibration(stream::TimePoint start);
+  // Data words for a transmission (an answer to a data read, a push): the storage then resets.
+  [[nodiscard]] std::vector<std::uint16_t> transmit_block();
   void answer(const modbus::RtuFrame& reply, stream::TimePoint end);
   void push_data(stream::TimePoint due);
   void schedule(std::vector<std::uint8_t> bytes, stream::TimePoint due);
@@ -96,6 +127,10 @@ class Device final : public stream::ByteDevice {
   std::optional<stream::TimePoint> next_push_;
   std::optional<stream::TimePoint> calibration_end_;
   std::uint16_t calibrations_ = 0;
+  std::uint16_t calibrations_failed_ = 0;
+  bool manual_adjustment_ = false;
+  std::optional<stream::TimePoint> sw1_closed_;
+  Storage storage_;
   stream::TransmitQueue pending_;
   std::deque<std::vector<std::uint8_t>> transmit_;
   Counters counters_;

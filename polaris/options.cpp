@@ -18,6 +18,10 @@ constexpr std::chrono::milliseconds kMaxScanTime{5000};
 constexpr std::uint16_t kMaxFilter = 255;
 
 std::string check_beams(const Options& o) {
+  for (const auto b : o.blocked) {
+    if (b < 1 || b > o.beams)
+      return "blocked beam " + std::to_string(b) + " outside 1.." + std::to_string(o.beams);
+  }
   if (height_for_beams(o.family, o.beams)) return {};
   const BeamRange r = beam_range(o.family);
   return "beams " + std::to_string(o.beams) + ": no " + std::string(to_string(o.family)) +
@@ -52,7 +56,16 @@ std::string check_timing(const Options& o) {
   if (o.pn2_filter < 1 || o.pn2_filter > kMaxFilter) {
     return "PN2 filter " + std::to_string(o.pn2_filter) + ": must be 1..255 scans";
   }
-  if (o.response_time < stream::Duration::zero()) return "response time: must not be negative";
+  if (o.response_time < stream::Duration::zero() || o.response_time > kMaxResponseTime) {
+    return "response time " +
+           std::to_string(std::chrono::duration_cast<std::chrono::microseconds>(o.response_time)
+                              .count()) +
+           " us: must be 0 (the model's) .. 1000 ms";
+  }
+  if (o.response_column != ResponseColumn::kFirst && o.response_column != ResponseColumn::kSecond) {
+    return "response column " + std::to_string(static_cast<int>(o.response_column)) +
+           ": the model tables have columns 1 and 2";
+  }
   return {};
 }
 
@@ -69,6 +82,22 @@ std::optional<DataMode> parse_data_mode(std::string_view text) noexcept {
   return std::nullopt;
 }
 
+std::string_view to_token(DataStorage s) noexcept {
+  switch (s) {
+    case DataStorage::kNone: return "none";
+    case DataStorage::kObject: return "object";
+    case DataStorage::kHole: return "hole";
+  }
+  return "none";
+}
+
+std::optional<DataStorage> parse_data_storage(std::string_view text) noexcept {
+  for (const DataStorage s : {DataStorage::kNone, DataStorage::kObject, DataStorage::kHole}) {
+    if (to_token(s) == text) return s;
+  }
+  return std::nullopt;
+}
+
 std::uint16_t start_address(const Options& o) noexcept {
   if (o.start_address) return *o.start_address;
   return o.role == Role::kSlave ? kDefaultSlaveStart : 0;
@@ -76,11 +105,14 @@ std::uint16_t start_address(const Options& o) noexcept {
 
 stream::Duration scan_duration(const Options& o) noexcept {
   if (o.response_time > stream::Duration::zero()) return o.response_time;
+  const auto column = [&o](const Model& m) {
+    return o.response_column == ResponseColumn::kSecond ? m.response_time_2nd() : m.response_time();
+  };
   const std::span<const Model> family = models(o.family);
   for (const Model& m : family) {
-    if (m.beams >= o.beams) return m.response_time();
+    if (m.beams >= o.beams) return column(m);
   }
-  return family.back().response_time();
+  return column(family.back());
 }
 
 stream::LineSettings line_settings(const Options& o) noexcept {

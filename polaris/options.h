@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace rs4sim::polaris {
 
@@ -25,6 +26,13 @@ enum class ScanDirection : std::uint8_t { kDirect, kReverse };
 enum class Detection : std::uint8_t { kObject, kHole };
 // 485MB: which bit of a word is the lowest beam (the manual does not say; DECISION LSB).
 enum class BitOrder : std::uint8_t { kLsbFirst, kMsbFirst };
+
+// The PC tool's "Data storage" and "Storage mode" [Polaris manual §7.4.2] (polaris/storage.h).
+enum class DataStorage : std::uint8_t { kNone, kObject, kHole };
+enum class StorageMode : std::uint8_t { kTemporary, kPermanent };
+// Which maximum response time column of the model tables is one scan
+// [Polaris manual §2.1, §2.2] ([docs/decisions.md#polaris-response-time]).
+enum class ResponseColumn : std::uint8_t { kFirst = 1, kSecond = 2 };
 
 [[nodiscard]] std::string_view to_string(DataMode m) noexcept;
 // "slave", "master" (the API's and the CLI's word).
@@ -43,6 +51,12 @@ enum class BitOrder : std::uint8_t { kLsbFirst, kMsbFirst };
 [[nodiscard]] constexpr std::string_view to_token(BitOrder b) noexcept {
   return b == BitOrder::kLsbFirst ? "lsb" : "msb";
 }
+// "storage=none|object|hole", "temporary"/"permanent".
+[[nodiscard]] std::string_view to_token(DataStorage s) noexcept;
+[[nodiscard]] std::optional<DataStorage> parse_data_storage(std::string_view text) noexcept;
+[[nodiscard]] constexpr std::string_view to_token(StorageMode m) noexcept {
+  return m == StorageMode::kTemporary ? "temporary" : "permanent";
+}
 
 struct Options {
   Family family = Family::kPl10;
@@ -60,8 +74,15 @@ struct Options {
   // model's first maximum response time [Polaris manual §2.1, §2.2]
   // ([docs/decisions.md#polaris-response-time]).
   stream::Duration response_time{};
+  // The model table's column response_time = 0 takes; the second: the slower one.
+  ResponseColumn response_column = ResponseColumn::kFirst;
   bool nak_on_error = true;  // exception 0x07 on CRC error/bad function; false: standard
   BitOrder bit_order = BitOrder::kLsbFirst;
+  DataStorage storage = DataStorage::kNone;
+  StorageMode storage_mode = StorageMode::kTemporary;
+  // The initial scene: physical beams interrupted from the start (1..beams), as
+  // gridscan::Options and metron::Options hold theirs.
+  std::vector<std::uint16_t> blocked;
 
   // Empty when usable; otherwise one sentence naming the field, the value and the rule.
   [[nodiscard]] std::string validate() const;
@@ -70,11 +91,14 @@ struct Options {
 inline constexpr std::uint16_t kDefaultSlaveStart = 0x2000;
 inline constexpr std::uint16_t kMinSlaveStart = 500;
 inline constexpr std::uint16_t kMaxSlaveStart = 12287;
+// The longest scan response_time may set (the slowest model's second column is 34,7 ms).
+inline constexpr std::chrono::milliseconds kMaxResponseTime{1000};
 
 // The first register of the data block.
 [[nodiscard]] std::uint16_t start_address(const Options& o) noexcept;
-// The scan duration: response_time, or the model's first maximum response time (a beam
-// count no model has, which validate() refuses: the next larger model's).
+// The scan duration: response_time, or the model's maximum response time of
+// response_column (a beam count no model has, which validate() refuses: the next larger
+// model's).
 [[nodiscard]] stream::Duration scan_duration(const Options& o) noexcept;
 [[nodiscard]] stream::LineSettings line_settings(const Options& o) noexcept;
 

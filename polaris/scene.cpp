@@ -4,10 +4,17 @@
 
 namespace rs4sim::polaris {
 
+std::string_view to_string(SceneError e) noexcept {
+  switch (e) {
+    case SceneError::kNoSuchBeam: return "no such beam";
+  }
+  return "unknown scene error";
+}
+
 std::error_code Scene::set_interrupted(std::span<const std::uint16_t> beams) {
   for (const std::uint16_t b : beams) {
     if (b == 0 || b > interrupted_.size()) {
-      return std::make_error_code(std::errc::invalid_argument);
+      return SceneError::kNoSuchBeam;
     }
   }
   std::fill(interrupted_.begin(), interrupted_.end(), std::uint8_t{0});

@@ -41,6 +41,10 @@ std::vector<std::string> gridscan_faults(const gridscan::Device& d) {
   return out;
 }
 
+std::int64_t ns(stream::Duration d) {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(d).count();
+}
+
 }  // namespace
 
 GridScanService::GridScanService(LineContext context, gridscan::Device& device)
@@ -97,6 +101,8 @@ grpc::Status GridScanService::GetState(grpc::ServerContext*, const v1::LineDevic
           out->add_stuck_free(e);
         }
         set_last_frame(c_.tap, *out->mutable_last_frame());
+        out->set_cycle_ns(ns(d_.cycle()));
+        out->set_next_cycle_ns(ns(d_.options().cycle_time()));
         out->set_now_ns(to_ns(now));
         return grpc::Status::OK;
       },
@@ -129,6 +135,19 @@ grpc::Status GridScanService::SetBlocked(grpc::ServerContext*, const v1::SetBloc
         if (auto* bad = std::get_if<grpc::Status>(&elements)) return *bad;
         // numbers() has checked the range, so the scene takes them all.
         (void)d_.set_interrupted(std::get<std::vector<std::uint16_t>>(elements));
+        return grpc::Status::OK;
+      },
+      true);
+}
+
+grpc::Status GridScanService::SetTiming(grpc::ServerContext*,
+                                        const v1::GridScanTimingRequest* in, v1::Empty*) {
+  return on_line(
+      c_, "GridScan", in->address(),
+      [&](dp::TimePoint) {
+        if (auto why = d_.set_cycle(std::chrono::milliseconds(in->cycle_ms())); !why.empty()) {
+          return invalid_argument("cycle_ms", why);
+        }
         return grpc::Status::OK;
       },
       true);

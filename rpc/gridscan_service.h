@@ -24,6 +24,8 @@ class GridScanService final
   grpc::Status SetDoor(grpc::ServerContext*, const v1::SetDoorRequest* in, v1::Empty*) override;
   grpc::Status SetBlocked(grpc::ServerContext*, const v1::SetBlockedRequest* in,
                           v1::Empty*) override;
+  grpc::Status SetTiming(grpc::ServerContext*, const v1::GridScanTimingRequest* in,
+                         v1::Empty*) override;
   grpc::Status SetSoiling(grpc::ServerContext*, const v1::SetSoilingRequest* in,
                           v1::Empty*) override;
   grpc::Status PowerCycle(grpc::ServerContext*, const v1::PowerCycleRequest* in,

@@ -101,6 +101,8 @@ grpc::Status MetronService::GetState(grpc::ServerContext*, const v1::LineDeviceR
         c->set_reports_dropped(k.reports_dropped);
         c->set_suppressed(k.suppressed);
         set_last_frame(c_.tap, *out->mutable_last_frame());
+        out->set_scan_cycle_ms(whole_ms(d_.options().scan_cycle));
+        out->set_t_response_ms(whole_ms(d_.options().t_response));
         out->set_now_ns(to_ns(now));
         return grpc::Status::OK;
       },
@@ -140,6 +142,30 @@ grpc::Status MetronService::SetInput(grpc::ServerContext*, const v1::SetInputReq
       c_, "METRON", in->address(),
       [&](dp::TimePoint) {
         d_.set_input(in->high());
+        return grpc::Status::OK;
+      },
+      true);
+}
+
+grpc::Status MetronService::SetTiming(grpc::ServerContext*, const v1::MetronTimingRequest* in,
+                                      v1::Empty*) {
+  if (auto bad = check_metron_address(in->address()); !bad.ok()) return bad;
+  if (in->scan_cycle_ms() < 1 || in->scan_cycle_ms() > 1000) {
+    return invalid_argument("scan_cycle_ms",
+                            std::to_string(in->scan_cycle_ms()) + " ms outside 1..1000");
+  }
+  if (in->t_response_ms() < 1 || in->t_response_ms() > 2000) {
+    return invalid_argument("t_response_ms",
+                            std::to_string(in->t_response_ms()) + " ms outside 1..2000");
+  }
+  return on_line(
+      c_, "METRON", in->address(),
+      [&](dp::TimePoint) {
+        if (auto why = d_.set_timing(std::chrono::milliseconds(in->scan_cycle_ms()),
+                                     std::chrono::milliseconds(in->t_response_ms()));
+            !why.empty()) {
+          return invalid_argument("scan_cycle_ms", why);
+        }
         return grpc::Status::OK;
       },
       true);

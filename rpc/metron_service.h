@@ -25,6 +25,8 @@ class MetronService final : public line::LineService<v1::Metron::Service, v1::Me
   grpc::Status SetSynchronised(grpc::ServerContext*, const v1::SetSynchronisedRequest* in,
                                v1::Empty*) override;
   grpc::Status SetInput(grpc::ServerContext*, const v1::SetInputRequest* in, v1::Empty*) override;
+  grpc::Status SetTiming(grpc::ServerContext*, const v1::MetronTimingRequest* in,
+                         v1::Empty*) override;
 
  private:
   grpc::Status fault(const v1::MetronFaultRequest& in, bool inject) override;

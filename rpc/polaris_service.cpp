@@ -39,6 +39,25 @@ grpc::Status check_modbus_address(std::uint32_t address) {
   return grpc::Status::OK;
 }
 
+void set_counters(const polaris::Counters& k, v1::PolarisCounters& c) {
+  c.set_requests(k.requests);
+  c.set_crc_errors(k.crc_errors);
+  c.set_too_short(k.too_short);
+  c.set_oversized(k.oversized);
+  c.set_broadcasts(k.broadcasts);
+  c.set_foreign_address(k.foreign_address);
+  c.set_bad_function(k.bad_function);
+  c.set_bad_request(k.bad_request);
+  c.set_bad_start(k.bad_start);
+  c.set_answers_ignored(k.answers_ignored);
+  c.set_exceptions_sent(k.exceptions_sent);
+  c.set_frames_sent(k.frames_sent);
+  c.set_suppressed(k.suppressed);
+  c.set_busy(k.busy);
+  c.set_writes(k.writes);
+  c.set_refused_writes(k.refused_writes);
+}
+
 }  // namespace
 
 PolarisService::PolarisService(LineContext context, polaris::Device& device)
@@ -68,24 +87,7 @@ grpc::Status PolarisService::GetState(grpc::ServerContext*, const v1::LineDevice
         }
         for (const auto& f : polaris_faults(d_.faults())) out->add_faults_present(f);
         out->set_late_ms(whole_ms(d_.faults().transmit.late));
-        const auto& k = d_.counters();
-        auto* c = out->mutable_counters();
-        c->set_requests(k.requests);
-        c->set_crc_errors(k.crc_errors);
-        c->set_too_short(k.too_short);
-        c->set_oversized(k.oversized);
-        c->set_broadcasts(k.broadcasts);
-        c->set_foreign_address(k.foreign_address);
-        c->set_bad_function(k.bad_function);
-        c->set_bad_request(k.bad_request);
-        c->set_bad_start(k.bad_start);
-        c->set_answers_ignored(k.answers_ignored);
-        c->set_exceptions_sent(k.exceptions_sent);
-        c->set_frames_sent(k.frames_sent);
-        c->set_suppressed(k.suppressed);
-        c->set_busy(k.busy);
-        c->set_writes(k.writes);
-        c->set_refused_writes(k.refused_writes);
+        set_counters(d_.counters(), *out->mutable_counters());
         out->set_calibrating(d_.calibrating(now));
         if (const auto end = d_.calibration_end()) out->set_calibration_end_ns(to_ns(*end));
         out->set_calibrations(d_.calibrations());
@@ -95,6 +97,15 @@ grpc::Status PolarisService::GetState(grpc::ServerContext*, const v1::LineDevice
         out->set_scan_time_ms(static_cast<std::uint32_t>(o.scan_time.count()));
         out->set_bit_order(std::string(polaris::to_token(o.bit_order)));
         out->set_nak_on_error(o.nak_on_error);
+        const polaris::Leds leds = d_.leds(now);
+        out->set_tx_led(std::string(polaris::to_token(leds.tx)));
+        out->set_rx_led(std::string(polaris::to_token(leds.rx)));
+        out->set_manual_adjustment(d_.manual_adjustment());
+        out->set_calibrations_failed(d_.calibrations_failed());
+        out->set_storage(std::string(polaris::to_token(o.storage)));
+        out->set_storage_mode(std::string(polaris::to_token(o.storage_mode)));
+        out->set_scan_ns(std::chrono::duration_cast<std::chrono::nanoseconds>(d_.scan()).count());
+        out->set_response_column(static_cast<std::uint32_t>(o.response_column));
         set_last_frame(c_.tap, *out->mutable_last_frame());
         out->set_now_ns(to_ns(now));
         return grpc::Status::OK;
@@ -152,14 +163,58 @@ grpc::Status PolarisService::Calibrate(grpc::ServerContext*, const v1::LineDevic
   return on_line(
       c_, "Polaris", in->address(),
       [&](dp::TimePoint now) {
-        if (d_.start_calibration(now)) {
-          return failed_precondition(
-              "CALIBRATING", "Polaris " + std::to_string(c_.address),
-              "an auto-calibration runs until " + std::to_string(to_ns(*d_.calibration_end())) +
-                  " ns (0.4 s per beam)");
+        return calibration_refused(d_.start_calibration(now));
+      },
+      true);
+}
+
+grpc::Status PolarisService::calibration_refused(const std::error_code& ec) const {
+  if (!ec) return grpc::Status::OK;
+  const std::string subject = "Polaris " + std::to_string(c_.address);
+  if (ec == polaris::ConfigError::kBeamsInterrupted) {
+    return failed_precondition("BEAMS_INTERRUPTED", subject,
+                               "beams are interrupted: auto-calibration needs a free detection "
+                               "area [Polaris manual §7.2]");
+  }
+  const auto end = d_.calibration_end();
+  return failed_precondition(
+      "CALIBRATING", subject,
+      "an auto-calibration runs until " + std::to_string(end ? to_ns(*end) : 0) +
+          " ns (0.4 s per beam)");
+}
+
+grpc::Status PolarisService::SetTiming(grpc::ServerContext*, const v1::PolarisTimingRequest* in,
+                                       v1::Empty*) {
+  if (auto bad = check_modbus_address(in->address()); !bad.ok()) return bad;
+  if (in->response_time_us() > 1'000'000) {
+    return invalid_argument("response_time_us", std::to_string(in->response_time_us()) +
+                                                    " outside 0..1000000 (0: the model's)");
+  }
+  if (in->response_column() > 2) {
+    return invalid_argument("response_column",
+                            std::to_string(in->response_column()) +
+                                ": the model tables have columns 1 and 2 [Polaris manual §2.1]");
+  }
+  return on_line(
+      c_, "Polaris", in->address(),
+      [&](dp::TimePoint now) {
+        const auto column = in->response_column() == 2 ? polaris::ResponseColumn::kSecond
+                                                       : polaris::ResponseColumn::kFirst;
+        if (const auto ec = d_.set_response_time(
+                std::chrono::microseconds(in->response_time_us()), column, now)) {
+          return invalid_argument("response_time_us", ec.message());
         }
         return grpc::Status::OK;
       },
+      true);
+}
+
+grpc::Status PolarisService::SetSw1(grpc::ServerContext*, const v1::PolarisSw1Request* in,
+                                    v1::Empty*) {
+  if (auto bad = check_modbus_address(in->address()); !bad.ok()) return bad;
+  return on_line(
+      c_, "Polaris", in->address(),
+      [&](dp::TimePoint now) { return calibration_refused(d_.set_sw1(in->closed(), now)); },
       true);
 }
 

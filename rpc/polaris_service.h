@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <system_error>
 
 namespace rs4sim::rpc {
 
@@ -25,9 +26,15 @@ class PolarisService final
                           v1::Empty*) override;
   grpc::Status Calibrate(grpc::ServerContext*, const v1::LineDeviceRequest* in,
                          v1::Empty*) override;
+  grpc::Status SetTiming(grpc::ServerContext*, const v1::PolarisTimingRequest* in,
+                         v1::Empty*) override;
+  grpc::Status SetSw1(grpc::ServerContext*, const v1::PolarisSw1Request* in,
+                      v1::Empty*) override;
 
  private:
   grpc::Status fault(const v1::PolarisFaultRequest& in, bool inject) override;
+  // A refused auto-calibration start as FAILED_PRECONDITION.
+  grpc::Status calibration_refused(const std::error_code& ec) const;
   polaris::Device& d_;
 };
 

@@ -6,11 +6,13 @@
 //   rs4sim run --device gridscan --link pty --elements 22 --mode blanking --door 10 --blocked 3
 //   rs4sim run --device gridscan --link memory --grpc 127.0.0.1:50051   (the simulated clock:
 //              SimTime, GridScan.Exchange/Receive/PowerCycle, docs/gridscan.md)
+//   --mode blanking|static[,cycle=<ms>]: the delivery mode and t_CYCLE (gridscan/mode_spec.h)
 #include "app/devices/device_options.h"
 #include "app/devices/device_registry.h"
 #include "app/devices/line_segment.h"
 #include "app/runtime/usage_error.h"
 #include "gridscan/device.h"
+#include "gridscan/mode_spec.h"
 #include "rpc/device_target.h"
 #include "rpc/gridscan_service.h"
 #include "rpc/rs4_services.h"
@@ -25,12 +27,6 @@ namespace {
 // point-to-point, [GridScan manual §9]).
 constexpr std::uint8_t kAddress = 0;
 
-gridscan::Configuration configuration_of(const std::string& mode) {
-  if (mode.empty() || mode == "blanking") return gridscan::Configuration::kBlanking;
-  if (mode == "static") return gridscan::Configuration::kStatic;
-  throw UsageError("--mode " + mode + ": use blanking or static");
-}
-
 gridscan::Options gridscan_options(const DeviceOptions& o) {
   gridscan::Options g;
   if (o.elements) {
@@ -40,7 +36,11 @@ gridscan::Options gridscan_options(const DeviceOptions& o) {
     }
     g.elements = static_cast<unsigned>(*o.elements);
   }
-  g.configuration = configuration_of(o.mode);
+  if (!o.mode.empty()) {
+    if (const auto why = gridscan::apply_mode_spec(o.mode, g); !why.empty()) {
+      throw UsageError("--mode " + o.mode + ": " + why);
+    }
+  }
   if (o.door) {
     if (*o.door < 0 || *o.door > static_cast<int>(g.elements)) {
       throw UsageError("--door " + std::to_string(*o.door) + ": the door position is 0.." +

@@ -58,17 +58,12 @@ metron::Options metron_options(const DeviceOptions& o) {
     m.parity = line.parity;
   }
   if (!o.wire_table.empty()) m.wire = read_metron_wire_table(o.wire_table);
-  if (const auto why = m.validate(); !why.empty()) throw UsageError("metron: " + why);
   check_blocked(o, m.beams, "beams");
+  if (o.blocked) {  // the initial scene, in the options as every line device's
+    for (const int b : *o.blocked) m.blocked.push_back(static_cast<std::uint16_t>(b));
+  }
+  if (const auto why = m.validate(); !why.empty()) throw UsageError("metron: " + why);
   return m;
-}
-
-// --blocked: the beams interrupted from the start (check_blocked() has checked them).
-void set_blocked(const DeviceOptions& o, metron::Device& device) {
-  if (!o.blocked) return;
-  std::vector<std::uint16_t> beams;
-  for (const int b : *o.blocked) beams.push_back(static_cast<std::uint16_t>(b));
-  device.set_interrupted(beams);
 }
 
 // The status line at the end of a run.
@@ -85,9 +80,7 @@ void print_line_status(std::ostream& out, const metron::Device& device_,
 
 class MetronInstance final : public DeviceInstance {
  public:
-  explicit MetronInstance(const DeviceOptions& o) : device_(metron_options(o)) {
-    set_blocked(o, device_);
-  }
+  explicit MetronInstance(const DeviceOptions& o) : device_(metron_options(o)) {}
   std::vector<stream::ByteDevice*> byte_devices() override { return {&tap_}; }
   [[nodiscard]] stream::LineProtocol line_protocol() const override {
     return stream::LineProtocol::kMetron;
@@ -155,9 +148,7 @@ DeviceEntry metron_device_entry() {
       .build = [](const DeviceOptions& o) { return std::make_unique<MetronInstance>(o); },
       .simulate =
           [](const DeviceOptions& o) {
-            auto segment = std::make_unique<MetronSegment>(kMetronLine, metron_options(o));
-            set_blocked(o, segment->device());
-            return segment;
+            return std::make_unique<MetronSegment>(kMetronLine, metron_options(o));
           },
       .demo = run_metron_demo,
       .byte_device = true,

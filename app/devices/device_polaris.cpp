@@ -8,95 +8,22 @@
 //              --baud 19200 --blocked 9-13,25-34
 //   rs4sim run --device polaris --link pty --mode FL4,master,start=0,scan-time=20
 //   --mode: a data mode (485MB | FL1 | FL4 | FL10), optionally followed by comma-separated
-//           words, the PC tool's settings [Polaris manual §7.4.2]: slave | master,
-//           direct | reverse, object | hole, lsb | msb (485MB bit order), nak | no-nak
-//           (exception 07 on a CRC error or a bad function, or standard Modbus),
-//           start=<register> (decimal or 0x hex), scan-time=<ms>, pn2-filter=<scans>
+//           words, the PC tool's settings [Polaris manual §7.4.2] (polaris/mode_spec.h)
 #include "app/devices/device_options.h"
 #include "app/devices/device_registry.h"
 #include "app/devices/line_segment.h"
 #include "app/runtime/usage_error.h"
 #include "modbus/rtu_frame.h"
 #include "polaris/device.h"
+#include "polaris/mode_spec.h"
 #include "rpc/device_target.h"
 #include "rpc/polaris_service.h"
 #include "rpc/rs4_services.h"
 
-#include <charconv>
 #include <ostream>
-#include <sstream>
 
 namespace rs4sim::app {
 namespace {
-
-// The number after "key=" in a --mode word: decimal, or hex after 0x when `hex` (register
-// numbers); at most `max`. The range of the setting is Options::validate()'s.
-std::uint32_t mode_number(const std::string& mode, const std::string& word, std::size_t key_size,
-                          std::uint32_t max, bool hex, const std::string& what) {
-  std::string_view digits = std::string_view(word).substr(key_size);
-  int base = 10;
-  if (hex && (digits.starts_with("0x") || digits.starts_with("0X"))) {
-    digits.remove_prefix(2);
-    base = 16;
-  }
-  std::uint32_t value = 0;
-  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value, base);
-  if (digits.empty() || ec != std::errc{} || end != digits.data() + digits.size() || value > max) {
-    throw UsageError("--mode " + mode + ": '" + word + "': " + what);
-  }
-  return value;
-}
-
-// One word after the data mode: a role, direction, detection, bit order or error mode
-// word, or key=value. False: not one of them.
-bool apply_mode_word(const std::string& mode, const std::string& word, polaris::Options& p) {
-  if (word == "slave" || word == "master") {
-    p.role = word == "slave" ? polaris::Role::kSlave : polaris::Role::kMaster;
-  } else if (word == "direct" || word == "reverse") {
-    p.direction =
-        word == "direct" ? polaris::ScanDirection::kDirect : polaris::ScanDirection::kReverse;
-  } else if (word == "object" || word == "hole") {
-    p.detection = word == "object" ? polaris::Detection::kObject : polaris::Detection::kHole;
-  } else if (word == "lsb" || word == "msb") {
-    p.bit_order = word == "lsb" ? polaris::BitOrder::kLsbFirst : polaris::BitOrder::kMsbFirst;
-  } else if (word == "nak" || word == "no-nak") {
-    p.nak_on_error = word == "nak";
-  } else if (word.starts_with("start=")) {
-    p.start_address = static_cast<std::uint16_t>(
-        mode_number(mode, word, 6, 0xFFFF, true,
-                    "start= takes a register number 0..65535 (slave: 500..12287), e.g. "
-                    "start=8192 or start=0x2000"));
-  } else if (word.starts_with("scan-time=")) {
-    p.scan_time = std::chrono::milliseconds(
-        mode_number(mode, word, 10, 0xFFFFFFFF, false,
-                    "scan-time= takes milliseconds, 5..5000, e.g. scan-time=100"));
-  } else if (word.starts_with("pn2-filter=")) {
-    p.pn2_filter = static_cast<std::uint16_t>(
-        mode_number(mode, word, 11, 0xFFFF, false, "pn2-filter= takes a number of scans, 1..255"));
-  } else {
-    return false;
-  }
-  return true;
-}
-
-void apply_mode(const std::string& mode, polaris::Options& p) {
-  std::istringstream words(mode);
-  std::string word;
-  bool first = true;
-  while (std::getline(words, word, ',')) {
-    if (first) {
-      const auto m = polaris::parse_data_mode(word);
-      if (!m)
-        throw UsageError("--mode " + mode + ": '" + word + "' is not 485MB, FL1, FL4 or FL10");
-      p.mode = *m;
-      first = false;
-    } else if (!apply_mode_word(mode, word, p)) {
-      throw UsageError("--mode " + mode + ": '" + word +
-                       "' is none of slave, master, direct, reverse, object, hole, lsb, msb, "
-                       "nak, no-nak, start=, scan-time=, pn2-filter=");
-    }
-  }
-}
 
 polaris::Options polaris_options(const DeviceOptions& o) {
   polaris::Options p;
@@ -122,19 +49,17 @@ polaris::Options polaris_options(const DeviceOptions& o) {
     p.address = static_cast<std::uint8_t>(*o.address);
   }
   if (o.baud) p.baud = *o.baud;
-  if (!o.mode.empty()) apply_mode(o.mode, p);
-  if (const auto why = p.validate(); !why.empty()) throw UsageError("polaris: " + why);
-  check_blocked(o, p.beams, "beams");
-  return p;
-}
-
-// --blocked as beam numbers (check_blocked() has checked them), empty without it.
-std::vector<std::uint16_t> blocked_beams(const DeviceOptions& o) {
-  std::vector<std::uint16_t> beams;
-  if (o.blocked) {
-    for (const int b : *o.blocked) beams.push_back(static_cast<std::uint16_t>(b));
+  if (!o.mode.empty()) {
+    if (const auto why = polaris::apply_mode_spec(o.mode, p); !why.empty()) {
+      throw UsageError("--mode " + o.mode + ": " + why);
+    }
   }
-  return beams;
+  check_blocked(o, p.beams, "beams");
+  if (o.blocked) {  // the initial scene, in the options as every line device's
+    for (const int b : *o.blocked) p.blocked.push_back(static_cast<std::uint16_t>(b));
+  }
+  if (const auto why = p.validate(); !why.empty()) throw UsageError("polaris: " + why);
+  return p;
 }
 
 // The status line at the end of a run.
@@ -154,14 +79,10 @@ void print_line_status(std::ostream& out, const polaris::Device& device_,
 
 class PolarisInstance final : public DeviceInstance {
  public:
-  explicit PolarisInstance(const DeviceOptions& o)
-      : device_(polaris_options(o)), blocked_(blocked_beams(o)) {}
+  explicit PolarisInstance(const DeviceOptions& o) : device_(polaris_options(o)) {}
   std::vector<stream::ByteDevice*> byte_devices() override { return {&tap_}; }
   [[nodiscard]] stream::LineProtocol line_protocol() const override {
     return stream::LineProtocol::kModbusRtu;
-  }
-  void start(dp::TimePoint now) override {
-    (void)device_.set_interrupted(blocked_, now);  // checked against the beam count in validate
   }
   // SIGUSR1: the autocal input's pulse, an auto-calibration of 0.4 s per beam
   // [Polaris manual §7.2] (data reads answer exception 06 meanwhile); ignored while one runs.
@@ -198,7 +119,6 @@ class PolarisInstance final : public DeviceInstance {
   polaris::Device device_;
   rpc::TappedByteDevice tap_{device_};
   std::unique_ptr<rpc::LineDeviceTarget> target_;
-  std::vector<std::uint16_t> blocked_;
 };
 
 // --link memory: the device alone on the simulated line, driven through the API
@@ -228,11 +148,7 @@ DeviceEntry polaris_device_entry() {
       .build = [](const DeviceOptions& o) { return std::make_unique<PolarisInstance>(o); },
       .simulate =
           [](const DeviceOptions& o) {
-            auto segment = std::make_unique<PolarisSegment>(kPolarisLine, polaris_options(o));
-            if (o.blocked) {  // checked against the beam count in validate
-              (void)segment->device().set_interrupted(blocked_beams(o), segment->now());
-            }
-            return segment;
+            return std::make_unique<PolarisSegment>(kPolarisLine, polaris_options(o));
           },
       .demo = run_polaris_demo,
       .byte_device = true,

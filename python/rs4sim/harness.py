@@ -406,6 +406,12 @@ class GridScan(_LineDevice):
     def set_soiling(self, level):
         self.service.SetSoiling(dev_pb.SetSoilingRequest(address=self.address, level=level))
 
+    def set_timing(self, cycle_ms):
+        """t_CYCLE from the next power_cycle() on, inside the manual's band (22 elements:
+        18..40 ms); grpc.RpcError INVALID_ARGUMENT outside."""
+        self.service.SetTiming(dev_pb.GridScanTimingRequest(address=self.address,
+                                                             cycle_ms=cycle_ms))
+
     def power_cycle(self, off_ms=0):
         """Mains off and on (off_ms later, on the simulated clock): the power-up again."""
         self.service.PowerCycle(dev_pb.PowerCycleRequest(address=self.address, off_ms=off_ms))
@@ -445,6 +451,12 @@ class Metron(_LineDevice):
         """The level of the curtain's input line (what its input type acts on)."""
         self.service.SetInput(dev_pb.SetInputRequest(address=self.address, high=high))
 
+    def set_timing(self, scan_cycle_ms, t_response_ms):
+        """The scan cycle (1..1000 ms) and Equation 3's t_response (1..2000 ms) from now on;
+        grpc.RpcError INVALID_ARGUMENT outside."""
+        self.service.SetTiming(dev_pb.MetronTimingRequest(
+            address=self.address, scan_cycle_ms=scan_cycle_ms, t_response_ms=t_response_ms))
+
 
 class Polaris(_LineDevice):
     """faults: BAD_CRC, SILENT (NO_ANSWER, its deprecated name, still works), LATE (late_ms)."""
@@ -459,5 +471,18 @@ class Polaris(_LineDevice):
 
     def calibrate(self):
         """Starts auto-calibration as the autocal input does: 0.4 s per beam, data reads get
-        exception 06 meanwhile; grpc.RpcError FAILED_PRECONDITION while one runs."""
+        exception 06 meanwhile; grpc.RpcError FAILED_PRECONDITION while one runs or with a
+        beam interrupted."""
         self.service.Calibrate(dev_pb.LineDeviceRequest(address=self.address))
+
+    def set_timing(self, response_time_us=0, response_column=1):
+        """One scan: response_time_us (0..1000000), or 0 for the model table's maximum
+        response time of column 1 or 2; grpc.RpcError INVALID_ARGUMENT outside."""
+        self.service.SetTiming(dev_pb.PolarisTimingRequest(
+            address=self.address, response_time_us=response_time_us,
+            response_column=response_column))
+
+    def set_sw1(self, closed):
+        """The SW1 contact: opened after 0.5..3 s starts an auto-calibration, after more than
+        3 s the manual adjustment (on the simulated clock: advance() between the two)."""
+        self.service.SetSw1(dev_pb.PolarisSw1Request(address=self.address, closed=closed))

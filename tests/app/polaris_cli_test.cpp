@@ -195,7 +195,8 @@ TEST(PolarisCli, BadSettingsAreUsageErrors) {
             "scans, 1..255");
   EXPECT_EQ(with_mode("FL4,msbfirst"),
             "--mode FL4,msbfirst: 'msbfirst' is none of slave, master, direct, reverse, object, "
-            "hole, lsb, msb, nak, no-nak, start=, scan-time=, pn2-filter=");
+            "hole, lsb, msb, nak, no-nak, start=, scan-time=, pn2-filter=, storage=, temporary, "
+            "permanent, response-time=, response-column=");
 
   DeviceOptions o;
   o.address = 248;

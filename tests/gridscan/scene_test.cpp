@@ -32,7 +32,7 @@ TEST(GridScanScene, AnElementOutsideTheCurtainChangesNothing) {
   Scene s;
   ASSERT_FALSE(s.set_interrupted(Numbers{5}, 24));
   for (const Numbers& bad : {Numbers{25}, Numbers{0}, Numbers{1, 2, 25}}) {
-    EXPECT_EQ(s.set_interrupted(bad, 24), std::make_error_code(std::errc::invalid_argument));
+    EXPECT_EQ(s.set_interrupted(bad, 24), SceneError::kNoSuchElement);
     EXPECT_EQ(s.blocked, 0x10U) << "element 5 still, and only it";
   }
   // 64 elements is the mask's width: element 64 is bit 63, 65 does not exist.

@@ -10,10 +10,13 @@ fail() { echo "polaris_clients: $*" >&2; exit 1; }
 
 . "$(dirname "$0")/lib.sh"
 
-# start <mode>: runs the device in the background; sets tty.
+# start <mode> [none]: runs the device in the background, objects 9-13 and 25-34 in the
+# detection area ("none": a free area); sets tty.
 start() {
+  local blocked=(--blocked 9-13,25-34)
+  [ "${2:-}" = none ] && blocked=()
   bg_start polaris "$rs4sim" run --device polaris --link pty --model PL10 --beams 40 --mode "$1" \
-    --address 1 --baud 19200 --blocked 9-13,25-34
+    --address 1 --baud 19200 "${blocked[@]}"
   bg_await polaris.out '^/dev/pts/'
   tty=$(grep -m1 '^/dev/pts/' "$dir/polaris.out")
   # the banner: the device serves its pty
@@ -79,20 +82,37 @@ assert not w.isError(), w
 mode = c.read_holding_registers(0x0100, 1, slave=1)
 data = c.read_holding_registers(0x2000, 2, slave=1)
 bad_value = c.write_register(0x0100, 9, slave=1)  # no data mode 9: exception 03
-bad_address = c.write_register(0x0200, 0, slave=1)  # outside the map: exception 02
+bad_address = c.write_register(0x0200, 0, slave=1)  # outside the map: incorrect function, 07
 c.close()
 print(mode.registers[0], " ".join(map(str, data.registers)),
       bad_value.exception_code, bad_address.exception_code)
 PY
-)" "1 9 34 3 2"
+)" "1 9 34 3 7"
 # mbpoll's FC 16 (two values from 0x0102): direction reverse, detection object. Beam 1 is now
 # at the far cap: physical 9-13 and 25-34 of 40 are transmitted 28-32 and 7-16 (41 - b), so
 # FL1's overall pair is 7, 32.
 mbpoll -m rtu -b 19200 -d 8 -P none -s 1 -a 1 -t 4 -0 -r 258 -1 -o 1 "$tty" 1 0 >/dev/null ||
   fail "mbpoll FC 16 write refused"
 expect "mbpoll FC 16 direction reverse, FL1 data" "$(mbpoll_read "$tty" 2)" "0x0007 0x0020"
-# An auto-calibration from the command register (FC 6, 0x0108 = 1): 16 s for 40 beams, the
-# data answered with exception 06 meanwhile; a second start is busy too.
+# With objects in the detection area the command register's start is refused, exception 04
+# ("Make sure that there is no material ... in the detection area" [Polaris manual §7.2]).
+expect "pymodbus calibration with beams interrupted" "$(pymodbus_script "$tty" <<'PY'
+import sys
+from pymodbus.client import ModbusSerialClient
+c = ModbusSerialClient(port=sys.argv[1], baudrate=19200, bytesize=8, parity="N", stopbits=1,
+                       timeout=1)
+assert c.connect()
+refused = c.write_register(0x0108, 1, slave=1)
+status = c.read_holding_registers(0x0109, 1, slave=1)
+c.close()
+print(refused.exception_code, status.registers[0])
+PY
+)" "4 0"
+stop
+
+start FL4 none
+# An auto-calibration from the command register (FC 6, 0x0108 = 1) in a free area: 16 s for
+# 40 beams, the data answered with exception 06 meanwhile; a second start is busy too.
 expect "pymodbus calibration busy" "$(pymodbus_script "$tty" <<'PY'
 import sys
 from pymodbus.client import ModbusSerialClient
@@ -110,7 +130,7 @@ PY
 stop
 
 # SIGUSR1: the autocal input, the same busy answer.
-start FL4
+start FL4 none
 bg_signal polaris USR1
 # The signal is handled on the device's loop: the status register (0x0109) says when it
 # has; then the data read is busy.

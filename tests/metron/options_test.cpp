@@ -84,7 +84,8 @@ TEST(MetronModeSpec, Slave) {
   EXPECT_EQ(apply_mode_spec("slave", o), "");
   EXPECT_EQ(o.line_mode, LineMode::kSlave);
   EXPECT_EQ(apply_mode_spec("slave,hex", o),
-            "slave mode takes only input=<type> (19200 8E1 binary, fixed)");
+            "slave mode takes only input=<type>, scan-cycle=<ms> and t-response=<ms> (19200 8E1 "
+            "binary, fixed)");
   EXPECT_EQ(apply_mode_spec("slave,input=enable-line", o), "");
   EXPECT_EQ(o.line_mode, LineMode::kSlave);
   EXPECT_EQ(o.input_type, InputType::kEnableLine);
@@ -106,6 +107,27 @@ TEST(MetronModeSpec, StandardWithOptions) {
   EXPECT_EQ(o.validate(), "");
   EXPECT_EQ(apply_mode_spec("input-related,input=line-standby", o), "");
   EXPECT_EQ(o.input_type, InputType::kLineStandby);
+}
+
+// The scan cycle and Equation 3's t_response from the user [METRON manual "Slave line mode"],
+// in both line modes; validate() keeps its ranges (both sides).
+TEST(MetronModeSpec, TimingWords) {
+  Options o;
+  EXPECT_EQ(apply_mode_spec("slave,scan-cycle=15,t-response=40", o), "");
+  EXPECT_EQ(o.scan_cycle, std::chrono::milliseconds(15));
+  EXPECT_EQ(o.t_response, std::chrono::milliseconds(40));
+  EXPECT_EQ(apply_mode_spec("continuous,hex,scan-cycle=1000,t-response=2000", o), "");
+  EXPECT_EQ(o.validate(), "");
+  EXPECT_EQ(apply_mode_spec("slave,scan-cycle=1001", o), "");
+  EXPECT_EQ(o.validate(), "scan cycle must be 1..1000 ms");
+  EXPECT_EQ(apply_mode_spec("slave,scan-cycle=1,t-response=2001", o), "");
+  EXPECT_EQ(o.validate(), "t_response must be 1..2000 ms");
+  EXPECT_EQ(apply_mode_spec("slave,scan-cycle=0,t-response=1", o), "");
+  EXPECT_EQ(o.validate(), "scan cycle must be 1..1000 ms");
+  EXPECT_EQ(apply_mode_spec("slave,t-response=fast", o),
+            "t-response= takes milliseconds, e.g. t-response=20");
+  EXPECT_EQ(apply_mode_spec("slave,scan-cycle=", o),
+            "scan-cycle= takes milliseconds, e.g. scan-cycle=10");
 }
 
 TEST(MetronModeSpec, Errors) {

@@ -33,6 +33,18 @@ TEST(MetronScene, ABeamOutsideTheCurtainChangesNothing) {
   }
 }
 
+// The initial scene is in the options, as the GridScan's and the Polaris' are.
+TEST(MetronScene, TheInitialSceneIsAnOption) {
+  Options o;
+  o.blocked = {9, 13};
+  EXPECT_EQ(o.validate(), "");
+  EXPECT_EQ(Device(o).scene().interrupted(), (Beams{9, 13}));
+  o.blocked = {0};
+  EXPECT_EQ(o.validate(), "blocked beam 0 outside 1..24");
+  o.blocked = {25};
+  EXPECT_EQ(o.validate(), "blocked beam 25 outside 1..24");
+}
+
 TEST(MetronScene, DeviceSetInterruptedReturnsTheScenesError) {
   Device d(Options{});
   EXPECT_EQ(d.set_interrupted(Beams{2, 25}), SceneError::kNoSuchBeam);

@@ -1,6 +1,7 @@
 // Slave line mode, no node: every command's correct operation as annotated bytes
 // [METRON manual "No node"]. Byte values are the project's EXTENSION (metron/wire_table.h):
 // start 0x02, commands 0x01..0x0D in the manual's order, reply code = command code.
+#include "metron/mode_spec.h"
 #include "tests/metron/metron_line.h"
 
 #include <gtest/gtest.h>
@@ -113,6 +114,38 @@ TEST(MetronSlave, StartStopMeasurementReturnsTheMaximum) {
             (Bytes{0x02, 0x02, 0x08, 0x09 /* maximum */, 0xEE}));
 }
 
+// The replies of #8, #9, #11 and #13 follow the wire table (EXTENSION, docs/metron.md#replies):
+// the same requests as above, with a table that changes what they return. Checksums by hand:
+// the one's complement of code + data (the default layout).
+TEST(MetronSlaveReplies, FollowTheWireTable) {
+  auto o = slave_options();
+  o.wire.replies.stop_measurement = {StopItem::kCode, StopItem::kMaximum};
+  o.wire.replies.beam_interrupted = 0xAA;
+  o.wire.replies.beam_free = 0x55;
+  o.wire.replies.configuration = {ConfigItem::kTResponse, ConfigItem::kBeams};
+  o.wire.replies.curtain_status = {0x80, 0x00, 0x00, 0x00, 0x00, 0x01, 0x00};
+  Rig rig(o);
+  rig.device().set_beam(10, true);
+  EXPECT_EQ(only_reply(rig, {0x02, 0x02, 0x09, 0x0A /* beam 10 */, 0xEC}),
+            (Bytes{0x02, 0x02, 0x09, 0xAA /* interrupted, the table's */, 0x4C}));
+  EXPECT_EQ(only_reply(rig, {0x02, 0x02, 0x09, 0x0B /* beam 11 */, 0xEB}),
+            (Bytes{0x02, 0x02, 0x09, 0x55 /* free */, 0xA1}));
+  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x0B, 0xF4}),
+            (Bytes{0x02, 0x03, 0x0B,
+                   0x14,  // t_response 20 ms
+                   0x18,  // 24 beams
+                   0xC8}));
+  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x0D, 0xF2}),
+            (Bytes{0x02, 0x02, 0x0D, 0x81 /* synchronised 0x80, interrupted 0x01 */, 0x71}));
+  EXPECT_EQ(only_reply(rig, {0x02, 0x02, 0x07, 0x01 /* first interrupted */, 0xF7}),
+            (Bytes{0x02, 0x01, 0x07, 0xF8}));
+  EXPECT_EQ(only_reply(rig, {0x02, 0x01, 0x08, 0xF7}),
+            (Bytes{0x02, 0x03, 0x08,
+                   0x01,  // the measurement's code: first interrupted
+                   0x0A,  // its maximum: beam 10
+                   0xEC}));
+}
+
 TEST(MetronSlave, ResetSoftwareNeverReplies) {
   Rig rig(slave_options());
   rig.send({0x02, 0x01, 0x03, 0xFC});  // disable OSSD
@@ -141,6 +174,19 @@ TEST(MetronSlave, ReplyTimingIsEquation3) {
   const auto s = rig.take();
   ASSERT_EQ(s.size(), 1U);
   EXPECT_EQ(s[0].start, t0 + 12'291'667ns);
+}
+
+// The same with t_response 40 ms set by --mode slave,t-response=40: 2.291667 ms + 20 ms.
+TEST(MetronSlave, ReplyTimingFollowsTheUsersTResponse) {
+  auto o = slave_options();
+  ASSERT_EQ(apply_mode_spec("slave,t-response=40", o), "");
+  Rig rig(o);
+  const auto t0 = rig.now();
+  rig.send({0x02, 0x01, 0x0C, 0xF3});
+  rig.run_to(t0 + 22'291'666ns);
+  EXPECT_FALSE(rig.on_the_wire());
+  rig.run_to(t0 + 22'291'667ns);
+  EXPECT_TRUE(rig.on_the_wire());
 }
 
 TEST(MetronSlave, ReplyTimingCountsFromTheFirstByte) {

@@ -110,7 +110,7 @@ TEST(MetronWireFile, BadKeysAndValuesNameTheirKey) {
   EXPECT_EQ(issue_of(R"({"frame_begin": 2})"),
             "frame_begin: unknown key (the wire table takes: frame_start, commands, errors, "
             "measurements, all_beams, beam_bits, report_start, report_end, separator, "
-            "request_char, reply, report)");
+            "request_char, reply, report, replies)");
   EXPECT_EQ(issue_of(R"({"frame_start": 256})"),
             "frame_start: 256 is not a byte (0..255 or \"0x00\"..\"0xFF\")");
   EXPECT_EQ(issue_of(R"({"frame_start": -1})"),
@@ -139,7 +139,7 @@ TEST(MetronWireFile, BadKeysAndValuesNameTheirKey) {
   EXPECT_EQ(issue_of(R"({"": 1})"),
             R"([""]: unknown key (the wire table takes: frame_start, commands, errors, )"
             "measurements, all_beams, beam_bits, report_start, report_end, separator, "
-            "request_char, reply, report)");
+            "request_char, reply, report, replies)");
   EXPECT_EQ(issue_of(R"({"reply": {"a b": 1}})"),
             R"(reply["a b"]: unknown key (reply takes: fields, length_counts, checksum_covers))");
   EXPECT_EQ(issue_of(R"({"reply": {"order": []}})"),
@@ -190,6 +190,55 @@ TEST(MetronWireFile, ClashesAndBrokenLayoutsNameTheirKey) {
             "report.order: the report order must list \"start\", \"data\", \"checksum\" and "
             "\"end\" once each (Table 1: one character before and one after the data, one "
             "checksum character)");
+}
+
+// What #8, #9 (one beam), #11 and #13 return is the table's too (EXTENSION,
+// docs/metron.md#replies): read, printed back, and refused with the key named.
+TEST(MetronWireFile, RepliesAreReadAndPrintedBack) {
+  WireTable t;
+  ASSERT_FALSE(apply_wire_json(R"({"replies": {
+      "stop_measurement": ["code", "maximum"],
+      "beam_interrupted": "0x00", "beam_free": "0xFF",
+      "configuration": ["t_response", "beams"],
+      "curtain_status": {"interrupted": "0x01", "synchronised": "0x80", "input_high": 0}}})",
+                               t));
+  ReplyData want;
+  want.stop_measurement = {StopItem::kCode, StopItem::kMaximum};
+  want.beam_interrupted = 0x00;
+  want.beam_free = 0xFF;
+  want.configuration = {ConfigItem::kTResponse, ConfigItem::kBeams};
+  want.curtain_status = {0x80, 0x02, 0x04, 0x08, 0x10, 0x01, 0x00};
+  EXPECT_EQ(t.replies, want);
+  WireTable back;
+  ASSERT_FALSE(apply_wire_json(wire_json(t), back));
+  EXPECT_EQ(back, t);
+  EXPECT_NE(wire_json(WireTable{}).find(
+                R"("configuration": ["beams", "input_type", "node", "scan_cycle", "t_response"])"),
+            std::string::npos);
+}
+
+TEST(MetronWireFile, BadRepliesNameTheirKey) {
+  EXPECT_EQ(issue_of(R"({"replies": {"configuration": ["beams", "pitch"]}})"),
+            "replies.configuration[1]: no item \"pitch\" (items: beams, input_type, node, "
+            "scan_cycle, t_response)");
+  EXPECT_EQ(issue_of(R"({"replies": {"configuration": ["beams", "beams"]}})"),
+            "replies.configuration: #11 must return at least one item, each once");
+  EXPECT_EQ(issue_of(R"({"replies": {"stop_measurement": []}})"),
+            "replies.stop_measurement: #8 must return \"code\" and/or \"maximum\", each once");
+  EXPECT_EQ(issue_of(R"({"replies": {"beam_free": 1}})"),
+            "replies.beam_free: a free beam must differ from an interrupted one");
+  EXPECT_EQ(issue_of(R"({"replies": {"curtain_status": {"measuring": "0x03"}}})"),
+            "replies.curtain_status: each flag takes its own single bit (or 0: not reported), "
+            "not 0x03");
+  EXPECT_EQ(issue_of(R"({"replies": {"curtain_status": {"measuring": "0x01"}}})"),
+            "replies.curtain_status: each flag takes its own single bit (or 0: not reported), "
+            "not 0x01");
+  EXPECT_EQ(issue_of(R"({"replies": {"curtain_status": {"dusty": 1}}})"),
+            "replies.curtain_status.dusty: unknown flag (flags: synchronised, ossd_enabled, "
+            "ossd_standby, ossd_measuring, measuring, interrupted, input_high)");
+  EXPECT_EQ(issue_of(R"({"replies": {"answers": 1}})"),
+            "replies.answers: unknown key (replies takes: stop_measurement, beam_interrupted, "
+            "beam_free, configuration, curtain_status)");
 }
 
 TEST(MetronWireFile, ValidateNamesLayoutProblemsToo) {

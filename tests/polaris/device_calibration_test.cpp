@@ -2,6 +2,9 @@
 // autocal input, SW1): it lasts 0.4 s x N beams [Polaris manual §7.2] on the manual clock,
 // data reads meanwhile get exception 06 Server Device Busy (DECISION,
 // docs/decisions.md#polaris-calibration-busy), and the status registers say when it ended.
+// The detection area must be free: "Make sure that there is no material to be detected or
+// other obstacles in the detection area" [Polaris manual §7.2], so the scene is empty while
+// a calibration runs, and a start with beams interrupted is refused.
 // CRCs computed independently (CRC-16/MODBUS, low byte first).
 #include "modbus/timing.h"
 #include "tests/polaris/polaris_line.h"
@@ -38,10 +41,13 @@ const Bytes kCalibratedOnce{0x01, 0x03, 0x04,
                             0x3B, 0xF3};  // CRC
 const Bytes kReadData{0x01, 0x03, 0x20, 0x00, 0x00, 0x02, 0xCF, 0xCB};  // FL1 block
 const Bytes kData{0x01, 0x03, 0x04, 0x00, 0x09, 0x00, 0x22, 0xAA, 0x28};  // 9..34
+const Bytes kEmptyData{0x01, 0x03, 0x04,
+                       0x00, 0x00,   // first: no object
+                       0x00, 0x00,   // last: no object
+                       0xFA, 0x33};  // CRC
 const Bytes kBusy{0x01, 0x83, 0x06, 0xC1, 0x32};  // FC 3 | 0x80, 06 Server Device Busy
 
-// Beams 9 and 34 interrupted: the FL1 data 9..34 (kData). The master test's 8 beams keep an
-// empty scene.
+// Beams 9 and 34 interrupted: the FL1 data 9..34 (kData).
 void interrupt_edges(Rig& r) {
   const std::vector<std::uint16_t> beams{9, 34};
   EXPECT_FALSE(r.device().set_interrupted(beams, r.now()));
@@ -84,7 +90,6 @@ TEST(PolarisCalibration, LastsPointFourSecondsPerBeam) {
 
 TEST(PolarisCalibration, DataReadOneTickBeforeTheEndIsBusy) {
   Rig r(cal_options());
-  interrupt_edges(r);
   const stream::TimePoint end = start_by_command(r);
   EXPECT_EQ(answers(r, kReadStatus), (Answers{kCalibrating}));
   // The read's end (last byte + t3.5) one nanosecond before the calibration's.
@@ -95,12 +100,11 @@ TEST(PolarisCalibration, DataReadOneTickBeforeTheEndIsBusy) {
 
 TEST(PolarisCalibration, DataReadAtTheEndGetsData) {
   Rig r(cal_options());
-  interrupt_edges(r);
   const stream::TimePoint end = start_by_command(r);
   EXPECT_TRUE(r.device().calibrating(end - nanoseconds(1)));
   EXPECT_FALSE(r.device().calibrating(end));
   EXPECT_EQ(r.device().calibration_end(), end);
-  EXPECT_EQ(answers_at(r, kReadData, end - t3_5(r)), (Answers{kData}));
+  EXPECT_EQ(answers_at(r, kReadData, end - t3_5(r)), (Answers{kEmptyData}));
   EXPECT_EQ(answers(r, kReadStatus), (Answers{kCalibratedOnce}));
   EXPECT_EQ(r.device().calibrations(), 1U);
   EXPECT_EQ(r.device().counters().busy, 0U);
@@ -108,7 +112,6 @@ TEST(PolarisCalibration, DataReadAtTheEndGetsData) {
 
 TEST(PolarisCalibration, TheStatusFlipsAtTheEndWithoutARequest) {
   Rig r(cal_options());
-  interrupt_edges(r);
   const stream::TimePoint end = start_by_command(r);
   r.run_to(end - nanoseconds(1));
   EXPECT_EQ(r.device().calibrations(), 0U);
@@ -119,7 +122,6 @@ TEST(PolarisCalibration, TheStatusFlipsAtTheEndWithoutARequest) {
 
 TEST(PolarisCalibration, SecondStartIsBusyOtherWritesAndFc4Too) {
   Rig r(cal_options());
-  interrupt_edges(r);
   start_by_command(r);
   EXPECT_EQ(answers(r, kStartCal), (Answers{{0x01, 0x86, 0x06, 0xC2, 0x62}}));
   EXPECT_EQ(r.device().counters().refused_writes, 1U);
@@ -140,10 +142,8 @@ TEST(PolarisCalibration, SecondStartIsBusyOtherWritesAndFc4Too) {
 // by hand here, since no line would let a deadline pass unserved.
 TEST(PolarisCalibration, AReadThatEndedBeforeThePulseGetsData) {
   Device d(cal_options());
-  const std::vector<std::uint16_t> edges{9, 34};
   const stream::TimePoint t0{};
   d.on_time(t0);
-  ASSERT_FALSE(d.set_interrupted(edges, t0));
   d.on_bytes(kReadData, t0);
   const stream::TimePoint late = t0 + milliseconds(10);  // t3.5 (1.82 ms) long gone
   ASSERT_FALSE(d.start_calibration(late));
@@ -155,7 +155,7 @@ TEST(PolarisCalibration, AReadThatEndedBeforeThePulseGetsData) {
     if (!next || *next >= late + seconds(1)) break;
     d.on_time(*next);
   }
-  EXPECT_EQ(sent, (std::vector<Bytes>{kData}));
+  EXPECT_EQ(sent, (std::vector<Bytes>{kEmptyData}));
 }
 
 TEST(PolarisCalibration, MasterSendsNothingWhileCalibrating) {
@@ -177,6 +177,111 @@ TEST(PolarisCalibration, MasterSendsNothingWhileCalibrating) {
   EXPECT_EQ(got[1].end - got[1].start, testing::chars(r, 13));
   EXPECT_FALSE(r.on_the_wire());
   EXPECT_EQ(r.device().calibrations(), 1U);
+}
+
+// "If the green LED does not turn on, check that there are no obstacles in the detection
+// area" [Polaris manual §7.2]: with a beam interrupted the procedure does not start; the
+// command register's start is refused with exception 04 Server Device Failure (DECISION,
+// docs/decisions.md#polaris-calibration-obstacles), the outside start with kBeamsInterrupted.
+TEST(PolarisCalibrationObstacles, AStartWithBeamsInterruptedIsRefused) {
+  Rig r(cal_options());
+  interrupt_edges(r);
+  EXPECT_EQ(answers(r, kStartCal), (Answers{{0x01, 0x86, 0x04, 0x43, 0xA3}}));  // FC 6 | 0x80, 04
+  EXPECT_EQ(r.device().start_calibration(r.now()), ConfigError::kBeamsInterrupted);
+  EXPECT_EQ(r.device().calibration_end(), std::nullopt);
+  EXPECT_EQ(answers(r, kReadData), (Answers{kData}));  // measuring, not busy
+  EXPECT_EQ(r.device().counters().refused_writes, 1U);
+  // The area cleared: the same command starts it.
+  ASSERT_FALSE(r.device().set_interrupted({}, r.now()));
+  EXPECT_EQ(answers(r, kStartCal), (Answers{kStartCal}));
+  EXPECT_TRUE(r.device().calibrating(r.now()));
+}
+
+// An obstacle that enters while the beams are adjusted makes the calibration fail: it ends
+// at once, is not counted as completed, and data reads are answered again.
+TEST(PolarisCalibrationObstacles, AnObstacleDuringTheCalibrationMakesItFail) {
+  Rig r(cal_options());
+  const stream::TimePoint end = start_by_command(r);
+  r.run_to(end - seconds(1));
+  ASSERT_TRUE(r.device().calibrating(r.now()));
+  interrupt_edges(r);
+  EXPECT_FALSE(r.device().calibrating(r.now()));
+  EXPECT_EQ(r.device().calibration_end(), std::nullopt);
+  EXPECT_EQ(r.device().calibrations_failed(), 1U);
+  EXPECT_EQ(answers(r, kReadData), (Answers{kData}));
+  r.run_to(end + seconds(1));
+  EXPECT_EQ(r.device().calibrations(), 0U);
+}
+
+// "close the SW1 contact for at least 0.5 seconds and no more than 3 seconds" starts the
+// auto-calibration; "keeping the SW1 contact closed for more than 3 seconds" activates the
+// manual adjustment [Polaris manual §7.2]. Both sides of both bounds.
+TEST(PolarisSw1, HeldHalfASecondToThreeSecondsStartsTheCalibration) {
+  for (const auto held : {milliseconds(500), milliseconds(3000)}) {
+    Device d(cal_options());
+    const stream::TimePoint t0{};
+    d.on_time(t0);
+    ASSERT_FALSE(d.set_sw1(true, t0));
+    ASSERT_FALSE(d.set_sw1(false, t0 + held));
+    EXPECT_EQ(d.calibration_end(), t0 + held + seconds(16)) << held.count();
+    EXPECT_FALSE(d.manual_adjustment());
+  }
+}
+
+TEST(PolarisSw1, HeldLessThanHalfASecondDoesNothing) {
+  Device d(cal_options());
+  const stream::TimePoint t0{};
+  ASSERT_FALSE(d.set_sw1(true, t0));
+  ASSERT_FALSE(d.set_sw1(false, t0 + milliseconds(500) - nanoseconds(1)));
+  EXPECT_EQ(d.calibration_end(), std::nullopt);
+  EXPECT_FALSE(d.manual_adjustment());
+}
+
+TEST(PolarisSw1, HeldLongerThanThreeSecondsEntersManualAdjustment) {
+  Rig r(cal_options());
+  const stream::TimePoint t0 = r.now();
+  ASSERT_FALSE(r.device().set_sw1(true, t0));
+  ASSERT_FALSE(r.device().set_sw1(false, t0 + seconds(3) + nanoseconds(1)));
+  EXPECT_TRUE(r.device().manual_adjustment());
+  EXPECT_EQ(r.device().calibration_end(), std::nullopt);
+  // The status register (0x0109) reads 2: manual adjustment.
+  EXPECT_EQ(answers(r, {0x01, 0x03, 0x01, 0x09, 0x00, 0x01, 0x55, 0xF4}),
+            (Answers{{0x01, 0x03, 0x02, 0x00, 0x02, 0x39, 0x85}}));
+  // An auto-calibration (short press) leaves it.
+  ASSERT_FALSE(r.device().set_sw1(true, r.now()));
+  ASSERT_FALSE(r.device().set_sw1(false, r.now() + seconds(1)));
+  EXPECT_FALSE(r.device().manual_adjustment());
+}
+
+// "the manual adjustment can be activated by sending the ModBus command"
+// [Polaris manual §7.2]: the command register's 2 (EXTENSION), echoed.
+TEST(PolarisSw1, TheCommandRegistersTwoEntersManualAdjustment) {
+  Rig r(cal_options());
+  const Bytes manual{0x01, 0x06, 0x01, 0x08, 0x00, 0x02, 0x88, 0x35};
+  EXPECT_EQ(answers(r, manual), (Answers{manual}));
+  EXPECT_TRUE(r.device().manual_adjustment());
+  EXPECT_EQ(r.device().calibration_end(), std::nullopt);
+}
+
+// [Polaris manual §5.1]: TX yellow = powered; RX green free, red occupied.
+// [Polaris manual §7.2]: while calibrating the yellow LED "flashes quickly", the RX green LED
+// "turns on for 5 seconds and then flashes red/green until the auto-calibration is finished".
+TEST(PolarisLeds, FollowTheAreaAndTheCalibration) {
+  Rig r(cal_options());
+  const stream::TimePoint t0 = r.now();
+  EXPECT_EQ(r.device().leds(t0), (Leds{Led::kYellow, Led::kGreen}));
+  interrupt_edges(r);
+  EXPECT_EQ(r.device().leds(t0), (Leds{Led::kYellow, Led::kRed}));
+  ASSERT_FALSE(r.device().set_interrupted({}, t0));
+  ASSERT_FALSE(r.device().start_calibration(t0));
+  EXPECT_EQ(r.device().leds(t0), (Leds{Led::kYellowFlashing, Led::kGreen}));
+  EXPECT_EQ(r.device().leds(t0 + seconds(5) - nanoseconds(1)),
+            (Leds{Led::kYellowFlashing, Led::kGreen}));
+  EXPECT_EQ(r.device().leds(t0 + seconds(5)), (Leds{Led::kYellowFlashing, Led::kRedGreen}));
+  EXPECT_EQ(r.device().leds(t0 + seconds(16) - nanoseconds(1)),
+            (Leds{Led::kYellowFlashing, Led::kRedGreen}));
+  EXPECT_EQ(r.device().leds(t0 + seconds(16)), (Leds{Led::kYellow, Led::kGreen}));
+  EXPECT_EQ(to_token(Led::kRedGreen), "red-green");
 }
 
 }  // namespace

@@ -117,8 +117,11 @@ TEST(PolarisConfig, AddressesOutsideTheMapOrReadOnlyGetException02) {
   Rig r(config_options());
   interrupt_objects(r);
   const Bytes k02{0x01, 0x86, 0x02, 0xC3, 0xA1};  // FC 6 | 0x80, Illegal Data Address
-  EXPECT_EQ(answers(r, {0x01, 0x06, 0x01, 0x0C, 0x00, 0x01, 0x89, 0xF5}), (Answers{k02}));  // past
-  EXPECT_EQ(answers(r, {0x01, 0x06, 0x00, 0xFF, 0x00, 0x01, 0x78, 0x3A}), (Answers{k02}));  // before
+  // Just past and just before the block: no configuration register, so the write is the
+  // manual's "incorrect function code" -> 07 [Polaris manual §8.1.2] (PolarisWriteOutside).
+  const Bytes k07{0x01, 0x86, 0x07, 0x03, 0xA2};  // FC 6 | 0x80, Negative Acknowledgment
+  EXPECT_EQ(answers(r, {0x01, 0x06, 0x01, 0x0C, 0x00, 0x01, 0x89, 0xF5}), (Answers{k07}));  // past
+  EXPECT_EQ(answers(r, {0x01, 0x06, 0x00, 0xFF, 0x00, 0x01, 0x78, 0x3A}), (Answers{k07}));  // before
   EXPECT_EQ(answers(r, {0x01, 0x06, 0x01, 0x09, 0x00, 0x00, 0x58, 0x34}), (Answers{k02}));  // status
   // FC 16 from 0x010A (calibrations) for 3 registers: read-only and past the end.
   EXPECT_EQ(answers(r, {0x01, 0x10, 0x01, 0x0A, 0x00, 0x03, 0x06, 0x00, 0x00, 0x00, 0x00, 0x00,
@@ -127,7 +130,8 @@ TEST(PolarisConfig, AddressesOutsideTheMapOrReadOnlyGetException02) {
   // FC 3 of 0x010B (beams) and one past it.
   EXPECT_EQ(answers(r, {0x01, 0x03, 0x01, 0x0B, 0x00, 0x02, 0xB4, 0x35}),
             (Answers{{0x01, 0x83, 0x02, 0xC0, 0xF1}}));
-  EXPECT_EQ(r.device().counters().refused_writes, 4U);
+  EXPECT_EQ(r.device().counters().refused_writes, 2U);
+  EXPECT_EQ(r.device().counters().bad_function, 2U);
   EXPECT_EQ(r.device().counters().bad_start, 1U);
   EXPECT_EQ(r.device().counters().writes, 0U);
 }
@@ -159,6 +163,48 @@ TEST(PolarisConfig, ValuesOutsideTheirRangeGetException03AndChangeNothing) {
   EXPECT_EQ(r.device().counters().bad_request, 1U);
 }
 
+// "Implemented Functions: Read Holding Registers: Function Code 0x03, Read Input Registers:
+// Function Code 0x04 ... In case of CRC error or incorrect function code, the Exception code
+// in the response message will be 'Negative Acknowledgment' (0x07)" [Polaris manual §8.1.2].
+// A write that touches no configuration register (the data block at 0x2000, say) is such an
+// incorrect function: 07, nothing changed, counted as bad_function; with the NAK mode off
+// (standard Modbus) the register does not exist: 02.
+TEST(PolarisWriteOutside, FunctionSixAndSixteenOutsideTheBlockGetNegativeAcknowledge) {
+  Rig r(config_options());
+  interrupt_objects(r);
+  // FC 6, register 0x2000 (the data block's first word), value 0x00FF.
+  EXPECT_EQ(answers(r, {0x01, 0x06, 0x20, 0x00, 0x00, 0xFF, 0xC2, 0x4A}),
+            (Answers{{0x01, 0x86, 0x07, 0x03, 0xA2}}));
+  // FC 16 from 0x2000, 1 register, 2 bytes, value 0x0009.
+  EXPECT_EQ(answers(r, {0x01, 0x10, 0x20, 0x00, 0x00, 0x01, 0x02, 0x00, 0x09, 0x47, 0x94}),
+            (Answers{{0x01, 0x90, 0x07, 0x0D, 0xC2}}));
+  // FC 16 of 0x00FE..0x00FF: ends just before the block -> 07; of 0x00FF..0x0100: reaches
+  // into the block -> the block's refusal, 02 (0x00FF is no register of it).
+  EXPECT_EQ(answers(r, {0x01, 0x10, 0x00, 0xFE, 0x00, 0x02, 0x04, 0x00, 0x01, 0x00, 0xFF, 0x6C,
+                        0xE7}),
+            (Answers{{0x01, 0x90, 0x07, 0x0D, 0xC2}}));
+  EXPECT_EQ(answers(r, {0x01, 0x10, 0x00, 0xFF, 0x00, 0x02, 0x04, 0x00, 0x01, 0x00, 0x02, 0x6C,
+                        0xAA}),
+            (Answers{{0x01, 0x90, 0x02, 0xCD, 0xC1}}));
+  EXPECT_EQ(answers(r, kReadMode), (Answers{kModeFl1}));
+  EXPECT_EQ(answers(r, kReadFl1), (Answers{kFl1Data}));  // the data block unchanged
+  const Counters& c = r.device().counters();
+  EXPECT_EQ(c.bad_function, 3U);
+  EXPECT_EQ(c.refused_writes, 1U);
+  EXPECT_EQ(c.writes, 0U);
+}
+
+TEST(PolarisWriteOutside, StandardModbusAnswersIllegalDataAddress) {
+  Options o = config_options();
+  o.nak_on_error = false;
+  Rig r(o);
+  interrupt_objects(r);
+  // FC 6, register 0x2000, value 10: 02 Illegal Data Address.
+  EXPECT_EQ(answers(r, {0x01, 0x06, 0x20, 0x00, 0x00, 0x0A, 0x02, 0x0D}),
+            (Answers{{0x01, 0x86, 0x02, 0xC3, 0xA1}}));
+  EXPECT_EQ(r.device().counters().bad_function, 1U);
+}
+
 TEST(PolarisConfig, BroadcastWritesAreIgnored) {
   Rig r(config_options());
   interrupt_objects(r);
@@ -181,6 +227,8 @@ TEST(PolarisConfig, NakModeWrittenSwitchesTheBadFunctionAnswer) {
   interrupt_objects(r);
   const Bytes fc5{0x01, 0x05, 0x20, 0x00, 0x00, 0x01, 0x07, 0xCA};  // FC 5: not served
   EXPECT_EQ(answers(r, fc5), (Answers{{0x01, 0x85, 0x07, 0x03, 0x52}}));  // 07 (the manual)
+  // The area cleared: auto-calibration needs it free [Polaris manual §7.2].
+  ASSERT_FALSE(r.device().set_interrupted({}, r.now()));
   const Bytes standard{0x01, 0x10, 0x01, 0x00, 0x00, 0x09, 0x12,  // 9 registers from 0x0100
                        0x00, 0x02,                                // data mode FL4
                        0x10, 0x00,                                // start 0x1000

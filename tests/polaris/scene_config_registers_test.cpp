@@ -1,10 +1,12 @@
 // polaris::Scene (which physical beams are interrupted) and the configuration registers'
 // pure functions (EXTENSION, polaris/config_registers.h), without a device.
 #include "polaris/config_registers.h"
+#include "polaris/device.h"
 #include "polaris/scene.h"
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstdint>
 #include <vector>
 
@@ -25,14 +27,32 @@ TEST(PolarisScene, SetsAndListsAscending) {
   EXPECT_EQ(s.flags()[10], 0);
 }
 
+// The initial scene is in the options, as the GridScan's and the METRON's are; the barrier
+// sees it from its start (PN2's hole filter counts from there).
+TEST(PolarisScene, TheInitialSceneIsAnOption) {
+  Options o;  // PL 10-160
+  o.blocked = {3, 9};
+  o.detection = Detection::kHole;
+  o.pn2_filter = 2;
+  EXPECT_EQ(o.validate(), "");
+  Device d(o);
+  EXPECT_EQ(d.interrupted(), (Beams{3, 9}));
+  const stream::TimePoint t0 = stream::TimePoint{} + std::chrono::seconds(5);
+  d.on_time(t0);
+  EXPECT_FALSE(d.pn2(t0 + 2 * d.scan() - std::chrono::nanoseconds(1)));
+  EXPECT_TRUE(d.pn2(t0 + 2 * d.scan()));
+  o.blocked = {17};
+  EXPECT_EQ(o.validate(), "blocked beam 17 outside 1..16");
+}
+
 TEST(PolarisScene, RefusesBeamZeroAndBeyondAndKeepsTheOldScene) {
   Scene s(40);
   const Beams old{5};
   ASSERT_FALSE(s.set_interrupted(old));
   const Beams zero{3, 0};
   const Beams past{40, 41};
-  EXPECT_EQ(s.set_interrupted(zero), std::make_error_code(std::errc::invalid_argument));
-  EXPECT_EQ(s.set_interrupted(past), std::make_error_code(std::errc::invalid_argument));
+  EXPECT_EQ(s.set_interrupted(zero), SceneError::kNoSuchBeam);
+  EXPECT_EQ(s.set_interrupted(past), SceneError::kNoSuchBeam);
   EXPECT_EQ(s.interrupted(), old);
   const Beams edge{1, 40};
   EXPECT_FALSE(s.set_interrupted(edge));
@@ -59,7 +79,7 @@ TEST(PolarisConfigRegisters, EachRangeBothSides) {
                        Case{ConfigRegister::kDirection, 0, 1}, Case{ConfigRegister::kDetection, 0, 1},
                        Case{ConfigRegister::kPn2Filter, 1, 255}, Case{ConfigRegister::kScanTime, 5, 5000},
                        Case{ConfigRegister::kBitOrder, 0, 1}, Case{ConfigRegister::kNakMode, 0, 1},
-                       Case{ConfigRegister::kCommand, 0, 1}}) {
+                       Case{ConfigRegister::kCommand, 0, 2}}) {
     const auto at = static_cast<std::uint16_t>(c.reg);
     SCOPED_TRACE(at);
     ConfigWrite w;

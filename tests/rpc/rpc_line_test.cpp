@@ -792,5 +792,117 @@ TEST_F(RpcMetronTest, JsonOverHttpIsTheSameService) {
   EXPECT_EQ(other.message(), "no METRON at address 0 (this run's METRON answers to 5)");
 }
 
+// ==== timing from the user, SW1, LEDs, calibration with an obstacle (gRPC and JSON) ==========
+
+// One scan of the Polaris: the model table's second column, "PL 10-160 ... 0,6 1,0 16"
+// [Polaris manual §2.1] (the fixture's 16 beams), or any time; ranges refused by field.
+TEST_F(RpcPolarisTest, SetTimingPicksTheResponseColumnOrAnyTime) {
+  HttpFront h(io_, *server_);
+  EXPECT_EQ(state().scan_ns(), 600'000);  // first column: 0,6 ms
+  EXPECT_EQ(state().response_column(), 1U);
+  ASSERT_EQ(h.call("rs4sim.v1.Polaris/SetTiming", R"({"address": 1, "response_column": 2})").status,
+            200u);
+  EXPECT_EQ(state().scan_ns(), 1'000'000);  // second column: 1,0 ms
+  EXPECT_EQ(state().response_column(), 2U);
+  ASSERT_EQ(h.call("rs4sim.v1.Polaris/SetTiming", R"({"address": 1, "response_time_us": 750})")
+                .status,
+            200u);
+  EXPECT_EQ(state().scan_ns(), 750'000);
+  auto bad = error_of(
+      h.call("rs4sim.v1.Polaris/SetTiming", R"({"address": 1, "response_time_us": 1000001})"),
+      400, 3);
+  EXPECT_NE(bad.message().find("outside 0..1000000"), std::string::npos) << bad.message();
+  grpc::ClientContext ctx;
+  v1::PolarisTimingRequest req;
+  req.set_address(1);
+  req.set_response_column(3);
+  v1::Empty e;
+  EXPECT_EQ(bad_field(stub_->SetTiming(&ctx, req, &e)), "response_column");
+  EXPECT_EQ(state().scan_ns(), 750'000);  // nothing changed
+}
+
+// "Make sure that there is no material ... in the detection area" [Polaris manual §7.2]: a
+// calibration with a beam interrupted is refused; SW1 held 1 s starts it once the area is
+// free; the LEDs of [Polaris manual §5.1, §7.2] follow.
+TEST_F(RpcPolarisTest, CalibrationNeedsAFreeAreaAndSw1StartsIt) {
+  ASSERT_TRUE(block({3}).ok());
+  EXPECT_EQ(state().rx_led(), "red");
+  EXPECT_EQ(state().tx_led(), "yellow");
+  grpc::ClientContext ctx;
+  v1::LineDeviceRequest req;
+  req.set_address(1);
+  v1::Empty e;
+  const auto refused = stub_->Calibrate(&ctx, req, &e);
+  EXPECT_EQ(refused.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+  EXPECT_NE(refused.error_message().find("beams are interrupted"), std::string::npos)
+      << refused.error_message();
+  ASSERT_TRUE(block({}).ok());
+  const auto sw1 = [this](bool closed) {
+    grpc::ClientContext c;
+    v1::PolarisSw1Request r;
+    r.set_address(1);
+    r.set_closed(closed);
+    v1::Empty none;
+    return stub_->SetSw1(&c, r, &none);
+  };
+  ASSERT_TRUE(sw1(true).ok());
+  (void)exchange(tap_, {}, 1s);
+  ASSERT_TRUE(sw1(false).ok());
+  const auto s = state();
+  EXPECT_TRUE(s.calibrating());
+  EXPECT_EQ(s.tx_led(), "yellow-flashing");
+  EXPECT_EQ(s.rx_led(), "green");  // the first 5 s
+  EXPECT_FALSE(s.manual_adjustment());
+  EXPECT_EQ(s.storage(), "none");
+  EXPECT_EQ(s.storage_mode(), "temporary");
+}
+
+// t_CYCLE from the user, held to [GridScan manual §11]'s band (22 elements: 18..40 ms), for
+// the next power-up.
+TEST_F(RpcGridScanTest, SetTimingHoldsTheCycleToTheManualsBand) {
+  HttpFront h(io_, *server_);
+  EXPECT_EQ(state().cycle_ns(), 30'000'000);  // typical, 22 elements
+  auto bad = error_of(h.call("rs4sim.v1.GridScan/SetTiming", R"({"address": 0, "cycle_ms": 41})"),
+                      400, 3);
+  EXPECT_EQ(bad.message(),
+            "cycle_ms: t_CYCLE 41 ms outside 18..40 ms for 22 elements [GridScan manual §11]");
+  grpc::ClientContext ctx;
+  v1::GridScanTimingRequest req;
+  req.set_cycle_ms(17);
+  v1::Empty e;
+  EXPECT_EQ(bad_field(stub_->SetTiming(&ctx, req, &e)), "cycle_ms");
+  ASSERT_EQ(h.call("rs4sim.v1.GridScan/SetTiming", R"({"address": 0, "cycle_ms": 40})").status,
+            200u);
+  EXPECT_EQ(state().cycle_ns(), 30'000'000);  // the running power-up keeps its cycle
+  EXPECT_EQ(state().next_cycle_ns(), 40'000'000);
+  power_up();
+  EXPECT_EQ(state().cycle_ns(), 40'000'000);
+}
+
+// The scan cycle and Equation 3's t_response [METRON manual "Slave line mode"] from the user.
+TEST_F(RpcMetronTest, SetTimingChangesEquation3sTResponse) {
+  HttpFront h(io_, *server_);
+  EXPECT_EQ(state().t_response_ms(), 20U);
+  EXPECT_EQ(state().scan_cycle_ms(), 10U);
+  ASSERT_EQ(h.call("rs4sim.v1.Metron/SetTiming",
+                   R"({"address": 5, "scan_cycle_ms": 15, "t_response_ms": 40})")
+                .status,
+            200u);
+  EXPECT_EQ(state().t_response_ms(), 40U);
+  EXPECT_EQ(state().scan_cycle_ms(), 15U);
+  grpc::ClientContext ctx;
+  v1::MetronTimingRequest req;
+  req.set_address(5);
+  req.set_scan_cycle_ms(10);
+  req.set_t_response_ms(2001);
+  v1::Empty e;
+  EXPECT_EQ(bad_field(stub_->SetTiming(&ctx, req, &e)), "t_response_ms");
+  auto bad = error_of(h.call("rs4sim.v1.Metron/SetTiming",
+                             R"({"address": 5, "scan_cycle_ms": 0, "t_response_ms": 20})"),
+                      400, 3);
+  EXPECT_EQ(bad.message(), "scan_cycle_ms: 0 ms outside 1..1000");
+  EXPECT_EQ(state().t_response_ms(), 40U);
+}
+
 }  // namespace
 }  // namespace rs4sim::rpc
