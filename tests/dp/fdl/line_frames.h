@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <map>
 #include <span>
 #include <system_error>
 #include <vector>
@@ -40,7 +39,6 @@ class LineFrames final : public DecoderSink {
     const auto on_line = add(frame.size(), e);
     if (!std::equal(frame.begin(), frame.end(), on_line.begin(), on_line.end())) ++mismatches;
   }
-  void on_decode_error(std::error_code e) override { ++errors[e.value()]; }
 
   // Frames by start delimiter (0x10 SD1, 0x68 SD2, 0xA2 SD3, 0xDC token, 0xE5 SC).
   [[nodiscard]] std::size_t count(std::uint8_t sd) const {
@@ -51,7 +49,6 @@ class LineFrames final : public DecoderSink {
   [[nodiscard]] const DecoderStats& stats() const { return decoder_.stats(); }
 
   std::vector<LineFrame> frames;
-  std::map<int, std::size_t> errors;  // by DecodeError value
   std::size_t mismatches = 0;
 
  private:
