@@ -33,6 +33,20 @@ std::string hex16(std::uint16_t v) {
 
 }  // namespace
 
+bool defines_no_user_prm(const gsd::Device& device) {
+  if (device.user_prm.length != 0 || !device.params.empty()) return false;
+  for (const auto& m : device.modules) {
+    if (m.prm.length != 0 || m.f_prm) return false;
+  }
+  return true;
+}
+
+std::string unchecked_user_prm_fault(const gsd::Device& device, std::size_t length) {
+  if (!device.max_user_prm_data_len || length <= *device.max_user_prm_data_len) return {};
+  return "User_Prm_Data is " + std::to_string(length) + " bytes, the GSD allows " +
+         std::to_string(*device.max_user_prm_data_len) + " (Max_User_Prm_Data_Len)";
+}
+
 GsdStationSpec load_gsd_station(const std::string& path, const std::vector<std::string>& modules,
                                 int address, std::vector<std::string>* warnings) {
   if (address < 0 || address > dp::pdu::sap::kMaxSlaveAddress) {
@@ -127,13 +141,14 @@ dp::slave::PrmVerdict GsdApplication::check_parameters(const dp::pdu::SetPrm& pr
     user_prm_.assign(s.begin(), s.end());
   }
   user_prm_.insert(user_prm_.end(), prm.user_data.begin(), prm.user_data.end());
-  auto ok = gsd::check_user_prm(*spec_.device, spec_.setup, user_prm_);
-  if (!ok) {
-    prm_fault_ = ok.error().message;
-    return dp::slave::PrmVerdict::kPrmFault;  // Prm_Fault in Station_Status_1
+  if (defines_no_user_prm(*spec_.device)) {
+    prm_fault_ = unchecked_user_prm_fault(*spec_.device, user_prm_.size());
+  } else {
+    auto ok = gsd::check_user_prm(*spec_.device, spec_.setup, user_prm_);
+    prm_fault_ = ok ? std::string() : ok.error().message;
   }
-  prm_fault_.clear();
-  return dp::slave::PrmVerdict::kAccept;
+  // Prm_Fault in Station_Status_1 when refused.
+  return prm_fault_.empty() ? dp::slave::PrmVerdict::kAccept : dp::slave::PrmVerdict::kPrmFault;
 }
 
 void GsdApplication::read_inputs(std::span<std::uint8_t> inputs, dp::TimePoint) {

@@ -7,7 +7,8 @@
 //   * Chk_Cfg = the chosen modules' Cfg bytes in slot order (anything else → Cfg_Fault,
 //     [IEC 61158-6-3 Chk_Cfg/Get_Cfg]; with DPV1 Check_Cfg_Mode the same I/O lengths suffice);
 //   * User_Prm_Data as gsd::configure lays it out: another length, or a parameter outside its
-//     GSD range or list → Prm_Fault in the diagnosis (gsd::check_user_prm);
+//     GSD range or list → Prm_Fault in the diagnosis (gsd::check_user_prm); a GSD that
+//     defines no User_Prm_Data takes any (defines_no_user_prm);
 //   * DPV1_Slave, C1/C2_Read_Write_supp and their Max_Data_Len, Fail_Safe, WD_Base_1ms_supp,
 //     Sync/Freeze/Set_Slave_Add support, Max_Diag_Data_Len;
 //   * the I/O lengths of the modules: the inputs are what the harness set (per module, zero at
@@ -58,6 +59,16 @@ GsdStationSpec load_gsd_station(const std::string& path, const std::vector<std::
 void check_gsd_baud(const GsdStationSpec& spec, const std::string& baud);
 // MaxTsdr of the GSD at `baud` (Tbit), or nullopt when the file does not say.
 std::optional<std::uint16_t> gsd_max_tsdr(const GsdStationSpec& spec, const std::string& baud);
+
+// Whether the GSD defines no User_Prm_Data at all: no User_Prm_Data_Len, User_Prm_Data or
+// Ext_User_Prm_Data_* globally, none in any module, no F-parameters (a file cut down to its
+// modules, as users' files sometimes are). Such a station has nothing to check the bytes
+// against: it takes whatever User_Prm_Data the master sends and keeps it, as the device the
+// file was cut from did (docs/decisions.md#gsd-undefined-user-prm). The one bound it checks is
+// Max_User_Prm_Data_Len when the file gives it: unchecked_user_prm_fault says why a length is
+// refused (empty: accepted).
+bool defines_no_user_prm(const gsd::Device& device);
+std::string unchecked_user_prm_fault(const gsd::Device& device, std::size_t length);
 
 // Our class 1 master's entry for the station, from the same GSD: Set_Prm (Lock_Req, WD_On, the
 // GSD's ident and User_Prm_Data), Chk_Cfg, image lengths, C1 timeout.

@@ -166,6 +166,14 @@ std::size_t Decoder::skip_garbage(Bytes v, DecoderSink& sink) {
   return drop;
 }
 
+// A frame with confirmed framing whose content is refused: the sink sees its bytes, then the
+// error; the whole frame is dropped.
+[[gnu::cold, gnu::noinline]] std::size_t Decoder::refuse(DecodeError e, Bytes frame,
+                                                         DecoderSink& sink) {
+  sink.on_refused_frame(frame, e);
+  return reject(e, frame.size(), sink);
+}
+
 std::size_t Decoder::parse_token(Bytes v, DecoderSink& sink) {
   if (v.size() < 3) return 0;
   if (((v[1] | v[2]) & kExtensionBit) != 0) return reject(DecodeError::kBadTokenAddress, 1, sink);
@@ -212,18 +220,18 @@ std::size_t Decoder::parse_fixed(Bytes v, std::size_t frame_len, DecoderSink& si
   const std::uint8_t sa = frame[header_len + 1];
   const std::uint8_t fc = frame[header_len + 2];
   Bytes du = frame.subspan(header_len + 3, frame.size() - header_len - 5);
-  if (!valid_frame_control(fc)) return reject(DecodeError::kBadFrameControl, frame.size(), sink);
+  if (!valid_frame_control(fc)) return refuse(DecodeError::kBadFrameControl, frame, sink);
   const bool has_dsap = (da & kExtensionBit) != 0;
   const bool has_ssap = (sa & kExtensionBit) != 0;
   const std::size_t ext = (has_dsap ? 1U : 0U) + (has_ssap ? 1U : 0U);
-  if (du.size() < ext) return reject(DecodeError::kBadAddressExtension, frame.size(), sink);
+  if (du.size() < ext) return refuse(DecodeError::kBadAddressExtension, frame, sink);
   if (has_dsap && !valid_sap_byte(du[0])) {
-    return reject(DecodeError::kBadAddressExtension, frame.size(), sink);
+    return refuse(DecodeError::kBadAddressExtension, frame, sink);
   }
   if (has_ssap && !valid_sap_byte(du[ext - 1])) {
-    return reject(DecodeError::kBadAddressExtension, frame.size(), sink);
+    return refuse(DecodeError::kBadAddressExtension, frame, sink);
   }
-  if (has_dsap != has_ssap) return reject(DecodeError::kSapWithoutPartner, frame.size(), sink);
+  if (has_dsap != has_ssap) return refuse(DecodeError::kSapWithoutPartner, frame, sink);
   in_garbage_ = false;
   out_.type = frame[0] == kSd1   ? FrameType::kSd1
               : frame[0] == kSd2 ? FrameType::kSd2

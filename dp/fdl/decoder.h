@@ -22,13 +22,21 @@
 
 namespace rs4sim::dp::fdl {
 
-// Receives the decoder's output. Both calls happen inside Decoder::feed()/idle(); the
-// telegram reference is only valid during the call.
+// Receives the decoder's output. The calls happen inside Decoder::feed()/idle(); the
+// telegram reference and the frame bytes are only valid during the call.
 class DecoderSink {
  public:
   virtual ~DecoderSink() = default;
   virtual void on_telegram(const Telegram& t) = 0;
   virtual void on_decode_error(std::error_code /*e*/) {}
+  // A frame whose framing is right (start delimiter, length, FCS and end delimiter
+  // [IEC 61158-4-3 frame formats, FCS]) but whose content a DP receiver refuses: a reserved
+  // FC code (kBadFrameControl), an address extension DP does not use, such as a segment
+  // address (kBadAddressExtension), or a DSAP without an SSAP (kSapWithoutPartner)
+  // [IEC 61158-4-3 frame control, addresses, SAPs]. `frame` is the whole frame, SD to ED.
+  // Called just before on_decode_error(e) for the same frame. A station has no use for it;
+  // a sniffer that shows everything on the line keeps the frame.
+  virtual void on_refused_frame(std::span<const std::uint8_t> /*frame*/, std::error_code /*e*/) {}
 };
 
 struct DecoderStats {
@@ -78,6 +86,7 @@ class Decoder {
   std::size_t parse_token(Bytes v, DecoderSink& sink);
   std::size_t skip_garbage(Bytes v, DecoderSink& sink);
   std::size_t reject(DecodeError e, std::size_t drop, DecoderSink& sink);
+  std::size_t refuse(DecodeError e, Bytes frame, DecoderSink& sink);
   std::size_t deliver(Bytes frame, std::size_t header_len, DecoderSink& sink);
   std::size_t run(Bytes v, DecoderSink& sink);  // steps until 0; returns bytes consumed
 

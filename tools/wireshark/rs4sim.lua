@@ -28,7 +28,7 @@ local SAP = { [49] = "MSAC_C2 Initiate", [50] = "Alarm_Ack", [51] = "MSAC_C1", [
               [54] = "Master-Master", [55] = "Set_Slave_Add", [56] = "Rd_Inp", [57] = "Rd_Outp",
               [58] = "Global_Control", [59] = "Get_Cfg", [60] = "Slave_Diag", [61] = "Set_Prm",
               [62] = "Chk_Cfg" }
-local DPV1_FN = { [0x51] = "Data_Transport", [0x57] = "Initiate", [0x58] = "Abort",
+local DPV1_FN = { [0x48] = "Idle", [0x51] = "Data_Transport", [0x57] = "Initiate", [0x58] = "Abort",
                   [0x5C] = "Alarm_Ack", [0x5E] = "Read", [0x5F] = "Write" }
 local FLOW_STATE = { [1] = "no communication path", [2] = "PC adapter attached",
                      [3] = "proxy executing", [4] = "normal operation", [5] = "no connection" }
@@ -55,6 +55,8 @@ local f = {
   fn = ProtoField.string("rs4sim.fdl.function", "Function"),
   dsap = ProtoField.uint8("rs4sim.fdl.dsap", "DSAP", base.DEC, SAP),
   ssap = ProtoField.uint8("rs4sim.fdl.ssap", "SSAP", base.DEC),
+  dsegment = ProtoField.uint8("rs4sim.fdl.dsegment", "Destination segment", base.DEC),
+  ssegment = ProtoField.uint8("rs4sim.fdl.ssegment", "Source segment", base.DEC),
   fcs = ProtoField.uint8("rs4sim.fdl.fcs", "FCS", base.HEX),
   fcs_ok = ProtoField.bool("rs4sim.fdl.fcs_ok", "FCS correct"),
   du = ProtoField.bytes("rs4sim.fdl.du", "Data unit"),
@@ -172,6 +174,24 @@ local function dp_service(buf, tree, request, dsap, ssap, pinfo, key)
   return name(SAP, sap, "SAP " .. sap)
 end
 
+-- Address extension bytes after DA or SA with bit 7 [IEC 61158-4-3 addresses, SAPs]: bit 7 another
+-- byte follows, bit 6 a segment address (else a SAP), bits 5..0 the number. DP sends one SAP
+-- byte each. Returns the SAP, the segment and the position after the bytes.
+local function extension(tvb, pos, body_end, root, sap_field, segment_field)
+  local sap, segment
+  while pos < body_end do
+    local b = tvb(pos, 1):uint()
+    if bit.band(b, 0x40) ~= 0 then
+      segment = bit.band(b, 0x3F); root:add(segment_field, tvb(pos, 1), segment)
+    else
+      sap = bit.band(b, 0x3F); root:add(sap_field, tvb(pos, 1), sap)
+    end
+    pos = pos + 1
+    if bit.band(b, 0x80) == 0 then break end
+  end
+  return sap, segment, pos
+end
+
 function p.dissector(tvb, pinfo, tree)
   local n = tvb:len()
   if n < 1 then return 0 end
@@ -210,18 +230,21 @@ function p.dissector(tvb, pinfo, tree)
   root:add(f.fcs, tvb(body_end, 1))
   root:add(f.fcs_ok, tvb(body_end, 1), sum == tvb(body_end, 1):uint())
   local pos = h + 3
-  local dsap, ssap
-  if bit.band(da, 0x80) ~= 0 and pos < body_end then
-    dsap = tvb(pos, 1):uint(); root:add(f.dsap, tvb(pos, 1)); pos = pos + 1
+  local dsap, ssap, dseg, sseg
+  if bit.band(da, 0x80) ~= 0 then
+    dsap, dseg, pos = extension(tvb, pos, body_end, root, f.dsap, f.dsegment)
   end
-  if bit.band(sa, 0x80) ~= 0 and pos < body_end then
-    ssap = tvb(pos, 1):uint(); root:add(f.ssap, tvb(pos, 1)); pos = pos + 1
+  if bit.band(sa, 0x80) ~= 0 then
+    ssap, sseg, pos = extension(tvb, pos, body_end, root, f.ssap, f.ssegment)
   end
   local info = string.format("%d → %d %s", bit.band(sa, 0x7F), bit.band(da, 0x7F), fname)
   local du_len = body_end - pos
   if du_len > 0 then root:add(f.du, tvb(pos, du_len)) end
   local carries_service = dsap ~= nil or ssap ~= nil or du_len > 0
-  if carries_service then
+  if dseg ~= nil or sseg ~= nil then
+    root:add(f.service, "segment address (not DP)")
+    info = info .. "  segment address (not DP)"
+  elseif carries_service then
     local du = du_len > 0 and tvb(pos, du_len):tvb() or ByteArray.new(""):tvb("empty")
     local key = string.format("%d>%d", bit.band(sa, 0x7F), bit.band(da, 0x7F))
     local svc = dp_service(du, root, request, dsap, ssap, pinfo, key)

@@ -3,7 +3,9 @@
 
 #include "dp/fdl/decoder.h"
 
+#include <span>
 #include <system_error>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -15,6 +17,9 @@ class CollectSink final : public DecoderSink {
  public:
   void on_telegram(const Telegram& t) override { events.emplace_back(t); }
   void on_decode_error(std::error_code e) override { events.emplace_back(e); }
+  void on_refused_frame(std::span<const std::uint8_t> frame, std::error_code e) override {
+    refused.emplace_back(std::vector<std::uint8_t>(frame.begin(), frame.end()), e);
+  }
 
   [[nodiscard]] std::vector<Telegram> telegrams() const {
     std::vector<Telegram> out;
@@ -31,6 +36,8 @@ class CollectSink final : public DecoderSink {
     return out;
   }
   std::vector<Event> events;
+  // on_refused_frame: the frame's bytes and the error that follows it.
+  std::vector<std::pair<std::vector<std::uint8_t>, std::error_code>> refused;
 };
 
 using Bytes = std::vector<std::uint8_t>;

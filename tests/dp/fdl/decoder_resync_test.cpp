@@ -29,6 +29,14 @@ Outcome run(const Bytes& stream) {
   return o;
 }
 
+void feed(Decoder& d, CollectSink& sink, const Bytes& stream, bool byte_by_byte) {
+  if (byte_by_byte) {
+    for (const std::uint8_t b : stream) d.feed(std::span<const std::uint8_t>(&b, 1), sink);
+  } else {
+    d.feed(stream, sink);
+  }
+}
+
 // `bad` followed by both good frames: first error is `e`, both good frames arrive in order.
 void expect_resync(const Bytes& bad, DecodeError e) {
   for (const bool byte_by_byte : {false, true}) {
@@ -36,11 +44,7 @@ void expect_resync(const Bytes& bad, DecodeError e) {
     const Bytes stream = concat({bad, kDiagReq, kDx});
     Decoder d;
     CollectSink sink;
-    if (byte_by_byte) {
-      for (const std::uint8_t b : stream) d.feed(std::span<const std::uint8_t>(&b, 1), sink);
-    } else {
-      d.feed(stream, sink);
-    }
+    feed(d, sink, stream, byte_by_byte);
     ASSERT_FALSE(sink.errors().empty());
     EXPECT_EQ(sink.errors().front(), e) << sink.errors().front().message();
     EXPECT_GE(d.stats().count(e), 1U);
@@ -126,6 +130,35 @@ TEST(FdlDecoderResync, UnsupportedOrMissingAddressExtension) {
                 DecodeError::kBadAddressExtension);
   // SD1 cannot carry extension bytes: DA 85. FCS D0.
   expect_resync({0x10, 0x85, 0x02, 0x49, 0xD0, 0x16}, DecodeError::kBadAddressExtension);
+}
+
+// A frame whose framing is right but whose content DP refuses is offered whole to
+// on_refused_frame (a sniffer keeps it), then its error follows; a frame with a wrong FCS is
+// no frame and is not offered.
+TEST(FdlDecoderResync, RefusedFrameIsOfferedWhole) {
+  // Station 3 in segment 0x20 answers station 2 in segment 0x22: DA 02|80, SA 03|80, FC 08
+  // (DL), DAE 62 and SAE 60 (bit 6 set: a segment address; bit 7 clear: no further byte
+  // [IEC 61158-4-3 addresses, SAPs]), data 01 02. LE 7, FCS D2.
+  const Bytes segment = {0x68, 0x07, 0x07, 0x68, 0x82, 0x83, 0x08,
+                         0x62, 0x60, 0x01, 0x02, 0xD2, 0x16};
+  const Bytes bad_fc = {0x10, 0x05, 0x02, 0x41, 0x48, 0x16};  // request function 1, FCS 48
+  const Bytes bad_fcs = {0x68, 0x04, 0x04, 0x68, 0x05, 0x02, 0x7D, 0xA5, 0x2A, 0x16};  // 29
+  for (const bool byte_by_byte : {false, true}) {
+    SCOPED_TRACE(byte_by_byte ? "byte by byte" : "one chunk");
+    Decoder d;
+    CollectSink sink;
+    feed(d, sink, concat({segment, kDx, bad_fc, bad_fcs, kDiagReq}), byte_by_byte);
+    ASSERT_EQ(sink.refused.size(), 2U);
+    EXPECT_EQ(sink.refused[0].first, segment);
+    EXPECT_EQ(sink.refused[0].second, DecodeError::kBadAddressExtension);
+    EXPECT_EQ(sink.refused[1].first, bad_fc);
+    EXPECT_EQ(sink.refused[1].second, DecodeError::kBadFrameControl);
+    EXPECT_EQ(sink.errors(),
+              (std::vector<std::error_code>{DecodeError::kBadAddressExtension,
+                                            DecodeError::kBadFrameControl, DecodeError::kBadFcs}));
+    EXPECT_EQ(sink.telegrams().size(), 2U);
+    EXPECT_EQ(d.stats().discarded_bytes, segment.size() + bad_fc.size() + bad_fcs.size());
+  }
 }
 
 TEST(FdlDecoderResync, ReservedFrameControl) {
