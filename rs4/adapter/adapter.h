@@ -313,7 +313,7 @@ class Adapter final : public dp::slave::SlaveApplication {
                                    TimePoint now);
   void execute(std::span<const std::uint8_t> command, dp::slave::AcyclicChannel which, Channel& ch,
                TimePoint now);
-  void execute_adapter_command(std::span<const std::uint8_t> command, Channel& ch, TimePoint now);
+  void execute_adapter_command(const protocol::WriteCommand& cmd, Channel& ch, TimePoint now);
   [[nodiscard]] std::vector<std::uint8_t> execute_rs4_command(std::span<const std::uint8_t> command,
                                                               TimePoint now);
   [[nodiscard]] bool ready_for_write(dp::slave::AcyclicChannel which) const noexcept;

@@ -163,28 +163,45 @@ dp::slave::AcyclicResult Adapter::on_read(const dp::slave::AcyclicRequest& req, 
   return AcyclicResult::ok(block);
 }
 
-// A complete command. DECISION ([RS4 manual §5.2]: class 2 may not use adapter commands): on C2
-// every command goes to the RS4 unchecked, so an adapter code from class 2 is answered by the RS4
-// as an unknown command (error telegram 0x53), as for any other unknown first byte.
+// Whether a class 2 master may use a command: every RS4 command, and of the adapter's commands
+// the queries (0x84, 0x90, 0x91), which control nothing. [RS4 manual §5.2.1]: class 2 may use
+// "alle RS4-Kommandos …, nicht aber die speziellen Kommandos für den PROFIsafe-Adapter zur
+// Steuerung der automatischen Konfiguration" [docs/decisions.md#rs4-class2-adapter-commands].
+namespace {
+bool class2_may_use(const protocol::WriteCommand& cmd) noexcept {
+  return std::holds_alternative<protocol::Rs4Command>(cmd) ||
+         std::holds_alternative<protocol::GetVersionCommand>(cmd) ||
+         std::holds_alternative<protocol::GetLastErrorCommand>(cmd) ||
+         std::holds_alternative<protocol::GetErrorMemoryCommand>(cmd) ||
+         std::holds_alternative<protocol::RejectedCommand>(cmd);
+}
+}  // namespace
+
+// A complete command. [RS4 manual §5.2.2] "Bei jedem empfangenen Klasse 1- oder Klasse
+// 2-Telegramm wird anhand des ersten Bytes ermittelt, ob es für den PROFIsafe-Adapter bestimmt
+// ist oder für den RS4": on both channels an adapter code is the adapter's, never forwarded to
+// the RS4. DECISION: a class 2 master's controlling adapter command (0x92, 0x94, 0x98, 0x99) is
+// refused with 93 01 code (table 5.2-3, "falscher Parameter") and has no effect
+// [docs/decisions.md#rs4-class2-adapter-commands].
 void Adapter::execute(std::span<const std::uint8_t> command, AcyclicChannel which, Channel& ch,
                       TimePoint now) {
   abort_on_user_command(command, which, now);
-  if (which == AcyclicChannel::kC2) {
-    ++counters_.rs4_commands;
-    submit_rs4_command(command, ch, now);
-    return;
-  }
-  execute_adapter_command(command, ch, now);
-}
-
-void Adapter::execute_adapter_command(std::span<const std::uint8_t> command, Channel& ch,
-                                      TimePoint now) {
   const auto parsed = protocol::parse_write_command(command);
   if (!parsed) {
     adapter_error(protocol::AdapterError::kTelegramNotProcessed, now);
     return;
   }
-  const auto& cmd = parsed.value();
+  if (which == AcyclicChannel::kC2 && !class2_may_use(parsed.value())) {
+    execute_adapter_command(
+        protocol::RejectedCommand{protocol::CommandErrorKind::kWrongParameter, command[0]}, ch,
+        now);
+    return;
+  }
+  execute_adapter_command(parsed.value(), ch, now);
+}
+
+void Adapter::execute_adapter_command(const protocol::WriteCommand& cmd, Channel& ch,
+                                      TimePoint now) {
   if (const auto* rs4 = std::get_if<protocol::Rs4Command>(&cmd)) {
     ++counters_.rs4_commands;
     submit_rs4_command(rs4->bytes, ch, now);

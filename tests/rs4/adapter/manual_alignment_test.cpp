@@ -84,6 +84,38 @@ TEST_F(Aligned, PersistingWarningGetsNoGoingAlarm) {
   EXPECT_EQ(rig.alarms_of(1, 2), 1u);
 }
 
+// [RS4 manual §5.2.2] "Bei jedem empfangenen Klasse 1- oder Klasse 2-Telegramm wird anhand des
+// ersten Bytes ermittelt, ob es für den PROFIsafe-Adapter bestimmt ist oder für den RS4": a class 2
+// master's 0x90 and 0x84 are the adapter's, answered as the manual's tables give them, and never
+// reach the RS4 (which would take them for unknown commands and leave protection). The commands
+// that steer the adapter are refused 93 01 code [docs/decisions.md#rs4-class2-adapter-commands].
+TEST_F(Aligned, Class2AdapterCommandsAreTheAdaptersNotTheRs4s) {
+  using dp::slave::AcyclicChannel;
+  rig.write(Rig::block({0x90}), 2, AcyclicChannel::kC2, true);
+  const auto version = rig.read_answer(240, AcyclicChannel::kC2);
+  ASSERT_EQ(version.size(), 10u);  // table 5.2-6: 90, PROFIsafe 1.0, DP 1.0, 0x11 0x0D, 3 bytes
+  EXPECT_EQ(Bytes(version.begin(), version.begin() + 7),
+            (Bytes{0x90, 0x01, 0x00, 0x01, 0x00, 0x11, 0x0D}));
+  rig.write(Rig::block({0x84}), 2, AcyclicChannel::kC2);
+  const auto last = rig.read_answer(240, AcyclicChannel::kC2);
+  ASSERT_EQ(last.size(), 9u);  // table 5.2-7: 84, μC2 error, count, μC1 error, count
+  EXPECT_EQ(last[0], 0x84);
+  rig.write(Rig::block({0x94}), 2, AcyclicChannel::kC2);  // PROFI_CMD_RESET: steers the adapter
+  EXPECT_EQ(rig.read_answer(240, AcyclicChannel::kC2), (Bytes{0x93, 0x01, 0x94}));
+  EXPECT_EQ(rig.adapter.counters().resets, 0u);
+  EXPECT_FALSE(rig.adapter.wants_link_down_until());
+  rig.write(Rig::block({0x92, 0x01, 0x01}), 2, AcyclicChannel::kC2);  // forwarding: C1's
+  EXPECT_EQ(rig.read_answer(240, AcyclicChannel::kC2), (Bytes{0x93, 0x01, 0x92}));
+  rig.write(Rig::block({0x90, 0x00}), 2, AcyclicChannel::kC2);  // table 5.2-3: wrong length
+  EXPECT_EQ(rig.read_answer(240, AcyclicChannel::kC2), (Bytes{0x93, 0x00, 0x90}));
+  EXPECT_EQ(rig.adapter.counters().rs4_commands, 0u) << "nothing reached the RS4";
+  EXPECT_EQ(rig.adapter.scanner().status().state, scanner::ScannerState::kMeasuring);
+  EXPECT_EQ(rig.adapter.error_memory().last_error().uc2_error, 0);
+  rig.run(100ms);
+  EXPECT_TRUE(rig.ossd()) << "the machine keeps running";
+  EXPECT_EQ(rig.alarms_of(1, 1), 0u) << "no diagnosis alarm";
+}
+
 // [RS4 manual §5.2.2]: a telegram the RS4 does not know is answered with 0x53 (error 0x0501,
 // parameter = the command byte) "(RS4 geht in Fehlerzustand)": OSSD off, the error in the μC2
 // ring and a diagnosis alarm, once; a restart pulse acknowledges it (no lasting cause)
