@@ -66,7 +66,12 @@ std::error_code Adapter::proxy_sync_failed(TimePoint now, std::uint16_t error) {
 // Proxy-Request set again (reason retry; seen by the master in its next data exchange).
 void Adapter::fail_sync(std::uint16_t error, TimePoint now) {
   proxy_.stop(scanner_, now);
-  if (error != 0) report_error(error, error, now);
+  if (error != 0) {
+    // A table 5.3-3 proxy error (0x2B0x) is an error of the adapter: input bit 5 until its going
+    // alarm, as every one-shot adapter error [docs/decisions.md#rs4-error-bit].
+    adapter_error_active_ = true;
+    report_error(error, error, now);
+  }
   scanner_.reset_to_factory_default(now);
   request_sync(protocol::SyncReason::kRetry);
   gate_.set_in_doubt();  // OSSD unaffected unless the sync fails (Proxy-Enable 1: withdrawn)

@@ -70,6 +70,44 @@ TEST_F(Aligned, ErrorBitNeverShowsWithOssd1) {
   watch("one-shot 0x2A0B", [&] { rig.write({0x00, 0x05, 0x00, 0x01, 0x90}); }, [] {});
 }
 
+// [RS4 manual §5.1.1] bit 5 "Es ist ein Fehler im RS4 oder im PROFIsafe-Adapter aufgetreten": a
+// proxy error of table 5.3-3 (0x2B09, reported with a failed PROFI_CMD_PROXY_END) is an error of
+// the adapter: bit 5 from the report until its going alarm, 500 ms later [docs/decisions.md#rs4-error-bit].
+TEST_F(Aligned, ProxyErrorSetsTheErrorBitUntilItsGoingAlarm) {
+  rig.write(Rig::block({0x98}));
+  ASSERT_EQ(rig.read_answer().at(0), 0x98);
+  ASSERT_EQ(rig.adapter.proxy_phase(), ProxyPhase::kSyncRunning);
+  const auto at = rig.now;
+  rig.write(Rig::block({0x99, 0x01, 0x2B, 0x09}));  // failed: error in the CRC comparison
+  EXPECT_EQ(rig.read_answer(), (Bytes{0x99, 0x01, 0x01}));
+  EXPECT_EQ(rig.adapter.error_memory().last_error().uc1_error, 0x2B09);
+  EXPECT_EQ(rig.alarms_of(1, 1), 1u);
+  rig.advance(499ms);
+  EXPECT_EQ(rig.adapter.input_byte() & (kInputError | kInputOssd), kInputError) << "499 ms";
+  rig.advance(1ms);
+  EXPECT_EQ(rig.now - at, 500ms);
+  EXPECT_EQ(rig.alarms_of(1, 2), 1u) << "going at 500 ms";
+  EXPECT_FALSE(rig.adapter.input_byte() & kInputError) << "500 ms";
+}
+
+// DECISION [docs/decisions.md#rs4-error-bit]: an RS4 command the RS4 refuses (here 0x10 with a
+// wrong password, 0x53 0503) is entered in the error memory with a diagnosis alarm
+// ([RS4 manual §5.3.2]) but is no error state of the RS4 or the adapter: bit 5 stays 0 and the
+// OSSD bit 1, sampled every millisecond until the going alarm.
+TEST_F(Aligned, RefusedCommandRaisesAnAlarmButNeverBit5) {
+  rig.write(Rig::block({0x10, 0x21, 'W', 'R', 'O', 'N', 'G', 0xFF, 0xFF, 0xFF}));
+  const auto answer = rig.read_answer();
+  ASSERT_FALSE(answer.empty());
+  EXPECT_EQ(answer[0], 0x53);
+  EXPECT_EQ(rig.adapter.error_memory().last_error().uc2_error, kRs4ErrorWrongPassword);
+  EXPECT_EQ(rig.alarms_of(1, 1), 1u);
+  for (int ms = 0; ms < 600; ++ms) {
+    rig.advance(1ms);
+    ASSERT_EQ(rig.adapter.input_byte() & (kInputError | kInputOssd), kInputOssd) << ms;
+  }
+  EXPECT_EQ(rig.alarms_of(1, 2), 1u);
+}
+
 // [RS4 manual §5.3.2] "Fehler oder Warnungen des RS4 … werden … als Diagnose-Alarme gemeldet" and
 // "Liegt mindestens 500 ms kein Fehler mehr vor, so wird ein gehender Alarm gesendet": a
 // contamination warning is reported coming; being no error (input bit 5 stays 0), it does not
