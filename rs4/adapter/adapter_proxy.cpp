@@ -18,8 +18,11 @@ bool proxy_command(std::span<const std::uint8_t> command) noexcept {
 }
 }  // namespace
 
-// [RS4 manual §5.1.1] bit 2 = 1, remembering why for PROFI_CMD_PROXY_BEGIN.
+// [RS4 manual §5.1.1] bit 2 = 1, remembering why for PROFI_CMD_PROXY_BEGIN; not while the PC
+// adapter is attached ([RS4 manual §7.1.2] "Das Proxy-Request-Bit wird nicht gesetzt solange der
+// PC-Adapter angeschlossen bleibt"): its removal requests the sync.
 void Adapter::request_sync(protocol::SyncReason why) {
+  if (pc_.attached()) return;
   gate_.request();
   proxy_.request(why);
 }

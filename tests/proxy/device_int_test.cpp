@@ -205,20 +205,22 @@ TEST_F(DeviceSync, FailedBackgroundVerifyWithdrawsTheReleaseAndTheRetryRestores)
 }
 
 // The real device: a PC adapter attached while Proxy-Request is pending sets bit 3 at once
-// ([RS4 manual §5.1.1]), and the FB does not start until it is removed
-// ([RS4 manual §6.5] "Es findet keine Kommunikation statt, solange der optische PC-Adapter ...
-// angebracht ist").
+// ([RS4 manual §5.1.1]) and withdraws bit 2 ([RS4 manual §7.1.2] "Das Proxy-Request-Bit wird nicht
+// gesetzt solange der PC-Adapter angeschlossen bleibt"), and the FB does not start until it is
+// removed ([RS4 manual §6.5] "Es findet keine Kommunikation statt, solange der optische
+// PC-Adapter ... angebracht ist"); the removal sets bit 2 again.
 TEST_F(DeviceSync, PcAdapterAttachedWhileRequestPendingHoldsTheStart) {
   boot(rs4::scanner::factory_default());
   seg.device().adapter().attach_pc_adapter(seg.now());
   seg.run_for(100ms);
   const auto in = seg.input_byte();
-  ASSERT_NE(in & rs4::adapter::kInputProxyRequest, 0);
+  ASSERT_EQ(in & rs4::adapter::kInputProxyRequest, 0);
   ASSERT_NE(in & rs4::adapter::kInputRs232Active, 0);
   EXPECT_FALSE(run_sync()) << "not started while bit 3 is 1";
   EXPECT_EQ(records, 0);
   seg.device().adapter().detach_pc_adapter(seg.now());
   seg.run_for(100ms);
+  ASSERT_NE(seg.input_byte() & rs4::adapter::kInputProxyRequest, 0);
   ASSERT_TRUE(run_sync());
   EXPECT_EQ(sync.outputs().error_number_fb, 0) << std::hex << sync.outputs().error_number_fb;
 }
