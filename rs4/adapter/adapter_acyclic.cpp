@@ -278,48 +278,67 @@ std::vector<std::uint8_t> Adapter::execute_rs4_command(std::span<const std::uint
   const auto prefix = protocol::decode_prefix(command);
   const bool proxy_transfer = protocol::is_transfer_code(code) && proxy_.running();
   std::vector<std::uint8_t> answer;
-  if (prefix && protected_command(code) && !proxy_transfer &&
-      !password_accepted(scanner_.parameters(), prefix.value().prefix, config_.factory_password)) {
+  if (!prefix) {
+    // Option bytes that do not decode: bad data, as on the RS232 (rs232_interpreter.cpp), before
+    // any other rule [docs/decisions.md#rs4-one-command-set].
+    answer = error_telegram(scanner_, kRs4ErrorBadData, code, kRs4ErrorFunctionCommands);
+  } else if (protected_command(code) && !proxy_transfer &&
+             !password_accepted(scanner_.parameters(), prefix.value().prefix,
+                                config_.factory_password)) {
     answer =
         prefix.value().prefix.options.acknowledge
             ? nak_telegram(scanner_, code, kRs4ErrorWrongPassword)
             : error_telegram(scanner_, kRs4ErrorWrongPassword, code, kRs4ErrorFunctionCommands);
   } else if (protocol::is_transfer_code(code)) {
     return transfer(command, now, /*authorised=*/!proxy_transfer);
-  } else if (prefix && setting_command(code)) {
-    const auto before = scanner_.change_counter();
-    const auto v = execute_setting(scanner_, code, command.subspan(prefix.value().size), now);
-    // A new window is a change of the set like a user's download: the proxy is asked to take it
-    // (an upload), as after the removal of the PC adapter [RS4 manual §7.2.2], with its own
-    // reason 4 [docs/decisions.md#rs4-user-parametrisation-reason].
-    if (scanner_.change_counter() != before && gate_.rs4_up() && !pc_.attached() &&
-        !proxy_.running()) {
-      request_sync(protocol::SyncReason::kUserParametrisation);
-    }
-    collect_rs4(now);
-    if (v.ok()) return ack_telegram(scanner_, code);
-    answer = prefix.value().prefix.options.acknowledge
-                 ? nak_telegram(scanner_, code, v.error)
-                 : error_telegram(scanner_, v.error, v.parameter, kRs4ErrorFunctionCommands);
+  } else if (setting_command(code)) {
+    auto setting = execute_setting_command(command, prefix.value(), now);
+    if (!setting) return ack_telegram(scanner_, code);
+    answer = std::move(*setting);
   } else {
     answer = answer_rs4_command(scanner_, command);
   }
-  // [RS4 manual §5.2.3.2, §5.3.2]: the 0x53 the RS4 answers with is an error of the RS4 like those
-  // it reports by itself: error memory and a diagnosis alarm. A command the RS4 does not know
-  // puts it into its error state, OSSD off ([RS4 manual §5.2.2] "RS4 geht in Fehlerzustand"):
-  // the scanner raises that error itself; one it knows but cannot execute now leaves it
-  // protecting [docs/decisions.md#rs4-rejected-command].
-  if (const auto t = protocol::decode_telegram(answer)) {
-    if (const auto* e = std::get_if<protocol::ErrorTelegram>(&t.value())) {
-      if (e->report.number == kRs4ErrorUnknownCommand && !command.empty()) {
-        scanner_.unknown_command(command[0], now);
-        collect_rs4(now);
-      } else {
-        report_error(e->report.number, 0, now);
-      }
-    }
-  }
+  report_rs4_refusal(answer, command, now);
   return answer;
+}
+
+// A setting command (0x10, 0x19, 0x20, 0x22): nullopt when executed, else the refusal.
+std::optional<std::vector<std::uint8_t>> Adapter::execute_setting_command(
+    std::span<const std::uint8_t> command, const protocol::DecodedPrefix& prefix, TimePoint now) {
+  const std::uint8_t code = command[0];
+  const auto before = scanner_.change_counter();
+  const auto v = execute_setting(scanner_, code, command.subspan(prefix.size), now);
+  // A new window is a change of the set like a user's download: the proxy is asked to take it
+  // (an upload), as after the removal of the PC adapter [RS4 manual §7.2.2], with its own
+  // reason 4 [docs/decisions.md#rs4-user-parametrisation-reason].
+  if (scanner_.change_counter() != before && gate_.rs4_up() && !pc_.attached() &&
+      !proxy_.running()) {
+    request_sync(protocol::SyncReason::kUserParametrisation);
+  }
+  collect_rs4(now);
+  if (v.ok()) return std::nullopt;
+  return prefix.prefix.options.acknowledge
+             ? nak_telegram(scanner_, code, v.error)
+             : error_telegram(scanner_, v.error, v.parameter, kRs4ErrorFunctionCommands);
+}
+
+// [RS4 manual §5.2.3.2, §5.3.2]: the 0x53 the RS4 answers with is an error of the RS4 like those
+// it reports by itself: error memory and a diagnosis alarm. A command the RS4 does not know
+// puts it into its error state, OSSD off ([RS4 manual §5.2.2] "RS4 geht in Fehlerzustand"): the
+// scanner raises that error itself; one it knows but cannot execute now leaves it protecting
+// [docs/decisions.md#rs4-rejected-command].
+void Adapter::report_rs4_refusal(std::span<const std::uint8_t> answer,
+                                 std::span<const std::uint8_t> command, TimePoint now) {
+  const auto t = protocol::decode_telegram(answer);
+  if (!t) return;
+  const auto* e = std::get_if<protocol::ErrorTelegram>(&t.value());
+  if (e == nullptr) return;
+  if (e->report.number == kRs4ErrorUnknownCommand && !command.empty()) {
+    scanner_.unknown_command(command[0], now);
+    collect_rs4(now);
+  } else {
+    report_error(e->report.number, 0, now);
+  }
 }
 
 }  // namespace rs4sim::rs4::adapter

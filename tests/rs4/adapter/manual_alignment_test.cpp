@@ -193,7 +193,7 @@ TEST_F(Aligned, Class2AdapterCommandsAreTheAdaptersNotTheRs4s) {
 // [docs/decisions.md#rs4-rejected-command].
 TEST_F(Aligned, UnknownCommandPutsTheRs4IntoItsErrorState) {
   ASSERT_TRUE(rig.ossd());
-  rig.write(Rig::block({0x7E}));
+  rig.write(Rig::block({0x7E, 0x01}));  // an unknown code, option 1 = one option byte
   const auto answer = rig.read_answer();
   ASSERT_FALSE(answer.empty());
   EXPECT_EQ(answer[0], 0x53);
@@ -411,7 +411,7 @@ TEST_F(Aligned, Rs4CommandAnswerComesAfterItsProcessingTime) {
 // Two commands in a row are processed one after the other: the second answer 80 ms after both.
 TEST_F(Aligned, Rs4CommandsAreProcessedInOrder) {
   rig.write(Rig::block({0x14, 0x01}));
-  rig.write(Rig::block({0x7E}));  // unknown: 0x53
+  rig.write(Rig::block({0x7E, 0x01}));  // unknown: 0x53
   rig.advance(40ms);
   auto first = rig.read();
   ASSERT_GT(first.data.size(), 4u);
