@@ -304,6 +304,76 @@ rs4::scanner::ParameterSet set_with_response_steps(std::uint8_t steps) {
   return set;
 }
 
+// [RS4 manual §7.2.4] "Anhand der im RS4 und im Proxy-FB gespeicherten Seriennummer wird der
+// Scanner identifiziert und ein Gerätetausch automatisch erkannt … Der Proxy-FB speichert die neue
+// Seriennummer" on the real adapter, with a spare that is not factory-new: it carries a set from
+// its former site, so neither the factory flag nor the power-up's direction asks for a download
+// (the device says "verify"); the serial number does. The spare's set is replaced by the stored
+// one, its serial number stored, its own passwords kept.
+TEST_F(DeviceSync, ExchangeWithASpareThatIsNotFactoryNewDownloadsTheStoredSet) {
+  const auto plant = set_with_response_steps(6);
+  boot(plant);  // unit 0x12345 learns the plant's set
+  ASSERT_TRUE(run_sync());
+  ASSERT_EQ(archive->current({"bus", 4}).value().version.serial_number, std::to_string(0x12345));
+  seg.power_off();
+  seg.run_for(1s);
+  rs4::scanner::ScannerConfig spare;
+  spare.identity.serial_number = 0x00054321;
+  ASSERT_TRUE(seg.device().exchange_scanner(spare));
+  auto former = set_with_response_steps(3);  // the spare's set from its former site
+  former.passwords[0] = {'S', 'P', 'A', 'R', 'E', 0xFF, 0xFF, 0xFF};
+  ASSERT_TRUE(seg.device().scanner().set_parameters(former, seg.now()));
+  ASSERT_FALSE(seg.device().scanner().factory_settings());
+  seg.power_on();
+  ASSERT_TRUE(seg.run_until([&] { return seg.in_data_exchange(); }, 5s));
+  ASSERT_TRUE(await_request());
+  EXPECT_EQ(seg.device().adapter().proxy_session().reason(), rs4::protocol::SyncReason::kPowerUp);
+  ASSERT_TRUE(run_sync());
+  EXPECT_EQ(sync.outputs(), FbOutputs{})
+      << std::hex << sync.outputs().error_number_fb << " rs4 " << sync.outputs().error_number_rs4;
+  EXPECT_EQ(seg.device().adapter().proxy_session().direction(),
+            rs4::protocol::SyncDirection::kVerify);
+  const auto& now_active = seg.device().scanner().parameters();
+  EXPECT_EQ(rs4::scanner::transfer_checksum(now_active), rs4::scanner::transfer_checksum(plant));
+  EXPECT_EQ(now_active.response_steps, 6);
+  EXPECT_EQ(now_active.passwords, former.passwords) << "[RS4 manual §7.2.4] passwords kept";
+  const auto current = archive->current({"bus", 4}).value();
+  EXPECT_EQ(current.version.serial_number, std::to_string(0x54321));
+  EXPECT_EQ(current.version.source, storage::VersionSource::kDownload);
+  EXPECT_EQ(current.set.blob, rs4::scanner::encode_for_transfer(plant));
+  EXPECT_TRUE(ossd_after_restart());
+}
+
+// The same with a spare whose set is byte for byte the plant's (it was parametrised alike
+// elsewhere): the set CRCs agree, so the serial number alone tells the exchange; the stored set
+// is downloaded all the same and the new serial number stored ([RS4 manual §7.2.4]).
+TEST_F(DeviceSync, ExchangeIsToldByTheSerialNumberAloneWhenTheSetsAgree) {
+  const auto plant = set_with_response_steps(6);
+  boot(plant);
+  ASSERT_TRUE(run_sync());
+  seg.power_off();
+  seg.run_for(1s);
+  rs4::scanner::ScannerConfig spare;
+  spare.identity.serial_number = 0x00054321;
+  ASSERT_TRUE(seg.device().exchange_scanner(spare));
+  ASSERT_TRUE(seg.device().scanner().set_parameters(plant, seg.now()));
+  ASSERT_EQ(seg.device().scanner().transfer_checksum(), rs4::scanner::transfer_checksum(plant));
+  seg.power_on();
+  ASSERT_TRUE(seg.run_until([&] { return seg.in_data_exchange(); }, 5s));
+  ASSERT_TRUE(await_request());
+  const int before = records;
+  ASSERT_TRUE(run_sync());
+  EXPECT_EQ(sync.outputs(), FbOutputs{}) << std::hex << sync.outputs().error_number_fb;
+  // a download (BEGIN, 9 chunks, COMMIT, IDENTIFY again ...) takes far more records than the
+  // release at once of a consistent device (98, IDENTIFY, 99: 6 records plus polls)
+  EXPECT_GT(records - before, 30);
+  const auto history = archive->history({"bus", 4}).value();
+  ASSERT_EQ(history.size(), 2U);
+  const auto current = archive->current({"bus", 4}).value();
+  EXPECT_EQ(current.version.serial_number, std::to_string(0x54321));
+  EXPECT_EQ(current.version.source, storage::VersionSource::kDownload);
+}
+
 // Scenario 2 [RS4 manual §7.1, §7.2]: a set changed through the PC adapter is uploaded when the
 // adapter is removed; it replaces the current set, the history keeps the old one.
 TEST_F(DeviceSync, ParameterChangeThroughThePcAdapterIsUploaded) {
