@@ -427,6 +427,65 @@ TEST_F(DeviceSync, LinkLossMidDownloadLeavesFactorySettingsAndTheRetryRestores) 
   EXPECT_EQ(seg.device().scanner().transfer_checksum(), rs4::scanner::transfer_checksum(stored));
 }
 
+// Cuts the link between the master and station 4 both ways until seg.bus().clear_faults().
+void cut_link(rs4::device::Rs4Segment& seg) {
+  dp::link::Fault lost;
+  lost.kind = dp::link::FaultKind::kDrop;
+  lost.count = 0;  // until cleared
+  lost.to = 4;
+  seg.bus().inject(lost);
+  lost.to.reset();
+  lost.from = 4;
+  seg.bus().inject(lost);
+}
+
+// What `cli_rs232_scenario2` met on a loaded machine, on the manual clock: first commissioning
+// (nothing stored), the set changed through the PC adapter, the adapter removed, and the link lost
+// during the upload. [RS4 manual §6.4] "Schlägt entweder der Upload oder der Download fehl, so wird
+// der RS4/PROFIsafe auf seine Werkeinstellung zurück gesetzt. Dieses wird an den Proxy-FB gemeldet.
+// Der Anwender muss den RS4/PROFIsafe über RS4soft neu parametrieren": the RS4 rolls back, so the
+// retry has nothing to upload and ends like a first commissioning (98, IDENTIFY, 99; idle with
+// CONFIG_SET_TO_DEFAULT = 1) [docs/decisions.md#rs4-failed-upload-rolls-back]. The way out is the
+// manual's: the user parametrises again, and that removal uploads.
+TEST_F(DeviceSync, LinkLostDuringTheUploadAfterRemovalRollsBackAsTheManualSays) {
+  boot(rs4::scanner::factory_default());
+  ASSERT_TRUE(run_sync());
+  ASSERT_TRUE(sync.outputs().config_set_to_default);  // first commissioning
+  const auto site = set_with_response_steps(7);
+  parametrise_on_site(site);
+  ASSERT_TRUE(await_request(5s));
+  ASSERT_EQ(seg.device().adapter().proxy_session().reason(),
+            rs4::protocol::SyncReason::kPcAdapterRemoved);
+  ASSERT_TRUE(run_sync(200s, Step::kUpload1));
+  ASSERT_TRUE(sync.active());
+  cut_link(seg);
+  ASSERT_TRUE(drive(120s));
+  EXPECT_NE(sync.outputs().error_number_fb, 0);
+  EXPECT_TRUE(sync.outputs().config_set_to_default);
+  seg.run_for(3s);  // the station's DP watchdog runs out: it leaves data exchange
+  EXPECT_FALSE(seg.device().adapter().view().connected);
+  EXPECT_TRUE(seg.device().scanner().factory_settings()) << "the failed upload rolled back";
+  EXPECT_FALSE(archive->current({"bus", 4})) << "nothing stored";
+  seg.bus().clear_faults();
+  ASSERT_TRUE(seg.run_until([&] { return seg.in_data_exchange(); }, 10s));
+  ASSERT_TRUE(await_request());
+  EXPECT_EQ(seg.device().adapter().proxy_session().reason(), rs4::protocol::SyncReason::kRetry);
+  seg.run_for(6s);  // the retry delay
+  const int before = records;
+  ASSERT_TRUE(run_sync());
+  EXPECT_EQ(sync.outputs().error_number_fb, 0) << std::hex << sync.outputs().error_number_fb;
+  EXPECT_TRUE(sync.outputs().config_set_to_default) << "reported to the Proxy-FB";
+  EXPECT_LT(records - before, 20) << "begin, identify, end: no upload";
+  EXPECT_FALSE(archive->current({"bus", 4})) << "still nothing stored";
+  parametrise_on_site(site);  // "Der Anwender muss … neu parametrieren"
+  ASSERT_TRUE(await_request(5s));
+  ASSERT_TRUE(run_sync());
+  EXPECT_EQ(sync.outputs(), FbOutputs{}) << std::hex << sync.outputs().error_number_fb;
+  const auto current = archive->current({"bus", 4});
+  ASSERT_TRUE(current);
+  EXPECT_EQ(current.value().set.blob, rs4::scanner::encode_for_transfer(site));
+}
+
 // A user command while the proxy syncs aborts the sync ([RS4 manual §5.2]: the user must watch
 // FB_BUSY): the device enters 0x2B01 and rolls back; the proxy's next command is refused.
 TEST_F(DeviceSync, UserCommandDuringASyncAbortsIt) {
