@@ -313,9 +313,13 @@ class Adapter final : public dp::slave::SlaveApplication {
                                    TimePoint now);
   void execute(std::span<const std::uint8_t> command, dp::slave::AcyclicChannel which, Channel& ch,
                TimePoint now);
-  void execute_adapter_command(std::span<const std::uint8_t> command, Channel& ch, TimePoint now);
+  void execute_adapter_command(const protocol::WriteCommand& cmd, Channel& ch, TimePoint now);
   [[nodiscard]] std::vector<std::uint8_t> execute_rs4_command(std::span<const std::uint8_t> command,
                                                               TimePoint now);
+  [[nodiscard]] std::optional<std::vector<std::uint8_t>> execute_setting_command(
+      std::span<const std::uint8_t> command, const protocol::DecodedPrefix& prefix, TimePoint now);
+  void report_rs4_refusal(std::span<const std::uint8_t> answer,
+                          std::span<const std::uint8_t> command, TimePoint now);
   [[nodiscard]] bool ready_for_write(dp::slave::AcyclicChannel which) const noexcept;
   [[nodiscard]] Channel& channel(dp::slave::AcyclicChannel which) noexcept;
   [[nodiscard]] const Channel& channel(dp::slave::AcyclicChannel which) const noexcept;

@@ -163,28 +163,45 @@ dp::slave::AcyclicResult Adapter::on_read(const dp::slave::AcyclicRequest& req, 
   return AcyclicResult::ok(block);
 }
 
-// A complete command. DECISION ([RS4 manual §5.2]: class 2 may not use adapter commands): on C2
-// every command goes to the RS4 unchecked, so an adapter code from class 2 is answered by the RS4
-// as an unknown command (error telegram 0x53), as for any other unknown first byte.
+// Whether a class 2 master may use a command: every RS4 command, and of the adapter's commands
+// the queries (0x84, 0x90, 0x91), which control nothing. [RS4 manual §5.2.1]: class 2 may use
+// "alle RS4-Kommandos …, nicht aber die speziellen Kommandos für den PROFIsafe-Adapter zur
+// Steuerung der automatischen Konfiguration" [docs/decisions.md#rs4-class2-adapter-commands].
+namespace {
+bool class2_may_use(const protocol::WriteCommand& cmd) noexcept {
+  return std::holds_alternative<protocol::Rs4Command>(cmd) ||
+         std::holds_alternative<protocol::GetVersionCommand>(cmd) ||
+         std::holds_alternative<protocol::GetLastErrorCommand>(cmd) ||
+         std::holds_alternative<protocol::GetErrorMemoryCommand>(cmd) ||
+         std::holds_alternative<protocol::RejectedCommand>(cmd);
+}
+}  // namespace
+
+// A complete command. [RS4 manual §5.2.2] "Bei jedem empfangenen Klasse 1- oder Klasse
+// 2-Telegramm wird anhand des ersten Bytes ermittelt, ob es für den PROFIsafe-Adapter bestimmt
+// ist oder für den RS4": on both channels an adapter code is the adapter's, never forwarded to
+// the RS4. DECISION: a class 2 master's controlling adapter command (0x92, 0x94, 0x98, 0x99) is
+// refused with 93 01 code (table 5.2-3, "falscher Parameter") and has no effect
+// [docs/decisions.md#rs4-class2-adapter-commands].
 void Adapter::execute(std::span<const std::uint8_t> command, AcyclicChannel which, Channel& ch,
                       TimePoint now) {
   abort_on_user_command(command, which, now);
-  if (which == AcyclicChannel::kC2) {
-    ++counters_.rs4_commands;
-    submit_rs4_command(command, ch, now);
-    return;
-  }
-  execute_adapter_command(command, ch, now);
-}
-
-void Adapter::execute_adapter_command(std::span<const std::uint8_t> command, Channel& ch,
-                                      TimePoint now) {
   const auto parsed = protocol::parse_write_command(command);
   if (!parsed) {
     adapter_error(protocol::AdapterError::kTelegramNotProcessed, now);
     return;
   }
-  const auto& cmd = parsed.value();
+  if (which == AcyclicChannel::kC2 && !class2_may_use(parsed.value())) {
+    execute_adapter_command(
+        protocol::RejectedCommand{protocol::CommandErrorKind::kWrongParameter, command[0]}, ch,
+        now);
+    return;
+  }
+  execute_adapter_command(parsed.value(), ch, now);
+}
+
+void Adapter::execute_adapter_command(const protocol::WriteCommand& cmd, Channel& ch,
+                                      TimePoint now) {
   if (const auto* rs4 = std::get_if<protocol::Rs4Command>(&cmd)) {
     ++counters_.rs4_commands;
     submit_rs4_command(rs4->bytes, ch, now);
@@ -261,48 +278,67 @@ std::vector<std::uint8_t> Adapter::execute_rs4_command(std::span<const std::uint
   const auto prefix = protocol::decode_prefix(command);
   const bool proxy_transfer = protocol::is_transfer_code(code) && proxy_.running();
   std::vector<std::uint8_t> answer;
-  if (prefix && protected_command(code) && !proxy_transfer &&
-      !password_accepted(scanner_.parameters(), prefix.value().prefix, config_.factory_password)) {
+  if (!prefix) {
+    // Option bytes that do not decode: bad data, as on the RS232 (rs232_interpreter.cpp), before
+    // any other rule [docs/decisions.md#rs4-one-command-set].
+    answer = error_telegram(scanner_, kRs4ErrorBadData, code, kRs4ErrorFunctionCommands);
+  } else if (protected_command(code) && !proxy_transfer &&
+             !password_accepted(scanner_.parameters(), prefix.value().prefix,
+                                config_.factory_password)) {
     answer =
         prefix.value().prefix.options.acknowledge
             ? nak_telegram(scanner_, code, kRs4ErrorWrongPassword)
             : error_telegram(scanner_, kRs4ErrorWrongPassword, code, kRs4ErrorFunctionCommands);
   } else if (protocol::is_transfer_code(code)) {
     return transfer(command, now, /*authorised=*/!proxy_transfer);
-  } else if (prefix && setting_command(code)) {
-    const auto before = scanner_.change_counter();
-    const auto v = execute_setting(scanner_, code, command.subspan(prefix.value().size), now);
-    // A new window is a change of the set like a user's download: the proxy is asked to take it
-    // (an upload), as after the removal of the PC adapter [RS4 manual §7.2.2], with its own
-    // reason 4 [docs/decisions.md#rs4-user-parametrisation-reason].
-    if (scanner_.change_counter() != before && gate_.rs4_up() && !pc_.attached() &&
-        !proxy_.running()) {
-      request_sync(protocol::SyncReason::kUserParametrisation);
-    }
-    collect_rs4(now);
-    if (v.ok()) return ack_telegram(scanner_, code);
-    answer = prefix.value().prefix.options.acknowledge
-                 ? nak_telegram(scanner_, code, v.error)
-                 : error_telegram(scanner_, v.error, v.parameter, kRs4ErrorFunctionCommands);
+  } else if (setting_command(code)) {
+    auto setting = execute_setting_command(command, prefix.value(), now);
+    if (!setting) return ack_telegram(scanner_, code);
+    answer = std::move(*setting);
   } else {
     answer = answer_rs4_command(scanner_, command);
   }
-  // [RS4 manual §5.2.3.2, §5.3.2]: the 0x53 the RS4 answers with is an error of the RS4 like those
-  // it reports by itself: error memory and a diagnosis alarm. A command the RS4 does not know
-  // puts it into its error state, OSSD off ([RS4 manual §5.2.2] "RS4 geht in Fehlerzustand"):
-  // the scanner raises that error itself; one it knows but cannot execute now leaves it
-  // protecting [docs/decisions.md#rs4-rejected-command].
-  if (const auto t = protocol::decode_telegram(answer)) {
-    if (const auto* e = std::get_if<protocol::ErrorTelegram>(&t.value())) {
-      if (e->report.number == kRs4ErrorUnknownCommand && !command.empty()) {
-        scanner_.unknown_command(command[0], now);
-        collect_rs4(now);
-      } else {
-        report_error(e->report.number, 0, now);
-      }
-    }
-  }
+  report_rs4_refusal(answer, command, now);
   return answer;
+}
+
+// A setting command (0x10, 0x19, 0x20, 0x22): nullopt when executed, else the refusal.
+std::optional<std::vector<std::uint8_t>> Adapter::execute_setting_command(
+    std::span<const std::uint8_t> command, const protocol::DecodedPrefix& prefix, TimePoint now) {
+  const std::uint8_t code = command[0];
+  const auto before = scanner_.change_counter();
+  const auto v = execute_setting(scanner_, code, command.subspan(prefix.size), now);
+  // A new window is a change of the set like a user's download: the proxy is asked to take it
+  // (an upload), as after the removal of the PC adapter [RS4 manual §7.2.2], with its own
+  // reason 4 [docs/decisions.md#rs4-user-parametrisation-reason].
+  if (scanner_.change_counter() != before && gate_.rs4_up() && !pc_.attached() &&
+      !proxy_.running()) {
+    request_sync(protocol::SyncReason::kUserParametrisation);
+  }
+  collect_rs4(now);
+  if (v.ok()) return std::nullopt;
+  return prefix.prefix.options.acknowledge
+             ? nak_telegram(scanner_, code, v.error)
+             : error_telegram(scanner_, v.error, v.parameter, kRs4ErrorFunctionCommands);
+}
+
+// [RS4 manual §5.2.3.2, §5.3.2]: the 0x53 the RS4 answers with is an error of the RS4 like those
+// it reports by itself: error memory and a diagnosis alarm. A command the RS4 does not know
+// puts it into its error state, OSSD off ([RS4 manual §5.2.2] "RS4 geht in Fehlerzustand"): the
+// scanner raises that error itself; one it knows but cannot execute now leaves it protecting
+// [docs/decisions.md#rs4-rejected-command].
+void Adapter::report_rs4_refusal(std::span<const std::uint8_t> answer,
+                                 std::span<const std::uint8_t> command, TimePoint now) {
+  const auto t = protocol::decode_telegram(answer);
+  if (!t) return;
+  const auto* e = std::get_if<protocol::ErrorTelegram>(&t.value());
+  if (e == nullptr) return;
+  if (e->report.number == kRs4ErrorUnknownCommand && !command.empty()) {
+    scanner_.unknown_command(command[0], now);
+    collect_rs4(now);
+  } else {
+    report_error(e->report.number, 0, now);
+  }
 }
 
 }  // namespace rs4sim::rs4::adapter

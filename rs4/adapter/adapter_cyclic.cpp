@@ -134,6 +134,9 @@ void Adapter::attach_pc_adapter(TimePoint now) {
   // [RS4 manual §5.1.1] bit 3: during a sync the RS232 is switched through only after the sync
   // ends.
   pc_.attach(proxy_.running());
+  // [RS4 manual §7.1.2]: no Proxy-Request while attached; a pending one is withdrawn (a running
+  // sync has reset it already) and the removal sets it again.
+  gate_.withdraw_request();
   if (powered_) refresh_input(now);
 }
 

@@ -27,10 +27,12 @@ void Adapter::collect_rs4(TimePoint now) {
     // (or of the RS4)") and the μC2 ring; μC1 reports 0 for it.
     report_error(e->number, 0, e->at);
   }
-  // A fault or warning that is still present keeps the error "coming" (no going alarm,
-  // [RS4 manual §5.3.2]: the going alarm follows ≥500 ms *without* the error).
+  // An error that is still present keeps the alarm "coming" ([RS4 manual §5.3.2] "Liegt
+  // mindestens 500 ms kein Fehler mehr vor, so wird ein gehender Alarm gesendet"). A warning
+  // (a contaminated window) is no error, as for input bit 5: it has its coming alarm, but does
+  // not hold the going one back [docs/decisions.md#rs4-going-alarm-and-warnings].
   const auto st = scanner_.status();
-  if (st.fault || st.contamination_warning || field_pair_error_ || inconsistent_output_) {
+  if (st.fault || field_pair_error_ || inconsistent_output_) {
     last_error_at_ = now;
   }
   capture_forwarding();

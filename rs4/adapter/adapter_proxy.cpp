@@ -18,8 +18,11 @@ bool proxy_command(std::span<const std::uint8_t> command) noexcept {
 }
 }  // namespace
 
-// [RS4 manual §5.1.1] bit 2 = 1, remembering why for PROFI_CMD_PROXY_BEGIN.
+// [RS4 manual §5.1.1] bit 2 = 1, remembering why for PROFI_CMD_PROXY_BEGIN; not while the PC
+// adapter is attached ([RS4 manual §7.1.2] "Das Proxy-Request-Bit wird nicht gesetzt solange der
+// PC-Adapter angeschlossen bleibt"): its removal requests the sync.
 void Adapter::request_sync(protocol::SyncReason why) {
+  if (pc_.attached()) return;
   gate_.request();
   proxy_.request(why);
 }
@@ -66,7 +69,12 @@ std::error_code Adapter::proxy_sync_failed(TimePoint now, std::uint16_t error) {
 // Proxy-Request set again (reason retry; seen by the master in its next data exchange).
 void Adapter::fail_sync(std::uint16_t error, TimePoint now) {
   proxy_.stop(scanner_, now);
-  if (error != 0) report_error(error, error, now);
+  if (error != 0) {
+    // A table 5.3-3 proxy error (0x2B0x) is an error of the adapter: input bit 5 until its going
+    // alarm, as every one-shot adapter error [docs/decisions.md#rs4-error-bit].
+    adapter_error_active_ = true;
+    report_error(error, error, now);
+  }
   scanner_.reset_to_factory_default(now);
   request_sync(protocol::SyncReason::kRetry);
   gate_.set_in_doubt();  // OSSD unaffected unless the sync fails (Proxy-Enable 1: withdrawn)

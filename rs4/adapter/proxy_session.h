@@ -8,7 +8,8 @@
 // bit 2 and the OSSD release): the Adapter tells it when a sync starts and ends, and
 // routes every transfer command here. Sans-I/O: the scanner and `now` come in.
 //
-// Download rules: only while a sync runs (kNoSyncRunning otherwise); DOWNLOAD_BEGIN with
+// Download rules: only while a sync runs or with an accepted password (kNoSyncRunning
+// otherwise, [docs/decisions.md#rs4-parametrisation-over-profibus]); DOWNLOAD_BEGIN with
 // the device's set size; chunks strictly in order 0..n-1, each of the chunk size (the last
 // one shorter); COMMIT checks size and whole CRC-32, decodes, merges with the device's
 // set (passwords and identity kept, scanner::merge_download), validates and applies it.

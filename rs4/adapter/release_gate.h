@@ -60,6 +60,9 @@ class ReleaseGate {
   }
   // Input bit 2 = 1.
   constexpr void request() noexcept { f_.proxy_request = true; }
+  // The PC adapter is attached: "Das Proxy-Request-Bit wird nicht gesetzt solange der PC-Adapter
+  // angeschlossen bleibt" [RS4 manual §7.1.2]; its removal requests a sync again.
+  constexpr void withdraw_request() noexcept { f_.proxy_request = false; }
   // PROFI_CMD_PROXY_BEGIN: false (nothing starts) without a Proxy-Request; else bit 2 is reset
   // ("wird zurückgesetzt, wenn die Parameterkontrolle beginnt" [RS4 manual §5.1.1]).
   constexpr bool sync_start() noexcept {

@@ -190,17 +190,22 @@ std::vector<std::uint8_t> answer_rs4_command(const scanner::Scanner& rs4,
                                              std::span<const std::uint8_t> command) {
   const auto prefix = protocol::decode_prefix(command);
   const std::uint8_t code = command.empty() ? 0 : command[0];
-  if (prefix && prefix.value().size == command.size()) {  // commands without data
-    if (code == kRs4RequestOneScan) {
-      if (!scanning(rs4)) {
-        return error_telegram(rs4, kRs4ErrorNoScan, static_cast<std::uint16_t>(rs4.status().state),
-                              kRs4ErrorFunctionCommands);
-      }
-      auto t = measurement_telegram(rs4);
-      if (!t.empty()) return t;
-    } else if (code == static_cast<std::uint8_t>(protocol::TelegramCode::kAlive)) {
-      return alive_telegram(rs4);
+  const bool known = code == kRs4RequestOneScan ||
+                     code == static_cast<std::uint8_t>(protocol::TelegramCode::kAlive);
+  // Options that do not decode, or data after a command that takes none: bad data, on both paths
+  // (docs/decisions.md#rs4-one-command-set).
+  if (!prefix || (known && prefix.value().size != command.size())) {
+    return error_telegram(rs4, kRs4ErrorBadData, code, kRs4ErrorFunctionCommands);
+  }
+  if (code == kRs4RequestOneScan) {
+    if (!scanning(rs4)) {
+      return error_telegram(rs4, kRs4ErrorNoScan, static_cast<std::uint16_t>(rs4.status().state),
+                            kRs4ErrorFunctionCommands);
     }
+    auto t = measurement_telegram(rs4);
+    if (!t.empty()) return t;
+  } else if (known) {
+    return alive_telegram(rs4);
   }
   // [RS4 manual §5.2.2]: a command the RS4 does not know is answered with an error telegram.
   return error_telegram(rs4, kRs4ErrorUnknownCommand, code, kRs4ErrorFunctionCommands);

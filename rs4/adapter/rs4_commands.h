@@ -12,7 +12,9 @@
 //        last scan, window of the parameter set; 0x53 "no scan" while not scanning
 //   0x14 COM_CMD_ALIVE           → 0x14 with the current option bytes
 //   0x60..0x65 parameter set     → adapter::ProxySession (proxy_session.h)
-//   anything else / malformed    → 0x53 COM_CMD_ERROR_OCCURE "unknown command", RS4 error state
+//   malformed (options that do not decode, data after 0x14/0x24)
+//                                → 0x53 COM_CMD_ERROR_OCCURE "bad data" 0x0504, RS4 protecting
+//   anything else                → 0x53 COM_CMD_ERROR_OCCURE "unknown command", RS4 error state
 // The password rule (protected_command, password_accepted) is the same on both paths; the
 // proxy's own transfer inside a sync it was asked for needs none (DECISION, decisions.md).
 

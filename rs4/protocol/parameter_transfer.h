@@ -62,7 +62,7 @@ enum class TransferStatus : std::uint8_t {
   kCrcMismatch = 5,      // commit: the received bytes do not have the announced CRC-32
   kInvalidSet = 6,       // commit: the set does not decode or does not validate
   kNotOperational = 7,   // the RS4 is off, initialising or in its error state
-  kNoSyncRunning = 8,    // download outside a proxy sync (only the proxy may write a set)
+  kNoSyncRunning = 8,    // download outside a sync without an accepted password
   kAdapterAttached = 9,  // the PC adapter is switched through ([RS4 manual §7.1, §7.2])
 };
 [[nodiscard]] const char* to_string(TransferStatus s) noexcept;

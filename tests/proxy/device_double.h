@@ -45,6 +45,9 @@ class DeviceDouble {
   std::function<void(std::uint8_t command, std::vector<std::uint8_t>& answer)> answer_hook;
 
   static std::vector<std::uint8_t> factory_set();
+  // Bits 2 and 3 as set here: the double may show both at once, which the real adapter never
+  // does ([RS4 manual §7.1.2]: no Proxy-Request while the PC adapter is attached); the proxy's
+  // own guard against bit 3 is tested with it (Enable.NoSyncWhileThePcAdapterIsAttached).
   std::uint8_t input_byte() const noexcept {
     return static_cast<std::uint8_t>((request ? 0x04 : 0x00) | (pc_adapter ? 0x08 : 0x00));
   }

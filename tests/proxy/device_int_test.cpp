@@ -205,20 +205,22 @@ TEST_F(DeviceSync, FailedBackgroundVerifyWithdrawsTheReleaseAndTheRetryRestores)
 }
 
 // The real device: a PC adapter attached while Proxy-Request is pending sets bit 3 at once
-// ([RS4 manual §5.1.1]), and the FB does not start until it is removed
-// ([RS4 manual §6.5] "Es findet keine Kommunikation statt, solange der optische PC-Adapter ...
-// angebracht ist").
+// ([RS4 manual §5.1.1]) and withdraws bit 2 ([RS4 manual §7.1.2] "Das Proxy-Request-Bit wird nicht
+// gesetzt solange der PC-Adapter angeschlossen bleibt"), and the FB does not start until it is
+// removed ([RS4 manual §6.5] "Es findet keine Kommunikation statt, solange der optische
+// PC-Adapter ... angebracht ist"); the removal sets bit 2 again.
 TEST_F(DeviceSync, PcAdapterAttachedWhileRequestPendingHoldsTheStart) {
   boot(rs4::scanner::factory_default());
   seg.device().adapter().attach_pc_adapter(seg.now());
   seg.run_for(100ms);
   const auto in = seg.input_byte();
-  ASSERT_NE(in & rs4::adapter::kInputProxyRequest, 0);
+  ASSERT_EQ(in & rs4::adapter::kInputProxyRequest, 0);
   ASSERT_NE(in & rs4::adapter::kInputRs232Active, 0);
   EXPECT_FALSE(run_sync()) << "not started while bit 3 is 1";
   EXPECT_EQ(records, 0);
   seg.device().adapter().detach_pc_adapter(seg.now());
   seg.run_for(100ms);
+  ASSERT_NE(seg.input_byte() & rs4::adapter::kInputProxyRequest, 0);
   ASSERT_TRUE(run_sync());
   EXPECT_EQ(sync.outputs().error_number_fb, 0) << std::hex << sync.outputs().error_number_fb;
 }
@@ -302,6 +304,76 @@ rs4::scanner::ParameterSet set_with_response_steps(std::uint8_t steps) {
   return set;
 }
 
+// [RS4 manual §7.2.4] "Anhand der im RS4 und im Proxy-FB gespeicherten Seriennummer wird der
+// Scanner identifiziert und ein Gerätetausch automatisch erkannt … Der Proxy-FB speichert die neue
+// Seriennummer" on the real adapter, with a spare that is not factory-new: it carries a set from
+// its former site, so neither the factory flag nor the power-up's direction asks for a download
+// (the device says "verify"); the serial number does. The spare's set is replaced by the stored
+// one, its serial number stored, its own passwords kept.
+TEST_F(DeviceSync, ExchangeWithASpareThatIsNotFactoryNewDownloadsTheStoredSet) {
+  const auto plant = set_with_response_steps(6);
+  boot(plant);  // unit 0x12345 learns the plant's set
+  ASSERT_TRUE(run_sync());
+  ASSERT_EQ(archive->current({"bus", 4}).value().version.serial_number, std::to_string(0x12345));
+  seg.power_off();
+  seg.run_for(1s);
+  rs4::scanner::ScannerConfig spare;
+  spare.identity.serial_number = 0x00054321;
+  ASSERT_TRUE(seg.device().exchange_scanner(spare));
+  auto former = set_with_response_steps(3);  // the spare's set from its former site
+  former.passwords[0] = {'S', 'P', 'A', 'R', 'E', 0xFF, 0xFF, 0xFF};
+  ASSERT_TRUE(seg.device().scanner().set_parameters(former, seg.now()));
+  ASSERT_FALSE(seg.device().scanner().factory_settings());
+  seg.power_on();
+  ASSERT_TRUE(seg.run_until([&] { return seg.in_data_exchange(); }, 5s));
+  ASSERT_TRUE(await_request());
+  EXPECT_EQ(seg.device().adapter().proxy_session().reason(), rs4::protocol::SyncReason::kPowerUp);
+  ASSERT_TRUE(run_sync());
+  EXPECT_EQ(sync.outputs(), FbOutputs{})
+      << std::hex << sync.outputs().error_number_fb << " rs4 " << sync.outputs().error_number_rs4;
+  EXPECT_EQ(seg.device().adapter().proxy_session().direction(),
+            rs4::protocol::SyncDirection::kVerify);
+  const auto& now_active = seg.device().scanner().parameters();
+  EXPECT_EQ(rs4::scanner::transfer_checksum(now_active), rs4::scanner::transfer_checksum(plant));
+  EXPECT_EQ(now_active.response_steps, 6);
+  EXPECT_EQ(now_active.passwords, former.passwords) << "[RS4 manual §7.2.4] passwords kept";
+  const auto current = archive->current({"bus", 4}).value();
+  EXPECT_EQ(current.version.serial_number, std::to_string(0x54321));
+  EXPECT_EQ(current.version.source, storage::VersionSource::kDownload);
+  EXPECT_EQ(current.set.blob, rs4::scanner::encode_for_transfer(plant));
+  EXPECT_TRUE(ossd_after_restart());
+}
+
+// The same with a spare whose set is byte for byte the plant's (it was parametrised alike
+// elsewhere): the set CRCs agree, so the serial number alone tells the exchange; the stored set
+// is downloaded all the same and the new serial number stored ([RS4 manual §7.2.4]).
+TEST_F(DeviceSync, ExchangeIsToldByTheSerialNumberAloneWhenTheSetsAgree) {
+  const auto plant = set_with_response_steps(6);
+  boot(plant);
+  ASSERT_TRUE(run_sync());
+  seg.power_off();
+  seg.run_for(1s);
+  rs4::scanner::ScannerConfig spare;
+  spare.identity.serial_number = 0x00054321;
+  ASSERT_TRUE(seg.device().exchange_scanner(spare));
+  ASSERT_TRUE(seg.device().scanner().set_parameters(plant, seg.now()));
+  ASSERT_EQ(seg.device().scanner().transfer_checksum(), rs4::scanner::transfer_checksum(plant));
+  seg.power_on();
+  ASSERT_TRUE(seg.run_until([&] { return seg.in_data_exchange(); }, 5s));
+  ASSERT_TRUE(await_request());
+  const int before = records;
+  ASSERT_TRUE(run_sync());
+  EXPECT_EQ(sync.outputs(), FbOutputs{}) << std::hex << sync.outputs().error_number_fb;
+  // a download (BEGIN, 9 chunks, COMMIT, IDENTIFY again ...) takes far more records than the
+  // release at once of a consistent device (98, IDENTIFY, 99: 6 records plus polls)
+  EXPECT_GT(records - before, 30);
+  const auto history = archive->history({"bus", 4}).value();
+  ASSERT_EQ(history.size(), 2U);
+  const auto current = archive->current({"bus", 4}).value();
+  EXPECT_EQ(current.version.serial_number, std::to_string(0x54321));
+  EXPECT_EQ(current.version.source, storage::VersionSource::kDownload);
+}
+
 // Scenario 2 [RS4 manual §7.1, §7.2]: a set changed through the PC adapter is uploaded when the
 // adapter is removed; it replaces the current set, the history keeps the old one.
 TEST_F(DeviceSync, ParameterChangeThroughThePcAdapterIsUploaded) {
@@ -353,6 +425,65 @@ TEST_F(DeviceSync, LinkLossMidDownloadLeavesFactorySettingsAndTheRetryRestores) 
   ASSERT_TRUE(run_sync());
   EXPECT_EQ(sync.outputs(), FbOutputs{}) << std::hex << sync.outputs().error_number_fb;
   EXPECT_EQ(seg.device().scanner().transfer_checksum(), rs4::scanner::transfer_checksum(stored));
+}
+
+// Cuts the link between the master and station 4 both ways until seg.bus().clear_faults().
+void cut_link(rs4::device::Rs4Segment& seg) {
+  dp::link::Fault lost;
+  lost.kind = dp::link::FaultKind::kDrop;
+  lost.count = 0;  // until cleared
+  lost.to = 4;
+  seg.bus().inject(lost);
+  lost.to.reset();
+  lost.from = 4;
+  seg.bus().inject(lost);
+}
+
+// What `cli_rs232_scenario2` met on a loaded machine, on the manual clock: first commissioning
+// (nothing stored), the set changed through the PC adapter, the adapter removed, and the link lost
+// during the upload. [RS4 manual §6.4] "Schlägt entweder der Upload oder der Download fehl, so wird
+// der RS4/PROFIsafe auf seine Werkeinstellung zurück gesetzt. Dieses wird an den Proxy-FB gemeldet.
+// Der Anwender muss den RS4/PROFIsafe über RS4soft neu parametrieren": the RS4 rolls back, so the
+// retry has nothing to upload and ends like a first commissioning (98, IDENTIFY, 99; idle with
+// CONFIG_SET_TO_DEFAULT = 1) [docs/decisions.md#rs4-failed-upload-rolls-back]. The way out is the
+// manual's: the user parametrises again, and that removal uploads.
+TEST_F(DeviceSync, LinkLostDuringTheUploadAfterRemovalRollsBackAsTheManualSays) {
+  boot(rs4::scanner::factory_default());
+  ASSERT_TRUE(run_sync());
+  ASSERT_TRUE(sync.outputs().config_set_to_default);  // first commissioning
+  const auto site = set_with_response_steps(7);
+  parametrise_on_site(site);
+  ASSERT_TRUE(await_request(5s));
+  ASSERT_EQ(seg.device().adapter().proxy_session().reason(),
+            rs4::protocol::SyncReason::kPcAdapterRemoved);
+  ASSERT_TRUE(run_sync(200s, Step::kUpload1));
+  ASSERT_TRUE(sync.active());
+  cut_link(seg);
+  ASSERT_TRUE(drive(120s));
+  EXPECT_NE(sync.outputs().error_number_fb, 0);
+  EXPECT_TRUE(sync.outputs().config_set_to_default);
+  seg.run_for(3s);  // the station's DP watchdog runs out: it leaves data exchange
+  EXPECT_FALSE(seg.device().adapter().view().connected);
+  EXPECT_TRUE(seg.device().scanner().factory_settings()) << "the failed upload rolled back";
+  EXPECT_FALSE(archive->current({"bus", 4})) << "nothing stored";
+  seg.bus().clear_faults();
+  ASSERT_TRUE(seg.run_until([&] { return seg.in_data_exchange(); }, 10s));
+  ASSERT_TRUE(await_request());
+  EXPECT_EQ(seg.device().adapter().proxy_session().reason(), rs4::protocol::SyncReason::kRetry);
+  seg.run_for(6s);  // the retry delay
+  const int before = records;
+  ASSERT_TRUE(run_sync());
+  EXPECT_EQ(sync.outputs().error_number_fb, 0) << std::hex << sync.outputs().error_number_fb;
+  EXPECT_TRUE(sync.outputs().config_set_to_default) << "reported to the Proxy-FB";
+  EXPECT_LT(records - before, 20) << "begin, identify, end: no upload";
+  EXPECT_FALSE(archive->current({"bus", 4})) << "still nothing stored";
+  parametrise_on_site(site);  // "Der Anwender muss … neu parametrieren"
+  ASSERT_TRUE(await_request(5s));
+  ASSERT_TRUE(run_sync());
+  EXPECT_EQ(sync.outputs(), FbOutputs{}) << std::hex << sync.outputs().error_number_fb;
+  const auto current = archive->current({"bus", 4});
+  ASSERT_TRUE(current);
+  EXPECT_EQ(current.value().set.blob, rs4::scanner::encode_for_transfer(site));
 }
 
 // A user command while the proxy syncs aborts the sync ([RS4 manual §5.2]: the user must watch

@@ -151,14 +151,6 @@ TEST_F(Acyclic, AliveTelegramCarriesTheOptionBytes) {
   EXPECT_EQ(rig.read_answer(), (Bytes{0x14, 0x0B, 0x80, 0x81}));
 }
 
-TEST_F(Acyclic, Class2MayNotUseAdapterCommands) {
-  rig.write(Rig::block({0x90}), 2, AcyclicChannel::kC2, true);
-  const auto a = rig.read_answer(240, AcyclicChannel::kC2);
-  ASSERT_GE(a.size(), 8u);
-  EXPECT_EQ(a[0], 0x53);  // the RS4 does not know 0x90
-  EXPECT_EQ(Bytes(a.end() - 6, a.end()), (Bytes{0x05, 0x01, 0x00, 0x90, 0x00, 0x05}));
-}
-
 TEST_F(Acyclic, OutOfSequenceBlockGives2A0B) {
   rig.write({0x00, 0x05, 0x00, 0x01, 0x90});  // block 1 without block 0
   EXPECT_EQ(rig.adapter.error_memory().last_error().uc2_error, 0x2A0B);

@@ -251,11 +251,15 @@ TEST_F(ProxyCommands, Class2ReadDuringASyncAbortsIt) {
   EXPECT_EQ(rig.adapter.error_memory().last_error().uc2_error, 0x2B01);
 }
 
+// [docs/decisions.md#rs4-class2-adapter-commands]: the adapter refuses a class 2 master's 98 and
+// 99 with 93 01 code (table 5.2-3); nothing starts or ends, the RS4 sees nothing.
 TEST_F(ProxyCommands, ProxyCommandsAreClass1Only) {
-  const auto a = command(rig, {0x98}, AcyclicChannel::kC2);
-  ASSERT_GE(a.size(), 8U);
-  EXPECT_EQ(a[0], 0x53);  // the RS4 does not know 0x98
+  EXPECT_EQ(command(rig, {0x98}, AcyclicChannel::kC2), (Bytes{0x93, 0x01, 0x98}));
   EXPECT_EQ(rig.adapter.proxy_phase(), ProxyPhase::kRequested);
+  EXPECT_EQ(command(rig, {0x99, 0x00, 0x00, 0x00}, AcyclicChannel::kC2),
+            (Bytes{0x93, 0x01, 0x99}));
+  EXPECT_EQ(rig.adapter.proxy_phase(), ProxyPhase::kRequested);
+  EXPECT_EQ(rig.adapter.counters().rs4_commands, 0u);
 }
 
 TEST_F(ProxyCommands, LinkLossDuringADownloadResetsToFactorySettings) {

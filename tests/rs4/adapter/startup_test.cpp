@@ -105,6 +105,66 @@ TEST(Startup, PcAdapterAttachedAtStartup_NoProxyRequestOssdFollowsRs4) {
   EXPECT_TRUE(rig.host_input() & kInputProxyRequest);
 }
 
+// [RS4 manual §7.1.2] "Das Proxy-Request-Bit wird nicht gesetzt solange der PC-Adapter
+// angeschlossen bleibt … Erst wenn der PC-Adapter abgenommen wird, setzt der PROFIsafe-Adapter das
+// Proxy-Request-Bit": a pending bit 2 drops when the PC adapter is attached, stays 0 while it is
+// (also when a sync could be asked for: no 98 starts one) and comes back at its removal.
+TEST(Startup, PcAdapterAttachedWithdrawsAPendingProxyRequest) {
+  Rig rig;
+  rig.start();
+  rig.run(31s);
+  ASSERT_TRUE(rig.host_input() & kInputProxyRequest);
+  rig.adapter.attach_pc_adapter(rig.now);
+  rig.run(100ms);
+  EXPECT_FALSE(rig.host_input() & kInputProxyRequest);
+  EXPECT_TRUE(rig.host_input() & kInputRs232Active);
+  EXPECT_EQ(rig.adapter.proxy_sync_started(rig.now), AdapterApiError::kNoSyncRequested);
+  rig.adapter.power_cycle(rig.now);  // attached through a power cycle: still no request
+  rig.start(/*power=*/false);
+  rig.run(31s);
+  EXPECT_FALSE(rig.host_input() & kInputProxyRequest);
+  rig.adapter.detach_pc_adapter(rig.now);
+  rig.run(100ms);
+  EXPECT_TRUE(rig.host_input() & kInputProxyRequest);
+  EXPECT_EQ(rig.adapter.proxy_session().reason(), protocol::SyncReason::kPcAdapterRemoved);
+}
+
+// Table 5.1-1 bit 2 "Vor dem ersten sowie während des Parameterabgleichs ist das OSSD-Bit auf 0
+// gesetzt" against [RS4 manual §7.1.2] "Beim Abnehmen wird immer der automatische
+// Parameterabgleich angefordert. Das OSSD-Bit wird davon nicht beeinflusst solange bei dem
+// Parameterabgleich keine Fehler auftreten" [docs/decisions.md#rs4-ossd-during-a-later-sync]: with
+// Proxy-Enable 1 the first sync holds bit 7 at 0 and bit 4 at 1 throughout; the sync after the PC
+// adapter's removal leaves bit 7 at 1 and bit 4 at 0 throughout (sampled every cycle).
+TEST(Startup, FirstSyncHoldsTheOssdBitTheSyncAfterRemovalDoesNot) {
+  Rig rig;
+  rig.out_byte = 0x41;  // Proxy-Enable 1, field pair 1
+  rig.start();
+  rig.run(31s);
+  ASSERT_FALSE(rig.adapter.proxy_sync_started(rig.now));
+  for (int i = 0; i < 100; ++i) {  // 2 s of the first sync
+    rig.run(20ms);
+    ASSERT_EQ(rig.host_input() & (kInputOssd | kInputOperatingState), kInputOperatingState) << i;
+  }
+  ASSERT_FALSE(rig.adapter.proxy_sync_succeeded(rig.now));
+  rig.restart_pulse();  // the start interlock of the RS4 [RS4 manual §4.3]
+  ASSERT_TRUE(rig.ossd());
+  rig.adapter.attach_pc_adapter(rig.now);
+  rig.run(100ms);
+  rig.adapter.detach_pc_adapter(rig.now);
+  rig.run(100ms);
+  ASSERT_TRUE(rig.host_input() & kInputProxyRequest);
+  ASSERT_FALSE(rig.adapter.proxy_sync_started(rig.now));  // the upload of the site's set
+  for (int i = 0; i < 100; ++i) {
+    rig.run(20ms);
+    ASSERT_EQ(rig.host_input() & (kInputOssd | kInputOperatingState | kInputProxyRequest),
+              kInputOssd)
+        << i;
+  }
+  ASSERT_FALSE(rig.adapter.proxy_sync_succeeded(rig.now));
+  rig.run(100ms);
+  EXPECT_TRUE(rig.ossd());
+}
+
 TEST(Startup, AttachDuringSyncSwitchesThroughOnlyAfterTheSync) {
   Rig rig;
   rig.start();

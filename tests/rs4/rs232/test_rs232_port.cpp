@@ -1,7 +1,10 @@
 // The RS232 port's behaviour on the manual clock: the 0x23 stream period, the line-time
 // skip, the acknowledge and password rules, bad input and the detached port (docs/rs232.md).
 #include "rs232_fixture.h"
+#include "rs4/protocol/rs232.h"
+#include "rs4/protocol/telegram.h"
 #include "rs4/rs232/rs232_client.h"
+#include "tests/rs4/adapter/adapter_rig.h"
 
 #include <gtest/gtest.h>
 
@@ -148,6 +151,40 @@ TEST(Rs232Port, UnknownCommandPutsTheRs4IntoItsErrorStateAsOverProfibus) {
   EXPECT_EQ(f.adapter.error_memory().last_error().uc2_error, 0x0501);
   EXPECT_EQ(f.port.counters().error_telegrams, 0U) << "no second 0x53 beside the event";
   EXPECT_EQ(f.port.counters().events, 1U);
+}
+
+// One RS4 behind both paths [docs/decisions.md#rs4-one-command-set]: a malformed command (option
+// bytes that do not decode, data after a command that takes none) is answered alike over
+// PROFIBUS and RS232, 0x53 with 0x0504 (bad data), the command byte and function 0x0005; the RS4
+// keeps measuring on both. Until this change PROFIBUS took each of them for an unknown command
+// (0x0501) and put the RS4 into its error state.
+TEST(Rs232Port, MalformedCommandsAreAnsweredAlikeOverProfibusAndRs232) {
+  const std::vector<Bytes> bodies{
+      {0x14, 0x00},        // OPT1 announces 0 option bytes
+      {0x14, 0x01, 0x00},  // COM_CMD_ALIVE with a data byte
+      {0x24, 0x01, 0x07},  // request one scan with a data byte
+      {0x42, 0x81},        // an unknown code whose OPT1 has the reserved bit 7 set
+  };
+  Streaming f;
+  (void)f.feed(encode_stream_control(false).value());
+  adapter::testing::Rig rig;
+  rig.start();
+  rig.run(31s);
+  for (const auto& body : bodies) {
+    const auto frames = f.feed(protocol::frame_rs232(body).value());
+    ASSERT_EQ(frames.size(), 1U) << int{body[0]};
+    const auto rs232 = std::get<protocol::ErrorTelegram>(PortFixture::decode(frames[0]));
+    rig.write(adapter::testing::Rig::block(body));
+    const auto answer = rig.read_answer();
+    const auto profibus = protocol::decode_telegram(answer);
+    ASSERT_TRUE(profibus) << int{body[0]};
+    const auto& e = std::get<protocol::ErrorTelegram>(profibus.value());
+    const protocol::ErrorReport expected{0x0504, body[0], 0x0005};
+    EXPECT_EQ(rs232.report, expected) << int{body[0]};
+    EXPECT_EQ(e.report, expected) << int{body[0]};
+  }
+  EXPECT_EQ(f.adapter.scanner().status().state, scanner::ScannerState::kMeasuring);
+  EXPECT_EQ(rig.adapter.scanner().status().state, scanner::ScannerState::kMeasuring);
 }
 
 TEST(Rs232Port, MalformedFramesGetSilenceAndNeverDisturbTheNext) {
