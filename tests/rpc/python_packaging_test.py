@@ -38,7 +38,10 @@ with tempfile.TemporaryDirectory() as tmp:
         check(member in names, f"{member} not in {wheel}: {names}")
     check(not any(n.startswith(("rs4sim_build_backend", "build_wheel")) for n in names), names)
 
-    # 2. The source folder: refused before any build, with where to go.
+    # 2. The source folder: refused before any build, with where to go (and nothing written
+    # into it: no bytecode of the backend).
+    bytecode = os.path.join(source, "__pycache__")
+    had_bytecode = os.path.exists(bytecode)
     src = subprocess.run([sys.executable, "-m", "pip", "wheel", "--no-deps", "--no-index",
                           "--no-cache-dir", "--wheel-dir", os.path.join(tmp, "src"), source],
                          capture_output=True, text=True, env=env)
@@ -47,7 +50,7 @@ with tempfile.TemporaryDirectory() as tmp:
     check("is the rs4sim package's source folder" in out, out)
     check("cmake --build build --target rs4sim_python_wheel" in out, out)
     check("build/python/dist/rs4sim-*.whl" in out, out)
-    check(not os.path.exists(os.path.join(source, "__pycache__")), "bytecode left in python/")
+    check(had_bytecode or not os.path.exists(bytecode), "bytecode left in python/")
 
     # 3. A Python with neither setuptools nor wheel: the backend names Debian's python.
     bare = os.path.join(tmp, "bare")
