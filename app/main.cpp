@@ -1,5 +1,6 @@
 // rs4sim — the command-line entry point. See app/cli/command.h for how sub-commands plug in.
 #include "app/cli/command.h"
+#include "app/runtime/cli_words.h"
 #include "app/runtime/run_session.h"
 
 #include <algorithm>
@@ -24,6 +25,8 @@ int main(int argc, char** argv) {
       "rs4sim — virtual PROFIBUS-DP/PROFIsafe slave behaving like a Leuze ROTOSCAN "
       "RS4/PROFIsafe, with a class 1 master and tools"};
   cli.require_subcommand(1);
+  // Every parse error in the project's words (app/runtime/cli_words.h), with "did you mean".
+  cli.failure_message(usage_failure);
   cli.set_version_flag("--version", "rs4sim 0.1.0");
 
   auto& registry = command_registry();
@@ -42,14 +45,10 @@ int main(int argc, char** argv) {
 
   // An unknown first word is named (CLI11 alone would only say that a subcommand is required).
   if (argc > 1 && argv[1][0] != '-') {
-    const std::string word = argv[1];
-    const bool known = std::any_of(registry.begin(), registry.end(),
-                                   [&](const CommandInfo& c) { return c.name == word; });
-    if (!known) {
-      std::string names;
-      for (const auto& c : registry) names += (names.empty() ? "" : ", ") + c.name;
-      std::cerr << "rs4sim: unknown command '" << word << "'; the commands are " << names
-                << " (rs4sim --help)\n";
+    std::vector<std::string> names;
+    for (const auto& c : registry) names.push_back(c.name);
+    if (std::find(names.begin(), names.end(), argv[1]) == names.end()) {
+      std::cerr << unknown_command(argv[1], names) << "\n";
       return 2;
     }
   }
@@ -57,7 +56,7 @@ int main(int argc, char** argv) {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     // --help/--version exit 0; every parse error (unknown option, bad or missing value) is
-    // a usage error: CLI11's message, exit 2 like every other usage error.
+    // a usage error: its message (usage_failure), exit 2 like every other usage error.
     return cli.exit(e) == 0 ? 0 : 2;
   }
   try {

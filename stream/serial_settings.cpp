@@ -63,10 +63,24 @@ bool format_kept(const termios& back, const LineSettings& line) {
   return ((back.c_cflag & CSTOPB) != 0) == (line.stop_bits == 2);
 }
 
-// Real adapter: throw. Pseudo-terminal: note and carry on.
-void refuse(SerialSetup& setup, LinkError e, const std::string& text, const LogFn& log) {
+// Real adapter: throw. Pseudo-terminal: remember that it did not take everything (one note at
+// the end, pty_note), and carry on.
+void refuse(const SerialSetup& setup, bool& refused, LinkError e, const std::string& text) {
   if (!setup.is_pty) throw LinkException(e, text);
-  const std::string note = text + " (pseudo-terminal: no physical line, carrying on)";
+  refused = true;
+}
+
+// A pseudo-terminal carries bytes between two programs: it has no wire, so no parity bit and
+// no bit rate, and Linux does not keep (or, on some kernels, refuses with EINVAL) what has no
+// meaning there. That is no fault: one note, in words that do not read as an error.
+void pty_note(SerialSetup& setup, bool refused, const std::string& name, const std::string& format,
+              std::uint32_t baud, const LogFn& log) {
+  if (!refused) return;
+  const std::string note = name +
+                           ": a pseudo-terminal has no wire, so no parity bit and no bit "
+                           "rate: " +
+                           format + " at " + std::to_string(baud) +
+                           " bit/s is the two ends' agreement, not a setting; nothing to fix";
   setup.notes.push_back(note);
   if (log) log(note);
 }
@@ -114,15 +128,16 @@ SerialSetup configure_serial(int fd, const LineSettings& line, const std::string
   const auto speed = standard_speed(line.baud);
   if (speed) cfsetspeed(&tio, *speed);
   const std::string format = format_text(line);
+  bool refused = false;  // a pty did not take everything
   if (tcsetattr(fd, TCSANOW, &tio) != 0) {
-    refuse(setup, LinkError::kAdapterRefusedFormat,
-           name + ": tcsetattr " + format + " failed: " + std::strerror(errno), log);
+    refuse(setup, refused, LinkError::kAdapterRefusedFormat,
+           name + ": tcsetattr " + format + " failed: " + std::strerror(errno));
   }
   if (!speed) {
     if (const int err = detail::set_custom_baud(fd, line.baud); err != 0) {
-      refuse(setup, LinkError::kAdapterRefusedBaudRate,
-             name + ": " + std::to_string(line.baud) + " bit/s not accepted: " + std::strerror(err),
-             log);
+      refuse(
+          setup, refused, LinkError::kAdapterRefusedBaudRate,
+          name + ": " + std::to_string(line.baud) + " bit/s not accepted: " + std::strerror(err));
     }
   }
   termios back{};
@@ -130,7 +145,7 @@ SerialSetup configure_serial(int fd, const LineSettings& line, const std::string
     throw LinkException(LinkError::kNotATerminal, name + ": " + std::strerror(errno));
   }
   if (!format_kept(back, line)) {
-    refuse(setup, LinkError::kAdapterRefusedFormat, name + ": " + format + " not kept", log);
+    refuse(setup, refused, LinkError::kAdapterRefusedFormat, name + ": " + format + " not kept");
   }
   const std::uint32_t actual = detail::read_baud(fd);
   setup.actual_baud = actual;
@@ -146,11 +161,11 @@ SerialSetup configure_serial(int fd, const LineSettings& line, const std::string
     setup.notes.push_back(warning);
     if (log) log(warning);
   } else if (actual != line.baud) {
-    refuse(setup, LinkError::kAdapterRefusedBaudRate,
+    refuse(setup, refused, LinkError::kAdapterRefusedBaudRate,
            name + ": asked for " + std::to_string(line.baud) + " bit/s, driver reports " +
-               std::to_string(actual) + " bit/s",
-           log);
+               std::to_string(actual) + " bit/s");
   }
+  pty_note(setup, refused, name, format, line.baud, log);
   return setup;
 }
 

@@ -4,6 +4,7 @@
 #include "app/cli/command.h"
 #include "app/devices/device_registry.h"
 #include "app/runtime/archive_path.h"
+#include "app/runtime/cli_words.h"
 #include "app/runtime/grpc_cli.h"
 #include "app/runtime/run_session.h"
 #include "rpc/server.h"
@@ -45,7 +46,7 @@ const CommandRegistration kDemo(
     [](CLI::App& cmd) {
       auto device = std::make_shared<std::string>("rs4");
       cmd.add_option("--device", *device, "rs4 (default) | generic | gridscan | metron | polaris")
-          ->check(CLI::IsMember(device_names()));
+          ->check(one_of("a device", device_names()));
       auto options = std::make_shared<DemoOptions>();
       add_capture_options(cmd, options->capture);
       cmd.add_option(

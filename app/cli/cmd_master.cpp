@@ -253,7 +253,7 @@ Action setup(CLI::App& cmd) {
                  "memory: boot time of the simulated RS4s in ms (default 30000)")
       ->check(CLI::Range(0, 600000));
   cmd.add_flag("--json", o->service.json, "one JSON object per line for every event");
-  add_link_options(cmd, l, "the RS4's process");
+  add_link_options(cmd, l, LinkCommand::kMaster);
   add_grpc_options(cmd, l.grpc,
                    "the Proxy and Archive services, GsdMaster with --gsd-slave (real-time links)");
   return [o]() -> int { return run(*o); };

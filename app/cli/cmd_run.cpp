@@ -18,12 +18,14 @@
 // With --link pty the first line on stdout is the pty's slave path for the DP master (or
 // the byte device's client).
 #include "app/cli/command.h"
+#include "app/cli/link_cli.h"
 #include "app/devices/bus_file.h"
 #include "app/devices/device_options.h"
 #include "app/runtime/grpc_cli.h"
-#include "app/cli/link_cli.h"
 #include "app/runtime/shell.h"
+#include "dp/pdu/sap.h"
 
+#include <charconv>
 #include <iostream>
 #include <memory>
 #include <vector>
@@ -64,14 +66,37 @@ void add_byte_device_options(CLI::App& cmd, RunOptions& o) {
                  "gridscan: the mains at start: on (default: the power-up messages at once) | "
                  "off (SIGUSR1 or GridScan.SetPower powers it up, e.g. once the controller has "
                  "opened the pty)")
-      ->check(CLI::IsMember({"on", "off"}));
+      ->check(one_of("a mains state", {"on", "off"}));
   cmd.add_option("--format", d.format,
                  "byte devices: character format override, e.g. 8E1 (--baud: the bit rate)");
   cmd.add_option("--rs232", d.rs232,
                  "rs4: serve the RS232 interface behind the PC adapter: pty | serial:DEVICE[@BAUD] "
                  "(SIGUSR1 attaches the PC adapter, SIGUSR2 removes it)");
   cmd.add_option("--pc-adapter", d.pc_adapter, "rs4: the PC adapter at start: attached | detached")
-      ->check(CLI::IsMember({"attached", "detached"}));
+      ->check(one_of("a PC adapter state", {"attached", "detached"}));
+}
+
+// A DP slave's address in operation, 0..125 [IEC 61158-4-3 addresses, SAPs]: 126 is the
+// delivery address that only Set_Slave_Add moves a slave from (the RS4's GSD has
+// Set_Slave_Add_supp = 0, so its switches' 126 never reaches data exchange), 127 the broadcast
+// address [docs/decisions.md#rs4-address-126].
+CLI::Validator slave_address() {
+  return CLI::Validator(
+      [](std::string& value) -> std::string {
+        const int max = dp::pdu::sap::kMaxSlaveAddress;
+        int a = -1;
+        const char* end = value.data() + value.size();
+        const auto [p, ec] = std::from_chars(value.data(), end, a);
+        if (ec != std::errc{} || p != end) {
+          return "'" + value + "' is not a number 0.." + std::to_string(max);
+        }
+        if (a >= 0 && a <= max) return {};
+        return value + " is outside 0.." + std::to_string(max) +
+               " (a DP slave in operation; 126 is the delivery address, which only "
+               "Set_Slave_Add leaves, and the RS4 has none; 127 and 255 must not be used, "
+               "[RS4 manual §4.5])";
+      },
+      "0.." + std::to_string(dp::pdu::sap::kMaxSlaveAddress));
 }
 
 Action setup(CLI::App& cmd) {
@@ -80,10 +105,11 @@ Action setup(CLI::App& cmd) {
   LinkOptions& l = o->link;
   cmd.add_option("--device", o->device,
                  joined(device_names()) + " (default rs4; generic when --ident/--cfg are given)")
-      ->check(CLI::IsMember(device_names()));
+      ->check(one_of("a device", device_names()));
   cmd.add_option("--address", o->addresses,
-                 "FDL address 0..125 (rs4: 0..126, default 4; repeat it for several RS4s on "
-                 "one real-time link)");
+                 "FDL address 0..125 (rs4: default 4; repeat it for several RS4s on one "
+                 "real-time link)")
+      ->check(slave_address());
   cmd.add_option("--ident", d.ident, "generic: Ident_Number, e.g. 0x1234");
   cmd.add_option("--cfg", d.cfg, "generic: configuration identifiers in hex, e.g. \"10 20\"");
   cmd.add_option("--gsd", d.gsd,
@@ -113,7 +139,7 @@ Action setup(CLI::App& cmd) {
                  "rs4: the PROFIsafe adapter's response time in ms, 0..1000 (default 10, as "
                  "the manual's technical data)");
   add_byte_device_options(cmd, *o);
-  add_link_options(cmd, l, "the master");
+  add_link_options(cmd, l, LinkCommand::kRun);
   add_real_line_options(cmd, l);
   add_grpc_options(cmd, l.grpc,
                    "with --link memory the simulated clock moves only through the API");

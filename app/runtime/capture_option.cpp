@@ -1,5 +1,7 @@
 #include "app/runtime/capture_option.h"
 
+#include "app/runtime/cli_words.h"
+
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -7,15 +9,16 @@
 
 namespace rs4sim::app {
 
-void add_capture_options(CLI::App& cmd, CaptureOptions& options) {
+void add_capture_options(CLI::App& cmd, CaptureOptions& options, bool byte_devices) {
   cmd.add_option("--capture", options.file,
-                 "write every telegram (a byte device: every frame, with its direction) to "
-                 "this pcap file (open it in Wireshark with tools/wireshark/rs4sim.lua)");
-
+                 std::string("write every telegram") +
+                     (byte_devices ? " (a byte device: every frame, with its direction)" : "") +
+                     " to this pcap file (open it in Wireshark with tools/wireshark/rs4sim.lua)");
   cmd.add_option("--capture-linktype", options.linktype,
-                 "user0 (LINKTYPE_USER0 147, default, the project's dissector) or 257 "
-                 "(LINKTYPE_PROFIBUS_DL)")
-      ->check(CLI::IsMember({"user0", "257"}));
+                 std::string("user0 (LINKTYPE_USER0 147, default, the project's dissector) or 257 "
+                             "(LINKTYPE_PROFIBUS_DL)") +
+                     (byte_devices ? "; a byte device's file is always LINKTYPE_USER1" : ""))
+      ->check(one_of("a capture link type", {"user0", "257"}));
 }
 
 void add_rs232_capture_option(CLI::App& cmd, CaptureOptions& options) {

@@ -20,7 +20,8 @@ struct CaptureOptions {
   std::string rs232_file;          // --capture-rs232: the RS4's RS232 port (line_capture.h)
 };
 
-void add_capture_options(CLI::App& cmd, CaptureOptions& options);
+// `byte_devices`: the command may run a byte device, whose --capture records frames.
+void add_capture_options(CLI::App& cmd, CaptureOptions& options, bool byte_devices = true);
 // --capture-rs232 FILE (a real-time run of the RS4 with --rs232).
 void add_rs232_capture_option(CLI::App& cmd, CaptureOptions& options);
 

@@ -178,7 +178,7 @@ std::vector<dp::master::SlaveEntry> GsdMasterSlaves::entries(
   return out;
 }
 
-void GsdMasterSlaves::start(const MasterReport& report, dp::TimePoint now) {
+void GsdMasterSlaves::start(const MasterReport& report, dp::TimePoint now) const {
   for (const auto& s : slaves_) {
     const auto& spec = s.spec;
     std::string names;

@@ -64,7 +64,7 @@ class GsdMasterSlaves {
       std::chrono::milliseconds watchdog) const;
 
   // Once, before the link starts: one "gsd" line per slave (file, ident, modules).
-  void start(const MasterReport& report, dp::TimePoint now);
+  void start(const MasterReport& report, dp::TimePoint now) const;
   // After a link call: a "dp" line when a slave's DP state changed, an "inputs" line when the
   // inputs of its last Data_Exchange changed, a "diagnosis" line when the GSD's Unit_Diag texts
   // for its last Slave_Diag changed (gsd::unit_diag_texts).

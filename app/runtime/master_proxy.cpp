@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <variant>
 
 namespace rs4sim::app {
@@ -36,6 +37,20 @@ std::string hex4(std::uint16_t v) {
   std::string s = "0x";
   for (int shift = 12; shift >= 0; shift -= 4) s += kDigits[(v >> shift) & 0xFU];
   return s;
+}
+
+// The read that repeats `first` to compare the two answers ([RS4 manual §5.3] adapter errors
+// 0x2B2x; docs/proxy.md "Every read is repeated and compared"), if `first` is such a read.
+std::optional<proxy::Step> compare_read_of(proxy::Step first) {
+  using proxy::Step;
+  switch (first) {
+    case Step::kIdentify1: return Step::kIdentify2;
+    case Step::kUpload1: return Step::kUpload2;
+    case Step::kReidentify1: return Step::kReidentify2;
+    case Step::kVerifyIdentify1: return Step::kVerifyIdentify2;
+    case Step::kVerifyUpload1: return Step::kVerifyUpload2;
+    default: return std::nullopt;
+  }
 }
 
 }  // namespace
@@ -136,30 +151,40 @@ void ProxyPlugin::report_changes(MasterReport& report, dp::TimePoint now) {
     const bool outputs_changed = !(last.outputs == s.outputs) || last.running != s.running;
     const bool step_changed = last.progress.step != s.progress.step;
     if (!outputs_changed && !step_changed) continue;
-    const auto& o = s.outputs;
-    std::string text = std::string(proxy::to_string(s.progress.step));
-    if (s.progress.bytes_total > 0) {
-      text += " " + progress_bar(s.progress.bytes_done, s.progress.bytes_total) + " " +
-              std::to_string(s.progress.bytes_done) + "/" + std::to_string(s.progress.bytes_total) +
-              " bytes";
-    }
-    text += std::string(o.fb_busy ? ", FB_BUSY" : "") +
-            (o.config_set_to_default ? ", CONFIG_SET_TO_DEFAULT" : "");
-    if (o.error_number_fb != 0) {
-      text += ", ERROR_NUMBER_FB " + hex4(o.error_number_fb) + ", ERROR_CODE_SFC " +
-              hex4(o.error_code_sfc) + ", ERROR_NUMBER_RS4 " + std::to_string(o.error_number_rs4);
-    }
-    report.custom(now, s.address, "proxy", text,
-                  {{"step", std::string(proxy::to_string(s.progress.step))},
-                   {"bytes_done", static_cast<std::int64_t>(s.progress.bytes_done)},
-                   {"bytes_total", static_cast<std::int64_t>(s.progress.bytes_total)},
-                   {"fb_busy", o.fb_busy},
-                   {"config_set_to_default", o.config_set_to_default},
-                   {"error_number_fb", static_cast<std::int64_t>(o.error_number_fb)},
-                   {"error_code_sfc", static_cast<std::int64_t>(o.error_code_sfc)},
-                   {"error_number_rs4", static_cast<std::int64_t>(o.error_number_rs4)}});
+    // The console names a read once: its compare read (the same request again) is no retry
+    // and no news unless it fails; the JSON lines keep every step.
+    const auto compare = compare_read_of(last.progress.step);
+    const bool quiet = !report.json() && !outputs_changed && compare == s.progress.step;
+    if (!quiet) report_status(report, s, now);
     last = s;
   }
+}
+
+void ProxyPlugin::report_status(MasterReport& report, const proxy::StationStatus& s,
+                                dp::TimePoint now) {
+  const auto& o = s.outputs;
+  std::string text = std::string(proxy::to_string(s.progress.step));
+  if (compare_read_of(s.progress.step)) text += " (read twice, compared)";
+  if (s.progress.bytes_total > 0) {
+    text += " " + progress_bar(s.progress.bytes_done, s.progress.bytes_total) + " " +
+            std::to_string(s.progress.bytes_done) + "/" + std::to_string(s.progress.bytes_total) +
+            " bytes";
+  }
+  text += std::string(o.fb_busy ? ", FB_BUSY" : "") +
+          (o.config_set_to_default ? ", CONFIG_SET_TO_DEFAULT" : "");
+  if (o.error_number_fb != 0) {
+    text += ", ERROR_NUMBER_FB " + hex4(o.error_number_fb) + ", ERROR_CODE_SFC " +
+            hex4(o.error_code_sfc) + ", ERROR_NUMBER_RS4 " + std::to_string(o.error_number_rs4);
+  }
+  report.custom(now, s.address, "proxy", text,
+                {{"step", std::string(proxy::to_string(s.progress.step))},
+                 {"bytes_done", static_cast<std::int64_t>(s.progress.bytes_done)},
+                 {"bytes_total", static_cast<std::int64_t>(s.progress.bytes_total)},
+                 {"fb_busy", o.fb_busy},
+                 {"config_set_to_default", o.config_set_to_default},
+                 {"error_number_fb", static_cast<std::int64_t>(o.error_number_fb)},
+                 {"error_code_sfc", static_cast<std::int64_t>(o.error_code_sfc)},
+                 {"error_number_rs4", static_cast<std::int64_t>(o.error_number_rs4)}});
 }
 
 void ProxyPlugin::submit_write(std::uint8_t address, std::span<const std::uint8_t> record) {

@@ -54,6 +54,7 @@ class ProxyPlugin final : public MasterPlugin, private proxy::RecordChannel {
                  const boost::outcome_v2::std_result<dp::master::Dpv1RequestId>& id);
   void on_cycle(MasterReport& report, dp::TimePoint now);
   void report_changes(MasterReport& report, dp::TimePoint now);
+  void report_status(MasterReport& report, const proxy::StationStatus& s, dp::TimePoint now);
   void publish_changes(dp::TimePoint now);
 
   storage::ParameterArchive& archive_;

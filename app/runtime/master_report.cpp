@@ -1,5 +1,6 @@
 #include "app/runtime/master_report.h"
 
+#include "dp/master/master_error.h"
 #include "rs4/adapter/cyclic_bytes.h"
 #include "rs4/report/json_writer.h"
 #include "rs4/safety/diagnosis.h"
@@ -121,7 +122,7 @@ void MasterReport::json_line(dp::TimePoint now, std::uint8_t address, std::strin
   out_ << "}" << std::endl;
 }
 
-void MasterReport::started(const device::Rs4MasterStation& station, std::string_view link) {
+void MasterReport::started(const device::Rs4MasterStation& station, std::string_view link) const {
   std::string list;
   std::vector<std::int64_t> addresses;
   for (const auto a : station.slave_addresses()) {
@@ -161,8 +162,33 @@ void MasterReport::json_event(const device::Rs4MasterEvent& e, dp::TimePoint now
   }
 }
 
+void MasterReport::explain_lost_slaves(unsigned retries, std::string hint) {
+  retries_ = retries;
+  lost_hint_ = std::move(hint);
+}
+
+void MasterReport::note_dp_state(const device::DpStateChanged& e, dp::TimePoint now) {
+  bool& was = in_data_exchange_[e.address];
+  // [IEC 61158-6-3 slave supervision]: no reply within TSL, then max_retry_limit retries.
+  const bool lost = was && !e.data_exchange() &&
+                    e.reason == dp::master::make_error_code(dp::master::MasterError::kNoAnswer);
+  was = e.data_exchange();
+  if (!lost) return;
+  const std::string retries = std::to_string(retries_) + (retries_ == 1 ? " retry" : " retries");
+  if (json_) {
+    json_line(now, e.address, "lost", {{"retries", std::int64_t{retries_}}, {"hint", lost_hint_}});
+    return;
+  }
+  out_ << seconds(now) << " s  RS4 " << int(e.address) << " lost: no reply after " << retries
+       << (lost_hint_.empty() ? "" : "; " + lost_hint_) << std::endl;
+}
+
 void MasterReport::events(const std::vector<device::Rs4MasterEvent>& events,
                           const device::Rs4MasterStation& station, dp::TimePoint now) {
+  for (const auto& e : events) {
+    if (const auto* dp_state = std::get_if<device::DpStateChanged>(&e))
+      note_dp_state(*dp_state, now);
+  }
   if (json_) {
     for (const auto& e : events) json_event(e, now);
     return;

@@ -64,6 +64,7 @@ MasterService::MasterService(const MasterServiceOptions& options, LinkKind link,
       forwarder_(std::make_unique<Forwarder>(*this)),
       link_(link),
       json_(options.json),
+      lost_hint_(options.lost_hint),
       out_(out) {}
 
 MasterService::~MasterService() = default;
@@ -72,10 +73,17 @@ std::vector<dp::Station*> MasterService::stations() { return {forwarder_.get()};
 
 void MasterService::start(dp::TimePoint now) {
   last_now_ = now;
+  started_at_ = now;
   report_.emplace(out_, json_, now);
-  report_->started(station_, link_name(link_));
-  gsd_.start(*report_, now);
+  report_->explain_lost_slaves(station_.master().config().bus.max_retry_limit, lost_hint_);
   for (auto* p : plugins_) p->start(station_, now);
+}
+
+void MasterService::announce() const {
+  if (announced_ || !report_) return;
+  announced_ = true;
+  report_->started(station_, link_name(link_));
+  gsd_.start(*report_, started_at_);
 }
 
 std::string MasterService::describe() const {
@@ -95,6 +103,7 @@ std::string MasterService::describe() const {
 void MasterService::print_status(std::ostream& out, const dp::link::StationCounters& link) const {
   (void)out, (void)link;  // the report writes to the service's stream
   if (!report_) return;
+  announce();  // a run stopped before its loop ran
   report_->stopped(station_, last_now_);
   gsd_.stopped(station_.master(), *report_, last_now_);
 }
@@ -108,6 +117,7 @@ bool MasterService::healthy() const {
 }
 
 void MasterService::dispatch(dp::TimePoint now) {
+  announce();
   last_now_ = now;
   events_.clear();
   station_.take_events(events_);
@@ -177,11 +187,32 @@ void MasterService::stop_services() {
   for (auto* p : plugins_) p->stop_services();
 }
 
+std::string lost_slave_hint(const LinkOptions& link) {
+  // Seen on a busy 2-core machine: a slave process on a pty read nothing for 79 ms, then seven
+  // telegrams at once; with --rt-priority 50 on it, no losses (docs/serial.md).
+  const bool pty = link.link == LinkKind::kPty || link.port.rfind("/dev/pts/", 0) == 0;
+  if (pty) {
+    return "on a loaded machine a slave process on a pty may be starved of CPU time: run it "
+           "with --rt-priority 50 (docs/serial.md)";
+  }
+  if (link.link == LinkKind::kUdp) {
+    return "a slave process on a loaded machine may be starved of CPU time: run it with "
+           "--rt-priority 50 (docs/serial.md)";
+  }
+  if (link.link == LinkKind::kSerial) {
+    return "check the line (wiring, termination, rate) and that the slave answers within the "
+           "slot time (docs/serial.md)";
+  }
+  return {};
+}
+
 int run_master(const MasterServiceOptions& options, const LinkOptions& link, std::ostream& out,
                const std::vector<MasterPlugin*>& plugins) {
   validate(link);
   if (link.link == LinkKind::kMemory) return run_memory(options, link, out, plugins);
-  MasterService service(options, link.link, out);  // outlives the session's server
+  MasterServiceOptions with_hint = options;
+  with_hint.lost_hint = lost_slave_hint(link);
+  MasterService service(with_hint, link.link, out);  // outlives the session's server
   RunSession session(out);
   for (auto* p : plugins) service.add_plugin(*p);
   return run_on_link(session, service, link, out);

@@ -31,7 +31,15 @@ struct MasterServiceOptions {
   // --link memory simulates them too (GsdStation).
   std::vector<GsdStationSpec> gsd_slaves;
   std::chrono::milliseconds gsd_watchdog{200};  // their Set_Prm DP watchdog
+  // The likely cause the console gives when an RS4 stops answering in data exchange
+  // (MasterReport::explain_lost_slaves); run_master sets it from the link (lost_slave_hint).
+  std::string lost_hint;
 };
+
+// The likely cause of a lost slave on this link: on a pty or UDP (the slave a process on this
+// machine) a starved process; on a serial port the line. Empty on the in-memory bus (the
+// slaves share the master's clock).
+[[nodiscard]] std::string lost_slave_hint(const LinkOptions& link);
 
 class MasterPlugin {
  public:
@@ -82,17 +90,24 @@ class MasterService final : public DeviceInstance {
  private:
   class Forwarder;
   void dispatch(dp::TimePoint now);
+  // The start lines (the master, its RS4s, its GSD slaves), printed once the loop runs: after
+  // the lines of the run's own set-up (the pty path, "grpc:/http: listening on ...",
+  // docs/http.md), which come after start().
+  void announce() const;
 
   GsdMasterSlaves gsd_;  // before station_: its entries configure the master
   rs4::device::Rs4MasterStation station_;
   std::unique_ptr<Forwarder> forwarder_;
   LinkKind link_;
   bool json_;
+  std::string lost_hint_;
   std::ostream& out_;
   std::optional<MasterReport> report_;
   std::vector<MasterPlugin*> plugins_;
   std::vector<rs4::device::Rs4MasterEvent> events_;
   dp::TimePoint last_now_{};
+  dp::TimePoint started_at_{};
+  mutable bool announced_ = false;
 };
 
 // Runs the master side on the link until Ctrl-C / --duration (memory: simulated RS4s and GSD

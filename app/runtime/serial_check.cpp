@@ -26,13 +26,9 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // profirust's tested settings with CH341/FT232R adapters: 30 ms at 19.2k, 8 ms at 93.75k …
-// 500k; the slower rates take the 19.2k setting, the faster ones have none.
-std::optional<double> floor_ms(dp::BaudRate rate) {
-  const std::uint32_t bps = dp::bits_per_second(rate);
-  if (bps <= 45450) return 30.0;
-  if (bps <= 500000) return 8.0;
-  return std::nullopt;
-}
+// 500k; the slower rates take the 19.2k setting, the faster ones (none tested) the 8 ms.
+constexpr std::uint32_t kFastestTested = 500000;
+double floor_ms(dp::BaudRate rate) { return dp::bits_per_second(rate) <= 45450 ? 30.0 : 8.0; }
 
 std::string ms_text(double ms) {
   char b[32];
@@ -55,9 +51,10 @@ std::vector<SlotTimeRow> slot_time_table(std::chrono::nanoseconds worst_turnarou
     // master must see start within TSL [IEC 61158-4-3 UART character].
     const double measured_ms =
         2.0 * static_cast<double>(worst_turnaround.count()) / 1e6 + 11.0 * 1e3 / bps;
-    SlotTimeRow row{rate, std::nullopt, measured_ms, false};
-    if (const auto f = floor_ms(rate); f && *f >= measured_ms) {
-      row.ms = *f;
+    SlotTimeRow row{rate, std::nullopt, measured_ms, false,
+                    dp::bits_per_second(rate) <= kFastestTested};
+    if (floor_ms(rate) >= measured_ms) {
+      row.ms = floor_ms(rate);
       row.floor = true;
     }
     const double bits = std::ceil(row.ms * bps / 1e3 - 1e-9);
@@ -67,19 +64,64 @@ std::vector<SlotTimeRow> slot_time_table(std::chrono::nanoseconds worst_turnarou
   return rows;
 }
 
+std::optional<SlotTimeRow> recommended_rate(const std::vector<SlotTimeRow>& rows) {
+  std::optional<SlotTimeRow> best;
+  for (const SlotTimeRow& r : rows) {
+    if (r.bits && r.tested &&
+        (!best || dp::bits_per_second(r.rate) > dp::bits_per_second(best->rate)))
+      best = r;
+  }
+  return best;
+}
+
+namespace {
+const char* row_source(const SlotTimeRow& r) {
+  if (!r.bits) return "not usable on this line (TSL is at most 16383 bit times)";
+  if (!r.tested) {
+    return r.floor ? "not advised: nothing tested above 500k (8 ms kept as the floor)"
+                   : "not advised: nothing tested above 500k (measured)";
+  }
+  return r.floor ? "profirust's tested setting (above the measurement)"
+                 : "measured: 2 x worst turnaround + 1 character";
+}
+}  // namespace
+
 void print_slot_time_table(std::ostream& out, const std::vector<SlotTimeRow>& rows) {
   out << "slot time to enter (user-defined bus profile; retry limit 2-3):\n"
       << "  rate       TSL bit times  TSL ms    from\n";
   for (const SlotTimeRow& r : rows) {
-    char line[128];
+    char line[160];
     const std::string bits = r.bits ? std::to_string(*r.bits) : "> 16383";
     std::snprintf(line, sizeof line, "  %-9s  %13s  %8s  %s\n", dp::to_string(r.rate).c_str(),
-                  bits.c_str(), ms_text(r.ms).c_str(),
-                  !r.bits   ? "not usable on this line (TSL is at most 16383 bit times)"
-                  : r.floor ? "profirust's tested setting (above the measurement)"
-                            : "measured: 2 x worst turnaround + 1 character");
+                  bits.c_str(), ms_text(r.ms).c_str(), row_source(r));
     out << line;
   }
+  const auto best = recommended_rate(rows);
+  if (!best) {
+    out << "recommended: none; even 9.6k needs more than 16383 bit times with this line\n";
+    return;
+  }
+  out << "recommended: " << dp::to_string(best->rate) << ", TSL " << *best->bits << " bit times ("
+      << ms_text(best->ms)
+      << " ms), retry limit 2-3: the fastest rate with a tested setting that this line "
+         "meets; not 1.5M or faster (untested, and the slot time an engineering tool derives "
+         "from the GSD there is one no PC meets)\n";
+}
+
+std::string nothing_answered_advice(bool pty, const std::string& port, const std::string& baud,
+                                    int address) {
+  const std::string head = "nothing answered on " + port + " at " + baud;
+  if (pty) {
+    return head +
+           ": it is a pseudo-terminal, with no wire and no termination; nothing on its "
+           "other end answered as station " +
+           std::to_string(address) + ": start the slave first (`rs4sim run --address " +
+           std::to_string(address) + " --link pty --baud " + baud +
+           "` prints the path to give as --port) and check --address";
+  }
+  return head +
+         ": check the wiring (A/B), the termination, the station's address (--address) "
+         "and rate, or plug in a loopback";
 }
 
 int serial_check(const SerialCheckOptions& o, std::ostream& out, std::ostream& err) {
@@ -184,10 +226,8 @@ int serial_check(const SerialCheckOptions& o, std::ostream& out, std::ostream& e
   out << "turnaround: " << o.count << " FDL_Status requests to station " << o.address << ": "
       << replies << " replies, " << echoes << " loopback echoes, " << silent << " unanswered\n";
   if (stats.count() == 0) {
-    err << "rs4sim: serial-check: nothing answered on " << o.port << " at " << o.baud
-        << ": check the wiring (A/B), the termination, the station's address (--address) and "
-           "rate, or plug in a loopback"
-        << std::endl;
+    err << "rs4sim: serial-check: "
+        << nothing_answered_advice(setup.is_pty, o.port, o.baud, o.address) << std::endl;
     return 1;
   }
   const auto ms = [](std::int64_t ns) { return ms_text(static_cast<double>(ns) / 1e6); };

@@ -27,15 +27,27 @@ struct SlotTimeRow {
   dp::BaudRate rate;
   std::optional<std::uint32_t> bits;  // nullopt: needs more than 16383 bit times (TSL's limit)
   double ms = 0;                      // the slot time the row asks for
-  bool floor = false;                 // profirust's tested setting decided it, not the measurement
+  bool floor = false;                 // a tested setting decided it, not the measurement
+  bool tested = false;                // profirust tested a setting at this rate or a slower one
+                                      // of its range (up to 500k); faster rates are not advised
 };
 
 // The slot time to enter for each rate: twice the measured worst turnaround plus the reply's
 // first character, and never below profirust's tested settings (TSL 30 ms up to 45.45 kbit/s,
-// tested at 19.2k; 8 ms at 93.75k … 500k; none measured above). Bit times rounded up; above
-// 16383 bit times [IEC 61158-4-3 bus parameters, timing] the rate cannot be used with this line.
+// tested at 19.2k; 8 ms at 93.75k … 500k). A PC's turnaround does not shrink with the rate, so
+// the faster rates, where nothing was tested, keep the 8 ms floor too: from 93.75k on a faster
+// rate asks for less only by its shorter first character. Bit times rounded up; above 16383
+// bit times [IEC 61158-4-3 bus parameters, timing] the rate cannot be used with this line.
 [[nodiscard]] std::vector<SlotTimeRow> slot_time_table(std::chrono::nanoseconds worst_turnaround);
+// The rate to use: the fastest tested one (up to 500k) this line can serve; nullopt when none
+// can [docs/decisions.md#serial-check-rate].
+[[nodiscard]] std::optional<SlotTimeRow> recommended_rate(const std::vector<SlotTimeRow>& rows);
 void print_slot_time_table(std::ostream& out, const std::vector<SlotTimeRow>& rows);
+
+// What to check when nothing answered: on a pseudo-terminal the other end (no wire, no
+// termination), on a real port the wiring.
+[[nodiscard]] std::string nothing_answered_advice(bool pty, const std::string& port,
+                                                  const std::string& baud, int address);
 
 struct SerialCheckOptions {
   std::string port;

@@ -29,9 +29,10 @@ except ModuleNotFoundError as missing:  # python/ itself, not the tree CMake sta
         raise
     raise ImportError(
         "rs4sim's gRPC stubs (rs4sim.v1) are not in this installation: they are generated "
-        "when rs4sim is built; install the staged package, `pip install --no-deps "
-        "--no-build-isolation build/python`, not the source directory python/ "
-        "(docs/rpc.md, \"The Python package\")") from missing
+        "when rs4sim is built; install the wheel the build makes (`cmake --build build "
+        "--target rs4sim_python_wheel`, then `pip install --no-deps --no-index "
+        "build/python/dist/rs4sim-*.whl` in a venv of /usr/bin/python3), not the source "
+        "directory python/ (README, \"The Python package\")") from missing
 from .v1 import rs4_pb2_grpc as pb_grpc  # noqa: E402
 from .v1 import archive_service_pb2 as archive_pb  # noqa: E402,F401
 from .v1 import archive_service_pb2_grpc as archive_grpc  # noqa: E402

@@ -3,10 +3,13 @@
 // (react to Proxy-Request, read a record, report its own event).
 #include "app/runtime/master_service.h"
 
+#include "app/runtime/master_report.h"
+#include "dp/master/master_error.h"
 #include "rs4/adapter/cyclic_bytes.h"
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <sstream>
 
 namespace rs4sim::app {
@@ -75,6 +78,59 @@ TEST(MasterService, JsonHasOneObjectPerLine) {
             std::string::npos);
   EXPECT_NE(text.find("\"proxy_request\":true"), std::string::npos);
   EXPECT_NE(text.find("\"event\":\"stop\""), std::string::npos);
+}
+
+// [IEC 61158-6-3 slave supervision]: a slave in data exchange that stops answering (no reply
+// within TSL, then max_retry_limit retries) is lost: a line of its own with the likely cause;
+// a slave that never answered (start-up) is not "lost".
+TEST(MasterReport, ASlaveThatStopsAnsweringInDataExchangeIsReportedLostWithTheHint) {
+  using dp::master::PollState;
+  const auto no_answer = dp::master::make_error_code(dp::master::MasterError::kNoAnswer);
+  for (const bool json : {false, true}) {
+    device::Rs4MasterStation station(options({4}, json).station);
+    std::ostringstream out;
+    const dp::TimePoint t0{};
+    MasterReport report(out, json, t0);
+    report.explain_lost_slaves(1, "the likely cause");
+    report.events({device::DpStateChanged{4, PollState::kStatusRequest, no_answer}}, station,
+                  t0 + std::chrono::seconds(1));
+    EXPECT_EQ(out.str().find("lost"), std::string::npos) << out.str();
+    report.events({device::DpStateChanged{4, PollState::kDataExchange, {}}}, station,
+                  t0 + std::chrono::seconds(2));
+    report.events({device::DpStateChanged{4, PollState::kStatusRequest, no_answer}}, station,
+                  t0 + std::chrono::milliseconds(2500));
+    const std::string text = out.str();
+    if (json) {
+      EXPECT_NE(text.find(R"({"t":2.500,"station":4,"event":"lost","retries":1,)"
+                          R"("hint":"the likely cause"})"),
+                std::string::npos)
+          << text;
+    } else {
+      EXPECT_NE(text.find("2.500 s  RS4 4 lost: no reply after 1 retry; the likely cause\n"),
+                std::string::npos)
+          << text;
+    }
+    EXPECT_EQ(count(text, "lost"), 1U) << text;
+  }
+}
+
+// The likely cause named with a lost slave depends on the link: a starved process on a pty
+// (also a serial --port that is a pty's path) or UDP, the line on a real serial port, none on
+// the in-memory bus.
+TEST(MasterService, TheLostSlavesLikelyCauseFitsTheLink) {
+  LinkOptions l;
+  EXPECT_EQ(lost_slave_hint(l), "");
+  l.link = LinkKind::kPty;
+  EXPECT_NE(lost_slave_hint(l).find("slave process on a pty may be starved of CPU time: run it "
+                                    "with --rt-priority 50"),
+            std::string::npos);
+  l.link = LinkKind::kSerial;
+  l.port = "/dev/pts/3";
+  EXPECT_NE(lost_slave_hint(l).find("--rt-priority 50"), std::string::npos);
+  l.port = "/dev/ttyUSB0";
+  EXPECT_EQ(lost_slave_hint(l).rfind("check the line (wiring, termination, rate)", 0), 0U);
+  l.link = LinkKind::kUdp;
+  EXPECT_NE(lost_slave_hint(l).find("--rt-priority 50"), std::string::npos);
 }
 
 // A stand-in for the parameter proxy: on Proxy-Request it reads the record (slot 0,
@@ -175,6 +231,35 @@ TEST(MasterService, ProxySerialisesTwoScannersAskingAtOnce) {
   const auto d = span_of(parallel, "RS4 5");
   ASSERT_NE(d.begin, std::string::npos) << parallel;
   EXPECT_LT(d.begin, c.end) << parallel;
+}
+
+// [RS4 manual §5.3] every read is made twice and compared (docs/proxy.md): the console names
+// each read once, as read twice and compared, and no "(repeat)" line looks like a retry; the
+// JSON lines keep every step, the compare reads included.
+TEST(MasterService, TheConsoleNamesEachReadOnceTheJsonEveryStep) {
+  for (const bool json : {false, true}) {
+    const auto file = std::filesystem::temp_directory_path() /
+                      ("rs4sim_proxy_console_" + std::to_string(json) + ".sqlite3");
+    std::filesystem::remove(file);
+    auto archive = storage::SqliteArchive::open(file).value();
+    ProxyPlugin proxy(*archive, ProxyPluginOptions{});
+    std::ostringstream out;
+    EXPECT_EQ(run_master(options({4}, json), memory(10), out, {&proxy}), 0) << out.str();
+    archive.reset();
+    std::filesystem::remove(file);
+    const auto text = out.str();
+    // A factory-set RS4 and an empty archive: the sync identifies (twice), finds the factory
+    // set and ends with CONFIG_SET_TO_DEFAULT, no upload (docs/proxy.md).
+    if (json) {
+      EXPECT_EQ(count(text, R"x("step":"identify")x"), 1U) << text;
+      EXPECT_EQ(count(text, R"x("step":"identify (repeat)")x"), 1U) << text;
+      continue;
+    }
+    EXPECT_EQ(text.find("(repeat)"), std::string::npos) << text;
+    EXPECT_EQ(count(text, "RS4 4: identify"), 1U) << text;
+    EXPECT_EQ(count(text, "RS4 4: identify (read twice, compared), FB_BUSY"), 1U) << text;
+    EXPECT_EQ(count(text, "RS4 4: idle, CONFIG_SET_TO_DEFAULT"), 1U) << text;
+  }
 }
 
 }  // namespace

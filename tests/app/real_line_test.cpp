@@ -28,11 +28,33 @@ TEST(SlotTimeTable, AFastLineGetsProfirustsTestedSettingsAsTheFloor) {
   EXPECT_EQ(row(rows, dp::BaudRate::k19k2).bits, 576U);    // 30 ms x 19 200 bit/s
   EXPECT_EQ(row(rows, dp::BaudRate::k187k5).bits, 1500U);  // 8 ms x 187 500 bit/s
   EXPECT_EQ(row(rows, dp::BaudRate::k500k).bits, 4000U);   // 8 ms x 500 000 bit/s
-  // 1.5M has no tested setting: 2 ms + 11 bit times = 3000 + 11 bit times.
-  EXPECT_FALSE(row(rows, dp::BaudRate::k1M5).floor);
-  EXPECT_EQ(row(rows, dp::BaudRate::k1M5).bits, 3011U);
-  // 12M: 2 ms = 24 000 bit times, above TSL's 16383.
+  // 1.5M has no tested setting of its own: it keeps 500k's 8 ms (a PC answers no faster at a
+  // faster rate) = 12 000 bit times, not the measured 2 ms + 11 bit times (3011), and is not
+  // advised. (Before: 3011 bit times, 2.007 ms, less than the 8 ms asked at 500k.)
+  EXPECT_TRUE(row(rows, dp::BaudRate::k1M5).floor);
+  EXPECT_FALSE(row(rows, dp::BaudRate::k1M5).tested);
+  EXPECT_EQ(row(rows, dp::BaudRate::k1M5).bits, 12000U);
+  // 3M: 8 ms = 24 000 bit times, above TSL's 16383; 12M the same.
+  EXPECT_EQ(row(rows, dp::BaudRate::k3M).bits, std::nullopt);
   EXPECT_EQ(row(rows, dp::BaudRate::k12M).bits, std::nullopt);
+}
+
+// From 93.75k on (one tested setting, 8 ms, up to 500k) a faster rate asks for less time than
+// a slower one only by its shorter first character: a PC answers no faster when the bits get
+// shorter. (19.2k's tested 30 ms is more than 93.75k's 8 ms: those are profirust's settings.)
+// 3096 µs is the case seen: 1.5M asked 6.192 ms, 500k 8 ms.
+TEST(SlotTimeTable, AFasterRateAsksForLessTimeOnlyByItsShorterCharacter) {
+  for (const std::chrono::nanoseconds worst : {0ns, 1000000ns, 3096000ns, 5000000ns, 14000000ns}) {
+    const auto rows = slot_time_table(worst);
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+      const double slower_bps = dp::bits_per_second(rows[i - 1].rate);
+      if (slower_bps < 93750) continue;
+      EXPECT_GE(rows[i].ms + 11.0 * 1e3 / slower_bps, rows[i - 1].ms)
+          << dp::to_string(rows[i].rate) << " after " << dp::to_string(rows[i - 1].rate);
+    }
+  }
+  const auto seen = slot_time_table(3096us);
+  EXPECT_DOUBLE_EQ(row(seen, dp::BaudRate::k1M5).ms, 8.0);
 }
 
 TEST(SlotTimeTable, ASlowLineIsDecidedByTheMeasurementAndTheBitLimit) {
@@ -44,6 +66,40 @@ TEST(SlotTimeTable, ASlowLineIsDecidedByTheMeasurementAndTheBitLimit) {
   EXPECT_EQ(row(rows, dp::BaudRate::k1M5).bits, 15011U);
   EXPECT_EQ(row(rows, dp::BaudRate::k3M).bits, std::nullopt);
   EXPECT_TRUE(row(rows, dp::BaudRate::k19k2).floor);  // 10 ms < 30 ms
+}
+
+// The advice: the fastest rate with a tested setting (up to 500k) that the line can serve.
+TEST(SlotTimeTable, TheRecommendedRateIsTheFastestTestedOneTheLineServes) {
+  const auto fast = recommended_rate(slot_time_table(1ms));
+  ASSERT_TRUE(fast.has_value());
+  EXPECT_EQ(fast->rate, dp::BaudRate::k500k);  // 1.5M fits too, but is not advised
+  EXPECT_EQ(fast->bits, 4000U);
+  // 14 ms worst: 28 ms + a character; at 500k 14 000 + 11 bit times still fit.
+  EXPECT_EQ(recommended_rate(slot_time_table(14ms))->rate, dp::BaudRate::k500k);
+  // 20 ms worst: 40 ms; 500k would need 20 000 bit times, 187.5k 7500 + 11.
+  const auto slow = recommended_rate(slot_time_table(20ms));
+  ASSERT_TRUE(slow.has_value());
+  EXPECT_EQ(slow->rate, dp::BaudRate::k187k5);
+  EXPECT_EQ(slow->bits, 7511U);
+  // 1 s worst: even 9.6k needs 2 s = 19 200 bit times.
+  EXPECT_FALSE(recommended_rate(slot_time_table(1s)).has_value());
+  std::ostringstream out;
+  print_slot_time_table(out, slot_time_table(1ms));
+  EXPECT_NE(out.str().find("recommended: 500k, TSL 4000 bit times (8.000 ms), retry limit 2-3"),
+            std::string::npos)
+      << out.str();
+  EXPECT_NE(out.str().find("12000     8.000  not advised: nothing tested above 500k"),
+            std::string::npos)
+      << out.str();
+}
+
+TEST(SerialCheckAdvice, APtyGetsAdviceAboutItsOtherEndARealPortAboutTheWiring) {
+  const std::string pty = nothing_answered_advice(true, "/dev/pts/7", "187.5k", 4);
+  EXPECT_NE(pty.find("pseudo-terminal"), std::string::npos) << pty;
+  EXPECT_NE(pty.find("rs4sim run --address 4 --link pty --baud 187.5k"), std::string::npos) << pty;
+  EXPECT_EQ(pty.find("A/B"), std::string::npos) << pty;
+  const std::string real = nothing_answered_advice(false, "/dev/ttyUSB0", "187.5k", 4);
+  EXPECT_NE(real.find("check the wiring (A/B), the termination"), std::string::npos) << real;
 }
 
 TEST(RealtimeError, EpermNamesTheCapabilityAndTheLimit) {

@@ -56,6 +56,26 @@ TEST_F(PtyFormatTest, EveryFormatAndRateIsSetOrNoted) {
   }
 }
 
+// Whatever a pty does not take (Linux drops PARENB, some kernels refuse it with EINVAL) is no
+// fault: at most one note per line, saying why, in words that do not read as an error.
+TEST_F(PtyFormatTest, APtyGetsAtMostOneNoteThatReadsAsNoError) {
+  const LineSettings lines[] = {
+      {1500000, 8, Parity::kEven, 1}, {93750, 8, Parity::kEven, 1}, {9600, 7, Parity::kOdd, 2}};
+  for (const LineSettings& line : lines) {
+    notes.clear();
+    SerialSetup setup;
+    (void)configure(line, setup);
+    ASSERT_LE(notes.size(), 1U) << to_string(line);
+    for (const auto& n : notes) {
+      EXPECT_EQ(n.rfind("pty: a pseudo-terminal has no wire, so no parity bit and no bit rate", 0),
+                0U)
+          << n;
+      EXPECT_NE(n.find("nothing to fix"), std::string::npos) << n;
+      EXPECT_EQ(n.find("failed"), std::string::npos) << n;
+    }
+  }
+}
+
 TEST_F(PtyFormatTest, EightNoneOneAndEightEvenOneReachTheTermiosFlags) {
   SerialSetup setup;
   const termios n81 = configure({115200, 8, Parity::kNone, 1}, setup);
