@@ -13,7 +13,7 @@ namespace rs4sim::gsd::syntax {
 namespace {
 
 // Lower case, sorted at first use.
-constexpr std::array<std::string_view, 222> kKeywords{{
+constexpr std::array<std::string_view, 223> kKeywords{{
     // identification and general station keywords
     "gsd_revision", "vendor_name", "model_name", "revision", "revision_number", "ident_number",
     "protocol_ident", "station_type", "fms_supp", "hardware_release", "software_release",
@@ -33,7 +33,8 @@ constexpr std::array<std::string_view, 222> kKeywords{{
     "x_ext_module_prm_data_len", "prm_text_ref", "changeable", "visible", "text",
     "prmtext", "endprmtext", "extuserprmdata", "endextuserprmdata", "bit", "bitarea",
     "unsigned8", "unsigned16", "unsigned32", "signed8", "signed16", "signed32", "octetstring",
-    "visiblestring", "module", "endmodule", "preset", "data_area_beg", "data_area_end",
+    "visiblestring", "module", "endmodule", "preset", "fixpresetmodules", "data_area_beg",
+    "data_area_end",
     "area_name", "related_cfg_identifier", "io_direction", "length", "consistency",
     "publisher_allow", "dp_master_trigger", "data_type", "slotdefinition", "slot",
     "endslotdefinition", "max_iparameter_size", "iparameter_sub_slot", "ident_maintenance_supp",

@@ -33,16 +33,8 @@ ProcessResult run(const std::string& args) {
   return r;
 }
 
-// CRC-16 poly 0x4EAB, preset 0, MSB first, no reflection, no final XOR.
 std::uint16_t reference_crc1(std::initializer_list<std::uint8_t> bytes) {
-  std::uint16_t crc = 0;
-  for (const auto b : bytes) {
-    crc = static_cast<std::uint16_t>(crc ^ (b << 8));
-    for (int i = 0; i < 8; ++i) {
-      crc = static_cast<std::uint16_t>((crc & 0x8000U) != 0 ? (crc << 1) ^ 0x4EAB : crc << 1);
-    }
-  }
-  return crc;
+  return testing::reference_crc1(std::vector<std::uint8_t>(bytes));
 }
 
 std::string crc_hex(std::uint16_t crc) {
