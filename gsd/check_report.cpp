@@ -69,7 +69,9 @@ void default_configuration(const Device& d, std::ostream& out) {
         << (s.slots[i].preset ? " (preset)" : "");
   }
   out << "\n  Chk_Cfg: " << hex_bytes(s.cfg) << "\n  Input_Len " << s.input_len << ", Output_Len "
-      << s.output_len << "\n  User_Prm_Data: " << hex_bytes(s.user_prm_data) << "\n";
+      << s.output_len
+      << "\n  User_Prm_Data: " << (s.user_prm_data.empty() ? "(none)" : hex_bytes(s.user_prm_data))
+      << "\n";
 }
 
 void parameters(const Device& d, std::ostream& out) {

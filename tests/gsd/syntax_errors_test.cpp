@@ -31,7 +31,7 @@ const Case kCases[] = {
     {"stray character", "#Profibus_DP\nIdent_Number = 0x12!4\n", GsdError::kSyntax,
      "bad.gsd:2: unexpected character '!': `Ident_Number = 0x12!4`"},
     {"control byte", "#Profibus_DP\nVendor_Name = \x01\n", GsdError::kSyntax,
-     "bad.gsd:2: unexpected byte 0x01: `Vendor_Name = \x01`"},
+     "bad.gsd:2: unexpected byte 0x01: `Vendor_Name = \\x01`"},  // shown, not sent raw
     {"bad hex", "#Profibus_DP\nIdent_Number = 0x12G4\n", GsdError::kSyntax,
      "bad.gsd:2: malformed hex number: `0x12G4`"},
     {"bare 0x", "#Profibus_DP\nIdent_Number = 0x\n", GsdError::kSyntax,
