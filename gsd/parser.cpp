@@ -111,6 +111,7 @@ class BlockReader {
   File& file_;
   const BlockKind* open_ = nullptr;   // the block being read, if any
   const BlockKind* inner_ = nullptr;  // a block nested in it (may_nest)
+  int inner_line_ = 0;
 };
 
 Result<void> BlockReader::add(Statement st) {
@@ -118,6 +119,7 @@ Result<void> BlockReader::add(Statement st) {
   if (const BlockKind* starts = opener(st)) {
     if (open_ && !inner_ && may_nest(*open_, *starts)) {
       inner_ = starts;
+      inner_line_ = st.line;
       file_.entries.back().body->push_back(std::move(st));
       return boost::outcome_v2::success();
     }
@@ -140,6 +142,10 @@ Result<void> BlockReader::add(Statement st) {
 
 Result<void> BlockReader::close(Statement st, const BlockKind& ends) {
   const BlockKind* expected = inner_ ? inner_ : open_;
+  if (inner_ && open_ == &ends) {
+    return fail(st, std::string(inner_->open) + " started at line " + std::to_string(inner_line_) +
+                        " is not closed (" + std::string(inner_->close) + " missing)");
+  }
   if (expected != &ends) {
     return fail(st, std::string(ends.close) + " without " + std::string(ends.open));
   }

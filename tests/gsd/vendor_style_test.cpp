@@ -218,5 +218,37 @@ TEST(GsdVendorStyle, Utf8FilesStayAsTheyAre) {
   EXPECT_TRUE(converted);
 }
 
+// SINAMICS-style: `UnitDiagType = 129` holding `X_Unit_Diag_Area=24-31` … `X_Unit_Diag_Area_End`.
+TEST(GsdVendorStyle, AnXUnitDiagAreaMayStandInsideAUnitDiagType) {
+  auto d = parse(gsd::testing::minimal("UnitDiagType = 129\nX_Unit_Diag_Area=24-31\n"
+                                       "X_Value(0) = \"none\"\nX_Unit_Diag_Area_End\n"
+                                       "EndUnitDiagType\nMax_Diag_Data_Len = 20\n"),
+                 "g120.gsd");
+  ASSERT_TRUE(d) << d.error().what();
+  EXPECT_EQ(d.value().max_diag_data_len, 20);
+  EXPECT_TRUE(d.value().warnings.empty());
+  // Any other block inside stays an error, and so does an inner block left open.
+  auto module = parse(gsd::testing::minimal("UnitDiagType = 1\nModule = \"a\" 0x10\n"), "m.gsd");
+  ASSERT_FALSE(module);
+  EXPECT_EQ(module.error().what(),
+            "m.gsd:6: Module inside UnitDiagType started at line 5: `Module = \"a\" 0x10`");
+  auto open = parse(gsd::testing::minimal("UnitDiagType = 1\nX_Unit_Diag_Area = 1-2\n"
+                                          "EndUnitDiagType\n"),
+                    "o.gsd");
+  ASSERT_FALSE(open);
+  EXPECT_EQ(open.error().what(),
+            "o.gsd:7: X_Unit_Diag_Area started at line 6 is not closed (X_Unit_Diag_Area_End "
+            "missing): `EndUnitDiagType`");
+}
+
+TEST(GsdVendorStyle, SubFamilyNamesWithBlanks) {
+  auto d = parse(gsd::testing::minimal("Slave_Family = 2@Motor starter@Direct soft starter  \n"),
+                 "s.gsd");
+  ASSERT_TRUE(d) << d.error().what();
+  EXPECT_EQ(d.value().slave_family, 2);
+  EXPECT_EQ(d.value().sub_families,
+            (std::vector<std::string>{"Motor starter", "Direct soft starter"}));
+}
+
 }  // namespace
 }  // namespace rs4sim::gsd
