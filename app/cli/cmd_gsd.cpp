@@ -128,22 +128,23 @@ int run_prm(const Options& o) {
     const auto file = read_whole_file(o.gsd_file);
     if (!file) {
       std::cerr << "rs4sim gsd: cannot read " << o.gsd_file << ": " << file.error << "\n";
-      return 1;
+      return 2;
     }
     loaded = gsd::parse(file.bytes, o.gsd_file);
   }
   const gsd::Result<gsd::Device>& device = builtin ? gsd::rs4sim_device() : loaded;
-  if (!device) {
+  if (!device) {  // the user's file refused: bad input (the built-in file never is)
     std::cerr << "rs4sim gsd: " << device.error().what() << "\n";
-    return 1;
+    return 2;
   }
   for (const auto& w : device.value().warnings) {
     std::cerr << "rs4sim gsd: warning: " << w.what() << "\n";
   }
   auto config = gsd::configure(device.value(), {o.modules, overrides(o, builtin)});
-  if (!config) {
+  if (!config) {  // a module the file does not have: bad input; a parameter value: 1
     std::cerr << "rs4sim gsd: " << config.error().what() << "\n";
-    return 1;
+    const auto code = config.error().code;
+    return code == gsd::GsdError::kUnknownModule || code == gsd::GsdError::kModuleCount ? 2 : 1;
   }
   const std::string source =
       builtin ? std::string(gsd::kRs4simGsdFileName) + " (built in)" : o.gsd_file;

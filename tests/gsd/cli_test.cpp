@@ -129,10 +129,10 @@ TEST(GsdCli, ForeignGsdFileAndModule) {
   EXPECT_NE(r.output.find("User_Prm_Data: 80 00 00 55 AA 01 2C 9C\n"), std::string::npos)
       << r.output;
   r = run("gsd --prm --gsd " + file + " --module 'DI 9'");
-  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.exit_code, 2);  // bad input
   EXPECT_NE(r.output.find("no module \"DI 9\""), std::string::npos) << r.output;
   r = run("gsd --prm --gsd /nonexistent.gsd");
-  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("cannot read /nonexistent.gsd"), std::string::npos) << r.output;
 }
 
@@ -145,7 +145,7 @@ TEST(GsdCli, MalformedGsdFileReportsFileAndLine) {
     std::fclose(f);
   }
   const ProcessResult r = run("gsd --prm --gsd " + path.string());
-  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find(path.string() + ":3: Module is not closed (EndModule missing)"),
             std::string::npos)
       << r.output;
