@@ -51,6 +51,136 @@ std::int64_t read_value(std::span<const std::uint8_t> data, std::size_t at, cons
   }
 }
 
+// Where the F_Par_CRC reference of a module's F-part lies (offset in the F template).
+Result<std::size_t> f_par_crc_offset(const Device& d, const Module& m) {
+  const auto crc_ref = std::find_if(
+      m.f_prm->refs.begin(), m.f_prm->refs.end(),
+      [&](const PrmRef& r) { return syntax::iequals(d.params.at(r.param).name, "F_Par_CRC"); });
+  if (crc_ref == m.f_prm->refs.end() || crc_ref->offset < 8 ||
+      byte_size(d.params.at(crc_ref->param).type) != 2) {
+    return config_error(
+        GsdError::kFParameterLayout,
+        "module \"" + m.name +
+            "\": the F-parameters need a 2-byte F_Par_CRC reference at offset 8 or later");
+  }
+  return crc_ref->offset;
+}
+
+Result<profisafe::FParameters> read_f_block(const Module& m, const std::vector<std::uint8_t>& data,
+                                            std::size_t start) {
+  const std::span<const std::uint8_t> block(data.data() + start, profisafe::kFParametersSize);
+  auto parsed = profisafe::parse_f_parameters(block);
+  if (!parsed) {
+    return config_error(
+        GsdError::kFParameterLayout,
+        "module \"" + m.name + "\": F-parameter block: " + parsed.error().message());
+  }
+  return parsed.value();
+}
+
+// "\"A\", \"B\"" for messages: the modules a user may name (not the presets), at most 40.
+std::string choosable(const Device& d) {
+  std::string out;
+  std::size_t n = 0;
+  for (const auto& m : d.modules) {
+    if (m.preset) continue;
+    if (++n <= 40) out += (out.empty() ? "\"" : ", \"") + m.name + "\"";
+  }
+  if (n > 40) out += ", … (" + std::to_string(n) + " in all)";
+  return out.empty() ? std::string("none") : out;
+}
+
+std::size_t index_of(const Device& d, const Module* m) {
+  return static_cast<std::size_t>(m - d.modules.data());
+}
+
+class Placement {
+ public:
+  explicit Placement(const Device& d) : d_(d) {
+    for (const auto& m : d_.modules) {
+      if (m.preset) add(index_of(d_, &m), true, false);
+    }
+    for (const auto& s : d_.slots) {
+      if (s.number >= d_.modul_offset + static_cast<int>(out_.size())) free_.push_back(&s);
+    }
+  }
+  Result<void> user(const std::string& name);
+  void defaults();
+  Result<std::vector<PlacedModule>> finish(bool user_given);
+
+ private:
+  void add(std::size_t index, bool preset, bool slot_default) {
+    out_.push_back({index, d_.modul_offset + static_cast<int>(out_.size()), preset, slot_default});
+  }
+  const Device& d_;
+  std::vector<PlacedModule> out_;
+  std::vector<const SlotDef*> free_;  // defined slots after the presets
+  std::size_t users_ = 0;
+};
+
+Result<void> Placement::user(const std::string& name) {
+  const Module* m = d_.find_module(name);
+  if (!m) {
+    return config_error(GsdError::kUnknownModule,
+                        "no module \"" + name + "\" in the GSD (modules: " + choosable(d_) + ")");
+  }
+  if (m->preset) {
+    return config_error(GsdError::kUnknownModule,
+                        "\"" + m->name + "\" is a preset module (Preset = 1), placed ahead of " +
+                            "the user's modules already: --module names the modules after the " +
+                            "presets (modules: " + choosable(d_) + ")");
+  }
+  if (users_ < free_.size()) {
+    const SlotDef& s = *free_[users_];
+    if (!m->reference || !std::binary_search(s.allowed.begin(), s.allowed.end(), *m->reference)) {
+      std::string allowed;
+      for (const auto r : s.allowed) {
+        const Module* a = d_.find_module_by_reference(r);
+        allowed += (allowed.empty() ? "\"" : ", \"") + (a ? a->name : std::to_string(r)) + "\"";
+      }
+      return config_error(GsdError::kOutOfRange, "slot " + std::to_string(s.number) + " (\"" +
+                                                     s.name + "\") takes " + allowed + ", not \"" +
+                                                     m->name + "\" (SlotDefinition)");
+    }
+  }
+  ++users_;
+  add(index_of(d_, m), false, false);
+  return boost::outcome_v2::success();
+}
+
+// The defined slots the user left empty keep their default modules.
+void Placement::defaults() {
+  for (std::size_t i = users_; i < free_.size(); ++i) {
+    const Module* m = d_.find_module_by_reference(free_[i]->default_ref);
+    if (m) add(index_of(d_, m), false, true);
+  }
+}
+
+Result<std::vector<PlacedModule>> Placement::finish(bool user_given) {
+  const std::size_t selectable = static_cast<std::size_t>(std::count_if(
+      d_.modules.begin(), d_.modules.end(), [](const Module& m) { return !m.preset; }));
+  if (out_.empty() && !user_given && selectable == 1) {
+    const auto it = std::find_if(d_.modules.begin(), d_.modules.end(),
+                                 [](const Module& m) { return !m.preset; });
+    add(index_of(d_, &*it), false, false);
+  }
+  if (out_.empty()) {
+    return config_error(GsdError::kModuleCount,
+                        "choose the module(s) to configure (modules: " + choosable(d_) + ")");
+  }
+  if (!d_.modular_station && out_.size() != 1) {
+    return config_error(GsdError::kModuleCount,
+                        "a compact station (Modular_Station = 0) takes exactly one module, got " +
+                            std::to_string(out_.size()));
+  }
+  if (d_.modular_station && out_.size() > d_.max_module) {
+    return config_error(GsdError::kModuleCount,
+                        "a modular station takes 1.." + std::to_string(d_.max_module) +
+                            " modules (Max_Module), got " + std::to_string(out_.size()));
+  }
+  return std::move(out_);
+}
+
 class Configurator {
  public:
   Configurator(const Device& device, const ConfigRequest& request)
@@ -58,7 +188,6 @@ class Configurator {
   Result<SlaveSetup> run();
 
  private:
-  Result<std::vector<const Module*>> choose_modules() const;
   Result<std::int64_t> value_for(const ExtParam& p);
   Result<void> place(const PrmTemplate& t, std::size_t module, bool f_part);
   Result<void> seal_f_block(const Module& m, std::size_t module, std::size_t base);
@@ -69,43 +198,6 @@ class Configurator {
   SlaveSetup out_;
   std::set<std::size_t> used_;  // indices into request_.overrides
 };
-
-Result<std::vector<const Module*>> Configurator::choose_modules() const {
-  std::vector<const Module*> chosen;
-  if (request_.modules.empty() && !device_.modular_station && device_.modules.size() == 1) {
-    chosen.push_back(&device_.modules.front());
-  }
-  for (const auto& name : request_.modules) {
-    const Module* m = device_.find_module(name);
-    if (!m) {
-      std::string known;
-      for (const auto& each : device_.modules)
-        known += (known.empty() ? "\"" : ", \"") + each.name + "\"";
-      return config_error(GsdError::kUnknownModule,
-                          "no module \"" + name + "\" in the GSD (modules: " + known + ")");
-    }
-    chosen.push_back(m);
-  }
-  if (chosen.empty() && device_.modules.size() != 1) {
-    std::string known;
-    for (const auto& each : device_.modules)
-      known += (known.empty() ? "\"" : ", \"") + each.name + "\"";
-    return config_error(GsdError::kModuleCount, "choose the module(s) to configure (modules: " +
-                                                    (known.empty() ? std::string("none") : known) +
-                                                    ")");
-  }
-  if (!device_.modular_station && chosen.size() != 1) {
-    return config_error(GsdError::kModuleCount,
-                        "a compact station (Modular_Station = 0) takes exactly one module, got " +
-                            std::to_string(chosen.size()));
-  }
-  if (device_.modular_station && (chosen.empty() || chosen.size() > device_.max_module)) {
-    return config_error(GsdError::kModuleCount,
-                        "a modular station takes 1.." + std::to_string(device_.max_module) +
-                            " modules (Max_Module), got " + std::to_string(chosen.size()));
-  }
-  return chosen;
-}
 
 Result<std::int64_t> Configurator::value_for(const ExtParam& p) {
   std::optional<std::int64_t> value;
@@ -138,9 +230,8 @@ Result<void> Configurator::place(const PrmTemplate& t, std::size_t module, bool 
     const ExtParam& p = device_.params.at(ref.param);  // resolved by the interpreter
     RS4SIM_GSD_TRY(const auto value, value_for(p));
     write_value(out_.user_prm_data, base + ref.offset, p, value);
-    out_.fields.push_back(
-        {base + ref.offset, p.name, p.type, p.bit_low, p.bit_high, value, module, f_part,
-         ref.param});
+    out_.fields.push_back({base + ref.offset, p.name, p.type, p.bit_low, p.bit_high, value, module,
+                           f_part, ref.param});
   }
   return boost::outcome_v2::success();
 }
@@ -148,27 +239,9 @@ Result<void> Configurator::place(const PrmTemplate& t, std::size_t module, bool 
 // The 10-byte F-parameter block ends with F_Par_CRC ([IEC 61784-3-3 F-Parameters]): its 8 bytes
 // before F_Par_CRC go through CRC1, the result replaces the GSD's default.
 Result<void> Configurator::seal_f_block(const Module& m, std::size_t module, std::size_t base) {
-  const auto crc_ref =
-      std::find_if(m.f_prm->refs.begin(), m.f_prm->refs.end(), [&](const PrmRef& r) {
-        return syntax::iequals(device_.params.at(r.param).name, "F_Par_CRC");
-      });
-  if (crc_ref == m.f_prm->refs.end() || crc_ref->offset < 8 ||
-      byte_size(device_.params.at(crc_ref->param).type) != 2) {
-    return config_error(
-        GsdError::kFParameterLayout,
-        "module \"" + m.name +
-            "\": the F-parameters need a 2-byte F_Par_CRC reference at offset 8 or later");
-  }
-  const std::size_t start = base + crc_ref->offset - 8;
-  const std::span<const std::uint8_t> block(out_.user_prm_data.data() + start,
-                                            profisafe::kFParametersSize);
-  auto parsed = profisafe::parse_f_parameters(block);
-  if (!parsed) {
-    return config_error(
-        GsdError::kFParameterLayout,
-        "module \"" + m.name + "\": F-parameter block: " + parsed.error().message());
-  }
-  profisafe::FParameters params = parsed.value();
+  RS4SIM_GSD_TRY(const std::size_t crc_offset, f_par_crc_offset(device_, m));
+  const std::size_t start = base + crc_offset - 8;
+  RS4SIM_GSD_TRY(profisafe::FParameters params, read_f_block(m, out_.user_prm_data, start));
   const auto encoded = profisafe::encode_f_parameters(params);
   std::copy(encoded.begin() + 8, encoded.end(),
             out_.user_prm_data.begin() + static_cast<std::ptrdiff_t>(start + 8));
@@ -195,12 +268,12 @@ Result<void> Configurator::check_overrides_used() const {
 }
 
 Result<SlaveSetup> Configurator::run() {
-  RS4SIM_GSD_TRY(const auto modules, choose_modules());
+  RS4SIM_GSD_TRY(out_.slots, place_modules(device_, request_.modules));
   out_.ident_number = device_.ident_number;
   out_.dpv1 = device_.dpv1.slave;
   RS4SIM_GSD_TRYV(place(device_.user_prm, kGlobal, false));
-  for (std::size_t i = 0; i < modules.size(); ++i) {
-    const Module& m = *modules[i];
+  for (std::size_t i = 0; i < out_.slots.size(); ++i) {
+    const Module& m = device_.modules[out_.slots[i].index];
     out_.modules.push_back(m.name);
     out_.cfg.insert(out_.cfg.end(), m.cfg.begin(), m.cfg.end());
     out_.input_len += m.input_len;
@@ -226,6 +299,14 @@ Result<SlaveSetup> Configurator::run() {
 
 }  // namespace
 
+Result<std::vector<PlacedModule>> place_modules(const Device& device,
+                                                const std::vector<std::string>& user_modules) {
+  Placement p(device);
+  for (const auto& name : user_modules) RS4SIM_GSD_TRYV(p.user(name));
+  p.defaults();
+  return p.finish(!user_modules.empty());
+}
+
 Result<SlaveSetup> configure(const Device& device, const ConfigRequest& request) {
   return Configurator(device, request).run();
 }
@@ -233,10 +314,10 @@ Result<SlaveSetup> configure(const Device& device, const ConfigRequest& request)
 Result<void> check_user_prm(const Device& device, const SlaveSetup& setup,
                             std::span<const std::uint8_t> user_prm_data) {
   if (user_prm_data.size() != setup.user_prm_data.size()) {
-    return config_error(GsdError::kPrmTooLong,
-                        "User_Prm_Data is " + std::to_string(user_prm_data.size()) +
-                            " bytes, the GSD configuration has " +
-                            std::to_string(setup.user_prm_data.size()));
+    return config_error(GsdError::kPrmTooLong, "User_Prm_Data is " +
+                                                   std::to_string(user_prm_data.size()) +
+                                                   " bytes, the GSD configuration has " +
+                                                   std::to_string(setup.user_prm_data.size()));
   }
   for (const auto& f : setup.fields) {
     if (f.f_parameter) continue;
@@ -251,6 +332,28 @@ Result<void> check_user_prm(const Device& device, const SlaveSetup& setup,
     }
   }
   return boost::outcome_v2::success();
+}
+
+Result<FParameterDefaults> f_parameter_defaults(const Device& device, const Module& module) {
+  if (!module.f_prm) {
+    return config_error(GsdError::kFParameterLayout,
+                        "module \"" + module.name + "\" has no F-parameters");
+  }
+  std::vector<std::uint8_t> data(module.f_prm->defaults);
+  for (const auto& ref : module.f_prm->refs) {
+    const ExtParam& p = device.params.at(ref.param);
+    write_value(data, ref.offset, p, p.default_value);
+  }
+  RS4SIM_GSD_TRY(const std::size_t crc_offset, f_par_crc_offset(device, module));
+  const std::size_t start = crc_offset - 8;
+  RS4SIM_GSD_TRY(const profisafe::FParameters params, read_f_block(module, data, start));
+  const auto encoded = profisafe::encode_f_parameters(params);
+  FParameterDefaults out;
+  out.block.assign(data.begin() + static_cast<std::ptrdiff_t>(start),
+                   data.begin() + static_cast<std::ptrdiff_t>(start + 10));
+  out.file_crc = codec::be16(data[crc_offset], data[crc_offset + 1]);
+  out.crc1 = codec::be16(encoded[8], encoded[9]);
+  return out;
 }
 
 std::uint16_t f_param_desc_crc(const Device& device, const Module& module) {

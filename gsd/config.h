@@ -27,7 +27,7 @@ struct ParamOverride {
 };
 
 struct ConfigRequest {
-  // Module names in slot order. Empty: the only module of a compact station.
+  // The user's modules by name in slot order, after the presets (place_modules).
   std::vector<std::string> modules;
   // Applied to every placement of the named parameter (global and all modules).
   std::vector<ParamOverride> overrides;
@@ -48,6 +48,30 @@ struct PrmField {
   int param = 0;                 // ExtUserPrmData number (Device::params)
 };
 
+// One slot of the station as placed (place_modules).
+struct PlacedModule {
+  std::size_t index = 0;      // into Device::modules
+  int slot = 0;               // slot number: Modul_Offset + position
+  bool preset = false;        // placed because of `Preset = 1`, not named by the user
+  bool slot_default = false;  // the default module of a SlotDefinition slot
+};
+
+// The station's slot list as the engineering tools build it ([PROFIBUS GSD spec modules,
+// SlotDefinition]), the one placement every user of a GSD shares (`rs4sim run --gsd`, the bus
+// file, `rs4sim gsd --prm`, our master):
+//   1. the `Preset = 1` modules, in file order (FixPresetModules = 1: they cannot be left out;
+//      STEP 7 and pyprofibus place them so whatever FixPresetModules says);
+//   2. the user's modules, `user_modules` by name (blanks around them and case aside), in slot
+//      order; each slot a SlotDefinition defines takes only the modules it allows;
+//   3. the default modules of the defined slots the user left empty.
+// With no user module and nothing from 1. and 3., a station whose GSD has one module takes it.
+// Errors: kUnknownModule (the name is no module, or a preset one: the presets are placed
+// already; the message lists the modules a user may choose), kModuleCount (a compact station
+// with other than one module, a modular one with none or more than Max_Module), kOutOfRange (a
+// module a SlotDefinition slot does not allow).
+Result<std::vector<PlacedModule>> place_modules(const Device& device,
+                                                const std::vector<std::string>& user_modules);
+
 struct FParameterBlock {
   std::size_t module = 0;             // index into SlaveSetup::modules
   std::size_t offset = 0;             // of F_Prm_Flag1 in user_prm_data (10 bytes follow)
@@ -63,10 +87,11 @@ struct SlaveSetup {
   // Set_Prm DU from byte 7 on: global part (DPV1_Status_1..3 first on a DPV1 slave),
   // then per module in slot order its Ext_Module part and its F-part.
   std::vector<std::uint8_t> user_prm_data;
-  std::vector<std::uint8_t> cfg;  // Chk_Cfg DU: the modules' Cfg bytes in slot order
-  std::size_t input_len = 0;      // Data_Exchange input bytes (slave → master)
-  std::size_t output_len = 0;     // Data_Exchange output bytes (master → slave)
-  std::vector<std::string> modules;
+  std::vector<std::uint8_t> cfg;     // Chk_Cfg DU: the modules' Cfg bytes in slot order
+  std::size_t input_len = 0;         // Data_Exchange input bytes (slave → master)
+  std::size_t output_len = 0;        // Data_Exchange output bytes (master → slave)
+  std::vector<std::string> modules;  // names, slot order (the whole slot list)
+  std::vector<PlacedModule> slots;   // the same slots: module index, slot number, preset
   std::vector<PrmField> fields;
   std::vector<FParameterBlock> f_parameters;
 };
@@ -87,6 +112,18 @@ Result<SlaveSetup> configure(const Device& device, const ConfigRequest& request)
 // kOutOfRange ("byte 4: Input filter (ms) = 3 is not allowed (1, 2, 5, 10)").
 Result<void> check_user_prm(const Device& device, const SlaveSetup& setup,
                             std::span<const std::uint8_t> user_prm_data);
+
+// The F-parameter block of a PROFIsafe module as its GSD writes it by default (for `rs4sim gsd
+// check`): the 10 bytes of F_Prm_Flag1 … F_Par_CRC with every F_Ext_User_Prm_Data_Ref at its
+// default, the F_Par_CRC the file gives, and CRC1 over the 8 bytes before it ([IEC 61784-3-3
+// CRC1]). Errors: kFParameterLayout (no 2-byte F_Par_CRC reference at offset 8 or later, or the
+// bytes do not read as F-parameters).
+struct FParameterDefaults {
+  std::vector<std::uint8_t> block;  // 10 bytes
+  std::uint16_t file_crc = 0;       // F_Par_CRC's default in the file
+  std::uint16_t crc1 = 0;           // CRC1 over block[0..7]
+};
+Result<FParameterDefaults> f_parameter_defaults(const Device& device, const Module& module);
 
 // F_ParamDescCRC as the rs4sim project defines it (docs/gsd.md; the PI algorithm for
 // text GSDs is not public): CRC-16 poly 0x4EAB, preset 0 (the CRC1 polynomial) over

@@ -1,6 +1,29 @@
 #include "gsd/error.h"
 
+#include <cstdio>
+
 namespace rs4sim::gsd {
+namespace {
+
+// The offending text as a terminal shows it: control bytes of a binary file as \xNN, cut after
+// 120 bytes (at a character boundary).
+std::string shown(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    const auto b = static_cast<unsigned char>(c);
+    if (out.size() >= 120 && (b & 0xC0U) != 0x80U) return out + "…";  // not inside a character
+    if ((b < 0x20 && c != '\t') || b == 0x7F) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02X", b);
+      out += hex;
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace
 
 std::string_view to_string(GsdError e) noexcept {
   switch (e) {
@@ -29,7 +52,7 @@ std::string Error::what() const {
   if (line > 0) out += std::to_string(line) + ":";
   if (!out.empty()) out += " ";
   out += message.empty() ? make_error_code(code).message() : message;
-  if (!text.empty()) out += ": `" + text + "`";
+  if (!text.empty()) out += ": `" + shown(text) + "`";
   return out;
 }
 

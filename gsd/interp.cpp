@@ -8,7 +8,9 @@
 #include <array>
 #include <cctype>
 #include <functional>
+#include <limits>
 #include <set>
+#include <unordered_map>
 
 namespace rs4sim::gsd {
 namespace {
@@ -28,7 +30,10 @@ T narrow(std::int64_t v) {
 }
 
 // Every numeric keyword the interpreter uses, with the range the GSD allows.
-const std::array<NumberKey, 40> kNumberKeys{{
+// A value outside lo..hi is taken at the nearer limit with a warning (`Max_Input_Len = 249`:
+// a Data_Exchange telegram carries 244 bytes at most, [IEC 61158-6-3 Data_Exchange]), except
+// Ident_Number, without which the master has nothing to send.
+const std::array<NumberKey, 42> kNumberKeys{{
     {"GSD_Revision", 0, 255, [](Device& d, std::int64_t v) { d.gsd_revision = narrow<int>(v); }},
     {"Ident_Number", 0, 0xFFFF,
      [](Device& d, std::int64_t v) { d.ident_number = narrow<std::uint16_t>(v); }},
@@ -84,6 +89,9 @@ const std::array<NumberKey, 40> kNumberKeys{{
     {"Check_Cfg_Mode", 0, 1, [](Device& d, std::int64_t v) { d.dpv1.check_cfg_mode = v == 1; }},
     {"Prm_Block_Structure_supp", 0, 1,
      [](Device& d, std::int64_t v) { d.dpv1.prm_block_structure = v == 1; }},
+    {"FixPresetModules", 0, 1, [](Device& d, std::int64_t v) { d.fix_preset_modules = v == 1; }},
+    {"Modul_Offset", 0, 255,
+     [](Device& d, std::int64_t v) { d.modul_offset = narrow<std::uint8_t>(v); }},
     {"Protocol_Ident", 0, 0, [](Device&, std::int64_t) {}},  // 0 = PROFIBUS-DP
     {"Station_Type", 0, 0, [](Device&, std::int64_t) {}},    // 0 = DP slave
     {"FMS_supp", 0, 1, [](Device&, std::int64_t) {}},
@@ -106,18 +114,19 @@ const std::array<StringKey, 5> kStringKeys{{
 
 struct BaudName {
   std::string_view name;
+  std::string_view label;
   std::uint32_t bps;
 };
-constexpr std::array<BaudName, 10> kBauds{{{"9.6", 9600},
-                                           {"19.2", 19200},
-                                           {"45.45", 45450},
-                                           {"93.75", 93750},
-                                           {"187.5", 187500},
-                                           {"500", 500000},
-                                           {"1.5M", 1500000},
-                                           {"3M", 3000000},
-                                           {"6M", 6000000},
-                                           {"12M", 12000000}}};
+constexpr std::array<BaudName, 10> kBauds{{{"9.6", "9.6k", 9600},
+                                           {"19.2", "19.2k", 19200},
+                                           {"45.45", "45.45k", 45450},
+                                           {"93.75", "93.75k", 93750},
+                                           {"187.5", "187.5k", 187500},
+                                           {"500", "500k", 500000},
+                                           {"1.5M", "1.5M", 1500000},
+                                           {"3M", "3M", 3000000},
+                                           {"6M", "6M", 6000000},
+                                           {"12M", "12M", 12000000}}};
 
 std::string lower(std::string_view s) {
   std::string out(s);
@@ -133,28 +142,61 @@ class Interpreter {
  private:
   Result<void> definitions();  // pass 1: PrmText, ExtUserPrmData
   Result<void> statement(const syntax::Statement& st);
+  Result<std::optional<std::int64_t>> ranged(const syntax::Statement& st, std::int64_t lo,
+                                             std::int64_t hi);
   Result<bool> baud_keyword(const syntax::Statement& st);
   Result<void> legacy_user_prm(const syntax::Statement& st);
   Result<void> slave_family(const syntax::Statement& st);
+  Result<void> block(const syntax::Entry& e);
+  Result<void> module(const syntax::Entry& e);
   Result<void> finish();
-  Result<void> once(const syntax::Statement& st);
+  void once(const syntax::Statement& st);
+  void warn(const syntax::Statement& st, std::string message) {
+    detail::warn(warnings_, file_.name, st, std::move(message));
+  }
 
   const syntax::File& file_;
   Device device_;
   detail::TemplateBuilder global_{"global User_Prm_Data", {}, {}, {}, std::nullopt, nullptr};
-  std::map<std::string, int> seen_;  // lower-case keyword(+arg) → line
-  std::set<std::string> given_;      // keywords present (lower case)
+  std::map<std::string, int> seen_;                    // lower-case keyword(+arg) → line
+  std::set<std::string> given_;                        // keywords present (lower case)
+  std::unordered_map<std::string, int> module_names_;  // lower case, trimmed → line
+  std::vector<const syntax::Entry*> slot_blocks_;
+  std::vector<Warning> warnings_;
 };
 
-Result<void> Interpreter::once(const syntax::Statement& st) {
+// A keyword given twice: engineering tools take the later value, so does rs4sim, with a warning.
+void Interpreter::once(const syntax::Statement& st) {
   std::string key = lower(st.keyword);
   const auto [it, fresh] = seen_.emplace(key, st.line);
   if (!fresh) {
-    return error(file_.name, st, GsdError::kDuplicate,
-                 st.keyword + " already given at line " + std::to_string(it->second));
+    warn(st, st.keyword + " already given at line " + std::to_string(it->second) +
+                 "; this later value taken");
+    it->second = st.line;
   }
   given_.insert(std::move(key));
-  return boost::outcome_v2::success();
+}
+
+// `keyword = n`: n, clamped into lo..hi with a warning; nullopt (with a warning) when the line
+// holds no number. Ident_Number is never forgiven.
+Result<std::optional<std::int64_t>> Interpreter::ranged(const syntax::Statement& st,
+                                                        std::int64_t lo, std::int64_t hi) {
+  const bool strict = st.is("Ident_Number");
+  auto v = detail::number(file_.name, st, std::numeric_limits<std::int64_t>::min(),
+                          std::numeric_limits<std::int64_t>::max());
+  if (!v) {
+    if (strict) return std::move(v).error();
+    RS4SIM_GSD_TRYV(detail::forgive(warnings_, std::move(v).error()));
+    return std::optional<std::int64_t>{};
+  }
+  const std::int64_t value = v.value();
+  if (value >= lo && value <= hi) return std::optional<std::int64_t>{value};
+  const std::string what = st.keyword + " = " + std::to_string(value) + " is out of range " +
+                           std::to_string(lo) + ".." + std::to_string(hi);
+  if (strict) return error(file_.name, st, GsdError::kOutOfRange, what);
+  const std::int64_t taken = std::clamp(value, lo, hi);
+  warn(st, what + "; " + std::to_string(taken) + " taken");
+  return std::optional<std::int64_t>{taken};
 }
 
 Result<void> Interpreter::definitions() {
@@ -169,7 +211,7 @@ Result<void> Interpreter::definitions() {
                          std::to_string(device_.params.at(n).line));
       }
     } else if (e.statement.is("PrmText")) {
-      RS4SIM_GSD_TRY(auto t, detail::interpret_prm_text(file_.name, e));
+      RS4SIM_GSD_TRY(auto t, detail::interpret_prm_text(file_.name, e, warnings_));
       const int n = t.number;
       if (!device_.prm_texts.emplace(n, std::move(t)).second) {
         return error(file_.name, e.statement, GsdError::kDuplicate,
@@ -189,24 +231,19 @@ Result<void> Interpreter::definitions() {
 Result<bool> Interpreter::baud_keyword(const syntax::Statement& st) {
   for (std::size_t i = 0; i < kBauds.size(); ++i) {
     const std::string name(kBauds[i].name);
-    if (st.is(name + "_supp")) {
-      RS4SIM_GSD_TRYV(once(st));
-      RS4SIM_GSD_TRY(const auto v, detail::number(file_.name, st, 0, 1));
-      device_.baud_rates[i].supported = v == 1;
-      return true;
-    }
-    if (st.is("MaxTsdr_" + name)) {
-      RS4SIM_GSD_TRYV(once(st));
-      RS4SIM_GSD_TRY(const auto v, detail::number(file_.name, st, 0, 0xFFFF));
-      device_.baud_rates[i].max_tsdr = static_cast<std::uint16_t>(v);
-      return true;
-    }
+    const bool supp = st.is(name + "_supp");
+    if (!supp && !st.is("MaxTsdr_" + name)) continue;
+    once(st);
+    RS4SIM_GSD_TRY(const auto v, ranged(st, 0, supp ? 1 : 0xFFFF));
+    if (v && supp) device_.baud_rates[i].supported = *v == 1;
+    if (v && !supp) device_.baud_rates[i].max_tsdr = static_cast<std::uint16_t>(*v);
+    return true;
   }
   return false;
 }
 
 Result<void> Interpreter::legacy_user_prm(const syntax::Statement& st) {
-  RS4SIM_GSD_TRYV(once(st));
+  once(st);
   if (!st.has_equals || st.fields.size() != 1) {
     return error(file_.name, st, GsdError::kBadValue, "User_Prm_Data expects bytes b0,b1,…");
   }
@@ -217,7 +254,7 @@ Result<void> Interpreter::legacy_user_prm(const syntax::Statement& st) {
 
 // `Slave_Family = 3` or `Slave_Family = 9@AS-I@…` ([PROFIBUS GSD spec Slave_Family]).
 Result<void> Interpreter::slave_family(const syntax::Statement& st) {
-  RS4SIM_GSD_TRYV(once(st));
+  once(st);
   const auto bad = [&] {
     return error(file_.name, st, GsdError::kBadValue,
                  "Slave_Family expects a family number, optionally followed by @sub-families");
@@ -237,8 +274,9 @@ Result<void> Interpreter::slave_family(const syntax::Statement& st) {
     }
     for (std::size_t pos = at + 1; pos <= t.size();) {
       const auto next = std::min(t.find('@', pos), t.size());
-      if (next == pos) return bad();  // "3@" or "3@@x"
-      device_.sub_families.push_back(t.substr(pos, next - pos));
+      const std::string_view sub = trim_blanks(std::string_view(t).substr(pos, next - pos));
+      if (sub.empty()) return bad();  // "3@" or "3@@x"
+      device_.sub_families.emplace_back(sub);
       pos = next + 1;
     }
   } else {
@@ -254,34 +292,35 @@ Result<void> Interpreter::slave_family(const syntax::Statement& st) {
 
 Result<void> Interpreter::statement(const syntax::Statement& st) {
   for (const auto& key : kNumberKeys) {
-    if (st.is(key.keyword)) {
-      RS4SIM_GSD_TRYV(once(st));
-      RS4SIM_GSD_TRY(const auto v, detail::number(file_.name, st, key.lo, key.hi));
-      key.set(device_, v);
-      return boost::outcome_v2::success();
-    }
+    if (!st.is(key.keyword)) continue;
+    once(st);
+    RS4SIM_GSD_TRY(const auto v, ranged(st, key.lo, key.hi));
+    if (v) key.set(device_, *v);
+    return boost::outcome_v2::success();
   }
   for (const auto& key : kStringKeys) {
-    if (st.is(key.keyword)) {
-      RS4SIM_GSD_TRYV(once(st));
-      RS4SIM_GSD_TRY(device_.*key.field, detail::string_value(file_.name, st));
-      return boost::outcome_v2::success();
-    }
+    if (!st.is(key.keyword)) continue;
+    once(st);
+    auto text = detail::string_value(file_.name, st);
+    if (!text) return detail::forgive(warnings_, std::move(text).error());
+    device_.*key.field = std::move(text).value();
+    return boost::outcome_v2::success();
   }
   RS4SIM_GSD_TRY(const bool baud, baud_keyword(st));
   if (baud) return boost::outcome_v2::success();
   if (st.is("Ext_User_Prm_Data_Const")) return global_.add_const(file_.name, st);
   if (st.is("Ext_User_Prm_Data_Ref")) return global_.add_ref(file_.name, st);
   if (st.is("User_Prm_Data")) return legacy_user_prm(st);
-  if (st.is("Slave_Family")) return slave_family(st);
+  if (st.is("Slave_Family")) return detail::forgive(warnings_, slave_family(st));
   if (st.is("Unit_Diag_Bit") || st.is("Unit_Diag_Not_Bit")) {
-    return detail::interpret_unit_diag_bit(file_.name, st, device_.unit_diag);
+    return detail::forgive(warnings_,
+                           detail::interpret_unit_diag_bit(file_.name, st, device_.unit_diag));
   }
   if (st.is("User_Prm_Data_Len")) {
-    RS4SIM_GSD_TRYV(once(st));
-    RS4SIM_GSD_TRY(const auto len, detail::number(file_.name, st, 0, 237));
-    global_.length = static_cast<std::size_t>(len);
-    global_.length_st = &st;
+    once(st);
+    RS4SIM_GSD_TRY(const auto len, ranged(st, 0, 237));
+    if (len) global_.length = static_cast<std::size_t>(*len);
+    if (len) global_.length_st = &st;
   }
   return boost::outcome_v2::success();  // a keyword a master does not need
 }
@@ -293,9 +332,10 @@ Result<void> Interpreter::finish() {
   bool any = false;
   for (const auto& b : device_.baud_rates) {
     if (b.supported && !b.max_tsdr) {
-      return Error{
-          GsdError::kMissingKeyword, file_.name, seen_.at(lower(std::string(b.name) + "_supp")),
-          std::string(b.name) + "_supp = 1", "MaxTsdr_" + std::string(b.name) + " is missing"};
+      warnings_.push_back({file_.name, seen_.at(lower(std::string(b.name) + "_supp")),
+                           std::string(b.name) + "_supp = 1",
+                           "MaxTsdr_" + std::string(b.name) +
+                               " is missing; the master keeps its own slot time at this rate"});
     }
     any = any || b.supported;
   }
@@ -312,25 +352,51 @@ Result<void> Interpreter::finish() {
   return boost::outcome_v2::success();
 }
 
+// A module named as an earlier one (blanks and case aside): listed, but --module finds the first.
+Result<void> Interpreter::module(const syntax::Entry& e) {
+  RS4SIM_GSD_TRY(auto m, detail::interpret_module(file_.name, e, device_.params));
+  const auto [first, fresh] = module_names_.emplace(lower(trim_blanks(m.name)), m.line);
+  if (!fresh) {
+    warn(e.statement, "module \"" + m.name + "\" already defined at line " +
+                          std::to_string(first->second) +
+                          "; a --module of this name takes the first");
+  }
+  device_.modules.push_back(std::move(m));
+  return boost::outcome_v2::success();
+}
+
+Result<void> Interpreter::block(const syntax::Entry& e) {
+  if (e.statement.is("Module")) return module(e);
+  if (e.statement.is("SlotDefinition")) slot_blocks_.push_back(&e);
+  if (e.statement.is("Unit_Diag_Area")) {
+    return detail::forgive(warnings_,
+                           detail::interpret_unit_diag_area(file_.name, e, device_.unit_diag));
+  }
+  return boost::outcome_v2::success();
+}
+
 Result<Device> Interpreter::run() {
-  for (const auto& b : kBauds) device_.baud_rates.push_back({b.name, b.bps, false, std::nullopt});
+  for (const auto& b : kBauds) {
+    device_.baud_rates.push_back({b.name, b.label, b.bps, false, std::nullopt});
+  }
   RS4SIM_GSD_TRYV(definitions());
+  device_.modules.reserve(file_.entries.size());
   for (const auto& e : file_.entries) {
     if (!e.body) {
       RS4SIM_GSD_TRYV(statement(e.statement));
-    } else if (e.statement.is("Module")) {
-      RS4SIM_GSD_TRY(auto m, detail::interpret_module(file_.name, e, device_.params));
-      if (device_.find_module(m.name)) {
-        return error(file_.name, e.statement, GsdError::kDuplicate,
-                     "module \"" + m.name + "\" defined twice");
-      }
-      device_.modules.push_back(std::move(m));
-    } else if (e.statement.is("Unit_Diag_Area")) {
-      RS4SIM_GSD_TRYV(detail::interpret_unit_diag_area(file_.name, e, device_.unit_diag));
+    } else {
+      RS4SIM_GSD_TRYV(block(e));
     }
+  }
+  for (const syntax::Entry* e : slot_blocks_) {
+    RS4SIM_GSD_TRY(auto slots, detail::interpret_slots(file_.name, *e, device_.modules, warnings_));
+    device_.slots.insert(device_.slots.end(), slots.begin(), slots.end());
   }
   RS4SIM_GSD_TRYV(finish());
   device_.warnings = file_.warnings;
+  device_.warnings.insert(device_.warnings.end(), warnings_.begin(), warnings_.end());
+  std::stable_sort(device_.warnings.begin(), device_.warnings.end(),
+                   [](const Warning& a, const Warning& b) { return a.line < b.line; });
   device_.latin1 = file_.latin1;
   return std::move(device_);
 }

@@ -15,6 +15,13 @@ namespace rs4sim::gsd::detail {
 Error error(const std::string& file, const syntax::Statement& st, GsdError code,
             std::string message);
 
+// What the interpreter took other than written (docs/gsd.md "The rule"): file:line, the
+// statement, what was done.
+void warn(std::vector<Warning>& out, const std::string& file, const syntax::Statement& st,
+          std::string message);
+// An error on a line the master can do without becomes a warning ("…; line ignored").
+Result<void> forgive(std::vector<Warning>& out, Result<void> r);
+
 // `keyword = n` with lo <= n <= hi.
 Result<std::int64_t> number(const std::string& file, const syntax::Statement& st, std::int64_t lo,
                             std::int64_t hi);
@@ -50,7 +57,8 @@ struct TemplateBuilder {
 };
 
 Result<ExtParam> interpret_ext_param(const std::string& file, const syntax::Entry& entry);
-Result<PrmText> interpret_prm_text(const std::string& file, const syntax::Entry& entry);
+Result<PrmText> interpret_prm_text(const std::string& file, const syntax::Entry& entry,
+                                   std::vector<Warning>& warnings);
 // Unit_Diag_Bit(n) / Unit_Diag_Not_Bit(n) = "text"; a Unit_Diag_Area block (unit_diag.cpp).
 Result<void> interpret_unit_diag_bit(const std::string& file, const syntax::Statement& st,
                                      UnitDiag& out);
@@ -58,5 +66,10 @@ Result<void> interpret_unit_diag_area(const std::string& file, const syntax::Ent
                                       UnitDiag& out);
 Result<Module> interpret_module(const std::string& file, const syntax::Entry& entry,
                                 const std::map<int, ExtParam>& params);
+// A SlotDefinition block (slot_definition.cpp); slots naming no module are left out with a
+// warning.
+Result<std::vector<SlotDef>> interpret_slots(const std::string& file, const syntax::Entry& entry,
+                                             const std::vector<Module>& modules,
+                                             std::vector<Warning>& warnings);
 
 }  // namespace rs4sim::gsd::detail

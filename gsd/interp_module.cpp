@@ -74,6 +74,9 @@ Result<void> read_body_line(const std::string& file, const syntax::Statement& st
     RS4SIM_GSD_TRYV(b.f_prm.add_ref(file, st));
   } else if (st.is("F_ParamDescCRC")) {
     RS4SIM_GSD_TRYV(read_crc(file, st, b.module.f_param_desc_crc));
+  } else if (st.is("Preset")) {
+    RS4SIM_GSD_TRY(const auto v, number(file, st, 0, 1));
+    b.module.preset = v == 1;
   } else if (st.is("F_IO_StructureDescCRC")) {
     RS4SIM_GSD_TRYV(read_crc(file, st, b.module.f_io_structure_desc_crc));
   }  // Data_Area_Beg, Channel_Diag, … carry nothing the configuration needs

@@ -148,23 +148,32 @@ Result<ExtParam> interpret_ext_param(const std::string& file, const syntax::Entr
   return p;
 }
 
-Result<PrmText> interpret_prm_text(const std::string& file, const syntax::Entry& entry) {
+namespace {
+
+Result<void> read_text(const std::string& file, const syntax::Statement& st, PrmText& t) {
+  if (!st.is("Text")) {
+    return error(file, st, GsdError::kBadValue, "PrmText holds only Text(value) = \"…\" lines");
+  }
+  if (!st.has_args || st.args.size() != 1 || !st.args[0].is_number()) {
+    return error(file, st, GsdError::kBadValue, "Text expects one number in (…)");
+  }
+  RS4SIM_GSD_TRY(auto text, string_value(file, st));
+  if (!t.texts.emplace(st.args[0].number, std::move(text)).second) {
+    return error(file, st, GsdError::kDuplicate,
+                 "Text(" + std::to_string(st.args[0].number) + ") given twice");
+  }
+  return boost::outcome_v2::success();
+}
+
+}  // namespace
+
+// The texts only name values: a line that is not one is skipped with a warning.
+Result<PrmText> interpret_prm_text(const std::string& file, const syntax::Entry& entry,
+                                   std::vector<Warning>& warnings) {
   PrmText t;
   RS4SIM_GSD_TRY(const auto number_value, number(file, entry.statement, 0, 65535));
   t.number = static_cast<int>(number_value);
-  for (const auto& st : *entry.body) {
-    if (!st.is("Text")) {
-      return error(file, st, GsdError::kBadValue, "PrmText holds only Text(value) = \"…\" lines");
-    }
-    if (!st.has_args || st.args.size() != 1 || !st.args[0].is_number()) {
-      return error(file, st, GsdError::kBadValue, "Text expects one number in (…)");
-    }
-    RS4SIM_GSD_TRY(auto text, string_value(file, st));
-    if (!t.texts.emplace(st.args[0].number, std::move(text)).second) {
-      return error(file, st, GsdError::kDuplicate,
-                   "Text(" + std::to_string(st.args[0].number) + ") given twice");
-    }
-  }
+  for (const auto& st : *entry.body) RS4SIM_GSD_TRYV(forgive(warnings, read_text(file, st, t)));
   return t;
 }
 

@@ -10,6 +10,18 @@ Error error(const std::string& file, const syntax::Statement& st, GsdError code,
   return Error{code, file, st.line, st.text, std::move(message)};
 }
 
+void warn(std::vector<Warning>& out, const std::string& file, const syntax::Statement& st,
+          std::string message) {
+  out.push_back({file, st.line, st.text, std::move(message)});
+}
+
+Result<void> forgive(std::vector<Warning>& out, Result<void> r) {
+  if (r) return r;
+  const Error& e = r.error();
+  out.push_back({e.file, e.line, e.text, e.message + "; line ignored"});
+  return boost::outcome_v2::success();
+}
+
 namespace {
 std::string range(std::int64_t lo, std::int64_t hi) {
   return std::to_string(lo) + ".." + std::to_string(hi);

@@ -64,15 +64,15 @@ Result<std::vector<Token>> tokenize(const LogicalLine& line, const std::string& 
       i = close + 1;
       space = false;
     } else if (is_word(c)) {
-      // A name with `@` is a main family with sub-families, `Slave_Family = 9@AS-I@Gateway`
-      // ([PROFIBUS GSD spec Slave_Family]): after the first `@` the name runs to the next
-      // blank or comma, so `-` and `/` are part of it.
+      // A name with `@` is a main family with sub-families, `Slave_Family = 2@Motor
+      // starter@Direct soft starter` ([PROFIBUS GSD spec Slave_Family]): after the first `@`
+      // the name runs to the end of the line (trailing blanks dropped), so blanks, `-` and `/`
+      // are part of the sub-family names.
       std::size_t j = i;
-      bool family = false;
-      while (j < s.size() &&
-             (is_word(s[j]) || (family && !is_space(s[j]) && s[j] != ',' && s[j] != '"'))) {
-        family = family || s[j] == '@';
-        ++j;
+      while (j < s.size() && is_word(s[j]) && s[j] != '@') ++j;
+      if (j < s.size() && s[j] == '@') {
+        j = s.size();
+        while (j > i && is_space(s[j - 1])) --j;
       }
       tokens.push_back({Token::Kind::kWord, s.substr(i, j - i), space});
       i = j;

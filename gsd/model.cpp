@@ -42,9 +42,26 @@ std::string ExtParam::range_text() const {
   return out;
 }
 
+std::string_view trim_blanks(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  return s.substr(first, s.find_last_not_of(" \t") - first + 1);
+}
+
 const Module* Device::find_module(std::string_view name) const {
   for (const auto& m : modules) {
     if (syntax::iequals(m.name, name)) return &m;
+  }
+  const std::string_view wanted = trim_blanks(name);
+  for (const auto& m : modules) {
+    if (syntax::iequals(trim_blanks(m.name), wanted)) return &m;
+  }
+  return nullptr;
+}
+
+const Module* Device::find_module_by_reference(std::uint32_t reference) const {
+  for (const auto& m : modules) {
+    if (m.reference == reference) return &m;
   }
   return nullptr;
 }

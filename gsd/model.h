@@ -16,7 +16,8 @@ namespace rs4sim::gsd {
 
 // One of the ten DP baud rates with its `<name>_supp` and `MaxTsdr_<name>` keywords.
 struct BaudRate {
-  std::string_view name;  // as in the keywords: "9.6" … "12M"
+  std::string_view name;   // as in the keywords: "9.6" … "12M"
+  std::string_view label;  // as a user types and reads it (--baud): "9.6k" … "12M"
   std::uint32_t bits_per_second = 0;
   bool supported = false;
   std::optional<std::uint16_t> max_tsdr;  // Tbit; absent when the file does not say
@@ -58,6 +59,8 @@ enum class ParamType {
 };
 
 std::string_view to_string(ParamType type);
+// `s` without leading and trailing blanks and tabs (module names as a user types them).
+std::string_view trim_blanks(std::string_view s);
 std::size_t byte_size(ParamType type);  // bytes written at the reference offset
 
 // ExtUserPrmData = n "name" … EndExtUserPrmData ([PROFIBUS GSD spec general keywords]).
@@ -110,6 +113,20 @@ struct Module {
   std::optional<PrmTemplate> f_prm;  // F_Ext_Module_Prm_Data_Len / F_Ext_User_Prm_Data_*
   std::optional<std::uint16_t> f_param_desc_crc;
   std::optional<std::uint16_t> f_io_structure_desc_crc;
+  // `Preset = 1` ([PROFIBUS GSD spec modules]): the engineering tool places the module in the
+  // first slots, in file order, ahead of the user's modules (gsd::place_modules).
+  bool preset = false;
+  int line = 0;
+};
+
+// `Slot(n) = "name" default allowed` of a SlotDefinition block ([PROFIBUS GSD spec
+// SlotDefinition]): the module a slot holds unless the user chooses another of `allowed`
+// (module reference numbers, the bare number line of a Module block).
+struct SlotDef {
+  int number = 0;
+  std::string name;
+  std::uint32_t default_ref = 0;
+  std::vector<std::uint32_t> allowed;  // includes the default
   int line = 0;
 };
 
@@ -158,15 +175,23 @@ struct Device {
   std::map<int, ExtParam> params;
   std::map<int, PrmText> prm_texts;
   std::vector<Module> modules;
+  bool fix_preset_modules = false;  // FixPresetModules: the presets cannot be left out
+  std::uint8_t modul_offset = 0;    // Modul_Offset: the slot number of the first module
+  std::vector<SlotDef> slots;       // SlotDefinition, in slot number order
   UnitDiag unit_diag;
   // Slave_Family = main[@sub[@sub…]] ([PROFIBUS GSD spec Slave_Family]): 0 general, 1 drives,
   // 2 switching devices, 3 I/O, … 9 gateways …; the sub-families as written ("AS-I").
   std::optional<std::uint8_t> slave_family;
   std::vector<std::string> sub_families;
-  std::vector<Warning> warnings;  // lines skipped (syntax::File::warnings)
-  bool latin1 = false;            // strings were ISO 8859-1, converted to UTF-8
+  // Lines skipped and values taken other than written (syntax::File::warnings and the
+  // interpreter's), in line order.
+  std::vector<Warning> warnings;
+  bool latin1 = false;  // strings were ISO 8859-1, converted to UTF-8
 
-  const Module* find_module(std::string_view name) const;  // case-insensitive
+  // By name, case-insensitive, leading and trailing blanks ignored on both sides (vendors pad
+  // names: `"2 PD   (2 words)         "`); an exact match wins over a padded one.
+  const Module* find_module(std::string_view name) const;
+  const Module* find_module_by_reference(std::uint32_t reference) const;
   const BaudRate* find_baud(std::uint32_t bits_per_second) const;
 };
 

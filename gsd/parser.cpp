@@ -84,61 +84,122 @@ bool iequals(std::string_view a, std::string_view b) {
 
 bool Statement::is(std::string_view name) const { return iequals(keyword, name); }
 
+namespace {
+
+// A block that may hold another: the X_Unit_Diag_Area / Unit_Diag_Area blocks of a
+// UnitDiagType block ([PROFIBUS GSD spec UnitDiagType]; a SINAMICS file writes
+// `UnitDiagType = 129`, `X_Unit_Diag_Area=24-31` … `X_Unit_Diag_Area_End`, `EndUnitDiagType`).
+// The inner block's lines, its head and End line included, stay in the outer block's body.
+bool may_nest(const BlockKind& outer, const BlockKind& inner) {
+  return outer.open == "UnitDiagType" &&
+         (inner.open == "X_Unit_Diag_Area" || inner.open == "Unit_Diag_Area");
+}
+
+// Groups statements into entries and blocks.
+class BlockReader {
+ public:
+  explicit BlockReader(File& file) : file_(file) {}
+  Result<void> add(Statement st);
+  Result<void> finish() const;
+
+ private:
+  Error fail(const Statement& st, std::string message) const {
+    return structure_error(file_.name, st, std::move(message));
+  }
+  Result<void> close(Statement st, const BlockKind& ends);
+
+  File& file_;
+  const BlockKind* open_ = nullptr;   // the block being read, if any
+  const BlockKind* inner_ = nullptr;  // a block nested in it (may_nest)
+  int inner_line_ = 0;
+};
+
+Result<void> BlockReader::add(Statement st) {
+  if (st.is("#Profibus_DP")) return fail(st, "second #Profibus_DP header");
+  if (const BlockKind* starts = opener(st)) {
+    if (open_ && !inner_ && may_nest(*open_, *starts)) {
+      inner_ = starts;
+      inner_line_ = st.line;
+      file_.entries.back().body->push_back(std::move(st));
+      return boost::outcome_v2::success();
+    }
+    if (open_) {
+      return fail(st, std::string(starts->open) + " inside " + std::string(open_->open) +
+                          " started at line " +
+                          std::to_string(file_.entries.back().statement.line));
+    }
+    open_ = starts;
+    file_.entries.push_back({std::move(st), std::vector<Statement>{}});
+  } else if (const BlockKind* ends = closer(st)) {
+    return close(std::move(st), *ends);
+  } else if (open_) {
+    file_.entries.back().body->push_back(std::move(st));
+  } else {
+    file_.entries.push_back({std::move(st), std::nullopt});
+  }
+  return boost::outcome_v2::success();
+}
+
+Result<void> BlockReader::close(Statement st, const BlockKind& ends) {
+  const BlockKind* expected = inner_ ? inner_ : open_;
+  if (inner_ && open_ == &ends) {
+    return fail(st, std::string(inner_->open) + " started at line " + std::to_string(inner_line_) +
+                        " is not closed (" + std::string(inner_->close) + " missing)");
+  }
+  if (expected != &ends) {
+    return fail(st, std::string(ends.close) + " without " + std::string(ends.open));
+  }
+  if (st.has_args || st.has_equals || !st.fields.empty()) {
+    return fail(st, std::string(ends.close) + " takes no value");
+  }
+  if (inner_) {
+    inner_ = nullptr;
+    file_.entries.back().body->push_back(std::move(st));
+  } else {
+    open_ = nullptr;
+  }
+  return boost::outcome_v2::success();
+}
+
+Result<void> BlockReader::finish() const {
+  if (!open_) return boost::outcome_v2::success();
+  const Statement& head = file_.entries.back().statement;
+  return fail(head, std::string(open_->open) + " is not closed (" + std::string(open_->close) +
+                        " missing)");
+}
+
+Result<Statement> read_header(const std::vector<LogicalLine>& lines, const std::string& name) {
+  if (lines.empty()) {
+    return Error{GsdError::kMissingHeader, name, 1, "",
+                 "no keyword line: the file must start with #Profibus_DP"};
+  }
+  auto parsed = parse_statement(lines.front(), name);
+  if (!parsed) {
+    return Error{GsdError::kMissingHeader, name, lines.front().line, lines.front().text,
+                 "not a GSD: the first keyword line must be #Profibus_DP"};
+  }
+  if (!parsed.value().is("#Profibus_DP")) {
+    return Error{GsdError::kMissingHeader, name, parsed.value().line, parsed.value().text,
+                 "the first keyword line must be #Profibus_DP"};
+  }
+  return std::move(parsed).value();
+}
+
+}  // namespace
+
 Result<File> parse_syntax(std::string_view raw, std::string file_name) {
   bool latin1 = false;
   const std::string text = to_utf8(raw, &latin1);
   RS4SIM_GSD_TRY(auto lines, split_logical_lines(text, file_name));
   File file{file_name, {}, {}, latin1};
-  if (lines.empty()) {
-    return Error{GsdError::kMissingHeader, file_name, 1, "",
-                 "no keyword line: the file must start with #Profibus_DP"};
-  }
-  auto parsed_header = parse_statement(lines.front(), file_name);
-  if (!parsed_header) {
-    return Error{GsdError::kMissingHeader, file_name, lines.front().line, lines.front().text,
-                 "not a GSD: the first keyword line must be #Profibus_DP"};
-  }
-  Statement header = std::move(parsed_header).value();
-  if (!header.is("#Profibus_DP")) {
-    return Error{GsdError::kMissingHeader, file_name, header.line, header.text,
-                 "the first keyword line must be #Profibus_DP"};
-  }
-  const BlockKind* open = nullptr;  // the block being read, if any
+  RS4SIM_GSD_TRYV(read_header(lines, file_name));
+  file.entries.reserve(lines.size());
+  BlockReader blocks(file);
   for (std::size_t i = 1; i < lines.size(); ++i) {
     RS4SIM_GSD_TRY(auto read, read_line(lines[i], file_name, file.warnings));
-    if (!read) continue;
-    Statement st = std::move(*read);
-    if (st.is("#Profibus_DP")) return structure_error(file_name, st, "second #Profibus_DP header");
-    if (const BlockKind* starts = opener(st)) {
-      if (open) {
-        return structure_error(file_name, st,
-                               std::string(starts->open) + " inside " + std::string(open->open) +
-                                   " started at line " +
-                                   std::to_string(file.entries.back().statement.line));
-      }
-      open = starts;
-      file.entries.push_back({std::move(st), std::vector<Statement>{}});
-    } else if (const BlockKind* ends = closer(st)) {
-      if (open != ends) {
-        return structure_error(file_name, st,
-                               std::string(ends->close) + " without " + std::string(ends->open));
-      }
-      if (st.has_args || st.has_equals || !st.fields.empty()) {
-        return structure_error(file_name, st, std::string(ends->close) + " takes no value");
-      }
-      open = nullptr;
-    } else if (open) {
-      file.entries.back().body->push_back(std::move(st));
-    } else {
-      file.entries.push_back({std::move(st), std::nullopt});
-    }
+    if (read) RS4SIM_GSD_TRYV(blocks.add(std::move(*read)));
   }
-  if (open) {
-    const Statement& head = file.entries.back().statement;
-    return structure_error(
-        file_name, head,
-        std::string(open->open) + " is not closed (" + std::string(open->close) + " missing)");
-  }
+  RS4SIM_GSD_TRYV(blocks.finish());
   return file;
 }
 

@@ -54,7 +54,7 @@ struct Entry {
 
 struct File {
   std::string name;
-  std::vector<Entry> entries;  // in file order, starting after #Profibus_DP
+  std::vector<Entry> entries;     // in file order, starting after #Profibus_DP
   std::vector<Warning> warnings;  // lines skipped: words that are not GSD keywords
   bool latin1 = false;            // the text was not UTF-8: read as ISO 8859-1
 };

@@ -5,7 +5,8 @@
 // and skip with a message when it is absent (a user's own clone). Facts derived by hand from
 // those files (an ident, a count) are written into the tests; the files' bytes are not.
 //
-// The test target passes its source root: target_compile_definitions(... RS4SIM_SOURCE_DIR=...).
+// The test target passes its source root: rs4sim_test_paths(TARGET RS4SIM_SOURCE_DIR ...)
+// (tests/CMakeLists.txt).
 
 #include <cstdlib>
 #include <filesystem>

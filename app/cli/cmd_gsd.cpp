@@ -3,6 +3,7 @@
 // The layout of the user data is documented in docs/gsd.md.
 #include "app/cli/command.h"
 #include "app/runtime/whole_file.h"
+#include "gsd/check_report.h"
 #include "gsd/config.h"
 #include "gsd/device_gsd.h"
 #include "gsd/interp.h"
@@ -28,23 +29,12 @@ struct Options {
   std::string gsd_file;
   std::vector<std::string> modules;
   std::vector<std::string> sets;
+  std::string check_file;  // `gsd check FILE`
+  CLI::App* check = nullptr;
 };
 
-std::string hex_bytes(const std::vector<std::uint8_t>& bytes) {
-  std::string out;
-  char b[4];
-  for (const auto v : bytes) {
-    std::snprintf(b, sizeof b, "%02X", v);
-    out += (out.empty() ? "" : " ") + std::string(b);
-  }
-  return out;
-}
-
-std::string hex16(unsigned v) {
-  char b[8];
-  std::snprintf(b, sizeof b, "0x%04X", v & 0xFFFFU);
-  return b;
-}
+using gsd::hex16;
+using gsd::hex_bytes;
 
 gsd::ParamOverride parse_set(const std::string& text) {
   const auto eq = text.find('=');
@@ -80,7 +70,10 @@ std::string byte_notes(const gsd::SlaveSetup& c, std::size_t i) {
 void print_text(const gsd::SlaveSetup& c, const std::string& source, std::ostream& out) {
   out << "GSD: " << source << "\n";
   out << "Ident_Number: " << hex16(c.ident_number) << "\n";
-  for (const auto& m : c.modules) out << "Module: " << m << "\n";
+  for (std::size_t i = 0; i < c.modules.size(); ++i) {
+    out << "Module: " << c.modules[i] << " (slot " << c.slots[i].slot
+        << (c.slots[i].preset ? ", preset" : "") << ")\n";
+  }
   out << "Chk_Cfg: " << hex_bytes(c.cfg) << "\n";
   out << "Input_Len: " << c.input_len << "\n";
   out << "Output_Len: " << c.output_len << "\n";
@@ -135,22 +128,23 @@ int run_prm(const Options& o) {
     const auto file = read_whole_file(o.gsd_file);
     if (!file) {
       std::cerr << "rs4sim gsd: cannot read " << o.gsd_file << ": " << file.error << "\n";
-      return 1;
+      return 2;
     }
     loaded = gsd::parse(file.bytes, o.gsd_file);
   }
   const gsd::Result<gsd::Device>& device = builtin ? gsd::rs4sim_device() : loaded;
-  if (!device) {
+  if (!device) {  // the user's file refused: bad input (the built-in file never is)
     std::cerr << "rs4sim gsd: " << device.error().what() << "\n";
-    return 1;
+    return 2;
   }
   for (const auto& w : device.value().warnings) {
     std::cerr << "rs4sim gsd: warning: " << w.what() << "\n";
   }
   auto config = gsd::configure(device.value(), {o.modules, overrides(o, builtin)});
-  if (!config) {
+  if (!config) {  // a module the file does not have: bad input; a parameter value: 1
     std::cerr << "rs4sim gsd: " << config.error().what() << "\n";
-    return 1;
+    const auto code = config.error().code;
+    return code == gsd::GsdError::kUnknownModule || code == gsd::GsdError::kModuleCount ? 2 : 1;
   }
   const std::string source =
       builtin ? std::string(gsd::kRs4simGsdFileName) + " (built in)" : o.gsd_file;
@@ -161,7 +155,27 @@ int run_prm(const Options& o) {
   return 0;
 }
 
+// `gsd check FILE`: exit 0 when the file is read (warnings or not), 2 when it is refused.
+int run_check(const Options& o) {
+  const auto file = read_whole_file(o.check_file);
+  if (!file) {
+    std::cerr << "rs4sim gsd check: cannot read " << o.check_file << ": " << file.error << "\n";
+    return 2;
+  }
+  const auto device = gsd::parse(file.bytes, o.check_file);
+  if (!device) {
+    std::cerr << "rs4sim gsd check: " << device.error().what() << "\n";
+    return 2;
+  }
+  std::cout << gsd::check_report(device.value());
+  return std::cout.good() ? 0 : 1;
+}
+
 int run(const Options& o) {
+  if (o.check && o.check->parsed()) {
+    if (o.prm || !o.output.empty()) throw UsageError("gsd check takes no --prm or --output");
+    return run_check(o);
+  }
   if (!o.prm && (o.json || o.address || o.f_source_add || o.f_wd_time || o.f_check_seqnr ||
                  !o.gsd_file.empty() || !o.modules.empty() || !o.sets.empty())) {
     throw UsageError("gsd: --json, --address, --f-*, --gsd, --module and --set need --prm");
@@ -201,6 +215,9 @@ const CommandRegistration kRegistration{
       cmd.add_option("--module", o->modules,
                      "module name (repeat for a modular station, in slot order)");
       cmd.add_option("--set", o->sets, "NAME=VALUE: set any ExtUserPrmData parameter by name");
+      o->check = cmd.add_subcommand(
+          "check", "Read a GSD file as rs4sim does: ident, rates, modules, parameters, warnings");
+      o->check->add_option("file", o->check_file, "the GSD file")->required();
       return [o] { return run(*o); };
     }};
 

@@ -67,11 +67,12 @@ GsdStationSpec load_gsd_station(const std::string& path, const std::vector<std::
   if (!setup) throw UsageError(path + ": " + setup.error().what());
   spec.setup = std::move(setup).value();
   GsdStationSpec::ModuleIo io;
-  for (const auto& name : spec.setup.modules) {
-    const gsd::Module* m = spec.device->find_module(name);
+  for (const auto& placed : spec.setup.slots) {
+    const gsd::Module* m = &spec.device->modules[placed.index];
     io.name = m->name;
     io.input_len = m->input_len;
     io.output_len = m->output_len;
+    io.preset = placed.preset;
     spec.modules.push_back(io);
     io.input_offset += m->input_len;
     io.output_offset += m->output_len;
@@ -84,7 +85,7 @@ void check_gsd_baud(const GsdStationSpec& spec, const std::string& baud) {
   if (b && b->supported) return;
   std::string list;
   for (const auto& r : spec.device->baud_rates) {
-    if (r.supported) list += (list.empty() ? "" : ", ") + std::string(r.name);
+    if (r.supported) list += (list.empty() ? "" : ", ") + std::string(r.label);
   }
   throw UsageError(spec.file + ": the device does not support " + baud +
                    " bit/s (its GSD: " + list + ")");
@@ -108,11 +109,13 @@ dp::master::SlaveEntry gsd_master_entry(const GsdStationSpec& spec,
   fixed.min_tsdr = 11;
   fixed.ident_number = c.ident_number;
   dp::fdl::DataUnit du;
-  if (!dp::pdu::encode_set_prm(fixed, du)) throw UsageError(spec.file + ": Set_Prm does not encode");
+  if (!dp::pdu::encode_set_prm(fixed, du))
+    throw UsageError(spec.file + ": Set_Prm does not encode");
   du.insert(du.end(), c.user_prm_data.begin(), c.user_prm_data.end());
   // A DPV1 slave reads bytes 7..9 as DPV1_Status ([IEC 61158-6-3 DPV1_Status]).
-  auto prm = dp::pdu::decode_set_prm(std::span<const std::uint8_t>(du.data(), du.size()),
-                                     c.dpv1 ? dp::pdu::PrmLayout::kDpv1 : dp::pdu::PrmLayout::kDpv0);
+  auto prm =
+      dp::pdu::decode_set_prm(std::span<const std::uint8_t>(du.data(), du.size()),
+                              c.dpv1 ? dp::pdu::PrmLayout::kDpv1 : dp::pdu::PrmLayout::kDpv0);
   if (!prm) throw UsageError(spec.file + ": Set_Prm does not decode: " + prm.error().message());
   dp::master::SlaveEntry m;
   m.address = spec.address;
@@ -157,7 +160,8 @@ void GsdApplication::read_inputs(std::span<std::uint8_t> inputs, dp::TimePoint) 
   std::fill(inputs.begin() + static_cast<std::ptrdiff_t>(n), inputs.end(), std::uint8_t{0});
 }
 
-std::error_code GsdApplication::set_inputs(std::size_t module, std::span<const std::uint8_t> bytes) {
+std::error_code GsdApplication::set_inputs(std::size_t module,
+                                           std::span<const std::uint8_t> bytes) {
   if (module >= spec_.modules.size() || bytes.size() != spec_.modules[module].input_len) {
     return std::make_error_code(std::errc::invalid_argument);
   }
@@ -187,7 +191,9 @@ GsdStation::GsdStation(GsdStationSpec spec)
 
 std::string GsdStation::describe() const {
   std::string modules;
-  for (const auto& m : spec_->modules) modules += (modules.empty() ? "\"" : ", \"") + m.name + "\"";
+  for (const auto& m : spec_->modules) {
+    modules += (modules.empty() ? "\"" : ", \"") + m.name + (m.preset ? "\" (preset)" : "\"");
+  }
   std::string cfg;
   char b[4];
   for (auto x : spec_->setup.cfg) {

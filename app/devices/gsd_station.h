@@ -44,6 +44,7 @@ struct GsdStationSpec {
     std::string name;
     std::size_t input_offset = 0, input_len = 0;
     std::size_t output_offset = 0, output_len = 0;
+    bool preset = false;  // placed by `Preset = 1` (gsd::place_modules)
   };
   std::vector<ModuleIo> modules;  // slot order
 };
@@ -98,8 +99,8 @@ class GsdApplication final : public dp::slave::SlaveApplication {
     generic_.on_outputs_cleared(why, now);
   }
   void read_inputs(std::span<std::uint8_t> inputs, dp::TimePoint now) override;
-  void on_state_change(dp::slave::State from, dp::slave::State to,
-                       dp::slave::TransitionReason why, dp::TimePoint now) override {
+  void on_state_change(dp::slave::State from, dp::slave::State to, dp::slave::TransitionReason why,
+                       dp::TimePoint now) override {
     generic_.on_state_change(from, to, why, now);
   }
   dp::slave::AcyclicResult on_acyclic(const dp::slave::AcyclicRequest& req,

@@ -182,7 +182,9 @@ void GsdMasterSlaves::start(const MasterReport& report, dp::TimePoint now) const
   for (const auto& s : slaves_) {
     const auto& spec = s.spec;
     std::string names;
-    for (const auto& m : spec.modules) names += (names.empty() ? "\"" : ", \"") + m.name + "\"";
+    for (const auto& m : spec.modules) {
+      names += (names.empty() ? "\"" : ", \"") + m.name + (m.preset ? "\" (preset)" : "\"");
+    }
     const std::string ident = hex16(spec.device->ident_number);
     report.custom(now, spec.address, "GSD slave", "gsd",
                   spec.file + ", ident " + ident + ", modules " + names + ", Chk_Cfg " +

@@ -7,6 +7,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <string>
+
 namespace {
 
 using namespace rs4sim::gsd;
@@ -39,6 +41,47 @@ void BM_ConfigureRs4WithOverrides(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_ConfigureRs4WithOverrides);
+
+// A modular station with `n` modules of one Cfg byte each (the file of a hostile or generated
+// GSD): parsing stays linear in the file's size (100k modules: about 10 MB of statements).
+std::string many_modules(std::int64_t n) {
+  std::string text =
+      "#Profibus_DP\nIdent_Number = 0x1234\n12M_supp = 1\nMaxTsdr_12M = 800\n"
+      "Modular_Station = 1\nMax_Module = 244\n";
+  for (std::int64_t i = 0; i < n; ++i) {
+    text += "Module = \"Module " + std::to_string(i) + "\" 0x10\nEndModule\n";
+  }
+  return text;
+}
+
+void BM_ParseManyModules(benchmark::State& state) {
+  const std::string text = many_modules(state.range(0));
+  for (auto _ : state) {
+    auto device = parse(text, "many.gsd");
+    if (!device || device.value().modules.size() != static_cast<std::size_t>(state.range(0))) {
+      state.SkipWithError("not parsed");
+    }
+    benchmark::DoNotOptimize(device);
+  }
+  state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(text.size()));
+  state.SetComplexityN(state.range(0));
+}
+BENCHMARK(BM_ParseManyModules)
+    ->RangeMultiplier(10)
+    ->Range(1000, 100000)
+    ->Unit(benchmark::kMillisecond)
+    ->Complexity(benchmark::oN);
+
+// The last module of such a file configured by name (what `rs4sim gsd --prm --module` does).
+void BM_ConfigureLastOfManyModules(benchmark::State& state) {
+  const auto device = parse(many_modules(state.range(0)), "many.gsd");
+  const ConfigRequest request{{"Module " + std::to_string(state.range(0) - 1)}, {}};
+  for (auto _ : state) {
+    auto config = configure(device.value(), request);
+    benchmark::DoNotOptimize(config);
+  }
+}
+BENCHMARK(BM_ConfigureLastOfManyModules)->Arg(100000)->Unit(benchmark::kMillisecond);
 
 void BM_DecodeCfg(benchmark::State& state) {
   const std::vector<std::uint8_t> cfg{0xC4, 0x84, 0x84, 0x05, 0x0A, 0x05,

@@ -1,7 +1,11 @@
 // libFuzzer: any text (ASCII, UTF-8 or ISO 8859-1) → gsd::parse → (if it means something)
-// gsd::configure, and the file's own bytes read as Ext_Diag_Data against its Unit_Diag texts. Seeds cover sub-families, Latin-1 text and skipped unknown keywords.
+// gsd::configure (the slot list of gsd::place_modules: presets, SlotDefinition), the F-parameter
+// defaults, the `gsd check` report, and the file's own bytes read as Ext_Diag_Data against its
+// Unit_Diag texts. Seeds cover sub-families, Latin-1 text, skipped unknown keywords, presets,
+// slot definitions and blocks nested in UnitDiagType.
 // Must never crash, hang or leak; a successful configuration must be self-consistent.
 #include "gsd/cfg.h"
+#include "gsd/check_report.h"
 #include "gsd/config.h"
 #include "gsd/interp.h"
 #include "gsd/unit_diag.h"
@@ -48,12 +52,26 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (all.overrides.size() < 4) all.overrides.push_back({p.name, p.max});
   }
   if (auto c = rs4sim::gsd::configure(d, all)) check(c.value());
-  for (const auto& m : d.modules) (void)rs4sim::gsd::f_param_desc_crc(d, m);
+  for (const auto& m : d.modules) {
+    (void)rs4sim::gsd::f_param_desc_crc(d, m);
+    if (auto f = rs4sim::gsd::f_parameter_defaults(d, m); f && f.value().block.size() != 10) {
+      __builtin_trap();
+    }
+  }
+  // The slot list: presets first, every slot a module of the file.
+  if (auto placed = rs4sim::gsd::place_modules(d, all.modules)) {
+    std::size_t presets = 0;
+    for (const auto& p : placed.value()) {
+      if (p.index >= d.modules.size()) __builtin_trap();
+      if (p.preset && &p != &placed.value()[presets++]) __builtin_trap();
+    }
+  }
+  if (d.modules.size() < 64 && rs4sim::gsd::check_report(d).empty()) __builtin_trap();
   // The texts come from the file: never more than it declares (a file starting with '#' reads
   // as a device-related block of 35 bytes, 0x23).
   const auto texts = rs4sim::gsd::unit_diag_texts(d.unit_diag, {data, size});
-  if (texts.size() > d.unit_diag.bits.size() + d.unit_diag.not_bits.size() +
-                         d.unit_diag.areas.size()) {
+  if (texts.size() >
+      d.unit_diag.bits.size() + d.unit_diag.not_bits.size() + d.unit_diag.areas.size()) {
     __builtin_trap();
   }
   return 0;

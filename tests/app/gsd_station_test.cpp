@@ -51,6 +51,30 @@ struct Rig {
   }
 };
 
+// The slot list of gsd::place_modules for the station and our master alike: the file's three
+// presets ahead of the user's modules (its header comment gives the bytes worked out by hand).
+TEST(GsdStation, PresetModulesLeadTheStationAndOurMastersChkCfg) {
+  GsdStationSpec spec = load_gsd_station(kCorpus + "/preset_im153_style.gsd", {"DI 16", "DO 8"}, 5);
+  const Bytes cfg{0x04, 0x00, 0x00, 0xAD, 0xC4, 0x04, 0x00, 0x00, 0x8B, 0x41,
+                  0x04, 0x00, 0x00, 0x8F, 0xC0, 0x11, 0x20};
+  EXPECT_EQ(spec.setup.cfg, cfg);
+  ASSERT_EQ(spec.modules.size(), 5U);
+  EXPECT_TRUE(spec.modules[2].preset);
+  EXPECT_FALSE(spec.modules[3].preset);
+  EXPECT_EQ(spec.modules[3].input_offset, 0U);  // the presets carry no I/O
+  const auto entry = gsd_master_entry(spec, 100ms);
+  EXPECT_EQ(Bytes(entry.cfg.begin(), entry.cfg.end()), cfg);
+  std::vector<GsdStationSpec> specs;
+  specs.push_back(std::move(spec));
+  GsdSegment segment(std::move(specs), "1.5M");
+  segment.run_for(500ms);
+  EXPECT_EQ(segment.in_data_exchange(), 1U);
+  EXPECT_NE(segment.stations().front()->describe().find(
+                "modules \"Config for Slot1\" (preset), \"Config for Slot2\" (preset)"),
+            std::string::npos)
+      << segment.stations().front()->describe();
+}
+
 TEST(GsdStation, MasterFromTheSameGsdReachesDataExchangeAndIoFlowsPerModule) {
   std::vector<GsdStationSpec> specs;
   specs.push_back(gateway(5));

@@ -33,16 +33,8 @@ ProcessResult run(const std::string& args) {
   return r;
 }
 
-// CRC-16 poly 0x4EAB, preset 0, MSB first, no reflection, no final XOR.
 std::uint16_t reference_crc1(std::initializer_list<std::uint8_t> bytes) {
-  std::uint16_t crc = 0;
-  for (const auto b : bytes) {
-    crc = static_cast<std::uint16_t>(crc ^ (b << 8));
-    for (int i = 0; i < 8; ++i) {
-      crc = static_cast<std::uint16_t>((crc & 0x8000U) != 0 ? (crc << 1) ^ 0x4EAB : crc << 1);
-    }
-  }
-  return crc;
+  return testing::reference_crc1(std::vector<std::uint8_t>(bytes));
 }
 
 std::string crc_hex(std::uint16_t crc) {
@@ -137,10 +129,10 @@ TEST(GsdCli, ForeignGsdFileAndModule) {
   EXPECT_NE(r.output.find("User_Prm_Data: 80 00 00 55 AA 01 2C 9C\n"), std::string::npos)
       << r.output;
   r = run("gsd --prm --gsd " + file + " --module 'DI 9'");
-  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.exit_code, 2);  // bad input
   EXPECT_NE(r.output.find("no module \"DI 9\""), std::string::npos) << r.output;
   r = run("gsd --prm --gsd /nonexistent.gsd");
-  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("cannot read /nonexistent.gsd"), std::string::npos) << r.output;
 }
 
@@ -153,11 +145,94 @@ TEST(GsdCli, MalformedGsdFileReportsFileAndLine) {
     std::fclose(f);
   }
   const ProcessResult r = run("gsd --prm --gsd " + path.string());
-  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find(path.string() + ":3: Module is not closed (EndModule missing)"),
             std::string::npos)
       << r.output;
   std::filesystem::remove(path);
+}
+
+TEST(GsdCli, PresetModulesLeadTheSlotList) {
+  const std::string file = std::string(RS4SIM_GSD_CORPUS) + "/preset_im153_style.gsd";
+  const ProcessResult r = run("gsd --prm --gsd " + file + " --module 'DI 16' --module 'DO 8'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // The file's header comment: the three presets, then the user's modules.
+  EXPECT_NE(r.output.find("Module: Config for Slot1 (slot 1, preset)\n"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("Module: DO 8 (slot 5)\n"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("Chk_Cfg: 04 00 00 AD C4 04 00 00 8B 41 04 00 00 8F C0 11 20\n"),
+            std::string::npos)
+      << r.output;
+}
+
+std::string write_temp(const std::string& name, const std::string& bytes) {
+  const auto path = std::filesystem::temp_directory_path() / name;
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (f) {
+    std::fwrite(bytes.data(), 1, bytes.size(), f);
+    std::fclose(f);
+  }
+  return path.string();
+}
+
+TEST(GsdCli, CheckShowsWhatIsReadAndEveryWarning) {
+  const std::string path = write_temp(
+      "rs4sim_cli_check.gsd",
+      "#Profibus_DP\nIdent_Number = 0x4224\n9.6_supp = 1\nMaxTsdr_9.6 = 60\n1.5M_supp = 1\n"
+      "MaxTsdr_1.5M = 150\nModular_Station = 1\nMax_Input_Len = 249\nFIXPRESETMODULES = 1\n"
+      "X_Vendor_Thing = 3\nModule = \"fixed\" 0x00\nPreset = 1\nEndModule\n"
+      "Module = \"in   \" 0x10\nEndModule\n");
+  const ProcessResult r = run("gsd check " + path);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const std::string& line : std::vector<std::string>{
+           "Ident_Number: 0x4224\n",
+           "Rates (MaxTsdr, bit times): 9.6k 60 1.5M 150\n",
+           "Station: modular, Max_Module 1, Modul_Offset 0, FixPresetModules, DP-V0\n",
+           "Max_Input_Len 244,",
+           "  \"fixed\"  Cfg 00  in 0 out 0  preset  (line 11)\n",
+           "  \"in   \"  Cfg 10  in 1 out 0  (line 14)\n",
+           "Default configuration: slot 0 \"fixed\" (preset)\n  Chk_Cfg: 00\n",
+           "Warnings (2):\n",
+           path + ":8: Max_Input_Len = 249 is out of range 0..244; 244 taken",
+           path + ":10: 'X_Vendor_Thing' is not a GSD keyword, line skipped",
+       }) {
+    EXPECT_NE(r.output.find(line), std::string::npos) << line << "\n" << r.output;
+  }
+  std::filesystem::remove(path);
+}
+
+TEST(GsdCli, CheckShowsTheFParameterDefaults) {
+  const ProcessResult r = run("gsd check " + std::string(RS4SIM_GSD_CORPUS) + "/profisafe_v2.gsd");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // The file's header comment gives the 8 bytes; CRC1 over them from the reference here.
+  const std::string crc = crc_hex(reference_crc1({0x08, 0x40, 0x00, 0x01, 0x00, 0x01, 0x00, 0x96}));
+  EXPECT_NE(r.output.find("F-parameters of \"75x-661 4FDI\": 08 40 00 01 00 01 00 96 "),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("CRC1 over the defaults 0x" + crc.substr(0, 2) + crc.substr(3, 2)),
+            std::string::npos)
+      << r.output;
+}
+
+TEST(GsdCli, CheckRefusesWhatIsNoGsdWithFileLineAndExit2) {
+  const std::string garbage =
+      write_temp("rs4sim_cli_garbage.gsd", std::string("\x7f\x45\x4c\x46\x02\x01\x00\x00\xff", 9));
+  ProcessResult r = run("gsd check " + garbage);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(garbage + ":1: not a GSD: the first keyword line must be #Profibus_DP"),
+            std::string::npos)
+      << r.output;
+  const std::string no_ident =
+      write_temp("rs4sim_cli_no_ident.gsd", "#Profibus_DP\n12M_supp = 1\n");
+  r = run("gsd check " + no_ident);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(no_ident + ": Ident_Number is missing"), std::string::npos) << r.output;
+  r = run("gsd check /nonexistent.gsd");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  r = run("gsd check");
+  EXPECT_EQ(r.exit_code, 2) << r.output;  // FILE is required
+  std::filesystem::remove(garbage);
+  std::filesystem::remove(no_ident);
 }
 
 }  // namespace

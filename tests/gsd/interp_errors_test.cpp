@@ -26,18 +26,8 @@ const std::vector<Case>& cases() {
        "m.gsd:2: Ident_Number = 74565 is out of range 0..65535: `Ident_Number = 0x12345`"},
       {"ident is a string", "#Profibus_DP\nIdent_Number = \"0x1234\"\n", GsdError::kBadValue,
        "m.gsd:2: Ident_Number expects one number: `Ident_Number = \"0x1234\"`"},
-      {"ident twice", minimal("Ident_Number = 0x1234\n"), GsdError::kDuplicate,
-       "m.gsd:5: Ident_Number already given at line 2: `Ident_Number = 0x1234`"},
       {"no baud rate", "#Profibus_DP\nIdent_Number = 1\n", GsdError::kMissingKeyword,
        "m.gsd: no baud rate is supported (<rate>_supp = 1)"},
-      {"MaxTsdr missing", "#Profibus_DP\nIdent_Number = 1\n3M_supp = 1\n",
-       GsdError::kMissingKeyword, "m.gsd:3: MaxTsdr_3M is missing: `3M_supp = 1`"},
-      {"flag not 0/1", minimal("Fail_Safe = 2\n"), GsdError::kOutOfRange,
-       "m.gsd:5: Fail_Safe = 2 is out of range 0..1: `Fail_Safe = 2`"},
-      {"C1_Max_Data_Len > 240", minimal("C1_Max_Data_Len = 241\n"), GsdError::kOutOfRange,
-       "m.gsd:5: C1_Max_Data_Len = 241 is out of range 0..240: `C1_Max_Data_Len = 241`"},
-      {"vendor not a string", minimal("Vendor_Name = 5\n"), GsdError::kBadValue,
-       "m.gsd:5: Vendor_Name expects a \"string\": `Vendor_Name = 5`"},
       {"const byte > 255", minimal("Ext_User_Prm_Data_Const(0) = 0x100\n"), GsdError::kOutOfRange,
        "m.gsd:5: Ext_User_Prm_Data_Const: byte value 256 is out of range 0..255: "
        "`Ext_User_Prm_Data_Const(0) = 0x100`"},
@@ -99,20 +89,12 @@ const std::vector<Case>& cases() {
       {"Prm_Text_Ref to nothing",
        minimal("ExtUserPrmData = 1 \"A\"\nBit(0) 0 0-1\nPrm_Text_Ref = 7\nEndExtUserPrmData\n"),
        GsdError::kUnknownReference, "m.gsd:5: Prm_Text_Ref = 7 names no PrmText: `A`"},
-      {"PrmText with a stray line",
-       minimal("PrmText = 1\nText(0) = \"a\"\nValue = 1\nEndPrmText\n"), GsdError::kBadValue,
-       "m.gsd:7: PrmText holds only Text(value) = \"…\" lines: `Value = 1`"},
-      {"PrmText value twice",
-       minimal("PrmText = 1\nText(0) = \"a\"\nText(0) = \"b\"\nEndPrmText\n"), GsdError::kDuplicate,
-       "m.gsd:7: Text(0) given twice: `Text(0) = \"b\"`"},
       {"module without name", minimal("Module = 0x10\nEndModule\n"), GsdError::kBadValue,
        "m.gsd:5: Module expects = \"name\" cfg,cfg,…: `Module = 0x10`"},
       {"module cfg truncated", minimal("Module = \"F\" 0xC4,0x84,0x84,0x05\nEndModule\n"),
        GsdError::kBadCfg,
        "m.gsd:5: module \"F\": Cfg identifier at byte 0: manufacturer-specific bytes missing: "
        "`Module = \"F\" 0xC4,0x84,0x84,0x05`"},
-      {"module twice", minimal("Module = \"a\" 0x10\nEndModule\nModule = \"A\" 0x20\nEndModule\n"),
-       GsdError::kDuplicate, "m.gsd:7: module \"A\" defined twice: `Module = \"A\" 0x20`"},
       {"module prm without length",
        minimal("Module = \"a\" 0x10\nExt_User_Prm_Data_Const(0) = 1\nEndModule\n"),
        GsdError::kMissingKeyword,
@@ -143,6 +125,69 @@ const std::vector<Case>& cases() {
        "m.gsd:6: F_ParamDescCRC = 70000 is out of range 0..65535: `F_ParamDescCRC = 70000`"},
   };
   return kCases;
+}
+
+// Lines the master can do without: taken at the limit or skipped, with a warning naming
+// file:line (docs/gsd.md "The rule"); the file is read.
+struct WarningCase {
+  const char* title;
+  std::string text;
+  std::string warning;
+};
+
+const std::vector<WarningCase>& warning_cases() {
+  static const std::vector<WarningCase> kCases = {
+      {"ident twice", minimal("Ident_Number = 0x1234\n"),
+       "m.gsd:5: Ident_Number already given at line 2; this later value taken: "
+       "`Ident_Number = 0x1234`"},
+      {"MaxTsdr missing", "#Profibus_DP\nIdent_Number = 1\n3M_supp = 1\n",
+       "m.gsd:3: MaxTsdr_3M is missing; the master keeps its own slot time at this rate: "
+       "`3M_supp = 1`"},
+      {"flag not 0/1", minimal("Fail_Safe = 2\n"),
+       "m.gsd:5: Fail_Safe = 2 is out of range 0..1; 1 taken: `Fail_Safe = 2`"},
+      {"C1_Max_Data_Len > 240", minimal("C1_Max_Data_Len = 241\n"),
+       "m.gsd:5: C1_Max_Data_Len = 241 is out of range 0..240; 240 taken: "
+       "`C1_Max_Data_Len = 241`"},
+      {"Max_Input_Len > 244", minimal("Max_Input_Len = 249\n"),
+       "m.gsd:5: Max_Input_Len = 249 is out of range 0..244; 244 taken: `Max_Input_Len = 249`"},
+      {"vendor not a string", minimal("Vendor_Name = 5\n"),
+       "m.gsd:5: Vendor_Name expects a \"string\"; line ignored: `Vendor_Name = 5`"},
+      {"number not a number", minimal("Max_Module = \"x\"\n"),
+       "m.gsd:5: Max_Module expects one number; line ignored: `Max_Module = \"x\"`"},
+      {"PrmText with a stray line",
+       minimal("PrmText = 1\nText(0) = \"a\"\nValue = 1\nEndPrmText\n"),
+       "m.gsd:7: PrmText holds only Text(value) = \"…\" lines; line ignored: `Value = 1`"},
+      {"PrmText value twice",
+       minimal("PrmText = 1\nText(0) = \"a\"\nText(0) = \"b\"\nEndPrmText\n"),
+       "m.gsd:7: Text(0) given twice; line ignored: `Text(0) = \"b\"`"},
+      {"module twice", minimal("Module = \"a\" 0x10\nEndModule\nModule = \"A\" 0x20\nEndModule\n"),
+       "m.gsd:7: module \"A\" already defined at line 5; a --module of this name takes the "
+       "first: `Module = \"A\" 0x20`"},
+      {"sub-family without family", minimal("Slave_Family = @AS-I\n"),
+       "m.gsd:5: Slave_Family expects a family number, optionally followed by @sub-families; "
+       "line ignored: `Slave_Family = @AS-I`"},
+      {"family out of range", minimal("Slave_Family = 256@X\n"),
+       "m.gsd:5: Slave_Family = 256 is out of range 0..255; line ignored: "
+       "`Slave_Family = 256@X`"},
+  };
+  return kCases;
+}
+
+TEST(GsdInterpWarnings, EachForgivenClassHasItsWarning) {
+  for (const auto& c : warning_cases()) {
+    auto result = parse(c.text, "m.gsd");
+    ASSERT_TRUE(result) << c.title << ": " << result.error().what();
+    ASSERT_EQ(result.value().warnings.size(), 1U) << c.title;
+    EXPECT_EQ(result.value().warnings[0].what(), c.warning) << c.title;
+  }
+}
+
+TEST(GsdInterpWarnings, TheLimitIsTaken) {
+  auto d = parse(minimal("Max_Input_Len = 249\nMax_Data_Len = 498\nFail_Safe = 2\n"), "m.gsd");
+  ASSERT_TRUE(d) << d.error().what();
+  EXPECT_EQ(d.value().max_input_len, 244);
+  EXPECT_EQ(d.value().max_data_len, 488);
+  EXPECT_TRUE(d.value().fail_safe);
 }
 
 TEST(GsdInterpErrors, EachMalformedClassHasItsMessage) {
