@@ -1,6 +1,7 @@
 #include "http/http_server.h"
 
 #include "http/page_files.h"
+#include "json/message.h"
 #include "rpc/server.h"
 
 #include "google/rpc/status.pb.h"
@@ -21,7 +22,9 @@
 #include <grpcpp/generic/generic_stub.h>
 #include <grpcpp/support/byte_buffer.h>
 
+#include <algorithm>
 #include <array>
+#include <cerrno>
 #include <charconv>
 #include <condition_variable>
 #include <deque>
@@ -215,6 +218,7 @@ struct HttpServer::Impl : std::enable_shared_from_this<HttpServer::Impl> {
     gate->io = &loop;
   }
   void accept();
+  void on_accept_error(const beast::error_code& ec);
   void close();
 
   asio::io_context& io;
@@ -227,6 +231,10 @@ struct HttpServer::Impl : std::enable_shared_from_this<HttpServer::Impl> {
   std::set<std::shared_ptr<Connection>> connections;
   std::uint16_t port = 0;
   bool closed = false;
+  bool accepting = false;                  // an async_accept is pending
+  asio::steady_timer retry{io};            // the back-off after a failed accept
+  std::chrono::milliseconds backoff{0};    // 0 after a successful accept
+  HttpStats stats;
 };
 
 namespace {
@@ -285,19 +293,25 @@ class Connection : public std::enable_shared_from_this<Connection> {
     beast::error_code ignored;
     lowest().socket().shutdown(tcp::socket::shutdown_both, ignored);
     lowest().close();
-    server_->connections.erase(shared_from_this());
+    backlog_bytes_ = 0;
+    const auto server = server_;  // this may go with the erase
+    server->connections.erase(shared_from_this());
+    server->accept();  // resumes accepting when the cap had stopped it
   }
 
   // ---- the event stream (from the reactor, posted to the loop) -------------------------
   void on_event(std::string json) {
     if (closed_) return;
     if (!sse_started_) start_sse();
-    if (backlog_.size() >= server_->options.event_backlog) {
+    std::string event = "id: " + std::to_string(++event_id_) + "\ndata: " + json + "\n\n";
+    if (backlog_.size() >= server_->options.event_backlog ||
+        backlog_bytes_ + event.size() > server_->options.event_backlog_bytes) {
       // A client that stops reading: drop it rather than hold its events or wait for it.
+      ++server_->stats.event_clients_dropped;
       close();
       return;
     }
-    backlog_.push_back("id: " + std::to_string(++event_id_) + "\ndata: " + json + "\n\n");
+    push_event(std::move(event));
     write_events();
   }
   void on_stream_done(const grpc::Status& s) {
@@ -317,7 +331,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
       }
       start_sse();
     }
-    backlog_.push_back("event: end\ndata: " + status_json(s) + "\n\n");
+    push_event("event: end\ndata: " + status_json(s) + "\n\n");
     end_after_backlog_ = true;
     write_events();
   }
@@ -485,7 +499,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
     const std::string body = request_.body().empty() ? "{}" : request_.body();
     pb::util::JsonParseOptions parse;
     parse.ignore_unknown_fields = false;
-    if (const auto st = pb::util::JsonStringToMessage(body, in.get(), parse); !st.ok()) {
+    if (const auto st = json::to_message(body, *in, parse); !st.ok()) {
       respond(error_reply(400, 3, "the body is not a " + md->input_type()->full_name() +
                                       " in protobuf's JSON mapping: " +
                                       std::string(st.message())));
@@ -603,20 +617,28 @@ class Connection : public std::enable_shared_from_this<Connection> {
 
   void start_reactor(const std::string& request, const pb::Descriptor* event_type);
 
+  // The bytes waiting for an SSE client are counted (HttpOptions::event_backlog_bytes).
+  void push_event(std::string event) {
+    backlog_bytes_ += event.size();
+    backlog_.push_back(std::move(event));
+  }
+
   void start_sse() {
     sse_started_ = true;
-    backlog_.push_front(
-        "HTTP/1.1 200 OK\r\nServer: rs4sim\r\nContent-Type: text/event-stream\r\n"
-        "Cache-Control: no-store\r\nConnection: close\r\nX-Accel-Buffering: no\r\n\r\n");
+    backlog_bytes_ += kSseHeader.size();
+    backlog_.push_front(std::string(kSseHeader));
     arm_keep_alive();
   }
+  static constexpr std::string_view kSseHeader =
+      "HTTP/1.1 200 OK\r\nServer: rs4sim\r\nContent-Type: text/event-stream\r\n"
+      "Cache-Control: no-store\r\nConnection: close\r\nX-Accel-Buffering: no\r\n\r\n";
 
   void arm_keep_alive() {
     timer_.expires_after(server_->options.keep_alive);
     timer_.async_wait([self = shared_from_this()](beast::error_code ec) {
       if (ec || self->closed_) return;
       if (self->backlog_.empty()) {
-        self->backlog_.push_back(":\n\n");
+        self->push_event(":\n\n");
         self->write_events();
       }
       self->arm_keep_alive();
@@ -654,6 +676,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
         self->close();
         return;
       }
+      self->backlog_bytes_ -= self->backlog_.front().size();
       self->backlog_.pop_front();
       self->write_events();
     };
@@ -675,6 +698,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
   }
 
   friend struct HttpServer::Impl;
+  friend class HttpServer;
   AnyStream stream_;
   std::shared_ptr<HttpServer::Impl> server_;
   beast::flat_buffer buffer_;
@@ -684,6 +708,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
   std::shared_ptr<StreamCall> events_;
   asio::steady_timer timer_;
   std::deque<std::string> backlog_;
+  std::size_t backlog_bytes_ = 0;  // the sum of backlog_'s sizes
   std::array<char, 256> sink_{};
   std::uint64_t event_id_ = 0;
   bool closed_ = false;
@@ -741,13 +766,44 @@ void Connection::start_reactor(const std::string& request, const pb::Descriptor*
 }
 
 void HttpServer::Impl::accept() {
+  if (closed || accepting) return;
+  if (options.max_connections != 0 && connections.size() >= options.max_connections) return;
+  accepting = true;
   acceptor.async_accept([self = shared_from_this()](beast::error_code ec, tcp::socket socket) {
+    self->accepting = false;
     if (self->closed) return;
-    if (!ec) {
-      auto c = std::make_shared<Connection>(std::move(socket), self);
-      self->connections.insert(c);
-      c->start();
+    if (ec) {
+      self->on_accept_error(ec);
+      return;
     }
+    self->backoff = std::chrono::milliseconds{0};
+    auto c = std::make_shared<Connection>(std::move(socket), self);
+    self->connections.insert(c);
+    c->start();
+    self->accept();
+  });
+}
+
+// Out of descriptors or memory the pending connection stays in the listen queue, so an accept
+// re-armed at once fails again at once (a core spun at 100 %): wait 10 ms, doubling up to 1 s,
+// until an accept succeeds. Any other failure (the client reset the connection first) is that
+// one connection's: accept the next at once.
+void HttpServer::Impl::on_accept_error(const beast::error_code& ec) {
+  ++stats.accept_failures;
+  const int e = ec.value();
+  const bool exhausted = ec.category() == boost::system::system_category() &&
+                         (e == EMFILE || e == ENFILE || e == ENOBUFS || e == ENOMEM);
+  if (!exhausted) {
+    accept();
+    return;
+  }
+  constexpr std::chrono::milliseconds kFirst{10};
+  constexpr std::chrono::milliseconds kMost{1000};
+  backoff = backoff.count() == 0 ? kFirst : std::min(backoff * 2, kMost);
+  accepting = true;  // no other accept until the wait is over
+  retry.expires_after(backoff);
+  retry.async_wait([self = shared_from_this()](beast::error_code) {
+    self->accepting = false;
     self->accept();
   });
 }
@@ -755,6 +811,7 @@ void HttpServer::Impl::accept() {
 void HttpServer::Impl::close() {
   if (closed) return;
   closed = true;
+  retry.cancel();
   beast::error_code ignored;
   acceptor.close(ignored);
   const auto all = connections;  // close() erases
@@ -810,6 +867,13 @@ std::string HttpServer::url() const {
 }
 
 void HttpServer::close() { impl_->close(); }
+
+HttpStats HttpServer::stats() const {
+  HttpStats s = impl_->stats;
+  s.connections = impl_->connections.size();
+  for (const auto& c : impl_->connections) s.event_bytes_waiting += c->backlog_bytes_;
+  return s;
+}
 
 bool HttpServer::wait_for_calls(std::chrono::milliseconds timeout) const {
   return impl_->gate->wait_idle(timeout);

@@ -43,6 +43,18 @@ struct HttpOptions {
   std::chrono::milliseconds call_timeout{60'000};    // the forwarded call's deadline (504)
   std::chrono::milliseconds keep_alive{15'000};      // an SSE comment line when idle
   std::size_t event_backlog = 1024;                  // events waiting per SSE client, else dropped
+  std::size_t event_backlog_bytes = 256U << 10;      // their bytes per SSE client, else dropped
+  // Connections open at once (0: no cap). At the cap the server accepts no more until one
+  // closes: the next ones wait in the kernel's listen queue (--http-max-connections).
+  std::size_t max_connections = 256;
+};
+
+// What a server has done, for its tests and the end of a run (read on the loop).
+struct HttpStats {
+  std::size_t connections = 0;           // open now
+  std::size_t event_bytes_waiting = 0;   // event bytes waiting for their SSE clients, summed
+  std::uint64_t accept_failures = 0;     // accepts that failed (EMFILE, ...)
+  std::uint64_t event_clients_dropped = 0;  // SSE clients dropped for their backlog
 };
 
 class HttpServer {
@@ -66,6 +78,8 @@ class HttpServer {
   // its gRPC context; false when `timeout` passed first. Call it before the gRPC server and
   // the last channel go, so gRPC is never torn down from one of its own threads.
   [[nodiscard]] bool wait_for_calls(std::chrono::milliseconds timeout) const;
+  // On the loop.
+  [[nodiscard]] HttpStats stats() const;
 
   struct Impl;
 

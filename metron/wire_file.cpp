@@ -4,6 +4,7 @@
 // "metron-wire-table-file").
 #include "metron/wire_file.h"
 
+#include "json/message.h"
 #include "json/path.h"
 #include "json/syntax.h"
 #include "json/value_kind.h"
@@ -70,7 +71,7 @@ std::uint8_t byte_of(const Value& v, const std::string& where) {
       value = value * 16 + d;
       if (i + 1 == s.size()) return static_cast<std::uint8_t>(value);
     }
-    refuse(where, "\"" + s + "\" is not a byte (0..255 or \"0x00\"..\"0xFF\")");
+    refuse(where, "\"" + json::cut(s) + "\" is not a byte (0..255 or \"0x00\"..\"0xFF\")");
   }
   refuse(where, "expected a byte (0..255 or \"0x00\"..\"0xFF\"), found " + kind_of(v));
 }
@@ -160,7 +161,7 @@ void read_report(const Value& v, ReportLayout& r) {
     } else if (key == "checksum_over") {
       const auto& t = text_of(value, where);
       if (t != "values" && t != "characters")
-        refuse(where, "\"" + t + "\": expected \"values\" or \"characters\"");
+        refuse(where, "\"" + json::cut(t) + "\": expected \"values\" or \"characters\"");
       r.checksum_over_characters = t == "characters";
     } else {
       refuse(where, "unknown key (report takes: order, checksum_over)");
@@ -235,7 +236,7 @@ void read_table(const Value& root, WireTable& t) {
     else if (key == "beam_bits") {
       const auto& s = text_of(v, key);
       if (s != "lsb-first" && s != "msb-first")
-        refuse(key, "\"" + s + "\": expected \"lsb-first\" or \"msb-first\"");
+        refuse(key, "\"" + json::cut(s) + "\": expected \"lsb-first\" or \"msb-first\"");
       t.beam_bits_lsb_first = s == "lsb-first";
     } else if (key == "report_start") t.report_start = byte_of(v, key);
     else if (key == "report_end") t.report_end = byte_of(v, key);
@@ -310,7 +311,7 @@ std::string replies_text(const ReplyData& r) {
 
 std::optional<WireFileIssue> apply_wire_json(std::string_view text, WireTable& table) {
   Value root;
-  const auto status = google::protobuf::util::JsonStringToMessage(std::string(text), &root, {});
+  const auto status = json::to_message(text, root, {});
   if (!status.ok()) return syntax_issue(text, std::string(status.message()));
   try {
     read_table(root, table);

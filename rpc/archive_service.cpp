@@ -9,8 +9,11 @@
 #include "storage/archive_file.h"
 #include "storage/change_feed.h"
 #include "storage/open_archive.h"
+#include "storage/request_check.h"
 
 #include <string>
+#include <string_view>
+#include <utility>
 
 namespace rs4sim::rpc {
 namespace {
@@ -189,6 +192,16 @@ grpc::Status ArchiveService::Restore(grpc::ServerContext* context, const v1::Res
   if (auto s = to_id(in->version_id(), "version_id", id); !s.ok()) return s;
   const storage::Author by{in->user(),
                            in->host().empty() ? peer_host(context->peer()) : in->host()};
+  // The texts by the field they came in (the archive's own refusal would name none).
+  const std::pair<const char*, const std::string*> texts[] = {
+      {"note", &in->note()}, {"user", &by.user}, {"host", &by.host}};
+  for (const auto& [field, value] : texts) {
+    const auto max = std::string_view(field) == "note" ? storage::kMaxNoteSize
+                                                         : storage::kMaxNameSize;
+    if (auto ok = storage::check_text(field, *value, max); !ok) {
+      return invalid_argument(field, ok.error().message);
+    }
+  }
   return on_loop([&] {
     auto v = archive_.restore(id, clock_(), in->note(), by);
     if (!v) return archive_status(v.error(), "version_id");

@@ -1,8 +1,11 @@
 #include "storage/archive_file.h"
 
+#include "json/locate.h"
+#include "json/message.h"
 #include "rs4sim/v1/archive.pb.h"
 #include "storage/time_ms.h"
 
+#include <cctype>
 #include <climits>
 
 #include <google/protobuf/stubs/logging.h>
@@ -135,7 +138,8 @@ Result<SnapshotStation> get_station(const pb::Station& st) {
   if (st.address() > 126) {
     return archive_error(
         ArchiveError::kCorruptImport,
-        "station " + st.bus() + "/" + std::to_string(st.address()) + ": address above 126");
+        "station " + json::cut(st.bus(), 64) + "/" + std::to_string(st.address()) +
+            ": address above 126");
   }
   SnapshotStation out;
   out.key = StationKey{st.bus(), static_cast<std::uint8_t>(st.address())};
@@ -207,15 +211,50 @@ Result<Snapshot> decode_binary(std::span<const std::uint8_t> bytes) {
   return from_proto(message);
 }
 
+// The member protobuf 3.21 names in a refusal: "(stations[0].bus): invalid value ..." names
+// stations[0].bus, "(stations[0]) foo: Cannot find field." names stations[0].foo.
+std::string named_member(std::string_view message) {
+  if (message.empty() || message[0] != '(') return {};
+  const auto close = message.find(')');
+  if (close == std::string_view::npos) return {};
+  std::string path(message.substr(1, close - 1));
+  const auto rest = message.substr(close + 1);
+  constexpr std::string_view kUnknown = ": Cannot find field.";
+  if (rest.size() > kUnknown.size() + 1 && rest[0] == ' ' &&
+      rest.substr(rest.size() - kUnknown.size()) == kUnknown) {
+    path += (path.empty() ? "" : ".") + std::string(rest.substr(1, rest.size() - kUnknown.size() - 1));
+  }
+  return path;
+}
+
+// Why protobuf refused `text`, with the line and column where that is known: the structure
+// scan's refusal carries them, a break of the grammar is found by json/syntax.h, and a member
+// protobuf names by its path ("stations[0].versions[1].source") is found by json/path.h.
+std::string json_refusal(std::string_view text, const google::protobuf::util::Status& status) {
+  const auto said = status.message();
+  const std::string message(said.data(), said.size());
+  if (!message.empty() && std::isdigit(static_cast<unsigned char>(message[0]))) return message;
+  if (const auto broken = json::first_syntax_error(text)) {
+    return json::line_column(text, broken->offset) + ": " + broken->reason;
+  }
+  const auto member = named_member(message);
+  if (const auto at = member.empty() ? std::nullopt : json::offset_of_member(text, member)) {
+    return json::line_column(text, *at) + ": " + message;
+  }
+  return message;
+}
+
 Result<Snapshot> decode_json(std::string_view text) {
   pb::ArchiveExport message;
   google::protobuf::util::JsonParseOptions options;  // unknown fields are an error
   const google::protobuf::LogSilencer quiet;
-  const auto status = google::protobuf::util::JsonStringToMessage(
-      google::protobuf::StringPiece(text.data(), text.size()), &message, options);
+  // The format has no array of arrays: protobuf 3.21 would read "stations": [[]] as none.
+  json::StructureRules rules;
+  rules.arrays_in_arrays = false;
+  const auto status = json::to_message(text, message, options, rules);
   if (!status.ok()) {
     return archive_error(ArchiveError::kCorruptImport,
-                         "not a JSON rs4sim.v1.ArchiveExport (" + status.ToString() + ")");
+                         "not a JSON rs4sim.v1.ArchiveExport: " + json_refusal(text, status));
   }
   return from_proto(message);
 }

@@ -418,7 +418,7 @@ Result<std::vector<StationInfo>> PgArchive::stations() {
 Result<void> PgArchive::save_proxy_state(const StationKey& station,
                                          std::span<const std::uint8_t> state, Timestamp at) {
   return with_context("save proxy state of " + label(station), [&]() -> Result<void> {
-    BOOST_OUTCOME_TRY(check_address(station));
+    BOOST_OUTCOME_TRY(check_station(station));
     if (state.empty() || state.size() > kMaxProxyStateSize) {
       return archive_error(ArchiveError::kInvalidArgument,
                            "state of " + std::to_string(state.size()) + " bytes (1.." +

@@ -29,7 +29,7 @@ Result<void> PgArchive::insert_sync(std::int64_t station, const SyncLogEntry& e)
 
 Result<void> PgArchive::log_sync(const SyncLogEntry& entry) {
   return with_context("log sync " + label(entry.station), [&]() -> Result<void> {
-    BOOST_OUTCOME_TRY(check_address(entry.station));
+    BOOST_OUTCOME_TRY(check_sync(entry));
     return write<void>([&]() -> Result<void> {
       BOOST_OUTCOME_TRY(station, upsert_station(entry.station, ""));
       return insert_sync(station, entry);

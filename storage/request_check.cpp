@@ -12,14 +12,6 @@ std::string hex32(std::uint32_t v) {
   return text;
 }
 
-Result<void> check_address(const StationKey& station) {
-  if (station.address > kMaxStationAddress) {
-    return archive_error(ArchiveError::kInvalidArgument,
-                         "address " + std::to_string(station.address) + " above 126");
-  }
-  return boost::outcome_v2::success();
-}
-
 namespace {
 
 // Length of the UTF-8 sequence starting at s[i] (0 when it is not one: a stray continuation
@@ -71,6 +63,14 @@ Result<void> check_text(std::string_view field, std::string_view value, std::siz
   return boost::outcome_v2::success();
 }
 
+Result<void> check_station(const StationKey& station) {
+  if (station.address > kMaxStationAddress) {
+    return archive_error(ArchiveError::kInvalidArgument,
+                         "address " + std::to_string(station.address) + " above 126");
+  }
+  return check_text("bus", station.bus, kMaxNameSize);
+}
+
 Result<void> check_note(std::string_view note) { return check_text("note", note, kMaxNoteSize); }
 
 Result<void> check_author(const Author& by) {
@@ -78,8 +78,16 @@ Result<void> check_author(const Author& by) {
   return check_text("host", by.host, kMaxNameSize);
 }
 
+Result<void> check_sync(const SyncLogEntry& entry) {
+  BOOST_OUTCOME_TRY(check_station(entry.station));
+  return check_text("reason", entry.reason, kMaxNoteSize);
+}
+
 Result<void> check_request(const StoreRequest& r) {
-  BOOST_OUTCOME_TRY(check_address(r.station));
+  BOOST_OUTCOME_TRY(check_station(r.station));
+  BOOST_OUTCOME_TRY(check_text("device type", r.device_type, kMaxNameSize));
+  BOOST_OUTCOME_TRY(check_text("serial number", r.serial_number, kMaxNameSize));
+  BOOST_OUTCOME_TRY(check_text("summary", r.summary, kMaxSummarySize));
   BOOST_OUTCOME_TRY(check_note(r.note));
   BOOST_OUTCOME_TRY(check_author({r.user, r.host}));
   BOOST_OUTCOME_TRY(check_text("site", r.site, kMaxNameSize));

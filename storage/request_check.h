@@ -1,6 +1,8 @@
 #pragma once
 // What every backend refuses before it writes: an address above 126, an empty blob, a CRC-32
-// claim the blob does not bear out, a recorded text it would not store alike. The CLI checks
+// claim the blob does not bear out, a recorded text it would not store alike (every text a
+// write takes: bus, device type, serial number, summary, note, user, host, site, line, a sync
+// log entry's reason). The import checks a file's texts with the same functions. The CLI checks
 // its --user/--site/--line/--note with the same check_text() before it opens an archive.
 
 #include "storage/errors.h"
@@ -15,14 +17,19 @@ namespace rs4sim::storage {
 inline constexpr std::uint8_t kMaxStationAddress = 126;
 
 std::string hex32(std::uint32_t v);  // "0x1A2B3C4D"
-Result<void> check_address(const StationKey& station);
+// The address (0..126) and the bus name (a name, check_text()).
+Result<void> check_station(const StationKey& station);
 Result<void> check_request(const StoreRequest& request);
+// A sync log entry's station and reason (a note's limit).
+Result<void> check_sync(const SyncLogEntry& entry);
 
 // The recorded texts (docs/storage.md "What maintenance records"): UTF-8 without NUL (what
 // both engines store alike), a comment up to kMaxNoteSize bytes, a user, host, site or line
 // up to kMaxNameSize.
 inline constexpr std::size_t kMaxNoteSize = 4096;
 inline constexpr std::size_t kMaxNameSize = 256;
+// A set's decoded summary (the writer's text or JSON, a few kB for an RS4 set).
+inline constexpr std::size_t kMaxSummarySize = 1U << 20;
 Result<void> check_text(std::string_view field, std::string_view value, std::size_t max);
 Result<void> check_note(std::string_view note);
 Result<void> check_author(const Author& by);  // its user and host

@@ -1,5 +1,7 @@
 #include "storage/snapshot.h"
 
+#include "json/message.h"
+#include "json/path.h"
 #include "storage/crc32.h"
 #include "storage/request_check.h"
 
@@ -24,12 +26,28 @@ Result<void> text_ok(const std::string& where, std::string_view field, std::stri
   return success();
 }
 
+// A check of request_check.h (the writers' own) as a corrupt import naming where it failed.
+Result<void> writer_ok(const std::string& where, const Result<void>& ok) {
+  if (!ok) return corrupt(where + ": " + ok.error().message);
+  return success();
+}
+
+// A station as a message names it: "line1/5"; a bus that is no plain name (a control
+// character, not UTF-8, long) as a JSON string, cut short.
+std::string station_name(const StationKey& key) {
+  constexpr std::size_t kShown = 64;
+  std::string bus = key.bus;
+  if (!check_text("bus", bus, kShown)) bus = json::cut(json::string_literal(bus), kShown);
+  return "station " + bus + "/" + std::to_string(key.address);
+}
+
 Result<void> validate_sets(const Snapshot& snap, std::unordered_set<SetId>& ids) {
   for (const auto& set : snap.sets) {
     const auto name = "parameter set " + std::to_string(set.id);
     if (set.id <= 0) return corrupt(name + ": id must be >= 1");
     if (!ids.insert(set.id).second) return corrupt(name + ": id used twice");
     if (set.blob.empty()) return corrupt(name + ": empty blob");
+    BOOST_OUTCOME_TRY(text_ok(name, "summary", set.summary, kMaxSummarySize));
     if (crc32(set.blob) != set.crc32) {
       return archive_error(ArchiveError::kCrcMismatch, name + ": CRC-32 does not match its blob");
     }
@@ -51,6 +69,7 @@ Result<void> validate_versions(const SnapshotStation& st, const std::string& nam
     BOOST_OUTCOME_TRY(text_ok(vname, "note", v.note, kMaxNoteSize));
     BOOST_OUTCOME_TRY(text_ok(vname, "user", v.user, kMaxNameSize));
     BOOST_OUTCOME_TRY(text_ok(vname, "host", v.host, kMaxNameSize));
+    BOOST_OUTCOME_TRY(text_ok(vname, "serial number", v.serial_number, kMaxNameSize));
     if (v.restored_from != 0 && numbers.count(v.restored_from) == 0) {
       return corrupt(vname + ": restored from a version that does not precede it");
     }
@@ -64,12 +83,19 @@ Result<void> validate_versions(const SnapshotStation& st, const std::string& nam
 }
 
 Result<void> validate_station(const SnapshotStation& st, const std::unordered_set<SetId>& set_ids) {
-  const auto name = "station " + st.key.bus + "/" + std::to_string(st.key.address);
-  if (st.key.address > 126) return corrupt(name + ": address above 126");
+  const auto name = station_name(st.key);
+  BOOST_OUTCOME_TRY(writer_ok(name, check_station(st.key)));
+  BOOST_OUTCOME_TRY(text_ok(name, "device type", st.device_type, kMaxNameSize));
+  // What the archive itself never holds: a station is made by a store or a sync log entry.
+  if (st.versions.empty() && st.sync_log.empty()) {
+    return corrupt(name + ": no versions and no sync log (a station without either says "
+                          "nothing)");
+  }
   BOOST_OUTCOME_TRY(text_ok(name, "site", st.site, kMaxNameSize));
   BOOST_OUTCOME_TRY(text_ok(name, "line", st.line, kMaxNameSize));
   std::set<std::string> serials;
   for (const auto& s : st.serials) {
+    BOOST_OUTCOME_TRY(text_ok(name, "serial number", s.serial_number, kMaxNameSize));
     if (s.serial_number.empty() || !serials.insert(s.serial_number).second) {
       return corrupt(name + ": empty or repeated serial number");
     }
@@ -83,6 +109,7 @@ Result<void> validate_station(const SnapshotStation& st, const std::unordered_se
       return corrupt(name + ": sync log entry with unknown direction or outcome");
     }
     if (e.duration.count() < 0) return corrupt(name + ": negative sync duration");
+    BOOST_OUTCOME_TRY(writer_ok(name + " sync log entry", check_sync(e)));
   }
   return success();
 }
@@ -99,8 +126,7 @@ Result<void> validate(const Snapshot& snapshot) {
   std::set<StationKey> keys;
   for (const auto& st : snapshot.stations) {
     if (!keys.insert(st.key).second) {
-      return corrupt("station " + st.key.bus + "/" + std::to_string(st.key.address) +
-                     " appears twice");
+      return corrupt(station_name(st.key) + " appears twice");
     }
     BOOST_OUTCOME_TRY(validate_station(st, set_ids));
   }

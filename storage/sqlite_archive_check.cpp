@@ -29,7 +29,7 @@ Result<void> SqliteArchive::insert_sync(std::int64_t station, const SyncLogEntry
 
 Result<void> SqliteArchive::log_sync(const SyncLogEntry& entry) {
   return with_context("log sync " + label(entry.station), [&]() -> Result<void> {
-    BOOST_OUTCOME_TRY(check_address(entry.station));
+    BOOST_OUTCOME_TRY(check_sync(entry));
     BOOST_OUTCOME_TRY(tx, Transaction::begin(*db_));
     BOOST_OUTCOME_TRY(station, upsert_station(entry.station, ""));
     BOOST_OUTCOME_TRY(insert_sync(station, entry));

@@ -3,11 +3,13 @@
 #include "app/cli/archive_support.h"
 #include "app/runtime/whole_file.h"
 #include "rs4/param_doc/parameter_document.h"
+#include "rs4/param_doc/set_file.h"
 #include "rs4/rs232/rs232_codes.h"
 #include "rs4/scanner/parameter_codec.h"
 
 #include <algorithm>
 #include <cctype>
+#include <iostream>
 #include <iterator>
 #include <vector>
 
@@ -41,7 +43,15 @@ bool ends_with(std::string_view text, std::string_view tail) {
 
 SetFile read_set_file(const std::string& path) {
   const std::string text = read_file(path);
-  const std::vector<std::uint8_t> bytes(text.begin(), text.end());
+  const std::vector<std::uint8_t> raw(text.begin(), text.end());
+  const auto contents = rs4::param_doc::read_set_file(raw);
+  if (!contents.bytes) {
+    throw ParamCommandError(path + ": not an RS4 parameter set file: " + contents.error);
+  }
+  if (!contents.bytes->warning.empty()) {
+    std::cerr << "rs4sim: warning: " << path << ": " << contents.bytes->warning << std::endl;
+  }
+  const std::vector<std::uint8_t>& bytes = contents.bytes->encoding;
   auto decoded = rs4::scanner::decode(bytes);
   if (decoded.has_error()) {
     throw ParamCommandError(path + ": not an RS4 parameter set: " + decoded.error().message());
@@ -58,7 +68,8 @@ SetFile read_set_file(const std::string& path) {
 void write_set_file(const std::string& path, const SetFile& file) {
   const auto bytes = file.transfer_form ? rs4::scanner::encode_for_transfer(file.set)
                                         : rs4::scanner::encode(file.set);
-  archive::write_file_atomically(path, std::string(bytes.begin(), bytes.end()));
+  const auto file_bytes = rs4::param_doc::set_file(bytes);
+  archive::write_file_atomically(path, std::string(file_bytes.begin(), file_bytes.end()));
 }
 
 ParameterSet read_document_file(const std::string& path, const ParameterSet& base) {

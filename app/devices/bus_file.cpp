@@ -16,6 +16,7 @@
 #include "dp/link/memory_bus.h"
 #include "dp/master/master.h"
 #include "dp/pdu/sap.h"
+#include "json/message.h"
 #include "json/path.h"
 #include "json/syntax.h"
 #include "json/value_kind.h"
@@ -157,10 +158,12 @@ BusStation read_station(const Reader& r, const Value& v, const std::string& path
   if (entry == nullptr) {
     std::string names;
     for (const auto& n : device_names()) names += (names.empty() ? "" : ", ") + n;
-    r.fail(path + ".device", "no device \"" + s.device + "\" (devices: " + names + ")");
+    r.fail(path + ".device",
+           "no device \"" + json::cut(s.device) + "\" (devices: " + names + ")");
   }
   if (entry->byte_device || !entry->simulate) {
-    r.fail(path + ".device", "\"" + s.device + "\" is not a DP station and cannot be on a DP bus");
+    r.fail(path + ".device",
+           "\"" + json::cut(s.device) + "\" is not a DP station and cannot be on a DP bus");
   }
   return s;
 }
@@ -171,7 +174,7 @@ BusFile parse_bus_file(const std::string& text, const std::string& file, const s
                        const std::string& link_baud) {
   Reader r(file, dir);
   Value root;
-  const auto status = google::protobuf::util::JsonStringToMessage(text, &root, {});
+  const auto status = json::to_message(text, root, {});
   if (!status.ok()) {
     // file:line:column of the first break of the grammar; protobuf's reason where the text is
     // JSON its parser still refuses (a number beyond double, say).

@@ -352,6 +352,9 @@ class Rs4Simulation final : public SimulatedSegment {
     }
     c.master_address = *o.address == 1 ? 2 : 1;
     c.auto_ack_rei = true;
+    // Nothing takes the segment's master events in a run (the API reads the device, the
+    // event stream watches the bus): keeping them grew memory with simulated time.
+    c.keep_events = false;
     return c;
   }
 

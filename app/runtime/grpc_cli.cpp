@@ -73,6 +73,10 @@ void add_grpc_options(CLI::App& cmd, GrpcCliOptions& o, const std::string& note)
       "serve the live view (a web page) and the same API as JSON over HTTP on HOST:PORT "
       "(port 0 = any free port; a non-loopback host needs --grpc-tls-cert/--grpc-tls-key, then "
       "HTTPS, and a token; docs/http.md)");
+  auto* cap = cmd.add_option("--http-max-connections", o.http_max_connections,
+                             "--http: connections open at once (default 256, 0 = no cap); "
+                             "more wait in the listen queue until one closes (docs/http.md)");
+  cap->needs(http);
   cert->needs(key);
   key->needs(cert);
   // TLS and the token guard both APIs: they need one of them (CLI11's needs() has no "or").

@@ -15,6 +15,7 @@
 // the same rule with the same files and token: HTTPS beyond loopback, the token on /api.
 
 
+#include <cstddef>
 #include <string>
 
 namespace rs4sim::rpc {
@@ -33,6 +34,7 @@ struct GrpcCliOptions {
   std::string tls_key;     // --grpc-tls-key FILE
   std::string token_file;  // --grpc-token-file FILE (the token of --http too)
   std::string http{};      // --http HOST:PORT; empty = no HTTP server ({}: see rpc::ServerOptions)
+  std::size_t http_max_connections = 256;  // --http-max-connections N (0: no cap)
 
   // Neither --grpc nor --http: no API.
   [[nodiscard]] bool empty() const noexcept { return address.empty() && http.empty(); }

@@ -72,6 +72,7 @@ void RunSession::serve_grpc(const GrpcCliOptions& options, ServiceList services)
   h.bearer_token = server.bearer_token;
   h.tls_cert_chain = server.tls_cert_chain;
   h.tls_private_key = server.tls_private_key;
+  h.max_connections = options.http_max_connections;
   http_ = std::make_unique<http::HttpServer>(io_, h, grpc_->in_process_channel());
   out_ << "http: listening on " << http_->url() << std::endl;
   rpc::ServerOptions http_protection;  // what guards the HTTP server (not --grpc's address)

@@ -33,7 +33,8 @@ Rs4Segment::Rs4Segment(const Rs4SegmentConfig& config)
       fhost_(std::make_unique<profisafe::FHost>(rs4_fhost_config(entry_))),
       bus_(std::make_unique<dp::link::MemoryBus>(clock_, config.bus)),
       output_(config.output_byte),
-      auto_ack_rei_(config.auto_ack_rei) {
+      auto_ack_rei_(config.auto_ack_rei),
+      keep_events_(config.keep_events) {
   fhost_->set_output(std::span<const std::uint8_t>(&output_, 1));
   bus_->attach(*master_);
   bus_->attach(*device_);
@@ -75,7 +76,7 @@ void Rs4Segment::collect() {
   for (auto& e : scratch_) {
     if (std::holds_alternative<dp::master::CycleCompleted>(e)) safety_cycle();
     if (observer_) observer_(e);
-    events_.push_back(std::move(e));
+    if (keep_events_ || awaiting_ > 0) events_.push_back(std::move(e));
   }
 }
 
@@ -91,6 +92,7 @@ std::optional<dp::master::Dpv1Result> Rs4Segment::await(dp::master::Dpv1RequestI
                                                         dp::Duration timeout) {
   std::optional<dp::master::Dpv1Result> result;
   const auto size_before = events_.size();
+  ++awaiting_;
   run_until(
       [&] {
         for (std::size_t i = size_before; i < events_.size(); ++i) {
@@ -103,6 +105,7 @@ std::optional<dp::master::Dpv1Result> Rs4Segment::await(dp::master::Dpv1RequestI
         return false;
       },
       timeout);
+  if (--awaiting_ == 0 && !keep_events_) events_.clear();
   return result;
 }
 

@@ -30,6 +30,10 @@ struct Rs4SegmentConfig {
   dp::link::MemoryBusConfig bus{};
   std::uint8_t output_byte = 0x01;  // initial process output: field pair 1
   bool auto_ack_rei = false;        // acknowledge every ACK_REQ at once
+  // Keep every master event for events()/take_events() (tests, demos that read them). A run
+  // whose events nobody takes sets it false: then only the events of a DPV1 request being
+  // awaited are kept, and memory stays flat however long the simulated time.
+  bool keep_events = true;
 };
 
 class Rs4Segment {
@@ -105,6 +109,8 @@ class Rs4Segment {
   std::unique_ptr<dp::link::MemoryBus> bus_;
   std::uint8_t output_ = 0x01;
   bool auto_ack_rei_ = false;
+  bool keep_events_ = true;
+  int awaiting_ = 0;  // await() calls under way: their events are kept
   std::vector<dp::master::MasterEvent> events_;
   std::vector<dp::master::MasterEvent> scratch_;
   Observer observer_;

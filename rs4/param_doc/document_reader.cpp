@@ -1,3 +1,4 @@
+#include "json/message.h"
 #include "rs4/param_doc/contour_reader.h"
 #include "rs4/param_doc/json_tree.h"
 #include "rs4/param_doc/parameter_document.h"
@@ -44,7 +45,7 @@ void read_restart_mode(const Value& v, ParameterSet& set) {
     }
   }
   json::refuse(DocumentError::kOutOfRange, path,
-               "\"" + name +
+               "\"" + rs4sim::json::cut(name) +
                    "\" is not automatic, start_interlock or start_restart_interlock "
                    "([RS4 manual §4.3])");
 }
@@ -90,7 +91,7 @@ void read_warning_output(const Value& v, ParameterSet& set) {
     }
     if (bit == 4) {
       json::refuse(DocumentError::kOutOfRange, at,
-                   "\"" + name +
+                   "\"" + rs4sim::json::cut(name) +
                        "\" is not contamination, warning_field, fault or restart_interlock "
                        "([RS4 manual §5.1.1])");
     }

@@ -1,5 +1,6 @@
 #include "rs4/param_doc/json_tree.h"
 
+#include "json/message.h"
 #include "json/path.h"
 #include "json/syntax.h"
 #include "json/value_kind.h"
@@ -37,12 +38,13 @@ bool names_password(std::string_view key) {
 }  // namespace
 
 void refuse(DocumentError e, std::string path, std::string reason) {
-  throw Refusal{DocumentIssue{e, std::move(path), std::move(reason)}};
+  // A path holds the document's keys, of any length: cut, like every value a reason quotes.
+  throw Refusal{DocumentIssue{e, rs4sim::json::cut(path), std::move(reason)}};
 }
 
 Value parse(std::string_view text) {
   Value root;
-  const auto status = google::protobuf::util::JsonStringToMessage(std::string(text), &root, {});
+  const auto status = rs4sim::json::to_message(text, root, {});
   if (!status.ok()) {
     // Where the grammar breaks, by line and column (the document is edited by hand); what
     // protobuf alone refuses (a duplicate key, a number beyond double) in its own words.

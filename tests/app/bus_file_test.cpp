@@ -42,6 +42,14 @@ TEST(BusFile, AMissingGsdFileNamesTheEntryAndTheFile) {
             "bus.json: $.stations[1].gsd: no file " + kDir + "/missing.gse");
 }
 
+TEST(BusFile, DeepNestingIsRefusedBeforeProtobufParsesIt) {
+  // {"stations": is offsets 0-11 (the object is depth 0), a space at 12, the first '[' at 13
+  // opens depth 1, the 101st '[' at 113 depth 101: column 114.
+  const std::string deep = "{\"stations\": " + std::string(50'000, '[') +
+                           std::string(50'000, ']') + "}";
+  EXPECT_EQ(refusal(deep), "bus.json:1:114: not valid JSON: nested deeper than 100");
+}
+
 TEST(BusFile, ASyntaxErrorNamesTheLineAndColumn) {
   // Line 3, column 17: the '"' where a ',' or '}' must follow "address": 5.
   EXPECT_EQ(refusal("{\"stations\": [\n"

@@ -5,6 +5,7 @@
 #include "rs4/param_doc/parameter_document.h"
 
 #include <gtest/gtest.h>
+#include <zlib.h>
 
 #include <vector>
 
@@ -30,9 +31,21 @@ class ParamCli : public ArchiveCli {
     set.passwords[0] = {'R', 'O', 'D', '4', 'L', 'E', 0xFF, 0xFF};
     return set;
   }
-  static std::string encoded(const ParameterSet& set) {
+  // A set file of format 1 (the encoding alone), as write_set() writes it.
+  static std::string raw(const ParameterSet& set) {
     const auto bytes = rs4::scanner::encode(set);
     return {bytes.begin(), bytes.end()};
+  }
+  // The set file `param set` writes (format 2, docs/param.md "Set files"): the encoding,
+  // "RS4F", 02, then zlib's CRC-32 of all that, big-endian.
+  static std::string encoded(const ParameterSet& set) {
+    const auto bytes = rs4::scanner::encode(set);
+    std::string file(bytes.begin(), bytes.end());
+    file += "RS4F\x02";
+    const auto crc = crc32(0L, reinterpret_cast<const Bytef*>(file.data()),
+                           static_cast<uInt>(file.size()));
+    for (const int shift : {24, 16, 8, 0}) file += static_cast<char>((crc >> shift) & 0xFF);
+    return file;
   }
 };
 
@@ -74,7 +87,7 @@ TEST_F(ParamCli, WrongPasswordChangesNothing) {
     EXPECT_EQ(r.exit_code, 1) << password;
     EXPECT_NE(r.err.find("wrong password"), std::string::npos) << r.err;
   }
-  EXPECT_EQ(read_text(file), encoded(protected_set()));
+  EXPECT_EQ(read_text(file), raw(protected_set()));
 }
 
 TEST_F(ParamCli, InvalidDocumentNamesThePathAndChangesNothing) {
@@ -88,7 +101,42 @@ TEST_F(ParamCli, InvalidDocumentNamesThePathAndChangesNothing) {
             std::string::npos)
       << r.err;
   EXPECT_NE(r.err.find("nothing changed"), std::string::npos);
-  EXPECT_EQ(read_text(file), encoded(protected_set()));
+  EXPECT_EQ(read_text(file), raw(protected_set()));
+}
+
+TEST_F(ParamCli, AFormat1FileLoadsWithAWarningAndIsWrittenBackWithItsChecksum) {
+  const auto file = write_set("set.bin", protected_set());
+  const auto got = param("get --file " + file);
+  ASSERT_EQ(got.exit_code, 0) << got.err;
+  EXPECT_NE(got.err.find("warning: " + file + ": a set file of format 1 carries no checksum"),
+            std::string::npos)
+      << got.err;
+  const auto doc = write_doc("doc.json", R"({"format": 1, "start_pair": 2})");
+  ASSERT_EQ(param("set " + doc + " --file " + file + " --password ROD4LE").exit_code, 0);
+  ParameterSet expected = protected_set();
+  expected.start_pair = 2;
+  EXPECT_EQ(read_text(file), encoded(expected));
+  const auto again = param("get --file " + file);
+  EXPECT_EQ(again.exit_code, 0);
+  EXPECT_EQ(again.err, "");  // format 2: no warning
+}
+
+TEST_F(ParamCli, ADamagedSetFileIsRefusedByEveryCommandWithTheReason) {
+  std::string bytes = encoded(protected_set());
+  bytes[1000] = static_cast<char>(bytes[1000] ^ 0x10);  // a distance of pair 1's contours
+  write_text(dir_ / "damaged.bin", bytes);
+  const auto file = (dir_ / "damaged.bin").string();
+  const auto doc = write_doc("doc.json", R"({"format": 1, "start_pair": 2})");
+  for (const std::string& args : {"get --file " + file,
+                                  "set " + doc + " --file " + file + " --password ROD4LE",
+                                  "diff " + file + " " + file}) {
+    const auto r = param(args);
+    EXPECT_EQ(r.exit_code, 1) << args;
+    EXPECT_NE(r.err.find(file + ": not an RS4 parameter set file: damaged: its CRC-32 says"),
+              std::string::npos)
+        << args << ": " << r.err;
+  }
+  EXPECT_EQ(read_text(file), bytes);  // nothing written
 }
 
 TEST_F(ParamCli, DryRunAndUsageErrors) {
@@ -99,7 +147,7 @@ TEST_F(ParamCli, DryRunAndUsageErrors) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto tree = parse_json(r.out);
   EXPECT_EQ(tree.get<std::string>("written"), "false");
-  EXPECT_EQ(read_text(file), encoded(rs4::scanner::factory_default()));
+  EXPECT_EQ(read_text(file), raw(rs4::scanner::factory_default()));
   EXPECT_EQ(param("set --file " + file).exit_code, 2);  // no document
   EXPECT_EQ(param("set " + doc).exit_code, 2);          // no target
   EXPECT_EQ(param("set " + doc + " --file " + file + " --password 123456789").exit_code, 2);

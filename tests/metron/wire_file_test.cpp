@@ -18,6 +18,14 @@ std::string issue_of(const std::string& json) {
   return issue ? issue->where + ": " + issue->reason : std::string("none");
 }
 
+TEST(MetronWireFile, DeepNestingIsRefusedBeforeProtobufParsesIt) {
+  // {"commands": is offsets 0-11 (the object is depth 0), the first '[' at 12 opens depth 1,
+  // the 101st '[' at 112 depth 101: column 113.
+  const std::string deep = "{\"commands\":" + std::string(50'000, '[') +
+                           std::string(50'000, ']') + "}";
+  EXPECT_EQ(issue_of(deep), "1:113: not valid JSON: nested deeper than 100");
+}
+
 TEST(MetronWireFile, EmptyObjectKeepsTheDefaults) {
   WireTable t;
   EXPECT_FALSE(apply_wire_json("{}", t));

@@ -10,6 +10,7 @@
 #include <boost/asio/write.hpp>
 
 #include <chrono>
+#include <thread>
 
 namespace rs4sim::rpc {
 namespace {
@@ -225,6 +226,23 @@ TEST_F(HttpApiTest, BadRequestsGetThePreciseStatus) {
   EXPECT_EQ(h.call("rs4sim.v1.Observation/GetState", R"({"address": 4})").status, 200u);
 }
 
+// 50,000 levels, in the body itself and in the document Device.SetParameterSet carries: both
+// refused by the structure scan (json/structure.h) before protobuf's parser sees them.
+TEST_F(HttpApiTest, DeepNestingIsRefusedBeforeProtobufParsesIt) {
+  HttpFront h(io_, *server_);
+  const std::string deep = std::string(50'000, '[') + std::string(50'000, ']');
+  auto body = error_of(h.call("rs4sim.v1.Observation/GetState", deep), 400, 3);
+  EXPECT_NE(body.message().find("1:102: nested deeper than 100"), std::string::npos)
+      << body.message();
+  auto doc = error_of(h.call("rs4sim.v1.Device/SetParameterSet",
+                             R"({"address": 4, "json": ")" + deep + "\"}"),
+                      400, 3);
+  EXPECT_NE(doc.message().find("not valid JSON at 1:102: nested deeper than 100"),
+            std::string::npos)
+      << doc.message();
+  EXPECT_EQ(h.call("rs4sim.v1.SimTime/Now").status, 200u);
+}
+
 TEST_F(HttpApiTest, ThePageIsServedFromTheBinary) {
   HttpFront h(io_, *server_);
   const auto page = h.request(bhttp::verb::get, "/");
@@ -307,6 +325,35 @@ TEST_F(HttpApiTest, AnEventClientThatStopsReadingIsDroppedNotWaitedFor) {
   const std::string got = stalled.rest();
   EXPECT_EQ(got.find("event: end"), std::string::npos);
   EXPECT_LT(got.size(), 64U << 20);
+}
+
+TEST_F(HttpApiTest, EventClientsThatNeverReadAreBoundedByBytesNotOnlyByCount) {
+  http::HttpOptions o;
+  o.event_backlog = 1'000'000;        // the count's bound out of the way
+  o.event_backlog_bytes = 4U << 10;  // 4 KiB of events per client (the kernel holds more)
+  HttpFront h(io_, *server_, o);
+  std::vector<std::unique_ptr<Raw>> stalled;
+  for (int i = 0; i < 8; ++i) {
+    stalled.push_back(std::make_unique<Raw>(h.port(), 4096));
+    stalled.back()->send(
+        "GET /api/events?telegrams=true&queue_capacity=1048576 HTTP/1.1\r\nHost: x\r\n\r\n");
+    stalled.back()->until("\r\n\r\n");
+  }
+  // Megabytes of telegram events for each client; none reads them. The events reach the
+  // server's loop through gRPC's threads, after the simulation made them: the bytes waiting
+  // are read until every client is gone, and stay within 8 x 4 KiB all the while.
+  for (int i = 0; i < 20; ++i) advance(1000);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  http::HttpStats s = h.stats();
+  while (s.connections > 0 && std::chrono::steady_clock::now() < deadline) {
+    EXPECT_LE(s.event_bytes_waiting, 8U * (4U << 10));
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    s = h.stats();
+  }
+  EXPECT_EQ(s.connections, 0u);
+  // Dropped by the bytes' bound, long before the write timeout (10 s) could end them.
+  EXPECT_EQ(s.event_clients_dropped, 8u);
+  EXPECT_EQ(h.call("rs4sim.v1.SimTime/Now").status, 200u);
 }
 
 TEST_F(HttpApiTest, SlowVanishedAndBrokenClientsLeaveTheServerServing) {

@@ -53,6 +53,11 @@ class HttpFront {
   }
 
   [[nodiscard]] std::uint16_t port() const { return port_; }
+  [[nodiscard]] http::HttpStats stats() {
+    http::HttpStats s;
+    on_loop([&] { s = http_->stats(); });
+    return s;
+  }
   [[nodiscard]] std::string url() const { return http_->url(); }
 
   HttpAnswer request(boost::beast::http::verb verb, const std::string& target,

@@ -330,6 +330,21 @@ TEST_F(RpcDeviceTest, SetParameterSetRefusesABadDocumentAndKeepsTheSet) {
   EXPECT_EQ(parameter_set().json(), before.json());
 }
 
+// A 100 KB document nested 50,000 deep: refused by the linear structure scan before
+// protobuf's parser (quadratic in the nesting: it froze the loop for minutes), with the line
+// and column of the 102nd bracket; the run answers the next call.
+TEST_F(RpcDeviceTest, SetParameterSetRefusesDeepNestingAtOnce) {
+  boot();
+  v1::ParameterSetDocument out;
+  const auto s = set_parameter_set(std::string(50'000, '[') + std::string(50'000, ']'), out);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad_field(s), "json");
+  EXPECT_NE(s.error_message().find("not valid JSON at 1:102: nested deeper than 100"),
+            std::string::npos)
+      << s.error_message();
+  EXPECT_TRUE(state().powered());
+}
+
 // [RS4 manual §7.1] scenario 4: a new unit with factory settings and its own serial number;
 // the RS4 boots again (≈30 s, [RS4 manual §1]).
 TEST_F(RpcDeviceTest, ExchangeScannerMountsAFactoryUnitWithItsSerialNumber) {

@@ -482,6 +482,64 @@ TEST_P(ArchiveContractErrors, ImportWithACrcMismatchOrBadReferenceWritesNothing)
                "current version 5 not in its versions");
 }
 
+TEST_P(ArchiveContractErrors, EveryTextAWriteTakesIsCheckedByTheWriters) {
+  const auto blob = make_blob(2);
+  auto r = request(StationKey{std::string("bus\0x", 5), 4}, blob);
+  expect_error(archive_->store(r), ArchiveError::kInvalidArgument, "bus: byte 3 is NUL");
+  r = request(kStation, blob);
+  r.device_type = std::string("RS4\0", 4);
+  expect_error(archive_->store(r), ArchiveError::kInvalidArgument, "device type: byte 3 is NUL");
+  r.device_type = "";
+  r.serial_number = "\xFF";
+  expect_error(archive_->store(r), ArchiveError::kInvalidArgument,
+               "serial number: byte 0 is not UTF-8");
+  r.serial_number = "";
+  r.summary = std::string("a\0", 2);
+  expect_error(archive_->store(r), ArchiveError::kInvalidArgument, "summary: byte 1 is NUL");
+  expect_error(archive_->log_sync({kStation, at_ms(2), std::string("re\0", 3),
+                                   SyncDirection::kVerify, SyncOutcome::kSucceeded, 0, 0, 0,
+                                   std::chrono::milliseconds{1}}),
+               ArchiveError::kInvalidArgument, "reason: byte 2 is NUL");
+}
+
+// An export whose station's bus is "a\u0000b": refused on both engines, nothing written
+// (PostgreSQL cut such a name to "a" and appended its versions to station a/4).
+TEST_P(ArchiveContractErrors, ImportOfANameWithANulIsRefused) {
+  archive_->store(request(StationKey{"a", 4}, make_blob(3))).value();
+  before_ = engine_->digest();
+  auto snap = archive_->export_snapshot(at_ms(0)).value();
+  for (auto& st : snap.stations) {
+    if (st.key.bus == "a") st.key.bus = std::string("a\0b", 3);
+  }
+  const auto json = encode_json(snap);
+  ASSERT_NE(json.find("a\\u0000b"), std::string::npos);  // as JSON writes it
+  expect_error(import_json(*archive_, json), ArchiveError::kCorruptImport,
+               "station \"a\\u0000b\"/4: bus: byte 1 is NUL");
+  expect_error(import_binary(*archive_, encode_binary(snap)), ArchiveError::kCorruptImport,
+               "bus: byte 1 is NUL");
+  auto serial = archive_->export_snapshot(at_ms(0)).value();
+  serial.stations[0].versions.at(0).serial_number = std::string("08\0", 3);
+  expect_error(archive_->import_snapshot(serial), ArchiveError::kCorruptImport,
+               "version 1: serial number: byte 2 is NUL");
+  auto reason = archive_->export_snapshot(at_ms(0)).value();
+  reason.stations[1].sync_log.at(0).reason = "\xC0";  // bus1/4's (a/4 comes first)
+  expect_error(archive_->import_snapshot(reason), ArchiveError::kCorruptImport,
+               "sync log entry: reason: byte 0 is not UTF-8");
+}
+
+TEST_P(ArchiveContractErrors, ImportOfAStationWithoutVersionsOrSyncLogIsRefused) {
+  auto snap = archive_->export_snapshot(at_ms(0)).value();
+  snap.stations.push_back(snap.stations[0]);
+  snap.stations.back().key = StationKey{"empty", 9};
+  snap.stations.back().versions.clear();
+  snap.stations.back().current_version = 0;
+  auto only_log = snap;  // a station only a sync log made (log_sync does): kept
+  snap.stations.back().sync_log.clear();
+  expect_error(import_json(*archive_, encode_json(snap)), ArchiveError::kCorruptImport,
+               "station empty/9: no versions and no sync log");
+  EXPECT_TRUE(import_json(*archive_, encode_json(only_log)).has_value());
+}
+
 TEST(SqliteArchiveOnly, InMemoryArchive) {
   auto mem = SqliteArchive::open(":memory:").value();
   mem->store(request(kStation, make_blob(1))).value();

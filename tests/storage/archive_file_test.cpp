@@ -153,5 +153,57 @@ TEST(ArchiveFile, TimestampsBeforeTheEpochSurvive) {
   EXPECT_EQ(decode_json(encode_json(snap)).value().exported_at, at_ms(-1500));
 }
 
+// The refusal of a JSON file: its message, or "decoded".
+std::string refusal(std::string_view text) {
+  const auto r = decode_json(text);
+  return r ? "decoded" : r.error().message;
+}
+
+TEST(ArchiveFile, ArraysInArraysAreRefusedNotFlattened) {
+  // { 0, "formatVersion" 1-15, : 16, 1 17, , 18, "stations" 19-28, : 29, [ 30, [ 31
+  EXPECT_EQ(refusal(R"({"formatVersion":1,"stations":[[]]})"),
+            "not a JSON rs4sim.v1.ArchiveExport: 1:32: an array directly inside an array "
+            "(this format has none): corrupt import file");
+  EXPECT_EQ(refusal(R"({"formatVersion":1,"stations":[[{"bus":"a"}]]})").substr(0, 41),
+            "not a JSON rs4sim.v1.ArchiveExport: 1:32:");
+  // 50,000 objects in each other, refused by the structure scan at the bracket that opens
+  // depth 101: {"formatVersion": is offsets 0-16, then {"a": (5 bytes) at 17 + 5k opens depth
+  // k + 1; k = 100 at offset 517: line 1, column 518.
+  std::string deep = R"({"formatVersion":)";
+  for (int k = 0; k < 50'000; ++k) deep += R"({"a":)";
+  deep += "1" + std::string(50'001, '}');
+  EXPECT_EQ(refusal(deep),
+            "not a JSON rs4sim.v1.ArchiveExport: 1:518: nested deeper than 100: corrupt import "
+            "file");
+}
+
+TEST(ArchiveFile, JsonRefusalsNameLineAndColumn) {
+  // Line 3: two spaces, "stations" at 3-12, : 13, space 14, [ 15, } 16
+  EXPECT_EQ(refusal("{\n  \"formatVersion\": 1,\n  \"stations\": [}\n"),
+            "not a JSON rs4sim.v1.ArchiveExport: 3:16: expected a value: corrupt import file");
+  // Line 4: five spaces, "source" at 6-13, : 14, space 15, "NOPE" from 16 (protobuf names
+  // the member, the line and column are found in the text).
+  const std::string bad_enum = "{\"formatVersion\": 1,\n \"stations\": [{\"bus\": \"a\",\n"
+                               "   \"versions\": [{\"number\": 1,\n     \"source\": \"NOPE\"}]}]}";
+  EXPECT_EQ(refusal(bad_enum).rfind("not a JSON rs4sim.v1.ArchiveExport: 4:16: "
+                                    "(stations[0].versions[0].source): invalid value \"NOPE\"",
+                                    0),
+            0u)
+      << refusal(bad_enum);
+  // Line 2: space, "stations" 2-11, : 12, space 13, [ 14, { 15, "bus" 16-20, : 21, space 22,
+  // "a" 23-25, , 26, space 27, "colour" 28-35, : 36, space 37, 1 at 38
+  EXPECT_EQ(refusal("{\"formatVersion\": 1,\n \"stations\": [{\"bus\": \"a\", \"colour\": 1}]}"),
+            "not a JSON rs4sim.v1.ArchiveExport: 2:38: (stations[0]) colour: Cannot find "
+            "field.: corrupt import file");
+}
+
+TEST(ArchiveFile, ALongValueIsNotRepeatedInFull) {
+  const std::string huge = "{\"formatVersion\": 1, \"stations\": [{\"versions\": [{\"source\": \"" +
+                           std::string(10'000'000, 'x') + "\"}]}]}";
+  const auto message = refusal(huge);
+  EXPECT_LT(message.size(), 400u) << message.size();
+  EXPECT_NE(message.find("(10000"), std::string::npos) << message;  // "… (N bytes)"
+}
+
 }  // namespace
 }  // namespace rs4sim::storage

@@ -137,5 +137,28 @@ const Case kShapes[] = {
 };
 INSTANTIATE_TEST_SUITE_P(Shapes, DocumentErrors, ::testing::ValuesIn(kShapes));
 
+// 50,000 levels (100 KB): refused by the linear structure scan before protobuf's parser
+// (quadratic in the nesting: minutes) sees the text; the 102nd '[' is at offset 101.
+TEST(DocumentErrorsDeep, NestingBeyond100IsRefusedAtOnce) {
+  const auto result = from_document(std::string(50'000, '[') + std::string(50'000, ']'),
+                                    scanner::factory_default());
+  ASSERT_FALSE(result);
+  EXPECT_EQ(result.issue.error, DocumentError::kSyntax);
+  EXPECT_EQ(result.issue.message(), "$: not valid JSON at 1:102: nested deeper than 100");
+}
+
+// A key or a value of 10 MB is not repeated in full in the message.
+TEST(DocumentErrorsDeep, LongKeysAndValuesAreCutInTheMessage) {
+  const std::string huge(10'000'000, 'k');
+  const auto key = from_document("{\"format\": 1, \"" + huge + "\": 1}", scanner::factory_default());
+  ASSERT_FALSE(key);
+  EXPECT_LT(key.issue.message().size(), 600u);
+  const auto value = from_document("{\"format\": 1, \"restart_mode\": \"" + huge + "\"}",
+                                   scanner::factory_default());
+  ASSERT_FALSE(value);
+  EXPECT_LT(value.issue.message().size(), 600u);
+  EXPECT_NE(value.issue.message().find("(10000000 bytes)"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace rs4sim::rs4::param_doc
