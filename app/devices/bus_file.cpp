@@ -130,7 +130,8 @@ BusStation read_station(const Reader& r, const Value& v, const std::string& path
     const Value& x = fields.at(key);
     const std::string at = json::member_path(path, key);
     if (key == "address") {
-      o.address = static_cast<int>(r.integer(x, at, 0, dp::pdu::sap::kMaxStationAddress));
+      // a slave in operation: 0..125, as `run --address` [docs/decisions.md#rs4-address-126]
+      o.address = static_cast<int>(r.integer(x, at, 0, dp::pdu::sap::kMaxSlaveAddress));
     }
     if (key == "device") s.device = r.text(x, at);
     if (key == "gsd") o.gsd = r.existing_file(x, at);

@@ -381,11 +381,12 @@ void validate(DeviceOptions& o) {
   if (!o.boot_time_ms) o.boot_time_ms = kDefaultBootTimeMs;
   std::vector<int> seen;
   for (const int a : all_addresses(o)) {
-    if (a < 0 || a > dp::pdu::sap::kMaxStationAddress) {
+    if (a < 0 || a > dp::pdu::sap::kMaxSlaveAddress) {
+      // The switches allow 126 [RS4 manual §4.5], but that is the delivery address, which
+      // never reaches data exchange [docs/decisions.md#rs4-address-126].
       throw UsageError("--address: " + std::to_string(a) + " is outside 0.." +
-                       std::to_string(dp::pdu::sap::kMaxStationAddress) +
-                       " (the RS4's switches; 127 and 255 must not be used, "
-                       "[RS4 manual §4.5])");
+                       std::to_string(dp::pdu::sap::kMaxSlaveAddress) +
+                       " (a DP slave in operation; 126 is the delivery address)");
     }
     if (std::find(seen.begin(), seen.end(), a) != seen.end()) {
       throw UsageError("--address " + std::to_string(a) +

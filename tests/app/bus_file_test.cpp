@@ -75,10 +75,13 @@ TEST(BusFile, ASyntaxErrorNamesTheLineAndColumn) {
 TEST(BusFile, AWrongValueTypeNamesTheJsonPathAndWhatWasGiven) {
   EXPECT_EQ(refusal(R"({"stations": [{"address": "5", "device": "rs4"}]})"),
             "bus.json: $.stations[0].address: expected an integer, got a string");
+  // 126 is the delivery address: no slave in operation has it, as for `run --address`
+  EXPECT_EQ(refusal(R"({"stations": [{"address": 126, "device": "rs4"}]})"),
+            "bus.json: $.stations[0].address: 126 is outside 0..125");
   EXPECT_EQ(refusal(R"({"stations": [{"address": 5.5, "device": "rs4"}]})"),
             "bus.json: $.stations[0].address: expected an integer, got 5.5");
   EXPECT_EQ(refusal(R"({"stations": [{"address": 1e300, "device": "rs4"}]})"),
-            "bus.json: $.stations[0].address: 1e+300 is outside 0..126");
+            "bus.json: $.stations[0].address: 1e+300 is outside 0..125");
   EXPECT_EQ(refusal(R"({"stations": [{"address": 5, "gsd": "depart_moteur_fr.gsf",
                                       "modules": "Relay 8"}]})"),
             "bus.json: $.stations[0].modules: expected an array of strings, got a string");
