@@ -15,7 +15,10 @@ namespace rs4sim::testing {
 inline std::string from_test_dir(std::string_view relative) {
   static const std::filesystem::path folder =
       std::filesystem::read_symlink("/proc/self/exe").parent_path();
-  return (folder / relative).lexically_normal().string();
+  auto path = (folder / relative).lexically_normal();
+  // "a/b/.." normalises to "a/": without the trailing separator, parent_path() is the parent.
+  if (!path.has_filename() && path.has_relative_path()) path = path.parent_path();
+  return path.string();
 }
 
 }  // namespace rs4sim::testing

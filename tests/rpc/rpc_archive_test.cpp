@@ -247,12 +247,12 @@ TEST_F(RpcArchiveTest, NoteAndWhoRestored) {
   EXPECT_EQ(out.host(), "ws-maint-03");
 
   // A bad note or user is blamed on that field, not on version_id (the id is fine).
-  const auto restore_refusal = [&](const std::string& note, const std::string& user) {
+  const auto restore_refusal = [&](const std::string& bad_note, const std::string& bad_user) {
     grpc::ClientContext c;
     v1::RestoreRequest r;
     r.set_version_id(static_cast<std::uint64_t>(first));
-    r.set_note(note);
-    r.set_user(user);
+    r.set_note(bad_note);
+    r.set_user(bad_user);
     v1::VersionInfo ignored;
     const auto s = stub_->Restore(&c, r, &ignored);
     EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
