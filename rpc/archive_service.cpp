@@ -199,7 +199,12 @@ grpc::Status ArchiveService::Restore(grpc::ServerContext* context, const v1::Res
     const auto max = std::string_view(field) == "note" ? storage::kMaxNoteSize
                                                          : storage::kMaxNameSize;
     if (auto ok = storage::check_text(field, *value, max); !ok) {
-      return invalid_argument(field, ok.error().message);
+      // invalid_argument names the field; the archive's text may start with it too
+      std::string why = ok.error().message;
+      if (const std::string head = std::string(field) + ": "; why.rfind(head, 0) == 0) {
+        why.erase(0, head.size());
+      }
+      return invalid_argument(field, why);
     }
   }
   return on_loop([&] {

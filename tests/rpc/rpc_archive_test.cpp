@@ -256,17 +256,17 @@ TEST_F(RpcArchiveTest, NoteAndWhoRestored) {
     v1::VersionInfo ignored;
     const auto s = stub_->Restore(&c, r, &ignored);
     EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
-    return bad_field(s) + ": " + s.error_message();
+    return bad_field(s) + " | " + s.error_message();  // the field, then the message
   };
   const auto starts = [](const std::string& text, const std::string& head) {
     return text.rfind(head, 0) == 0;
   };
   const auto long_note = restore_refusal(std::string(4097, 'n'), "qa");
-  EXPECT_TRUE(starts(long_note, "note: note of 4097 bytes (at most 4096)")) << long_note;
+  EXPECT_TRUE(starts(long_note, "note | note: note of 4097 bytes (at most 4096)")) << long_note;
   const auto nul_user = restore_refusal("why", std::string("q\0a", 3));
-  EXPECT_TRUE(starts(nul_user, "user: user: byte 1 is NUL")) << nul_user;
+  EXPECT_TRUE(starts(nul_user, "user | user: byte 1 is NUL")) << nul_user;
   const auto long_user = restore_refusal("why", std::string(257, 'u'));
-  EXPECT_TRUE(starts(long_user, "user: user of 257 bytes (at most 256)")) << long_user;
+  EXPECT_TRUE(starts(long_user, "user | user: user of 257 bytes (at most 256)")) << long_user;
 }
 
 // The change feed over gRPC: what another writer stores arrives on the stream; a call from an
