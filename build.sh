@@ -6,8 +6,8 @@
 #                        1. ctest (RelWithDebInfo), fastest tier first: unit (one library,
 #                           manual clock), integration (master + slaves, CLI), realtime
 #                           (wall clock: pty, UDP, benchmark smoke runs)
-#                        2. clang, AddressSanitizer + UndefinedBehaviorSanitizer: unit and
-#                           integration again (one build, the fuzz targets in it too)
+#                        2. clang, AddressSanitizer + UndefinedBehaviorSanitizer: every tier
+#                           again (one build, the fuzz targets in it too)
 #                        3. every libFuzzer target, briefly, from its seed corpus
 #   ./build.sh build   install + build only
 #   ./build.sh deps    install what `test` needs, run the preflight; no build (a fresh
@@ -137,14 +137,14 @@ case "$mode" in
       (cd build && ctest -L "^$tier\$" --no-tests=error --output-on-failure -j "$JOBS")
       stage_done "ctest -L $tier"
     done
-    echo "==> [2/3] clang: ASan + UBSan build (with the libFuzzer targets) + ctest unit, integration"
-    # One clang build serves the sanitizers and the fuzzers. The realtime tier (wall clock:
-    # pty, UDP, processes) ran in stage 1; every unit and integration test runs again here.
+    echo "==> [2/3] clang: ASan + UBSan build (with the libFuzzer targets) + ctest, every tier"
+    # One clang build serves the sanitizers and the fuzzers; every test runs again here, the
+    # realtime tier too (pty, UDP, processes: the rs4sim they start is the instrumented one).
     configure_and_build build-asan asan
     stage_done "sanitizer build"
     (cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
        UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-       ctest -L '^(unit|integration)$' --no-tests=error --output-on-failure -j "$JOBS")
+       ctest -L '^(unit|integration|realtime)$' --no-tests=error --output-on-failure -j "$JOBS")
     stage_done "sanitizer ctest"
     echo "==> [3/3] libFuzzer targets, ${FUZZ_SECONDS}s each, $JOBS at a time"
     JOBS=$JOBS fuzz/run_all.sh build-asan/fuzz "$FUZZ_SECONDS"

@@ -25,6 +25,16 @@
 #include <future>
 #include <thread>
 
+// Built with AddressSanitizer (clang: __has_feature; GCC: __SANITIZE_ADDRESS__).
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define RS4SIM_TEST_SANITIZED 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) && !defined(RS4SIM_TEST_SANITIZED)
+#define RS4SIM_TEST_SANITIZED 1
+#endif
+
 namespace rs4sim::http {
 namespace {
 
@@ -108,6 +118,12 @@ class DescriptorsExhausted {
 };
 
 TEST_F(HttpServerTest, OutOfDescriptorsTheAcceptBacksOffThenServes) {
+#ifdef RS4SIM_TEST_SANITIZED
+  // The sanitizers' runtime opens a pipe to test whether memory is readable (its vptr check
+  // of the timer in the back-off): with no descriptor left it takes the memory for unreadable
+  // and reports an invalid object. The test runs in the plain build (./build.sh test, stage 1).
+  GTEST_SKIP() << "out of descriptors, the sanitizer runtime cannot check memory";
+#endif
   start({});
   asio::io_context client;
   tcp::socket s(client);
