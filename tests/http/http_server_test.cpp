@@ -62,7 +62,7 @@ class HttpServerTest : public ::testing::Test {
     return done.get_future().get();
   }
   void TearDown() override {
-    on_loop([&] { server_->close(); });
+    if (thread_.joinable()) on_loop([&] { server_->close(); });  // a skipped test started none
     work_.reset();
     io_.stop();
     if (thread_.joinable()) thread_.join();
