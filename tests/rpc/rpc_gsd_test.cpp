@@ -4,11 +4,11 @@
 // tests/gsd/corpus/modular_dpv1.gsd: "DI 8" (Cfg 0x10: 1 input byte), "AI 2" (0x51: 2 input
 // words = 4 bytes), "DO 16 consistent" (0xA1: 2 output bytes) [IEC 61158-6-3 Chk_Cfg/Get_Cfg].
 #include "app/devices/gsd_segment.h"
-#include "app/devices/gsd_service.h"
 #include "google/rpc/error_details.pb.h"
 #include "google/rpc/status.pb.h"
 #include "http_front.h"
 #include "rpc/executor.h"
+#include "rpc/gsd_service.h"
 #include "rpc/server.h"
 #include "rpc_calls.h"
 #include "rs4sim/v1/gsd.grpc.pb.h"
@@ -31,6 +31,8 @@ namespace {
 
 using namespace std::chrono_literals;
 using Bytes = std::vector<std::uint8_t>;
+using rpc::GsdServiceContext;
+using rpc::GsdStationsService;
 using rpc::precondition;
 // The BadRequest violation as "field: description".
 constexpr auto& bad_field = rpc::bad_field_described;
