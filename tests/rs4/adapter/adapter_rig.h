@@ -119,8 +119,8 @@ struct Rig {
   // The process byte as the F-host sees it (substitute 0 while passivated).
   [[nodiscard]] std::uint8_t host_input() const { return host.input()[0]; }
   [[nodiscard]] bool ossd() const { return (host_input() & kInputOssd) != 0; }
-  // Powered, parametrised, 31 s of cycles (the RS4 measures after its ≈30 s boot [RS4 manual
-  // §7.1.1]) and a restart pulse: whether the OSSD is on.
+  // Powered, parametrised, 31 s of cycles (the RS4 measures after its ≈30 s boot
+  // [RS4 manual §7.1.1]) and a restart pulse: whether the OSSD is on.
   [[nodiscard]] bool boot_and_release() {
     start();
     run(31s);
