@@ -69,7 +69,7 @@ try:
     ossd = []
     for event in events:
         if event.HasField("state") and event.state.what == "ossd":
-            ossd.append((getattr(event.state, "from"), event.state.to))
+            ossd.append((event.state.previous, event.state.to))
             if len(ossd) == 4:
                 break
     assert ossd == [("", "off"), ("off", "on"), ("on", "off"), ("off", "on")], ossd

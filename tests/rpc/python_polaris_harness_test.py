@@ -96,7 +96,7 @@ try:
     pn1 = []
     for event in events:
         if event.HasField("state") and event.state.what == "pn1":
-            pn1.append((getattr(event.state, "from"), event.state.to))
+            pn1.append((event.state.previous, event.state.to))
             if len(pn1) == 2:
                 break
     assert pn1 == [("", "off"), ("off", "on")], pn1

@@ -79,7 +79,7 @@ try:
         if not r.state().ossd:
             time.sleep(1.5)  # boot 1 s
         if not r.state().ossd:
-            r.press_restart(300)
+            r.press_restart(0.3)
         # The OSSD bit of the input byte too: PROFIsafe in run, the PLC reads it.
         wait_for(f"station {r.station} OSSD on",
                  lambda r=r: r.state().ossd and r.state().input.ossd, 10)
@@ -117,7 +117,7 @@ try:
         out = []
         for event in stream:
             if event.HasField("state") and event.state.what == "ossd":
-                out.append((event.address, getattr(event.state, "from"), event.state.to))
+                out.append((event.address, event.state.previous, event.state.to))
                 if len(out) == n:
                     break
         stream.cancel()
