@@ -141,7 +141,7 @@ TEST_F(RpcBusFileTest, InputsReachTheWireInTheNextDataExchange) {
   v1::Event e;
   ASSERT_TRUE(reader->Read(&e));
   ASSERT_TRUE(e.has_state()) << "the snapshot comes first";
-  EXPECT_EQ(e.state().from(), "");
+  EXPECT_EQ(e.state().previous(), "");
   std::thread mover([this] { (void)advance(50); });
   const Bytes expected{0x68, 0x08, 0x08, 0x68, 0x01, 0x05, 0x08, 0x00, 0x11, 0x22, 0x33, 0x44};
   bool seen = false;

@@ -328,14 +328,14 @@ TEST_F(RpcPolarisTest, StateChangesReachTheSharedEventStream) {
   for (int i = 0; i < 4 && reader->Read(&e); ++i) {
     ASSERT_TRUE(e.has_state());
     EXPECT_EQ(e.address(), 1U);
-    seen.push_back(e.state().what() + ":" + e.state().from() + ">" + e.state().to());
+    seen.push_back(e.state().what() + ":" + e.state().previous() + ">" + e.state().to());
   }
   EXPECT_EQ(seen,
             (std::vector<std::string>{"pn1:>off", "pn2:>off", "beams:>none", "calibrating:>off"}));
   ASSERT_TRUE(block({2, 3, 7}).ok());
   seen.clear();
   for (int i = 0; i < 3 && reader->Read(&e); ++i) {
-    seen.push_back(e.state().what() + ":" + e.state().from() + ">" + e.state().to());
+    seen.push_back(e.state().what() + ":" + e.state().previous() + ">" + e.state().to());
   }
   // Beams 2-3 and 7: two objects, so PN2 too [Polaris manual §3].
   EXPECT_EQ(seen, (std::vector<std::string>{"pn1:off>on", "pn2:off>on", "beams:none>2-3,7"}));
