@@ -19,6 +19,3 @@ constexpr const char* error_category_name(BufferError) noexcept { return "codec"
 inline std::error_code make_error_code(BufferError e) noexcept { return make_error_code_of(e); }
 
 }  // namespace rs4sim::codec
-
-template <>
-struct std::is_error_code_enum<rs4sim::codec::BufferError> : std::true_type {};

@@ -8,6 +8,8 @@
 //
 // and optionally `std::string error_message(E)` when the category message should say more
 // than to_string (e.g. prefix the wire value). codec::category_of<E>() is the category.
+// Such an E converts implicitly to std::error_code: std::is_error_code_enum<E> holds for
+// every ErrorEnum (the partial specialization at the end of this header).
 
 #include <concepts>
 #include <string>
@@ -52,3 +54,10 @@ template <ErrorEnum E>
 }
 
 }  // namespace rs4sim::codec
+
+// Opts every ErrorEnum into std::error_code's converting constructor, which then finds
+// make_error_code(E) by argument-dependent lookup in E's namespace.
+namespace std {
+template <rs4sim::codec::ErrorEnum E>
+struct is_error_code_enum<E> : true_type {};
+}  // namespace std

@@ -36,6 +36,3 @@ inline std::error_code make_error_code(FrameError e) noexcept {
 }
 
 }  // namespace rs4sim::gridscan
-
-template <>
-struct std::is_error_code_enum<rs4sim::gridscan::FrameError> : std::true_type {};

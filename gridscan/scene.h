@@ -71,6 +71,3 @@ struct Scene {
                                                  Configuration c);
 
 }  // namespace rs4sim::gridscan
-
-template <>
-struct std::is_error_code_enum<rs4sim::gridscan::SceneError> : std::true_type {};

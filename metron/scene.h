@@ -66,6 +66,3 @@ class Scene {
 };
 
 }  // namespace rs4sim::metron
-
-template <>
-struct std::is_error_code_enum<rs4sim::metron::SceneError> : std::true_type {};

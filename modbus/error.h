@@ -26,6 +26,3 @@ inline std::error_code make_error_code(ModbusError e) noexcept {
 }
 
 }  // namespace rs4sim::modbus
-
-template <>
-struct std::is_error_code_enum<rs4sim::modbus::ModbusError> : std::true_type {};

@@ -37,6 +37,3 @@ class LinkException : public std::system_error {
 };
 
 }  // namespace rs4sim::stream
-
-template <>
-struct std::is_error_code_enum<rs4sim::stream::LinkError> : std::true_type {};

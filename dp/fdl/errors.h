@@ -37,6 +37,3 @@ inline std::error_code make_error_code(DecodeError e) noexcept {
 }
 
 }  // namespace rs4sim::dp::fdl
-
-template <>
-struct std::is_error_code_enum<rs4sim::dp::fdl::DecodeError> : std::true_type {};

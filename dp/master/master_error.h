@@ -76,6 +76,3 @@ inline const std::error_category& dpv1_error_category() noexcept {
 std::error_code to_error_code(const pdu::Dpv1Error& e) noexcept;
 
 }  // namespace rs4sim::dp::master
-
-template <>
-struct std::is_error_code_enum<rs4sim::dp::master::MasterError> : std::true_type {};

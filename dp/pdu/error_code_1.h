@@ -74,6 +74,3 @@ inline std::error_code make_error_code(ErrorCode1 e) noexcept {
 }
 
 }  // namespace rs4sim::dp::pdu
-
-template <>
-struct std::is_error_code_enum<rs4sim::dp::pdu::ErrorCode1> : std::true_type {};

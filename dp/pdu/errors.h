@@ -37,6 +37,3 @@ template <class T>
 using Result = boost::outcome_v2::std_result<T>;
 
 }  // namespace rs4sim::dp::pdu
-
-template <>
-struct std::is_error_code_enum<rs4sim::dp::pdu::PduError> : std::true_type {};

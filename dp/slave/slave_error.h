@@ -41,6 +41,3 @@ inline std::error_code make_error_code(SlaveError e) noexcept {
 }
 
 }  // namespace rs4sim::dp
-
-template <>
-struct std::is_error_code_enum<rs4sim::dp::SlaveError> : std::true_type {};

@@ -396,6 +396,3 @@ class Adapter final : public dp::slave::SlaveApplication {
 };
 
 }  // namespace rs4sim::rs4::adapter
-
-template <>
-struct std::is_error_code_enum<rs4sim::rs4::adapter::AdapterApiError> : std::true_type {};

@@ -77,6 +77,3 @@ inline std::error_code make_error_code(AddressError e) noexcept {
 boost::outcome_v2::std_result<std::uint8_t> station_address(AddressSwitches s) noexcept;
 
 }  // namespace rs4sim::rs4::adapter
-
-template <>
-struct std::is_error_code_enum<rs4sim::rs4::adapter::AddressError> : std::true_type {};

@@ -76,6 +76,3 @@ struct StateMark {
 [[nodiscard]] StateMark state_mark(const Rs4Device& device);
 
 }  // namespace rs4sim::rs4::device
-
-template <>
-struct std::is_error_code_enum<rs4sim::rs4::device::StateError> : std::true_type {};

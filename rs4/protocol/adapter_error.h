@@ -54,6 +54,3 @@ inline const std::error_category& adapter_category() noexcept {
 }
 
 }  // namespace rs4sim::rs4::protocol
-
-template <>
-struct std::is_error_code_enum<rs4sim::rs4::protocol::AdapterError> : std::true_type {};

@@ -67,6 +67,3 @@ inline std::error_code make_error_code(ProtocolError e) noexcept {
 }
 
 }  // namespace rs4sim::rs4::protocol
-
-template <>
-struct std::is_error_code_enum<rs4sim::rs4::protocol::ProtocolError> : std::true_type {};

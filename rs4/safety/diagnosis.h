@@ -46,6 +46,3 @@ inline const std::error_category& fdiagnosis_category() noexcept {
 }
 
 }  // namespace rs4sim::rs4::safety
-
-template <>
-struct std::is_error_code_enum<rs4sim::rs4::safety::FDiagnosis> : std::true_type {};

@@ -79,12 +79,3 @@ inline std::error_code make_error_code(ScannerError e) noexcept {
 }
 
 }  // namespace rs4sim::rs4::scanner
-
-template <>
-struct std::is_error_code_enum<rs4sim::rs4::scanner::ParameterError> : std::true_type {};
-template <>
-struct std::is_error_code_enum<rs4sim::rs4::scanner::CodecError> : std::true_type {};
-template <>
-struct std::is_error_code_enum<rs4sim::rs4::scanner::SceneError> : std::true_type {};
-template <>
-struct std::is_error_code_enum<rs4sim::rs4::scanner::ScannerError> : std::true_type {};
