@@ -56,6 +56,31 @@ struct Profibus {
     }
     return blob;
   }
+  // Sends the chunks of a begun download (DOWNLOAD_CHUNK 0..n-1, with the password) and
+  // returns their answers in order; stops after the first answer that is not OK.
+  std::vector<protocol::TransferAnswer> download_chunks(const protocol::DownloadBeginAnswer& b,
+                                                        const Bytes& blob) {
+    std::vector<protocol::TransferAnswer> answers;
+    for (std::size_t c = 0; c < b.chunk_count; ++c) {
+      const std::size_t off = c * b.chunk_size;
+      const std::size_t len = std::min<std::size_t>(b.chunk_size, blob.size() - off);
+      answers.push_back(transfer(protocol::DownloadChunkRequest{static_cast<std::uint8_t>(c),
+                                                                std::span(blob).subspan(off, len)},
+                                 kPassword));
+      if (answers.back().status != protocol::TransferStatus::kOk) break;
+    }
+    return answers;
+  }
+  // Powers the RS4 on and runs until data exchange; false if it is not there within 5 s.
+  bool reach_data_exchange() {
+    segment.power_on();
+    return segment.run_until([&] { return segment.in_data_exchange(); }, 5s);
+  }
+  // Plugs the PC adapter in and lets 50 ms pass.
+  void attach_adapter() {
+    port.attach(segment.now());
+    segment.run_for(50ms);
+  }
   std::uint8_t input() const { return segment.input_byte(); }
 
   device::Rs4Segment segment;
@@ -83,11 +108,9 @@ TEST(Rs232Profibus, AttachedAtStartUpThenRemovedSetsProxyRequest) {
 
 TEST(Rs232Profibus, ScenarioTwoParametriseOverRs232ThenDetach) {
   Profibus p;
-  p.segment.power_on();
-  ASSERT_TRUE(p.segment.run_until([&] { return p.segment.in_data_exchange(); }, 5s));
+  ASSERT_TRUE(p.reach_data_exchange());
   p.segment.run_for(500ms);
-  p.port.attach(p.segment.now());
-  p.segment.run_for(50ms);
+  p.attach_adapter();
   ASSERT_NE(p.input() & adapter::kInputRs232Active, 0);
   ASSERT_TRUE(p.port.reachable());
 
@@ -106,12 +129,7 @@ TEST(Rs232Profibus, ScenarioTwoParametriseOverRs232ThenDetach) {
       protocol::DownloadBeginRequest{static_cast<std::uint16_t>(blob.size()), crc}, kPassword);
   ASSERT_EQ(begin.status, protocol::TransferStatus::kOk);
   const auto& b = std::get<protocol::DownloadBeginAnswer>(*begin.body);
-  for (std::size_t c = 0; c < b.chunk_count; ++c) {
-    const std::size_t off = c * b.chunk_size;
-    const std::size_t len = std::min<std::size_t>(b.chunk_size, blob.size() - off);
-    const auto a = p.transfer(protocol::DownloadChunkRequest{static_cast<std::uint8_t>(c),
-                                                             std::span(blob).subspan(off, len)},
-                              kPassword);
+  for (const auto& a : p.download_chunks(b, blob)) {
     ASSERT_EQ(a.status, protocol::TransferStatus::kOk);
   }
   const auto commit = p.transfer(protocol::DownloadCommitRequest{}, kPassword);
@@ -129,10 +147,8 @@ TEST(Rs232Profibus, ScenarioTwoParametriseOverRs232ThenDetach) {
 
 TEST(Rs232Profibus, AnInvalidSetIsRefusedAndChangesNothing) {
   Profibus p;
-  p.segment.power_on();
-  ASSERT_TRUE(p.segment.run_until([&] { return p.segment.in_data_exchange(); }, 5s));
-  p.port.attach(p.segment.now());
-  p.segment.run_for(50ms);
+  ASSERT_TRUE(p.reach_data_exchange());
+  p.attach_adapter();
   const auto before = p.segment.device().scanner().parameters();
   auto blob = p.upload();
   blob[1] ^= 0x55;  // header damaged: does not decode
@@ -159,15 +175,13 @@ TEST(Rs232Profibus, AnInvalidSetIsRefusedAndChangesNothing) {
 // bound; the commit leaves it with the start interlock.
 TEST(Rs232Profibus, DownloadOverRs232SwitchesTheOssdOffFromItsStart) {
   Profibus p;
-  p.segment.power_on();
-  ASSERT_TRUE(p.segment.run_until([&] { return p.segment.in_data_exchange(); }, 5s));
+  ASSERT_TRUE(p.reach_data_exchange());
   p.segment.run_for(300ms);
   p.segment.set_output_byte(adapter::kOutputRestart | 0x01);
   p.segment.run_for(200ms);
   p.segment.set_output_byte(0x01);
   ASSERT_TRUE(p.segment.run_until([&] { return (p.input() & adapter::kInputOssd) != 0; }, 500ms));
-  p.port.attach(p.segment.now());
-  p.segment.run_for(50ms);
+  p.attach_adapter();
   ASSERT_TRUE(p.port.reachable());
   const auto& a = p.segment.device().adapter();
   ASSERT_EQ(a.input_byte() & (adapter::kInputOssd | adapter::kInputOperatingState),
@@ -193,12 +207,7 @@ TEST(Rs232Profibus, DownloadOverRs232SwitchesTheOssdOffFromItsStart) {
   EXPECT_EQ(a.input_byte() & adapter::kInputOssd, 0) << "10 ms";
 
   const auto& b = std::get<protocol::DownloadBeginAnswer>(*begin.body);
-  for (std::size_t c = 0; c < b.chunk_count; ++c) {
-    const std::size_t off = c * b.chunk_size;
-    const std::size_t len = std::min<std::size_t>(b.chunk_size, blob.size() - off);
-    const auto ch = p.transfer(protocol::DownloadChunkRequest{static_cast<std::uint8_t>(c),
-                                                              std::span(blob).subspan(off, len)},
-                               kPassword);
+  for (const auto& ch : p.download_chunks(b, blob)) {
     ASSERT_EQ(ch.status, protocol::TransferStatus::kOk);
     EXPECT_EQ(ch.options.state, protocol::Option1State::kConfiguration);
   }
@@ -216,10 +225,8 @@ TEST(Rs232Profibus, DownloadOverRs232SwitchesTheOssdOffFromItsStart) {
 // configuration mode with its set unchanged.
 TEST(Rs232Profibus, RemovalDuringAnRs232DownloadLeavesConfiguration) {
   Profibus p;
-  p.segment.power_on();
-  ASSERT_TRUE(p.segment.run_until([&] { return p.segment.in_data_exchange(); }, 5s));
-  p.port.attach(p.segment.now());
-  p.segment.run_for(50ms);
+  ASSERT_TRUE(p.reach_data_exchange());
+  p.attach_adapter();
   const auto before = p.segment.device().scanner().parameters();
   const auto blob = scanner::encode_for_transfer(before);
   ASSERT_EQ(p.transfer(protocol::DownloadBeginRequest{static_cast<std::uint16_t>(blob.size()),
