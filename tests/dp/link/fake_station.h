@@ -3,6 +3,7 @@
 // answers requests addressed to it according to a reply policy, and can run a periodic
 // timer. Deliberately tiny: it knows nothing of DP, only of FDL shapes.
 
+#include "dp/link/memory_bus.h"
 #include "dp/station.h"
 
 #include <deque>
@@ -102,5 +103,19 @@ inline fdl::Telegram srd_request(std::uint8_t da, std::uint8_t sa, std::vector<s
       da, sa, fdl::FrameControl::request(fdl::RequestFunction::kSrdHigh, true, true), std::nullopt,
       std::nullopt, data);
 }
+
+// A master (2) and a slave (5) attached to one memory bus with its manual clock.
+struct MasterAndSlave {
+  explicit MasterAndSlave(MemoryBusConfig config = {},
+                          FakeStation::Reply reply = FakeStation::Reply::kNone)
+      : bus(clock, config), slave(5, reply) {
+    bus.attach(master);
+    bus.attach(slave);
+  }
+  ManualClock clock;
+  MemoryBus bus;
+  FakeStation master{2};
+  FakeStation slave;
+};
 
 }  // namespace rs4sim::dp::link::testing

@@ -13,11 +13,8 @@ using namespace testing;  // FakeStation, srd_request
 using Bytes = std::vector<std::uint8_t>;
 
 TEST(MemoryBusWire, ArrivalIsTsynPlusElevenBitsPerCharacterAtTwelveMegabit) {
-  ManualClock clock;
-  MemoryBus bus(clock, {BaudRate::k12M, kMinTsdrBits});
-  FakeStation master(2), slave(5, FakeStation::Reply::kEchoData);
-  bus.attach(master);
-  bus.attach(slave);
+  MasterAndSlave rig({BaudRate::k12M, kMinTsdrBits}, FakeStation::Reply::kEchoData);
+  auto& [clock, bus, master, slave] = rig;
   const TimePoint t0 = clock.now();
   master.outbox.push_back(srd_request(5, 2, {0xA5}));  // 10 bytes on the wire
   bus.start();
@@ -59,11 +56,8 @@ TEST(MemoryBusWire, SlowRateAndTheLineCarriesOneTelegramAtATime) {
 }
 
 TEST(MemoryBusWire, ATelegramStartsAtItsSendTimeAndNotBefore) {
-  ManualClock clock;
-  MemoryBus bus(clock, {BaudRate::k12M, kMinTsdrBits});
-  FakeStation master(2), slave(5);
-  bus.attach(master);
-  bus.attach(slave);
+  MasterAndSlave rig({BaudRate::k12M, kMinTsdrBits});
+  auto& [clock, bus, master, slave] = rig;
   std::vector<TimePoint> started;
   bus.add_observer([&](const BusEvent& e) { started.push_back(e.time); });
   const TimePoint t0 = clock.now();
@@ -80,11 +74,8 @@ TEST(MemoryBusWire, ATelegramStartsAtItsSendTimeAndNotBefore) {
 }
 
 TEST(MemoryBusWire, ASendTimeAlreadyPassedMeansAtOnce) {
-  ManualClock clock;
-  MemoryBus bus(clock, {BaudRate::k12M, kMinTsdrBits});
-  FakeStation master(2), slave(5);
-  bus.attach(master);
-  bus.attach(slave);
+  MasterAndSlave rig({BaudRate::k12M, kMinTsdrBits});
+  auto& [clock, bus, master, slave] = rig;
   const TimePoint t0 = clock.now();
   master.hold = t0;
   clock.set(t0 + 1ms);
@@ -97,11 +88,8 @@ TEST(MemoryBusWire, ASendTimeAlreadyPassedMeansAtOnce) {
 }
 
 TEST(MemoryBusWire, WithoutTheWireModelATelegramArrivesAtItsSendTime) {
-  ManualClock clock;
-  MemoryBus bus(clock);
-  FakeStation master(2), slave(5);
-  bus.attach(master);
-  bus.attach(slave);
+  MasterAndSlave rig;
+  auto& [clock, bus, master, slave] = rig;
   const TimePoint t0 = clock.now();
   master.hold = t0 + 24'667ns;
   master.outbox.push_back(srd_request(5, 2, {0xA5}));
