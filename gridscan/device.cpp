@@ -2,6 +2,8 @@
 // device_commands.cpp.
 #include "gridscan/device.h"
 
+#include "stream/transmit_queue.h"
+
 #include <algorithm>
 #include <utility>
 
@@ -126,10 +128,7 @@ std::optional<TimePoint> Device::next_deadline() const {
 }
 
 std::optional<std::vector<std::uint8_t>> Device::take_transmit() {
-  if (transmit_.empty()) return std::nullopt;
-  auto f = std::move(transmit_.front());
-  transmit_.pop_front();
-  return f;
+  return stream::take_front(transmit_);
 }
 
 // A frame cut by idle gap. Requests are exactly 10 bytes ([GridScan manual §9.2.4] "All

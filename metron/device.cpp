@@ -1,6 +1,7 @@
 #include "metron/device.h"
 
 #include "metron/slave_reply.h"
+#include "stream/transmit_queue.h"
 
 #include <algorithm>
 
@@ -138,10 +139,7 @@ std::optional<stream::TimePoint> Device::next_deadline() const {
 }
 
 std::optional<std::vector<std::uint8_t>> Device::take_transmit() {
-  if (transmit_.empty()) return std::nullopt;
-  auto f = std::move(transmit_.front());
-  transmit_.pop_front();
-  return f;
+  return stream::take_front(transmit_);
 }
 
 std::error_code Device::set_interrupted(std::span<const std::uint16_t> beams) {

@@ -4,6 +4,7 @@
 #include "modbus/error.h"
 #include "modbus/pdu.h"
 #include "modbus/timing.h"
+#include "stream/transmit_queue.h"
 
 #include <algorithm>
 #include <utility>
@@ -95,10 +96,7 @@ std::optional<stream::TimePoint> Device::next_deadline() const {
 }
 
 std::optional<std::vector<std::uint8_t>> Device::take_transmit() {
-  if (transmit_.empty()) return std::nullopt;
-  std::vector<std::uint8_t> frame = std::move(transmit_.front());
-  transmit_.pop_front();
-  return frame;
+  return stream::take_front(transmit_);
 }
 
 std::error_code Device::set_interrupted(std::span<const std::uint16_t> beams,

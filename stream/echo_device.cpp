@@ -1,5 +1,7 @@
 #include "stream/echo_device.h"
 
+#include "stream/transmit_queue.h"
+
 namespace rs4sim::stream {
 
 EchoDevice::EchoDevice(const EchoOptions& options)
@@ -30,10 +32,8 @@ std::optional<TimePoint> EchoDevice::next_deadline() const {
 }
 
 std::optional<std::vector<std::uint8_t>> EchoDevice::take_transmit() {
-  if (transmit_.empty()) return std::nullopt;
-  auto frame = std::move(transmit_.front());
-  transmit_.pop_front();
-  ++sent_;
+  auto frame = take_front(transmit_);
+  if (frame) ++sent_;
   return frame;
 }
 

@@ -2,6 +2,7 @@
 #include "rs4/rs232/rs232_port.h"
 
 #include "rs4/adapter/rs4_commands.h"
+#include "stream/transmit_queue.h"
 
 #include <algorithm>
 
@@ -122,10 +123,7 @@ std::optional<stream::TimePoint> Rs232Port::next_deadline() const {
 }
 
 std::optional<std::vector<std::uint8_t>> Rs232Port::take_transmit() {
-  if (transmit_.empty()) return std::nullopt;
-  auto frame = std::move(transmit_.front());
-  transmit_.pop_front();
-  return frame;
+  return stream::take_front(transmit_);
 }
 
 // The newest scan, once; skipped while the previous frames still occupy the line (a full
