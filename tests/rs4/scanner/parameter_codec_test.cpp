@@ -65,26 +65,25 @@ TEST(ScannerParameterCodec, HeaderBytes) {
   EXPECT_TRUE(std::equal(kHeader.begin(), kHeader.end(), bytes.begin()));
 }
 
+// The big-endian 16-bit value of bytes `offset` and `offset` + 1.
+unsigned u16_be_at(const std::vector<std::uint8_t>& b, std::size_t offset) {
+  return (unsigned{b.at(offset)} << 8U) | unsigned{b.at(offset + 1)};
+}
+
 TEST(ScannerParameterCodec, FieldPairBytes) {
   const auto b = encode(sample());
   // pair 1 protective segment 0 at offset 43: 0x0102 big-endian
-  EXPECT_EQ(b[43], 0x01);
-  EXPECT_EQ(b[44], 0x02);
+  EXPECT_EQ(u16_be_at(b, 43), 0x0102U);
   // pair 1 protective segment 1 at 45: factory 1000 mm = 0x03E8
-  EXPECT_EQ(b[45], 0x03);
-  EXPECT_EQ(b[46], 0xE8);
+  EXPECT_EQ(u16_be_at(b, 45), 0x03E8U);
   // pair 1 warning segment 0 at 43 + 1058 = 1101: factory 2000 mm = 0x07D0
-  EXPECT_EQ(b[1101], 0x07);
-  EXPECT_EQ(b[1102], 0xD0);
+  EXPECT_EQ(u16_be_at(b, 1101), 0x07D0U);
   // pair 1 warning segment 528 at 1101 + 1056 = 2157: 0x3A98
-  EXPECT_EQ(b[2157], 0x3A);
-  EXPECT_EQ(b[2158], 0x98);
+  EXPECT_EQ(u16_be_at(b, 2157), 0x3A98U);
   // pair 2 protective segment 0 at 43 + 2116 = 2159: factory 1500 mm = 0x05DC
-  EXPECT_EQ(b[2159], 0x05);
-  EXPECT_EQ(b[2160], 0xDC);
+  EXPECT_EQ(u16_be_at(b, 2159), 0x05DCU);
   // last two bytes: pair 4 warning segment 528 = 0x0DAC
-  EXPECT_EQ(b[8505], 0x0D);
-  EXPECT_EQ(b[8506], 0xAC);
+  EXPECT_EQ(u16_be_at(b, 8505), 0x0DACU);
 }
 
 TEST(ScannerParameterCodec, DecodeFixedBytes) {
