@@ -74,14 +74,12 @@ Result<FParameters> parse_f_parameters(std::span<const std::uint8_t> block,
 }
 
 DeviceProfile profile_for(const FParameters& p) noexcept {
-  DeviceProfile d;
-  d.check_ipar = p.check_ipar;
-  d.sil = p.sil;
-  d.crc_length = p.crc_length;
-  d.block_id = p.block_id;
-  d.par_version = p.par_version;
-  d.dest_add = p.dest_add;
-  return d;
+  return DeviceProfile{.check_ipar = p.check_ipar,
+                       .sil = p.sil,
+                       .crc_length = p.crc_length,
+                       .block_id = p.block_id,
+                       .par_version = p.par_version,
+                       .dest_add = p.dest_add};
 }
 
 Validation validate(const FParameters& p, const DeviceProfile& d) noexcept {
