@@ -1,18 +1,15 @@
 #include "gsd/station/gsd_station.h"
 
 #include "dp/pdu/set_prm.h"
+#include "gsd/check_report.h"
 #include "gsd/dp_slave_config.h"
+#include "gsd/unit_diag.h"
 
-#include <cstdio>
+#include <algorithm>
+#include <cctype>
 
 namespace rs4sim::gsd {
 namespace {
-
-std::string hex16(std::uint16_t v) {
-  char b[8];
-  std::snprintf(b, sizeof b, "0x%04X", v);
-  return b;
-}
 
 Error set_prm_error(const GsdStationSpec& spec, GsdError code, std::string message) {
   Error e;
@@ -36,6 +33,22 @@ std::string unchecked_user_prm_fault(const Device& device, std::size_t length) {
   if (!device.max_user_prm_data_len || length <= *device.max_user_prm_data_len) return {};
   return "User_Prm_Data is " + std::to_string(length) + " bytes, the GSD allows " +
          std::to_string(*device.max_user_prm_data_len) + " (Max_User_Prm_Data_Len)";
+}
+
+std::string io_hex(std::span<const std::uint8_t> bytes) {
+  std::string s = hex_bytes({bytes.begin(), bytes.end()});  // "5A 11"
+  std::transform(s.begin(), s.end(), s.begin(), [](char c) {
+    return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  });
+  return s;
+}
+
+std::string diagnosis_text(const Device& device, std::span<const std::uint8_t> blocks) {
+  std::string out;
+  for (const auto& t : unit_diag_texts(device.unit_diag, blocks)) {
+    out += (out.empty() ? "" : "; ") + t;
+  }
+  return out;
 }
 
 GsdStationSpec station_spec(std::string file, std::shared_ptr<const Device> device,
@@ -206,14 +219,9 @@ std::string GsdStation::describe() const {
   for (const auto& m : spec_->modules) {
     modules += (modules.empty() ? "\"" : ", \"") + m.name + (m.preset ? "\" (preset)" : "\"");
   }
-  std::string cfg;
-  char b[4];
-  for (auto x : spec_->setup.cfg) {
-    std::snprintf(b, sizeof b, "%02X", x);
-    cfg += (cfg.empty() ? "" : " ") + std::string(b);
-  }
   return "GSD slave " + std::to_string(spec_->address) + " (" + spec_->file + ", ident " +
-         hex16(spec_->device->ident_number) + ", modules " + modules + ", cfg " + cfg + ")";
+         hex16(spec_->device->ident_number) + ", modules " + modules + ", cfg " +
+         hex_bytes(spec_->setup.cfg) + ")";
 }
 
 }  // namespace rs4sim::gsd

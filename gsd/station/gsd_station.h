@@ -78,6 +78,13 @@ GsdStationSpec station_spec(std::string file, std::shared_ptr<const Device> devi
 bool defines_no_user_prm(const Device& device);
 std::string unchecked_user_prm_fault(const Device& device, std::size_t length);
 
+// A station's bytes as the harness's event stream and the master's report show them:
+// lowercase hex, space-separated ("5a 11 22"; none: "").
+std::string io_hex(std::span<const std::uint8_t> bytes);
+// The GSD's Unit_Diag texts of device-related diagnosis `blocks` (unit_diag_texts),
+// "; "-separated (none: "").
+std::string diagnosis_text(const Device& device, std::span<const std::uint8_t> blocks);
+
 // Our class 1 master's entry for the station, from the same GSD: Set_Prm (Lock_Req, WD_On, the
 // GSD's ident and User_Prm_Data), Chk_Cfg, image lengths, C1 timeout. An error (the file
 // named) when the Set_Prm does not encode (kPrmTooLong) or decode (kBadValue).
