@@ -134,3 +134,29 @@ Result<void> validate(const Snapshot& snapshot) {
 }
 
 }  // namespace rs4sim::storage
+
+namespace rs4sim::storage {
+
+std::vector<const ParameterSetRecord*> current_sets(const Snapshot& snapshot) {
+  std::vector<const ParameterSetRecord*> out;
+  for (const auto& station : snapshot.stations) {
+    for (const auto& v : station.versions) {
+      if (v.number != station.current_version) continue;
+      for (const auto& set : snapshot.sets) {
+        if (set.id == v.set_id) out.push_back(&set);
+      }
+    }
+  }
+  return out;
+}
+
+const char* to_string(ImportCurrent c) noexcept {
+  switch (c) {
+    case ImportCurrent::kUnchanged: return "current unchanged";
+    case ImportCurrent::kMadeCurrent: return "made current";
+    case ImportCurrent::kKeptPending: return "current kept: a newer restore is pending download";
+  }
+  return "unknown";
+}
+
+}  // namespace rs4sim::storage
