@@ -6,8 +6,7 @@
 
 #include "app/devices/device_options.h"
 #include "app/devices/gsd_segment.h"
-#include "app/devices/gsd_service.h"
-#include "app/devices/gsd_station.h"
+#include "app/devices/gsd_station_file.h"
 #include "app/devices/memory_bus_target.h"
 #include "app/runtime/run_options.h"
 #include "app/runtime/usage_error.h"
@@ -21,6 +20,7 @@
 #include "json/syntax.h"
 #include "json/value_kind.h"
 #include "rpc/device_target.h"
+#include "rpc/gsd_service.h"
 #include "rpc/rs4_services.h"
 #include "rpc/tapped_station.h"
 #include "rs4/device/rs4_device.h"
@@ -284,15 +284,15 @@ class BusInstance final : public DeviceInstance {
     target_->set_other_stations(all.others);
     target_->route_pc_adapter(all.pc_adapter);
     rpc::EventHub* hub = target_->events();
-    for (const GsdStation* g : all.gsd) hub->watch(gsd_watcher(*g));
+    for (const GsdStation* g : all.gsd) hub->watch(rpc::gsd_watcher(*g));
     for (rpc::TappedStation* t : all.taps) t->set_hub(hub);
     ServiceList list = rpc::rs4_service_set(*target_, c.executor);
     if (!all.gsd.empty()) {
       const dp::Clock& clock = c.clock;
-      GsdServiceContext g{c.executor, all.gsd, [hub, &clock] { hub->poll(clock.now()); }};
+      rpc::GsdServiceContext g{c.executor, all.gsd, [hub, &clock] { hub->poll(clock.now()); }};
       g.turnaround = c.turnaround;
       g.slot_time_us = c.slot_time_us;
-      list.push_back(std::make_shared<GsdStationsService>(std::move(g)));
+      list.push_back(std::make_shared<rpc::GsdStationsService>(std::move(g)));
     }
     return list;
   }
@@ -437,7 +437,7 @@ class BusSegment final : public SimulatedSegment {
     ServiceList list = rpc::rs4_service_set(*target_, c.executor);
     if (!gsd.empty()) {
       rpc::EventHub* hub = target_->events();
-      list.push_back(std::make_shared<GsdStationsService>(GsdServiceContext{
+      list.push_back(std::make_shared<rpc::GsdStationsService>(rpc::GsdServiceContext{
           c.executor, gsd, [hub, this] { hub->poll(clock_.now()); }, bus_.get()}));
     }
     return list;

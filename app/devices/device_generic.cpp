@@ -1,15 +1,15 @@
 // Device entry `generic`: a generic DP-V1 slave (dp/devices) with the Ident_Number and
 // configuration identifiers given on the command line, or any DP slave from its GSD
-// (--gsd FILE [--module NAME]..., app/devices/gsd_station.h).
+// (--gsd FILE [--module NAME]..., app/devices/gsd_station_file.h).
 #include "app/demos/demos.h"
 #include "app/devices/device_options.h"
 #include "app/devices/device_registry.h"
 #include "app/devices/gsd_segment.h"
-#include "app/devices/gsd_service.h"
-#include "app/devices/gsd_station.h"
+#include "app/devices/gsd_station_file.h"
 #include "app/runtime/run_options.h"
 #include "dp/devices/generic_bus.h"
 #include "rpc/device_target.h"
+#include "rpc/gsd_service.h"
 #include "rpc/rs4_services.h"
 #include "rpc/tapped_station.h"
 
@@ -97,14 +97,15 @@ class GsdInstance final : public DeviceInstance {
   explicit GsdInstance(GsdStationSpec spec) : station_(std::move(spec)) {}
   std::vector<dp::Station*> stations() override { return {&tap_}; }
   ServiceList services(const ServiceContext& c) override {
-    target_ = std::make_unique<rpc::LineDeviceTarget>("gsd", gsd_watcher(station_), c.clock, c.io);
+    target_ =
+        std::make_unique<rpc::LineDeviceTarget>("gsd", rpc::gsd_watcher(station_), c.clock, c.io);
     tap_.set_hub(target_->events());
     auto* hub = target_->events();
     const dp::Clock& clock = c.clock;
-    GsdServiceContext g{c.executor, {&station_}, [hub, &clock] { hub->poll(clock.now()); }};
+    rpc::GsdServiceContext g{c.executor, {&station_}, [hub, &clock] { hub->poll(clock.now()); }};
     g.turnaround = c.turnaround;
     g.slot_time_us = c.slot_time_us;
-    return {std::make_shared<GsdStationsService>(std::move(g)),
+    return {std::make_shared<rpc::GsdStationsService>(std::move(g)),
             std::make_shared<rpc::ObservationService>(rpc::RunContext{*target_, c.executor})};
   }
   void stop_services() override {

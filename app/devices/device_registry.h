@@ -43,6 +43,9 @@ class TappedStation;
 namespace rs4sim::rs4::device {
 class Rs4Device;
 }
+namespace rs4sim::gsd {
+class GsdStation;
+}
 namespace boost::asio {
 class io_context;
 }
@@ -83,7 +86,7 @@ struct DeviceOptions {
   // rs4: --state FILE, one per --address in their order: the unit's non-volatile memory
   // (app/devices/rs4_state_file.h).
   std::vector<std::string> state_files;
-  // generic: --gsd FILE, the device's GSD (app/devices/gsd_station.h), and --module NAME
+  // generic: --gsd FILE, the device's GSD (app/devices/gsd_station_file.h), and --module NAME
   // in slot order (a compact station's one module is implicit).
   std::string gsd;
   std::vector<std::string> modules;
@@ -113,7 +116,7 @@ struct ServiceContext {
 };
 using ServiceList = std::vector<std::shared_ptr<grpc::Service>>;
 
-class GsdStation;
+using gsd::GsdStation;
 
 // What one instance contributes when a run serves several instances' stations under one set
 // of services (a bus file, app/devices/bus_file.h): its RS4s, its GSD stations, the stations

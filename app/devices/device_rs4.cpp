@@ -5,7 +5,7 @@
 #include "app/demos/demos.h"
 #include "app/devices/device_options.h"
 #include "app/devices/device_registry.h"
-#include "app/devices/gsd_station.h"
+#include "app/devices/gsd_station_file.h"
 #include "app/devices/rs4_state_file.h"
 #include "app/runtime/run_options.h"
 #include "dp/pdu/sap.h"

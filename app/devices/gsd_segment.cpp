@@ -1,10 +1,10 @@
 #include "app/devices/gsd_segment.h"
 
-#include "app/devices/gsd_service.h"
 #include "app/devices/memory_bus_target.h"
 #include "app/runtime/usage_error.h"
 #include "dp/time/baud_rate.h"
 #include "rpc/event_hub.h"
+#include "rpc/gsd_service.h"
 #include "rpc/rs4_services.h"
 
 #include <algorithm>
@@ -76,10 +76,10 @@ ServiceList GsdSegment::services(const ServiceContext& context) {
         return s;
       }());
   auto* hub = target_->events();
-  GsdServiceContext g{context.executor, std::move(stations),
-                      [hub, this] { hub->poll(clock_.now()); }, bus_.get()};
+  rpc::GsdServiceContext g{context.executor, std::move(stations),
+                           [hub, this] { hub->poll(clock_.now()); }, bus_.get()};
   const rpc::Rs4Context rs4{*target_, context.executor};
-  return {std::make_shared<GsdStationsService>(std::move(g)),
+  return {std::make_shared<rpc::GsdStationsService>(std::move(g)),
           std::make_shared<rpc::SimTimeService>(rs4),
           std::make_shared<rpc::ObservationService>(rs4)};
 }

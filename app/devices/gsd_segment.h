@@ -7,7 +7,7 @@
 // (docs/gsd.md "Harness API").
 
 #include "app/devices/device_registry.h"
-#include "app/devices/gsd_station.h"
+#include "app/devices/gsd_station_file.h"
 #include "app/devices/memory_bus_target.h"
 #include "dp/link/memory_bus.h"
 #include "dp/master/master.h"

@@ -1,7 +1,7 @@
 #include "app/devices/memory_bus_target.h"
 
-#include "app/devices/gsd_service.h"
-#include "app/devices/gsd_station.h"
+#include "app/devices/gsd_station_file.h"
+#include "rpc/gsd_service.h"
 
 #include <array>
 
@@ -16,7 +16,7 @@ MemoryBusTarget::MemoryBusTarget(dp::ManualClock& clock, dp::link::MemoryBus& bu
     watched[r.address & 127U] = true;
   }
   for (const GsdStation* g : stations_.gsd) {
-    hub_->watch(gsd_watcher(*g));
+    hub_->watch(rpc::gsd_watcher(*g));
     watched[g->address() & 127U] = true;
   }
   bus.add_observer([hub = hub_, watched, &clock](const dp::link::BusEvent& e) {

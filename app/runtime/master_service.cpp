@@ -3,6 +3,7 @@
 #include "app/runtime/run_session.h"
 #include "dp/link/memory_bus.h"
 #include "rpc/bus_master_service.h"
+#include "rpc/gsd_master_service.h"
 #include "rs4/device/rs4_device.h"
 
 #include <ostream>
@@ -48,17 +49,17 @@ class MasterService::Forwarder final : public dp::Station {
 namespace {
 
 rs4::device::Rs4MasterStationConfig with_gsd_slaves(const MasterServiceOptions& o,
-                                                    const GsdMasterSlaves& gsd) {
+                                                    const gsd::GsdMasterSlaves& gsd) {
   auto c = o.station;
-  const auto entries = gsd.entries(o.gsd_watchdog);
-  c.other_slaves.insert(c.other_slaves.end(), entries.begin(), entries.end());
+  for (const auto& s : gsd.slaves()) {
+    c.other_slaves.push_back(gsd_master_entry(s.spec, o.gsd_watchdog));
+  }
   return c;
 }
 
 }  // namespace
 
-MasterService::MasterService(const MasterServiceOptions& options, LinkKind link,
-                             std::ostream& out)
+MasterService::MasterService(const MasterServiceOptions& options, LinkKind link, std::ostream& out)
     : gsd_(options.gsd_slaves),
       station_(with_gsd_slaves(options, gsd_)),
       forwarder_(std::make_unique<Forwarder>(*this)),
@@ -83,7 +84,7 @@ void MasterService::announce() const {
   if (announced_ || !report_) return;
   announced_ = true;
   report_->started(station_, link_name(link_));
-  gsd_.start(*report_, started_at_);
+  gsd_report_.start(*report_, started_at_);
 }
 
 std::string MasterService::describe() const {
@@ -105,7 +106,7 @@ void MasterService::print_status(std::ostream& out, const dp::link::StationCount
   if (!report_) return;
   announce();  // a run stopped before its loop ran
   report_->stopped(station_, last_now_);
-  gsd_.stopped(station_.master(), *report_, last_now_);
+  gsd_report_.stopped(station_.master(), *report_, last_now_);
 }
 
 bool MasterService::healthy() const {
@@ -126,7 +127,7 @@ void MasterService::dispatch(dp::TimePoint now) {
     for (const auto& e : events_) p->on_event(e, station_, *report_, now);
   }
   report_->events(events_, station_, now);
-  gsd_.update(station_.master(), *report_, now);
+  gsd_report_.update(station_.master(), *report_, now);
 }
 
 namespace {
@@ -170,10 +171,10 @@ int run_memory(const MasterServiceOptions& o, const LinkOptions& l, std::ostream
 ServiceList MasterService::services(const ServiceContext& context) {
   // The master's own view of its stations (the page's station list and counters), its GSD
   // slaves' I/O, then the plugins' services.
-  ServiceList all{std::make_shared<rpc::BusMasterService>(station_, context.clock,
-                                                          context.executor)};
+  ServiceList all{
+      std::make_shared<rpc::BusMasterService>(station_, context.clock, context.executor)};
   if (!gsd_.empty()) {
-    all.push_back(std::make_shared<GsdMasterService>(
+    all.push_back(std::make_shared<rpc::GsdMasterService>(
         context.executor, gsd_, [this]() -> dp::master::Master& { return station_.master(); }));
   }
   for (auto* p : plugins_) {

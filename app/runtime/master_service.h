@@ -9,7 +9,7 @@
 //   pty / serial / udp  the RS4s are elsewhere (e.g. `rs4sim run --device rs4`)
 
 #include "app/devices/device_registry.h"
-#include "app/devices/gsd_station.h"
+#include "app/devices/gsd_station_file.h"
 #include "app/runtime/master_gsd.h"
 #include "app/runtime/master_report.h"
 #include "app/runtime/shell.h"
@@ -83,7 +83,7 @@ class MasterService final : public DeviceInstance {
 
   [[nodiscard]] rs4::device::Rs4MasterStation& station() { return station_; }
   [[nodiscard]] const rs4::device::Rs4MasterStation& station() const { return station_; }
-  [[nodiscard]] GsdMasterSlaves& gsd_slaves() { return gsd_; }
+  [[nodiscard]] gsd::GsdMasterSlaves& gsd_slaves() { return gsd_; }
   // Every RS4 in data exchange with its F-host in RUN, every GSD slave in data exchange.
   [[nodiscard]] bool healthy() const;
 
@@ -95,7 +95,8 @@ class MasterService final : public DeviceInstance {
   // docs/http.md), which come after start().
   void announce() const;
 
-  GsdMasterSlaves gsd_;  // before station_: its entries configure the master
+  gsd::GsdMasterSlaves gsd_;  // before station_: its entries configure the master
+  GsdMasterReport gsd_report_{gsd_};
   rs4::device::Rs4MasterStation station_;
   std::unique_ptr<Forwarder> forwarder_;
   LinkKind link_;

@@ -1,4 +1,4 @@
-// 125 GSD stations (app/devices/gsd_station.h) with our master configured from the same GSD on
+// 125 GSD stations (gsd/station/gsd_station.h) with our master configured from the same GSD on
 // the in-memory bus: the time of one poll cycle (the machine's, compared with the wire time of
 // the same telegrams at 12 Mbit/s) and the heap share of one station. The GSD is the project's
 // compact motor starter test file (2 bytes in and out, DP-V0, 12 Mbit/s supported), so the

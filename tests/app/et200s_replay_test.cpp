@@ -12,7 +12,7 @@
 // station 8: Slave_Diag, Get_Cfg, Set_Prm, Chk_Cfg, then 5 Slave_Diag) and 9 replies; the
 // Set_Prm is Lock_Req + Sync_Req + Freeze_Req + WD_On (B8), WD factors 13 and 15, min TSDR
 // 11, ident 0x80E0, group 0, then 25 bytes of User_Prm_Data; Chk_Cfg and Get_Cfg are 00 10 10.
-#include "app/devices/gsd_station.h"
+#include "app/devices/gsd_station_file.h"
 #include "dp/fdl/decoder.h"
 #include "dp/pdu/sap.h"
 #include "tests/real_material.h"

@@ -1,12 +1,12 @@
 // A GSD station and our master configured from the same GSD file, in one process over a
-// pseudo-terminal pair with the real clock (app/devices/gsd_station.h): start-up to Data_Exch,
+// pseudo-terminal pair with the real clock (gsd/station/gsd_station.h): start-up to Data_Exch,
 // inputs set per module on the station arrive at the master, the master's outputs at the
 // station. Waits are bounded and end as soon as the condition holds.
-#include "app/devices/gsd_service.h"
-#include "app/devices/gsd_station.h"
+#include "app/devices/gsd_station_file.h"
 #include "dp/link/profibus_line.h"
 #include "dp/link/station_runner.h"
 #include "dp/master/master.h"
+#include "rpc/gsd_service.h"
 #include "stream/pty.h"
 #include "stream/serial_transport.h"
 
@@ -20,6 +20,8 @@ namespace {
 namespace asio = boost::asio;
 using namespace std::chrono_literals;
 using Bytes = std::vector<std::uint8_t>;
+using rpc::GsdServiceContext;
+using rpc::GsdStationsService;
 
 // The test's loop is this thread: the service's work runs at once.
 class InlineExecutor final : public rpc::Executor {

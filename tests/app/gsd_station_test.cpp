@@ -1,10 +1,10 @@
-// Any DP slave from its GSD (app/devices/gsd_station.h): our master configured from the same GSD
+// Any DP slave from its GSD (gsd/station/gsd_station.h): our master configured from the same GSD
 // reaches data exchange with it on the in-memory bus (manual clock), I/O set per module arrives
 // at the master and the master's outputs at the station; a Set_Prm outside the GSD's ranges is
 // refused with Prm_Fault, a Chk_Cfg of other modules with Cfg_Fault ([IEC 61158-6-3 Set_Prm,
 // Chk_Cfg/Get_Cfg, Slave_Diag]). The GSD files are the project's own test files (tests/gsd/corpus).
 #include "app/devices/gsd_segment.h"
-#include "app/devices/gsd_station.h"
+#include "app/devices/gsd_station_file.h"
 #include "app/runtime/usage_error.h"
 
 #include <gtest/gtest.h>

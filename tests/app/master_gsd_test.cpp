@@ -3,10 +3,11 @@
 // (Set_Prm with the GSD's default User_Prm_Data [IEC 61158-6-3 Set_Prm], Chk_Cfg from the modules
 // [IEC 61158-6-3 Chk_Cfg/Get_Cfg]), both reach data exchange on one bus, and the I/O set on each
 // side arrives at the other. The GSD is the project's tests/gsd/corpus/modular_dpv1.gsd.
-#include "app/devices/gsd_service.h"
 #include "app/runtime/master_service.h"
 #include "app/runtime/usage_error.h"
 #include "dp/link/memory_bus.h"
+#include "rpc/gsd_master_service.h"
+#include "rpc/gsd_service.h"
 #include "rs4/device/rs4_device.h"
 
 #include <gtest/gtest.h>
@@ -18,6 +19,9 @@ namespace {
 
 namespace device = rs4::device;
 using Bytes = std::vector<std::uint8_t>;
+using rpc::GsdMasterService;
+using rpc::GsdServiceContext;
+using rpc::GsdStationsService;
 
 const std::string kGsd = std::string(RS4SIM_GSD_CORPUS) + "/modular_dpv1.gsd";
 

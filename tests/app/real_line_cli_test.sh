@@ -9,12 +9,16 @@ EXE="$1"
 TMP=$(mktemp -d)
 ECHO=
 trap 'kill "$RUN" $ECHO 2>/dev/null || true; rm -rf "$TMP"' EXIT
+# The first line of a run's stdout (its pty's path), once written (5 s at the most).
+first_line() {
+  i=0
+  while [ ! -s "$1" ] && [ $i -lt 100 ]; do sleep 0.05; i=$((i + 1)); done
+  head -n 1 "$1"
+}
 "$EXE" run --address 4 --boot-time 100 --link pty --baud 187.5k --duration 20 --json \
   >"$TMP/run.out" 2>"$TMP/run.err" &
 RUN=$!
-i=0
-while [ ! -s "$TMP/run.out" ] && [ $i -lt 100 ]; do sleep 0.05; i=$((i + 1)); done
-PTY=$(head -n 1 "$TMP/run.out")
+PTY=$(first_line "$TMP/run.out")
 "$EXE" serial-check --port "$PTY" --baud 187.5k --address 4 --count 200 >"$TMP/check.out"
 cat "$TMP/check.out"
 grep -q "200 replies, 0 loopback echoes, 0 unanswered" "$TMP/check.out"
@@ -37,9 +41,7 @@ grep -q '"event":"turnaround","address":4,"replies":20[0-9]' "$TMP/run.out"
 "$EXE" run --device echo --link pty --baud 187500 --format 8E1 --duration 20 \
   >"$TMP/echo.out" 2>"$TMP/echo.err" &
 ECHO=$!
-i=0
-while [ ! -s "$TMP/echo.out" ] && [ $i -lt 100 ]; do sleep 0.05; i=$((i + 1)); done
-EPTY=$(head -n 1 "$TMP/echo.out")
+EPTY=$(first_line "$TMP/echo.out")
 "$EXE" serial-check --port "$EPTY" --baud 187.5k --address 4 --count 50 >"$TMP/loop.out"
 cat "$TMP/loop.out"
 grep -q "50 FDL_Status requests to station 4: 0 replies, 50 loopback echoes, 0 unanswered" \

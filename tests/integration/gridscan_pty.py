@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """`rs4sim run --device gridscan --link pty` against raw bytes, checked byte for byte.
 
-No code of ours on this side: the script opens the pty with os/termios only, reads the
+No code of the simulator on this side: the script opens the pty with os/termios only, reads the
 power-up messages, plays the communication-test exchange of [GridScan manual §10.3],
 sends a request with a bad CRC (no reply) and asks for the full state of the scene given
 on the command line (--door 10 --blocked 3). Then --mains off: silent until SIGUSR1.
@@ -12,8 +12,11 @@ import signal
 import select
 import subprocess
 import sys
-import termios
 import time
+
+# The pty opened raw: shared with the Python tests of tests/rpc.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "rpc"))
+from script_support import open_raw  # noqa: E402
 
 SYNC = [0x43, 0x45, 0x44, 0x45]
 # The power-up version message: SeqCnt 0, ID 0xA0, "01.02" (SW) "03.04" (HW), CRC32.
@@ -21,15 +24,11 @@ POWER_UP_VERSION = SYNC + [0x00, 0xA0, 0x30, 0x31, 0x2E, 0x30, 0x32, 0x30, 0x33,
                            0x34, 0x33, 0x7F, 0x67, 0x4B]
 
 
-def raw(fd):
-    attrs = termios.tcgetattr(fd)
-    attrs[0] = 0  # iflag: no translation, no flow control
-    attrs[1] = 0  # oflag: no output processing
-    attrs[2] = termios.CS8 | termios.CREAD | termios.CLOCAL
-    attrs[3] = 0  # lflag: no echo, no canonical mode, no signals
-    attrs[6][termios.VMIN] = 0
-    attrs[6][termios.VTIME] = 0
-    termios.tcsetattr(fd, termios.TCSANOW, attrs)
+def exited_ok(proc, what):
+    rc = proc.wait(timeout=15)
+    if rc != 0:
+        print(f"FAIL {what} exited {rc}")
+        sys.exit(1)
 
 
 def read_exactly(fd, n, timeout):
@@ -58,9 +57,7 @@ def main():
         [sys.argv[1], "run", "--device", "gridscan", "--link", "pty", "--door", "10",
          "--blocked", "3", "--duration", "6"],
         stdout=subprocess.PIPE, text=True)
-    path = proc.stdout.readline().strip()
-    fd = os.open(path, os.O_RDWR | os.O_NOCTTY)
-    raw(fd)
+    fd = open_raw(proc.stdout.readline().strip(), vtime=0)
     try:
         expect(fd, "power-up version (SeqCnt 0, SW 01.02, HW 03.04)",
                POWER_UP_VERSION)
@@ -98,10 +95,7 @@ def main():
                SYNC + [0x01, 0xB0, 0x0A, 0x01, 0x36, 0x9C, 0xDB, 0xFF], timeout=3.0)
     finally:
         os.close(fd)
-    rc = proc.wait(timeout=15)
-    if rc != 0:
-        print(f"FAIL rs4sim exited {rc}")
-        sys.exit(1)
+    exited_ok(proc, "rs4sim")
     mains_off(sys.argv[1])
     print("all answers as expected")
 
@@ -112,8 +106,7 @@ def mains_off(rs4sim):
     proc = subprocess.Popen(
         [rs4sim, "run", "--device", "gridscan", "--link", "pty", "--mains", "off",
          "--duration", "3"], stdout=subprocess.PIPE, text=True)
-    fd = os.open(proc.stdout.readline().strip(), os.O_RDWR | os.O_NOCTTY)
-    raw(fd)
+    fd = open_raw(proc.stdout.readline().strip(), vtime=0)
     try:
         early = read_exactly(fd, 1, 0.5)
         if early:
@@ -125,10 +118,7 @@ def mains_off(rs4sim):
                POWER_UP_VERSION)
     finally:
         os.close(fd)
-    rc = proc.wait(timeout=15)
-    if rc != 0:
-        print(f"FAIL rs4sim --mains off exited {rc}")
-        sys.exit(1)
+    exited_ok(proc, "rs4sim --mains off")
 
 
 if __name__ == "__main__":

@@ -17,6 +17,7 @@
 #                               (both: the exit status in $bg_rc, NAME no longer ended on exit)
 # The functions work under `set -e` and `set -u`.
 #   bg_fail MESSAGE             prints MESSAGE and every started process's files, exit 1
+#   ended_ok WHAT RC ERRFILE    unless RC is 0: "WHAT exited with RC", ERRFILE shown, exit 1
 #
 # NAME is a shell identifier (run, master, echo, ...). The deadline is a limit for a loaded
 # machine, not a delay: the wait ends as soon as the line is there.
@@ -106,4 +107,12 @@ bg_wait() {
   bg_rc=0
   wait "$_bg_p" || bg_rc=$?
   eval "bg_pid_$1="
+}
+
+ended_ok() {
+  if [ "$2" -ne 0 ]; then
+    echo "$1 exited with $2"
+    cat "$3"
+    exit 1
+  fi
 }

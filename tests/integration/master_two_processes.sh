@@ -42,11 +42,7 @@ bg_await run.err 'Ctrl-C to stop'
   --capture "$dir/master.pcap" --capture-linktype 257 >"$dir/master.out" 2>"$dir/master.err"
 rc=$?
 cat "$dir/master.out"
-if [ $rc -ne 0 ]; then
-  echo "rs4sim master exited with $rc"
-  cat "$dir/master.err"
-  exit 1
-fi
+ended_ok "rs4sim master" $rc "$dir/master.err"
 fail=0
 expect() {
   if ! grep -q -- "$1" "$dir/master.out"; then

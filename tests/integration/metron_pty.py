@@ -1,12 +1,16 @@
 #!/usr/bin/python3
 """`rs4sim run --device metron --link pty` end to end: raw bytes in, answers checked byte for
-byte (docs/metron.md "Example bytes"). Standard library only (os, termios); no code of the
-project on this side. Usage: metron_pty.py <path of rs4sim>"""
+byte (docs/metron.md "Example bytes"). Standard library only (os, termios, through
+tests/rpc/script_support.py); no code of the simulator on this side.
+Usage: metron_pty.py <path of rs4sim>"""
 import os
 import subprocess
 import sys
-import termios
 import time
+
+# The pty opened raw, read until quiet: shared with the Python tests of tests/rpc.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "rpc"))
+from script_support import open_raw, read_quiet  # noqa: E402
 
 RS4SIM = sys.argv[1]
 failures = []
@@ -32,31 +36,12 @@ def start(*flags):
         if not line:
             sys.exit(f"rs4sim run {' '.join(flags)} ended before its banner: {''.join(seen)!r}")
         seen.append(line)
-    fd = os.open(path, os.O_RDWR | os.O_NOCTTY)
-    attrs = termios.tcgetattr(fd)
-    attrs[0] = 0                                   # iflag: no translation
-    attrs[1] = 0                                   # oflag: raw output
-    attrs[2] = termios.CS8 | termios.CREAD | termios.CLOCAL
-    attrs[3] = 0                                   # lflag: no echo, not canonical
-    attrs[6][termios.VMIN] = 0
-    attrs[6][termios.VTIME] = 2                    # read() gives up after 0.2 s of silence
-    termios.tcsetattr(fd, termios.TCSANOW, attrs)
-    return proc, fd
-
-
-def read_all(fd, quiet=0.2):
-    """Everything that arrives until the line stays quiet (VTIME) once."""
-    out = b""
-    while True:
-        chunk = os.read(fd, 256)
-        if not chunk:
-            return out
-        out += chunk
+    return proc, open_raw(path, vtime=2)  # read() gives up after 0.2 s of silence
 
 
 def check(name, fd, request, expected):
     os.write(fd, bytes(request))
-    got = read_all(fd)
+    got = read_quiet(fd)
     if got != bytes(expected):
         failures.append(f"{name}: sent {bytes(request).hex(' ')}, expected "
                         f"{bytes(expected).hex(' ') or '(nothing)'}, got {got.hex(' ') or '(nothing)'}")

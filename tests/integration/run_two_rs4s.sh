@@ -28,11 +28,7 @@ rc=$?
 bg_stop run TERM
 run_rc=$bg_rc
 cat "$dir/master.out"
-if [ $rc -ne 0 ]; then
-  echo "rs4sim master exited with $rc"
-  cat "$dir/master.err"
-  exit 1
-fi
+ended_ok "rs4sim master" $rc "$dir/master.err"
 fail=0
 expect() {
   if ! grep -q -- "$1" "$2"; then

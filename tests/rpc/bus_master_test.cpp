@@ -45,15 +45,32 @@ rs4::device::Rs4DeviceConfig rs4_at_4() {
   return c;
 }
 
-TEST(BusMaster, ListStationsShowsTheMastersViewAndCounters) {
+// Our master and the RS4 at 4 on the simulated bus, the RS4 powered.
+class BusMaster : public ::testing::Test {
+ protected:
+  BusMaster() {
+    bus.attach(station);
+    bus.attach(rs4);
+    bus.start();
+    rs4.power_on(clock.now());
+  }
+  // One telegram from the RS4 dropped, then 200 ms of the bus: the master repeats.
+  void drop_one_from_rs4() {
+    dp::link::Fault drop;
+    drop.kind = dp::link::FaultKind::kDrop;
+    drop.from = 4;
+    drop.count = 1;
+    bus.inject(drop);
+    bus.run_for(200ms);
+  }
+
   dp::ManualClock clock;
-  rs4::device::Rs4MasterStation station(one_rs4());
-  rs4::device::Rs4Device rs4(rs4_at_4());
-  dp::link::MemoryBus bus(clock);
-  bus.attach(station);
-  bus.attach(rs4);
-  bus.start();
-  rs4.power_on(clock.now());
+  rs4::device::Rs4MasterStation station{one_rs4()};
+  rs4::device::Rs4Device rs4{rs4_at_4()};
+  dp::link::MemoryBus bus{clock};
+};
+
+TEST_F(BusMaster, ListStationsShowsTheMastersViewAndCounters) {
   InlineExecutor executor;
   BusMasterService service(station, clock, executor);
   const auto list = [&] {
@@ -83,12 +100,7 @@ TEST(BusMaster, ListStationsShowsTheMastersViewAndCounters) {
   EXPECT_GT(s.plc().dp().data_exchanges(), 100U);
   EXPECT_EQ(list().now_ns(), to_ns(clock.now()));
 
-  dp::link::Fault drop;
-  drop.kind = dp::link::FaultKind::kDrop;
-  drop.from = 4;
-  drop.count = 1;
-  bus.inject(drop);
-  bus.run_for(200ms);
+  drop_one_from_rs4();
   const auto after = list().stations(0).plc().dp();
   EXPECT_EQ(after.repeats(), 1U);
   EXPECT_EQ(after.lost(), 0U);
@@ -99,15 +111,7 @@ TEST(BusMaster, ListStationsShowsTheMastersViewAndCounters) {
 // server in front of the service, the bus on the loop's thread as in a run. The answer is the
 // service's own, in the JSON mapping (uint64 counters as strings); what is not the Empty request
 // or not a method of BusMaster is refused with the google.rpc.Status of the error.
-TEST(BusMaster, ListStationsAsJsonOverHttp) {
-  dp::ManualClock clock;
-  rs4::device::Rs4MasterStation station(one_rs4());
-  rs4::device::Rs4Device rs4(rs4_at_4());
-  dp::link::MemoryBus bus(clock);
-  bus.attach(station);
-  bus.attach(rs4);
-  bus.start();
-  rs4.power_on(clock.now());
+TEST_F(BusMaster, ListStationsAsJsonOverHttp) {
   boost::asio::io_context io;
   auto work = boost::asio::make_work_guard(io);
   AsioExecutor executor(io);
@@ -121,12 +125,7 @@ TEST(BusMaster, ListStationsAsJsonOverHttp) {
       ASSERT_TRUE(bus.run_until([&] { return station.in_data_exchange(4); }, clock.now() + 10s,
                                 [&] { station.take_events(events); }));
       bus.run_for(5s);
-      dp::link::Fault drop;
-      drop.kind = dp::link::FaultKind::kDrop;
-      drop.from = 4;
-      drop.count = 1;
-      bus.inject(drop);
-      bus.run_for(200ms);
+      drop_one_from_rs4();
     });
     const auto a = h.call("rs4sim.v1.BusMaster/ListStations");
     ASSERT_EQ(a.status, 200u) << a.body;

@@ -8,15 +8,11 @@ its GsdMaster.
 Usage: python_bus_file_test.py RS4SIM REPO   (exit 77 = skipped: no python3-grpcio)"""
 import os
 import signal
-import subprocess
 import sys
-import time
 
-try:
-    import grpc
-except ImportError:
-    print("python3-grpcio is not installed: skipped")
-    sys.exit(77)
+from script_support import first_line, pty_path, require_grpc, spawn, stop_ok, wait_for
+
+grpc = require_grpc()
 
 rs4sim, repo = sys.argv[1], sys.argv[2]
 from rs4sim import GsdMaster, GsdStations, Rs4, pb  # noqa: E402
@@ -26,31 +22,12 @@ MODULES = ["DI 8", "AI 2", "DO 16 consistent"]
 BAUD, SLOT_TIME = "9.6k", "1000"  # as python_gsd_master_test.py: room for a loaded machine
 
 
-def first_line(proc, prefix):
-    while True:
-        line = proc.stdout.readline()
-        assert line, f"rs4sim printed no {prefix!r} line"
-        if line.startswith(prefix):
-            return line[len(prefix):].strip()
-
-
-def wait_for(what, condition, timeout_s):
-    end = time.monotonic() + timeout_s
-    while time.monotonic() < end:
-        if condition():
-            return
-        time.sleep(0.05)
-    raise AssertionError(f"timed out waiting for {what}")
-
-
-bus = subprocess.Popen([rs4sim, "run", "--bus", os.path.join(CORPUS, "bus_rs4_gsd.json"),
-                        "--baud", BAUD, "--link", "pty", "--grpc", "127.0.0.1:0",
-                        "--duration", "60"],
-                       stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+bus = spawn(rs4sim, "run", "--bus", os.path.join(CORPUS, "bus_rs4_gsd.json"),
+            "--baud", BAUD, "--link", "pty", "--grpc", "127.0.0.1:0",
+            "--duration", "60")
 master = None
 try:
-    path = bus.stdout.readline().strip()
-    assert path.startswith("/dev/"), path
+    path = pty_path(bus)
     api = first_line(bus, "grpc: listening on ")
     stations, rs4 = GsdStations(api), Rs4(api, station=4)
 
@@ -77,11 +54,10 @@ try:
 
     gsd = os.path.join(CORPUS, "modular_dpv1.gsd")
     modules = [a for m in MODULES for a in ("--module", "5:" + m)]
-    master = subprocess.Popen([rs4sim, "master", "--slave", "4", "--gsd-slave", "5:" + gsd,
-                               *modules, "--link", "serial", "--port", path, "--baud", BAUD,
-                               "--slot-time", SLOT_TIME, "--dp-watchdog", "5000", "--no-proxy",
-                               "--grpc", "127.0.0.1:0", "--duration", "60"],
-                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    master = spawn(rs4sim, "master", "--slave", "4", "--gsd-slave", "5:" + gsd,
+                   *modules, "--link", "serial", "--port", path, "--baud", BAUD,
+                   "--slot-time", SLOT_TIME, "--dp-watchdog", "5000", "--no-proxy",
+                   "--grpc", "127.0.0.1:0", "--duration", "60")
     gm = GsdMaster(first_line(master, "grpc: listening on "))
 
     # Both stations enter data exchange, seen in the one stream.
@@ -101,11 +77,5 @@ try:
     print("bus file: RS4 and GSD station through one API, data exchange with the master: ok")
 finally:
     if master is not None:
-        master.send_signal(signal.SIGINT)
-        out, err = master.communicate(timeout=20)
-        print(err, end="")
-        assert master.returncode == 0, (master.returncode, out, err)
-    bus.send_signal(signal.SIGTERM)
-    out, err = bus.communicate(timeout=20)
-    print(err, end="")
-    assert bus.returncode == 0, (bus.returncode, out, err)
+        stop_ok(master, signal.SIGINT)
+    stop_ok(bus)

@@ -8,11 +8,9 @@ import signal
 import subprocess
 import sys
 
-try:
-    import grpc
-except ImportError:
-    print("python3-grpcio is not installed: skipped")
-    sys.exit(77)
+from script_support import require_grpc
+
+grpc = require_grpc()
 
 rs4sim, repo = sys.argv[1], sys.argv[2]
 from rs4sim import Rs4  # noqa: E402

@@ -16,50 +16,26 @@ Every version carries today's UTC date (`archive history`), not the time since b
 Usage: python_device_exchange_test.py RS4SIM REPO   (exit 77 = skipped: no python3-grpcio)"""
 import datetime
 import signal
-import socket
 import subprocess
 import sys
 import tempfile
 import time
 import os
 
-try:
-    import grpc  # noqa: F401
-except ImportError:
-    print("python3-grpcio is not installed: skipped")
-    sys.exit(77)
+from script_support import first_line, free_udp_port, require_grpc, spawn, stop
+
+require_grpc()
 
 rs4sim, repo = sys.argv[1], sys.argv[2]
 from rs4sim import Master, Rs4  # noqa: E402
 
 
-def free_udp_port():
-    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
-def first_line(proc, prefix):
-    while True:
-        line = proc.stdout.readline()
-        assert line, f"rs4sim printed no {prefix!r} line"
-        if line.startswith(prefix):
-            return line[len(prefix):].strip()
-
-
 def start_rs4(*unit):
-    return subprocess.Popen([rs4sim, "run", "--device", "rs4", "--address", "4", *unit,
-                             "--link", "udp",
-                             "--listen", f"127.0.0.1:{a}", "--peer", f"127.0.0.1:{b}",
-                             "--boot-time", "3000", "--duration", "120",
-                             "--grpc", "127.0.0.1:0"],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-
-
-def stop(proc, sig=signal.SIGTERM):
-    proc.send_signal(sig)
-    out, err = proc.communicate(timeout=20)
-    return proc.returncode, out, err
+    return spawn(rs4sim, "run", "--device", "rs4", "--address", "4", *unit,
+                 "--link", "udp",
+                 "--listen", f"127.0.0.1:{a}", "--peer", f"127.0.0.1:{b}",
+                 "--boot-time", "3000", "--duration", "120",
+                 "--grpc", "127.0.0.1:0")
 
 
 def sync(m, action):
@@ -80,11 +56,10 @@ work = tempfile.mkdtemp(prefix="rs4sim_exchange_")
 archive = os.path.join(work, "archive.sqlite3")
 a, b = free_udp_port(), free_udp_port()
 device = start_rs4("--serial-number", "1001")
-master = subprocess.Popen([rs4sim, "master", "--slave", "4", "--link", "udp",
-                           "--listen", f"127.0.0.1:{b}", "--peer", f"127.0.0.1:{a}",
-                           "--f-wd-time", "500", "--dp-watchdog", "1000", "--archive", archive,
-                           "--grpc", "127.0.0.1:0"],
-                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+master = spawn(rs4sim, "master", "--slave", "4", "--link", "udp",
+               "--listen", f"127.0.0.1:{b}", "--peer", f"127.0.0.1:{a}",
+               "--f-wd-time", "500", "--dp-watchdog", "1000", "--archive", archive,
+               "--grpc", "127.0.0.1:0")
 try:
     rs4 = Rs4(first_line(device, "grpc: listening on "), station=4)
     m = Master(first_line(master, "grpc: listening on "))

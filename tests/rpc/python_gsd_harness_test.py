@@ -10,15 +10,11 @@ project's tests/gsd/corpus/modular_dpv1.gsd ("DI 8": 1 input byte, "AI 2": 4, "D
 consistent": 2 output bytes; ident 0xB756).
 Usage: python_gsd_harness_test.py RS4SIM REPO   (exit 77 = skipped: no python3-grpcio)"""
 import os
-import subprocess
 import sys
-import termios
 
-try:
-    import grpc
-except ImportError:
-    print("python3-grpcio is not installed: skipped")
-    sys.exit(77)
+from script_support import open_raw, pty_path, require_grpc, spawn, transact
+
+grpc = require_grpc()
 
 rs4sim, repo = sys.argv[1], sys.argv[2]
 from rs4sim import GsdStations, error_details  # noqa: E402
@@ -28,36 +24,12 @@ from rs4sim.process import Rs4simProcess  # noqa: E402
 FDL_STATUS = bytes([0x10, 0x05, 0x01, 0x49, 0x4F, 0x16])
 
 
-def open_raw(path):
-    fd = os.open(path, os.O_RDWR | os.O_NOCTTY)
-    attrs = termios.tcgetattr(fd)
-    attrs[0] = attrs[1] = attrs[3] = 0
-    attrs[2] = termios.CS8 | termios.CREAD | termios.CLOCAL
-    attrs[6][termios.VMIN] = 0
-    attrs[6][termios.VTIME] = 3  # read() gives up after 0.3 s of silence
-    termios.tcsetattr(fd, termios.TCSANOW, attrs)
-    return fd
-
-
-def transact(fd, request):
-    termios.tcflush(fd, termios.TCIFLUSH)
-    os.write(fd, request)
-    out = b""
-    while True:
-        chunk = os.read(fd, 256)
-        if not chunk:
-            return out
-        out += chunk
-
-
 gsd = os.path.join(repo, "tests/gsd/corpus/modular_dpv1.gsd")
-proc = subprocess.Popen([rs4sim, "run", "--device", "generic", "--gsd", gsd, "--module", "DI 8",
-                         "--module", "AI 2", "--module", "DO 16 consistent", "--address", "5",
-                         "--baud", "12M", "--link", "pty", "--grpc", "127.0.0.1:0"],
-                        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+proc = spawn(rs4sim, "run", "--device", "generic", "--gsd", gsd, "--module", "DI 8",
+             "--module", "AI 2", "--module", "DO 16 consistent", "--address", "5",
+             "--baud", "12M", "--link", "pty", "--grpc", "127.0.0.1:0")
 try:
-    tty = proc.stdout.readline().strip()
-    assert tty.startswith("/dev/"), tty
+    tty = pty_path(proc)
     line = proc.stdout.readline()
     assert line.startswith("grpc: listening on 127.0.0.1:"), line
     stations = GsdStations(line.split()[-1])

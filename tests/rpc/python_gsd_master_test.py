@@ -11,16 +11,12 @@ Usage: python_gsd_master_test.py RS4SIM REPO   (exit 77 = skipped: no python3-gr
 import json
 import os
 import signal
-import subprocess
 import sys
-import time
 import urllib.request
 
-try:
-    import grpc
-except ImportError:
-    print("python3-grpcio is not installed: skipped")
-    sys.exit(77)
+from script_support import first_lines, pty_path, require_grpc, spawn, stop_ok, wait_for
+
+grpc = require_grpc()
 
 rs4sim, repo = sys.argv[1], sys.argv[2]
 from rs4sim import GsdMaster, GsdStations, error_details  # noqa: E402
@@ -33,44 +29,20 @@ BAUD = "9.6k"
 SLOT_TIME = "1000"
 
 
-def first_lines(proc, *prefixes):
-    """The values of the first stdout lines that start with each prefix, in any order."""
-    found = {}
-    while len(found) < len(prefixes):
-        line = proc.stdout.readline()
-        assert line, f"rs4sim printed no {set(prefixes) - set(found)} line"
-        for p in prefixes:
-            if line.startswith(p):
-                found[p] = line[len(p):].strip()
-    return [found[p] for p in prefixes]
-
-
-def wait_for(what, condition, timeout_s):
-    end = time.monotonic() + timeout_s
-    while time.monotonic() < end:
-        if condition():
-            return
-        time.sleep(0.05)
-    raise AssertionError(f"timed out waiting for {what}")
-
-
 gsd = os.path.join(repo, "tests/gsd/corpus/modular_dpv1.gsd")
 station_args = [a for m in MODULES for a in ("--module", m)]
-device = subprocess.Popen([rs4sim, "run", "--device", "generic", "--gsd", gsd, *station_args,
-                           "--address", "5", "--baud", BAUD, "--link", "pty", "--grpc",
-                           "127.0.0.1:0", "--duration", "60"],
-                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+device = spawn(rs4sim, "run", "--device", "generic", "--gsd", gsd, *station_args,
+               "--address", "5", "--baud", BAUD, "--link", "pty", "--grpc",
+               "127.0.0.1:0", "--duration", "60")
 master = None
 try:
-    path = device.stdout.readline().strip()
-    assert path.startswith("/dev/"), path
+    path = pty_path(device)
     (station_api,) = first_lines(device, "grpc: listening on ")
     master_args = [a for m in MODULES for a in ("--module", "5:" + m)]
-    master = subprocess.Popen([rs4sim, "master", "--gsd-slave", "5:" + gsd, *master_args,
-                               "--link", "serial", "--port", path, "--baud", BAUD, "--slot-time", SLOT_TIME,
-                               "--dp-watchdog", "5000", "--no-proxy", "--grpc", "127.0.0.1:0",
-                               "--http", "127.0.0.1:0", "--duration", "60"],
-                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    master = spawn(rs4sim, "master", "--gsd-slave", "5:" + gsd, *master_args,
+                   "--link", "serial", "--port", path, "--baud", BAUD, "--slot-time", SLOT_TIME,
+                   "--dp-watchdog", "5000", "--no-proxy", "--grpc", "127.0.0.1:0",
+                   "--http", "127.0.0.1:0", "--duration", "60")
     master_api, http = first_lines(master, "grpc: listening on ", "http: listening on ")
     stations, gm = GsdStations(station_api), GsdMaster(master_api)
 
@@ -129,12 +101,6 @@ try:
     print("GSD station and master from one GSD: data exchange, I/O both ways: ok")
 finally:
     if master is not None:
-        master.send_signal(signal.SIGINT)
-        out, err = master.communicate(timeout=20)
-        print(err, end="")
-        assert master.returncode == 0, (master.returncode, out, err)
+        out = stop_ok(master, signal.SIGINT)
         assert "GSD slave 5: end: DP DataExchange" in out, out
-    device.send_signal(signal.SIGTERM)
-    out, err = device.communicate(timeout=20)
-    print(err, end="")
-    assert device.returncode == 0, (device.returncode, err)
+    stop_ok(device)

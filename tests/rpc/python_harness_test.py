@@ -5,20 +5,16 @@ HealthCheckResponse{status = SERVING} is the fixed bytes 08 01) and server refle
 (ServerReflectionRequest{list_services = ""} is 3A 00; the answer names our services).
 Usage: python_harness_test.py RS4SIM REPO   (exit 77 = skipped: no python3-grpcio)"""
 import signal
-import subprocess
 import sys
 
-try:
-    import grpc
-except ImportError:
-    print("python3-grpcio is not installed: skipped")
-    sys.exit(77)
+from script_support import require_grpc, spawn, state_changes
+
+grpc = require_grpc()
 
 rs4sim, repo = sys.argv[1], sys.argv[2]
 from rs4sim import Rs4, error_details  # noqa: E402
 
-proc = subprocess.Popen([rs4sim, "run", "--link", "memory", "--grpc", "127.0.0.1:0"],
-                        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+proc = spawn(rs4sim, "run", "--link", "memory", "--grpc", "127.0.0.1:0")
 try:
     line = proc.stdout.readline()
     assert line.startswith("grpc: listening on 127.0.0.1:"), line
@@ -66,14 +62,8 @@ try:
     rs4.advance(1)  # `run` acknowledges (ACK_REI) by itself
     assert rs4.plc().input.ossd and rs4.plc().fhost_state == "run", rs4.plc()
 
-    ossd = []
-    for event in events:
-        if event.HasField("state") and event.state.what == "ossd":
-            ossd.append((getattr(event.state, "from"), event.state.to))
-            if len(ossd) == 4:
-                break
+    ossd = state_changes(events, "ossd", 4)
     assert ossd == [("", "off"), ("off", "on"), ("on", "off"), ("off", "on")], ossd
-    events.cancel()
 
     telegrams = rs4.events(telegrams=True)
     rs4.advance(0.1)

@@ -10,11 +10,9 @@ Usage: python_line_memory_test.py RS4SIM REPO   (exit 77 = skipped: no python3-g
 import sys
 import warnings
 
-try:
-    import grpc
-except ImportError:
-    print("python3-grpcio is not installed: skipped")
-    sys.exit(77)
+from script_support import require_grpc, with_crc
+
+grpc = require_grpc()
 
 rs4sim, repo = sys.argv[1], sys.argv[2]
 from rs4sim import GridScan, Metron, Polaris, error_details  # noqa: E402
@@ -98,15 +96,6 @@ def seal(seq, ident, payload):
     return b"CEDE" + body + crc32_mpeg2(body)
 
 
-def crc16(frame):
-    crc = 0xFFFF
-    for b in frame:
-        crc ^= b
-        for _ in range(8):
-            crc = (crc >> 1) ^ 0xA001 if crc & 1 else crc >> 1
-    return bytes(frame) + bytes([crc & 0xFF, crc >> 8])
-
-
 def polaris():
     proc = Rs4simProcess(["run", "--device", "polaris", "--link", "memory", "--model", "PL10",
                           "--beams", "40", "--mode", "FL1", "--address", "1",
@@ -115,14 +104,14 @@ def polaris():
     try:
         with Polaris(proc.address, 1) as p:
             request = bytes([0x01, 0x03, 0x20, 0x00, 0x00, 0x02, 0xCF, 0xCB])
-            check(crc16(request[:-2]) == request, "the request's CRC")
+            check(with_crc(request[:-2]) == request, "the request's CRC")
             x = p.exchange(request)
             check(x.answered, "answered")
             check(x.reply == bytes([0x01, 0x03, 0x04, 0x00, 0x09, 0x00, 0x22, 0xAA, 0x28]),
                   f"P7 {x.reply.hex()}")
             check(x.arrived_ns - x.sent_ns == wire_ns(8, 10, 19200), "request wire time")
             # A broadcast is never answered: the clock runs the timeout.
-            x = p.exchange(crc16([0x00, 0x03, 0x20, 0x00, 0x00, 0x02]), timeout_ms=50)
+            x = p.exchange(with_crc([0x00, 0x03, 0x20, 0x00, 0x00, 0x02]), timeout_ms=50)
             check(not x.answered and x.now_ns - x.sent_ns == 50_000_000, f"broadcast {x}")
             before = p.now_ns()
             check(p.advance(250) == before + 250_000_000, "SimTime.Advance")

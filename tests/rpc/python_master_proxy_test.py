@@ -11,66 +11,31 @@ Usage: python_master_proxy_test.py RS4SIM REPO   (exit 77 = skipped: no python3-
 import json
 import os
 import signal
-import socket
 import subprocess
 import sys
 import tempfile
 
-try:
-    import grpc
-except ImportError:
-    print("python3-grpcio is not installed: skipped")
-    sys.exit(77)
+from script_support import expect_error, first_lines, free_udp_port, require_grpc, spawn, stop
+
+require_grpc()
 
 rs4sim, repo = sys.argv[1], sys.argv[2]
 # Imported before the processes start: loading grpc and the stubs takes a moment.
-from rs4sim import Master, Rs4, archive_pb, error_details  # noqa: E402
-
-
-def free_udp_port():
-    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
-def first_lines(proc, *prefixes):
-    """The values of the first stdout lines that start with each prefix, in any order."""
-    found = {}
-    while len(found) < len(prefixes):
-        line = proc.stdout.readline()
-        assert line, f"rs4sim printed no {set(prefixes) - set(found)} line"
-        for p in prefixes:
-            if line.startswith(p):
-                found[p] = line[len(p):].strip()
-    return [found[p] for p in prefixes]
-
-
-def expect_error(call, code, field=None):
-    try:
-        call()
-    except grpc.RpcError as e:
-        name, violations, _ = error_details(e)
-        assert name == code, (name, e.details())
-        if field is not None:
-            assert violations and violations[0][0] == field, violations
-        return e.details()
-    raise AssertionError(f"no {code}")
+from rs4sim import Master, Rs4, archive_pb  # noqa: E402
 
 
 work = tempfile.mkdtemp(prefix="rs4sim_master_grpc_")
 archive = os.path.join(work, "archive.sqlite3")
 a, b = free_udp_port(), free_udp_port()
 # A boot of 3 s: the stream is subscribed before the RS4 asks for its sync.
-device = subprocess.Popen([rs4sim, "run", "--device", "rs4", "--address", "4", "--link", "udp",
-                           "--listen", f"127.0.0.1:{a}", "--peer", f"127.0.0.1:{b}",
-                           "--boot-time", "3000", "--duration", "60", "--rs232", "pty",
-                           "--pc-adapter", "detached", "--grpc", "127.0.0.1:0"],
-                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-master = subprocess.Popen([rs4sim, "master", "--slave", "4", "--link", "udp",
-                           "--listen", f"127.0.0.1:{b}", "--peer", f"127.0.0.1:{a}",
-                           "--f-wd-time", "500", "--dp-watchdog", "1000", "--archive", archive,
-                           "--grpc", "127.0.0.1:0"],
-                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+device = spawn(rs4sim, "run", "--device", "rs4", "--address", "4", "--link", "udp",
+               "--listen", f"127.0.0.1:{a}", "--peer", f"127.0.0.1:{b}",
+               "--boot-time", "3000", "--duration", "60", "--rs232", "pty",
+               "--pc-adapter", "detached", "--grpc", "127.0.0.1:0")
+master = spawn(rs4sim, "master", "--slave", "4", "--link", "udp",
+               "--listen", f"127.0.0.1:{b}", "--peer", f"127.0.0.1:{a}",
+               "--f-wd-time", "500", "--dp-watchdog", "1000", "--archive", archive,
+               "--grpc", "127.0.0.1:0")
 try:
     rs232, device_api = first_lines(device, "rs232: ", "grpc: listening on ")
     (master_api,) = first_lines(master, "grpc: listening on ")
@@ -137,8 +102,6 @@ try:
     print(f"ok: first sync {' → '.join(dict.fromkeys(steps))}; "
           f"upload of {total} bytes seen at {len(set(done))} points")
 finally:
-    master.send_signal(signal.SIGINT)
-    out, err = master.communicate(timeout=20)
-    device.send_signal(signal.SIGTERM)
-    device.communicate(timeout=20)
-    assert master.returncode == 0, (master.returncode, err)
+    code, out, err = stop(master, signal.SIGINT)
+    stop(device)
+    assert code == 0, (code, err)

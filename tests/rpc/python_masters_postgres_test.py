@@ -17,16 +17,13 @@ Usage: python_masters_postgres_test.py RS4SIM REPO
 import json
 import os
 import signal
-import socket
 import subprocess
 import sys
 import threading
 
-try:
-    import grpc  # noqa: F401
-except ImportError:
-    print("python3-grpcio is not installed: skipped")
-    sys.exit(77)
+from script_support import first_line, free_udp_port, require_grpc, spawn, stop
+
+require_grpc()
 
 rs4sim, repo = sys.argv[1], sys.argv[2]
 from rs4sim import Master, Rs4  # noqa: E402
@@ -46,26 +43,6 @@ def psql(uri, sql):
                           text=True).stdout.strip()
 
 
-def free_udp_port():
-    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
-def first_line(proc, prefix):
-    while True:
-        line = proc.stdout.readline()
-        assert line, f"rs4sim printed no {prefix!r} line: {proc.stderr.read() if proc.poll() is not None else ''}"
-        if line.startswith(prefix):
-            return line[len(prefix):].strip()
-
-
-def stop(proc, sig=signal.SIGTERM):
-    proc.send_signal(sig)
-    out, err = proc.communicate(timeout=30)
-    return proc.returncode, out, err
-
-
 LINES = ["line1", "line2", "line3"]
 ports = {bus: (free_udp_port(), free_udp_port()) for bus in LINES}
 serials = {"line1": 1001, "line2": 2002, "line3": 3003}
@@ -74,21 +51,19 @@ new_serials = {"line1": 1101, "line2": 2102, "line3": 3103}
 
 def start_rs4(bus):
     a, b = ports[bus]
-    return subprocess.Popen([rs4sim, "run", "--device", "rs4", "--address", "4",
-                             "--serial-number", str(serials[bus]), "--link", "udp",
-                             "--listen", f"127.0.0.1:{a}", "--peer", f"127.0.0.1:{b}",
-                             "--boot-time", "2000", "--duration", "150", "--grpc", "127.0.0.1:0"],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    return spawn(rs4sim, "run", "--device", "rs4", "--address", "4",
+                 "--serial-number", str(serials[bus]), "--link", "udp",
+                 "--listen", f"127.0.0.1:{a}", "--peer", f"127.0.0.1:{b}",
+                 "--boot-time", "2000", "--duration", "150", "--grpc", "127.0.0.1:0")
 
 
 def start_master(bus, user):
     a, b = ports[bus]
-    return subprocess.Popen([rs4sim, "master", "--slave", "4", "--link", "udp",
-                             "--listen", f"127.0.0.1:{b}", "--peer", f"127.0.0.1:{a}",
-                             "--f-wd-time", "500", "--dp-watchdog", "1000", "--archive", archive,
-                             "--bus", bus, "--site", "Hamburg", "--line", "L" + bus[-1],
-                             "--user", user, "--grpc", "127.0.0.1:0"],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    return spawn(rs4sim, "master", "--slave", "4", "--link", "udp",
+                 "--listen", f"127.0.0.1:{b}", "--peer", f"127.0.0.1:{a}",
+                 "--f-wd-time", "500", "--dp-watchdog", "1000", "--archive", archive,
+                 "--bus", bus, "--site", "Hamburg", "--line", "L" + bus[-1],
+                 "--user", user, "--grpc", "127.0.0.1:0")
 
 
 def sync(m, action):
@@ -131,9 +106,8 @@ try:
         m[bus] = Master(first_line(masters[bus], "grpc: listening on "))
     # The masters have opened (and one of them created) the archive: a second workstation
     # watches it from the beginning.
-    watcher = subprocess.Popen([rs4sim, "archive", "watch", "--archive", archive, "--after", "0",
-                                "--count", "6", "--timeout", "120", "--json"],
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    watcher = spawn(rs4sim, "archive", "watch", "--archive", archive, "--after", "0",
+                    "--count", "6", "--timeout", "120", "--json")
 
     # 1. Commissioning on the three lines (the first sync each master sees end).
     at_once(lambda bus: sync(m[bus], lambda: None))
@@ -175,7 +149,7 @@ try:
     assert {v.user for v in streamed} == {"master-" + bus for bus in LINES}, streamed
 
     # 4. Failover on line1: its master ends, a second one takes over the same bus.
-    code, _, err = stop(masters["line1"], signal.SIGINT)
+    code, _, err = stop(masters["line1"], signal.SIGINT, timeout=30)
     assert code == 0, (code, err)
     logs_before = int(psql(archive, "SELECT count(*) FROM sync_log l JOIN stations s ON "
                                     "s.id = l.station_id WHERE s.bus = 'line1'"))

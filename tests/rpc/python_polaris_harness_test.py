@@ -6,62 +6,20 @@ server reflection lists the Polaris service.
 
 Known answers [Polaris manual §8.2]: a PL10 with 40 beams, slave 1, data block at 0x2000, one
 bit per beam, 1 = free, beam 1 in bit 0; beams 9-13 and 25-34 interrupted give the words
-0xE0FF (beams 1-16), 0x00FF (17-32), 0xFFFC (33-48, padded with 1s). The CRC is computed here
-by the rule of [Modbus serial line V1.02 §6.2.2].
+0xE0FF (beams 1-16), 0x00FF (17-32), 0xFFFC (33-48, padded with 1s). The CRC is computed by the
+tests' script_support.py, by the rule of [Modbus serial line V1.02 §6.2.2].
 Usage: python_polaris_harness_test.py RS4SIM REPO   (exit 77 = skipped: no python3-grpcio)"""
 import os
 import signal
-import subprocess
 import sys
-import termios
 
-try:
-    import grpc
-except ImportError:
-    print("python3-grpcio is not installed: skipped")
-    sys.exit(77)
+from script_support import (crc16, open_raw, pty_path, require_grpc, spawn, state_changes, transact,
+                            with_crc)
+
+grpc = require_grpc()
 
 rs4sim, repo = sys.argv[1], sys.argv[2]
 from rs4sim import Polaris, error_details  # noqa: E402
-
-
-def crc16(frame):
-    """CRC-16/Modbus: init 0xFFFF, reflected polynomial 0xA001, sent low byte first."""
-    crc = 0xFFFF
-    for byte in frame:
-        crc ^= byte
-        for _ in range(8):
-            crc = (crc >> 1) ^ 0xA001 if crc & 1 else crc >> 1
-    return bytes([crc & 0xFF, crc >> 8])
-
-
-def with_crc(frame):
-    return bytes(frame) + crc16(frame)
-
-
-def open_raw(path):
-    fd = os.open(path, os.O_RDWR | os.O_NOCTTY)
-    attrs = termios.tcgetattr(fd)
-    attrs[0] = 0                                   # iflag: no translation
-    attrs[1] = 0                                   # oflag: raw output
-    attrs[2] = termios.CS8 | termios.CREAD | termios.CLOCAL
-    attrs[3] = 0                                   # lflag: no echo, not canonical
-    attrs[6][termios.VMIN] = 0
-    attrs[6][termios.VTIME] = 3                    # read() gives up after 0.3 s of silence
-    termios.tcsetattr(fd, termios.TCSANOW, attrs)
-    return fd
-
-
-def transact(fd, request):
-    """Sends a request and returns everything that arrives until the line stays quiet."""
-    termios.tcflush(fd, termios.TCIFLUSH)
-    os.write(fd, request)
-    out = b""
-    while True:
-        chunk = os.read(fd, 256)
-        if not chunk:
-            return out
-        out += chunk
 
 
 READ = with_crc([0x01, 0x03, 0x20, 0x00, 0x00, 0x03])  # FC 03, 0x2000, 3 words
@@ -69,12 +27,10 @@ ANSWER = with_crc([0x01, 0x03, 0x06, 0xE0, 0xFF, 0x00, 0xFF, 0xFF, 0xFC])
 FREE = with_crc([0x01, 0x03, 0x06, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF])
 BLOCKED = list(range(9, 14)) + list(range(25, 35))
 
-proc = subprocess.Popen([rs4sim, "run", "--device", "polaris", "--link", "pty", "--model", "PL10",
-                         "--beams", "40", "--address", "1", "--grpc", "127.0.0.1:0"],
-                        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+proc = spawn(rs4sim, "run", "--device", "polaris", "--link", "pty", "--model", "PL10",
+             "--beams", "40", "--address", "1", "--grpc", "127.0.0.1:0")
 try:
-    tty = proc.stdout.readline().strip()  # byte devices: the pty path first ...
-    assert tty.startswith("/dev/"), tty
+    tty = pty_path(proc)  # byte devices: the pty path first ...
     line = proc.stdout.readline()         # ... then the API
     assert line.startswith("grpc: listening on 127.0.0.1:"), line
     polaris = Polaris(line.split()[-1], 1)
@@ -93,14 +49,8 @@ try:
     assert state.last_frame.frame == ANSWER, state.last_frame.frame.hex()
     assert state.counters.requests == 2, state.counters
 
-    pn1 = []
-    for event in events:
-        if event.HasField("state") and event.state.what == "pn1":
-            pn1.append((getattr(event.state, "from"), event.state.to))
-            if len(pn1) == 2:
-                break
+    pn1 = state_changes(events, "pn1", 2)
     assert pn1 == [("", "off"), ("off", "on")], pn1
-    events.cancel()
 
     polaris.inject_fault("BAD_CRC")
     got = transact(fd, READ)

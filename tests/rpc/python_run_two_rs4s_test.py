@@ -12,35 +12,13 @@ import sys
 import tempfile
 import time
 
-try:
-    import grpc
-except ImportError:
-    print("python3-grpcio is not installed: skipped")
-    sys.exit(77)
+from script_support import (first_lines, pty_path, require_grpc, spawn, state_changes, stop_ok,
+                            wait_for)
+
+grpc = require_grpc()
 
 rs4sim, repo = sys.argv[1], sys.argv[2]
 from rs4sim import Rs4, error_details, pb  # noqa: E402
-
-
-def first_lines(proc, *prefixes):
-    """The values of the first stdout lines that start with each prefix, in any order."""
-    found = {}
-    while len(found) < len(prefixes):
-        line = proc.stdout.readline()
-        assert line, f"rs4sim printed no {set(prefixes) - set(found)} line"
-        for p in prefixes:
-            if line.startswith(p):
-                found[p] = line[len(p):].strip()
-    return [found[p] for p in prefixes]
-
-
-def wait_for(what, condition, timeout_s):
-    end = time.monotonic() + timeout_s
-    while time.monotonic() < end:
-        if condition():
-            return
-        time.sleep(0.05)
-    raise AssertionError(f"timed out waiting for {what}")
 
 
 def stations_of(frame):
@@ -53,13 +31,11 @@ def stations_of(frame):
 
 
 work = tempfile.mkdtemp(prefix="rs4sim_two_rs4s_")
-device = subprocess.Popen([rs4sim, "run", "--address", "4", "--address", "5", "--link", "pty",
-                           "--boot-time", "1000", "--duration", "60", "--grpc", "127.0.0.1:0"],
-                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+device = spawn(rs4sim, "run", "--address", "4", "--address", "5", "--link", "pty",
+               "--boot-time", "1000", "--duration", "60", "--grpc", "127.0.0.1:0")
 master = None
 try:
-    path = device.stdout.readline().strip()
-    assert path.startswith("/dev/"), path
+    path = pty_path(device)
     (api,) = first_lines(device, "grpc: listening on ")
     master = subprocess.Popen([rs4sim, "master", "--slave", "4", "--slave", "5", "--link",
                                "serial", "--port", path, "--f-wd-time", "500", "--dp-watchdog",
@@ -113,17 +89,7 @@ try:
     four = rs4.state()
     assert four.ossd and four.input.ossd and not four.input.protective_field_violated, four
 
-    def ossd_changes(stream, n):
-        out = []
-        for event in stream:
-            if event.HasField("state") and event.state.what == "ossd":
-                out.append((event.address, getattr(event.state, "from"), event.state.to))
-                if len(out) == n:
-                    break
-        stream.cancel()
-        return out
-
-    assert ossd_changes(events5, 2) == [(5, "", "on"), (5, "on", "off")]
+    assert state_changes(events5, "ossd", 2, address=True) == [(5, "", "on"), (5, "on", "off")]
     events4.cancel()
 
     try:
@@ -137,9 +103,6 @@ finally:
     if master is not None:
         master.send_signal(signal.SIGINT)
         master.communicate(timeout=20)
-    device.send_signal(signal.SIGTERM)
-    out, err = device.communicate(timeout=20)
-    print(err, end="")
-    assert device.returncode == 0, (device.returncode, err)
+    out = stop_ok(device)
     assert "rs4 4: " in out and "rs4 5: " in out, out
     assert "turnaround 4: " in out and "turnaround 5: " in out, out

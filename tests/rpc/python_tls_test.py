@@ -14,11 +14,9 @@ import sys
 import urllib.error
 import urllib.request
 
-try:
-    import grpc
-except ImportError:
-    print("python3-grpcio is not installed: skipped")
-    sys.exit(77)
+from script_support import require_grpc
+
+grpc = require_grpc()
 
 rs4sim, repo = sys.argv[1], sys.argv[2]
 from rs4sim import Polaris, Rs4, open_channel  # noqa: E402

@@ -6,11 +6,9 @@ import re
 import subprocess
 import sys
 
-try:
-    import grpc  # noqa: F401
-except ImportError:
-    print("python3-grpcio is not installed: skipped")
-    sys.exit(77)
+from script_support import require_grpc
+
+require_grpc()
 
 rs4sim, repo = sys.argv[1], sys.argv[2]
 readme = open(os.path.join(repo, "README.md"), encoding="utf-8").read()

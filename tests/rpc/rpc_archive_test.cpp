@@ -1,16 +1,18 @@
 // The Archive service on a real gRPC server on loopback in front of a real SQLite archive.
 // Known answers: the factory set's pair 2 protective field is 1500 mm (docs/rs4-scanner.md),
 // so raising segments 100..140 to 1850 mm is "+350 mm" on exactly that range.
-#include "http_front.h"
 #include "google/rpc/error_details.pb.h"
 #include "google/rpc/status.pb.h"
+#include "http_front.h"
 #include "rpc/archive_service.h"
 #include "rpc/server.h"
+#include "rpc_calls.h"
 #include "rs4/report/field_svg.h"
 #include "rs4/scanner/parameter_codec.h"
 #include "rs4sim/v1/archive_service.grpc.pb.h"
 #include "storage/crc32.h"
 #include "storage/sqlite_archive.h"
+#include "test_loop.h"
 #include "tests/storage/archive_test_support.h"
 
 #include <boost/asio/executor_work_guard.hpp>
@@ -27,14 +29,14 @@ namespace {
 
 const storage::StationKey kStation{"default", 4};
 
-class RpcArchiveTest : public ::testing::Test {
+class RpcArchiveTest : public ::testing::Test, protected TestLoop {
  protected:
   void SetUp() override {
     archive_ = storage::SqliteArchive::open(dir_.file("archive.sqlite3")).value();
     service_ = std::make_unique<ArchiveService>(
         *archive_, executor_, [] { return storage::testing::at_ms(5000); },
         dir_.file("archive.sqlite3").string());
-    loop_ = std::thread([this] { io_.run(); });
+    start_loop();
     server_ =
         std::make_unique<RpcServer>(ServerOptions{}, std::vector<grpc::Service*>{service_.get()});
     stub_ = v1::Archive::NewStub(
@@ -42,8 +44,7 @@ class RpcArchiveTest : public ::testing::Test {
   }
   void TearDown() override {
     server_->shutdown();
-    work_.reset();
-    loop_.join();
+    stop_loop();
   }
   storage::VersionId store(const rs4::scanner::ParameterSet& set, std::int64_t at) {
     const auto blob = rs4::scanner::encode(set);
@@ -59,25 +60,10 @@ class RpcArchiveTest : public ::testing::Test {
 
   storage::testing::TempDir dir_;
   std::unique_ptr<storage::SqliteArchive> archive_;
-  boost::asio::io_context io_;
-  std::optional<boost::asio::executor_work_guard<boost::asio::io_context::executor_type>> work_{
-      io_.get_executor()};
-  AsioExecutor executor_{io_};
   std::unique_ptr<ArchiveService> service_;
-  std::thread loop_;
   std::unique_ptr<RpcServer> server_;
   std::unique_ptr<v1::Archive::Stub> stub_;
 };
-
-std::string bad_field(const grpc::Status& status) {
-  google::rpc::Status rich;
-  google::rpc::BadRequest bad;
-  if (!rich.ParseFromString(status.error_details()) || rich.details_size() != 1 ||
-      !rich.details(0).UnpackTo(&bad) || bad.field_violations_size() != 1) {
-    return "?";
-  }
-  return bad.field_violations(0).field();
-}
 
 // ListStations names the archive it shows (the master's page says which one); a PostgreSQL
 // server without its password.
@@ -323,7 +309,6 @@ TEST_F(RpcArchiveTest, WatchVersionsWithoutALocationIsRefused) {
   EXPECT_NE(status.error_message().find("no archive location"), std::string::npos);
   server.shutdown();
 }
-
 
 // The same service as JSON over HTTP (docs/http.md).
 TEST_F(RpcArchiveTest, JsonOverHttpIsTheSameService) {

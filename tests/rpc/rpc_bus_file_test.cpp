@@ -9,10 +9,12 @@
 #include "rpc/server.h"
 #include "rs4sim/v1/gsd.grpc.pb.h"
 #include "rs4sim/v1/rs4.grpc.pb.h"
+#include "test_loop.h"
 
 #include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/io_context.hpp>
 #include <gtest/gtest.h>
+
 #include <grpcpp/create_channel.h>
 #include <grpcpp/security/credentials.h>
 
@@ -25,7 +27,7 @@ namespace {
 
 using Bytes = std::vector<std::uint8_t>;
 
-class RpcBusFileTest : public ::testing::Test {
+class RpcBusFileTest : public ::testing::Test, protected rpc::TestLoop {
  protected:
   void SetUp() override {
     const DeviceEntry entry = bus_device_entry(
@@ -34,7 +36,7 @@ class RpcBusFileTest : public ::testing::Test {
     services_ = segment_->services(ServiceContext{executor_, io_, wall_});
     std::vector<grpc::Service*> raw;
     for (const auto& s : services_) raw.push_back(s.get());
-    loop_ = std::thread([this] { io_.run(); });
+    start_loop();
     server_ = std::make_unique<rpc::RpcServer>(rpc::ServerOptions{}, raw);
     const auto channel =
         grpc::CreateChannel(server_->address(), grpc::InsecureChannelCredentials());
@@ -45,8 +47,7 @@ class RpcBusFileTest : public ::testing::Test {
   }
   void TearDown() override {
     server_->shutdown();
-    work_.reset();
-    loop_.join();
+    stop_loop();
   }
   std::int64_t advance(std::uint64_t ms) {
     grpc::ClientContext ctx;
@@ -71,14 +72,9 @@ class RpcBusFileTest : public ::testing::Test {
     return observation_->GetState(&ctx, in, out);
   }
 
-  boost::asio::io_context io_;
-  std::optional<boost::asio::executor_work_guard<boost::asio::io_context::executor_type>> work_{
-      io_.get_executor()};
-  rpc::AsioExecutor executor_{io_};
   dp::RealClock wall_;
   std::unique_ptr<SimulatedSegment> segment_;
   ServiceList services_;
-  std::thread loop_;
   std::unique_ptr<rpc::RpcServer> server_;
   std::unique_ptr<v1::GsdStations::Stub> gsd_;
   std::unique_ptr<v1::Device::Stub> device_;

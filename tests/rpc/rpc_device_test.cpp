@@ -21,75 +21,59 @@ class RpcDeviceTest : public RpcRs4Test {
   v1::Empty empty_;
 
   grpc::Status set_power(std::uint32_t address, bool on) {
-    grpc::ClientContext ctx;
     v1::SetPowerRequest req;
     req.set_address(address);
     req.set_on(on);
-    return device_stub_->SetPower(&ctx, req, &empty_);
+    return unary(*device_stub_, &v1::Device::Stub::SetPower, req, empty_);
   }
   grpc::Status power_cycle(std::uint32_t address) {
-    grpc::ClientContext ctx;
-    v1::StationRequest req;
-    req.set_address(address);
-    return device_stub_->PowerCycle(&ctx, req, &empty_);
+    return unary(*device_stub_, &v1::Device::Stub::PowerCycle, station_request(address), empty_);
   }
   grpc::Status contour(std::uint32_t address, v1::Contour& out) {
-    grpc::ClientContext ctx;
-    v1::StationRequest req;
-    req.set_address(address);
-    return observation_stub_->GetContour(&ctx, req, &out);
+    return unary(*observation_stub_, &v1::Observation::Stub::GetContour, station_request(address),
+                 out);
   }
   grpc::Status clear_scene(std::uint32_t address) {
-    grpc::ClientContext ctx;
-    v1::StationRequest req;
-    req.set_address(address);
-    return device_stub_->ClearScene(&ctx, req, &empty_);
+    return unary(*device_stub_, &v1::Device::Stub::ClearScene, station_request(address), empty_);
   }
   grpc::Status pc_adapter(bool attached) {
-    grpc::ClientContext ctx;
     v1::SetPcAdapterRequest req;
     req.set_address(4);
     req.set_attached(attached);
-    return device_stub_->SetPcAdapter(&ctx, req, &empty_);
+    return unary(*device_stub_, &v1::Device::Stub::SetPcAdapter, req, empty_);
   }
   grpc::Status switches(std::uint32_t address, std::uint32_t high, std::uint32_t low) {
-    grpc::ClientContext ctx;
     v1::SetAddressSwitchesRequest req;
     req.set_address(address);
     req.set_high(high);
     req.set_low(low);
-    return device_stub_->SetAddressSwitches(&ctx, req, &empty_);
+    return unary(*device_stub_, &v1::Device::Stub::SetAddressSwitches, req, empty_);
   }
   grpc::Status fault(bool inject, v1::Fault which) {
-    grpc::ClientContext ctx;
     v1::FaultRequest req;
     req.set_address(4);
     req.set_fault(which);
-    return inject ? device_stub_->InjectFault(&ctx, req, &empty_)
-                  : device_stub_->ClearFault(&ctx, req, &empty_);
+    return inject ? unary(*device_stub_, &v1::Device::Stub::InjectFault, req, empty_)
+                  : unary(*device_stub_, &v1::Device::Stub::ClearFault, req, empty_);
   }
   grpc::Status exchange(std::uint32_t address, std::uint32_t serial) {
-    grpc::ClientContext ctx;
     v1::ExchangeScannerRequest req;
     req.set_address(address);
     req.set_serial_number(serial);
-    return device_stub_->ExchangeScanner(&ctx, req, &empty_);
+    return unary(*device_stub_, &v1::Device::Stub::ExchangeScanner, req, empty_);
   }
   v1::ParameterSetDocument parameter_set() {
-    grpc::ClientContext ctx;
-    v1::StationRequest req;
-    req.set_address(4);
     v1::ParameterSetDocument out;
-    const auto status = device_stub_->GetParameterSet(&ctx, req, &out);
+    const auto status =
+        unary(*device_stub_, &v1::Device::Stub::GetParameterSet, station_request(4), out);
     EXPECT_TRUE(status.ok()) << status.error_message();
     return out;
   }
   grpc::Status set_parameter_set(const std::string& json, v1::ParameterSetDocument& out) {
-    grpc::ClientContext ctx;
     v1::SetParameterSetRequest req;
     req.set_address(4);
     req.set_json(json);
-    return device_stub_->SetParameterSet(&ctx, req, &out);
+    return unary(*device_stub_, &v1::Device::Stub::SetParameterSet, req, out);
   }
   // The factory document, written by hand for rs4/param_doc's tests (docs/param.md), with
   // the unit's serial number: the only key a unit's factory set differs in.
@@ -235,14 +219,10 @@ TEST_F(RpcDeviceTest, AddressSwitchesTakeEffectAtTheNextPowerOn) {
 
 TEST_F(RpcDeviceTest, ClearedBusFaultsLetTheMasterReachTheStationAgain) {
   ASSERT_TRUE(run_until(v1::CONDITION_DATA_EXCHANGE, 10'000));
-  grpc::ClientContext ctx;
-  v1::BusFaultRequest drop;
-  drop.set_address(4);
-  drop.set_kind(v1::BUS_FAULT_KIND_DROP);
-  drop.set_direction(v1::DIRECTION_FROM_STATION);
-  drop.set_count(1'000'000);
+  const auto drop =
+      bus_fault_request(4, v1::BUS_FAULT_KIND_DROP, v1::DIRECTION_FROM_STATION, 1'000'000);
   v1::BusFaultResponse id;
-  ASSERT_TRUE(faults_stub_->InjectBusFault(&ctx, drop, &id).ok());
+  ASSERT_TRUE(unary(*faults_stub_, &v1::Faults::Stub::InjectBusFault, drop, id).ok());
   advance(1000);  // every reply lost: retries, then the master counts the slave as lost
   // (The slave still hears the master's requests: only the master's view changes.)
   EXPECT_FALSE(state().plc().data_exchange());

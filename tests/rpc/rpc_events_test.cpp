@@ -71,12 +71,8 @@ TEST_F(RpcEventsTest, SnapshotThenTheBootAndAViolationInOrder) {
   const auto to_ossd = read_until(*reader, "ossd", "on");
   EXPECT_EQ(to_ossd.back().from(), "off");
 
-  grpc::ClientContext c2;
-  v1::ViolateFieldRequest violate;
-  violate.set_address(4);
-  violate.set_field(v1::FIELD_KIND_PROTECTIVE);
   v1::AddObstacleResponse obstacle;
-  ASSERT_TRUE(device_stub_->ViolateField(&c2, violate, &obstacle).ok());
+  ASSERT_TRUE(violate_field(v1::FIELD_KIND_PROTECTIVE, obstacle).ok());
   ASSERT_TRUE(run_until(v1::CONDITION_OSSD_OFF, 500));
   const auto off = read_until(*reader, "ossd", "off");
   EXPECT_EQ(off.back().from(), "on");
@@ -96,14 +92,7 @@ TEST_F(RpcEventsTest, Led3FollowsTheRestartButton) {
   const auto snapshot = read_until(*reader, "led3", "off");
   ASSERT_FALSE(snapshot.empty());
   ASSERT_EQ(snapshot.back().from(), "");
-  const auto button = [&](bool pressed) {
-    grpc::ClientContext c;
-    v1::SetRestartButtonRequest r;
-    r.set_address(4);
-    r.set_pressed(pressed);
-    v1::Empty e;
-    ASSERT_TRUE(device_stub_->SetRestartButton(&c, r, &e).ok());
-  };
+  const auto button = [&](bool pressed) { ASSERT_TRUE(set_restart_button(pressed).ok()); };
   button(true);
   const auto red = read_until(*reader, "led3", "red");
   ASSERT_FALSE(red.empty());

@@ -4,14 +4,16 @@
 // tests/gsd/corpus/modular_dpv1.gsd: "DI 8" (Cfg 0x10: 1 input byte), "AI 2" (0x51: 2 input
 // words = 4 bytes), "DO 16 consistent" (0xA1: 2 output bytes) [IEC 61158-6-3 Chk_Cfg/Get_Cfg].
 #include "app/devices/gsd_segment.h"
-#include "app/devices/gsd_service.h"
 #include "google/rpc/error_details.pb.h"
 #include "google/rpc/status.pb.h"
 #include "http_front.h"
 #include "rpc/executor.h"
+#include "rpc/gsd_service.h"
 #include "rpc/server.h"
+#include "rpc_calls.h"
 #include "rs4sim/v1/gsd.grpc.pb.h"
 #include "rs4sim/v1/rs4.grpc.pb.h"
+#include "test_loop.h"
 
 #include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/io_context.hpp>
@@ -29,26 +31,13 @@ namespace {
 
 using namespace std::chrono_literals;
 using Bytes = std::vector<std::uint8_t>;
-
-std::string bad_field(const grpc::Status& status) {
-  google::rpc::Status rich;
-  if (!rich.ParseFromString(status.error_details()) || rich.details_size() != 1) return "?";
-  google::rpc::BadRequest bad;
-  if (!rich.details(0).UnpackTo(&bad) || bad.field_violations_size() != 1) return "?";
-  return bad.field_violations(0).field() + ": " + bad.field_violations(0).description();
-}
+using rpc::GsdServiceContext;
+using rpc::GsdStationsService;
+using rpc::precondition;
+// The BadRequest violation as "field: description".
+constexpr auto& bad_field = rpc::bad_field_described;
 
 std::string bytes(const Bytes& b) { return {b.begin(), b.end()}; }
-
-// "TYPE subject: description" of a FAILED_PRECONDITION's google.rpc.PreconditionFailure.
-std::string precondition(const grpc::Status& status) {
-  google::rpc::Status rich;
-  if (!rich.ParseFromString(status.error_details()) || rich.details_size() != 1) return "?";
-  google::rpc::PreconditionFailure failure;
-  if (!rich.details(0).UnpackTo(&failure) || failure.violations_size() != 1) return "?";
-  const auto& v = failure.violations(0);
-  return v.type() + " " + v.subject() + ": " + v.description();
-}
 
 // One telegram on the simulated bus as an observer saw it (dp::link::BusEvent, copied out).
 struct Seen {
@@ -59,7 +48,7 @@ struct Seen {
   dp::link::Fate fate = dp::link::Fate::kDelivered;
 };
 
-class RpcGsdTest : public ::testing::Test {
+class RpcGsdTest : public ::testing::Test, protected rpc::TestLoop {
  protected:
   void SetUp() override {
     std::vector<GsdStationSpec> specs;
@@ -68,7 +57,7 @@ class RpcGsdTest : public ::testing::Test {
     segment_ = std::make_unique<GsdSegment>(std::move(specs), "12M");
     service_ = std::make_unique<GsdStationsService>(GsdServiceContext{
         executor_, {segment_->stations().front().get()}, {}, segment_->bus()});
-    loop_ = std::thread([this] { io_.run(); });
+    start_loop();
     server_ = std::make_unique<rpc::RpcServer>(rpc::ServerOptions{},
                                                std::vector<grpc::Service*>{service_.get()});
     stub_ = v1::GsdStations::NewStub(
@@ -76,8 +65,7 @@ class RpcGsdTest : public ::testing::Test {
   }
   void TearDown() override {
     server_->shutdown();
-    work_.reset();
-    loop_.join();
+    stop_loop();
   }
   void run_for(dp::Duration d) {
     executor_.run([&] { segment_->run_for(d); });
@@ -88,6 +76,15 @@ class RpcGsdTest : public ::testing::Test {
       in = segment_->master().poll_state(5) == dp::master::PollState::kDataExchange;
     });
     return in;
+  }
+  // The inputs of the station at `address` as the master has them.
+  Bytes master_inputs(std::uint8_t address) {
+    Bytes inputs;
+    executor_.run([&] {
+      const auto in = segment_->master().inputs(address);
+      inputs.assign(in.begin(), in.end());
+    });
+    return inputs;
   }
   v1::GsdStation get(std::uint32_t address, grpc::Status* status = nullptr) {
     grpc::ClientContext ctx;
@@ -125,13 +122,8 @@ class RpcGsdTest : public ::testing::Test {
     return stub_->RaiseAlarm(&ctx, in, &out);
   }
 
-  boost::asio::io_context io_;
-  std::optional<boost::asio::executor_work_guard<boost::asio::io_context::executor_type>> work_{
-      io_.get_executor()};
-  rpc::AsioExecutor executor_{io_};
   std::unique_ptr<GsdSegment> segment_;
   std::unique_ptr<GsdStationsService> service_;
-  std::thread loop_;
   std::unique_ptr<rpc::RpcServer> server_;
   std::unique_ptr<v1::GsdStations::Stub> stub_;
 };
@@ -168,12 +160,7 @@ TEST_F(RpcGsdTest, InputsReachTheMasterAndItsOutputsTheStation) {
   ASSERT_TRUE(set_inputs(5, 0, {0xA5}).ok());
   executor_.run([&] { (void)segment_->master().set_outputs(5, Bytes{0xAB, 0xCD}); });
   run_for(100ms);
-  Bytes inputs;
-  executor_.run([&] {
-    const auto in = segment_->master().inputs(5);
-    inputs.assign(in.begin(), in.end());
-  });
-  EXPECT_EQ(inputs, (Bytes{0xA5, 0x11, 0x22, 0x33, 0x44}));
+  EXPECT_EQ(master_inputs(5), (Bytes{0xA5, 0x11, 0x22, 0x33, 0x44}));
   const auto s = get(5);
   EXPECT_EQ(s.modules(1).inputs(), bytes({0x11, 0x22, 0x33, 0x44}));
   EXPECT_EQ(s.modules(2).outputs(), bytes({0xAB, 0xCD}));
@@ -280,14 +267,9 @@ TEST_F(RpcGsdTest, BusFaultsByTheFaultsServiceRules) {
   ASSERT_EQ(before.bus.dropped, 0u);
   ASSERT_EQ(before.poll.retries, 0u);  // a clean bus: nothing repeated yet
 
-  grpc::ClientContext ctx;
-  v1::BusFaultRequest in;
-  in.set_address(5);
-  in.set_kind(v1::BUS_FAULT_KIND_DROP);
-  in.set_direction(v1::DIRECTION_FROM_STATION);
-  in.set_count(1);
+  auto in = rpc::bus_fault_request(5, v1::BUS_FAULT_KIND_DROP, v1::DIRECTION_FROM_STATION, 1);
   v1::BusFaultResponse out;
-  ASSERT_TRUE(stub_->InjectBusFault(&ctx, in, &out).ok());
+  ASSERT_TRUE(rpc::unary(*stub_, &v1::GsdStations::Stub::InjectBusFault, in, out).ok());
   EXPECT_NE(out.fault_id(), 0u);
   // The clock has not moved: nothing has been dropped yet.
   EXPECT_EQ(counts().bus.dropped, 0u);
@@ -359,11 +341,7 @@ TEST_F(RpcGsdTest, BusFaultsOnARealLinkAreRefused) {
   const std::string reason =
       "LINK bus faults: this run is on a real link; bus faults need the simulated bus "
       "(--link memory)";
-  v1::BusFaultRequest in;
-  in.set_address(5);
-  in.set_kind(v1::BUS_FAULT_KIND_DROP);
-  in.set_direction(v1::DIRECTION_FROM_STATION);
-  in.set_count(1);
+  auto in = rpc::bus_fault_request(5, v1::BUS_FAULT_KIND_DROP, v1::DIRECTION_FROM_STATION, 1);
   v1::BusFaultResponse out;
   {
     grpc::ClientContext ctx;
@@ -426,12 +404,7 @@ TEST_F(RpcGsdTest, JsonOverHttpIsTheSameService) {
           .status,
       200u);
   run_for(100ms);
-  Bytes inputs;
-  executor_.run([&] {
-    const auto in = segment_->master().inputs(5);
-    inputs.assign(in.begin(), in.end());
-  });
-  EXPECT_EQ(inputs, (Bytes{0xA5, 0x11, 0x22, 0x33, 0x44}));
+  EXPECT_EQ(master_inputs(5), (Bytes{0xA5, 0x11, 0x22, 0x33, 0x44}));
   a = h.call("rs4sim.v1.GsdStations/GetStation", R"({"address": 5})");
   ASSERT_EQ(a.status, 200u) << a.body;
   const auto s = rpc::from_json<v1::GsdStation>(a.body);

@@ -17,7 +17,9 @@
 #include "rpc/rs4_services.h"
 #include "rpc/server.h"
 #include "rpc/service_support.h"
+#include "rpc_calls.h"
 #include "rs4sim/v1/devices.grpc.pb.h"
+#include "test_loop.h"
 
 #include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/io_context.hpp>
@@ -46,17 +48,9 @@ std::int64_t wire_ns(int chars, int bits, int baud) {
   return (std::int64_t{chars} * bits * 1'000'000'000LL + baud - 1) / baud;
 }
 
-std::string bad_field(const grpc::Status& status) {
-  google::rpc::Status rich;
-  if (!rich.ParseFromString(status.error_details()) || rich.details_size() != 1) return "?";
-  google::rpc::BadRequest bad;
-  if (!rich.details(0).UnpackTo(&bad) || bad.field_violations_size() != 1) return "?";
-  return bad.field_violations(0).field();
-}
-
 // One device on its simulated line behind a real server, the loop on its own thread.
 template <class Device, class Service>
-class SimulatedRun {
+class SimulatedRun : protected TestLoop {
  public:
   SimulatedRun(Device& device, const std::string& kind, std::uint8_t address,
                std::unique_ptr<Watcher> watcher)
@@ -68,15 +62,14 @@ class SimulatedRun {
     tap_.set_hub(target_->events(), address);
     t0_ = clock_.now();
     line_.start();
-    loop_ = std::thread([this] { io_.run(); });
+    start_loop();
     server_ = std::make_unique<RpcServer>(ServerOptions{},
                                           std::vector<grpc::Service*>{&service_, &time_});
     channel_ = grpc::CreateChannel(server_->address(), grpc::InsecureChannelCredentials());
   }
   ~SimulatedRun() {
     server_->shutdown();
-    work_.reset();
-    loop_.join();
+    stop_loop();
   }
   SimulatedRun(const SimulatedRun&) = delete;
   SimulatedRun& operator=(const SimulatedRun&) = delete;
@@ -94,16 +87,11 @@ class SimulatedRun {
  private:
   stream::ManualClock clock_;
   stream::TimePoint t0_{};
-  boost::asio::io_context io_;
-  std::optional<boost::asio::executor_work_guard<boost::asio::io_context::executor_type>> work_{
-      io_.get_executor()};
-  AsioExecutor executor_{io_};
   TappedByteDevice tap_;
   SimulatedLine line_;
   std::unique_ptr<SimulatedLineTarget> target_;
   Service service_;
   SimTimeService time_;
-  std::thread loop_;
   std::unique_ptr<RpcServer> server_;
   std::shared_ptr<grpc::Channel> channel_;
 };

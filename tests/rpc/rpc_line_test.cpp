@@ -12,7 +12,9 @@
 #include "rpc/polaris_service.h"
 #include "rpc/rs4_services.h"
 #include "rpc/server.h"
+#include "rpc_calls.h"
 #include "rs4sim/v1/devices.grpc.pb.h"
+#include "test_loop.h"
 
 #include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/io_context.hpp>
@@ -39,20 +41,12 @@ namespace {
 using namespace std::chrono_literals;
 using Bytes = std::vector<std::uint8_t>;
 
-std::string bad_field(const grpc::Status& status) {
-  google::rpc::Status rich;
-  if (!rich.ParseFromString(status.error_details()) || rich.details_size() != 1) return "?";
-  google::rpc::BadRequest bad;
-  if (!rich.details(0).UnpackTo(&bad) || bad.field_violations_size() != 1) return "?";
-  return bad.field_violations(0).field();
-}
-
 std::vector<std::uint32_t> list(const google::protobuf::RepeatedField<std::uint32_t>& r) {
   return {r.begin(), r.end()};
 }
 
 // The loop, the manual clock, the event target and the server of one device.
-class LineFixture : public ::testing::Test {
+class LineFixture : public ::testing::Test, protected TestLoop {
  protected:
   // The event target first (the services take its hub), as the run builds them.
   void watch(const std::string& kind, std::unique_ptr<Watcher> watcher) {
@@ -61,7 +55,7 @@ class LineFixture : public ::testing::Test {
   // Starts the loop and serves `service` beside the device's Observation service.
   void serve(grpc::Service& service) {
     observation_ = std::make_unique<ObservationService>(RunContext{*target_, executor_});
-    loop_ = std::thread([this] { io_.run(); });
+    start_loop();
     server_ = std::make_unique<RpcServer>(
         ServerOptions{}, std::vector<grpc::Service*>{&service, observation_.get()});
     channel_ = grpc::CreateChannel(server_->address(), grpc::InsecureChannelCredentials());
@@ -70,8 +64,7 @@ class LineFixture : public ::testing::Test {
   void TearDown() override {
     if (server_) server_->shutdown();
     if (target_) executor_.run([this] { target_->stop(); });
-    work_.reset();
-    if (loop_.joinable()) loop_.join();
+    stop_loop();
   }
   // As a link: bytes at now, then the clock from deadline to deadline for `span`; returns
   // what the device sent meanwhile.
@@ -97,13 +90,51 @@ class LineFixture : public ::testing::Test {
   LineContext context(TappedByteDevice& tap, std::uint8_t address) {
     return {executor_, clock_, address, tap, target_->events()};
   }
+  // The device's events, its service at `address` and a stub of it, served.
+  template <class Service, class Grpc, class Device>
+  void start(const std::string& kind, std::unique_ptr<Watcher> watcher, std::uint8_t address,
+             Device& device, TappedByteDevice& tap, std::unique_ptr<Service>& service,
+             std::unique_ptr<typename Grpc::Stub>& stub) {
+    watch(kind, std::move(watcher));
+    service = std::make_unique<Service>(context(tap, address), device);
+    serve(*service);
+    stub = Grpc::NewStub(channel_);
+  }
+  // GetState of the device at `address` (the call is expected to succeed).
+  template <class State, class Stub>
+  static State state_of(Stub& stub, std::uint32_t address) {
+    v1::LineDeviceRequest req;
+    req.set_address(address);
+    State out;
+    const auto s = unary(stub, &Stub::GetState, req, out);
+    EXPECT_TRUE(s.ok()) << s.error_message();
+    return out;
+  }
+  // SetBlocked: these beams (elements) of the device at `address` interrupted.
+  template <class Stub>
+  static grpc::Status set_blocked(Stub& stub, const std::vector<std::uint32_t>& beams,
+                                  std::uint32_t address) {
+    v1::SetBlockedRequest req;
+    req.set_address(address);
+    for (const auto b : beams) req.add_blocked(b);
+    return unary(stub, &Stub::SetBlocked, req);
+  }
+  // A fault request: fault `f` of the device at `address`, `late_ms` for LATE.
+  template <class Request, class Fault>
+  static Request fault_request(std::uint32_t address, Fault f, std::uint32_t late_ms) {
+    Request req;
+    req.set_address(address);
+    req.set_fault(f);
+    req.set_late_ms(late_ms);
+    return req;
+  }
+  // InjectFault (`inject`) or ClearFault with `req`.
+  template <class Stub, class Request>
+  static grpc::Status inject_or_clear(Stub& stub, const Request& req, bool inject) {
+    return inject ? unary(stub, &Stub::InjectFault, req) : unary(stub, &Stub::ClearFault, req);
+  }
 
   stream::ManualClock clock_;
-  boost::asio::io_context io_;
-  std::optional<boost::asio::executor_work_guard<boost::asio::io_context::executor_type>> work_{
-      io_.get_executor()};
-  AsioExecutor executor_{io_};
-  std::thread loop_;
   std::unique_ptr<LineDeviceTarget> target_;
   std::unique_ptr<ObservationService> observation_;
   std::unique_ptr<RpcServer> server_;
@@ -119,36 +150,15 @@ class RpcPolarisTest : public LineFixture {
  protected:
   void SetUp() override {
     device_.on_time(clock_.now());  // (the loop does not run yet)
-    watch("polaris", polaris_watcher(1, device_));
-    service_ = std::make_unique<PolarisService>(context(tap_, 1), device_);
-    serve(*service_);
-    stub_ = v1::Polaris::NewStub(channel_);
+    start<PolarisService, v1::Polaris>("polaris", polaris_watcher(1, device_), 1, device_, tap_,
+                                       service_, stub_);
   }
-  v1::PolarisState state() {
-    grpc::ClientContext ctx;
-    v1::LineDeviceRequest req;
-    req.set_address(1);
-    v1::PolarisState out;
-    const auto s = stub_->GetState(&ctx, req, &out);
-    EXPECT_TRUE(s.ok()) << s.error_message();
-    return out;
-  }
+  v1::PolarisState state() { return state_of<v1::PolarisState>(*stub_, 1); }
   grpc::Status block(const std::vector<std::uint32_t>& beams, std::uint32_t address = 1) {
-    grpc::ClientContext ctx;
-    v1::SetBlockedRequest req;
-    req.set_address(address);
-    for (const auto b : beams) req.add_blocked(b);
-    v1::Empty e;
-    return stub_->SetBlocked(&ctx, req, &e);
+    return set_blocked(*stub_, beams, address);
   }
   grpc::Status fault(v1::PolarisFault f, bool inject, std::uint32_t late_ms = 0) {
-    grpc::ClientContext ctx;
-    v1::PolarisFaultRequest req;
-    req.set_address(1);
-    req.set_fault(f);
-    req.set_late_ms(late_ms);
-    v1::Empty e;
-    return inject ? stub_->InjectFault(&ctx, req, &e) : stub_->ClearFault(&ctx, req, &e);
+    return inject_or_clear(*stub_, fault_request<v1::PolarisFaultRequest>(1, f, late_ms), inject);
   }
 
   // PL10, 16 beams, 485MB, slave 1, data block at 0x2000 (the defaults).
@@ -301,11 +311,9 @@ TEST_F(RpcPolarisTest, BadInputGetsASpecificStatus) {
     EXPECT_EQ(stub_->GetState(&ctx, req, &out).error_code(), grpc::StatusCode::NOT_FOUND);
   }
   // The RS4's Observation.GetState on a Polaris run names the mistake.
-  grpc::ClientContext ctx;
-  v1::StationRequest req;
-  req.set_address(1);
   v1::DeviceState out;
-  const auto rs4 = observation_stub_->GetState(&ctx, req, &out);
+  const auto rs4 =
+      unary(*observation_stub_, &v1::Observation::Stub::GetState, station_request(1), out);
   EXPECT_EQ(rs4.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
   EXPECT_NE(rs4.error_message().find("polaris"), std::string::npos) << rs4.error_message();
 }
@@ -349,23 +357,14 @@ TEST_F(RpcPolarisTest, StateChangesReachTheSharedEventStream) {
 class RpcGridScanTest : public LineFixture {
  protected:
   void SetUp() override {
-    watch("gridscan", gridscan_watcher(0, device_));
-    service_ = std::make_unique<GridScanService>(context(tap_, 0), device_);
-    serve(*service_);
-    stub_ = v1::GridScan::NewStub(channel_);
+    start<GridScanService, v1::GridScan>("gridscan", gridscan_watcher(0, device_), 0, device_, tap_,
+                                         service_, stub_);
   }
   void power_up() {
     executor_.run([this] { device_.power_on(clock_.now()); });
     (void)exchange(tap_, {}, 2s);  // ready after at most 1.7 s [GridScan manual §11]
   }
-  v1::GridScanState state() {
-    grpc::ClientContext ctx;
-    v1::LineDeviceRequest req;
-    v1::GridScanState out;
-    const auto s = stub_->GetState(&ctx, req, &out);
-    EXPECT_TRUE(s.ok()) << s.error_message();
-    return out;
-  }
+  v1::GridScanState state() { return state_of<v1::GridScanState>(*stub_, 0); }
   grpc::Status door(std::uint32_t position) {
     grpc::ClientContext ctx;
     v1::SetDoorRequest req;
@@ -374,11 +373,7 @@ class RpcGridScanTest : public LineFixture {
     return stub_->SetDoor(&ctx, req, &e);
   }
   grpc::Status block(const std::vector<std::uint32_t>& elements) {
-    grpc::ClientContext ctx;
-    v1::SetBlockedRequest req;
-    for (const auto b : elements) req.add_blocked(b);
-    v1::Empty e;
-    return stub_->SetBlocked(&ctx, req, &e);
+    return set_blocked(*stub_, elements, 0);
   }
   grpc::Status soiling(std::uint32_t level) {
     grpc::ClientContext ctx;
@@ -389,13 +384,8 @@ class RpcGridScanTest : public LineFixture {
   }
   grpc::Status fault(v1::GridScanFault f, bool inject, std::uint32_t late_ms = 0,
                      std::uint32_t address = 0) {
-    grpc::ClientContext ctx;
-    v1::GridScanFaultRequest req;
-    req.set_address(address);
-    req.set_fault(f);
-    req.set_late_ms(late_ms);
-    v1::Empty e;
-    return inject ? stub_->InjectFault(&ctx, req, &e) : stub_->ClearFault(&ctx, req, &e);
+    return inject_or_clear(*stub_, fault_request<v1::GridScanFaultRequest>(address, f, late_ms),
+                           inject);
   }
 
   // 22 elements, blanking mode, door open.
@@ -599,10 +589,8 @@ TEST_F(RpcGridScanTest, BadInputGetsASpecificStatus) {
 class RpcMetronTest : public LineFixture {
  protected:
   void SetUp() override {
-    watch("metron", metron_watcher(5, device_));
-    service_ = std::make_unique<MetronService>(context(tap_, 5), device_);
-    serve(*service_);
-    stub_ = v1::Metron::NewStub(channel_);
+    start<MetronService, v1::Metron>("metron", metron_watcher(5, device_), 5, device_, tap_,
+                                     service_, stub_);
   }
   static metron::Options options() {
     metron::Options o;  // 24 beams, slave line mode
@@ -610,22 +598,9 @@ class RpcMetronTest : public LineFixture {
     o.node = 5;
     return o;
   }
-  v1::MetronState state() {
-    grpc::ClientContext ctx;
-    v1::LineDeviceRequest req;
-    req.set_address(5);
-    v1::MetronState out;
-    const auto s = stub_->GetState(&ctx, req, &out);
-    EXPECT_TRUE(s.ok()) << s.error_message();
-    return out;
-  }
+  v1::MetronState state() { return state_of<v1::MetronState>(*stub_, 5); }
   grpc::Status block(const std::vector<std::uint32_t>& beams, std::uint32_t address = 5) {
-    grpc::ClientContext ctx;
-    v1::SetBlockedRequest req;
-    req.set_address(address);
-    for (const auto b : beams) req.add_blocked(b);
-    v1::Empty e;
-    return stub_->SetBlocked(&ctx, req, &e);
+    return set_blocked(*stub_, beams, address);
   }
   grpc::Status synchronised(bool on) {
     grpc::ClientContext ctx;
@@ -638,14 +613,9 @@ class RpcMetronTest : public LineFixture {
   // `old_delay_ms`: the deprecated name of late_ms, as an older client sends it.
   grpc::Status fault(v1::MetronFault f, bool inject, std::uint32_t late_ms = 0,
                      std::uint32_t old_delay_ms = 0) {
-    grpc::ClientContext ctx;
-    v1::MetronFaultRequest req;
-    req.set_address(5);
-    req.set_fault(f);
-    req.set_late_ms(late_ms);
+    auto req = fault_request<v1::MetronFaultRequest>(5, f, late_ms);
     RS4SIM_DEPRECATED_FIELD(req.set_delay_ms(old_delay_ms));
-    v1::Empty e;
-    return inject ? stub_->InjectFault(&ctx, req, &e) : stub_->ClearFault(&ctx, req, &e);
+    return inject_or_clear(*stub_, req, inject);
   }
 
   metron::Device device_{options()};

@@ -10,6 +10,7 @@
 #include "rpc/server.h"
 #include "rs4_fixture.h"
 #include "rs4sim/v1/proxy_service.grpc.pb.h"
+#include "test_loop.h"
 
 #include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/io_context.hpp>
@@ -42,7 +43,7 @@ proxy::StationStatus uploading(std::uint8_t address, std::size_t done) {
   return s;
 }
 
-class RpcProxyTest : public ::testing::Test {
+class RpcProxyTest : public ::testing::Test, protected TestLoop {
  protected:
   void SetUp() override {
     statuses_ = {idle(4), idle(5)};
@@ -53,7 +54,7 @@ class RpcProxyTest : public ::testing::Test {
     source.queue = [this] { return queue_; };
     source.now_ns = [this] { return now_ns_; };
     service_ = std::make_unique<ProxyService>(std::move(source), feed_, executor_);
-    loop_ = std::thread([this] { io_.run(); });
+    start_loop();
     server_ =
         std::make_unique<RpcServer>(ServerOptions{}, std::vector<grpc::Service*>{service_.get()});
     stub_ = v1::Proxy::NewStub(
@@ -61,8 +62,7 @@ class RpcProxyTest : public ::testing::Test {
   }
   void TearDown() override {
     server_->shutdown();
-    work_.reset();
-    loop_.join();
+    stop_loop();
   }
   // On the loop thread, as the master's cycle does it: the new status, then publish.
   void change(const proxy::StationStatus& s, std::int64_t now_ns) {
@@ -93,12 +93,7 @@ class RpcProxyTest : public ::testing::Test {
   std::vector<std::uint8_t> queue_;
   std::int64_t now_ns_ = 1'000'000;
   ProxyFeed feed_;
-  boost::asio::io_context io_;
-  std::optional<boost::asio::executor_work_guard<boost::asio::io_context::executor_type>> work_{
-      io_.get_executor()};
-  AsioExecutor executor_{io_};
   std::unique_ptr<ProxyService> service_;
-  std::thread loop_;
   std::unique_ptr<RpcServer> server_;
   std::unique_ptr<v1::Proxy::Stub> stub_;
 };

@@ -49,23 +49,10 @@ TEST_F(RpcRs4Test, BootsInSimulatedTimeAndReportsTheState) {
 TEST_F(RpcRs4Test, ProtectiveFieldViolationAndRestart) {
   boot();
   v1::AddObstacleResponse obstacle;
-  {
-    grpc::ClientContext ctx;
-    v1::ViolateFieldRequest req;
-    req.set_address(4);
-    req.set_field(v1::FIELD_KIND_PROTECTIVE);
-    ASSERT_TRUE(device_stub_->ViolateField(&ctx, req, &obstacle).ok());
-  }
+  ASSERT_TRUE(violate_field(v1::FIELD_KIND_PROTECTIVE, obstacle).ok());
   ASSERT_TRUE(run_until(v1::CONDITION_OSSD_OFF, 1000));
   EXPECT_TRUE(state().input().protective_field_violated());
-  {
-    grpc::ClientContext ctx;
-    v1::RemoveObstacleRequest req;
-    req.set_address(4);
-    req.set_obstacle_id(obstacle.obstacle_id());
-    v1::Empty e;
-    ASSERT_TRUE(device_stub_->RemoveObstacle(&ctx, req, &e).ok());
-  }
+  ASSERT_TRUE(remove_obstacle(obstacle.obstacle_id()).ok());
   // Restart interlock: the field is free, but the OSSD stays off until a restart pulse.
   EXPECT_FALSE(run_until(v1::CONDITION_OSSD_ON, 1000));
   press_restart(300);
@@ -84,12 +71,7 @@ TEST_F(RpcRs4Test, TheScannersLedsAreInTheState) {
   EXPECT_FALSE(state().led3_red()) << "released again";
   EXPECT_FALSE(state().restart_button_held());
   const auto contaminate = [&](std::uint32_t percent) {
-    grpc::ClientContext ctx;
-    v1::SetContaminationRequest req;
-    req.set_address(4);
-    req.set_percent(percent);
-    v1::Empty e;
-    ASSERT_TRUE(device_stub_->SetContamination(&ctx, req, &e).ok());
+    ASSERT_TRUE(set_contamination(4, percent).ok());
     advance(40);
   };
   contaminate(49);
@@ -108,14 +90,7 @@ TEST_F(RpcRs4Test, TheScannersLedsAreInTheState) {
 // interlock, a 120 ms hold releases it. PressRestart while the button is held: FAILED_PRECONDITION.
 TEST_F(RpcRs4Test, RestartButtonHeldAndReleased) {
   boot();
-  const auto button = [&](bool pressed) {
-    grpc::ClientContext ctx;
-    v1::SetRestartButtonRequest req;
-    req.set_address(4);
-    req.set_pressed(pressed);
-    v1::Empty e;
-    return device_stub_->SetRestartButton(&ctx, req, &e);
-  };
+  const auto button = [&](bool pressed) { return set_restart_button(pressed); };
   ASSERT_TRUE(button(true).ok());
   advance(40);
   auto s = state();
@@ -143,22 +118,9 @@ TEST_F(RpcRs4Test, RestartButtonHeldAndReleased) {
   EXPECT_TRUE(run_until(v1::CONDITION_OSSD_ON, 200)) << "no interlock pending: on again";
 
   v1::AddObstacleResponse obstacle;
-  {
-    grpc::ClientContext ctx;
-    v1::ViolateFieldRequest req;
-    req.set_address(4);
-    req.set_field(v1::FIELD_KIND_PROTECTIVE);
-    ASSERT_TRUE(device_stub_->ViolateField(&ctx, req, &obstacle).ok());
-  }
+  ASSERT_TRUE(violate_field(v1::FIELD_KIND_PROTECTIVE, obstacle).ok());
   ASSERT_TRUE(run_until(v1::CONDITION_OSSD_OFF, 1000));
-  {
-    grpc::ClientContext ctx;
-    v1::RemoveObstacleRequest req;
-    req.set_address(4);
-    req.set_obstacle_id(obstacle.obstacle_id());
-    v1::Empty e;
-    ASSERT_TRUE(device_stub_->RemoveObstacle(&ctx, req, &e).ok());
-  }
+  ASSERT_TRUE(remove_obstacle(obstacle.obstacle_id()).ok());
   advance(200);
   ASSERT_FALSE(state().ossd()) << "restart interlock";
   ASSERT_TRUE(button(true).ok());
@@ -175,27 +137,17 @@ TEST_F(RpcRs4Test, RestartButtonHeldAndReleased) {
 TEST_F(RpcRs4Test, BadInputGetsASpecificStatus) {
   v1::Empty e;
   {
-    grpc::ClientContext ctx;
-    v1::SetContaminationRequest req;
-    req.set_address(9);
-    const auto s = device_stub_->SetContamination(&ctx, req, &e);
+    const auto s = set_contamination(9, 0);
     EXPECT_EQ(s.error_code(), grpc::StatusCode::NOT_FOUND);
     EXPECT_EQ(s.error_message(), "no RS4 at station 9 (stations: 4)");
   }
   {
-    grpc::ClientContext ctx;
-    v1::SetContaminationRequest req;
-    req.set_address(200);
-    const auto s = device_stub_->SetContamination(&ctx, req, &e);
+    const auto s = set_contamination(200, 0);
     EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
     EXPECT_EQ(bad_field(s), "address");
   }
   {
-    grpc::ClientContext ctx;
-    v1::SetContaminationRequest req;
-    req.set_address(4);
-    req.set_percent(101);
-    const auto s = device_stub_->SetContamination(&ctx, req, &e);
+    const auto s = set_contamination(4, 101);
     EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
     EXPECT_EQ(bad_field(s), "percent");
   }
@@ -240,11 +192,7 @@ TEST_F(RpcRs4Test, BadInputGetsASpecificStatus) {
   }
   {
     // Before the boot no field pair is active: the shortcut has nothing to violate.
-    grpc::ClientContext ctx;
-    v1::ViolateFieldRequest req;
-    req.set_address(4);
-    req.set_field(v1::FIELD_KIND_PROTECTIVE);
-    const auto s = device_stub_->ViolateField(&ctx, req, &id);
+    const auto s = violate_field(v1::FIELD_KIND_PROTECTIVE, id);
     EXPECT_EQ(s.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
     google::rpc::Status rich;
     ASSERT_TRUE(rich.ParseFromString(s.error_details()));
@@ -277,14 +225,7 @@ TEST_F(RpcRs4Test, SafetyFaultPassivatesTheHostAndSilenceDropsTheConnection) {
   };
   const auto before = passivations();
   v1::Empty e;
-  {
-    grpc::ClientContext ctx;
-    v1::SafetyFaultRequest req;
-    req.set_address(4);
-    req.set_fault(v1::SAFETY_FAULT_CORRUPT_CRC2);
-    req.set_count(1);
-    ASSERT_TRUE(faults_stub_->InjectSafetyFault(&ctx, req, &e).ok());
-  }
+  ASSERT_TRUE(inject_safety_fault(v1::SAFETY_FAULT_CORRUPT_CRC2, 1).ok());
   advance(200);
   EXPECT_EQ(passivations(), before + 1);  // a CRC2 error passivates [IEC 61784-3-3 CRC]
   {
@@ -297,14 +238,9 @@ TEST_F(RpcRs4Test, SafetyFaultPassivatesTheHostAndSilenceDropsTheConnection) {
   advance(2000);  // beyond the 200 ms DP watchdog of the segment's master
   EXPECT_FALSE(state().connected());
   {
-    grpc::ClientContext c2;
-    v1::BusFaultRequest req;
-    req.set_address(4);
-    req.set_kind(v1::BUS_FAULT_KIND_DELAY);
-    req.set_direction(v1::DIRECTION_TO_STATION);
-    req.set_count(1);
+    const auto req = bus_fault_request(4, v1::BUS_FAULT_KIND_DELAY, v1::DIRECTION_TO_STATION, 1);
     v1::BusFaultResponse r;
-    const auto s = faults_stub_->InjectBusFault(&c2, req, &r);
+    const auto s = unary(*faults_stub_, &v1::Faults::Stub::InjectBusFault, req, r);
     EXPECT_EQ(bad_field(s), "delay_ms");
   }
 }
@@ -323,13 +259,7 @@ TEST_F(RpcRs4Test, ThePlcSeesFailSafeValuesWhileTheFHostIsPassivated) {
   EXPECT_TRUE(plc.data_exchange());
   const auto passivations = plc.passivations();
   const auto safety_fault = [this](v1::SafetyFault fault, std::uint32_t count) {
-    grpc::ClientContext ctx;
-    v1::SafetyFaultRequest req;
-    req.set_address(4);
-    req.set_fault(fault);
-    req.set_count(count);
-    v1::Empty e;
-    ASSERT_TRUE(faults_stub_->InjectSafetyFault(&ctx, req, &e).ok());
+    ASSERT_TRUE(inject_safety_fault(fault, count).ok());
   };
   safety_fault(v1::SAFETY_FAULT_CORRUPT_CRC2, 1);
   advance(200);

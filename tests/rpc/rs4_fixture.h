@@ -7,7 +7,9 @@
 #include "rpc/rs4_services.h"
 #include "rpc/segment_target.h"
 #include "rpc/server.h"
+#include "rpc_calls.h"
 #include "rs4sim/v1/rs4.grpc.pb.h"
+#include "test_loop.h"
 
 #include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/io_context.hpp>
@@ -27,11 +29,11 @@ namespace rs4sim::rpc {
 
 using namespace std::chrono_literals;
 
-class RpcRs4Test : public ::testing::Test {
+class RpcRs4Test : public ::testing::Test, protected TestLoop {
  protected:
   void SetUp() override {
     segment_.power_on();
-    loop_ = std::thread([this] { io_.run(); });
+    start_loop();
     server_ = std::make_unique<RpcServer>(
         ServerOptions{}, std::vector<grpc::Service*>{&device_, &observation_, &time_, &faults_});
     channel_ = grpc::CreateChannel(server_->address(), grpc::InsecureChannelCredentials());
@@ -42,43 +44,68 @@ class RpcRs4Test : public ::testing::Test {
   }
   void TearDown() override {
     server_->shutdown();
-    work_.reset();
-    loop_.join();
+    stop_loop();
   }
 
   bool run_until(v1::Condition condition, std::uint64_t timeout_ms) {
-    grpc::ClientContext ctx;
     v1::RunUntilRequest req;
     req.set_address(4);
     req.set_condition(condition);
     req.set_timeout_ms(timeout_ms);
     v1::RunUntilResponse res;
-    const auto status = time_stub_->RunUntil(&ctx, req, &res);
+    const auto status = unary(*time_stub_, &v1::SimTime::Stub::RunUntil, req, res);
     EXPECT_TRUE(status.ok()) << status.error_message();
     return res.reached();
   }
   v1::DeviceState state() {
-    grpc::ClientContext ctx;
-    v1::StationRequest req;
-    req.set_address(4);
     v1::DeviceState out;
-    EXPECT_TRUE(observation_stub_->GetState(&ctx, req, &out).ok());
+    EXPECT_TRUE(
+        unary(*observation_stub_, &v1::Observation::Stub::GetState, station_request(4), out).ok());
     return out;
   }
   void advance(std::uint64_t ms) {
-    grpc::ClientContext ctx;
     v1::AdvanceRequest req;
     req.set_duration_ms(ms);
     v1::TimeResponse t;
-    ASSERT_TRUE(time_stub_->Advance(&ctx, req, &t).ok());
+    ASSERT_TRUE(unary(*time_stub_, &v1::SimTime::Stub::Advance, req, t).ok());
   }
   void press_restart(std::uint32_t ms) {
-    grpc::ClientContext ctx;
     v1::PressRestartRequest req;
     req.set_address(4);
     req.set_duration_ms(ms);
-    v1::Empty e;
-    ASSERT_TRUE(device_stub_->PressRestart(&ctx, req, &e).ok());
+    ASSERT_TRUE(unary(*device_stub_, &v1::Device::Stub::PressRestart, req).ok());
+  }
+  // Device.ViolateField at station 4: the obstacle it added in `obstacle`.
+  grpc::Status violate_field(v1::FieldKind field, v1::AddObstacleResponse& obstacle) {
+    v1::ViolateFieldRequest req;
+    req.set_address(4);
+    req.set_field(field);
+    return unary(*device_stub_, &v1::Device::Stub::ViolateField, req, obstacle);
+  }
+  grpc::Status set_contamination(std::uint32_t address, std::uint32_t percent) {
+    v1::SetContaminationRequest req;
+    req.set_address(address);
+    req.set_percent(percent);
+    return unary(*device_stub_, &v1::Device::Stub::SetContamination, req);
+  }
+  grpc::Status remove_obstacle(std::uint32_t id) {
+    v1::RemoveObstacleRequest req;
+    req.set_address(4);
+    req.set_obstacle_id(id);
+    return unary(*device_stub_, &v1::Device::Stub::RemoveObstacle, req);
+  }
+  grpc::Status set_restart_button(bool pressed) {
+    v1::SetRestartButtonRequest req;
+    req.set_address(4);
+    req.set_pressed(pressed);
+    return unary(*device_stub_, &v1::Device::Stub::SetRestartButton, req);
+  }
+  grpc::Status inject_safety_fault(v1::SafetyFault fault, std::uint32_t count) {
+    v1::SafetyFaultRequest req;
+    req.set_address(4);
+    req.set_fault(fault);
+    req.set_count(count);
+    return unary(*faults_stub_, &v1::Faults::Stub::InjectSafetyFault, req);
   }
   // Power-up with the factory start/restart interlock: the OSSD waits for a restart pulse
   // once the RS4 measures [RS4 manual §4.3].
@@ -91,12 +118,7 @@ class RpcRs4Test : public ::testing::Test {
   }
 
   rs4::device::Rs4Segment segment_{rs4::device::Rs4SegmentConfig{}};
-  boost::asio::io_context io_;
-  std::optional<boost::asio::executor_work_guard<boost::asio::io_context::executor_type>> work_{
-      io_.get_executor()};
-  std::thread loop_;
   SegmentTarget target_{segment_};
-  AsioExecutor executor_{io_};
   DeviceService device_{{target_, executor_}};
   ObservationService observation_{{target_, executor_}};
   SimTimeService time_{{target_, executor_}};
@@ -108,14 +130,5 @@ class RpcRs4Test : public ::testing::Test {
   std::unique_ptr<v1::SimTime::Stub> time_stub_;
   std::unique_ptr<v1::Faults::Stub> faults_stub_;
 };
-
-// The BadRequest field of an INVALID_ARGUMENT status.
-inline std::string bad_field(const grpc::Status& status) {
-  google::rpc::Status rich;
-  if (!rich.ParseFromString(status.error_details()) || rich.details_size() != 1) return "?";
-  google::rpc::BadRequest bad;
-  if (!rich.details(0).UnpackTo(&bad) || bad.field_violations_size() != 1) return "?";
-  return bad.field_violations(0).field();
-}
 
 }  // namespace rs4sim::rpc

@@ -6,8 +6,7 @@
 set -eu
 rs4sim=$1
 lua=$2
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
+. "$(dirname "$0")/../integration/lib.sh"  # $dir: a temporary directory, removed at the end
 fail() { echo "FAIL: $*"; exit 1; }
 
 header() { od -A n -t x1 -N 24 "$1" | tr -d ' \n'; }

@@ -8,8 +8,7 @@
 set -eu
 rs4sim=$1
 lua=$2
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
+. "$(dirname "$0")/../integration/lib.sh"  # $dir: a temporary directory, removed at the end
 fail() { echo "FAIL: $*"; exit 1; }
 
 # rs4sim's own capture of the GridScan's power-up on the simulated line: pcap nanosecond

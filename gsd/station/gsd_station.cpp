@@ -1,29 +1,12 @@
-#include "app/devices/gsd_station.h"
+#include "gsd/station/gsd_station.h"
 
-#include "app/runtime/usage_error.h"
-#include "app/runtime/whole_file.h"
-#include "dp/pdu/sap.h"
 #include "dp/pdu/set_prm.h"
-#include "dp/time/baud_rate.h"
 #include "gsd/dp_slave_config.h"
-#include "gsd/interp.h"
 
 #include <cstdio>
 
-namespace rs4sim::app {
+namespace rs4sim::gsd {
 namespace {
-
-std::string read_text(const std::string& path) {
-  auto file = read_whole_file(path);
-  if (!file) throw UsageError(path + ": cannot read the GSD file: " + file.error);
-  return std::move(file.bytes);
-}
-
-const gsd::BaudRate* find_rate(const GsdStationSpec& spec, const std::string& baud) {
-  const auto rate = dp::parse_baud_rate(baud);
-  if (!rate) throw UsageError("--baud " + baud + " is not a PROFIBUS rate");
-  return spec.device->find_baud(dp::bits_per_second(*rate));
-}
 
 std::string hex16(std::uint16_t v) {
   char b[8];
@@ -31,9 +14,17 @@ std::string hex16(std::uint16_t v) {
   return b;
 }
 
+Error set_prm_error(const GsdStationSpec& spec, GsdError code, std::string message) {
+  Error e;
+  e.code = code;
+  e.file = spec.file;
+  e.message = std::move(message);
+  return e;
+}
+
 }  // namespace
 
-bool defines_no_user_prm(const gsd::Device& device) {
+bool defines_no_user_prm(const Device& device) {
   if (device.user_prm.length != 0 || !device.params.empty()) return false;
   for (const auto& m : device.modules) {
     if (m.prm.length != 0 || m.f_prm) return false;
@@ -41,34 +32,22 @@ bool defines_no_user_prm(const gsd::Device& device) {
   return true;
 }
 
-std::string unchecked_user_prm_fault(const gsd::Device& device, std::size_t length) {
+std::string unchecked_user_prm_fault(const Device& device, std::size_t length) {
   if (!device.max_user_prm_data_len || length <= *device.max_user_prm_data_len) return {};
   return "User_Prm_Data is " + std::to_string(length) + " bytes, the GSD allows " +
          std::to_string(*device.max_user_prm_data_len) + " (Max_User_Prm_Data_Len)";
 }
 
-GsdStationSpec load_gsd_station(const std::string& path, const std::vector<std::string>& modules,
-                                int address, std::vector<std::string>* warnings) {
-  if (address < 0 || address > dp::pdu::sap::kMaxSlaveAddress) {
-    throw UsageError(path + ": address " + std::to_string(address) + " is outside 0.." +
-                     std::to_string(dp::pdu::sap::kMaxSlaveAddress) +
-                     " ([IEC 61158-4-3 addresses, SAPs])");
-  }
-  auto parsed = gsd::parse(read_text(path), path);
-  if (!parsed) throw UsageError(parsed.error().what());
+GsdStationSpec station_spec(std::string file, std::shared_ptr<const Device> device,
+                            SlaveSetup setup, std::uint8_t address) {
   GsdStationSpec spec;
-  spec.file = path;
-  spec.address = static_cast<std::uint8_t>(address);
-  spec.device = std::make_shared<const gsd::Device>(std::move(parsed).value());
-  if (warnings) {
-    for (const auto& w : spec.device->warnings) warnings->push_back(w.what());
-  }
-  auto setup = gsd::configure(*spec.device, {modules, {}});
-  if (!setup) throw UsageError(path + ": " + setup.error().what());
-  spec.setup = std::move(setup).value();
+  spec.file = std::move(file);
+  spec.address = address;
+  spec.device = std::move(device);
+  spec.setup = std::move(setup);
   GsdStationSpec::ModuleIo io;
   for (const auto& placed : spec.setup.slots) {
-    const gsd::Module* m = &spec.device->modules[placed.index];
+    const Module* m = &spec.device->modules[placed.index];
     io.name = m->name;
     io.input_len = m->input_len;
     io.output_len = m->output_len;
@@ -80,26 +59,9 @@ GsdStationSpec load_gsd_station(const std::string& path, const std::vector<std::
   return spec;
 }
 
-void check_gsd_baud(const GsdStationSpec& spec, const std::string& baud) {
-  const gsd::BaudRate* b = find_rate(spec, baud);
-  if (b && b->supported) return;
-  std::string list;
-  for (const auto& r : spec.device->baud_rates) {
-    if (r.supported) list += (list.empty() ? "" : ", ") + std::string(r.label);
-  }
-  throw UsageError(spec.file + ": the device does not support " + baud +
-                   " bit/s (its GSD: " + list + ")");
-}
-
-std::optional<std::uint16_t> gsd_max_tsdr(const GsdStationSpec& spec, const std::string& baud) {
-  const gsd::BaudRate* b = find_rate(spec, baud);
-  if (!b) return std::nullopt;
-  return b->max_tsdr;
-}
-
-dp::master::SlaveEntry gsd_master_entry(const GsdStationSpec& spec,
-                                        std::chrono::milliseconds watchdog) {
-  const gsd::SlaveSetup& c = spec.setup;
+Result<dp::master::SlaveEntry> master_entry(const GsdStationSpec& spec,
+                                            std::chrono::milliseconds watchdog) {
+  const SlaveSetup& c = spec.setup;
   dp::pdu::SetPrm fixed;
   fixed.station_status.lock_req = true;
   fixed.station_status.wd_on = true;
@@ -109,14 +71,18 @@ dp::master::SlaveEntry gsd_master_entry(const GsdStationSpec& spec,
   fixed.min_tsdr = 11;
   fixed.ident_number = c.ident_number;
   dp::fdl::DataUnit du;
-  if (!dp::pdu::encode_set_prm(fixed, du))
-    throw UsageError(spec.file + ": Set_Prm does not encode");
+  if (!dp::pdu::encode_set_prm(fixed, du)) {
+    return set_prm_error(spec, GsdError::kPrmTooLong, "Set_Prm does not encode");
+  }
   du.insert(du.end(), c.user_prm_data.begin(), c.user_prm_data.end());
   // A DPV1 slave reads bytes 7..9 as DPV1_Status ([IEC 61158-6-3 DPV1_Status]).
   auto prm =
       dp::pdu::decode_set_prm(std::span<const std::uint8_t>(du.data(), du.size()),
                               c.dpv1 ? dp::pdu::PrmLayout::kDpv1 : dp::pdu::PrmLayout::kDpv0);
-  if (!prm) throw UsageError(spec.file + ": Set_Prm does not decode: " + prm.error().message());
+  if (!prm) {
+    return set_prm_error(spec, GsdError::kBadValue,
+                         "Set_Prm does not decode: " + prm.error().message());
+  }
   dp::master::SlaveEntry m;
   m.address = spec.address;
   m.prm = prm.value();
@@ -147,7 +113,7 @@ dp::slave::PrmVerdict GsdApplication::check_parameters(const dp::pdu::SetPrm& pr
   if (defines_no_user_prm(*spec_.device)) {
     prm_fault_ = unchecked_user_prm_fault(*spec_.device, user_prm_.size());
   } else {
-    auto ok = gsd::check_user_prm(*spec_.device, spec_.setup, user_prm_);
+    auto ok = check_user_prm(*spec_.device, spec_.setup, user_prm_);
     prm_fault_ = ok ? std::string() : ok.error().message;
   }
   // Prm_Fault in Station_Status_1 when refused.
@@ -179,7 +145,7 @@ std::error_code GsdApplication::set_diagnosis(std::span<const std::uint8_t> bloc
 }
 
 dp::slave::Config GsdStation::slave_config(const GsdStationSpec& spec) {
-  return gsd::dp_slave_config(*spec.device, spec.address);
+  return dp_slave_config(*spec.device, spec.address);
 }
 
 GsdStation::GsdStation(GsdStationSpec spec)
@@ -204,4 +170,4 @@ std::string GsdStation::describe() const {
          hex16(spec_->device->ident_number) + ", modules " + modules + ", cfg " + cfg + ")";
 }
 
-}  // namespace rs4sim::app
+}  // namespace rs4sim::gsd

@@ -1,4 +1,4 @@
-#include "app/devices/gsd_service.h"
+#include "rpc/gsd_service.h"
 
 #include "dp/pdu/sap.h"
 #include "gsd/unit_diag.h"
@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <string>
 
-namespace rs4sim::app {
+namespace rs4sim::rpc {
 namespace {
 
 std::string hex_bytes(std::span<const std::uint8_t> bytes) {
@@ -24,16 +24,16 @@ std::string hex_bytes(std::span<const std::uint8_t> bytes) {
 }
 
 // The GSD's Unit_Diag texts of the diagnosis set, "; "-separated (empty: none).
-std::string diagnosis_text(const GsdStation& s) {
+std::string diagnosis_text(const gsd::GsdStation& s) {
   std::string out;
-  for (const auto& t : gsd::unit_diag_texts(s.spec().device->unit_diag,
-                                            s.application().diagnosis_blocks())) {
+  for (const auto& t :
+       gsd::unit_diag_texts(s.spec().device->unit_diag, s.application().diagnosis_blocks())) {
     out += (out.empty() ? "" : "; ") + t;
   }
   return out;
 }
 
-std::string station_list(const std::vector<GsdStation*>& stations) {
+std::string station_list(const std::vector<gsd::GsdStation*>& stations) {
   std::string s;
   for (const auto* st : stations) s += (s.empty() ? "" : ", ") + std::to_string(st->address());
   return s.empty() ? "none" : s;
@@ -55,7 +55,7 @@ constexpr AlarmKind kAlarms[] = {
     {v1::GSD_ALARM_TYPE_UPDATE, "update", "Update_Alarm_supp", &gsd::Dpv1Info::update_alarm},
 };
 
-void fill(const GsdStation& s, const GsdServiceContext& c, v1::GsdStation& out) {
+void fill(const gsd::GsdStation& s, const GsdServiceContext& c, v1::GsdStation& out) {
   const auto& spec = s.spec();
   out.set_address(s.address());
   out.set_file(spec.file);
@@ -93,7 +93,7 @@ void fill(const GsdStation& s, const GsdServiceContext& c, v1::GsdStation& out) 
     }
   }
   const dp::link::TurnaroundStats* timing = c.turnaround ? c.turnaround(s.address()) : nullptr;
-  if (timing != nullptr) rpc::fill_link_timing(*timing, c.slot_time_us, *out.mutable_link_timing());
+  if (timing != nullptr) fill_link_timing(*timing, c.slot_time_us, *out.mutable_link_timing());
 }
 
 std::span<const std::uint8_t> as_bytes(const std::string& s) {
@@ -102,9 +102,9 @@ std::span<const std::uint8_t> as_bytes(const std::string& s) {
 
 grpc::Status check_address(std::uint32_t address) {
   if (address > dp::pdu::sap::kMaxStationAddress) {
-    return rpc::invalid_argument("address", "station address " + std::to_string(address) +
-                                                " outside 0.." +
-                                                std::to_string(dp::pdu::sap::kMaxStationAddress));
+    return invalid_argument("address", "station address " + std::to_string(address) +
+                                           " outside 0.." +
+                                           std::to_string(dp::pdu::sap::kMaxStationAddress));
   }
   return grpc::Status::OK;
 }
@@ -122,8 +122,8 @@ grpc::Status GsdStationsService::on_station(std::uint32_t address, const Station
       if (changes && c_.changed) c_.changed();
       return;
     }
-    result = rpc::not_found("no GSD station at address " + std::to_string(address) +
-                            " (this run's GSD stations: " + station_list(c_.stations) + ")");
+    result = not_found("no GSD station at address " + std::to_string(address) +
+                       " (this run's GSD stations: " + station_list(c_.stations) + ")");
   });
   return result;
 }
@@ -140,7 +140,7 @@ grpc::Status GsdStationsService::GetStation(grpc::ServerContext*, const v1::Stat
                                             v1::GsdStation* out) {
   return on_station(
       in->address(),
-      [&](GsdStation& s) {
+      [&](gsd::GsdStation& s) {
         fill(s, c_, *out);
         return grpc::Status::OK;
       },
@@ -151,20 +151,20 @@ grpc::Status GsdStationsService::SetInputs(grpc::ServerContext*, const v1::SetGs
                                            v1::Empty*) {
   return on_station(
       in->address(),
-      [&](GsdStation& s) {
+      [&](gsd::GsdStation& s) {
         const auto& modules = s.spec().modules;
         if (in->slot() >= modules.size()) {
-          return rpc::invalid_argument(
-              "slot", "slot " + std::to_string(in->slot()) + " outside 0.." +
-                          std::to_string(modules.size() - 1) + " (the station's " +
-                          std::to_string(modules.size()) + " modules)");
+          return invalid_argument("slot", "slot " + std::to_string(in->slot()) + " outside 0.." +
+                                              std::to_string(modules.size() - 1) +
+                                              " (the station's " + std::to_string(modules.size()) +
+                                              " modules)");
         }
         const auto& m = modules[in->slot()];
         if (in->data().size() != m.input_len) {
-          return rpc::invalid_argument(
-              "data", std::to_string(in->data().size()) + " bytes; module \"" + m.name +
-                          "\" (slot " + std::to_string(in->slot()) + ") has " +
-                          std::to_string(m.input_len) + " input bytes");
+          return invalid_argument("data", std::to_string(in->data().size()) + " bytes; module \"" +
+                                              m.name + "\" (slot " + std::to_string(in->slot()) +
+                                              ") has " + std::to_string(m.input_len) +
+                                              " input bytes");
         }
         (void)s.application().set_inputs(in->slot(), as_bytes(in->data()));
         return grpc::Status::OK;
@@ -176,18 +176,18 @@ grpc::Status GsdStationsService::SetDiagnosis(grpc::ServerContext*,
                                               const v1::SetGsdDiagnosisRequest* in, v1::Empty*) {
   return on_station(
       in->address(),
-      [&](GsdStation& s) {
+      [&](gsd::GsdStation& s) {
         // The 6 standard bytes count towards Max_Diag_Data_Len ([PROFIBUS GSD spec]).
         const std::size_t max = s.spec().device->max_diag_data_len;
         if (6 + in->blocks().size() > max) {
-          return rpc::invalid_argument(
-              "blocks", std::to_string(in->blocks().size()) + " bytes; the GSD's Max_Diag_Data_Len " +
-                            std::to_string(max) + " leaves " +
-                            std::to_string(max > 6 ? max - 6 : 0) +
-                            " bytes after the 6 standard ones");
+          return invalid_argument("blocks", std::to_string(in->blocks().size()) +
+                                                " bytes; the GSD's Max_Diag_Data_Len " +
+                                                std::to_string(max) + " leaves " +
+                                                std::to_string(max > 6 ? max - 6 : 0) +
+                                                " bytes after the 6 standard ones");
         }
         if (auto e = s.application().set_diagnosis(as_bytes(in->blocks()), in->ext_diag())) {
-          return rpc::invalid_argument("blocks", "refused by the slave: " + e.message());
+          return invalid_argument("blocks", "refused by the slave: " + e.message());
         }
         return grpc::Status::OK;
       },
@@ -200,32 +200,32 @@ grpc::Status GsdStationsService::RaiseAlarm(grpc::ServerContext*,
   for (const auto& a : kAlarms) {
     if (a.type == in->type()) kind = &a;
   }
-  if (kind == nullptr) return rpc::invalid_argument("type", "a GSD_ALARM_TYPE_* value is required");
+  if (kind == nullptr) return invalid_argument("type", "a GSD_ALARM_TYPE_* value is required");
   if (in->slot() > 254) {
-    return rpc::invalid_argument("slot", std::to_string(in->slot()) + " outside 0..254");
+    return invalid_argument("slot", std::to_string(in->slot()) + " outside 0..254");
   }
   return on_station(
       in->address(),
-      [&](GsdStation& s) {
+      [&](gsd::GsdStation& s) {
         const auto& d = *s.spec().device;
         const std::string subject = "station " + std::to_string(s.address());
         if (!d.dpv1.slave) {
-          return rpc::failed_precondition("GSD", subject,
-                                          s.spec().file + " does not declare DPV1_Slave = 1: "
-                                                          "a DP-V0 slave has no alarms");
+          return failed_precondition("GSD", subject,
+                                     s.spec().file +
+                                         " does not declare DPV1_Slave = 1: "
+                                         "a DP-V0 slave has no alarms");
         }
         if (!(d.dpv1.*kind->declared)) {
-          return rpc::failed_precondition("GSD", subject,
-                                          s.spec().file + " does not declare " + kind->keyword +
-                                              " = 1: no " + kind->name + " alarm");
+          return failed_precondition("GSD", subject,
+                                     s.spec().file + " does not declare " + kind->keyword +
+                                         " = 1: no " + kind->name + " alarm");
         }
         if (auto e = s.application().raise_alarm(static_cast<std::uint8_t>(kind->type),
                                                  static_cast<std::uint8_t>(in->slot()),
                                                  as_bytes(in->user_data()))) {
-          return rpc::failed_precondition("STATE", subject,
-                                          "the slave cannot send it now: " + e.message() +
-                                              " (state " +
-                                              dp::slave::to_string(s.slave().state()) + ")");
+          return failed_precondition("STATE", subject,
+                                     "the slave cannot send it now: " + e.message() + " (state " +
+                                         dp::slave::to_string(s.slave().state()) + ")");
         }
         return grpc::Status::OK;
       },
@@ -236,22 +236,21 @@ grpc::Status GsdStationsService::SetOnline(grpc::ServerContext*, const v1::SetGs
                                            v1::Empty*) {
   return on_station(
       in->address(),
-      [&](GsdStation& s) {
+      [&](gsd::GsdStation& s) {
         s.set_online(in->online());
         return grpc::Status::OK;
       },
       true);
 }
 
-grpc::Status GsdStationsService::InjectBusFault(grpc::ServerContext*,
-                                                const v1::BusFaultRequest* in,
+grpc::Status GsdStationsService::InjectBusFault(grpc::ServerContext*, const v1::BusFaultRequest* in,
                                                 v1::BusFaultResponse* out) {
   dp::link::Fault fault;
-  if (auto bad = rpc::to_bus_fault(*in, fault); !bad.ok()) return bad;
+  if (auto bad = to_bus_fault(*in, fault); !bad.ok()) return bad;
   return on_station(
       in->address(),
-      [&](GsdStation&) {
-        if (c_.bus == nullptr) return rpc::needs_simulated_bus();
+      [&](gsd::GsdStation&) {
+        if (c_.bus == nullptr) return needs_simulated_bus();
         out->set_fault_id(c_.bus->inject(fault));
         return grpc::Status::OK;
       },
@@ -263,7 +262,7 @@ grpc::Status GsdStationsService::ClearBusFaults(grpc::ServerContext*, const v1::
   grpc::Status result;
   c_.executor.run([&] {
     if (c_.bus == nullptr) {
-      result = rpc::needs_simulated_bus();
+      result = needs_simulated_bus();
       return;
     }
     c_.bus->clear_faults();
@@ -271,17 +270,17 @@ grpc::Status GsdStationsService::ClearBusFaults(grpc::ServerContext*, const v1::
   return result;
 }
 
-std::unique_ptr<rpc::Watcher> gsd_watcher(const GsdStation& station) {
-  return std::make_unique<rpc::ItemsWatcher>(station.address(), [&station](dp::TimePoint) {
+std::unique_ptr<Watcher> gsd_watcher(const gsd::GsdStation& station) {
+  return std::make_unique<ItemsWatcher>(station.address(), [&station](dp::TimePoint) {
     const auto& a = station.application();
-    return rpc::ItemsWatcher::Items{{"dp-state", dp::slave::to_string(station.slave().state())},
-                                    {"online", station.online() ? "yes" : "no"},
-                                    {"inputs", hex_bytes(a.inputs())},
-                                    {"outputs", hex_bytes(a.outputs())},
-                                    {"ext-diag", a.ext_diag() ? "on" : "off"},
-                                    {"diagnosis", hex_bytes(a.diagnosis_blocks())},
-                                    {"diagnosis-text", diagnosis_text(station)}};
+    return ItemsWatcher::Items{{"dp-state", dp::slave::to_string(station.slave().state())},
+                               {"online", station.online() ? "yes" : "no"},
+                               {"inputs", hex_bytes(a.inputs())},
+                               {"outputs", hex_bytes(a.outputs())},
+                               {"ext-diag", a.ext_diag() ? "on" : "off"},
+                               {"diagnosis", hex_bytes(a.diagnosis_blocks())},
+                               {"diagnosis-text", diagnosis_text(station)}};
   });
 }
 
-}  // namespace rs4sim::app
+}  // namespace rs4sim::rpc

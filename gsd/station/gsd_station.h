@@ -1,6 +1,8 @@
 #pragma once
-// A DP slave described by its GSD ([PROFIBUS GSD spec]): `rs4sim run --device generic --gsd FILE
-// [--module NAME]...` and the stations of a bus file (app/devices/bus_file.h).
+// A DP slave described by its GSD ([PROFIBUS GSD spec]): the station of `rs4sim run --device
+// generic --gsd FILE [--module NAME]...`, of a bus file and beside `rs4sim master`. Sans-I/O
+// like its peers (dp/devices/generic_device.h): the edge reads the file and names the options
+// (app/devices/gsd_station_file.h), the harness API is rpc/gsd_service.h.
 //
 // What the GSD declares, the station does:
 //   * Ident_Number (Set_Prm with another one → Prm_Fault, [IEC 61158-6-3 Set_Prm]);
@@ -23,43 +25,39 @@
 #include "dp/master/master_config.h"
 #include "dp/slave/slave.h"
 #include "gsd/config.h"
+#include "gsd/error.h"
 #include "gsd/model.h"
 
+#include <chrono>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <system_error>
 #include <vector>
 
-namespace rs4sim::app {
+namespace rs4sim::gsd {
 
 // One GSD station as configured: the parsed file, the chosen modules, the address.
 struct GsdStationSpec {
   std::string file;  // as given (for messages and listings)
-  std::shared_ptr<const gsd::Device> device;
-  gsd::SlaveSetup setup;  // gsd::configure with the chosen modules, default parameters
+  std::shared_ptr<const Device> device;
+  SlaveSetup setup;  // gsd::configure with the chosen modules, default parameters
   std::uint8_t address = 126;
   struct ModuleIo {
     std::string name;
     std::size_t input_offset = 0, input_len = 0;
     std::size_t output_offset = 0, output_len = 0;
-    bool preset = false;  // placed by `Preset = 1` (gsd::place_modules)
+    bool preset = false;  // placed by `Preset = 1` (place_modules)
   };
   std::vector<ModuleIo> modules;  // slot order
 };
 
-// Parses `path` and configures `modules` (empty: a compact station's one module). Throws
-// UsageError (exit 2) with file:line and the reason: unreadable file, not a GSD, a syntax or
-// meaning error, an unknown module (the message lists the file's modules). `warnings` gets the
-// lines the parser skipped ("file:line: …").
-GsdStationSpec load_gsd_station(const std::string& path, const std::vector<std::string>& modules,
-                                int address, std::vector<std::string>* warnings = nullptr);
-
-// Throws UsageError when the GSD does not support `baud` ("1.5M"; the supported ones listed).
-void check_gsd_baud(const GsdStationSpec& spec, const std::string& baud);
-// MaxTsdr of the GSD at `baud` (Tbit), or nullopt when the file does not say.
-std::optional<std::uint16_t> gsd_max_tsdr(const GsdStationSpec& spec, const std::string& baud);
+// The spec of the station at `address` with `setup` (gsd::configure of `device`): the chosen
+// modules' I/O in slot order, each at its offset in the station's input and output images.
+GsdStationSpec station_spec(std::string file, std::shared_ptr<const Device> device,
+                            SlaveSetup setup, std::uint8_t address);
 
 // Whether the GSD defines no User_Prm_Data at all: no User_Prm_Data_Len, User_Prm_Data or
 // Ext_User_Prm_Data_* globally, none in any module, no F-parameters (a file cut down to its
@@ -68,13 +66,14 @@ std::optional<std::uint16_t> gsd_max_tsdr(const GsdStationSpec& spec, const std:
 // file was cut from did (docs/decisions.md#gsd-undefined-user-prm). The one bound it checks is
 // Max_User_Prm_Data_Len when the file gives it: unchecked_user_prm_fault says why a length is
 // refused (empty: accepted).
-bool defines_no_user_prm(const gsd::Device& device);
-std::string unchecked_user_prm_fault(const gsd::Device& device, std::size_t length);
+bool defines_no_user_prm(const Device& device);
+std::string unchecked_user_prm_fault(const Device& device, std::size_t length);
 
 // Our class 1 master's entry for the station, from the same GSD: Set_Prm (Lock_Req, WD_On, the
-// GSD's ident and User_Prm_Data), Chk_Cfg, image lengths, C1 timeout.
-dp::master::SlaveEntry gsd_master_entry(const GsdStationSpec& spec,
-                                        std::chrono::milliseconds watchdog);
+// GSD's ident and User_Prm_Data), Chk_Cfg, image lengths, C1 timeout. An error (the file
+// named) when the Set_Prm does not encode (kPrmTooLong) or decode (kBadValue).
+Result<dp::master::SlaveEntry> master_entry(const GsdStationSpec& spec,
+                                            std::chrono::milliseconds watchdog);
 
 class GsdApplication final : public dp::slave::SlaveApplication {
  public:
@@ -120,7 +119,7 @@ class GsdApplication final : public dp::slave::SlaveApplication {
   // Why the last Set_Prm was refused (empty: accepted or none yet).
   [[nodiscard]] const std::string& prm_fault() const { return prm_fault_; }
   [[nodiscard]] std::span<const std::uint8_t> user_prm_data() const { return user_prm_; }
-  // The harness API (app/devices/gsd_service.h): Ext_Diag and the device-related diagnosis
+  // The harness API (rpc/gsd_service.h): Ext_Diag and the device-related diagnosis
   // blocks (errors as SlaveControl::set_device_diagnosis), a DPV1 alarm (errors as
   // GenericDevice::raise_alarm).
   std::error_code set_diagnosis(std::span<const std::uint8_t> blocks, bool ext_diag);
@@ -185,4 +184,4 @@ class GsdStation final : public dp::Station {
   bool online_ = true;
 };
 
-}  // namespace rs4sim::app
+}  // namespace rs4sim::gsd

@@ -4,9 +4,9 @@
 // the gRPC thread (INVALID_ARGUMENT with the field), then runs on the loop through the
 // Executor; after a change `changed` runs there (the event hub looks at once).
 
-#include "app/devices/gsd_station.h"
 #include "dp/link/memory_bus.h"
 #include "dp/link/turnaround.h"
+#include "gsd/station/gsd_station.h"
 #include "rpc/device_watcher.h"
 #include "rpc/executor.h"
 #include "rs4sim/v1/gsd.grpc.pb.h"
@@ -17,11 +17,11 @@
 #include <optional>
 #include <vector>
 
-namespace rs4sim::app {
+namespace rs4sim::rpc {
 
 struct GsdServiceContext {
-  rpc::Executor& executor;
-  std::vector<GsdStation*> stations;  // distinct addresses
+  Executor& executor;
+  std::vector<gsd::GsdStation*> stations;  // distinct addresses
   // On the loop after a call changed a station (nullptr-safe: empty = nothing).
   std::function<void()> changed = {};
   // The simulated bus (--link memory) for bus faults; nullptr on a real link.
@@ -52,7 +52,7 @@ class GsdStationsService final : public v1::GsdStations::Service {
   grpc::Status ClearBusFaults(grpc::ServerContext*, const v1::Empty*, v1::Empty*) override;
 
  private:
-  using StationFn = std::function<grpc::Status(GsdStation&)>;
+  using StationFn = std::function<grpc::Status(gsd::GsdStation&)>;
   grpc::Status on_station(std::uint32_t address, const StationFn& fn, bool changes);
   GsdServiceContext c_;
 };
@@ -60,6 +60,6 @@ class GsdStationsService final : public v1::GsdStations::Service {
 // The event-stream watcher of a station (StateChange.what: "dp-state", "online", "inputs",
 // "outputs", "ext-diag", "diagnosis"; the bytes in hex; "diagnosis-text": the GSD's Unit_Diag
 // texts for it, "; "-separated).
-std::unique_ptr<rpc::Watcher> gsd_watcher(const GsdStation& station);
+std::unique_ptr<Watcher> gsd_watcher(const gsd::GsdStation& station);
 
-}  // namespace rs4sim::app
+}  // namespace rs4sim::rpc
