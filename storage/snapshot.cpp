@@ -5,6 +5,7 @@
 #include "storage/crc32.h"
 #include "storage/request_check.h"
 
+#include <iterator>
 #include <set>
 #include <unordered_set>
 
@@ -151,12 +152,11 @@ std::vector<const ParameterSetRecord*> current_sets(const Snapshot& snapshot) {
 }
 
 const char* to_string(ImportCurrent c) noexcept {
-  switch (c) {
-    case ImportCurrent::kUnchanged: return "current unchanged";
-    case ImportCurrent::kMadeCurrent: return "made current";
-    case ImportCurrent::kKeptPending: return "current kept: a newer restore is pending download";
-  }
-  return "unknown";
+  // In the enum's order.
+  constexpr const char* kText[] = {"current unchanged", "made current",
+                                   "current kept: a newer restore is pending download"};
+  const auto i = static_cast<std::size_t>(c);
+  return i < std::size(kText) ? kText[i] : "unknown";
 }
 
 }  // namespace rs4sim::storage

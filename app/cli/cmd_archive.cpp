@@ -47,14 +47,14 @@ void file_options(CLI::App& sub, ArchiveOptions& o) {
 constexpr const char* kPartialFieldHelp =
     "accept an RS4 set whose protective field has segments left unset (0 mm: no protective "
     "field on those beams); without it such a set is not made current";
+constexpr const char* kMakeCurrentHelp =
+    "the file's current version of each station becomes its current one (never over a newer "
+    "restore pending download); without it the history grows and the current sets stay";
 
 void import_options(CLI::App& sub, ArchiveOptions& o) {
   file_options(sub, o);
   sub.add_flag("--allow-partial-field", o.allow_partial_field, kPartialFieldHelp);
-  sub.add_flag("--make-current", o.make_current,
-               "the file's current version of each station becomes its current one (never over "
-               "a newer restore pending download); without it the history grows and the current "
-               "sets stay");
+  sub.add_flag("--make-current", o.make_current, kMakeCurrentHelp);
 }
 
 void copy_options(CLI::App& sub, ArchiveOptions& o) {
