@@ -43,8 +43,13 @@ int run_restore(const ArchiveOptions& o);
 int run_note(const ArchiveOptions& o);
 int run_watch(const ArchiveOptions& o);
 int run_verify(const ArchiveOptions& o);
-int run_init(const ArchiveOptions& o);
 int run_copy(const ArchiveOptions& o);
+
+// Every station's versions in `s`.
+std::size_t version_count(const storage::Snapshot& s);
+
+// `archive init`: creates an empty archive (or brings an older one to this schema).
+int run_init(const ArchiveOptions& o);
 
 // The station's current version id, if it has one.
 std::optional<storage::VersionId> current_of(storage::ParameterArchive& archive,

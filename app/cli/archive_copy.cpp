@@ -95,12 +95,6 @@ std::string check_copy(const storage::Snapshot& source, const storage::Snapshot&
   return {};
 }
 
-std::size_t version_total(const storage::Snapshot& s) {
-  std::size_t n = 0;
-  for (const auto& station : s.stations) n += station.versions.size();
-  return n;
-}
-
 }  // namespace
 
 int run_copy(const ArchiveOptions& o) {
@@ -140,7 +134,7 @@ int run_copy(const ArchiveOptions& o) {
     w.field("sync_log_present", summary.sync_log_present).field("verified", true);
     std::cout << w.end_object().str() << "\n";
   } else {
-    std::cout << "copied " << summary.stations << " stations, " << version_total(snapshot)
+    std::cout << "copied " << summary.stations << " stations, " << version_count(snapshot)
               << " versions (" << summary.versions << " added, " << summary.versions_present
               << " already present; " << summary.new_sets << " new sets), "
               << summary.sync_log_entries << " sync log entries added from "

@@ -32,13 +32,13 @@ std::string read_file(const std::string& path) {
   return std::move(file.bytes);
 }
 
+}  // namespace
+
 std::size_t version_count(const storage::Snapshot& s) {
   std::size_t n = 0;
   for (const auto& station : s.stations) n += station.versions.size();
   return n;
 }
-
-}  // namespace
 
 int run_export(const ArchiveOptions& o) {
   const bool json = is_json_format(o, "archive export");
