@@ -54,6 +54,8 @@ using AnyStream = std::variant<PlainStream, TlsStream>;
 
 constexpr std::string_view kApi = "/api/";
 constexpr std::string_view kEvents = "/api/events";
+// A request's query parameters, in their order.
+using Params = std::vector<std::pair<std::string, std::string>>;
 constexpr const char* kStreamMethod = "/rs4sim.v1.Observation/StreamEvents";
 constexpr std::chrono::milliseconds kHeaderGrace{200};  // an SSE stream's first event
 
@@ -396,13 +398,8 @@ class Connection : public std::enable_shared_from_this<Connection> {
     return !query_token.empty() && rpc::constant_time_equal(query_token, token);
   }
 
-  void handle() {
-    const std::string_view target(request_.target().data(), request_.target().size());
-    const auto q = target.find('?');
-    const std::string_view path = target.substr(0, q);
-    const std::string_view query = q == std::string_view::npos ? "" : target.substr(q + 1);
-    std::vector<std::pair<std::string, std::string>> params;
-    std::string access_token;
+  // The query's parameters, access_token apart (false, answered 400: a bad %-escape).
+  bool parse_query(std::string_view query, Params& params, std::string& access_token) {
     for (std::size_t at = 0; at < query.size();) {
       auto end = query.find('&', at);
       if (end == std::string_view::npos) end = query.size();
@@ -414,9 +411,9 @@ class Connection : public std::enable_shared_from_this<Connection> {
       std::string value;
       if (!url_decode(pair.substr(0, eq), key) ||
           !url_decode(eq == std::string_view::npos ? "" : pair.substr(eq + 1), value)) {
-        respond(error_reply(400, 3, "malformed query string: bad %-escape in '" +
-                                        std::string(pair) + "'"));
-        return;
+        respond(error_reply(400, 3,
+                            "malformed query string: bad %-escape in '" + std::string(pair) + "'"));
+        return false;
       }
       if (key == "access_token") {
         access_token = value;
@@ -424,6 +421,17 @@ class Connection : public std::enable_shared_from_this<Connection> {
         params.emplace_back(std::move(key), std::move(value));
       }
     }
+    return true;
+  }
+
+  void handle() {
+    const std::string_view target(request_.target().data(), request_.target().size());
+    const auto q = target.find('?');
+    const std::string_view path = target.substr(0, q);
+    const std::string_view query = q == std::string_view::npos ? "" : target.substr(q + 1);
+    Params params;
+    std::string access_token;
+    if (!parse_query(query, params, access_token)) return;
     if (path.substr(0, kApi.size()) != kApi && path != "/api") {
       serve_page(path);
       return;
@@ -437,10 +445,16 @@ class Connection : public std::enable_shared_from_this<Connection> {
       respond(std::move(r));
       return;
     }
+    serve_api(path, params);
+  }
+
+  // An authorised request under /api: the event stream (GET) or a call (POST).
+  void serve_api(std::string_view path, const Params& params) {
     if (path == kEvents) {
       if (request_.method() != bhttp::verb::get) {
-        Reply r = error_reply(405, 12, "GET " + std::string(kEvents) + " (Server-Sent Events), not " +
-                                           std::string(request_.method_string()));
+        Reply r = error_reply(405, 12,
+                              "GET " + std::string(kEvents) + " (Server-Sent Events), not " +
+                                  std::string(request_.method_string()));
         r.allow = "GET";
         respond(std::move(r));
         return;
@@ -449,8 +463,9 @@ class Connection : public std::enable_shared_from_this<Connection> {
       return;
     }
     if (request_.method() != bhttp::verb::post) {
-      Reply r = error_reply(405, 12, "a call is POST /api/<package.Service>/<Method>, not " +
-                                         std::string(request_.method_string()));
+      Reply r = error_reply(405, 12,
+                            "a call is POST /api/<package.Service>/<Method>, not " +
+                                std::string(request_.method_string()));
       r.allow = "POST";
       respond(std::move(r));
       return;
@@ -472,30 +487,40 @@ class Connection : public std::enable_shared_from_this<Connection> {
     respond({200, std::string(file->body), std::string(file->content_type)});
   }
 
+  // The unary method of the API (nullptr, answered 404/501: no such service or method, a
+  // streaming one).
+  const pb::MethodDescriptor* find_method(const std::string& service, const std::string& method) {
+    const auto* pool = pb::DescriptorPool::generated_pool();
+    const pb::ServiceDescriptor* sd = service.empty() ? nullptr : pool->FindServiceByName(service);
+    if (sd == nullptr || service.rfind("rs4sim.", 0) != 0) {
+      respond(error_reply(404, 5,
+                          "no service '" + service +
+                              "' in the API (a call is POST /api/<package.Service>/<Method>, "
+                              "e.g. /api/rs4sim.v1.Device/ListDevices)"));
+      return nullptr;
+    }
+    const pb::MethodDescriptor* md = sd->FindMethodByName(method);
+    if (md == nullptr) {
+      respond(error_reply(404, 5, "no method '" + method + "' in " + service));
+      return nullptr;
+    }
+    if (md->client_streaming() || md->server_streaming()) {
+      respond(error_reply(501, 12,
+                          service + "/" + method +
+                              " streams: over HTTP only Observation.StreamEvents is "
+                              "served, as Server-Sent Events at GET /api/events"));
+      return nullptr;
+    }
+    return md;
+  }
+
   // POST /api/<package.Service>/<Method>
   void call(std::string_view name) {
     const auto slash = name.find('/');
     const std::string service(name.substr(0, slash));
     const std::string method(slash == std::string_view::npos ? "" : name.substr(slash + 1));
-    const auto* pool = pb::DescriptorPool::generated_pool();
-    const pb::ServiceDescriptor* sd = service.empty() ? nullptr : pool->FindServiceByName(service);
-    if (sd == nullptr || service.rfind("rs4sim.", 0) != 0) {
-      respond(error_reply(404, 5, "no service '" + service +
-                                      "' in the API (a call is POST /api/<package.Service>/<Method>, "
-                                      "e.g. /api/rs4sim.v1.Device/ListDevices)"));
-      return;
-    }
-    const pb::MethodDescriptor* md = sd->FindMethodByName(method);
-    if (md == nullptr) {
-      respond(error_reply(404, 5, "no method '" + method + "' in " + service));
-      return;
-    }
-    if (md->client_streaming() || md->server_streaming()) {
-      respond(error_reply(501, 12, service + "/" + method +
-                                       " streams: over HTTP only Observation.StreamEvents is "
-                                       "served, as Server-Sent Events at GET /api/events"));
-      return;
-    }
+    const pb::MethodDescriptor* md = find_method(service, method);
+    if (md == nullptr) return;
     std::unique_ptr<pb::Message> in(
         pb::MessageFactory::generated_factory()->GetPrototype(md->input_type())->New());
     std::string body = request_.body().empty() ? "{}" : request_.body();
@@ -508,29 +533,34 @@ class Connection : public std::enable_shared_from_this<Connection> {
     pb::util::JsonParseOptions parse;
     parse.ignore_unknown_fields = false;
     if (const auto st = json::to_message(body, *in, parse); !st.ok()) {
-      respond(error_reply(400, 3, "the body is not a " + md->input_type()->full_name() +
-                                      " in protobuf's JSON mapping: " +
-                                      std::string(st.message())));
+      respond(error_reply(400, 3,
+                          "the body is not a " + md->input_type()->full_name() +
+                              " in protobuf's JSON mapping: " + std::string(st.message())));
       return;
     }
+    forward(service + "/" + method, *in, md->output_type());
+  }
+
+  // The call to the run's gRPC server; its answer (or status) as JSON, written on the loop.
+  void forward(const std::string& name, const pb::Message& in, const pb::Descriptor* out_type) {
     auto c = std::make_shared<UnaryCall>(server_->gate);
     unary_ = c;
-    c->request = buffer_of(in->SerializeAsString());
+    c->request = buffer_of(in.SerializeAsString());
     c->context.set_deadline(std::chrono::system_clock::now() + server_->options.call_timeout);
-    const pb::Descriptor* out_type = md->output_type();
     std::weak_ptr<Connection> weak = shared_from_this();
     server_->stub.UnaryCall(
-        &c->context, "/" + service + "/" + method, grpc::StubOptions(), &c->request, &c->response,
-        [c, weak, gate = server_->gate, out_type, name = service + "/" + method](grpc::Status s) {
+        &c->context, "/" + name, grpc::StubOptions(), &c->request, &c->response,
+        [c, weak, gate = server_->gate, out_type, name](grpc::Status s) {
           // a gRPC thread: the JSON is made here, the loop only writes it
           Reply r;
           if (s.ok()) {
             if (!to_json(out_type, c->response, r.body)) {
               r = error_reply(500, 13, "the answer is not a " + out_type->full_name());
             }
-          } else if (s.error_code() == grpc::StatusCode::UNIMPLEMENTED && s.error_message().empty()) {
-            r = error_reply(501, 12, name + ": this run does not serve " +
-                                         name.substr(0, name.find('/')));
+          } else if (s.error_code() == grpc::StatusCode::UNIMPLEMENTED &&
+                     s.error_message().empty()) {
+            r = error_reply(501, 12,
+                            name + ": this run does not serve " + name.substr(0, name.find('/')));
           } else {
             r = {http_status_of(static_cast<int>(s.error_code())), status_json(s)};
           }
@@ -567,7 +597,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
   }
 
   // ---- GET /api/events ----------------------------------------------------------------------
-  void start_events(const std::vector<std::pair<std::string, std::string>>& params) {
+  void start_events(const Params& params) {
     const auto* md = pb::DescriptorPool::generated_pool()->FindMethodByName(
         "rs4sim.v1.Observation.StreamEvents");
     std::unique_ptr<pb::Message> in(

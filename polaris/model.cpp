@@ -1,5 +1,7 @@
 #include "polaris/model.h"
 
+#include "polaris/model_tables.inc"
+
 #include <array>
 #include <span>
 #include <string_view>
@@ -8,300 +10,123 @@ namespace rs4sim::polaris {
 
 namespace {
 
-// The model tables [Polaris manual §2.1] (PLi 02, PLi 05, PLi 12) and [Polaris manual §2.2]
-// (PL 10, PL 24, PL 48): body height h (mm), beams, the two maximum response times (0.1 ms).
-// Each row names its model (PL 24 and PL 48: the OCR lost the names; the protected height
-// Ph instead).
-//
-// Read from an OCR of the manual. About half the time cells lost their decimal comma ("52"
-// for 5,2, "211" for 21,1): read as tenths of a millisecond, as each column's progression
-// shows. The rows marked OCR had worse damage: what was printed (first time, second time,
-// beams) and the repair by the column's progression (the neighbours in brackets). The
-// model names PLi 02-2540 … 2800 are misprinted too (the heights give 2640 … 2880). Checks
-// in tests/polaris/model_test.cpp: every beam count fits the family's formula, both time
-// columns rise with the beams, and the second one is exactly linear in them.
-constexpr std::array<Model, 43> kPli02{{
-    {100, 31, 7, 11},        // PLi 02-80
-    {180, 63, 12, 19},       // PLi 02-160
-    {260, 95, 16, 27},       // PLi 02-240
-    {340, 127, 21, 35},      // PLi 02-320; OCR "2,1 B515 127"
-    {420, 159, 25, 43},      // PLi 02-400
-    {500, 191, 30, 51},      // PLi 02-480
-    {580, 223, 34, 59},      // PLi 02-560
-    {660, 255, 39, 67},      // PLi 02-640; OCR "39 6,7 2615"
-    {740, 287, 43, 75},      // PLi 02-720; OCR "4,3 V5] 287"
-    {820, 319, 48, 83},      // PLi 02-800
-    {900, 351, 52, 91},      // PLi 02-880
-    {980, 383, 57, 99},      // PLi 02-960
-    {1060, 415, 61, 107},    // PLi 02-1040
-    {1140, 447, 66, 115},    // PLi 02-1120
-    {1220, 479, 70, 123},    // PLi 02-1200
-    {1300, 511, 75, 131},    // PLi 02-1280
-    {1380, 543, 79, 139},    // PLi 02-1360
-    {1460, 575, 84, 147},    // PLi 02-1440; OCR "84 14,7 Y8"
-    {1540, 607, 88, 155},    // PLi 02-1520; OCR "8,8 1515 607"
-    {1620, 639, 92, 163},    // PLi 02-1600
-    {1700, 671, 97, 171},    // PLi 02-1680
-    {1780, 703, 101, 179},   // PLi 02-1760
-    {1860, 735, 106, 187},   // PLi 02-1840
-    {1940, 767, 110, 195},   // PLi 02-1920
-    {2020, 799, 115, 203},   // PLi 02-2000
-    {2100, 831, 119, 211},   // PLi 02-2080
-    {2180, 863, 124, 219},   // PLi 02-2160
-    {2260, 895, 128, 227},   // PLi 02-2240
-    {2340, 927, 133, 235},   // PLi 02-2320; OCR "183 235 927" (12,8 … 13,7)
-    {2420, 959, 137, 243},   // PLi 02-2400
-    {2500, 991, 142, 251},   // PLi 02-2480
-    {2580, 1023, 146, 259},  // PLi 02-2560
-    {2660, 1055, 151, 267},  // PLi 02-2640
-    {2740, 1087, 155, 275},  // PLi 02-2720; OCR "I515] 27,5 1087"
-    {2820, 1119, 160, 283},  // PLi 02-2800
-    {2900, 1151, 164, 291},  // PLi 02-2880
-    {2980, 1183, 169, 299},  // PLi 02-2960
-    {3060, 1215, 173, 307},  // PLi 02-3040
-    {3140, 1247, 178, 315},  // PLi 02-3120
-    {3220, 1279, 182, 323},  // PLi 02-3200
-    {3300, 1311, 187, 331},  // PLi 02-3280
-    {3380, 1343, 191, 339},  // PLi 02-3360
-    {3460, 1375, 196, 347},  // PLi 02-3440
-}};
-constexpr std::array<Model, 52> kPli05{{
-    {100, 15, 6, 10},       // PLi 05-80
-    {120, 19, 7, 12},       // PLi 05-100
-    {140, 23, 8, 14},       // PLi 05-120
-    {160, 27, 10, 16},      // PLi 05-140
-    {180, 31, 11, 18},      // PLi 05-160
-    {200, 35, 12, 20},      // PLi 05-180
-    {220, 39, 13, 22},      // PLi 05-200
-    {240, 43, 14, 24},      // PLi 05-220
-    {260, 47, 15, 26},      // PLi 05-240
-    {280, 51, 16, 28},      // PLi 05-260
-    {300, 55, 17, 30},      // PLi 05-280; OCR "1,7 30 58]"
-    {320, 59, 19, 32},      // PLi 05-300
-    {340, 63, 20, 34},      // PLi 05-320
-    {420, 79, 24, 42},      // PLi 05-400
-    {500, 95, 29, 50},      // PLi 05-480
-    {580, 111, 33, 58},     // PLi 05-560
-    {660, 127, 38, 66},     // PLi 05-640
-    {740, 143, 42, 74},     // PLi 05-720
-    {820, 159, 47, 82},     // PLi 05-800
-    {900, 175, 51, 90},     // PLi 05-880
-    {980, 191, 55, 98},     // PLi 05-960
-    {1060, 207, 60, 106},   // PLi 05-1040
-    {1140, 223, 64, 114},   // PLi 05-1120
-    {1220, 239, 69, 122},   // PLi 05-1200
-    {1300, 255, 73, 130},   // PLi 05-1280
-    {1380, 271, 78, 138},   // PLi 05-1360
-    {1460, 287, 82, 146},   // PLi 05-1440
-    {1540, 303, 87, 154},   // PLi 05-1520
-    {1620, 319, 91, 162},   // PLi 05-1600
-    {1700, 335, 96, 170},   // PLi 05-1680
-    {1780, 351, 100, 178},  // PLi 05-1760
-    {1860, 367, 105, 186},  // PLi 05-1840
-    {1940, 383, 109, 194},  // PLi 05-1920
-    {2020, 399, 114, 202},  // PLi 05-2000
-    {2100, 415, 118, 210},  // PLi 05-2080
-    {2180, 431, 123, 218},  // PLi 05-2160
-    {2260, 447, 127, 226},  // PLi 05-2240
-    {2340, 463, 132, 234},  // PLi 05-2320
-    {2420, 479, 136, 242},  // PLi 05-2400
-    {2500, 495, 141, 250},  // PLi 05-2480
-    {2580, 511, 145, 258},  // PLi 05-2560
-    {2660, 527, 150, 266},  // PLi 05-2640
-    {2740, 543, 154, 274},  // PLi 05-2720
-    {2820, 559, 159, 282},  // PLi 05-2800
-    {2900, 575, 163, 290},  // PLi 05-2880
-    {2980, 591, 167, 298},  // PLi 05-2960
-    {3060, 607, 172, 306},  // PLi 05-3040
-    {3140, 623, 176, 314},  // PLi 05-3120
-    {3220, 639, 181, 322},  // PLi 05-3200
-    {3300, 655, 185, 330},  // PLi 05-3280
-    {3380, 671, 190, 338},  // PLi 05-3360
-    {3460, 687, 194, 346},  // PLi 05-3440
-}};
-constexpr std::array<Model, 36> kPli12{{
-    {116, 7, 4, 6},        // PLi 12-095
-    {212, 15, 6, 10},      // PLi 12-190
-    {308, 23, 8, 14},      // PLi 12-290
-    {404, 31, 11, 18},     // PLi 12-380
-    {500, 39, 13, 22},     // PLi 12-480
-    {596, 47, 15, 26},     // PLi 12-580
-    {692, 55, 17, 30},     // PLi 12-670
-    {788, 63, 20, 34},     // PLi 12-770
-    {884, 71, 22, 38},     // PLi 12-860
-    {980, 79, 24, 42},     // PLi 12-960
-    {1076, 87, 26, 46},    // PLi 12-1060
-    {1172, 95, 29, 50},    // PLi 12-1150
-    {1268, 103, 31, 54},   // PLi 12-1250
-    {1364, 111, 33, 58},   // PLi 12-1340; OCR "&3 58 111"
-    {1460, 119, 35, 62},   // PLi 12-1440; OCR "315 6,2 119" (3,3 … 3,8)
-    {1556, 127, 38, 66},   // PLi 12-1540
-    {1652, 135, 40, 70},   // PLi 12-1630
-    {1748, 143, 42, 74},   // PLi 12-1730
-    {1844, 151, 44, 78},   // PLi 12-1820
-    {1940, 159, 47, 82},   // PLi 12-1920
-    {2036, 167, 49, 86},   // PLi 12-2020
-    {2132, 175, 51, 90},   // PLi 12-2120
-    {2228, 183, 53, 94},   // PLi 12-2210
-    {2324, 191, 55, 98},   // PLi 12-2300; OCR "515 9,8 191" (5,3 … 5,8)
-    {2420, 199, 58, 102},  // PLi 12-2400
-    {2516, 207, 60, 106},  // PLi 12-2500
-    {2612, 215, 62, 110},  // PLi 12-2600
-    {2708, 223, 64, 114},  // PLi 12-2700
-    {2804, 231, 67, 118},  // PLi 12-2800
-    {2900, 239, 69, 122},  // PLi 12-2900
-    {2996, 247, 71, 126},  // PLi 12-3000
-    {3092, 255, 73, 130},  // PLi 12-3100
-    {3188, 263, 76, 134},  // PLi 12-3200
-    {3284, 271, 78, 138},  // PLi 12-3300
-    {3380, 279, 80, 142},  // PLi 12-3400
-    {3476, 287, 82, 146},  // PLi 12-3500
-}};
-constexpr std::array<Model, 53> kPl10{{
-    {100, 8, 4, 6},        // PL 10-80
-    {120, 10, 5, 7},       // PL 10-100
-    {140, 12, 5, 8},       // PL 10-120
-    {160, 14, 6, 9},       // PL 10-140
-    {180, 16, 6, 10},      // PL 10-160
-    {200, 18, 7, 11},      // PL 10-180
-    {220, 20, 8, 12},      // PL 10-200
-    {240, 22, 8, 13},      // PL 10-220
-    {260, 24, 9, 14},      // PL 10-240
-    {280, 26, 9, 15},      // PL 10-260
-    {300, 28, 10, 16},     // PL 10-280
-    {320, 30, 10, 17},     // PL 10-300
-    {340, 32, 11, 18},     // PL 10-320
-    {420, 40, 13, 22},     // PL 10-400
-    {500, 48, 15, 26},     // PL 10-480
-    {520, 50, 16, 27},     // PL 10-500
-    {580, 56, 18, 30},     // PL 10-560
-    {660, 64, 20, 34},     // PL 10-640
-    {740, 72, 22, 38},     // PL 10-720
-    {820, 80, 24, 42},     // PL 10-800
-    {900, 88, 27, 46},     // PL 10-880
-    {980, 96, 29, 50},     // PL 10-960
-    {1060, 104, 31, 54},   // PL 10-1040
-    {1140, 112, 33, 58},   // PL 10-1120
-    {1220, 120, 36, 62},   // PL 10-1200
-    {1300, 128, 38, 66},   // PL 10-1280
-    {1380, 136, 40, 70},   // PL 10-1360
-    {1460, 144, 42, 74},   // PL 10-1440
-    {1540, 152, 45, 78},   // PL 10-1520
-    {1620, 160, 47, 82},   // PL 10-1600
-    {1700, 168, 49, 86},   // PL 10-1680
-    {1780, 176, 51, 90},   // PL 10-1760
-    {1860, 184, 54, 94},   // PL 10-1840
-    {1940, 192, 56, 98},   // PL 10-1920
-    {2020, 200, 58, 102},  // PL 10-2000
-    {2100, 208, 60, 106},  // PL 10-2080
-    {2180, 216, 62, 110},  // PL 10-2160
-    {2260, 224, 65, 114},  // PL 10-2240
-    {2340, 232, 67, 118},  // PL 10-2320
-    {2420, 240, 69, 122},  // PL 10-2400
-    {2500, 248, 71, 126},  // PL 10-2480
-    {2580, 256, 74, 130},  // PL 10-2560
-    {2660, 264, 76, 134},  // PL 10-2640
-    {2740, 272, 78, 138},  // PL 10-2720
-    {2820, 280, 80, 142},  // PL 10-2800
-    {2900, 288, 83, 146},  // PL 10-2880
-    {2980, 296, 85, 150},  // PL 10-2960
-    {3060, 304, 87, 154},  // PL 10-3040
-    {3140, 312, 89, 158},  // PL 10-3120
-    {3220, 320, 92, 162},  // PL 10-3200
-    {3300, 328, 94, 166},  // PL 10-3280
-    {3380, 336, 96, 170},  // PL 10-3360
-    {3460, 344, 98, 174},  // PL 10-3440
-}};
-constexpr std::array<Model, 36> kPl24{{
-    {116, 4, 3, 4},       // Ph 120
-    {212, 8, 4, 6},       // Ph 216
-    {308, 12, 5, 8},      // Ph 312
-    {404, 16, 6, 10},     // Ph 408
-    {500, 20, 8, 12},     // Ph 504
-    {596, 24, 9, 14},     // Ph 600
-    {692, 28, 10, 16},    // Ph 696
-    {788, 32, 11, 18},    // Ph 792
-    {884, 36, 12, 20},    // Ph 888
-    {980, 40, 13, 22},    // Ph 984
-    {1076, 44, 14, 24},   // Ph 1080
-    {1172, 48, 15, 26},   // Ph 1176
-    {1268, 52, 17, 28},   // Ph 1272
-    {1364, 56, 18, 30},   // Ph 1368
-    {1460, 60, 19, 32},   // Ph 1464
-    {1556, 64, 20, 34},   // Ph 1560
-    {1652, 68, 21, 36},   // Ph 1656
-    {1748, 72, 22, 38},   // Ph 1752
-    {1844, 76, 23, 40},   // Ph 1848
-    {1940, 80, 24, 42},   // Ph 1944
-    {2036, 84, 26, 44},   // Ph 2040
-    {2132, 88, 27, 46},   // Ph 2136
-    {2228, 92, 28, 48},   // Ph 2232; OCR "28 438 92"
-    {2324, 96, 29, 50},   // Ph 2328
-    {2420, 100, 30, 52},  // Ph 2424
-    {2516, 104, 31, 54},  // Ph 2520
-    {2612, 108, 32, 56},  // Ph 2616
-    {2708, 112, 33, 58},  // Ph 2712
-    {2804, 116, 34, 60},  // Ph 2808
-    {2900, 120, 36, 62},  // Ph 2904
-    {2996, 124, 37, 64},  // Ph 3000
-    {3092, 128, 38, 66},  // Ph 3096
-    {3188, 132, 39, 68},  // Ph 3192
-    {3284, 136, 40, 70},  // Ph 3288
-    {3380, 140, 41, 72},  // Ph 3384
-    {3476, 144, 42, 74},  // Ph 3480
-}};
-constexpr std::array<Model, 15> kPl48{{
-    {212, 4, 3, 4},      // Ph 240; OCR "205 03 04" (no beam count printed)
-    {404, 8, 4, 6},      // Ph 432
-    {596, 12, 5, 8},     // Ph 624
-    {788, 16, 6, 10},    // Ph 816
-    {980, 20, 8, 12},    // Ph 1008
-    {1172, 24, 9, 14},   // Ph 1200
-    {1364, 28, 10, 16},  // Ph 1392
-    {1556, 32, 11, 18},  // Ph 1584
-    {1748, 36, 12, 20},  // Ph 1776
-    {1940, 40, 13, 22},  // Ph 1968
-    {2132, 44, 14, 24},  // Ph 2160
-    {2324, 48, 15, 26},  // Ph 2352; OCR "1) 2,6 48" (as PL 24 with 48 beams)
-    {2516, 52, 17, 28},  // Ph 2544
-    {2708, 56, 18, 30},  // Ph 2736
-    {2900, 60, 19, 32},  // Ph 2928
-}};
+constexpr std::array<std::string_view, 6> kFamilyNames{"PLi02", "PLi05", "PLi12",
+                                                      "PL10",  "PL24",  "PL48"};
 
-struct FamilyTable {
-  Family family;
-  std::string_view name;
-  std::span<const Model> models;
+// The model tables [Polaris manual §2.1, §2.2] as polaris/model_tables.txt gives them, read at
+// compile time: a line that does not read (or a family out of its place) throws, which stops
+// the build.
+class TableReader {
+ public:
+  explicit constexpr TableReader(std::string_view text) : text_(text) {}
+
+  // The next model row (comment and empty lines skipped); false at the end.
+  constexpr bool next(Family& family, Model& model) {
+    while (at_ < text_.size()) {
+      auto end = text_.find('\n', at_);
+      if (end == std::string_view::npos) end = text_.size();
+      line_ = text_.substr(at_, end - at_);
+      at_ = end + 1;
+      pos_ = 0;
+      skip_blanks();
+      if (pos_ == line_.size() || line_[pos_] == '#') continue;
+      family = family_of(word());
+      model.h_mm = number();
+      model.beams = number();
+      model.response_01ms = number();
+      model.response_2nd_01ms = number();
+      return true;
+    }
+    return false;
+  }
+
+ private:
+  constexpr void skip_blanks() {
+    while (pos_ < line_.size() && (line_[pos_] == ' ' || line_[pos_] == '\t')) ++pos_;
+  }
+  constexpr std::string_view word() {
+    skip_blanks();
+    const std::size_t from = pos_;
+    while (pos_ < line_.size() && line_[pos_] != ' ' && line_[pos_] != '\t') ++pos_;
+    return line_.substr(from, pos_ - from);
+  }
+  constexpr std::uint16_t number() {
+    const std::string_view w = word();
+    if (w.empty() || w.size() > 4) throw "polaris/model_tables.txt: a row needs four numbers";
+    std::uint16_t v = 0;
+    for (const char c : w) {
+      if (c < '0' || c > '9') throw "polaris/model_tables.txt: not a number";
+      v = static_cast<std::uint16_t>(v * 10 + (c - '0'));
+    }
+    return v;
+  }
+  static constexpr Family family_of(std::string_view name) {
+    for (std::size_t i = 0; i < kFamilyNames.size(); ++i) {
+      if (kFamilyNames[i] == name) return static_cast<Family>(i);
+    }
+    throw "polaris/model_tables.txt: not a family name";
+  }
+
+  std::string_view text_;
+  std::size_t at_ = 0;
+  std::string_view line_;
+  std::size_t pos_ = 0;
 };
 
-constexpr std::array<FamilyTable, 6> kFamilies{{
-    {Family::kPli02, "PLi02", kPli02},
-    {Family::kPli05, "PLi05", kPli05},
-    {Family::kPli12, "PLi12", kPli12},
-    {Family::kPl10, "PL10", kPl10},
-    {Family::kPl24, "PL24", kPl24},
-    {Family::kPl48, "PL48", kPl48},
-}};
+constexpr std::size_t row_count(std::string_view text) {
+  TableReader reader(text);
+  Family f{};
+  Model m;
+  std::size_t n = 0;
+  while (reader.next(f, m)) ++n;
+  return n;
+}
 
-const FamilyTable& table_of(Family f) noexcept {
-  for (const FamilyTable& t : kFamilies) {
-    if (t.family == f) return t;
+// Every model, family after family (in the order of Family), and where each family starts.
+struct Tables {
+  std::array<Model, row_count(detail::kModelTablesText)> models{};
+  std::array<std::size_t, kFamilyNames.size() + 1> start{};
+};
+
+constexpr Tables read_tables(std::string_view text) {
+  Tables t;
+  TableReader reader(text);
+  Family f{};
+  std::size_t n = 0;
+  std::size_t family = 0;
+  while (reader.next(f, t.models[n])) {
+    const auto index = static_cast<std::size_t>(f);
+    if (index < family) throw "polaris/model_tables.txt: the families out of their order";
+    for (; family < index; ++family) t.start[family + 1] = n;
+    ++n;
   }
-  return kFamilies[0];
+  for (; family < kFamilyNames.size(); ++family) t.start[family + 1] = n;
+  return t;
+}
+
+constexpr Tables kTables = read_tables(detail::kModelTablesText);
+
+std::size_t index_of(Family f) noexcept {
+  const auto i = static_cast<std::size_t>(f);
+  return i < kFamilyNames.size() ? i : 0;
 }
 
 }  // namespace
 
-std::string_view to_string(Family f) noexcept { return table_of(f).name; }
+std::string_view to_string(Family f) noexcept { return kFamilyNames[index_of(f)]; }
 
 std::optional<Family> parse_family(std::string_view text) noexcept {
-  for (const FamilyTable& t : kFamilies) {
-    if (t.name == text) return t.family;
+  for (std::size_t i = 0; i < kFamilyNames.size(); ++i) {
+    if (kFamilyNames[i] == text) return static_cast<Family>(i);
   }
   return std::nullopt;
 }
 
-std::span<const Model> models(Family f) noexcept { return table_of(f).models; }
+std::span<const Model> models(Family f) noexcept {
+  const std::size_t i = index_of(f);
+  return std::span<const Model>(kTables.models)
+      .subspan(kTables.start[i], kTables.start[i + 1] - kTables.start[i]);
+}
 
 const Model* find_model(Family f, std::uint16_t beams) noexcept {
   for (const Model& m : models(f)) {

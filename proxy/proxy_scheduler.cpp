@@ -12,7 +12,8 @@ ProxyScheduler::ProxyScheduler(storage::ParameterArchive& archive, SchedulerConf
 
 ProxySync& ProxyScheduler::add(std::uint8_t address, ProxySyncConfig config) {
   config.station = storage::StationKey{config_.bus, address};
-  config.wall_at_zero = config_.wall_at_zero;
+  config.wall_clock = config_.wall_clock;
+  config.simulated = config_.simulated;
   config.recording = config_.recording;
   std::erase(queue_, address);
   saved_.erase(address);

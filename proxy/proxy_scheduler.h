@@ -21,7 +21,8 @@ namespace rs4sim::proxy {
 struct SchedulerConfig {
   std::string bus = "bus";            // the archive's StationKey::bus
   std::size_t max_parallel = 1;       // N; 0 is taken as 1
-  storage::Timestamp wall_at_zero{};  // ProxySyncConfig::wall_at_zero for every slave
+  WallClock wall_clock{};             // ProxySyncConfig::wall_clock for every slave
+  bool simulated = false;             // ProxySyncConfig::simulated for every slave
   // Keep each slave's retentive record in the archive (save_proxy_state): loaded by add(),
   // saved by persist() whenever it changed (docs/proxy.md "Retentive record").
   bool persist = true;
@@ -41,7 +42,7 @@ class ProxyScheduler {
  public:
   ProxyScheduler(storage::ParameterArchive& archive, SchedulerConfig config = {});
 
-  // The station key (bus, address) and wall_at_zero are set by the scheduler. Replaces an
+  // The station key (bus, address), wall clock and `simulated` are set by the scheduler. Replaces an
   // existing one. With `persist`, the retentive record saved for the station is restored; one
   // that cannot be read or decoded is restored as an open sync (the safe side).
   ProxySync& add(std::uint8_t address, ProxySyncConfig config = {});
@@ -49,9 +50,9 @@ class ProxyScheduler {
   // archive refused it (it is tried again at the next call).
   bool persist(std::uint8_t address, dp::TimePoint now);
   [[nodiscard]] ProxySync* find(std::uint8_t address) noexcept;
-  // The wall-clock time of dp::TimePoint{} for the syncs added from now on (an owner that
-  // learns its clock only when the run starts, e.g. `rs4sim master`).
-  void set_wall_at_zero(storage::Timestamp at) noexcept { config_.wall_at_zero = at; }
+  // The wall clock of the syncs added from now on (an owner that learns its clock only when
+  // the run starts).
+  void set_wall_clock(WallClock clock) { config_.wall_clock = std::move(clock); }
   [[nodiscard]] std::vector<std::uint8_t> addresses() const;
 
   // Queues the slaves that became ready, drops the ones that no longer are, and starts

@@ -31,9 +31,10 @@ std::string reason_text(protocol::SyncReason r) {
 }
 }  // namespace
 
-storage::Timestamp wall_time(const ProxySyncConfig& config, dp::TimePoint now) noexcept {
-  return config.wall_at_zero +
-         std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch());
+storage::Timestamp wall_time(const ProxySyncConfig& config, dp::TimePoint now) {
+  if (config.wall_clock) return config.wall_clock();
+  return storage::Timestamp{
+      std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch())};
 }
 
 ProxySync::ProxySync(ProxySyncConfig config, storage::ParameterArchive& archive)
@@ -69,6 +70,7 @@ void ProxySync::start(dp::TimePoint now) {
   out_.error_number_fb = out_.error_code_sfc = out_.error_number_rs4 = 0;
   out_.fb_busy = true;
   begin_ = {};
+  transfer_.reset();
   ident_.reset();
   first_.reset();
   current_.reset();
@@ -213,7 +215,7 @@ void ProxySync::log_sync(storage::SyncOutcome outcome, dp::TimePoint now) {
   e.station = config_.station;
   e.at = wall_time(config_, now);
   e.reason = background_ ? "background-verify" : reason_text(begin_.reason);
-  e.direction = archive_direction(begin_.direction);
+  e.direction = transfer_ ? *transfer_ : archive_direction(begin_.direction);
   e.outcome = outcome;
   e.error_number_fb = out_.error_number_fb;
   e.error_code_sfc = out_.error_code_sfc;

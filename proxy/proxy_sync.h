@@ -16,6 +16,7 @@
 #include "storage/parameter_archive.h"
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -36,6 +37,8 @@ struct Recording {
   bool skip_identical = false;
 };
 
+using WallClock = std::function<storage::Timestamp()>;
+
 struct ProxySyncConfig {
   storage::StationKey station;
   Recording recording{};
@@ -44,13 +47,17 @@ struct ProxySyncConfig {
   // than this, so a persistent fault does not loop hot.
   dp::Duration retry_delay = std::chrono::seconds(5);
   bool background_verify = true;  // upload after an immediate release and compare
-  // The wall-clock time of dp::TimePoint{} (the owner: system_clock::now() minus the steady
-  // clock's now at start), for the archive's timestamps; the machine reads no clock.
-  storage::Timestamp wall_at_zero{};
+  // The archive's timestamps (docs/storage.md "Times"): the wall clock the owner injects (the
+  // machine reads none), read at each write, so a stored time is never later than the moment
+  // it was written. Without one: the run's own time from the Unix epoch (tests).
+  WallClock wall_clock{};
+  // The run's time is a simulation's (`rs4sim demo`, `master --link memory`): recorded beside
+  // each version (StoreRequest::simulated). A real link's steady clock is not.
+  bool simulated = false;
 };
 
-// The archive timestamp of a machine time point.
-storage::Timestamp wall_time(const ProxySyncConfig& config, dp::TimePoint now) noexcept;
+// The archive timestamp of a write at machine time `now`.
+storage::Timestamp wall_time(const ProxySyncConfig& config, dp::TimePoint now);
 
 // The FB outputs ([RS4 manual §6.4]).
 struct FbOutputs {
@@ -178,6 +185,9 @@ class ProxySync {
   bool downloaded_ = false;
   bool verify_after_end_ = false;
   bool background_ = false;          // the upload is the background verify
+  // What the sync does, once decide() chose (the sync log's direction says what happened, not
+  // what the RS4 asked: a first commissioning with nothing stored transfers nothing).
+  std::optional<storage::SyncDirection> transfer_;
   std::uint16_t adapter_error_ = 0;  // sent in 99 failed
 };
 

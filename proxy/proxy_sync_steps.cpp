@@ -183,6 +183,7 @@ void ProxySync::decide(dp::TimePoint now) {
                current_->set.crc32 != ident_->set_crc32) {
       start_download(now);  // device exchange (or a set that is not the stored one)
     } else {
+      transfer_ = storage::SyncDirection::kVerify;
       set_crc_ = current_->set.crc32;  // consistent: release at once, verify afterwards
       verify_after_end_ = config_.background_verify;
       send_end(now);
@@ -192,12 +193,14 @@ void ProxySync::decide(dp::TimePoint now) {
   if (has_set) {
     start_download(now);  // factory settings: the stored set goes back
   } else {
+    transfer_ = storage::SyncDirection::kNone;  // nothing stored: nothing to download
     send_end(now);  // first commissioning: CONFIG_SET_TO_DEFAULT from the 99 answer
   }
 }
 
 void ProxySync::start_upload(bool background, dp::TimePoint now) {
   background_ = background;
+  transfer_ = background ? storage::SyncDirection::kVerify : storage::SyncDirection::kUpload;
   set_.clear();
   chunk_ = 0;
   chunk_count_ = ident_->chunk_count();
@@ -284,6 +287,9 @@ bool ProxySync::store_set(storage::VersionSource source, std::string summary, st
   req.summary = std::move(summary);
   req.source = source;
   req.at = wall_time(config_, now);
+  if (config_.simulated) {
+    req.simulated = std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch());
+  }
   req.note = std::move(note);
   req.user = config_.recording.author.user;
   req.host = config_.recording.author.host;
@@ -295,6 +301,7 @@ bool ProxySync::store_set(storage::VersionSource source, std::string summary, st
 
 void ProxySync::start_download(dp::TimePoint now) {
   step_ = Step::kLoadDownload;
+  transfer_ = storage::SyncDirection::kDownload;
   const auto got = archive_.get(restore_version_ ? *restore_version_ : current_->version.id);
   if (!got || got.value().set.blob.empty() ||
       got.value().set.blob.size() > protocol::kMaxChunkCount * protocol::kMaxChunkSize ||

@@ -2,6 +2,7 @@
 
 #include "dp/pdu/sap.h"
 #include "rpc/status.h"
+#include "rs4/param_doc/field_coverage.h"
 #include "rs4/report/field_svg.h"
 #include "rs4/report/parameter_diff.h"
 #include "rs4/report/parameter_summary.h"
@@ -48,6 +49,24 @@ std::string peer_host(const std::string& peer) {
 }
 
 // The request's station, or INVALID_ARGUMENT for an address above kMaxStationAddress.
+void fill_import(const storage::ImportSummary& s, v1::ImportResponse& out) {
+  const auto n = [](std::size_t v) { return static_cast<std::uint32_t>(v); };
+  out.set_stations(n(s.stations));
+  out.set_versions(n(s.versions));
+  out.set_new_parameter_sets(n(s.new_sets));
+  out.set_versions_present(n(s.versions_present));
+  out.set_sync_log_entries(n(s.sync_log_entries));
+  out.set_sync_log_present(n(s.sync_log_present));
+  for (const auto& st : s.per_station) {
+    auto& o = *out.add_per_station();
+    fill_key(st.key, *o.mutable_station());
+    o.set_versions_added(n(st.versions_added));
+    o.set_versions_present(n(st.versions_present));
+    o.set_current(storage::to_string(st.current));
+    o.set_current_number(st.current_number);
+  }
+}
+
 grpc::Status to_key(const v1::StationKey& in, storage::StationKey& out) {
   if (in.address() > dp::pdu::sap::kMaxStationAddress) {
     return invalid_argument("address", std::to_string(in.address()) + " outside 0.." +
@@ -208,6 +227,12 @@ grpc::Status ArchiveService::Restore(grpc::ServerContext* context, const v1::Res
     }
   }
   return on_loop([&] {
+    auto old = archive_.get(id);
+    if (!old) return archive_status(old.error(), "version_id");
+    const rs4::param_doc::CoverageOptions coverage{in->allow_partial_field()};
+    if (const auto issue = rs4::param_doc::check_stored_set(old.value().set.blob, coverage)) {
+      return invalid_argument("allow_partial_field", issue->message());
+    }
     auto v = archive_.restore(id, clock_(), in->note(), by);
     if (!v) return archive_status(v.error(), "version_id");
     fill_version(v.value(), *out);
@@ -233,17 +258,22 @@ grpc::Status ArchiveService::Export(grpc::ServerContext*, const v1::ExportReques
 
 grpc::Status ArchiveService::Import(grpc::ServerContext*, const v1::ImportRequest* in,
                                     v1::ImportResponse* out) {
+  const auto& file = in->file();
+  auto snap = in->format() == v1::EXPORT_FORMAT_JSON
+                  ? storage::decode_json(file)
+                  : storage::decode_binary(std::span(
+                        reinterpret_cast<const std::uint8_t*>(file.data()), file.size()));
+  if (!snap) return archive_status(snap.error(), "file");
+  const rs4::param_doc::CoverageOptions coverage{in->allow_partial_field()};
+  for (const auto* set : storage::current_sets(snap.value())) {
+    if (const auto issue = rs4::param_doc::check_stored_set(set->blob, coverage)) {
+      return invalid_argument("allow_partial_field", issue->message());
+    }
+  }
   return on_loop([&] {
-    const auto& file = in->file();
-    auto summary = in->format() == v1::EXPORT_FORMAT_JSON
-                       ? storage::import_json(archive_, file)
-                       : storage::import_binary(
-                             archive_, std::span(reinterpret_cast<const std::uint8_t*>(file.data()),
-                                                 file.size()));
+    auto summary = archive_.import_snapshot(snap.value(), {in->make_current()});
     if (!summary) return archive_status(summary.error(), "file");
-    out->set_stations(static_cast<std::uint32_t>(summary.value().stations));
-    out->set_versions(static_cast<std::uint32_t>(summary.value().versions));
-    out->set_new_parameter_sets(static_cast<std::uint32_t>(summary.value().new_sets));
+    fill_import(summary.value(), *out);
     return grpc::Status::OK;
   });
 }

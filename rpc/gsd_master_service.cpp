@@ -1,6 +1,7 @@
 #include "rpc/gsd_master_service.h"
 
 #include "gsd/unit_diag.h"
+#include "rpc/gsd_modules.h"
 #include "rpc/status.h"
 
 #include <span>
@@ -13,32 +14,10 @@ std::string text_of(std::span<const std::uint8_t> bytes) {
   return {reinterpret_cast<const char*>(bytes.data()), bytes.size()};
 }
 
-constexpr std::size_t kStandardDiagBytes = 6;  // [IEC 61158-6-3 Slave_Diag]
-
-// The Slave_Diag DU after its 6 standard bytes.
-std::span<const std::uint8_t> ext_diag(const dp::fdl::DataUnit& diag) {
-  if (diag.size() <= kStandardDiagBytes) return {};
-  return {diag.data() + kStandardDiagBytes, diag.size() - kStandardDiagBytes};
-}
-
 void fill(const gsd::GsdMasterSlave& s, const dp::master::Master& master, v1::GsdMasterSlave& out) {
   const auto& spec = s.spec;
   out.set_address(spec.address);
-  out.set_file(spec.file);
-  out.set_ident_number(spec.device->ident_number);
-  const auto inputs = master.inputs(spec.address);
-  for (std::size_t i = 0; i < spec.modules.size(); ++i) {
-    const auto& m = spec.modules[i];
-    auto* o = out.add_modules();
-    o->set_slot(static_cast<std::uint32_t>(i));
-    o->set_name(m.name);
-    o->set_input_length(static_cast<std::uint32_t>(m.input_len));
-    o->set_output_length(static_cast<std::uint32_t>(m.output_len));
-    if (m.input_offset + m.input_len <= inputs.size()) {
-      o->set_inputs(text_of(inputs.subspan(m.input_offset, m.input_len)));
-    }
-    o->set_outputs(text_of(std::span(s.outputs).subspan(m.output_offset, m.output_len)));
-  }
+  fill_gsd_station(spec, master.inputs(spec.address), s.outputs, out);
   const auto status = master.slave_status(spec.address);
   if (status) {
     out.set_dp_state(dp::master::to_string(status->state));
@@ -46,12 +25,25 @@ void fill(const gsd::GsdMasterSlave& s, const dp::master::Master& master, v1::Gs
     out.set_data_exchanges(status->counters.data_exchanges);
     if (status->last_error) out.set_last_error(status->last_error.message());
     out.set_diagnosis(text_of({status->last_diag.data(), status->last_diag.size()}));
-    for (auto& t : gsd::unit_diag_texts(spec.device->unit_diag, ext_diag(status->last_diag))) {
+    for (auto& t :
+         gsd::unit_diag_texts(spec.device->unit_diag, gsd::ext_diagnosis(status->last_diag))) {
       out.add_diagnosis_texts(std::move(t));
     }
   }
   out.set_user_prm_data(text_of(spec.setup.user_prm_data));
   out.set_cfg(text_of(spec.setup.cfg));
+}
+
+// The GSD slave at `address`; nullptr and NOT_FOUND (naming this master's GSD slaves) in
+// `result` when there is none.
+const gsd::GsdMasterSlave* find_slave(const gsd::GsdMasterSlaves& slaves, std::uint32_t address,
+                                      grpc::Status& result) {
+  const auto* s = address <= 125 ? slaves.find(static_cast<std::uint8_t>(address)) : nullptr;
+  if (s == nullptr) {
+    result = not_found("no GSD slave at address " + std::to_string(address) +
+                       " (this master's GSD slaves: " + slaves.address_list() + ")");
+  }
+  return s;
 }
 
 std::span<const std::uint8_t> as_bytes(const std::string& s) {
@@ -72,13 +64,8 @@ grpc::Status GsdMasterService::GetSlave(grpc::ServerContext*, const v1::StationR
                                         v1::GsdMasterSlave* out) {
   grpc::Status result;
   executor_.run([&] {
-    const auto* s =
-        in->address() <= 125 ? slaves_.find(static_cast<std::uint8_t>(in->address())) : nullptr;
-    if (s == nullptr) {
-      result = not_found("no GSD slave at address " + std::to_string(in->address()) +
-                         " (this master's GSD slaves: " + slaves_.address_list() + ")");
-      return;
-    }
+    const auto* s = find_slave(slaves_, in->address(), result);
+    if (s == nullptr) return;
     fill(*s, master_(), *out);
   });
   return result;
@@ -88,13 +75,8 @@ grpc::Status GsdMasterService::SetOutputs(grpc::ServerContext*, const v1::SetGsd
                                           v1::Empty*) {
   grpc::Status result;
   executor_.run([&] {
-    const auto* s =
-        in->address() <= 125 ? slaves_.find(static_cast<std::uint8_t>(in->address())) : nullptr;
-    if (s == nullptr) {
-      result = not_found("no GSD slave at address " + std::to_string(in->address()) +
-                         " (this master's GSD slaves: " + slaves_.address_list() + ")");
-      return;
-    }
+    const auto* s = find_slave(slaves_, in->address(), result);
+    if (s == nullptr) return;
     const auto& modules = s->spec.modules;
     if (in->slot() >= modules.size()) {
       result = invalid_argument("slot", "slot " + std::to_string(in->slot()) + " outside 0.." +

@@ -2,36 +2,16 @@
 
 #include "dp/pdu/sap.h"
 #include "gsd/unit_diag.h"
+#include "rpc/gsd_modules.h"
 #include "rpc/items_watcher.h"
 #include "rpc/rs4_state.h"
 #include "rpc/service_support.h"
 #include "rpc/status.h"
 
-#include <cstdio>
 #include <string>
 
 namespace rs4sim::rpc {
 namespace {
-
-std::string hex_bytes(std::span<const std::uint8_t> bytes) {
-  std::string s;
-  char b[4];
-  for (const auto x : bytes) {
-    std::snprintf(b, sizeof b, "%02x", x);
-    s += (s.empty() ? "" : " ") + std::string(b);
-  }
-  return s;
-}
-
-// The GSD's Unit_Diag texts of the diagnosis set, "; "-separated (empty: none).
-std::string diagnosis_text(const gsd::GsdStation& s) {
-  std::string out;
-  for (const auto& t :
-       gsd::unit_diag_texts(s.spec().device->unit_diag, s.application().diagnosis_blocks())) {
-    out += (out.empty() ? "" : "; ") + t;
-  }
-  return out;
-}
 
 std::string station_list(const std::vector<gsd::GsdStation*>& stations) {
   std::string s;
@@ -58,27 +38,7 @@ constexpr AlarmKind kAlarms[] = {
 void fill(const gsd::GsdStation& s, const GsdServiceContext& c, v1::GsdStation& out) {
   const auto& spec = s.spec();
   out.set_address(s.address());
-  out.set_file(spec.file);
-  out.set_ident_number(spec.device->ident_number);
-  const auto inputs = s.application().inputs();
-  const auto outputs = s.application().outputs();
-  for (std::size_t i = 0; i < spec.modules.size(); ++i) {
-    const auto& m = spec.modules[i];
-    auto* o = out.add_modules();
-    o->set_slot(static_cast<std::uint32_t>(i));
-    o->set_name(m.name);
-    o->set_input_length(static_cast<std::uint32_t>(m.input_len));
-    o->set_output_length(static_cast<std::uint32_t>(m.output_len));
-    if (m.input_offset + m.input_len <= inputs.size()) {
-      o->set_inputs(inputs.data() + m.input_offset, m.input_len);
-    }
-    // Before the first Data_Exchange the master wrote nothing: zeros of the module's length.
-    std::string bytes(m.output_len, '\0');
-    if (m.output_offset + m.output_len <= outputs.size()) {
-      bytes.assign(reinterpret_cast<const char*>(outputs.data() + m.output_offset), m.output_len);
-    }
-    o->set_outputs(bytes);
-  }
+  fill_gsd_station(spec, s.application().inputs(), s.application().outputs(), out);
   out.set_dp_state(dp::slave::to_string(s.slave().state()));
   out.set_online(s.online());
   out.set_data_exchanges(s.application().exchanges());
@@ -128,6 +88,17 @@ grpc::Status GsdStationsService::on_station(std::uint32_t address, const Station
   return result;
 }
 
+grpc::Status GsdStationsService::with_station(std::uint32_t address, bool changes,
+                                              const std::function<void(gsd::GsdStation&)>& fn) {
+  return on_station(
+      address,
+      [&](gsd::GsdStation& s) {
+        fn(s);
+        return grpc::Status::OK;
+      },
+      changes);
+}
+
 grpc::Status GsdStationsService::ListStations(grpc::ServerContext*, const v1::Empty*,
                                               v1::ListGsdStationsResponse* out) {
   c_.executor.run([&] {
@@ -138,13 +109,7 @@ grpc::Status GsdStationsService::ListStations(grpc::ServerContext*, const v1::Em
 
 grpc::Status GsdStationsService::GetStation(grpc::ServerContext*, const v1::StationRequest* in,
                                             v1::GsdStation* out) {
-  return on_station(
-      in->address(),
-      [&](gsd::GsdStation& s) {
-        fill(s, c_, *out);
-        return grpc::Status::OK;
-      },
-      false);
+  return with_station(in->address(), false, [&](gsd::GsdStation& s) { fill(s, c_, *out); });
 }
 
 grpc::Status GsdStationsService::SetInputs(grpc::ServerContext*, const v1::SetGsdInputsRequest* in,
@@ -234,13 +199,7 @@ grpc::Status GsdStationsService::RaiseAlarm(grpc::ServerContext*,
 
 grpc::Status GsdStationsService::SetOnline(grpc::ServerContext*, const v1::SetGsdOnlineRequest* in,
                                            v1::Empty*) {
-  return on_station(
-      in->address(),
-      [&](gsd::GsdStation& s) {
-        s.set_online(in->online());
-        return grpc::Status::OK;
-      },
-      true);
+  return with_station(in->address(), true, [&](gsd::GsdStation& s) { s.set_online(in->online()); });
 }
 
 grpc::Status GsdStationsService::InjectBusFault(grpc::ServerContext*, const v1::BusFaultRequest* in,
@@ -273,13 +232,14 @@ grpc::Status GsdStationsService::ClearBusFaults(grpc::ServerContext*, const v1::
 std::unique_ptr<Watcher> gsd_watcher(const gsd::GsdStation& station) {
   return std::make_unique<ItemsWatcher>(station.address(), [&station](dp::TimePoint) {
     const auto& a = station.application();
-    return ItemsWatcher::Items{{"dp-state", dp::slave::to_string(station.slave().state())},
-                               {"online", station.online() ? "yes" : "no"},
-                               {"inputs", hex_bytes(a.inputs())},
-                               {"outputs", hex_bytes(a.outputs())},
-                               {"ext-diag", a.ext_diag() ? "on" : "off"},
-                               {"diagnosis", hex_bytes(a.diagnosis_blocks())},
-                               {"diagnosis-text", diagnosis_text(station)}};
+    return ItemsWatcher::Items{
+        {"dp-state", dp::slave::to_string(station.slave().state())},
+        {"online", station.online() ? "yes" : "no"},
+        {"inputs", gsd::io_hex(a.inputs())},
+        {"outputs", gsd::io_hex(a.outputs())},
+        {"ext-diag", a.ext_diag() ? "on" : "off"},
+        {"diagnosis", gsd::io_hex(a.diagnosis_blocks())},
+        {"diagnosis-text", gsd::diagnosis_text(*station.spec().device, a.diagnosis_blocks())}};
   });
 }
 

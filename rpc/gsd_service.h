@@ -54,6 +54,9 @@ class GsdStationsService final : public v1::GsdStations::Service {
  private:
   using StationFn = std::function<grpc::Status(gsd::GsdStation&)>;
   grpc::Status on_station(std::uint32_t address, const StationFn& fn, bool changes);
+  // on_station for a call that cannot fail once the station is found.
+  grpc::Status with_station(std::uint32_t address, bool changes,
+                            const std::function<void(gsd::GsdStation&)>& fn);
   GsdServiceContext c_;
 };
 

@@ -353,7 +353,8 @@ grpc::Status DeviceService::SetParameterSet(grpc::ServerContext*,
   return on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint now) {
     const std::string station = "station " + std::to_string(in->address());
     auto& rs4 = d.scanner();
-    const auto doc = rs4::param_doc::from_document(in->json(), rs4.parameters());
+    const auto doc = rs4::param_doc::from_document(in->json(), rs4.parameters(),
+                                                   {in->allow_partial_field()});
     if (!doc) {
       return invalid_argument("json", doc.issue.message());
     }

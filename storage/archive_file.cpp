@@ -67,6 +67,7 @@ void put_station(const SnapshotStation& in, pb::Station& out) {
     o.set_serial_number(v.serial_number);
     o.set_user(v.user);
     o.set_host(v.host);
+    if (v.simulated) o.set_simulated_ms(v.simulated->count());
   }
   out.set_current_version(in.current_version);
   for (const auto& e : in.sync_log) {
@@ -113,6 +114,7 @@ Result<SnapshotVersion> get_version(const pb::Version& v) {
   out.serial_number = v.serial_number();
   out.user = v.user();
   out.host = v.host();
+  if (v.has_simulated_ms()) out.simulated = std::chrono::milliseconds{v.simulated_ms()};
   return out;
 }
 
@@ -269,17 +271,18 @@ Result<std::string> export_json(ParameterArchive& archive, Timestamp at) {
   return encode_json(snap);
 }
 
-Result<ImportSummary> import_binary(ParameterArchive& archive,
-                                    std::span<const std::uint8_t> bytes) {
+Result<ImportSummary> import_binary(ParameterArchive& archive, std::span<const std::uint8_t> bytes,
+                                   const ImportOptions& options) {
   auto snap = with_context("import", [&] { return decode_binary(bytes); });
   if (!snap) return std::move(snap).error();
-  return archive.import_snapshot(snap.value());  // adds its own "import: " context
+  return archive.import_snapshot(snap.value(), options);  // adds its own "import: " context
 }
 
-Result<ImportSummary> import_json(ParameterArchive& archive, std::string_view text) {
+Result<ImportSummary> import_json(ParameterArchive& archive, std::string_view text,
+                                 const ImportOptions& options) {
   auto snap = with_context("import", [&] { return decode_json(text); });
   if (!snap) return std::move(snap).error();
-  return archive.import_snapshot(snap.value());  // adds its own "import: " context
+  return archive.import_snapshot(snap.value(), options);  // adds its own "import: " context
 }
 
 }  // namespace rs4sim::storage

@@ -24,7 +24,9 @@ Result<Snapshot> decode_json(std::string_view text);
 
 Result<std::vector<std::uint8_t>> export_binary(ParameterArchive& archive, Timestamp at);
 Result<std::string> export_json(ParameterArchive& archive, Timestamp at);
-Result<ImportSummary> import_binary(ParameterArchive& archive, std::span<const std::uint8_t> bytes);
-Result<ImportSummary> import_json(ParameterArchive& archive, std::string_view text);
+Result<ImportSummary> import_binary(ParameterArchive& archive, std::span<const std::uint8_t> bytes,
+                                   const ImportOptions& options = {});
+Result<ImportSummary> import_json(ParameterArchive& archive, std::string_view text,
+                                 const ImportOptions& options = {});
 
 }  // namespace rs4sim::storage

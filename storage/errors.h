@@ -58,6 +58,10 @@ using Result = boost::outcome_v2::std_result<T, ArchiveFailure>;
 // "<context>: <the code's message>".
 ArchiveFailure archive_error(ArchiveError code, std::string_view context);
 
+// The words of kNotAnArchive for an empty database opened read-only (a server's schema with no
+// tables): what a caller that can create the archive adds its hint to.
+inline constexpr std::string_view kNoArchiveYet = "holds no archive yet";
+
 // Runs f() (returning a Result) and prefixes an error's message with "<operation>: ".
 template <class F>
 auto with_context(std::string_view operation, F&& f) -> decltype(f()) {

@@ -71,9 +71,15 @@ class ParameterArchive {
 
   virtual Result<Snapshot> export_snapshot(Timestamp exported_at) = 0;
   // validate()s the snapshot, then adds it in one transaction: stations are matched by
-  // bus/address (created if new), versions appended after the existing ones (renumbered,
-  // everything else kept), the snapshot's current version becomes current.
-  virtual Result<ImportSummary> import_snapshot(const Snapshot& snapshot) = 0;
+  // bus/address (created if new); a version already there (same set, time, source and serial
+  // number) or an identical sync log entry is recognised and not added again; the others are
+  // appended after the existing versions (renumbered, everything else kept). The current set
+  // changes only as ImportOptions says; the summary says what happened per station.
+  virtual Result<ImportSummary> import_snapshot(const Snapshot& snapshot,
+                                                const ImportOptions& options) = 0;
+  Result<ImportSummary> import_snapshot(const Snapshot& snapshot) {
+    return import_snapshot(snapshot, ImportOptions{});
+  }
 
  protected:
   ParameterArchive() = default;

@@ -146,16 +146,21 @@ Result<VersionId> PgArchive::append_version(std::int64_t station, const NewVersi
   }
   p.add_bool(v.pending_download);
   p.add(v.user).add(v.host);
+  if (v.simulated) {
+    p.add(static_cast<std::int64_t>(v.simulated->count()));
+  } else {
+    p.add_null();
+  }
   // Numbered under the station's row lock, which the caller holds. The change feed's
   // notification (change_feed.h) is queued in the same transaction: PostgreSQL delivers it
   // at the commit, never for a version rolled back.
   BOOST_OUTCOME_TRY(
       r, c_->query("WITH v AS (INSERT INTO versions (station_id, number, set_id, source, "
                    "stored_at, note, serial_number, restored_from, pending_download, user_name, "
-                   "host_name) "
+                   "host_name, simulated_ms) "
                    "SELECT $1::int8, coalesce(max(number), 0) + 1, $2::int8, $3::int2, "
                    "to_timestamp($4::float8 / 1000), $5::text, $6::text, $7::int8, $8::bool, "
-                   "$9::text, $10::text "
+                   "$9::text, $10::text, $11::int8 "
                    "FROM versions WHERE station_id = $1::int8 RETURNING id) "
                    "SELECT id, pg_notify('rs4sim_versions', current_schema() || ' ' || id) "
                    "FROM v",
@@ -201,34 +206,6 @@ Result<VersionWithSet> PgArchive::version_with_set(VersionId version) {
   return read_version_with_set(r, 0);
 }
 
-Result<VersionInfo> PgArchive::store(const StoreRequest& r) {
-  return with_context("store " + label(r.station), [&]() -> Result<VersionInfo> {
-    BOOST_OUTCOME_TRY(check_request(r));
-    return write<VersionInfo>([&]() -> Result<VersionInfo> {
-      BOOST_OUTCOME_TRY(station, upsert_station(r.station, r.device_type, r.site, r.line));
-      BOOST_OUTCOME_TRY(see_serial(station, r.serial_number, r.at, r.at));
-      bool inserted = false;
-      BOOST_OUTCOME_TRY(set, intern_set(r.blob, r.crc32, r.summary, inserted));
-      if (r.skip_identical && !inserted) {
-        BOOST_OUTCOME_TRY(same, current_with_set(station, set));
-        if (same) return version_info(*same);
-      }
-      BOOST_OUTCOME_TRY(clear_pending(station));
-      NewVersion v;
-      v.set_id = set;
-      v.source = r.source;
-      v.at = r.at;
-      v.note = r.note;
-      v.serial_number = r.serial_number;
-      v.user = r.user;
-      v.host = r.host;
-      BOOST_OUTCOME_TRY(id, append_version(station, v));
-      BOOST_OUTCOME_TRY(make_current(station, id));
-      return version_info(id);
-    });
-  });
-}
-
 // One statement, so one snapshot and one round trip; the station is looked up apart only to
 // tell an unknown station from one without a set.
 Result<VersionWithSet> PgArchive::current(const StationKey& key) {
@@ -270,41 +247,14 @@ Result<VersionWithSet> PgArchive::get(VersionId version) {
   });
 }
 
-// The station's current version when it holds `set`, else nothing.
-Result<std::optional<VersionId>> PgArchive::current_with_set(std::int64_t station, SetId set) {
+Result<std::optional<VersionId>> PgArchive::current_version(std::int64_t station) {
   Params p;
-  p.add(station).add(set);
-  BOOST_OUTCOME_TRY(r, c_->query("SELECT c.version_id FROM current_versions c "
-                                 "JOIN versions v ON v.id = c.version_id "
-                                 "WHERE c.station_id = $1::int8 AND v.set_id = $2::int8",
+  p.add(station);
+  BOOST_OUTCOME_TRY(r, c_->query("SELECT version_id FROM current_versions "
+                                 "WHERE station_id = $1::int8",
                                  p, "read current version"));
   if (r.count() == 1) return std::optional<VersionId>(r.int64(0, 0));
   return std::optional<VersionId>();
-}
-
-Result<VersionInfo> PgArchive::restore(VersionId version, Timestamp at, std::string note,
-                                       const Author& by) {
-  return with_context("restore", [&]() -> Result<VersionInfo> {
-    BOOST_OUTCOME_TRY(check_note(note));
-    BOOST_OUTCOME_TRY(check_author(by));
-    return write<VersionInfo>([&]() -> Result<VersionInfo> {
-      BOOST_OUTCOME_TRY(old, version_info(version));
-      BOOST_OUTCOME_TRY(station, station_id(old.station, true));
-      BOOST_OUTCOME_TRY(clear_pending(station));
-      NewVersion v;
-      v.set_id = old.set_id;
-      v.source = VersionSource::kRestore;
-      v.at = at;
-      v.note = note;
-      v.user = by.user;
-      v.host = by.host;
-      v.restored_from = version;
-      v.pending_download = true;
-      BOOST_OUTCOME_TRY(id, append_version(station, v));
-      BOOST_OUTCOME_TRY(make_current(station, id));
-      return version_info(id);
-    });
-  });
 }
 
 Result<void> PgArchive::mark_downloaded(VersionId version) {
@@ -403,27 +353,10 @@ Result<std::vector<std::pair<std::int64_t, StationInfo>>> PgArchive::list_statio
   return out;
 }
 
-Result<std::vector<StationInfo>> PgArchive::stations() {
-  return with_context("stations", [&]() -> Result<std::vector<StationInfo>> {
-    return read<std::vector<StationInfo>>([&]() -> Result<std::vector<StationInfo>> {
-      BOOST_OUTCOME_TRY(list, list_stations());
-      std::vector<StationInfo> out;
-      out.reserve(list.size());
-      for (auto& entry : list) out.push_back(std::move(entry.second));
-      return out;
-    });
-  });
-}
-
 Result<void> PgArchive::save_proxy_state(const StationKey& station,
                                          std::span<const std::uint8_t> state, Timestamp at) {
   return with_context("save proxy state of " + label(station), [&]() -> Result<void> {
-    BOOST_OUTCOME_TRY(check_station(station));
-    if (state.empty() || state.size() > kMaxProxyStateSize) {
-      return archive_error(ArchiveError::kInvalidArgument,
-                           "state of " + std::to_string(state.size()) + " bytes (1.." +
-                               std::to_string(kMaxProxyStateSize) + " allowed)");
-    }
+    BOOST_OUTCOME_TRY(check_proxy_state(station, state));
     return write<void>([&]() -> Result<void> {
       Params p;
       p.add(station.bus).add(std::int64_t{station.address}).add(state).add(to_ms(at));

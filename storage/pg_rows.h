@@ -18,7 +18,7 @@ namespace rs4sim::storage {
 constexpr std::string_view kVersionSelect =
     "SELECT v.id, s.bus, s.address, v.number, v.set_id, p.crc32, p.size, v.source, "
     "(extract(epoch FROM v.stored_at) * 1000)::int8, v.note, v.restored_from, "
-    "v.pending_download, v.serial_number, v.user_name, v.host_name";
+    "v.pending_download, v.serial_number, v.user_name, v.host_name, v.simulated_ms";
 constexpr std::string_view kVersionFrom =
     " FROM versions v JOIN stations s ON s.id = v.station_id "
     "JOIN parameter_sets p ON p.id = v.set_id ";
@@ -47,6 +47,7 @@ inline VersionInfo read_version(const pg::Rows& r, int i) {
   v.serial_number = r.text(i, 12);
   v.user = r.text(i, 13);
   v.host = r.text(i, 14);
+  if (!r.is_null(i, 15)) v.simulated = std::chrono::milliseconds{r.int64(i, 15)};
   return v;
 }
 
@@ -61,8 +62,8 @@ inline std::vector<VersionInfo> read_versions(const pg::Rows& r) {
 // A row of version_query(..., true).
 inline VersionWithSet read_version_with_set(const pg::Rows& r, int i) {
   VersionWithSet out{read_version(r, i), {}};
-  out.set = ParameterSetRecord{out.version.set_id, out.version.crc32, r.bytes(i, 16),
-                               r.text(i, 15)};
+  out.set = ParameterSetRecord{out.version.set_id, out.version.crc32, r.bytes(i, 17),
+                               r.text(i, 16)};
   return out;
 }
 

@@ -91,6 +91,10 @@ ALTER TABLE stations ADD COLUMN site text NOT NULL DEFAULT '',
                      ADD COLUMN line text NOT NULL DEFAULT '';
 CREATE INDEX stations_by_site ON stations (site, line);
 )sql",
+    // 4 -> 5: a simulated run's own time beside the time a version was written.
+    R"sql(
+ALTER TABLE versions ADD COLUMN simulated_ms bigint;
+)sql",
 };
 
 struct SchemaState {
@@ -171,7 +175,7 @@ Result<void> prepare_schema(Connection& c, bool read_only) {
   if (read_only) {
     if (state.version == 0) {
       return archive_error(ArchiveError::kNotAnArchive,
-                           "schema " + state.schema + " holds no archive yet");
+                           "schema " + state.schema + " " + std::string(kNoArchiveYet));
     }
     return archive_error(ArchiveError::kReadOnly,
                          "schema version " + std::to_string(state.version) +

@@ -1,6 +1,7 @@
 #include "storage/request_check.h"
 
 #include "storage/crc32.h"
+#include "storage/parameter_archive.h"  // kMaxProxyStateSize
 
 #include <cstdio>
 
@@ -97,6 +98,20 @@ Result<void> check_request(const StoreRequest& r) {
   if (actual != r.crc32) {
     return archive_error(ArchiveError::kCrcMismatch,
                          "claimed " + hex32(r.crc32) + ", blob has " + hex32(actual));
+  }
+  return boost::outcome_v2::success();
+}
+
+}  // namespace rs4sim::storage
+
+namespace rs4sim::storage {
+
+Result<void> check_proxy_state(const StationKey& station, std::span<const std::uint8_t> state) {
+  BOOST_OUTCOME_TRY(check_station(station));
+  if (state.empty() || state.size() > kMaxProxyStateSize) {
+    return archive_error(ArchiveError::kInvalidArgument,
+                         "state of " + std::to_string(state.size()) + " bytes (1.." +
+                             std::to_string(kMaxProxyStateSize) + " allowed)");
   }
   return boost::outcome_v2::success();
 }

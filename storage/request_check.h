@@ -9,6 +9,7 @@
 #include "storage/types.h"
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -22,6 +23,8 @@ Result<void> check_station(const StationKey& station);
 Result<void> check_request(const StoreRequest& request);
 // A sync log entry's station and reason (a note's limit).
 Result<void> check_sync(const SyncLogEntry& entry);
+// A proxy state's station, and its size (1..kMaxProxyStateSize bytes).
+Result<void> check_proxy_state(const StationKey& station, std::span<const std::uint8_t> state);
 
 // The recorded texts (docs/storage.md "What maintenance records"): UTF-8 without NUL (what
 // both engines store alike), a comment up to kMaxNoteSize bytes, a user, host, site or line

@@ -8,6 +8,6 @@
 namespace rs4sim::storage {
 
 inline constexpr std::int64_t kArchiveApplicationId = 0x52533441;  // "RS4A"
-inline constexpr std::int64_t kArchiveSchemaVersion = 4;
+inline constexpr std::int64_t kArchiveSchemaVersion = 5;
 
 }  // namespace rs4sim::storage

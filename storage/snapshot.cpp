@@ -5,6 +5,7 @@
 #include "storage/crc32.h"
 #include "storage/request_check.h"
 
+#include <iterator>
 #include <set>
 #include <unordered_set>
 
@@ -131,6 +132,31 @@ Result<void> validate(const Snapshot& snapshot) {
     BOOST_OUTCOME_TRY(validate_station(st, set_ids));
   }
   return success();
+}
+
+}  // namespace rs4sim::storage
+
+namespace rs4sim::storage {
+
+std::vector<const ParameterSetRecord*> current_sets(const Snapshot& snapshot) {
+  std::vector<const ParameterSetRecord*> out;
+  for (const auto& station : snapshot.stations) {
+    for (const auto& v : station.versions) {
+      if (v.number != station.current_version) continue;
+      for (const auto& set : snapshot.sets) {
+        if (set.id == v.set_id) out.push_back(&set);
+      }
+    }
+  }
+  return out;
+}
+
+const char* to_string(ImportCurrent c) noexcept {
+  // In the enum's order.
+  constexpr const char* kText[] = {"current unchanged", "made current",
+                                   "current kept: a newer restore is pending download"};
+  const auto i = static_cast<std::size_t>(c);
+  return i < std::size(kText) ? kText[i] : "unknown";
 }
 
 }  // namespace rs4sim::storage

@@ -24,6 +24,7 @@ struct SnapshotVersion {
   std::string serial_number;
   std::string user;
   std::string host;
+  std::optional<std::chrono::milliseconds> simulated;  // VersionInfo::simulated
   bool operator==(const SnapshotVersion&) const = default;
 };
 
@@ -47,12 +48,44 @@ struct Snapshot {
   bool operator==(const Snapshot&) const = default;
 };
 
+// What an import does to the current set of a station it finds in the file.
+enum class ImportCurrent : std::uint8_t {
+  kUnchanged,    // the station's current version stays what it was
+  kMadeCurrent,  // the file's current version is now the station's (asked, or it had none)
+  kKeptPending,  // asked, but the station's current version is a newer restore pending download
+};
+// "current unchanged", "made current", "kept: a newer restore is pending download".
+[[nodiscard]] const char* to_string(ImportCurrent c) noexcept;
+
+struct ImportOptions {
+  // The file's current version of each station becomes the station's current one (never over
+  // a newer restore still pending download). Off: the history grows, the present stays; a
+  // station without a current version takes the file's in either case.
+  bool make_current{false};
+};
+
+struct ImportedStation {
+  StationKey key;
+  std::size_t versions_added{0};
+  std::size_t versions_present{0};  // already in the archive: same set, time, source, serial
+  std::size_t sync_log_added{0};
+  std::size_t sync_log_present{0};  // an identical entry is already logged
+  ImportCurrent current{ImportCurrent::kUnchanged};
+  std::uint32_t current_number{0};  // the station's current version after the import (0: none)
+};
+
 struct ImportSummary {
   std::size_t stations{0};
-  std::size_t versions{0};
+  std::size_t versions{0};  // added
+  std::size_t versions_present{0};
   std::size_t new_sets{0};  // sets not already in the archive
-  std::size_t sync_log_entries{0};
+  std::size_t sync_log_entries{0};  // added
+  std::size_t sync_log_present{0};
+  std::vector<ImportedStation> per_station;  // in the file's order
 };
+
+// The set of each station's current version in the file (what an import may make current).
+std::vector<const ParameterSetRecord*> current_sets(const Snapshot& snapshot);
 
 // Everything import checks before it writes: format version, each set's CRC-32, unique
 // set ids and stations, version numbers strictly increasing, every reference resolves.

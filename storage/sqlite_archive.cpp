@@ -143,23 +143,17 @@ Result<SetId> SqliteArchive::intern_set(std::span<const std::uint8_t> blob, std:
 }
 
 Result<VersionId> SqliteArchive::append_version(std::int64_t station, const NewVersion& v) {
-  std::int64_t number = 0;
-  if (v.number) {
-    number = *v.number;
-  } else {
-    BOOST_OUTCOME_TRY(
-        q,
-        db_->statement("SELECT coalesce(max(number), 0) + 1 FROM versions WHERE station_id = ?"));
-    q->bind(1, station);
-    const int rc = q->step();
-    if (rc != SQLITE_ROW) return db_->error(rc, "number new version");
-    number = q->int64(0);
-  }
+  BOOST_OUTCOME_TRY(
+      q, db_->statement("SELECT coalesce(max(number), 0) + 1 FROM versions WHERE station_id = ?"));
+  q->bind(1, station);
+  const int rc = q->step();
+  if (rc != SQLITE_ROW) return db_->error(rc, "number new version");
+  const std::int64_t number = q->int64(0);
   BOOST_OUTCOME_TRY(
       s, db_->statement(
              "INSERT INTO versions (station_id, number, set_id, source, stored_at_ms, note, "
-             "serial_number, restored_from, pending_download, user_name, host_name) "
-             "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"));
+             "serial_number, restored_from, pending_download, user_name, host_name, "
+             "simulated_ms) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"));
   s->bind(1, station);
   s->bind(2, number);
   s->bind(3, v.set_id);
@@ -175,6 +169,11 @@ Result<VersionId> SqliteArchive::append_version(std::int64_t station, const NewV
   s->bind(9, std::int64_t{v.pending_download ? 1 : 0});
   s->bind(10, v.user);
   s->bind(11, v.host);
+  if (v.simulated) {
+    s->bind(12, static_cast<std::int64_t>(v.simulated->count()));
+  } else {
+    s->bind_null(12);
+  }
   BOOST_OUTCOME_TRY(db_->run(*s, "insert version"));
   return sqlite3_last_insert_rowid(db_->handle());
 }

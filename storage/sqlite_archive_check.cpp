@@ -27,16 +27,6 @@ Result<void> SqliteArchive::insert_sync(std::int64_t station, const SyncLogEntry
   return db_->run(*s, "insert sync log entry");
 }
 
-Result<void> SqliteArchive::log_sync(const SyncLogEntry& entry) {
-  return with_context("log sync " + label(entry.station), [&]() -> Result<void> {
-    BOOST_OUTCOME_TRY(check_sync(entry));
-    BOOST_OUTCOME_TRY(tx, Transaction::begin(*db_));
-    BOOST_OUTCOME_TRY(station, upsert_station(entry.station, ""));
-    BOOST_OUTCOME_TRY(insert_sync(station, entry));
-    return tx.commit();
-  });
-}
-
 Result<std::vector<SyncLogEntry>> SqliteArchive::sync_rows(std::int64_t station,
                                                            const StationKey& key,
                                                            std::int64_t limit) {
@@ -64,17 +54,6 @@ Result<std::vector<SyncLogEntry>> SqliteArchive::sync_rows(std::int64_t station,
   }
   if (rc != SQLITE_DONE) return db_->error(rc, label(key));
   return out;
-}
-
-Result<std::vector<SyncLogEntry>> SqliteArchive::sync_log(const StationKey& key,
-                                                          std::size_t limit) {
-  return with_context("sync log", [&]() -> Result<std::vector<SyncLogEntry>> {
-    auto read = Transaction::begin_read(*db_);  // one snapshot for all reads
-    if (!read) return std::move(read).error();
-    BOOST_OUTCOME_TRY(station, station_id(key));
-    constexpr std::size_t kAll = static_cast<std::size_t>(INT64_MAX);
-    return sync_rows(station, key, static_cast<std::int64_t>(std::min(limit, kAll)));
-  });
 }
 
 Result<void> SqliteArchive::integrity_pragmas(IntegrityReport& report) {

@@ -9,45 +9,11 @@ namespace rs4sim::storage {
 using boost::outcome_v2::success;
 using sqlite::Transaction;
 
-// A new current version supersedes a restore still waiting for its download.
 Result<void> SqliteArchive::clear_pending(std::int64_t station) {
   BOOST_OUTCOME_TRY(s, db_->statement("UPDATE versions SET pending_download = 0 "
                                       "WHERE station_id = ? AND pending_download <> 0"));
   s->bind(1, station);
   return db_->run(*s, "clear pending download");
-}
-
-Result<VersionInfo> SqliteArchive::store(const StoreRequest& r) {
-  return with_context("store " + label(r.station), [&]() -> Result<VersionInfo> {
-    BOOST_OUTCOME_TRY(check_request(r));
-    BOOST_OUTCOME_TRY(tx, Transaction::begin(*db_));
-    BOOST_OUTCOME_TRY(station, upsert_station(r.station, r.device_type, r.site, r.line));
-    BOOST_OUTCOME_TRY(see_serial(station, r.serial_number, r.at, r.at));
-    bool inserted = false;
-    BOOST_OUTCOME_TRY(set, intern_set(r.blob, r.crc32, r.summary, inserted));
-    if (r.skip_identical && !inserted) {
-      BOOST_OUTCOME_TRY(same, current_with_set(station, set));
-      if (same) {
-        BOOST_OUTCOME_TRY(info, version_info(*same));
-        BOOST_OUTCOME_TRY(tx.commit());
-        return info;
-      }
-    }
-    BOOST_OUTCOME_TRY(clear_pending(station));
-    NewVersion v;
-    v.set_id = set;
-    v.source = r.source;
-    v.at = r.at;
-    v.note = r.note;
-    v.serial_number = r.serial_number;
-    v.user = r.user;
-    v.host = r.host;
-    BOOST_OUTCOME_TRY(id, append_version(station, v));
-    BOOST_OUTCOME_TRY(make_current(station, id));
-    BOOST_OUTCOME_TRY(info, version_info(id));
-    BOOST_OUTCOME_TRY(tx.commit());
-    return info;
-  });
 }
 
 Result<VersionWithSet> SqliteArchive::current(const StationKey& key) {
@@ -69,17 +35,10 @@ Result<VersionWithSet> SqliteArchive::current(const StationKey& key) {
 
 Result<std::vector<VersionInfo>> SqliteArchive::history(const StationKey& key) {
   return with_context("history", [&]() -> Result<std::vector<VersionInfo>> {
-    auto read = Transaction::begin_read(*db_);  // one snapshot for all reads
-    if (!read) return std::move(read).error();
-    BOOST_OUTCOME_TRY(station, station_id(key));
-    BOOST_OUTCOME_TRY(s, db_->statement(std::string(kVersionColumns) +
-                                        "WHERE v.station_id = ? ORDER BY v.number"));
-    s->bind(1, station);
-    std::vector<VersionInfo> out;
-    int rc = SQLITE_ROW;
-    while ((rc = s->step()) == SQLITE_ROW) out.push_back(read_version(*s));
-    if (rc != SQLITE_DONE) return db_->error(rc, label(key));
-    return out;
+    return read_in_one<std::vector<VersionInfo>>([&]() -> Result<std::vector<VersionInfo>> {
+      BOOST_OUTCOME_TRY(station, station_id(key));
+      return station_versions(station);
+    });
   });
 }
 
@@ -88,45 +47,6 @@ Result<VersionWithSet> SqliteArchive::get(VersionId version) {
     auto read = Transaction::begin_read(*db_);  // one snapshot for all reads
     if (!read) return std::move(read).error();
     return version_with_set(version);
-  });
-}
-
-// The station's current version when it holds `set`, else nothing.
-Result<std::optional<VersionId>> SqliteArchive::current_with_set(std::int64_t station, SetId set) {
-  BOOST_OUTCOME_TRY(s, db_->statement("SELECT c.version_id FROM current_versions c "
-                                      "JOIN versions v ON v.id = c.version_id "
-                                      "WHERE c.station_id = ? AND v.set_id = ?"));
-  s->bind(1, station);
-  s->bind(2, set);
-  const int rc = s->step();
-  if (rc == SQLITE_ROW) return std::optional<VersionId>(s->int64(0));
-  if (rc != SQLITE_DONE) return db_->error(rc, "read current version");
-  return std::optional<VersionId>();
-}
-
-Result<VersionInfo> SqliteArchive::restore(VersionId version, Timestamp at, std::string note,
-                                           const Author& by) {
-  return with_context("restore", [&]() -> Result<VersionInfo> {
-    BOOST_OUTCOME_TRY(check_note(note));
-    BOOST_OUTCOME_TRY(check_author(by));
-    BOOST_OUTCOME_TRY(tx, Transaction::begin(*db_));
-    BOOST_OUTCOME_TRY(old, version_info(version));
-    BOOST_OUTCOME_TRY(station, station_id(old.station));
-    BOOST_OUTCOME_TRY(clear_pending(station));
-    NewVersion v;
-    v.set_id = old.set_id;
-    v.source = VersionSource::kRestore;
-    v.at = at;
-    v.note = note;
-    v.user = by.user;
-    v.host = by.host;
-    v.restored_from = version;
-    v.pending_download = true;
-    BOOST_OUTCOME_TRY(id, append_version(station, v));
-    BOOST_OUTCOME_TRY(make_current(station, id));
-    BOOST_OUTCOME_TRY(info, version_info(id));
-    BOOST_OUTCOME_TRY(tx.commit());
-    return info;
   });
 }
 
@@ -217,18 +137,6 @@ Result<std::vector<std::pair<std::int64_t, StationInfo>>> SqliteArchive::list_st
     info.serials = std::move(seen);
   }
   return out;
-}
-
-Result<std::vector<StationInfo>> SqliteArchive::stations() {
-  return with_context("stations", [&]() -> Result<std::vector<StationInfo>> {
-    auto read = Transaction::begin_read(*db_);  // one snapshot for all reads
-    if (!read) return std::move(read).error();
-    BOOST_OUTCOME_TRY(list, list_stations());
-    std::vector<StationInfo> out;
-    out.reserve(list.size());
-    for (auto& entry : list) out.push_back(std::move(entry.second));
-    return out;
-  });
 }
 
 }  // namespace rs4sim::storage

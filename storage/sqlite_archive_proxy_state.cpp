@@ -14,12 +14,7 @@ using sqlite::Transaction;
 Result<void> SqliteArchive::save_proxy_state(const StationKey& station,
                                              std::span<const std::uint8_t> state, Timestamp at) {
   return with_context("save proxy state of " + label(station), [&]() -> Result<void> {
-    BOOST_OUTCOME_TRY(check_station(station));
-    if (state.empty() || state.size() > kMaxProxyStateSize) {
-      return archive_error(ArchiveError::kInvalidArgument,
-                           "state of " + std::to_string(state.size()) + " bytes (1.." +
-                               std::to_string(kMaxProxyStateSize) + " allowed)");
-    }
+    BOOST_OUTCOME_TRY(check_proxy_state(station, state));
     BOOST_OUTCOME_TRY(tx, Transaction::begin(*db_));
     BOOST_OUTCOME_TRY(s,
                       db_->statement("INSERT INTO proxy_state (bus, address, state, saved_at_ms) "

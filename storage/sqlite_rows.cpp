@@ -18,6 +18,7 @@ VersionInfo read_version(const sqlite::Statement& s) {
   v.serial_number = s.text(12);
   v.user = s.text(13);
   v.host = s.text(14);
+  if (!s.is_null(15)) v.simulated = std::chrono::milliseconds{s.int64(15)};
   return v;
 }
 

@@ -83,6 +83,11 @@ ALTER TABLE stations ADD COLUMN site TEXT NOT NULL DEFAULT '';
 ALTER TABLE stations ADD COLUMN line TEXT NOT NULL DEFAULT '';
 CREATE INDEX stations_by_site ON stations (site, line);
 )sql",
+    // 4 -> 5: a simulated run's own time beside the wall-clock time a version was written
+    // (NULL: a real device's set, and every version written before schema 5).
+    R"sql(
+ALTER TABLE versions ADD COLUMN simulated_ms INTEGER;
+)sql",
 };
 
 // Runs a script of several statements (DDL of one migration step), each prepared in turn.

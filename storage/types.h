@@ -45,7 +45,11 @@ struct StoreRequest {
   std::uint32_t crc32{0};  // the caller's CRC-32/ISO-HDLC claim, checked
   std::string summary;     // decoded summary (text or JSON), stored as given
   VersionSource source{VersionSource::kUpload};
+  // When it was written: the wall clock at the write, never later (docs/storage.md "Times").
   Timestamp at{};
+  // A simulated run's own time at the write (its clock since the run's zero), recorded beside
+  // `at`; none for a real device's set.
+  std::optional<std::chrono::milliseconds> simulated;
   std::string note;     // the comment: why this version exists (a user's words, the proxy's scenario)
   std::string user;     // who stored it (the OS user unless given)
   std::string host;     // from which computer
@@ -75,6 +79,7 @@ struct VersionInfo {
   std::uint32_t size{0};
   VersionSource source{VersionSource::kUpload};
   Timestamp at{};
+  std::optional<std::chrono::milliseconds> simulated;  // StoreRequest::simulated
   std::string note;
   std::optional<VersionId> restored_from;
   bool pending_download{false};

@@ -19,6 +19,8 @@ struct ArchiveOptions {
   std::string svg;                      // show/diff: --svg FILE
   std::string file;                     // export/import: the file
   std::string format;                   // export/import: "binary", "json" or "" (by extension)
+  bool make_current = false;            // import: --make-current
+  bool allow_partial_field = false;     // import, restore: --allow-partial-field
   std::string note;                     // restore: --note; note: the TEXT
   std::string user;                     // restore: --user (default: the OS user)
   std::string site;                     // list: --site filter
@@ -42,6 +44,12 @@ int run_note(const ArchiveOptions& o);
 int run_watch(const ArchiveOptions& o);
 int run_verify(const ArchiveOptions& o);
 int run_copy(const ArchiveOptions& o);
+
+// Every station's versions in `s`.
+std::size_t version_count(const storage::Snapshot& s);
+
+// `archive init`: creates an empty archive (or brings an older one to this schema).
+int run_init(const ArchiveOptions& o);
 
 // The station's current version id, if it has one.
 std::optional<storage::VersionId> current_of(storage::ParameterArchive& archive,

@@ -3,8 +3,8 @@
 // transaction of the target, then verified against the source.
 #include "app/cli/archive_commands.h"
 
+#include <algorithm>
 #include <iostream>
-#include <map>
 
 namespace rs4sim::app::archive {
 namespace {
@@ -26,75 +26,73 @@ const storage::SnapshotStation* station_of(const storage::Snapshot& s,
   return nullptr;
 }
 
-// Position (0-based) of version `number` in `versions`, or -1.
-long position_of(const std::vector<storage::SnapshotVersion>& versions, std::uint32_t number) {
-  for (std::size_t i = 0; i < versions.size(); ++i) {
-    if (versions[i].number == number) return static_cast<long>(i);
+const storage::SnapshotVersion* numbered(const storage::SnapshotStation& s, std::uint32_t n) {
+  for (const auto& v : s.versions) {
+    if (v.number == n) return &v;
   }
-  return -1;
+  return nullptr;
 }
 
-// What the copy must have added to the target: every station of the source, its versions
-// appended after the ones the target had (same bytes, time, source, note, serial number,
-// pending flag and restore reference), the source's current version current, its sync log
-// at the end of the target's. An empty string when it holds; else the first difference.
+// The bytes and every recorded field of a version (its restore reference by the bytes and
+// time of the version it names), so that one snapshot's version is found in another's.
+bool same_version(const storage::Snapshot& a, const storage::SnapshotStation& as,
+                  const storage::SnapshotVersion& av, const storage::Snapshot& b,
+                  const storage::SnapshotStation& bs, const storage::SnapshotVersion& bv) {
+  const auto* ab = set_of(a, av.set_id);
+  const auto* bb = set_of(b, bv.set_id);
+  if (ab == nullptr || bb == nullptr || ab->blob != bb->blob || av.at != bv.at ||
+      av.source != bv.source || av.note != bv.note || av.serial_number != bv.serial_number ||
+      av.user != bv.user || av.host != bv.host) {
+    return false;
+  }
+  const auto* ar = numbered(as, av.restored_from);
+  const auto* br = numbered(bs, bv.restored_from);
+  if (ar == nullptr || br == nullptr) return ar == br;
+  return ar->at == br->at && set_of(a, ar->set_id)->blob == set_of(b, br->set_id)->blob;
+}
+
+const storage::SnapshotVersion* find_in(const storage::Snapshot& source,
+                                        const storage::SnapshotStation& s,
+                                        const storage::SnapshotVersion& v,
+                                        const storage::Snapshot& target,
+                                        const storage::SnapshotStation& t) {
+  for (const auto& tv : t.versions) {
+    if (same_version(source, s, v, target, t, tv)) return &tv;
+  }
+  return nullptr;
+}
+
+// What the copy must have given the target (the import recognises what it already holds,
+// docs/storage.md "Import"): every station of the source with each of its versions (same
+// bytes, time, source, note, serial number, author and restore reference) and sync log
+// entries; a station new to the target with the source's current version current. An empty
+// string when it holds; else the first difference.
 std::string check_copy(const storage::Snapshot& source, const storage::Snapshot& before,
                        const storage::Snapshot& after) {
   for (const auto& s : source.stations) {
     const auto label = station_text(s.key);
     const auto* t = station_of(after, s.key);
     if (t == nullptr) return label + " is missing";
-    const auto* old = station_of(before, s.key);
-    const std::size_t base = old == nullptr ? 0 : old->versions.size();
-    const std::size_t logs = old == nullptr ? 0 : old->sync_log.size();
-    if (t->versions.size() != base + s.versions.size()) return label + ": version count";
-    // An empty site or line in the source keeps the target's (as a store without them does).
-    if ((!s.site.empty() && t->site != s.site) || (!s.line.empty() && t->line != s.line)) {
-      return label + ": site or line";
-    }
-    for (std::size_t i = 0; i < s.versions.size(); ++i) {
-      const auto& sv = s.versions[i];
-      const auto& tv = t->versions[base + i];
-      const auto what = label + " version " + std::to_string(sv.number);
-      const auto* sb = set_of(source, sv.set_id);
-      const auto* tb = set_of(after, tv.set_id);
-      if (sb == nullptr || tb == nullptr || sb->blob != tb->blob || sb->crc32 != tb->crc32) {
-        return what + ": parameter set";
-      }
-      if (sv.at != tv.at || sv.source != tv.source || sv.note != tv.note ||
-          sv.serial_number != tv.serial_number || sv.pending_download != tv.pending_download ||
-          sv.user != tv.user || sv.host != tv.host) {
-        return what + ": metadata";
-      }
-      const long sr = sv.restored_from == 0 ? -1 : position_of(s.versions, sv.restored_from);
-      const long tr = tv.restored_from == 0 ? -1 : position_of(t->versions, tv.restored_from);
-      if ((sr < 0) != (tr < 0) || (sr >= 0 && static_cast<std::size_t>(tr) != base +
-                                                  static_cast<std::size_t>(sr))) {
-        return what + ": restored_from";
+    for (const auto& v : s.versions) {
+      if (find_in(source, s, v, after, *t) == nullptr) {
+        return label + " version " + std::to_string(v.number) + " is missing";
       }
     }
-    if (s.current_version != 0) {
-      const long sc = position_of(s.versions, s.current_version);
-      const long tc = position_of(t->versions, t->current_version);
-      if (sc < 0 || tc < 0 || static_cast<std::size_t>(tc) != base + static_cast<std::size_t>(sc)) {
-        return label + ": current version";
-      }
+    const auto* current = numbered(s, s.current_version);
+    const auto* now = numbered(*t, t->current_version);
+    if (station_of(before, s.key) == nullptr && current != nullptr &&
+        (now == nullptr || !same_version(source, s, *current, after, *t, *now))) {
+      return label + ": current version";
     }
-    if (t->sync_log.size() != logs + s.sync_log.size()) return label + ": sync log length";
     for (std::size_t i = 0; i < s.sync_log.size(); ++i) {
       auto expected = s.sync_log[i];
-      auto got = t->sync_log[logs + i];
-      expected.station = got.station = {};
-      if (!(expected == got)) return label + ": sync log entry " + std::to_string(i + 1);
+      expected.station = s.key;
+      if (std::find(t->sync_log.begin(), t->sync_log.end(), expected) == t->sync_log.end()) {
+        return label + ": sync log entry " + std::to_string(i + 1) + " is missing";
+      }
     }
   }
   return {};
-}
-
-std::size_t version_total(const storage::Snapshot& s) {
-  std::size_t n = 0;
-  for (const auto& station : s.stations) n += station.versions.size();
-  return n;
 }
 
 }  // namespace
@@ -131,14 +129,16 @@ int run_copy(const ArchiveOptions& o) {
     JsonWriter w(2);
     w.begin_object().field("from", archive_shown(from)).field("to", archive_shown(to));
     w.field("stations", summary.stations).field("versions", summary.versions);
-    w.field("new_sets", summary.new_sets).field("sync_log_entries", summary.sync_log_entries);
-    w.field("verified", true);
+    w.field("versions_present", summary.versions_present).field("new_sets", summary.new_sets);
+    w.field("sync_log_entries", summary.sync_log_entries);
+    w.field("sync_log_present", summary.sync_log_present).field("verified", true);
     std::cout << w.end_object().str() << "\n";
   } else {
-    std::cout << "copied " << summary.stations << " stations, " << version_total(snapshot)
-              << " versions (" << summary.new_sets << " new sets), " << summary.sync_log_entries
-              << " sync log entries from " << archive_shown(from) << " to " << archive_shown(to)
-              << "; verified\n";
+    std::cout << "copied " << summary.stations << " stations, " << version_count(snapshot)
+              << " versions (" << summary.versions << " added, " << summary.versions_present
+              << " already present; " << summary.new_sets << " new sets), "
+              << summary.sync_log_entries << " sync log entries added from "
+              << archive_shown(from) << " to " << archive_shown(to) << "; verified\n";
   }
   return 0;
 }

@@ -6,6 +6,7 @@
 #include "rs4/report/parameter_summary.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 
 namespace rs4sim::app::archive {
@@ -77,6 +78,22 @@ std::pair<storage::VersionWithSet, storage::VersionWithSet> select_diffed(
   return {unwrap(a.get(*previous)), std::move(current)};
 }
 
+// The archive keeps a set in the transfer form, whose identity is zero (the device owns it,
+// docs/rs4-scanner.md); the version records the device it came from. Shown one way: the
+// parameters name the device the header names, not "device type 0 / serial 0".
+DecodedSet with_identity(DecodedSet decoded, storage::ParameterArchive& a,
+                         const storage::VersionInfo& v) {
+  if (!decoded.set || decoded.set->identity != rs4::scanner::Identity{}) return decoded;
+  auto& id = decoded.set->identity;
+  id.serial_number = static_cast<std::uint32_t>(std::strtoul(v.serial_number.c_str(), nullptr, 10));
+  for (const auto& s : unwrap(a.stations())) {
+    if (s.key == v.station) {
+      id.device_type = static_cast<std::uint16_t>(std::strtoul(s.device_type.c_str(), nullptr, 0));
+    }
+  }
+  return decoded;
+}
+
 }  // namespace
 
 int run_show(const ArchiveOptions& o) {
@@ -84,6 +101,7 @@ int run_show(const ArchiveOptions& o) {
   const auto v = select_shown(*a, o);
   const bool is_current = current_of(*a, v.version.station) == v.version.id;
   const auto decoded = decode_set(v.set);
+  const auto shown = with_identity(decoded, *a, v.version);
   if (!o.svg.empty()) {
     const auto set = require_set(v);
     write_file_atomically(
@@ -100,8 +118,8 @@ int run_show(const ArchiveOptions& o) {
     const std::string summary = decoded.set ? rs4::report::summary_json(*decoded.set) : "";
     if (v.set.summary != summary) w.field("stored_summary", v.set.summary);
     w.end_object().key("parameters");
-    if (decoded.set) {
-      w.raw(summary);
+    if (shown.set) {
+      w.raw(rs4::report::summary_json(*shown.set));
     } else {
       w.null().field("decode_error", decoded.error);
     }
@@ -110,8 +128,8 @@ int run_show(const ArchiveOptions& o) {
     return 0;
   }
   print_version(v, is_current);
-  if (decoded.set) {
-    std::cout << "parameters\n" << rs4::report::summary_text(*decoded.set);
+  if (shown.set) {
+    std::cout << "parameters\n" << rs4::report::summary_text(*shown.set);
   } else {
     std::cout << "parameters: " << decoded.error << "\n";
   }

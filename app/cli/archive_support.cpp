@@ -2,6 +2,7 @@
 
 #include "app/runtime/archive_path.h"
 #include "dp/pdu/sap.h"
+#include "rs4/param_doc/field_coverage.h"
 #include "rs4/scanner/parameter_codec.h"
 #include "storage/open_archive.h"
 #include "storage/sqlite_archive.h"  // default_archive_path
@@ -66,7 +67,13 @@ std::unique_ptr<storage::ParameterArchive> open_archive(const CommonOptions& o, 
   auto opened = storage::open_archive(location, options);
   if (opened.has_error()) {
     // The message names the location already, a server without its password.
-    throw ArchiveCommandError("archive: " + opened.error().message);
+    std::string text = "archive: " + opened.error().message;
+    if (server && opened.error().code == storage::ArchiveError::kNotAnArchive &&
+        text.find(storage::kNoArchiveYet) != std::string::npos) {
+      text += "; start one with: rs4sim archive init --archive '" +
+              storage::display_location(location) + "'";
+    }
+    throw ArchiveCommandError(text);
   }
   return std::move(opened).value();
 }
@@ -85,6 +92,12 @@ rs4::scanner::ParameterSet require_set(const storage::VersionWithSet& v) {
     throw ArchiveCommandError("version " + std::to_string(v.version.id) + ": " + decoded.error);
   }
   return *decoded.set;
+}
+
+void refuse_partial_field(std::span<const std::uint8_t> blob, bool allow, const std::string& what) {
+  if (const auto issue = rs4::param_doc::check_stored_set(blob, {allow})) {
+    throw ArchiveCommandError(what + ": " + issue->message() + " (--allow-partial-field)");
+  }
 }
 
 std::string source_name(storage::VersionSource s) { return storage::to_string(s); }

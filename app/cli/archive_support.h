@@ -11,6 +11,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -59,6 +60,9 @@ struct DecodedSet {
 DecodedSet decode_set(const storage::ParameterSetRecord& record);
 // Same, but an undecodable set is an error (needed for a diff or a picture).
 rs4::scanner::ParameterSet require_set(const storage::VersionWithSet& v);
+// An RS4 set about to become current whose protective field has segments left unset:
+// ArchiveCommandError "WHAT: field pair N: ..." unless `allow` (--allow-partial-field).
+void refuse_partial_field(std::span<const std::uint8_t> blob, bool allow, const std::string& what);
 
 std::string source_name(storage::VersionSource s);       // "upload", "download", ...
 std::string direction_name(storage::SyncDirection d);    // "none", "upload", ...

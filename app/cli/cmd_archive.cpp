@@ -1,4 +1,4 @@
-// `rs4sim archive list|show|history|diff|export|import|copy|restore|note|watch|verify`: the
+// `rs4sim archive list|show|history|diff|export|import|copy|restore|note|watch|verify|init`: the
 // parameter
 // archive (docs/storage.md) for people and scripts (docs/archive-cli.md).
 #include "app/cli/archive_commands.h"
@@ -44,6 +44,19 @@ void file_options(CLI::App& sub, ArchiveOptions& o) {
   sub.add_option("--format", o.format, "binary or json (default: by the file's extension)");
 }
 
+constexpr const char* kPartialFieldHelp =
+    "accept an RS4 set whose protective field has segments left unset (0 mm: no protective "
+    "field on those beams); without it such a set is not made current";
+constexpr const char* kMakeCurrentHelp =
+    "the file's current version of each station becomes its current one (never over a newer "
+    "restore pending download); without it the history grows and the current sets stay";
+
+void import_options(CLI::App& sub, ArchiveOptions& o) {
+  file_options(sub, o);
+  sub.add_flag("--allow-partial-field", o.allow_partial_field, kPartialFieldHelp);
+  sub.add_flag("--make-current", o.make_current, kMakeCurrentHelp);
+}
+
 void copy_options(CLI::App& sub, ArchiveOptions& o) {
   sub.add_option("--from", o.from, "the archive copied from (a SQLite file or PostgreSQL URI)");
   sub.add_option("--to", o.to, "the archive copied into (created when it is a missing file)");
@@ -53,6 +66,7 @@ void restore_options(CLI::App& sub, ArchiveOptions& o) {
   sub.add_option("ID", o.ids, "the version id to restore (the ID column)");
   sub.add_option("--note", o.note, "note stored with the new version");
   sub.add_option("--user", o.user, "the user the new version records (default: the OS user)");
+  sub.add_flag("--allow-partial-field", o.allow_partial_field, kPartialFieldHelp);
 }
 
 void list_options(CLI::App& sub, ArchiveOptions& o) {
@@ -80,7 +94,8 @@ constexpr SubCommand<ArchiveOptions> kSubCommands[] = {
     {"show", "One version with its decoded parameters", show_options, archive::run_show},
     {"diff", "Field-level difference of two versions", diff_options, archive::run_diff},
     {"export", "Write the whole archive to a file", file_options, archive::run_export},
-    {"import", "Add the contents of an export file", file_options, archive::run_import},
+    {"import", "Add an export file's history (what is already there is not added again)",
+     import_options, archive::run_import},
     {"copy", "Add one archive's whole history to another, verified (SQLite <-> PostgreSQL)",
      copy_options, archive::run_copy},
     {"restore", "Make an old version current again (pending download)", restore_options,
@@ -90,11 +105,13 @@ constexpr SubCommand<ArchiveOptions> kSubCommands[] = {
      watch_options, archive::run_watch},
     {"verify", "Integrity check of the archive (exit 1 on problems)", no_options,
      archive::run_verify},
+    {"init", "Create an empty archive (a SQLite file, or the tables in a PostgreSQL database)",
+     no_options, archive::run_init},
 };
 
 const CommandRegistration kRegistration{
     "archive", "The parameter archive: list, show, history, diff, export, import, copy, restore, "
-    "note, watch, verify",
+    "note, watch, verify, init",
     [](CLI::App& cmd) -> Action { return sub_commands(cmd, kSubCommands, common_options); }};
 
 }  // namespace

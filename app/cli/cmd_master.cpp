@@ -219,9 +219,13 @@ int run(MasterCliOptions& o) {
   PlcPlugin plc(restart_pulse(o));
   std::vector<MasterPlugin*> plugins{&plc};
   if (!o.no_proxy) {
-    const std::string path =
-        o.archive.empty() ? storage::default_archive_path().string()
-                          : checked_archive_path(o.archive);
+    o.proxy.simulated = o.link.link == LinkKind::kMemory;
+    const std::string path = master_archive_location(
+        o.archive.empty() ? "" : checked_archive_path(o.archive), o.proxy.simulated);
+    if (path == ":memory:") {
+      std::cerr << "rs4sim: --link memory: the proxy's archive is in memory only (--archive FILE "
+                   "keeps its versions, --keep-proxy-state its retentive state)\n";
+    }
     auto opened = storage::open_archive(path);
     if (!opened) {
       std::cerr << "rs4sim: archive: " << opened.error().message << std::endl;
@@ -271,7 +275,11 @@ Action setup(CLI::App& cmd) {
   cmd.add_flag("--proxy-enable", o->proxy_enable,
                "with --no-proxy: set Proxy-Enable anyway (the RS4s then wait for a proxy)");
   cmd.add_option("--archive", o->archive,
-                 "the parameter archive (default $XDG_DATA_HOME/rs4sim/archive.sqlite3)");
+                 "the parameter archive (default $XDG_DATA_HOME/rs4sim/archive.sqlite3; on "
+                 "--link memory one in memory only)");
+  cmd.add_flag("--keep-proxy-state", o->proxy.keep_proxy_state,
+               "--link memory: keep the proxy's retentive state in the archive for the next "
+               "simulation (a real link always keeps it)");
   cmd.add_option("--bus", o->proxy.bus, "the bus name under which the archive keeps the RS4s")
       ->capture_default_str();
   cmd.add_option("--max-syncs", o->proxy.max_parallel,

@@ -30,6 +30,7 @@ struct ParamOptions {
   std::string document;  // set DOCUMENT
   std::string password;  // set --password
   bool dry_run = false;
+  bool allow_partial_field = false;  // set --allow-partial-field
   bool json = false;
   std::vector<std::string> operands;  // diff A B
   std::string svg;
@@ -107,7 +108,7 @@ int run_set_live(const ParamOptions& o, const rs4::scanner::Password& password) 
   if (!live.set) throw param::ParamCommandError(o.port + ": " + live.error);
   ParameterSet updated;
   try {
-    updated = param::read_document_file(o.document, *live.set);
+    updated = param::read_document_file(o.document, *live.set, {o.allow_partial_field});
   } catch (const param::ParamCommandError& e) {
     return refused(e.what());
   }
@@ -132,7 +133,7 @@ int run_set(const ParamOptions& o) {
   param::SetFile target = param::read_set_file(o.file);
   ParameterSet updated;
   try {
-    updated = param::read_document_file(o.document, target.set);
+    updated = param::read_document_file(o.document, target.set, {o.allow_partial_field});
   } catch (const param::ParamCommandError& e) {
     return refused(e.what());
   }
@@ -183,6 +184,9 @@ void set_options(CLI::App& sub, ParamOptions& o) {
   sub.add_option("--password", o.password,
                  "the password for writing (never part of a document; empty: none)");
   sub.add_flag("--dry-run", o.dry_run, "validate and show the changes, write nothing");
+  sub.add_flag("--allow-partial-field", o.allow_partial_field,
+               "accept a protective field with segments left unset (0 mm: no protective field "
+               "on those beams); without it such a document is refused");
   sub.add_flag("--json", o.json, "print one JSON document");
 }
 

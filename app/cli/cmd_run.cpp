@@ -118,6 +118,9 @@ Action setup(CLI::App& cmd) {
   cmd.add_option("--module", d.modules,
                  "with --gsd: a module by its GSD name, repeat it in slot order (a compact "
                  "station's one module is implicit)");
+  cmd.add_option("--f-dest-add", d.f_dest_add,
+                 "with --gsd: the F_Dest_Add of the station's PROFIsafe F-modules (their address "
+                 "switch; default: the GSD's F_Dest_Add)");
   cmd.add_option("--bus", o->bus,
                  "a whole bus from FILE.json: {\"stations\": [{\"address\": 4, \"device\": "
                  "\"rs4\"}, {\"address\": 5, \"gsd\": \"X.gse\", \"modules\": [...]}]}, all on "

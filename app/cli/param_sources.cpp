@@ -72,8 +72,9 @@ void write_set_file(const std::string& path, const SetFile& file) {
   archive::write_file_atomically(path, std::string(file_bytes.begin(), file_bytes.end()));
 }
 
-ParameterSet read_document_file(const std::string& path, const ParameterSet& base) {
-  const auto result = rs4::param_doc::from_document(read_file(path), base);
+ParameterSet read_document_file(const std::string& path, const ParameterSet& base,
+                                const rs4::param_doc::CoverageOptions& coverage) {
+  const auto result = rs4::param_doc::from_document(read_file(path), base, coverage);
   if (!result) throw ParamCommandError(path + ": " + result.issue.message());
   return *result.set;
 }
@@ -108,7 +109,8 @@ Operand read_operand(const std::string& operand, const std::string& archive_file
     return {read_archive_current(station), true, false};
   }
   if (ends_with(operand, ".json")) {
-    return {read_document_file(operand, rs4::scanner::factory_default()), false, false};
+    // A diff only shows: a partial protective field is one of the differences it shows.
+    return {read_document_file(operand, rs4::scanner::factory_default(), {true}), false, false};
   }
   const SetFile file = read_set_file(operand);
   return {file.set, !file.transfer_form, !file.transfer_form};

@@ -5,6 +5,7 @@
 // RS232 port of a running `rs4sim run`. And the --password of `param set`.
 
 #include "app/cli/command.h"
+#include "rs4/param_doc/field_coverage.h"
 #include "rs4/scanner/parameter_set.h"
 
 #include <optional>
@@ -29,9 +30,11 @@ SetFile read_set_file(const std::string& path);
 void write_set_file(const std::string& path, const SetFile& file);
 
 // A document file applied to `base` (factory default for a diff); ParamCommandError with
-// "FILE: $.path: reason" when it is refused.
+// "FILE: $.path: reason" when it is refused (a protective field left partly unset too, unless
+// `coverage` allows it: --allow-partial-field).
 rs4::scanner::ParameterSet read_document_file(const std::string& path,
-                                              const rs4::scanner::ParameterSet& base);
+                                              const rs4::scanner::ParameterSet& base,
+                                              const rs4::param_doc::CoverageOptions& coverage);
 
 struct ArchiveStation {
   std::string archive;  // --archive FILE; empty: the default archive

@@ -4,10 +4,9 @@
 // [GridScan manual §10.3] step by step (each answer compared with the manual's bytes), and a
 // power cycle that runs the power-up again. Exits 0 when every step did what the manual says.
 #include "app/demos/demos.h"
-#include "app/demos/narration.h"
+#include "app/demos/line_demo.h"
 #include "app/runtime/run_options.h"
 #include "gridscan/device.h"
-#include "stream/memory_line.h"
 
 #include <ostream>
 #include <string>
@@ -26,12 +25,9 @@ Bytes with_sync(std::initializer_list<std::uint8_t> rest) {
   return b;
 }
 
-class Demo {
+class Demo : public LineDemo<gridscan::Device> {
  public:
-  Demo(std::ostream& out, bool realtime, RunSession& session)
-      : run_(run_until(realtime, session)), n_(out, clock_, run_, Narration::Stamp::kMilliseconds) {
-    line_.set_peer([this](const stream::LineFrame& f) { arrived_.push_back(f.bytes); });
-  }
+  using LineDemo::LineDemo;
   int run() {
     n_.print(
         "GridScan/Pro SI, RC: 22 elements, blanking, door open; 115200 8N1 "
@@ -42,18 +38,12 @@ class Demo {
   }
 
  private:
-  RunUntil run_until(bool realtime, RunSession& session) {
-    RunUntil run = [this](const std::function<bool()>& done, dp::Duration limit) {
-      return line_.run_until(clock_.now() + limit, done);
-    };
-    return in_session(std::move(run), clock_, realtime, session);
-  }
   // Waits for the next frame from the curtain and checks it against the manual's bytes.
   bool expect(const Bytes& want, dp::Duration limit, const std::string& what) {
     if (!run_([this] { return !arrived_.empty(); }, limit)) {
       return n_.check(false, "no frame from the curtain: expected " + what);
     }
-    const Bytes frame = arrived_.front();
+    const Bytes frame = arrived_.front().bytes;
     arrived_.erase(arrived_.begin());
     n_.say("curtain -> " + hex(frame) + "  " + what);
     return n_.check(frame == want, what + ": the manual prints " + hex(want));
@@ -106,20 +96,13 @@ class Demo {
            power_up("mains on again: the power-up runs again, SeqCnt from 0");
   }
 
-  stream::ManualClock clock_;
-  gridscan::Device device_{gridscan::Options{}};
-  stream::MemoryLine line_{clock_, device_};
-  std::vector<Bytes> arrived_;
   bool started_ = false;
-  RunUntil run_;
-  Narration n_;
 };
 
 }  // namespace
 
 int run_gridscan_demo(RunSession& session, std::ostream& out, const DemoOptions& options) {
-  Demo demo(out, options.realtime, session);
-  return demo.run();
+  return run_line_demo<Demo>(session, out, options, gridscan::Options{});
 }
 
 }  // namespace rs4sim::app

@@ -7,10 +7,9 @@
 // (metron/wire_table.h): the manual's figures of them were lost. Exits 0 when every step did
 // what the manual says.
 #include "app/demos/demos.h"
-#include "app/demos/narration.h"
+#include "app/demos/line_demo.h"
 #include "app/runtime/run_options.h"
 #include "metron/device.h"
-#include "stream/memory_line.h"
 
 #include <ostream>
 #include <string>
@@ -25,12 +24,9 @@ using Bytes = std::vector<std::uint8_t>;
 // #12 Request OSSD status: start, length 1, command, checksum (~ of command and data).
 const Bytes kOssdStatus{0x02, 0x01, 0x0C, 0xF3};
 
-class Demo {
+class Demo : public LineDemo<metron::Device> {
  public:
-  Demo(std::ostream& out, bool realtime, RunSession& session)
-      : run_(run_until(realtime, session)), n_(out, clock_, run_, Narration::Stamp::kMilliseconds) {
-    line_.set_peer([this](const stream::LineFrame& f) { arrived_.push_back(f); });
-  }
+  using LineDemo::LineDemo;
   int run() {
     n_.print(
         "METRON Receiver, 24 beams, slave line mode without node, 19200 8E1, scan cycle "
@@ -42,12 +38,6 @@ class Demo {
   }
 
  private:
-  RunUntil run_until(bool realtime, RunSession& session) {
-    RunUntil run = [this](const std::function<bool()>& done, dp::Duration limit) {
-      return line_.run_until(clock_.now() + limit, done);
-    };
-    return in_session(std::move(run), clock_, realtime, session);
-  }
   // Sends `request`, waits for one reply (none within 100 ms: nullptr).
   const stream::LineFrame* ask(const Bytes& request, const std::string& what) {
     n_.say("host -> " + hex(request) + "  " + what);
@@ -123,20 +113,13 @@ class Demo {
                   "the next message is answered again");
   }
 
-  stream::ManualClock clock_;
-  metron::Device device_{metron::Options{}};
-  stream::MemoryLine line_{clock_, device_};
-  std::vector<stream::LineFrame> arrived_;
   stream::TimePoint sent_{};
-  RunUntil run_;
-  Narration n_;
 };
 
 }  // namespace
 
 int run_metron_demo(RunSession& session, std::ostream& out, const DemoOptions& options) {
-  Demo demo(out, options.realtime, session);
-  return demo.run();
+  return run_line_demo<Demo>(session, out, options, metron::Options{});
 }
 
 }  // namespace rs4sim::app

@@ -6,10 +6,9 @@
 // exception 07 and a broadcast nobody answers [Modbus serial line V1.02 §2.1]. Exits 0 when every
 // step did what the manual says.
 #include "app/demos/demos.h"
-#include "app/demos/narration.h"
+#include "app/demos/line_demo.h"
 #include "app/runtime/run_options.h"
 #include "polaris/device.h"
-#include "stream/memory_line.h"
 
 #include <ostream>
 #include <string>
@@ -44,12 +43,9 @@ polaris::Options demo_options() {
 // FC 3, 10 registers from 0x2000 (the FL4 block), slave 1 [Polaris manual §8.2.3].
 const Bytes kReadFl4{0x01, 0x03, 0x20, 0x00, 0x00, 0x0A, 0xCE, 0x0D};
 
-class Demo {
+class Demo : public LineDemo<polaris::Device> {
  public:
-  Demo(std::ostream& out, bool realtime, RunSession& session)
-      : run_(run_until(realtime, session)), n_(out, clock_, run_, Narration::Stamp::kMilliseconds) {
-    line_.set_peer([this](const stream::LineFrame& f) { arrived_.push_back(f.bytes); });
-  }
+  using LineDemo::LineDemo;
   int run() {
     n_.print(
         "Polaris PL 10, 40 beams, FL4, Modbus RTU slave 1, 19200 8N1, hole detection "
@@ -61,19 +57,13 @@ class Demo {
   }
 
  private:
-  RunUntil run_until(bool realtime, RunSession& session) {
-    RunUntil run = [this](const std::function<bool()>& done, dp::Duration limit) {
-      return line_.run_until(clock_.now() + limit, done);
-    };
-    return in_session(std::move(run), clock_, realtime, session);
-  }
   // Sends `request` and waits for the barrier's answer (nullopt-like empty: none in 100 ms).
   Bytes ask(const Bytes& request, const std::string& what) {
     n_.say("master -> " + hex(request) + "  " + what);
     arrived_.clear();
     line_.write(request);
     if (!run_([this] { return !arrived_.empty(); }, 100ms)) return {};
-    const Bytes reply = arrived_.front();
+    const Bytes reply = arrived_.front().bytes;
     n_.say("barrier -> " + hex(reply));
     return reply;
   }
@@ -129,20 +119,12 @@ class Demo {
     const Bytes reply = ask({0x00, 0x03, 0x20, 0x00, 0x00, 0x02, 0xCE, 0x1A}, "FC 3 to slave 0");
     return n_.check(reply.empty(), "no answer within 100 ms");
   }
-
-  stream::ManualClock clock_;
-  polaris::Device device_{demo_options()};
-  stream::MemoryLine line_{clock_, device_};
-  std::vector<Bytes> arrived_;
-  RunUntil run_;
-  Narration n_;
 };
 
 }  // namespace
 
 int run_polaris_demo(RunSession& session, std::ostream& out, const DemoOptions& options) {
-  Demo demo(out, options.realtime, session);
-  return demo.run();
+  return run_line_demo<Demo>(session, out, options, demo_options());
 }
 
 }  // namespace rs4sim::app

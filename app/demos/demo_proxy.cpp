@@ -11,18 +11,19 @@ namespace {
 
 // The demo's RS4 and its proxy start new in every run, so the demo keeps the Proxy-FB's
 // retentive record in memory only (`persist` off); `rs4sim master` keeps it in the archive.
-// Its versions record the OS user and this computer, as `rs4sim master`'s without --user.
-proxy::SchedulerConfig scheduler_config(const rs4::device::Rs4Segment& segment) {
+// Its versions are dated by the wall clock at each write, the simulated time beside it, and
+// record the OS user and this computer, as `rs4sim master`'s without --user.
+proxy::SchedulerConfig scheduler_config() {
   proxy::Recording recording;
   recording.author = local_author("");
-  return proxy::SchedulerConfig{"demo", 1, wall_at_zero(segment.now()), false, recording};
+  return proxy::SchedulerConfig{"demo", 1, wall_now, true, false, recording};
 }
 
 }  // namespace
 
 DemoProxy::DemoProxy(rs4::device::Rs4Segment& segment, storage::ParameterArchive& archive)
     : segment_(segment),
-      scheduler_(archive, scheduler_config(segment)),
+      scheduler_(archive, scheduler_config()),
       driver_(scheduler_, *this),
       sync_(scheduler_.add(segment.rs4_address())) {
   segment_.set_observer([this](const dp::master::MasterEvent& e) { on_event(e); });

@@ -379,6 +379,19 @@ bool device_exchange(Demo& d, storage::ParameterArchive& archive) {
   return d.restart_pulse(1);
 }
 
+// The closing line: where the demo's sets are, under which bus, and the command that lists
+// them (every `rs4sim archive` command defaults to bus "default"; the demo's is "demo").
+std::string archive_line(const std::string& archive, const storage::StationKey& station) {
+  if (archive.empty()) {
+    return "archive: in memory only, gone with the demo (--archive FILE keeps its sets, under "
+           "bus " + station.bus + ")";
+  }
+  const auto where = storage::display_location(archive);
+  return "archive: the demo's sets are in " + where + ", bus " + station.bus + ": rs4sim archive "
+         "history --archive '" + where + "' --bus " + station.bus + " --address " +
+         std::to_string(station.address);
+}
+
 }  // namespace
 
 int run_rs4_demo(RunSession& session, std::ostream& out, const DemoOptions& options) {
@@ -425,9 +438,7 @@ int run_rs4_demo(RunSession& session, std::ostream& out, const DemoOptions& opti
   if (capture) {
     out << "capture: " << capture->records() << " telegrams in " << options.capture.file << "\n";
   }
-  if (!options.archive.empty())
-    out << "archive: the demo's sets are in " << storage::display_location(options.archive)
-        << "\n";
+  out << archive_line(options.archive, d.proxy_.station()) << "\n";
   session.finish();
   out.flush();
   if (interrupted) return kInterruptedExit;

@@ -100,19 +100,13 @@ class Reader {
 // The keys of a station, as the `rs4sim run` options without the dashes.
 constexpr const char* kKeys[] = {"address", "device", "gsd", "modules", "ident", "cfg",
                                  "boot-time", "command-time", "adapter-response-time",
-                                 "serial-number", "state", "rs232", "pc-adapter"};
+                                 "serial-number", "state", "rs232", "pc-adapter", "f-dest-add"};
 // The byte devices' options: those devices are not DP stations.
 constexpr const char* kByteKeys[] = {"baud", "format", "elements", "beams", "model",
                                      "mode", "blocked", "door", "node"};
 
-BusStation read_station(const Reader& r, const Value& v, const std::string& path) {
-  if (!v.has_struct_value()) r.fail(path, "expected an object, got " + kind_of(v));
-  const auto& fields = v.struct_value().fields();
-  std::vector<std::string> keys;
-  for (const auto& [k, value] : fields) keys.push_back(k);
-  std::sort(keys.begin(), keys.end());  // the first refused key does not depend on map order
-  BusStation s;
-  s.path = path;
+// Refuses a key no station takes (the byte devices' options with their own reason).
+void check_keys(const Reader& r, const std::vector<std::string>& keys, const std::string& path) {
   for (const auto& key : keys) {
     const std::string at = json::member_path(path, key);
     if (std::find(std::begin(kByteKeys), std::end(kByteKeys), key) != std::end(kByteKeys)) {
@@ -125,30 +119,37 @@ BusStation read_station(const Reader& r, const Value& v, const std::string& path
       r.fail(at, "unknown key (a station takes: " + known + ")");
     }
   }
+}
+
+// One key's value into the station (a known key: check_keys came first).
+void read_key(const Reader& r, const std::string& key, const Value& x, const std::string& at,
+              BusStation& s) {
   DeviceOptions& o = s.options;
-  for (const auto& key : keys) {
-    const Value& x = fields.at(key);
-    const std::string at = json::member_path(path, key);
-    if (key == "address") {
-      // a slave in operation: 0..125, as `run --address` [docs/decisions.md#rs4-address-126]
-      o.address = static_cast<int>(r.integer(x, at, 0, dp::pdu::sap::kMaxSlaveAddress));
-    }
-    if (key == "device") s.device = r.text(x, at);
-    if (key == "gsd") o.gsd = r.existing_file(x, at);
-    if (key == "modules") o.modules = r.texts(x, at);
-    if (key == "ident") o.ident = r.text(x, at);
-    if (key == "cfg") o.cfg = r.text(x, at);
-    if (key == "boot-time") o.boot_time_ms = static_cast<int>(r.integer(x, at, 0, 3'600'000));
-    if (key == "command-time") o.command_time_ms = static_cast<int>(r.integer(x, at, 0, 120'000));
-    if (key == "adapter-response-time") {
-      o.response_time_ms = static_cast<int>(r.integer(x, at, 0, 1000));
-    }
-    if (key == "serial-number") o.serial_numbers = {r.integer(x, at, 1, 4'294'967'295LL)};
-    if (key == "state") o.state_files = {r.file_name(x, at)};
-    if (key == "rs232") o.rs232 = r.text(x, at);
-    if (key == "pc-adapter") o.pc_adapter = r.text(x, at);
+  if (key == "address") {
+    // a slave in operation: 0..125, as `run --address` [docs/decisions.md#rs4-address-126]
+    o.address = static_cast<int>(r.integer(x, at, 0, dp::pdu::sap::kMaxSlaveAddress));
   }
-  if (!o.address) r.fail(path, "\"address\" is missing");
+  if (key == "device") s.device = r.text(x, at);
+  if (key == "gsd") o.gsd = r.existing_file(x, at);
+  if (key == "modules") o.modules = r.texts(x, at);
+  if (key == "ident") o.ident = r.text(x, at);
+  if (key == "cfg") o.cfg = r.text(x, at);
+  if (key == "boot-time") o.boot_time_ms = static_cast<int>(r.integer(x, at, 0, 3'600'000));
+  if (key == "command-time") o.command_time_ms = static_cast<int>(r.integer(x, at, 0, 120'000));
+  if (key == "adapter-response-time") {
+    o.response_time_ms = static_cast<int>(r.integer(x, at, 0, 1000));
+  }
+  if (key == "serial-number") o.serial_numbers = {r.integer(x, at, 1, 4'294'967'295LL)};
+  if (key == "state") o.state_files = {r.file_name(x, at)};
+  if (key == "rs232") o.rs232 = r.text(x, at);
+  if (key == "pc-adapter") o.pc_adapter = r.text(x, at);
+  if (key == "f-dest-add") o.f_dest_add = static_cast<int>(r.integer(x, at, 1, 65534));
+}
+
+// The station's device: given, or "generic" for a slave from its GSD or ident; one that can be
+// on a DP bus.
+void check_device(const Reader& r, BusStation& s, const std::string& path) {
+  const DeviceOptions& o = s.options;
   if (s.device.empty()) {
     if (o.gsd.empty() && o.ident.empty()) {
       r.fail(path, "\"device\" is missing (or give \"gsd\" for a slave from its GSD file)");
@@ -166,6 +167,20 @@ BusStation read_station(const Reader& r, const Value& v, const std::string& path
     r.fail(path + ".device",
            "\"" + json::cut(s.device) + "\" is not a DP station and cannot be on a DP bus");
   }
+}
+
+BusStation read_station(const Reader& r, const Value& v, const std::string& path) {
+  if (!v.has_struct_value()) r.fail(path, "expected an object, got " + kind_of(v));
+  const auto& fields = v.struct_value().fields();
+  std::vector<std::string> keys;
+  for (const auto& [k, value] : fields) keys.push_back(k);
+  std::sort(keys.begin(), keys.end());  // the first refused key does not depend on map order
+  check_keys(r, keys, path);
+  BusStation s;
+  s.path = path;
+  for (const auto& key : keys) read_key(r, key, fields.at(key), json::member_path(path, key), s);
+  if (!s.options.address) r.fail(path, "\"address\" is missing");
+  check_device(r, s, path);
   return s;
 }
 

@@ -1,30 +1,13 @@
 #include "app/runtime/master_gsd.h"
 
 #include "app/runtime/usage_error.h"
-#include "gsd/unit_diag.h"
+#include "gsd/check_report.h"
 
 #include <charconv>
-#include <cstdio>
 #include <map>
 
 namespace rs4sim::app {
 namespace {
-
-std::string hex_bytes(std::span<const std::uint8_t> bytes) {
-  std::string s;
-  char b[4];
-  for (const auto x : bytes) {
-    std::snprintf(b, sizeof b, "%02x", x);
-    s += (s.empty() ? "" : " ") + std::string(b);
-  }
-  return s;
-}
-
-std::string hex16(std::uint16_t v) {
-  char b[8];
-  std::snprintf(b, sizeof b, "0x%04X", v);
-  return b;
-}
 
 // "ADDR:REST" → (ADDR, REST); the address is decimal 0..125 ([IEC 61158-4-3 addresses, SAPs]:
 // the master polls 0..125). REST is everything after the first ':', so a file name or a module
@@ -47,20 +30,6 @@ std::pair<std::uint8_t, std::string> split_address(const std::string& option,
                      " is outside 0..125 ([IEC 61158-4-3 addresses, SAPs])");
   }
   return {static_cast<std::uint8_t>(address), value.substr(colon + 1)};
-}
-
-constexpr std::size_t kStandardDiagBytes = 6;  // [IEC 61158-6-3 Slave_Diag]
-
-// The Slave_Diag DU after its 6 standard bytes.
-std::span<const std::uint8_t> ext_diag(const dp::fdl::DataUnit& diag) {
-  if (diag.size() <= kStandardDiagBytes) return {};
-  return {diag.data() + kStandardDiagBytes, diag.size() - kStandardDiagBytes};
-}
-
-std::string joined(const std::vector<std::string>& texts) {
-  std::string out;
-  for (const auto& t : texts) out += (out.empty() ? "" : "; ") + t;
-  return out;
 }
 
 const char* state_name(std::optional<dp::master::PollState> s) {
@@ -110,15 +79,15 @@ void GsdMasterReport::start(const MasterReport& report, dp::TimePoint now) const
     for (const auto& m : spec.modules) {
       names += (names.empty() ? "\"" : ", \"") + m.name + (m.preset ? "\" (preset)" : "\"");
     }
-    const std::string ident = hex16(spec.device->ident_number);
+    const std::string ident = gsd::hex16(spec.device->ident_number);
     report.custom(now, spec.address, "GSD slave", "gsd",
                   spec.file + ", ident " + ident + ", modules " + names + ", Chk_Cfg " +
-                      hex_bytes(spec.setup.cfg) + ", User_Prm_Data " +
-                      hex_bytes(spec.setup.user_prm_data),
+                      gsd::io_hex(spec.setup.cfg) + ", User_Prm_Data " +
+                      gsd::io_hex(spec.setup.user_prm_data),
                   {{"file", spec.file},
                    {"ident", ident},
-                   {"cfg", hex_bytes(spec.setup.cfg)},
-                   {"user_prm_data", hex_bytes(spec.setup.user_prm_data)},
+                   {"cfg", gsd::io_hex(spec.setup.cfg)},
+                   {"user_prm_data", gsd::io_hex(spec.setup.user_prm_data)},
                    {"inputs_length", static_cast<std::int64_t>(spec.setup.input_len)},
                    {"outputs_length", static_cast<std::int64_t>(spec.setup.output_len)}});
   }
@@ -147,8 +116,8 @@ void GsdMasterReport::update(const dp::master::Master& master, const MasterRepor
     const auto in = master.inputs(a);
     if (dx && !std::equal(in.begin(), in.end(), shown.inputs.begin(), shown.inputs.end())) {
       shown.inputs.assign(in.begin(), in.end());
-      report.custom(now, a, "GSD slave", "inputs", "inputs " + hex_bytes(in),
-                    {{"inputs", hex_bytes(in)}});
+      report.custom(now, a, "GSD slave", "inputs", "inputs " + gsd::io_hex(in),
+                    {{"inputs", gsd::io_hex(in)}});
     }
   }
 }
@@ -158,16 +127,16 @@ void GsdMasterReport::diagnosis(const dp::master::Master& master, const MasterRe
                                 dp::TimePoint now, const gsd::GsdMasterSlave& s, Shown& shown) {
   const auto status = master.slave_status(s.spec.address);
   if (!status) return;
-  const auto ext = ext_diag(status->last_diag);
+  const auto ext = gsd::ext_diagnosis(status->last_diag);
   if (std::equal(ext.begin(), ext.end(), shown.diag.begin(), shown.diag.end())) return;
   shown.diag.assign(ext.begin(), ext.end());
-  auto texts = joined(gsd::unit_diag_texts(s.spec.device->unit_diag, ext));
+  auto texts = gsd::diagnosis_text(*s.spec.device, ext);
   if (texts == shown.diag_text) return;
   shown.diag_text = texts;
-  report.custom(
-      now, s.spec.address, "GSD slave", "diagnosis",
-      "diagnosis " + (texts.empty() ? std::string("cleared") : texts) + " (" + hex_bytes(ext) + ")",
-      {{"ext_diag", hex_bytes(ext)}, {"texts", texts}});
+  report.custom(now, s.spec.address, "GSD slave", "diagnosis",
+                "diagnosis " + (texts.empty() ? std::string("cleared") : texts) + " (" +
+                    gsd::io_hex(ext) + ")",
+                {{"ext_diag", gsd::io_hex(ext)}, {"texts", texts}});
 }
 
 void GsdMasterReport::stopped(const dp::master::Master& master, const MasterReport& report,
@@ -181,13 +150,13 @@ void GsdMasterReport::stopped(const dp::master::Master& master, const MasterRepo
         status ? static_cast<std::int64_t>(status->counters.data_exchanges) : 0;
     report.custom(now, a, "GSD slave", "stop",
                   std::string("end: DP ") + state_name(state) + ", data exchanges " +
-                      std::to_string(exchanges) + ", inputs " + hex_bytes(master.inputs(a)) +
-                      ", outputs " + hex_bytes(s.outputs),
+                      std::to_string(exchanges) + ", inputs " + gsd::io_hex(master.inputs(a)) +
+                      ", outputs " + gsd::io_hex(s.outputs),
                   {{"dp", std::string(state_name(state))},
                    {"data_exchange", dx},
                    {"data_exchanges", exchanges},
-                   {"inputs", hex_bytes(master.inputs(a))},
-                   {"outputs", hex_bytes(s.outputs)}});
+                   {"inputs", gsd::io_hex(master.inputs(a))},
+                   {"outputs", gsd::io_hex(s.outputs)}});
   }
 }
 

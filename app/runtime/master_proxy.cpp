@@ -3,6 +3,7 @@
 #include "app/runtime/master_report.h"
 #include "app/runtime/progress_bar.h"
 #include "rpc/archive_service.h"
+#include "storage/sqlite_archive.h"  // default_archive_path
 
 #include <algorithm>
 #include <chrono>
@@ -10,13 +11,13 @@
 #include <variant>
 
 namespace rs4sim::app {
-// The wall-clock time of dp::TimePoint{} for the archive's timestamps (the cores read no clock).
-storage::Timestamp wall_at_zero(dp::TimePoint now) {
-  const auto wall =
-      std::chrono::time_point_cast<std::chrono::milliseconds>(std::chrono::system_clock::now());
-  return storage::Timestamp{
-      wall.time_since_epoch() -
-      std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch())};
+storage::Timestamp wall_now() {
+  return std::chrono::time_point_cast<std::chrono::milliseconds>(std::chrono::system_clock::now());
+}
+
+std::string master_archive_location(const std::string& given, bool simulated) {
+  if (!given.empty()) return given;
+  return simulated ? std::string(":memory:") : storage::default_archive_path().string();
 }
 
 proxy::RecordResult to_record_result(const dp::master::Dpv1Result& r) {
@@ -58,7 +59,9 @@ std::optional<proxy::Step> compare_read_of(proxy::Step first) {
 ProxyPlugin::ProxyPlugin(storage::ParameterArchive& archive, const ProxyPluginOptions& options)
     : archive_(archive),
       options_(options),
-      scheduler_(archive, proxy::SchedulerConfig{options.bus, options.max_parallel, {}, true,
+      scheduler_(archive, proxy::SchedulerConfig{options.bus, options.max_parallel, wall_now,
+                                                 options.simulated,
+                                                 !options.simulated || options.keep_proxy_state,
                                                  options.recording}),
       driver_(scheduler_, *this) {}
 
@@ -76,11 +79,7 @@ ServiceList ProxyPlugin::services(const ServiceContext& context) {
     return std::chrono::duration_cast<std::chrono::nanoseconds>(clock.now().time_since_epoch())
         .count();
   };
-  const auto wall = [] {
-    return std::chrono::time_point_cast<std::chrono::milliseconds>(
-        std::chrono::system_clock::now());
-  };
-  archive_service_ = std::make_shared<rpc::ArchiveService>(archive_, context.executor, wall,
+  archive_service_ = std::make_shared<rpc::ArchiveService>(archive_, context.executor, wall_now,
                                                            options_.archive_location);
   return {std::make_shared<rpc::ProxyService>(std::move(source), *feed_, context.executor),
           archive_service_};
@@ -103,11 +102,8 @@ void ProxyPlugin::publish_changes(dp::TimePoint now) {
   }
 }
 
-void ProxyPlugin::start(rs4::device::Rs4MasterStation& station, dp::TimePoint now) {
+void ProxyPlugin::start(rs4::device::Rs4MasterStation& station, dp::TimePoint) {
   station_ = &station;
-  // The archive's dates: wall-clock UTC whatever clock the run's loop has (a real link's
-  // steady clock counts from boot, the simulated one from 1 h).
-  scheduler_.set_wall_at_zero(wall_at_zero(now));
   for (const auto a : station.slave_addresses()) {
     scheduler_.add(a);
     station.set_proxy_enable(a, true);

@@ -19,9 +19,9 @@
 
 namespace rs4sim::app {
 
-// The wall-clock time of dp::TimePoint{} when the clock reads `now` (ProxySyncConfig::
-// wall_at_zero: the archive's timestamps; the cores read no clock).
-storage::Timestamp wall_at_zero(dp::TimePoint now);
+// The wall clock the proxy's archive writes are dated by (ProxySyncConfig::wall_clock; the
+// cores read no clock): UTC now, in ms.
+storage::Timestamp wall_now();
 // A DPV1 outcome as the proxy sees it, with ERROR_CODE_SFC as the S7 RET_VAL W#16#80xx
 // ([RS4 manual §6.4], proxy/record.h, [docs/decisions.md#proxy-error-code-sfc]).
 proxy::RecordResult to_record_result(const dp::master::Dpv1Result& r);
@@ -33,7 +33,17 @@ struct ProxyPluginOptions {
   proxy::Recording recording{};
   // What --archive named: the Archive service's WatchVersions opens its own feed on it.
   std::string archive_location;
+  // --link memory: the run's time is simulated (recorded beside each version), and the
+  // retentive record stays in memory unless keep_proxy_state (--keep-proxy-state): the next
+  // simulation starts as a new plant (docs/master.md "Proxy").
+  bool simulated = false;
+  bool keep_proxy_state = false;
 };
+
+// Where `rs4sim master` keeps its archive: `given` (--archive), else the user's default plant
+// archive on a real link, else (--link memory) a private in-memory one, so a simulation never
+// writes into the plant's archive unless asked.
+std::string master_archive_location(const std::string& given, bool simulated);
 
 class ProxyPlugin final : public MasterPlugin, private proxy::RecordChannel {
  public:

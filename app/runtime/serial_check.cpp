@@ -124,34 +124,52 @@ std::string nothing_answered_advice(bool pty, const std::string& port, const std
          "and rate, or plug in a loopback";
 }
 
-int serial_check(const SerialCheckOptions& o, std::ostream& out, std::ostream& err) {
-  const auto rate = dp::parse_baud_rate(o.baud);
-  const int fd = ::open(o.port.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0) {
-    err << "rs4sim: serial-check: " << o.port << ": " << std::strerror(errno) << std::endl;
-    return 1;
-  }
-  struct Closer {
-    int fd;
-    ~Closer() { ::close(fd); }
-  } closer{fd};
+namespace {
+
+// The port opened and configured for the PROFIBUS line at `rate` (8E1), and what
+// configure_serial and tune_adapter noted.
+struct OpenPort {
+  int fd = -1;
   stream::SerialSetup setup;
   std::vector<std::string> notes;
+
+  OpenPort() = default;
+  OpenPort(const OpenPort&) = delete;
+  OpenPort& operator=(const OpenPort&) = delete;
+  ~OpenPort() {
+    if (fd >= 0) ::close(fd);
+  }
+  [[nodiscard]] stream::LogFn note() {
+    return [this](const std::string& s) { notes.push_back(s); };
+  }
+};
+
+// False (the reason on `err`) when the port does not open or take the line settings.
+bool open_port(const SerialCheckOptions& o, dp::BaudRate rate, OpenPort& port, std::ostream& err) {
+  port.fd = ::open(o.port.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+  if (port.fd < 0) {
+    err << "rs4sim: serial-check: " << o.port << ": " << std::strerror(errno) << std::endl;
+    return false;
+  }
   try {
-    setup = stream::configure_serial(fd, dp::link::profibus_line(*rate), o.port,
-                                     [&](const std::string& s) { notes.push_back(s); });
+    port.setup =
+        stream::configure_serial(port.fd, dp::link::profibus_line(rate), o.port, port.note());
   } catch (const std::exception& e) {
     err << "rs4sim: serial-check: " << e.what() << std::endl;
-    return 1;
+    return false;
   }
-  const std::string tty = stream::tty_name(fd);
+  return true;
+}
+
+// The port, its adapter (tuned for low latency) and the rate the driver reports.
+void print_port(const SerialCheckOptions& o, dp::BaudRate rate, OpenPort& port, std::ostream& out) {
+  const std::string tty = stream::tty_name(port.fd);
   const bool other = !tty.empty() && "/dev/" + tty != o.port;
   out << "port " << o.port << (other ? " (/dev/" + tty + ")" : "") << "\n";
-  if (setup.is_pty) {
+  if (port.setup.is_pty) {
     out << "  adapter: none, a pseudo-terminal (no line, no adapter latency)\n";
   } else {
-    const auto a = stream::tune_adapter(
-        fd, tty, [&](const std::string& s) { notes.push_back(s); }, o.sysfs);
+    const auto a = stream::tune_adapter(port.fd, tty, port.note(), o.sysfs);
     out << "  driver: " << (a.driver.empty() ? "unknown (not in sysfs)" : a.driver) << "\n"
         << "  latency timer: "
         << (a.latency_timer_ms ? std::to_string(*a.latency_timer_ms) + " ms"
@@ -160,11 +178,13 @@ int serial_check(const SerialCheckOptions& o, std::ostream& out, std::ostream& e
         << (a.low_latency() ? "yes" : "NO") << "\n"
         << "  RS-485 mode (TIOCSRS485): " << (a.rs485 ? "on" : "not offered by the driver") << "\n";
   }
-  out << "  rate: asked " << dp::bits_per_second(*rate) << " bit/s, driver reports "
-      << setup.actual_baud << " bit/s\n";
-  for (const auto& n : notes) out << "  note: " << n << "\n";
+  out << "  rate: asked " << dp::bits_per_second(rate) << " bit/s, driver reports "
+      << port.setup.actual_baud << " bit/s\n";
+  for (const auto& n : port.notes) out << "  note: " << n << "\n";
+}
 
-  // The FDL_Status request: SD1 DA SA FC=0x49 FCS ED [IEC 61158-4-3 frame formats].
+// The FDL_Status request: SD1 DA SA FC=0x49 FCS ED [IEC 61158-4-3 frame formats].
+std::vector<std::uint8_t> fdl_status_request(const SerialCheckOptions& o) {
   std::vector<std::uint8_t> request;
   dp::fdl::encode(
       dp::fdl::make_data_telegram(
@@ -172,69 +192,106 @@ int serial_check(const SerialCheckOptions& o, std::ostream& out, std::ostream& e
           dp::fdl::FrameControl::request(dp::fdl::RequestFunction::kFdlStatus, false, false),
           std::nullopt, std::nullopt, {}),
       request);
-  const double bps = dp::bits_per_second(*rate);
+  return request;
+}
+
+// What came back for one request before its timeout.
+struct Answer {
+  Clock::time_point sent{};
+  std::optional<Clock::time_point> echo_at, reply_at;
+  std::size_t reply_chars = 0;
+};
+
+// Reads until the station's reply or the timeout; our own request coming back is an echo.
+void await_answer(int fd, const SerialCheckOptions& o, Answer& answer) {
+  dp::fdl::Decoder decoder;
+  Collector got;
+  const auto deadline = answer.sent + std::chrono::milliseconds(o.timeout_ms);
+  while (!answer.reply_at && Clock::now() < deadline) {
+    pollfd p{fd, POLLIN, 0};
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+    if (::poll(&p, 1, static_cast<int>(std::max<std::int64_t>(left.count(), 1))) <= 0) continue;
+    std::uint8_t buf[512];
+    const ssize_t n = ::read(fd, buf, sizeof buf);
+    if (n <= 0) continue;
+    const auto at = Clock::now();
+    decoder.feed(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)), got);
+    for (const auto& t : got.frames) {
+      if (t.fc.is_request() && t.da == o.address && t.sa == o.master) {
+        // Our own request: a loopback plug (or an echo).
+        answer.echo_at = answer.echo_at.value_or(at);
+      } else if (t.sa == o.address && !t.fc.is_request()) {
+        answer.reply_at = at;
+        answer.reply_chars = dp::fdl::encoded_size(t);
+      }
+    }
+    got.frames.clear();
+  }
+}
+
+// The requests' turnarounds beyond the wire time, and how each request ended.
+struct Turnarounds {
+  dp::link::TurnaroundStats stats;
+  int replies = 0, echoes = 0, silent = 0;
+};
+
+// Sends o.count requests one after the other; false (the reason on `err`) when a write fails.
+bool measure(const SerialCheckOptions& o, dp::BaudRate rate, const OpenPort& port,
+             Turnarounds& result, std::ostream& err) {
+  const auto request = fdl_status_request(o);
+  const double bps = dp::bits_per_second(rate);
   // A pseudo-terminal has no wire: its bytes arrive at memory speed.
   const auto wire = [&](std::size_t chars) {
-    if (setup.is_pty) return std::chrono::nanoseconds(0);
+    if (port.setup.is_pty) return std::chrono::nanoseconds(0);
     return std::chrono::nanoseconds(
         static_cast<std::int64_t>(static_cast<double>(chars) * 11 * 1e9 / bps));
   };
-  dp::link::TurnaroundStats stats;
-  int replies = 0, echoes = 0, silent = 0;
-  (void)tcflush(fd, TCIOFLUSH);
+  (void)tcflush(port.fd, TCIOFLUSH);
   for (int i = 0; i < o.count; ++i) {
-    dp::fdl::Decoder decoder;
-    Collector got;
-    const auto sent = Clock::now();
-    if (::write(fd, request.data(), request.size()) != static_cast<ssize_t>(request.size())) {
+    Answer answer;
+    answer.sent = Clock::now();
+    if (::write(port.fd, request.data(), request.size()) != static_cast<ssize_t>(request.size())) {
       err << "rs4sim: serial-check: write: " << std::strerror(errno) << std::endl;
-      return 1;
+      return false;
     }
-    const auto deadline = sent + std::chrono::milliseconds(o.timeout_ms);
-    std::optional<Clock::time_point> echo_at, reply_at;
-    std::size_t reply_chars = 0;
-    while (!reply_at && Clock::now() < deadline) {
-      pollfd p{fd, POLLIN, 0};
-      const auto left =
-          std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
-      if (::poll(&p, 1, static_cast<int>(std::max<std::int64_t>(left.count(), 1))) <= 0) continue;
-      std::uint8_t buf[512];
-      const ssize_t n = ::read(fd, buf, sizeof buf);
-      if (n <= 0) continue;
-      const auto at = Clock::now();
-      decoder.feed(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)), got);
-      for (const auto& t : got.frames) {
-        if (t.fc.is_request() && t.da == o.address && t.sa == o.master) {
-          echo_at = echo_at.value_or(at);  // our own request: a loopback plug (or an echo)
-        } else if (t.sa == o.address && !t.fc.is_request()) {
-          reply_at = at;
-          reply_chars = dp::fdl::encoded_size(t);
-        }
-      }
-      got.frames.clear();
-    }
-    if (reply_at) {
-      ++replies;
-      stats.record(*reply_at - sent - wire(request.size()) - wire(reply_chars));
-    } else if (echo_at) {
-      ++echoes;
-      stats.record(*echo_at - sent - wire(request.size()));
+    await_answer(port.fd, o, answer);
+    if (answer.reply_at) {
+      ++result.replies;
+      result.stats.record(*answer.reply_at - answer.sent - wire(request.size()) -
+                          wire(answer.reply_chars));
+    } else if (answer.echo_at) {
+      ++result.echoes;
+      result.stats.record(*answer.echo_at - answer.sent - wire(request.size()));
     } else {
-      ++silent;
+      ++result.silent;
     }
   }
+  return true;
+}
+
+}  // namespace
+
+int serial_check(const SerialCheckOptions& o, std::ostream& out, std::ostream& err) {
+  const auto rate = dp::parse_baud_rate(o.baud);
+  OpenPort port;
+  if (!open_port(o, *rate, port, err)) return 1;
+  print_port(o, *rate, port, out);
+  Turnarounds t;
+  if (!measure(o, *rate, port, t, err)) return 1;
   out << "turnaround: " << o.count << " FDL_Status requests to station " << o.address << ": "
-      << replies << " replies, " << echoes << " loopback echoes, " << silent << " unanswered\n";
-  if (stats.count() == 0) {
+      << t.replies << " replies, " << t.echoes << " loopback echoes, " << t.silent
+      << " unanswered\n";
+  if (t.stats.count() == 0) {
     err << "rs4sim: serial-check: "
-        << nothing_answered_advice(setup.is_pty, o.port, o.baud, o.address) << std::endl;
+        << nothing_answered_advice(port.setup.is_pty, o.port, o.baud, o.address) << std::endl;
     return 1;
   }
   const auto ms = [](std::int64_t ns) { return ms_text(static_cast<double>(ns) / 1e6); };
-  out << "  beyond the wire time: p50 " << ms(stats.quantile_ns(0.5)) << " ms, p99 "
-      << ms(stats.quantile_ns(0.99)) << " ms, max " << ms(stats.max_ns()) << " ms"
-      << (replies > 0 ? " (both ends of the line)" : " (the adapter, there and back)") << "\n";
-  print_slot_time_table(out, slot_time_table(std::chrono::nanoseconds(stats.max_ns())));
+  out << "  beyond the wire time: p50 " << ms(t.stats.quantile_ns(0.5)) << " ms, p99 "
+      << ms(t.stats.quantile_ns(0.99)) << " ms, max " << ms(t.stats.max_ns()) << " ms"
+      << (t.replies > 0 ? " (both ends of the line)" : " (the adapter, there and back)") << "\n";
+  print_slot_time_table(out, slot_time_table(std::chrono::nanoseconds(t.stats.max_ns())));
   out.flush();
   return 0;
 }

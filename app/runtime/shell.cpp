@@ -175,6 +175,88 @@ class LinkRunner {
   std::optional<stream::ByteRunner> byte_runner_;
 };
 
+// The device's second port (the RS4's RS232 interface): its own transport (on a new
+// pseudo-terminal when no path is given, the path printed) and runner.
+struct SideLink {
+  std::unique_ptr<stream::PseudoTerminal> pty;
+  std::unique_ptr<stream::Transport> transport;
+  std::optional<stream::ByteRunner> runner;
+};
+
+bool open_side_port(const SidePort& side, asio::io_context& io, SideLink& port, std::ostream& out) {
+  try {
+    const stream::LogFn note = [](const std::string& s) {
+      std::cerr << "rs4sim: note: " << s << std::endl;
+    };
+    const auto line = side.device->line_settings();
+    if (side.path.empty()) {
+      port.pty = std::make_unique<stream::PseudoTerminal>();
+      port.transport = std::make_unique<stream::SerialTransport>(io, port.pty->release_master(),
+                                                                 line, side.name, note);
+      out << side.name << ": " << port.pty->slave_path() << std::endl;
+    } else {
+      port.transport = std::make_unique<stream::SerialTransport>(io, side.path, line, note);
+    }
+  } catch (const stream::LinkException& e) {
+    std::cerr << "rs4sim: " << side.name << ": " << e.what() << std::endl;
+    return false;
+  }
+  return true;
+}
+
+// --capture of a real-time run (the link's telegrams, or a byte device's line's frames) and
+// --capture-rs232 (the second port's frames).
+struct LinkCaptures {
+  std::unique_ptr<dp::link::Capture> link;
+  std::unique_ptr<LineCapture> line;
+  std::unique_ptr<LineCapture> side;
+
+  bool open(DeviceInstance& instance, const LinkOptions& l, dp::TimePoint now) {
+    try {
+      if (!instance.byte_devices().empty()) {
+        line = open_line_capture("--capture", l.capture.file, instance.line_protocol(), now);
+      } else {
+        link = open_link_capture(l, now);
+      }
+      side = open_line_capture("--capture-rs232", l.capture.rs232_file,
+                               stream::LineProtocol::kRs4Rs232, now);
+    } catch (const std::runtime_error& e) {
+      std::cerr << "rs4sim: " << e.what() << std::endl;
+      return false;
+    }
+    return true;
+  }
+  // Whether every capture was written to its end.
+  [[nodiscard]] bool report(const LinkOptions& l) const {
+    return report_capture(link.get(), l) && report_line_capture(line.get(), l.capture.file) &&
+           report_line_capture(side.get(), l.capture.rs232_file);
+  }
+};
+
+// SIGUSR1/SIGUSR2: the device's user actions (the RS4: PC adapter attached/removed), until the
+// signal set is cancelled.
+void await_user_signal(asio::signal_set& signals, DeviceInstance& instance,
+                       const dp::Clock& clock) {
+  signals.async_wait([&](const boost::system::error_code& ec, int signo) {
+    if (ec) return;
+    instance.on_user_signal(signo == SIGUSR2, clock.now());
+    await_user_signal(signals, instance, clock);
+  });
+}
+
+// --rt-priority: the loop thread, i.e. this one (the gRPC server's threads already run as they
+// were). False when the system refused.
+bool enter_loop_priority(const LinkOptions& l) {
+  if (!l.rt_priority) return true;
+  if (const std::string refused = enter_realtime(*l.rt_priority); !refused.empty()) {
+    std::cerr << "rs4sim: " << refused << std::endl;
+    return false;
+  }
+  std::cerr << "rs4sim: loop thread at SCHED_FIFO priority " << *l.rt_priority << ", memory locked"
+            << std::endl;
+  return true;
+}
+
 }  // namespace
 
 int run_on_link(RunSession& session, DeviceInstance& instance, const LinkOptions& l,
@@ -189,71 +271,27 @@ int run_on_link(RunSession& session, DeviceInstance& instance, const LinkOptions
               << e.code().value() << "]" << std::endl;
     return 1;
   }
-  // The device's second port (the RS4's RS232 interface): its own transport and runner.
   const auto side = instance.side_port();
-  std::unique_ptr<stream::PseudoTerminal> side_pty;
-  std::unique_ptr<stream::Transport> side_transport;
-  if (side) {
-    try {
-      const stream::LogFn note = [](const std::string& s) {
-        std::cerr << "rs4sim: note: " << s << std::endl;
-      };
-      const auto line = side->device->line_settings();
-      if (side->path.empty()) {
-        side_pty = std::make_unique<stream::PseudoTerminal>();
-        side_transport = std::make_unique<stream::SerialTransport>(io, side_pty->release_master(),
-                                                                   line, side->name, note);
-        out << side->name << ": " << side_pty->slave_path() << std::endl;
-      } else {
-        side_transport = std::make_unique<stream::SerialTransport>(io, side->path, line, note);
-      }
-    } catch (const stream::LinkException& e) {
-      std::cerr << "rs4sim: " << side->name << ": " << e.what() << std::endl;
-      return 1;
-    }
-  }
+  SideLink side_port;
+  if (side && !open_side_port(*side, io, side_port, out)) return 1;
   if (!side && !l.capture.rs232_file.empty()) {
     std::cerr << "rs4sim: --capture-rs232 needs the RS232 port (--rs232)" << std::endl;
     return 2;
   }
   dp::RealClock clock;
-  const bool byte_line = !instance.byte_devices().empty();
-  std::unique_ptr<dp::link::Capture> capture;
-  std::unique_ptr<LineCapture> line_capture;
-  std::unique_ptr<LineCapture> side_capture;
-  try {
-    if (byte_line) {
-      line_capture = open_line_capture("--capture", l.capture.file, instance.line_protocol(),
-                                       clock.now());
-    } else {
-      capture = open_link_capture(l, clock.now());
-    }
-    side_capture = open_line_capture("--capture-rs232", l.capture.rs232_file,
-                                     stream::LineProtocol::kRs4Rs232, clock.now());
-  } catch (const std::runtime_error& e) {
-    std::cerr << "rs4sim: " << e.what() << std::endl;
-    return 1;
-  }
+  LinkCaptures captures;
+  if (!captures.open(instance, l, clock.now())) return 1;
   instance.start(clock.now());
   LinkRunner runner(io, clock, *transport, instance, l);
-  runner.tap(capture.get());
-  runner.tap(line_capture.get());
-  std::optional<stream::ByteRunner> side_runner;
+  runner.tap(captures.link.get());
+  runner.tap(captures.line.get());
   if (side) {
-    side_runner.emplace(io, clock, *side_transport);
-    side_runner->add(*side->device);
-    if (side_capture) side_runner->set_frame_tap(side_capture->tap());
+    side_port.runner.emplace(io, clock, *side_port.transport);
+    side_port.runner->add(*side->device);
+    if (captures.side) side_port.runner->set_frame_tap(captures.side->tap());
   }
-  // SIGUSR1/SIGUSR2: the device's user actions (the RS4: PC adapter attached/removed).
   asio::signal_set user_signals(io, SIGUSR1, SIGUSR2);
-  std::function<void()> await_user_signal = [&] {
-    user_signals.async_wait([&](const boost::system::error_code& ec, int signo) {
-      if (ec) return;
-      instance.on_user_signal(signo == SIGUSR2, clock.now());
-      await_user_signal();
-    });
-  };
-  await_user_signal();
+  await_user_signal(user_signals, instance, clock);
   if (!l.grpc.empty()) {
     ServiceContext context = session.service_context(clock);
     context.turnaround = [&runner](std::uint8_t address) { return runner.turnaround(address); };
@@ -263,29 +301,18 @@ int run_on_link(RunSession& session, DeviceInstance& instance, const LinkOptions
   session.on_stop([&] {
     instance.stop_services();
     runner.stop();
-    if (side_runner) side_runner->stop();
+    if (side_port.runner) side_port.runner->stop();
     user_signals.cancel();
   });
-  if (l.rt_priority) {
-    // The loop thread, i.e. this one (the gRPC server's threads already run as they were).
-    if (const std::string refused = enter_realtime(*l.rt_priority); !refused.empty()) {
-      std::cerr << "rs4sim: " << refused << std::endl;
-      return 1;
-    }
-    std::cerr << "rs4sim: loop thread at SCHED_FIFO priority " << *l.rt_priority
-              << ", memory locked" << std::endl;
-  }
+  if (!enter_loop_priority(l)) return 1;
   session.stop_after(l.duration);
   std::cerr << "rs4sim: " << instance.describe() << " on " << link_name(l.link)
             << "; Ctrl-C to stop" << std::endl;
   runner.start();
-  if (side_runner) side_runner->start();
+  if (side_port.runner) side_port.runner->start();
   session.run();
   runner.print_status(out);
-  const bool written = report_capture(capture.get(), l) &&
-                       report_line_capture(line_capture.get(), l.capture.file) &&
-                       report_line_capture(side_capture.get(), l.capture.rs232_file);
-  return written ? 0 : 1;
+  return captures.report(l) ? 0 : 1;
 }
 
 std::unique_ptr<dp::link::Capture> open_link_capture(const LinkOptions& link,

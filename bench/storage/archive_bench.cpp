@@ -1,6 +1,7 @@
 // SqliteArchive on a real file: store throughput with 8507-byte sets (distinct contents,
 // and with deduplication hits), current-set lookup in an archive of N stored sets, and
 // the history of a station with 1000 versions.
+#include "bench/storage/populate.h"
 #include "storage/sqlite_archive.h"
 #include "tests/storage/archive_test_support.h"
 
@@ -48,30 +49,7 @@ void BM_StoreDuplicate(benchmark::State& state) {
 }
 BENCHMARK(BM_StoreDuplicate)->ArgName("sync_full")->Arg(1)->Arg(0)->UseRealTime();
 
-// Fills `archive` with `sets` distinct 8507-byte sets, 100 versions per station, by
-// importing snapshots of 50 stations at a time (one transaction each).
-void populate(SqliteArchive& archive, std::int64_t sets) {
-  constexpr std::uint32_t kVersionsPerStation = 100;
-  constexpr std::uint32_t kStationsPerBatch = 50;
-  std::uint64_t seed = 0;
-  std::uint32_t station = 0;
-  for (std::int64_t done = 0; done < sets;) {
-    Snapshot snap;
-    for (std::uint32_t s = 0; s < kStationsPerBatch && done < sets; ++s, ++station) {
-      SnapshotStation st;
-      st.key = {"bus" + std::to_string(station / 100), static_cast<std::uint8_t>(station % 100)};
-      for (std::uint32_t n = 1; n <= kVersionsPerStation && done < sets; ++n, ++done) {
-        const auto blob = make_blob(++seed);
-        const auto id = static_cast<SetId>(snap.sets.size() + 1);
-        snap.sets.push_back({id, crc32(blob), blob, "{}"});
-        st.versions.push_back({n, id, {}, VersionSource::kUpload, "", 0, false, "SN", "", ""});
-        st.current_version = n;
-      }
-      snap.stations.push_back(std::move(st));
-    }
-    archive.import_snapshot(snap).value();
-  }
-}
+using bench::populate;
 
 void BM_CurrentLookup(benchmark::State& state) {
   testing::TempDir dir;

@@ -6,6 +6,7 @@
 // works in a schema of its own, dropped afterwards); without it those benchmarks are skipped.
 //   tests/storage/postgres_server.sh start pg-dir
 //   RS4SIM_BENCH_POSTGRES_URI=$(cat pg-dir/uri) build/bench/storage/bench_storage_engines
+#include "bench/storage/populate.h"
 #include "storage/crc32.h"
 #include "storage/open_archive.h"
 #include "tests/storage/archive_test_support.h"
@@ -123,30 +124,7 @@ BENCHMARK(BM_Store)
     ->Threads(8)
     ->UseRealTime();
 
-// Fills the archive with `sets` distinct 8507-byte sets, 100 versions per station, in
-// imports of 50 stations (one transaction each).
-void populate(ParameterArchive& archive, std::int64_t sets) {
-  constexpr std::uint32_t kVersionsPerStation = 100;
-  constexpr std::uint32_t kStationsPerBatch = 50;
-  std::uint64_t seed = 0;
-  std::uint32_t station = 0;
-  for (std::int64_t done = 0; done < sets;) {
-    Snapshot snap;
-    for (std::uint32_t s = 0; s < kStationsPerBatch && done < sets; ++s, ++station) {
-      SnapshotStation st;
-      st.key = {"bus" + std::to_string(station / 100), static_cast<std::uint8_t>(station % 100)};
-      for (std::uint32_t n = 1; n <= kVersionsPerStation && done < sets; ++n, ++done) {
-        const auto blob = make_blob(++seed);
-        const auto id = static_cast<SetId>(snap.sets.size() + 1);
-        snap.sets.push_back({id, crc32(blob), blob, "{}"});
-        st.versions.push_back({n, id, {}, VersionSource::kUpload, "", 0, false, "SN", "", ""});
-        st.current_version = n;
-      }
-      snap.stations.push_back(std::move(st));
-    }
-    archive.import_snapshot(snap).value();
-  }
-}
+using bench::populate;
 
 // current() of stations in a scattered order; p50 and p99 of the single calls as counters.
 void BM_Current(benchmark::State& state) {

@@ -4,6 +4,12 @@
 
 namespace rs4sim::gsd {
 
+std::span<const std::uint8_t> ext_diagnosis(const dp::fdl::DataUnit& slave_diag) {
+  constexpr std::size_t kStandardDiagBytes = 6;  // [IEC 61158-6-3 Slave_Diag]
+  if (slave_diag.size() <= kStandardDiagBytes) return {};
+  return {slave_diag.data() + kStandardDiagBytes, slave_diag.size() - kStandardDiagBytes};
+}
+
 GsdMasterSlaves::GsdMasterSlaves(std::vector<GsdStationSpec> specs) {
   for (auto& spec : specs) {
     GsdMasterSlave s;

@@ -17,6 +17,10 @@
 
 namespace rs4sim::gsd {
 
+// The device-related part of a Slave_Diag: what follows its 6 standard bytes
+// [IEC 61158-6-3 Slave_Diag] (none: empty).
+std::span<const std::uint8_t> ext_diagnosis(const dp::fdl::DataUnit& slave_diag);
+
 // One GSD slave as the master side sees it.
 struct GsdMasterSlave {
   GsdStationSpec spec;

@@ -1,18 +1,15 @@
 #include "gsd/station/gsd_station.h"
 
 #include "dp/pdu/set_prm.h"
+#include "gsd/check_report.h"
 #include "gsd/dp_slave_config.h"
+#include "gsd/unit_diag.h"
 
-#include <cstdio>
+#include <algorithm>
+#include <cctype>
 
 namespace rs4sim::gsd {
 namespace {
-
-std::string hex16(std::uint16_t v) {
-  char b[8];
-  std::snprintf(b, sizeof b, "0x%04X", v);
-  return b;
-}
 
 Error set_prm_error(const GsdStationSpec& spec, GsdError code, std::string message) {
   Error e;
@@ -36,6 +33,22 @@ std::string unchecked_user_prm_fault(const Device& device, std::size_t length) {
   if (!device.max_user_prm_data_len || length <= *device.max_user_prm_data_len) return {};
   return "User_Prm_Data is " + std::to_string(length) + " bytes, the GSD allows " +
          std::to_string(*device.max_user_prm_data_len) + " (Max_User_Prm_Data_Len)";
+}
+
+std::string io_hex(std::span<const std::uint8_t> bytes) {
+  std::string s = hex_bytes({bytes.begin(), bytes.end()});  // "5A 11"
+  std::transform(s.begin(), s.end(), s.begin(), [](char c) {
+    return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  });
+  return s;
+}
+
+std::string diagnosis_text(const Device& device, std::span<const std::uint8_t> blocks) {
+  std::string out;
+  for (const auto& t : unit_diag_texts(device.unit_diag, blocks)) {
+    out += (out.empty() ? "" : "; ") + t;
+  }
+  return out;
 }
 
 GsdStationSpec station_spec(std::string file, std::shared_ptr<const Device> device,
@@ -98,7 +111,43 @@ Result<dp::master::SlaveEntry> master_entry(const GsdStationSpec& spec,
 GsdApplication::GsdApplication(const GsdStationSpec& spec)
     : spec_(spec),
       generic_(dp::devices::GenericDeviceConfig{spec.setup.cfg}),
-      inputs_(spec.setup.input_len, 0) {}
+      inputs_(spec.setup.input_len, 0) {
+  for (const auto& block : spec.setup.f_parameters) {
+    const auto& io = spec.modules.at(block.module);
+    auto f = FModuleDevice::make(*spec.device, spec.setup, block, io.input_offset,
+                                 io.output_offset,
+                                 spec.f_dest_add.value_or(block.parameters.dest_add));
+    if (f) f_modules_.push_back(std::move(f).value());
+  }
+}
+
+FModuleDevice* GsdApplication::f_module(std::size_t module) {
+  for (auto& f : f_modules_) {
+    if (f.module() == module) return &f;
+  }
+  return nullptr;
+}
+
+// [IEC 61784-3-3 F-Parameters]: each F-device checks its block; the first refused one gives
+// Prm_Fault and its status block `05 81 slot 00 nn` with Ext_Diag.
+void GsdApplication::check_f_parameters() {
+  for (auto& f : f_modules_) {
+    if (f.set_parameters(user_prm_).ok()) continue;
+    const auto block = f.status_block();
+    if (set_diagnosis(block, true)) diag_.assign(block.begin(), block.end());  // no slave yet
+    f_diag_ = true;
+    prm_fault_ = "F-module in slot " + std::to_string(spec_.setup.slots[f.module()].slot) +
+                 ": diagnosis " + std::to_string(f.diagnosis()) + " (" +
+                 profisafe::standard_diagnosis_text(f.diagnosis()) + ")";
+    return;
+  }
+  if (f_diag_ && !set_diagnosis({}, false)) f_diag_ = false;
+}
+
+void GsdApplication::on_outputs(std::span<const std::uint8_t> outputs, dp::TimePoint now) {
+  generic_.on_outputs(outputs, now);
+  for (auto& f : f_modules_) f.on_outputs(outputs, now);
+}
 
 dp::slave::PrmVerdict GsdApplication::check_parameters(const dp::pdu::SetPrm& prm,
                                                        dp::TimePoint now) {
@@ -116,18 +165,28 @@ dp::slave::PrmVerdict GsdApplication::check_parameters(const dp::pdu::SetPrm& pr
     auto ok = check_user_prm(*spec_.device, spec_.setup, user_prm_);
     prm_fault_ = ok ? std::string() : ok.error().message;
   }
+  if (prm_fault_.empty()) check_f_parameters();
   // Prm_Fault in Station_Status_1 when refused.
   return prm_fault_.empty() ? dp::slave::PrmVerdict::kAccept : dp::slave::PrmVerdict::kPrmFault;
 }
 
-void GsdApplication::read_inputs(std::span<std::uint8_t> inputs, dp::TimePoint) {
+void GsdApplication::read_inputs(std::span<std::uint8_t> inputs, dp::TimePoint now) {
   const std::size_t n = std::min(inputs.size(), inputs_.size());
   std::copy_n(inputs_.begin(), n, inputs.begin());
   std::fill(inputs.begin() + static_cast<std::ptrdiff_t>(n), inputs.end(), std::uint8_t{0});
+  for (auto& f : f_modules_) {
+    f.device().on_time(now);  // the F-watchdog, checked at every poll
+    f.write_inputs(inputs);
+  }
 }
 
 std::error_code GsdApplication::set_inputs(std::size_t module,
                                            std::span<const std::uint8_t> bytes) {
+  if (FModuleDevice* f = f_module(module)) {
+    if (bytes.size() != f->f_data_size()) return std::make_error_code(std::errc::invalid_argument);
+    f->set_f_inputs(bytes);
+    return {};
+  }
   if (module >= spec_.modules.size() || bytes.size() != spec_.modules[module].input_len) {
     return std::make_error_code(std::errc::invalid_argument);
   }
@@ -160,14 +219,9 @@ std::string GsdStation::describe() const {
   for (const auto& m : spec_->modules) {
     modules += (modules.empty() ? "\"" : ", \"") + m.name + (m.preset ? "\" (preset)" : "\"");
   }
-  std::string cfg;
-  char b[4];
-  for (auto x : spec_->setup.cfg) {
-    std::snprintf(b, sizeof b, "%02X", x);
-    cfg += (cfg.empty() ? "" : " ") + std::string(b);
-  }
   return "GSD slave " + std::to_string(spec_->address) + " (" + spec_->file + ", ident " +
-         hex16(spec_->device->ident_number) + ", modules " + modules + ", cfg " + cfg + ")";
+         hex16(spec_->device->ident_number) + ", modules " + modules + ", cfg " +
+         hex_bytes(spec_->setup.cfg) + ")";
 }
 
 }  // namespace rs4sim::gsd

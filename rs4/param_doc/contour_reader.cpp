@@ -1,5 +1,7 @@
 #include "rs4/param_doc/contour_reader.h"
 
+#include <algorithm>
+
 #include "rs4/param_doc/contour_shapes.h"
 
 #include <cmath>
@@ -22,7 +24,8 @@ std::uint16_t read_mm(const Value& v, const std::string& path, const ContourLimi
   return static_cast<std::uint16_t>(json::integer(v, path, 0, limit.max_mm, limit_text(limit)));
 }
 
-Contour read_runs(const json::List& runs, const std::string& path, const ContourLimit& limit) {
+Contour read_runs(const json::List& runs, const std::string& path, const ContourLimit& limit,
+                  std::size_t& unset) {
   Contour c{};
   std::vector<int> owner(kSegmentCount, -1);
   for (int i = 0; i < runs.values_size(); ++i) {
@@ -49,6 +52,7 @@ Contour read_runs(const json::List& runs, const std::string& path, const Contour
       c[n] = mm;
     }
   }
+  unset = static_cast<std::size_t>(std::count(owner.begin(), owner.end(), -1));
   return c;
 }
 
@@ -144,7 +148,9 @@ Contour to_contour(const Distances& d, const std::string& path, const ContourLim
 
 }  // namespace
 
-Contour read_contour(const Value& v, const std::string& path, const ContourLimit& limit) {
+Contour read_contour(const Value& v, const std::string& path, const ContourLimit& limit,
+                     std::size_t& unset) {
+  unset = 0;
   const auto& o = json::object(v, path);
   json::check_keys(o, path, {"runs", "segments", "rectangle", "sector", "polygon"});
   if (o.fields_size() != 1) {
@@ -153,7 +159,7 @@ Contour read_contour(const Value& v, const std::string& path, const ContourLimit
   }
   const auto& [key, value] = *o.fields().begin();
   const std::string at = json::key_path(path, key);
-  if (key == "runs") return read_runs(json::list(value, at), at, limit);
+  if (key == "runs") return read_runs(json::list(value, at), at, limit, unset);
   if (key == "segments") return read_segments(json::list(value, at), at, limit);
   if (key == "sector") return to_contour(read_sector(value, at), at, limit);
   const auto polygon = key == "rectangle" ? read_rectangle(value, at) : read_polygon(value, at);

@@ -7,6 +7,7 @@
 #include "rs4/param_doc/json_tree.h"
 #include "rs4/scanner/geometry.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -18,7 +19,9 @@ struct ContourLimit {
   std::string_view what;  // "protective field limit ([RS4 manual §2.3])"
 };
 
+// `unset`: the segments no run covers (0 mm); 0 for the other forms, which set every segment
+// (a shape's 0 mm outside it is its documented meaning, docs/param.md "Contours").
 scanner::Contour read_contour(const json::Value& v, const std::string& path,
-                              const ContourLimit& limit);
+                              const ContourLimit& limit, std::size_t& unset);
 
 }  // namespace rs4sim::rs4::param_doc

@@ -14,6 +14,7 @@ std::string_view to_string(DocumentError e) noexcept {
     case DocumentError::kBadShape: return "shape does not describe an area";
     case DocumentError::kContourOutOfRange: return "contour beyond the scanner's range";
     case DocumentError::kInvalidSet: return "the scanner's validation refused the set";
+    case DocumentError::kPartialField: return "protective field segments left unset";
   }
   return "unknown parameter document error";
 }

@@ -23,6 +23,7 @@ enum class DocumentError : std::uint8_t {
   kBadShape,            // a shape that does not describe an area
   kContourOutOfRange,   // a contour beyond the scanner's range for that field
   kInvalidSet,          // the scanner's own validation refused the resulting set
+  kPartialField,        // a protective field with segments left unset (field_coverage.h)
 };
 
 [[nodiscard]] std::string_view to_string(DocumentError e) noexcept;

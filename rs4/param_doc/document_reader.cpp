@@ -5,6 +5,7 @@
 #include "rs4/report/parameter_fields.h"
 
 #include <array>
+#include <optional>
 
 namespace rs4sim::rs4::param_doc {
 namespace {
@@ -119,7 +120,11 @@ void read_measurement(const Value& v, ParameterSet& set) {
   }
 }
 
-void read_pairs(const Value& v, ParameterSet& set) {
+// Per pair, the protective segments the document's runs leave unset (none: the document
+// gives no protective contour for the pair): checked once the set is whole.
+using GivenFields = std::array<std::optional<std::size_t>, scanner::kFieldPairCount>;
+
+void read_pairs(const Value& v, ParameterSet& set, GivenFields& given) {
   const std::string path = "$.pairs";
   for (const auto& [key, pair] : json::object(v, path).fields()) {
     const std::string at = json::key_path(path, key);
@@ -128,10 +133,14 @@ void read_pairs(const Value& v, ParameterSet& set) {
     const auto& o = json::object(pair, at);
     json::check_keys(o, at, {"protective", "warning"});
     if (const Value* c = json::find(o, "protective")) {
-      target.protective_mm = read_contour(*c, json::key_path(at, "protective"), kProtectiveLimit);
+      std::size_t unset = 0;
+      target.protective_mm =
+          read_contour(*c, json::key_path(at, "protective"), kProtectiveLimit, unset);
+      given[static_cast<std::size_t>(key[0] - '1')] = unset;
     }
     if (const Value* c = json::find(o, "warning")) {
-      target.warning_mm = read_contour(*c, json::key_path(at, "warning"), kWarningLimit);
+      std::size_t unset = 0;  // a warning field may leave segments out
+      target.warning_mm = read_contour(*c, json::key_path(at, "warning"), kWarningLimit, unset);
     }
   }
 }
@@ -159,7 +168,18 @@ std::string path_of(const scanner::ValidationIssue& issue) {
   return "$." + std::string(issue.field);
 }
 
-ParameterSet read_document(std::string_view text, const ParameterSet& base) {
+void check_given_fields(const GivenFields& given, const CoverageOptions& options) {
+  for (std::size_t p = 0; p < given.size(); ++p) {
+    if (!given[p]) continue;
+    const auto path = "$.pairs." + std::to_string(p + 1) + ".protective.runs";
+    if (auto issue = check_protective_field(*given[p], path, options)) {
+      json::refuse(issue->error, issue->path, issue->reason);
+    }
+  }
+}
+
+ParameterSet read_document(std::string_view text, const ParameterSet& base,
+                           const CoverageOptions& coverage) {
   const Value root_value = json::parse(text);
   const auto& root = json::object(root_value, "$");
   json::check_keys(root, "$",
@@ -176,18 +196,21 @@ ParameterSet read_document(std::string_view text, const ParameterSet& base) {
   if (const Value* v = json::find(root, "permitted")) read_permitted(*v, set);
   if (const Value* v = json::find(root, "warning_output")) read_warning_output(*v, set);
   if (const Value* v = json::find(root, "measurement")) read_measurement(*v, set);
-  if (const Value* v = json::find(root, "pairs")) read_pairs(*v, set);
+  GivenFields given{};
+  if (const Value* v = json::find(root, "pairs")) read_pairs(*v, set, given);
   if (const auto issue = scanner::validate(set)) {
     json::refuse(DocumentError::kInvalidSet, path_of(*issue), issue->message());
   }
+  check_given_fields(given, coverage);
   return set;
 }
 
 }  // namespace
 
-DocumentResult from_document(std::string_view json, const ParameterSet& base) {
+DocumentResult from_document(std::string_view json, const ParameterSet& base,
+                             const CoverageOptions& coverage) {
   try {
-    return {read_document(json, base), {}};
+    return {read_document(json, base, coverage), {}};
   } catch (const json::Refusal& refusal) {
     return {std::nullopt, refusal.issue};
   }

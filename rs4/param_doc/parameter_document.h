@@ -7,6 +7,7 @@
 // ([RS4 manual §7.2.4]): a document that names one is refused.
 
 #include "rs4/param_doc/document_error.h"
+#include "rs4/param_doc/field_coverage.h"
 #include "rs4/scanner/parameter_set.h"
 
 #include <optional>
@@ -29,8 +30,10 @@ struct DocumentResult {
 
 // `base` with what the document says. Keys the document leaves out keep `base`'s value
 // (pairs and contours one by one); identity and passwords always stay `base`'s. The result
-// passed the scanner's own validate() (parameter_set.h); otherwise the first problem with
-// its JSON path and reason.
-DocumentResult from_document(std::string_view json, const scanner::ParameterSet& base);
+// passed the scanner's own validate() (parameter_set.h) and, for every protective contour the
+// document gives, check_protective_field() (field_coverage.h; a segment no run covers is
+// 0 mm); otherwise the first problem with its JSON path and reason.
+DocumentResult from_document(std::string_view json, const scanner::ParameterSet& base,
+                             const CoverageOptions& coverage = {});
 
 }  // namespace rs4sim::rs4::param_doc

@@ -69,13 +69,23 @@ users=$(psql "$archive" -tAc "SELECT count(*) FROM versions WHERE user_name <> '
 [ "$users" = "$versions" ] || fail "the demo's $versions versions record no user and host ($users do)"
 "$rs4sim" archive history --archive "$archive" --bus demo --address 4 >"$tmp/history.txt"
 
+# An empty database is no archive yet: the refusal says how to start one, and that works.
+set +e
+"$rs4sim" archive list --archive "$archive2" >"$tmp/empty.txt" 2>&1; rc=$?
+set -e
+cat "$tmp/empty.txt"
+[ $rc -eq 1 ] && grep -q "holds no archive yet.*; start one with: rs4sim archive init --archive 'postgresql://rs4sim@127.0.0.1:" "$tmp/empty.txt" || fail "empty database: rc $rc"
+no_password "$tmp/empty.txt"
+"$rs4sim" archive init --archive "$archive2" | grep -q ": ready (0 stations)" || fail "archive init"
+"$rs4sim" archive list --archive "$archive2" >/dev/null || fail "list after init"
+
 # Server -> file: the SQLite archive shows the same history.
 "$rs4sim" archive export --archive "$archive" "$tmp/demo.rs4a" >/dev/null
 "$rs4sim" archive import --archive "$tmp/copy.sqlite3" "$tmp/demo.rs4a" >/dev/null
 "$rs4sim" archive history --archive "$tmp/copy.sqlite3" --bus demo --address 4 >"$tmp/copy.txt"
 diff "$tmp/history.txt" "$tmp/copy.txt" || fail "the SQLite copy's history differs"
 # archive copy: server -> file -> another server, each verified by the command, each with the
-# same history; a second copy into the same archive appends (the history doubles).
+# same history; a second copy into the same archive adds nothing (every version is recognised).
 "$rs4sim" archive copy --from "$archive" --to "$tmp/copied.sqlite3" >"$tmp/copy1.txt"
 cat "$tmp/copy1.txt"
 grep -q "; verified" "$tmp/copy1.txt" || fail "copy to SQLite"
@@ -88,8 +98,12 @@ no_password "$tmp/copy2.txt"
 diff "$tmp/history.txt" "$tmp/h2.txt" || fail "the copied PostgreSQL history differs"
 "$rs4sim" archive copy --from "$tmp/copied.sqlite3" --to "$archive2" --json >"$tmp/copy3.txt"
 grep -q '"verified": true' "$tmp/copy3.txt" || fail "second copy"
+grep -q '"versions": 0' "$tmp/copy3.txt" || fail "the second copy added versions"
 twice=$(psql "$archive2" -tAc "SELECT count(*) FROM versions")
-[ "$twice" = $((2 * versions)) ] || fail "after two copies psql counts $twice versions"
+[ "$twice" = "$versions" ] || fail "after two copies psql counts $twice versions"
+logged=$(psql "$archive2" -tAc "SELECT count(*) FROM sync_log")
+"$rs4sim" archive copy --from "$tmp/copied.sqlite3" --to "$archive2" >/dev/null
+[ "$(psql "$archive2" -tAc "SELECT count(*) FROM sync_log")" = "$logged" ] || fail "a third copy added sync log rows"
 set +e
 "$rs4sim" archive copy --from "$archive" >"$tmp/usage.txt" 2>&1; rc=$?
 set -e

@@ -68,8 +68,9 @@ class FaultyArchive final : public storage::ParameterArchive {
   storage::Result<storage::Snapshot> export_snapshot(storage::Timestamp at) override {
     return inner_.export_snapshot(at);
   }
-  storage::Result<storage::ImportSummary> import_snapshot(const storage::Snapshot& s) override {
-    return inner_.import_snapshot(s);
+  storage::Result<storage::ImportSummary> import_snapshot(
+      const storage::Snapshot& s, const storage::ImportOptions& o) override {
+    return inner_.import_snapshot(s, o);
   }
 
  private:

@@ -166,7 +166,9 @@ TEST_F(RpcArchiveTest, ExportImportRoundTripAndRefusals) {
   v1::ImportResponse imported;
   ASSERT_TRUE(stub_->Import(&c2, i, &imported).ok());
   EXPECT_EQ(imported.stations(), 1U);
-  EXPECT_EQ(imported.versions(), 1U);
+  EXPECT_EQ(imported.versions(), 0U);  // its own export: every version already there
+  EXPECT_EQ(imported.versions_present(), 1U);
+  EXPECT_EQ(imported.per_station(0).current(), "current unchanged");
   EXPECT_EQ(imported.new_parameter_sets(), 0U);  // deduplicated by content
 
   grpc::ClientContext c3;
@@ -191,8 +193,8 @@ TEST_F(RpcArchiveTest, ExportImportRoundTripAndRefusals) {
   grpc::ClientContext c7;
   key.set_address(9);
   EXPECT_EQ(stub_->History(&c7, key, &history).error_code(), grpc::StatusCode::NOT_FOUND);
-  // The archive is unchanged by the refusals: two versions (the store and the import).
-  EXPECT_EQ(archive_->history(kStation).value().size(), 2U);
+  // The archive is unchanged by the refusals: one version (the import recognised it).
+  EXPECT_EQ(archive_->history(kStation).value().size(), 1U);
 }
 
 TEST_F(RpcArchiveTest, NoteAndWhoRestored) {
@@ -321,6 +323,29 @@ TEST_F(RpcArchiveTest, JsonOverHttpIsTheSameService) {
   // uint64 fields are strings in protobuf's JSON mapping
   EXPECT_NE(got.body.find("\"currentVersionId\":\"" + std::to_string(id) + "\""), std::string::npos)
       << got.body;
+}
+
+// A stored RS4 set whose protective field has segments of 0 mm is not made current by a
+// restore unless allow_partial_field says it on purpose (rs4/param_doc/field_coverage.h).
+TEST_F(RpcArchiveTest, RestoreOfAPartialProtectiveFieldNeedsAllowPartialField) {
+  auto partial = rs4::scanner::factory_default();
+  for (std::size_t n = 0; n < 488; ++n) partial.pairs[1].protective_mm[n] = 0;
+  const auto old = store(partial, 1000);
+  store(rs4::scanner::factory_default(), 2000);
+  grpc::ClientContext c1;
+  v1::RestoreRequest r;
+  r.set_version_id(static_cast<std::uint64_t>(old));
+  v1::VersionInfo restored;
+  const auto refused = stub_->Restore(&c1, r, &restored);
+  EXPECT_EQ(refused.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(bad_field(refused), "allow_partial_field");
+  EXPECT_NE(refused.error_message().find("field pair 2: 488 of 529"), std::string::npos)
+      << refused.error_message();
+  EXPECT_EQ(archive_->history(kStation).value().size(), 2u);
+  grpc::ClientContext c2;
+  r.set_allow_partial_field(true);
+  ASSERT_TRUE(stub_->Restore(&c2, r, &restored).ok());
+  EXPECT_TRUE(restored.pending_download());
 }
 
 }  // namespace

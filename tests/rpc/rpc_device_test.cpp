@@ -310,6 +310,30 @@ TEST_F(RpcDeviceTest, SetParameterSetRefusesABadDocumentAndKeepsTheSet) {
   EXPECT_EQ(parameter_set().json(), before.json());
 }
 
+// Issue 39: one run for segments 100..140 of pair 2's protective field left the other
+// 529 - 41 = 488 segments at 0 mm and was accepted; now refused with the count unless
+// allow_partial_field says it on purpose.
+TEST_F(RpcDeviceTest, SetParameterSetRefusesAProtectiveFieldLeftPartlyUnset) {
+  boot();
+  const auto before = parameter_set();
+  const std::string doc =
+      R"({"format": 1, "pairs": {"2": {"protective": {"runs": [{"from": 100, "to": 140, )"
+      R"("mm": 1850}]}}}})";
+  v1::ParameterSetDocument out;
+  auto s = set_parameter_set(doc, out);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_NE(s.error_message().find("488 of 529 segments"), std::string::npos) << s.error_message();
+  EXPECT_NE(s.error_message().find("allow_partial_field"), std::string::npos);
+  EXPECT_EQ(parameter_set().json(), before.json());
+  grpc::ClientContext ctx;
+  v1::SetParameterSetRequest req;
+  req.set_address(4);
+  req.set_json(doc);
+  req.set_allow_partial_field(true);
+  ASSERT_TRUE(device_stub_->SetParameterSet(&ctx, req, &out).ok());
+  EXPECT_NE(out.json().find(R"({"from":141,"to":528,"mm":0})"), std::string::npos) << out.json();
+}
+
 // A 100 KB document nested 50,000 deep: refused by the linear structure scan before
 // protobuf's parser (quadratic in the nesting: it froze the loop for minutes), with the line
 // and column of the 102nd bracket; the run answers the next call.

@@ -23,18 +23,8 @@ using testing::request;
 const StationKey kStation{"bus1", 4};
 const StationKey kOther{"bus1", 5};
 
-class ArchiveContract : public ::testing::TestWithParam<std::string> {
- protected:
-  void SetUp() override {
-    engine_ = testing::make_engine(GetParam());
-    if (!engine_) GTEST_SKIP() << "no PostgreSQL server (tests/storage/postgres_server.sh)";
-    archive_ = engine_->open();
-  }
-  std::unique_ptr<testing::Engine> engine_;
-  std::unique_ptr<ParameterArchive> archive_;
-};
-
-std::string engine_name(const ::testing::TestParamInfo<std::string>& info) { return info.param; }
+class ArchiveContract : public testing::EngineTest {};
+using testing::engine_name;
 
 INSTANTIATE_TEST_SUITE_P(Engines, ArchiveContract, ::testing::Values("sqlite", "postgresql"),
                          engine_name);

@@ -166,4 +166,21 @@ inline std::unique_ptr<Engine> make_engine(const std::string& name) {
   return std::make_unique<PgEngine>(*uri);
 }
 
+// A suite on every engine (TEST_P with ::testing::Values("sqlite", "postgresql")): the engine
+// and its archive, open; skipped without a PostgreSQL server.
+class EngineTest : public ::testing::TestWithParam<std::string> {
+ protected:
+  void SetUp() override {
+    engine_ = make_engine(GetParam());
+    if (!engine_) GTEST_SKIP() << "no PostgreSQL server (tests/storage/postgres_server.sh)";
+    archive_ = engine_->open();
+  }
+  std::unique_ptr<Engine> engine_;
+  std::unique_ptr<ParameterArchive> archive_;
+};
+
+inline std::string engine_name(const ::testing::TestParamInfo<std::string>& info) {
+  return info.param;
+}
+
 }  // namespace rs4sim::storage::testing

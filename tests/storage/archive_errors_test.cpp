@@ -150,7 +150,7 @@ TEST_F(ArchiveErrorsTest, NewerSchema) {
   raw_exec(path_, "PRAGMA user_version = 99;");
   before_ = digest(path_);
   expect_error(SqliteArchive::open(path_), ArchiveError::kNewerSchema,
-               "schema version 99, this rs4sim knows up to 4");
+               "schema version 99, this rs4sim knows up to 5");
 }
 
 TEST_F(ArchiveErrorsTest, ImportOfACorruptFile) {
@@ -171,7 +171,7 @@ TEST_F(ArchiveErrorsTest, ImportThatFailsMidWriteRollsBack) {
   for (std::uint32_t i = 1; i <= 30; ++i) {
     const auto blob = make_blob(1000 + i);
     snap.sets.push_back({i, crc32(blob), blob, ""});
-    st.versions.push_back({i, i, at_ms(i), VersionSource::kUpload, "", 0, false, "", "", ""});
+    st.versions.push_back({i, i, at_ms(i), VersionSource::kUpload, "", 0, false, "", "", "", {}});
   }
   st.current_version = 30;
   snap.stations.push_back(st);

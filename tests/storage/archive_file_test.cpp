@@ -51,7 +51,7 @@ TEST(ArchiveFile, AnnotatedBinaryDecodesToTheExpectedValues) {
   EXPECT_EQ(st.current_version, 1u);
   ASSERT_EQ(st.versions.size(), 1u);
   EXPECT_EQ(st.versions[0],
-            (SnapshotVersion{1, 1, at_ms(2000), VersionSource::kUpload, "", 0, false, "", "", ""}));
+            (SnapshotVersion{1, 1, at_ms(2000), VersionSource::kUpload, "", 0, false, "", "", "", {}}));
   // And our encoder writes exactly these bytes for it.
   EXPECT_EQ(encode_binary(snap), kAnnotatedBinary);
 }
@@ -134,16 +134,20 @@ TEST_F(ArchiveRoundTrip, Json) {
   EXPECT_EQ(target->export_snapshot(at_ms(9000)).value(), expected_);
 }
 
+// The file's own versions are recognised (archive_import_test.cpp); another archive's are
+// appended, renumbered, with their restore references and sets shared.
 TEST_F(ArchiveRoundTrip, ImportIntoANonEmptyArchiveAppendsAndDeduplicates) {
-  const auto summary = source_->import_snapshot(expected_).value();
-  EXPECT_EQ(summary.new_sets, 0u);  // every set is already there
-  const auto history = source_->history({"bus1", 4}).value();
-  ASSERT_EQ(history.size(), 6u);
-  EXPECT_EQ(history[3].number, 4u);  // the file's version 1, renumbered
-  EXPECT_EQ(history[3].set_id, history[0].set_id);
-  EXPECT_EQ(history[5].restored_from, history[3].id);
-  EXPECT_EQ(source_->current({"bus1", 4}).value().version.id, history[5].id);
-  EXPECT_EQ(source_->sync_log({"bus1", 4}, 10).value().size(), 2u);
+  auto target = SqliteArchive::open(dir_.file("b.sqlite3")).value();
+  const auto own = target->store(request({"bus1", 4}, make_blob(2), 500)).value();
+  const auto summary = target->import_snapshot(expected_).value();
+  EXPECT_EQ(summary.new_sets, 1u);  // blob 2 is already there
+  const auto history = target->history({"bus1", 4}).value();
+  ASSERT_EQ(history.size(), 4u);
+  EXPECT_EQ(history[1].number, 2u);  // the file's version 1, renumbered
+  EXPECT_EQ(history[2].set_id, own.set_id);
+  EXPECT_EQ(history[3].restored_from, history[1].id);
+  EXPECT_EQ(target->current({"bus1", 4}).value().version.id, own.id);
+  EXPECT_EQ(target->sync_log({"bus1", 4}, 10).value().size(), 1u);
 }
 
 TEST(ArchiveFile, TimestampsBeforeTheEpochSurvive) {

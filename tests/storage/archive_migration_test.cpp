@@ -1,6 +1,7 @@
 // Forward migrations: files written by hand in older schemas open and are upgraded.
 #include "storage/sqlite_archive.h"
 #include "tests/storage/archive_test_support.h"
+#include "tests/storage/old_schemas.h"
 
 #include <gtest/gtest.h>
 
@@ -13,25 +14,7 @@ using testing::at_ms;
 
 // Schema version 1 as rs4sim 0.1 wrote it (no pending_download, no sync_log), with one
 // station, one set ("abc", CRC-32 0x352441C2) and one current version.
-constexpr const char* kSchemaV1File = R"sql(
-CREATE TABLE stations (id INTEGER PRIMARY KEY, bus TEXT NOT NULL,
-  address INTEGER NOT NULL CHECK (address BETWEEN 0 AND 126), device_type TEXT NOT NULL,
-  UNIQUE (bus, address));
-CREATE TABLE station_serials (station_id INTEGER NOT NULL REFERENCES stations(id),
-  serial_number TEXT NOT NULL, first_seen_ms INTEGER NOT NULL, last_seen_ms INTEGER NOT NULL,
-  PRIMARY KEY (station_id, serial_number));
-CREATE TABLE parameter_sets (id INTEGER PRIMARY KEY, crc32 INTEGER NOT NULL,
-  size INTEGER NOT NULL, blob BLOB NOT NULL, summary TEXT NOT NULL);
-CREATE INDEX parameter_sets_by_crc ON parameter_sets (crc32, size);
-CREATE TABLE versions (id INTEGER PRIMARY KEY,
-  station_id INTEGER NOT NULL REFERENCES stations(id), number INTEGER NOT NULL,
-  set_id INTEGER NOT NULL REFERENCES parameter_sets(id),
-  source INTEGER NOT NULL CHECK (source BETWEEN 1 AND 4), stored_at_ms INTEGER NOT NULL,
-  note TEXT NOT NULL, serial_number TEXT NOT NULL,
-  restored_from INTEGER REFERENCES versions(id), UNIQUE (station_id, number));
-CREATE INDEX versions_by_set ON versions (set_id);
-CREATE TABLE current_versions (station_id INTEGER PRIMARY KEY REFERENCES stations(id),
-  version_id INTEGER NOT NULL REFERENCES versions(id));
+const std::string kSchemaV1File = std::string(testing::kSqliteSchema1Tables) + R"sql(
 INSERT INTO stations VALUES (1, 'plant', 9, 'OLD-DEVICE');
 INSERT INTO station_serials VALUES (1, 'S-9', 1000, 1000);
 INSERT INTO parameter_sets VALUES (1, 891568578, 3, x'616263', 'abc summary');
@@ -56,7 +39,7 @@ std::int64_t user_version(const std::filesystem::path& file) {
 void write_v1_file(const std::filesystem::path& file) {
   sqlite3* db = nullptr;
   ASSERT_EQ(sqlite3_open(file.c_str(), &db), SQLITE_OK);
-  ASSERT_EQ(sqlite3_exec(db, kSchemaV1File, nullptr, nullptr, nullptr), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(db, kSchemaV1File.c_str(), nullptr, nullptr, nullptr), SQLITE_OK);
   sqlite3_close(db);
 }
 
@@ -66,7 +49,7 @@ TEST(ArchiveMigration, Version1FileIsUpgradedAndKeepsItsRows) {
   write_v1_file(file);
   ASSERT_EQ(user_version(file), 1);
   auto archive = SqliteArchive::open(file).value();
-  EXPECT_EQ(user_version(file), 4);
+  EXPECT_EQ(user_version(file), 5);
   const StationKey station{"plant", 9};
   const auto cur = archive->current(station).value();
   EXPECT_EQ(cur.version.note, "from v1");
@@ -94,7 +77,7 @@ TEST(ArchiveMigration, EmptyFileIsVersion0AndGetsTheWholeSchema) {
   const auto file = dir.file("empty.sqlite3");
   std::ofstream{file};  // 0 bytes: SQLite treats it as an empty database
   auto archive = SqliteArchive::open(file).value();
-  EXPECT_EQ(user_version(file), 4);
+  EXPECT_EQ(user_version(file), 5);
   EXPECT_TRUE(archive->stations().value().empty());
 }
 

@@ -105,7 +105,7 @@ TEST_F(PgArchiveTest, ANewerSchemaIsRefusedAndLeftAsItIs) {
   const auto opened = PgArchive::open(engine_->location());
   ASSERT_TRUE(opened.has_error());
   EXPECT_EQ(opened.error().code, ArchiveError::kNewerSchema);
-  EXPECT_THAT(opened.error().message, HasSubstr("schema version 99, this rs4sim knows up to 4"));
+  EXPECT_THAT(opened.error().message, HasSubstr("schema version 99, this rs4sim knows up to 5"));
   EXPECT_EQ(engine_->digest(), before);
 }
 
@@ -184,7 +184,7 @@ TEST_F(PgArchiveTest, MastersOpeningAnEmptyDatabaseAtOnceCreateTheSchemaOnce) {
   for (const auto& e : errors) EXPECT_EQ(e, "");
   EXPECT_EQ(engine_->raw().rows("SELECT application_id, schema_version FROM " +
                                 engine_->schema() + ".rs4sim_archive"),
-            (std::vector<std::vector<std::string>>{{"1381184577", "4"}}));
+            (std::vector<std::vector<std::string>>{{"1381184577", "5"}}));
 }
 
 }  // namespace
