@@ -1,14 +1,14 @@
 #include "gridscan/mode_spec.h"
 
+#include "stream/words.h"
+
 #include <charconv>
 
 namespace rs4sim::gridscan {
 
 std::string apply_mode_spec(std::string_view spec, Options& o) {
   bool first = true;
-  while (true) {
-    const auto at = spec.find(',');
-    const std::string_view word = spec.substr(0, at);
+  for (const std::string_view word : stream::split_words(spec, ',')) {
     if (first) {
       if (word == "blanking") o.configuration = Configuration::kBlanking;
       else if (word == "static") o.configuration = Configuration::kStatic;
@@ -28,9 +28,8 @@ std::string apply_mode_spec(std::string_view spec, Options& o) {
     } else {
       return "'" + std::string(word) + "' is none of cycle= (after blanking or static)";
     }
-    if (at == std::string_view::npos) return {};
-    spec.remove_prefix(at + 1);
   }
+  return {};
 }
 
 }  // namespace rs4sim::gridscan

@@ -1,6 +1,7 @@
 #include "gsd/check_report.h"
 
 #include "gsd/config.h"
+#include "gsd/f_module.h"
 
 #include <cstdio>
 #include <sstream>
@@ -74,39 +75,62 @@ void default_configuration(const Device& d, std::ostream& out) {
       << "\n";
 }
 
+// `n "name" Type(bits), default v, range a..b[, fixed][, texts …]`
+void parameter(const Device& d, int n, const ExtParam& p, std::ostream& out) {
+  out << n << " " << quoted(p.name) << " " << to_string(p.type);
+  if (p.type == ParamType::kBit) out << "(" << p.bit_low << ")";
+  if (p.type == ParamType::kBitArea) out << "(" << p.bit_low << "-" << p.bit_high << ")";
+  out << ", default " << p.default_value << ", " << (p.allowed.empty() ? "range " : "values ")
+      << p.range_text() << (p.changeable ? "" : ", fixed");
+  const auto texts = p.prm_text_ref ? d.prm_texts.find(*p.prm_text_ref) : d.prm_texts.end();
+  if (texts != d.prm_texts.end()) {
+    std::string list;
+    for (const auto& [v, t] : texts->second.texts) {
+      list += (list.empty() ? "" : ", ") + std::to_string(v) + " " + quoted(t);
+    }
+    out << ", texts " << list;
+  }
+  out << "\n";
+}
+
 void parameters(const Device& d, std::ostream& out) {
   if (d.params.empty()) return;
   out << "Parameters (" << d.params.size() << "):\n";
   for (const auto& [n, p] : d.params) {
-    out << "  " << n << " " << quoted(p.name) << " " << to_string(p.type);
-    if (p.type == ParamType::kBit) out << "(" << p.bit_low << ")";
-    if (p.type == ParamType::kBitArea) out << "(" << p.bit_low << "-" << p.bit_high << ")";
-    out << ", default " << p.default_value << ", " << (p.allowed.empty() ? "range " : "values ")
-        << p.range_text() << (p.changeable ? "" : ", fixed");
-    const auto texts = p.prm_text_ref ? d.prm_texts.find(*p.prm_text_ref) : d.prm_texts.end();
-    if (texts != d.prm_texts.end()) {
-      std::string list;
-      for (const auto& [v, t] : texts->second.texts) {
-        list += (list.empty() ? "" : ", ") + std::to_string(v) + " " + quoted(t);
-      }
-      out << ", texts " << list;
-    }
-    out << "\n";
+    out << "  ";
+    parameter(d, n, p, out);
   }
 }
 
-void f_parameters(const Device& d, std::ostream& out) {
+std::string optional_crc(const std::optional<std::uint16_t>& crc) {
+  return crc ? std::to_string(*crc) + " (" + hex16(*crc) + ")" : std::string("not given");
+}
+
+void f_module(const Device& d, const Module& m, std::ostream& out) {
+  auto f = describe_f_module(d, m);
+  out << "F-module " << quoted(m.name) << " (line " << m.line << "): ";
+  if (!f) {
+    out << f.error().message << "\n";
+    return;
+  }
+  const FModuleInfo& info = f.value();
+  const FParameterDefaults& def = info.defaults;
+  out << to_text(info.io) << "\n  F-parameters of " << quoted(m.name) << ": "
+      << hex_bytes(def.block) << "; F_Par_CRC in the file " << hex16(def.file_crc)
+      << ", CRC1 over the defaults " << hex16(def.crc1)
+      << (def.file_crc == def.crc1 ? " (equal)" : " (differs)") << "\n  at byte " << def.offset
+      << " of the F-part (F_Ext_Module_Prm_Data_Len " << m.f_prm->length << "):\n";
+  for (const auto& field : info.fields) {
+    out << "    +" << field.offset << " ";
+    parameter(d, field.param->number, *field.param, out);
+  }
+  out << "  F_ParamDescCRC " << optional_crc(m.f_param_desc_crc) << ", F_IO_StructureDescCRC "
+      << optional_crc(m.f_io_structure_desc_crc) << "\n";
+}
+
+void f_modules(const Device& d, std::ostream& out) {
   for (const auto& m : d.modules) {
-    if (!m.f_prm) continue;
-    out << "F-parameters of " << quoted(m.name) << ": ";
-    auto f = f_parameter_defaults(d, m);
-    if (!f) {
-      out << f.error().message << "\n";
-      continue;
-    }
-    out << hex_bytes(f.value().block) << "; F_Par_CRC in the file " << hex16(f.value().file_crc)
-        << ", CRC1 over the defaults " << hex16(f.value().crc1)
-        << (f.value().file_crc == f.value().crc1 ? " (equal)" : " (differs)") << "\n";
+    if (is_f_module(m)) f_module(d, m, out);
   }
 }
 
@@ -134,7 +158,7 @@ std::string check_report(const Device& device) {
   modules(device, out);
   default_configuration(device, out);
   parameters(device, out);
-  f_parameters(device, out);
+  f_modules(device, out);
   out << "Warnings (" << device.warnings.size() << ")" << (device.warnings.empty() ? "" : ":")
       << "\n";
   for (const auto& w : device.warnings) out << "  " << w.what() << "\n";

@@ -351,6 +351,7 @@ Result<FParameterDefaults> f_parameter_defaults(const Device& device, const Modu
   FParameterDefaults out;
   out.block.assign(data.begin() + static_cast<std::ptrdiff_t>(start),
                    data.begin() + static_cast<std::ptrdiff_t>(start + 10));
+  out.offset = start;
   out.file_crc = codec::be16(data[crc_offset], data[crc_offset + 1]);
   out.crc1 = codec::be16(encoded[8], encoded[9]);
   return out;

@@ -120,6 +120,7 @@ Result<void> check_user_prm(const Device& device, const SlaveSetup& setup,
 // bytes do not read as F-parameters).
 struct FParameterDefaults {
   std::vector<std::uint8_t> block;  // 10 bytes
+  std::size_t offset = 0;           // of block[0] in the module's F-part
   std::uint16_t file_crc = 0;       // F_Par_CRC's default in the file
   std::uint16_t crc1 = 0;           // CRC1 over block[0..7]
 };

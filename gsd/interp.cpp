@@ -2,6 +2,7 @@
 // blocks.
 #include "gsd/interp.h"
 
+#include "gsd/f_module.h"
 #include "gsd/interp_detail.h"
 
 #include <algorithm>
@@ -393,6 +394,7 @@ Result<Device> Interpreter::run() {
     device_.slots.insert(device_.slots.end(), slots.begin(), slots.end());
   }
   RS4SIM_GSD_TRYV(finish());
+  RS4SIM_GSD_TRYV(check_f_modules(device_));
   device_.warnings = file_.warnings;
   device_.warnings.insert(device_.warnings.end(), warnings_.begin(), warnings_.end());
   std::stable_sort(device_.warnings.begin(), device_.warnings.end(),

@@ -2,7 +2,9 @@
 
 #include "http/page_files.h"
 #include "json/message.h"
+#include "json/request_body.h"
 #include "rpc/server.h"
+#include "rpc/status.h"
 
 #include "google/rpc/status.pb.h"
 
@@ -496,7 +498,13 @@ class Connection : public std::enable_shared_from_this<Connection> {
     }
     std::unique_ptr<pb::Message> in(
         pb::MessageFactory::generated_factory()->GetPrototype(md->input_type())->New());
-    const std::string body = request_.body().empty() ? "{}" : request_.body();
+    std::string body = request_.body().empty() ? "{}" : request_.body();
+    // Short enum names and hex bytes as people write them; an unknown member named with the
+    // message's fields (json/request_body.h).
+    if (const auto refused = json::normalise_body(body, *md->input_type())) {
+      respond({400, status_json(rpc::invalid_argument(refused->field, refused->reason))});
+      return;
+    }
     pb::util::JsonParseOptions parse;
     parse.ignore_unknown_fields = false;
     if (const auto st = json::to_message(body, *in, parse); !st.ok()) {

@@ -1,5 +1,7 @@
 #include "metron/mode_spec.h"
 
+#include "stream/words.h"
+
 #include <charconv>
 #include <optional>
 #include <vector>
@@ -7,19 +9,11 @@
 namespace rs4sim::metron {
 namespace {
 
-std::vector<std::string_view> split(std::string_view s, char sep) {
-  std::vector<std::string_view> out;
-  while (true) {
-    const auto at = s.find(sep);
-    out.push_back(s.substr(0, at));
-    if (at == std::string_view::npos) return out;
-    s.remove_prefix(at + 1);
-  }
-}
+using stream::split_words;
 
 std::string apply_report(std::string_view list, Options& o) {
   o.report.clear();
-  for (const auto name : split(list, '+')) {
+  for (const auto name : split_words(list, '+')) {
     const auto m = parse_measurement(name);
     if (!m) return "unknown measurement '" + std::string(name) + "' in report=";
     o.report.push_back(*m);
@@ -85,7 +79,7 @@ std::string apply_option(std::string_view word, Options& o) {
 }  // namespace
 
 std::string apply_mode_spec(std::string_view spec, Options& o) {
-  const auto words = split(spec, ',');
+  const auto words = split_words(spec, ',');
   if (words.front() == "slave") {
     // The input type applies in both modes: in slave mode it decides whether the host may
     // drive the OSSDs (#2..#6 need No_function) [METRON manual "Slave line mode"].

@@ -1,5 +1,7 @@
 #include "polaris/mode_spec.h"
 
+#include "stream/words.h"
+
 #include <charconv>
 #include <optional>
 
@@ -92,9 +94,7 @@ std::optional<std::string> apply_word(std::string_view word, Options& p) {
 
 std::string apply_mode_spec(std::string_view spec, Options& o) {
   bool first = true;
-  while (true) {
-    const auto at = spec.find(',');
-    const std::string_view word = spec.substr(0, at);
+  for (const std::string_view word : stream::split_words(spec, ',')) {
     if (first) {
       const auto m = parse_data_mode(word);
       if (!m) return "'" + std::string(word) + "' is not 485MB, FL1, FL4 or FL10";
@@ -108,9 +108,8 @@ std::string apply_mode_spec(std::string_view spec, Options& o) {
     } else if (!why->empty()) {
       return *why;
     }
-    if (at == std::string_view::npos) return {};
-    spec.remove_prefix(at + 1);
   }
+  return {};
 }
 
 }  // namespace rs4sim::polaris

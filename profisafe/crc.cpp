@@ -27,10 +27,12 @@ std::uint32_t Crc::update_reversed(std::uint32_t reg,
 namespace {
 constexpr Crc kCrc16{16, kCrc16Poly};
 constexpr Crc kCrc24{24, kCrc24Poly};
+constexpr Crc kCrc32{32, kCrc32Poly};
 }  // namespace
 
 const Crc& crc16() noexcept { return kCrc16; }
 const Crc& crc24() noexcept { return kCrc24; }
+const Crc& crc32() noexcept { return kCrc32; }
 
 std::uint16_t crc1(std::span<const std::uint8_t, 8> block8,
                    std::optional<std::uint32_t> ipar_crc) noexcept {

@@ -18,6 +18,10 @@ inline constexpr std::uint32_t kCrc16Poly = 0x4EAB;
 // CRC-24 polynomial of the V2 3-byte CRC2, [IEC 61784-3-3 CRC2] (VERIFIED on the capture).
 inline constexpr std::uint32_t kCrc24Poly = 0x5D6DCB;
 
+// CRC-32 polynomial of the V2 4-byte CRC2 (F_CRC_Length 2), [IEC 61784-3-3 CRC2]. No capture or
+// published vector here: UNCERTAIN beyond the polynomial (docs/profisafe.md).
+inline constexpr std::uint32_t kCrc32Poly = 0xF4ACFB13;
+
 // A table-driven MSB-first CRC of width 16 or 24 (8 < width <= 32, multiple of 8 not
 // required). `update` continues from a register value, so a preset is just the start.
 class Crc {
@@ -38,9 +42,10 @@ class Crc {
   std::array<std::uint32_t, 256> table_{};
 };
 
-// The two CRCs PROFIsafe uses, built once.
+// The three CRCs PROFIsafe uses, built once.
 const Crc& crc16() noexcept;
 const Crc& crc24() noexcept;
+const Crc& crc32() noexcept;
 
 // CRC1 = F_Par_CRC over the 8 bytes F_Prm_Flag1 .. F_WD_Time (preset 0). When an
 // F_iPar_CRC exists, its 4 big-endian bytes are fed first ([IEC 61784-3-3 CRC1], VERIFIED).

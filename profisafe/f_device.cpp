@@ -11,12 +11,14 @@ FDevice::FDevice(FDeviceConfig config) : config_(config) {
   if (config_.data_size == 0 || config_.data_size > kMaxDataSize) {
     throw std::invalid_argument("FDevice: data_size must be 1..12");
   }
-  if (config_.profile.par_version != 0 || config_.profile.crc_length != CrcLength::k2Byte) {
+  if (!is_supported_connection(config_.profile.par_version, config_.profile.crc_length)) {
     throw std::invalid_argument(
-        "FDevice: only PROFIsafe V1 (F_Par_Version 0, 2-byte CRC) is driven");
+        "FDevice: V1 needs F_Par_Version 0 with a 2-byte CRC, V2 F_Par_Version 1 with 3 or 4");
   }
-  pdu_config_.data_size = config_.data_size;
-  pdu_config_.variant = config_.crc2_variant;
+  FParameters p;
+  p.par_version = config_.profile.par_version;
+  p.crc_length = config_.profile.crc_length;
+  pdu_config_ = PduConfig::from(p, config_.data_size, config_.crc2_variant);
   build_response();
 }
 
@@ -25,7 +27,9 @@ Validation FDevice::set_parameters(std::span<const std::uint8_t> block) {
   fault_bits_ = 0;
   fault_reported_ = false;
   activate_fv_ = false;
-  last_number_ = 0;
+  number_ = 0;
+  toggle_ = true;
+  cons_nr_reset_ = false;
   synced_ = false;
   watchdog_deadline_.reset();
   output_.fill(0);
@@ -55,8 +59,13 @@ bool FDevice::sends_process_values() const noexcept {
 
 std::uint8_t FDevice::status_byte() const noexcept {
   if (state_ == FDeviceState::kNoParameters) return 0;
-  return static_cast<std::uint8_t>(fault_bits_ |
-                                   (sends_process_values() ? 0 : status_bit::kFvActivated));
+  auto status = static_cast<std::uint8_t>(fault_bits_ |
+                                          (sends_process_values() ? 0 : status_bit::kFvActivated));
+  if (pdu_config_.version == ProtocolVersion::kV2) {
+    if (toggle_) status |= status_bit::kToggleD;
+    if (cons_nr_reset_) status |= status_bit::kConsNrR;
+  }
+  return status;
 }
 
 void FDevice::enter_fault(std::uint8_t bit) {
@@ -69,7 +78,9 @@ void FDevice::enter_fault(std::uint8_t bit) {
 void FDevice::accept_new(const PduCheck& check, TimePoint now) {
   ++counters_.new_pdus;
   synced_ = true;
-  last_number_ = check.consecutive_number;
+  number_ = candidate_;
+  toggle_ = candidate_toggle_;
+  cons_nr_reset_ = candidate_reset_;
   watchdog_deadline_ = now + std::chrono::milliseconds(wd_time_ms_);
   activate_fv_ = (check.status_or_control & control_bit::kActivateFv) != 0;
   if (state_ == FDeviceState::kFault) {
@@ -91,30 +102,81 @@ void FDevice::accept_new(const PduCheck& check, TimePoint now) {
   }
 }
 
+FDeviceEvent FDevice::classify_v1(std::span<const std::uint8_t> pdu) {
+  last_check_ = check_pdu(pdu_config_, pdu);
+  if (!last_check_.ok()) return FDeviceEvent::kCrcError;
+  const std::uint8_t n = last_check_.consecutive_number;
+  if (synced_ && n == number_) return FDeviceEvent::kRepeat;
+  // [PROFIsafe V1.30 F-Device behaviour] UNCERTAIN detail: a wrong number is a communication
+  // fault reported as CE_CRC. The device then re-synchronises to the host's next valid number
+  // (docs/profisafe.md).
+  if (synced_ && n != next_consecutive_number(static_cast<std::uint8_t>(number_)))
+    return FDeviceEvent::kNumberError;
+  candidate_ = n;
+  return FDeviceEvent::kNew;
+}
+
+// [IEC 61784-3-3 safety PDU] V2: R_cons_nr restarts the virtual number at 0; otherwise a changed
+// Toggle_h makes the PDU new (number + 1) and an unchanged one repeats the current number.
+FDeviceEvent FDevice::classify_v2(std::span<const std::uint8_t> pdu) {
+  const bool sized = pdu.size() == pdu_size(pdu_config_);
+  const std::uint8_t control = sized ? pdu[config_.data_size] : 0;
+  const bool reset = (control & control_bit::kRConsNr) != 0;
+  const bool toggle = (control & control_bit::kToggleH) != 0;
+  const bool same = synced_ && toggle == toggle_;
+  const bool is_new = reset ? !(same && number_ == 0) : !same;
+  const std::uint32_t expected =
+      reset ? 0 : (is_new ? next_virtual_consecutive_number(number_) : number_);
+  last_check_ = check_pdu(pdu_config_, pdu, expected);
+  if (!last_check_.ok()) {
+    return sized && synced_ && !reset && adopt_neighbour(pdu, expected, toggle)
+               ? FDeviceEvent::kNumberError
+               : FDeviceEvent::kCrcError;
+  }
+  if (!is_new) return FDeviceEvent::kRepeat;
+  candidate_ = expected;
+  candidate_toggle_ = toggle;
+  candidate_reset_ = reset;
+  return FDeviceEvent::kNew;
+}
+
+// V2: a PDU whose CRC2 holds with the current number, the one before it or the one after the
+// expected one was sent with a repeated or skipped number (DECISION, docs/profisafe.md). The
+// device takes that number and toggle, so that its fault answer reaches the host as valid.
+bool FDevice::adopt_neighbour(std::span<const std::uint8_t> pdu, std::uint32_t expected,
+                              bool toggle) {
+  for (const std::uint32_t n :
+       {number_, number_ - 1, next_virtual_consecutive_number(expected)}) {
+    if (n > 0xFFFFFFu || !check_pdu(pdu_config_, pdu, n).ok()) continue;
+    number_ = n;
+    toggle_ = toggle;
+    return true;
+  }
+  return false;
+}
+
 FDeviceEvent FDevice::on_pdu(std::span<const std::uint8_t> pdu, TimePoint now) {
   on_time(now);  // a PDU arriving at or after the deadline comes too late
   if (state_ == FDeviceState::kNoParameters) return FDeviceEvent::kIgnored;
   ++counters_.pdus;
-  last_check_ = check_pdu(pdu_config_, pdu);
-  FDeviceEvent event = FDeviceEvent::kNew;
-  if (!last_check_.ok()) {
-    ++counters_.crc_errors;
-    enter_fault(status_bit::kCeCrc);
-    event = FDeviceEvent::kCrcError;
-  } else if (synced_ && last_check_.consecutive_number == last_number_) {
-    ++counters_.repeats;
-    if (state_ == FDeviceState::kFault) fault_reported_ = true;
-    event = FDeviceEvent::kRepeat;
-  } else if (synced_ && last_check_.consecutive_number != next_consecutive_number(last_number_)) {
-    // [PROFIsafe V1.30 F-Device behaviour] UNCERTAIN detail: a wrong number is a communication
-    // fault reported as CE_CRC. The device then re-synchronises to the host's next valid number
-    // (docs/profisafe.md).
-    ++counters_.number_errors;
-    enter_fault(status_bit::kCeCrc);
-    synced_ = false;
-    event = FDeviceEvent::kNumberError;
-  } else {
-    accept_new(last_check_, now);
+  const bool v2 = pdu_config_.version == ProtocolVersion::kV2;
+  const FDeviceEvent event = v2 ? classify_v2(pdu) : classify_v1(pdu);
+  switch (event) {
+    case FDeviceEvent::kCrcError:
+      ++counters_.crc_errors;
+      enter_fault(status_bit::kCeCrc);
+      break;
+    case FDeviceEvent::kNumberError:
+      ++counters_.number_errors;
+      enter_fault(status_bit::kCeCrc);
+      if (!v2) synced_ = false;  // V2: the host restarts the number with R_cons_nr
+      break;
+    case FDeviceEvent::kRepeat:
+      ++counters_.repeats;
+      if (state_ == FDeviceState::kFault) fault_reported_ = true;
+      break;
+    case FDeviceEvent::kNew: accept_new(last_check_, now); break;
+    case FDeviceEvent::kIgnored: break;
   }
   build_response();
   return event;
@@ -146,7 +208,7 @@ void FDevice::build_response() {
   if (sends_process_values()) data = input_;
   const auto written =
       build_pdu(pdu_config_, std::span<const std::uint8_t>(data).first(config_.data_size),
-                status_byte(), last_number_, response_);
+                status_byte(), number_, response_);
   (void)written;
 }
 
@@ -158,14 +220,17 @@ void FDevice::apply_faults() {
     wire_ = sent_;
     return;
   }
-  const std::size_t number_at = config_.data_size + 1;
   const bool skip = faults_.skip_number > 0;
   if (skip) --faults_.skip_number;
   if ((skip || faults_.crc1_override) && state_ != FDeviceState::kNoParameters) {
     PduConfig c = pdu_config_;
     if (faults_.crc1_override) c.crc1 = *faults_.crc1_override;
-    const std::uint8_t n =
-        skip ? next_consecutive_number(response_[number_at]) : response_[number_at];
+    const bool v1 = pdu_config_.version == ProtocolVersion::kV1;
+    std::uint32_t n = number_;
+    if (skip) {
+      n = v1 ? next_consecutive_number(static_cast<std::uint8_t>(n))
+             : next_virtual_consecutive_number(n);
+    }
     const auto written =
         build_pdu(c, std::span<const std::uint8_t>(response_).first(config_.data_size),
                   response_[config_.data_size], n, wire_);

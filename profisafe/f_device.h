@@ -6,6 +6,12 @@
 // host's output data with output(). One predicate, sends_process_values(), decides
 // whether real data (not fail-safe values 0) go out and come in.
 //
+// V1 and V2 ([IEC 61784-3-3 safety PDU], rules in docs/profisafe.md): the F-parameters select
+// the protocol. V1 sends the consecutive number (1 byte) and a 2-byte CRC2; V2 sends no number:
+// Toggle_h in the control byte marks a new PDU, the virtual consecutive number (24 bit) goes
+// into the 3- or 4-byte CRC2 on both sides, R_cons_nr restarts it at 0 (answered with
+// cons_nr_R), and the answer carries Toggle_d = the host's Toggle_h.
+//
 // States: kNoParameters (no valid F-parameters: all-zero PDU) → kStartup (valid
 // F-parameters, fail-safe values until the first valid host PDU) → kRun ⇄ kFault
 // (CE_CRC / WD_timeout latched, fail-safe values; cleared by the second valid new host PDU
@@ -45,6 +51,8 @@ enum class FDeviceEvent : std::uint8_t {
   kRepeat,       // valid PDU repeating the last number (nothing changes)
   kCrcError,     // size or CRC2 wrong → CE_CRC, fail-safe values
   kNumberError,  // consecutive number neither last nor next → CE_CRC, fail-safe values
+                 // (V2: CRC2 fails with the expected virtual number but holds with the
+                 // current or the one after the next: a repeated or skipped number)
 };
 [[nodiscard]] const char* to_string(FDeviceEvent e) noexcept;
 
@@ -56,14 +64,18 @@ struct FDeviceCounters {
 
 class FDevice {
  public:
-  // Throws std::invalid_argument unless the profile is V1 (2-byte CRC2) and data_size is
-  // 1..kMaxDataSize.
+  // Throws std::invalid_argument unless the profile is V1 (F_Par_Version 0, 2-byte CRC2) or
+  // V2 (F_Par_Version 1, 3- or 4-byte CRC2) and data_size is 1..kMaxDataSize.
   explicit FDevice(FDeviceConfig config);
 
   // Set_Prm: the F-parameter block (10 bytes). Valid → kStartup; otherwise the fault is
   // kept and the device stays in / returns to kNoParameters.
   Validation set_parameters(std::span<const std::uint8_t> block);
   [[nodiscard]] const Validation& last_validation() const noexcept { return validation_; }
+  // The standard diagnosis of the last F-parameters (64..71, 0 when accepted; f_parameters.h).
+  [[nodiscard]] std::uint8_t diagnosis() const noexcept {
+    return standard_diagnosis(validation_.fault);
+  }
 
   // The application's process input (device → host). Size must equal data_size.
   void set_input(std::span<const std::uint8_t> data);
@@ -82,13 +94,18 @@ class FDevice {
   [[nodiscard]] std::span<const std::uint8_t> output() const noexcept;
   [[nodiscard]] std::uint8_t status_byte() const noexcept;
   [[nodiscard]] FDeviceState state() const noexcept { return state_; }
-  [[nodiscard]] std::uint8_t last_number() const noexcept { return last_number_; }
+  // V1: the last accepted consecutive number; V2: the virtual consecutive number.
+  [[nodiscard]] std::uint32_t last_number() const noexcept { return number_; }
+  [[nodiscard]] ProtocolVersion version() const noexcept { return pdu_config_.version; }
   [[nodiscard]] const FDeviceCounters& counters() const noexcept { return counters_; }
   [[nodiscard]] const PduCheck& last_check() const noexcept { return last_check_; }
   PduFaults& faults() noexcept { return faults_; }
 
  private:
   void enter_fault(std::uint8_t bit);
+  FDeviceEvent classify_v1(std::span<const std::uint8_t> pdu);
+  FDeviceEvent classify_v2(std::span<const std::uint8_t> pdu);
+  bool adopt_neighbour(std::span<const std::uint8_t> pdu, std::uint32_t expected, bool toggle);
   void accept_new(const PduCheck& check, TimePoint now);
   void build_response();
   void apply_faults();
@@ -100,7 +117,12 @@ class FDevice {
   std::uint8_t fault_bits_ = 0;
   bool fault_reported_ = false;
   bool activate_fv_ = false;
-  std::uint8_t last_number_ = 0;
+  std::uint32_t number_ = 0;     // V1 consecutive number / V2 virtual number accepted last
+  std::uint32_t candidate_ = 0;  // the number of the PDU being accepted
+  bool toggle_ = true;           // V2: Toggle_h of the PDU accepted last (none: 1, so 0 is new)
+  bool candidate_toggle_ = false;
+  bool candidate_reset_ = false;
+  bool cons_nr_reset_ = false;  // V2: the PDU accepted last carried R_cons_nr
   std::optional<TimePoint> watchdog_deadline_;
   std::array<std::uint8_t, kMaxDataSize> input_{};
   std::array<std::uint8_t, kMaxDataSize> output_{};

@@ -1,4 +1,5 @@
-// PROFIsafe F-host driver, V1 ([PROFIsafe V1.30 F-Device behaviour]). See f_host.h and
+// PROFIsafe F-host driver, V1 and V2 ([PROFIsafe V1.30 F-Device behaviour] [IEC 61784-3-3 safety
+// PDU]). See f_host.h and
 // docs/profisafe.md.
 #include "profisafe/f_host.h"
 
@@ -8,8 +9,9 @@
 namespace rs4sim::profisafe {
 
 FHost::FHost(FHostConfig config) : config_(config) {
-  if (config_.params.par_version != 0 || config_.params.crc_length != CrcLength::k2Byte) {
-    throw std::invalid_argument("FHost: only PROFIsafe V1 (F_Par_Version 0, 2-byte CRC) is driven");
+  if (!is_supported_connection(config_.params.par_version, config_.params.crc_length)) {
+    throw std::invalid_argument(
+        "FHost: V1 needs F_Par_Version 0 with a 2-byte CRC, V2 F_Par_Version 1 with 3 or 4");
   }
   if (config_.data_size == 0 || config_.data_size > kMaxDataSize) {
     throw std::invalid_argument("FHost: data_size must be 1..12");
@@ -38,6 +40,11 @@ void FHost::passivate() {
   if (state_ == FHostState::kRun || state_ == FHostState::kAckRequired) ++counters_.passivations;
   if (state_ != FHostState::kStartup) state_ = FHostState::kPassivated;
   input_.fill(0);
+  if (pdu_config_.version == ProtocolVersion::kV2) {
+    // DECISION (docs/profisafe.md): V2 leaves the PDU in flight and restarts the number.
+    restart_ = true;
+    outstanding_ = false;
+  }
 }
 
 void FHost::ack_rei() noexcept {
@@ -46,20 +53,39 @@ void FHost::ack_rei() noexcept {
   ++counters_.reintegrations;
 }
 
-void FHost::build_new_pdu(TimePoint now) {
-  if (has_previous_ || number_ != 0) previous_pdu_ = pdu_;
-  has_previous_ = number_ != 0;
-  number_ = next_consecutive_number(number_);
+// V1: n + 1 (1..255); V2: the virtual number + 1, or 0 on a restart; a skip fault adds one.
+void FHost::advance_number() {
+  previous_number_ = number_;
+  const bool v1 = pdu_config_.version == ProtocolVersion::kV1;
+  auto next = [v1](std::uint32_t n) {
+    return v1 ? next_consecutive_number(static_cast<std::uint8_t>(n))
+              : next_virtual_consecutive_number(n);
+  };
+  number_ = (!v1 && restart_) ? 0 : next(number_);
   if (faults_.skip_number > 0) {
     --faults_.skip_number;
-    number_ = next_consecutive_number(number_);
+    number_ = next(number_);
   }
+  toggle_h_ = !toggle_h_;
+}
+
+void FHost::build_new_pdu(TimePoint now) {
+  if (started_) previous_pdu_ = pdu_;
+  has_previous_ = started_;
+  started_ = true;
+  const bool reset = restart_ && pdu_config_.version == ProtocolVersion::kV2;
+  advance_number();
+  restart_ = false;
   // While passivated the host sends fail-safe output values with activate_FV (DECISION).
   const bool fail_safe = state_ != FHostState::kRun;
   std::array<std::uint8_t, kMaxDataSize> data{};
   if (!fail_safe) data = output_;
-  const auto control =
+  auto control =
       static_cast<std::uint8_t>(fail_safe || user_activate_fv_ ? control_bit::kActivateFv : 0);
+  if (pdu_config_.version == ProtocolVersion::kV2) {
+    if (toggle_h_) control |= control_bit::kToggleH;
+    if (reset) control |= control_bit::kRConsNr;
+  }
   const auto written =
       build_pdu(pdu_config_, std::span<const std::uint8_t>(data).first(config_.data_size), control,
                 number_, pdu_);
@@ -84,8 +110,10 @@ std::span<const std::uint8_t> FHost::request(TimePoint now) {
     c.crc1 = *faults_.crc1_override;
     const std::size_t ds = config_.data_size;
     const auto fields = wire_;  // build_pdu must not read and write the same buffer
-    const auto written = build_pdu(c, std::span<const std::uint8_t>(fields).first(ds), fields[ds],
-                                   fields[ds + 1], wire_);
+    const std::uint32_t n =
+        pdu_config_.version == ProtocolVersion::kV1 ? fields[ds + 1] : number_;
+    const auto written =
+        build_pdu(c, std::span<const std::uint8_t>(fields).first(ds), fields[ds], n, wire_);
     (void)written;
   }
   if (faults_.corrupt_crc2 > 0) {
@@ -116,25 +144,53 @@ void FHost::handle_valid(const PduCheck& check) {
   }
 }
 
+FHostEvent FHost::classify_v1() {
+  const std::uint8_t n = last_check_.consecutive_number;
+  if (outstanding_ && n == previous_consecutive_number(static_cast<std::uint8_t>(number_))) {
+    return FHostEvent::kStale;  // the device has not seen number_ yet; the watchdog keeps running
+  }
+  return (!outstanding_ || n != number_) ? FHostEvent::kNumberError : FHostEvent::kValid;
+}
+
+// V2: valid = CRC2 over number_ and Toggle_d = Toggle_h; an answer over the previous number
+// with the previous toggle is stale.
+FHostEvent FHost::classify_v2(std::span<const std::uint8_t> pdu) {
+  const bool sized = pdu.size() == pdu_size(pdu_config_);
+  const bool toggle_d = sized && (pdu[config_.data_size] & status_bit::kToggleD) != 0;
+  if (last_check_.ok()) {
+    if (!outstanding_) return FHostEvent::kNumberError;
+    return toggle_d == toggle_h_ ? FHostEvent::kValid : FHostEvent::kStale;
+  }
+  if (has_previous_ && toggle_d != toggle_h_) {
+    const PduCheck previous = check_pdu(pdu_config_, pdu, previous_number_);
+    if (previous.ok()) {
+      last_check_ = previous;
+      return FHostEvent::kStale;
+    }
+  }
+  return FHostEvent::kCrcError;
+}
+
 FHostEvent FHost::on_pdu(std::span<const std::uint8_t> pdu, TimePoint now) {
   on_time(now);
-  if (number_ == 0) return FHostEvent::kNotExpected;
+  if (!started_) return FHostEvent::kNotExpected;
   ++counters_.answers;
-  last_check_ = check_pdu(pdu_config_, pdu);
-  if (!last_check_.ok()) {
-    ++counters_.crc_errors;
-    passivate();
-    return FHostEvent::kCrcError;
+  const bool v2 = pdu_config_.version == ProtocolVersion::kV2;
+  last_check_ = check_pdu(pdu_config_, pdu, number_);
+  FHostEvent event = FHostEvent::kCrcError;
+  if (v2) {
+    event = classify_v2(pdu);
+  } else if (last_check_.ok()) {
+    event = classify_v1();
   }
-  const std::uint8_t n = last_check_.consecutive_number;
-  if (outstanding_ && n == previous_consecutive_number(number_)) {
-    ++counters_.stale;  // the device has not seen number_ yet; the watchdog keeps running
-    return FHostEvent::kStale;
+  if (event == FHostEvent::kStale) {
+    ++counters_.stale;
+    return event;
   }
-  if (!outstanding_ || n != number_) {
-    ++counters_.number_errors;
+  if (event != FHostEvent::kValid) {
+    ++(event == FHostEvent::kCrcError ? counters_.crc_errors : counters_.number_errors);
     passivate();
-    return FHostEvent::kNumberError;
+    return event;
   }
   handle_valid(last_check_);
   return (last_status_ & (status_bit::kCeCrc | status_bit::kWdTimeout)) != 0

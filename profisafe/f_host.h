@@ -1,5 +1,6 @@
 #pragma once
-// PROFIsafe F-host driver, V1 ([PROFIsafe V1.30 F-Device behaviour]; rules in docs/profisafe.md).
+// PROFIsafe F-host driver, V1 and V2 ([PROFIsafe V1.30 F-Device behaviour] [IEC 61784-3-3 safety
+// PDU]; rules in docs/profisafe.md).
 //
 // Sans-I/O: each bus cycle the master asks request(now) for the F-output PDU and hands
 // the slave's answer to on_pdu(). The host sends consecutive number n until a valid answer
@@ -10,6 +11,10 @@
 // output values 0 with activate_FV. Once a valid answer without fault bits arrives again,
 // ack_req() becomes true; ack_rei() (the user acknowledgement) reintegrates. At start-up the
 // device is reintegrated automatically on the first healthy answer (DECISION).
+//
+// V2: the number is virtual (24 bit, not sent); each new PDU flips Toggle_h, and a valid answer
+// carries Toggle_d = Toggle_h and a CRC2 over the same number. The first PDU, and the first
+// after any fault, restarts the number at 0 with R_cons_nr (DECISION).
 
 #include "profisafe/f_parameters.h"
 #include "profisafe/faults.h"
@@ -62,8 +67,8 @@ struct FHostCounters {
 
 class FHost {
  public:
-  // Throws std::invalid_argument if the parameters are not a V1 (2-byte CRC2) connection
-  // or the data size is not 1..kMaxDataSize.
+  // Throws std::invalid_argument unless the parameters are a V1 (2-byte CRC2) or V2 (3- or
+  // 4-byte CRC2) connection and the data size is 1..kMaxDataSize.
   explicit FHost(FHostConfig config);
 
   // The F-parameter block for Set_Prm, with ParameterFaults applied.
@@ -86,7 +91,9 @@ class FHost {
   [[nodiscard]] bool ack_req() const noexcept { return state_ == FHostState::kAckRequired; }
   void ack_rei() noexcept;  // user acknowledgement; only effective while ack_req()
   [[nodiscard]] FHostState state() const noexcept { return state_; }
-  [[nodiscard]] std::uint8_t number() const noexcept { return number_; }
+  // V1: the consecutive number in flight; V2: the virtual consecutive number.
+  [[nodiscard]] std::uint32_t number() const noexcept { return number_; }
+  [[nodiscard]] ProtocolVersion version() const noexcept { return pdu_config_.version; }
   [[nodiscard]] std::uint8_t last_status() const noexcept { return last_status_; }
   [[nodiscard]] const FHostCounters& counters() const noexcept { return counters_; }
   [[nodiscard]] const PduCheck& last_check() const noexcept { return last_check_; }
@@ -97,12 +104,19 @@ class FHost {
   void passivate();
   void build_new_pdu(TimePoint now);
   void handle_valid(const PduCheck& check);
+  void advance_number();
+  FHostEvent classify_v1();
+  FHostEvent classify_v2(std::span<const std::uint8_t> pdu);
 
   FHostConfig config_;
   PduConfig pdu_config_{};
   FHostState state_ = FHostState::kStartup;
-  std::uint8_t number_ = 0;   // number of the PDU in flight (0 = none yet)
-  bool outstanding_ = false;  // a PDU with number_ waits for its answer
+  std::uint32_t number_ = 0;           // number of the PDU in flight
+  std::uint32_t previous_number_ = 0;  // V2: the number before it
+  bool started_ = false;               // a PDU was built
+  bool toggle_h_ = true;               // V2: Toggle_h of the PDU in flight (flips per new PDU)
+  bool restart_ = true;                // V2: the next new PDU restarts at 0 with R_cons_nr
+  bool outstanding_ = false;           // a PDU with number_ waits for its answer
   bool user_activate_fv_ = false;
   std::uint8_t last_status_ = 0;
   std::optional<TimePoint> watchdog_deadline_;

@@ -73,6 +73,15 @@ Result<FParameters> parse_f_parameters(std::span<const std::uint8_t> block,
   return p;
 }
 
+DeviceProfile profile_for(const FParameters& p) noexcept {
+  return DeviceProfile{.check_ipar = p.check_ipar,
+                       .sil = p.sil,
+                       .crc_length = p.crc_length,
+                       .block_id = p.block_id,
+                       .par_version = p.par_version,
+                       .dest_add = p.dest_add};
+}
+
 Validation validate(const FParameters& p, const DeviceProfile& d) noexcept {
   Validation v;
   v.received_crc1 = p.par_crc;
@@ -126,6 +135,41 @@ const char* to_string(FParameterFault f) noexcept {
     case FParameterFault::kCrc1Mismatch: return "wrong CRC1 over the F-parameters";
   }
   return "unknown F-parameter fault";
+}
+
+// V1: F_Par_Version 0 with the 2-byte CRC2; V2: F_Par_Version 1 with the 3- or 4-byte CRC2.
+bool is_supported_connection(std::uint8_t par_version, CrcLength crc_length) noexcept {
+  if (par_version == 0) return crc_length == CrcLength::k2Byte;
+  return par_version == 1 && (crc_length == CrcLength::k3Byte || crc_length == CrcLength::k4Byte);
+}
+
+std::uint8_t standard_diagnosis(FParameterFault f) noexcept {
+  switch (f) {
+    case FParameterFault::kNone: return 0;
+    case FParameterFault::kDestAddMismatch: return 64;
+    case FParameterFault::kDestAddInvalid: return 65;
+    case FParameterFault::kSourceAddInvalid: return 66;
+    case FParameterFault::kWdTimeInvalid: return 67;
+    case FParameterFault::kSilMismatch: return 68;
+    case FParameterFault::kCrcLengthMismatch: return 69;
+    case FParameterFault::kVersionMismatch: return 70;
+    case FParameterFault::kCrc1Mismatch: return 71;
+  }
+  return 0;
+}
+
+const char* standard_diagnosis_text(std::uint8_t diagnosis) noexcept {
+  switch (diagnosis) {
+    case 64: return "Mismatch of safety destination address (F_Dest_Add)";
+    case 65: return "Safety destination address not valid (F_Dest_Add)";
+    case 66: return "Safety source address not valid (F_Source_Add)";
+    case 67: return "Safety watchdog time value is 0 ms or not supported (F_WD_Time)";
+    case 68: return "Parameter F_SIL exceeds SIL from specific device application";
+    case 69: return "Parameter F_CRC_Length does not match the generated values";
+    case 70: return "Version of F-parameter set incorrect";
+    case 71: return "CRC1 fault (F_Par_CRC)";
+    default: return "";
+  }
 }
 
 }  // namespace rs4sim::profisafe

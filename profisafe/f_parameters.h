@@ -90,6 +90,18 @@ enum class FParameterFault : std::uint8_t {
 };
 [[nodiscard]] const char* to_string(FParameterFault f) noexcept;
 
+// The connections the drivers serve: V1 = F_Par_Version 0 with the 2-byte CRC2, V2 =
+// F_Par_Version 1 with the 3- or 4-byte CRC2 ([IEC 61784-3-3 F-Parameters]).
+[[nodiscard]] bool is_supported_connection(std::uint8_t par_version, CrcLength crc_length) noexcept;
+
+// The standard F-device diagnosis of a fault ([IEC 61784-3-3 F-Parameters], the values a GSD's
+// X_Value(64..71) texts name): 64 F_Dest_Add mismatch, 65 F_Dest_Add invalid, 66 F_Source_Add,
+// 67 F_WD_Time, 68 SIL, 69 CRC length, 70 F-parameter version, 71 CRC1; 0 for kNone. A device
+// may number them its own way (the RS4: rs4/safety/diagnosis.h).
+[[nodiscard]] std::uint8_t standard_diagnosis(FParameterFault f) noexcept;
+// Its meaning in the standard's words, for a diagnosis 64..71 ("" for any other value).
+[[nodiscard]] const char* standard_diagnosis_text(std::uint8_t diagnosis) noexcept;
+
 // What a device accepts: fixed values and ranges plus its own F_Dest_Add.
 struct DeviceProfile {
   bool check_ipar = false;
@@ -105,6 +117,10 @@ struct DeviceProfile {
   // (kDestAddInvalid).
   std::uint16_t dest_add = 504;
 };
+
+// A device that takes exactly these fixed values (F_Check_iPar, SIL, CRC length, F_Block_ID,
+// F_Par_Version) and whose own F_Dest_Add is p.dest_add; the ranges stay the defaults above.
+[[nodiscard]] DeviceProfile profile_for(const FParameters& p) noexcept;
 
 struct Validation {
   FParameterFault fault = FParameterFault::kNone;

@@ -10,12 +10,6 @@
 namespace rs4sim::profisafe {
 namespace {
 
-constexpr std::size_t crc2_size(ProtocolVersion v) noexcept {
-  return v == ProtocolVersion::kV1 ? 2 : 3;
-}
-// V1: status/control + number + 2-byte CRC2; V2: status/control + 3-byte CRC2.
-constexpr std::size_t kOverhead = 4;
-
 bool covers_number(const PduConfig& c) noexcept {
   switch (c.variant.seq_coverage) {
     case Crc2Variant::SeqCoverage::kAlways: return true;
@@ -49,10 +43,11 @@ std::uint32_t crc2_v1(const PduConfig& c, std::span<const std::uint8_t> data, st
   return reg;
 }
 
-// V2 (VERIFIED): reverse of [VCN as 4 bytes big-endian] + data + status, preset CRC1.
+// V2 (VERIFIED for the 3-byte CRC2): reverse of [VCN as 4 bytes big-endian] + data + status,
+// preset CRC1. The 4-byte CRC2 takes the same input with the CRC-32 (UNCERTAIN, crc.h).
 std::uint32_t crc2_v2(const PduConfig& c, std::span<const std::uint8_t> data, std::uint8_t sc,
                       std::uint32_t vcn) noexcept {
-  const Crc& crc = crc24();
+  const Crc& crc = c.long_crc2 ? crc32() : crc24();
   const std::array<std::uint8_t, 1> s{sc};
   std::array<std::uint8_t, 4> vcn_reversed{};
   codec::Writer(vcn_reversed).u32_le(vcn);
@@ -70,11 +65,20 @@ PduConfig PduConfig::from(const FParameters& p, std::size_t data_size,
   c.data_size = data_size;
   c.crc1 = p.par_crc;
   c.check_seqnr = p.check_seqnr;
+  c.long_crc2 = p.crc_length == CrcLength::k4Byte;
   c.variant = variant;
   return c;
 }
 
-std::size_t pdu_size(const PduConfig& c) noexcept { return c.data_size + kOverhead; }
+std::size_t crc2_size(const PduConfig& c) noexcept {
+  if (c.version == ProtocolVersion::kV1) return 2;
+  return c.long_crc2 ? 4 : 3;
+}
+
+// V1: status/control + number + 2-byte CRC2; V2: status/control + 3- or 4-byte CRC2.
+std::size_t pdu_size(const PduConfig& c) noexcept {
+  return c.data_size + 1 + (c.version == ProtocolVersion::kV1 ? 1 : 0) + crc2_size(c);
+}
 
 std::error_code check_config(const PduConfig& c) noexcept {
   if (c.data_size == 0 || c.data_size > kMaxDataSize)
@@ -102,7 +106,7 @@ Result<std::size_t> build_pdu(const PduConfig& c, std::span<const std::uint8_t> 
   w.bytes(data);
   w.u8(sc);
   if (c.version == ProtocolVersion::kV1) w.u8(static_cast<std::uint8_t>(consecutive_number));
-  w.uint_be(crc2(c, data, sc, consecutive_number), crc2_size(c.version));
+  w.uint_be(crc2(c, data, sc, consecutive_number), crc2_size(c));
   return size;
 }
 
@@ -121,7 +125,7 @@ PduCheck check_pdu(const PduConfig& c, std::span<const std::uint8_t> pdu,
     r.consecutive_number = in.u8();
     number = r.consecutive_number;
   }
-  r.received_crc2 = in.uint_be(crc2_size(c.version));
+  r.received_crc2 = in.uint_be(crc2_size(c));
   r.computed_crc2 = crc2(c, r.data, r.status_or_control, number);
   if (r.computed_crc2 != r.received_crc2) r.error = ProfisafeError::kPduCrc2Mismatch;
   return r;

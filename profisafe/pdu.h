@@ -3,6 +3,7 @@
 //
 //   V1 (2-byte CRC2):  F-data[N] | status/control | consecutive number | CRC2 hi | CRC2 lo
 //   V2 (3-byte CRC2):  F-data[N] | status/control | CRC2 (3 bytes, high first)
+//   V2 (4-byte CRC2):  F-data[N] | status/control | CRC2 (4 bytes, high first; F_CRC_Length 2)
 //
 // V1 with N = 1 is five bytes each way. CRC2 runs over F-data, the
 // status/control byte and the consecutive number (V1: only when F_Check_SeqNr = 1, or as
@@ -27,7 +28,7 @@ enum class ProtocolVersion : std::uint8_t { kV1 = 0, kV2 = 1 };
 
 // Largest F-data size this implementation supports (the short PDU format of both versions).
 inline constexpr std::size_t kMaxDataSize = 12;
-inline constexpr std::size_t kMaxPduSize = kMaxDataSize + 4;
+inline constexpr std::size_t kMaxPduSize = kMaxDataSize + 5;  // V2 with a 4-byte CRC2
 
 // Status byte, device → host ([PROFIsafe V1.30 safety PDU]). V1 defines CE_CRC, WD_timeout,
 // FV_activated only.
@@ -89,13 +90,17 @@ struct PduConfig {
   std::size_t data_size = 1;  // F-data bytes (1..kMaxDataSize)
   std::uint16_t crc1 = 0;     // F_Par_CRC of the connection's F-parameters
   bool check_seqnr = false;   // F_Check_SeqNr (V1)
+  bool long_crc2 = false;     // V2 with a 4-byte CRC2 (F_CRC_Length 2); else 3 bytes
   Crc2Variant variant{};      // V1 only; V2 is VERIFIED and fixed
 
-  // From F-parameters: version from F_Par_Version, crc1 from F_Par_CRC.
+  // From F-parameters: version from F_Par_Version, crc1 from F_Par_CRC, the CRC2 length from
+  // F_CRC_Length.
   [[nodiscard]] static PduConfig from(const FParameters& p, std::size_t data_size,
                                       Crc2Variant variant = {}) noexcept;
 };
 
+// CRC2 bytes: V1 2, V2 3 or 4.
+[[nodiscard]] std::size_t crc2_size(const PduConfig& c) noexcept;
 // Total PDU size (data + status/control + [V1: number] + CRC2).
 [[nodiscard]] std::size_t pdu_size(const PduConfig& c) noexcept;
 // ProfisafeError::kPduDataTooLong / kPduUnsupportedCrcLength if the configuration cannot be used.

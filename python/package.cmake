@@ -21,7 +21,7 @@ set(_rs4sim_proto_dir ${PROJECT_SOURCE_DIR}/rpc/proto)
 
 # python/'s sources, copied when they change.
 set(_rs4sim_py_sources pyproject.toml rs4sim_build_backend.py rs4sim/__init__.py rs4sim/harness.py rs4sim/gsd.py rs4sim/process.py
-    rs4sim/pytest_plugin.py rs4sim/stations.py)
+    rs4sim/pytest_plugin.py rs4sim/_units.py rs4sim/stations.py)
 set(_rs4sim_py_staged)
 foreach(file IN LISTS _rs4sim_py_sources)
   add_custom_command(OUTPUT ${_rs4sim_py_out}/${file}
@@ -34,7 +34,7 @@ file(CONFIGURE OUTPUT ${_rs4sim_py_out}/rs4sim/_version.py
      CONTENT "# Written by CMake (python/package.cmake): the project's version.\n__version__ = \"${PROJECT_VERSION}\"\n")
 
 # rs4sim.v1: messages and services.
-set(_rs4sim_v1 rs4 archive_service proxy_service devices gsd run)
+set(_rs4sim_v1 rs4 archive_service proxy_service devices gsd run plc diagnosis)
 set(_rs4sim_v1_protos)
 set(_rs4sim_v1_stubs ${_rs4sim_py_out}/rs4sim/v1/__init__.py)
 foreach(name IN LISTS _rs4sim_v1)

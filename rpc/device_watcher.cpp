@@ -60,7 +60,7 @@ void DeviceWatcher::report(const Look& now, std::int64_t now_ns, bool initial,
     auto e = event(now_ns);
     auto* change = e.mutable_state();
     change->set_what(kWhat[i]);
-    if (!initial) change->set_from(last_.items[i]);
+    if (!initial) change->set_previous(last_.items[i]);
     change->set_to(now.items[i]);
     sink(std::move(e));
   }

@@ -11,7 +11,7 @@ v1::Event ItemsWatcher::change(std::int64_t now_ns, const std::string& what,
   e.set_now_ns(now_ns);
   auto* c = e.mutable_state();
   c->set_what(what);
-  c->set_from(from);
+  c->set_previous(from);
   c->set_to(to);
   return e;
 }

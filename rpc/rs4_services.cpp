@@ -1,5 +1,7 @@
 #include "rpc/rs4_services.h"
 
+#include "rpc/diagnosis_service.h"
+#include "rpc/plc_service.h"
 #include "rpc/rs4_state.h"
 #include "rpc/service_support.h"
 #include "rpc/status.h"
@@ -442,6 +444,44 @@ grpc::Status SimTimeService::Advance(grpc::ServerContext* context, const v1::Adv
   return result;
 }
 
+namespace {
+
+bool on_plc_side(v1::Condition condition) {
+  return condition == v1::CONDITION_PLC_OSSD_ON || condition == v1::CONDITION_PLC_OSSD_OFF ||
+         condition == v1::CONDITION_PLC_PASSIVATED || condition == v1::CONDITION_PLC_ACK_REQUIRED;
+}
+
+// A PLC-side condition on what the F-host hands the PLC program (PlcView): the input byte as
+// read (fail-safe 0 while passivated [IEC 61784-3-3 passivation]) and the F-host's state.
+bool plc_holds(Rs4Target& rs4s, std::uint8_t address, v1::Condition condition) {
+  v1::PlcView plc;
+  if (!rs4s.plc_view(address, plc)) return false;
+  switch (condition) {
+    case v1::CONDITION_PLC_OSSD_ON: return plc.input().ossd();
+    case v1::CONDITION_PLC_OSSD_OFF: return !plc.input().ossd();
+    case v1::CONDITION_PLC_PASSIVATED:
+      return plc.fhost_state() == "passivated" || plc.fhost_state() == "ack-required";
+    case v1::CONDITION_PLC_ACK_REQUIRED: return plc.fhost_state() == "ack-required";
+    default: return false;
+  }
+}
+
+// The scanner-side conditions: what the RS4 itself sends and does.
+bool device_holds(Rs4Device& d, v1::Condition condition) {
+  const std::uint8_t in_byte = d.adapter().input_byte();
+  switch (condition) {
+    case v1::CONDITION_DATA_EXCHANGE: return d.adapter().view().connected;
+    case v1::CONDITION_OSSD_ON: return (in_byte & rs4::adapter::kInputOssd) != 0;
+    case v1::CONDITION_OSSD_OFF: return (in_byte & rs4::adapter::kInputOssd) == 0;
+    case v1::CONDITION_PROXY_REQUEST: return (in_byte & rs4::adapter::kInputProxyRequest) != 0;
+    case v1::CONDITION_RS4_MEASURING:
+      return d.scanner().status().state == scanner::ScannerState::kMeasuring;
+    default: return false;
+  }
+}
+
+}  // namespace
+
 grpc::Status SimTimeService::RunUntil(grpc::ServerContext* context, const v1::RunUntilRequest* in,
                                       v1::RunUntilResponse* out) {
   if (in->timeout_ms() == 0 || in->timeout_ms() > kMaxSimulatedMs) {
@@ -452,23 +492,22 @@ grpc::Status SimTimeService::RunUntil(grpc::ServerContext* context, const v1::Ru
   if (condition == v1::CONDITION_UNSPECIFIED || !v1::Condition_IsValid(condition)) {
     return invalid_argument("condition", "a CONDITION_* value is required");
   }
+  const auto address = static_cast<std::uint8_t>(in->address());
   std::optional<dp::TimePoint> end;  // simulated: where the timeout ends
   for (;;) {
     bool more = false;
     const grpc::Status s = on_device(c_, in->address(), [&](Rs4Device& d, dp::TimePoint) {
       if (!c_.target.simulated()) return needs_simulated_clock();
-      const std::function<bool()> holds = [&d, condition] {
-        const std::uint8_t in_byte = d.adapter().input_byte();
-        switch (condition) {
-          case v1::CONDITION_DATA_EXCHANGE: return d.adapter().view().connected;
-          case v1::CONDITION_OSSD_ON: return (in_byte & rs4::adapter::kInputOssd) != 0;
-          case v1::CONDITION_OSSD_OFF: return (in_byte & rs4::adapter::kInputOssd) == 0;
-          case v1::CONDITION_PROXY_REQUEST:
-            return (in_byte & rs4::adapter::kInputProxyRequest) != 0;
-          case v1::CONDITION_RS4_MEASURING:
-            return d.scanner().status().state == scanner::ScannerState::kMeasuring;
-          default: return false;
-        }
+      Rs4Target& rs4s = *c_.target.rs4s();
+      v1::PlcView plc;
+      if (on_plc_side(condition) && !rs4s.plc_view(address, plc)) {
+        return failed_precondition("PLC", "station " + std::to_string(address),
+                                   "this run has no PLC side (no F-host of ours on the link): "
+                                   "the PLC_* conditions need the simulated bus");
+      }
+      const std::function<bool()> holds = [&d, &rs4s, address, condition] {
+        return on_plc_side(condition) ? plc_holds(rs4s, address, condition)
+                                      : device_holds(d, condition);
       };
       if (!end) end = c_.target.now() + std::chrono::milliseconds(in->timeout_ms());
       bool reached = holds();
@@ -489,8 +528,13 @@ grpc::Status SimTimeService::RunUntil(grpc::ServerContext* context, const v1::Ru
 
 std::vector<std::shared_ptr<grpc::Service>> rs4_service_set(Rs4Target& target, Executor& executor) {
   const Rs4Context c{target, executor};
-  return {std::make_shared<DeviceService>(c), std::make_shared<ObservationService>(c),
-          std::make_shared<FaultsService>(c), std::make_shared<SimTimeService>(c)};
+  std::vector<std::shared_ptr<grpc::Service>> set{
+      std::make_shared<DeviceService>(c), std::make_shared<ObservationService>(c),
+      std::make_shared<FaultsService>(c), std::make_shared<SimTimeService>(c),
+      std::make_shared<Rs4DiagnosticsService>(c)};
+  // rs4sim.v1.Plc where the run is the PLC (the simulated segment).
+  if (PlcTarget* plc = target.plc()) set.push_back(std::make_shared<PlcService>(*plc, executor));
+  return set;
 }
 
 }  // namespace rs4sim::rpc

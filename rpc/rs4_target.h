@@ -15,6 +15,8 @@
 
 namespace rs4sim::rpc {
 
+class PlcTarget;
+
 class Rs4Target : public RunTarget {
  public:
   // nullptr for an unknown station, or one that is not an RS4.
@@ -38,6 +40,9 @@ class Rs4Target : public RunTarget {
     (void)out;
     return false;
   }
+  // The PLC program's outputs and acknowledgement mode (rs4sim.v1.Plc); nullptr: the run
+  // has no PLC side of ours.
+  virtual PlcTarget* plc() { return nullptr; }
   // The PLC's ACK_REI to the station's F-host: empty when given, else why not ("this run has
   // no PLC side", "the F-host is in run, not ack-required").
   virtual std::string ack_rei(std::uint8_t address) {

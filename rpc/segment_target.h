@@ -6,6 +6,7 @@
 
 #include "rpc/event_hub.h"
 #include "rpc/rs4_target.h"
+#include "rpc/segment_plc.h"
 #include "rs4/device/rs4_segment.h"
 
 namespace rs4sim::rpc {
@@ -23,10 +24,12 @@ class SegmentTarget final : public Rs4Target {
   EventHub* events() override { return hub_.get(); }
   bool plc_view(std::uint8_t address, v1::PlcView& out) override;
   std::string ack_rei(std::uint8_t address) override;
+  PlcTarget* plc() override { return &plc_; }
 
  private:
   rs4::device::Rs4Segment& segment_;
   std::shared_ptr<EventHub> hub_ = std::make_shared<EventHub>();  // shared with the observer
+  SegmentPlc plc_{segment_, *this};
 };
 
 }  // namespace rs4sim::rpc

@@ -6,6 +6,7 @@
 #include "gsd/check_report.h"
 #include "gsd/config.h"
 #include "gsd/device_gsd.h"
+#include "gsd/f_module.h"
 #include "gsd/interp.h"
 #include "rs4/report/json_writer.h"
 #include "rs4/safety/profile.h"
@@ -89,7 +90,42 @@ void print_text(const gsd::SlaveSetup& c, const std::string& source, std::ostrea
   }
 }
 
-void print_json(const gsd::SlaveSetup& c, const std::string& source, std::ostream& out) {
+// Per F-module: the safety I/O its F-parameters select and where its block lies.
+void print_f_modules(const gsd::Device& d, const gsd::SlaveSetup& c, std::ostream& out) {
+  for (const auto& f : c.f_parameters) {
+    const gsd::Module& m = d.modules[c.slots[f.module].index];
+    const auto io = gsd::safety_io_layout(m, f.parameters);
+    const auto block = std::vector<std::uint8_t>(
+        c.user_prm_data.begin() + static_cast<std::ptrdiff_t>(f.offset),
+        c.user_prm_data.begin() + static_cast<std::ptrdiff_t>(f.offset + 10));
+    out << "F-module " << f.module + 1 << " (" << m.name
+        << "): " << (io ? gsd::to_text(io.value()) : io.error().message) << "\n  F-parameters at +"
+        << f.offset << ": " << hex_bytes(block) << "\n";
+  }
+}
+
+// "f_modules": the safety I/O of each F-module (gsd::safety_io_layout).
+void json_f_modules(const gsd::Device& d, const gsd::SlaveSetup& c, std::ostream& out) {
+  out << ",\n  \"f_modules\": [";
+  for (std::size_t i = 0; i < c.f_parameters.size(); ++i) {
+    const auto& f = c.f_parameters[i];
+    const gsd::Module& m = d.modules[c.slots[f.module].index];
+    const auto io = gsd::safety_io_layout(m, f.parameters);
+    out << (i ? ",\n    " : "\n    ") << "{\"module\": " << f.module + 1
+        << ", \"offset\": " << f.offset;
+    if (io) {
+      out << ", \"version\": " << (io.value().version == profisafe::ProtocolVersion::kV1 ? 1 : 2)
+          << ", \"crc2_bytes\": " << io.value().crc2_bytes
+          << ", \"f_input_bytes\": " << io.value().f_input_bytes
+          << ", \"f_output_bytes\": " << io.value().f_output_bytes;
+    }
+    out << "}";
+  }
+  out << "\n  ]";
+}
+
+void print_json(const gsd::Device& d, const gsd::SlaveSetup& c, const std::string& source,
+                std::ostream& out) {
   out << "{\n  \"gsd\": " << rs4::report::json_quote(source) << ",\n";
   out << "  \"ident_number\": " << rs4::report::json_quote(hex16(c.ident_number)) << ",\n";
   out << "  \"modules\": [";
@@ -108,7 +144,9 @@ void print_json(const gsd::SlaveSetup& c, const std::string& source, std::ostrea
   for (std::size_t i = 0; i < c.f_parameters.size(); ++i) {
     out << (i ? ", " : "") << rs4::report::json_quote(hex16(c.f_parameters[i].parameters.par_crc));
   }
-  out << "]\n}\n";
+  out << "]";
+  json_f_modules(d, c, out);
+  out << "\n}\n";
 }
 
 std::vector<gsd::ParamOverride> overrides(const Options& o, bool builtin) {
@@ -149,9 +187,11 @@ int run_prm(const Options& o) {
   const std::string source =
       builtin ? std::string(gsd::kRs4simGsdFileName) + " (built in)" : o.gsd_file;
   if (o.json)
-    print_json(config.value(), source, std::cout);
-  else
+    print_json(device.value(), config.value(), source, std::cout);
+  else {
     print_text(config.value(), source, std::cout);
+    print_f_modules(device.value(), config.value(), std::cout);
+  }
   return 0;
 }
 

@@ -6,6 +6,8 @@
 //   rs4sim master --slave 4 --link udp --listen 127.0.0.1:5000 --peer 127.0.0.1:5001
 //   rs4sim master --slave 4 --slave 5 --link memory --json        (simulated RS4s, simulated time)
 //   rs4sim master --slave 4 --link serial --port /dev/pts/3 --grpc 127.0.0.1:0  (Proxy, Archive)
+//   rs4sim master --slave 4 --link serial --port /dev/pts/3 --restart-pulse 300
+//                                                   (the start interlock's reset signal by the bus)
 //   rs4sim master --gsd-slave 5:X.gsd --module "5:DI 8" --slave 4 --link serial --port ...
 //                                                   (a GSD slave beside the RS4, master_gsd.h)
 #include "app/cli/command.h"
@@ -19,6 +21,7 @@
 #include "app/runtime/master_service.h"
 #include "dp/master/master_config.h"
 #include "dp/pdu/sap.h"
+#include "rpc/master_plc.h"
 #include "rs4/adapter/cyclic_bytes.h"
 #include "storage/open_archive.h"
 #include "storage/request_check.h"
@@ -49,6 +52,7 @@ struct MasterCliOptions {
   ProxyPluginOptions proxy;
   std::string user;  // --user; empty: the OS user
   bool manual_ack = false;
+  std::optional<int> restart_pulse_ms;  // --restart-pulse
   MasterServiceOptions service;
   LinkOptions link;
 };
@@ -149,6 +153,38 @@ rs4::device::Rs4MasterStationConfig station_config(const MasterCliOptions& o,
   return c;
 }
 
+// rs4sim.v1.Plc and --restart-pulse (rpc/master_plc.h): what the PLC program writes, on the
+// master's cycles.
+class PlcPlugin final : public MasterPlugin {
+ public:
+  explicit PlcPlugin(std::optional<dp::Duration> restart_pulse) : plc_(restart_pulse) {}
+  void start(rs4::device::Rs4MasterStation& station, dp::TimePoint now) override {
+    plc_.attach(station);
+    plc_.on_cycle(now);
+  }
+  void on_event(const rs4::device::Rs4MasterEvent& e, rs4::device::Rs4MasterStation&,
+                MasterReport&, dp::TimePoint now) override {
+    if (std::holds_alternative<rs4::device::MasterCycle>(e)) plc_.on_cycle(now);
+  }
+  ServiceList services(const ServiceContext& context) override {
+    return {std::make_shared<rpc::PlcService>(plc_, context.executor)};
+  }
+
+ private:
+  rpc::MasterPlc plc_;
+};
+
+std::optional<dp::Duration> restart_pulse(const MasterCliOptions& o) {
+  if (!o.restart_pulse_ms) return std::nullopt;
+  // [RS4 manual §4.3]: the RS4 takes a press of 0.12..5 s as the reset signal.
+  const int ms = *o.restart_pulse_ms;
+  if (ms < 120 || ms > 5000) {
+    throw UsageError("--restart-pulse: " + std::to_string(ms) +
+                     " ms is outside 120..5000 (what the RS4 takes as a reset signal)");
+  }
+  return std::chrono::milliseconds(ms);
+}
+
 int run(MasterCliOptions& o) {
   validate(o.link);
   std::vector<std::string> warnings;
@@ -180,7 +216,8 @@ int run(MasterCliOptions& o) {
   }
   std::unique_ptr<storage::ParameterArchive> archive;
   std::unique_ptr<ProxyPlugin> proxy;
-  std::vector<MasterPlugin*> plugins;
+  PlcPlugin plc(restart_pulse(o));
+  std::vector<MasterPlugin*> plugins{&plc};
   if (!o.no_proxy) {
     const std::string path =
         o.archive.empty() ? storage::default_archive_path().string()
@@ -249,6 +286,9 @@ Action setup(CLI::App& cmd) {
                "store no new version when an uploaded set is the station's current one");
   cmd.add_flag("--manual-ack", o->manual_ack,
                "keep ACK_REQ standing after a PROFIsafe fault (default: acknowledge at once)");
+  cmd.add_option("--restart-pulse", o->restart_pulse_ms,
+                 "MS: pulse the restart bit for MS ms (120..5000) once per start-up of each RS4, "
+                 "when it waits in its start interlock (OSSD 0, operational, field free)");
   cmd.add_option("--boot-time", o->service.simulated_boot_ms,
                  "memory: boot time of the simulated RS4s in ms (default 30000)")
       ->check(CLI::Range(0, 600000));

@@ -106,6 +106,9 @@ Action setup(CLI::App& cmd) {
   cmd.add_option("--cfg", d.cfg, option_help("--cfg"));
   cmd.add_option("--gsd", d.gsd, option_help("--gsd"));
   cmd.add_option("--module", d.modules, option_help("--module"));
+  cmd.add_option("--f-dest-add", d.f_dest_add,
+                 "with --gsd: the F_Dest_Add of the station's PROFIsafe F-modules (their address "
+                 "switch; default: the GSD's F_Dest_Add)");
   cmd.add_option("--bus", o->bus,
                  "a whole bus from FILE.json: {\"stations\": [{\"address\": 4, \"device\": "
                  "\"rs4\"}, {\"address\": 5, \"gsd\": \"X.gse\", \"modules\": [...]}]}, all on "

@@ -100,7 +100,7 @@ class Reader {
 // The keys of a station, as the `rs4sim run` options without the dashes.
 constexpr const char* kKeys[] = {"address", "device", "gsd", "modules", "ident", "cfg",
                                  "boot-time", "command-time", "adapter-response-time",
-                                 "serial-number", "state", "rs232", "pc-adapter"};
+                                 "serial-number", "state", "rs232", "pc-adapter", "f-dest-add"};
 // The byte devices' options: those devices are not DP stations.
 constexpr const char* kByteKeys[] = {"baud", "format", "elements", "beams", "model",
                                      "mode", "blocked", "door", "node"};
@@ -147,6 +147,7 @@ BusStation read_station(const Reader& r, const Value& v, const std::string& path
     if (key == "state") o.state_files = {r.file_name(x, at)};
     if (key == "rs232") o.rs232 = r.text(x, at);
     if (key == "pc-adapter") o.pc_adapter = r.text(x, at);
+    if (key == "f-dest-add") o.f_dest_add = static_cast<int>(r.integer(x, at, 1, 65534));
   }
   if (!o.address) r.fail(path, "\"address\" is missing");
   if (s.device.empty()) {

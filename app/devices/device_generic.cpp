@@ -139,12 +139,14 @@ class GsdInstance final : public DeviceInstance {
 GsdStationSpec gsd_spec(const DeviceOptions& o, std::vector<std::string>* warnings) {
   GsdStationSpec spec = load_gsd_station(o.gsd, o.modules, o.address.value_or(-1), warnings);
   check_gsd_baud(spec, o.link_baud);
+  if (o.f_dest_add) spec.f_dest_add = check_f_dest_add(spec, *o.f_dest_add);
   return spec;
 }
 
 void validate_gsd(DeviceOptions& o) {
   if (!o.address) throw UsageError("--device generic --gsd needs --address");
-  refuse_unused(o, "generic --gsd", {DeviceFlag::kAddress, DeviceFlag::kGsd, DeviceFlag::kModule});
+  refuse_unused(o, "generic --gsd", {DeviceFlag::kAddress, DeviceFlag::kGsd, DeviceFlag::kModule,
+                                          DeviceFlag::kFDestAdd});
   std::vector<std::string> warnings;
   GsdStationSpec spec = gsd_spec(o, &warnings);
   for (const auto& w : warnings) std::cerr << "warning: " << w << std::endl;

@@ -37,6 +37,7 @@ bool given(const DeviceOptions& o, DeviceFlag f) {
     case DeviceFlag::kState: return !o.state_files.empty();
     case DeviceFlag::kGsd: return !o.gsd.empty();
     case DeviceFlag::kModule: return !o.modules.empty();
+    case DeviceFlag::kFDestAdd: return o.f_dest_add.has_value();
     case DeviceFlag::kWireTable: return !o.wire_table.empty();
     case DeviceFlag::kMains: return !o.mains.empty();
   }
@@ -52,6 +53,7 @@ constexpr DeviceFlag kAllFlags[] = {
     DeviceFlag::kCommandTime, DeviceFlag::kResponseTime, DeviceFlag::kAddresses,
     DeviceFlag::kSerialNumber, DeviceFlag::kState,        DeviceFlag::kGsd,
     DeviceFlag::kModule,      DeviceFlag::kWireTable,    DeviceFlag::kMains,
+    DeviceFlag::kFDestAdd,
 };
 
 // A whole decimal number in `text`, or nullopt.
@@ -79,6 +81,7 @@ const char* flag_name(DeviceFlag f) {
     case DeviceFlag::kAddress: return "--address";
     case DeviceFlag::kGsd: return "--gsd";
     case DeviceFlag::kModule: return "--module";
+    case DeviceFlag::kFDestAdd: return "--f-dest-add";
     case DeviceFlag::kAddresses: return "--address (repeated)";
     case DeviceFlag::kIdent: return "--ident";
     case DeviceFlag::kCfg: return "--cfg";

@@ -42,6 +42,7 @@ enum class DeviceFlag : std::uint8_t {
   kState,
   kGsd,     // --gsd FILE (generic)
   kModule,  // --module NAME, repeatable (with --gsd)
+  kFDestAdd,  // --f-dest-add N (with --gsd: the F-modules' F_Dest_Add)
   kWireTable,  // --wire-table FILE (METRON)
   kMains,      // --mains on | off (GridScan)
 };

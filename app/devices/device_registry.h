@@ -92,6 +92,9 @@ struct DeviceOptions {
   // in slot order (a compact station's one module is implicit).
   std::string gsd;
   std::vector<std::string> modules;
+  // generic --gsd: --f-dest-add N, the F_Dest_Add of the station's PROFIsafe F-modules (their
+  // address switch; default: the configuration's F_Dest_Add).
+  std::optional<int> f_dest_add;
   // The PROFIBUS rate of the run (--baud of a DP link), for checking it against a GSD.
   std::string link_baud = "1.5M";
 };

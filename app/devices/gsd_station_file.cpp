@@ -5,6 +5,7 @@
 #include "dp/pdu/sap.h"
 #include "dp/time/baud_rate.h"
 #include "gsd/interp.h"
+#include "gsd/syntax.h"
 
 namespace rs4sim::app {
 namespace {
@@ -57,6 +58,19 @@ std::optional<std::uint16_t> gsd_max_tsdr(const GsdStationSpec& spec, const std:
   const gsd::BaudRate* b = find_rate(spec, baud);
   if (!b) return std::nullopt;
   return b->max_tsdr;
+}
+
+std::uint16_t check_f_dest_add(const GsdStationSpec& spec, int value) {
+  if (spec.setup.f_parameters.empty()) {
+    throw UsageError(spec.file + ": --f-dest-add / \"f-dest-add\": no module of the station is "
+                     "a PROFIsafe F-module");
+  }
+  for (const auto& [number, p] : spec.device->params) {
+    if (!gsd::syntax::iequals(p.name, "F_Dest_Add") || p.accepts(value)) continue;
+    throw UsageError(spec.file + ":" + std::to_string(p.line) + ": F_Dest_Add = " +
+                     std::to_string(value) + " is outside the GSD's range " + p.range_text());
+  }
+  return static_cast<std::uint16_t>(value);
 }
 
 dp::master::SlaveEntry gsd_master_entry(const GsdStationSpec& spec,

@@ -33,6 +33,10 @@ void check_gsd_baud(const GsdStationSpec& spec, const std::string& baud);
 // MaxTsdr of the GSD at `baud` (Tbit), or nullopt when the file does not say.
 std::optional<std::uint16_t> gsd_max_tsdr(const GsdStationSpec& spec, const std::string& baud);
 
+// The F-modules' F_Dest_Add `value` (--f-dest-add, bus-file "f-dest-add") checked against the
+// GSD's F_Dest_Add range; throws UsageError naming the GSD's file:line of that parameter.
+std::uint16_t check_f_dest_add(const GsdStationSpec& spec, int value);
+
 // gsd::master_entry; throws UsageError naming the file when the GSD's Set_Prm does not encode.
 dp::master::SlaveEntry gsd_master_entry(const GsdStationSpec& spec,
                                         std::chrono::milliseconds watchdog);

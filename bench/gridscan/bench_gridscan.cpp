@@ -15,7 +15,7 @@
 #include <memory>
 #include <vector>
 
-using rs4sim::bench::heap_in_use;
+using rs4sim::bench::heap_per_object;
 
 namespace rs4sim::gridscan {
 namespace {
@@ -169,24 +169,16 @@ BENCHMARK(BM_FrameEncodeDecode);
 
 // Memory of N booted devices, per device.
 void BM_MemoryPerDevice(benchmark::State& state) {
-  const auto n = static_cast<std::size_t>(state.range(0));
-  double per_device = 0;
-  for (auto _ : state) {
-    std::vector<std::unique_ptr<Device>> devices;
-    devices.reserve(n);
-    const std::size_t after_reserve = heap_in_use();
-    stream::TimePoint t{1h};
-    for (std::size_t i = 0; i < n; ++i) {
-      devices.push_back(std::make_unique<Device>(Options{}));
-      devices.back()->on_time(t);
-      devices.back()->on_time(t + 2s);  // ready
-      while (devices.back()->take_transmit()) {
-      }
+  const stream::TimePoint t{1h};
+  const auto booted = [&](std::size_t) {
+    auto d = std::make_unique<Device>(Options{});
+    d->on_time(t);
+    d->on_time(t + 2s);  // ready
+    while (d->take_transmit()) {
     }
-    const std::size_t heap = heap_in_use() - after_reserve;  // the vector's array excluded
-    per_device = static_cast<double>(heap) / static_cast<double>(n);
-    benchmark::DoNotOptimize(devices.data());
-  }
+    return d;
+  };
+  const double per_device = heap_per_object(state, booted, true);  // the vector's array excluded
   state.counters["sizeof_Device_B"] = static_cast<double>(sizeof(Device));
   state.counters["heap_per_device_B"] = per_device;  // incl. the object itself
 }

@@ -15,7 +15,7 @@
 #include <memory>
 #include <vector>
 
-using rs4sim::bench::heap_in_use;
+using rs4sim::bench::heap_per_object;
 
 namespace rs4sim::metron {
 namespace {
@@ -123,24 +123,18 @@ void BM_StandardReportPerCycle(benchmark::State& state) {
 BENCHMARK(BM_StandardReportPerCycle);
 
 void BM_MemoryPerMetron(benchmark::State& state) {
-  const auto n = static_cast<std::size_t>(state.range(0));
-  double per_device = 0;
-  for (auto _ : state) {
-    const std::size_t before = heap_in_use();
-    std::vector<std::unique_ptr<Device>> devices;
-    stream::TimePoint t{1h};
-    for (std::size_t i = 0; i < n; ++i) {
-      Options o;
-      o.beams = 255;
-      devices.push_back(std::make_unique<Device>(o));
-      devices.back()->on_time(t);
-      devices.back()->on_bytes(Bytes{0x02, 0x02, 0x09, 0x00, 0xF6}, t);
-      devices.back()->on_time(t + 30ms);
-      (void)devices.back()->take_transmit();
-    }
-    per_device = static_cast<double>(heap_in_use() - before) / static_cast<double>(n);
-    benchmark::DoNotOptimize(devices.data());
-  }
+  const stream::TimePoint t{1h};
+  const auto answered = [&](std::size_t) {
+    Options o;
+    o.beams = 255;
+    auto d = std::make_unique<Device>(o);
+    d->on_time(t);
+    d->on_bytes(Bytes{0x02, 0x02, 0x09, 0x00, 0xF6}, t);
+    d->on_time(t + 30ms);
+    (void)d->take_transmit();
+    return d;
+  };
+  const double per_device = heap_per_object(state, answered);
   state.counters["sizeof_Device_B"] = static_cast<double>(sizeof(Device));
   state.counters["heap_per_device_B"] = per_device;  // incl. the object itself
 }

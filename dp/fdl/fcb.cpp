@@ -1,7 +1,7 @@
 // FCB/FCV rules, [IEC 61158-4-3 FCB/FCV].
 #include "dp/fdl/fcb.h"
 
-#include <cstring>
+#include "dp/fdl/telegram_copy.h"
 
 namespace rs4sim::dp::fdl {
 
@@ -28,20 +28,7 @@ FcbVerdict FcbResponder::on_request(std::uint8_t sa, FrameControl fc) {
 }
 
 void FcbResponder::store_reply(const Telegram& reply) {
-  // Field by field: a reply's DU is a few bytes, less than static_vector's library memmove.
-  reply_.type = reply.type;
-  reply_.da = reply.da;
-  reply_.sa = reply.sa;
-  reply_.fc = reply.fc;
-  reply_.dsap = reply.dsap;
-  reply_.ssap = reply.ssap;
-  const std::size_t n = reply.data.size();
-  reply_.data.resize(n, boost::container::default_init);
-  if (n > 16) {
-    std::memcpy(reply_.data.data(), reply.data.data(), n);
-  } else {
-    for (std::size_t i = 0; i < n; ++i) reply_.data[i] = reply.data[i];
-  }
+  copy_telegram(reply_, reply);  // a reply's DU is a few bytes
   has_reply_ = true;
 }
 

@@ -1,5 +1,7 @@
 #include "dp/link/memory_bus.h"
 
+#include "dp/fdl/telegram_copy.h"
+
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
@@ -14,23 +16,6 @@ namespace {
 // A core that keeps reporting a deadline at or before `now` after on_time() would stall
 // simulated time; after this many calls at one instant the bus reports the faulty station.
 constexpr std::uint32_t kMaxCallsPerInstant = 10'000;
-
-// `dst = src` without static_vector's library memmove for the DU: a cyclic DU is a few bytes.
-void copy_telegram(fdl::Telegram& dst, const fdl::Telegram& src) {
-  dst.type = src.type;
-  dst.da = src.da;
-  dst.sa = src.sa;
-  dst.fc = src.fc;
-  dst.dsap = src.dsap;
-  dst.ssap = src.ssap;
-  const std::size_t n = src.data.size();
-  dst.data.resize(n, boost::container::default_init);
-  if (n > 16) {
-    std::memcpy(dst.data.data(), src.data.data(), n);
-  } else {
-    for (std::size_t i = 0; i < n; ++i) dst.data[i] = src.data[i];
-  }
-}
 
 bool is_request(const fdl::Telegram& t) {
   return t.type == fdl::FrameType::kToken ||
@@ -286,7 +271,7 @@ Fate MemoryBus::schedule(Port& from, std::uint8_t to, TimePoint arrival, const f
     p.frame = new_frame();
     Frame& frame = *frames_[p.frame];
     frame.as_telegram = true;
-    copy_telegram(frame.telegram, t);
+    fdl::copy_telegram(frame.telegram, t);
     queue_.push_back(p);
     std::push_heap(queue_.begin(), queue_.end());
     return Fate::kDelivered;

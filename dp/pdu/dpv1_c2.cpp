@@ -22,16 +22,25 @@ Result<void> decode_addresses(std::span<const std::uint8_t> du, std::size_t head
   return boost::outcome_v2::success();
 }
 
+// The fields Initiate request and response share, from byte `at` on: Features_Supported,
+// Profile_Features_Supported, Profile_Ident_Number, S_Type, (S_Len,) D_Type, (D_Len,) then
+// the addresses after the head of `head` bytes.
+template <class Initiate>
+Result<void> decode_initiate_fields(std::span<const std::uint8_t> du, std::size_t at,
+                                    std::size_t head, Initiate& r) {
+  r.features_supported = {du[at], du[at + 1]};
+  r.profile_features_supported = {du[at + 2], du[at + 3]};
+  r.profile_ident_number = codec::be16(du[at + 4], du[at + 5]);
+  r.s_type = du[at + 6];
+  r.d_type = du[at + 8];
+  return decode_addresses(du, head, r.s_addr, r.d_addr);
+}
+
 Result<InitiateRequest> decode_initiate_request(std::span<const std::uint8_t> du) {
   if (du.size() < kInitiateReqHead) return PduError::kTooShort;
   InitiateRequest r;
   r.send_timeout = codec::be16(du[4], du[5]);
-  r.features_supported = {du[6], du[7]};
-  r.profile_features_supported = {du[8], du[9]};
-  r.profile_ident_number = codec::be16(du[10], du[11]);
-  r.s_type = du[12];
-  r.d_type = du[14];
-  BOOST_OUTCOME_TRY(decode_addresses(du, kInitiateReqHead, r.s_addr, r.d_addr));
+  BOOST_OUTCOME_TRY(decode_initiate_fields(du, 6, kInitiateReqHead, r));
   return r;
 }
 
@@ -39,12 +48,7 @@ Result<InitiateResponse> decode_initiate_response(std::span<const std::uint8_t> 
   if (du.size() < kInitiateResHead) return PduError::kTooShort;
   InitiateResponse r;
   r.max_len_data_unit = du[1];
-  r.features_supported = {du[2], du[3]};
-  r.profile_features_supported = {du[4], du[5]};
-  r.profile_ident_number = codec::be16(du[6], du[7]);
-  r.s_type = du[8];
-  r.d_type = du[10];
-  BOOST_OUTCOME_TRY(decode_addresses(du, kInitiateResHead, r.s_addr, r.d_addr));
+  BOOST_OUTCOME_TRY(decode_initiate_fields(du, 2, kInitiateResHead, r));
   return r;
 }
 

@@ -7,6 +7,7 @@
 #include "gsd/cfg.h"
 #include "gsd/check_report.h"
 #include "gsd/config.h"
+#include "gsd/f_module.h"
 #include "gsd/interp.h"
 #include "gsd/unit_diag.h"
 
@@ -57,6 +58,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (auto f = rs4sim::gsd::f_parameter_defaults(d, m); f && f.value().block.size() != 10) {
       __builtin_trap();
     }
+    // Every F-module of a file that was read describes itself (checked while reading).
+    if (rs4sim::gsd::is_f_module(m) && !rs4sim::gsd::describe_f_module(d, m)) __builtin_trap();
   }
   // The slot list: presets first, every slot a module of the file.
   if (auto placed = rs4sim::gsd::place_modules(d, all.modules)) {

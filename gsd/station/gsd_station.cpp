@@ -98,7 +98,43 @@ Result<dp::master::SlaveEntry> master_entry(const GsdStationSpec& spec,
 GsdApplication::GsdApplication(const GsdStationSpec& spec)
     : spec_(spec),
       generic_(dp::devices::GenericDeviceConfig{spec.setup.cfg}),
-      inputs_(spec.setup.input_len, 0) {}
+      inputs_(spec.setup.input_len, 0) {
+  for (const auto& block : spec.setup.f_parameters) {
+    const auto& io = spec.modules.at(block.module);
+    auto f = FModuleDevice::make(*spec.device, spec.setup, block, io.input_offset,
+                                 io.output_offset,
+                                 spec.f_dest_add.value_or(block.parameters.dest_add));
+    if (f) f_modules_.push_back(std::move(f).value());
+  }
+}
+
+FModuleDevice* GsdApplication::f_module(std::size_t module) {
+  for (auto& f : f_modules_) {
+    if (f.module() == module) return &f;
+  }
+  return nullptr;
+}
+
+// [IEC 61784-3-3 F-Parameters]: each F-device checks its block; the first refused one gives
+// Prm_Fault and its status block `05 81 slot 00 nn` with Ext_Diag.
+void GsdApplication::check_f_parameters() {
+  for (auto& f : f_modules_) {
+    if (f.set_parameters(user_prm_).ok()) continue;
+    const auto block = f.status_block();
+    if (set_diagnosis(block, true)) diag_.assign(block.begin(), block.end());  // no slave yet
+    f_diag_ = true;
+    prm_fault_ = "F-module in slot " + std::to_string(spec_.setup.slots[f.module()].slot) +
+                 ": diagnosis " + std::to_string(f.diagnosis()) + " (" +
+                 profisafe::standard_diagnosis_text(f.diagnosis()) + ")";
+    return;
+  }
+  if (f_diag_ && !set_diagnosis({}, false)) f_diag_ = false;
+}
+
+void GsdApplication::on_outputs(std::span<const std::uint8_t> outputs, dp::TimePoint now) {
+  generic_.on_outputs(outputs, now);
+  for (auto& f : f_modules_) f.on_outputs(outputs, now);
+}
 
 dp::slave::PrmVerdict GsdApplication::check_parameters(const dp::pdu::SetPrm& prm,
                                                        dp::TimePoint now) {
@@ -116,18 +152,28 @@ dp::slave::PrmVerdict GsdApplication::check_parameters(const dp::pdu::SetPrm& pr
     auto ok = check_user_prm(*spec_.device, spec_.setup, user_prm_);
     prm_fault_ = ok ? std::string() : ok.error().message;
   }
+  if (prm_fault_.empty()) check_f_parameters();
   // Prm_Fault in Station_Status_1 when refused.
   return prm_fault_.empty() ? dp::slave::PrmVerdict::kAccept : dp::slave::PrmVerdict::kPrmFault;
 }
 
-void GsdApplication::read_inputs(std::span<std::uint8_t> inputs, dp::TimePoint) {
+void GsdApplication::read_inputs(std::span<std::uint8_t> inputs, dp::TimePoint now) {
   const std::size_t n = std::min(inputs.size(), inputs_.size());
   std::copy_n(inputs_.begin(), n, inputs.begin());
   std::fill(inputs.begin() + static_cast<std::ptrdiff_t>(n), inputs.end(), std::uint8_t{0});
+  for (auto& f : f_modules_) {
+    f.device().on_time(now);  // the F-watchdog, checked at every poll
+    f.write_inputs(inputs);
+  }
 }
 
 std::error_code GsdApplication::set_inputs(std::size_t module,
                                            std::span<const std::uint8_t> bytes) {
+  if (FModuleDevice* f = f_module(module)) {
+    if (bytes.size() != f->f_data_size()) return std::make_error_code(std::errc::invalid_argument);
+    f->set_f_inputs(bytes);
+    return {};
+  }
   if (module >= spec_.modules.size() || bytes.size() != spec_.modules[module].input_len) {
     return std::make_error_code(std::errc::invalid_argument);
   }

@@ -14,7 +14,11 @@
 //   * DPV1_Slave, C1/C2_Read_Write_supp and their Max_Data_Len, Fail_Safe, WD_Base_1ms_supp,
 //     Sync/Freeze/Set_Slave_Add support, Max_Diag_Data_Len;
 //   * the I/O lengths of the modules: the inputs are what the harness set (per module, zero at
-//     start), the outputs what the master wrote.
+//     start), the outputs what the master wrote;
+//   * a PROFIsafe F-module is an F-device (gsd/f_device_module.h, V1 or V2 as its F-parameters
+//     say): it checks its F-parameter block (a refused one → Prm_Fault and the standard
+//     diagnosis 64..71 in a status block `05 81 slot 00 nn`), its output bytes are the host's
+//     safety PDU, its input bytes the device's answer around the F-input data the harness set.
 // The supported baud rates and MaxTsdr are checked by the entry against the run's rate and
 // given to our master (GsdStationSpec::max_tsdr).
 //
@@ -26,6 +30,7 @@
 #include "dp/slave/slave.h"
 #include "gsd/config.h"
 #include "gsd/error.h"
+#include "gsd/f_device_module.h"
 #include "gsd/model.h"
 
 #include <chrono>
@@ -52,6 +57,10 @@ struct GsdStationSpec {
     bool preset = false;  // placed by `Preset = 1` (place_modules)
   };
   std::vector<ModuleIo> modules;  // slot order
+  // The F_Dest_Add of the F-modules' F-devices (their address switch, [IEC 61784-3-3
+  // F-Parameters]); unset: the F_Dest_Add the configuration writes, so that the default
+  // Set_Prm is accepted.
+  std::optional<std::uint16_t> f_dest_add;
 };
 
 // The spec of the station at `address` with `setup` (gsd::configure of `device`): the chosen
@@ -91,9 +100,7 @@ class GsdApplication final : public dp::slave::SlaveApplication {
   [[nodiscard]] std::span<const std::uint8_t> real_config() const override {
     return generic_.real_config();
   }
-  void on_outputs(std::span<const std::uint8_t> outputs, dp::TimePoint now) override {
-    generic_.on_outputs(outputs, now);
-  }
+  void on_outputs(std::span<const std::uint8_t> outputs, dp::TimePoint now) override;
   void on_outputs_cleared(dp::slave::OutputClear why, dp::TimePoint now) override {
     generic_.on_outputs_cleared(why, now);
   }
@@ -110,8 +117,9 @@ class GsdApplication final : public dp::slave::SlaveApplication {
     generic_.on_alarm_acknowledged(ack, now);
   }
 
-  // The module's inputs (slot index, 0-based): `bytes` must be exactly its input length.
-  // std::errc::invalid_argument otherwise.
+  // The module's inputs (slot index, 0-based): `bytes` must be exactly its input length, for an
+  // F-module its F-input data (FModuleDevice::f_data_size). std::errc::invalid_argument
+  // otherwise.
   std::error_code set_inputs(std::size_t module, std::span<const std::uint8_t> bytes);
   [[nodiscard]] std::span<const std::uint8_t> inputs() const { return inputs_; }
   [[nodiscard]] std::span<const std::uint8_t> outputs() const { return generic_.outputs(); }
@@ -129,8 +137,15 @@ class GsdApplication final : public dp::slave::SlaveApplication {
   }
   [[nodiscard]] std::span<const std::uint8_t> diagnosis_blocks() const { return diag_; }
   [[nodiscard]] bool ext_diag() const { return ext_diag_; }
+  // The F-devices of the station's F-modules, slot order (FModuleDevice::module() is the slot
+  // index); an F-module whose F-data the drivers cannot serve stays plain I/O (docs/gsd.md).
+  [[nodiscard]] std::vector<FModuleDevice>& f_modules() { return f_modules_; }
+  [[nodiscard]] const std::vector<FModuleDevice>& f_modules() const { return f_modules_; }
+  [[nodiscard]] FModuleDevice* f_module(std::size_t module);
 
  private:
+  void check_f_parameters();
+
   const GsdStationSpec& spec_;
   dp::devices::GenericDevice generic_;
   dp::slave::SlaveControl* control_ = nullptr;
@@ -139,6 +154,8 @@ class GsdApplication final : public dp::slave::SlaveApplication {
   std::string prm_fault_;
   std::vector<std::uint8_t> diag_;
   bool ext_diag_ = false;
+  std::vector<FModuleDevice> f_modules_;
+  bool f_diag_ = false;  // diag_ holds an F-device's status block
 };
 
 class GsdStation final : public dp::Station {

@@ -24,7 +24,8 @@ The master side (rs4sim.v1.GsdMaster): `rs4sim master --gsd-slave 5:FILE --modul
     master.inputs(5, 1)                # what it received from the module in slot 1
 """
 
-from .harness import _Client, _Subscribed, open_channel, pb, pb_grpc
+from ._units import renamed, whole
+from .harness import _Client, _Subscribed, _advance, _now, open_channel, pb, pb_grpc
 from .v1 import gsd_pb2 as gsd_pb
 from .v1 import gsd_pb2_grpc as gsd_grpc
 
@@ -39,25 +40,33 @@ class GsdStations(_Client):
         self.time = pb_grpc.SimTimeStub(self.channel)
 
     def stations(self):
+        """[GsdStation]: every station of the run (no time)."""
         return list(self.stub.ListStations(pb.Empty()).stations)
 
     def station(self, address):
+        """GsdStation: ident, modules (by slot, from 0) with their I/O, DP state (no time)."""
         return self.stub.GetStation(pb.StationRequest(address=address))
 
     def set_inputs(self, address, slot, data):
+        """The inputs (bytes, exactly the module's input length) of the module in `slot`
+        (0-based: the first module of the Chk_Cfg is slot 0; no time)."""
         self.stub.SetInputs(gsd_pb.SetGsdInputsRequest(address=address, slot=slot,
                                                        data=bytes(data)))
 
     def inputs(self, address, slot):
+        """The inputs of the module in `slot` (0-based) as the station sends them."""
         return self.station(address).modules[slot].inputs
 
     def outputs(self, address, slot):
+        """What the master wrote to the module in `slot` (0-based)."""
         return self.station(address).modules[slot].outputs
 
     def set_online(self, address, online):
+        """The station on the bus (True) or off it (no time)."""
         self.stub.SetOnline(gsd_pb.SetGsdOnlineRequest(address=address, online=online))
 
     def set_diagnosis(self, address, blocks=b"", ext_diag=False):
+        """The station's extended diagnosis blocks (bytes) and Ext_Diag flag (no time)."""
         self.stub.SetDiagnosis(gsd_pb.SetGsdDiagnosisRequest(address=address, ext_diag=ext_diag,
                                                              blocks=bytes(blocks)))
 
@@ -78,22 +87,25 @@ class GsdStations(_Client):
     # ---- the simulated bus (rs4sim run --gsd FILE --link memory --grpc) ------------------
     def now(self):
         """The run's clock in seconds (SimTime.Now)."""
-        return self.time.Now(pb.Empty()).now_ns / 1e9
+        return _now(self.time)
 
     def advance(self, seconds):
-        """Moves the simulated clock (SimTime.Advance); returns the new time in seconds."""
-        return self.time.Advance(pb.AdvanceRequest(duration_ms=int(seconds * 1000))).now_ns / 1e9
+        """Moves the simulated clock by `seconds` (whole ms; SimTime.Advance); returns the new
+        time in seconds."""
+        return _advance(self.time, seconds)
 
-    def inject_bus_fault(self, address, kind, direction, count=1, delay_ms=0, bit=0):
+    def inject_bus_fault(self, address, kind, direction, count=1, delay=None, bit=0, *,
+                         delay_ms=None):
         """GsdStations.InjectBusFault (the rules of Faults.InjectBusFault): kind "DROP",
-        "CORRUPT" (bit: the bit flipped, modulo the frame's length) or "DELAY" (delay_ms
-        1..10000); direction "TO_STATION" (the master's requests) or "FROM_STATION" (the
+        "CORRUPT" (bit: the bit flipped, modulo the frame's length) or "DELAY" (delay in
+        seconds, 0.001..10, whole ms; delay_ms= is its deprecated spelling); direction "TO_STATION" (the master's requests) or "FROM_STATION" (the
         station's replies); the next `count` (1..1000000) telegrams. Returns the fault id. The
         simulated bus only: a real link refuses with FAILED_PRECONDITION."""
+        delay = renamed(delay, delay_ms, "delay_ms", "delay", 1000, default=0.0)
         return self.stub.InjectBusFault(pb.BusFaultRequest(
             address=address, kind=pb.BusFaultKind.Value("BUS_FAULT_KIND_" + kind.upper()),
             direction=pb.Direction.Value("DIRECTION_" + direction.upper()), count=count,
-            delay_ms=delay_ms, bit=bit)).fault_id
+            delay_ms=whole(delay, 1000, "delay"), bit=bit)).fault_id
 
     def clear_bus_faults(self):
         """GsdStations.ClearBusFaults: every bus fault of the run's simulated bus ends (those
@@ -102,7 +114,7 @@ class GsdStations(_Client):
 
     def events(self, stations=(), telegrams=False):
         """Observation.StreamEvents for these stations (all: empty), as Rs4.events: the
-        current items first (StateChange with from = ""), then every change ("dp-state",
+        current items first (StateChange with previous = ""), then every change ("dp-state",
         "online", "inputs", "outputs", "ext-diag", "diagnosis", "diagnosis-text")."""
         return _Subscribed(self.observation.StreamEvents(pb.StreamEventsRequest(
             addresses=list(stations), telegrams=telegrams)))
@@ -116,12 +128,16 @@ class GsdMaster(_Client):
         self.stub = gsd_grpc.GsdMasterStub(self.channel)
 
     def slaves(self):
+        """[GsdSlave]: every GSD slave the master polls (no time)."""
         return list(self.stub.ListSlaves(pb.Empty()).slaves)
 
     def slave(self, address):
+        """GsdSlave: the master's view of one slave (no time)."""
         return self.stub.GetSlave(pb.StationRequest(address=address))
 
     def set_outputs(self, address, slot, data):
+        """What the master sends to the module in `slot` (0-based; bytes, exactly the
+        module's output length; no time)."""
         self.stub.SetOutputs(gsd_pb.SetGsdOutputsRequest(address=address, slot=slot,
                                                          data=bytes(data)))
 
@@ -130,4 +146,5 @@ class GsdMaster(_Client):
         return self.slave(address).modules[slot].inputs
 
     def outputs(self, address, slot):
+        """What the master sends to the module in `slot` (0-based)."""
         return self.slave(address).modules[slot].outputs

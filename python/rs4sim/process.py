@@ -3,6 +3,11 @@ API's address from its `grpc: listening on ADDRESS` line; its output collected w
 runs (two reader threads, so neither pipe fills up and blocks it); ended with SIGTERM, and
 killed if it has not ended in time.
 
+Use it as a context manager (a `with` block): the process is stopped however the block
+ends, an exception included. And it never outlives the Python process that started it: the
+child asks the kernel for SIGTERM when its parent dies (Linux's PR_SET_PDEATHSIG), so a
+script killed with SIGKILL, or one that forgot to stop it, leaves no rs4sim behind.
+
     from rs4sim import Rs4, Rs4simProcess
     with Rs4simProcess(["run", "--link", "memory", "--grpc", "127.0.0.1:0"]) as run:
         rs4 = Rs4(run.address)
@@ -10,6 +15,7 @@ killed if it has not ended in time.
     assert run.returncode == 0, run.describe()
 """
 
+import ctypes
 import os
 import shutil
 import signal
@@ -17,6 +23,22 @@ import subprocess
 import threading
 
 LISTENING = "grpc: listening on "
+_PR_SET_PDEATHSIG = 1  # <linux/prctl.h>
+try:
+    _prctl = ctypes.CDLL(None, use_errno=True).prctl  # resolved here, not in the forked child
+except (AttributeError, OSError):  # not Linux's C library: no parent-death signal
+    _prctl = None
+
+
+def _die_with_parent(parent):
+    """Runs in the child between fork and exec: SIGTERM (rs4sim's orderly stop) when the
+    thread that started it ends, which for a script is the Python process [prctl(2)
+    PR_SET_PDEATHSIG, kept across execve]. The parent may have died before the call: then
+    the child goes at once."""
+    if _prctl is not None:
+        _prctl(_PR_SET_PDEATHSIG, int(signal.SIGTERM), 0, 0, 0)
+    if os.getppid() != parent:
+        os._exit(1)
 
 
 class Rs4simError(RuntimeError):
@@ -54,12 +76,17 @@ def _signal_name(returncode):
 
 
 class Rs4simProcess:
-    """`rs4sim ARGS...` running. With listening=True (the default) the constructor returns
-    once the process has printed `grpc: listening on ADDRESS` (so ARGS should have --grpc):
-    `address` is ADDRESS, `lines` the stdout lines before it (a byte device on --link pty
-    prints its pty path first: `pty`). Raises Rs4simError, with the output, when the
-    process cannot be started, ends before that line or has not printed it within
-    start_timeout seconds (then it is killed)."""
+    """`rs4sim ARGS...` running, a context manager: `with Rs4simProcess([...]) as run:` stops
+    it (stop()) when the block ends, however it ends. With listening=True (the default) the
+    constructor returns once the process has printed `grpc: listening on ADDRESS` (so ARGS
+    should have --grpc): `address` is ADDRESS, `lines` the stdout lines before it (a byte
+    device on --link pty prints its pty path first: `pty`). Raises Rs4simError, with the
+    output, when the process cannot be started, ends before that line or has not printed it
+    within start_timeout seconds (then it is killed).
+
+    The child gets SIGTERM when the thread that created this object ends (PR_SET_PDEATHSIG):
+    for a script, when the Python process dies, SIGKILL included. Create it in a thread that
+    lives as long as the process should (the main thread, a pytest fixture)."""
 
     def __init__(self, args, executable=None, env=None, start_timeout=10.0, listening=True):
         self.executable = executable or find_executable(env)
@@ -72,9 +99,11 @@ class Rs4simProcess:
         self._lock = threading.Lock()
         self._ready = threading.Event()
         try:
+            parent = os.getpid()
             self._proc = subprocess.Popen(self.command, stdin=subprocess.DEVNULL,
                                           stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                                          env=env, text=True, errors="replace")
+                                          env=env, text=True, errors="replace",
+                                          preexec_fn=lambda: _die_with_parent(parent))
         except OSError as e:
             raise Rs4simError(f"cannot start {self.executable}: {e.strerror}") from e
         self.pid = self._proc.pid
@@ -181,9 +210,11 @@ class Rs4simProcess:
         return text.rstrip("\n")
 
     def __enter__(self):
+        """The process itself (`with Rs4simProcess(...) as run`)."""
         return self
 
     def __exit__(self, *exc):
+        """stop(): SIGTERM, up to 10 s, then SIGKILL; an exception of the block goes on."""
         self.stop()
 
     def __repr__(self):

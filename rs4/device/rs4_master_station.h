@@ -137,6 +137,9 @@ class Rs4MasterStation final : public dp::Station {
   // Bit 6 of the output byte; the RS4 evaluates it at its DP start-up ([RS4 manual §5.1.2]).
   bool set_proxy_enable(std::uint8_t address, bool on);
   bool ack_rei(std::uint8_t address);
+  // Acknowledge every ACK_REQ at once (the config's auto_ack_rei), or leave it to ack_rei().
+  void set_auto_ack_rei(bool on) { auto_ack_rei_ = on; }
+  [[nodiscard]] bool auto_ack_rei() const { return auto_ack_rei_; }
   // DPV1 C1 record write/read on slot 0, index 2 ([RS4 manual §5.2]); the outcome comes as a
   // RecordResult event with the returned id. Errors now: those of dp::master::Master::write/read.
   boost::outcome_v2::std_result<dp::master::Dpv1RequestId> write_record(

@@ -64,6 +64,9 @@ class Rs4Segment {
   [[nodiscard]] std::uint8_t input_byte() const;
   [[nodiscard]] bool in_data_exchange() const;
   void ack_rei() { fhost_->ack_rei(); }
+  // Acknowledge every ACK_REQ at once (the config's auto_ack_rei), or leave it to ack_rei().
+  void set_auto_ack_rei(bool on) { auto_ack_rei_ = on; }
+  [[nodiscard]] bool auto_ack_rei() const { return auto_ack_rei_; }
 
   // Simulated time runs until done() holds (checked after every bus event) or `timeout`
   // passes; returns done().

@@ -4,6 +4,7 @@
 
 #include "app/cli/command.h"
 #include "rpc/server.h"
+#include "tests/scratch_dir.h"
 
 #include <gtest/gtest.h>
 
@@ -17,19 +18,11 @@ namespace fs = std::filesystem;
 
 const std::string kData = RS4SIM_RPC_TEST_DATA;
 
-class GrpcCliTest : public ::testing::Test {
+class GrpcCliTest : public rs4sim::testing::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("rs4sim_grpc_cli_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-            "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  GrpcCliTest() : ScratchDirTest("rs4sim_grpc_cli_") {}
   std::string file(const std::string& name, const std::string& text) {
-    const auto path = (dir_ / name).string();
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
+    return write_file(name, text);
   }
   // The UsageError's message of grpc_server_options, or "" when it accepts.
   static std::string refusal(const GrpcCliOptions& o, const char* env = nullptr) {
@@ -40,8 +33,6 @@ class GrpcCliTest : public ::testing::Test {
     }
     return {};
   }
-
-  fs::path dir_;
 };
 
 TEST_F(GrpcCliTest, TokenIsTheFilesFirstLineTrimmed) {

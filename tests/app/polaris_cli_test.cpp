@@ -68,6 +68,15 @@ Bytes read_request(std::uint8_t address, std::uint16_t start, std::uint16_t quan
   return modbus::encode(modbus::make_read_request(address, {0x03, start, quantity}));
 }
 
+// The registers of `run`'s answer to `request` (a read), in `words`.
+void read_words(EntryRun& run, const Bytes& request, std::vector<std::uint16_t>& words) {
+  const auto answer = run.exchange(request);
+  ASSERT_TRUE(answer);
+  modbus::RtuFrame f;
+  ASSERT_FALSE(modbus::decode(answer->first, f));
+  ASSERT_FALSE(modbus::parse_read_response(f, words));
+}
+
 std::string usage_error(DeviceOptions o) {
   try {
     polaris_entry().validate(o);
@@ -86,12 +95,8 @@ TEST(PolarisCli, StartAddressIsWhereTheBlockIsRead) {
   o.blocked = std::vector<int>{9, 10, 11, 12, 13, 25, 26, 27, 28, 29, 30, 31, 32, 33, 34};
   EntryRun run(o);
 
-  const auto answer = run.exchange(read_request(5, 0x1000, 2));
-  ASSERT_TRUE(answer);
-  modbus::RtuFrame f;
-  ASSERT_FALSE(modbus::decode(answer->first, f));
   std::vector<std::uint16_t> words;
-  ASSERT_FALSE(modbus::parse_read_response(f, words));
+  ASSERT_NO_FATAL_FAILURE(read_words(run, read_request(5, 0x1000, 2), words));
   EXPECT_EQ(words, (std::vector<std::uint16_t>{9, 34}));  // FL1: overall first, last
 
   // The default block at 0x2000 is no longer there: exception 02.
@@ -145,12 +150,8 @@ TEST(PolarisCli, NoNakIsStandardModbusAndMsbTurnsTheBits) {
   bad.back() ^= 0xFF;
   EXPECT_FALSE(run.exchange(bad));  // CRC error: silence, not exception 07
 
-  const auto answer = run.exchange(read_request(1, 0x2000, 1));
-  ASSERT_TRUE(answer);
-  modbus::RtuFrame f;
-  ASSERT_FALSE(modbus::decode(answer->first, f));
   std::vector<std::uint16_t> words;
-  ASSERT_FALSE(modbus::parse_read_response(f, words));
+  ASSERT_NO_FATAL_FAILURE(read_words(run, read_request(1, 0x2000, 1), words));
   EXPECT_EQ(words, (std::vector<std::uint16_t>{0x7FFF}));  // beam 1 = the MSB, interrupted
 }
 

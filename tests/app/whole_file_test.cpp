@@ -3,6 +3,8 @@
 // file, a directory and a path through a regular file.
 #include "app/runtime/whole_file.h"
 
+#include "tests/scratch_dir.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -14,24 +16,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class WholeFileTest : public ::testing::Test {
+class WholeFileTest : public rs4sim::testing::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("rs4sim_whole_file_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-            "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
+  WholeFileTest() : ScratchDirTest("rs4sim_whole_file_") {}
   std::string write(const std::string& name, const std::string& bytes) {
-    const auto p = (dir_ / name).string();
-    std::ofstream(p, std::ios::binary) << bytes;
-    return p;
+    return write_file(name, bytes);
   }
-
-  fs::path dir_;
 };
 
 TEST_F(WholeFileTest, ReadsEveryByteAsItIs) {

@@ -214,6 +214,87 @@ TEST(GsdCli, CheckShowsTheFParameterDefaults) {
       << r.output;
 }
 
+// Every part is found in the output.
+void expect_parts(const std::string& output, const std::vector<std::string>& parts) {
+  for (const std::string& part : parts) {
+    EXPECT_NE(output.find(part), std::string::npos) << part << "\n" << output;
+  }
+}
+
+// The project's F-module files (corpus/f_module_v1.gsd, f_module_v2.gsd) carry the F_Par_CRC
+// two makers wrote into their GSD files for the same defaults: 0x783E (V1), 0xBB95 (V2).
+TEST(GsdCli, CheckShowsTheFModulesOfV1AndV2) {
+  const std::string corpus = std::string(RS4SIM_GSD_CORPUS);
+  ProcessResult r = run("gsd check " + corpus + "/f_module_v1.gsd");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  expect_parts(r.output, {
+           "F-module \"PROFIsafe v1.x Module\" (line 55): PROFIsafe V1, CRC2 2 bytes + "
+           "consecutive number; F-inputs 4 bytes, F-outputs 4 bytes",
+           "F-parameters of \"PROFIsafe v1.x Module\": 14 00 00 01 00 01 00 64 78 3E; F_Par_CRC "
+           "in the file 0x783E, CRC1 over the defaults 0x783E (equal)\n",
+           "    +6 7 \"F_WD_Time\" Unsigned16, default 100, range 10..10000\n",
+           "    +0 2 \"F_SIL\" BitArea(2-3), default 1, range 1..1\n",
+           "  F_ParamDescCRC 47103 (0xB7FF), F_IO_StructureDescCRC 9140 (0x23B4)\n"});
+  r = run("gsd check " + corpus + "/f_module_v2.gsd");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  expect_parts(r.output, {
+           "PROFIsafe V2, CRC2 3 bytes (virtual consecutive number); F-inputs 8 bytes, "
+           "F-outputs 8 bytes",
+           ": 08 40 00 01 00 01 00 96 BB 95; F_Par_CRC in the file 0xBB95, CRC1 over the "
+           "defaults 0xBB95 (equal)\n  at byte 4 of the F-part (F_Ext_Module_Prm_Data_Len 14)"});
+}
+
+TEST(GsdCli, PrmShowsTheSafetyIoOfAPresetV2FModule) {
+  const std::string file = std::string(RS4SIM_GSD_CORPUS) + "/f_module_v2.gsd";
+  ProcessResult r = run("gsd --prm --gsd " + file + " --module 'AS-i 16 bytes in/out'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  expect_parts(r.output, {"F_Par_CRC (CRC1) of module 1: 0xBB95\n",
+                          "F-module 1 (F-Link(PROFIsafe)): PROFIsafe V2, CRC2 3 bytes",
+                          "  F-parameters at +7: 08 40 00 01 00 01 00 96 BB 95\n"});
+  // A changed F_WD_Time (200 ms = 00 C8) gets its own CRC1, from the reference here.
+  r = run("gsd --prm --json --gsd " + file + " --module 'AS-i 16 bytes in/out' --set F_WD_Time=200");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string crc = crc_hex(reference_crc1({0x08, 0x40, 0x00, 0x01, 0x00, 0x01, 0x00, 0xC8}));
+  EXPECT_NE(r.output.find("\"f_par_crc\": [\"0x" + crc.substr(0, 2) + crc.substr(3, 2) + "\"]"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("{\"module\": 1, \"offset\": 7, \"version\": 2, \"crc2_bytes\": 3, "
+                          "\"f_input_bytes\": 8, \"f_output_bytes\": 8}"),
+            std::string::npos)
+      << r.output;
+}
+
+TEST(GsdCli, AnFModuleWithoutFParametersIsRefusedWithFileLineAndExit2) {
+  const std::string path = write_temp(
+      "rs4sim_cli_f_no_prm.gsd",
+      "#Profibus_DP\nIdent_Number = 0x4224\n12M_supp = 1\nMaxTsdr_12M = 800\n"
+      "Module = \"F-DI\" 0xB4\nF_IO_StructureDescCRC = 1234\nEndModule\n");
+  ProcessResult r = run("gsd check " + path);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(path + ":5: module \"F-DI\" is an F-module but has no F-parameter "
+                                 "description"),
+            std::string::npos)
+      << r.output;
+  r = run("gsd --prm --gsd " + path);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  std::filesystem::remove(path);
+  const std::string range = write_temp(
+      "rs4sim_cli_f_range.gsd",
+      "#Profibus_DP\nIdent_Number = 0x4224\n12M_supp = 1\nMaxTsdr_12M = 800\n"
+      "ExtUserPrmData = 1 \"F_WD_Time\"\nUnsigned16 0 0-100\nEndExtUserPrmData\n"
+      "ExtUserPrmData = 2 \"F_Par_CRC\"\nUnsigned16 0 0-65535\nEndExtUserPrmData\n"
+      "Module = \"F\" 0xB4\nF_Ext_Module_Prm_Data_Len = 10\n"
+      "F_Ext_User_Prm_Data_Const(0) = 0x10,0,0,1,0,1\n"
+      "F_Ext_User_Prm_Data_Ref(6) = 1\nF_Ext_User_Prm_Data_Ref(8) = 2\nEndModule\n");
+  r = run("gsd check " + range);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(range + ":5: module \"F\": F_WD_Time default 0 is outside PROFIsafe's "
+                                  "1..65535"),
+            std::string::npos)
+      << r.output;
+  std::filesystem::remove(range);
+}
+
 TEST(GsdCli, CheckRefusesWhatIsNoGsdWithFileLineAndExit2) {
   const std::string garbage =
       write_temp("rs4sim_cli_garbage.gsd", std::string("\x7f\x45\x4c\x46\x02\x01\x00\x00\xff", 9));

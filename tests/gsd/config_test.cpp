@@ -215,15 +215,5 @@ TEST(GsdConfig, TotalUserPrmDataRespectsMaxUserPrmDataLen) {
   EXPECT_EQ(r.error().message, "User_Prm_Data is 6 bytes, more than 4");
 }
 
-TEST(GsdConfig, FModuleWithoutFParCrcIsALayoutError) {
-  auto d =
-      parse(testing::minimal("Module = \"F\" 0x10\nF_Ext_Module_Prm_Data_Len = 10\nEndModule\n"),
-            "f.gsd");
-  ASSERT_TRUE(d) << d.error().what();
-  auto r = configure(d.value(), {});
-  ASSERT_FALSE(r);
-  EXPECT_EQ(r.error().code, GsdError::kFParameterLayout);
-}
-
 }  // namespace
 }  // namespace rs4sim::gsd

@@ -21,10 +21,7 @@ namespace {
 using std::chrono::milliseconds;
 using std::chrono::nanoseconds;
 using std::chrono::seconds;
-using testing::Answers;
-using testing::answers;
-using testing::Bytes;
-using testing::Rig;
+using namespace testing;  // Answers, answers, Bytes, Rig
 
 const Bytes kStartCal{0x01, 0x06,   // slave 1, FC 6
                       0x01, 0x08,   // register 0x0108 command

@@ -17,10 +17,7 @@ namespace rs4sim::polaris {
 namespace {
 
 using std::chrono::milliseconds;
-using testing::Answers;
-using testing::answers;
-using testing::Bytes;
-using testing::Rig;
+using namespace testing;  // Answers, answers, Bytes, Rig
 
 // PL 10, 40 beams, FL1, slave 1, 19200 8N1; beams 9..13 and 25..34 interrupted
 // (interrupt_objects).
@@ -44,9 +41,13 @@ const Bytes kReadMode{0x01, 0x03, 0x01, 0x00, 0x00, 0x01, 0x85, 0xF6};  // 0x010
 const Bytes kModeFl1{0x01, 0x03, 0x02, 0x00, 0x01, 0x79, 0x84};         // mode 1 (FL1)
 const Bytes kModeFl4{0x01, 0x03, 0x02, 0x00, 0x02, 0x39, 0x85};         // mode 2 (FL4)
 
-TEST(PolarisConfig, ReadsTheWholeBlock) {
-  Rig r(config_options());
-  interrupt_objects(r);
+// A PolarisConfig test starts from the configuration above with the objects interrupted.
+struct PolarisConfig : ::testing::Test {
+  PolarisConfig() { interrupt_objects(r); }
+  Rig r{config_options()};
+};
+
+TEST_F(PolarisConfig, ReadsTheWholeBlock) {
   const Bytes request{0x01, 0x03,   // slave 1, FC 3
                       0x01, 0x00,   // start 0x0100
                       0x00, 0x0C,   // 12 registers
@@ -68,9 +69,7 @@ TEST(PolarisConfig, ReadsTheWholeBlock) {
   EXPECT_EQ(r.device().counters().requests, 1U);
 }
 
-TEST(PolarisConfig, WriteSingleEchoesAndTheNextReadUsesTheNewMode) {
-  Rig r(config_options());
-  interrupt_objects(r);
+TEST_F(PolarisConfig, WriteSingleEchoesAndTheNextReadUsesTheNewMode) {
   ASSERT_EQ(answers(r, kReadFl1), (Answers{kFl1Data}));
   const Bytes write{0x01, 0x06,   // slave 1, FC 6
                     0x01, 0x00,   // register 0x0100 data mode
@@ -86,9 +85,7 @@ TEST(PolarisConfig, WriteSingleEchoesAndTheNextReadUsesTheNewMode) {
   EXPECT_EQ(r.device().counters().writes, 1U);
 }
 
-TEST(PolarisConfig, WriteMultipleMovesTheBlockAndReversesTheNumbering) {
-  Rig r(config_options());
-  interrupt_objects(r);
+TEST_F(PolarisConfig, WriteMultipleMovesTheBlockAndReversesTheNumbering) {
   const Bytes write{0x01, 0x10,   // slave 1, FC 16
                     0x01, 0x00,   // start 0x0100
                     0x00, 0x03,   // 3 registers
@@ -113,9 +110,7 @@ TEST(PolarisConfig, WriteMultipleMovesTheBlockAndReversesTheNumbering) {
                       0xC8, 0xA6}}));
 }
 
-TEST(PolarisConfig, AddressesOutsideTheMapOrReadOnlyGetException02) {
-  Rig r(config_options());
-  interrupt_objects(r);
+TEST_F(PolarisConfig, AddressesOutsideTheMapOrReadOnlyGetException02) {
   const Bytes k02{0x01, 0x86, 0x02, 0xC3, 0xA1};  // FC 6 | 0x80, Illegal Data Address
   // Just past and just before the block: no configuration register, so the write is the
   // manual's "incorrect function code" -> 07 [Polaris manual §8.1.2] (PolarisWriteOutside).
@@ -136,9 +131,7 @@ TEST(PolarisConfig, AddressesOutsideTheMapOrReadOnlyGetException02) {
   EXPECT_EQ(r.device().counters().writes, 0U);
 }
 
-TEST(PolarisConfig, ValuesOutsideTheirRangeGetException03AndChangeNothing) {
-  Rig r(config_options());
-  interrupt_objects(r);
+TEST_F(PolarisConfig, ValuesOutsideTheirRangeGetException03AndChangeNothing) {
   const Bytes k03{0x01, 0x86, 0x03, 0x02, 0x61};  // FC 6 | 0x80, Illegal Data Value
   EXPECT_EQ(answers(r, {0x01, 0x06, 0x01, 0x00, 0x00, 0x04, 0x89, 0xF5}), (Answers{k03}));  // mode 4
   // Start address 499 and 12288: just outside 500..12287 [Polaris manual §7.4.2].
@@ -205,9 +198,7 @@ TEST(PolarisWriteOutside, StandardModbusAnswersIllegalDataAddress) {
   EXPECT_EQ(r.device().counters().bad_function, 1U);
 }
 
-TEST(PolarisConfig, BroadcastWritesAreIgnored) {
-  Rig r(config_options());
-  interrupt_objects(r);
+TEST_F(PolarisConfig, BroadcastWritesAreIgnored) {
   // "Broadcast is not supported" [Polaris manual §8.1]: a write to address 0, meant for the
   // other slaves of a shared line, changes nothing here, valid or not, and is not answered
   // (silent(): nothing arrived within the window and nothing is still on the wire).
@@ -222,9 +213,7 @@ TEST(PolarisConfig, BroadcastWritesAreIgnored) {
   EXPECT_EQ(c.refused_writes, 0U);
 }
 
-TEST(PolarisConfig, NakModeWrittenSwitchesTheBadFunctionAnswer) {
-  Rig r(config_options());
-  interrupt_objects(r);
+TEST_F(PolarisConfig, NakModeWrittenSwitchesTheBadFunctionAnswer) {
   const Bytes fc5{0x01, 0x05, 0x20, 0x00, 0x00, 0x01, 0x07, 0xCA};  // FC 5: not served
   EXPECT_EQ(answers(r, fc5), (Answers{{0x01, 0x85, 0x07, 0x03, 0x52}}));  // 07 (the manual)
   // The area cleared: auto-calibration needs it free [Polaris manual §7.2].

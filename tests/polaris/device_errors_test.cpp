@@ -10,9 +10,7 @@ namespace rs4sim::polaris {
 namespace {
 
 using std::chrono::milliseconds;
-using testing::Bytes;
-using testing::reply;
-using testing::Rig;
+using namespace testing;  // Bytes, reply, Rig
 
 const Bytes kGoodFl1{0x01, 0x03, 0x20, 0x00, 0x00, 0x02, 0xCF, 0xCB};
 const Bytes kFl1Answer{0x01, 0x03, 0x04, 0x00, 0x09, 0x00, 0x22, 0xAA, 0x28};

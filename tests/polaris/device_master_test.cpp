@@ -10,8 +10,7 @@ namespace rs4sim::polaris {
 namespace {
 
 using std::chrono::milliseconds;
-using testing::Bytes;
-using testing::Rig;
+using namespace testing;  // Bytes, Rig
 
 Options master_fl4() {
   Options o;

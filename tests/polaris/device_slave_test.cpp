@@ -12,9 +12,7 @@ namespace {
 using std::chrono::microseconds;
 using std::chrono::milliseconds;
 using std::chrono::nanoseconds;
-using testing::Bytes;
-using testing::reply;
-using testing::Rig;
+using namespace testing;  // Bytes, reply, Rig
 
 std::vector<std::uint16_t> range(std::uint16_t first, std::uint16_t last) {
   std::vector<std::uint16_t> r;

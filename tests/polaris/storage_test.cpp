@@ -16,10 +16,7 @@
 namespace rs4sim::polaris {
 namespace {
 
-using testing::Answers;
-using testing::answers;
-using testing::Bytes;
-using testing::Rig;
+using namespace testing;  // Answers, answers, Bytes, Rig
 
 std::vector<std::uint16_t> beams(std::initializer_list<std::pair<int, int>> runs) {
   std::vector<std::uint16_t> out;

@@ -217,12 +217,12 @@ TEST_F(ProfisafeFDeviceTest, InjectedFaultsOnResponses) {
 namespace rs4sim::profisafe {
 namespace {
 
-TEST(ProfisafeFDeviceConfig, RejectsNonV1Profiles) {
+TEST(ProfisafeFDeviceConfig, RejectsProfilesOfNoConnection) {
   FDeviceConfig c{DeviceProfile{}, 1, {}};
-  c.profile.par_version = 1;
+  c.profile.par_version = 1;  // V2 with the 2-byte CRC2
   EXPECT_THROW(FDevice{c}, std::invalid_argument);
   c.profile = DeviceProfile{};
-  c.profile.crc_length = CrcLength::k3Byte;
+  c.profile.crc_length = CrcLength::k3Byte;  // V1 with the 3-byte CRC2
   EXPECT_THROW(FDevice{c}, std::invalid_argument);
   c.profile = DeviceProfile{};
   c.data_size = 0;

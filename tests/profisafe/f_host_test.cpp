@@ -175,9 +175,9 @@ TEST_F(ProfisafeFHostTest, InjectedParameterFaultsGiveTheDeviceDiagnosis) {
   EXPECT_EQ(v.received_crc1, 0x5430);
 }
 
-TEST(ProfisafeFHostConfig, RejectsNonV1Parameters) {
+TEST(ProfisafeFHostConfig, RejectsParametersOfNoConnection) {
   FHostConfig c;
-  c.params.par_version = 1;
+  c.params.par_version = 1;  // V2 with the 2-byte CRC2
   EXPECT_THROW(FHost{c}, std::invalid_argument);
   c = {};
   c.params.crc_length = CrcLength::k3Byte;

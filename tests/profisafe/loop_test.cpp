@@ -1,6 +1,7 @@
 // F-host and F-device together, one DP data exchange per cycle on injected time: the
 // scenarios of [RS4 manual §7.3.2] (passivation → ACK_REQ → ACK_REI) provoked through the
-// fault-injection API of both sides.
+// fault-injection API of both sides, for each connection the drivers serve: V1 (2-byte CRC2, the
+// RS4) and V2 with the 3- and the 4-byte CRC2 ([IEC 61784-3-3 safety PDU]).
 #include "profisafe/f_device.h"
 #include "profisafe/f_host.h"
 
@@ -10,6 +11,7 @@
 #include <array>
 #include <chrono>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace rs4sim::profisafe {
@@ -17,9 +19,16 @@ namespace {
 
 using namespace std::chrono_literals;
 
-class ProfisafeLoop : public ::testing::Test {
+struct Connection {
+  const char* name;
+  std::uint8_t par_version;
+  CrcLength crc_length;
+  std::size_t pdu_size;  // 1 data byte + status/control + [V1 number] + CRC2
+};
+
+class ProfisafeLoop : public ::testing::TestWithParam<Connection> {
  protected:
-  ProfisafeLoop() : host_(host_config()), dev_(FDeviceConfig{DeviceProfile{}, 1, {}}) {
+  ProfisafeLoop() : host_(host_config()), dev_(FDeviceConfig{device_profile(), 1, {}}) {
     EXPECT_TRUE(dev_.set_parameters(host_.parameter_block()).ok());
     const std::uint8_t in = 0x80;  // OSSD on
     dev_.set_input(std::span<const std::uint8_t>(&in, 1));
@@ -29,7 +38,15 @@ class ProfisafeLoop : public ::testing::Test {
   static FHostConfig host_config() {
     FHostConfig c;
     c.params.wd_time_ms = 100;
+    c.params.par_version = GetParam().par_version;
+    c.params.crc_length = GetParam().crc_length;
     return c;
+  }
+  static DeviceProfile device_profile() {
+    DeviceProfile p;
+    p.par_version = GetParam().par_version;
+    p.crc_length = GetParam().crc_length;
+    return p;
   }
   // One bus cycle of 10 ms; a muted side sends nothing and the peer sees nothing.
   void cycle() {
@@ -50,7 +67,8 @@ class ProfisafeLoop : public ::testing::Test {
   TimePoint now_{std::chrono::hours(1)};
 };
 
-TEST_F(ProfisafeLoop, StartupReachesProcessValuesBothWays) {
+TEST_P(ProfisafeLoop, StartupReachesProcessValuesBothWays) {
+  EXPECT_EQ(host_.request(now_).size(), GetParam().pdu_size);
   cycle();  // host passivated: fail-safe outputs with activate_FV; device answers FV
   EXPECT_EQ(host_input(), 0);
   EXPECT_EQ(host_.state(), FHostState::kRun);  // first healthy answer reintegrates at start-up
@@ -61,7 +79,7 @@ TEST_F(ProfisafeLoop, StartupReachesProcessValuesBothWays) {
   EXPECT_EQ(host_.counters().passivations, 0u);
 }
 
-TEST_F(ProfisafeLoop, CorruptedHostPduPassivatesUntilAckRei) {
+TEST_P(ProfisafeLoop, CorruptedHostPduPassivatesUntilAckRei) {
   cycles(3);
   host_.faults().corrupt_crc2 = 1;
   cycle();
@@ -81,7 +99,7 @@ TEST_F(ProfisafeLoop, CorruptedHostPduPassivatesUntilAckRei) {
   EXPECT_EQ(dev_.output()[0], 0x41);
 }
 
-TEST_F(ProfisafeLoop, CorruptedDevicePduPassivates) {
+TEST_P(ProfisafeLoop, CorruptedDevicePduPassivates) {
   cycles(3);
   dev_.faults().corrupt_crc2 = 1;
   cycle();
@@ -94,7 +112,7 @@ TEST_F(ProfisafeLoop, CorruptedDevicePduPassivates) {
   EXPECT_EQ(host_input(), 0x80);
 }
 
-TEST_F(ProfisafeLoop, MutedHostLetsBothWatchdogsExpire) {
+TEST_P(ProfisafeLoop, MutedHostLetsBothWatchdogsExpire) {
   cycles(3);
   host_.faults().mute = true;
   cycles(9);  // 90 ms: not yet
@@ -113,7 +131,7 @@ TEST_F(ProfisafeLoop, MutedHostLetsBothWatchdogsExpire) {
   EXPECT_TRUE(dev_.sends_process_values());
 }
 
-TEST_F(ProfisafeLoop, SkippedHostNumberIsAFault) {
+TEST_P(ProfisafeLoop, SkippedHostNumberIsAFault) {
   cycles(3);
   host_.faults().skip_number = 1;
   cycle();
@@ -124,7 +142,7 @@ TEST_F(ProfisafeLoop, SkippedHostNumberIsAFault) {
   EXPECT_TRUE(host_.ack_req());
 }
 
-TEST_F(ProfisafeLoop, RepeatedDevicePdusStarveTheHostWatchdog) {
+TEST_P(ProfisafeLoop, RepeatedDevicePdusStarveTheHostWatchdog) {
   cycles(3);
   dev_.faults().repeat_number = 12;  // the device keeps sending its previous PDU: stale
   cycles(12);
@@ -133,7 +151,7 @@ TEST_F(ProfisafeLoop, RepeatedDevicePdusStarveTheHostWatchdog) {
   EXPECT_TRUE(host_.passivated());
 }
 
-TEST_F(ProfisafeLoop, WrongCrc1OnOneSideNeverGetsThrough) {
+TEST_P(ProfisafeLoop, WrongCrc1OnOneSideNeverGetsThrough) {
   host_.faults().crc1_override = 0x5430;
   cycles(20);
   EXPECT_GT(dev_.counters().crc_errors, 10u);
@@ -146,6 +164,12 @@ TEST_F(ProfisafeLoop, WrongCrc1OnOneSideNeverGetsThrough) {
   cycles(2);
   EXPECT_TRUE(dev_.sends_process_values());
 }
+
+INSTANTIATE_TEST_SUITE_P(Connections, ProfisafeLoop,
+                         ::testing::Values(Connection{"V1", 0, CrcLength::k2Byte, 5},
+                                           Connection{"V2_3byte", 1, CrcLength::k3Byte, 5},
+                                           Connection{"V2_4byte", 1, CrcLength::k4Byte, 6}),
+                         [](const auto& tpi) { return std::string(tpi.param.name); });
 
 }  // namespace
 }  // namespace rs4sim::profisafe

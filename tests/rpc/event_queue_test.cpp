@@ -65,7 +65,7 @@ TEST(EventHub, SnapshotFirstThenOnlyChanges) {
   // 12 state items (the scanner's LED3 and LED5 last), one alarm count, one diagnosis.
   ASSERT_EQ(events.size(), 14U);
   EXPECT_EQ(events[0].state().what(), "powered");
-  EXPECT_EQ(events[0].state().from(), "");
+  EXPECT_EQ(events[0].state().previous(), "");
   EXPECT_EQ(events[0].state().to(), "off");
   EXPECT_EQ(events[10].state().what(), "led3");
   EXPECT_EQ(events[10].state().to(), "off");
@@ -80,7 +80,7 @@ TEST(EventHub, SnapshotFirstThenOnlyChanges) {
   events = q->pop(0ms);
   ASSERT_FALSE(events.empty());
   EXPECT_EQ(events[0].state().what(), "powered");
-  EXPECT_EQ(events[0].state().from(), "off");
+  EXPECT_EQ(events[0].state().previous(), "off");
   EXPECT_EQ(events[0].state().to(), "on");
   EXPECT_EQ(events[0].now_ns(), 1'000'000);
   hub.unsubscribe(q);

@@ -26,10 +26,10 @@ try:
     for e in events:
         if not e.HasField("state"):
             continue
-        if getattr(e.state, "from") == "" and not changes:
+        if e.state.previous == "" and not changes:
             snapshot[e.state.what] = e.state.to
             continue
-        changes.append((e.state.what, getattr(e.state, "from"), e.state.to))
+        changes.append((e.state.what, e.state.previous, e.state.to))
         if changes[-1] == ("dp-state", "Wait_Cfg", "Data_Exch"):
             break
     events.cancel()
@@ -39,7 +39,7 @@ try:
     state = rs4.state()
     assert not state.ossd, "the RS4 is still booting (≈30 s)"
     try:
-        rs4.press_restart(200)
+        rs4.press_restart(0.2)
         raise AssertionError("demo --grpc served a Device call")
     except grpc.RpcError as e:
         assert e.code() == grpc.StatusCode.UNIMPLEMENTED, e.code()

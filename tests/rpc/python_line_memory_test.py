@@ -4,8 +4,8 @@ as fixed bytes: the GridScan's power-up messages and the last step of the commun
 of [GridScan manual §10.3]; the Polaris's P7 [Polaris manual §8.2.3] with the beams of its
 example (9-13, 25-34 of 40); the METRON's "status of all the beams" in node mode, laid out as
 [METRON manual "With node"] gives it. Wire time at 115200 8N1: 10 bits a character. The LATE
-fault through inject_fault(late_ms=...) and its deprecated alias delay_ms=... (a
-DeprecationWarning): the Polaris's reply leaves exactly that much later on the simulated clock.
+fault through inject_fault(late=seconds) and its deprecated spellings late_ms=/delay_ms=
+(a DeprecationWarning): the Polaris's reply leaves exactly that much later on the simulated clock.
 Usage: python_line_memory_test.py RS4SIM REPO   (exit 77 = skipped: no python3-grpcio)"""
 import sys
 import warnings
@@ -41,8 +41,8 @@ def gridscan():
                           "--grpc", "127.0.0.1:0"], executable=rs4sim)
     try:
         with GridScan(proc.address) as g:
-            t0 = g.now_ns()
-            frames = g.receive(1702)
+            t0 = g.now()
+            frames = g.receive(1.702)
             check([f.frame for f in frames] == [VERSION, REDUCED], f"power-up messages {frames}")
             check(frames[1].start_ns - frames[0].start_ns == 1_700_000_000, "ready after 1700 ms")
             x = g.exchange(TEST_REQUEST)
@@ -51,12 +51,12 @@ def gridscan():
             check(x.reply_end_ns - x.reply_start_ns == wire_ns(11, 10, 115200), "wire time")
             check(x.reply_after_ns == x.reply_end_ns - x.sent_ns, "reply_after_ns")
             # The power cycle re-runs the power-up: SeqCnt from 0 again.
-            g.power_cycle(off_ms=100)
-            frames = g.receive(1702)
+            g.power_cycle(0.1)
+            frames = g.receive(1.702)
             check([f.frame for f in frames] == [VERSION, REDUCED], "power-up after the cycle")
             x = g.exchange(TEST_REQUEST)
             check(x.answered and x.reply == TEST_ANSWER, f"the same answer after the cycle {x}")
-            check(g.now_ns() > t0, "the clock moved")
+            check(g.now() > t0, "the clock moved")
             # Stuck elements fail the controller's check [GridScan manual §10.1.2]: element 3
             # blocked reads interrupted (state bit 8), stuck free it reads free, unstuck it
             # reads interrupted again. Reduced state: door 0x16 (22 elements, open), bits 8-15.
@@ -111,10 +111,10 @@ def polaris():
                   f"P7 {x.reply.hex()}")
             check(x.arrived_ns - x.sent_ns == wire_ns(8, 10, 19200), "request wire time")
             # A broadcast is never answered: the clock runs the timeout.
-            x = p.exchange(with_crc([0x00, 0x03, 0x20, 0x00, 0x00, 0x02]), timeout_ms=50)
+            x = p.exchange(with_crc([0x00, 0x03, 0x20, 0x00, 0x00, 0x02]), timeout=0.05)
             check(not x.answered and x.now_ns - x.sent_ns == 50_000_000, f"broadcast {x}")
-            before = p.now_ns()
-            check(p.advance(250) == before + 250_000_000, "SimTime.Advance")
+            before = p.now()
+            check(abs(p.advance(0.25) - (before + 0.25)) < 1e-9, "SimTime.Advance in seconds")
             # LATE: the same P7 reply, late_ms later after the request's arrival. An answer
             # leaves at the end of the scan in progress (docs/polaris.md), so the wait depends
             # on where in its scan a request ends: each timed request is sent right after an
@@ -125,7 +125,7 @@ def polaris():
             y = p.exchange(request)
             check(y.sent_ns == x.reply_end_ns and y.reply_start_ns - y.arrived_ns == on_time,
                   f"the same phase gives the same wait: {y}")
-            p.inject_fault("LATE", late_ms=40)
+            p.inject_fault("LATE", 0.04)
             check(p.state().late_ms == 40, f"late_ms {p.state().late_ms}")
             x = p.exchange(request)
             check(x.answered and x.reply_start_ns - x.arrived_ns == on_time + 40_000_000,
@@ -133,12 +133,12 @@ def polaris():
             p.clear_fault("LATE")
             check(p.state().late_ms == 0, "LATE cleared")
             p.exchange(request)  # on time again: the next one starts in the same phase
-            # delay_ms, late_ms's old name: the same request, with a DeprecationWarning.
+            # delay_ms, late's oldest name (in ms): the same request, with a DeprecationWarning.
             with warnings.catch_warnings(record=True) as caught:
                 warnings.simplefilter("always")
                 p.inject_fault("LATE", delay_ms=25)
             check([w.category for w in caught] == [DeprecationWarning], f"warnings {caught}")
-            check("late_ms" in str(caught[0].message), str(caught[0].message))
+            check("late=" in str(caught[0].message), str(caught[0].message))
             check(caught[0].filename == __file__, f"warned at {caught[0].filename}")
             check(p.state().late_ms == 25, f"delay_ms=25 gave late_ms {p.state().late_ms}")
             x = p.exchange(request)
@@ -150,12 +150,12 @@ def polaris():
                     p.inject_fault("LATE", late_ms=30, delay_ms=31)
                     check(False, "late_ms=30 with delay_ms=31 accepted")
                 except TypeError as e:
-                    check("give late_ms only" in str(e), str(e))
+                    check("give late (seconds) only" in str(e), str(e))
                 p.inject_fault("LATE", late_ms=30, delay_ms=30)
             check(p.state().late_ms == 30, f"late_ms {p.state().late_ms}")
             # The service's own range check, the field named.
             try:
-                p.inject_fault("LATE", late_ms=10001)
+                p.inject_fault("LATE", 10.001)
                 check(False, "late_ms 10001 accepted")
             except grpc.RpcError as e:
                 check(e.code() == grpc.StatusCode.INVALID_ARGUMENT, f"code {e.code()}")

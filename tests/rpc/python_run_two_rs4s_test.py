@@ -55,7 +55,7 @@ try:
         if not r.state().ossd:
             time.sleep(1.5)  # boot 1 s
         if not r.state().ossd:
-            r.press_restart(300)
+            r.press_restart(0.3)
         # The OSSD bit of the input byte too: PROFIsafe in run, the PLC reads it.
         wait_for(f"station {r.station} OSSD on",
                  lambda r=r: r.state().ossd and r.state().input.ossd, 10)

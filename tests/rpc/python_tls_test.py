@@ -104,7 +104,7 @@ try:
     address = f"127.0.0.1:{port}"
     with Polaris(address, 1, root_certificates=root, token=token) as polaris:
         assert polaris.state().address == 1
-        polaris.inject_fault("LATE", late_ms=40)
+        polaris.inject_fault("LATE", 0.04)
         assert polaris.state().late_ms == 40
     with Polaris(address, 1, root_certificates=root, token=token + "x") as wrong:
         unauthenticated(wrong.state, "wrong bearer token")

@@ -7,6 +7,7 @@
 #include "app/devices/device_registry.h"
 #include "rpc/executor.h"
 #include "rpc/server.h"
+#include "rpc_calls.h"
 #include "rs4sim/v1/gsd.grpc.pb.h"
 #include "rs4sim/v1/rs4.grpc.pb.h"
 #include "test_loop.h"
@@ -50,26 +51,22 @@ class RpcBusFileTest : public ::testing::Test, protected rpc::TestLoop {
     stop_loop();
   }
   std::int64_t advance(std::uint64_t ms) {
-    grpc::ClientContext ctx;
     v1::AdvanceRequest in;
     in.set_duration_ms(ms);
     v1::TimeResponse t;
-    EXPECT_TRUE(time_->Advance(&ctx, in, &t).ok());
+    EXPECT_TRUE(rpc::unary(*time_, &v1::SimTime::Stub::Advance, in, t).ok());
     return t.now_ns();
   }
   v1::GsdStation station(std::uint32_t address) {
-    grpc::ClientContext ctx;
-    v1::StationRequest in;
-    in.set_address(address);
     v1::GsdStation out;
-    EXPECT_TRUE(gsd_->GetStation(&ctx, in, &out).ok());
+    EXPECT_TRUE(
+        rpc::unary(*gsd_, &v1::GsdStations::Stub::GetStation, rpc::station_request(address), out)
+            .ok());
     return out;
   }
   grpc::Status state(std::uint32_t address, v1::DeviceState* out) {
-    grpc::ClientContext ctx;
-    v1::StationRequest in;
-    in.set_address(address);
-    return observation_->GetState(&ctx, in, out);
+    return rpc::unary(*observation_, &v1::Observation::Stub::GetState,
+                      rpc::station_request(address), *out);
   }
 
   dp::RealClock wall_;
@@ -144,7 +141,7 @@ TEST_F(RpcBusFileTest, InputsReachTheWireInTheNextDataExchange) {
   v1::Event e;
   ASSERT_TRUE(reader->Read(&e));
   ASSERT_TRUE(e.has_state()) << "the snapshot comes first";
-  EXPECT_EQ(e.state().from(), "");
+  EXPECT_EQ(e.state().previous(), "");
   std::thread mover([this] { (void)advance(50); });
   const Bytes expected{0x68, 0x08, 0x08, 0x68, 0x01, 0x05, 0x08, 0x00, 0x11, 0x22, 0x33, 0x44};
   bool seen = false;
@@ -174,11 +171,9 @@ TEST_F(RpcBusFileTest, EachServiceNamesTheStationsItDoesNotServe) {
   const auto none = state(9, &out);
   EXPECT_EQ(none.error_code(), grpc::StatusCode::NOT_FOUND);
   EXPECT_EQ(none.error_message(), "no RS4 at station 9 (stations: 4)");
-  grpc::ClientContext ctx;
-  v1::StationRequest in;
-  in.set_address(4);
   v1::GsdStation s;
-  const auto rs4 = gsd_->GetStation(&ctx, in, &s);
+  const auto rs4 =
+      rpc::unary(*gsd_, &v1::GsdStations::Stub::GetStation, rpc::station_request(4), s);
   EXPECT_EQ(rs4.error_code(), grpc::StatusCode::NOT_FOUND);
   EXPECT_NE(rs4.error_message().find("5"), std::string::npos) << rs4.error_message();
 }

@@ -55,7 +55,7 @@ TEST_F(RpcEventsTest, SnapshotThenTheBootAndAViolationInOrder) {
     EXPECT_EQ(e.sequence(), ++sequence);
     EXPECT_EQ(e.address(), 4U);
     if (e.has_state()) {
-      EXPECT_EQ(e.state().from(), "");
+      EXPECT_EQ(e.state().previous(), "");
       snapshot[e.state().what()] = e.state().to();
     }
   }
@@ -69,13 +69,13 @@ TEST_F(RpcEventsTest, SnapshotThenTheBootAndAViolationInOrder) {
   const auto to_exchange = read_until(*reader, "dp-state", "Data_Exch");
   EXPECT_FALSE(to_exchange.empty());
   const auto to_ossd = read_until(*reader, "ossd", "on");
-  EXPECT_EQ(to_ossd.back().from(), "off");
+  EXPECT_EQ(to_ossd.back().previous(), "off");
 
   v1::AddObstacleResponse obstacle;
   ASSERT_TRUE(violate_field(v1::FIELD_KIND_PROTECTIVE, obstacle).ok());
   ASSERT_TRUE(run_until(v1::CONDITION_OSSD_OFF, 500));
   const auto off = read_until(*reader, "ossd", "off");
-  EXPECT_EQ(off.back().from(), "on");
+  EXPECT_EQ(off.back().previous(), "on");
   ctx.TryCancel();
   EXPECT_EQ(reader->Finish().error_code(), grpc::StatusCode::CANCELLED);
 }
@@ -91,17 +91,17 @@ TEST_F(RpcEventsTest, Led3FollowsTheRestartButton) {
   // A press before that would arrive inside the snapshot (from "") instead of as a change.
   const auto snapshot = read_until(*reader, "led3", "off");
   ASSERT_FALSE(snapshot.empty());
-  ASSERT_EQ(snapshot.back().from(), "");
+  ASSERT_EQ(snapshot.back().previous(), "");
   const auto button = [&](bool pressed) { ASSERT_TRUE(set_restart_button(pressed).ok()); };
   button(true);
   const auto red = read_until(*reader, "led3", "red");
   ASSERT_FALSE(red.empty());
-  EXPECT_EQ(red.back().from(), "off");
+  EXPECT_EQ(red.back().previous(), "off");
   advance(300);
   button(false);
   const auto off = read_until(*reader, "led3", "off");
   ASSERT_FALSE(off.empty());
-  EXPECT_EQ(off.back().from(), "red");
+  EXPECT_EQ(off.back().previous(), "red");
   std::vector<v1::StateChange> seen = red;
   seen.insert(seen.end(), off.begin(), off.end());
   const bool ossd_went_off = std::any_of(seen.begin(), seen.end(), [](const v1::StateChange& c) {

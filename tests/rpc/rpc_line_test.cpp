@@ -210,11 +210,9 @@ TEST_F(RpcPolarisTest, BlockedBeamsReachTheModbusAnswer) {
 // (docs/polaris.md "Auto-calibration"); the frames' CRCs were worked out by hand.
 TEST_F(RpcPolarisTest, CalibrateMakesTheDataBusyForPointFourSecondsABeam) {
   const auto calibrate = [this] {
-    grpc::ClientContext ctx;
     v1::LineDeviceRequest req;
     req.set_address(1);
-    v1::Empty e;
-    return stub_->Calibrate(&ctx, req, &e);
+    return unary(*stub_, &v1::Polaris::Stub::Calibrate, req);
   };
   auto s = state();
   EXPECT_FALSE(s.calibrating());
@@ -330,14 +328,14 @@ TEST_F(RpcPolarisTest, StateChangesReachTheSharedEventStream) {
   for (int i = 0; i < 4 && reader->Read(&e); ++i) {
     ASSERT_TRUE(e.has_state());
     EXPECT_EQ(e.address(), 1U);
-    seen.push_back(e.state().what() + ":" + e.state().from() + ">" + e.state().to());
+    seen.push_back(e.state().what() + ":" + e.state().previous() + ">" + e.state().to());
   }
   EXPECT_EQ(seen,
             (std::vector<std::string>{"pn1:>off", "pn2:>off", "beams:>none", "calibrating:>off"}));
   ASSERT_TRUE(block({2, 3, 7}).ok());
   seen.clear();
   for (int i = 0; i < 3 && reader->Read(&e); ++i) {
-    seen.push_back(e.state().what() + ":" + e.state().from() + ">" + e.state().to());
+    seen.push_back(e.state().what() + ":" + e.state().previous() + ">" + e.state().to());
   }
   // Beams 2-3 and 7: two objects, so PN2 too [Polaris manual §3].
   EXPECT_EQ(seen, (std::vector<std::string>{"pn1:off>on", "pn2:off>on", "beams:none>2-3,7"}));
@@ -367,21 +365,17 @@ class RpcGridScanTest : public LineFixture {
   }
   v1::GridScanState state() { return state_of<v1::GridScanState>(*stub_, 0); }
   grpc::Status door(std::uint32_t position) {
-    grpc::ClientContext ctx;
     v1::SetDoorRequest req;
     req.set_position(position);
-    v1::Empty e;
-    return stub_->SetDoor(&ctx, req, &e);
+    return unary(*stub_, &v1::GridScan::Stub::SetDoor, req);
   }
   grpc::Status block(const std::vector<std::uint32_t>& elements) {
     return set_blocked(*stub_, elements, 0);
   }
   grpc::Status soiling(std::uint32_t level) {
-    grpc::ClientContext ctx;
     v1::SetSoilingRequest req;
     req.set_level(level);
-    v1::Empty e;
-    return stub_->SetSoiling(&ctx, req, &e);
+    return unary(*stub_, &v1::GridScan::Stub::SetSoiling, req);
   }
   grpc::Status fault(v1::GridScanFault f, bool inject, std::uint32_t late_ms = 0,
                      std::uint32_t address = 0) {
@@ -507,12 +501,10 @@ TEST_F(RpcGridScanTest, FaultsReachThePowerUpStateFrame) {
 TEST_F(RpcGridScanTest, TheCurtainsOwnFailuresAreInjectedByNameAndElement) {
   power_up();
   const auto stuck = [this](bool inject, std::vector<std::uint32_t> elements) {
-    grpc::ClientContext ctx;
     v1::GridScanFaultRequest req;
     req.set_fault(v1::GRID_SCAN_FAULT_STUCK_FREE);
     for (const auto e : elements) req.add_elements(e);
-    v1::Empty e;
-    return inject ? stub_->InjectFault(&ctx, req, &e) : stub_->ClearFault(&ctx, req, &e);
+    return inject_or_clear(*stub_, req, inject);
   };
   for (const auto f :
        {v1::GRID_SCAN_FAULT_REPEAT_FRAMES, v1::GRID_SCAN_FAULT_INSERT_FRAMES,
@@ -604,12 +596,10 @@ class RpcMetronTest : public LineFixture {
     return set_blocked(*stub_, beams, address);
   }
   grpc::Status synchronised(bool on) {
-    grpc::ClientContext ctx;
     v1::SetSynchronisedRequest req;
     req.set_address(5);
     req.set_synchronised(on);
-    v1::Empty e;
-    return stub_->SetSynchronised(&ctx, req, &e);
+    return unary(*stub_, &v1::Metron::Stub::SetSynchronised, req);
   }
   // `old_delay_ms`: the deprecated name of late_ms, as an older client sends it.
   grpc::Status fault(v1::MetronFault f, bool inject, std::uint32_t late_ms = 0,
@@ -799,11 +789,9 @@ TEST_F(RpcPolarisTest, CalibrationNeedsAFreeAreaAndSw1StartsIt) {
   ASSERT_TRUE(block({3}).ok());
   EXPECT_EQ(state().rx_led(), "red");
   EXPECT_EQ(state().tx_led(), "yellow");
-  grpc::ClientContext ctx;
   v1::LineDeviceRequest req;
   req.set_address(1);
-  v1::Empty e;
-  const auto refused = stub_->Calibrate(&ctx, req, &e);
+  const auto refused = unary(*stub_, &v1::Polaris::Stub::Calibrate, req);
   EXPECT_EQ(refused.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
   EXPECT_NE(refused.error_message().find("beams are interrupted"), std::string::npos)
       << refused.error_message();

@@ -1,8 +1,10 @@
 """What the Python test scripts beside this file (and tests/integration/*_pty.py) share: the
 skip without python3-grpcio, reading rs4sim's stdout, waiting on the wall clock, free UDP
 ports, stopping a process, a gRPC error's status, a pty opened raw and read until the line
-stays quiet, the Modbus RTU CRC, the state changes of an event stream.
+stays quiet, the Modbus RTU CRC, the state changes of an event stream, a check that fails a script with its message, an RS4 on
+the simulated bus.
 Standard library only: the scripts import it before the rs4sim package."""
+import contextlib
 import os
 import signal
 import socket
@@ -20,6 +22,24 @@ def require_grpc():
         print("python3-grpcio is not installed: skipped")
         sys.exit(77)
     return grpc
+
+
+def check(cond, what):
+    """Fails the script (exit 1) with `what` unless `cond`."""
+    if not cond:
+        print("FAILED:", what)
+        sys.exit(1)
+
+
+@contextlib.contextmanager
+def memory_rs4(executable):
+    """`rs4sim run --link memory --grpc 127.0.0.1:0` (our master and the RS4 on the simulated
+    bus) and an rs4sim.Rs4 on station 4, both ended when the block ends."""
+    from rs4sim import Rs4
+    from rs4sim.process import Rs4simProcess
+    with Rs4simProcess(["run", "--link", "memory", "--grpc", "127.0.0.1:0"],
+                       executable=executable) as proc, Rs4(proc.address) as rs4:
+        yield rs4
 
 
 def first_lines(proc, *prefixes):
@@ -142,7 +162,7 @@ def state_changes(events, what, n, address=False):
     out = []
     for event in events:
         if event.HasField("state") and event.state.what == what:
-            change = (getattr(event.state, "from"), event.state.to)
+            change = (event.state.previous, event.state.to)
             out.append((event.address, *change) if address else change)
             if len(out) == n:
                 break

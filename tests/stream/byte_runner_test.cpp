@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include <functional>
+#include <optional>
 
 namespace rs4sim::stream {
 namespace {
@@ -73,12 +74,20 @@ class BytePtyTest : public ::testing::Test {
   RealClock clock;
   PseudoTerminal pty;
   EchoDevice echo{EchoOptions{k115200, 3.5, {}, 256}};
+
+  // A runner on the pty's master side at `line` with `device` added, not started yet.
+  ByteRunner& serve(ByteDevice& device, const LineSettings& line = k115200) {
+    transport_.emplace(io, pty.release_master(), line, "pty");
+    runner_.emplace(io, clock, *transport_);
+    runner_->add(device);
+    return *runner_;
+  }
+  std::optional<SerialTransport> transport_;
+  std::optional<ByteRunner> runner_;
 };
 
 TEST_F(BytePtyTest, AFrameIsEchoedAfterTheIdleGap) {
-  SerialTransport transport(io, pty.release_master(), k115200, "pty");
-  ByteRunner runner(io, clock, transport);
-  runner.add(echo);
+  auto& runner = serve(echo);
   runner.start();
   PtyClient client(pty.slave_path());
   ASSERT_TRUE(client.ok());
@@ -96,9 +105,7 @@ TEST_F(BytePtyTest, AFrameIsEchoedAfterTheIdleGap) {
 // gap (one read each) make one frame; after a longer pause, a second one.
 TEST_F(BytePtyTest, APartialFrameAcrossReadsIsCompletedWithinTheGap) {
   EchoDevice slow{EchoOptions{k115200, 20000, {}, 256}};  // gap ≈ 1.7 s: reads stay one frame
-  SerialTransport transport(io, pty.release_master(), k115200, "pty");
-  ByteRunner runner(io, clock, transport);
-  runner.add(slow);
+  auto& runner = serve(slow);
   runner.start();
   PtyClient client(pty.slave_path());
   client.write({0x01, 0x02});
@@ -113,9 +120,7 @@ TEST_F(BytePtyTest, APartialFrameAcrossReadsIsCompletedWithinTheGap) {
 
 TEST_F(BytePtyTest, DeadlinesFireOnTheRunnersTimer) {
   EchoDevice delayed{EchoOptions{k115200, 3.5, 30ms, 256}};
-  SerialTransport transport(io, pty.release_master(), k115200, "pty");
-  ByteRunner runner(io, clock, transport);
-  runner.add(delayed);
+  auto& runner = serve(delayed);
   std::vector<std::pair<FrameDirection, TimePoint>> tapped;
   runner.set_frame_tap([&](std::span<const std::uint8_t>, TimePoint now, FrameDirection d) {
     tapped.emplace_back(d, now);
@@ -132,9 +137,7 @@ TEST_F(BytePtyTest, DeadlinesFireOnTheRunnersTimer) {
 }
 
 TEST_F(BytePtyTest, AWakeFromOutsideSendsAtOnce) {
-  SerialTransport transport(io, pty.release_master(), k115200, "pty");
-  ByteRunner runner(io, clock, transport);
-  runner.add(echo);
+  auto& runner = serve(echo);
   runner.start();
   PtyClient client(pty.slave_path());
   echo.say({0xCA, 0xFE});  // as a scene change from the API would
@@ -151,9 +154,7 @@ TEST_F(BytePtyTest, AWakeFromOutsideSendsAtOnce) {
 TEST_F(BytePtyTest, APseudoTerminalWithParityStaysUnmarked) {
   constexpr LineSettings k19200e{19200, 8, Parity::kEven, 1};
   EchoDevice even{EchoOptions{k19200e, 3.5, {}, 256}};
-  SerialTransport transport(io, pty.release_master(), k19200e, "pty");
-  ByteRunner runner(io, clock, transport);
-  runner.add(even);
+  auto& runner = serve(even, k19200e);
   runner.start();
   PtyClient client(pty.slave_path());
   const int fd = ::open(pty.slave_path().c_str(), O_RDWR | O_NOCTTY);

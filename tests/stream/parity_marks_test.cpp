@@ -26,6 +26,12 @@ struct Seen {
         },
         [this](std::uint8_t c) { text += "!" + hex(c) + " "; });
   }
+  // The text of one chunk fed to `m`.
+  static std::string of(ParityMarks& m, const Bytes& chunk) {
+    Seen s;
+    s.feed(m, chunk);
+    return s.text;
+  }
   static std::string hex(std::uint8_t c) {
     static constexpr char kDigits[] = "0123456789ABCDEF";
     return {kDigits[c >> 4], kDigits[c & 0x0F]};
@@ -34,36 +40,29 @@ struct Seen {
 
 TEST(ParityMarks, PlainBytesPassThrough) {
   ParityMarks m;
-  Seen s;
-  s.feed(m, {0x02, 0x01, 0x0C, 0xF3});
-  EXPECT_EQ(s.text, "02 01 0C F3 ");
+  EXPECT_EQ(Seen::of(m, {0x02, 0x01, 0x0C, 0xF3}), "02 01 0C F3 ");
   EXPECT_EQ(m.damaged_count(), 0U);
 }
 
 TEST(ParityMarks, DamagedCharacterIsSeparatedInLineOrder) {
   ParityMarks m;
-  Seen s;
   // 02 01, then 0C with a parity error (FF 00 0C), then F3
-  s.feed(m, {0x02, 0x01, 0xFF, 0x00, 0x0C, 0xF3});
-  EXPECT_EQ(s.text, "02 01 !0C F3 ");
+  EXPECT_EQ(Seen::of(m, {0x02, 0x01, 0xFF, 0x00, 0x0C, 0xF3}), "02 01 !0C F3 ");
   EXPECT_EQ(m.damaged_count(), 1U);
   EXPECT_EQ(m.pending(), 0U);
 }
 
 TEST(ParityMarks, LiteralFfIsOneByte) {
   ParityMarks m;
-  Seen s;
   // slave 3, FC 3|0x80 ... a CRC byte FF doubled by the port
-  s.feed(m, {0x03, 0x83, 0x07, 0xFF, 0xFF, 0x32});
-  EXPECT_EQ(s.text, "03 83 07 FF 32 ");
+  EXPECT_EQ(Seen::of(m, {0x03, 0x83, 0x07, 0xFF, 0xFF, 0x32}), "03 83 07 FF 32 ");
   EXPECT_EQ(m.damaged_count(), 0U);
 }
 
 TEST(ParityMarks, DamagedFfAndBreak) {
   ParityMarks m;
-  Seen s;
-  s.feed(m, {0xFF, 0x00, 0xFF, 0xFF, 0x00, 0x00});  // FF damaged; a break (NUL damaged)
-  EXPECT_EQ(s.text, "!FF !00 ");
+  // FF damaged; a break (NUL damaged)
+  EXPECT_EQ(Seen::of(m, {0xFF, 0x00, 0xFF, 0xFF, 0x00, 0x00}), "!FF !00 ");
   EXPECT_EQ(m.damaged_count(), 2U);
 }
 
@@ -90,9 +89,7 @@ TEST(ParityMarks, MarkSplitAcrossReads) {
 
 TEST(ParityMarks, StrayMarkDeliveredAsReceived) {
   ParityMarks m;
-  Seen s;
-  s.feed(m, {0xFF, 0x41});  // not something termios sends: kept, counted
-  EXPECT_EQ(s.text, "FF 41 ");
+  EXPECT_EQ(Seen::of(m, {0xFF, 0x41}), "FF 41 ");  // not something termios sends: kept, counted
   EXPECT_EQ(m.stray_marks(), 1U);
   EXPECT_EQ(m.damaged_count(), 0U);
 }

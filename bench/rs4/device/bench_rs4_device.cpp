@@ -9,7 +9,7 @@
 #include <memory>
 #include <vector>
 
-using rs4sim::bench::heap_in_use;
+using rs4sim::bench::heap_per_object;
 
 namespace rs4sim::rs4::device {
 namespace {
@@ -18,23 +18,16 @@ using namespace std::chrono_literals;
 
 // Memory of N emulated RS4 devices, powered and booted (scanning), per device.
 void BM_MemoryPerRs4(benchmark::State& state) {
-  const auto n = static_cast<std::size_t>(state.range(0));
-  double per_device = 0;
-  for (auto _ : state) {
-    const std::size_t before = heap_in_use();
-    std::vector<std::unique_ptr<Rs4Device>> devices;
-    dp::TimePoint t{1h};
-    for (std::size_t i = 0; i < n; ++i) {
-      Rs4DeviceConfig c;
-      c.switches = switches_for(static_cast<std::uint8_t>(i % 126));
-      devices.push_back(std::make_unique<Rs4Device>(c));
-      devices.back()->power_on(t);
-      devices.back()->on_time(t + 31s);  // booted, scanning
-    }
-    const std::size_t heap = heap_in_use() - before;
-    per_device = static_cast<double>(heap) / static_cast<double>(n);
-    benchmark::DoNotOptimize(devices.data());
-  }
+  const dp::TimePoint t{1h};
+  const auto scanning = [&](std::size_t i) {
+    Rs4DeviceConfig c;
+    c.switches = switches_for(static_cast<std::uint8_t>(i % 126));
+    auto d = std::make_unique<Rs4Device>(c);
+    d->power_on(t);
+    d->on_time(t + 31s);  // booted, scanning
+    return d;
+  };
+  const double per_device = heap_per_object(state, scanning);
   state.counters["sizeof_Rs4Device_B"] = static_cast<double>(sizeof(Rs4Device));
   state.counters["heap_per_device_B"] = per_device;  // incl. the unique_ptr's object
   state.counters["total_per_device_KiB"] = per_device / 1024.0;

@@ -20,8 +20,7 @@ namespace rs4sim::dp::link {
 namespace {
 
 using namespace std::chrono_literals;
-using testing::FakeStation;
-using testing::srd_request;
+using namespace testing;  // FakeStation, srd_request
 using Bytes = std::vector<std::uint8_t>;
 using stream::LogFn;
 using stream::PseudoTerminal;

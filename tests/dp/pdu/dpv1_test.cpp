@@ -8,15 +8,8 @@ namespace rs4sim::dp::pdu {
 namespace {
 
 using testing::Bytes;
+using testing::enc;
 using testing::error_of;
-
-template <class T>
-Bytes enc(const T& v) {
-  fdl::DataUnit out;
-  const auto r = encode(v, out);
-  EXPECT_TRUE(r) << r.error().message();
-  return testing::to_bytes(out);
-}
 
 TEST(PduDpv1, ReadRequestFromSection34) {
   const Bytes du = {

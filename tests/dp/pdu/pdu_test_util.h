@@ -23,6 +23,16 @@ Bytes encoded(F f, const T& value) {
   return to_bytes(out);
 }
 
+// Encodes with the codec's `encode(value, out)` overload (found by argument-dependent lookup)
+// and returns the bytes; fails the test on an error.
+template <class T>
+Bytes enc(const T& value) {
+  fdl::DataUnit out;
+  const auto r = encode(value, out);
+  EXPECT_TRUE(r) << r.error().message();
+  return to_bytes(out);
+}
+
 // The error of a failed result (fails the test if it succeeded).
 template <class R>
 std::error_code error_of(const R& r) {

@@ -7,7 +7,6 @@
 namespace rs4sim::rs4::adapter::testing {
 namespace {
 
-using Bytes = std::vector<std::uint8_t>;
 using dp::slave::AcyclicChannel;
 
 Bytes data_of(const dp::slave::AcyclicResult& r) { return Bytes(r.data.begin(), r.data.end()); }

@@ -17,6 +17,8 @@
 
 namespace rs4sim::rs4::adapter::testing {
 
+using Bytes = std::vector<std::uint8_t>;
+
 using namespace std::chrono_literals;
 
 struct RecordedAlarm {
@@ -117,6 +119,14 @@ struct Rig {
   // The process byte as the F-host sees it (substitute 0 while passivated).
   [[nodiscard]] std::uint8_t host_input() const { return host.input()[0]; }
   [[nodiscard]] bool ossd() const { return (host_input() & kInputOssd) != 0; }
+  // Powered, parametrised, 31 s of cycles (the RS4 measures after its ≈30 s boot
+  // [RS4 manual §7.1.1]) and a restart pulse: whether the OSSD is on.
+  [[nodiscard]] bool boot_and_release() {
+    start();
+    run(31s);
+    restart_pulse();
+    return ossd();
+  }
   void restart_pulse(std::chrono::milliseconds length = 200ms) {
     out_byte = static_cast<std::uint8_t>(out_byte | kOutputRestart);
     run(length);

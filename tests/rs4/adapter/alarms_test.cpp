@@ -5,8 +5,6 @@
 namespace rs4sim::rs4::adapter::testing {
 namespace {
 
-using Bytes = std::vector<std::uint8_t>;
-
 struct Alarms : ::testing::Test {
   Rig rig;
   void SetUp() override {

@@ -26,12 +26,7 @@ Bytes with(std::uint8_t code, const Bytes& options, const Bytes& data) {
 
 struct CommandSet : ::testing::Test {
   Rig rig;
-  void SetUp() override {
-    rig.start();
-    rig.run(31s);
-    rig.restart_pulse();
-    ASSERT_TRUE(rig.ossd());
-  }
+  void SetUp() override { ASSERT_TRUE(rig.boot_and_release()); }
   [[nodiscard]] const scanner::Scanner& rs4() const { return rig.adapter.scanner(); }
 };
 

@@ -28,10 +28,7 @@ struct Configuring : ::testing::Test {
   Bytes blob;
   std::uint32_t crc = 0;
   void SetUp() override {
-    rig.start();
-    rig.run(31s);
-    rig.restart_pulse();
-    ASSERT_TRUE(rig.ossd());
+    ASSERT_TRUE(rig.boot_and_release());
     const auto begin = protocol::decode_proxy_begin_answer(command(rig, {0x98}));
     ASSERT_TRUE(begin);
     ASSERT_EQ(begin.value().direction, protocol::SyncDirection::kDownload);

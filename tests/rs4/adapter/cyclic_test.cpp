@@ -8,12 +8,7 @@ namespace {
 
 struct Running : ::testing::Test {
   Rig rig;
-  void SetUp() override {
-    rig.start();
-    rig.run(31s);
-    rig.restart_pulse();
-    ASSERT_TRUE(rig.ossd());
-  }
+  void SetUp() override { ASSERT_TRUE(rig.boot_and_release()); }
 };
 
 TEST_F(Running, InvalidFieldPairGives2600AndOssd0ThenReleaseAfter500ms) {

@@ -8,15 +8,10 @@
 namespace rs4sim::rs4::adapter::testing {
 namespace {
 
-using Bytes = std::vector<std::uint8_t>;
-
 struct Aligned : ::testing::Test {
   Rig rig;
   void SetUp() override {
-    rig.start();
-    rig.run(31s);
-    rig.restart_pulse();
-    ASSERT_TRUE(rig.ossd());
+    ASSERT_TRUE(rig.boot_and_release());
     rig.control.alarms.clear();
   }
 };

@@ -8,8 +8,6 @@
 
 namespace rs4sim::rs4::adapter::testing {
 
-using Bytes = std::vector<std::uint8_t>;
-
 // WRITE `payload` in blocks of ≤ 236 bytes (numbered 0, 1, …, the last one 0xFFFF), then READ
 // the whole answer.
 inline Bytes command(Rig& rig, const Bytes& payload,

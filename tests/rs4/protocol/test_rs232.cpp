@@ -192,10 +192,16 @@ TEST(Rs4Rs232, BadCheckIsReportedAndNextFrameIsFound) {
   EXPECT_EQ(d.counters().frames, 1U);
 }
 
-TEST(Rs4Rs232, GarbageBeforeAFrameIsSkipped) {
-  Bytes stream{0x55, 0xAA, 0x13, 0x00, 0x77};  // noise, a single zero is no start mark
+// `prefix`, then the first example's frame (the alive telegram 14 01).
+Bytes then_alive(Bytes prefix) {
   const auto& good = examples()[0].wire;
-  stream.insert(stream.end(), good.begin(), good.end());
+  prefix.insert(prefix.end(), good.begin(), good.end());
+  return prefix;
+}
+
+TEST(Rs4Rs232, GarbageBeforeAFrameIsSkipped) {
+  // Noise (a single zero is no start mark), then the alive frame.
+  const Bytes stream = then_alive({0x55, 0xAA, 0x13, 0x00, 0x77});
   Rs232Deframer d;
   auto events = d.feed(stream);
   ASSERT_EQ(events.size(), 1U);
@@ -206,9 +212,7 @@ TEST(Rs4Rs232, GarbageBeforeAFrameIsSkipped) {
 
 TEST(Rs4Rs232, CutOffFrameIsAStuffingViolationAndTheNextFrameSurvives) {
   // A frame cut after 14 01, then a complete alive frame: "00 00 14" inside a frame.
-  Bytes stream{0x00, 0x00, 0x14, 0x01};
-  const auto& good = examples()[0].wire;
-  stream.insert(stream.end(), good.begin(), good.end());
+  const Bytes stream = then_alive({0x00, 0x00, 0x14, 0x01});
   Rs232Deframer d;
   auto events = d.feed(stream);
   ASSERT_EQ(events.size(), 2U);
@@ -233,9 +237,7 @@ TEST(Rs4Rs232, TooLongFrameIsBoundedAndResyncs) {
   Bytes stream{0x00, 0x00, 0x23};
   stream.insert(stream.end(), 20, 0x11);
   stream.insert(stream.end(), {0x00, 0x00, 0x00});
-  const auto& good = examples()[0].wire;
-  stream.insert(stream.end(), good.begin(), good.end());
-  auto events = d.feed(stream);
+  auto events = d.feed(then_alive(stream));
   ASSERT_EQ(events.size(), 2U);
   ASSERT_FALSE(events[0]);
   EXPECT_EQ(events[0].error(), ProtocolError::kFrameTooLong);
@@ -245,9 +247,7 @@ TEST(Rs4Rs232, TooLongFrameIsBoundedAndResyncs) {
 
 TEST(Rs4Rs232, StuffedFFOutsideAFrameIsNoStart) {
   // Joining mid-frame at "00 00 FF": 0xFF is never a command byte.
-  Bytes stream{0x00, 0x00, 0xFF, 0x31};
-  const auto& good = examples()[0].wire;
-  stream.insert(stream.end(), good.begin(), good.end());
+  const Bytes stream = then_alive({0x00, 0x00, 0xFF, 0x31});
   Rs232Deframer d;
   auto events = d.feed(stream);
   ASSERT_EQ(events.size(), 1U);

@@ -1,0 +1,31 @@
+#pragma once
+// A Slave_Diag answer decoded for rs4sim.v1.DiagnosisView (diagnosis.proto): the standard part
+// by the standard's names, the extended diagnosis block by block [IEC 61158-6-3 Slave_Diag,
+// DPV1 alarms, status PDUs], and the device's own texts for it (the RS4's tables, a GSD's
+// Unit_Diag texts). A decoder of bytes from the bus: it never throws; what it cannot read is
+// said in `error` and the blocks before it stay.
+
+#include "rs4sim/v1/diagnosis.pb.h"
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace rs4sim::rpc {
+
+// The device's texts for the extended diagnosis (the bytes after the 6 standard ones).
+using DiagnosisTexts =
+    std::function<std::vector<std::string>(std::span<const std::uint8_t> ext_diag)>;
+
+// `du`: the Slave_Diag DU. `dpv1`: device-related blocks are alarm and status PDUs.
+void fill_diagnosis(std::span<const std::uint8_t> du, bool dpv1, const DiagnosisTexts& texts,
+                    v1::DiagnosisView& out);
+
+// The RS4's words for its extended diagnosis: the status PDU's F-parameter diagnosis number
+// [RS4 manual §6.3, table 6.3-1] and the diagnosis alarm's error numbers, each adapter error
+// with the cause of [RS4 manual §5.3.2, table 5.3-3], "coming" or "going".
+std::vector<std::string> rs4_diagnosis_texts(std::span<const std::uint8_t> ext_diag);
+
+}  // namespace rs4sim::rpc
