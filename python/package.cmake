@@ -21,7 +21,7 @@ set(_rs4sim_proto_dir ${PROJECT_SOURCE_DIR}/rpc/proto)
 
 # python/'s sources, copied when they change.
 set(_rs4sim_py_sources pyproject.toml rs4sim_build_backend.py rs4sim/__init__.py rs4sim/harness.py rs4sim/gsd.py rs4sim/process.py
-    rs4sim/pytest_plugin.py rs4sim/_units.py)
+    rs4sim/pytest_plugin.py rs4sim/_units.py rs4sim/stations.py)
 set(_rs4sim_py_staged)
 foreach(file IN LISTS _rs4sim_py_sources)
   add_custom_command(OUTPUT ${_rs4sim_py_out}/${file}

@@ -53,9 +53,9 @@ void DeviceTarget::stop() {
   if (const auto timer = poll_timer_.lock()) timer->cancel();
 }
 
-LineDeviceTarget::LineDeviceTarget(std::string kind, std::unique_ptr<Watcher> watcher,
+LineDeviceTarget::LineDeviceTarget(stream::DeviceKind kind, std::unique_ptr<Watcher> watcher,
                                    const dp::Clock& clock, boost::asio::io_context& io)
-    : kind_(std::move(kind)), address_(watcher->address()), clock_(clock) {
+    : kind_(kind), address_(watcher->address()), clock_(clock) {
   hub_->watch(std::move(watcher));
   const auto timer = std::make_shared<boost::asio::steady_timer>(io);
   poll_timer_ = timer;

@@ -72,6 +72,14 @@ class DeviceTarget final : public Rs4Target {
     const auto it = others_.find(address);
     return it == others_.end() ? std::string() : it->second;
   }
+  // The RS4s, then the other stations (generic DP slaves).
+  [[nodiscard]] std::vector<RunStation> stations() const override {
+    auto out = RunTarget::stations();
+    for (const auto& [address, what] : others_) {
+      out.push_back({address, stream::DeviceKind::kGeneric});
+    }
+    return out;
+  }
 
  private:
   std::map<std::uint8_t, std::string> others_;
@@ -95,11 +103,11 @@ class DeviceTarget final : public Rs4Target {
 // device's own service.
 class LineDeviceTarget final : public RunTarget {
  public:
-  // `kind`: "gridscan", "metron", "polaris", "gsd". Starts the poll timer as DeviceTarget
+  // `kind`: kGridScan, kMetron, kPolaris, kGeneric (a GSD station). Starts the poll timer as DeviceTarget
   // does. Real time: run_until() only checks `done`, after() is not offered (nothing of such
   // a run schedules through it: SimTime answers FAILED_PRECONDITION on a real-time clock).
-  LineDeviceTarget(std::string kind, std::unique_ptr<Watcher> watcher, const dp::Clock& clock,
-                   boost::asio::io_context& io);
+  LineDeviceTarget(stream::DeviceKind kind, std::unique_ptr<Watcher> watcher,
+                   const dp::Clock& clock, boost::asio::io_context& io);
   [[nodiscard]] std::vector<std::uint8_t> addresses() const override { return {address_}; }
   [[nodiscard]] dp::TimePoint now() const override { return clock_.now(); }
   [[nodiscard]] bool simulated() const override { return false; }
@@ -107,11 +115,11 @@ class LineDeviceTarget final : public RunTarget {
   void after(dp::Duration, std::function<void()>) override {}
   dp::link::MemoryBus* bus() override { return nullptr; }
   EventHub* events() override { return hub_.get(); }
-  [[nodiscard]] std::string kind() const override { return kind_; }
+  [[nodiscard]] stream::DeviceKind kind() const override { return kind_; }
   void stop();
 
  private:
-  std::string kind_;
+  stream::DeviceKind kind_;
   std::uint8_t address_;
   const dp::Clock& clock_;
   std::shared_ptr<EventHub> hub_ = std::make_shared<EventHub>();

@@ -1,5 +1,6 @@
 #include "rpc/gridscan_service.h"
 
+#include "gridscan/description.h"
 #include "rpc/service_support.h"
 #include "rpc/status.h"
 
@@ -14,32 +15,15 @@ namespace {
 using line::check_delay;
 using line::needs_simulated_line;
 using line::numbers;
-using line::on_line;
 using line::on_off;
 using line::ranges;
+using line::set_counters;
 using line::set_last_frame;
 using line::token_of;
 using line::whole_ms;
+using stream::faults_present;
 
 using gridscan::elements_of;
-
-std::vector<std::string> gridscan_faults(const gridscan::Device& d) {
-  const auto& f = d.faults();
-  std::vector<std::string> out;
-  if (f.transmit.late.count() > 0) out.emplace_back("late");
-  if (f.wrong_seq) out.emplace_back("wrong-seq");
-  if (f.direction_bit) out.emplace_back("direction-bit");
-  if (f.bad_crc) out.emplace_back("bad-crc");
-  if (d.scene().internal_failure) out.emplace_back("internal-failure");
-  if (f.transmit.silent) out.emplace_back("silent");
-  if (f.config_not_set) out.emplace_back("config-not-set");
-  if (f.repeat_frames) out.emplace_back("repeat-frames");
-  if (f.insert_frames) out.emplace_back("insert-frames");
-  if (f.test_ignored) out.emplace_back("test-ignored");
-  if (f.stuck_free != 0) out.emplace_back("stuck-free");
-  if (f.mode_activation_fails) out.emplace_back("mode-activation-fails");
-  return out;
-}
 
 std::int64_t ns(stream::Duration d) {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(d).count();
@@ -52,8 +36,8 @@ GridScanService::GridScanService(LineContext context, gridscan::Device& device)
 
 grpc::Status GridScanService::GetState(grpc::ServerContext*, const v1::LineDeviceRequest* in,
                                        v1::GridScanState* out) {
-  return on_line(
-      c_, "GridScan", in->address(),
+  return on_device(
+      in->address(),
       [&](dp::TimePoint now) {
         out->set_address(c_.address);
         out->set_power(token_of(d_.power()));
@@ -77,26 +61,11 @@ grpc::Status GridScanService::GetState(grpc::ServerContext*, const v1::LineDevic
         for (const auto e : elements_of(report.elements, d_.elements())) {
           out->add_report_interrupted_elements(e);
         }
-        for (const auto& f : gridscan_faults(d_)) out->add_faults_present(f);
+        for (const auto& f : faults_present(gridscan::description(), d_)) {
+          out->add_faults_present(f);
+        }
         out->set_late_ms(whole_ms(d_.faults().transmit.late));
-        const auto& k = d_.counters();
-        auto* o = out->mutable_counters();
-        o->set_frames(k.frames);
-        o->set_answered(k.answered);
-        o->set_comm_tests(k.comm_tests);
-        o->set_streamed(k.streamed);
-        o->set_dropped(k.dropped());
-        o->set_truncated(k.truncated);
-        o->set_oversized(k.oversized);
-        o->set_bad_sync(k.bad_sync);
-        o->set_bad_crc(k.bad_crc);
-        o->set_bad_seq(k.bad_seq);
-        o->set_unknown_id(k.unknown_id);
-        o->set_direction_bit(k.direction_bit);
-        o->set_busy(k.busy);
-        o->set_not_ready(k.not_ready);
-        o->set_restarts(k.restarts);
-        o->set_mode_fallbacks(k.mode_fallbacks);
+        set_counters(gridscan::description(), d_.counters(), *out->mutable_counters());
         for (const auto e : elements_of(d_.faults().stuck_free, d_.elements())) {
           out->add_stuck_free(e);
         }
@@ -111,8 +80,8 @@ grpc::Status GridScanService::GetState(grpc::ServerContext*, const v1::LineDevic
 
 grpc::Status GridScanService::SetDoor(grpc::ServerContext*, const v1::SetDoorRequest* in,
                                       v1::Empty*) {
-  return on_line(
-      c_, "GridScan", in->address(),
+  return on_device(
+      in->address(),
       [&](dp::TimePoint) {
         if (in->position() > d_.elements()) {
           return invalid_argument("position",
@@ -128,8 +97,8 @@ grpc::Status GridScanService::SetDoor(grpc::ServerContext*, const v1::SetDoorReq
 
 grpc::Status GridScanService::SetBlocked(grpc::ServerContext*, const v1::SetBlockedRequest* in,
                                          v1::Empty*) {
-  return on_line(
-      c_, "GridScan", in->address(),
+  return on_device(
+      in->address(),
       [&](dp::TimePoint) {
         auto elements = numbers(*in, d_.elements(), "element");
         if (auto* bad = std::get_if<grpc::Status>(&elements)) return *bad;
@@ -140,10 +109,10 @@ grpc::Status GridScanService::SetBlocked(grpc::ServerContext*, const v1::SetBloc
       true);
 }
 
-grpc::Status GridScanService::SetTiming(grpc::ServerContext*,
-                                        const v1::GridScanTimingRequest* in, v1::Empty*) {
-  return on_line(
-      c_, "GridScan", in->address(),
+grpc::Status GridScanService::SetTiming(grpc::ServerContext*, const v1::GridScanTimingRequest* in,
+                                        v1::Empty*) {
+  return on_device(
+      in->address(),
       [&](dp::TimePoint) {
         if (auto why = d_.set_cycle(std::chrono::milliseconds(in->cycle_ms())); !why.empty()) {
           return invalid_argument("cycle_ms", why);
@@ -160,13 +129,7 @@ grpc::Status GridScanService::SetSoiling(grpc::ServerContext*, const v1::SetSoil
         "level",
         std::to_string(in->level()) + " outside 0..3 (clean .. heavy soiling, state bits 14..15)");
   }
-  return on_line(
-      c_, "GridScan", in->address(),
-      [&](dp::TimePoint) {
-        d_.set_soiling(static_cast<std::uint8_t>(in->level()));
-        return grpc::Status::OK;
-      },
-      true);
+  return change(in->address(), [&] { d_.set_soiling(static_cast<std::uint8_t>(in->level())); });
 }
 
 grpc::Status GridScanService::fault(const v1::GridScanFaultRequest& in, bool inject) {
@@ -183,8 +146,8 @@ grpc::Status GridScanService::fault(const v1::GridScanFaultRequest& in, bool inj
   if (inject && which == v1::GRID_SCAN_FAULT_STUCK_FREE && in.elements_size() == 0) {
     return invalid_argument("elements", "GRID_SCAN_FAULT_STUCK_FREE needs the elements to stick");
   }
-  return on_line(
-      c_, "GridScan", in.address(),
+  return on_device(
+      in.address(),
       [&](dp::TimePoint) {
         std::uint64_t chosen = 0;
         for (const auto e : in.elements()) {
@@ -234,8 +197,8 @@ grpc::Status GridScanService::PowerCycle(grpc::ServerContext*, const v1::PowerCy
   if (in->off_ms() > kMaxOffMs) {
     return invalid_argument("off_ms", std::to_string(in->off_ms()) + " ms outside 0..3600000");
   }
-  return on_line(
-      c_, "GridScan", in->address(),
+  return on_device(
+      in->address(),
       [&](dp::TimePoint now) {
         if (in->off_ms() > 0 && c_.line == nullptr) return needs_simulated_line("GridScan");
         d_.power_off();
@@ -251,8 +214,8 @@ grpc::Status GridScanService::PowerCycle(grpc::ServerContext*, const v1::PowerCy
 
 grpc::Status GridScanService::SetPower(grpc::ServerContext*, const v1::SetPowerRequest* in,
                                        v1::Empty*) {
-  return on_line(
-      c_, "GridScan", in->address(),
+  return on_device(
+      in->address(),
       [&](dp::TimePoint now) {
         in->on() ? d_.power_on(now) : d_.power_off();
         return grpc::Status::OK;

@@ -3,6 +3,9 @@
 #include "rpc/service_support.h"
 #include "rpc/status.h"
 
+#include <google/protobuf/descriptor.h>
+#include <google/protobuf/message.h>
+
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -26,6 +29,22 @@ void fill_frame(const stream::LineFrame& f, v1::ReceivedFrame& out) {
 }
 
 }  // namespace
+
+bool set_counter(google::protobuf::Message& out, std::string_view name,
+                 const std::vector<std::uint64_t>& values) {
+  const auto* field = out.GetDescriptor()->FindFieldByName(std::string(name));
+  if (field == nullptr || field->cpp_type() != google::protobuf::FieldDescriptor::CPPTYPE_UINT64) {
+    return false;
+  }
+  const auto* r = out.GetReflection();
+  if (field->is_repeated()) {
+    r->ClearField(&out, field);
+    for (const auto v : values) r->AddUInt64(&out, field, v);
+  } else if (!values.empty()) {
+    r->SetUInt64(&out, field, values.front());
+  }
+  return true;
+}
 
 grpc::Status needs_simulated_line(const std::string& kind) {
   std::string word = kind;  // the --device word: "gridscan" for "GridScan"

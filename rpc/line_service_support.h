@@ -11,6 +11,7 @@
 #include "rpc/tapped_byte_device.h"
 #include "rs4sim/v1/devices.pb.h"
 #include "stream/clock.h"
+#include "stream/device_description.h"
 
 #include <grpcpp/support/status.h>
 
@@ -24,6 +25,9 @@
 
 namespace grpc {
 class ServerContext;
+}
+namespace google::protobuf {
+class Message;
 }
 
 namespace rs4sim::rpc {
@@ -71,6 +75,24 @@ std::string token_of(Enum e) {
 }
 
 void set_last_frame(const TappedByteDevice& tap, v1::LastFrame& out);
+
+// Sets the uint64 field `name` of `out` (a Counters message) to `values` (a repeated field:
+// all of them; a scalar: the first). False: the message has no such field.
+bool set_counter(google::protobuf::Message& out, std::string_view name,
+                 const std::vector<std::uint64_t>& values);
+
+// Every counter of the device's description into its Counters message, by the field names
+// the description gives (tests/*/description_test.cpp: every one is a field, and back).
+template <typename Device, typename Counters>
+void set_counters(const stream::DeviceDescription<Device, Counters>& d, const Counters& k,
+                  google::protobuf::Message& out) {
+  for (const auto& c : d.counters) {
+    std::vector<std::uint64_t> values;
+    for (std::size_t i = 0; i < c.size; ++i) values.push_back(c.value(k, i));
+    (void)set_counter(out, c.name, values);
+  }
+}
+
 std::uint32_t whole_ms(stream::Duration d);
 
 // FAILED_PRECONDITION: the call needs the simulated line (`kind`'s run on --link memory).
@@ -118,6 +140,23 @@ class LineService : public Base {
 
   // InjectFault (`inject`) or ClearFault: the device's checks and its faults.
   virtual grpc::Status fault(const FaultRequest& in, bool inject) = 0;
+
+  // A change the device cannot refuse: `apply` on the loop, then the event hub looks.
+  grpc::Status change(std::uint32_t address, const std::function<void()>& apply) const {
+    return on_device(
+        address,
+        [&](dp::TimePoint) {
+          apply();
+          return grpc::Status::OK;
+        },
+        true);
+  }
+
+  // A call on the device: the address by the device's rule, then on_line with its kind.
+  grpc::Status on_device(std::uint32_t address, const LineFn& fn, bool changes) const {
+    if (auto bad = check_address(address); !bad.ok()) return bad;
+    return on_line(c_, kind_, address, fn, changes);
+  }
 
   LineContext c_;
 

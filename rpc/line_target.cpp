@@ -47,9 +47,9 @@ bool SimulatedLine::run_until(const std::function<bool()>& done, stream::Duratio
   return line_.run_until(clock_.now() + limit, done);
 }
 
-SimulatedLineTarget::SimulatedLineTarget(std::string kind, std::unique_ptr<Watcher> watcher,
+SimulatedLineTarget::SimulatedLineTarget(stream::DeviceKind kind, std::unique_ptr<Watcher> watcher,
                                          SimulatedLine& line)
-    : kind_(std::move(kind)), address_(watcher->address()), line_(line) {
+    : kind_(kind), address_(watcher->address()), line_(line) {
   hub_->watch(std::move(watcher));
 }
 

@@ -73,7 +73,8 @@ class SimulatedLine {
 // watching the device and polled after every call that moves the time.
 class SimulatedLineTarget final : public RunTarget {
  public:
-  SimulatedLineTarget(std::string kind, std::unique_ptr<Watcher> watcher, SimulatedLine& line);
+  SimulatedLineTarget(stream::DeviceKind kind, std::unique_ptr<Watcher> watcher,
+                      SimulatedLine& line);
   [[nodiscard]] std::vector<std::uint8_t> addresses() const override { return {address_}; }
   [[nodiscard]] dp::TimePoint now() const override { return line_.now(); }
   [[nodiscard]] bool simulated() const override { return true; }
@@ -81,10 +82,10 @@ class SimulatedLineTarget final : public RunTarget {
   void after(dp::Duration delay, std::function<void()> f) override;
   dp::link::MemoryBus* bus() override { return nullptr; }
   EventHub* events() override { return hub_.get(); }
-  [[nodiscard]] std::string kind() const override { return kind_; }
+  [[nodiscard]] stream::DeviceKind kind() const override { return kind_; }
 
  private:
-  std::string kind_;
+  stream::DeviceKind kind_;
   std::uint8_t address_;
   SimulatedLine& line_;
   std::shared_ptr<EventHub> hub_ = std::make_shared<EventHub>();

@@ -1,5 +1,6 @@
 #include "rpc/metron_service.h"
 
+#include "metron/description.h"
 #include "rpc/service_support.h"
 #include "rpc/status.h"
 
@@ -16,9 +17,11 @@ using line::numbers;
 using line::on_line;
 using line::on_off;
 using line::ranges;
+using line::set_counters;
 using line::set_last_frame;
 using line::token_of;
 using line::whole_ms;
+using stream::faults_present;
 
 std::vector<std::uint16_t> metron_blocked(const metron::Scene& s) {
   std::vector<std::uint16_t> out;
@@ -34,16 +37,6 @@ std::vector<std::uint16_t> metron_blocked(const metron::Scene& s) {
 std::uint32_t old_delay_ms(const v1::MetronFaultRequest& in) { return in.delay_ms(); }
 void set_old_delay_ms(v1::MetronState& out, std::uint32_t ms) { out.set_delay_ms(ms); }
 #pragma GCC diagnostic pop
-
-std::vector<std::string> metron_faults(const metron::Faults& f) {
-  std::vector<std::string> out;
-  if (f.transmit.silent) out.emplace_back("silent");
-  if (f.transmit.late.count() > 0) out.emplace_back("late");
-  if (f.bad_checksum) out.emplace_back("bad-checksum");
-  if (f.wrong_node) out.emplace_back("wrong-node");
-  if (f.truncate) out.emplace_back("truncate");
-  return out;
-}
 
 grpc::Status check_metron_address(std::uint32_t address) {
   if (address == metron::kBroadcast) {
@@ -63,9 +56,8 @@ MetronService::MetronService(LineContext context, metron::Device& device)
 
 grpc::Status MetronService::GetState(grpc::ServerContext*, const v1::LineDeviceRequest* in,
                                      v1::MetronState* out) {
-  if (auto bad = check_metron_address(in->address()); !bad.ok()) return bad;
-  return on_line(
-      c_, "METRON", in->address(),
+  return on_device(
+      in->address(),
       [&](dp::TimePoint now) {
         const auto& o = d_.options();
         const auto& scene = d_.scene();
@@ -82,24 +74,12 @@ grpc::Status MetronService::GetState(grpc::ServerContext*, const v1::LineDeviceR
         out->set_first_interrupted(scene.measure(metron::Measurement::kFirstInterrupted));
         out->set_last_interrupted(scene.measure(metron::Measurement::kLastInterrupted));
         out->set_interrupted_count(scene.measure(metron::Measurement::kInterruptedCount));
-        for (const auto& f : metron_faults(d_.faults())) out->add_faults_present(f);
+        for (const auto& f : faults_present(metron::description(), d_)) {
+          out->add_faults_present(f);
+        }
         out->set_late_ms(whole_ms(d_.faults().transmit.late));
         set_old_delay_ms(*out, out->late_ms());
-        const auto k = d_.counters();
-        auto* c = out->mutable_counters();
-        c->set_messages(k.messages);
-        c->set_executed(k.executed);
-        c->set_frames_sent(k.frames_sent);
-        for (const auto e : k.errors) c->add_errors(e);
-        c->set_parity_rejected(k.parity_rejected);
-        c->set_not_for_us(k.not_for_us);
-        c->set_broadcast_ignored(k.broadcast_ignored);
-        c->set_truncated(k.truncated);
-        c->set_too_long(k.too_long);
-        c->set_resets(k.resets);
-        c->set_reports(k.reports);
-        c->set_reports_dropped(k.reports_dropped);
-        c->set_suppressed(k.suppressed);
+        set_counters(metron::description(), d_.counters(), *out->mutable_counters());
         set_last_frame(c_.tap, *out->mutable_last_frame());
         out->set_scan_cycle_ms(whole_ms(d_.options().scan_cycle));
         out->set_t_response_ms(whole_ms(d_.options().t_response));
@@ -111,9 +91,8 @@ grpc::Status MetronService::GetState(grpc::ServerContext*, const v1::LineDeviceR
 
 grpc::Status MetronService::SetBlocked(grpc::ServerContext*, const v1::SetBlockedRequest* in,
                                        v1::Empty*) {
-  if (auto bad = check_metron_address(in->address()); !bad.ok()) return bad;
-  return on_line(
-      c_, "METRON", in->address(),
+  return on_device(
+      in->address(),
       [&](dp::TimePoint) {
         auto beams = numbers(*in, d_.scene().beams(), "beam");
         if (auto* bad = std::get_if<grpc::Status>(&beams)) return *bad;
@@ -125,26 +104,12 @@ grpc::Status MetronService::SetBlocked(grpc::ServerContext*, const v1::SetBlocke
 
 grpc::Status MetronService::SetSynchronised(grpc::ServerContext*,
                                             const v1::SetSynchronisedRequest* in, v1::Empty*) {
-  if (auto bad = check_metron_address(in->address()); !bad.ok()) return bad;
-  return on_line(
-      c_, "METRON", in->address(),
-      [&](dp::TimePoint) {
-        d_.set_synchronised(in->synchronised());
-        return grpc::Status::OK;
-      },
-      true);
+  return change(in->address(), [&] { d_.set_synchronised(in->synchronised()); });
 }
 
 grpc::Status MetronService::SetInput(grpc::ServerContext*, const v1::SetInputRequest* in,
                                      v1::Empty*) {
-  if (auto bad = check_metron_address(in->address()); !bad.ok()) return bad;
-  return on_line(
-      c_, "METRON", in->address(),
-      [&](dp::TimePoint) {
-        d_.set_input(in->high());
-        return grpc::Status::OK;
-      },
-      true);
+  return change(in->address(), [&] { d_.set_input(in->high()); });
 }
 
 grpc::Status MetronService::SetTiming(grpc::ServerContext*, const v1::MetronTimingRequest* in,

@@ -1,6 +1,7 @@
 #include "rpc/polaris_service.h"
 
 #include "modbus/rtu_frame.h"
+#include "polaris/description.h"
 #include "rpc/service_support.h"
 #include "rpc/status.h"
 
@@ -17,16 +18,10 @@ using line::numbers;
 using line::on_line;
 using line::on_off;
 using line::ranges;
+using line::set_counters;
 using line::set_last_frame;
 using line::whole_ms;
-
-std::vector<std::string> polaris_faults(const polaris::Faults& f) {
-  std::vector<std::string> out;
-  if (f.bad_crc) out.emplace_back("bad-crc");
-  if (f.transmit.silent) out.emplace_back("silent");
-  if (f.transmit.late.count() > 0) out.emplace_back("late");
-  return out;
-}
+using stream::faults_present;
 
 grpc::Status check_modbus_address(std::uint32_t address) {
   if (!modbus::is_slave_address(address)) {
@@ -39,25 +34,6 @@ grpc::Status check_modbus_address(std::uint32_t address) {
   return grpc::Status::OK;
 }
 
-void set_counters(const polaris::Counters& k, v1::PolarisCounters& c) {
-  c.set_requests(k.requests);
-  c.set_crc_errors(k.crc_errors);
-  c.set_too_short(k.too_short);
-  c.set_oversized(k.oversized);
-  c.set_broadcasts(k.broadcasts);
-  c.set_foreign_address(k.foreign_address);
-  c.set_bad_function(k.bad_function);
-  c.set_bad_request(k.bad_request);
-  c.set_bad_start(k.bad_start);
-  c.set_answers_ignored(k.answers_ignored);
-  c.set_exceptions_sent(k.exceptions_sent);
-  c.set_frames_sent(k.frames_sent);
-  c.set_suppressed(k.suppressed);
-  c.set_busy(k.busy);
-  c.set_writes(k.writes);
-  c.set_refused_writes(k.refused_writes);
-}
-
 }  // namespace
 
 PolarisService::PolarisService(LineContext context, polaris::Device& device)
@@ -65,9 +41,8 @@ PolarisService::PolarisService(LineContext context, polaris::Device& device)
 
 grpc::Status PolarisService::GetState(grpc::ServerContext*, const v1::LineDeviceRequest* in,
                                       v1::PolarisState* out) {
-  if (auto bad = check_modbus_address(in->address()); !bad.ok()) return bad;
-  return on_line(
-      c_, "Polaris", in->address(),
+  return on_device(
+      in->address(),
       [&](dp::TimePoint now) {
         const auto& o = d_.options();
         out->set_address(c_.address);
@@ -85,9 +60,11 @@ grpc::Status PolarisService::GetState(grpc::ServerContext*, const v1::LineDevice
           p->set_first(obj.first);
           p->set_last(obj.last);
         }
-        for (const auto& f : polaris_faults(d_.faults())) out->add_faults_present(f);
+        for (const auto& f : faults_present(polaris::description(), d_)) {
+          out->add_faults_present(f);
+        }
         out->set_late_ms(whole_ms(d_.faults().transmit.late));
-        set_counters(d_.counters(), *out->mutable_counters());
+        set_counters(polaris::description(), d_.counters(), *out->mutable_counters());
         out->set_calibrating(d_.calibrating(now));
         if (const auto end = d_.calibration_end()) out->set_calibration_end_ns(to_ns(*end));
         out->set_calibrations(d_.calibrations());
@@ -115,9 +92,8 @@ grpc::Status PolarisService::GetState(grpc::ServerContext*, const v1::LineDevice
 
 grpc::Status PolarisService::SetBlocked(grpc::ServerContext*, const v1::SetBlockedRequest* in,
                                         v1::Empty*) {
-  if (auto bad = check_modbus_address(in->address()); !bad.ok()) return bad;
-  return on_line(
-      c_, "Polaris", in->address(),
+  return on_device(
+      in->address(),
       [&](dp::TimePoint now) {
         auto beams = numbers(*in, d_.options().beams, "beam");
         if (auto* bad = std::get_if<grpc::Status>(&beams)) return *bad;
@@ -159,13 +135,9 @@ grpc::Status PolarisService::fault(const v1::PolarisFaultRequest& in, bool injec
 
 grpc::Status PolarisService::Calibrate(grpc::ServerContext*, const v1::LineDeviceRequest* in,
                                        v1::Empty*) {
-  if (auto bad = check_modbus_address(in->address()); !bad.ok()) return bad;
-  return on_line(
-      c_, "Polaris", in->address(),
-      [&](dp::TimePoint now) {
-        return calibration_refused(d_.start_calibration(now));
-      },
-      true);
+  return on_device(
+      in->address(),
+      [&](dp::TimePoint now) { return calibration_refused(d_.start_calibration(now)); }, true);
 }
 
 grpc::Status PolarisService::calibration_refused(const std::error_code& ec) const {
@@ -177,10 +149,9 @@ grpc::Status PolarisService::calibration_refused(const std::error_code& ec) cons
                                "area [Polaris manual §7.2]");
   }
   const auto end = d_.calibration_end();
-  return failed_precondition(
-      "CALIBRATING", subject,
-      "an auto-calibration runs until " + std::to_string(end ? to_ns(*end) : 0) +
-          " ns (0.4 s per beam)");
+  return failed_precondition("CALIBRATING", subject,
+                             "an auto-calibration runs until " +
+                                 std::to_string(end ? to_ns(*end) : 0) + " ns (0.4 s per beam)");
 }
 
 grpc::Status PolarisService::SetTiming(grpc::ServerContext*, const v1::PolarisTimingRequest* in,
@@ -200,8 +171,8 @@ grpc::Status PolarisService::SetTiming(grpc::ServerContext*, const v1::PolarisTi
       [&](dp::TimePoint now) {
         const auto column = in->response_column() == 2 ? polaris::ResponseColumn::kSecond
                                                        : polaris::ResponseColumn::kFirst;
-        if (const auto ec = d_.set_response_time(
-                std::chrono::microseconds(in->response_time_us()), column, now)) {
+        if (const auto ec = d_.set_response_time(std::chrono::microseconds(in->response_time_us()),
+                                                 column, now)) {
           return invalid_argument("response_time_us", ec.message());
         }
         return grpc::Status::OK;
@@ -211,11 +182,9 @@ grpc::Status PolarisService::SetTiming(grpc::ServerContext*, const v1::PolarisTi
 
 grpc::Status PolarisService::SetSw1(grpc::ServerContext*, const v1::PolarisSw1Request* in,
                                     v1::Empty*) {
-  if (auto bad = check_modbus_address(in->address()); !bad.ok()) return bad;
-  return on_line(
-      c_, "Polaris", in->address(),
-      [&](dp::TimePoint now) { return calibration_refused(d_.set_sw1(in->closed(), now)); },
-      true);
+  return on_device(
+      in->address(),
+      [&](dp::TimePoint now) { return calibration_refused(d_.set_sw1(in->closed(), now)); }, true);
 }
 
 std::unique_ptr<Watcher> polaris_watcher(std::uint8_t address, const polaris::Device& d) {

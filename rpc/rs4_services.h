@@ -68,6 +68,7 @@ class ObservationService final : public v1::Observation::Service {
   // A run without RS4s (a byte line's) serves the event stream only; its GetState and
   // GetContour name the device's own service.
   explicit ObservationService(RunContext context) : c_(context) {}
+  [[nodiscard]] const RunContext& run() const { return c_; }  // Run.Describe's stations
   grpc::Status GetState(grpc::ServerContext*, const v1::StationRequest* in,
                         v1::DeviceState* out) override;
   grpc::Status GetContour(grpc::ServerContext*, const v1::StationRequest* in,

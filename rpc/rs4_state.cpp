@@ -1,6 +1,7 @@
 #include "rpc/rs4_state.h"
 
 #include "rs4/adapter/cyclic_bytes.h"
+#include "rs4/device/description.h"
 
 #include <string>
 
@@ -71,12 +72,8 @@ void fill_state(const rs4::device::Rs4Device& device, std::uint8_t address, dp::
   out.set_ossd(status.ossd);
   out.set_contamination_percent(status.contamination_percent);
   out.set_active_field_pair(status.first_pair);
-  const auto& faults = device.scanner().faults();
-  for (std::size_t i = 0; i < faults.size(); ++i) {
-    if (faults[i].present) {
-      out.add_faults_present(
-          std::string(rs4::scanner::fault_info(static_cast<rs4::scanner::Fault>(i)).name));
-    }
+  for (const auto& f : stream::faults_present(rs4::device::description(), device)) {
+    out.add_faults_present(f);
   }
   out.set_scan_counter(status.scan_counter);
   out.set_f_dest_add(view.f_dest_add);

@@ -21,7 +21,7 @@ class Rs4Target : public RunTarget {
  public:
   // nullptr for an unknown station, or one that is not an RS4.
   virtual rs4::device::Rs4Device* device(std::uint8_t address) = 0;
-  [[nodiscard]] std::string kind() const override { return "rs4"; }
+  [[nodiscard]] stream::DeviceKind kind() const override { return stream::DeviceKind::kRs4; }
   Rs4Target* rs4s() final { return this; }
   // The reed contact of the PC adapter (Device.SetPcAdapter). A process that serves the RS4's
   // RS232 port routes it through the port, which opens and closes with it.

@@ -7,6 +7,7 @@
 
 #include "dp/link/memory_bus.h"
 #include "dp/time/clock.h"
+#include "stream/device_description.h"
 
 #include <cstdint>
 #include <functional>
@@ -18,6 +19,12 @@ namespace rs4sim::rpc {
 class EventHub;
 class Executor;
 class Rs4Target;
+
+// One station of the run (rs4sim.v1.Run/Describe's Station).
+struct RunStation {
+  std::uint8_t address;
+  stream::DeviceKind kind;
+};
 
 class RunTarget {
  public:
@@ -34,8 +41,16 @@ class RunTarget {
   virtual dp::link::MemoryBus* bus() = 0;
   // Runs `f` on the loop after `delay` (simulated runs: advances time by `delay` first).
   virtual void after(dp::Duration delay, std::function<void()> f) = 0;
-  // What the run's devices are: "rs4", "gsd", or the RS-485 device of a line run.
-  [[nodiscard]] virtual std::string kind() const = 0;
+  // What the run's devices are: the RS4, generic DP slaves (GSD stations), or the RS-485
+  // device of a line run.
+  [[nodiscard]] virtual stream::DeviceKind kind() const = 0;
+  // Every station of the run with its kind; by default each of addresses() of kind(). A run
+  // of several kinds (a bus file's) lists them all.
+  [[nodiscard]] virtual std::vector<RunStation> stations() const {
+    std::vector<RunStation> out;
+    for (const auto a : addresses()) out.push_back({a, kind()});
+    return out;
+  }
   // A station of the run that is not an RS4, as the RS4 calls name it ("a GSD station
   // (rs4sim.v1.GsdStations)"); empty when the run has no other station at `address`.
   [[nodiscard]] virtual std::string other_station(std::uint8_t address) const {

@@ -178,6 +178,7 @@ RpcServer::RpcServer(const ServerOptions& options, const std::vector<grpc::Servi
   grpc::ServerBuilder builder;
   if (listens) builder.AddListeningPort(options.address, credentials(options), &port_);
   for (auto* s : services) builder.RegisterService(s);
+  run_.observe(services);
   builder.RegisterService(&run_);
   builder.SetOption(run_.builder_option());
   server_ = builder.BuildAndStart();

@@ -16,11 +16,17 @@ std::string station_list(const RunTarget& target) {
   return out;
 }
 
+// The run's devices in a message: "gsd" for GSD stations (their service is GsdStations),
+// else the --device word.
+std::string kind_word(stream::DeviceKind kind) {
+  return kind == stream::DeviceKind::kGeneric ? "gsd" : std::string(stream::to_string(kind));
+}
+
 }  // namespace
 
 grpc::Status unknown_station(const RunTarget& target, std::uint32_t address) {
-  if (target.kind() != "rs4") {
-    const auto kind = target.kind();
+  if (target.kind() != stream::DeviceKind::kRs4) {
+    const auto kind = kind_word(target.kind());
     const auto here = target.addresses();
     if (std::find(here.begin(), here.end(), address) == here.end()) {
       return not_found("no " + kind + " at address " + std::to_string(address) + " (this run's " +

@@ -48,31 +48,23 @@ std::string joined(const std::vector<std::string>& names) {
   return s;
 }
 
-// The byte devices' options (app/devices/device_options.h; each entry refuses those it does not use).
+// The devices' options: their help is the descriptions' (app/devices/device_options.h
+// option_help; each entry refuses those it does not use).
 void add_byte_device_options(CLI::App& cmd, RunOptions& o) {
   DeviceOptions& d = o.device_options;
-  cmd.add_option("--elements", d.elements, "byte devices: element count");
-  cmd.add_option("--beams", d.beams, "byte devices: beam count");
-  cmd.add_option("--model", d.model, "byte devices: model");
-  cmd.add_option("--mode", d.mode, "byte devices: operating/reporting mode");
-  cmd.add_option("--blocked", o.blocked,
-                 "byte devices: interrupted elements/beams at start, 1-based, e.g. 9-13,25-34");
-  cmd.add_option("--door", d.door, "byte devices: door position at start");
-  cmd.add_option("--node", d.node, "byte devices: node number");
-  cmd.add_option("--wire-table", d.wire_table,
-                 "metron: the byte values and reply/report layouts from a JSON file (the "
-                 "defaults: rs4sim metron-wire-table)");
-  cmd.add_option("--mains", d.mains,
-                 "gridscan: the mains at start: on (default: the power-up messages at once) | "
-                 "off (SIGUSR1 or GridScan.SetPower powers it up, e.g. once the controller has "
-                 "opened the pty)")
+  cmd.add_option("--elements", d.elements, option_help("--elements"));
+  cmd.add_option("--beams", d.beams, option_help("--beams"));
+  cmd.add_option("--model", d.model, option_help("--model"));
+  cmd.add_option("--mode", d.mode, option_help("--mode"));
+  cmd.add_option("--blocked", o.blocked, option_help("--blocked"));
+  cmd.add_option("--door", d.door, option_help("--door"));
+  cmd.add_option("--node", d.node, option_help("--node"));
+  cmd.add_option("--wire-table", d.wire_table, option_help("--wire-table"));
+  cmd.add_option("--mains", d.mains, option_help("--mains"))
       ->check(one_of("a mains state", {"on", "off"}));
-  cmd.add_option("--format", d.format,
-                 "byte devices: character format override, e.g. 8E1 (--baud: the bit rate)");
-  cmd.add_option("--rs232", d.rs232,
-                 "rs4: serve the RS232 interface behind the PC adapter: pty | serial:DEVICE[@BAUD] "
-                 "(SIGUSR1 attaches the PC adapter, SIGUSR2 removes it)");
-  cmd.add_option("--pc-adapter", d.pc_adapter, "rs4: the PC adapter at start: attached | detached")
+  cmd.add_option("--format", d.format, option_help("--format"));
+  cmd.add_option("--rs232", d.rs232, option_help("--rs232"));
+  cmd.add_option("--pc-adapter", d.pc_adapter, option_help("--pc-adapter"))
       ->check(one_of("a PC adapter state", {"attached", "detached"}));
 }
 
@@ -110,14 +102,10 @@ Action setup(CLI::App& cmd) {
                  "FDL address 0..125 (rs4: default 4; repeat it for several RS4s on one "
                  "real-time link)")
       ->check(slave_address());
-  cmd.add_option("--ident", d.ident, "generic: Ident_Number, e.g. 0x1234");
-  cmd.add_option("--cfg", d.cfg, "generic: configuration identifiers in hex, e.g. \"10 20\"");
-  cmd.add_option("--gsd", d.gsd,
-                 "generic: the DP slave its GSD file describes (ident, Cfg, User_Prm_Data, "
-                 "rates, MaxTsdr, DPV1, Max_Diag_Data_Len)");
-  cmd.add_option("--module", d.modules,
-                 "with --gsd: a module by its GSD name, repeat it in slot order (a compact "
-                 "station's one module is implicit)");
+  cmd.add_option("--ident", d.ident, option_help("--ident"));
+  cmd.add_option("--cfg", d.cfg, option_help("--cfg"));
+  cmd.add_option("--gsd", d.gsd, option_help("--gsd"));
+  cmd.add_option("--module", d.modules, option_help("--module"));
   cmd.add_option("--f-dest-add", d.f_dest_add,
                  "with --gsd: the F_Dest_Add of the station's PROFIsafe F-modules (their address "
                  "switch; default: the GSD's F_Dest_Add)");
@@ -125,22 +113,12 @@ Action setup(CLI::App& cmd) {
                  "a whole bus from FILE.json: {\"stations\": [{\"address\": 4, \"device\": "
                  "\"rs4\"}, {\"address\": 5, \"gsd\": \"X.gse\", \"modules\": [...]}]}, all on "
                  "the one link");
-  cmd.add_option("--boot-time", d.boot_time_ms,
-                 "rs4: boot time until operational in ms (default 30000)");
-  cmd.add_option("--command-time", d.command_time_ms,
-                 "rs4: how long the RS4 processes a command in ms, 0..120000 (default 40; the "
-                 "manual: up to 2 minutes)");
-  cmd.add_option("--serial-number", d.serial_numbers,
-                 "rs4: the unit's serial number 1..4294967295, one per --address in their order "
-                 "(default 74565); the proxy downloads the archived set to a unit it has not "
-                 "seen (device exchange)");
-  cmd.add_option("--state", d.state_files,
-                 "rs4: the unit's non-volatile memory (parameter set, passwords, serial number, "
-                 "address switches) in FILE, one per --address: loaded at start, written on "
-                 "every change, so a restart is the same unit with the same set");
+  cmd.add_option("--boot-time", d.boot_time_ms, option_help("--boot-time"));
+  cmd.add_option("--command-time", d.command_time_ms, option_help("--command-time"));
+  cmd.add_option("--serial-number", d.serial_numbers, option_help("--serial-number"));
+  cmd.add_option("--state", d.state_files, option_help("--state"));
   cmd.add_option("--adapter-response-time", d.response_time_ms,
-                 "rs4: the PROFIsafe adapter's response time in ms, 0..1000 (default 10, as "
-                 "the manual's technical data)");
+                 option_help("--adapter-response-time"));
   add_byte_device_options(cmd, *o);
   add_link_options(cmd, l, LinkCommand::kRun);
   add_real_line_options(cmd, l);
@@ -156,23 +134,24 @@ Action setup(CLI::App& cmd) {
     if (!o->bus.empty()) {
       if (!o->device.empty() || dev.address || !dev.gsd.empty() || !dev.ident.empty() ||
           !dev.cfg.empty() || !dev.modules.empty()) {
-        throw UsageError("--bus " + o->bus + " describes the stations: --device, --address, "
+        throw UsageError("--bus " + o->bus +
+                         " describes the stations: --device, --address, "
                          "--gsd, --module, --ident and --cfg go into the file");
       }
       return run_device(bus_device_entry(read_bus_file(o->bus, o->link.baud)), dev, o->link,
                         std::cout);
     }
-    if (o->device.empty()) {
-      o->device = dev.ident.empty() && dev.cfg.empty() && dev.gsd.empty() ? "rs4" : "generic";
-    }
     dev.link_baud = o->link.baud;
-    return run_device(*find_device(o->device), dev, o->link, std::cout);
+    if (!o->device.empty()) return run_device(*find_device(o->device), dev, o->link, std::cout);
+    const bool generic = !dev.ident.empty() || !dev.cfg.empty() || !dev.gsd.empty();
+    return run_device(
+        find_device(generic ? stream::DeviceKind::kGeneric : stream::DeviceKind::kRs4), dev,
+        o->link, std::cout);
   };
 }
 
 const CommandRegistration kRun("run", "run a virtual DP slave on a link (memory, pty, serial, udp)",
-                               setup,
-    Signals::kSession);
+                               setup, Signals::kSession);
 
 }  // namespace
 }  // namespace rs4sim::app

@@ -7,12 +7,19 @@
 #include "app/devices/device_registry.h"
 #include "stream/echo_device.h"
 
+#include <array>
 #include <ostream>
 
 namespace rs4sim::app {
 namespace {
 
 constexpr stream::LineSettings kDefaultLine{9600, 8, stream::Parity::kNone, 1};
+
+// The echo's options (it has no API, hence no counters or faults to describe).
+constexpr std::array kOptions{
+    stream::OptionInfo{"--baud", 50, 12000000, "the bit rate (default 9600)"},
+    stream::OptionInfo{"--format", 1, 0, "the character format (default 8N1)"},
+};
 
 stream::EchoOptions echo_options(const DeviceOptions& o) {
   stream::EchoOptions e;
@@ -39,7 +46,7 @@ class EchoInstance final : public DeviceInstance {
 };
 
 void validate(DeviceOptions& o) {
-  refuse_unused(o, "echo", {DeviceFlag::kBaud, DeviceFlag::kFormat});
+  refuse_unused(o, "echo", kOptions);
   (void)echo_options(o);  // throws UsageError for a bad --format
 }
 
@@ -53,6 +60,8 @@ DeviceEntry echo_device_entry() {
       .simulate = {},  // no in-memory link: --link memory is refused
       .demo = {},
       .byte_device = true,
+      .options = kOptions,
+      .kind = stream::DeviceKind::kEcho,
   };
 }
 

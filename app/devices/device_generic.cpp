@@ -7,6 +7,7 @@
 #include "app/devices/gsd_segment.h"
 #include "app/devices/gsd_station_file.h"
 #include "app/runtime/run_options.h"
+#include "dp/devices/description.h"
 #include "dp/devices/generic_bus.h"
 #include "rpc/device_target.h"
 #include "rpc/gsd_service.h"
@@ -97,8 +98,8 @@ class GsdInstance final : public DeviceInstance {
   explicit GsdInstance(GsdStationSpec spec) : station_(std::move(spec)) {}
   std::vector<dp::Station*> stations() override { return {&tap_}; }
   ServiceList services(const ServiceContext& c) override {
-    target_ =
-        std::make_unique<rpc::LineDeviceTarget>("gsd", rpc::gsd_watcher(station_), c.clock, c.io);
+    target_ = std::make_unique<rpc::LineDeviceTarget>(stream::DeviceKind::kGeneric,
+                                                      rpc::gsd_watcher(station_), c.clock, c.io);
     tap_.set_hub(target_->events());
     auto* hub = target_->events();
     const dp::Clock& clock = c.clock;
@@ -162,7 +163,7 @@ void validate(DeviceOptions& o) {
   if (!o.address || o.ident.empty() || o.cfg.empty()) {
     throw UsageError("--device generic needs --address, --ident and --cfg (or --gsd FILE)");
   }
-  refuse_unused(o, "generic", {DeviceFlag::kAddress, DeviceFlag::kIdent, DeviceFlag::kCfg});
+  refuse_unused(o, "generic", dp::devices::description().options);
   (void)slave_config(o);  // throws UsageError for a bad address, ident or cfg
 }
 
@@ -186,6 +187,9 @@ DeviceEntry generic_device_entry() {
         return std::make_unique<GenericSegment>(slave_config(o));
       },
       run_generic_demo,
+      false,
+      dp::devices::description().options,
+      dp::devices::description().kind,
   };
 }
 

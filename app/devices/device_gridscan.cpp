@@ -11,6 +11,7 @@
 #include "app/devices/device_registry.h"
 #include "app/devices/line_segment.h"
 #include "app/runtime/usage_error.h"
+#include "gridscan/description.h"
 #include "gridscan/device.h"
 #include "gridscan/mode_spec.h"
 #include "rpc/device_target.h"
@@ -59,29 +60,31 @@ gridscan::Options gridscan_options(const DeviceOptions& o) {
 // The status line at the end of a run.
 void print_line_status(std::ostream& out, const gridscan::Device& d,
                        const stream::ByteCounters& c) {
-  const auto& k = d.counters();
-  out << "gridscan: frames " << k.frames << ", answered " << k.answered << " (communication tests "
-      << k.comm_tests << "), streamed " << k.streamed << ", dropped " << k.dropped()
-      << " (truncated " << k.truncated << ", oversized " << k.oversized << ", sync " << k.bad_sync
-      << ", CRC " << k.bad_crc << ", SeqCnt " << k.bad_seq << ", ID " << k.unknown_id
-      << ", direction " << k.direction_bit << ", busy " << k.busy << ", not ready " << k.not_ready
-      << "), restarts " << k.restarts << ", bytes received " << c.bytes_received << ", sent "
-      << c.bytes_sent << ", link errors " << c.link_errors << std::endl;
+  print_line_summary(out, gridscan::description(), d.counters(), "", c);
 }
 
-class GridScanInstance final : public DeviceInstance {
+// The curtain on its line: alone on the simulated line with --link memory (docs/gridscan.md
+// "Simulated clock"), else on pty, serial or UDP (LineInstance).
+using GridScanSegment = LineSegment<gridscan::Device, rpc::GridScanService>;
+const LineDevice<gridscan::Device> kGridScanLine{
+    .kind = gridscan::description().kind,
+    .protocol = stream::LineProtocol::kGridScan,
+    .address = [](const gridscan::Device&) { return kAddress; },
+    .watcher = rpc::gridscan_watcher,
+    .print_status = print_line_status,
+};
+
+class GridScanInstance final : public LineInstance<gridscan::Device, rpc::GridScanService> {
  public:
   GridScanInstance(const gridscan::Options& o, bool mains_on)
-      : options_(o), device_(o), mains_on_(mains_on) {}
-  std::vector<stream::ByteDevice*> byte_devices() override { return {&tap_}; }
-  [[nodiscard]] stream::LineProtocol line_protocol() const override {
-    return stream::LineProtocol::kGridScan;
-  }
+      : LineInstance(kGridScanLine, o), options_(o), mains_on_(mains_on) {}
   // --mains off: the curtain stays dark until SIGUSR1 or GridScan.SetPower, so a controller
   // that opens the line late (or flushes it on open) still sees the power-up messages.
   void start(dp::TimePoint now) override {
-    if (mains_on_) device_.power_on(now);
-    else device_.power_off();
+    if (mains_on_)
+      device_.power_on(now);
+    else
+      device_.power_off();
   }
   // SIGUSR1: a power cycle (the power-up messages, the configuration window and the alignment
   // arming again, e.g. once the controller has opened the line); SIGUSR2: mains off.
@@ -95,50 +98,18 @@ class GridScanInstance final : public DeviceInstance {
     return "GridScan/Pro SI, RC (" + std::to_string(options_.elements) + " elements, " +
            std::string(gridscan::to_token(device_.configuration())) + " mode, " +
            stream::to_string(device_.line_settings()) + ", t_CYCLE " +
-           std::to_string(cycle_us / 1000) + "." + std::to_string(cycle_us % 1000 / 100) +
-           " ms; " + (mains_on_ ? "" : "mains off until SIGUSR1; ") +
+           std::to_string(cycle_us / 1000) + "." + std::to_string(cycle_us % 1000 / 100) + " ms; " +
+           (mains_on_ ? "" : "mains off until SIGUSR1; ") +
            "SIGUSR1 power-cycles it, SIGUSR2 switches it off)";
-  }
-  void print_byte_status(std::ostream& out, const stream::ByteCounters& c) const override {
-    print_line_status(out, device_, c);
-  }
-
-  // rs4sim.v1.GridScan at kAddress, and Observation for the event stream.
-  ServiceList services(const ServiceContext& c) override {
-    target_ = std::make_unique<rpc::LineDeviceTarget>(
-        "gridscan", rpc::gridscan_watcher(kAddress, device_), c.clock, c.io);
-    tap_.set_hub(target_->events(), kAddress);
-    const rpc::LineContext line{c.executor, c.clock, kAddress, tap_, target_->events()};
-    return {std::make_shared<rpc::GridScanService>(line, device_),
-            std::make_shared<rpc::ObservationService>(rpc::RunContext{*target_, c.executor})};
-  }
-  void stop_services() override {
-    if (target_) target_->stop();
   }
 
  private:
   gridscan::Options options_;
-  gridscan::Device device_;
   bool mains_on_;
-  rpc::TappedByteDevice tap_{device_};
-  std::unique_ptr<rpc::LineDeviceTarget> target_;
-};
-
-// --link memory: the curtain alone on the simulated line (docs/gridscan.md "Simulated clock").
-using GridScanSegment = LineSegment<gridscan::Device, rpc::GridScanService>;
-const LineDevice<gridscan::Device> kGridScanLine{
-    .kind = "gridscan",
-    .protocol = stream::LineProtocol::kGridScan,
-    .address = [](const gridscan::Device&) { return kAddress; },
-    .watcher = rpc::gridscan_watcher,
-    .print_status = print_line_status,
 };
 
 void validate(DeviceOptions& o) {
-  refuse_unused(
-      o, "gridscan",
-      {DeviceFlag::kElements, DeviceFlag::kMode, DeviceFlag::kDoor, DeviceFlag::kBlocked,
-       DeviceFlag::kMains});
+  refuse_unused(o, "gridscan", gridscan::description().options);
   (void)gridscan_options(o);  // throws UsageError with the reason
 }
 
@@ -162,6 +133,8 @@ DeviceEntry gridscan_device_entry() {
           },
       .demo = run_gridscan_demo,
       .byte_device = true,
+      .options = gridscan::description().options,
+      .kind = gridscan::description().kind,
   };
 }
 

@@ -13,6 +13,7 @@
 #include "app/devices/line_segment.h"
 #include "app/devices/metron_wire_file.h"
 #include "app/runtime/usage_error.h"
+#include "metron/description.h"
 #include "metron/device.h"
 #include "metron/mode_spec.h"
 #include "rpc/device_target.h"
@@ -67,62 +68,16 @@ metron::Options metron_options(const DeviceOptions& o) {
 }
 
 // The status line at the end of a run.
-void print_line_status(std::ostream& out, const metron::Device& device_,
-                       const stream::ByteCounters& c) {
-  const auto k = device_.counters();
-  out << "metron: messages " << k.messages << ", executed " << k.executed << ", frames sent "
-      << k.frames_sent << ", E1..E5 " << k.errors[0] << "/" << k.errors[1] << "/" << k.errors[2]
-      << "/" << k.errors[3] << "/" << k.errors[4] << ", parity rejected " << k.parity_rejected
-      << ", not for us " << k.not_for_us << ", truncated " << k.truncated << ", too long "
-      << k.too_long << ", reports " << k.reports << ", bytes received " << c.bytes_received
-      << ", sent " << c.bytes_sent << ", link errors " << c.link_errors << std::endl;
+void print_line_status(std::ostream& out, const metron::Device& d, const stream::ByteCounters& c) {
+  print_line_summary(out, metron::description(), d.counters(), "", c);
 }
 
-class MetronInstance final : public DeviceInstance {
- public:
-  explicit MetronInstance(const DeviceOptions& o) : device_(metron_options(o)) {}
-  std::vector<stream::ByteDevice*> byte_devices() override { return {&tap_}; }
-  [[nodiscard]] stream::LineProtocol line_protocol() const override {
-    return stream::LineProtocol::kMetron;
-  }
-  // SIGUSR1: the input line high, SIGUSR2: low (what the input type acts on).
-  void on_user_signal(bool second, dp::TimePoint) override { device_.set_input(!second); }
-  [[nodiscard]] std::string describe() const override {
-    const auto& o = device_.options();
-    return "METRON measuring light curtain (" + stream::to_string(device_.line_settings()) +
-           ", input type " + std::string(metron::to_string(o.input_type)) +
-           ": SIGUSR1 sets the input high, SIGUSR2 low)";
-  }
-  void print_byte_status(std::ostream& out, const stream::ByteCounters& c) const override {
-    print_line_status(out, device_, c);
-  }
-
-  // rs4sim.v1.Metron at the node number (node mode), else 0, and Observation for the events.
-  ServiceList services(const ServiceContext& c) override {
-    const auto& o = device_.options();
-    const std::uint8_t address = o.node_enabled ? o.node : 0;
-    target_ = std::make_unique<rpc::LineDeviceTarget>(
-        "metron", rpc::metron_watcher(address, device_), c.clock, c.io);
-    tap_.set_hub(target_->events(), address);
-    const rpc::LineContext line{c.executor, c.clock, address, tap_, target_->events()};
-    return {std::make_shared<rpc::MetronService>(line, device_),
-            std::make_shared<rpc::ObservationService>(rpc::RunContext{*target_, c.executor})};
-  }
-  void stop_services() override {
-    if (target_) target_->stop();
-  }
-
- private:
-  metron::Device device_;
-  rpc::TappedByteDevice tap_{device_};
-  std::unique_ptr<rpc::LineDeviceTarget> target_;
-};
-
-// --link memory: the device alone on the simulated line, driven through the API
-// (docs/metron.md "Simulated clock"), at its node number (node mode), else 0.
+// The device on its line: alone on the simulated line with --link memory, driven through the API
+// (docs/metron.md "Simulated clock"), else on pty, serial or UDP (LineInstance); at its node
+// number (node mode), else 0.
 using MetronSegment = LineSegment<metron::Device, rpc::MetronService>;
 const LineDevice<metron::Device> kMetronLine{
-    .kind = "metron",
+    .kind = metron::description().kind,
     .protocol = stream::LineProtocol::kMetron,
     .address =
         [](const metron::Device& d) {
@@ -132,10 +87,21 @@ const LineDevice<metron::Device> kMetronLine{
     .print_status = print_line_status,
 };
 
+class MetronInstance final : public LineInstance<metron::Device, rpc::MetronService> {
+ public:
+  explicit MetronInstance(const DeviceOptions& o) : LineInstance(kMetronLine, metron_options(o)) {}
+  // SIGUSR1: the input line high, SIGUSR2: low (what the input type acts on).
+  void on_user_signal(bool second, dp::TimePoint) override { device_.set_input(!second); }
+  [[nodiscard]] std::string describe() const override {
+    const auto& o = device_.options();
+    return "METRON measuring light curtain (" + stream::to_string(device_.line_settings()) +
+           ", input type " + std::string(metron::to_string(o.input_type)) +
+           ": SIGUSR1 sets the input high, SIGUSR2 low)";
+  }
+};
+
 void validate(DeviceOptions& o) {
-  refuse_unused(o, "metron",
-                {DeviceFlag::kBaud, DeviceFlag::kFormat, DeviceFlag::kBeams, DeviceFlag::kMode,
-                 DeviceFlag::kBlocked, DeviceFlag::kNode, DeviceFlag::kWireTable});
+  refuse_unused(o, "metron", metron::description().options);
   (void)metron_options(o);  // throws UsageError with the reason
 }
 
@@ -152,6 +118,8 @@ DeviceEntry metron_device_entry() {
           },
       .demo = run_metron_demo,
       .byte_device = true,
+      .options = metron::description().options,
+      .kind = metron::description().kind,
   };
 }
 

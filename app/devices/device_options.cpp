@@ -107,18 +107,52 @@ const char* flag_name(DeviceFlag f) {
   return "--?";
 }
 
+namespace {
+
+template <typename Used>
+void refuse_flags(const DeviceOptions& o, std::string_view device, const Used& used) {
+  for (const DeviceFlag f : kAllFlags) {
+    if (!given(o, f) || used(f)) continue;
+    if (f == DeviceFlag::kAddresses) {
+      throw UsageError("--address given " + std::to_string(o.more_addresses.size() + 1) +
+                       " times: --device " + std::string(device) +
+                       " is one station; only --device rs4 runs several on one link");
+    }
+    throw UsageError(std::string(flag_name(f)) + " is not an option of --device " +
+                     std::string(device));
+  }
+}
+
+}  // namespace
+
 void refuse_unused(const DeviceOptions& o, const std::string& device,
                    std::initializer_list<DeviceFlag> used) {
-  for (const DeviceFlag f : kAllFlags) {
-    if (given(o, f) && std::find(used.begin(), used.end(), f) == used.end()) {
-      if (f == DeviceFlag::kAddresses) {
-        throw UsageError("--address given " + std::to_string(o.more_addresses.size() + 1) +
-                         " times: --device " + device +
-                         " is one station; only --device rs4 runs several on one link");
-      }
-      throw UsageError(std::string(flag_name(f)) + " is not an option of --device " + device);
+  refuse_flags(o, device, [used](DeviceFlag f) {
+    return std::find(used.begin(), used.end(), f) != used.end();
+  });
+}
+
+void refuse_unused(const DeviceOptions& o, std::string_view device,
+                   std::span<const stream::OptionInfo> used) {
+  refuse_flags(o, device, [used](DeviceFlag f) {
+    const bool repeated = f == DeviceFlag::kAddresses;
+    const std::string_view name = repeated ? "--address" : flag_name(f);
+    return std::any_of(used.begin(), used.end(), [&](const stream::OptionInfo& i) {
+      return i.flag == name && (!repeated || i.repeats);
+    });
+  });
+}
+
+std::string option_help(std::string_view flag) {
+  std::string out;
+  for (const DeviceEntry& e : device_registry()) {
+    for (const stream::OptionInfo& i : e.options) {
+      if (i.flag != flag) continue;
+      out += (out.empty() ? "" : "; ") + e.name + ": " + std::string(i.help);
+      if (i.min <= i.max) out += " (" + std::to_string(i.min) + ".." + std::to_string(i.max) + ")";
     }
   }
+  return out;
 }
 
 std::vector<int> parse_blocked(const std::string& text) {

@@ -14,6 +14,7 @@
 #include "app/devices/line_segment.h"
 #include "app/runtime/usage_error.h"
 #include "modbus/rtu_frame.h"
+#include "polaris/description.h"
 #include "polaris/device.h"
 #include "polaris/mode_spec.h"
 #include "rpc/device_target.h"
@@ -63,27 +64,27 @@ polaris::Options polaris_options(const DeviceOptions& o) {
 }
 
 // The status line at the end of a run.
-void print_line_status(std::ostream& out, const polaris::Device& device_,
-                       const stream::ByteCounters& c) {
-  const auto& k = device_.counters();
-  out << "polaris: requests " << k.requests << ", CRC errors " << k.crc_errors << ", too short "
-      << k.too_short << ", oversized " << k.oversized << ", broadcasts " << k.broadcasts
-      << ", other addresses " << k.foreign_address << ", bad function " << k.bad_function
-      << ", bad request " << k.bad_request << ", bad start " << k.bad_start << ", busy " << k.busy
-      << ", configuration writes " << k.writes << " (refused " << k.refused_writes
-      << "), calibrations " << device_.calibrations() << ", exceptions sent "
-      << k.exceptions_sent << ", frames sent " << k.frames_sent << ", bytes received "
-      << c.bytes_received << ", sent " << c.bytes_sent << ", link errors " << c.link_errors
-      << std::endl;
+void print_line_status(std::ostream& out, const polaris::Device& d, const stream::ByteCounters& c) {
+  print_line_summary(out, polaris::description(), d.counters(),
+                     ", calibrations " + std::to_string(d.calibrations()), c);
 }
 
-class PolarisInstance final : public DeviceInstance {
+// The device on its line: alone on the simulated line with --link memory, driven through the API
+// (docs/polaris.md "Simulated clock"), else on pty, serial or UDP (LineInstance); at its
+// Modbus address.
+using PolarisSegment = LineSegment<polaris::Device, rpc::PolarisService>;
+const LineDevice<polaris::Device> kPolarisLine{
+    .kind = polaris::description().kind,
+    .protocol = stream::LineProtocol::kModbusRtu,
+    .address = [](const polaris::Device& d) { return d.options().address; },
+    .watcher = rpc::polaris_watcher,
+    .print_status = print_line_status,
+};
+
+class PolarisInstance final : public LineInstance<polaris::Device, rpc::PolarisService> {
  public:
-  explicit PolarisInstance(const DeviceOptions& o) : device_(polaris_options(o)) {}
-  std::vector<stream::ByteDevice*> byte_devices() override { return {&tap_}; }
-  [[nodiscard]] stream::LineProtocol line_protocol() const override {
-    return stream::LineProtocol::kModbusRtu;
-  }
+  explicit PolarisInstance(const DeviceOptions& o)
+      : LineInstance(kPolarisLine, polaris_options(o)) {}
   // SIGUSR1: the autocal input's pulse, an auto-calibration of 0.4 s per beam
   // [Polaris manual §7.2] (data reads answer exception 06 meanwhile); ignored while one runs.
   void on_user_signal(bool second, dp::TimePoint now) override {
@@ -97,45 +98,10 @@ class PolarisInstance final : public DeviceInstance {
            std::to_string(p.address) + ", " + stream::to_string(device_.line_settings()) +
            "; SIGUSR1 starts an auto-calibration)";
   }
-  void print_byte_status(std::ostream& out, const stream::ByteCounters& c) const override {
-    print_line_status(out, device_, c);
-  }
-
-  // rs4sim.v1.Polaris at its Modbus address, and Observation for the event stream.
-  ServiceList services(const ServiceContext& c) override {
-    const std::uint8_t address = device_.options().address;
-    target_ = std::make_unique<rpc::LineDeviceTarget>(
-        "polaris", rpc::polaris_watcher(address, device_), c.clock, c.io);
-    tap_.set_hub(target_->events(), address);
-    const rpc::LineContext line{c.executor, c.clock, address, tap_, target_->events()};
-    return {std::make_shared<rpc::PolarisService>(line, device_),
-            std::make_shared<rpc::ObservationService>(rpc::RunContext{*target_, c.executor})};
-  }
-  void stop_services() override {
-    if (target_) target_->stop();
-  }
-
- private:
-  polaris::Device device_;
-  rpc::TappedByteDevice tap_{device_};
-  std::unique_ptr<rpc::LineDeviceTarget> target_;
-};
-
-// --link memory: the device alone on the simulated line, driven through the API
-// (docs/polaris.md "Simulated clock"), at its Modbus address.
-using PolarisSegment = LineSegment<polaris::Device, rpc::PolarisService>;
-const LineDevice<polaris::Device> kPolarisLine{
-    .kind = "polaris",
-    .protocol = stream::LineProtocol::kModbusRtu,
-    .address = [](const polaris::Device& d) { return d.options().address; },
-    .watcher = rpc::polaris_watcher,
-    .print_status = print_line_status,
 };
 
 void validate(DeviceOptions& o) {
-  refuse_unused(o, "polaris",
-                {DeviceFlag::kAddress, DeviceFlag::kBaud, DeviceFlag::kBeams, DeviceFlag::kModel,
-                 DeviceFlag::kMode, DeviceFlag::kBlocked});
+  refuse_unused(o, "polaris", polaris::description().options);
   (void)polaris_options(o);  // throws UsageError with the reason
 }
 
@@ -152,6 +118,8 @@ DeviceEntry polaris_device_entry() {
           },
       .demo = run_polaris_demo,
       .byte_device = true,
+      .options = polaris::description().options,
+      .kind = polaris::description().kind,
   };
 }
 

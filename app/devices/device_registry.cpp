@@ -6,8 +6,8 @@ namespace rs4sim::app {
 
 const std::vector<DeviceEntry>& device_registry() {
   static const std::vector<DeviceEntry> registry{
-      rs4_device_entry(),     generic_device_entry(), echo_device_entry(),
-      gridscan_device_entry(), metron_device_entry(), polaris_device_entry(),
+      rs4_device_entry(),      generic_device_entry(), echo_device_entry(),
+      gridscan_device_entry(), metron_device_entry(),  polaris_device_entry(),
   };
   return registry;
 }
@@ -17,6 +17,11 @@ const DeviceEntry* find_device(std::string_view name) {
   const auto it =
       std::find_if(r.begin(), r.end(), [name](const DeviceEntry& e) { return e.name == name; });
   return it == r.end() ? nullptr : &*it;
+}
+
+const DeviceEntry& find_device(stream::DeviceKind kind) {
+  const auto& r = device_registry();
+  return *std::find_if(r.begin(), r.end(), [kind](const DeviceEntry& e) { return e.kind == kind; });
 }
 
 std::vector<std::string> device_names() {

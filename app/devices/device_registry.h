@@ -23,12 +23,14 @@
 #include "dp/time/clock.h"
 #include "stream/byte_counters.h"
 #include "stream/byte_device.h"
+#include "stream/device_description.h"
 #include "stream/frame_tap.h"
 
 #include <functional>
 #include <iosfwd>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -228,12 +230,19 @@ struct DeviceEntry {
   std::function<int(RunSession&, std::ostream&, const DemoOptions&)> demo;
   // A byte device: build() gives byte_devices(); --baud is a plain bit rate.
   bool byte_device = false;
+  // The options it takes, from its description (stream/device_description.h): validate()
+  // refuses the others, and `rs4sim run --help` shows their help.
+  std::span<const stream::OptionInfo> options = {};
+  // What it is (its description's kind): the code asks this, never the name.
+  stream::DeviceKind kind = stream::DeviceKind::kRs4;
 };
 
 // Every device, in the order of device_registry.cpp.
 const std::vector<DeviceEntry>& device_registry();
 // nullptr for an unknown name.
 const DeviceEntry* find_device(std::string_view name);
+// The entry of a kind (every kind has one).
+const DeviceEntry& find_device(stream::DeviceKind kind);
 // "generic | rs4", for help texts.
 std::vector<std::string> device_names();
 

@@ -14,6 +14,7 @@
 #include "rpc/segment_target.h"
 #include "rpc/tapped_station.h"
 #include "rs4/adapter/rs4_gsd.h"
+#include "rs4/device/description.h"
 #include "rs4/device/rs4_segment.h"
 #include "rs4/rs232/rs232_port.h"
 
@@ -28,13 +29,6 @@ namespace {
 
 using rs4::device::Rs4Device;
 using rs4::device::Rs4DeviceConfig;
-
-constexpr int kDefaultAddress = 4;         // factory setting of the hex switches [RS4 manual §2]
-constexpr int kDefaultBootTimeMs = 30000;  // boot until operational [RS4 manual §1]
-// One scan [docs/decisions.md#rs4-command-time]; 2 minutes at most [RS4 manual §5.2.1].
-constexpr int kDefaultCommandTimeMs = 40;
-constexpr int kMaxCommandTimeMs = 120000;
-constexpr int kDefaultResponseTimeMs = 10;  // "Reaktionszeit PROFIsafe-Adapter 10 ms" [RS4 manual]
 
 Rs4DeviceConfig device_config(const DeviceOptions& o, int address, std::size_t index) {
   Rs4DeviceConfig c;
@@ -364,86 +358,29 @@ class Rs4Simulation final : public SimulatedSegment {
   std::unique_ptr<rpc::SegmentTarget> target_;
 };
 
+// The checks are the RS4's own (rs4/device/description.h); here the flags go in and the
+// defaults come back, and the files (--rs232's port, --gsd) are opened.
 void validate(DeviceOptions& o) {
   if (!o.ident.empty() || !o.cfg.empty()) {
     throw UsageError("--ident/--cfg are for --device generic; the RS4's come from its GSD");
   }
-  refuse_unused(
-      o, "rs4",
-      {DeviceFlag::kAddress, DeviceFlag::kAddresses, DeviceFlag::kBootTime, DeviceFlag::kRs232,
-       DeviceFlag::kPcAdapter, DeviceFlag::kCommandTime, DeviceFlag::kResponseTime,
-       DeviceFlag::kSerialNumber, DeviceFlag::kState, DeviceFlag::kGsd, DeviceFlag::kModule});
-  if (!o.modules.empty() && o.gsd.empty()) {
-    throw UsageError("--module needs --gsd FILE (the built-in GSD has one module)");
-  }
+  refuse_unused(o, "rs4", rs4::device::description().options);
   if (!o.rs232.empty()) (void)rs232_choice(o.rs232);
-  if (!o.address) o.address = kDefaultAddress;
-  if (!o.boot_time_ms) o.boot_time_ms = kDefaultBootTimeMs;
-  std::vector<int> seen;
-  for (const int a : all_addresses(o)) {
-    if (a < 0 || a > dp::pdu::sap::kMaxSlaveAddress) {
-      // The switches allow 126 [RS4 manual §4.5], but that is the delivery address, which
-      // never reaches data exchange [docs/decisions.md#rs4-address-126].
-      throw UsageError("--address: " + std::to_string(a) + " is outside 0.." +
-                       std::to_string(dp::pdu::sap::kMaxSlaveAddress) +
-                       " (a DP slave in operation; 126 is the delivery address)");
-    }
-    if (std::find(seen.begin(), seen.end(), a) != seen.end()) {
-      throw UsageError("--address " + std::to_string(a) +
-                       " given twice (each RS4 is a station of its own on the link)");
-    }
-    seen.push_back(a);
-  }
-  if (o.serial_numbers.size() > seen.size()) {
-    throw UsageError("--serial-number given " + std::to_string(o.serial_numbers.size()) +
-                     " times for " + std::to_string(seen.size()) +
-                     " --address (one serial number per RS4, in the order of --address)");
-  }
-  for (std::size_t i = 0; i < o.serial_numbers.size(); ++i) {
-    const long long n = o.serial_numbers[i];
-    if (n < 1 || n > 0xFFFFFFFFLL) {
-      throw UsageError("--serial-number: " + std::to_string(n) +
-                       " is outside 1..4294967295 (the RS4's identity holds 32 bits; 0 means "
-                       "none)");
-    }
-    if (std::find(o.serial_numbers.begin(), o.serial_numbers.begin() + static_cast<long>(i), n) !=
-        o.serial_numbers.begin() + static_cast<long>(i)) {
-      throw UsageError("--serial-number " + std::to_string(n) +
-                       " given twice (every unit has its own)");
-    }
-  }
-  if (o.state_files.size() > seen.size()) {
-    throw UsageError("--state given " + std::to_string(o.state_files.size()) + " times for " +
-                     std::to_string(seen.size()) +
-                     " --address (one state file per RS4, in the order of --address)");
-  }
-  for (std::size_t i = 0; i < o.state_files.size(); ++i) {
-    if (o.state_files[i].empty()) throw UsageError("--state: an empty file name");
-    for (std::size_t j = 0; j < i; ++j) {
-      if (o.state_files[j] == o.state_files[i]) {
-        throw UsageError("--state " + o.state_files[i] +
-                         " given twice (every unit has its own memory)");
-      }
-    }
-  }
-  if (!o.rs232.empty() && !o.more_addresses.empty()) {
-    throw UsageError("--rs232 serves one RS4; run it with one --address");
-  }
-  if (*o.boot_time_ms < 0 || *o.boot_time_ms > 600000) {
-    throw UsageError("--boot-time: " + std::to_string(*o.boot_time_ms) +
-                     " ms is outside 0..600000");
-  }
-  if (!o.command_time_ms) o.command_time_ms = kDefaultCommandTimeMs;
-  if (*o.command_time_ms < 0 || *o.command_time_ms > kMaxCommandTimeMs) {
-    throw UsageError("--command-time: " + std::to_string(*o.command_time_ms) +
-                     " ms is outside 0..120000 (the manual: the RS4 needs up to 2 minutes, "
-                     "[RS4 manual §5.2.1])");
-  }
-  if (!o.response_time_ms) o.response_time_ms = kDefaultResponseTimeMs;
-  if (*o.response_time_ms < 0 || *o.response_time_ms > 1000) {
-    throw UsageError("--adapter-response-time: " + std::to_string(*o.response_time_ms) +
-                     " ms is outside 0..1000");
-  }
+  rs4::device::RunOptions r{.addresses = {},
+                            .serial_numbers = o.serial_numbers,
+                            .state_files = o.state_files,
+                            .boot_time_ms = o.boot_time_ms,
+                            .command_time_ms = o.command_time_ms,
+                            .response_time_ms = o.response_time_ms,
+                            .rs232 = !o.rs232.empty(),
+                            .gsd = !o.gsd.empty(),
+                            .module = !o.modules.empty()};
+  if (o.address) r.addresses = all_addresses(o);
+  if (const auto why = rs4::device::check_run_options(r); !why.empty()) throw UsageError(why);
+  o.address = r.addresses.front();
+  o.boot_time_ms = r.boot_time_ms;
+  o.command_time_ms = r.command_time_ms;
+  o.response_time_ms = r.response_time_ms;
   std::vector<std::string> warnings;
   (void)user_gsd(o, &warnings);  // the file's errors and what does not fit the RS4, now
   for (const auto& w : warnings) std::cerr << "warning: " << w << std::endl;
@@ -469,6 +406,9 @@ DeviceEntry rs4_device_entry() {
         return std::make_unique<Rs4Simulation>(o);
       },
       run_rs4_demo,
+      false,
+      rs4::device::description().options,
+      rs4::device::description().kind,
   };
 }
 

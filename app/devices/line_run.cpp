@@ -6,8 +6,8 @@
 
 namespace rs4sim::app {
 
-LineRun::LineRun(std::string kind, std::uint8_t address, stream::ByteDevice& core)
-    : kind_(std::move(kind)), address_(address), tap_(core), line_(clock_, tap_) {}
+LineRun::LineRun(stream::DeviceKind kind, std::uint8_t address, stream::ByteDevice& core)
+    : kind_(kind), address_(address), tap_(core), line_(clock_, tap_) {}
 
 void LineRun::start() {
   if (started_) return;

@@ -23,8 +23,8 @@ class LineRun {
  public:
   using MakeService = std::function<std::shared_ptr<grpc::Service>(const rpc::LineContext&)>;
 
-  // `core` outlives this object. `kind`: "gridscan", "metron", "polaris".
-  LineRun(std::string kind, std::uint8_t address, stream::ByteDevice& core);
+  // `core` outlives this object. `kind`: kGridScan, kMetron, kPolaris.
+  LineRun(stream::DeviceKind kind, std::uint8_t address, stream::ByteDevice& core);
   LineRun(const LineRun&) = delete;
   LineRun& operator=(const LineRun&) = delete;
 
@@ -43,7 +43,7 @@ class LineRun {
  private:
   void start();
 
-  std::string kind_;
+  stream::DeviceKind kind_;
   std::uint8_t address_;
   stream::ManualClock clock_;
   rpc::TappedByteDevice tap_;

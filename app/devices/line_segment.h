@@ -7,7 +7,10 @@
 
 #include "app/devices/device_registry.h"
 #include "app/devices/line_run.h"
+#include "rpc/device_target.h"
 #include "rpc/device_watcher.h"
+#include "rpc/rs4_services.h"
+#include "rpc/tapped_byte_device.h"
 
 #include <cstdint>
 #include <memory>
@@ -19,7 +22,7 @@ namespace rs4sim::app {
 // What a byte device's simulated segment needs from its entry.
 template <typename Device>
 struct LineDevice {
-  const char* kind;               // the --device word: "gridscan", "metron", "polaris"
+  stream::DeviceKind kind;        // kGridScan, kMetron, kPolaris (the description's)
   stream::LineProtocol protocol;  // what --capture decodes
   // The device's address on its line (its service's, and the summary's master address).
   std::uint8_t (*address)(const Device&);
@@ -66,6 +69,43 @@ class LineSegment final : public SimulatedSegment {
   Device device_;
   std::uint8_t address_ = line_.address(device_);
   LineRun run_{line_.kind, address_, device_};
+};
+
+// The real-time part every byte device shares (pty, serial, UDP): its core behind a tap, its
+// service and Observation over a LineDeviceTarget at its address, the end-of-run line. The
+// device's instance adds its banner (describe()) and its signals.
+template <typename Device, typename Service>
+class LineInstance : public DeviceInstance {
+ public:
+  template <typename Options>
+  LineInstance(const LineDevice<Device>& line, const Options& options)
+      : line_(line), device_(options) {}
+  std::vector<stream::ByteDevice*> byte_devices() override { return {&tap_}; }
+  [[nodiscard]] stream::LineProtocol line_protocol() const override { return line_.protocol; }
+  void print_byte_status(std::ostream& out, const stream::ByteCounters& c) const override {
+    line_.print_status(out, device_, c);
+  }
+  // The device's service at its address, and Observation for the event stream.
+  ServiceList services(const ServiceContext& c) override {
+    const std::uint8_t address = line_.address(device_);
+    target_ = std::make_unique<rpc::LineDeviceTarget>(line_.kind, line_.watcher(address, device_),
+                                                      c.clock, c.io);
+    tap_.set_hub(target_->events(), address);
+    const rpc::LineContext line{c.executor, c.clock, address, tap_, target_->events()};
+    return {std::make_shared<Service>(line, device_),
+            std::make_shared<rpc::ObservationService>(rpc::RunContext{*target_, c.executor})};
+  }
+  void stop_services() override {
+    if (target_) target_->stop();
+  }
+
+ protected:
+  LineDevice<Device> line_;
+  Device device_;
+
+ private:
+  rpc::TappedByteDevice tap_{device_};
+  std::unique_ptr<rpc::LineDeviceTarget> target_;
 };
 
 }  // namespace rs4sim::app

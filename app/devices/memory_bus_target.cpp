@@ -49,7 +49,19 @@ rs4::device::Rs4Device* MemoryBusTarget::device(std::uint8_t address) {
   return nullptr;
 }
 
-std::string MemoryBusTarget::kind() const { return stations_.rs4s.empty() ? "gsd" : "rs4"; }
+stream::DeviceKind MemoryBusTarget::kind() const {
+  return stations_.rs4s.empty() ? stream::DeviceKind::kGeneric : stream::DeviceKind::kRs4;
+}
+
+std::vector<rpc::RunStation> MemoryBusTarget::stations() const {
+  std::vector<rpc::RunStation> out;
+  for (const auto& r : stations_.rs4s) out.push_back({r.address, stream::DeviceKind::kRs4});
+  for (const GsdStation* g : stations_.gsd) {
+    out.push_back({g->address(), stream::DeviceKind::kGeneric});
+  }
+  for (const auto& o : stations_.others) out.push_back({o.address, stream::DeviceKind::kGeneric});
+  return out;
+}
 
 std::string MemoryBusTarget::other_station(std::uint8_t address) const {
   for (const GsdStation* g : stations_.gsd) {

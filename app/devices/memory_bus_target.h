@@ -34,8 +34,10 @@ class MemoryBusTarget final : public rpc::Rs4Target {
   void after(dp::Duration delay, std::function<void()> f) override;
   dp::link::MemoryBus* bus() override { return &bus_; }
   rpc::EventHub* events() override { return hub_.get(); }
-  // "rs4" with RS4s on the bus; "gsd" for GSD stations alone.
-  [[nodiscard]] std::string kind() const override;
+  // kRs4 with RS4s on the bus; kGeneric for GSD stations alone.
+  [[nodiscard]] stream::DeviceKind kind() const override;
+  // The RS4s, the GSD stations and the other generic slaves.
+  [[nodiscard]] std::vector<rpc::RunStation> stations() const override;
   [[nodiscard]] std::string other_station(std::uint8_t address) const override;
 
  private:

@@ -29,7 +29,7 @@ const svg = (tag, attrs = {}) => {
   return e;
 };
 
-// ---- what the run serves (rs4sim.v1.Run/Describe, asked once) ------------------------------
+// ---- what the run serves and runs (rs4sim.v1.Run/Describe, asked once) ----------------------
 let served = new Set();
 const serves = (service) => served.has("rs4sim.v1." + service);
 
@@ -183,9 +183,7 @@ function onEvent(e) {
   scheduleRender();
   if (address === selected) refreshSelected();
   if (gsdStations.has(address)) { refreshGsd(address); return; }
-  if (!stations.get(address).kind || lineOf.get(address)) {
-    if (lineOf.has(address)) refreshLine(address); else probeLine(address);
-  }
+  if (lineOf.get(address)) refreshLine(address);
 }
 
 let renderPending = false;
@@ -352,36 +350,29 @@ function drawGrid(r) {
 }
 
 // ---- GridScan, METRON, Polaris: their elements/beams ------------------------------------------
-// A station the event stream names but ListDevices does not is a line device if the run serves
-// a line device's service (a line run holds one device): asked once with that service only.
+// The run's station list (Run.Describe) says which station is which: `station` is its
+// rs4sim.v1.StationKind.
 const LINE_KINDS = [
-  { kind: "gridscan", service: "rs4sim.v1.GridScan", count: (st) => st.elements,
+  { kind: "gridscan", station: "STATION_KIND_GRIDSCAN", service: "rs4sim.v1.GridScan", count: (st) => st.elements,
     text: (st) => `${st.power || "–"}, ${st.mode || "–"}, ${st.configuration || "–"}` +
       (st.reportInterrupted ? ", reports interrupted" : "") },
-  { kind: "metron", service: "rs4sim.v1.Metron", count: (st) => st.beams,
+  { kind: "metron", station: "STATION_KIND_METRON", service: "rs4sim.v1.Metron", count: (st) => st.beams,
     text: (st) => `OSSD ${st.ossd ? "on" : "off"}, ${st.synchronised ? "synchronised" : "not synchronised"}` +
       (st.interruptedCount ? `, ${st.interruptedCount} interrupted (${st.firstInterrupted}–${st.lastInterrupted})` : "") },
-  { kind: "polaris", service: "rs4sim.v1.Polaris", count: (st) => st.beams,
+  { kind: "polaris", station: "STATION_KIND_POLARIS", service: "rs4sim.v1.Polaris", count: (st) => st.beams,
     text: (st) => `${st.family || ""} ${st.dataMode || ""}, PN1 ${st.pn1 ? "on" : "off"}, PN2 ${st.pn2 ? "on" : "off"}` },
 ];
-const lineOf = new Map();  // address -> entry of LINE_KINDS, or null (not a line device)
-const probing = new Set();
+const lineOf = new Map();  // address -> entry of LINE_KINDS (the run's line devices)
 
-async function probeLine(address) {
-  if (lineOf.has(address) || probing.has(address)) return;
-  probing.add(address);
-  let found = null;
-  const k = LINE_KINDS.find((line) => served.has(line.service));
-  if (k) {
-    try {
-      const st = await call(k.service + "/GetState", { address });
-      found = k;
-      station(address).kind = k.kind;
-      drawLine(address, k, st);
-    } catch (err) { /* NOT_FOUND: not the line device */ }
+// The run's stations, as Run.Describe lists them: their kinds, and the line devices drawn.
+function takeStations(list) {
+  for (const st of list || []) {
+    const address = Number(st.address || 0);
+    const gsd = st.kind === "STATION_KIND_GENERIC" && (st.services || []).includes("rs4sim.v1.GsdStations");
+    station(address).kind = gsd ? "gsd" : st.name;
+    const k = LINE_KINDS.find((line) => line.station === st.kind && served.has(line.service));
+    if (k) { lineOf.set(address, k); refreshLine(address); }
   }
-  lineOf.set(address, found);
-  probing.delete(address);
   scheduleRender();
 }
 
@@ -641,12 +632,10 @@ const hex8 = (n) => Number(n).toString(16).padStart(8, "0").toUpperCase();
 // ---- start ------------------------------------------------------------------------------------
 async function start() {
   try {
-    served = new Set((await call("rs4sim.v1.Run/Describe")).services || []);
+    const run = await call("rs4sim.v1.Run/Describe");
+    served = new Set(run.services || []);
+    takeStations(run.stations);
   } catch (err) { log("Run.Describe: " + err.message); }
-  if (serves("Device")) {
-    const list = await call("rs4sim.v1.Device/ListDevices").catch(() => ({}));
-    for (const d of list.devices || []) station(d.address).kind = d.kind;
-  }
   if (serves("SimTime") && await refreshClock()) setInterval(refreshClock, 250);
   if (serves("Proxy") && await pollProxy()) setInterval(pollProxy, 500);
   let polled = false;

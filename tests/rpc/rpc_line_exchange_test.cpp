@@ -52,7 +52,7 @@ std::int64_t wire_ns(int chars, int bits, int baud) {
 template <class Device, class Service>
 class SimulatedRun : protected TestLoop {
  public:
-  SimulatedRun(Device& device, const std::string& kind, std::uint8_t address,
+  SimulatedRun(Device& device, stream::DeviceKind kind, std::uint8_t address,
                std::unique_ptr<Watcher> watcher)
       : tap_(device),
         line_(clock_, tap_),
@@ -141,7 +141,7 @@ const Bytes kPowerUpReduced{0x43, 0x45, 0x44, 0x45, 0x01, 0xB0,  // SeqCnt 1, Re
 class GridScanOnTheSimulatedClock : public ::testing::Test {
  protected:
   gridscan::Device device_{gridscan::Options{}};
-  SimulatedRun<gridscan::Device, GridScanService> run_{device_, "gridscan", 0,
+  SimulatedRun<gridscan::Device, GridScanService> run_{device_, stream::DeviceKind::kGridScan, 0,
                                                        gridscan_watcher(0, device_)};
   std::unique_ptr<v1::GridScan::Stub> stub_ = v1::GridScan::NewStub(run_.channel());
 
@@ -296,8 +296,9 @@ TEST_P(PolarisOnTheSimulatedClock, TheManualsFrames) {
   const auto& c = GetParam();
   polaris::Device device(c.options);
   ASSERT_FALSE(device.set_interrupted(c.blocked, stream::ManualClock{}.now()));
-  SimulatedRun<polaris::Device, PolarisService> run(device, "polaris", c.options.address,
-                                                    polaris_watcher(c.options.address, device));
+  SimulatedRun<polaris::Device, PolarisService> run(
+      device, stream::DeviceKind::kPolaris, c.options.address,
+      polaris_watcher(c.options.address, device));
   const auto stub = v1::Polaris::NewStub(run.channel());
   const auto x = exchange(*stub, c.options.address, c.request);
   ASSERT_TRUE(x.answered());
@@ -357,7 +358,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(PolarisOnTheSimulatedClockSilence, ABroadcastGetsNoReplyWithinTheTimeout) {
   polaris::Device device(polaris_options(Family::kPl10, 40, DataMode::kFl1, 1));
-  SimulatedRun<polaris::Device, PolarisService> run(device, "polaris", 1,
+  SimulatedRun<polaris::Device, PolarisService> run(device, stream::DeviceKind::kPolaris, 1,
                                                     polaris_watcher(1, device));
   const auto stub = v1::Polaris::NewStub(run.channel());
   const std::int64_t before = run.now_ns();
@@ -373,7 +374,7 @@ TEST(PolarisOnTheSimulatedClockSilence, ABroadcastGetsNoReplyWithinTheTimeout) {
 // [Modbus serial line V1.02 §2.2]), then this run's address alone.
 TEST(PolarisOnTheSimulatedClockAddress, ExchangeAndReceiveCheckTheModbusAddress) {
   polaris::Device device(polaris_options(Family::kPl10, 40, DataMode::kFl1, 1));
-  SimulatedRun<polaris::Device, PolarisService> run(device, "polaris", 1,
+  SimulatedRun<polaris::Device, PolarisService> run(device, stream::DeviceKind::kPolaris, 1,
                                                     polaris_watcher(1, device));
   const auto stub = v1::Polaris::NewStub(run.channel());
   const Bytes request{0x01, 0x03, 0x20, 0x00, 0x00, 0x02, 0xCF, 0xCB};
@@ -411,7 +412,8 @@ class MetronOnTheSimulatedClock : public ::testing::TestWithParam<MetronCase> {}
 TEST_P(MetronOnTheSimulatedClock, TheErrorAnswers) {
   const auto& c = GetParam();
   metron::Device device(metron::Options{});
-  SimulatedRun<metron::Device, MetronService> run(device, "metron", 0, metron_watcher(0, device));
+  SimulatedRun<metron::Device, MetronService> run(device, stream::DeviceKind::kMetron, 0,
+                                                    metron_watcher(0, device));
   const auto stub = v1::Metron::NewStub(run.channel());
   const auto x = exchange(*stub, 0, c.request);
   ASSERT_TRUE(x.answered());
@@ -441,7 +443,8 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(MetronOnTheSimulatedClockSync, E4WhenTheSynchronismIsLost) {
   metron::Device device(metron::Options{});
-  SimulatedRun<metron::Device, MetronService> run(device, "metron", 0, metron_watcher(0, device));
+  SimulatedRun<metron::Device, MetronService> run(device, stream::DeviceKind::kMetron, 0,
+                                                    metron_watcher(0, device));
   const auto stub = v1::Metron::NewStub(run.channel());
   grpc::ClientContext ctx;
   v1::SetSynchronisedRequest in;  // false
@@ -464,7 +467,8 @@ TEST(MetronInputOnTheSimulatedClock, SlaveModeWithAnInputType) {
   metron::Options o;
   o.input_type = metron::InputType::kEnableLine;
   metron::Device device(o);
-  SimulatedRun<metron::Device, MetronService> run(device, "metron", 0, metron_watcher(0, device));
+  SimulatedRun<metron::Device, MetronService> run(device, stream::DeviceKind::kMetron, 0,
+                                                    metron_watcher(0, device));
   const auto stub = v1::Metron::NewStub(run.channel());
   // #11: beams 24, input type 1, node 0, scan cycle 10 ms, t_response 20 ms; checksum: the
   // bytes from the length on sum to 0 mod 256.
@@ -483,7 +487,8 @@ TEST(MetronInputOnTheSimulatedClock, StandardModeReportsWhileTheInputIsHigh) {
   metron::Device device(o);
   const std::vector<std::uint16_t> blocked{9, 10, 11, 12, 13};
   device.set_interrupted(blocked);
-  SimulatedRun<metron::Device, MetronService> run(device, "metron", 0, metron_watcher(0, device));
+  SimulatedRun<metron::Device, MetronService> run(device, stream::DeviceKind::kMetron, 0,
+                                                    metron_watcher(0, device));
   const auto stub = v1::Metron::NewStub(run.channel());
   EXPECT_EQ(receive(*stub, 0, 100).frames_size(), 0);
   const auto set_input = [&](bool high) {

@@ -49,7 +49,7 @@ std::vector<std::uint32_t> list(const google::protobuf::RepeatedField<std::uint3
 class LineFixture : public ::testing::Test, protected TestLoop {
  protected:
   // The event target first (the services take its hub), as the run builds them.
-  void watch(const std::string& kind, std::unique_ptr<Watcher> watcher) {
+  void watch(stream::DeviceKind kind, std::unique_ptr<Watcher> watcher) {
     target_ = std::make_unique<LineDeviceTarget>(kind, std::move(watcher), clock_, io_);
   }
   // Starts the loop and serves `service` beside the device's Observation service.
@@ -92,7 +92,7 @@ class LineFixture : public ::testing::Test, protected TestLoop {
   }
   // The device's events, its service at `address` and a stub of it, served.
   template <class Service, class Grpc, class Device>
-  void start(const std::string& kind, std::unique_ptr<Watcher> watcher, std::uint8_t address,
+  void start(stream::DeviceKind kind, std::unique_ptr<Watcher> watcher, std::uint8_t address,
              Device& device, TappedByteDevice& tap, std::unique_ptr<Service>& service,
              std::unique_ptr<typename Grpc::Stub>& stub) {
     watch(kind, std::move(watcher));
@@ -150,8 +150,8 @@ class RpcPolarisTest : public LineFixture {
  protected:
   void SetUp() override {
     device_.on_time(clock_.now());  // (the loop does not run yet)
-    start<PolarisService, v1::Polaris>("polaris", polaris_watcher(1, device_), 1, device_, tap_,
-                                       service_, stub_);
+    start<PolarisService, v1::Polaris>(stream::DeviceKind::kPolaris, polaris_watcher(1, device_), 1,
+                                       device_, tap_, service_, stub_);
   }
   v1::PolarisState state() { return state_of<v1::PolarisState>(*stub_, 1); }
   grpc::Status block(const std::vector<std::uint32_t>& beams, std::uint32_t address = 1) {
@@ -355,8 +355,9 @@ TEST_F(RpcPolarisTest, StateChangesReachTheSharedEventStream) {
 class RpcGridScanTest : public LineFixture {
  protected:
   void SetUp() override {
-    start<GridScanService, v1::GridScan>("gridscan", gridscan_watcher(0, device_), 0, device_, tap_,
-                                         service_, stub_);
+    start<GridScanService, v1::GridScan>(stream::DeviceKind::kGridScan,
+                                         gridscan_watcher(0, device_), 0, device_, tap_, service_,
+                                         stub_);
   }
   void power_up() {
     executor_.run([this] { device_.power_on(clock_.now()); });
@@ -581,8 +582,8 @@ TEST_F(RpcGridScanTest, BadInputGetsASpecificStatus) {
 class RpcMetronTest : public LineFixture {
  protected:
   void SetUp() override {
-    start<MetronService, v1::Metron>("metron", metron_watcher(5, device_), 5, device_, tap_,
-                                     service_, stub_);
+    start<MetronService, v1::Metron>(stream::DeviceKind::kMetron, metron_watcher(5, device_), 5,
+                                     device_, tap_, service_, stub_);
   }
   static metron::Options options() {
     metron::Options o;  // 24 beams, slave line mode
