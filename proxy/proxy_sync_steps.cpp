@@ -2,6 +2,7 @@
 // sequence in docs/proxy-protocol.md, position map in docs/proxy.md).
 #include "proxy/proxy_sync.h"
 #include "proxy/set_summary.h"
+#include "rs4/scanner/identity_text.h"
 #include "rs4/protocol/adapter_command.h"
 #include "rs4/protocol/telegram.h"
 #include "storage/crc32.h"
@@ -280,8 +281,8 @@ bool ProxySync::store_set(storage::VersionSource source, std::string summary, st
                           dp::TimePoint now) {
   storage::StoreRequest req;
   req.station = config_.station;
-  req.device_type = device_type_text(ident_->device_type);
-  req.serial_number = std::to_string(ident_->serial_number);
+  req.device_type = rs4::scanner::device_type_text(ident_->device_type);
+  req.serial_number = rs4::scanner::serial_number_text(ident_->serial_number);
   req.blob = set_;
   req.crc32 = set_crc_;
   req.summary = std::move(summary);

@@ -4,7 +4,6 @@
 #include "rs4/scanner/parameter_codec.h"
 
 #include <algorithm>
-#include <cstdio>
 
 namespace rs4sim::proxy {
 
@@ -22,12 +21,6 @@ std::string set_summary(std::span<const std::uint8_t> blob) {
          std::to_string(s.response_steps) + ", restart mode " +
          std::to_string(static_cast<int>(s.restart_mode)) + ", " + std::to_string(pairs) +
          " field pairs with a protective field";
-}
-
-std::string device_type_text(std::uint16_t device_type) {
-  char text[8];
-  std::snprintf(text, sizeof text, "0x%04X", static_cast<unsigned>(device_type));
-  return text;
 }
 
 }  // namespace rs4sim::proxy

@@ -10,7 +10,5 @@ namespace rs4sim::proxy {
 // A one-line summary of an encoded RS4 parameter set (docs/rs4-scanner.md "Encoding"), or
 // "undecodable set (<reason>)" when the bytes do not decode.
 std::string set_summary(std::span<const std::uint8_t> blob);
-// The IDENTIFY device type as the archive's device_type text, e.g. "0x0504".
-std::string device_type_text(std::uint16_t device_type);
 
 }  // namespace rs4sim::proxy

@@ -75,8 +75,8 @@ int run_list(const ArchiveOptions& o) {
   w.begin_object().field("archive", archive_shown(o.common)).key("stations").begin_array();
   Table t({{"BUS"},
            {"ADDR", true},
-           {"DEVICE"},
-           {"SERIAL"},
+           {"DEVICE TYPE"},
+           {"SERIAL NUMBER"},
            {"VERSIONS", true},
            {"CURRENT", true},
            {"NO", true},
@@ -149,7 +149,7 @@ int run_history(const ArchiveOptions& o) {
            {"SOURCE"},
            {"CRC32"},
            {"SIZE", true},
-           {"SERIAL"},
+           {"SERIAL NUMBER"},
            {"FLAGS"},
            {"NOTE"},
            {"BY"}});

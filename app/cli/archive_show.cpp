@@ -30,7 +30,7 @@ void print_version(const storage::VersionWithSet& v, bool is_current) {
   std::cout << "version " << info.id << " of station " << station_text(info.station) << " (number "
             << info.number << (is_current ? ", current" : "") << ")\n";
   row("stored", table_time(info.at) + " UTC, " + source_name(info.source) +
-                    (info.serial_number.empty() ? "" : ", serial " + info.serial_number));
+                    (info.serial_number.empty() ? "" : ", serial number " + info.serial_number));
   row("set", "id " + std::to_string(v.set.id) + ", " + std::to_string(v.set.blob.size()) +
                  " bytes, CRC-32 " + crc_hex(v.set.crc32));
   if (!info.note.empty()) row("note", info.note);

@@ -11,13 +11,13 @@ namespace {
 
 using rs4::report::JsonWriter;
 
-// One line a version: "2026-12-03 12:50:01  demo/4 #3  id 17  upload  0x1A2B3C4D  SN 1001
+// One line a version: "2026-12-03 12:50:01  demo/4 #3  id 17  upload  0x1A2B3C4D  serial number 1001
 // by jdoe@ws-7: note".
 std::string version_line(const storage::VersionInfo& v) {
   std::string line = table_time(v.at) + "  " + station_text(v.station) + " #" +
                      std::to_string(v.number) + "  id " + std::to_string(v.id) + "  " +
                      source_name(v.source) + "  " + crc_hex(v.crc32);
-  if (!v.serial_number.empty()) line += "  SN " + v.serial_number;
+  if (!v.serial_number.empty()) line += "  serial number " + v.serial_number;
   if (v.pending_download) line += "  pending download";
   if (const auto by = author_text(v); !by.empty()) line += "  by " + by;
   if (!v.note.empty()) line += ": " + v.note;

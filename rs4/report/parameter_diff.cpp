@@ -1,6 +1,7 @@
 #include "rs4/report/parameter_diff.h"
 
 #include "rs4/report/json_writer.h"
+#include "rs4/scanner/identity_text.h"
 
 #include <cstdlib>
 
@@ -16,10 +17,10 @@ void compare(std::vector<ValueChange>& out, std::string field, const std::string
 
 std::vector<ValueChange> identity_changes(const ParameterSet& a, const ParameterSet& b) {
   std::vector<ValueChange> out;
-  compare(out, "serial_number", std::to_string(a.identity.serial_number),
-          std::to_string(b.identity.serial_number));
-  compare(out, "device_type", std::to_string(a.identity.device_type),
-          std::to_string(b.identity.device_type));
+  compare(out, "serial_number", scanner::serial_number_text(a.identity.serial_number),
+          scanner::serial_number_text(b.identity.serial_number));
+  compare(out, "device_type", scanner::device_type_text(a.identity.device_type),
+          scanner::device_type_text(b.identity.device_type));
   compare(out, "firmware", firmware_text(a.identity), firmware_text(b.identity));
   return out;
 }

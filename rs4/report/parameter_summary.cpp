@@ -2,6 +2,7 @@
 
 #include "rs4/report/json_writer.h"
 #include "rs4/report/parameter_fields.h"
+#include "rs4/scanner/identity_text.h"
 
 #include <cstdio>
 
@@ -51,8 +52,8 @@ std::string summary_json(const ParameterSet& set) {
   JsonWriter w;
   w.begin_object();
   w.field("format", kSummaryFormat);
-  w.field("device_type", set.identity.device_type);
-  w.field("serial_number", set.identity.serial_number);
+  w.field("device_type", scanner::device_type_text(set.identity.device_type));
+  w.field("serial_number", scanner::serial_number_text(set.identity.serial_number));
   w.field("firmware", firmware_text(set.identity));
   write_options(w, set);
   w.key("pairs").begin_array();
@@ -73,8 +74,8 @@ std::string summary_text(const ParameterSet& set) {
     std::snprintf(b, sizeof b, "  %-20s ", std::string(name).c_str());
     out += b + value + "\n";
   };
-  line("device type", std::to_string(set.identity.device_type));
-  line("serial number", std::to_string(set.identity.serial_number));
+  line("device type", scanner::device_type_text(set.identity.device_type));
+  line("serial number", scanner::serial_number_text(set.identity.serial_number));
   line("firmware", firmware_text(set.identity));
   line("response time", std::to_string(scanner::response_time(set).count()) + " ms");
   line("restart mode", restart_mode_name(set.restart_mode));

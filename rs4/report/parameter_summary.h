@@ -10,10 +10,12 @@
 
 namespace rs4sim::rs4::report {
 
-inline constexpr int kSummaryFormat = 1;  // "format" field of the summary JSON
+// "format" field of the summary JSON. 2: device_type and serial_number are the identity's
+// text (rs4/scanner/identity_text.h), "0x0004" and "74565"; 1 gave numbers.
+inline constexpr int kSummaryFormat = 2;
 
 // One-line JSON, fields in a fixed order (docs/archive-cli.md "Summary"):
-// {"format":1,"device_type":4,"serial_number":0,"firmware":"1.0","response_time_ms":80,
+// {"format":2,"device_type":"0x0004","serial_number":"0","firmware":"1.0","response_time_ms":80,
 //  "restart_mode":"...","start_pair":1,"permitted":[[1,2,3,4],...],"warning_output":[...],
 //  "measurement":{"resolution":1,"start":0,"stop":528},
 //  "pairs":[{"pair":1,"protective":{"min_mm":..,"max_mm":..,"active_segments":..},

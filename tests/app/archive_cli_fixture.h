@@ -102,14 +102,16 @@ class ArchiveCli : public ::testing::Test {
   static void store(storage::ParameterArchive& a, storage::StationKey key,
                     const rs4::scanner::ParameterSet& set, const std::string& serial,
                     std::int64_t at_ms) {
-    const auto blob = rs4::scanner::encode(set);
+    auto with_serial = set;  // a set read from the device carries its serial number
+    with_serial.identity.serial_number = static_cast<std::uint32_t>(std::stoul(serial));
+    const auto blob = rs4::scanner::encode(with_serial);
     storage::StoreRequest r;
     r.station = std::move(key);
-    r.device_type = "RS4/PROFIsafe";
+    r.device_type = "0x0004";  // as the proxy records it (rs4/scanner/identity_text.h)
     r.serial_number = serial;
     r.blob = blob;
-    r.crc32 = rs4::scanner::checksum(set);
-    r.summary = rs4::report::summary_json(set);
+    r.crc32 = rs4::scanner::checksum(with_serial);
+    r.summary = rs4::report::summary_json(with_serial);
     r.at = storage::Timestamp{std::chrono::milliseconds{at_ms}};
     ASSERT_TRUE(a.store(r));
   }

@@ -17,10 +17,10 @@ TEST_F(ArchiveCli, ListTable) {
   const auto r = run("list");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   // 2025-12-01 14:00:00 UTC = 1764597600 s.
-  EXPECT_NE(r.out.find("BUS      ADDR  DEVICE         SERIAL  VERSIONS  CURRENT  NO  CRC32"),
+  EXPECT_NE(r.out.find("BUS      ADDR  DEVICE TYPE  SERIAL NUMBER  VERSIONS  CURRENT  NO  CRC32"),
             std::string::npos)
       << r.out;
-  EXPECT_NE(r.out.find("line2       5  RS4/PROFIsafe  2002           1        3   1  0x"),
+  EXPECT_NE(r.out.find("line2       5  0x0004       2002                  1        3   1  0x"),
             std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("2025-12-01 14:00:00  upload"), std::string::npos) << r.out;
@@ -46,7 +46,7 @@ TEST_F(ArchiveCli, HistoryTableAndJson) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("station default/4, 2 versions"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("   2  2025-12-01 13:00:00  upload  0x"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("8507  1001    current"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("8507  1001           current"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("parameter change  upload"), std::string::npos) << r.out;
   r = run("history --address 4 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;

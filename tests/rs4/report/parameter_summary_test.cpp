@@ -20,7 +20,8 @@ std::string pair_json(int pair, int protective, int warning) {
 
 TEST(ParameterSummary, FactoryDefaultJson) {
   const std::string expected =
-      R"({"format":1,"device_type":4,"serial_number":0,"firmware":"1.0","response_time_ms":80,)"
+      R"({"format":2,"device_type":"0x0004","serial_number":"0","firmware":"1.0",)"
+      R"("response_time_ms":80,)"
       R"("restart_mode":"start_restart_interlock","start_pair":1,)"
       R"("permitted":[[1,2,3,4],[1,2,3,4],[1,2,3,4],[1,2,3,4]],)"
       R"("warning_output":["contamination"],"measurement":{"resolution":1,"start":0,"stop":528},)"
@@ -42,7 +43,7 @@ TEST(ParameterSummary, OptionsAndPartialContours) {
   set.pairs[3].warning_mm[10] = 700;
   set.pairs[3].warning_mm[11] = 9000;
   const std::string json = summary_json(set);
-  EXPECT_NE(json.find(R"("serial_number":4711)"), std::string::npos) << json;
+  EXPECT_NE(json.find(R"("serial_number":"4711")"), std::string::npos) << json;
   EXPECT_NE(json.find(R"("response_time_ms":160,"restart_mode":"automatic")"), std::string::npos);
   EXPECT_NE(json.find(R"("permitted":[[1,2,3,4],[2,3],)"), std::string::npos);
   EXPECT_NE(json.find(R"("warning_output":["warning_field","fault"])"), std::string::npos);
