@@ -317,6 +317,10 @@ Result<void> Interpreter::statement(const syntax::Statement& st) {
     return detail::forgive(warnings_,
                            detail::interpret_unit_diag_bit(file_.name, st, device_.unit_diag));
   }
+  if (st.is("Channel_Diag")) {
+    return detail::forgive(warnings_,
+                           detail::interpret_channel_diag(file_.name, st, device_.unit_diag));
+  }
   if (st.is("User_Prm_Data_Len")) {
     once(st);
     RS4SIM_GSD_TRY(const auto len, ranged(st, 0, 237));
@@ -372,6 +376,10 @@ Result<void> Interpreter::block(const syntax::Entry& e) {
   if (e.statement.is("Unit_Diag_Area")) {
     return detail::forgive(warnings_,
                            detail::interpret_unit_diag_area(file_.name, e, device_.unit_diag));
+  }
+  if (e.statement.is("UnitDiagType")) {
+    return detail::forgive(warnings_, detail::interpret_unit_diag_type(file_.name, e,
+                                                                       device_.unit_diag, warnings_));
   }
   return boost::outcome_v2::success();
 }

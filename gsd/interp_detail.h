@@ -59,11 +59,17 @@ struct TemplateBuilder {
 Result<ExtParam> interpret_ext_param(const std::string& file, const syntax::Entry& entry);
 Result<PrmText> interpret_prm_text(const std::string& file, const syntax::Entry& entry,
                                    std::vector<Warning>& warnings);
-// Unit_Diag_Bit(n) / Unit_Diag_Not_Bit(n) = "text"; a Unit_Diag_Area block (unit_diag.cpp).
+// Unit_Diag_Bit(n) / Unit_Diag_Not_Bit(n) = "text" (X_ keywords too); a Unit_Diag_Area block
+// (Value or X_Value lines); a UnitDiagType block, its lines each forgiven on its own into
+// `warnings`; Channel_Diag(n) = "text" (unit_diag.cpp).
 Result<void> interpret_unit_diag_bit(const std::string& file, const syntax::Statement& st,
-                                     UnitDiag& out);
+                                     UnitDiagTexts& out);
 Result<void> interpret_unit_diag_area(const std::string& file, const syntax::Entry& entry,
-                                      UnitDiag& out);
+                                      UnitDiagTexts& out);
+Result<void> interpret_unit_diag_type(const std::string& file, const syntax::Entry& entry,
+                                      UnitDiag& out, std::vector<Warning>& warnings);
+Result<void> interpret_channel_diag(const std::string& file, const syntax::Statement& st,
+                                    UnitDiag& out);
 Result<Module> interpret_module(const std::string& file, const syntax::Entry& entry,
                                 const std::map<int, ExtParam>& params);
 // A SlotDefinition block (slot_definition.cpp); slots naming no module are left out with a

@@ -140,11 +140,24 @@ struct UnitDiagArea {
   std::map<std::uint32_t, std::string> values;
   int line = 0;
 };
-struct UnitDiag {
+struct UnitDiagTexts {
   std::map<std::uint16_t, std::string> bits;
   std::map<std::uint16_t, std::string> not_bits;
   std::vector<UnitDiagArea> areas;
   [[nodiscard]] bool empty() const { return bits.empty() && not_bits.empty() && areas.empty(); }
+};
+// Besides the texts of every device-related block: `UnitDiagType = t` … `EndUnitDiagType`
+// ([PROFIBUS GSD spec UnitDiagType]), texts (X_Unit_Diag_Bit, X_Unit_Diag_Not_Bit,
+// X_Unit_Diag_Area … X_Value, and the plain keywords) for a block whose first byte after the
+// header, a DPV1 alarm or status type, is t, bits counted as above; and `Channel_Diag(n) =
+// "text"`, the name of the manufacturer-specific channel error type n (16..31) [PROFIBUS GSD
+// spec Channel_Diag, IEC 61158-6-3 Slave_Diag]. docs/decisions.md `gsd-unit-diag-types`.
+struct UnitDiag : UnitDiagTexts {
+  std::map<std::uint8_t, UnitDiagTexts> types;
+  std::map<std::uint8_t, std::string> channel_errors;
+  [[nodiscard]] bool empty() const {
+    return UnitDiagTexts::empty() && types.empty() && channel_errors.empty();
+  }
 };
 
 struct Device {

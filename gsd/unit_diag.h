@@ -17,8 +17,13 @@ namespace rs4sim::gsd {
 // header); anything else, or a block longer than the bytes, gives no texts. In bit order: the
 // text of every Unit_Diag_Bit that is set and every Unit_Diag_Not_Bit that is clear within the
 // block, and for each Unit_Diag_Area inside the block the text of its value ("<area a-b>: value
-// v" when the GSD names none).
+// v" when the GSD names none); with them, the same of the UnitDiagType whose value is the
+// block's first byte after the header (the DPV1 alarm or status type).
 [[nodiscard]] std::vector<std::string> unit_diag_texts(const UnitDiag& texts,
                                                        std::span<const std::uint8_t> ext_diag);
+
+// The GSD's Channel_Diag text of a manufacturer-specific channel error type (16..31); "" when
+// the GSD names none.
+[[nodiscard]] std::string channel_error_text(const UnitDiag& texts, std::uint8_t error_type);
 
 }  // namespace rs4sim::gsd

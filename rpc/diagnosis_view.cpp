@@ -2,6 +2,8 @@
 
 #include "dp/pdu/ext_diag.h"
 #include "dp/pdu/slave_diag.h"
+#include "gsd/station/gsd_station.h"
+#include "gsd/unit_diag.h"
 #include "rs4/protocol/adapter_error.h"
 #include "rs4/protocol/alarm.h"
 #include "rs4/safety/diagnosis.h"
@@ -39,15 +41,23 @@ std::string hex4(unsigned v) {
   return s;
 }
 
-std::string channel_summary(const pdu::ChannelDiag& c) {
+// `module` and what the channel block says of it: "<module> channel 1 input: error 1 (short
+// circuit)"; `named`: the device's name of a manufacturer-specific error type ("": none).
+std::string channel_text(const pdu::ChannelDiag& c, const std::string& module,
+                         const std::string& named = "") {
   static constexpr std::array<const char*, 4> kDirection{"reserved", "input", "output",
                                                          "input/output"};
-  const std::string error = c.error_type < kChannelErrors.size()
-                                ? kChannelErrors[c.error_type]
-                                : (c.error_type >= 16 ? "manufacturer specific" : "reserved");
-  return "module " + std::to_string(c.identifier) + " channel " + std::to_string(c.channel) +
-         " " + kDirection[static_cast<std::size_t>(c.direction) & 3U] + ": error " +
+  const std::string error =
+      c.error_type < kChannelErrors.size()
+          ? kChannelErrors[c.error_type]
+          : (c.error_type < 16 ? "reserved" : named.empty() ? "manufacturer specific" : named);
+  return module + " channel " + std::to_string(c.channel) + " " +
+         kDirection[static_cast<std::size_t>(c.direction) & 3U] + ": error " +
          std::to_string(c.error_type) + " (" + error + ")";
+}
+
+std::string channel_summary(const pdu::ChannelDiag& c) {
+  return channel_text(c, "module " + std::to_string(c.identifier));
 }
 
 std::string alarm_summary(const pdu::AlarmPdu& a) {
@@ -127,6 +137,16 @@ void alarm_texts(const pdu::AlarmPdu& a, std::vector<std::string>& out) {
   }
 }
 
+// `fn` on each block of `ext_diag` that reads, in order (a block that does not read ends it;
+// fill_diagnosis says why).
+void for_each_block(std::span<const std::uint8_t> ext_diag, bool dpv1,
+                    const std::function<void(const pdu::ExtDiagBlock&)>& fn) {
+  pdu::ExtDiagReader reader(ext_diag, dpv1);
+  for (auto block = reader.next(); block && block.value(); block = reader.next()) {
+    fn(*block.value());
+  }
+}
+
 }  // namespace
 
 void fill_diagnosis(std::span<const std::uint8_t> du, bool dpv1, const DiagnosisTexts& texts,
@@ -164,9 +184,7 @@ void fill_diagnosis(std::span<const std::uint8_t> du, bool dpv1, const Diagnosis
 
 std::vector<std::string> rs4_diagnosis_texts(std::span<const std::uint8_t> ext_diag) {
   std::vector<std::string> out;
-  pdu::ExtDiagReader reader(ext_diag, true);
-  for (auto block = reader.next(); block && block.value(); block = reader.next()) {
-    const pdu::ExtDiagBlock& one = *block.value();
+  for_each_block(ext_diag, true, [&out](const pdu::ExtDiagBlock& one) {
     if (const auto* status = std::get_if<pdu::StatusPdu>(&one)) {
       // [RS4 manual §6.3]: type 0x81 status message, slot 0, the number in the last byte
       if (status->status_type == pdu::status_type::kStatusMessage && !status->data.empty() &&
@@ -177,8 +195,31 @@ std::vector<std::string> rs4_diagnosis_texts(std::span<const std::uint8_t> ext_d
     } else if (const auto* alarm = std::get_if<pdu::AlarmPdu>(&one)) {
       alarm_texts(*alarm, out);
     }
-  }
+  });
   return out;
+}
+
+DiagnosisTexts gsd_diagnosis_texts(const gsd::GsdStationSpec& spec) {
+  return [&spec](std::span<const std::uint8_t> ext_diag) {
+    std::vector<std::string> out = gsd::unit_diag_texts(spec.device->unit_diag, ext_diag);
+    const auto module = [&spec](std::size_t i) {
+      return i < spec.modules.size()
+                 ? "slot " + std::to_string(i) + " \"" + spec.modules[i].name + "\""
+                 : "slot " + std::to_string(i) + " (no module configured there)";
+    };
+    for_each_block(ext_diag, spec.device->dpv1.slave, [&](const pdu::ExtDiagBlock& one) {
+      if (const auto* id = std::get_if<pdu::IdentifierDiag>(&one)) {
+        for (std::size_t i = 0; i < id->bits.size() * 8; ++i) {
+          if (id->has_diag(i)) out.push_back(module(i) + " reports diagnosis");
+        }
+      } else if (const auto* channel = std::get_if<pdu::ChannelDiag>(&one)) {
+        out.push_back(channel_text(*channel, module(channel->identifier),
+                                   gsd::channel_error_text(spec.device->unit_diag,
+                                                           channel->error_type)));
+      }
+    });
+    return out;
+  };
 }
 
 }  // namespace rs4sim::rpc

@@ -13,6 +13,10 @@
 #include <string>
 #include <vector>
 
+namespace rs4sim::gsd {
+struct GsdStationSpec;
+}
+
 namespace rs4sim::rpc {
 
 // The device's texts for the extended diagnosis (the bytes after the 6 standard ones).
@@ -27,5 +31,12 @@ void fill_diagnosis(std::span<const std::uint8_t> du, bool dpv1, const Diagnosis
 // [RS4 manual §6.3, table 6.3-1] and the diagnosis alarm's error numbers, each adapter error
 // with the cause of [RS4 manual §5.3.2, table 5.3-3], "coming" or "going".
 std::vector<std::string> rs4_diagnosis_texts(std::span<const std::uint8_t> ext_diag);
+
+// A GSD station's words for its extended diagnosis (`spec` must outlive the result): the
+// GSD's Unit_Diag_Bit, Unit_Diag_Not_Bit and Unit_Diag_Area texts of the device-related block
+// (gsd::unit_diag_texts), then each slot the identifier-related block marks and each channel
+// block, by the name of the module configured in that slot ("slot 1 "AI 2" channel 0 input:
+// error 7 (upper limit exceeded)") [IEC 61158-6-3 Slave_Diag].
+DiagnosisTexts gsd_diagnosis_texts(const gsd::GsdStationSpec& spec);
 
 }  // namespace rs4sim::rpc

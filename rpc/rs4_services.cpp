@@ -527,12 +527,13 @@ grpc::Status SimTimeService::RunUntil(grpc::ServerContext* context, const v1::Ru
   }
 }
 
-std::vector<std::shared_ptr<grpc::Service>> rs4_service_set(Rs4Target& target, Executor& executor) {
+std::vector<std::shared_ptr<grpc::Service>> rs4_service_set(
+    Rs4Target& target, Executor& executor, const std::vector<gsd::GsdStation*>& gsd) {
   const Rs4Context c{target, executor};
   std::vector<std::shared_ptr<grpc::Service>> set{
       std::make_shared<DeviceService>(c), std::make_shared<ObservationService>(c),
       std::make_shared<FaultsService>(c), std::make_shared<SimTimeService>(c),
-      std::make_shared<Rs4DiagnosticsService>(c)};
+      std::make_shared<DiagnosticsService>(c, gsd)};
   // rs4sim.v1.Plc where the run is the PLC (the simulated segment).
   if (PlcTarget* plc = target.plc()) set.push_back(std::make_shared<PlcService>(*plc, executor));
   return set;

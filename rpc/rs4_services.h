@@ -13,6 +13,10 @@
 #include <memory>
 #include <vector>
 
+namespace rs4sim::gsd {
+class GsdStation;
+}
+
 namespace rs4sim::rpc {
 
 struct Rs4Context {
@@ -117,7 +121,9 @@ class SimTimeService final : public v1::SimTime::Service {
   dp::TimePoint start_;
 };
 
-// Device, Observation, Faults and SimTime over `target`: the services of a run with RS4s.
-std::vector<std::shared_ptr<grpc::Service>> rs4_service_set(Rs4Target& target, Executor& executor);
+// Device, Observation, Faults, SimTime and Diagnostics over `target`: the services of a run
+// with RS4s; Diagnostics answers for the run's GSD stations `gsd` too.
+std::vector<std::shared_ptr<grpc::Service>> rs4_service_set(
+    Rs4Target& target, Executor& executor, const std::vector<gsd::GsdStation*>& gsd = {});
 
 }  // namespace rs4sim::rpc

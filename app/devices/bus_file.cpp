@@ -301,7 +301,7 @@ class BusInstance final : public DeviceInstance {
     rpc::EventHub* hub = target_->events();
     for (const GsdStation* g : all.gsd) hub->watch(rpc::gsd_watcher(*g));
     for (rpc::TappedStation* t : all.taps) t->set_hub(hub);
-    ServiceList list = rpc::rs4_service_set(*target_, c.executor);
+    ServiceList list = rpc::rs4_service_set(*target_, c.executor, all.gsd);
     if (!all.gsd.empty()) {
       const dp::Clock& clock = c.clock;
       rpc::GsdServiceContext g{c.executor, all.gsd, [hub, &clock] { hub->poll(clock.now()); }};
@@ -449,7 +449,7 @@ class BusSegment final : public SimulatedSegment {
           events_.clear();
         },
         std::move(all));
-    ServiceList list = rpc::rs4_service_set(*target_, c.executor);
+    ServiceList list = rpc::rs4_service_set(*target_, c.executor, gsd);
     if (!gsd.empty()) {
       rpc::EventHub* hub = target_->events();
       list.push_back(std::make_shared<rpc::GsdStationsService>(rpc::GsdServiceContext{

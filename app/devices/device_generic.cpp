@@ -10,6 +10,7 @@
 #include "dp/devices/description.h"
 #include "dp/devices/generic_bus.h"
 #include "rpc/device_target.h"
+#include "rpc/diagnosis_service.h"
 #include "rpc/gsd_service.h"
 #include "rpc/rs4_services.h"
 #include "rpc/tapped_station.h"
@@ -106,8 +107,10 @@ class GsdInstance final : public DeviceInstance {
     rpc::GsdServiceContext g{c.executor, {&station_}, [hub, &clock] { hub->poll(clock.now()); }};
     g.turnaround = c.turnaround;
     g.slot_time_us = c.slot_time_us;
+    const rpc::RunContext run{*target_, c.executor};
     return {std::make_shared<rpc::GsdStationsService>(std::move(g)),
-            std::make_shared<rpc::ObservationService>(rpc::RunContext{*target_, c.executor})};
+            std::make_shared<rpc::ObservationService>(run),
+            std::make_shared<rpc::DiagnosticsService>(run, std::vector<GsdStation*>{&station_})};
   }
   void stop_services() override {
     if (target_) target_->stop();

@@ -3,6 +3,7 @@
 #include "app/devices/memory_bus_target.h"
 #include "app/runtime/usage_error.h"
 #include "dp/time/baud_rate.h"
+#include "rpc/diagnosis_service.h"
 #include "rpc/event_hub.h"
 #include "rpc/gsd_service.h"
 #include "rpc/rs4_services.h"
@@ -59,7 +60,7 @@ GsdSegment::GsdSegment(std::vector<GsdStationSpec> specs, const std::string& bau
 
 GsdSegment::~GsdSegment() = default;
 
-// The shared services see the GSD stations and no RS4 (the RS4 calls answer
+// The shared services (Diagnostics among them) see the GSD stations and no RS4 (the RS4 calls answer
 // FAILED_PRECONDITION), on this segment's clock.
 ServiceList GsdSegment::services(const ServiceContext& context) {
   std::vector<GsdStation*> stations;
@@ -76,12 +77,13 @@ ServiceList GsdSegment::services(const ServiceContext& context) {
         return s;
       }());
   auto* hub = target_->events();
+  const rpc::Rs4Context rs4{*target_, context.executor};
+  auto diagnostics = std::make_shared<rpc::DiagnosticsService>(rs4, stations);
   rpc::GsdServiceContext g{context.executor, std::move(stations),
                            [hub, this] { hub->poll(clock_.now()); }, bus_.get()};
-  const rpc::Rs4Context rs4{*target_, context.executor};
   return {std::make_shared<rpc::GsdStationsService>(std::move(g)),
           std::make_shared<rpc::SimTimeService>(rs4),
-          std::make_shared<rpc::ObservationService>(rs4)};
+          std::make_shared<rpc::ObservationService>(rs4), std::move(diagnostics)};
 }
 
 void GsdSegment::run_for(dp::Duration d) {

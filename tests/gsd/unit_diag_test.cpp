@@ -28,7 +28,7 @@ TEST(GsdUnitDiag, TheGatewaysTextsAreRead) {
                                                           {17, "AS-i configuration error"}}));
   EXPECT_EQ(u.not_bits,
             (std::map<std::uint16_t, std::string>{{18, "gateway not in protected mode"}}));
-  ASSERT_EQ(u.areas.size(), 1U);  // X_Unit_Diag_Area and UnitDiagType are not these
+  ASSERT_EQ(u.areas.size(), 1U);  // X_Unit_Diag_Area (no UnitDiagType around it) is not one
   EXPECT_EQ(u.areas[0].first, 24);
   EXPECT_EQ(u.areas[0].last, 27);
   EXPECT_EQ(u.areas[0].values, (std::map<std::uint32_t, std::string>{
@@ -63,6 +63,54 @@ TEST(GsdUnitDiag, NoDeviceRelatedBlockNoTexts) {
   EXPECT_EQ(unit_diag_texts(u, Bytes{0x85, 0x00, 0x00, 0x01, 0x00}), Texts{});  // channel
   EXPECT_EQ(unit_diag_texts(u, Bytes{0x09, 0x00, 0x00, 0x01}), Texts{});  // longer than the bytes
   EXPECT_EQ(unit_diag_texts(u, Bytes{0x01}), Texts{});                    // a header alone
+}
+
+// UnitDiagType = 129 … X_Unit_Diag_Bit(8) = "peripheral fault" … EndUnitDiagType of
+// gateway_asi.gse: the text belongs to blocks whose first byte after the header is 129 (0x81, a
+// DPV1 status message), read with the file's other texts in bit order; its X_Unit_Diag_Area
+// 32-39 outside any UnitDiagType is not read (docs/decisions.md gsd-unit-diag-types).
+TEST(GsdUnitDiag, TheTextsOfAUnitDiagTypeApplyToItsBlocksOnly) {
+  const UnitDiag u = gateway().unit_diag;
+  ASSERT_EQ(u.types.size(), 1U);
+  EXPECT_EQ(u.types.at(129).bits, (std::map<std::uint16_t, std::string>{{8, "peripheral fault"}}));
+  EXPECT_EQ(u.areas.size(), 1U);
+  // 06 81 01 00 00 05: type 0x81, bit 8 set; bit 18 clear; 24-27 = 0; 32-39 = 5
+  EXPECT_EQ(unit_diag_texts(u, Bytes{0x06, 0x81, 0x01, 0x00, 0x00, 0x05}),
+            (Texts{"peripheral fault", "gateway not in protected mode", "no fault"}));
+  // the same bits in a block of type 0x01 (a diagnostic alarm): not the type's text
+  EXPECT_EQ(unit_diag_texts(u, Bytes{0x06, 0x01, 0x01, 0x00, 0x00, 0x05}),
+            (Texts{"gateway not in protected mode", "no fault"}));
+}
+
+// A UnitDiagType holding X_Unit_Diag_Area blocks with X_Value texts, the layout a vendor's file
+// gives a diagnostic alarm (type 1: header, type, slot, specifier, then the alarm's data from bit
+// 24); and Channel_Diag(n), the name of a manufacturer-specific channel error type.
+TEST(GsdUnitDiag, XValuesOfAUnitDiagTypeAndChannelDiagTexts) {
+  auto d = parse(testing::minimal("UnitDiagType = 1\nX_Unit_Diag_Area = 24-24\n"
+                                  "X_Value(1) = \"Slot 1: high-limit\"\nX_Unit_Diag_Area_End\n"
+                                  "X_Unit_Diag_Area = 25-25\nX_Value(1) = \"Slot 1: low-limit\"\n"
+                                  "X_Unit_Diag_Area_End\nEndUnitDiagType\n"
+                                  "Channel_Diag(16) = \"wire break at the sensor\"\n"),
+                 "m.gsd");
+  ASSERT_TRUE(d) << d.error().what();
+  const UnitDiag& u = d.value().unit_diag;
+  EXPECT_TRUE(d.value().warnings.empty());
+  // 05 01 01 01 02: diagnostic alarm, slot 1, appears, data 02 = bit 25; bit 24 is 0, a value
+  // without a text of its own: the area's default text (docs/decisions.md gsd-unit-diag-bits)
+  EXPECT_EQ(unit_diag_texts(u, Bytes{0x05, 0x01, 0x01, 0x01, 0x02}),
+            (Texts{"Unit_Diag_Area 24-24: value 0", "Slot 1: low-limit"}));
+  EXPECT_EQ(unit_diag_texts(u, Bytes{0x05, 0x01, 0x01, 0x01, 0x01}),
+            (Texts{"Slot 1: high-limit", "Unit_Diag_Area 25-25: value 0"}));
+  // a status message (0x81) with the same bits: not type 1's texts
+  EXPECT_EQ(unit_diag_texts(u, Bytes{0x05, 0x81, 0x01, 0x01, 0x03}), Texts{});
+  EXPECT_EQ(channel_error_text(u, 16), "wire break at the sensor");
+  EXPECT_EQ(channel_error_text(u, 17), "");
+  auto low = parse(testing::minimal("Channel_Diag(9) = \"x\"\n"), "m.gsd");
+  ASSERT_TRUE(low);
+  ASSERT_EQ(low.value().warnings.size(), 1U);
+  EXPECT_EQ(low.value().warnings[0].what(),
+            "m.gsd:5: Channel_Diag(9) is out of range 16..31; line ignored: "
+            "`Channel_Diag(9) = \"x\"`");
 }
 
 // Diagnosis texts never change what the master sends: a line rs4sim cannot read is skipped

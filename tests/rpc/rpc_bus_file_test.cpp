@@ -8,6 +8,7 @@
 #include "rpc/executor.h"
 #include "rpc/server.h"
 #include "rpc_calls.h"
+#include "rs4sim/v1/diagnosis.grpc.pb.h"
 #include "rs4sim/v1/gsd.grpc.pb.h"
 #include "rs4sim/v1/rs4.grpc.pb.h"
 #include "test_loop.h"
@@ -19,6 +20,7 @@
 #include <grpcpp/create_channel.h>
 #include <grpcpp/security/credentials.h>
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <thread>
@@ -32,7 +34,7 @@ class RpcBusFileTest : public ::testing::Test, protected rpc::TestLoop {
  protected:
   void SetUp() override {
     const DeviceEntry entry = bus_device_entry(
-        read_bus_file(std::string(RS4SIM_GSD_CORPUS) + "/bus_rs4_gsd.json", "12M"));
+        read_bus_file(std::string(RS4SIM_GSD_CORPUS) + "/" + bus_file(), rate()));
     segment_ = entry.simulate(DeviceOptions{});
     services_ = segment_->services(ServiceContext{executor_, io_, wall_});
     std::vector<grpc::Service*> raw;
@@ -45,7 +47,10 @@ class RpcBusFileTest : public ::testing::Test, protected rpc::TestLoop {
     device_ = v1::Device::NewStub(channel);
     observation_ = v1::Observation::NewStub(channel);
     time_ = v1::SimTime::NewStub(channel);
+    diagnostics_ = v1::Diagnostics::NewStub(channel);
   }
+  virtual std::string bus_file() const { return "bus_rs4_gsd.json"; }
+  virtual std::string rate() const { return "12M"; }
   void TearDown() override {
     server_->shutdown();
     stop_loop();
@@ -77,6 +82,7 @@ class RpcBusFileTest : public ::testing::Test, protected rpc::TestLoop {
   std::unique_ptr<v1::Device::Stub> device_;
   std::unique_ptr<v1::Observation::Stub> observation_;
   std::unique_ptr<v1::SimTime::Stub> time_;
+  std::unique_ptr<v1::Diagnostics::Stub> diagnostics_;
 };
 
 // Each kind of station is reached through its own service, all on the one simulated clock: the
@@ -176,6 +182,62 @@ TEST_F(RpcBusFileTest, EachServiceNamesTheStationsItDoesNotServe) {
       rpc::unary(*gsd_, &v1::GsdStations::Stub::GetStation, rpc::station_request(4), s);
   EXPECT_EQ(rs4.error_code(), grpc::StatusCode::NOT_FOUND);
   EXPECT_NE(rs4.error_message().find("5"), std::string::npos) << rs4.error_message();
+}
+
+// tests/gsd/corpus/bus_rs4_gateway.json: the RS4 at 4 and, at 5, tests/gsd/corpus/gateway_asi.gse
+// (DPV1_Slave = 1, Ident_Number 0x0B4E, Max_Diag_Data_Len 32, 1.5M_supp its fastest rate) with
+// "Digital 4 byte in/out" in slot 0 and "Analog 2 words in" in slot 1.
+class RpcMixedDiagnosisTest : public RpcBusFileTest {
+ protected:
+  std::string bus_file() const override { return "bus_rs4_gateway.json"; }
+  std::string rate() const override { return "1.5M"; }  // the gateway's fastest
+  grpc::Status diagnosis(std::uint32_t address, v1::DiagnosisView& out) {
+    return rpc::unary(*diagnostics_, &v1::Diagnostics::Stub::GetDiagnosis,
+                      rpc::station_request(address), out);
+  }
+};
+
+// One Diagnostics service answers for each address of the run: the GSD station with its GSD's
+// texts for the blocks set through GsdStations.SetDiagnosis, the RS4 with its own ident and no
+// GSD text. The blocks, by hand [IEC 61158-6-3 Slave_Diag]: 06 81 01 01 02 05, the
+// device-related status PDU of type 0x81 (bits after the header: 8 set, X_Unit_Diag_Bit(8) of
+// UnitDiagType 129 "peripheral fault"; 16 set "AS-i voltage too low"; 18 clear "gateway not in
+// protected mode"; 24-27 = 2 "double address": the file's texts);
+// 42 02, the identifier block marking slot 1; 81 41 27, module 1's input channel 1, error 7.
+TEST_F(RpcMixedDiagnosisTest, EachStationInItsOwnWords) {
+  (void)advance(4000);
+  v1::DiagnosisView gsd;
+  ASSERT_TRUE(diagnosis(5, gsd).ok());
+  EXPECT_EQ(gsd.address(), 5U);
+  EXPECT_EQ(gsd.ident_number(), 0x0B4EU);
+  EXPECT_EQ(gsd.master_address(), 1U);  // our master, the lowest free address
+  EXPECT_EQ(gsd.blocks_size(), 0);
+  EXPECT_TRUE(gsd.texts().empty());
+  v1::SetGsdDiagnosisRequest set;
+  set.set_address(5);
+  set.set_ext_diag(true);
+  const Bytes blocks{0x06, 0x81, 0x01, 0x01, 0x02, 0x05, 0x42, 0x02, 0x81, 0x41, 0x27};
+  set.set_blocks(std::string(blocks.begin(), blocks.end()));
+  const auto s = rpc::unary(*gsd_, &v1::GsdStations::Stub::SetDiagnosis, set);
+  ASSERT_TRUE(s.ok()) << s.error_message();
+  ASSERT_TRUE(diagnosis(5, gsd).ok());
+  EXPECT_EQ(gsd.raw().substr(6), std::string(blocks.begin(), blocks.end()));
+  EXPECT_NE(std::find(gsd.station_status().begin(), gsd.station_status().end(), "Ext_Diag"),
+            gsd.station_status().end());
+  ASSERT_EQ(gsd.blocks_size(), 3) << gsd.error();
+  EXPECT_EQ(std::vector<std::string>(gsd.texts().begin(), gsd.texts().end()),
+            (std::vector<std::string>{
+                "peripheral fault", "AS-i voltage too low", "gateway not in protected mode",
+                "double address",
+                "slot 1 \"Analog 2 words in\" reports diagnosis",
+                "slot 1 \"Analog 2 words in\" channel 1 input: error 7 (upper limit exceeded)"}));
+  v1::DiagnosisView rs4;
+  ASSERT_TRUE(diagnosis(4, rs4).ok());
+  EXPECT_EQ(rs4.address(), 4U);
+  EXPECT_EQ(rs4.ident_number(), 0x5234U);  // the built-in GSD gsd/files/RSIM5234.gsd
+  EXPECT_TRUE(rs4.texts().empty());
+  v1::DiagnosisView none;
+  EXPECT_EQ(diagnosis(9, none).error_code(), grpc::StatusCode::NOT_FOUND);
 }
 
 }  // namespace
