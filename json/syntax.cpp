@@ -122,13 +122,7 @@ class JsonScanner {
       ++i_;
       space();
       if (!value(depth + 1)) return false;
-      space();
-      if (i_ < t_.size() && t_[i_] == ',') {
-        ++i_;
-        continue;
-      }
-      if (i_ < t_.size() && t_[i_] == '}') return close();
-      return fail("expected ',' or '}' after an object member");
+      if (const Next n = next('}'); n != Next::kItem) return n == Next::kEnd && close();
     }
   }
   bool array(int depth) {
@@ -138,14 +132,22 @@ class JsonScanner {
     for (;;) {
       space();
       if (!value(depth + 1)) return false;
-      space();
-      if (i_ < t_.size() && t_[i_] == ',') {
-        ++i_;
-        continue;
-      }
-      if (i_ < t_.size() && t_[i_] == ']') return close();
-      return fail("expected ',' or ']' after an array element");
+      if (const Next n = next(']'); n != Next::kItem) return n == Next::kEnd && close();
     }
+  }
+  // After an object member or an array element: another item (past its ','), the end (at
+  // the closing bracket, not consumed yet), or a break (recorded).
+  enum class Next { kItem, kEnd, kBroken };
+  Next next(char closing) {
+    space();
+    if (i_ < t_.size() && t_[i_] == ',') {
+      ++i_;
+      return Next::kItem;
+    }
+    if (i_ < t_.size() && t_[i_] == closing) return Next::kEnd;
+    fail(closing == '}' ? "expected ',' or '}' after an object member"
+                        : "expected ',' or ']' after an array element");
+    return Next::kBroken;
   }
 
   std::string_view t_;

@@ -17,11 +17,8 @@ using line::needs_simulated_line;
 using line::numbers;
 using line::on_off;
 using line::ranges;
-using line::set_counters;
-using line::set_last_frame;
+using line::set_line_state;
 using line::token_of;
-using line::whole_ms;
-using stream::faults_present;
 
 using gridscan::elements_of;
 
@@ -61,18 +58,12 @@ grpc::Status GridScanService::GetState(grpc::ServerContext*, const v1::LineDevic
         for (const auto e : elements_of(report.elements, d_.elements())) {
           out->add_report_interrupted_elements(e);
         }
-        for (const auto& f : faults_present(gridscan::description(), d_)) {
-          out->add_faults_present(f);
-        }
-        out->set_late_ms(whole_ms(d_.faults().transmit.late));
-        set_counters(gridscan::description(), d_.counters(), *out->mutable_counters());
         for (const auto e : elements_of(d_.faults().stuck_free, d_.elements())) {
           out->add_stuck_free(e);
         }
-        set_last_frame(c_.tap, *out->mutable_last_frame());
         out->set_cycle_ns(ns(d_.cycle()));
         out->set_next_cycle_ns(ns(d_.options().cycle_time()));
-        out->set_now_ns(to_ns(now));
+        set_line_state(gridscan::description(), d_, c_, to_ns(now), *out);
         return grpc::Status::OK;
       },
       false);

@@ -95,6 +95,18 @@ void set_counters(const stream::DeviceDescription<Device, Counters>& d, const Co
 
 std::uint32_t whole_ms(stream::Duration d);
 
+// What every line device's state message carries the same way: the faults present and the
+// late-reply delay, the counters, the last frame on the line and the time of the answer.
+template <typename Device, typename Counters, typename State>
+void set_line_state(const stream::DeviceDescription<Device, Counters>& d, const Device& device,
+                    const LineContext& c, std::int64_t now_ns, State& out) {
+  for (const auto& f : stream::faults_present(d, device)) out.add_faults_present(f);
+  out.set_late_ms(whole_ms(device.faults().transmit.late));
+  set_counters(d, device.counters(), *out.mutable_counters());
+  set_last_frame(c.tap, *out.mutable_last_frame());
+  out.set_now_ns(now_ns);
+}
+
 // FAILED_PRECONDITION: the call needs the simulated line (`kind`'s run on --link memory).
 grpc::Status needs_simulated_line(const std::string& kind);
 

@@ -17,11 +17,9 @@ using line::numbers;
 using line::on_line;
 using line::on_off;
 using line::ranges;
-using line::set_counters;
-using line::set_last_frame;
+using line::set_line_state;
 using line::token_of;
 using line::whole_ms;
-using stream::faults_present;
 
 std::vector<std::uint16_t> metron_blocked(const metron::Scene& s) {
   std::vector<std::uint16_t> out;
@@ -74,16 +72,10 @@ grpc::Status MetronService::GetState(grpc::ServerContext*, const v1::LineDeviceR
         out->set_first_interrupted(scene.measure(metron::Measurement::kFirstInterrupted));
         out->set_last_interrupted(scene.measure(metron::Measurement::kLastInterrupted));
         out->set_interrupted_count(scene.measure(metron::Measurement::kInterruptedCount));
-        for (const auto& f : faults_present(metron::description(), d_)) {
-          out->add_faults_present(f);
-        }
-        out->set_late_ms(whole_ms(d_.faults().transmit.late));
-        set_old_delay_ms(*out, out->late_ms());
-        set_counters(metron::description(), d_.counters(), *out->mutable_counters());
-        set_last_frame(c_.tap, *out->mutable_last_frame());
         out->set_scan_cycle_ms(whole_ms(d_.options().scan_cycle));
         out->set_t_response_ms(whole_ms(d_.options().t_response));
-        out->set_now_ns(to_ns(now));
+        set_line_state(metron::description(), d_, c_, to_ns(now), *out);
+        set_old_delay_ms(*out, out->late_ms());
         return grpc::Status::OK;
       },
       false);

@@ -18,10 +18,7 @@ using line::numbers;
 using line::on_line;
 using line::on_off;
 using line::ranges;
-using line::set_counters;
-using line::set_last_frame;
-using line::whole_ms;
-using stream::faults_present;
+using line::set_line_state;
 
 grpc::Status check_modbus_address(std::uint32_t address) {
   if (!modbus::is_slave_address(address)) {
@@ -60,11 +57,6 @@ grpc::Status PolarisService::GetState(grpc::ServerContext*, const v1::LineDevice
           p->set_first(obj.first);
           p->set_last(obj.last);
         }
-        for (const auto& f : faults_present(polaris::description(), d_)) {
-          out->add_faults_present(f);
-        }
-        out->set_late_ms(whole_ms(d_.faults().transmit.late));
-        set_counters(polaris::description(), d_.counters(), *out->mutable_counters());
         out->set_calibrating(d_.calibrating(now));
         if (const auto end = d_.calibration_end()) out->set_calibration_end_ns(to_ns(*end));
         out->set_calibrations(d_.calibrations());
@@ -83,8 +75,7 @@ grpc::Status PolarisService::GetState(grpc::ServerContext*, const v1::LineDevice
         out->set_storage_mode(std::string(polaris::to_token(o.storage_mode)));
         out->set_scan_ns(std::chrono::duration_cast<std::chrono::nanoseconds>(d_.scan()).count());
         out->set_response_column(static_cast<std::uint32_t>(o.response_column));
-        set_last_frame(c_.tap, *out->mutable_last_frame());
-        out->set_now_ns(to_ns(now));
+        set_line_state(polaris::description(), d_, c_, to_ns(now), *out);
         return grpc::Status::OK;
       },
       false);

@@ -26,12 +26,13 @@ namespace {
 // of which would change the frames the demo compares with the bytes it expects.
 // The generic demo's slaves have no service at all. `rs4sim run --device X --link memory`
 // serves each of these devices on the simulated clock.
-std::string api_refusal(const std::string& device, const GrpcCliOptions& api) {
+std::string api_refusal(const DeviceEntry& entry, const GrpcCliOptions& api) {
+  const std::string& device = entry.name;
   const bool grpc = !api.address.empty();
   const bool http = !api.http.empty();
   const std::string given = grpc && http ? "--grpc and --http" : grpc ? "--grpc" : "--http";
   const std::string head = given + ": only the RS4 demo serves the API; the " + device + " demo ";
-  if (device == "generic")
+  if (entry.kind == stream::DeviceKind::kGeneric)
     return head + "does not (its generic slaves have no service of their own)";
   const std::string serve =
       std::string(grpc ? " --grpc HOST:PORT" : "") + (http ? " --http HOST:PORT" : "");
@@ -61,10 +62,11 @@ const CommandRegistration kDemo(
       return [device, options]() {
         const DeviceEntry& entry = *find_device(*device);
         if (!entry.demo) throw UsageError("--device " + *device + " has no demo yet");
-        if (!options->archive.empty() && *device != "rs4") {
+        const bool rs4 = entry.kind == stream::DeviceKind::kRs4;
+        if (!options->archive.empty() && !rs4) {
           throw UsageError("--archive: only the RS4 demo has a parameter proxy to archive");
         }
-        const bool bus_demo = *device == "rs4" || *device == "generic";
+        const bool bus_demo = rs4 || entry.kind == stream::DeviceKind::kGeneric;
         if (!options->capture.file.empty() && !bus_demo) {
           throw UsageError("--capture: the " + *device +
                            " demo captures nothing; rs4sim run --device " + *device +
@@ -72,7 +74,7 @@ const CommandRegistration kDemo(
         }
         checked_archive_path(options->archive);
         if (!options->grpc.empty()) {
-          if (*device != "rs4") throw UsageError(api_refusal(*device, options->grpc));
+          if (!rs4) throw UsageError(api_refusal(entry, options->grpc));
           (void)grpc_server_options(options->grpc);  // unreadable files, missing TLS/token
           options->realtime = true;  // on the simulated clock the demo is over at once
         }

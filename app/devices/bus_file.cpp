@@ -167,6 +167,7 @@ void check_device(const Reader& r, BusStation& s, const std::string& path) {
     r.fail(path + ".device",
            "\"" + json::cut(s.device) + "\" is not a DP station and cannot be on a DP bus");
   }
+  s.kind = entry->kind;
 }
 
 BusStation read_station(const Reader& r, const Value& v, const std::string& path) {
@@ -361,11 +362,11 @@ class BusInstance final : public DeviceInstance {
 // The master's entry for a station that is not a GSD station.
 dp::master::SlaveEntry master_entry(const BusStation& s) {
   const DeviceOptions& o = s.options;
-  if (!o.gsd.empty() && s.device == "generic") {
+  if (!o.gsd.empty() && s.kind == stream::DeviceKind::kGeneric) {
     return gsd_master_entry(load_gsd_station(o.gsd, o.modules, *o.address),
                             std::chrono::milliseconds(100));
   }
-  if (s.device == "generic") {
+  if (s.kind == stream::DeviceKind::kGeneric) {
     return dp::devices::master_entry_for(generic_slave_config(*o.address, o.ident, o.cfg));
   }
   rs4::device::Rs4MasterOptions r;
@@ -391,7 +392,7 @@ class BusSegment final : public SimulatedSegment {
     m.bus = dp::master::BusParameters::defaults_for(*dp::parse_baud_rate(baud));
     std::vector<std::uint8_t> addresses;
     for (const auto& s : bus.stations) {
-      if (!s.options.gsd.empty() && s.device == "generic") {
+      if (!s.options.gsd.empty() && s.kind == stream::DeviceKind::kGeneric) {
         const auto spec = load_gsd_station(s.options.gsd, s.options.modules, *s.options.address);
         if (const auto t = gsd_max_tsdr(spec, baud)) fit_max_tsdr(m.bus, *t);
       }

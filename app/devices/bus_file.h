@@ -26,6 +26,7 @@ namespace rs4sim::app {
 struct BusStation {
   std::string path;    // "$.stations[1]"
   std::string device;  // registry name
+  stream::DeviceKind kind = stream::DeviceKind::kGeneric;  // the entry's kind (what code asks)
   DeviceOptions options;  // validated by the device's entry
 };
 
