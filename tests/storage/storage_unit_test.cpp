@@ -35,8 +35,8 @@ Snapshot valid_snapshot() {
   snap.sets.push_back({1, 0x352441C2u, blob, ""});
   SnapshotStation st;
   st.key = {"b", 4};
-  st.versions.push_back({1, 1, {}, VersionSource::kUpload, "", 0, false, "", "", ""});
-  st.versions.push_back({2, 1, {}, VersionSource::kRestore, "", 1, true, "", "", ""});
+  st.versions.push_back({1, 1, {}, VersionSource::kUpload, "", 0, false, "", "", "", {}});
+  st.versions.push_back({2, 1, {}, VersionSource::kRestore, "", 1, true, "", "", "", {}});
   st.current_version = 2;
   snap.stations.push_back(st);
   return snap;
