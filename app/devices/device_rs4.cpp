@@ -375,6 +375,8 @@ void validate(DeviceOptions& o) {
                             .rs232 = !o.rs232.empty(),
                             .gsd = !o.gsd.empty(),
                             .module = !o.modules.empty()};
+  // --address repeated: the first is the default address when only the others are set
+  if (!o.address && !o.more_addresses.empty()) o.address = rs4::device::kDefaultAddress;
   if (o.address) r.addresses = all_addresses(o);
   if (const auto why = rs4::device::check_run_options(r); !why.empty()) throw UsageError(why);
   o.address = r.addresses.front();
