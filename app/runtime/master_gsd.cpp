@@ -38,9 +38,12 @@ std::pair<std::uint8_t, std::string> split_address(const std::string& option,
 
 // The slave's inputs as the program sees them: an F-module's safety PDU (whose consecutive number
 // and CRC2 change every cycle) replaced by the F-input data of its F-host, 0 while passivated.
-std::vector<std::uint8_t> process_inputs(std::span<const std::uint8_t> in,
-                                         const gsd::GsdMasterSlave& s) {
-  std::vector<std::uint8_t> out(in.begin(), in.end());
+// `out` is reused from call to call (no allocation per link call).
+std::span<const std::uint8_t> process_inputs(std::span<const std::uint8_t> in,
+                                             const gsd::GsdMasterSlave& s,
+                                             std::vector<std::uint8_t>& out) {
+  if (s.f_modules.empty()) return in;
+  out.assign(in.begin(), in.end());
   for (const auto& f : s.f_modules) {
     if (out.size() < f.input_offset + f.pdu_size) continue;
     const auto data = f.host.input();
@@ -172,9 +175,9 @@ void GsdMasterReport::update(const dp::master::Master& master, const MasterRepor
     }
     if (!s.spec.device->unit_diag.empty()) diagnosis(master, report, now, s, shown);
     if (!s.f_modules.empty()) f_modules(report, now, s, shown);
-    const auto in = process_inputs(master.inputs(a), s);
-    if (dx && in != shown.inputs) {
-      shown.inputs = in;
+    const auto in = process_inputs(master.inputs(a), s, scratch_);
+    if (dx && !std::equal(in.begin(), in.end(), shown.inputs.begin(), shown.inputs.end())) {
+      shown.inputs.assign(in.begin(), in.end());
       report.custom(now, a, "GSD slave", "inputs", "inputs " + gsd::io_hex(in),
                     {{"inputs", gsd::io_hex(in)}});
     }

@@ -84,6 +84,7 @@ class GsdMasterReport {
                         dp::TimePoint now, const gsd::GsdMasterSlave& s, Shown& shown);
   const gsd::GsdMasterSlaves& slaves_;
   std::vector<Shown> shown_;  // one per slave, in order
+  std::vector<std::uint8_t> scratch_;  // a slave's inputs with its F-modules' F-data
 };
 
 }  // namespace rs4sim::app
