@@ -3,6 +3,7 @@
 #include "app/devices/bus_file.h"
 #include "app/runtime/usage_error.h"
 #include "gsd/check_report.h"
+#include "gsd/syntax.h"
 
 #include <algorithm>
 #include <charconv>
@@ -110,6 +111,22 @@ void apply_gsd_f_dest_adds(std::vector<GsdStationSpec>& specs,
                        ":FILE given");
     }
     it->f_dest_add = check_f_dest_add(*it, value);
+  }
+}
+
+void apply_gsd_f_wd_time(std::vector<GsdStationSpec>& specs, int ms) {
+  for (auto& spec : specs) {
+    for (const auto& [number, p] : spec.device->params) {
+      if (!spec.setup.f_parameters.empty() && gsd::syntax::iequals(p.name, "F_WD_Time") &&
+          !p.accepts(ms)) {
+        throw UsageError("--f-wd-time " + std::to_string(ms) + ": " + spec.file + ":" +
+                         std::to_string(p.line) + ": F_WD_Time is " + p.range_text() +
+                         " for GSD slave " + std::to_string(spec.address));
+      }
+    }
+    for (auto& block : spec.setup.f_parameters) {
+      block.parameters.wd_time_ms = static_cast<std::uint16_t>(ms);
+    }
   }
 }
 

@@ -534,41 +534,49 @@ const fHex = (b64) => bytesOf(b64, 0).map((b) => hex(b).toLowerCase()).join(" ")
 async function pollGsdMaster() {
   let list;
   try { list = await call("rs4sim.v1.GsdMaster/ListSlaves"); } catch (err) { return false; }
-  const body = $("gsd-fhost").tBodies[0];
-  body.replaceChildren();
   for (const slave of list.slaves || []) {
-    for (const f of slave.fModules || []) body.append(fHostRow(Number(slave.address || 0), f));
+    for (const f of slave.fModules || []) drawFHost(Number(slave.address || 0), f);
   }
-  $("gsd-fhost-panel").hidden = body.rows.length === 0;
+  $("gsd-fhost-panel").hidden = $("gsd-fhost").tBodies[0].rows.length === 0;
   return true;
 }
 
-function fHostRow(address, f) {
+// The row of one F-module, made once (its ACK_REI button stays the same element between polls,
+// so a click is never lost to a redraw) and filled from the F-host's state.
+function drawFHost(address, f) {
   const slot = Number(f.slot || 0);
-  const row = el("tr", { class: "gsd-fhost", "data-address": address, "data-slot": slot,
-    "data-state": f.fState || "" });
+  const body = $("gsd-fhost").tBodies[0];
+  let row = body.querySelector(`tr[data-address="${address}"][data-slot="${slot}"]`);
+  if (!row) {
+    row = el("tr", { class: "gsd-fhost", "data-address": address, "data-slot": slot });
+    for (let i = 0; i < 10; i++) row.append(el("td"));
+    const ack = el("button", { class: "ack-rei" }, "ACK_REI");
+    ack.addEventListener("click", async () => {
+      try {
+        await call("rs4sim.v1.GsdMaster/AcknowledgeF", { address, slot });
+        log(`GSD slave ${address} slot ${slot}: ACK_REI`);
+      } catch (err) { log(`ACK_REI ${address}/${slot}: ${err.message}`); }
+      pollGsdMaster();
+    });
+    const cell = el("td");
+    cell.append(ack);
+    row.append(cell);
+    body.append(row);
+  }
+  row.dataset.state = f.fState || "";
   const n = (k) => Number((f.counters || {})[k] || 0);
-  row.innerHTML = [
-    `<td>${address}</td>`, `<td>${slot}</td>`, `<td>${f.mode || "–"}</td>`,
-    `<td>${pill(f.fState, fClass(f.fState))}</td>`, `<td>${f.passivated ? "yes" : "no"}</td>`,
-    `<td>${f.ackReq ? pill("ACK_REQ", "warn") : "–"}</td>`,
-  ].join("");
-  row.append(el("td", {}, f.lastFault || "–"), el("td", { class: "f-in" }, fHex(f.fInputs)),
-    el("td", { class: "f-out" }, fHex(f.fOutputsSent)),
-    el("td", {}, `${n("crc_errors")} / ${n("number_errors")} / ${n("watchdog_timeouts")} / ${n("passivations")}`));
-  const cell = el("td");
-  const ack = el("button", { class: "ack-rei" }, "ACK_REI");
-  ack.disabled = !f.ackReq;
-  ack.addEventListener("click", async () => {
-    try {
-      await call("rs4sim.v1.GsdMaster/AcknowledgeF", { address, slot });
-      log(`GSD slave ${address} slot ${slot}: ACK_REI`);
-    } catch (err) { log(`ACK_REI ${address}/${slot}: ${err.message}`); }
-    pollGsdMaster();
-  });
-  cell.append(ack);
-  row.append(cell);
-  return row;
+  const cells = row.cells;
+  cells[0].textContent = String(address);
+  cells[1].textContent = String(slot);
+  cells[2].textContent = f.mode || "–";
+  cells[3].innerHTML = pill(f.fState, fClass(f.fState));
+  cells[4].textContent = f.passivated ? "yes" : "no";
+  cells[5].innerHTML = f.ackReq ? pill("ACK_REQ", "warn") : "–";
+  cells[6].textContent = f.lastFault || "–";
+  cells[7].textContent = fHex(f.fInputs);
+  cells[8].textContent = fHex(f.fOutputsSent);
+  cells[9].textContent = `${n("crc_errors")} / ${n("number_errors")} / ${n("watchdog_timeouts")} / ${n("passivations")}`;
+  row.querySelector(".ack-rei").disabled = !f.ackReq;
 }
 
 // ---- simulated time -------------------------------------------------------------------------

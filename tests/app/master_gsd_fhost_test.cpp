@@ -274,5 +274,25 @@ TEST(MasterGsdFHost, GsdFDestAddOptionSetsTheSlavesAddressSwitch) {
   EXPECT_EQ(message("77"), "--gsd-f-dest-add 77: use ADDRESS:F_DEST_ADD, e.g. 5:300");
 }
 
+// --f-wd-time for the GSD F-modules: the F_WD_Time written (and the F-host's watchdog), inside
+// the GSD's range 10..10000 (f_module_v1.gsd's ExtUserPrmData 7).
+TEST(MasterGsdFHost, FWdTimeOptionSetsTheGsdFModulesWatchdog) {
+  auto specs = parse_gsd_slaves({"5:" + kV1}, {"5:PROFIsafe v1.x Module"}, "1.5M");
+  apply_gsd_f_wd_time(specs, 500);
+  gsd::GsdMasterSlaves slaves(specs);
+  EXPECT_EQ(slaves.find(5)->f_modules.at(0).parameters.wd_time_ms, 500);
+  EXPECT_EQ(slaves.find(5)->spec.setup.user_prm_data[6], 0x01);  // 500 = 01 F4, big-endian
+  EXPECT_EQ(slaves.find(5)->spec.setup.user_prm_data[7], 0xF4);
+  try {
+    apply_gsd_f_wd_time(specs, 5);
+    ADD_FAILURE() << "5 ms accepted";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("f_module_v1.gsd:48: F_WD_Time is 10..10000 for GSD "
+                                         "slave 5"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace rs4sim::app
