@@ -16,6 +16,7 @@ Usage: browser_fhost_test.py RS4SIM REPO OUTDIR. Exit 77 (skipped) without selen
 import os
 import subprocess
 import sys
+import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from browser_test import CHROMIUM, DRIVER, call, listening_among, no_unserved_calls  # noqa: E402
@@ -34,13 +35,7 @@ def main():
     bus = os.path.join(repo, "tests", "gsd", "corpus", "bus_rs4_f_devices.json")
     # The browser first: its start loads the machine, which would starve the two processes on
     # the pty (a lost slave is a DP restart, and the F-host passivates).
-    options = webdriver.ChromeOptions()
-    options.binary_location = CHROMIUM
-    for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-                "--window-size=1400,1000"):
-        options.add_argument(arg)
-    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
-    driver = webdriver.Chrome(service=Service(DRIVER), options=options)
+    driver = headless_chromium()
     run = subprocess.Popen([rs4sim, "run", "--bus", bus, "--link", "pty", "--http", "127.0.0.1:0",
                             "--duration", "90"],
                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
@@ -95,20 +90,36 @@ def main():
               f"ACK_REQ, ACK_REI from the page; screenshot {shot}")
         return 0
     finally:
-        if driver is not None:
-            driver.quit()
-        for p in procs:
-            p.terminate()
-            try:
-                p.wait(timeout=10)
-            except subprocess.TimeoutExpired:
-                p.kill()
+        stop_all(driver, procs)
         # What the master reported (its PROFIsafe and DP lines), for a failure's reader.
         if len(procs) > 1:
-            for line in procs[1].stdout.read().splitlines():
-                if "PROFIsafe" in line or "DP " in line:
-                    print(line)
+            print("\n".join(line for line in procs[1].stdout.read().splitlines()
+                            if "PROFIsafe" in line or "DP " in line))
 
+
+def headless_chromium():
+    """Debian's chromium, headless, its console kept (no_unserved_calls reads it)."""
+    options = webdriver.ChromeOptions()
+    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    args = "--headless=new --no-sandbox --disable-gpu --disable-dev-shm-usage --window-size=1400,1000"
+    for arg in args.split():
+        options.add_argument(arg)
+    options.binary_location = CHROMIUM
+    return webdriver.Chrome(service=Service(DRIVER), options=options)
+
+
+def stop_all(driver, procs):
+    """Closes the browser and ends the processes: SIGTERM, SIGKILL for those still running
+    10 s later."""
+    if driver is not None:
+        driver.quit()
+    for p in procs:
+        p.terminate()
+    deadline = time.monotonic() + 10
+    while any(p.poll() is None for p in procs) and time.monotonic() < deadline:
+        time.sleep(0.1)
+    for p in (p for p in procs if p.poll() is None):
+        p.kill()
 
 if __name__ == "__main__":
     sys.exit(main())
