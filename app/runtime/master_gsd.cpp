@@ -253,15 +253,23 @@ void GsdMasterReport::stopped(const dp::master::Master& master, const MasterRepo
     const auto status = master.slave_status(a);
     const std::int64_t exchanges =
         status ? static_cast<std::int64_t>(status->counters.data_exchanges) : 0;
+    // Each F-module's F-host: "slot 0 V1 run" ("; "-separated).
+    std::string f_states;
+    for (const auto& f : s.f_modules) {
+      f_states += (f_states.empty() ? "" : "; ") + std::string("slot ") + std::to_string(f.slot) +
+                  " " + f.mode() + " " + std::string(profisafe::to_token(f.host.state()));
+    }
     report.custom(now, a, "GSD slave", "stop",
                   std::string("end: DP ") + state_name(state) + ", data exchanges " +
                       std::to_string(exchanges) + ", inputs " + gsd::io_hex(master.inputs(a)) +
-                      ", outputs " + gsd::io_hex(s.outputs),
+                      ", outputs " + gsd::io_hex(s.outputs) +
+                      (f_states.empty() ? "" : ", PROFIsafe " + f_states),
                   {{"dp", std::string(state_name(state))},
                    {"data_exchange", dx},
                    {"data_exchanges", exchanges},
                    {"inputs", gsd::io_hex(master.inputs(a))},
-                   {"outputs", gsd::io_hex(s.outputs)}});
+                   {"outputs", gsd::io_hex(s.outputs)},
+                   {"profisafe", f_states}});
   }
 }
 

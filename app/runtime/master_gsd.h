@@ -70,7 +70,7 @@ class GsdMasterReport {
   // "diagnosis" line when the GSD's Unit_Diag texts for its last Slave_Diag changed
   // (gsd::unit_diag_texts), a "profisafe" line when the state of an F-module's F-host changed.
   void update(const dp::master::Master& master, const MasterReport& report, dp::TimePoint now);
-  // A "stop" line per slave.
+  // A "stop" line per slave (with its F-modules' F-host states).
   void stopped(const dp::master::Master& master, const MasterReport& report,
                dp::TimePoint now) const;
 

@@ -111,6 +111,12 @@ TEST(MasterGsdFHost, WritesTheFParameterBlocksAndReachesRunBesideAnRs4) {
   const auto text = b.out.str();
   EXPECT_NE(text.find("GSD slave 5: PROFIsafe V1 slot 0: run"), std::string::npos) << text;
   EXPECT_NE(text.find("GSD slave 6: PROFIsafe V2 slot 0: run"), std::string::npos) << text;
+  EXPECT_NE(b.service->describe().find("GSD slave 5, 6 (from their GSDs, PROFIsafe F-host for "
+                                       "their F-modules)"),
+            std::string::npos)
+      << b.service->describe();
+  b.service->print_status(b.out, {});
+  EXPECT_NE(b.out.str().find(", PROFIsafe slot 0 V2 run"), std::string::npos) << b.out.str();
 }
 
 // The station's address switch F_Dest_Add 300 (bus-file "f-dest-add"): the master writes 300
