@@ -29,23 +29,16 @@ namespace {
 
 const storage::StationKey kStation{"default", 4};
 
-class RpcArchiveTest : public ::testing::Test, protected TestLoop {
+class RpcArchiveTest : public ::testing::Test, protected ServedLoop {
  protected:
   void SetUp() override {
     archive_ = storage::SqliteArchive::open(dir_.file("archive.sqlite3")).value();
     service_ = std::make_unique<ArchiveService>(
         *archive_, executor_, [] { return storage::testing::at_ms(5000); },
         dir_.file("archive.sqlite3").string());
-    start_loop();
-    server_ =
-        std::make_unique<RpcServer>(ServerOptions{}, std::vector<grpc::Service*>{service_.get()});
-    stub_ = v1::Archive::NewStub(
-        grpc::CreateChannel(server_->address(), grpc::InsecureChannelCredentials()));
+    stub_ = serve<v1::Archive>(*service_);
   }
-  void TearDown() override {
-    server_->shutdown();
-    stop_loop();
-  }
+  void TearDown() override { stop_serving(); }
   storage::VersionId store(const rs4::scanner::ParameterSet& set, std::int64_t at) {
     const auto blob = rs4::scanner::encode(set);
     storage::StoreRequest r;
@@ -61,15 +54,15 @@ class RpcArchiveTest : public ::testing::Test, protected TestLoop {
   storage::testing::TempDir dir_;
   std::unique_ptr<storage::SqliteArchive> archive_;
   std::unique_ptr<ArchiveService> service_;
-  std::unique_ptr<RpcServer> server_;
   std::unique_ptr<v1::Archive::Stub> stub_;
 };
 
 // ListStations names the archive it shows (the master's page says which one); a PostgreSQL
 // server without its password.
 TEST_F(RpcArchiveTest, ListStationsNamesAServerArchiveWithoutItsPassword) {
-  ArchiveService named(*archive_, executor_, [] { return storage::testing::at_ms(5000); },
-                       "postgresql://plant:s3cret@127.0.0.1:5433/rs4");
+  ArchiveService named(
+      *archive_, executor_, [] { return storage::testing::at_ms(5000); },
+      "postgresql://plant:s3cret@127.0.0.1:5433/rs4");
   v1::ListStationsResponse out;
   ASSERT_TRUE(named.ListStations(nullptr, nullptr, &out).ok());
   EXPECT_EQ(out.archive(), "postgresql://plant@127.0.0.1:5433/rs4");
