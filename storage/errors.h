@@ -61,6 +61,9 @@ ArchiveFailure archive_error(ArchiveError code, std::string_view context);
 // The words of kNotAnArchive for an empty database opened read-only (a server's schema with no
 // tables): what a caller that can create the archive adds its hint to.
 inline constexpr std::string_view kNoArchiveYet = "holds no archive yet";
+// The words of kReadOnly for an archive of an older schema opened read-only: a read cannot
+// migrate it, and a caller that can open it for writing adds that hint.
+inline constexpr std::string_view kNeedsMigration = "needs a migration";
 
 // Runs f() (returning a Result) and prefixes an error's message with "<operation>: ".
 template <class F>

@@ -179,7 +179,8 @@ Result<void> prepare_schema(Connection& c, bool read_only) {
     }
     return archive_error(ArchiveError::kReadOnly,
                          "schema version " + std::to_string(state.version) +
-                             " needs a migration, but the archive is opened read-only");
+                             " " + std::string(kNeedsMigration) +
+                             ", but the archive is opened read-only");
   }
   return migrate(c);
 }

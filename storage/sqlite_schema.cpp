@@ -149,7 +149,8 @@ Result<void> prepare_schema(Database& db, bool read_only) {
   if (read_only) {
     return archive_error(ArchiveError::kReadOnly,
                          "schema version " + std::to_string(version) +
-                             " needs a migration, but the archive is opened read-only");
+                             " " + std::string(kNeedsMigration) +
+                             ", but the archive is opened read-only");
   }
   return migrate(db);
 }

@@ -73,6 +73,11 @@ std::unique_ptr<storage::ParameterArchive> open_archive(const CommonOptions& o, 
       text += "; start one with: rs4sim archive init --archive '" +
               storage::display_location(location) + "'";
     }
+    if (opened.error().code == storage::ArchiveError::kReadOnly &&
+        text.find(storage::kNeedsMigration) != std::string::npos) {
+      text += "; bring it to this rs4sim's schema (every row is kept) with: rs4sim archive init "
+              "--archive '" + storage::display_location(location) + "'";
+    }
     throw ArchiveCommandError(text);
   }
   return std::move(opened).value();

@@ -156,6 +156,25 @@ TEST_F(ArchiveCli, FilesThatAreNotOurArchive) {
   EXPECT_NE(r.err.find("newer rs4sim"), std::string::npos) << r.err;
 }
 
+TEST_F(ArchiveCli, AnOlderSchemaIsReadAfterInitMigratesIt) {
+  // The archive as the previous rs4sim left it (schema 4: no simulated time beside the wall
+  // clock). A read-only command cannot migrate it: it says which command does, and that one
+  // keeps every row.
+  sql(archive_, "ALTER TABLE versions DROP COLUMN simulated_ms; PRAGMA user_version = 4");
+  auto r = run("list");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("schema version 4 needs a migration"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("with: rs4sim archive init --archive '" + archive_.string() + "'"),
+            std::string::npos)
+      << r.err;
+  r = run("init");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("ready (2 stations)"), std::string::npos) << r.out;
+  r = run("history --address 4 --json");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(parse_json(r.out).get_child("versions").size(), 2U);
+}
+
 TEST_F(ArchiveCli, LockedArchive) {
   // Another writer holds the lock beyond the busy timeout (5 s): restore gives up.
   sqlite3* db = nullptr;
