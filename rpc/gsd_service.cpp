@@ -100,13 +100,14 @@ void add_bits(std::uint8_t byte, std::uint8_t defined, const std::array<const ch
 
 std::string as_string(std::span<const std::uint8_t> b) { return {b.begin(), b.end()}; }
 
-void fill_f_host(const profisafe::FHost& h, std::span<const std::uint8_t> output,
-                 v1::GsdFHostView& out) {
+// Our master's F-host (gsd::GsdMasterFModule): `sent` is 0 while it sends fail-safe values.
+void fill_f_host(const gsd::GsdMasterFModule& f, v1::GsdFHostView& out) {
+  const profisafe::FHost& h = f.host;
   const auto& c = h.counters();
   out.set_state(std::string(profisafe::to_token(h.state())));
   out.set_f_inputs(as_string(h.input()));
-  // Passivated, the host sends fail-safe values 0 (profisafe/f_host.h).
-  out.set_f_outputs(h.passivated() ? std::string(output.size(), '\0') : as_string(output));
+  out.set_f_outputs(as_string(f.sent));
+  out.set_last_fault(f.last_fault);
   out.set_last_status(h.last_status());
   out.set_crc_errors(c.crc_errors);
   out.set_number_errors(c.number_errors);
@@ -118,7 +119,7 @@ void fill_f_host(const profisafe::FHost& h, std::span<const std::uint8_t> output
 }
 
 void fill_f_module(const gsd::GsdStation& s, const gsd::FModuleDevice& f,
-                   const gsd::FHostBank* hosts, v1::GsdFModule& out) {
+                   const gsd::GsdMasterSlaves* hosts, v1::GsdFModule& out) {
   const profisafe::FDevice& d = f.device();
   const bool v2 = d.version() == profisafe::ProtocolVersion::kV2;
   out.set_slot(static_cast<std::uint32_t>(f.module()));
@@ -151,10 +152,9 @@ void fill_f_module(const gsd::GsdStation& s, const gsd::FModuleDevice& f,
   out.set_pending_wrong_number(faults.skip_number);
   out.set_pending_repeat_number(faults.repeat_number);
   out.set_held_ms(static_cast<std::uint64_t>(f.hold().count()));
-  if (hosts == nullptr) return;
-  if (const profisafe::FHost* h = hosts->find(s.address(), f.module())) {
-    fill_f_host(*h, hosts->output(s.address(), f.module()), *out.mutable_host());
-  }
+  const gsd::GsdMasterSlave* slave = hosts != nullptr ? hosts->find(s.address()) : nullptr;
+  const gsd::GsdMasterFModule* host = slave != nullptr ? slave->f_module(f.module()) : nullptr;
+  if (host != nullptr) fill_f_host(*host, *out.mutable_host());
 }
 
 grpc::Status check_address(std::uint32_t address) {
@@ -343,8 +343,9 @@ grpc::Status GsdStationsService::on_f_module(std::uint32_t address, std::uint32_
 grpc::Status GsdStationsService::on_f_host(std::uint32_t address, std::uint32_t slot,
                                            const FHostFn& fn) {
   return on_f_module(address, slot, [&](gsd::GsdStation& s, gsd::FModuleDevice& f) {
-    profisafe::FHost* h = c_.f_hosts != nullptr ? c_.f_hosts->find(s.address(), f.module())
-                                                : nullptr;
+    const gsd::GsdMasterSlave* slave = c_.f_hosts != nullptr ? c_.f_hosts->find(s.address())
+                                                             : nullptr;
+    const gsd::GsdMasterFModule* h = slave != nullptr ? slave->f_module(f.module()) : nullptr;
     if (h == nullptr) {
       return failed_precondition("LINK", "F-host",
                                  "this run's master is not ours on the simulated bus: our "
@@ -365,7 +366,7 @@ grpc::Status GsdStationsService::GetFModules(grpc::ServerContext*, const v1::Sta
 }
 
 grpc::Status GsdStationsService::SetFInputs(grpc::ServerContext*,
-                                            const v1::SetGsdFInputsRequest* in, v1::Empty*) {
+                                            const v1::SetGsdInputsRequest* in, v1::Empty*) {
   return on_f_module(in->address(), in->slot(), [&](gsd::GsdStation& s, gsd::FModuleDevice& f) {
     if (in->data().size() != f.f_data_size()) {
       return invalid_argument("data", std::to_string(in->data().size()) + " bytes; F-module \"" +
@@ -442,11 +443,11 @@ grpc::Status GsdStationsService::ClearFFaults(grpc::ServerContext*,
 }
 
 grpc::Status GsdStationsService::SetFOutputs(grpc::ServerContext*,
-                                             const v1::SetGsdFOutputsRequest* in, v1::Empty*) {
+                                             const v1::SetGsdOutputsRequest* in, v1::Empty*) {
   const auto data = as_bytes(in->data());
   return on_f_host(in->address(), in->slot(),
-                   [&](gsd::GsdStation& s, gsd::FModuleDevice& f, profisafe::FHost&) {
-                     if (c_.f_hosts->set_output(s.address(), f.module(), data)) {
+                   [&](gsd::GsdStation& s, gsd::FModuleDevice& f, const gsd::GsdMasterFModule&) {
+                     if (!c_.f_hosts->set_f_outputs(s.address(), f.module(), data)) {
                        return grpc::Status::OK;
                      }
                      return invalid_argument(
@@ -460,15 +461,15 @@ grpc::Status GsdStationsService::SetFOutputs(grpc::ServerContext*,
 grpc::Status GsdStationsService::AckFHost(grpc::ServerContext*, const v1::GsdFModuleRequest* in,
                                           v1::Empty*) {
   return on_f_host(in->address(), in->slot(),
-                   [](gsd::GsdStation&, gsd::FModuleDevice&, profisafe::FHost& h) {
-    if (!h.ack_req()) {
-      return failed_precondition("STATE", "F-host",
-                                 "no ACK_REQ to acknowledge: the F-host is \"" +
-                                     std::string(profisafe::to_token(h.state())) + "\"");
-    }
-    h.ack_rei();
-    return grpc::Status::OK;
-  });
+                   [&](gsd::GsdStation& s, gsd::FModuleDevice& f, const gsd::GsdMasterFModule& h) {
+                     if (c_.f_hosts->acknowledge(s.address(), f.module())) {
+                       return failed_precondition(
+                           "STATE", "F-host",
+                           "no ACK_REQ to acknowledge: the F-host is \"" +
+                               std::string(profisafe::to_token(h.host.state())) + "\"");
+                     }
+                     return grpc::Status::OK;
+                   });
 }
 
 namespace {
@@ -514,13 +515,15 @@ std::unique_ptr<Watcher> gsd_watcher(const gsd::GsdStation& station) {
 }
 
 std::unique_ptr<Watcher> gsd_fhost_watcher(const gsd::GsdStation& station,
-                                           const gsd::FHostBank& hosts) {
+                                           const gsd::GsdMasterSlaves& hosts) {
   return std::make_unique<ItemsWatcher>(station.address(), [&station, &hosts](dp::TimePoint) {
     ItemsWatcher::Items items;
+    const gsd::GsdMasterSlave* slave = hosts.find(station.address());
     for (const auto& f : station.application().f_modules()) {
-      const profisafe::FHost* h = hosts.find(station.address(), f.module());
+      const gsd::GsdMasterFModule* h = slave != nullptr ? slave->f_module(f.module()) : nullptr;
       if (h == nullptr) continue;
-      items.emplace_back(f_item(station, f, "fhost-state"), std::string(profisafe::to_token(h->state())));
+      items.emplace_back(f_item(station, f, "fhost-state"),
+                         std::string(profisafe::to_token(h->host.state())));
     }
     return items;
   });

@@ -6,7 +6,7 @@
 
 #include "dp/link/memory_bus.h"
 #include "dp/link/turnaround.h"
-#include "gsd/station/f_host_bank.h"
+#include "gsd/station/gsd_master_slaves.h"
 #include "gsd/station/gsd_station.h"
 #include "rpc/device_watcher.h"
 #include "rpc/executor.h"
@@ -32,7 +32,7 @@ struct GsdServiceContext {
   dp::link::TurnaroundSource turnaround = {};
   std::optional<std::int64_t> slot_time_us = std::nullopt;
   // The simulated bus: our master's F-hosts of the stations' F-modules (nullptr: none).
-  gsd::FHostBank* f_hosts = nullptr;
+  gsd::GsdMasterSlaves* f_hosts = nullptr;
 };
 
 class GsdStationsService final : public v1::GsdStations::Service {
@@ -56,13 +56,13 @@ class GsdStationsService final : public v1::GsdStations::Service {
   // The F-modules (gsd_fdevice.proto).
   grpc::Status GetFModules(grpc::ServerContext*, const v1::StationRequest* in,
                            v1::GsdFModules* out) override;
-  grpc::Status SetFInputs(grpc::ServerContext*, const v1::SetGsdFInputsRequest* in,
+  grpc::Status SetFInputs(grpc::ServerContext*, const v1::SetGsdInputsRequest* in,
                           v1::Empty*) override;
   grpc::Status InjectFFault(grpc::ServerContext*, const v1::InjectGsdFFaultRequest* in,
                             v1::Empty*) override;
   grpc::Status ClearFFaults(grpc::ServerContext*, const v1::GsdFModuleRequest* in,
                             v1::Empty*) override;
-  grpc::Status SetFOutputs(grpc::ServerContext*, const v1::SetGsdFOutputsRequest* in,
+  grpc::Status SetFOutputs(grpc::ServerContext*, const v1::SetGsdOutputsRequest* in,
                            v1::Empty*) override;
   grpc::Status AckFHost(grpc::ServerContext*, const v1::GsdFModuleRequest* in,
                         v1::Empty*) override;
@@ -78,8 +78,8 @@ class GsdStationsService final : public v1::GsdStations::Service {
   grpc::Status on_f_module(std::uint32_t address, std::uint32_t slot, const FModuleFn& fn);
   // on_f_module for our master's F-host of that F-device (FAILED_PRECONDITION off the
   // simulated bus).
-  using FHostFn =
-      std::function<grpc::Status(gsd::GsdStation&, gsd::FModuleDevice&, profisafe::FHost&)>;
+  using FHostFn = std::function<grpc::Status(gsd::GsdStation&, gsd::FModuleDevice&,
+                                             const gsd::GsdMasterFModule&)>;
   grpc::Status on_f_host(std::uint32_t address, std::uint32_t slot, const FHostFn& fn);
   GsdServiceContext c_;
 };
@@ -94,6 +94,6 @@ std::unique_ptr<Watcher> gsd_watcher(const gsd::GsdStation& station);
 // Our master's F-hosts of the station's F-modules (the simulated bus): "fhost-state"
 // (GsdFHostView.state), named as above.
 std::unique_ptr<Watcher> gsd_fhost_watcher(const gsd::GsdStation& station,
-                                           const gsd::FHostBank& hosts);
+                                           const gsd::GsdMasterSlaves& hosts);
 
 }  // namespace rs4sim::rpc

@@ -52,13 +52,13 @@ GsdSegment::GsdSegment(std::vector<GsdStationSpec> specs, const std::string& bau
   bus_ = std::make_unique<dp::link::MemoryBus>(clock_);
   master_ = std::make_unique<dp::master::Master>(m);
   bus_->attach(*master_);
-  std::vector<const GsdStation*> served;
+  std::vector<GsdStationSpec> hosted = specs;
+  for (auto& s : hosted) s.f_dest_add.reset();
+  f_hosts_ = std::make_unique<gsd::GsdMasterSlaves>(std::move(hosted));
   for (auto& s : specs) {
     stations_.push_back(std::make_unique<GsdStation>(std::move(s)));
     bus_->attach(*stations_.back());
-    served.push_back(stations_.back().get());
   }
-  f_hosts_ = std::make_unique<gsd::FHostBank>(served);
   bus_->start();
 }
 
@@ -66,7 +66,7 @@ void GsdSegment::drain() {
   master_->take_events(events_);
   for (const auto& e : events_) {
     if (std::holds_alternative<dp::master::CycleCompleted>(e)) {
-      f_hosts_->cycle(*master_, clock_.now());
+      (void)f_hosts_->on_master_cycle(*master_, clock_.now(), false);
     }
   }
   events_.clear();

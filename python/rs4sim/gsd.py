@@ -141,13 +141,13 @@ class GsdStations(_Client):
     def set_f_inputs(self, address, slot, data):
         """The F-input data the F-module in `slot` reports (bytes, exactly its F-input
         length; sent while it runs; no time)."""
-        self.stub.SetFInputs(gsd_f_pb.SetGsdFInputsRequest(address=address, slot=slot,
-                                                          data=bytes(data)))
+        self.stub.SetFInputs(gsd_pb.SetGsdInputsRequest(address=address, slot=slot,
+                                                        data=bytes(data)))
 
     def set_f_outputs(self, address, slot, data):
         """The simulated bus: the F-output data our master's F-host sends to it (no time)."""
-        self.stub.SetFOutputs(gsd_f_pb.SetGsdFOutputsRequest(address=address, slot=slot,
-                                                            data=bytes(data)))
+        self.stub.SetFOutputs(gsd_pb.SetGsdOutputsRequest(address=address, slot=slot,
+                                                          data=bytes(data)))
 
     def inject_f_fault(self, address, slot, fault, count=1, delay=None, f_dest_add=0):
         """A fault of the F-device in `slot`: "CORRUPT_CRC2", "WRONG_NUMBER", "REPEAT_NUMBER"

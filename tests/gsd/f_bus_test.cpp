@@ -1,4 +1,4 @@
-// GSD F-devices with our master's F-hosts on the simulated bus (gsd/station/f_host_bank.h), the
+// GSD F-devices with our master's F-hosts on the simulated bus (gsd::GsdMasterSlaves), the
 // way `rs4sim run --gsd FILE --link memory` runs them: a V1 station (corpus/f_module_v1.gsd, the
 // drive's "PROFIsafe v1.x Module", F_WD_Time 100 ms) at address 5 and a V2 one
 // (corpus/f_module_v2.gsd, the F-Link's preset module, F_WD_Time 150 ms) at 6, our master polling
@@ -10,7 +10,7 @@
 #include "dp/link/memory_bus.h"
 #include "dp/master/master.h"
 #include "gsd/interp.h"
-#include "gsd/station/f_host_bank.h"
+#include "gsd/station/gsd_master_slaves.h"
 #include "gsd/station/gsd_station.h"
 #include "gsd/unit_diag.h"
 #include "test_util.h"
@@ -52,13 +52,11 @@ class FBus : public ::testing::Test {
     for (const auto& s : specs) m.slaves.push_back(master_entry(s, 100ms).value());
     master_ = std::make_unique<dp::master::Master>(m);
     bus_.attach(*master_);
-    std::vector<const GsdStation*> served;
+    hosts_ = std::make_unique<GsdMasterSlaves>(specs);
     for (auto& s : specs) {
       stations_.push_back(std::make_unique<GsdStation>(std::move(s)));
       bus_.attach(*stations_.back());
-      served.push_back(stations_.back().get());
     }
-    hosts_ = std::make_unique<FHostBank>(served);
     bus_.start();
     run(1s);
   }
@@ -68,19 +66,19 @@ class FBus : public ::testing::Test {
       master_->take_events(events_);
       for (const auto& e : events_) {
         if (std::holds_alternative<dp::master::CycleCompleted>(e)) {
-          hosts_->cycle(*master_, clock_.now());
+          (void)hosts_->on_master_cycle(*master_, clock_.now(), false);
         }
       }
     });
   }
   GsdStation& station(std::uint8_t a) { return *stations_[a - 5]; }
   FModuleDevice& device(std::uint8_t a) { return station(a).application().f_modules().at(0); }
-  profisafe::FHost& host(std::uint8_t a) { return *hosts_->find(a, 0); }
+  const profisafe::FHost& host(std::uint8_t a) { return hosts_->find(a)->f_module(0)->host; }
   // Healthy again: ACK_REQ, then ACK_REI brings the host back to run.
   void reintegrates(std::uint8_t a) {
     run(500ms);
     ASSERT_EQ(host(a).state(), FHostState::kAckRequired) << int{a};
-    host(a).ack_rei();
+    ASSERT_FALSE(hosts_->acknowledge(a, 0));
     run(100ms);
     EXPECT_EQ(host(a).state(), FHostState::kRun) << int{a};
   }
@@ -89,7 +87,7 @@ class FBus : public ::testing::Test {
   dp::link::MemoryBus bus_{clock_};
   std::unique_ptr<dp::master::Master> master_;
   std::vector<std::unique_ptr<GsdStation>> stations_;
-  std::unique_ptr<FHostBank> hosts_;
+  std::unique_ptr<GsdMasterSlaves> hosts_;
   std::vector<dp::master::MasterEvent> events_;
 };
 
@@ -104,8 +102,7 @@ TEST_F(FBus, BothReachRunAndCarryTheFDataBothWays) {
   const Bytes v1_in{0x11, 0x22, 0x33, 0x44}, v2_in{1, 2, 3, 4, 5, 6, 7, 8};
   ASSERT_FALSE(station(5).application().set_inputs(0, v1_in));
   ASSERT_FALSE(station(6).application().set_inputs(0, v2_in));
-  ASSERT_TRUE(hosts_->set_output(5, 0, Bytes{0xA5, 0, 0, 0x5A}));
-  EXPECT_FALSE(hosts_->set_output(5, 0, Bytes{0xA5}));  // 4 F-output bytes
+  ASSERT_FALSE(hosts_->set_f_outputs(5, 0, Bytes{0xA5, 0, 0, 0x5A}));
   run(50ms);
   EXPECT_EQ(Bytes(host(5).input().begin(), host(5).input().end()), v1_in);
   EXPECT_EQ(Bytes(host(6).input().begin(), host(6).input().end()), v2_in);

@@ -82,6 +82,19 @@ def listening_among(proc, prefix="http: listening on "):
     raise AssertionError(f"no {prefix!r} line")
 
 
+def simulated_page(driver, procs, rs4sim, args, advance_ms):
+    """`rs4sim run ARGS --link memory --baud 12M --http` started, its clock moved by
+    `advance_ms`, its page opened; returns the page's base URL."""
+    proc = subprocess.Popen([rs4sim, "run"] + args + ["--link", "memory", "--baud", "12M",
+                                                     "--http", "127.0.0.1:0"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    procs.append(proc)
+    base = listening_among(proc)
+    call(base, "rs4sim.v1.SimTime/Advance", {"durationMs": advance_ms})
+    driver.get(base)
+    return base
+
+
 def free_udp_port():
     with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
         s.bind(("127.0.0.1", 0))
@@ -237,14 +250,8 @@ def main():
         # (GsdStations.SetInputs, bytes in base64) appear bit by bit; off the bus and back.
         bus_file = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "gsd", "corpus",
                                 "bus_rs4_gsd.json")
-        bus = subprocess.Popen([rs4sim, "run", "--bus", bus_file, "--link", "memory",
-                                "--baud", "12M", "--http", "127.0.0.1:0"],
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-        procs.append(bus)
-        base = listening_among(bus)
         # past the RS4's PROFIBUS adapter start (LED steady 2-3 s [RS4 manual §4.4], 2.5 s)
-        call(base, "rs4sim.v1.SimTime/Advance", {"durationMs": 3000})
-        driver.get(base)
+        base = simulated_page(driver, procs, rs4sim, ["--bus", bus_file], 3000)
         gsd = '#gsd .gsd-station[data-address="5"]'
         wait.until(lambda d: d.find_elements(
             By.CSS_SELECTOR,
@@ -293,15 +300,10 @@ def main():
         # F-data bytes) runs; F-inputs set through the JSON API appear; the address switch at 2
         # and a power-up: diagnosis 64 with the GSD's own text (its X_Value(64)).
         corpus = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "gsd", "corpus")
-        fdev = subprocess.Popen([rs4sim, "run", "--gsd", os.path.join(corpus, "f_module_v1.gsd"),
-                                 "--module", "Standard telegram 1, PZD-2/2", "--module",
-                                 "PROFIsafe v1.x Module", "--address", "5", "--link", "memory",
-                                 "--baud", "12M", "--http", "127.0.0.1:0"],
-                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-        procs.append(fdev)
-        base = listening_among(fdev)
-        call(base, "rs4sim.v1.SimTime/Advance", {"durationMs": 1000})
-        driver.get(base)
+        base = simulated_page(driver, procs, rs4sim,
+                              ["--gsd", os.path.join(corpus, "f_module_v1.gsd"), "--module",
+                               "Standard telegram 1, PZD-2/2", "--module", "PROFIsafe v1.x Module",
+                               "--address", "5"], 1000)
         fmod = '#gsd .gsd-station[data-address="5"] .gsd-fmodule[data-slot="1"]'
         wait.until(lambda d: d.find_elements(
             By.CSS_SELECTOR, fmod + '[data-mode="V1"][data-state="run"][data-host="run"]'))

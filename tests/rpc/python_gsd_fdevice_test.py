@@ -72,7 +72,7 @@ def scenario(gsd, slot, mode, size, wd, text):
     gsd.inject_f_fault(5, slot, "CORRUPT_CRC2")
     gsd.advance(0.02)
     host = gsd.f_module(5, slot).host
-    assert (host.crc_errors, host.passivations) == (1, 1), host
+    assert (host.crc_errors, host.passivations, host.last_fault) == (1, 1, "CRC2 error"), host
     assert host.f_inputs == bytes(size), host  # the substitute values
     reintegrate(gsd, slot)
     gsd.inject_f_fault(5, slot, "WRONG_NUMBER")

@@ -177,6 +177,7 @@ TEST_F(RpcGsdFDeviceTest, ACorruptCrc2PassivatesTheHostUntilAcknowledged) {
   EXPECT_EQ(m.pending_corrupt_crc2(), 0U);
   EXPECT_EQ(m.host().crc_errors(), 1U);
   EXPECT_EQ(m.host().passivations(), 1U);
+  EXPECT_EQ(m.host().last_fault(), "CRC2 error");
   run_for(500ms);
   EXPECT_EQ(module(6).host().state(), "ack-required");
   ASSERT_TRUE(f_call(&Stub::AckFHost, 6, 0).ok());
@@ -197,6 +198,7 @@ TEST_F(RpcGsdFDeviceTest, AWrongFDestAddGivesDiagnosis64WithTheGsdsText) {
   EXPECT_EQ(m.diagnosis_text(), "F add. does not match F_Dest_Add");
   EXPECT_EQ(m.host().state(), "passivated");
   EXPECT_GE(m.host().watchdog_timeouts(), 1U);
+  EXPECT_EQ(m.host().last_fault(), "watchdog F_WD_Time expired");
   v1::GsdStation station;
   ASSERT_TRUE(unary(*stub_, &Stub::GetStation, rpc::station_request(5), station).ok());
   EXPECT_EQ(station.diagnosis_texts_size(), 1);
