@@ -10,15 +10,11 @@
 #include "http_front.h"
 #include "rpc/executor.h"
 #include "rpc/gsd_service.h"
-#include "rpc/server.h"
 #include "rpc_calls.h"
 #include "rs4sim/v1/gsd.grpc.pb.h"
 #include "test_loop.h"
 
 #include <gtest/gtest.h>
-
-#include <grpcpp/create_channel.h>
-#include <grpcpp/security/credentials.h>
 
 #include <memory>
 
@@ -32,7 +28,7 @@ using Stub = v1::GsdStations::Stub;
 
 std::string bytes(const Bytes& b) { return {b.begin(), b.end()}; }
 
-class RpcGsdFDeviceTest : public ::testing::Test, protected rpc::TestLoop {
+class RpcGsdFDeviceTest : public ::testing::Test, protected rpc::ServedLoop {
  protected:
   void SetUp() override {
     const std::string corpus = RS4SIM_GSD_CORPUS;
@@ -47,17 +43,10 @@ class RpcGsdFDeviceTest : public ::testing::Test, protected rpc::TestLoop {
                              segment_->bus()};
     c.f_hosts = &segment_->f_hosts();
     service_ = std::make_unique<rpc::GsdStationsService>(std::move(c));
-    start_loop();
-    server_ = std::make_unique<rpc::RpcServer>(rpc::ServerOptions{},
-                                               std::vector<grpc::Service*>{service_.get()});
-    stub_ = v1::GsdStations::NewStub(
-        grpc::CreateChannel(server_->address(), grpc::InsecureChannelCredentials()));
+    stub_ = serve<v1::GsdStations>(*service_);
     run_for(1s);
   }
-  void TearDown() override {
-    server_->shutdown();
-    stop_loop();
-  }
+  void TearDown() override { stop_serving(); }
   void run_for(dp::Duration d) {
     executor_.run([&] { segment_->run_for(d); });
   }
@@ -98,7 +87,6 @@ class RpcGsdFDeviceTest : public ::testing::Test, protected rpc::TestLoop {
 
   std::unique_ptr<GsdSegment> segment_;
   std::unique_ptr<rpc::GsdStationsService> service_;
-  std::unique_ptr<rpc::RpcServer> server_;
   std::unique_ptr<Stub> stub_;
 };
 
