@@ -428,7 +428,10 @@ async function pollGsd() {
   let list;
   try { list = await call("rs4sim.v1.GsdStations/ListStations"); } catch (err) { return false; }
   gsdServed = true;
-  for (const st of list.stations || []) drawGsd(st);
+  for (const st of list.stations || []) {
+    drawGsd(st);
+    await refreshGsdF(Number(st.address || 0));
+  }
   return true;
 }
 
@@ -438,9 +441,59 @@ async function refreshGsd(address) {
   gsdRefreshing.add(address);
   try {
     drawGsd(await call("rs4sim.v1.GsdStations/GetStation", { address }));
+    await refreshGsdF(address);
   } catch (err) {
     log(`GSD station ${address}: ${err.message}`);
   } finally { gsdRefreshing.delete(address); }
+}
+
+// The station's PROFIsafe F-modules (GsdStations.GetFModules, docs/profisafe.md "GSD F-devices"):
+// mode, state, the diagnosis with the GSD's (or the standard's) text, F-inputs and F-outputs,
+// and our master's F-host where the run has one. Asked once more only for a station that has
+// F-modules.
+const gsdWithoutF = new Set();
+async function refreshGsdF(address) {
+  if (gsdWithoutF.has(address)) return;
+  let f;
+  try { f = await call("rs4sim.v1.GsdStations/GetFModules", { address }); } catch (err) {
+    log(`GSD station ${address} F-modules: ${err.message}`);
+    return;
+  }
+  if (!(f.modules || []).length) { gsdWithoutF.add(address); return; }
+  drawGsdF(address, f.modules);
+}
+
+function drawGsdF(address, modules) {
+  const box = $("gsd").querySelector(`.gsd-station[data-address="${address}"]`);
+  if (!box) return;
+  let list = box.querySelector(".gsd-f");
+  if (!list) { list = el("div", { class: "gsd-f" }); box.append(list); }
+  list.replaceChildren();
+  for (const m of modules) {
+    const size = Number(m.fDataLength || 0);
+    const inputs = bytesOf(m.fInputs, size), outputs = bytesOf(m.fOutputs, size);
+    const state = m.state || "";
+    const f = el("div", { class: "gsd-fmodule", "data-slot": Number(m.slot || 0), "data-mode": m.mode,
+      "data-state": state, "data-diagnosis": Number(m.diagnosis || 0),
+      "data-f-inputs": inputs.map((b) => hex(b).toLowerCase()).join(" "),
+      "data-f-outputs": outputs.map((b) => hex(b).toLowerCase()).join(" "),
+      "data-host": m.host ? m.host.state : "" });
+    const head = el("h4");
+    head.append(`F-module slot ${Number(m.slot || 0)} "${m.name}" · PROFIsafe ${m.mode} `);
+    head.insertAdjacentHTML("beforeend", pill(state, state === "run" ? "ok" : "bad") +
+      (m.host ? " F-host " + pill(m.host.state, m.host.state === "run" ? "ok" : "bad") : ""));
+    f.append(head);
+    const notes = [`F_Dest_Add ${Number(m.fDestAdd || 0)}`, `number ${Number(m.consecutiveNumber || 0)}`,
+      `status ${(m.statusBits || []).join(" ") || "–"}`, `host control ${(m.hostControlBits || []).join(" ") || "–"}`];
+    if (m.diagnosis) notes.unshift(`diagnosis ${m.diagnosis}: ${m.diagnosisText}`);
+    f.append(el("p", { class: "gsd-fdiag note" }, notes.join(" · ")));
+    const io = el("div", { class: "gsd-fio" });
+    io.append(el("span", {}, "F-inputs (device → host) "), byteCells(inputs, "in"),
+      el("span", {}, m.fOutputsFailSafe ? " F-outputs: fail-safe values " : " F-outputs (host → device) "),
+      byteCells(outputs, "out"));
+    f.append(io);
+    list.append(f);
+  }
 }
 
 // The JSON mapping's base64 `bytes` as numbers, `length` of them (zeros where none were set).
