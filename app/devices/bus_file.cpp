@@ -359,13 +359,26 @@ class BusInstance final : public DeviceInstance {
   std::unique_ptr<rpc::DeviceTarget> target_;
 };
 
+bool is_gsd_station(const BusStation& s) {
+  return !s.options.gsd.empty() && s.kind == stream::DeviceKind::kGeneric;
+}
+
+// The GSD stations as our master configures them: the file's "f-dest-add" is known to both
+// ends of the line (`rs4sim master --bus-file` reads the same file), so our F-host sends it.
+std::vector<GsdStationSpec> hosted_gsd_stations(const BusFile& bus) {
+  std::vector<GsdStationSpec> specs;
+  for (const auto& s : bus.stations) {
+    if (!is_gsd_station(s)) continue;
+    const DeviceOptions& o = s.options;
+    specs.push_back(load_gsd_station(o.gsd, o.modules, *o.address));
+    if (o.f_dest_add) specs.back().f_dest_add = check_f_dest_add(specs.back(), *o.f_dest_add);
+  }
+  return specs;
+}
+
 // The master's entry for a station that is not a GSD station.
 dp::master::SlaveEntry master_entry(const BusStation& s) {
   const DeviceOptions& o = s.options;
-  if (!o.gsd.empty() && s.kind == stream::DeviceKind::kGeneric) {
-    return gsd_master_entry(load_gsd_station(o.gsd, o.modules, *o.address),
-                            std::chrono::milliseconds(100));
-  }
   if (s.kind == stream::DeviceKind::kGeneric) {
     return dp::devices::master_entry_for(generic_slave_config(*o.address, o.ident, o.cfg));
   }
@@ -386,18 +399,21 @@ dp::master::SlaveEntry master_entry(const BusStation& s) {
 // Every station with our master on the in-memory bus.
 class BusSegment final : public SimulatedSegment {
  public:
-  explicit BusSegment(const BusFile& bus) {
+  explicit BusSegment(const BusFile& bus)
+      : f_hosts_(std::make_unique<gsd::GsdMasterSlaves>(hosted_gsd_stations(bus))) {
     dp::master::MasterConfig m;
     const std::string baud = bus.stations.front().options.link_baud;
     m.bus = dp::master::BusParameters::defaults_for(*dp::parse_baud_rate(baud));
     std::vector<std::uint8_t> addresses;
     for (const auto& s : bus.stations) {
-      if (!s.options.gsd.empty() && s.kind == stream::DeviceKind::kGeneric) {
-        const auto spec = load_gsd_station(s.options.gsd, s.options.modules, *s.options.address);
-        if (const auto t = gsd_max_tsdr(spec, baud)) fit_max_tsdr(m.bus, *t);
-      }
-      m.slaves.push_back(master_entry(s));
       addresses.push_back(static_cast<std::uint8_t>(*s.options.address));
+      if (!is_gsd_station(s)) {
+        m.slaves.push_back(master_entry(s));
+        continue;
+      }
+      const GsdStationSpec& spec = f_hosts_->find(addresses.back())->spec;  // F-blocks written
+      if (const auto t = gsd_max_tsdr(spec, baud)) fit_max_tsdr(m.bus, *t);
+      m.slaves.push_back(gsd_master_entry(spec, std::chrono::milliseconds(100)));
     }
     m.address = free_master_address(addresses);
     master_address_ = m.address;
@@ -413,9 +429,7 @@ class BusSegment final : public SimulatedSegment {
     bus_->start();
   }
   void run_for(dp::Duration d) override {
-    bus_->run_until([] { return false; }, clock_.now() + d,
-                    [this] { master_->take_events(events_); });
-    events_.clear();
+    bus_->run_until([] { return false; }, clock_.now() + d, [this] { drain(); });
   }
   [[nodiscard]] std::uint8_t master_address() const override { return master_address_; }
   [[nodiscard]] std::size_t in_data_exchange() const {
@@ -433,7 +447,8 @@ class BusSegment final : public SimulatedSegment {
   [[nodiscard]] bool healthy() const override { return in_data_exchange() == addresses_.size(); }
   dp::link::MemoryBus* bus() override { return bus_.get(); }
   // As BusInstance's, on this segment's manual clock (SimTime moves it; the bus faults act on
-  // its bus). The RS4s here run without an F-host (docs/gsd.md "Bus file").
+  // its bus). The GSD stations' F-modules have our master's F-hosts (GsdStations.AckFHost
+  // acknowledges); the RS4s here run without an F-host (docs/gsd.md "Bus file").
   ServiceList services(const ServiceContext& c) override {
     ServedStations all;
     for (const auto& child : children_) {
@@ -444,22 +459,24 @@ class BusSegment final : public SimulatedSegment {
     }
     const std::vector<GsdStation*> gsd = all.gsd;
     target_ = std::make_unique<MemoryBusTarget>(
-        clock_, *bus_,
-        [this] {
-          master_->take_events(events_);
-          events_.clear();
-        },
-        std::move(all));
+        clock_, *bus_, [this] { drain(); }, std::move(all));
     ServiceList list = rpc::rs4_service_set(*target_, c.executor, gsd);
     if (!gsd.empty()) {
       rpc::EventHub* hub = target_->events();
-      list.push_back(std::make_shared<rpc::GsdStationsService>(rpc::GsdServiceContext{
-          c.executor, gsd, [hub, this] { hub->poll(clock_.now()); }, bus_.get()}));
+      watch_f_hosts(*hub, gsd, *f_hosts_);
+      rpc::GsdServiceContext g{c.executor, gsd, [hub, this] { hub->poll(clock_.now()); },
+                               bus_.get()};
+      g.f_hosts = f_hosts_.get();
+      list.push_back(std::make_shared<rpc::GsdStationsService>(std::move(g)));
     }
     return list;
   }
 
  private:
+  void drain() { drain_with_f_hosts(*master_, events_, *f_hosts_, clock_.now()); }
+
+  // Our master's F-host for every F-module of the GSD stations (docs/profisafe.md).
+  std::unique_ptr<gsd::GsdMasterSlaves> f_hosts_;
   dp::ManualClock clock_;
   std::unique_ptr<dp::link::MemoryBus> bus_;
   std::unique_ptr<dp::master::Master> master_;

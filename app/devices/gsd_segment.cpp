@@ -62,15 +62,25 @@ GsdSegment::GsdSegment(std::vector<GsdStationSpec> specs, const std::string& bau
   bus_->start();
 }
 
-void GsdSegment::drain() {
-  master_->take_events(events_);
-  for (const auto& e : events_) {
+void drain_with_f_hosts(dp::master::Master& master, std::vector<dp::master::MasterEvent>& events,
+                        gsd::GsdMasterSlaves& f_hosts, dp::TimePoint now) {
+  master.take_events(events);
+  for (const auto& e : events) {
     if (std::holds_alternative<dp::master::CycleCompleted>(e)) {
-      (void)f_hosts_->on_master_cycle(*master_, clock_.now(), false);
+      (void)f_hosts.on_master_cycle(master, now, false);
     }
   }
-  events_.clear();
+  events.clear();
 }
+
+void watch_f_hosts(rpc::EventHub& hub, const std::vector<GsdStation*>& stations,
+                   const gsd::GsdMasterSlaves& f_hosts) {
+  for (const GsdStation* s : stations) {
+    if (!s->application().f_modules().empty()) hub.watch(rpc::gsd_fhost_watcher(*s, f_hosts));
+  }
+}
+
+void GsdSegment::drain() { drain_with_f_hosts(*master_, events_, *f_hosts_, clock_.now()); }
 
 GsdSegment::~GsdSegment() = default;
 
@@ -88,9 +98,7 @@ ServiceList GsdSegment::services(const ServiceContext& context) {
         return s;
       }());
   auto* hub = target_->events();
-  for (const auto& s : stations_) {
-    if (!s->application().f_modules().empty()) hub->watch(rpc::gsd_fhost_watcher(*s, *f_hosts_));
-  }
+  watch_f_hosts(*hub, stations, *f_hosts_);
   const rpc::Rs4Context rs4{*target_, context.executor};
   auto diagnostics = std::make_shared<rpc::DiagnosticsService>(rs4, stations);
   rpc::GsdServiceContext g{context.executor, std::move(stations),

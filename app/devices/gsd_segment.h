@@ -20,7 +20,20 @@
 #include <memory>
 #include <vector>
 
+namespace rs4sim::rpc {
+class EventHub;
+}
+
 namespace rs4sim::app {
+
+// Takes the master's events since the last call and gives our master's F-hosts their
+// PROFIsafe step after each completed cycle [IEC 61784-3-3 safety PDU]; the rest is dropped
+// (a simulated segment reports through its stations and the event hub).
+void drain_with_f_hosts(dp::master::Master& master, std::vector<dp::master::MasterEvent>& events,
+                        gsd::GsdMasterSlaves& f_hosts, dp::TimePoint now);
+// The event hub watches the F-hosts ("fhost-state") of every station with F-modules.
+void watch_f_hosts(rpc::EventHub& hub, const std::vector<GsdStation*>& stations,
+                   const gsd::GsdMasterSlaves& f_hosts);
 
 class GsdSegment final : public SimulatedSegment {
  public:

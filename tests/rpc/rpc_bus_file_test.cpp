@@ -240,5 +240,51 @@ TEST_F(RpcMixedDiagnosisTest, EachStationInItsOwnWords) {
   EXPECT_EQ(diagnosis(9, none).error_code(), grpc::StatusCode::NOT_FOUND);
 }
 
+// tests/gsd/corpus/bus_rs4_f_devices.json on the simulated bus: the RS4 at 4, the V1 GSD
+// F-device at 5 (the drive's "PROFIsafe v1.x Module", address switch F_Dest_Add 300 by the
+// file's "f-dest-add") and the V2 one at 6 (the F-Link's preset module, the GSD's F_Dest_Add 1).
+// Our master reads the same file, so its F-hosts send 300 to station 5 and both reach run; a
+// corrupted CRC2 passivates station 5's F-host until AckFHost, station 6's runs on.
+class RpcBusFileFDevicesTest : public RpcBusFileTest {
+ protected:
+  std::string bus_file() const override { return "bus_rs4_f_devices.json"; }
+  v1::GsdFModule f_module(std::uint32_t address) {
+    v1::GsdFModules out;
+    EXPECT_TRUE(rpc::unary(*gsd_, &v1::GsdStations::Stub::GetFModules,
+                           rpc::station_request(address), out)
+                    .ok());
+    return out.modules_size() == 1 ? out.modules(0) : v1::GsdFModule{};
+  }
+};
+
+TEST_F(RpcBusFileFDevicesTest, TheFileGivesBothEndsTheFDestAddAndOurFHostsRun) {
+  (void)advance(2000);
+  const auto v1m = f_module(5);
+  EXPECT_EQ(v1m.mode(), "V1");
+  EXPECT_EQ(v1m.f_dest_add(), 300U);
+  EXPECT_EQ(v1m.diagnosis(), 0U) << v1m.diagnosis_text();
+  EXPECT_EQ(v1m.state(), "run");
+  EXPECT_EQ(v1m.host().state(), "run");
+  const auto v2m = f_module(6);
+  EXPECT_EQ(v2m.mode(), "V2");
+  EXPECT_EQ(v2m.host().state(), "run");
+
+  v1::InjectGsdFFaultRequest fault;
+  fault.set_address(5);
+  fault.set_slot(v1m.slot());
+  fault.set_fault(v1::GSD_F_FAULT_CORRUPT_CRC2);
+  fault.set_count(1);
+  ASSERT_TRUE(rpc::unary(*gsd_, &v1::GsdStations::Stub::InjectFFault, fault).ok());
+  (void)advance(200);
+  EXPECT_EQ(f_module(5).host().state(), "ack-required");
+  EXPECT_EQ(f_module(6).host().state(), "run");
+  v1::GsdFModuleRequest ack;
+  ack.set_address(5);
+  ack.set_slot(v1m.slot());
+  ASSERT_TRUE(rpc::unary(*gsd_, &v1::GsdStations::Stub::AckFHost, ack).ok());
+  (void)advance(200);
+  EXPECT_EQ(f_module(5).host().state(), "run");
+}
+
 }  // namespace
 }  // namespace rs4sim::app
