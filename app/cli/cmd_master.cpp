@@ -206,7 +206,8 @@ std::optional<dp::Duration> restart_pulse(const MasterCliOptions& o) {
   return std::chrono::milliseconds(ms);
 }
 
-int run(MasterCliOptions& o) {
+// The options' stations and their checks, before anything opens.
+void prepare(MasterCliOptions& o) {
   validate(o.link);
   std::vector<std::string> warnings;
   o.service.gsd_slaves = parse_gsd_slaves(o.gsd_slaves, o.gsd_modules, o.link.baud, &warnings);
@@ -238,25 +239,36 @@ int run(MasterCliOptions& o) {
   if (!o.link.grpc.empty() && o.no_proxy && o.service.gsd_slaves.empty()) {
     throw UsageError(api + " serves the proxy and its archive, which --no-proxy turns off");
   }
+}
+
+// The proxy's archive (in memory on a simulated bus unless --archive); nullptr after saying
+// why it cannot open.
+std::unique_ptr<storage::ParameterArchive> open_proxy_archive(MasterCliOptions& o) {
+  o.proxy.simulated = o.link.link == LinkKind::kMemory;
+  const std::string path = master_archive_location(
+      o.archive.empty() ? "" : checked_archive_path(o.archive), o.proxy.simulated);
+  if (path == ":memory:") {
+    std::cerr << "rs4sim: --link memory: the proxy's archive is in memory only (--archive FILE "
+                 "keeps its versions, --keep-proxy-state its retentive state)\n";
+  }
+  auto opened = storage::open_archive(path);
+  if (!opened) {
+    std::cerr << "rs4sim: archive: " << opened.error().message << std::endl;
+    return nullptr;
+  }
+  o.proxy.archive_location = path;
+  return std::move(opened).value();
+}
+
+int run(MasterCliOptions& o) {
+  prepare(o);
   std::unique_ptr<storage::ParameterArchive> archive;
   std::unique_ptr<ProxyPlugin> proxy;
   PlcPlugin plc(restart_pulse(o));
   std::vector<MasterPlugin*> plugins{&plc};
   if (!o.no_proxy) {
-    o.proxy.simulated = o.link.link == LinkKind::kMemory;
-    const std::string path = master_archive_location(
-        o.archive.empty() ? "" : checked_archive_path(o.archive), o.proxy.simulated);
-    if (path == ":memory:") {
-      std::cerr << "rs4sim: --link memory: the proxy's archive is in memory only (--archive FILE "
-                   "keeps its versions, --keep-proxy-state its retentive state)\n";
-    }
-    auto opened = storage::open_archive(path);
-    if (!opened) {
-      std::cerr << "rs4sim: archive: " << opened.error().message << std::endl;
-      return 1;
-    }
-    archive = std::move(opened).value();
-    o.proxy.archive_location = path;
+    archive = open_proxy_archive(o);
+    if (!archive) return 1;
     proxy = std::make_unique<ProxyPlugin>(*archive, o.proxy);
     plugins.push_back(proxy.get());
   }
@@ -269,9 +281,8 @@ int run(MasterCliOptions& o) {
   }
 }
 
-Action setup(CLI::App& cmd) {
-  auto o = std::make_shared<MasterCliOptions>();
-  LinkOptions& l = o->link;
+// Which stations the master polls and how it configures them.
+void add_station_options(CLI::App& cmd, MasterCliOptions* o) {
   cmd.add_option("--slave", o->slaves, "an RS4's DP address; repeat for more (default 4 unless --gsd-slave is given)");
   cmd.add_option("--gsd-slave", o->gsd_slaves,
                  "ADDRESS:FILE: a DP slave configured from its GSD file (Set_Prm with the GSD's "
@@ -301,6 +312,10 @@ Action setup(CLI::App& cmd) {
                  "16383 on real-time links)");
   cmd.add_option("--cycle", o->cycle_ms, "target master cycle in ms (default 10)");
   cmd.add_option("--field-pair", o->field_pair, "field pair 1..4 in the output byte (default 1)");
+}
+
+// The parameter proxy and the archive it keeps.
+void add_proxy_options(CLI::App& cmd, MasterCliOptions* o) {
   cmd.add_flag("--no-proxy", o->no_proxy,
                "run without the parameter proxy (default: the proxy syncs every RS4's set with "
                "the archive and sets Proxy-Enable)");
@@ -324,6 +339,13 @@ Action setup(CLI::App& cmd) {
                  "the production line within the site, recorded with its stations");
   cmd.add_flag("--skip-identical", o->proxy.recording.skip_identical,
                "store no new version when an uploaded set is the station's current one");
+}
+
+Action setup(CLI::App& cmd) {
+  auto o = std::make_shared<MasterCliOptions>();
+  LinkOptions& l = o->link;
+  add_station_options(cmd, o.get());
+  add_proxy_options(cmd, o.get());
   cmd.add_flag("--manual-ack", o->manual_ack,
                "keep ACK_REQ standing after a PROFIsafe fault (default: acknowledge at once)");
   cmd.add_option("--restart-pulse", o->restart_pulse_ms,
