@@ -458,7 +458,7 @@ grpc::Status GsdStationsService::SetFOutputs(grpc::ServerContext*,
                    });
 }
 
-grpc::Status GsdStationsService::AckFHost(grpc::ServerContext*, const v1::GsdFModuleRequest* in,
+grpc::Status GsdStationsService::AcknowledgeF(grpc::ServerContext*, const v1::GsdFModuleRequest* in,
                                           v1::Empty*) {
   return on_f_host(in->address(), in->slot(),
                    [&](gsd::GsdStation& s, gsd::FModuleDevice& f, const gsd::GsdMasterFModule& h) {

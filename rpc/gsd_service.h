@@ -64,7 +64,7 @@ class GsdStationsService final : public v1::GsdStations::Service {
                             v1::Empty*) override;
   grpc::Status SetFOutputs(grpc::ServerContext*, const v1::SetGsdOutputsRequest* in,
                            v1::Empty*) override;
-  grpc::Status AckFHost(grpc::ServerContext*, const v1::GsdFModuleRequest* in,
+  grpc::Status AcknowledgeF(grpc::ServerContext*, const v1::GsdFModuleRequest* in,
                         v1::Empty*) override;
 
  private:

@@ -447,7 +447,7 @@ class BusSegment final : public SimulatedSegment {
   [[nodiscard]] bool healthy() const override { return in_data_exchange() == addresses_.size(); }
   dp::link::MemoryBus* bus() override { return bus_.get(); }
   // As BusInstance's, on this segment's manual clock (SimTime moves it; the bus faults act on
-  // its bus). The GSD stations' F-modules have our master's F-hosts (GsdStations.AckFHost
+  // its bus). The GSD stations' F-modules have our master's F-hosts (GsdStations.AcknowledgeF
   // acknowledges); the RS4s here run without an F-host (docs/gsd.md "Bus file").
   ServiceList services(const ServiceContext& c) override {
     ServedStations all;

@@ -7,7 +7,7 @@
 // (docs/gsd.md "Harness API"). A station's PROFIsafe F-modules get an F-host of our master each
 // (gsd::GsdMasterSlaves, as `rs4sim master` has them), run after every master cycle; it sends the
 // GSD's default F-parameters (the station's --f-dest-add is the device's switch, not the
-// master's knowledge) and waits for GsdStations.AckFHost after a passivation.
+// master's knowledge) and waits for GsdStations.AcknowledgeF after a passivation.
 
 #include "app/devices/device_registry.h"
 #include "app/devices/gsd_station_file.h"

@@ -42,6 +42,19 @@ from .v1 import gsd_pb2 as gsd_pb
 from .v1 import gsd_pb2_grpc as gsd_grpc
 
 
+def _the_f_module(modules, address, slot):
+    """The F-module in `slot`, or with `slot` None the station's only one."""
+    slots = ", ".join(str(m.slot) for m in modules) or "none"
+    if slot is None:
+        if len(modules) == 1:
+            return modules[0]
+        raise KeyError("station %d has F-modules in slots %s: name the slot" % (address, slots))
+    for module in modules:
+        if module.slot == slot:
+            return module
+    raise KeyError("station %d has no F-module in slot %d (F-modules in slots: %s)"
+                   % (address, slot, slots))
+
 class GsdStations(_Client):
     """Every GSD station of one rs4sim run, each by its station address."""
 
@@ -131,12 +144,10 @@ class GsdStations(_Client):
         pending faults; `host`: our master's F-host on the simulated bus)."""
         return list(self.stub.GetFModules(pb.StationRequest(address=address)).modules)
 
-    def f_module(self, address, slot):
-        """GsdFModule of the F-module in `slot` (0-based); KeyError if that slot has none."""
-        for module in self.f_modules(address):
-            if module.slot == slot:
-                return module
-        raise KeyError("station %d has no F-module in slot %d" % (address, slot))
+    def f_module(self, address, slot=None):
+        """GsdFModule of the F-module in `slot` (0-based; None: the station's only one);
+        KeyError naming the station's F-module slots otherwise."""
+        return _the_f_module(self.f_modules(address), address, slot)
 
     def set_f_inputs(self, address, slot, data):
         """The F-input data the F-module in `slot` reports (bytes, exactly its F-input
@@ -166,10 +177,12 @@ class GsdStations(_Client):
         """The pending faults end; the address switch goes back (with a power-up)."""
         self.stub.ClearFFaults(gsd_f_pb.GsdFModuleRequest(address=address, slot=slot))
 
-    def ack_f_host(self, address, slot):
-        """The simulated bus: the operator acknowledges our master's F-host (ACK_REI); only
-        while it raises ACK_REQ (state "ack-required")."""
-        self.stub.AckFHost(gsd_f_pb.GsdFModuleRequest(address=address, slot=slot))
+    def acknowledge(self, address, slot=None):
+        """The simulated bus: the operator acknowledges our master's F-host (ACK_REI) of the
+        F-module in `slot` (None: the station's only one); only while it raises ACK_REQ
+        (state "ack-required"), as GsdMaster.acknowledge (no time)."""
+        slot = self.f_module(address, slot).slot if slot is None else slot
+        self.stub.AcknowledgeF(gsd_f_pb.GsdFModuleRequest(address=address, slot=slot))
 
     def events(self, stations=(), telegrams=False):
         """Observation.StreamEvents for these stations (all: empty), as Rs4.events: the
@@ -219,14 +232,12 @@ class GsdMaster(_Client):
         (parameters) and the fault counters (counters, a dict: "crc_errors", ...)."""
         return list(self.slave(address).f_modules)
 
-    def f_module(self, address, slot=0):
-        """GsdMasterFModule: the F-module in `slot` (0-based); KeyError when it is none."""
-        for f in self.f_modules(address):
-            if f.slot == slot:
-                return f
-        raise KeyError("slave %d has no F-module in slot %d" % (address, slot))
+    def f_module(self, address, slot=None):
+        """GsdMasterFModule: the F-module in `slot` (0-based; None: the slave's only one);
+        KeyError naming the slave's F-module slots otherwise."""
+        return _the_f_module(self.f_modules(address), address, slot)
 
-    def f_wd_time(self, address, slot=0):
+    def f_wd_time(self, address, slot=None):
         """The F-module's F_WD_Time in seconds (the F-host's watchdog)."""
         return self.f_module(address, slot).parameters.f_wd_time_ms / 1000.0
 
@@ -236,7 +247,9 @@ class GsdMaster(_Client):
         self.stub.SetFOutputs(gsd_pb.SetGsdOutputsRequest(address=address, slot=slot,
                                                           data=bytes(data)))
 
-    def acknowledge(self, address, slot=0):
-        """ACK_REI: the operator acknowledgement of the F-module's standing ACK_REQ; the
-        F-host reintegrates the device. FAILED_PRECONDITION when no ACK_REQ waits (no time)."""
+    def acknowledge(self, address, slot=None):
+        """ACK_REI: the operator acknowledgement of the F-module's standing ACK_REQ (`slot`
+        None: the slave's only F-module); the F-host reintegrates the device.
+        FAILED_PRECONDITION when no ACK_REQ waits (no time)."""
+        slot = self.f_module(address, slot).slot if slot is None else slot
         self.stub.AcknowledgeF(gsd_pb.GsdFAcknowledgeRequest(address=address, slot=slot))

@@ -35,7 +35,7 @@ def reintegrate(gsd, slot):
     """Healthy again: ACK_REQ; the operator's acknowledgement brings the host back to run."""
     gsd.advance(0.5)
     assert gsd.f_module(5, slot).host.state == "ack-required", gsd.f_module(5, slot)
-    gsd.ack_f_host(5, slot)
+    gsd.acknowledge(5, slot)
     gsd.advance(0.05)
     assert gsd.f_module(5, slot).host.state == "run", gsd.f_module(5, slot)
 
@@ -43,6 +43,14 @@ def reintegrate(gsd, slot):
 def scenario(gsd, slot, mode, size, wd, text):
     events = gsd.events([5])
     gsd.advance(1.0)
+    # The station's one F-module without its slot (the V1 drive's is in slot 1, not 0); a slot
+    # without one is named with the slots that have one.
+    assert gsd.f_module(5).slot == slot, gsd.f_module(5)
+    try:
+        gsd.f_module(5, 7)
+        raise AssertionError("slot 7 has no F-module")
+    except KeyError as e:
+        assert "no F-module in slot 7 (F-modules in slots: %d)" % slot in str(e), e
     m = gsd.f_module(5, slot)
     assert (m.mode, m.state, m.host.state, m.f_data_length) == (mode, "run", "run", size), m
     assert m.f_wd_time_ms == round(wd * 1000), m
@@ -62,7 +70,7 @@ def scenario(gsd, slot, mode, size, wd, text):
         assert e.code() == grpc.StatusCode.INVALID_ARGUMENT, e
         assert error_details(e)[1][0][0] == "data", error_details(e)
     try:
-        gsd.ack_f_host(5, slot)
+        gsd.acknowledge(5, slot)
         raise AssertionError("an acknowledgement without ACK_REQ accepted")
     except grpc.RpcError as e:
         assert e.code() == grpc.StatusCode.FAILED_PRECONDITION, e

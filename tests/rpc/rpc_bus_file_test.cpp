@@ -244,7 +244,7 @@ TEST_F(RpcMixedDiagnosisTest, EachStationInItsOwnWords) {
 // F-device at 5 (the drive's "PROFIsafe v1.x Module", address switch F_Dest_Add 300 by the
 // file's "f-dest-add") and the V2 one at 6 (the F-Link's preset module, the GSD's F_Dest_Add 1).
 // Our master reads the same file, so its F-hosts send 300 to station 5 and both reach run; a
-// corrupted CRC2 passivates station 5's F-host until AckFHost, station 6's runs on.
+// corrupted CRC2 passivates station 5's F-host until AcknowledgeF, station 6's runs on.
 class RpcBusFileFDevicesTest : public RpcBusFileTest {
  protected:
   std::string bus_file() const override { return "bus_rs4_f_devices.json"; }
@@ -281,7 +281,7 @@ TEST_F(RpcBusFileFDevicesTest, TheFileGivesBothEndsTheFDestAddAndOurFHostsRun) {
   v1::GsdFModuleRequest ack;
   ack.set_address(5);
   ack.set_slot(v1m.slot());
-  ASSERT_TRUE(rpc::unary(*gsd_, &v1::GsdStations::Stub::AckFHost, ack).ok());
+  ASSERT_TRUE(rpc::unary(*gsd_, &v1::GsdStations::Stub::AcknowledgeF, ack).ok());
   (void)advance(200);
   EXPECT_EQ(f_module(5).host().state(), "run");
 }

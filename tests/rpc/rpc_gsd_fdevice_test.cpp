@@ -148,7 +148,7 @@ TEST_F(RpcGsdFDeviceTest, BadRequestsSayWhatIsWrong) {
             "f_dest_add: 65535 outside 1..65534");
   EXPECT_EQ(rpc::bad_field_described(inject(5, 1, v1::GSD_F_FAULT_WRONG_F_DEST_ADD, 1, 1)),
             "f_dest_add: 1 is the device's own F_Dest_Add already");
-  s = f_call(&Stub::AckFHost, 5, 1);
+  s = f_call(&Stub::AcknowledgeF, 5, 1);
   EXPECT_EQ(s.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
   EXPECT_EQ(rpc::precondition(s),
             "STATE F-host: no ACK_REQ to acknowledge: the F-host is \"run\"");
@@ -156,7 +156,7 @@ TEST_F(RpcGsdFDeviceTest, BadRequestsSayWhatIsWrong) {
 }
 
 // CORRUPT_CRC2 on the V2 device: the host counts a CRC fault and passivates; healthy again it
-// raises ACK_REQ, AckFHost reintegrates.
+// raises ACK_REQ, AcknowledgeF reintegrates.
 TEST_F(RpcGsdFDeviceTest, ACorruptCrc2PassivatesTheHostUntilAcknowledged) {
   ASSERT_TRUE(inject(6, 0, v1::GSD_F_FAULT_CORRUPT_CRC2).ok());
   EXPECT_EQ(module(6).pending_corrupt_crc2(), 1U);
@@ -168,7 +168,7 @@ TEST_F(RpcGsdFDeviceTest, ACorruptCrc2PassivatesTheHostUntilAcknowledged) {
   EXPECT_EQ(m.host().last_fault(), "CRC2 error");
   run_for(500ms);
   EXPECT_EQ(module(6).host().state(), "ack-required");
-  ASSERT_TRUE(f_call(&Stub::AckFHost, 6, 0).ok());
+  ASSERT_TRUE(f_call(&Stub::AcknowledgeF, 6, 0).ok());
   run_for(50ms);
   EXPECT_EQ(module(6).host().state(), "run");
   EXPECT_EQ(module(6).host().reintegrations(), 1U);
