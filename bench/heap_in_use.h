@@ -34,4 +34,12 @@ double heap_per_object(benchmark::State& state, Make make, bool array_excluded =
   return per_object;
 }
 
+// The memory benchmarks' counters of a device type: its size, and its heap share per device
+// (`heap_per_device`, the object itself included) as heap_per_object measured it.
+template <class Device>
+void count_device_memory(benchmark::State& state, double heap_per_device) {
+  state.counters["sizeof_Device_B"] = static_cast<double>(sizeof(Device));
+  state.counters["heap_per_device_B"] = heap_per_device;
+}
+
 }  // namespace rs4sim::bench

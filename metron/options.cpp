@@ -1,5 +1,7 @@
 #include "metron/options.h"
 
+#include "metron/enum_table.h"
+
 #include <algorithm>
 #include <array>
 
@@ -15,13 +17,6 @@ constexpr std::array<std::string_view, 5> kReportingModes{"continuous", "periodi
 constexpr std::array<std::string_view, 7> kInputTypes{
     "no-function",    "enable-line",  "enable-all", "start-stop-line",
     "start-stop-all", "line-standby", "all-standby"};
-
-template <class E, std::size_t N>
-std::optional<E> parse_name(const std::array<std::string_view, N>& names, std::string_view s) {
-  for (std::size_t i = 0; i < N; ++i)
-    if (names[i] == s) return static_cast<E>(i);
-  return std::nullopt;
-}
 
 bool is_start_stop(InputType t) {
   return t == InputType::kStartStopLine || t == InputType::kStartStopAll;
@@ -77,14 +72,16 @@ std::string_view to_string(ReportingMode m) { return kReportingModes[static_cast
 std::string_view to_string(InputType t) { return kInputTypes[static_cast<std::size_t>(t)]; }
 
 std::optional<LineMode> parse_line_mode(std::string_view s) {
-  return parse_name<LineMode>(kLineModes, s);
+  return enum_of_entry<LineMode>(kLineModes, s);
 }
-std::optional<Format> parse_format(std::string_view s) { return parse_name<Format>(kFormats, s); }
+std::optional<Format> parse_format(std::string_view s) {
+  return enum_of_entry<Format>(kFormats, s);
+}
 std::optional<ReportingMode> parse_reporting_mode(std::string_view s) {
-  return parse_name<ReportingMode>(kReportingModes, s);
+  return enum_of_entry<ReportingMode>(kReportingModes, s);
 }
 std::optional<InputType> parse_input_type(std::string_view s) {
-  return parse_name<InputType>(kInputTypes, s);
+  return enum_of_entry<InputType>(kInputTypes, s);
 }
 
 }  // namespace rs4sim::metron

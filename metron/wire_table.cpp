@@ -1,5 +1,7 @@
 #include "metron/wire_table.h"
 
+#include "metron/enum_table.h"
+
 #include <algorithm>
 #include <cstdio>
 
@@ -36,13 +38,6 @@ constexpr std::array<std::string_view, kStatusFlagCount> kStatusFlagNames{
     "synchronised", "ossd_enabled", "ossd_standby", "ossd_measuring",
     "measuring",    "interrupted",  "input_high"};
 
-template <class E, std::size_t N>
-std::optional<E> parse_token(const std::array<std::string_view, N>& names, std::string_view t) {
-  for (std::size_t i = 0; i < N; ++i)
-    if (names[i] == t) return static_cast<E>(i);
-  return std::nullopt;
-}
-
 template <class E>
 bool has_duplicate(const std::vector<E>& items) {
   for (std::size_t i = 0; i < items.size(); ++i)
@@ -67,7 +62,8 @@ std::optional<WireIssue> check_reply(const ReplyLayout& r) {
       return WireIssue{"reply.fields", "the reply names an unknown field"};
     if (std::find(r.fields.begin(), r.fields.begin() + static_cast<std::ptrdiff_t>(i),
                   r.fields[i]) != r.fields.begin() + static_cast<std::ptrdiff_t>(i))
-      return WireIssue{"reply.fields", "the reply lists " + quoted(to_token(r.fields[i])) + " twice"};
+      return WireIssue{"reply.fields",
+                       "the reply lists " + quoted(to_token(r.fields[i])) + " twice"};
   }
   if (std::find(r.fields.begin(), r.fields.end(), ReplyField::kData) == r.fields.end())
     return WireIssue{"reply.fields", "a reply needs \"data\" (what the requests ask for)"};
@@ -77,9 +73,8 @@ std::optional<WireIssue> check_reply(const ReplyLayout& r) {
   if (r.length_counts >= (1U << kReplyFieldCount) || r.checksum_covers >= (1U << kReplyFieldCount))
     return WireIssue{"reply", "a reply field set names an unknown field"};
   if (const auto f = outside(r.length_counts, r.fields))
-    return WireIssue{"reply.length_counts",
-                     "the Length byte counts " + quoted(to_token(*f)) +
-                         ", which the reply does not carry"};
+    return WireIssue{"reply.length_counts", "the Length byte counts " + quoted(to_token(*f)) +
+                                                ", which the reply does not carry"};
   if (const auto f = outside(r.checksum_covers, r.fields))
     return WireIssue{"reply.checksum_covers", "the checksum covers " + quoted(to_token(*f)) +
                                                   ", which the reply does not carry"};
@@ -91,9 +86,10 @@ std::optional<WireIssue> check_reply(const ReplyLayout& r) {
 std::optional<WireIssue> check_report(const ReportLayout& r) {
   for (std::size_t i = 0; i < kReportFieldCount; ++i) {
     if (std::count(r.order.begin(), r.order.end(), static_cast<ReportField>(i)) != 1)
-      return WireIssue{"report.order", "the report order must list \"start\", \"data\", \"checksum\" and \"end\" "
-                                       "once each (Table 1: one character before and one after "
-                                       "the data, one checksum character)"};
+      return WireIssue{"report.order",
+                       "the report order must list \"start\", \"data\", \"checksum\" and \"end\" "
+                       "once each (Table 1: one character before and one after "
+                       "the data, one checksum character)"};
   }
   return std::nullopt;
 }
@@ -136,13 +132,13 @@ std::string_view to_token(StopItem i) { return kStopItemNames[static_cast<std::s
 std::string_view to_token(ConfigItem i) { return kConfigItemNames[static_cast<std::size_t>(i)]; }
 std::string_view to_token(StatusFlag f) { return kStatusFlagNames[static_cast<std::size_t>(f)]; }
 std::optional<StopItem> parse_stop_item(std::string_view t) {
-  return parse_token<StopItem>(kStopItemNames, t);
+  return enum_of_entry<StopItem>(kStopItemNames, t);
 }
 std::optional<ConfigItem> parse_config_item(std::string_view t) {
-  return parse_token<ConfigItem>(kConfigItemNames, t);
+  return enum_of_entry<ConfigItem>(kConfigItemNames, t);
 }
 std::optional<StatusFlag> parse_status_flag(std::string_view t) {
-  return parse_token<StatusFlag>(kStatusFlagNames, t);
+  return enum_of_entry<StatusFlag>(kStatusFlagNames, t);
 }
 
 std::optional<Command> command_from_code(const WireTable& t, std::uint8_t code) {

@@ -48,19 +48,6 @@ std::vector<v1::Event> EventQueue::pop(std::chrono::milliseconds timeout) {
   return out;
 }
 
-void EventQueue::close() {
-  {
-    const std::lock_guard lock(mutex_);
-    closed_ = true;
-  }
-  ready_.notify_all();
-}
-
-bool EventQueue::closed() const {
-  const std::lock_guard lock(mutex_);
-  return closed_;
-}
-
 std::uint64_t EventQueue::dropped_total() const {
   const std::lock_guard lock(mutex_);
   return dropped_total_;

@@ -4,17 +4,16 @@
 // events are counted instead of stored, and the stream sees one EventsDropped{count} where
 // they were lost, so memory stays bounded by the capacity whatever the client does.
 
+#include "rpc/stream_handoff.h"
 #include "rs4sim/v1/rs4.pb.h"
 
 #include <chrono>
-#include <condition_variable>
 #include <cstdint>
-#include <mutex>
 #include <vector>
 
 namespace rs4sim::rpc {
 
-class EventQueue {
+class EventQueue : public StreamHandoff {
  public:
   static constexpr std::size_t kDefaultCapacity = 4096;
   static constexpr std::size_t kMinCapacity = 16;
@@ -31,9 +30,7 @@ class EventQueue {
   // Stream thread: the events queued so far, waiting up to `timeout` for the first one;
   // empty on timeout or once closed and drained.
   std::vector<v1::Event> pop(std::chrono::milliseconds timeout);
-  // No more events will come (the run ends): pop() returns at once.
-  void close();
-  [[nodiscard]] bool closed() const;
+  // close(): no more events will come (the run ends), pop() returns at once.
   [[nodiscard]] std::uint64_t dropped_total() const;
 
  private:
@@ -42,13 +39,10 @@ class EventQueue {
   const std::size_t capacity_;
   const bool telegrams_;
   const std::vector<std::uint8_t> addresses_;
-  mutable std::mutex mutex_;
-  std::condition_variable ready_;
   std::vector<v1::Event> events_;
   std::uint64_t sequence_ = 0;
   std::uint64_t dropped_ = 0;        // since the last EventsDropped
   std::uint64_t dropped_total_ = 0;  // over the stream's life
-  bool closed_ = false;
 };
 
 }  // namespace rs4sim::rpc

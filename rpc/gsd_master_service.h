@@ -2,7 +2,8 @@
 // rs4sim.v1.GsdMaster (rpc/proto/rs4sim/v1/gsd.proto, docs/gsd.md "Our master with GSD
 // slaves"): the GSD slaves of `rs4sim master` (gsd/station/gsd_master_slaves.h) as the master
 // sees them. The harness sets the outputs the master sends, per module, and reads the inputs
-// it received. Requests are checked on the gRPC thread and run on the loop through `executor`;
+// it received; for a PROFIsafe F-module, the F-host's state, its F-output data and the operator
+// acknowledgement ACK_REI. Requests are checked on the gRPC thread and run on the loop through `executor`;
 // `master` is called there (the master of the running MasterService).
 
 #include "dp/master/master.h"
@@ -25,8 +26,19 @@ class GsdMasterService final : public v1::GsdMaster::Service {
                         v1::GsdMasterSlave* out) override;
   grpc::Status SetOutputs(grpc::ServerContext*, const v1::SetGsdOutputsRequest* in,
                           v1::Empty*) override;
+  // The F-modules' F-hosts (gsd::GsdMasterFModule).
+  grpc::Status SetFOutputs(grpc::ServerContext*, const v1::SetGsdOutputsRequest* in,
+                           v1::Empty*) override;
+  grpc::Status AcknowledgeF(grpc::ServerContext*, const v1::GsdFAcknowledgeRequest* in,
+                            v1::Empty*) override;
 
  private:
+  // Runs `act` on the loop for the F-module in `slot` of the slave at `address`; NOT_FOUND or
+  // INVALID_ARGUMENT (listing what there is) when there is none. `act` may set the status.
+  using FModuleAct = std::function<void(const gsd::GsdMasterSlave&, const gsd::GsdMasterFModule&,
+                                        grpc::Status&)>;
+  grpc::Status with_f_module(std::uint32_t address, std::uint32_t slot, const FModuleAct& act);
+
   Executor& executor_;
   gsd::GsdMasterSlaves& slaves_;
   std::function<dp::master::Master&()> master_;

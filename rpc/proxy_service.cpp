@@ -69,19 +69,6 @@ std::vector<v1::ProxyStationStatus> ProxyWatch::take(std::chrono::milliseconds t
   return out;
 }
 
-void ProxyWatch::close() {
-  {
-    const std::lock_guard lock(mutex_);
-    closed_ = true;
-  }
-  ready_.notify_all();
-}
-
-bool ProxyWatch::closed() const {
-  const std::lock_guard lock(mutex_);
-  return closed_;
-}
-
 // ---- ProxyFeed ----------------------------------------------------------------------------
 
 void ProxyFeed::subscribe(const std::shared_ptr<ProxyWatch>& watch) {
@@ -144,14 +131,23 @@ grpc::Status ProxyService::resolve(const google::protobuf::RepeatedField<std::ui
   return grpc::Status::OK;
 }
 
-grpc::Status ProxyService::GetStatus(grpc::ServerContext*, const v1::ProxyStatusRequest* in,
-                                     v1::ProxyStatusResponse* out) {
+template <class Body>
+grpc::Status ProxyService::on_loop_for(const google::protobuf::RepeatedField<std::uint32_t>& in,
+                                       Body&& body) {
   grpc::Status status;
   executor_.run([&] {
     const auto all = source_.status();
     std::set<std::uint8_t> wanted;
-    status = resolve(in->addresses(), all, wanted);
-    if (!status.ok()) return;
+    status = resolve(in, all, wanted);
+    if (status.ok()) body(all, wanted);
+  });
+  return status;
+}
+
+grpc::Status ProxyService::GetStatus(grpc::ServerContext*, const v1::ProxyStatusRequest* in,
+                                     v1::ProxyStatusResponse* out) {
+  return on_loop_for(in->addresses(), [&](const std::vector<proxy::StationStatus>& all,
+                                          const std::set<std::uint8_t>& wanted) {
     const auto now = source_.now_ns();
     out->set_bus(source_.bus);
     out->set_max_parallel(static_cast<std::uint32_t>(source_.max_parallel));
@@ -165,18 +161,13 @@ grpc::Status ProxyService::GetStatus(grpc::ServerContext*, const v1::ProxyStatus
     out->set_running(running);
     for (const auto a : source_.queue()) out->add_queue(a);
   });
-  return status;
 }
 
 grpc::Status ProxyService::WatchSync(grpc::ServerContext* context, const v1::WatchSyncRequest* in,
                                      grpc::ServerWriter<v1::ProxyStationStatus>* out) {
   std::shared_ptr<ProxyWatch> watch;
-  grpc::Status status;
-  executor_.run([&] {
-    const auto all = source_.status();
-    std::set<std::uint8_t> wanted;
-    status = resolve(in->addresses(), all, wanted);
-    if (!status.ok()) return;
+  const auto status = on_loop_for(in->addresses(), [&](const std::vector<proxy::StationStatus>& all,
+                                                       const std::set<std::uint8_t>& wanted) {
     watch = std::make_shared<ProxyWatch>(wanted);
     // The snapshot first, then the changes: both from the loop, so they line up.
     const auto now = source_.now_ns();

@@ -11,6 +11,7 @@
 
 #include "proxy/proxy_scheduler.h"
 #include "rpc/executor.h"
+#include "rpc/stream_handoff.h"
 #include "rs4sim/v1/proxy_service.grpc.pb.h"
 
 #include <chrono>
@@ -32,7 +33,7 @@ void fill_proxy_status(const proxy::StationStatus& s, const std::string& bus, st
                        v1::ProxyStationStatus& out);
 
 // One stream's mailbox: the loop thread puts, the stream's gRPC thread takes.
-class ProxyWatch {
+class ProxyWatch : public StreamHandoff {
  public:
   explicit ProxyWatch(std::set<std::uint8_t> addresses) : addresses_(std::move(addresses)) {}
   [[nodiscard]] bool watches(std::uint8_t address) const noexcept {
@@ -44,15 +45,10 @@ class ProxyWatch {
   // Stream thread: what changed since the last take, in address order (each RS4's statuses
   // in their order), waiting up to `timeout` for something.
   std::vector<v1::ProxyStationStatus> take(std::chrono::milliseconds timeout);
-  void close();
-  [[nodiscard]] bool closed() const;
 
  private:
   const std::set<std::uint8_t> addresses_;
-  mutable std::mutex mutex_;
-  std::condition_variable ready_;
   std::map<std::uint8_t, std::vector<v1::ProxyStationStatus>> pending_;
-  bool closed_ = false;
 };
 
 // The loop thread's side: publish() after every change of a status, close() when the run
@@ -97,6 +93,10 @@ class ProxyService final : public v1::Proxy::Service {
   grpc::Status resolve(const google::protobuf::RepeatedField<std::uint32_t>& in,
                        const std::vector<proxy::StationStatus>& all,
                        std::set<std::uint8_t>& out) const;
+  // On the loop: the RS4s' status and the requested ones among them, then `body(all, wanted)`;
+  // the resolve error without calling `body`.
+  template <class Body>
+  grpc::Status on_loop_for(const google::protobuf::RepeatedField<std::uint32_t>& in, Body&& body);
 
   ProxySource source_;
   ProxyFeed& feed_;

@@ -10,6 +10,9 @@
 //                                                   (the start interlock's reset signal by the bus)
 //   rs4sim master --gsd-slave 5:X.gsd --module "5:DI 8" --slave 4 --link serial --port ...
 //                                                   (a GSD slave beside the RS4, master_gsd.h)
+//   rs4sim master --bus-file bus.json --manual-ack --link serial --port /dev/pts/3 --grpc ...
+//                 (the stations of `rs4sim run --bus bus.json`: RS4s and GSD F-devices, each
+//                  PROFIsafe F-module with our F-host, docs/profisafe.md)
 #include "app/cli/command.h"
 #include "app/runtime/archive_path.h"
 #include "app/runtime/author.h"
@@ -38,6 +41,8 @@ struct MasterCliOptions {
   std::vector<int> slaves;
   std::vector<std::string> gsd_slaves;   // ADDR:FILE
   std::vector<std::string> gsd_modules;  // ADDR:NAME, slot order per address
+  std::vector<std::string> gsd_f_dest_adds;  // ADDR:N
+  std::string bus_file;                  // --bus-file FILE.json
   int address = 1;
   std::optional<int> f_wd_time_ms;
   std::optional<int> f_source_add;
@@ -153,6 +158,22 @@ rs4::device::Rs4MasterStationConfig station_config(const MasterCliOptions& o,
   return c;
 }
 
+// --bus-file: its RS4s join --slave, its GSD stations --gsd-slave (an address twice is refused
+// by station_config or here).
+void add_bus_file(MasterCliOptions& o) {
+  auto bus = read_master_bus_file(o.bus_file, o.link.baud);
+  o.slaves.insert(o.slaves.end(), bus.rs4s.begin(), bus.rs4s.end());
+  for (auto& spec : bus.gsd) {
+    for (const auto& g : o.service.gsd_slaves) {
+      if (g.address == spec.address) {
+        throw UsageError("--bus-file " + o.bus_file + ": address " +
+                         std::to_string(spec.address) + " is already the GSD slave of " + g.file);
+      }
+    }
+    o.service.gsd_slaves.push_back(std::move(spec));
+  }
+}
+
 // rs4sim.v1.Plc and --restart-pulse (rpc/master_plc.h): what the PLC program writes, on the
 // master's cycles.
 class PlcPlugin final : public MasterPlugin {
@@ -190,6 +211,8 @@ int run(MasterCliOptions& o) {
   std::vector<std::string> warnings;
   o.service.gsd_slaves = parse_gsd_slaves(o.gsd_slaves, o.gsd_modules, o.link.baud, &warnings);
   for (const auto& w : warnings) std::cerr << "warning: " << w << std::endl;
+  apply_gsd_f_dest_adds(o.service.gsd_slaves, o.gsd_f_dest_adds);
+  if (!o.bus_file.empty()) add_bus_file(o);
   o.service.gsd_watchdog = std::chrono::milliseconds(o.dp_watchdog_ms);
   o.service.station = station_config(o, o.service.gsd_slaves);
   if (o.proxy_enable && !o.no_proxy) {
@@ -255,6 +278,12 @@ Action setup(CLI::App& cmd) {
   cmd.add_option("--module", o->gsd_modules,
                  "ADDRESS:NAME: a module of that --gsd-slave by its GSD name, repeat it in slot "
                  "order (a compact station's one module is implicit)");
+  cmd.add_option("--gsd-f-dest-add", o->gsd_f_dest_adds,
+                 "ADDRESS:N: the F_Dest_Add written into the PROFIsafe F-modules of that "
+                 "--gsd-slave (its address switch; default: the GSD's); repeatable");
+  cmd.add_option("--bus-file", o->bus_file,
+                 "FILE.json: poll the stations of a bus file (`rs4sim run --bus`): its RS4s as "
+                 "--slave, its GSD stations as --gsd-slave with their \"f-dest-add\"");
   cmd.add_option("--address", o->address, "the master's own FDL address (default 1)");
   cmd.add_option("--f-wd-time", o->f_wd_time_ms, "F_WD_Time in ms for every RS4 (default 150)")
       ->check(CLI::Range(1, 65535));

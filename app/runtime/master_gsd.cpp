@@ -1,8 +1,10 @@
 #include "app/runtime/master_gsd.h"
 
+#include "app/devices/bus_file.h"
 #include "app/runtime/usage_error.h"
 #include "gsd/check_report.h"
 
+#include <algorithm>
 #include <charconv>
 #include <map>
 
@@ -23,13 +25,33 @@ std::pair<std::uint8_t, std::string> split_address(const std::string& option,
   if (colon == std::string::npos || colon == 0 || ec != std::errc{} || p != last ||
       colon + 1 == value.size()) {
     throw UsageError(option + " " + value + ": use ADDRESS:" + rest_name + ", e.g. " +
-                     (option == "--module" ? "\"5:DI 8\"" : "5:X.gsd"));
+                     (option == "--module"             ? "\"5:DI 8\""
+                      : option == "--gsd-f-dest-add" ? "5:300"
+                                                     : "5:X.gsd"));
   }
   if (address < 0 || address > 125) {
     throw UsageError(option + " " + value + ": address " + std::to_string(address) +
                      " is outside 0..125 ([IEC 61158-4-3 addresses, SAPs])");
   }
   return {static_cast<std::uint8_t>(address), value.substr(colon + 1)};
+}
+
+// The slave's inputs as the program sees them: an F-module's safety PDU (whose consecutive number
+// and CRC2 change every cycle) replaced by the F-input data of its F-host, 0 while passivated.
+// `out` is reused from call to call (no allocation per link call).
+std::span<const std::uint8_t> process_inputs(std::span<const std::uint8_t> in,
+                                             const gsd::GsdMasterSlave& s,
+                                             std::vector<std::uint8_t>& out) {
+  if (s.f_modules.empty()) return in;
+  out.assign(in.begin(), in.end());
+  for (const auto& f : s.f_modules) {
+    if (out.size() < f.input_offset + f.pdu_size) continue;
+    const auto data = f.host.input();
+    const auto at = out.begin() + static_cast<std::ptrdiff_t>(f.input_offset);
+    std::fill(at, at + static_cast<std::ptrdiff_t>(f.pdu_size), std::uint8_t{0});
+    std::copy(data.begin(), data.end(), at);
+  }
+  return out;
 }
 
 const char* state_name(std::optional<dp::master::PollState> s) {
@@ -70,6 +92,45 @@ std::vector<GsdStationSpec> parse_gsd_slaves(const std::vector<std::string>& sla
     check_gsd_baud(specs.back(), baud);
   }
   return specs;
+}
+
+void apply_gsd_f_dest_adds(std::vector<GsdStationSpec>& specs,
+                           const std::vector<std::string>& values) {
+  for (const auto& v : values) {
+    auto [address, number] = split_address("--gsd-f-dest-add", v, "F_DEST_ADD");
+    int value = 0;
+    const auto [p, ec] = std::from_chars(number.data(), number.data() + number.size(), value);
+    if (ec != std::errc{} || p != number.data() + number.size()) {
+      throw UsageError("--gsd-f-dest-add " + v + ": \"" + number + "\" is not a decimal number");
+    }
+    auto it = std::find_if(specs.begin(), specs.end(),
+                           [a = address](const GsdStationSpec& s) { return s.address == a; });
+    if (it == specs.end()) {
+      throw UsageError("--gsd-f-dest-add " + v + ": no --gsd-slave " + std::to_string(address) +
+                       ":FILE given");
+    }
+    it->f_dest_add = check_f_dest_add(*it, value);
+  }
+}
+
+MasterBusFile read_master_bus_file(const std::string& file, const std::string& baud) {
+  const BusFile bus = read_bus_file(file, baud);
+  MasterBusFile out;
+  for (const auto& s : bus.stations) {
+    const DeviceOptions& o = s.options;
+    if (s.kind == stream::DeviceKind::kRs4 && o.gsd.empty()) {
+      out.rs4s.push_back(*o.address);
+    } else if (s.kind == stream::DeviceKind::kGeneric && !o.gsd.empty()) {
+      out.gsd.push_back(load_gsd_station(o.gsd, o.modules, *o.address));
+      check_gsd_baud(out.gsd.back(), baud);
+      if (o.f_dest_add) out.gsd.back().f_dest_add = check_f_dest_add(out.gsd.back(), *o.f_dest_add);
+    } else {
+      throw UsageError(file + ": " + s.path +
+                       ": our master configures an RS4 from its built-in GSD and other slaves "
+                       "from their \"gsd\" file; this station is neither");
+    }
+  }
+  return out;
 }
 
 void GsdMasterReport::start(const MasterReport& report, dp::TimePoint now) const {
@@ -113,7 +174,8 @@ void GsdMasterReport::update(const dp::master::Master& master, const MasterRepor
       shown.state = state;
     }
     if (!s.spec.device->unit_diag.empty()) diagnosis(master, report, now, s, shown);
-    const auto in = master.inputs(a);
+    if (!s.f_modules.empty()) f_modules(report, now, s, shown);
+    const auto in = process_inputs(master.inputs(a), s, scratch_);
     if (dx && !std::equal(in.begin(), in.end(), shown.inputs.begin(), shown.inputs.end())) {
       shown.inputs.assign(in.begin(), in.end());
       report.custom(now, a, "GSD slave", "inputs", "inputs " + gsd::io_hex(in),
@@ -137,6 +199,32 @@ void GsdMasterReport::diagnosis(const dp::master::Master& master, const MasterRe
                 "diagnosis " + (texts.empty() ? std::string("cleared") : texts) + " (" +
                     gsd::io_hex(ext) + ")",
                 {{"ext_diag", gsd::io_hex(ext)}, {"texts", texts}});
+}
+
+// A "profisafe" line per F-module whose F-host changed its state (with the fault that
+// passivated it).
+void GsdMasterReport::f_modules(const MasterReport& report, dp::TimePoint now,
+                                const gsd::GsdMasterSlave& s, Shown& shown) {
+  shown.f_states.resize(s.f_modules.size());
+  for (std::size_t i = 0; i < s.f_modules.size(); ++i) {
+    const auto& f = s.f_modules[i];
+    const auto state = f.host.state();
+    if (shown.f_states[i] == state) continue;
+    shown.f_states[i] = state;
+    const std::string token(profisafe::to_token(state));
+    std::string text = std::string("PROFIsafe ") + f.mode() + " slot " + std::to_string(f.slot) +
+                       ": " + token;
+    if (state != profisafe::FHostState::kRun && !f.last_fault.empty()) {
+      text += " (" + f.last_fault + ")";
+    }
+    report.custom(now, s.spec.address, "GSD slave", "profisafe", text,
+                  {{"slot", static_cast<std::int64_t>(f.slot)},
+                   {"mode", std::string(f.mode())},
+                   {"state", token},
+                   {"passivated", f.host.passivated()},
+                   {"ack_req", f.host.ack_req()},
+                   {"last_fault", f.last_fault}});
+  }
 }
 
 void GsdMasterReport::stopped(const dp::master::Master& master, const MasterReport& report,

@@ -6,6 +6,7 @@
 #include "rpc/gsd_master_service.h"
 #include "rs4/device/rs4_device.h"
 
+#include <algorithm>
 #include <ostream>
 
 namespace rs4sim::app {
@@ -123,6 +124,13 @@ void MasterService::dispatch(dp::TimePoint now) {
   events_.clear();
   station_.take_events(events_);
   if (events_.empty() || !report_) return;
+  // The GSD F-modules' F-hosts on the master's cycle, as the RS4s' run inside the station.
+  const auto cycle = [](const auto& e) {
+    return std::holds_alternative<rs4::device::MasterCycle>(e);
+  };
+  if (gsd_.f_module_count() > 0 && std::any_of(events_.begin(), events_.end(), cycle)) {
+    gsd_.on_master_cycle(station_.master(), now, station_.auto_ack_rei());
+  }
   for (auto* p : plugins_) {
     for (const auto& e : events_) p->on_event(e, station_, *report_, now);
   }

@@ -84,7 +84,8 @@ class MasterService final : public DeviceInstance {
   [[nodiscard]] rs4::device::Rs4MasterStation& station() { return station_; }
   [[nodiscard]] const rs4::device::Rs4MasterStation& station() const { return station_; }
   [[nodiscard]] gsd::GsdMasterSlaves& gsd_slaves() { return gsd_; }
-  // Every RS4 in data exchange with its F-host in RUN, every GSD slave in data exchange.
+  // Every RS4 in data exchange with its F-host in RUN, every GSD slave in data exchange with
+  // the F-hosts of its F-modules in RUN.
   [[nodiscard]] bool healthy() const;
 
  private:

@@ -15,6 +15,7 @@
 #include <memory>
 #include <vector>
 
+using rs4sim::bench::count_device_memory;
 using rs4sim::bench::heap_per_object;
 
 namespace rs4sim::gridscan {
@@ -178,9 +179,8 @@ void BM_MemoryPerDevice(benchmark::State& state) {
     }
     return d;
   };
-  const double per_device = heap_per_object(state, booted, true);  // the vector's array excluded
-  state.counters["sizeof_Device_B"] = static_cast<double>(sizeof(Device));
-  state.counters["heap_per_device_B"] = per_device;  // incl. the object itself
+  // The vector's array excluded.
+  count_device_memory<Device>(state, heap_per_object(state, booted, true));
 }
 BENCHMARK(BM_MemoryPerDevice)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 

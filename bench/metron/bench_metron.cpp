@@ -15,6 +15,7 @@
 #include <memory>
 #include <vector>
 
+using rs4sim::bench::count_device_memory;
 using rs4sim::bench::heap_per_object;
 
 namespace rs4sim::metron {
@@ -134,9 +135,7 @@ void BM_MemoryPerMetron(benchmark::State& state) {
     (void)d->take_transmit();
     return d;
   };
-  const double per_device = heap_per_object(state, answered);
-  state.counters["sizeof_Device_B"] = static_cast<double>(sizeof(Device));
-  state.counters["heap_per_device_B"] = per_device;  // incl. the object itself
+  count_device_memory<Device>(state, heap_per_object(state, answered));
 }
 BENCHMARK(BM_MemoryPerMetron)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 

@@ -18,41 +18,62 @@ PrmStationStatus PrmStationStatus::from_byte(std::uint8_t b) {
           bit(b, 4), bit(b, 3), static_cast<std::uint8_t>(b & 0x07U)};
 }
 
+namespace {
+
+// Where each DPV1_Status field stands: its byte (0..2 for DPV1_Status_1..3) and its bit, or
+// its mask for the fields kept in place. The one layout both directions read.
+struct FlagAt {
+  bool Dpv1Status::*member;
+  std::size_t byte;
+  unsigned bit;
+};
+struct FieldAt {
+  std::uint8_t Dpv1Status::*member;
+  std::size_t byte;
+  std::uint8_t mask;
+};
+
+constexpr FlagAt kDpv1Flags[] = {
+    {&Dpv1Status::dpv1_enable, 0, 7},
+    {&Dpv1Status::fail_safe, 0, 6},
+    {&Dpv1Status::publisher_enable, 0, 5},
+    {&Dpv1Status::wd_base_1ms, 0, 2},
+    {&Dpv1Status::enable_pull_plug_alarm, 1, 7},
+    {&Dpv1Status::enable_process_alarm, 1, 6},
+    {&Dpv1Status::enable_diagnostic_alarm, 1, 5},
+    {&Dpv1Status::enable_manufacturer_specific_alarm, 1, 4},
+    {&Dpv1Status::enable_status_alarm, 1, 3},
+    {&Dpv1Status::enable_update_alarm, 1, 2},
+    {&Dpv1Status::check_cfg_mode, 1, 0},
+    {&Dpv1Status::prm_cmd, 2, 7},
+    {&Dpv1Status::isom_req, 2, 4},
+    {&Dpv1Status::prm_structure, 2, 3},
+};
+constexpr FieldAt kDpv1Fields[] = {
+    {&Dpv1Status::status1_reserved, 0, 0x1B},
+    {&Dpv1Status::status2_reserved, 1, 0x02},
+    {&Dpv1Status::alarm_mode, 2, 0x07},
+    {&Dpv1Status::status3_reserved, 2, 0x60},
+};
+
+}  // namespace
+
 std::array<std::uint8_t, 3> Dpv1Status::to_bytes() const {
-  const auto s1 = static_cast<std::uint8_t>(flag(dpv1_enable, 7) | flag(fail_safe, 6) |
-                                            flag(publisher_enable, 5) | flag(wd_base_1ms, 2) |
-                                            (status1_reserved & 0x1BU));
-  const auto s2 = static_cast<std::uint8_t>(
-      flag(enable_pull_plug_alarm, 7) | flag(enable_process_alarm, 6) |
-      flag(enable_diagnostic_alarm, 5) | flag(enable_manufacturer_specific_alarm, 4) |
-      flag(enable_status_alarm, 3) | flag(enable_update_alarm, 2) | flag(check_cfg_mode, 0) |
-      (status2_reserved & 0x02U));
-  const auto s3 =
-      static_cast<std::uint8_t>(flag(prm_cmd, 7) | flag(isom_req, 4) | flag(prm_structure, 3) |
-                                (alarm_mode & 0x07U) | (status3_reserved & 0x60U));
-  return {s1, s2, s3};
+  std::array<std::uint8_t, 3> s{};
+  for (const auto& f : kDpv1Flags) {
+    s[f.byte] = static_cast<std::uint8_t>(s[f.byte] | flag(this->*f.member, f.bit));
+  }
+  for (const auto& f : kDpv1Fields) {
+    s[f.byte] = static_cast<std::uint8_t>(s[f.byte] | (this->*f.member & f.mask));
+  }
+  return s;
 }
 
 Dpv1Status Dpv1Status::from_bytes(std::uint8_t s1, std::uint8_t s2, std::uint8_t s3) {
+  const std::array<std::uint8_t, 3> s{s1, s2, s3};
   Dpv1Status d;
-  d.dpv1_enable = bit(s1, 7);
-  d.fail_safe = bit(s1, 6);
-  d.publisher_enable = bit(s1, 5);
-  d.wd_base_1ms = bit(s1, 2);
-  d.status1_reserved = static_cast<std::uint8_t>(s1 & 0x1BU);
-  d.enable_pull_plug_alarm = bit(s2, 7);
-  d.enable_process_alarm = bit(s2, 6);
-  d.enable_diagnostic_alarm = bit(s2, 5);
-  d.enable_manufacturer_specific_alarm = bit(s2, 4);
-  d.enable_status_alarm = bit(s2, 3);
-  d.enable_update_alarm = bit(s2, 2);
-  d.check_cfg_mode = bit(s2, 0);
-  d.status2_reserved = static_cast<std::uint8_t>(s2 & 0x02U);
-  d.prm_cmd = bit(s3, 7);
-  d.isom_req = bit(s3, 4);
-  d.prm_structure = bit(s3, 3);
-  d.alarm_mode = static_cast<std::uint8_t>(s3 & 0x07U);
-  d.status3_reserved = static_cast<std::uint8_t>(s3 & 0x60U);
+  for (const auto& f : kDpv1Flags) d.*f.member = bit(s[f.byte], f.bit);
+  for (const auto& f : kDpv1Fields) d.*f.member = static_cast<std::uint8_t>(s[f.byte] & f.mask);
   return d;
 }
 

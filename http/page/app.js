@@ -526,6 +526,51 @@ function drawGsd(st) {
   scheduleRender();
 }
 
+// ---- our master's F-hosts for GSD F-devices (`master`: rs4sim.v1.GsdMaster) --------------------
+// One row per F-module: its F-host's state, the fault that passivated it, the F-data received
+// and sent, and an ACK_REI button while ACK_REQ stands (GsdMaster.AcknowledgeF).
+const fHex = (b64) => bytesOf(b64, 0).map((b) => hex(b).toLowerCase()).join(" ") || "–";
+
+async function pollGsdMaster() {
+  let list;
+  try { list = await call("rs4sim.v1.GsdMaster/ListSlaves"); } catch (err) { return false; }
+  const body = $("gsd-fhost").tBodies[0];
+  body.replaceChildren();
+  for (const slave of list.slaves || []) {
+    for (const f of slave.fModules || []) body.append(fHostRow(Number(slave.address || 0), f));
+  }
+  $("gsd-fhost-panel").hidden = body.rows.length === 0;
+  return true;
+}
+
+function fHostRow(address, f) {
+  const slot = Number(f.slot || 0);
+  const row = el("tr", { class: "gsd-fhost", "data-address": address, "data-slot": slot,
+    "data-state": f.fState || "" });
+  const n = (k) => Number((f.counters || {})[k] || 0);
+  row.innerHTML = [
+    `<td>${address}</td>`, `<td>${slot}</td>`, `<td>${f.mode || "–"}</td>`,
+    `<td>${pill(f.fState, fClass(f.fState))}</td>`, `<td>${f.passivated ? "yes" : "no"}</td>`,
+    `<td>${f.ackReq ? pill("ACK_REQ", "warn") : "–"}</td>`,
+  ].join("");
+  row.append(el("td", {}, f.lastFault || "–"), el("td", { class: "f-in" }, fHex(f.fInputs)),
+    el("td", { class: "f-out" }, fHex(f.fOutputsSent)),
+    el("td", {}, `${n("crc_errors")} / ${n("number_errors")} / ${n("watchdog_timeouts")} / ${n("passivations")}`));
+  const cell = el("td");
+  const ack = el("button", { class: "ack-rei" }, "ACK_REI");
+  ack.disabled = !f.ackReq;
+  ack.addEventListener("click", async () => {
+    try {
+      await call("rs4sim.v1.GsdMaster/AcknowledgeF", { address, slot });
+      log(`GSD slave ${address} slot ${slot}: ACK_REI`);
+    } catch (err) { log(`ACK_REI ${address}/${slot}: ${err.message}`); }
+    pollGsdMaster();
+  });
+  cell.append(ack);
+  row.append(cell);
+  return row;
+}
+
 // ---- simulated time -------------------------------------------------------------------------
 // Read at the start and, on the simulated clock, four times a second: whoever moves the time
 // (a script over the API, another page) moves this clock too. True when the run is simulated.
@@ -641,6 +686,7 @@ async function start() {
   let polled = false;
   if (serves("BusMaster") && await pollMaster()) { polled = true; setInterval(pollMaster, 500); }
   if (serves("Archive") && await pollArchive()) { polled = true; setInterval(pollArchive, 2000); }
+  if (serves("GsdMaster") && await pollGsdMaster()) { polled = true; setInterval(pollGsdMaster, 500); }
   const gsd = serves("GsdStations") && await pollGsd();
   let gsdPoll = gsd ? setInterval(pollGsd, 1000) : null;
   if (!serves("Observation")) {

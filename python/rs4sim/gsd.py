@@ -22,6 +22,14 @@ The master side (rs4sim.v1.GsdMaster): `rs4sim master --gsd-slave 5:FILE --modul
     master.slave(5).data_exchange      # the master's view: DP state, diagnosis, Set_Prm bytes
     master.set_outputs(5, 2, b"\xbe\xef")  # what the master sends to the module in slot 2
     master.inputs(5, 1)                # what it received from the module in slot 1
+
+A PROFIsafe F-module has our F-host (docs/profisafe.md "Our master as F-host for GSD
+F-devices"; `rs4sim master --manual-ack` leaves ACK_REQ to the operator):
+
+    f = master.f_module(5, 0)          # f_state "run", mode "V1"/"V2", passivated, ack_req, ...
+    master.set_f_outputs(5, 0, b"\x01\x00\x00\x00")  # the F-data of its next safety PDU
+    master.f_module(5, 0).last_fault  # "CRC2 error" after a fault; f_state "ack-required"
+    master.acknowledge(5, 0)           # ACK_REI: reintegration
 """
 
 from ._units import renamed, whole
@@ -148,3 +156,33 @@ class GsdMaster(_Client):
     def outputs(self, address, slot):
         """What the master sends to the module in `slot` (0-based)."""
         return self.slave(address).modules[slot].outputs
+
+    # ---- PROFIsafe F-modules with our F-host ------------------------------------------------
+    def f_modules(self, address):
+        """[GsdMasterFModule]: the slave's PROFIsafe F-modules, slot order (no time): slot, mode
+        ("V1", "V2"), f_state ("startup", "run", "passivated", "ack-required"), passivated,
+        ack_req, last_fault, f_inputs, f_outputs, f_outputs_sent, the F-parameters written
+        (parameters) and the fault counters (counters, a dict: "crc_errors", ...)."""
+        return list(self.slave(address).f_modules)
+
+    def f_module(self, address, slot=0):
+        """GsdMasterFModule: the F-module in `slot` (0-based); KeyError when it is none."""
+        for f in self.f_modules(address):
+            if f.slot == slot:
+                return f
+        raise KeyError("slave %d has no F-module in slot %d" % (address, slot))
+
+    def f_wd_time(self, address, slot=0):
+        """The F-module's F_WD_Time in seconds (the F-host's watchdog)."""
+        return self.f_module(address, slot).parameters.f_wd_time_ms / 1000.0
+
+    def set_f_outputs(self, address, slot, data):
+        """The F-output data (bytes, exactly the F-module's f_data_length) of its next safety
+        PDU; 0 goes out instead while the F-host is passivated (no time)."""
+        self.stub.SetFOutputs(gsd_pb.SetGsdOutputsRequest(address=address, slot=slot,
+                                                          data=bytes(data)))
+
+    def acknowledge(self, address, slot=0):
+        """ACK_REI: the operator acknowledgement of the F-module's standing ACK_REQ; the
+        F-host reintegrates the device. FAILED_PRECONDITION when no ACK_REQ waits (no time)."""
+        self.stub.AcknowledgeF(gsd_pb.GsdFAcknowledgeRequest(address=address, slot=slot))

@@ -3,6 +3,8 @@
 #include "codec/reader.h"
 #include "codec/writer.h"
 
+#include <type_traits>
+
 namespace rs4sim::rs4::protocol {
 namespace {
 
@@ -107,15 +109,11 @@ Result<TransferAnswerBody> read_body(TransferCode code, codec::Reader& r) {
   return ProtocolError::kBadAnswerCode;
 }
 
-TransferCode body_code(const TransferAnswerBody& body) noexcept {
-  return std::visit(
-      Overloaded{[](const IdentifyAnswer&) { return TransferCode::kIdentify; },
-                 [](const UploadChunkAnswer&) { return TransferCode::kUploadChunk; },
-                 [](const DownloadBeginAnswer&) { return TransferCode::kDownloadBegin; },
-                 [](const DownloadChunkAnswer&) { return TransferCode::kDownloadChunk; },
-                 [](const DownloadCommitAnswer&) { return TransferCode::kDownloadCommit; },
-                 [](const DownloadBreakAnswer&) { return TransferCode::kDownloadBreak; }},
-      body);
+// Each request and answer type names the code it belongs to (kCode).
+template <class Variant>
+TransferCode code_of(const Variant& message) noexcept {
+  return std::visit([](const auto& m) { return std::remove_cvref_t<decltype(m)>::kCode; },
+                    message);
 }
 
 std::error_code write_body(codec::Appender<std::vector<std::uint8_t>>& w,
@@ -183,16 +181,7 @@ std::size_t Identification::chunk_count() const noexcept {
   return (std::size_t{set_size} + chunk_size - 1U) / chunk_size;
 }
 
-TransferCode request_code(const TransferRequest& request) noexcept {
-  return std::visit(
-      Overloaded{[](const IdentifyRequest&) { return TransferCode::kIdentify; },
-                 [](const UploadChunkRequest&) { return TransferCode::kUploadChunk; },
-                 [](const DownloadBeginRequest&) { return TransferCode::kDownloadBegin; },
-                 [](const DownloadChunkRequest&) { return TransferCode::kDownloadChunk; },
-                 [](const DownloadCommitRequest&) { return TransferCode::kDownloadCommit; },
-                 [](const DownloadBreakRequest&) { return TransferCode::kDownloadBreak; }},
-      request);
-}
+TransferCode request_code(const TransferRequest& request) noexcept { return code_of(request); }
 
 Result<std::vector<std::uint8_t>> encode_request(const TransferRequest& request) {
   return encode_request(request, TelegramPrefix{});
@@ -256,7 +245,7 @@ Result<std::vector<std::uint8_t>> encode_answer(const TransferAnswer& answer) {
   codec::Appender w(out);
   w.u8(static_cast<std::uint8_t>(answer.status));
   if (answer.status != TransferStatus::kOk) return out;
-  if (!answer.body || body_code(*answer.body) != answer.code) {
+  if (!answer.body || code_of(*answer.body) != answer.code) {
     return ProtocolError::kBadAnswerValue;
   }
   if (const auto ec = write_body(w, *answer.body)) return ec;

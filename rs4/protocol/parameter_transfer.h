@@ -69,18 +69,22 @@ enum class TransferStatus : std::uint8_t {
 
 // ---- requests (master → RS4) -----------------------------------------------------------
 struct IdentifyRequest {
+  static constexpr TransferCode kCode = TransferCode::kIdentify;
   friend bool operator==(const IdentifyRequest&, const IdentifyRequest&) = default;
 };
 struct UploadChunkRequest {
+  static constexpr TransferCode kCode = TransferCode::kUploadChunk;
   std::uint8_t chunk = 0;
   friend bool operator==(const UploadChunkRequest&, const UploadChunkRequest&) = default;
 };
 struct DownloadBeginRequest {
+  static constexpr TransferCode kCode = TransferCode::kDownloadBegin;
   std::uint16_t size = 0;   // bytes of the encoded set
   std::uint32_t crc32 = 0;  // CRC-32/ISO-HDLC of those bytes
   friend bool operator==(const DownloadBeginRequest&, const DownloadBeginRequest&) = default;
 };
 struct DownloadChunkRequest {
+  static constexpr TransferCode kCode = TransferCode::kDownloadChunk;
   std::uint8_t chunk = 0;
   std::span<const std::uint8_t> data;  // views the input when decoded
   friend bool operator==(const DownloadChunkRequest& a, const DownloadChunkRequest& b) {
@@ -89,9 +93,11 @@ struct DownloadChunkRequest {
   }
 };
 struct DownloadCommitRequest {
+  static constexpr TransferCode kCode = TransferCode::kDownloadCommit;
   friend bool operator==(const DownloadCommitRequest&, const DownloadCommitRequest&) = default;
 };
 struct DownloadBreakRequest {
+  static constexpr TransferCode kCode = TransferCode::kDownloadBreak;
   friend bool operator==(const DownloadBreakRequest&, const DownloadBreakRequest&) = default;
 };
 using TransferRequest =
@@ -139,10 +145,12 @@ struct Identification {
 inline constexpr std::size_t kIdentificationSize = 20;
 
 struct IdentifyAnswer {
+  static constexpr TransferCode kCode = TransferCode::kIdentify;
   Identification identification;
   friend bool operator==(const IdentifyAnswer&, const IdentifyAnswer&) = default;
 };
 struct UploadChunkAnswer {
+  static constexpr TransferCode kCode = TransferCode::kUploadChunk;
   std::uint8_t chunk = 0;
   std::uint8_t chunk_count = 0;
   std::uint32_t crc32 = 0;  // of data
@@ -150,20 +158,24 @@ struct UploadChunkAnswer {
   friend bool operator==(const UploadChunkAnswer&, const UploadChunkAnswer&) = default;
 };
 struct DownloadBeginAnswer {
+  static constexpr TransferCode kCode = TransferCode::kDownloadBegin;
   std::uint8_t chunk_count = 0;
   std::uint16_t chunk_size = 0;
   friend bool operator==(const DownloadBeginAnswer&, const DownloadBeginAnswer&) = default;
 };
 struct DownloadChunkAnswer {
+  static constexpr TransferCode kCode = TransferCode::kDownloadChunk;
   std::uint8_t chunk = 0;
   std::uint32_t echo_crc32 = 0;  // of the bytes the RS4 received
   friend bool operator==(const DownloadChunkAnswer&, const DownloadChunkAnswer&) = default;
 };
 struct DownloadCommitAnswer {
+  static constexpr TransferCode kCode = TransferCode::kDownloadCommit;
   std::uint32_t active_crc32 = 0;  // of the set now active (passwords kept)
   friend bool operator==(const DownloadCommitAnswer&, const DownloadCommitAnswer&) = default;
 };
 struct DownloadBreakAnswer {
+  static constexpr TransferCode kCode = TransferCode::kDownloadBreak;
   std::uint8_t flags = 0;  // kFlagFactoryDefault once rolled back
   friend bool operator==(const DownloadBreakAnswer&, const DownloadBreakAnswer&) = default;
 };

@@ -25,6 +25,14 @@ inline Options node_options(std::uint8_t node) {
   return o;
 }
 
+// The line a device with options `o` runs on when the user asks for 9600 baud without
+// parity.
+inline stream::LineSettings line_asked_for_9600_8n1(Options o) {
+  o.baud = 9600;
+  o.parity = stream::Parity::kNone;
+  return Device(o).line_settings();
+}
+
 // The one frame answering `request` within the rig's 100 ms window (a test failure if there
 // is not exactly one).
 inline Bytes only_reply(Rig& rig, const Bytes& request) {

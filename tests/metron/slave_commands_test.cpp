@@ -160,20 +160,30 @@ TEST(MetronSlave, ResetSoftwareNeverReplies) {
   EXPECT_EQ(rig.exchange({0x02, 0x01, 0x0C, 0xF3}).size(), 1U);
 }
 
+// The reply to the message sent at `t0` goes out at `t0 + late`, not a nanosecond earlier.
+void expect_reply_at(Rig& rig, stream::TimePoint t0, stream::Duration late) {
+  rig.run_to(t0 + late - 1ns);
+  EXPECT_FALSE(rig.on_the_wire()) << "not given out yet";
+  rig.run_to(t0 + late);
+  EXPECT_TRUE(rig.on_the_wire()) << "given out now";
+}
+
+// One reply by `t0 + 20ms`, started at `start`.
+void expect_one_reply_started(Rig& rig, stream::TimePoint t0, stream::TimePoint start) {
+  rig.run_to(t0 + 20ms);
+  const auto s = rig.take();
+  ASSERT_EQ(s.size(), 1U);
+  EXPECT_EQ(s[0].start, start);
+}
+
 TEST(MetronSlave, ReplyTimingIsEquation3) {
   // t_late = n_byte * 11 * 0.05208 ms + t_response / 2 from the start of the host's message
   // [METRON manual "Slave line mode"]: 4 bytes -> 44 bits / 19200 = 2.291667 ms, + 10 ms.
   Rig rig(slave_options());
   const auto t0 = rig.now();
   rig.send({0x02, 0x01, 0x0C, 0xF3});
-  rig.run_to(t0 + 12'291'666ns);
-  EXPECT_FALSE(rig.on_the_wire());  // not given out yet
-  rig.run_to(t0 + 12'291'667ns);
-  EXPECT_TRUE(rig.on_the_wire());  // given out now: its 6 characters take 3.44 ms
-  rig.run_to(t0 + 20ms);
-  const auto s = rig.take();
-  ASSERT_EQ(s.size(), 1U);
-  EXPECT_EQ(s[0].start, t0 + 12'291'667ns);
+  expect_reply_at(rig, t0, 12'291'667ns);  // its 6 characters take 3.44 ms
+  expect_one_reply_started(rig, t0, t0 + 12'291'667ns);
 }
 
 // The same with t_response 40 ms set by --mode slave,t-response=40: 2.291667 ms + 20 ms.
@@ -183,10 +193,7 @@ TEST(MetronSlave, ReplyTimingFollowsTheUsersTResponse) {
   Rig rig(o);
   const auto t0 = rig.now();
   rig.send({0x02, 0x01, 0x0C, 0xF3});
-  rig.run_to(t0 + 22'291'666ns);
-  EXPECT_FALSE(rig.on_the_wire());
-  rig.run_to(t0 + 22'291'667ns);
-  EXPECT_TRUE(rig.on_the_wire());
+  expect_reply_at(rig, t0, 22'291'667ns);
 }
 
 TEST(MetronSlave, ReplyTimingCountsFromTheFirstByte) {
@@ -195,18 +202,12 @@ TEST(MetronSlave, ReplyTimingCountsFromTheFirstByte) {
   rig.send({0x02, 0x01});
   rig.run_for(1ms);
   rig.send({0x0C, 0xF3});
-  rig.run_to(t0 + 20ms);
-  const auto s = rig.take();
-  ASSERT_EQ(s.size(), 1U);
-  EXPECT_EQ(s[0].start, t0 + 12'291'667ns);
+  expect_one_reply_started(rig, t0, t0 + 12'291'667ns);
 }
 
 TEST(MetronSlave, LineIs19200_8E1) {
-  auto o = slave_options();
-  o.baud = 9600;
-  o.parity = stream::Parity::kNone;
-  Device d(o);
-  EXPECT_EQ(d.line_settings(), (stream::LineSettings{19200, 8, stream::Parity::kEven, 1}));
+  EXPECT_EQ(line_asked_for_9600_8n1(slave_options()),
+            (stream::LineSettings{19200, 8, stream::Parity::kEven, 1}));
 }
 
 }  // namespace

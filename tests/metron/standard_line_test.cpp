@@ -138,11 +138,8 @@ TEST(MetronStandard, InputStandbyRepeatsTheLastMessage) {
 }
 
 TEST(MetronStandard, LineSettingsAreConfigured) {
-  auto o = standard(ReportingMode::kContinuous);
-  o.baud = 9600;
-  o.parity = stream::Parity::kNone;
-  Device d(o);
-  EXPECT_EQ(d.line_settings(), (stream::LineSettings{9600, 8, stream::Parity::kNone, 1}));
+  EXPECT_EQ(line_asked_for_9600_8n1(standard(ReportingMode::kContinuous)),
+            (stream::LineSettings{9600, 8, stream::Parity::kNone, 1}));
 }
 
 }  // namespace

@@ -395,6 +395,18 @@ TEST_F(DeviceSync, ParameterChangeThroughThePcAdapterIsUploaded) {
   EXPECT_EQ(log.back().reason, "pc-adapter-removed");
 }
 
+// Cuts the link between the master and station 4 both ways until seg.bus().clear_faults().
+void cut_link(rs4::device::Rs4Segment& seg) {
+  dp::link::Fault lost;
+  lost.kind = dp::link::FaultKind::kDrop;
+  lost.count = 0;  // until cleared
+  lost.to = 4;
+  seg.bus().inject(lost);
+  lost.to.reset();
+  lost.from = 4;
+  seg.bus().inject(lost);
+}
+
 // The class 1 link is lost in the middle of a download: the device rolls back to factory
 // settings by itself, the FB stops with the write position of the chunk and reports
 // CONFIG_SET_TO_DEFAULT; once the link is back the retry downloads the set.
@@ -404,14 +416,7 @@ TEST_F(DeviceSync, LinkLossMidDownloadLeavesFactorySettingsAndTheRetryRestores) 
   boot(rs4::scanner::factory_default());
   ASSERT_TRUE(run_sync(200s, Step::kDownloadChunk));
   ASSERT_TRUE(sync.active());
-  dp::link::Fault lost;
-  lost.kind = dp::link::FaultKind::kDrop;
-  lost.count = 0;  // until cleared
-  lost.to = 4;
-  seg.bus().inject(lost);
-  lost.to.reset();
-  lost.from = 4;
-  seg.bus().inject(lost);
+  cut_link(seg);
   ASSERT_TRUE(drive(120s));
   EXPECT_EQ(sync.outputs().error_number_fb, 0x2401) << std::hex << sync.outputs().error_number_fb;
   EXPECT_EQ(sync.outputs().error_code_sfc, 0x80C5);  // no response: W#16#80C5
@@ -425,18 +430,6 @@ TEST_F(DeviceSync, LinkLossMidDownloadLeavesFactorySettingsAndTheRetryRestores) 
   ASSERT_TRUE(run_sync());
   EXPECT_EQ(sync.outputs(), FbOutputs{}) << std::hex << sync.outputs().error_number_fb;
   EXPECT_EQ(seg.device().scanner().transfer_checksum(), rs4::scanner::transfer_checksum(stored));
-}
-
-// Cuts the link between the master and station 4 both ways until seg.bus().clear_faults().
-void cut_link(rs4::device::Rs4Segment& seg) {
-  dp::link::Fault lost;
-  lost.kind = dp::link::FaultKind::kDrop;
-  lost.count = 0;  // until cleared
-  lost.to = 4;
-  seg.bus().inject(lost);
-  lost.to.reset();
-  lost.from = 4;
-  seg.bus().inject(lost);
 }
 
 // What `cli_rs232_scenario2` met on a loaded machine, on the manual clock: first commissioning

@@ -94,9 +94,7 @@ class PositionTest : public ::testing::TestWithParam<Case> {
         break;
       case Scenario::kUpload:  // the PC adapter was removed: a new set on the device
         h_.store(stored, "1001");
-        h_.device.set = SyncHarness::custom_set(5);
-        h_.device.reason = SyncReason::kPcAdapterRemoved;
-        h_.device.direction = SyncDirection::kUpload;
+        h_.device_changed_to(SyncHarness::custom_set(5), SyncReason::kPcAdapterRemoved);
         break;
       case Scenario::kDownload:  // the device fell back to factory settings
         h_.store(stored, "1001");

@@ -60,10 +60,7 @@ TEST(Retentive, RejectsDamagedRecords) {
 // again), and the next sync downloads the stored set completely.
 TEST(Restart, MidDownloadFailsSafelyAndTheRetryRestoresTheSet) {
   SyncHarness h;
-  const auto set = SyncHarness::custom_set(3);
-  h.store(set, "1001");
-  h.device.factory = true;
-  h.device.direction = rs4::protocol::SyncDirection::kDownload;
+  const auto set = h.store_for_a_factory_device();
   ASSERT_TRUE(h.run_sync(Step::kDownloadCommit));  // all chunks written, commit not yet
   const auto saved = encode_retentive(h.sync->snapshot());
   EXPECT_EQ(saved[1], 0x01);  // sync open
@@ -91,11 +88,7 @@ TEST(Restart, MidDownloadFailsSafelyAndTheRetryRestoresTheSet) {
     }
   }
   // The device asks again (retry); after the delay the set goes back completely.
-  h.advance(h.config.retry_delay);
-  ASSERT_TRUE(h.run_sync());
-  EXPECT_EQ(h.sync->outputs(), FbOutputs{});
-  EXPECT_EQ(h.device.set, set);
-  EXPECT_TRUE(h.device.released);
+  h.expect_retry_restores(set);
 }
 
 TEST(Restart, DamagedRecordIsTakenAsAnOpenSync) {

@@ -51,9 +51,7 @@ TEST(Scenario, ParameterChangeReplacesTheCurrentSetAndHistoryKeepsTheOld) {
   SyncHarness h;
   const auto old_set = SyncHarness::custom_set(3);
   const auto v1 = h.store(old_set, "1001");
-  h.device.set = SyncHarness::custom_set(5);
-  h.device.reason = SyncReason::kPcAdapterRemoved;
-  h.device.direction = SyncDirection::kUpload;
+  h.device_changed_to(SyncHarness::custom_set(5), SyncReason::kPcAdapterRemoved);
   ASSERT_TRUE(h.run_sync());
   EXPECT_EQ(h.sync->outputs(), FbOutputs{});
   EXPECT_TRUE(h.device.released);
@@ -75,9 +73,7 @@ TEST(Scenario, ParameterChangeReplacesTheCurrentSetAndHistoryKeepsTheOld) {
 TEST(Scenario, UserParametrisationIsUploadedUnderItsOwnReason) {
   SyncHarness h;
   h.store(SyncHarness::custom_set(3), "1001");
-  h.device.set = SyncHarness::custom_set(6);
-  h.device.reason = SyncReason::kUserParametrisation;
-  h.device.direction = SyncDirection::kUpload;
+  h.device_changed_to(SyncHarness::custom_set(6), SyncReason::kUserParametrisation);
   ASSERT_TRUE(h.run_sync());
   EXPECT_EQ(h.sync->outputs(), FbOutputs{});
   EXPECT_EQ(h.real->current(SyncHarness::kStation).value().set.blob, h.device.set);
@@ -94,9 +90,7 @@ TEST(Scenario, AnUploadRecordsItsScenarioWhoAndWhere) {
   h.config.recording = Recording{{"plc-team", "ws-maint-03"}, "Hamburg", "Press line 1", false};
   h.sync = std::make_unique<ProxySync>(h.config, h.archive);
   h.store(SyncHarness::custom_set(3), "1001");
-  h.device.set = SyncHarness::custom_set(5);
-  h.device.reason = SyncReason::kPcAdapterRemoved;
-  h.device.direction = SyncDirection::kUpload;
+  h.device_changed_to(SyncHarness::custom_set(5), SyncReason::kPcAdapterRemoved);
   ASSERT_TRUE(h.run_sync());
   const auto v = h.real->current(SyncHarness::kStation).value().version;
   EXPECT_EQ(v.note, "scenario 2, parameter change: the device's set uploaded by the proxy");
@@ -117,9 +111,7 @@ TEST(Scenario, SkipIdenticalStoresNoVersionForAnUploadOfTheCurrentSet) {
     h.config.recording.skip_identical = skip;
     h.sync = std::make_unique<ProxySync>(h.config, h.archive);
     const auto v1 = h.store(SyncHarness::custom_set(3), "1001");
-    h.device.set = SyncHarness::custom_set(3);
-    h.device.reason = SyncReason::kPcAdapterRemoved;
-    h.device.direction = SyncDirection::kUpload;
+    h.device_changed_to(SyncHarness::custom_set(3), SyncReason::kPcAdapterRemoved);
     ASSERT_TRUE(h.run_sync());
     EXPECT_EQ(h.sync->outputs(), FbOutputs{});
     EXPECT_TRUE(h.device.released);
@@ -131,9 +123,7 @@ TEST(Scenario, SkipIdenticalStoresNoVersionForAnUploadOfTheCurrentSet) {
 
 TEST(Scenario, NormalStartReleasesAtOnceThenVerifiesInTheBackground) {
   SyncHarness h;
-  const auto set = SyncHarness::custom_set(3);
-  h.store(set, "1001");
-  h.device.set = set;
+  const auto set = h.store_the_devices_set();
   ASSERT_TRUE(h.run_sync());
   EXPECT_EQ(h.sync->outputs(), FbOutputs{});
   EXPECT_TRUE(h.device.released);
@@ -174,10 +164,7 @@ TEST(Scenario, DeviceExchangeDownloadsTheStoredSetAndStoresTheNewSerial) {
 
 TEST(Scenario, FactoryDeviceWithAStoredSetGetsItBack) {
   SyncHarness h;
-  const auto set = SyncHarness::custom_set(3);
-  h.store(set, "1001");
-  h.device.factory = true;
-  h.device.direction = SyncDirection::kDownload;
+  const auto set = h.store_for_a_factory_device();
   ASSERT_TRUE(h.run_sync());
   EXPECT_EQ(h.sync->outputs(), FbOutputs{});
   EXPECT_EQ(h.device.set, set);
@@ -213,9 +200,7 @@ TEST(Scenario, PendingRestoreIsDownloadedAndMarkedDone) {
 // downloads the stored set.
 TEST(Scenario, FailedBackgroundVerifyTellsTheDeviceAndTheRetryRestores) {
   SyncHarness h;
-  const auto set = SyncHarness::custom_set(3);
-  h.store(set, "1001");
-  h.device.set = set;
+  const auto set = h.store_the_devices_set();
   h.inject = Injection{Step::kVerifyUpload1, FailureKind::kRead};
   ASSERT_TRUE(h.run_sync());
   const auto& out = h.sync->outputs();
@@ -235,19 +220,13 @@ TEST(Scenario, FailedBackgroundVerifyTellsTheDeviceAndTheRetryRestores) {
   ASSERT_EQ(log.size(), 2u);
   EXPECT_EQ(log[1].reason, "background-verify");
   EXPECT_EQ(log[1].outcome, storage::SyncOutcome::kFailed);
-  h.advance(h.config.retry_delay);
-  ASSERT_TRUE(h.run_sync());
-  EXPECT_EQ(h.sync->outputs(), FbOutputs{});
-  EXPECT_EQ(h.device.set, set);
-  EXPECT_TRUE(h.device.released);
+  h.expect_retry_restores(set);
 }
 
 // ---- comparisons: the adapter error sent with 99 failed
 TEST(Comparison, EchoCrcOfAChunkWrongBreaksTheDownload) {
   SyncHarness h;
-  h.store(SyncHarness::custom_set(3), "1001");
-  h.device.factory = true;
-  h.device.direction = SyncDirection::kDownload;
+  h.store_for_a_factory_device();
   int chunks = 0;
   h.device.answer_hook = [&](std::uint8_t cmd, std::vector<std::uint8_t>& answer) {
     if (cmd == 0x63 && ++chunks == 3) answer.back() ^= 0x01;  // echo CRC of chunk 2
@@ -284,9 +263,7 @@ TEST(Comparison, ChunkDiffersOnReadRepetition) {
 
 TEST(Comparison, ActiveCrcAfterCommitWrong) {
   SyncHarness h;
-  h.store(SyncHarness::custom_set(3), "1001");
-  h.device.factory = true;
-  h.device.direction = SyncDirection::kDownload;
+  h.store_for_a_factory_device();
   h.device.answer_hook = [](std::uint8_t cmd, std::vector<std::uint8_t>& answer) {
     if (cmd == 0x64) answer.back() ^= 0x01;
   };
@@ -311,9 +288,7 @@ TEST(Comparison, IdentifyDiffersOnRepetition) {
 // bad-record position is ERROR_NUMBER_FB (22 02: download begin [RS4 manual §6.4]).
 TEST(DeviceRefusal, StatusByteIsErrorNumberRs4) {
   SyncHarness h;
-  h.store(SyncHarness::custom_set(3), "1001");
-  h.device.factory = true;
-  h.device.direction = SyncDirection::kDownload;
+  h.store_for_a_factory_device();
   h.device.answer_hook = [](std::uint8_t cmd, std::vector<std::uint8_t>& answer) {
     if (cmd != 0x62) return;
     rs4::protocol::TransferAnswer a;  // the RS4's refusal of a begin with another set size
@@ -335,9 +310,7 @@ TEST(DeviceRefusal, StatusByteIsErrorNumberRs4) {
 // tests/rs4/adapter/proxy_commands_test.cpp, DownloadOutsideASyncIsRefused).
 TEST(DeviceRefusal, DownloadOutsideTheSyncIsTheRs4sWrongPassword) {
   SyncHarness h;
-  h.store(SyncHarness::custom_set(3), "1001");
-  h.device.factory = true;
-  h.device.direction = SyncDirection::kDownload;
+  h.store_for_a_factory_device();
   std::vector<std::uint8_t> refusal;
   h.device.answer_hook = [&](std::uint8_t cmd, std::vector<std::uint8_t>& answer) {
     if (cmd == 0x60) h.device.sync_running = false;
@@ -468,19 +441,13 @@ TEST(Timing, FlowState010EndsTheSyncAtOnce) {
 
 TEST(Retry, FailedSyncIsRetriedAfterTheDelayAndSucceeds) {
   SyncHarness h;
-  const auto set = SyncHarness::custom_set(3);
-  h.store(set, "1001");
-  h.device.set = set;
+  const auto set = h.store_the_devices_set();
   h.inject = Injection{Step::kIdentify1, FailureKind::kRead};
   ASSERT_TRUE(h.run_sync());
   EXPECT_EQ(h.sync->outputs().error_number_fb, 0x0501);
   EXPECT_TRUE(h.device.request);  // the device asks again (reason retry)
   EXPECT_FALSE(h.run_sync());     // too early
-  h.advance(h.config.retry_delay);
-  ASSERT_TRUE(h.run_sync());  // outputs reset, the stored set goes back
-  EXPECT_EQ(h.sync->outputs(), FbOutputs{});
-  EXPECT_EQ(h.device.set, set);
-  EXPECT_TRUE(h.device.released);
+  h.expect_retry_restores(set);   // outputs reset, the stored set goes back
 }
 
 // [RS4 manual §6.4]: a new run of the FB resets ERROR_NUMBER_FB, ERROR_CODE_SFC and
@@ -513,9 +480,7 @@ TEST(Retry, ConfigSetToDefaultStaysOneThroughTheRetryDownload) {
 // A proxy that starts new (no earlier output) learns the flag from the device's 98 answer.
 TEST(Retry, ConfigSetToDefaultComesFromTheBeginAnswer) {
   SyncHarness h;
-  h.store(SyncHarness::custom_set(3), "1001");
-  h.device.factory = true;
-  h.device.direction = SyncDirection::kDownload;
+  h.store_for_a_factory_device();
   ASSERT_FALSE(h.sync->outputs().config_set_to_default);
   ASSERT_TRUE(h.run_sync(Step::kDownloadBegin));
   EXPECT_TRUE(h.sync->outputs().config_set_to_default);

@@ -7,9 +7,12 @@
 #include "tests/proxy/device_double.h"
 #include "tests/storage/archive_test_support.h"
 
+#include <gtest/gtest.h>
+
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rs4sim::proxy::testing {
@@ -109,6 +112,37 @@ class SyncHarness {
   bool resume(std::optional<Step> stop_at = std::nullopt);
   // Advances the clock.
   void advance(dp::Duration d) { now += d; }
+  // custom_set(3) stored from serial "1001", and a device on factory settings that asks for a
+  // download: where the download scenarios start. Returns the stored set.
+  std::vector<std::uint8_t> store_for_a_factory_device() {
+    auto set = custom_set(3);
+    store(set, "1001");
+    device.factory = true;
+    device.direction = rs4::protocol::SyncDirection::kDownload;
+    return set;
+  }
+  // custom_set(3) stored from serial "1001" and held by the device too. Returns the set.
+  std::vector<std::uint8_t> store_the_devices_set() {
+    auto set = custom_set(3);
+    store(set, "1001");
+    device.set = set;
+    return set;
+  }
+  // The device asks to upload its own `set`, changed for `reason`.
+  void device_changed_to(std::vector<std::uint8_t> set, rs4::protocol::SyncReason reason) {
+    device.set = std::move(set);
+    device.reason = reason;
+    device.direction = rs4::protocol::SyncDirection::kUpload;
+  }
+  // After a failed sync: the retry, config.retry_delay later, downloads `set` completely and
+  // releases the device.
+  void expect_retry_restores(const std::vector<std::uint8_t>& set) {
+    advance(config.retry_delay);
+    ASSERT_TRUE(run_sync());
+    EXPECT_EQ(sync->outputs(), FbOutputs{});
+    EXPECT_EQ(device.set, set);
+    EXPECT_TRUE(device.released);
+  }
 
   storage::testing::TempDir dir;
   std::unique_ptr<storage::SqliteArchive> real;

@@ -33,9 +33,7 @@ TEST(SyncLog, AFirstCommissioningWithNothingStoredLogsNoTransfer) {
 
 TEST(SyncLog, AFactoryDeviceThatGetsTheStoredSetLogsADownload) {
   SyncHarness h;
-  h.store(SyncHarness::custom_set(3), "1001");
-  h.device.factory = true;
-  h.device.direction = SyncDirection::kDownload;
+  h.store_for_a_factory_device();
   ASSERT_TRUE(h.run_sync());
   const auto log = log_of(h);
   ASSERT_EQ(log.size(), 1u);

@@ -98,6 +98,15 @@ struct Bench {
     return master.take_transmit();
   }
 
+  // Slave `a`'s DL reply to the master's data exchange request (SRD high, FCV and FCB set).
+  std::optional<fdl::Telegram> data_exchange_reply(std::uint8_t a) {
+    fdl::Telegram req;
+    req.da = a;
+    req.sa = 0;
+    req.fc = fdl::FrameControl::request(fdl::RequestFunction::kSrdHigh, true, true);
+    return answer(req, prm);
+  }
+
   void exchange_scripted() {
     if (auto t = request()) {
       if (auto r = answer(*t, prm)) master.on_telegram(*r, now);
@@ -110,11 +119,7 @@ void BM_MasterDataExchange(benchmark::State& state) {
   // Pre-built DL replies per slave: the loop measures the master only.
   std::array<std::optional<fdl::Telegram>, 128> replies;
   for (std::uint8_t a = 1; a <= state.range(0); ++a) {
-    fdl::Telegram req;
-    req.da = a;
-    req.sa = 0;
-    req.fc = fdl::FrameControl::request(fdl::RequestFunction::kSrdHigh, true, true);
-    replies[a] = answer(req, b.prm);
+    replies[a] = b.data_exchange_reply(a);
   }
   for (auto _ : state) {
     auto t = b.request();
@@ -132,11 +137,7 @@ void BM_MasterDataExchangeWire(benchmark::State& state) {
   Bench b(static_cast<int>(state.range(0)));
   std::array<std::vector<std::uint8_t>, 128> replies;
   for (std::uint8_t a = 1; a <= state.range(0); ++a) {
-    fdl::Telegram req;
-    req.da = a;
-    req.sa = 0;
-    req.fc = fdl::FrameControl::request(fdl::RequestFunction::kSrdHigh, true, true);
-    fdl::encode(*answer(req, b.prm), replies[a]);
+    fdl::encode(*b.data_exchange_reply(a), replies[a]);
   }
   std::vector<std::uint8_t> wire;
   wire.reserve(fdl::kMaxTelegramSize);

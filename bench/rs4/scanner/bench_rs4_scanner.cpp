@@ -52,6 +52,24 @@ void typical_scene(Scene& s) {
   (void)s.add(Wall{{-3500, 3000}, {-1500, 3200}});
 }
 
+// Iterations as scans per second.
+void count_scans(benchmark::State& state) {
+  state.counters["scans/s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+// A scanner in the typical scene, powered on at `now` and booted (30 s); `now` follows.
+struct BootedScanner {
+  Scanner s;
+  TimePoint now{std::chrono::hours(1)};
+  BootedScanner() {
+    typical_scene(s.edit_scene(now));
+    s.power_on(now);
+    now += std::chrono::seconds(30);
+    s.advance(now);
+  }
+};
+
 void BM_RenderAndEvaluate(benchmark::State& state) {
   Scene scene;
   typical_scene(scene);
@@ -62,45 +80,33 @@ void BM_RenderAndEvaluate(benchmark::State& state) {
     FieldFlags f = evaluate(contour, params.pairs[0]);
     benchmark::DoNotOptimize(f);
   }
-  state.counters["scans/s"] =
-      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  count_scans(state);
 }
 BENCHMARK(BM_RenderAndEvaluate);
 
 // One full scan of the Scanner per iteration with a moving obstacle (re-render every scan).
 void BM_ScannerScanMovingObstacle(benchmark::State& state) {
-  Scanner s;
-  TimePoint now{std::chrono::hours(1)};
-  typical_scene(s.edit_scene(now));
-  const auto walker = s.edit_scene(now).add(Circle{{2000, 3000}, 150});
-  s.power_on(now);
-  now += std::chrono::seconds(30);
-  s.advance(now);
+  BootedScanner b;
+  const auto walker = b.s.edit_scene(b.now).add(Circle{{2000, 3000}, 150});
   double dx = 5;
   for (auto _ : state) {
-    (void)s.edit_scene(now).move(walker.value(), dx, 0);
+    (void)b.s.edit_scene(b.now).move(walker.value(), dx, 0);
     dx = -dx;
-    now += milliseconds(40);
-    s.advance(now);
-    benchmark::DoNotOptimize(s.ossd());
+    b.now += milliseconds(40);
+    b.s.advance(b.now);
+    benchmark::DoNotOptimize(b.s.ossd());
   }
-  state.counters["scans/s"] =
-      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  count_scans(state);
 }
 BENCHMARK(BM_ScannerScanMovingObstacle);
 
 // Unchanged scene: steady scans cost only the counter update.
 void BM_ScannerSteadyScan(benchmark::State& state) {
-  Scanner s;
-  TimePoint now{std::chrono::hours(1)};
-  typical_scene(s.edit_scene(now));
-  s.power_on(now);
-  now += std::chrono::seconds(30);
-  s.advance(now);
+  BootedScanner b;
   for (auto _ : state) {
-    now += milliseconds(40);
-    s.advance(now);
-    benchmark::DoNotOptimize(s.status());
+    b.now += milliseconds(40);
+    b.s.advance(b.now);
+    benchmark::DoNotOptimize(b.s.status());
   }
 }
 BENCHMARK(BM_ScannerSteadyScan);
@@ -128,24 +134,29 @@ void BM_ScannerMemory(benchmark::State& state) {
 }
 BENCHMARK(BM_ScannerMemory);
 
+// Iterations as parameter sets (kParameterSetSize bytes each) per second.
+void count_sets(benchmark::State& state) {
+  state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(kParameterSetSize));
+}
+
 void BM_ParameterSetEncode(benchmark::State& state) {
   const ParameterSet p = factory_default();
   for (auto _ : state) benchmark::DoNotOptimize(encode(p));
-  state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(kParameterSetSize));
+  count_sets(state);
 }
 BENCHMARK(BM_ParameterSetEncode);
 
 void BM_ParameterSetDecodeValidate(benchmark::State& state) {
   const auto bytes = encode(factory_default());
   for (auto _ : state) benchmark::DoNotOptimize(decode_and_validate(bytes));
-  state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(kParameterSetSize));
+  count_sets(state);
 }
 BENCHMARK(BM_ParameterSetDecodeValidate);
 
 void BM_ParameterSetChecksum(benchmark::State& state) {
   const ParameterSet p = factory_default();
   for (auto _ : state) benchmark::DoNotOptimize(checksum(p));
-  state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(kParameterSetSize));
+  count_sets(state);
 }
 BENCHMARK(BM_ParameterSetChecksum);
 

@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <utility>
+
 namespace rs4sim::rs4::adapter {
 namespace {
 
@@ -18,24 +21,20 @@ TEST(InputByte, EachBitFromTheSpecTable) {
   EXPECT_EQ(encode_input_byte(b), 0x00);
   b.ossd = true;
   EXPECT_EQ(encode_input_byte(b), 0x80);
-  b = {};
-  b.error = true;
-  EXPECT_EQ(encode_input_byte(b), 0x60);
-  b = {};
-  b.not_operational = true;
-  EXPECT_EQ(encode_input_byte(b), 0x50);
-  b = {};
-  b.rs232_active = true;
-  EXPECT_EQ(encode_input_byte(b), 0x48);
-  b = {};
-  b.proxy_request = true;
-  EXPECT_EQ(encode_input_byte(b), 0x44);
-  b = {};
-  b.protective_field = true;
-  EXPECT_EQ(encode_input_byte(b), 0x42);
-  b = {};
-  b.warning_field = true;
-  EXPECT_EQ(encode_input_byte(b), 0x41);
+  // Each other bit alone, over the warning output's 1 in bit 6.
+  const std::pair<bool InputBits::*, std::uint8_t> alone[] = {
+      {&InputBits::error, 0x60},
+      {&InputBits::not_operational, 0x50},
+      {&InputBits::rs232_active, 0x48},
+      {&InputBits::proxy_request, 0x44},
+      {&InputBits::protective_field, 0x42},
+      {&InputBits::warning_field, 0x41},
+  };
+  for (const auto& [bit, byte] : alone) {
+    b = {};
+    b.*bit = true;
+    EXPECT_EQ(encode_input_byte(b), byte) << int{byte};
+  }
 }
 
 TEST(InputByte, DecodeFixedBytes) {

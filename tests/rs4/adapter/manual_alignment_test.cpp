@@ -14,6 +14,20 @@ struct Aligned : ::testing::Test {
     ASSERT_TRUE(rig.boot_and_release());
     rig.control.alarms.clear();
   }
+  // The error bit of a one-shot adapter error raised at `at`, with OSSD 0, until its going
+  // alarm 500 ms after the error (the `going`-th), and the F-host sees the OSSD bit again:
+  // both sides of the bound [RS4 manual §5.1.1, §5.3.2].
+  void expect_error_bit_until_going_alarm(dp::TimePoint at, std::size_t going,
+                                          const char* going_note) {
+    rig.advance(499ms);
+    EXPECT_EQ(rig.adapter.input_byte() & (kInputError | kInputOssd), kInputError) << "499 ms";
+    EXPECT_EQ(rig.alarms_of(1, 2), going - 1);
+    rig.advance(1ms);
+    EXPECT_EQ(rig.now - at, 500ms);
+    EXPECT_EQ(rig.alarms_of(1, 2), going) << going_note;
+    EXPECT_EQ(rig.adapter.input_byte() & (kInputError | kInputOssd), kInputOssd) << "500 ms";
+    rig.run(40ms);
+  }
 };
 
 // [RS4 manual §5.1.1] bit 5 "(OSSD = 0 im Fehlerfall)" [docs/decisions.md#rs4-error-bit]: a
@@ -26,14 +40,7 @@ TEST_F(Aligned, AdapterErrorSetsTheErrorBitAndOssd0UntilTheGoingAlarm) {
   rig.advance(0ms);
   EXPECT_EQ(rig.adapter.input_byte() & (kInputError | kInputOssd), kInputError) << "at once";
   EXPECT_TRUE(rig.adapter.scanner().ossd()) << "the RS4 itself keeps protecting";
-  rig.advance(499ms);
-  EXPECT_EQ(rig.adapter.input_byte() & (kInputError | kInputOssd), kInputError) << "499 ms";
-  EXPECT_EQ(rig.alarms_of(1, 2), 0u);
-  rig.advance(1ms);
-  EXPECT_EQ(rig.now - at, 500ms);
-  EXPECT_EQ(rig.alarms_of(1, 2), 1u) << "going at 500 ms";
-  EXPECT_EQ(rig.adapter.input_byte() & (kInputError | kInputOssd), kInputOssd) << "500 ms";
-  rig.run(40ms);
+  expect_error_bit_until_going_alarm(at, 1, "going at 500 ms");
   EXPECT_TRUE(rig.ossd()) << "the F-host sees the OSSD bit again";
 }
 
@@ -138,14 +145,7 @@ TEST_F(Aligned, OneShotErrorWithADirtyWindowGoesAfter500ms) {
   const auto at = rig.now;
   rig.write({0x00, 0x05, 0x00, 0x01, 0x90});  // block 1 without block 0: 0x2A0B
   ASSERT_EQ(rig.adapter.error_memory().last_error().uc2_error, 0x2A0B);
-  rig.advance(499ms);
-  EXPECT_EQ(rig.adapter.input_byte() & (kInputError | kInputOssd), kInputError) << "499 ms";
-  EXPECT_EQ(rig.alarms_of(1, 2), 1u);
-  rig.advance(1ms);
-  EXPECT_EQ(rig.now - at, 500ms);
-  EXPECT_EQ(rig.alarms_of(1, 2), 2u) << "going at 500 ms despite the warning";
-  EXPECT_EQ(rig.adapter.input_byte() & (kInputError | kInputOssd), kInputOssd) << "500 ms";
-  rig.run(40ms);
+  expect_error_bit_until_going_alarm(at, 2, "going at 500 ms despite the warning");
   EXPECT_TRUE(rig.ossd());
   EXPECT_TRUE(rig.adapter.scanner().status().contamination_warning);
 }
@@ -280,6 +280,19 @@ TEST_F(Aligned, BothChannelsSeeState010WhileThePcAdapterIsAttached) {
 // steady light are over; the adapter's LED, as `Adapter::led_lit` shows it (and the API's
 // DeviceState.led_lit), is lit 100 ms of every 200 ms from the moment the blink began — both
 // edges of each phase.
+// The LED blinks from now on, lit `half` then dark `half`: both edges of each phase of the
+// first period and the start of the next. Returns the blink's start.
+dp::TimePoint expect_blink_from_now(Rig& rig, std::chrono::milliseconds half) {
+  const auto start = rig.now;
+  const auto lit = [&](std::chrono::milliseconds at) { return rig.adapter.led_lit(start + at); };
+  EXPECT_TRUE(lit(0ms));
+  EXPECT_TRUE(lit(half - 1ms));
+  EXPECT_FALSE(lit(half));
+  EXPECT_FALSE(lit(2 * half - 1ms));
+  EXPECT_TRUE(lit(2 * half));
+  return start;
+}
+
 TEST(LedPatterns, FastBlinkFollowsItsPatternFromItsStart) {
   Rig rig;
   rig.adapter.power_on(rig.now);
@@ -289,15 +302,9 @@ TEST(LedPatterns, FastBlinkFollowsItsPatternFromItsStart) {
   EXPECT_TRUE(rig.adapter.led_lit(rig.now)) << "steady";
   rig.advance(1ms);
   ASSERT_EQ(rig.adapter.led(), LedState::kFastBlink);
-  const auto start = rig.now;
-  const auto lit = [&](std::chrono::milliseconds at) { return rig.adapter.led_lit(start + at); };
-  EXPECT_TRUE(lit(0ms));
-  EXPECT_TRUE(lit(99ms));
-  EXPECT_FALSE(lit(100ms));
-  EXPECT_FALSE(lit(199ms));
-  EXPECT_TRUE(lit(200ms));
-  EXPECT_TRUE(lit(1299ms));
-  EXPECT_FALSE(lit(1300ms));
+  const auto start = expect_blink_from_now(rig, 100ms);
+  EXPECT_TRUE(rig.adapter.led_lit(start + 1299ms));
+  EXPECT_FALSE(rig.adapter.led_lit(start + 1300ms));
   // Connected: off, whatever the phase.
   rig.advance(150ms);
   ASSERT_EQ(rig.adapter.check_parameters(set_prm_for(rig.params), rig.now),
@@ -322,13 +329,7 @@ TEST(LedPatterns, SlowBlinkStartsLitWhenTheParametersAreRefused) {
   ASSERT_EQ(rig.adapter.check_parameters(set_prm_for(rig.params), rig.now),
             dp::slave::PrmVerdict::kPrmFault);
   ASSERT_EQ(rig.adapter.led(), LedState::kSlowBlink);
-  const auto start = rig.now;
-  const auto lit = [&](std::chrono::milliseconds at) { return rig.adapter.led_lit(start + at); };
-  EXPECT_TRUE(lit(0ms));
-  EXPECT_TRUE(lit(499ms));
-  EXPECT_FALSE(lit(500ms));
-  EXPECT_FALSE(lit(999ms));
-  EXPECT_TRUE(lit(1000ms));
+  expect_blink_from_now(rig, 500ms);
 }
 
 // Steps the adapter from deadline to deadline until `done` holds; returns false after 10 s.

@@ -114,17 +114,38 @@ TEST(Rs4Rs232, EverySplitPointGivesTheSameFrames) {
   }
 }
 
-TEST(Rs4Rs232, BodyEndingInOneZero) {
-  // body 23 01 00: no stuffing, CHK = 23 ^ 01 ^ 00 = 22, then the end mark
-  const Bytes wire{0x00, 0x00, 0x23, 0x01, 0x00, 0x22, 0x00, 0x00, 0x00};
-  auto framed = frame_rs232(Bytes{0x23, 0x01, 0x00});
+// `stream` gives `d` one frame, `body`.
+void expect_one_frame(Rs232Deframer& d, const Bytes& stream, const Bytes& body) {
+  auto events = d.feed(stream);
+  ASSERT_EQ(events.size(), 1U);
+  ASSERT_TRUE(events[0]);
+  EXPECT_EQ(events[0].value(), body);
+}
+
+// `stream` gives `d` a broken frame with `error`, then the frame `body`.
+void expect_error_then_frame(Rs232Deframer& d, const Bytes& stream, ProtocolError error,
+                             const Bytes& body) {
+  auto events = d.feed(stream);
+  ASSERT_EQ(events.size(), 2U);
+  ASSERT_FALSE(events[0]);
+  EXPECT_EQ(events[0].error(), error);
+  ASSERT_TRUE(events[1]);
+  EXPECT_EQ(events[1].value(), body);
+}
+
+// `body` frames to the known answer `wire`, and `wire` deframes to `body` alone.
+void expect_framing(const Bytes& body, const Bytes& wire) {
+  auto framed = frame_rs232(body);
   ASSERT_TRUE(framed);
   EXPECT_EQ(framed.value(), wire);
   Rs232Deframer d;
-  auto events = d.feed(wire);
-  ASSERT_EQ(events.size(), 1U);
-  ASSERT_TRUE(events[0]);
-  EXPECT_EQ(events[0].value(), (Bytes{0x23, 0x01, 0x00}));
+  expect_one_frame(d, wire, body);
+}
+
+TEST(Rs4Rs232, BodyEndingInOneZero) {
+  // body 23 01 00: no stuffing, CHK = 23 ^ 01 ^ 00 = 22, then the end mark
+  const Bytes wire{0x00, 0x00, 0x23, 0x01, 0x00, 0x22, 0x00, 0x00, 0x00};
+  expect_framing(Bytes{0x23, 0x01, 0x00}, wire);
 }
 
 TEST(Rs4Rs232, StuffedZerosFollowedByARealFF) {
@@ -134,41 +155,21 @@ TEST(Rs4Rs232, StuffedZerosFollowedByARealFF) {
                    0xFF,  // data byte 0xFF
                    0x30,  // CHK = 31 ^ 01 ^ FF ^ FF
                    0x00, 0x00, 0x00};
-  auto framed = frame_rs232(Bytes{0x31, 0x01, 0x00, 0x00, 0xFF});
-  ASSERT_TRUE(framed);
-  EXPECT_EQ(framed.value(), wire);
-  Rs232Deframer d;
-  auto events = d.feed(wire);
-  ASSERT_EQ(events.size(), 1U);
-  ASSERT_TRUE(events[0]);
-  EXPECT_EQ(events[0].value(), (Bytes{0x31, 0x01, 0x00, 0x00, 0xFF}));
+  expect_framing(Bytes{0x31, 0x01, 0x00, 0x00, 0xFF}, wire);
 }
 
 TEST(Rs4Rs232, CheckZeroIsSentAsFF) {
   // 0x12 ^ 0x12 = 0x00 → CHK 0xFF
-  auto framed = frame_rs232(Bytes{0x12, 0x12});
-  ASSERT_TRUE(framed);
-  EXPECT_EQ(framed.value(), (Bytes{0x00, 0x00, 0x12, 0x12, 0xFF, 0x00, 0x00, 0x00}));
-  Rs232Deframer d;
-  auto events = d.feed(framed.value());
-  ASSERT_EQ(events.size(), 1U);
-  ASSERT_TRUE(events[0]);
-  EXPECT_EQ(events[0].value(), (Bytes{0x12, 0x12}));
+  expect_framing(Bytes{0x12, 0x12}, Bytes{0x00, 0x00, 0x12, 0x12, 0xFF, 0x00, 0x00, 0x00});
 }
 
 TEST(Rs4Rs232, FourZerosStuffTwice) {
   // body 01 01 00 00 00 00: 00 00 FF 00 00 FF ([roboticslibrary/rl LeuzeRs4.cpp] "00 00 FF 00 00 FF
   // is legal")
-  auto framed = frame_rs232(Bytes{0x01, 0x01, 0x00, 0x00, 0x00, 0x00});
-  ASSERT_TRUE(framed);
-  EXPECT_EQ(framed.value(), (Bytes{0x00, 0x00, 0x01, 0x01, 0x00, 0x00, 0xFF, 0x00, 0x00, 0xFF,
-                                   0xFF,  // CHK: 01^01^FF^FF = 00 → FF
-                                   0x00, 0x00, 0x00}));
-  Rs232Deframer d;
-  auto events = d.feed(framed.value());
-  ASSERT_EQ(events.size(), 1U);
-  ASSERT_TRUE(events[0]);
-  EXPECT_EQ(events[0].value(), (Bytes{0x01, 0x01, 0x00, 0x00, 0x00, 0x00}));
+  expect_framing(Bytes{0x01, 0x01, 0x00, 0x00, 0x00, 0x00},
+                 Bytes{0x00, 0x00, 0x01, 0x01, 0x00, 0x00, 0xFF, 0x00, 0x00, 0xFF,
+                       0xFF,  // CHK: 01^01^FF^FF = 00 → FF
+                       0x00, 0x00, 0x00});
 }
 
 TEST(Rs4Rs232, FramerRejectsBadCommandAndEmpty) {
@@ -182,12 +183,7 @@ TEST(Rs4Rs232, BadCheckIsReportedAndNextFrameIsFound) {
   const auto& good = examples()[3].wire;                         // request one scan
   stream.insert(stream.end(), good.begin(), good.end());
   Rs232Deframer d;
-  auto events = d.feed(stream);
-  ASSERT_EQ(events.size(), 2U);
-  ASSERT_FALSE(events[0]);
-  EXPECT_EQ(events[0].error(), ProtocolError::kBadCheck);
-  ASSERT_TRUE(events[1]);
-  EXPECT_EQ(events[1].value(), (Bytes{0x24, 0x01}));
+  expect_error_then_frame(d, stream, ProtocolError::kBadCheck, Bytes{0x24, 0x01});
   EXPECT_EQ(d.counters().check_errors, 1U);
   EXPECT_EQ(d.counters().frames, 1U);
 }
@@ -203,10 +199,7 @@ TEST(Rs4Rs232, GarbageBeforeAFrameIsSkipped) {
   // Noise (a single zero is no start mark), then the alive frame.
   const Bytes stream = then_alive({0x55, 0xAA, 0x13, 0x00, 0x77});
   Rs232Deframer d;
-  auto events = d.feed(stream);
-  ASSERT_EQ(events.size(), 1U);
-  ASSERT_TRUE(events[0]);
-  EXPECT_EQ(events[0].value(), (Bytes{0x14, 0x01}));
+  expect_one_frame(d, stream, Bytes{0x14, 0x01});
   EXPECT_EQ(d.counters().garbage_bytes, 4U);
 }
 
@@ -214,12 +207,7 @@ TEST(Rs4Rs232, CutOffFrameIsAStuffingViolationAndTheNextFrameSurvives) {
   // A frame cut after 14 01, then a complete alive frame: "00 00 14" inside a frame.
   const Bytes stream = then_alive({0x00, 0x00, 0x14, 0x01});
   Rs232Deframer d;
-  auto events = d.feed(stream);
-  ASSERT_EQ(events.size(), 2U);
-  ASSERT_FALSE(events[0]);
-  EXPECT_EQ(events[0].error(), ProtocolError::kStuffingViolation);
-  ASSERT_TRUE(events[1]);
-  EXPECT_EQ(events[1].value(), (Bytes{0x14, 0x01}));
+  expect_error_then_frame(d, stream, ProtocolError::kStuffingViolation, Bytes{0x14, 0x01});
   EXPECT_EQ(d.counters().stuffing_errors, 1U);
 }
 
@@ -237,11 +225,7 @@ TEST(Rs4Rs232, TooLongFrameIsBoundedAndResyncs) {
   Bytes stream{0x00, 0x00, 0x23};
   stream.insert(stream.end(), 20, 0x11);
   stream.insert(stream.end(), {0x00, 0x00, 0x00});
-  auto events = d.feed(then_alive(stream));
-  ASSERT_EQ(events.size(), 2U);
-  ASSERT_FALSE(events[0]);
-  EXPECT_EQ(events[0].error(), ProtocolError::kFrameTooLong);
-  ASSERT_TRUE(events[1]);
+  expect_error_then_frame(d, then_alive(stream), ProtocolError::kFrameTooLong, Bytes{0x14, 0x01});
   EXPECT_EQ(d.counters().long_frames, 1U);
 }
 
@@ -249,9 +233,7 @@ TEST(Rs4Rs232, StuffedFFOutsideAFrameIsNoStart) {
   // Joining mid-frame at "00 00 FF": 0xFF is never a command byte.
   const Bytes stream = then_alive({0x00, 0x00, 0xFF, 0x31});
   Rs232Deframer d;
-  auto events = d.feed(stream);
-  ASSERT_EQ(events.size(), 1U);
-  ASSERT_TRUE(events[0]);
+  expect_one_frame(d, stream, Bytes{0x14, 0x01});
   EXPECT_EQ(d.counters().bad_command_bytes, 1U);
   EXPECT_EQ(d.counters().garbage_bytes, 2U);
 }

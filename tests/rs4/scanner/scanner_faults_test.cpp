@@ -8,11 +8,6 @@ namespace {
 
 using namespace testing;
 
-void pulse(Scanner& s, ManualTime& t) {
-  s.set_restart_input(true, t.now);
-  s.set_restart_input(false, t.advance(milliseconds(200)));
-}
-
 ParameterSet restricted() {
   ParameterSet p = params(RestartMode::kAutomatic);
   p.permitted = {0x03, 0x03, 0x0C, 0x0C};  // 1↔2 and 3↔4 only
@@ -112,8 +107,7 @@ TEST(ScannerFieldPairs, StartGoesThroughTheStartPair) {
 
 TEST(ScannerFaults, InjectedFaultNeedsClearAndAcknowledge) {
   ManualTime t;
-  Scanner s = booted(params(RestartMode::kStartInterlock), t);
-  pulse(s, t);
+  Scanner s = started(RestartMode::kStartInterlock, t);
   ASSERT_TRUE(s.ossd());
   ASSERT_TRUE(s.inject_fault(Fault::kMotorSpeed, t.now));
   EXPECT_FALSE(s.ossd());
@@ -238,7 +232,8 @@ TEST(ScannerFaults, WarningOutputOnFaultAndInterlockWhenAssigned) {
 TEST(ScannerFaults, UnknownFaultValueIsATypedError) {
   ManualTime t;
   Scanner s = booted(params(RestartMode::kAutomatic), t);
-  EXPECT_EQ(s.inject_fault(static_cast<Fault>(kFaultCount), t.now).error(), ScannerError::kUnknownFault);
+  EXPECT_EQ(s.inject_fault(static_cast<Fault>(kFaultCount), t.now).error(),
+            ScannerError::kUnknownFault);
   EXPECT_EQ(s.clear_fault(static_cast<Fault>(255), t.now).error(), ScannerError::kUnknownFault);
   EXPECT_TRUE(s.ossd());
   EXPECT_EQ(fault_info(static_cast<Fault>(200)).error_number, 0);

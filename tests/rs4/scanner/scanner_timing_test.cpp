@@ -123,32 +123,26 @@ TEST(ScannerTiming, AutomaticRestartAfterFieldClears) {
 // Restart interlock: after a violation the OSSDs stay off until a pulse on a free field.
 TEST(ScannerTiming, RestartInterlockNeedsPulseOnFreeField) {
   ManualTime t;
-  Scanner s = booted(params(RestartMode::kStartRestartInterlock), t);
-  s.set_restart_input(true, t.now);
-  s.set_restart_input(false, t.advance(milliseconds(200)));
+  Scanner s = started(RestartMode::kStartRestartInterlock, t);
   ASSERT_TRUE(s.ossd());
   const auto id = s.edit_scene(t.now).add(intruder());
   s.advance(t.advance(milliseconds(120)));
   ASSERT_FALSE(s.ossd());
   EXPECT_TRUE(s.status().restart_interlock);
-  s.set_restart_input(true, t.now);  // pulse on an occupied field
-  s.set_restart_input(false, t.advance(milliseconds(200)));
+  pulse(s, t);  // pulse on an occupied field
   EXPECT_FALSE(s.ossd());
   EXPECT_EQ(s.counters().restart_without_effect, 1U);
   ASSERT_TRUE(s.edit_scene(t.now).remove(id.value()));
   s.advance(t.advance(seconds(2)));
   EXPECT_FALSE(s.ossd());  // free, still interlocked
-  s.set_restart_input(true, t.now);
-  s.set_restart_input(false, t.advance(milliseconds(200)));
+  pulse(s, t);
   EXPECT_TRUE(s.ossd());
 }
 
 // Start interlock only: after a violation the OSSDs come back without a pulse.
 TEST(ScannerTiming, StartInterlockModeRestartsAutomaticallyAfterViolation) {
   ManualTime t;
-  Scanner s = booted(params(RestartMode::kStartInterlock), t);
-  s.set_restart_input(true, t.now);
-  s.set_restart_input(false, t.advance(milliseconds(200)));
+  Scanner s = started(RestartMode::kStartInterlock, t);
   const auto id = s.edit_scene(t.now).add(intruder());
   s.advance(t.advance(milliseconds(120)));
   ASSERT_FALSE(s.ossd());
