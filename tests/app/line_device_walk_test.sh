@@ -4,8 +4,8 @@
 # walk names outside foo/ (CMakeLists.txt, stream/device_description.h, run.proto,
 # devices.proto, rpc/foo_service.cpp, app/devices/device_foo.cpp). Fails when the walk needs
 # another file: when the copy's configure does not wire foo into the generated lists
-# (rpc::line_apis(), app::line_device_entries()) and its folders, or, with a build directory
-# given, when what the walk wrote does not compile.
+# (rpc::line_apis(), app::line_device_entries()) and its folders, or, with
+# `compile` given, when what the walk wrote does not compile.
 # Usage: line_device_walk_test.sh SOURCE_DIR [compile]
 set -euo pipefail
 src=$(cd "$1" && pwd)
@@ -64,9 +64,20 @@ grep -q 'foo/description.cpp' "$b/build.ninja" || fail "the library folder foo/ 
 grep -q 'rpc/foo_service.cpp' "$b/build.ninja" || fail "rpc/foo_service.cpp is not compiled"
 grep -q 'devices/device_foo.cpp' "$b/build.ninja" || fail "device_foo.cpp is not compiled"
 if [ "${2:-}" = compile ]; then
-  ninja -C "$b" rs4sim_foo rpc/CMakeFiles/rs4sim_rpc.dir/foo_service.cpp.o \
-    app/CMakeFiles/rs4sim_runtime.dir/devices/device_foo.cpp.o \
-    "rpc/CMakeFiles/rs4sim_rpc.dir/line_apis.cpp.o" \
-    "app/CMakeFiles/rs4sim_runtime.dir/line_device_entries.cpp.o" || fail "the walk does not compile"
+  # The generated API headers, then only the files the walk wrote and the generated lists,
+  # with their compile commands (the rest of the tree is the one already built).
+  ninja -C "$b" $(ninja -C "$b" -t targets all | grep -o '^rpc/proto/[^:]*\.pb\.h') > /dev/null
+  for f in foo/description.cpp rpc/foo_service.cpp app/devices/device_foo.cpp \
+           "$b/rpc/line_apis.cpp" "$b/app/line_device_entries.cpp"; do
+    python3 - "$b/compile_commands.json" "$f" "$s" > "$top/cc.sh" <<'PY'
+import json, os, sys
+db, f, s = sys.argv[1], sys.argv[2], sys.argv[3]
+path = f if os.path.isabs(f) else os.path.join(s, f)
+e = next(e for e in json.load(open(db)) if e["file"] == path)
+print("cd " + e["directory"] + " && " + e["command"])
+PY
+    echo "compiling $f"
+    bash "$top/cc.sh" || fail "the walk does not compile: $f"
+  done
 fi
 echo "the walk: 6 production files outside foo/"
