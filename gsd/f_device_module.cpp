@@ -32,7 +32,8 @@ profisafe::DeviceProfile device_profile(const FModuleInfo& info, std::uint16_t d
 }  // namespace
 
 FModuleDevice::FModuleDevice(profisafe::FDeviceConfig config, const Placement& placement)
-    : device_(config),
+    : config_(config),
+      device_(config),
       module_(placement.module),
       slot_(placement.slot),
       data_size_(config.data_size),
@@ -61,10 +62,14 @@ Result<FModuleDevice> FModuleDevice::make(const Device& device, const SlaveSetup
 }
 
 profisafe::Validation FModuleDevice::set_parameters(std::span<const std::uint8_t> user_prm_data) {
+  wd_time_ms_ = 0;
   if (user_prm_data.size() < prm_offset_ + profisafe::kFParametersSize) {
     return device_.set_parameters({});  // no block: not a layout the device knows (70)
   }
-  return device_.set_parameters(user_prm_data.subspan(prm_offset_, profisafe::kFParametersSize));
+  const auto block = user_prm_data.subspan(prm_offset_, profisafe::kFParametersSize);
+  const auto v = device_.set_parameters(block);
+  if (v.ok()) wd_time_ms_ = profisafe::parse_f_parameters(block).value().wd_time_ms;
+  return v;
 }
 
 std::array<std::uint8_t, 5> FModuleDevice::status_block() const noexcept {
@@ -73,15 +78,61 @@ std::array<std::uint8_t, 5> FModuleDevice::status_block() const noexcept {
 
 void FModuleDevice::on_outputs(std::span<const std::uint8_t> outputs, profisafe::TimePoint now) {
   const bool fits = outputs.size() >= output_offset_ + pdu_size_;
-  (void)device_.on_pdu(fits ? outputs.subspan(output_offset_, pdu_size_)
-                            : std::span<const std::uint8_t>{},
-                       now);
+  last_event_ = device_.on_pdu(fits ? outputs.subspan(output_offset_, pdu_size_)
+                                    : std::span<const std::uint8_t>{},
+                               now);
+  if (last_event_ == profisafe::FDeviceEvent::kNew ||
+      last_event_ == profisafe::FDeviceEvent::kRepeat) {
+    host_control_ = device_.last_check().status_or_control;
+  }
 }
 
-void FModuleDevice::write_inputs(std::span<std::uint8_t> inputs) {
-  const auto pdu = device_.response();  // empty while muted: the host sees the old bytes
-  if (inputs.size() < input_offset_ + pdu.size()) return;
-  std::copy(pdu.begin(), pdu.end(), inputs.begin() + static_cast<std::ptrdiff_t>(input_offset_));
+void FModuleDevice::write_inputs(std::span<std::uint8_t> inputs, profisafe::TimePoint now) {
+  if (hold_.count() > 0 && !held_until_) held_until_ = now + hold_;
+  if (held_until_ && now >= *held_until_) {
+    held_until_.reset();
+    hold_ = std::chrono::milliseconds(0);
+  }
+  if (!held_until_) {
+    const auto pdu = device_.response();  // empty while muted: the last one stays
+    std::copy(pdu.begin(), pdu.end(), sent_.begin());
+  }
+  if (inputs.size() < input_offset_ + pdu_size_) return;
+  std::copy_n(sent_.begin(), pdu_size_,
+              inputs.begin() + static_cast<std::ptrdiff_t>(input_offset_));
+}
+
+void FModuleDevice::set_f_inputs(std::span<const std::uint8_t> data) {
+  device_.set_input(data);
+  std::copy(data.begin(), data.end(), f_inputs_.begin());
+}
+
+void FModuleDevice::restart(std::uint16_t dest_add) {
+  config_.profile.dest_add = dest_add;
+  device_ = profisafe::FDevice(config_);
+  device_.set_input(f_inputs());
+  sent_.fill(0);
+  hold_ = std::chrono::milliseconds(0);
+  held_until_.reset();
+  wd_time_ms_ = 0;
+  host_control_ = 0;
+  last_event_ = profisafe::FDeviceEvent::kIgnored;
+}
+
+std::string_view f_state_token(const profisafe::FDevice& device) noexcept {
+  switch (device.state()) {
+    case profisafe::FDeviceState::kNoParameters:
+      return device.diagnosis() != 0 ? "parameter-fault" : "waiting-for-parameters";
+    case profisafe::FDeviceState::kStartup: return "startup";
+    case profisafe::FDeviceState::kRun:
+      return device.sends_process_values() ? "run" : "fail-safe-values";
+    case profisafe::FDeviceState::kFault: return "passivated";
+  }
+  return "?";
+}
+
+std::string_view f_mode_token(const profisafe::FDevice& device) noexcept {
+  return device.version() == profisafe::ProtocolVersion::kV2 ? "V2" : "V1";
 }
 
 }  // namespace rs4sim::gsd

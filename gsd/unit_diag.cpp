@@ -1,6 +1,7 @@
 #include "gsd/unit_diag.h"
 
 #include "gsd/interp_detail.h"
+#include "profisafe/f_parameters.h"
 
 #include <map>
 
@@ -138,6 +139,48 @@ std::vector<std::string> unit_diag_texts(const UnitDiag& texts,
     collect(type->second, data, found);
   }
   for (auto& [n, text] : found) out.push_back(std::move(text));
+  return out;
+}
+
+namespace {
+
+// The GSD's own text of F-diagnosis `number`, nullptr when it names none.
+const std::string* gsd_f_text(const UnitDiag& texts, std::uint8_t number) {
+  constexpr std::uint8_t kStatusMessage = 0x81;  // [IEC 61158-6-3 DPV1 status] Status_Type
+  const auto find = [number](const UnitDiagTexts& t) -> const std::string* {
+    for (const auto& a : t.areas) {
+      if (a.first != 24 || a.last != 31) continue;
+      const auto it = a.values.find(number);
+      if (it != a.values.end()) return &it->second;
+    }
+    return nullptr;
+  };
+  if (const auto type = texts.types.find(kStatusMessage); type != texts.types.end()) {
+    if (const std::string* t = find(type->second)) return t;
+  }
+  return find(texts);
+}
+
+}  // namespace
+
+std::string f_diagnosis_text(const UnitDiag& texts, std::uint8_t number) {
+  if (const std::string* own = gsd_f_text(texts, number); own != nullptr && number != 0) {
+    return *own;
+  }
+  return profisafe::standard_diagnosis_text(number);
+}
+
+std::vector<std::string> device_diag_texts(const UnitDiag& texts, bool f_device,
+                                           std::span<const std::uint8_t> ext_diag) {
+  std::vector<std::string> out = unit_diag_texts(texts, ext_diag);
+  // `05 81 slot 00 nn`: a device-related block of 5 bytes, status type 0x81, specifier 0.
+  if (!f_device || ext_diag.size() < 5 || ext_diag[0] != 0x05 || ext_diag[1] != 0x81 ||
+      ext_diag[3] != 0x00) {
+    return out;
+  }
+  const std::uint8_t number = ext_diag[4];
+  const std::string standard = profisafe::standard_diagnosis_text(number);
+  if (!standard.empty() && gsd_f_text(texts, number) == nullptr) out.push_back(standard);
   return out;
 }
 

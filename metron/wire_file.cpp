@@ -44,6 +44,23 @@ std::vector<std::pair<std::string, const Value*>> members(const Value& v) {
   return out;
 }
 
+// A member of an object with its path (`at`) below the object's.
+struct Member {
+  std::string key;
+  const Value& value;
+  std::string at;
+};
+
+// The members of the object `v` in key order, with their paths below `where`; a value that
+// is not an object is refused at `where`.
+std::vector<Member> members_of(const Value& v, const std::string& where) {
+  if (!v.has_struct_value()) refuse(where, "expected an object, found " + kind_of(v));
+  std::vector<Member> out;
+  for (const auto& [key, value] : members(v))
+    out.push_back(Member{key, *value, json::member_path(where, key)});
+  return out;
+}
+
 int hex_digit(char c) {
   if (c >= '0' && c <= '9') return c - '0';
   if (c >= 'a' && c <= 'f') return c - 'a' + 10;
@@ -121,10 +138,7 @@ ReplyFieldSet reply_field_set(const Value& v, const std::string& where) {
 }
 
 void read_reply(const Value& v, ReplyLayout& r) {
-  if (!v.has_struct_value()) refuse("reply", "expected an object, found " + kind_of(v));
-  for (const auto& [key, member] : members(v)) {
-    const Value& value = *member;
-    const std::string where = json::member_path("reply", key);
+  for (const auto& [key, value, where] : members_of(v, "reply")) {
     if (key == "fields") {
       const auto& l = list_of(value, where);
       r.fields.clear();
@@ -141,10 +155,7 @@ void read_reply(const Value& v, ReplyLayout& r) {
 }
 
 void read_report(const Value& v, ReportLayout& r) {
-  if (!v.has_struct_value()) refuse("report", "expected an object, found " + kind_of(v));
-  for (const auto& [key, member] : members(v)) {
-    const Value& value = *member;
-    const std::string where = json::member_path("report", key);
+  for (const auto& [key, value, where] : members_of(v, "report")) {
     if (key == "order") {
       const auto& l = list_of(value, where);
       if (l.values_size() != static_cast<int>(kReportFieldCount)) {
@@ -188,23 +199,18 @@ std::vector<E> read_tokens(const Value& v, const std::string& where,
 
 void read_curtain_status(const Value& v, const std::string& where,
                          std::array<std::uint8_t, kStatusFlagCount>& masks) {
-  if (!v.has_struct_value()) refuse(where, "expected an object, found " + kind_of(v));
-  for (const auto& [key, member] : members(v)) {
-    const std::string at = json::member_path(where, key);
+  for (const auto& [key, value, at] : members_of(v, where)) {
     const auto flag = parse_status_flag(key);
     if (!flag) {
       refuse(at, "unknown flag (flags: synchronised, ossd_enabled, ossd_standby, "
                  "ossd_measuring, measuring, interrupted, input_high)");
     }
-    masks[static_cast<std::size_t>(*flag)] = byte_of(*member, at);
+    masks[static_cast<std::size_t>(*flag)] = byte_of(value, at);
   }
 }
 
 void read_replies(const Value& v, ReplyData& r) {
-  if (!v.has_struct_value()) refuse("replies", "expected an object, found " + kind_of(v));
-  for (const auto& [key, member] : members(v)) {
-    const Value& value = *member;
-    const std::string where = json::member_path("replies", key);
+  for (const auto& [key, value, where] : members_of(v, "replies")) {
     if (key == "stop_measurement") {
       r.stop_measurement = read_tokens<StopItem>(value, where, parse_stop_item, "code, maximum");
     } else if (key == "beam_interrupted") {

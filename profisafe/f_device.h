@@ -100,6 +100,7 @@ class FDevice {
   [[nodiscard]] const FDeviceCounters& counters() const noexcept { return counters_; }
   [[nodiscard]] const PduCheck& last_check() const noexcept { return last_check_; }
   PduFaults& faults() noexcept { return faults_; }
+  [[nodiscard]] const PduFaults& faults() const noexcept { return faults_; }
 
  private:
   void enter_fault(std::uint8_t bit);

@@ -34,7 +34,7 @@ file(CONFIGURE OUTPUT ${_rs4sim_py_out}/rs4sim/_version.py
      CONTENT "# Written by CMake (python/package.cmake): the project's version.\n__version__ = \"${PROJECT_VERSION}\"\n")
 
 # rs4sim.v1: messages and services.
-set(_rs4sim_v1 rs4 archive_service proxy_service devices gsd run plc diagnosis)
+set(_rs4sim_v1 rs4 archive_service proxy_service devices gsd gsd_fdevice run plc diagnosis)
 set(_rs4sim_v1_protos)
 set(_rs4sim_v1_stubs ${_rs4sim_py_out}/rs4sim/v1/__init__.py)
 foreach(name IN LISTS _rs4sim_v1)

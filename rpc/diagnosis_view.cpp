@@ -201,7 +201,7 @@ std::vector<std::string> rs4_diagnosis_texts(std::span<const std::uint8_t> ext_d
 
 DiagnosisTexts gsd_diagnosis_texts(const gsd::GsdStationSpec& spec) {
   return [&spec](std::span<const std::uint8_t> ext_diag) {
-    std::vector<std::string> out = gsd::unit_diag_texts(spec.device->unit_diag, ext_diag);
+    std::vector<std::string> out = gsd::diagnosis_texts(*spec.device, ext_diag);
     const auto module = [&spec](std::size_t i) {
       return i < spec.modules.size()
                  ? "slot " + std::to_string(i) + " \"" + spec.modules[i].name + "\""

@@ -34,7 +34,8 @@ std::vector<std::string> rs4_diagnosis_texts(std::span<const std::uint8_t> ext_d
 
 // A GSD station's words for its extended diagnosis (`spec` must outlive the result): the
 // GSD's Unit_Diag_Bit, Unit_Diag_Not_Bit and Unit_Diag_Area texts of the device-related block
-// (gsd::unit_diag_texts), then each slot the identifier-related block marks and each channel
+// with an F-device's diagnosis 64..71 by the GSD's X_Value or the standard's meaning
+// (gsd::diagnosis_texts), then each slot the identifier-related block marks and each channel
 // block, by the name of the module configured in that slot ("slot 1 "AI 2" channel 0 input:
 // error 7 (upper limit exceeded)") [IEC 61158-6-3 Slave_Diag].
 DiagnosisTexts gsd_diagnosis_texts(const gsd::GsdStationSpec& spec);

@@ -213,6 +213,7 @@ int run(MasterCliOptions& o) {
   for (const auto& w : warnings) std::cerr << "warning: " << w << std::endl;
   apply_gsd_f_dest_adds(o.service.gsd_slaves, o.gsd_f_dest_adds);
   if (!o.bus_file.empty()) add_bus_file(o);
+  if (o.f_wd_time_ms) apply_gsd_f_wd_time(o.service.gsd_slaves, *o.f_wd_time_ms);
   o.service.gsd_watchdog = std::chrono::milliseconds(o.dp_watchdog_ms);
   o.service.station = station_config(o, o.service.gsd_slaves);
   if (o.proxy_enable && !o.no_proxy) {
@@ -285,7 +286,9 @@ Action setup(CLI::App& cmd) {
                  "FILE.json: poll the stations of a bus file (`rs4sim run --bus`): its RS4s as "
                  "--slave, its GSD stations as --gsd-slave with their \"f-dest-add\"");
   cmd.add_option("--address", o->address, "the master's own FDL address (default 1)");
-  cmd.add_option("--f-wd-time", o->f_wd_time_ms, "F_WD_Time in ms for every RS4 (default 150)")
+  cmd.add_option("--f-wd-time", o->f_wd_time_ms,
+                 "F_WD_Time in ms for every RS4 (default 150) and every GSD slave's PROFIsafe "
+                 "F-module (default: its GSD's)")
       ->check(CLI::Range(1, 65535));
   cmd.add_option("--f-source-add", o->f_source_add, "F_Source_Add (GSD default otherwise)")
       ->check(CLI::Range(1, 65534));

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <ostream>
+#include <variant>
 
 namespace rs4sim::app {
 
@@ -51,11 +52,24 @@ GsdSegment::GsdSegment(std::vector<GsdStationSpec> specs, const std::string& bau
   bus_ = std::make_unique<dp::link::MemoryBus>(clock_);
   master_ = std::make_unique<dp::master::Master>(m);
   bus_->attach(*master_);
+  std::vector<GsdStationSpec> hosted = specs;
+  for (auto& s : hosted) s.f_dest_add.reset();
+  f_hosts_ = std::make_unique<gsd::GsdMasterSlaves>(std::move(hosted));
   for (auto& s : specs) {
     stations_.push_back(std::make_unique<GsdStation>(std::move(s)));
     bus_->attach(*stations_.back());
   }
   bus_->start();
+}
+
+void GsdSegment::drain() {
+  master_->take_events(events_);
+  for (const auto& e : events_) {
+    if (std::holds_alternative<dp::master::CycleCompleted>(e)) {
+      (void)f_hosts_->on_master_cycle(*master_, clock_.now(), false);
+    }
+  }
+  events_.clear();
 }
 
 GsdSegment::~GsdSegment() = default;
@@ -67,28 +81,28 @@ ServiceList GsdSegment::services(const ServiceContext& context) {
   for (auto& s : stations_) stations.push_back(s.get());
   target_ = std::make_unique<MemoryBusTarget>(
       clock_, *bus_,
-      [this] {
-        master_->take_events(events_);
-        events_.clear();
-      },
+      [this] { drain(); },
       [&stations] {
         ServedStations s;
         s.gsd = stations;
         return s;
       }());
   auto* hub = target_->events();
+  for (const auto& s : stations_) {
+    if (!s->application().f_modules().empty()) hub->watch(rpc::gsd_fhost_watcher(*s, *f_hosts_));
+  }
   const rpc::Rs4Context rs4{*target_, context.executor};
   auto diagnostics = std::make_shared<rpc::DiagnosticsService>(rs4, stations);
   rpc::GsdServiceContext g{context.executor, std::move(stations),
                            [hub, this] { hub->poll(clock_.now()); }, bus_.get()};
+  g.f_hosts = f_hosts_.get();
   return {std::make_shared<rpc::GsdStationsService>(std::move(g)),
           std::make_shared<rpc::SimTimeService>(rs4),
           std::make_shared<rpc::ObservationService>(rs4), std::move(diagnostics)};
 }
 
 void GsdSegment::run_for(dp::Duration d) {
-  bus_->run_until([] { return false; }, clock_.now() + d, [this] { master_->take_events(events_); });
-  events_.clear();
+  bus_->run_until([] { return false; }, clock_.now() + d, [this] { drain(); });
 }
 
 std::size_t GsdSegment::in_data_exchange() const {

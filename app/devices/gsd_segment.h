@@ -4,7 +4,10 @@
 // the GSDs declare for it. `rs4sim run --device generic --gsd FILE --link memory` and
 // `rs4sim run --bus FILE --link memory`; with `--grpc` the harness drives it: GsdStations for
 // every station, SimTime moving this segment's manual clock, Observation's event stream
-// (docs/gsd.md "Harness API").
+// (docs/gsd.md "Harness API"). A station's PROFIsafe F-modules get an F-host of our master each
+// (gsd::GsdMasterSlaves, as `rs4sim master` has them), run after every master cycle; it sends the
+// GSD's default F-parameters (the station's --f-dest-add is the device's switch, not the
+// master's knowledge) and waits for GsdStations.AckFHost after a passivation.
 
 #include "app/devices/device_registry.h"
 #include "app/devices/gsd_station_file.h"
@@ -12,6 +15,7 @@
 #include "dp/link/memory_bus.h"
 #include "dp/master/master.h"
 #include "dp/time/clock.h"
+#include "gsd/station/gsd_master_slaves.h"
 
 #include <memory>
 #include <vector>
@@ -38,6 +42,7 @@ class GsdSegment final : public SimulatedSegment {
   [[nodiscard]] dp::ManualClock& clock() { return clock_; }
   [[nodiscard]] dp::master::Master& master() { return *master_; }
   [[nodiscard]] std::vector<std::unique_ptr<GsdStation>>& stations() { return stations_; }
+  [[nodiscard]] gsd::GsdMasterSlaves& f_hosts() { return *f_hosts_; }
   // Stations the master has in data exchange.
   [[nodiscard]] std::size_t in_data_exchange() const;
 
@@ -49,6 +54,10 @@ class GsdSegment final : public SimulatedSegment {
   std::unique_ptr<dp::master::Master> master_;
   std::vector<std::unique_ptr<GsdStation>> stations_;
   std::vector<dp::master::MasterEvent> events_;
+  // Our master's F-host for every F-module of the stations (docs/profisafe.md "GSD F-devices").
+  std::unique_ptr<gsd::GsdMasterSlaves> f_hosts_;
+  // The master's events since the last call: after each cycle the F-hosts' turn.
+  void drain();
   std::unique_ptr<MemoryBusTarget> target_;  // made by services()
 };
 

@@ -3,6 +3,7 @@
 #include "app/devices/bus_file.h"
 #include "app/runtime/usage_error.h"
 #include "gsd/check_report.h"
+#include "gsd/syntax.h"
 
 #include <algorithm>
 #include <charconv>
@@ -110,6 +111,22 @@ void apply_gsd_f_dest_adds(std::vector<GsdStationSpec>& specs,
                        ":FILE given");
     }
     it->f_dest_add = check_f_dest_add(*it, value);
+  }
+}
+
+void apply_gsd_f_wd_time(std::vector<GsdStationSpec>& specs, int ms) {
+  for (auto& spec : specs) {
+    for (const auto& [number, p] : spec.device->params) {
+      if (!spec.setup.f_parameters.empty() && gsd::syntax::iequals(p.name, "F_WD_Time") &&
+          !p.accepts(ms)) {
+        throw UsageError("--f-wd-time " + std::to_string(ms) + ": " + spec.file + ":" +
+                         std::to_string(p.line) + ": F_WD_Time is " + p.range_text() +
+                         " for GSD slave " + std::to_string(spec.address));
+      }
+    }
+    for (auto& block : spec.setup.f_parameters) {
+      block.parameters.wd_time_ms = static_cast<std::uint16_t>(ms);
+    }
   }
 }
 
@@ -236,15 +253,23 @@ void GsdMasterReport::stopped(const dp::master::Master& master, const MasterRepo
     const auto status = master.slave_status(a);
     const std::int64_t exchanges =
         status ? static_cast<std::int64_t>(status->counters.data_exchanges) : 0;
+    // Each F-module's F-host: "slot 0 V1 run" ("; "-separated).
+    std::string f_states;
+    for (const auto& f : s.f_modules) {
+      f_states += (f_states.empty() ? "" : "; ") + std::string("slot ") + std::to_string(f.slot) +
+                  " " + f.mode() + " " + std::string(profisafe::to_token(f.host.state()));
+    }
     report.custom(now, a, "GSD slave", "stop",
                   std::string("end: DP ") + state_name(state) + ", data exchanges " +
                       std::to_string(exchanges) + ", inputs " + gsd::io_hex(master.inputs(a)) +
-                      ", outputs " + gsd::io_hex(s.outputs),
+                      ", outputs " + gsd::io_hex(s.outputs) +
+                      (f_states.empty() ? "" : ", PROFIsafe " + f_states),
                   {{"dp", std::string(state_name(state))},
                    {"data_exchange", dx},
                    {"data_exchanges", exchanges},
                    {"inputs", gsd::io_hex(master.inputs(a))},
-                   {"outputs", gsd::io_hex(s.outputs)}});
+                   {"outputs", gsd::io_hex(s.outputs)},
+                   {"profisafe", f_states}});
   }
 }
 

@@ -41,6 +41,11 @@ std::vector<GsdStationSpec> parse_gsd_slaves(const std::vector<std::string>& sla
 void apply_gsd_f_dest_adds(std::vector<GsdStationSpec>& specs,
                            const std::vector<std::string>& values);
 
+// `--f-wd-time MS` for the GSD slaves: the F_WD_Time the master writes into every F-module's
+// F-parameter block (the F-host's watchdog too). Throws UsageError naming the GSD's file:line
+// when MS is outside its F_WD_Time range.
+void apply_gsd_f_wd_time(std::vector<GsdStationSpec>& specs, int ms);
+
 // The stations of a bus file (app/devices/bus_file.h, the file `rs4sim run --bus` runs on the
 // other end of the line) as our master's slaves: its RS4s by address (configured from the
 // built-in GSD, each with its F-host) and its GSD stations from their GSDs with their modules
@@ -65,7 +70,7 @@ class GsdMasterReport {
   // "diagnosis" line when the GSD's Unit_Diag texts for its last Slave_Diag changed
   // (gsd::unit_diag_texts), a "profisafe" line when the state of an F-module's F-host changed.
   void update(const dp::master::Master& master, const MasterReport& report, dp::TimePoint now);
-  // A "stop" line per slave.
+  // A "stop" line per slave (with its F-modules' F-host states).
   void stopped(const dp::master::Master& master, const MasterReport& report,
                dp::TimePoint now) const;
 

@@ -97,7 +97,9 @@ std::string MasterService::describe() const {
   if (!list.empty()) text += " with PROFIsafe F-host for RS4 " + list + " (from the GSD)";
   if (!gsd_.empty()) {
     text += list.empty() ? " for" : ", and";
-    text += " GSD slave " + gsd_.address_list() + " (from their GSDs)";
+    text += " GSD slave " + gsd_.address_list() + " (from their GSDs";
+    if (gsd_.f_module_count() > 0) text += ", PROFIsafe F-host for their F-modules";
+    text += ")";
   }
   return text;
 }

@@ -1,6 +1,7 @@
 // libFuzzer target: rpc::fill_diagnosis with the RS4's texts and with a GSD station's
 // (rpc/diagnosis_view.h: a small GSD with Unit_Diag, UnitDiagType and Channel_Diag texts, one
-// module), the input as a Slave_Diag DU, read as DP-V1 and as DP-V0. Invariants: no crash or
+// module, and an F-module, so that an F-device's status block 64..71 gets the standard's
+// meaning where the GSD has no text), the input as a Slave_Diag DU, read as DP-V1 and as DP-V0. Invariants: no crash or
 // hang; the raw bytes are kept whole; an answer shorter than the standard part has no blocks
 // and says why.
 #include "gsd/interp.h"
@@ -25,7 +26,9 @@ const rs4sim::gsd::GsdStationSpec& gsd_spec() {
         "fuzz.gsd");
     if (!device) std::abort();
     rs4sim::gsd::GsdStationSpec s;
-    s.device = std::make_shared<const rs4sim::gsd::Device>(std::move(device).value());
+    rs4sim::gsd::Device d = std::move(device).value();
+    d.modules.emplace_back().f_prm.emplace();
+    s.device = std::make_shared<const rs4sim::gsd::Device>(std::move(d));
     s.modules = {{.name = "m"}};
     return s;
   }();

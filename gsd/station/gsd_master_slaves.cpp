@@ -178,12 +178,17 @@ bool GsdMasterSlaves::safety_step(GsdMasterFModule& f, std::span<const std::uint
                                   bool dx, dp::TimePoint now) {
   const auto before = f.host.state();
   const auto timeouts = f.host.counters().watchdog_timeouts;
+  // A fault in start-up (the device's first answers) passivates nothing that ran: not shown.
+  const bool started = before != profisafe::FHostState::kStartup;
   if (dx && inputs.size() >= f.input_offset + f.pdu_size) {
     const auto e = f.host.on_pdu(inputs.subspan(f.input_offset, f.pdu_size), now);
-    if (const char* text = fault_text(e, f.host.last_status()); *text != '\0') f.last_fault = text;
+    const char* text = fault_text(e, f.host.last_status());
+    if (started && *text != '\0') f.last_fault = text;
   }
   f.host.on_time(now);
-  if (f.host.counters().watchdog_timeouts != timeouts) f.last_fault = "watchdog F_WD_Time expired";
+  if (started && f.host.counters().watchdog_timeouts != timeouts) {
+    f.last_fault = "watchdog F_WD_Time expired";
+  }
   return f.host.state() != before;
 }
 

@@ -45,7 +45,7 @@ struct GsdMasterFModule {
   profisafe::FHost host;
   std::vector<std::uint8_t> f_outputs;  // the program's F-output data (zeros at first)
   std::vector<std::uint8_t> sent;       // F-data of the last PDU sent (zeros while fail-safe)
-  std::string last_fault;               // the last fault that passivated it; empty: none yet
+  std::string last_fault;  // the last fault that passivated it after start-up; empty: none yet
 
   [[nodiscard]] std::size_t f_data_size() const noexcept { return f_outputs.size(); }
   // "V1" or "V2".

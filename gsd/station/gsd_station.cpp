@@ -43,9 +43,16 @@ std::string io_hex(std::span<const std::uint8_t> bytes) {
   return s;
 }
 
+std::vector<std::string> diagnosis_texts(const Device& device,
+                                         std::span<const std::uint8_t> blocks) {
+  const bool f_device = std::any_of(device.modules.begin(), device.modules.end(),
+                                    [](const Module& m) { return m.f_prm.has_value(); });
+  return device_diag_texts(device.unit_diag, f_device, blocks);
+}
+
 std::string diagnosis_text(const Device& device, std::span<const std::uint8_t> blocks) {
   std::string out;
-  for (const auto& t : unit_diag_texts(device.unit_diag, blocks)) {
+  for (const auto& t : diagnosis_texts(device, blocks)) {
     out += (out.empty() ? "" : "; ") + t;
   }
   return out;
@@ -70,6 +77,13 @@ GsdStationSpec station_spec(std::string file, std::shared_ptr<const Device> devi
     io.output_offset += m->output_len;
   }
   return spec;
+}
+
+std::uint16_t configured_f_dest_add(const GsdStationSpec& spec, std::size_t module) {
+  for (const auto& block : spec.setup.f_parameters) {
+    if (block.module == module) return spec.f_dest_add.value_or(block.parameters.dest_add);
+  }
+  return 0;
 }
 
 Result<dp::master::SlaveEntry> master_entry(const GsdStationSpec& spec,
@@ -115,8 +129,7 @@ GsdApplication::GsdApplication(const GsdStationSpec& spec)
   for (const auto& block : spec.setup.f_parameters) {
     const auto& io = spec.modules.at(block.module);
     auto f = FModuleDevice::make(*spec.device, spec.setup, block, io.input_offset,
-                                 io.output_offset,
-                                 spec.f_dest_add.value_or(block.parameters.dest_add));
+                                 io.output_offset, configured_f_dest_add(spec, block.module));
     if (f) f_modules_.push_back(std::move(f).value());
   }
 }
@@ -138,7 +151,7 @@ void GsdApplication::check_f_parameters() {
     f_diag_ = true;
     prm_fault_ = "F-module in slot " + std::to_string(spec_.setup.slots[f.module()].slot) +
                  ": diagnosis " + std::to_string(f.diagnosis()) + " (" +
-                 profisafe::standard_diagnosis_text(f.diagnosis()) + ")";
+                 f_diagnosis_text(spec_.device->unit_diag, f.diagnosis()) + ")";
     return;
   }
   if (f_diag_ && !set_diagnosis({}, false)) f_diag_ = false;
@@ -176,8 +189,17 @@ void GsdApplication::read_inputs(std::span<std::uint8_t> inputs, dp::TimePoint n
   std::fill(inputs.begin() + static_cast<std::ptrdiff_t>(n), inputs.end(), std::uint8_t{0});
   for (auto& f : f_modules_) {
     f.device().on_time(now);  // the F-watchdog, checked at every poll
-    f.write_inputs(inputs);
+    f.write_inputs(inputs, now);
   }
+}
+
+void GsdApplication::power_up() {
+  user_prm_.clear();
+  prm_fault_.clear();
+  diag_.clear();
+  ext_diag_ = false;
+  f_diag_ = false;
+  for (auto& f : f_modules_) f.restart(f.dest_add());
 }
 
 std::error_code GsdApplication::set_inputs(std::size_t module,
@@ -212,6 +234,15 @@ GsdStation::GsdStation(GsdStationSpec spec)
       app_(*spec_),
       slave_(slave_config(*spec_), app_) {
   slave_.set_wake_handler([this] { wake(); });
+}
+
+std::error_code GsdStation::set_f_dest_add(std::size_t module, std::uint16_t dest_add) {
+  FModuleDevice* f = app_.f_module(module);
+  if (f == nullptr) return std::make_error_code(std::errc::invalid_argument);
+  slave_.restart(slave_.address());
+  app_.power_up();
+  f->restart(dest_add);
+  return {};
 }
 
 std::string GsdStation::describe() const {

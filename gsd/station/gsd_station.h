@@ -63,6 +63,10 @@ struct GsdStationSpec {
   std::optional<std::uint16_t> f_dest_add;
 };
 
+// The F_Dest_Add the F-device of slot index `module` has at power-up: --f-dest-add, else the one
+// the configuration writes (0: no F-parameter block in that slot).
+std::uint16_t configured_f_dest_add(const GsdStationSpec& spec, std::size_t module);
+
 // The spec of the station at `address` with `setup` (gsd::configure of `device`): the chosen
 // modules' I/O in slot order, each at its offset in the station's input and output images.
 GsdStationSpec station_spec(std::string file, std::shared_ptr<const Device> device,
@@ -81,8 +85,10 @@ std::string unchecked_user_prm_fault(const Device& device, std::size_t length);
 // A station's bytes as the harness's event stream and the master's report show them:
 // lowercase hex, space-separated ("5a 11 22"; none: "").
 std::string io_hex(std::span<const std::uint8_t> bytes);
-// The GSD's Unit_Diag texts of device-related diagnosis `blocks` (unit_diag_texts),
-// "; "-separated (none: "").
+// The GSD's Unit_Diag texts of device-related diagnosis `blocks`, with the standard's meaning of
+// an F-device's diagnosis 64..71 the GSD names no text for (gsd::device_diag_texts).
+std::vector<std::string> diagnosis_texts(const Device& device, std::span<const std::uint8_t> blocks);
+// The same "; "-separated (none: "").
 std::string diagnosis_text(const Device& device, std::span<const std::uint8_t> blocks);
 
 // Our class 1 master's entry for the station, from the same GSD: Set_Prm (Lock_Req, WD_On, the
@@ -149,6 +155,9 @@ class GsdApplication final : public dp::slave::SlaveApplication {
   [[nodiscard]] std::vector<FModuleDevice>& f_modules() { return f_modules_; }
   [[nodiscard]] const std::vector<FModuleDevice>& f_modules() const { return f_modules_; }
   [[nodiscard]] FModuleDevice* f_module(std::size_t module);
+  // Power-up of the application (the slave's own power-up is Slave::restart): no Set_Prm
+  // taken, no diagnosis, each F-device without F-parameters; the inputs the harness set stay.
+  void power_up();
 
  private:
   void check_f_parameters();
@@ -198,6 +207,11 @@ class GsdStation final : public dp::Station {
   [[nodiscard]] const dp::slave::Slave& slave() const { return slave_; }
   // "GSD slave 5 (X.gse, ident 0x0B4E, modules "A", "B", cfg 33 51)"
   [[nodiscard]] std::string describe() const;
+  // The address switch of the F-device in slot index `module` set to `dest_add` (its own
+  // F_Dest_Add, [IEC 61784-3-3 F-Parameters]); a device reads it at power-up, so the station
+  // powers up again (Wait_Prm: the master's next Set_Prm meets the new switch).
+  // std::errc::invalid_argument: no F-device in that slot.
+  std::error_code set_f_dest_add(std::size_t module, std::uint16_t dest_add);
 
  private:
   static dp::slave::Config slave_config(const GsdStationSpec& spec);

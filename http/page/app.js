@@ -428,7 +428,10 @@ async function pollGsd() {
   let list;
   try { list = await call("rs4sim.v1.GsdStations/ListStations"); } catch (err) { return false; }
   gsdServed = true;
-  for (const st of list.stations || []) drawGsd(st);
+  for (const st of list.stations || []) {
+    drawGsd(st);
+    await refreshGsdF(Number(st.address || 0));
+  }
   return true;
 }
 
@@ -438,9 +441,59 @@ async function refreshGsd(address) {
   gsdRefreshing.add(address);
   try {
     drawGsd(await call("rs4sim.v1.GsdStations/GetStation", { address }));
+    await refreshGsdF(address);
   } catch (err) {
     log(`GSD station ${address}: ${err.message}`);
   } finally { gsdRefreshing.delete(address); }
+}
+
+// The station's PROFIsafe F-modules (GsdStations.GetFModules, docs/profisafe.md "GSD F-devices"):
+// mode, state, the diagnosis with the GSD's (or the standard's) text, F-inputs and F-outputs,
+// and our master's F-host where the run has one. Asked once more only for a station that has
+// F-modules.
+const gsdWithoutF = new Set();
+async function refreshGsdF(address) {
+  if (gsdWithoutF.has(address)) return;
+  let f;
+  try { f = await call("rs4sim.v1.GsdStations/GetFModules", { address }); } catch (err) {
+    log(`GSD station ${address} F-modules: ${err.message}`);
+    return;
+  }
+  if (!(f.modules || []).length) { gsdWithoutF.add(address); return; }
+  drawGsdF(address, f.modules);
+}
+
+function drawGsdF(address, modules) {
+  const box = $("gsd").querySelector(`.gsd-station[data-address="${address}"]`);
+  if (!box) return;
+  let list = box.querySelector(".gsd-f");
+  if (!list) { list = el("div", { class: "gsd-f" }); box.append(list); }
+  list.replaceChildren();
+  for (const m of modules) {
+    const size = Number(m.fDataLength || 0);
+    const inputs = bytesOf(m.fInputs, size), outputs = bytesOf(m.fOutputs, size);
+    const state = m.state || "";
+    const f = el("div", { class: "gsd-fmodule", "data-slot": Number(m.slot || 0), "data-mode": m.mode,
+      "data-state": state, "data-diagnosis": Number(m.diagnosis || 0),
+      "data-f-inputs": inputs.map((b) => hex(b).toLowerCase()).join(" "),
+      "data-f-outputs": outputs.map((b) => hex(b).toLowerCase()).join(" "),
+      "data-host": m.host ? m.host.state : "" });
+    const head = el("h4");
+    head.append(`F-module slot ${Number(m.slot || 0)} "${m.name}" · PROFIsafe ${m.mode} `);
+    head.insertAdjacentHTML("beforeend", pill(state, state === "run" ? "ok" : "bad") +
+      (m.host ? " F-host " + pill(m.host.state, m.host.state === "run" ? "ok" : "bad") : ""));
+    f.append(head);
+    const notes = [`F_Dest_Add ${Number(m.fDestAdd || 0)}`, `number ${Number(m.consecutiveNumber || 0)}`,
+      `status ${(m.statusBits || []).join(" ") || "–"}`, `host control ${(m.hostControlBits || []).join(" ") || "–"}`];
+    if (m.diagnosis) notes.unshift(`diagnosis ${m.diagnosis}: ${m.diagnosisText}`);
+    f.append(el("p", { class: "gsd-fdiag note" }, notes.join(" · ")));
+    const io = el("div", { class: "gsd-fio" });
+    io.append(el("span", {}, "F-inputs (device → host) "), byteCells(inputs, "in"),
+      el("span", {}, m.fOutputsFailSafe ? " F-outputs: fail-safe values " : " F-outputs (host → device) "),
+      byteCells(outputs, "out"));
+    f.append(io);
+    list.append(f);
+  }
 }
 
 // The JSON mapping's base64 `bytes` as numbers, `length` of them (zeros where none were set).
@@ -534,41 +587,49 @@ const fHex = (b64) => bytesOf(b64, 0).map((b) => hex(b).toLowerCase()).join(" ")
 async function pollGsdMaster() {
   let list;
   try { list = await call("rs4sim.v1.GsdMaster/ListSlaves"); } catch (err) { return false; }
-  const body = $("gsd-fhost").tBodies[0];
-  body.replaceChildren();
   for (const slave of list.slaves || []) {
-    for (const f of slave.fModules || []) body.append(fHostRow(Number(slave.address || 0), f));
+    for (const f of slave.fModules || []) drawFHost(Number(slave.address || 0), f);
   }
-  $("gsd-fhost-panel").hidden = body.rows.length === 0;
+  $("gsd-fhost-panel").hidden = $("gsd-fhost").tBodies[0].rows.length === 0;
   return true;
 }
 
-function fHostRow(address, f) {
+// The row of one F-module, made once (its ACK_REI button stays the same element between polls,
+// so a click is never lost to a redraw) and filled from the F-host's state.
+function drawFHost(address, f) {
   const slot = Number(f.slot || 0);
-  const row = el("tr", { class: "gsd-fhost", "data-address": address, "data-slot": slot,
-    "data-state": f.fState || "" });
+  const body = $("gsd-fhost").tBodies[0];
+  let row = body.querySelector(`tr[data-address="${address}"][data-slot="${slot}"]`);
+  if (!row) {
+    row = el("tr", { class: "gsd-fhost", "data-address": address, "data-slot": slot });
+    for (let i = 0; i < 10; i++) row.append(el("td"));
+    const ack = el("button", { class: "ack-rei" }, "ACK_REI");
+    ack.addEventListener("click", async () => {
+      try {
+        await call("rs4sim.v1.GsdMaster/AcknowledgeF", { address, slot });
+        log(`GSD slave ${address} slot ${slot}: ACK_REI`);
+      } catch (err) { log(`ACK_REI ${address}/${slot}: ${err.message}`); }
+      pollGsdMaster();
+    });
+    const cell = el("td");
+    cell.append(ack);
+    row.append(cell);
+    body.append(row);
+  }
+  row.dataset.state = f.fState || "";
   const n = (k) => Number((f.counters || {})[k] || 0);
-  row.innerHTML = [
-    `<td>${address}</td>`, `<td>${slot}</td>`, `<td>${f.mode || "–"}</td>`,
-    `<td>${pill(f.fState, fClass(f.fState))}</td>`, `<td>${f.passivated ? "yes" : "no"}</td>`,
-    `<td>${f.ackReq ? pill("ACK_REQ", "warn") : "–"}</td>`,
-  ].join("");
-  row.append(el("td", {}, f.lastFault || "–"), el("td", { class: "f-in" }, fHex(f.fInputs)),
-    el("td", { class: "f-out" }, fHex(f.fOutputsSent)),
-    el("td", {}, `${n("crc_errors")} / ${n("number_errors")} / ${n("watchdog_timeouts")} / ${n("passivations")}`));
-  const cell = el("td");
-  const ack = el("button", { class: "ack-rei" }, "ACK_REI");
-  ack.disabled = !f.ackReq;
-  ack.addEventListener("click", async () => {
-    try {
-      await call("rs4sim.v1.GsdMaster/AcknowledgeF", { address, slot });
-      log(`GSD slave ${address} slot ${slot}: ACK_REI`);
-    } catch (err) { log(`ACK_REI ${address}/${slot}: ${err.message}`); }
-    pollGsdMaster();
-  });
-  cell.append(ack);
-  row.append(cell);
-  return row;
+  const cells = row.cells;
+  cells[0].textContent = String(address);
+  cells[1].textContent = String(slot);
+  cells[2].textContent = f.mode || "–";
+  cells[3].innerHTML = pill(f.fState, fClass(f.fState));
+  cells[4].textContent = f.passivated ? "yes" : "no";
+  cells[5].innerHTML = f.ackReq ? pill("ACK_REQ", "warn") : "–";
+  cells[6].textContent = f.lastFault || "–";
+  cells[7].textContent = fHex(f.fInputs);
+  cells[8].textContent = fHex(f.fOutputsSent);
+  cells[9].textContent = `${n("crc_errors")} / ${n("number_errors")} / ${n("watchdog_timeouts")} / ${n("passivations")}`;
+  row.querySelector(".ack-rei").disabled = !f.ackReq;
 }
 
 // ---- simulated time -------------------------------------------------------------------------

@@ -7,6 +7,9 @@
     gsd.set_inputs(5, 1, b"\\x11\\x22")  # module in slot 1: exactly its input length
     gsd.outputs(5, 2)                  # what the master wrote to the module in slot 2
     gsd.set_online(5, False)           # off the bus; True puts it back
+    gsd.f_module(5, 0).state           # a PROFIsafe F-module: "run", "passivated", ...
+    gsd.set_f_inputs(5, 0, b"\\x01\\x00\\x00\\x00")  # the F-input data it reports
+    gsd.inject_f_fault(5, 0, "CORRUPT_CRC2")  # also WRONG_NUMBER, REPEAT_NUMBER, DELAY, ...
 
 On the simulated bus (`--link memory`) the clock and the bus faults:
 
@@ -34,6 +37,7 @@ F-devices"; `rs4sim master --manual-ack` leaves ACK_REQ to the operator):
 
 from ._units import renamed, whole
 from .harness import _Client, _Subscribed, _advance, _now, open_channel, pb, pb_grpc
+from .v1 import gsd_fdevice_pb2 as gsd_f_pb
 from .v1 import gsd_pb2 as gsd_pb
 from .v1 import gsd_pb2_grpc as gsd_grpc
 
@@ -120,10 +124,60 @@ class GsdStations(_Client):
         injected for its other stations too)."""
         self.stub.ClearBusFaults(pb.Empty())
 
+    # ---- PROFIsafe F-modules (gsd_fdevice.proto, docs/profisafe.md "GSD F-devices") -------
+    def f_modules(self, address):
+        """[GsdFModule]: the station's F-devices (slot, mode "V1"/"V2", state, diagnosis and
+        its text, consecutive number, the host's control bits, F-inputs/F-outputs, counters,
+        pending faults; `host`: our master's F-host on the simulated bus)."""
+        return list(self.stub.GetFModules(pb.StationRequest(address=address)).modules)
+
+    def f_module(self, address, slot):
+        """GsdFModule of the F-module in `slot` (0-based); KeyError if that slot has none."""
+        for module in self.f_modules(address):
+            if module.slot == slot:
+                return module
+        raise KeyError("station %d has no F-module in slot %d" % (address, slot))
+
+    def set_f_inputs(self, address, slot, data):
+        """The F-input data the F-module in `slot` reports (bytes, exactly its F-input
+        length; sent while it runs; no time)."""
+        self.stub.SetFInputs(gsd_pb.SetGsdInputsRequest(address=address, slot=slot,
+                                                        data=bytes(data)))
+
+    def set_f_outputs(self, address, slot, data):
+        """The simulated bus: the F-output data our master's F-host sends to it (no time)."""
+        self.stub.SetFOutputs(gsd_pb.SetGsdOutputsRequest(address=address, slot=slot,
+                                                          data=bytes(data)))
+
+    def inject_f_fault(self, address, slot, fault, count=1, delay=None, f_dest_add=0):
+        """A fault of the F-device in `slot`: "CORRUPT_CRC2", "WRONG_NUMBER", "REPEAT_NUMBER"
+        (the next `count` answers), "DELAY" (answers held back for `delay` seconds, whole ms)
+        or "WRONG_F_DEST_ADD" (its address switch at `f_dest_add`, then a power-up; no
+        time)."""
+        kind = fault.upper()
+        counted = kind in ("CORRUPT_CRC2", "WRONG_NUMBER", "REPEAT_NUMBER")
+        self.stub.InjectFFault(gsd_f_pb.InjectGsdFFaultRequest(
+            address=address, slot=slot, fault=gsd_f_pb.GsdFFault.Value("GSD_F_FAULT_" + kind),
+            count=count if counted else 0,
+            delay_ms=whole(delay, 1000, "delay") if delay is not None else 0,
+            f_dest_add=f_dest_add))
+
+    def clear_f_faults(self, address, slot):
+        """The pending faults end; the address switch goes back (with a power-up)."""
+        self.stub.ClearFFaults(gsd_f_pb.GsdFModuleRequest(address=address, slot=slot))
+
+    def ack_f_host(self, address, slot):
+        """The simulated bus: the operator acknowledges our master's F-host (ACK_REI); only
+        while it raises ACK_REQ (state "ack-required")."""
+        self.stub.AckFHost(gsd_f_pb.GsdFModuleRequest(address=address, slot=slot))
+
     def events(self, stations=(), telegrams=False):
         """Observation.StreamEvents for these stations (all: empty), as Rs4.events: the
         current items first (StateChange with previous = ""), then every change ("dp-state",
-        "online", "inputs", "outputs", "ext-diag", "diagnosis", "diagnosis-text")."""
+        "online", "inputs", "outputs", "ext-diag", "diagnosis", "diagnosis-text"; per
+        F-module "fdevice-state", "fdevice-diagnosis", "f-inputs", "f-outputs" and on the
+        simulated bus "fhost-state", each ending in ":<slot>" on a station with two
+        F-modules or more)."""
         return _Subscribed(self.observation.StreamEvents(pb.StreamEventsRequest(
             addresses=list(stations), telegrams=telegrams)))
 

@@ -122,6 +122,14 @@ class ArchiveCli : public ::testing::Test {
                       (archive.empty() ? archive_.string() : archive) + "'");
   }
 
+  // `rs4sim archive <args>` fails with `exit_code` and says `words` on stderr; its result.
+  CliResult expect_refusal(const std::string& args, int exit_code, const std::string& words) const {
+    auto r = run(args);
+    EXPECT_EQ(r.exit_code, exit_code) << args;
+    EXPECT_NE(r.err.find(words), std::string::npos) << r.err;
+    return r;
+  }
+
   // rs4sim <args>, stdout and stderr captured.
   CliResult run_rs4sim(const std::string& args) const {
     const auto err = dir_ / "stderr.txt";

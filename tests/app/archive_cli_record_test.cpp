@@ -23,12 +23,8 @@ TEST_F(ArchiveCli, NoteReplacesAVersionsComment) {
 
 TEST_F(ArchiveCli, NoteRefusesWhatItCannotStore) {
   const auto before = contents();
-  auto r = run("note 99 'x'");
-  EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("version 99"), std::string::npos) << r.err;
-  r = run("note 2 \"$(printf 'bad \\377')\"");
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("archive note: note: byte 4 is not UTF-8"), std::string::npos) << r.err;
+  auto r = expect_refusal("note 99 'x'", 1, "version 99");
+  expect_refusal("note 2 \"$(printf 'bad \\377')\"", 2, "archive note: note: byte 4 is not UTF-8");
   r = run("note 2");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(contents(), before);
@@ -117,12 +113,8 @@ TEST_F(ArchiveCli, WatchSeesAVersionAnotherProcessStores) {
 }
 
 TEST_F(ArchiveCli, WatchTimesOutWithExit1AndRefusesATimeoutWithoutCount) {
-  auto r = run("watch --count 1 --timeout 0.3");
-  EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("0 of 1 versions within 0.3 s"), std::string::npos) << r.err;
-  r = run("watch --timeout 1");
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("--timeout needs --count"), std::string::npos) << r.err;
+  expect_refusal("watch --count 1 --timeout 0.3", 1, "0 of 1 versions within 0.3 s");
+  expect_refusal("watch --timeout 1", 2, "--timeout needs --count");
 }
 
 }  // namespace

@@ -62,9 +62,7 @@ TEST_F(ArchiveCli, VerifyPassesAndFindsABadBlob) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find(": ok (2 stations)"), std::string::npos) << r.out;
   sql(archive_, "UPDATE parameter_sets SET blob = zeroblob(8507) WHERE id = 1");
-  r = run("verify");
-  EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("problem"), std::string::npos) << r.err;
+  expect_refusal("verify", 1, "problem");
   r = run("verify --json");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_FALSE(parse_json(r.out).get<bool>("ok"));
@@ -84,21 +82,13 @@ TEST_F(ArchiveCli, UsageErrorsExitTwo) {
 
 TEST_F(ArchiveCli, UnknownStationAndVersion) {
   const std::string before = contents();
-  auto r = run("show 99");
-  EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("unknown version"), std::string::npos) << r.err;
-  r = run("restore 99");
-  EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("unknown version"), std::string::npos) << r.err;
-  r = run("history --bus nowhere --address 4");
-  EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("unknown station"), std::string::npos) << r.err;
+  expect_refusal("show 99", 1, "unknown version");
+  expect_refusal("restore 99", 1, "unknown version");
+  const auto r = expect_refusal("history --bus nowhere --address 4", 1, "unknown station");
   // … and names what the archive has (the fixture's default/4 and line2/5).
   EXPECT_NE(r.err.find("(the archive has bus default: 4; bus line2: 5)"), std::string::npos)
       << r.err;
-  r = run("diff --bus line2 --address 5");
-  EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("has no version before"), std::string::npos) << r.err;
+  expect_refusal("diff --bus line2 --address 5", 1, "has no version before");
   EXPECT_EQ(contents(), before);
 }
 
@@ -115,17 +105,13 @@ TEST_F(ArchiveCli, BadImportFilesChangeNothing) {
   write_text(dir_ / "bad_crc.json", bad_crc);
   write_text(dir_ / "truncated.json", good.substr(0, good.size() / 2));
   write_text(dir_ / "garbage.pb", "\xff\xff\xff garbage");
-  auto r = run("import '" + (dir_ / "bad_crc.json").string() + "'");
-  EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("CRC"), std::string::npos) << r.err;
+  auto r = expect_refusal("import '" + (dir_ / "bad_crc.json").string() + "'", 1, "CRC");
   for (const std::string name : {"truncated.json", "garbage.pb"}) {
     r = run("import '" + (dir_ / name).string() + "'");
     EXPECT_EQ(r.exit_code, 1) << name;
     EXPECT_NE(r.err.find("import"), std::string::npos) << name << ": " << r.err;
   }
-  r = run("import '" + (dir_ / "missing.json").string() + "'");
-  EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("cannot read"), std::string::npos) << r.err;
+  expect_refusal("import '" + (dir_ / "missing.json").string() + "'", 1, "cannot read");
   EXPECT_EQ(contents(), before);
   // A failed import into a new file creates no archive.
   r = run("import '" + (dir_ / "garbage.pb").string() + "'", (dir_ / "new.sqlite3").string());
@@ -151,9 +137,7 @@ TEST_F(ArchiveCli, FilesThatAreNotOurArchive) {
   EXPECT_NE(r.err.find("not an rs4sim archive"), std::string::npos) << r.err;
 
   sql(archive_, "PRAGMA user_version = 999");
-  r = run("list");
-  EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("newer rs4sim"), std::string::npos) << r.err;
+  expect_refusal("list", 1, "newer rs4sim");
 }
 
 TEST_F(ArchiveCli, AnOlderSchemaIsReadAfterInitMigratesIt) {

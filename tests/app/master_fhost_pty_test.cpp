@@ -10,7 +10,6 @@
 #include "app/runtime/master_service.h"
 #include "dp/link/profibus_line.h"
 #include "dp/link/station_runner.h"
-#include "gsd/config.h"
 #include "rpc/gsd_master_service.h"
 #include "tests/app/gsd_master_f_calls.h"
 #include "rs4/adapter/cyclic_bytes.h"
@@ -32,16 +31,6 @@ using namespace std::chrono_literals;
 using Bytes = std::vector<std::uint8_t>;
 
 const std::string kCorpus = RS4SIM_GSD_CORPUS;
-
-// The master's spec of a GSD F-device with a generous F_WD_Time for a loaded machine (the device
-// takes 10..10000 ms from its GSD and runs its watchdog on the received value).
-GsdStationSpec master_spec(const GsdStationSpec& station, const std::vector<std::string>& modules) {
-  GsdStationSpec s = station;
-  auto setup = gsd::configure(*s.device, {modules, {{"F_WD_Time", 1000}}});
-  EXPECT_TRUE(setup) << (setup ? "" : setup.error().what());
-  s.setup = setup.value();
-  return s;
-}
 
 struct PtyLine {
   asio::io_context io;
@@ -69,7 +58,10 @@ struct PtyLine {
     o.station.bus = dp::master::BusParameters::defaults_for(dp::BaudRate::k1M5);
     o.station.bus.tsl = 16383;  // a real-time link: the longest slot time (as `rs4sim master`)
     o.gsd_watchdog = 2000ms;
-    o.gsd_slaves = {master_spec(v1, {"PROFIsafe v1.x Module"}), master_spec(v2, {})};
+    // Generous watchdogs for a loaded machine (`rs4sim master --f-wd-time 1000`): the devices
+    // take 10..10000 ms from their GSDs and run their watchdog on the received value.
+    o.gsd_slaves = {v1, v2};
+    apply_gsd_f_wd_time(o.gsd_slaves, 1000);
     const auto line = dp::link::profibus_line(dp::BaudRate::k1M5);
     slave_side = std::make_unique<stream::SerialTransport>(io, pty.release_master(), line, "pty");
     master_side = std::make_unique<stream::SerialTransport>(io, pty.slave_path(), line);

@@ -111,6 +111,12 @@ TEST(MasterGsdFHost, WritesTheFParameterBlocksAndReachesRunBesideAnRs4) {
   const auto text = b.out.str();
   EXPECT_NE(text.find("GSD slave 5: PROFIsafe V1 slot 0: run"), std::string::npos) << text;
   EXPECT_NE(text.find("GSD slave 6: PROFIsafe V2 slot 0: run"), std::string::npos) << text;
+  EXPECT_NE(b.service->describe().find("GSD slave 5, 6 (from their GSDs, PROFIsafe F-host for "
+                                       "their F-modules)"),
+            std::string::npos)
+      << b.service->describe();
+  b.service->print_status(b.out, {});
+  EXPECT_NE(b.out.str().find(", PROFIsafe slot 0 V2 run"), std::string::npos) << b.out.str();
 }
 
 // The station's address switch F_Dest_Add 300 (bus-file "f-dest-add"): the master writes 300
@@ -272,6 +278,26 @@ TEST(MasterGsdFHost, GsdFDestAddOptionSetsTheSlavesAddressSwitch) {
   EXPECT_EQ(message("6:77"), "--gsd-f-dest-add 6:77: no --gsd-slave 6:FILE given");
   EXPECT_EQ(message("5:x"), "--gsd-f-dest-add 5:x: \"x\" is not a decimal number");
   EXPECT_EQ(message("77"), "--gsd-f-dest-add 77: use ADDRESS:F_DEST_ADD, e.g. 5:300");
+}
+
+// --f-wd-time for the GSD F-modules: the F_WD_Time written (and the F-host's watchdog), inside
+// the GSD's range 10..10000 (f_module_v1.gsd's ExtUserPrmData 7).
+TEST(MasterGsdFHost, FWdTimeOptionSetsTheGsdFModulesWatchdog) {
+  auto specs = parse_gsd_slaves({"5:" + kV1}, {"5:PROFIsafe v1.x Module"}, "1.5M");
+  apply_gsd_f_wd_time(specs, 500);
+  gsd::GsdMasterSlaves slaves(specs);
+  EXPECT_EQ(slaves.find(5)->f_modules.at(0).parameters.wd_time_ms, 500);
+  EXPECT_EQ(slaves.find(5)->spec.setup.user_prm_data[6], 0x01);  // 500 = 01 F4, big-endian
+  EXPECT_EQ(slaves.find(5)->spec.setup.user_prm_data[7], 0xF4);
+  try {
+    apply_gsd_f_wd_time(specs, 5);
+    ADD_FAILURE() << "5 ms accepted";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("f_module_v1.gsd:48: F_WD_Time is 10..10000 for GSD "
+                                         "slave 5"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

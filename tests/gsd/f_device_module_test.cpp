@@ -38,7 +38,7 @@ struct Rig {
     Bytes outputs(setup.output_len, 0);
     std::copy(req.begin(), req.end(), outputs.begin());
     fdev->on_outputs(outputs, now);
-    fdev->write_inputs(inputs);
+    fdev->write_inputs(inputs, now);
     return host.on_pdu(std::span(inputs).first(req.size()), now);
   }
   Device device;

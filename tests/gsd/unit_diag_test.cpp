@@ -140,5 +140,37 @@ TEST(GsdUnitDiag, UnreadableLinesAreSkippedWithAWarningNamingTheLine) {
             "m.gsd:7: Value(1) given twice: `Value(1) = \"y\"`");
 }
 
+// An F-device's diagnosis 64..71 [IEC 61784-3-3 F-Parameters] in its status block `05 81 slot 00
+// nn` ([IEC 61158-6-3 DPV1 status]: Status_Type 0x81 = UnitDiagType 129, nn = bits 24-31). The
+// project's f_module_v1.gsd names 64..70 in the vendors' form (X_Value(64) = "F add. does not
+// match F_Dest_Add", a drive maker's words) and not 71; f_module_v2.gsd names none: there the
+// standard's meaning stands.
+TEST(GsdUnitDiag, AnFDevicesDiagnosisByTheGsdsXValueElseTheStandards) {
+  auto v1 = parse(testing::corpus("f_module_v1.gsd"), "f_module_v1.gsd");
+  auto v2 = parse(testing::corpus("f_module_v2.gsd"), "f_module_v2.gsd");
+  ASSERT_TRUE(v1 && v2);
+  const UnitDiag& own = v1.value().unit_diag;
+  EXPECT_EQ(f_diagnosis_text(own, 64), "F add. does not match F_Dest_Add");
+  EXPECT_EQ(f_diagnosis_text(own, 70), "F-parameter version wrong");
+  EXPECT_EQ(f_diagnosis_text(own, 71), "CRC1 fault (F_Par_CRC)");  // the standard's
+  EXPECT_EQ(f_diagnosis_text(v2.value().unit_diag, 64),
+            "Mismatch of safety destination address (F_Dest_Add)");
+  EXPECT_EQ(f_diagnosis_text(own, 72), "");  // not one of 64..71
+  // The block of slot 1 with 64: the GSD's text once (not the standard's beside it).
+  const Bytes dest{0x05, 0x81, 0x01, 0x00, 64};
+  EXPECT_EQ(device_diag_texts(own, true, dest), Texts{"F add. does not match F_Dest_Add"});
+  EXPECT_EQ(device_diag_texts(v2.value().unit_diag, true, dest),
+            Texts{"Mismatch of safety destination address (F_Dest_Add)"});
+  // 71 (0x47): the GSD's area has no value for it, then the standard's meaning.
+  EXPECT_EQ(device_diag_texts(own, true, Bytes{0x05, 0x81, 0x01, 0x00, 0x47}),
+            (Texts{"Unit_Diag_Area 24-31: value 71", "CRC1 fault (F_Par_CRC)"}));
+  // Not an F-device, or not its status block (an alarm type 1, a longer block): the GSD alone.
+  EXPECT_EQ(device_diag_texts(v2.value().unit_diag, false, dest), Texts{});
+  EXPECT_EQ(device_diag_texts(v2.value().unit_diag, true, Bytes{0x05, 0x01, 0x01, 0x00, 64}),
+            Texts{});
+  EXPECT_EQ(device_diag_texts(v2.value().unit_diag, true, Bytes{0x06, 0x81, 1, 0, 64, 0}),
+            Texts{});
+}
+
 }  // namespace
 }  // namespace rs4sim::gsd

@@ -18,12 +18,16 @@ two changes of the set through the run's JSON API (Device.SetParameterSet) are u
 two versions and the page draws their diff (the picture of `rs4sim archive diff --svg`).
 Before that, a bus file on the simulated bus (`run --bus bus_rs4_gsd.json --link memory`):
 the GSD station's address, ident, modules, DP state and online, and the inputs set through
-GsdStations.SetInputs bit by bit in the DOM; off the bus and back.
+GsdStations.SetInputs bit by bit in the DOM; off the bus and back. Then a GSD F-device
+(`run --gsd f_module_v1.gsd --link memory`): its PROFIsafe V1 F-module running with our
+master's F-host, the F-inputs set, and diagnosis 64 with the GSD's own text after a wrong
+F_Dest_Add.
 At every stage the browser's console holds no 501 (the page asks Run.Describe what the run
 serves and calls nothing else); the RS4's healthy start counts RS/RR but no Illegal; the
 master's page names its archive file and shows the master's DataExchange as Data_Exch.
 The screenshots are the test's artifacts: live_view.png, live_view_gridscan.png,
-live_view_metron.png, live_view_polaris.png, live_view_gsd.png and live_view_master.png in
+live_view_metron.png, live_view_polaris.png, live_view_gsd.png, live_view_gsd_fdevice.png and
+live_view_master.png in
 OUTDIR.
 
 Usage: browser_test.py RS4SIM OUTDIR. Exit 77 (skipped) without selenium or chromium.
@@ -76,6 +80,19 @@ def listening_among(proc, prefix="http: listening on "):
         if line.startswith(prefix):
             return line[len(prefix):].strip()
     raise AssertionError(f"no {prefix!r} line")
+
+
+def simulated_page(driver, procs, rs4sim, args, advance_ms):
+    """`rs4sim run ARGS --link memory --baud 12M --http` started, its clock moved by
+    `advance_ms`, its page opened; returns the page's base URL."""
+    proc = subprocess.Popen([rs4sim, "run"] + args + ["--link", "memory", "--baud", "12M",
+                                                     "--http", "127.0.0.1:0"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    procs.append(proc)
+    base = listening_among(proc)
+    call(base, "rs4sim.v1.SimTime/Advance", {"durationMs": advance_ms})
+    driver.get(base)
+    return base
 
 
 def free_udp_port():
@@ -233,14 +250,8 @@ def main():
         # (GsdStations.SetInputs, bytes in base64) appear bit by bit; off the bus and back.
         bus_file = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "gsd", "corpus",
                                 "bus_rs4_gsd.json")
-        bus = subprocess.Popen([rs4sim, "run", "--bus", bus_file, "--link", "memory",
-                                "--baud", "12M", "--http", "127.0.0.1:0"],
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-        procs.append(bus)
-        base = listening_among(bus)
         # past the RS4's PROFIBUS adapter start (LED steady 2-3 s [RS4 manual §4.4], 2.5 s)
-        call(base, "rs4sim.v1.SimTime/Advance", {"durationMs": 3000})
-        driver.get(base)
+        base = simulated_page(driver, procs, rs4sim, ["--bus", bus_file], 3000)
         gsd = '#gsd .gsd-station[data-address="5"]'
         wait.until(lambda d: d.find_elements(
             By.CSS_SELECTOR,
@@ -283,6 +294,37 @@ def main():
         driver.save_screenshot(shot)
         print(f"ok: GSD station 5 drawn (ident 0xB756, {len(modules)} modules), inputs A5 and "
               f"11 22 33 44 bit by bit, off the bus and back; screenshot {shot}")
+
+        # A GSD F-device on the simulated bus with our master's F-host (`run --gsd
+        # f_module_v1.gsd --link memory`): the drive's "PROFIsafe v1.x Module" in slot 1 (V1, 4
+        # F-data bytes) runs; F-inputs set through the JSON API appear; the address switch at 2
+        # and a power-up: diagnosis 64 with the GSD's own text (its X_Value(64)).
+        corpus = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "gsd", "corpus")
+        base = simulated_page(driver, procs, rs4sim,
+                              ["--gsd", os.path.join(corpus, "f_module_v1.gsd"), "--module",
+                               "Standard telegram 1, PZD-2/2", "--module", "PROFIsafe v1.x Module",
+                               "--address", "5"], 1000)
+        fmod = '#gsd .gsd-station[data-address="5"] .gsd-fmodule[data-slot="1"]'
+        wait.until(lambda d: d.find_elements(
+            By.CSS_SELECTOR, fmod + '[data-mode="V1"][data-state="run"][data-host="run"]'))
+        call(base, "rs4sim.v1.GsdStations/SetFInputs",
+             {"address": 5, "slot": 1, "data": "ESIzRA=="})  # 11 22 33 44
+        call(base, "rs4sim.v1.SimTime/Advance", {"durationMs": 50})
+        wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, fmod + '[data-f-inputs="11 22 33 44"]'))
+        call(base, "rs4sim.v1.GsdStations/InjectFFault",
+             {"address": 5, "slot": 1, "fault": "GSD_F_FAULT_WRONG_F_DEST_ADD", "fDestAdd": 2})
+        call(base, "rs4sim.v1.SimTime/Advance", {"durationMs": 500})
+        wait.until(lambda d: d.find_elements(
+            By.CSS_SELECTOR, fmod + '[data-state="parameter-fault"][data-diagnosis="64"]'))
+        text = wait.until(lambda d: d.execute_script(
+            "const p = document.querySelector(arguments[0] + ' .gsd-fdiag');"
+            "return p ? p.textContent : null;", fmod))
+        assert text.startswith("diagnosis 64: F add. does not match F_Dest_Add"), text
+        driver.execute_script("document.getElementById('gsd-panel').scrollIntoView()")
+        shot = os.path.join(outdir, "live_view_gsd_fdevice.png")
+        driver.save_screenshot(shot)
+        print(f"ok: GSD F-device V1 drawn, F-inputs 11 22 33 44, diagnosis 64 with the GSD's "
+              f"text; screenshot {shot}")
 
         # `master` with an archive, its RS4 in `rs4sim run` on UDP (a 3 s boot).
         work = tempfile.mkdtemp(prefix="rs4sim_browser_master_")

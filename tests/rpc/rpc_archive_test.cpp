@@ -29,23 +29,16 @@ namespace {
 
 const storage::StationKey kStation{"default", 4};
 
-class RpcArchiveTest : public ::testing::Test, protected TestLoop {
+class RpcArchiveTest : public ::testing::Test, protected ServedLoop {
  protected:
   void SetUp() override {
     archive_ = storage::SqliteArchive::open(dir_.file("archive.sqlite3")).value();
     service_ = std::make_unique<ArchiveService>(
         *archive_, executor_, [] { return storage::testing::at_ms(5000); },
         dir_.file("archive.sqlite3").string());
-    start_loop();
-    server_ =
-        std::make_unique<RpcServer>(ServerOptions{}, std::vector<grpc::Service*>{service_.get()});
-    stub_ = v1::Archive::NewStub(
-        grpc::CreateChannel(server_->address(), grpc::InsecureChannelCredentials()));
+    stub_ = serve<v1::Archive>(*service_);
   }
-  void TearDown() override {
-    server_->shutdown();
-    stop_loop();
-  }
+  void TearDown() override { stop_serving(); }
   storage::VersionId store(const rs4::scanner::ParameterSet& set, std::int64_t at) {
     const auto blob = rs4::scanner::encode(set);
     storage::StoreRequest r;
@@ -61,15 +54,15 @@ class RpcArchiveTest : public ::testing::Test, protected TestLoop {
   storage::testing::TempDir dir_;
   std::unique_ptr<storage::SqliteArchive> archive_;
   std::unique_ptr<ArchiveService> service_;
-  std::unique_ptr<RpcServer> server_;
   std::unique_ptr<v1::Archive::Stub> stub_;
 };
 
 // ListStations names the archive it shows (the master's page says which one); a PostgreSQL
 // server without its password.
 TEST_F(RpcArchiveTest, ListStationsNamesAServerArchiveWithoutItsPassword) {
-  ArchiveService named(*archive_, executor_, [] { return storage::testing::at_ms(5000); },
-                       "postgresql://plant:s3cret@127.0.0.1:5433/rs4");
+  ArchiveService named(
+      *archive_, executor_, [] { return storage::testing::at_ms(5000); },
+      "postgresql://plant:s3cret@127.0.0.1:5433/rs4");
   v1::ListStationsResponse out;
   ASSERT_TRUE(named.ListStations(nullptr, nullptr, &out).ok());
   EXPECT_EQ(out.archive(), "postgresql://plant@127.0.0.1:5433/rs4");
@@ -81,30 +74,28 @@ TEST_F(RpcArchiveTest, HistoryDiffRestoreAndVerify) {
   for (std::size_t n = 100; n <= 140; ++n) changed.pairs[1].protective_mm[n] = 1850;
   const auto second = store(changed, 2000);
 
-  grpc::ClientContext c1;
   v1::ListStationsResponse stations;
-  ASSERT_TRUE(stub_->ListStations(&c1, v1::ListStationsRequest{}, &stations).ok());
+  ASSERT_TRUE(
+      unary(*stub_, &v1::Archive::Stub::ListStations, v1::ListStationsRequest{}, stations).ok());
   ASSERT_EQ(stations.stations_size(), 1);
   EXPECT_EQ(stations.stations(0).key().address(), 4U);
   EXPECT_EQ(stations.stations(0).current_version_id(), static_cast<std::uint64_t>(second));
   EXPECT_EQ(stations.archive(), dir_.file("archive.sqlite3").string());  // which archive
 
-  grpc::ClientContext c2;
   v1::StationKey key;
   key.set_address(4);  // bus "" = "default"
   v1::HistoryResponse history;
-  ASSERT_TRUE(stub_->History(&c2, key, &history).ok());
+  ASSERT_TRUE(unary(*stub_, &v1::Archive::Stub::History, key, history).ok());
   ASSERT_EQ(history.versions_size(), 2);
   EXPECT_EQ(history.versions(0).number(), 1U);
   EXPECT_EQ(history.versions(1).source(), "upload");
   EXPECT_EQ(history.versions(1).size(), 8507U);
 
-  grpc::ClientContext c3;
   v1::DiffRequest d;
   d.set_old_version_id(static_cast<std::uint64_t>(first));
   d.set_new_version_id(static_cast<std::uint64_t>(second));
   v1::DiffResponse diff;
-  ASSERT_TRUE(stub_->Diff(&c3, d, &diff).ok());
+  ASSERT_TRUE(unary(*stub_, &v1::Archive::Stub::Diff, d, diff).ok());
   EXPECT_FALSE(diff.identical());
   EXPECT_EQ(diff.text(), "pair 2 protective: segments 100-140 changed, max +350 mm\n");
   EXPECT_EQ(diff.svg(), "") << "only with with_svg";
@@ -124,114 +115,102 @@ TEST_F(RpcArchiveTest, HistoryDiffRestoreAndVerify) {
                                                           {title, old_label, new_label}));
   }
 
-  grpc::ClientContext c4;
   v1::VersionRequest g;
   g.set_version_id(static_cast<std::uint64_t>(first));
   v1::VersionDetail detail;
-  ASSERT_TRUE(stub_->GetVersion(&c4, g, &detail).ok());
+  ASSERT_TRUE(unary(*stub_, &v1::Archive::Stub::GetVersion, g, detail).ok());
   EXPECT_EQ(detail.blob().size(), 8507U);
   EXPECT_EQ(detail.summary_json().find("password"), std::string::npos);
 
-  grpc::ClientContext c5;
   v1::RestoreRequest r;
   r.set_version_id(static_cast<std::uint64_t>(first));
   r.set_note("back to factory");
   v1::VersionInfo restored;
-  ASSERT_TRUE(stub_->Restore(&c5, r, &restored).ok());
+  ASSERT_TRUE(unary(*stub_, &v1::Archive::Stub::Restore, r, restored).ok());
   EXPECT_EQ(restored.number(), 3U);
   EXPECT_EQ(restored.source(), "restore");
   EXPECT_TRUE(restored.pending_download());
   EXPECT_EQ(restored.restored_from(), static_cast<std::uint64_t>(first));
   EXPECT_EQ(restored.stored_at_ms(), 5000);
 
-  grpc::ClientContext c6;
   v1::VerifyResponse verify;
-  ASSERT_TRUE(stub_->Verify(&c6, v1::VerifyRequest{}, &verify).ok());
+  ASSERT_TRUE(unary(*stub_, &v1::Archive::Stub::Verify, v1::VerifyRequest{}, verify).ok());
   EXPECT_TRUE(verify.ok());
 }
 
 TEST_F(RpcArchiveTest, ExportImportRoundTripAndRefusals) {
   store(rs4::scanner::factory_default(), 1000);
-  grpc::ClientContext c1;
   v1::ExportRequest e;
   e.set_format(v1::EXPORT_FORMAT_JSON);
   v1::ExportResponse file;
-  ASSERT_TRUE(stub_->Export(&c1, e, &file).ok());
+  ASSERT_TRUE(unary(*stub_, &v1::Archive::Stub::Export, e, file).ok());
   EXPECT_NE(file.file().find("\"stations\""), std::string::npos);
 
-  grpc::ClientContext c2;
   v1::ImportRequest i;
   i.set_format(v1::EXPORT_FORMAT_JSON);
   i.set_file(file.file());
   v1::ImportResponse imported;
-  ASSERT_TRUE(stub_->Import(&c2, i, &imported).ok());
+  ASSERT_TRUE(unary(*stub_, &v1::Archive::Stub::Import, i, imported).ok());
   EXPECT_EQ(imported.stations(), 1U);
   EXPECT_EQ(imported.versions(), 0U);  // its own export: every version already there
   EXPECT_EQ(imported.versions_present(), 1U);
   EXPECT_EQ(imported.per_station(0).current(), "current unchanged");
   EXPECT_EQ(imported.new_parameter_sets(), 0U);  // deduplicated by content
 
-  grpc::ClientContext c3;
   i.set_file("{ not json");
-  const auto corrupt = stub_->Import(&c3, i, &imported);
+  const auto corrupt = unary(*stub_, &v1::Archive::Stub::Import, i, imported);
   EXPECT_EQ(corrupt.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
   EXPECT_EQ(bad_field(corrupt), "file");
 
-  grpc::ClientContext c4;
   v1::VersionRequest g;
   g.set_version_id(999);
   v1::VersionDetail detail;
-  EXPECT_EQ(stub_->GetVersion(&c4, g, &detail).error_code(), grpc::StatusCode::NOT_FOUND);
-  grpc::ClientContext c5;
+  EXPECT_EQ(unary(*stub_, &v1::Archive::Stub::GetVersion, g, detail).error_code(),
+            grpc::StatusCode::NOT_FOUND);
   g.set_version_id(0);
-  EXPECT_EQ(bad_field(stub_->GetVersion(&c5, g, &detail)), "version_id");
-  grpc::ClientContext c6;
+  EXPECT_EQ(bad_field(unary(*stub_, &v1::Archive::Stub::GetVersion, g, detail)), "version_id");
   v1::StationKey key;
   key.set_address(200);
   v1::HistoryResponse history;
-  EXPECT_EQ(bad_field(stub_->History(&c6, key, &history)), "address");
-  grpc::ClientContext c7;
+  EXPECT_EQ(bad_field(unary(*stub_, &v1::Archive::Stub::History, key, history)), "address");
   key.set_address(9);
-  EXPECT_EQ(stub_->History(&c7, key, &history).error_code(), grpc::StatusCode::NOT_FOUND);
+  EXPECT_EQ(unary(*stub_, &v1::Archive::Stub::History, key, history).error_code(),
+            grpc::StatusCode::NOT_FOUND);
   // The archive is unchanged by the refusals: one version (the import recognised it).
   EXPECT_EQ(archive_->history(kStation).value().size(), 1U);
 }
 
 TEST_F(RpcArchiveTest, NoteAndWhoRestored) {
   const auto first = store(rs4::scanner::factory_default(), 1000);
-  grpc::ClientContext c1;
   v1::NoteRequest note;
   note.set_version_id(static_cast<std::uint64_t>(first));
   note.set_note("checked by QA");
   v1::VersionInfo out;
-  ASSERT_TRUE(stub_->Note(&c1, note, &out).ok());
+  ASSERT_TRUE(unary(*stub_, &v1::Archive::Stub::Note, note, out).ok());
   EXPECT_EQ(out.note(), "checked by QA");
   EXPECT_EQ(archive_->get(first).value().version.note, "checked by QA");
 
   // (A proto3 string is UTF-8 by definition: the client library refuses to send another.)
-  grpc::ClientContext c2;
   note.set_note(std::string(4097, 'n'));
-  const auto bad = stub_->Note(&c2, note, &out);
+  const auto bad = unary(*stub_, &v1::Archive::Stub::Note, note, out);
   EXPECT_EQ(bad.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
   EXPECT_EQ(bad_field(bad), "note");
   EXPECT_NE(bad.error_message().find("note of 4097 bytes (at most 4096)"), std::string::npos);
-  grpc::ClientContext c3;
   note.set_note("x");
   note.set_version_id(99);
-  EXPECT_EQ(stub_->Note(&c3, note, &out).error_code(), grpc::StatusCode::NOT_FOUND);
+  EXPECT_EQ(unary(*stub_, &v1::Archive::Stub::Note, note, out).error_code(),
+            grpc::StatusCode::NOT_FOUND);
   EXPECT_EQ(archive_->get(first).value().version.note, "checked by QA");
 
   // Restore records the user the client names and, without a host, the client's address.
-  grpc::ClientContext c4;
   v1::RestoreRequest restore;
   restore.set_version_id(static_cast<std::uint64_t>(first));
   restore.set_user("qa-engineer");
-  ASSERT_TRUE(stub_->Restore(&c4, restore, &out).ok());
+  ASSERT_TRUE(unary(*stub_, &v1::Archive::Stub::Restore, restore, out).ok());
   EXPECT_EQ(out.user(), "qa-engineer");
   EXPECT_EQ(out.host(), "127.0.0.1");
-  grpc::ClientContext c5;
   restore.set_host("ws-maint-03");
-  ASSERT_TRUE(stub_->Restore(&c5, restore, &out).ok());
+  ASSERT_TRUE(unary(*stub_, &v1::Archive::Stub::Restore, restore, out).ok());
   EXPECT_EQ(out.host(), "ws-maint-03");
 
   // A bad note or user is blamed on that field, not on version_id (the id is fine).
@@ -332,19 +311,17 @@ TEST_F(RpcArchiveTest, RestoreOfAPartialProtectiveFieldNeedsAllowPartialField) {
   for (std::size_t n = 0; n < 488; ++n) partial.pairs[1].protective_mm[n] = 0;
   const auto old = store(partial, 1000);
   store(rs4::scanner::factory_default(), 2000);
-  grpc::ClientContext c1;
   v1::RestoreRequest r;
   r.set_version_id(static_cast<std::uint64_t>(old));
   v1::VersionInfo restored;
-  const auto refused = stub_->Restore(&c1, r, &restored);
+  const auto refused = unary(*stub_, &v1::Archive::Stub::Restore, r, restored);
   EXPECT_EQ(refused.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
   EXPECT_EQ(bad_field(refused), "allow_partial_field");
   EXPECT_NE(refused.error_message().find("field pair 2: 488 of 529"), std::string::npos)
       << refused.error_message();
   EXPECT_EQ(archive_->history(kStation).value().size(), 2u);
-  grpc::ClientContext c2;
   r.set_allow_partial_field(true);
-  ASSERT_TRUE(stub_->Restore(&c2, r, &restored).ok());
+  ASSERT_TRUE(unary(*stub_, &v1::Archive::Stub::Restore, r, restored).ok());
   EXPECT_TRUE(restored.pending_download());
 }
 

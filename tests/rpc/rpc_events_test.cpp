@@ -34,6 +34,24 @@ class RpcEventsTest : public RpcRs4Test {
                   << reader.Finish().error_message();
     return seen;
   }
+  // The snapshot a new stream opens with, up to `items` states by name: every event numbered
+  // in order from 1, of station 4, every item with from = "" (nothing is advanced before it
+  // has arrived).
+  static std::map<std::string, std::string> read_snapshot(grpc::ClientReader<v1::Event>& reader,
+                                                          std::size_t items) {
+    std::map<std::string, std::string> snapshot;
+    v1::Event e;
+    std::uint64_t sequence = 0;
+    while (snapshot.size() < items && reader.Read(&e)) {
+      EXPECT_EQ(e.sequence(), ++sequence);
+      EXPECT_EQ(e.address(), 4U);
+      if (e.has_state()) {
+        EXPECT_EQ(e.state().previous(), "");
+        snapshot[e.state().what()] = e.state().to();
+      }
+    }
+    return snapshot;
+  }
   grpc::Status stream_status(const v1::StreamEventsRequest& req) {
     grpc::ClientContext ctx;
     auto reader = open(ctx, req);
@@ -47,18 +65,7 @@ TEST_F(RpcEventsTest, SnapshotThenTheBootAndAViolationInOrder) {
   grpc::ClientContext ctx;
   v1::StreamEventsRequest req;
   auto reader = open(ctx, req);
-  // The snapshot: every item with from = "" (nothing is advanced before it has arrived).
-  std::map<std::string, std::string> snapshot;
-  v1::Event e;
-  std::uint64_t sequence = 0;
-  while (snapshot.size() < 12 && reader->Read(&e)) {
-    EXPECT_EQ(e.sequence(), ++sequence);
-    EXPECT_EQ(e.address(), 4U);
-    if (e.has_state()) {
-      EXPECT_EQ(e.state().previous(), "");
-      snapshot[e.state().what()] = e.state().to();
-    }
-  }
+  auto snapshot = read_snapshot(*reader, 12);
   EXPECT_EQ(snapshot["powered"], "on");
   EXPECT_EQ(snapshot["ossd"], "off");
   EXPECT_EQ(snapshot["dp-state"], "Wait_Prm");
@@ -120,11 +127,7 @@ TEST_F(RpcEventsTest, TheFHostsStateAndThePlcInputByteFollowAPassivation) {
   grpc::ClientContext ctx;
   v1::StreamEventsRequest req;
   auto reader = open(ctx, req);
-  std::map<std::string, std::string> snapshot;
-  v1::Event e;
-  while (snapshot.size() < 14 && reader->Read(&e)) {
-    if (e.has_state()) snapshot[e.state().what()] = e.state().to();
-  }
+  auto snapshot = read_snapshot(*reader, 14);
   EXPECT_EQ(snapshot["plc-input-byte"], "00");  // no data exchange yet
   EXPECT_NE(snapshot["fhost-state"], "run");
   boot();
@@ -154,6 +157,7 @@ TEST_F(RpcEventsTest, TheFHostsStateAndThePlcInputByteFollowAPassivation) {
   };
   std::vector<std::pair<std::string, std::string>> after;  // (what, to) of the F-host items
   bool acknowledged = false;
+  v1::Event e;
   while (reader->Read(&e)) {
     if (!e.has_state()) continue;
     const auto& c = e.state();

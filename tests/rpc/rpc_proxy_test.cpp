@@ -43,7 +43,7 @@ proxy::StationStatus uploading(std::uint8_t address, std::size_t done) {
   return s;
 }
 
-class RpcProxyTest : public ::testing::Test, protected TestLoop {
+class RpcProxyTest : public ::testing::Test, protected ServedLoop {
  protected:
   void SetUp() override {
     statuses_ = {idle(4), idle(5)};
@@ -54,16 +54,9 @@ class RpcProxyTest : public ::testing::Test, protected TestLoop {
     source.queue = [this] { return queue_; };
     source.now_ns = [this] { return now_ns_; };
     service_ = std::make_unique<ProxyService>(std::move(source), feed_, executor_);
-    start_loop();
-    server_ =
-        std::make_unique<RpcServer>(ServerOptions{}, std::vector<grpc::Service*>{service_.get()});
-    stub_ = v1::Proxy::NewStub(
-        grpc::CreateChannel(server_->address(), grpc::InsecureChannelCredentials()));
+    stub_ = serve<v1::Proxy>(*service_);
   }
-  void TearDown() override {
-    server_->shutdown();
-    stop_loop();
-  }
+  void TearDown() override { stop_serving(); }
   // On the loop thread, as the master's cycle does it: the new status, then publish.
   void change(const proxy::StationStatus& s, std::int64_t now_ns) {
     executor_.run([&] {
@@ -94,7 +87,6 @@ class RpcProxyTest : public ::testing::Test, protected TestLoop {
   std::int64_t now_ns_ = 1'000'000;
   ProxyFeed feed_;
   std::unique_ptr<ProxyService> service_;
-  std::unique_ptr<RpcServer> server_;
   std::unique_ptr<v1::Proxy::Stub> stub_;
 };
 
@@ -268,7 +260,6 @@ TEST(ProxyWatch, AStatusIsMappedFieldByField) {
   EXPECT_TRUE(out.outputs().config_set_to_default());
   EXPECT_EQ(out.now_ns(), 42);
 }
-
 
 // The same service as JSON over HTTP (docs/http.md).
 TEST_F(RpcProxyTest, JsonOverHttpIsTheSameService) {

@@ -76,12 +76,9 @@ TEST(PduDpv1C2, AbortTimeout) {
       0x13,  // 2 b5..4 = 1 MSAC_C2, b3..0 = 3 timeout
       0x00,  // 3 reserved
   };
-  const auto r = decode_c2_request(du);
-  ASSERT_TRUE(r);
-  const Abort a = std::get<Abort>(r.value());
-  EXPECT_EQ(a, (Abort{AbortSubnet::kNone, AbortInstance::kMsacC2, abort_reason::kTimeout, 0}));
-  EXPECT_EQ(enc(a), du);
-  EXPECT_EQ(std::get<Abort>(decode_c2_response(du).value()), a);
+  const Abort a{AbortSubnet::kNone, AbortInstance::kMsacC2, abort_reason::kTimeout, 0};
+  testing::expect_known_answer(decode_c2_request, du, a);
+  testing::expect_known_answer(decode_c2_response, du, a);
 }
 
 TEST(PduDpv1C2, DataTransportReadWriteIdle) {

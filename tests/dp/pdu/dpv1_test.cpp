@@ -42,11 +42,9 @@ TEST(PduDpv1, NegativeResponseInvalidIndex) {
       0xB0,  // 2 Error_Code_1: access / invalid index
       0x00,  // 3 Error_Code_2
   };
-  const auto r = decode_c1_response(du);
-  ASSERT_TRUE(r);
-  const Dpv1Error e = std::get<Dpv1Error>(r.value());
-  EXPECT_EQ(e, (Dpv1Error{Dpv1Function::kRead, error_decode::kDpv1, ErrorCode1::kInvalidIndex, 0}));
-  EXPECT_EQ(enc(e), du);
+  testing::expect_known_answer(
+      decode_c1_response, du,
+      Dpv1Error{Dpv1Function::kRead, error_decode::kDpv1, ErrorCode1::kInvalidIndex, 0});
   // [IEC 61158-6-3 MSAC_C1]: the negative response to a malformed Write.
   EXPECT_EQ(enc(type_conflict(Dpv1Function::kWrite)), (Bytes{0xDF, 0x80, 0xB3, 0x00}));
 }

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <variant>
 #include <vector>
 
 namespace rs4sim::dp::pdu::testing {
@@ -31,6 +32,18 @@ Bytes enc(const T& value) {
   const auto r = encode(value, out);
   EXPECT_TRUE(r) << r.error().message();
   return to_bytes(out);
+}
+
+// The known answer `du` decodes with `decode` to the alternative T equal to `expected`, and
+// `expected` encodes back to `du`.
+template <class T, class Decode>
+void expect_known_answer(Decode decode, const Bytes& du, const T& expected) {
+  const auto r = decode(du);
+  ASSERT_TRUE(r) << r.error().message();
+  const T* decoded = std::get_if<T>(&r.value());
+  ASSERT_NE(decoded, nullptr);
+  EXPECT_EQ(*decoded, expected);
+  EXPECT_EQ(enc(expected), du);
 }
 
 // The error of a failed result (fails the test if it succeeded).
