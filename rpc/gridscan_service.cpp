@@ -1,6 +1,7 @@
 #include "rpc/gridscan_service.h"
 
 #include "gridscan/description.h"
+#include "rpc/line_devices.h"
 #include "rpc/service_support.h"
 #include "rpc/status.h"
 
@@ -232,6 +233,12 @@ std::unique_ptr<Watcher> gridscan_watcher(std::uint8_t address, const gridscan::
         {"elements", ranges(elements_of(report.elements, d.elements()))},
     };
   });
+}
+
+// Its place in the run's list of line devices (rpc/line_devices.h).
+LineApi gridscan_line_api() {
+  return line_api<GridScanService>(gridscan::description(), v1::GridScan::service_full_name(),
+                                   gridscan_watcher);
 }
 
 }  // namespace rs4sim::rpc

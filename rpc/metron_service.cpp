@@ -1,6 +1,7 @@
 #include "rpc/metron_service.h"
 
 #include "metron/description.h"
+#include "rpc/line_devices.h"
 #include "rpc/service_support.h"
 #include "rpc/status.h"
 
@@ -182,6 +183,12 @@ std::unique_ptr<Watcher> metron_watcher(std::uint8_t address, const metron::Devi
         {"beams", ranges(metron_blocked(d.scene()))},
     };
   });
+}
+
+// Its place in the run's list of line devices (rpc/line_devices.h).
+LineApi metron_line_api() {
+  return line_api<MetronService>(metron::description(), v1::Metron::service_full_name(),
+                                 metron_watcher);
 }
 
 }  // namespace rs4sim::rpc

@@ -2,6 +2,7 @@
 
 #include "modbus/rtu_frame.h"
 #include "polaris/description.h"
+#include "rpc/line_devices.h"
 #include "rpc/service_support.h"
 #include "rpc/status.h"
 
@@ -187,6 +188,12 @@ std::unique_ptr<Watcher> polaris_watcher(std::uint8_t address, const polaris::De
         {"calibrating", on_off(d.calibrating(now))},
     };
   });
+}
+
+// Its place in the run's list of line devices (rpc/line_devices.h).
+LineApi polaris_line_api() {
+  return line_api<PolarisService>(polaris::description(), v1::Polaris::service_full_name(),
+                                  polaris_watcher);
 }
 
 }  // namespace rs4sim::rpc

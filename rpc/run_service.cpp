@@ -1,8 +1,8 @@
 #include "rpc/run_service.h"
 
 #include "rpc/executor.h"
+#include "rpc/line_devices.h"
 #include "rpc/rs4_services.h"
-#include "rs4sim/v1/devices.grpc.pb.h"
 #include "rs4sim/v1/gsd.grpc.pb.h"
 #include "rs4sim/v1/proxy_service.grpc.pb.h"
 #include "rs4sim/v1/rs4.grpc.pb.h"
@@ -42,7 +42,8 @@ class ServiceListOption final : public grpc::ServerBuilderOption {
   const std::vector<std::string>*& list_;
 };
 
-// The services that serve a station of `kind` (those the server serves are listed).
+// The services that serve a station of `kind` (those the server serves are listed); a line
+// device's: its own (rpc/line_devices.h) and Observation.
 std::vector<std::string> services_of(stream::DeviceKind kind) {
   const std::string observation = v1::Observation::service_full_name();
   switch (kind) {
@@ -51,10 +52,9 @@ std::vector<std::string> services_of(stream::DeviceKind kind) {
               v1::Proxy::service_full_name()};
     case stream::DeviceKind::kGeneric: return {v1::GsdStations::service_full_name(), observation};
     case stream::DeviceKind::kEcho: return {};
-    case stream::DeviceKind::kGridScan: return {v1::GridScan::service_full_name(), observation};
-    case stream::DeviceKind::kMetron: return {v1::Metron::service_full_name(), observation};
-    case stream::DeviceKind::kPolaris: return {v1::Polaris::service_full_name(), observation};
+    default: break;  // a line device (RS4SIM_LINE_DEVICES)
   }
+  if (const auto* line = find_line_api(kind)) return {line->service, observation};
   return {};
 }
 

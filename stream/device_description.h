@@ -30,13 +30,19 @@ enum class DeviceKind : std::uint8_t {
   kPolaris = 6,   // Optoscan Polaris (polaris/)
 };
 
-// The protocol on the device's link.
+// The protocol on the device's link. A byte line's kind is also what its capture names in each
+// record (app/runtime/line_capture.h, stream::LineProtocol), so that the dissector
+// (tools/wireshark/rs4sim.lua) needs no guessing: the values are the capture format's, never
+// renumber them. A device with a protocol of its own adds its value here, and nowhere else.
 enum class LinkKind : std::uint8_t {
-  kProfibusDp,  // PROFIBUS DP stations on a bus [IEC 61158-6-3]
-  kRawBytes,    // bytes without a protocol (echo)
-  kGridScan,    // CEDES frames on RS-485 [GridScan manual §9.2]
-  kMetron,      // METRON slave/standard line [METRON manual "Serial line management"]
-  kModbusRtu,   // Modbus RTU [Modbus over Serial Line V1.02]
+  kRaw = 0,        // bytes without a protocol (the echo device)
+  kGridScan = 1,   // CEDES frames on RS-485 [GridScan manual §9.2]
+  kMetron = 2,     // METRON slave/standard line [METRON manual "Serial line management"]
+  kModbusRtu = 3,  // Modbus RTU ADUs (the Polaris) [Modbus over Serial Line V1.02 §2.5.1]
+  kRs4Rs232 = 4,   // the RS4's RS232 interface [RS4 manual §5.2.3]
+  // PROFIBUS DP stations on a bus [IEC 61158-6-3]: no byte line, never in a line's capture
+  // (a bus's capture is dp/link/pcap.h's own).
+  kProfibusDp = 255,
 };
 
 // One option of `rs4sim run` the device takes. A numeric option's range is min..max;

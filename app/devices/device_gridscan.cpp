@@ -14,9 +14,6 @@
 #include "gridscan/description.h"
 #include "gridscan/device.h"
 #include "gridscan/mode_spec.h"
-#include "rpc/device_target.h"
-#include "rpc/gridscan_service.h"
-#include "rpc/rs4_services.h"
 
 #include <chrono>
 #include <ostream>
@@ -65,17 +62,17 @@ void print_line_status(std::ostream& out, const gridscan::Device& d,
 
 // The curtain on its line: alone on the simulated line with --link memory (docs/gridscan.md
 // "Simulated clock"), else on pty, serial or UDP (LineInstance).
-using GridScanSegment = LineSegment<gridscan::Device, rpc::GridScanService>;
 const LineDevice<gridscan::Device> kGridScanLine{
     .kind = gridscan::description().kind,
-    .protocol = stream::LineProtocol::kGridScan,
+    .protocol = gridscan::description().link,
     .address = [](const gridscan::Device&) { return kAddress; },
-    .watcher = rpc::gridscan_watcher,
     .print_status = print_line_status,
 };
 
-class GridScanInstance final : public LineInstance<gridscan::Device, rpc::GridScanService> {
+class GridScanInstance final : public LineInstance<gridscan::Device> {
  public:
+  explicit GridScanInstance(const DeviceOptions& o)
+      : GridScanInstance(gridscan_options(o), o.mains != "off") {}
   GridScanInstance(const gridscan::Options& o, bool mains_on)
       : LineInstance(kGridScanLine, o), options_(o), mains_on_(mains_on) {}
   // --mains off: the curtain stays dark until SIGUSR1 or GridScan.SetPower, so a controller
@@ -108,34 +105,20 @@ class GridScanInstance final : public LineInstance<gridscan::Device, rpc::GridSc
   bool mains_on_;
 };
 
-void validate(DeviceOptions& o) {
-  refuse_unused(o, "gridscan", gridscan::description().options);
-  (void)gridscan_options(o);  // throws UsageError with the reason
-}
-
 }  // namespace
 
 DeviceEntry gridscan_device_entry() {
-  return {
-      .name = "gridscan",
-      .validate = validate,
-      .build =
-          [](const DeviceOptions& o) {
-            return std::make_unique<GridScanInstance>(gridscan_options(o), o.mains != "off");
-          },
-      .simulate =
-          [](const DeviceOptions& o) {
-            auto segment = std::make_unique<GridScanSegment>(kGridScanLine, gridscan_options(o));
-            // --mains off: dark until GridScan.SetPower / PowerCycle (the device powers up at
-            // the line's first call unless power_off() came first).
-            if (o.mains == "off") segment->device().power_off();
-            return segment;
-          },
-      .demo = run_gridscan_demo,
-      .byte_device = true,
-      .options = gridscan::description().options,
-      .kind = gridscan::description().kind,
+  auto entry = line_device_entry<GridScanInstance>(gridscan::description(), kGridScanLine,
+                                                   gridscan_options, run_gridscan_demo);
+  entry.simulate = [](const DeviceOptions& o) {
+    auto segment =
+        std::make_unique<LineSegment<gridscan::Device>>(kGridScanLine, gridscan_options(o));
+    // --mains off: dark until GridScan.SetPower / PowerCycle (the device powers up at the
+    // line's first call unless power_off() came first).
+    if (o.mains == "off") segment->device().power_off();
+    return segment;
   };
+  return entry;
 }
 
 }  // namespace rs4sim::app

@@ -16,9 +16,6 @@
 #include "metron/description.h"
 #include "metron/device.h"
 #include "metron/mode_spec.h"
-#include "rpc/device_target.h"
-#include "rpc/metron_service.h"
-#include "rpc/rs4_services.h"
 
 #include <ostream>
 
@@ -75,19 +72,17 @@ void print_line_status(std::ostream& out, const metron::Device& d, const stream:
 // The device on its line: alone on the simulated line with --link memory, driven through the API
 // (docs/metron.md "Simulated clock"), else on pty, serial or UDP (LineInstance); at its node
 // number (node mode), else 0.
-using MetronSegment = LineSegment<metron::Device, rpc::MetronService>;
 const LineDevice<metron::Device> kMetronLine{
     .kind = metron::description().kind,
-    .protocol = stream::LineProtocol::kMetron,
+    .protocol = metron::description().link,
     .address =
         [](const metron::Device& d) {
           return d.options().node_enabled ? d.options().node : std::uint8_t{0};
         },
-    .watcher = rpc::metron_watcher,
     .print_status = print_line_status,
 };
 
-class MetronInstance final : public LineInstance<metron::Device, rpc::MetronService> {
+class MetronInstance final : public LineInstance<metron::Device> {
  public:
   explicit MetronInstance(const DeviceOptions& o) : LineInstance(kMetronLine, metron_options(o)) {}
   // SIGUSR1: the input line high, SIGUSR2: low (what the input type acts on).
@@ -100,27 +95,11 @@ class MetronInstance final : public LineInstance<metron::Device, rpc::MetronServ
   }
 };
 
-void validate(DeviceOptions& o) {
-  refuse_unused(o, "metron", metron::description().options);
-  (void)metron_options(o);  // throws UsageError with the reason
-}
-
 }  // namespace
 
 DeviceEntry metron_device_entry() {
-  return {
-      .name = "metron",
-      .validate = validate,
-      .build = [](const DeviceOptions& o) { return std::make_unique<MetronInstance>(o); },
-      .simulate =
-          [](const DeviceOptions& o) {
-            return std::make_unique<MetronSegment>(kMetronLine, metron_options(o));
-          },
-      .demo = run_metron_demo,
-      .byte_device = true,
-      .options = metron::description().options,
-      .kind = metron::description().kind,
-  };
+  return line_device_entry<MetronInstance>(metron::description(), kMetronLine, metron_options,
+                                           run_metron_demo);
 }
 
 }  // namespace rs4sim::app

@@ -17,9 +17,6 @@
 #include "polaris/description.h"
 #include "polaris/device.h"
 #include "polaris/mode_spec.h"
-#include "rpc/device_target.h"
-#include "rpc/polaris_service.h"
-#include "rpc/rs4_services.h"
 
 #include <ostream>
 
@@ -72,16 +69,14 @@ void print_line_status(std::ostream& out, const polaris::Device& d, const stream
 // The device on its line: alone on the simulated line with --link memory, driven through the API
 // (docs/polaris.md "Simulated clock"), else on pty, serial or UDP (LineInstance); at its
 // Modbus address.
-using PolarisSegment = LineSegment<polaris::Device, rpc::PolarisService>;
 const LineDevice<polaris::Device> kPolarisLine{
     .kind = polaris::description().kind,
-    .protocol = stream::LineProtocol::kModbusRtu,
+    .protocol = polaris::description().link,
     .address = [](const polaris::Device& d) { return d.options().address; },
-    .watcher = rpc::polaris_watcher,
     .print_status = print_line_status,
 };
 
-class PolarisInstance final : public LineInstance<polaris::Device, rpc::PolarisService> {
+class PolarisInstance final : public LineInstance<polaris::Device> {
  public:
   explicit PolarisInstance(const DeviceOptions& o)
       : LineInstance(kPolarisLine, polaris_options(o)) {}
@@ -100,27 +95,11 @@ class PolarisInstance final : public LineInstance<polaris::Device, rpc::PolarisS
   }
 };
 
-void validate(DeviceOptions& o) {
-  refuse_unused(o, "polaris", polaris::description().options);
-  (void)polaris_options(o);  // throws UsageError with the reason
-}
-
 }  // namespace
 
 DeviceEntry polaris_device_entry() {
-  return {
-      .name = "polaris",
-      .validate = validate,
-      .build = [](const DeviceOptions& o) { return std::make_unique<PolarisInstance>(o); },
-      .simulate =
-          [](const DeviceOptions& o) {
-            return std::make_unique<PolarisSegment>(kPolarisLine, polaris_options(o));
-          },
-      .demo = run_polaris_demo,
-      .byte_device = true,
-      .options = polaris::description().options,
-      .kind = polaris::description().kind,
-  };
+  return line_device_entry<PolarisInstance>(polaris::description(), kPolarisLine, polaris_options,
+                                            run_polaris_demo);
 }
 
 }  // namespace rs4sim::app

@@ -1,14 +1,16 @@
 #include "app/devices/device_registry.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace rs4sim::app {
 
 const std::vector<DeviceEntry>& device_registry() {
-  static const std::vector<DeviceEntry> registry{
-      rs4_device_entry(),      generic_device_entry(), echo_device_entry(),
-      gridscan_device_entry(), metron_device_entry(),  polaris_device_entry(),
-  };
+  static const std::vector<DeviceEntry> registry = [] {
+    std::vector<DeviceEntry> r{rs4_device_entry(), generic_device_entry(), echo_device_entry()};
+    for (auto& e : line_device_entries()) r.push_back(std::move(e));
+    return r;
+  }();
   return registry;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // The device registry of the runtime: every device rs4sim emulates (`rs4`, `generic`, and
-// later ones) registers one DeviceEntry (app/device_<name>.cpp, a static
-// DeviceRegistration like the sub-commands). `rs4sim run` and `rs4sim demo` look devices
+// later ones) has one DeviceEntry (app/devices/device_<name>.cpp), listed in
+// device_registry.cpp (the line devices through the generated line_device_entries()). `rs4sim run` and `rs4sim demo` look devices
 // up here and never name one: the Asio shell (app/runtime/shell.h) runs any entry on any link.
 //
 // An entry builds its station(s) from one validated DeviceOptions:
@@ -250,8 +250,8 @@ std::vector<std::string> device_names();
 DeviceEntry rs4_device_entry();
 DeviceEntry generic_device_entry();
 DeviceEntry echo_device_entry();
-DeviceEntry gridscan_device_entry();
-DeviceEntry metron_device_entry();
-DeviceEntry polaris_device_entry();
+// The line devices' (RS4SIM_LINE_DEVICES of the root CMakeLists.txt), in its order; the build
+// generates it from the list (app/devices/line_device_entries.cpp.in).
+std::vector<DeviceEntry> line_device_entries();
 
 }  // namespace rs4sim::app

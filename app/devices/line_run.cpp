@@ -2,12 +2,23 @@
 
 #include "rpc/rs4_services.h"
 
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace rs4sim::app {
 
+const rpc::LineApi& line_api(stream::DeviceKind kind) {
+  const auto* api = rpc::find_line_api(kind);
+  if (api == nullptr) {
+    throw std::logic_error("no line device's service for the kind " +
+                           std::string(stream::to_string(kind)) + " (RS4SIM_LINE_DEVICES)");
+  }
+  return *api;
+}
+
 LineRun::LineRun(stream::DeviceKind kind, std::uint8_t address, stream::ByteDevice& core)
-    : kind_(kind), address_(address), tap_(core), line_(clock_, tap_) {}
+    : kind_(kind), address_(address), core_(core), tap_(core), line_(clock_, tap_) {}
 
 void LineRun::start() {
   if (started_) return;
@@ -24,13 +35,13 @@ void LineRun::run_for(dp::Duration d) {
   }
 }
 
-ServiceList LineRun::services(const ServiceContext& c, std::unique_ptr<rpc::Watcher> watcher,
-                              const MakeService& make) {
-  target_ = std::make_unique<rpc::SimulatedLineTarget>(kind_, std::move(watcher), line_);
+ServiceList LineRun::services(const ServiceContext& c) {
+  const auto& api = line_api(kind_);
+  target_ = std::make_unique<rpc::SimulatedLineTarget>(kind_, api.watcher(address_, core_), line_);
   tap_.set_hub(target_->events(), address_);
   const rpc::LineContext line{c.executor, clock_, address_, tap_, target_->events(), &line_};
   const rpc::RunContext run{*target_, c.executor};
-  ServiceList out{make(line), std::make_shared<rpc::ObservationService>(run),
+  ServiceList out{api.make(line, core_), std::make_shared<rpc::ObservationService>(run),
                   std::make_shared<rpc::SimTimeService>(run)};
   start();
   return out;

@@ -8,22 +8,24 @@
 // (docs/rpc.md "Exchange").
 
 #include "app/devices/device_registry.h"
+#include "rpc/line_devices.h"
 #include "rpc/line_service_support.h"
 #include "rpc/line_target.h"
 #include "rpc/tapped_byte_device.h"
 
-#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
 
 namespace rs4sim::app {
 
+// The gRPC side of a line device's kind (rpc/line_devices.h); std::logic_error for a kind
+// that is no line device's (RS4SIM_LINE_DEVICES lists its service beside its entry).
+const rpc::LineApi& line_api(stream::DeviceKind kind);
+
 class LineRun {
  public:
-  using MakeService = std::function<std::shared_ptr<grpc::Service>(const rpc::LineContext&)>;
-
-  // `core` outlives this object. `kind`: kGridScan, kMetron, kPolaris.
+  // `core` outlives this object. `kind`: a line device's (its description's).
   LineRun(stream::DeviceKind kind, std::uint8_t address, stream::ByteDevice& core);
   LineRun(const LineRun&) = delete;
   LineRun& operator=(const LineRun&) = delete;
@@ -35,16 +37,16 @@ class LineRun {
   // Every frame on the line with its direction (--capture).
   void set_frame_tap(stream::FrameTap tap) { line_.line().set_frame_tap(std::move(tap)); }
 
-  // The device's service from `make`, Observation and SimTime; the line starts now (its first
-  // frames go to the event stream and to Receive).
-  ServiceList services(const ServiceContext& c, std::unique_ptr<rpc::Watcher> watcher,
-                       const MakeService& make);
+  // The device's service and event-stream watcher (its kind's rpc::LineApi), Observation and
+  // SimTime; the line starts now (its first frames go to the event stream and to Receive).
+  ServiceList services(const ServiceContext& c);
 
  private:
   void start();
 
   stream::DeviceKind kind_;
   std::uint8_t address_;
+  stream::ByteDevice& core_;
   stream::ManualClock clock_;
   rpc::TappedByteDevice tap_;
   rpc::SimulatedLine line_;
