@@ -223,8 +223,13 @@ std::error_code GsdMasterSlaves::f_module(std::uint8_t address, std::size_t slot
                                           GsdMasterFModule*& out) {
   GsdMasterSlave* s = find_mutable(address);
   if (s == nullptr) return FModuleError::kNoSlave;
-  out = const_cast<GsdMasterFModule*>(s->f_module(slot));
-  return out == nullptr ? make_error_code(FModuleError::kNotFModule) : std::error_code{};
+  for (auto& f : s->f_modules) {
+    if (f.slot == slot) {
+      out = &f;
+      return {};
+    }
+  }
+  return FModuleError::kNotFModule;
 }
 
 std::error_code GsdMasterSlaves::set_f_outputs(std::uint8_t address, std::size_t slot,
